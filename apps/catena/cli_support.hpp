@@ -1,0 +1,35 @@
+// Helpers shared by the subcommands: unit-tagged flags, output destinations.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "catena/core/error.hpp"
+#include "catena/io/quantity.hpp"
+
+namespace catena::cli {
+
+/// Parses flags into SI values, collecting every problem so that all are reported at once.
+class FlagReader {
+ public:
+  /// A unit-tagged flag; `text` empty means "not given" and yields nothing without an issue.
+  std::optional<double> quantity(const std::string& flag, const std::string& text,
+                                 io::QuantityKind kind);
+  /// A whole number ≥ `min`.
+  std::optional<int> integer(const std::string& flag, const std::string& text, int min);
+  void add(Issue issue) { issues_.push_back(std::move(issue)); }
+  /// Renames model field names (e.g. "guide_end") to flags ("--guide-end") in `model_issues`
+  /// and adds them.
+  void add_model_issues(const std::vector<Issue>& model_issues);
+  /// Throws InputError listing everything found so far.
+  void throw_if_any() const { catena::throw_if_any(issues_); }
+
+ private:
+  std::vector<Issue> issues_;
+};
+
+/// Writes `content` to `path` atomically, or to stdout when `path` is empty.
+void emit(const std::string& path, const std::string& content);
+
+}  // namespace catena::cli

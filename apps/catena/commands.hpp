@@ -1,0 +1,15 @@
+// Subcommands of the catena program. Each registers its flags and returns the action to run.
+#pragma once
+
+#include <functional>
+
+namespace CLI {
+class App;
+}
+
+namespace catena::cli {
+
+/// Registers `catena pocketwheel` on `app`; the returned action runs it and returns the exit code.
+std::function<int()> add_pocketwheel(CLI::App& app);
+
+}  // namespace catena::cli

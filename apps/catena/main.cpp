@@ -1,0 +1,29 @@
+// catena: command-line front end. One subcommand per analysis; no physics here.
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "catena/core/error.hpp"
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Catena: chain conveyor and chain drive engineering toolkit"};
+  app.set_version_flag("--version", std::string("catena ") + CATENA_VERSION);
+  app.require_subcommand(1);
+  auto pocketwheel = catena::cli::add_pocketwheel(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error);
+  }
+  try {
+    if (app.got_subcommand("pocketwheel")) return pocketwheel();
+  } catch (const catena::InputError& error) {
+    std::cerr << "catena: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "catena: internal error: " << error.what() << "\n";
+    return 1;
+  }
+  return 1;
+}

@@ -1,0 +1,239 @@
+#include "catena/io/quantity.hpp"
+
+#include <udunits2.h>
+
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <mutex>
+#include <regex>
+#include <stdexcept>
+
+namespace catena::io {
+namespace {
+
+struct UnitDeleter {
+  void operator()(ut_unit* unit) const { ut_free(unit); }
+};
+using UnitPtr = std::unique_ptr<ut_unit, UnitDeleter>;
+
+// The unit system is loaded once and never freed; UDUNITS-2 is not thread-safe, so every use
+// of it goes through this mutex.
+struct UnitSystem {
+  ut_system* system = nullptr;
+  std::mutex mutex;
+
+  UnitSystem() {
+    ut_set_error_message_handler(ut_ignore);  // the database's duplicate-name notes are noise
+    system = ut_read_xml(nullptr);
+    if (system == nullptr) {
+      throw std::runtime_error(
+          "UDUNITS-2 could not load its unit database (is the udunits2 data package installed? "
+          "UDUNITS2_XML_PATH may point to udunits2.xml)");
+    }
+    // Spellings UDUNITS-2 lacks: "deg" for degree and "rev" for revolution.
+    UnitPtr degree(ut_parse(system, "degree", UT_UTF8));
+    UnitPtr revolution(ut_parse(system, "revolution", UT_UTF8));
+    ut_map_symbol_to_unit("deg", UT_UTF8, degree.get());
+    ut_map_symbol_to_unit("rev", UT_UTF8, revolution.get());
+  }
+};
+
+UnitSystem& units() {
+  static UnitSystem instance;
+  return instance;
+}
+
+std::string trim(std::string_view text) {
+  std::size_t begin = 0;
+  std::size_t end = text.size();
+  while (begin < end && std::isspace(static_cast<unsigned char>(text[begin]))) ++begin;
+  while (end > begin && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
+  return std::string(text.substr(begin, end - begin));
+}
+
+// A bare number ("64", "-1.5e3") with nothing after it.
+std::optional<double> bare_number(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0') return std::nullopt;
+  return value;
+}
+
+// Degrees-minutes-seconds such as 0°42', 3°26′, 1°30'15" (the form papers print skews in).
+std::optional<double> dms_degrees(const std::string& text) {
+  static const std::regex pattern(
+      R"(^([+-]?)(\d+(?:\.\d+)?)\s*°\s*(?:(\d+(?:\.\d+)?)\s*(?:'|′))?\s*(?:(\d+(?:\.\d+)?)\s*(?:"|″))?$)");
+  std::smatch match;
+  if (!std::regex_match(text, match, pattern)) return std::nullopt;
+  if (!match[3].matched && !match[4].matched) return std::nullopt;  // plain "20°": UDUNITS does it
+  double degrees = std::stod(match[2].str());
+  if (match[3].matched) degrees += std::stod(match[3].str()) / 60.0;
+  if (match[4].matched) degrees += std::stod(match[4].str()) / 3600.0;
+  return match[1].str() == "-" ? -degrees : degrees;
+}
+
+bool mentions_hertz(const std::string& text) {
+  return text.find("Hz") != std::string::npos || text.find("hertz") != std::string::npos;
+}
+
+const char* accepted_spellings(QuantityKind kind) {
+  switch (kind) {
+    case QuantityKind::kLength:
+      return "a length, e.g. 64mm, 64 mm, 0.064m, 2.5in (bare number: mm)";
+    case QuantityKind::kAngle:
+      return "an angle, e.g. 20deg, 20 degree, 20°, 0°42', 42 arcmin, 0.35 rad (bare number: "
+             "degree)";
+    case QuantityKind::kAngularSpeed:
+      return "an angular speed, e.g. 5 1/s, 5 rad/s, 47.75 rpm (bare number: 1/s = rad/s; Hz is "
+             "ambiguous and rejected)";
+    case QuantityKind::kForce:
+      return "a force, e.g. 29.4kN, 1200 N (bare number: N)";
+    case QuantityKind::kStress:
+      return "a stress, e.g. 350MPa, 210 GPa (bare number: MPa)";
+    case QuantityKind::kMass:
+      return "a mass, e.g. 40kg, 500 g (bare number: kg)";
+    case QuantityKind::kTime:
+      return "a time, e.g. 2 s, 5 min (bare number: s)";
+  }
+  return "a quantity";
+}
+
+// SI target unit as UDUNITS-2 spells it.
+const char* target_spelling(QuantityKind kind) {
+  switch (kind) {
+    case QuantityKind::kLength:
+      return "m";
+    case QuantityKind::kAngle:
+      return "radian";
+    case QuantityKind::kAngularSpeed:
+      return "radian/s";
+    case QuantityKind::kForce:
+      return "N";
+    case QuantityKind::kStress:
+      return "Pa";
+    case QuantityKind::kMass:
+      return "kg";
+    case QuantityKind::kTime:
+      return "s";
+  }
+  return "1";
+}
+
+// UDUNITS-2 treats radian as dimensionless, so "3" or "50 %" would convert to an angle and
+// "1/min" to an angular speed. Angles must name an angle unit; angular speeds must name rad or
+// revolution, or be exactly 1/s.
+bool names_angle(const std::string& definition) { return definition.find("rad") != std::string::npos; }
+
+// True when the unit part of "<number> <unit>" is written as exactly one per second.
+bool is_per_second(const std::string& expression) {
+  char* end = nullptr;
+  std::strtod(expression.c_str(), &end);
+  const std::string unit = trim(end == nullptr ? expression : std::string_view(end));
+  return unit == "1/s" || unit == "/s" || unit == "s-1" || unit == "s^-1" || unit == "s\u207b\u00b9";
+}
+
+}  // namespace
+
+const char* si_unit(QuantityKind kind) {
+  switch (kind) {
+    case QuantityKind::kLength:
+      return "m";
+    case QuantityKind::kAngle:
+      return "rad";
+    case QuantityKind::kAngularSpeed:
+      return "rad/s";
+    case QuantityKind::kForce:
+      return "N";
+    case QuantityKind::kStress:
+      return "Pa";
+    case QuantityKind::kMass:
+      return "kg";
+    case QuantityKind::kTime:
+      return "s";
+  }
+  return "1";
+}
+
+const char* default_unit(QuantityKind kind) {
+  switch (kind) {
+    case QuantityKind::kLength:
+      return "mm";
+    case QuantityKind::kAngle:
+      return "degree";
+    case QuantityKind::kAngularSpeed:
+      return "1/s";
+    case QuantityKind::kForce:
+      return "N";
+    case QuantityKind::kStress:
+      return "MPa";
+    case QuantityKind::kMass:
+      return "kg";
+    case QuantityKind::kTime:
+      return "s";
+  }
+  return "1";
+}
+
+const char* describe(QuantityKind kind) { return accepted_spellings(kind); }
+
+std::optional<double> parse_quantity(std::string_view raw, QuantityKind kind,
+                                     std::string_view field, std::vector<Issue>& issues) {
+  const std::string text = trim(raw);
+  auto fail = [&](const std::string& why) -> std::optional<double> {
+    issues.push_back({std::string(field), "'" + std::string(raw) + "'",
+                      std::string(accepted_spellings(kind)) + (why.empty() ? "" : " (" + why + ")")});
+    return std::nullopt;
+  };
+  if (text.empty()) return fail("the value is empty");
+
+  std::string expression;
+  if (const auto number = bare_number(text)) {
+    if (!std::isfinite(*number)) return fail("the value is not finite");
+    expression = text + " " + default_unit(kind);
+  } else if (const auto degrees = dms_degrees(text); degrees && kind == QuantityKind::kAngle) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.17g degree", *degrees);
+    expression = buffer;
+  } else {
+    expression = text;
+  }
+  if (kind == QuantityKind::kAngularSpeed && mentions_hertz(text)) {
+    return fail("Hz does not say whether it counts revolutions or radians per second: use rpm "
+                "or 1/s");
+  }
+
+  UnitSystem& system = units();
+  std::lock_guard<std::mutex> lock(system.mutex);
+  UnitPtr parsed(ut_parse(system.system, expression.c_str(), UT_UTF8));
+  if (!parsed) return fail("not a number with a unit UDUNITS-2 knows");
+  UnitPtr target(ut_parse(system.system, target_spelling(kind), UT_UTF8));
+  if (!ut_are_convertible(parsed.get(), target.get())) return fail("wrong dimension");
+
+  char definition[256] = {0};
+  ut_format(parsed.get(), definition, sizeof definition - 1, UT_ASCII | UT_DEFINITION);
+  const std::string def(definition);
+  if (kind == QuantityKind::kAngle && !names_angle(def)) return fail("no angle unit given");
+
+  cv_converter* converter = ut_get_converter(parsed.get(), target.get());
+  const double value = cv_convert_double(converter, 1.0);
+  cv_free(converter);
+  if (kind == QuantityKind::kAngularSpeed && !names_angle(def) && !is_per_second(expression)) {
+    return fail("a frequency other than 1/s is ambiguous: use rpm or 1/s");
+  }
+  if (!std::isfinite(value)) return fail("the value is not finite");
+  return value;
+}
+
+double parse_quantity(std::string_view text, QuantityKind kind, std::string_view field) {
+  std::vector<Issue> issues;
+  const auto value = parse_quantity(text, kind, field, issues);
+  throw_if_any(issues);
+  return *value;
+}
+
+}  // namespace catena::io

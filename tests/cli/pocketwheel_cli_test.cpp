@@ -1,0 +1,163 @@
+// `catena pocketwheel` as scripts call it: the CLI contract.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+struct CliRun {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+CliRun run(const std::string& args) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string err_path = (dir / ("catena_cli_err_" + std::to_string(::getpid()))).string();
+  const std::string command = std::string(CATENA_CLI) + " " + args + " 2>" + err_path;
+  CliRun r;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  std::array<char, 4096> buffer{};
+  std::size_t n = 0;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.out.append(buffer.data(), n);
+  const int status = ::pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(err_path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  r.err = ss.str();
+  std::filesystem::remove(err_path);
+  return r;
+}
+
+const char* kPaper = "pocketwheel --pitch 64mm --wire 18mm --teeth 8 --omega 5";
+
+TEST(PocketwheelCli, JsonCarriesTheContractFieldsInSi) {
+  const CliRun r = run(std::string(kPaper) + " --guide tangential --guide-end 256mm --strand-mass 40kg --points 721 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"pitch_radius", "delta1", "delta2", "transverse_displacement", "period",
+                          "guide_height", "seating_angles", "extremes", "series", "units"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_NEAR(j["pitch_radius"].get<double>(), 0.164283, 1e-6);
+  EXPECT_NEAR(j["guide_height"].get<double>(), j["pitch_radius"].get<double>(), 1e-15);
+  EXPECT_NEAR(j["period"].get<double>(), 2 * 3.14159265358979 / 8 / 5, 1e-12);
+  for (const char* key : {"vx_min", "vx_max", "ax_min", "ax_max"}) EXPECT_TRUE(j["extremes"].contains(key));
+  const auto& s = j["series"];
+  for (const char* key : {"phi", "time", "x", "vx", "ax", "inertial_force"}) {
+    ASSERT_TRUE(s.contains(key)) << key;
+    EXPECT_EQ(s[key].size(), 721u) << key;
+  }
+  EXPECT_FALSE(s.contains("vy")) << "vy only for free run-on";
+  EXPECT_EQ(s["x"][0].get<double>(), 0.0);
+  EXPECT_NEAR(s["phi"][720].get<double>(), 2 * 3.14159265358979 / 8, 1e-12);
+  EXPECT_NEAR(s["inertial_force"][5].get<double>(), -40.0 * s["ax"][5].get<double>(), 1e-9);
+  for (const char* key : {"pitch_radius", "period", "x", "vx", "ax", "inertial_force", "seating_angles"}) {
+    EXPECT_TRUE(j["units"].contains(key)) << key;
+  }
+  EXPECT_EQ(j["units"]["ax"], "m/s^2");
+  EXPECT_TRUE(r.err.empty()) << "stderr must stay quiet on success: " << r.err;
+}
+
+TEST(PocketwheelCli, FreeRunOnHasTransverseSeriesAndNullGuideHeight) {
+  const CliRun r = run(std::string(kPaper) + " --guide none --points 5 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["guide_height"].is_null());
+  EXPECT_EQ(j["series"]["vy"].size(), 5u);
+  EXPECT_EQ(j["series"]["ay"].size(), 5u);
+}
+
+TEST(PocketwheelCli, CsvIsAHeaderAndTheSeries) {
+  const CliRun r = run(std::string(kPaper) + " --guide chordal --points 11 --format csv");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::istringstream in(r.out);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, "phi,time,x,vx,ax");
+  int rows = 0;
+  for (std::string line; std::getline(in, line);) ++rows;
+  EXPECT_EQ(rows, 11);
+}
+
+TEST(PocketwheelCli, UnitsAreAcceptedInAnySpelling) {
+  const CliRun a = run("pocketwheel --pitch 0.064m --wire '18 mm' --teeth 8 --omega '47.746 rpm' --format json --points 3");
+  const CliRun b = run("pocketwheel --pitch 64 --wire 18 --teeth 8 --omega 5 --format json --points 3");
+  ASSERT_EQ(a.status, 0) << a.err;
+  ASSERT_EQ(b.status, 0) << b.err;
+  EXPECT_NEAR(nlohmann::json::parse(a.out)["omega"].get<double>(), 5.0, 1e-4);
+  EXPECT_EQ(nlohmann::json::parse(a.out)["pitch_radius"], nlohmann::json::parse(b.out)["pitch_radius"]);
+}
+
+TEST(PocketwheelCli, BadInputNamesEveryFlagAndWritesNothing) {
+  const auto out = std::filesystem::temp_directory_path() / "catena_cli_should_not_exist.json";
+  std::filesystem::remove(out);
+  const CliRun r = run("pocketwheel --pitch 5kg --wire 18mm --teeth 2 --omega '5 Hz' --format json --output " + out.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_NE(r.err.find("--pitch = '5kg'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("wrong dimension"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--teeth = '2'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--omega = '5 Hz'"), std::string::npos) << r.err;
+}
+
+TEST(PocketwheelCli, InfeasibleGeometryStatesTheLimit) {
+  CliRun r = run("pocketwheel --pitch 18mm --wire 18mm --teeth 8 --omega 5");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("greater than the wire diameter"), std::string::npos) << r.err;
+  r = run(std::string(kPaper) + " --guide tangential --guide-end 100mm");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--guide-end = 0.1 m: expected a guide end outside the pitch circle: l > R = 0.164283 m"),
+            std::string::npos) << r.err;
+  r = run(std::string(kPaper) + " --guide height --guide-height 150mm");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--guide-height"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("0.159085 m"), std::string::npos) << r.err;
+  r = run(std::string(kPaper) + " --guide chordal --guide-end 165mm");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("l ≥ 0.169"), std::string::npos) << r.err;
+  r = run(std::string(kPaper) + " --guide height");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("required with --guide height"), std::string::npos) << r.err;
+}
+
+TEST(PocketwheelCli, OutputFileAndCsvSideFile) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const auto json = dir / "catena_cli_out.json";
+  const auto csv = dir / "catena_cli_out.csv";
+  const CliRun r = run("pocketwheel --example --format json --output " + json.string() + " --csv " + csv.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  const auto j = nlohmann::json::parse(std::ifstream(json));
+  ASSERT_TRUE(j.is_array());
+  EXPECT_EQ(j.size(), 3u);  // free, chordal, tangential
+  std::ifstream in(csv);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header.rfind("phi,time,x_none,vx_none,ax_none,vy_none,ay_none,x_chordal", 0), 0u) << header;
+  std::filesystem::remove(json);
+  std::filesystem::remove(csv);
+}
+
+TEST(PocketwheelCli, NumericMethodAgreesWithClosedForms) {
+  const CliRun a = run(std::string(kPaper) + " --guide tangential --format json --points 101");
+  const CliRun b = run(std::string(kPaper) + " --guide tangential --format json --points 101 --method numeric");
+  ASSERT_EQ(a.status, 0);
+  ASSERT_EQ(b.status, 0);
+  const auto ja = nlohmann::json::parse(a.out);
+  const auto jb = nlohmann::json::parse(b.out);
+  for (std::size_t i = 1; i + 1 < 101; ++i) {
+    EXPECT_NEAR(ja["series"]["vx"][i].get<double>(), jb["series"]["vx"][i].get<double>(), 1e-9);
+  }
+}
+
+}  // namespace

@@ -1,0 +1,114 @@
+#include "catena/io/quantity.hpp"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+namespace catena::io {
+namespace {
+
+constexpr double kRelTol = 1e-12;
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+double parse(const char* text, QuantityKind kind) { return parse_quantity(text, kind, "--flag"); }
+
+struct Accepted {
+  const char* text;
+  QuantityKind kind;
+  double si;
+};
+
+class AcceptedSpelling : public ::testing::TestWithParam<Accepted> {};
+
+TEST_P(AcceptedSpelling, ConvertsToSi) {
+  const Accepted& c = GetParam();
+  EXPECT_NEAR(parse(c.text, c.kind), c.si, kRelTol * std::abs(c.si)) << c.text;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Spellings, AcceptedSpelling,
+    ::testing::Values(Accepted{"64mm", QuantityKind::kLength, 0.064},
+                      Accepted{"64 mm", QuantityKind::kLength, 0.064},
+                      Accepted{"0.064m", QuantityKind::kLength, 0.064},
+                      Accepted{"64", QuantityKind::kLength, 0.064},  // bare: mm
+                      Accepted{"  64  ", QuantityKind::kLength, 0.064},
+                      Accepted{"2.5in", QuantityKind::kLength, 0.0635},
+                      Accepted{"1.5e3 mm", QuantityKind::kLength, 1.5},
+                      Accepted{"5 1/s", QuantityKind::kAngularSpeed, 5.0},
+                      Accepted{"5", QuantityKind::kAngularSpeed, 5.0},  // bare: 1/s
+                      Accepted{"5 rad/s", QuantityKind::kAngularSpeed, 5.0},
+                      Accepted{"5 s-1", QuantityKind::kAngularSpeed, 5.0},
+                      Accepted{"47.75 rpm", QuantityKind::kAngularSpeed, 47.75 * std::numbers::pi / 30.0},
+                      Accepted{"60 rev/min", QuantityKind::kAngularSpeed, 2.0 * std::numbers::pi},
+                      Accepted{"20deg", QuantityKind::kAngle, 20.0 * kDeg},
+                      Accepted{"20 degree", QuantityKind::kAngle, 20.0 * kDeg},
+                      Accepted{"20°", QuantityKind::kAngle, 20.0 * kDeg},
+                      Accepted{"20", QuantityKind::kAngle, 20.0 * kDeg},  // bare: degree
+                      Accepted{"42 arcmin", QuantityKind::kAngle, 0.7 * kDeg},
+                      Accepted{"0°42'", QuantityKind::kAngle, 0.7 * kDeg},
+                      Accepted{"3°26′", QuantityKind::kAngle, (3.0 + 26.0 / 60.0) * kDeg},
+                      Accepted{"1°30'36\"", QuantityKind::kAngle, 1.51 * kDeg},
+                      Accepted{"0.5 rad", QuantityKind::kAngle, 0.5},
+                      Accepted{"29.4kN", QuantityKind::kForce, 29400.0},
+                      Accepted{"1200", QuantityKind::kForce, 1200.0},
+                      Accepted{"210GPa", QuantityKind::kStress, 210e9},
+                      Accepted{"350", QuantityKind::kStress, 350e6},  // bare: MPa
+                      Accepted{"40kg", QuantityKind::kMass, 40.0},
+                      Accepted{"500 g", QuantityKind::kMass, 0.5},
+                      Accepted{"2 min", QuantityKind::kTime, 120.0}));
+
+struct Rejected {
+  const char* text;
+  QuantityKind kind;
+  const char* why;  // a fragment the message must contain
+};
+
+class RejectedSpelling : public ::testing::TestWithParam<Rejected> {};
+
+TEST_P(RejectedSpelling, NamesFlagValueAndExpectation) {
+  const Rejected& c = GetParam();
+  std::vector<Issue> issues;
+  EXPECT_FALSE(parse_quantity(c.text, c.kind, "--pitch", issues).has_value()) << c.text;
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].field, "--pitch");
+  EXPECT_EQ(issues[0].value, std::string("'") + c.text + "'");
+  EXPECT_NE(issues[0].expected.find(c.why), std::string::npos) << issues[0].expected;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Spellings, RejectedSpelling,
+    ::testing::Values(Rejected{"5kg", QuantityKind::kLength, "wrong dimension"},
+                      Rejected{"", QuantityKind::kLength, "empty"},
+                      Rejected{"abc", QuantityKind::kLength, "UDUNITS-2"},
+                      Rejected{"nan", QuantityKind::kLength, "not finite"},
+                      Rejected{"inf mm", QuantityKind::kLength, "a length"},
+                      Rejected{"1e999", QuantityKind::kLength, "not finite"},
+                      Rejected{"5 Hz", QuantityKind::kAngularSpeed, "Hz"},
+                      Rejected{"5 kHz", QuantityKind::kAngularSpeed, "Hz"},
+                      Rejected{"300 1/min", QuantityKind::kAngularSpeed, "ambiguous"},
+                      Rejected{"5 m/s", QuantityKind::kAngularSpeed, "wrong dimension"},
+                      Rejected{"2 mm/m", QuantityKind::kAngle, "no angle unit"},
+                      Rejected{"3 m/m", QuantityKind::kAngle, "no angle unit"},
+                      Rejected{"20 mm", QuantityKind::kAngle, "wrong dimension"},
+                      Rejected{"3 MPa", QuantityKind::kForce, "wrong dimension"}));
+
+TEST(Quantity, ThrowingOverloadCarriesTheIssue) {
+  try {
+    parse_quantity("5kg", QuantityKind::kLength, "--pitch");
+    FAIL();
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("--pitch = '5kg'"), std::string::npos) << error.what();
+  }
+}
+
+TEST(Quantity, DefaultUnitsAreDocumented) {
+  EXPECT_STREQ(default_unit(QuantityKind::kLength), "mm");
+  EXPECT_STREQ(default_unit(QuantityKind::kAngularSpeed), "1/s");
+  EXPECT_STREQ(default_unit(QuantityKind::kForce), "N");
+  EXPECT_STREQ(default_unit(QuantityKind::kStress), "MPa");
+  EXPECT_STREQ(default_unit(QuantityKind::kAngle), "degree");
+  EXPECT_STREQ(si_unit(QuantityKind::kAngularSpeed), "rad/s");
+}
+
+}  // namespace
+}  // namespace catena::io
