@@ -30,6 +30,8 @@ struct Case {
   double omega;
 };
 
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
 std::vector<Case> cases() {
   const WheelGeometry g = wheel_geometry(kPaperWheel);
   const double mid = 0.5 * (g.chordal_height + g.pitch_radius);

@@ -1,5 +1,322 @@
+// Seed 003 (Dolipiński, Reich, Adamowicz, Ziegler, "Wymuszone nabieganie łańcucha ogniwowego na
+// koło gniazdowe"): every printed formula, transcribed with only the OCR slips undone ('1' → l,
+// '2'/'s' → z in angles, the factor ω restored in eqs. 1–4), held against the validated model
+// (closed forms that agree with the independent numerical solver, tests/pocketwheel/). Each
+// test states whether the printed formula holds, and where it does not, what is wrong.
+// The paper's figures 2–3 are not in the text, so no curve values can be read from it; its
+// example parameters and conclusions are checked instead. See docs/models/pocketwheel.md.
 #include <gtest/gtest.h>
 
-#include "catena/pocketwheel/run_on.hpp"
+#include <cmath>
+#include <functional>
+#include <numbers>
 
-TEST(PocketwheelPaper, Placeholder) { SUCCEED(); }
+#include "catena/pocketwheel/run_on.hpp"
+#include "catena/pocketwheel/run_on_numeric.hpp"
+
+namespace catena::pocketwheel {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double t = 0.064;   // [m] chain Ø18×64
+constexpr double d = 0.018;   // [m]
+constexpr int z = 8;          // [-]
+constexpr double w = 5.0;     // [1/s] ω
+constexpr double l = 0.256;   // [m] guide end
+constexpr double kAgreeTol = 1e-9;  // [m, m/s, m/s²] printed formula agrees with the model
+constexpr double kDisagree = 1e-3;  // a printed formula is wrong if it deviates by more
+
+const PocketWheel kWheel{t, d, z};
+const WheelGeometry kG = wheel_geometry(kWheel);
+const double R = kG.pitch_radius;
+const double d1 = kG.delta1;
+const double d2 = kG.delta2;
+const double P = 2 * kPi / z;
+
+using Fn = std::function<double(double)>;
+
+// Largest |printed − model| over the open interval (a, b).
+double deviation(const Fn& printed, const Fn& model, double a, double b) {
+  double worst = 0.0;
+  for (int i = 1; i < 200; ++i) {
+    const double phi = a + (b - a) * i / 200.0;
+    worst = std::max(worst, std::abs(printed(phi) - model(phi)));
+  }
+  return worst;
+}
+
+Fn model_x(const RunOnPlan& p) { return [&p](double phi) { return evaluate(p, phi).x; }; }
+Fn model_v(const RunOnPlan& p) { return [&p](double phi) { return w * evaluate(p, phi).dx; }; }
+Fn model_a(const RunOnPlan& p) { return [&p](double phi) { return w * w * evaluate(p, phi).d2x; }; }
+
+TEST(Paper003, GeometryEqs6To9AndTransverseDisplacement) {
+  // Eq. (6) printed with 's' for z; the closure root (numeric::pitch_radius) confirms it.
+  const double half = kPi / (2 * z);
+  EXPECT_NEAR(R, 0.5 * std::sqrt(std::pow(t / std::sin(half), 2) + std::pow(d / std::cos(half), 2)), 1e-15);
+  EXPECT_NEAR(R, numeric::pitch_radius(kWheel), 1e-12);
+  EXPECT_NEAR(R, 0.1642830686, 1e-10);  // the example: R = 164.283 mm
+  EXPECT_NEAR(d1 + d2, P, 1e-14);       // eq. (9)
+  EXPECT_NEAR(kG.transverse_displacement, R * (1 - std::cos(d1 / 2)), 1e-15);
+  EXPECT_NEAR(kG.transverse_displacement, 5.19842e-3, 1e-8);
+}
+
+TEST(Paper003, FreeRunOnEqs1To4And10To13HoldWithOmegaRestored) {
+  const RunOnPlan p = plan_run_on(kWheel, Guide{});
+  // (1)–(4) print V = R cos(...) without ω; their derivatives (10)–(13) carry ω², so V = ωR cos.
+  const Fn v1 = [](double f) { return w * R * std::cos(d1 / 2 - f); };
+  const Fn v2 = [](double f) { return w * R * std::cos(d2 + d1 / 2 - f); };
+  const Fn vy3 = [](double f) { return w * R * std::sin(d1 / 2 - f); };
+  const Fn vy4 = [](double f) { return w * R * std::sin(d2 + d1 / 2 - f); };
+  const Fn p10 = [](double f) { return w * w * R * std::sin(d1 / 2 - f); };
+  const Fn p11 = [](double f) { return w * w * R * std::sin(d2 + d1 / 2 - f); };
+  const Fn p12 = [](double f) { return -w * w * R * std::cos(d1 / 2 - f); };
+  const Fn p13 = [](double f) { return -w * w * R * std::cos(d2 + d1 / 2 - f); };
+  const Fn vy = [&p](double f) { return w * evaluate(p, f).dy; };
+  const Fn ay = [&p](double f) { return w * w * evaluate(p, f).d2y; };
+  // The printed intervals [0, π/z], [π/z, 2π/z] are the geometric ones: the t − d link seats at
+  // φ = π/z exactly (crank from +δ1/2 to −δ2/2).
+  EXPECT_NEAR(p.seating_angles[1], kPi / z, 1e-15);
+  EXPECT_LT(deviation(v1, model_v(p), 0, P / 2), kAgreeTol);
+  EXPECT_LT(deviation(v2, model_v(p), P / 2, P), kAgreeTol);
+  EXPECT_LT(deviation(vy3, vy, 0, P / 2), kAgreeTol);
+  EXPECT_LT(deviation(vy4, vy, P / 2, P), kAgreeTol);
+  EXPECT_LT(deviation(p10, model_a(p), 0, P / 2), kAgreeTol);
+  EXPECT_LT(deviation(p11, model_a(p), P / 2, P), kAgreeTol);
+  EXPECT_LT(deviation(p12, ay, 0, P / 2), kAgreeTol);
+  EXPECT_LT(deviation(p13, ay, P / 2, P), kAgreeTol);
+}
+
+// Chordal run-on, eqs. (14)–(25). c = cos(δ1/2); the guide is the chord line y = R c.
+struct Chordal {
+  double c = std::cos(d1 / 2);
+  double L0 = l - t / 2 - d / 2;        // printed span of (14)–(15), (18)–(19), (22)–(23)
+  double L1printed = l - t / 2 + d / 2;  // printed span of (16)–(17), (20)–(21), (24)–(25)
+  double root(double L, double th) const { return std::sqrt(L * L - std::pow(R * (std::cos(th) - c), 2)); }
+  // (14) for θ = δ1/2 − φ and (15) for θ' = φ − δ1/2 are one formula; the same for (16)/(17).
+  double x(double L, double th) const { return l - R * std::sin(th) - root(L, th); }
+  double v_printed(double L, double th) const {  // (18), (20): ωR{cos θ + R[cos θ − c] sin θ / S}
+    return w * R * (std::cos(th) + R * (std::cos(th) - c) * std::sin(th) / root(L, th));
+  }
+  double a_printed(double L, double th) const {  // (22), (24) as printed
+    const double s = root(L, th);
+    const double q = R * R * std::pow(std::cos(th) - c, 2);
+    return w * w * R * (std::sin(th) - R / s * (std::cos(th) - std::cos(2 * th) + q * std::pow(std::sin(th), 2) / (s * s)));
+  }
+  double a_corrected(double L, double th) const {  // sign of the bracket, and c·cos θ for cos θ
+    const double s = root(L, th);
+    const double q = R * R * std::pow(std::cos(th) - c, 2);
+    return w * w * R * (std::sin(th) + R / s * (c * std::cos(th) - std::cos(2 * th) + q * std::pow(std::sin(th), 2) / (s * s)));
+  }
+};
+
+TEST(Paper003, ChordalRunOnFirstPhaseEqs14_15_18Hold) {
+  const Chordal c;
+  const RunOnPlan p = plan_run_on(kWheel, Guide{GuideKind::kChordal, 0, l, SpanModel::kSlider});
+  const double seat = p.seating_angles[1];  // the t − d link seats by geometry ...
+  EXPECT_NEAR(seat * 180 / kPi, 21.44, 0.01);  // ... at 21.44°, before the printed π/z = 22.5°
+  EXPECT_LT(seat, kPi / z);
+  EXPECT_LT(deviation([&](double f) { return c.x(c.L0, d1 / 2 - f); }, model_x(p), 0, seat), kAgreeTol);
+  EXPECT_LT(deviation([&](double f) { return c.v_printed(c.L0, d1 / 2 - f); }, model_v(p), 0, d1 / 2), kAgreeTol);
+}
+
+TEST(Paper003, ChordalEq19HasTheWrongSignOfItsSecondTerm) {
+  // (19) repeats (18) with θ' = φ − δ1/2 in place of θ = δ1/2 − φ; sin is odd, so the second
+  // term must change sign. As printed it is not the derivative of (15).
+  const Chordal c;
+  const RunOnPlan p = plan_run_on(kWheel, Guide{GuideKind::kChordal, 0, l, SpanModel::kSlider});
+  const Fn v19 = [&](double f) { return c.v_printed(c.L0, f - d1 / 2); };
+  const double seat = p.seating_angles[1];
+  EXPECT_GT(deviation(v19, model_v(p), d1 / 2, seat), kDisagree);
+  const Fn v19_fixed = [&](double f) {
+    const double th = f - d1 / 2;
+    return w * R * (std::cos(th) - R * (std::cos(th) - c.c) * std::sin(th) / c.root(c.L0, th));
+  };
+  EXPECT_LT(deviation(v19_fixed, model_v(p), d1 / 2, seat), kAgreeTol);
+}
+
+TEST(Paper003, ChordalEqs22To25HaveASignErrorAndLoseTheFactorCosHalfDelta1) {
+  const Chordal c;
+  const RunOnPlan p = plan_run_on(kWheel, Guide{GuideKind::kChordal, 0, l, SpanModel::kSlider});
+  const double seat = p.seating_angles[1];
+  const Fn a22 = [&](double f) { return c.a_printed(c.L0, d1 / 2 - f); };
+  const Fn a22_fixed = [&](double f) { return c.a_corrected(c.L0, d1 / 2 - f); };
+  EXPECT_GT(deviation(a22, model_a(p), 0, seat), 0.1);  // [m/s²] wrong by > 0.1 m/s²
+  EXPECT_LT(deviation(a22_fixed, model_a(p), 0, seat), kAgreeTol);
+  // With only the sign fixed, the lost factor cos(δ1/2) on cos θ still shows:
+  const Fn a22_sign_only = [&](double f) {
+    const double th = d1 / 2 - f;
+    return 2 * w * w * R * std::sin(th) - c.a_printed(c.L0, th);
+  };
+  EXPECT_GT(deviation(a22_sign_only, model_a(p), 0, seat), kDisagree);
+}
+
+TEST(Paper003, ChordalSecondPhaseEqs16_17UseASpanOnePitchTooLong) {
+  // After the t − d link seats, the span from the new crank to the same guided point is
+  // L0 − (t − d) = l − 3t/2 + d/2; (16)–(17) print l − t/2 + d/2, one pitch t longer, and switch
+  // at π/z instead of at the geometric seating. With the printed span x jumps at the switch.
+  const Chordal c;
+  const RunOnPlan p = plan_run_on(kWheel, Guide{GuideKind::kChordal, 0, l, SpanModel::kSlider});
+  const double seat = p.seating_angles[1];
+  const double L1 = c.L0 - (t - d);
+  EXPECT_NEAR(p.phases[1].span, L1, 1e-15);
+  const double th_switch = kPi / z + d2 / 2 - kPi / z;  // crank angle of (16) at φ = π/z
+  const double jump = c.x(c.L1printed, th_switch) - c.x(c.L0, d1 / 2 - kPi / z);
+  EXPECT_GT(std::abs(jump), 0.5 * t) << "printed x jumps by " << jump << " m at phi = pi/z";
+  // With the geometric span and the crank angle of (16) the model's second phase is reproduced:
+  const Fn x16_fixed = [&](double f) { return c.x(L1, kPi / z + d2 / 2 - f) ; };
+  EXPECT_LT(deviation(x16_fixed, model_x(p), seat, P), kAgreeTol);
+  const Fn x16_printed = [&](double f) { return c.x(c.L1printed, kPi / z + d2 / 2 - f); };
+  EXPECT_GT(deviation(x16_printed, model_x(p), seat, P), 0.5 * t);
+  // velocities of (20) with the geometric span hold; with the printed span they do not
+  const Fn v20_fixed = [&](double f) { return c.v_printed(L1, kPi / z + d2 / 2 - f); };
+  const Fn v20_printed = [&](double f) { return c.v_printed(c.L1printed, kPi / z + d2 / 2 - f); };
+  EXPECT_LT(deviation(v20_fixed, model_v(p), seat, kPi / z + d2 / 2), kAgreeTol);
+  EXPECT_GT(deviation(v20_printed, model_v(p), seat, kPi / z + d2 / 2), 5e-4);  // 0.67 mm/s
+}
+
+// Tangential run-on, eqs. (26)–(43). H = R.
+struct Tangential {
+  static double root(double L, double th) { return std::sqrt(L * L - std::pow(R * (1 - std::cos(th)), 2)); }
+  // x = l − R sin θ − S for the crank at θ (26: θ = −φ, 30: δ1 − φ, 31: −(δ2 + φ − 2π/z), 35: 2π/z − φ)
+  static double x(double L, double th) { return l - R * std::sin(th) - root(L, th); }
+  static double v(double L, double th) {  // (37), (39): ωR[cos θ − R(1 − cos θ) sin θ / S]
+    return w * R * (std::cos(th) - R * (1 - std::cos(th)) * std::sin(th) / root(L, th));
+  }
+  static double a_printed(double L, double th) {  // (41), (43) as printed
+    const double s = root(L, th);
+    const double q = R * R * std::pow(1 - std::cos(th), 2);
+    return w * w * R * (std::sin(th) - R / s * (std::cos(th) - std::cos(2 * th) + q * std::pow(std::sin(th), 2) / (s * s)));
+  }
+  static double a40(double L, double f) {  // (40) as printed, argument φ
+    const double s = root(L, f);
+    const double q = R * R * std::pow(1 - std::cos(f), 2);
+    return w * w * R * (-std::sin(f) + R / s * (std::cos(f) - std::cos(2 * f) + q * std::pow(std::sin(f), 2) / (s * s)));
+  }
+  // (29)/(34): seating angle from sin ξ = (R/L)(1 − cos(δ/2 + ξ)), φ_g = base + ξ
+  static double seating(double base, double L, double delta) {
+    const double s = std::sin(delta / 2);
+    return base + 2 * std::atan((L - R * s - std::sqrt(L * L - 2 * R * L * s)) / (2 * R * std::pow(std::cos(delta / 4), 2)));
+  }
+};
+
+TEST(Paper003, TangentialSeatingAnglesEq29And34HoldWithTheGeometricSpans) {
+  const RunOnPlan p = plan_run_on(kWheel, Guide{GuideKind::kTangential, 0, l, SpanModel::kSlider});
+  ASSERT_EQ(p.seating_angles.size(), 2u);
+  // (29) as printed (with l for '1')
+  EXPECT_NEAR(Tangential::seating(d1 / 2, l, d1), p.seating_angles[0], 1e-12);
+  // (34) prints the span as (1 − d); the bar from the first seated joint is l − (t + d)
+  EXPECT_NEAR(Tangential::seating(P - d2 / 2, l - t - d, d2), p.seating_angles[1], 1e-12);
+  EXPECT_GT(std::abs(Tangential::seating(P - d2 / 2, l - d, d2) - p.seating_angles[1]), 1e-3);
+  // and (33) prints cos(−δ2/2 + ξ2); the geometry (and (34) itself) need cos(δ2/2 + ξ2)
+  const double xi2 = p.seating_angles[1] - (P - d2 / 2);
+  EXPECT_NEAR(std::sin(xi2), R / (l - t - d) * (1 - std::cos(d2 / 2 + xi2)), 1e-12);
+  EXPECT_GT(std::abs(std::sin(xi2) - R / (l - t - d) * (1 - std::cos(-d2 / 2 + xi2))), 1e-4);
+  EXPECT_NEAR(p.seating_angles[0] * 180 / kPi, 15.85, 0.01);
+  EXPECT_NEAR(p.seating_angles[1] * 180 / kPi, 37.57, 0.01);
+}
+
+TEST(Paper003, TangentialPositionsEqs26_30_31HoldAnd35NeedsTwoCorrections) {
+  const RunOnPlan p = plan_run_on(kWheel, Guide{GuideKind::kTangential, 0, l, SpanModel::kSlider});
+  const double g1 = p.seating_angles[0];
+  const double g2 = p.seating_angles[1];
+  const Fn x26 = [](double f) { return l + R * std::sin(f) - std::sqrt(l * l - R * R * std::pow(1 - std::cos(f), 2)); };
+  EXPECT_LT(deviation(x26, model_x(p), 0, g1), kAgreeTol);
+  const Fn x30 = [](double f) { return Tangential::x(l - t - d, d1 - f); };
+  const Fn x31 = [](double f) { return Tangential::x(l - t - d, -(d2 + f - P)); };
+  EXPECT_LT(deviation(x30, model_x(p), g1, d1), kAgreeTol);
+  EXPECT_LT(deviation(x31, model_x(p), d1, g2), kAgreeTol);
+  // (35) as printed: span (l − t) and '+' under the root. Geometry: span l − 2t, '−'.
+  const Fn x35_printed = [](double f) {
+    return l - R * std::sin(P - f) - std::sqrt(std::pow(l - t, 2) + R * R * std::pow(1 - std::cos(P - f), 2));
+  };
+  const Fn x35_fixed = [](double f) { return Tangential::x(l - 2 * t, P - f); };
+  EXPECT_LT(deviation(x35_fixed, model_x(p), g2, P), kAgreeTol);
+  EXPECT_GT(deviation(x35_printed, model_x(p), g2, P), 0.5 * t);
+  EXPECT_NEAR(x35_fixed(P), 2 * t, 1e-15);  // the strand advances two pitches per period
+}
+
+TEST(Paper003, TangentialVelocitiesEqs36To39HoldWithTheGeometricSpans) {
+  const RunOnPlan p = plan_run_on(kWheel, Guide{GuideKind::kTangential, 0, l, SpanModel::kSlider});
+  const double g1 = p.seating_angles[0];
+  const double g2 = p.seating_angles[1];
+  const Fn v36 = [](double f) {
+    return w * R * (std::cos(f) + R * (1 - std::cos(f)) * std::sin(f) / Tangential::root(l, f));
+  };
+  EXPECT_LT(deviation(v36, model_v(p), 0, g1), kAgreeTol);
+  EXPECT_LT(deviation([](double f) { return Tangential::v(l - t - d, d1 - f); }, model_v(p), g1, d1), kAgreeTol);
+  // (38) is (37) in the argument ψ = −θ: cos ψ + R(1 − cos ψ) sin ψ / S; printed span (l − t)
+  const Fn v38 = [](double f) {
+    const double psi = d2 + f - P;
+    return w * R * (std::cos(psi) + R * (1 - std::cos(psi)) * std::sin(psi) / Tangential::root(l - t - d, psi));
+  };
+  EXPECT_LT(deviation(v38, model_v(p), d1, g2), kAgreeTol);
+  EXPECT_LT(deviation([](double f) { return Tangential::v(l - 2 * t, P - f); }, model_v(p), g2, P), kAgreeTol);
+  EXPECT_GT(deviation([](double f) { return Tangential::v(l - t, P - f); }, model_v(p), g2, P), 1e-6);
+}
+
+TEST(Paper003, TangentialAccelerationsEq40And42HoldEqs41And43HaveTheWrongSign) {
+  const RunOnPlan p = plan_run_on(kWheel, Guide{GuideKind::kTangential, 0, l, SpanModel::kSlider});
+  const double g1 = p.seating_angles[0];
+  const double g2 = p.seating_angles[1];
+  EXPECT_LT(deviation([](double f) { return Tangential::a40(l, f); }, model_a(p), 0, g1), kAgreeTol);
+  // (42) is (40)'s form in ψ = δ2 + φ − 2π/z with the span l − t − d (printed (1 − d))
+  EXPECT_LT(deviation([](double f) { return Tangential::a40(l - t - d, d2 + f - P); }, model_a(p), d1, g2), kAgreeTol);
+  // (41), (43): the bracket enters with '−'; the derivative of (37), (39) needs '+'
+  const Fn a41 = [](double f) { return Tangential::a_printed(l - t - d, d1 - f); };
+  const Fn a41_fixed = [](double f) { return 2 * w * w * R * std::sin(d1 - f) - Tangential::a_printed(l - t - d, d1 - f); };
+  EXPECT_GT(deviation(a41, model_a(p), g1, d1), 0.1);
+  EXPECT_LT(deviation(a41_fixed, model_a(p), g1, d1), kAgreeTol);
+  const Fn a43_fixed = [](double f) { return 2 * w * w * R * std::sin(P - f) - Tangential::a_printed(l - 2 * t, P - f); };
+  EXPECT_LT(deviation(a43_fixed, model_a(p), g2, P), kAgreeTol);
+}
+
+// The paper's conclusions (§3.2 end, §4), checked on the validated curves of its example.
+struct Example {
+  RunOnResult free, chordal, tangential;
+  Example() {
+    const Sampling s{w, 4001, std::nullopt};
+    free = run_on(kWheel, Guide{}, s);
+    chordal = run_on(kWheel, Guide{GuideKind::kChordal, 0, l, SpanModel::kSlider}, s);
+    tangential = run_on(kWheel, Guide{GuideKind::kTangential, 0, l, SpanModel::kSlider}, s);
+  }
+};
+
+double end_jump(const RunOnResult& r) {  // a(2π/z⁺) − a(2π/z⁻): the change at the period's end
+  const RunOnPlan& p = r.plan;
+  return w * w * (evaluate(p, P).d2x - evaluate_phase(p, p.phases.size() - 1, P).d2x);
+}
+
+TEST(Paper003, ConclusionAboutTheEndOfThePeriodHolds) {
+  // "Free run-on has the most abrupt change of sign of the acceleration at the end of the period;
+  // it is smaller for chordal run-on; tangential run-on has no change of sign there, only a drop
+  // of the acceleration to zero."
+  const Example e;
+  const double free_jump = end_jump(e.free);
+  const double chordal_jump = end_jump(e.chordal);
+  EXPECT_NEAR(free_jump, 2 * w * w * R * std::sin(d1 / 2), 1e-12);  // −1.025 → +1.025 m/s²
+  EXPECT_LT(std::abs(chordal_jump), std::abs(free_jump));            // 1.997 < 2.050 m/s²
+  const RunOnPlan& tp = e.tangential.plan;
+  const double a_before = w * w * evaluate_phase(tp, tp.phases.size() - 1, P - 1e-6).d2x;
+  EXPECT_GE(a_before, 0.0);                                // no change of sign ...
+  EXPECT_NEAR(w * w * evaluate(tp, P).d2x, 0.0, 1e-15);    // ... the acceleration drops to zero
+  EXPECT_NEAR(end_jump(e.tangential), 0.0, 1e-5);
+}
+
+TEST(Paper003, ConclusionThatTangentialRunOnHasTheSmallestExtremesDoesNotHold) {
+  // "Tangential run-on also has the smallest extreme accelerations." On the corrected model of
+  // the paper's example (l = 256 mm) it does not: the jumps move from the period's end to the
+  // seatings inside the period, where the inclined span adds to the crank's acceleration.
+  const Example e;
+  auto peak = [](const RunOnResult& r) { return std::max(-r.extremes.ax_min, r.extremes.ax_max); };
+  EXPECT_NEAR(peak(e.free), w * w * R * std::sin(d1 / 2), 1e-9);  // 1.025 m/s²
+  EXPECT_NEAR(peak(e.chordal), 1.2205, 1e-4);
+  EXPECT_NEAR(peak(e.tangential), 1.2233, 1e-4);
+  EXPECT_GT(peak(e.tangential), peak(e.chordal));
+  EXPECT_GT(peak(e.chordal), peak(e.free));
+  // the range a_max − a_min is also no smaller for tangential than for free run-on
+  EXPECT_GE(e.tangential.extremes.ax_max - e.tangential.extremes.ax_min,
+            e.free.extremes.ax_max - e.free.extremes.ax_min - 1e-3);
+}
+
+}  // namespace
+}  // namespace catena::pocketwheel

@@ -32,7 +32,7 @@ Vec2 guided_point(Vec2 crank, double height, double span) {
     const double df = 2.0 * (g - crank.x);
     const double step = f / df;
     g -= step;
-    if (std::abs(step) < 1e-17) break;
+    if (std::abs(step) <= 1e-16 * (std::abs(g) + span)) break;  // converged to rounding
   }
   return {g, height};
 }
