@@ -48,7 +48,8 @@ BENCHMARK(BM_EvaluateClosedForm)->ArgName("guide")->DenseRange(0, 2);
 
 // The numerical solver: positions by Newton's method, derivatives by finite differences.
 void BM_EvaluateNumeric(benchmark::State& state) {
-  const numeric::NumericPlan plan = numeric::plan(kWheel, guide_for(static_cast<int>(state.range(0))));
+  const numeric::NumericPlan plan =
+      numeric::plan(kWheel, guide_for(static_cast<int>(state.range(0))));
   const double step = plan.period / 4096.0;
   double phi = 0.0;
   for (auto _ : state) {

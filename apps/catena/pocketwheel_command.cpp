@@ -94,7 +94,8 @@ Request read(const Flags& f) {
       if (f.guide_height.empty()) {
         in.add({"--guide-height", "(missing)", "a length H, required with --guide height"});
       } else {
-        guide.height = in.quantity("--guide-height", f.guide_height, QuantityKind::kLength).value_or(NAN);
+        guide.height =
+            in.quantity("--guide-height", f.guide_height, QuantityKind::kLength).value_or(NAN);
       }
     } else if (!f.guide_height.empty()) {
       in.add({"--guide-height", f.guide_height, "no value unless --guide height is chosen"});
@@ -122,7 +123,8 @@ RunOnResult analyse(const Request& r, const Guide& guide) {
 
 std::string guide_label(const Guide& guide) {
   std::string label = pocketwheel::to_string(guide.kind);
-  if (guide.kind != GuideKind::kNone) label += std::string(" (") + pocketwheel::to_string(guide.span_model) + ")";
+  if (guide.kind != GuideKind::kNone)
+    label += std::string(" (") + pocketwheel::to_string(guide.span_model) + ")";
   return label;
 }
 
@@ -135,7 +137,8 @@ nlohmann::ordered_json to_json(const Request& r, const RunOnResult& res) {
   j["source"] = "003 Dolipinski, Reich, Adamowicz, Ziegler, eqs. (1)-(43), corrected";
   j["method"] = r.numeric ? "numeric" : "closed";
   j["guide"] = pocketwheel::to_string(res.plan.guide.kind);
-  j["span_model"] = forced ? ordered_json(pocketwheel::to_string(res.plan.guide.span_model)) : ordered_json();
+  j["span_model"] =
+      forced ? ordered_json(pocketwheel::to_string(res.plan.guide.span_model)) : ordered_json();
   j["pitch"] = r.wheel.pitch;
   j["wire"] = r.wheel.wire;
   j["teeth"] = r.wheel.teeth;
@@ -149,8 +152,10 @@ nlohmann::ordered_json to_json(const Request& r, const RunOnResult& res) {
   j["guide_height"] = forced ? ordered_json(res.plan.guide_height) : ordered_json();
   j["seating_angles"] = res.plan.seating_angles;
   j["first_link"] = res.plan.first_link;
-  j["extremes"] = {{"vx_min", res.extremes.vx_min}, {"vx_max", res.extremes.vx_max},
-                   {"ax_min", res.extremes.ax_min}, {"ax_max", res.extremes.ax_max}};
+  j["extremes"] = {{"vx_min", res.extremes.vx_min},
+                   {"vx_max", res.extremes.vx_max},
+                   {"ax_min", res.extremes.ax_min},
+                   {"ax_max", res.extremes.ax_max}};
   ordered_json series;
   series["phi"] = res.series.phi;
   series["time"] = res.series.time;
@@ -165,17 +170,38 @@ nlohmann::ordered_json to_json(const Request& r, const RunOnResult& res) {
   j["series"] = series;
   ordered_json diagnostics = ordered_json::array();
   for (const Diagnostic& d : res.diagnostics) {
-    diagnostics.push_back({{"severity", to_string(d.severity)}, {"code", d.code},
-                           {"message", d.message}, {"value", d.value}, {"limit", d.limit}});
+    diagnostics.push_back({{"severity", to_string(d.severity)},
+                           {"code", d.code},
+                           {"message", d.message},
+                           {"value", d.value},
+                           {"limit", d.limit}});
   }
   j["diagnostics"] = diagnostics;
-  j["units"] = {{"pitch", "m"}, {"wire", "m"}, {"teeth", "1"}, {"omega", "rad/s"},
-                {"guide_end", "m"}, {"pitch_radius", "m"}, {"delta1", "rad"}, {"delta2", "rad"},
-                {"transverse_displacement", "m"}, {"period", "s"}, {"guide_height", "m"},
-                {"seating_angles", "rad"}, {"first_link", "m"}, {"vx_min", "m/s"},
-                {"vx_max", "m/s"}, {"ax_min", "m/s^2"}, {"ax_max", "m/s^2"}, {"phi", "rad"},
-                {"time", "s"}, {"x", "m"}, {"vx", "m/s"}, {"ax", "m/s^2"}, {"vy", "m/s"},
-                {"ay", "m/s^2"}, {"inertial_force", "N"}};
+  j["units"] = {{"pitch", "m"},
+                {"wire", "m"},
+                {"teeth", "1"},
+                {"omega", "rad/s"},
+                {"guide_end", "m"},
+                {"pitch_radius", "m"},
+                {"delta1", "rad"},
+                {"delta2", "rad"},
+                {"transverse_displacement", "m"},
+                {"period", "s"},
+                {"guide_height", "m"},
+                {"seating_angles", "rad"},
+                {"first_link", "m"},
+                {"vx_min", "m/s"},
+                {"vx_max", "m/s"},
+                {"ax_min", "m/s^2"},
+                {"ax_max", "m/s^2"},
+                {"phi", "rad"},
+                {"time", "s"},
+                {"x", "m"},
+                {"vx", "m/s"},
+                {"ax", "m/s^2"},
+                {"vy", "m/s"},
+                {"ay", "m/s^2"},
+                {"inertial_force", "N"}};
   return j;
 }
 
@@ -205,7 +231,8 @@ std::string to_csv(const Request& r, const std::vector<RunOnResult>& results) {
   out << "\n";
   const std::size_t n = cols.front().second->size();
   for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t c = 0; c < cols.size(); ++c) out << (c ? "," : "") << g((*cols[c].second)[i], 12);
+    for (std::size_t c = 0; c < cols.size(); ++c)
+      out << (c ? "," : "") << g((*cols[c].second)[i], 12);
     out << "\n";
   }
   return out.str();
@@ -217,10 +244,11 @@ std::string to_table(const Request& r, const std::vector<RunOnResult>& results) 
   out << "Catena pocketwheel: round-link chain running onto a pocket wheel (seed 003)\n";
   out << "chain d x t = " << g(r.wheel.wire * 1e3) << " x " << g(r.wheel.pitch * 1e3)
       << " mm, z = " << r.wheel.teeth << ", omega = " << g(r.sampling.omega) << " rad/s ("
-      << g(r.sampling.omega * 30.0 / std::numbers::pi) << " rpm), method: "
-      << (r.numeric ? "numeric" : "closed form") << "\n\n";
+      << g(r.sampling.omega * 30.0 / std::numbers::pi)
+      << " rpm), method: " << (r.numeric ? "numeric" : "closed form") << "\n\n";
   char line[256];
-  std::snprintf(line, sizeof line, "  %-34s %s mm\n", "pitch radius R (eq. 6)", g(geo.pitch_radius * 1e3).c_str());
+  std::snprintf(line, sizeof line, "  %-34s %s mm\n", "pitch radius R (eq. 6)",
+                g(geo.pitch_radius * 1e3).c_str());
   out << line;
   std::snprintf(line, sizeof line, "  %-34s %s / %s deg\n", "delta1 / delta2 (eqs. 7-8)",
                 g(deg(geo.delta1)).c_str(), g(deg(geo.delta2)).c_str());
@@ -248,10 +276,12 @@ std::string to_table(const Request& r, const std::vector<RunOnResult>& results) 
     out << "\n";
   };
   row("guide height H [mm]", [](const RunOnResult& res) {
-    return res.plan.guide.kind == GuideKind::kNone ? std::string("-") : g(res.plan.guide_height * 1e3);
+    return res.plan.guide.kind == GuideKind::kNone ? std::string("-")
+                                                   : g(res.plan.guide_height * 1e3);
   });
   row("guide end l [mm]", [](const RunOnResult& res) {
-    return res.plan.guide.kind == GuideKind::kNone ? std::string("-") : g(res.plan.guide.end_distance * 1e3);
+    return res.plan.guide.kind == GuideKind::kNone ? std::string("-")
+                                                   : g(res.plan.guide.end_distance * 1e3);
   });
   row("seating angles [deg]", [](const RunOnResult& res) {
     std::string s;
@@ -262,10 +292,12 @@ std::string to_table(const Request& r, const std::vector<RunOnResult>& results) 
   row("v_x max [m/s]", [](const RunOnResult& res) { return g(res.extremes.vx_max); });
   row("a_x min [m/s^2]", [](const RunOnResult& res) { return g(res.extremes.ax_min); });
   row("a_x max [m/s^2]", [](const RunOnResult& res) { return g(res.extremes.ax_max); });
-  row("travel per period [mm]", [](const RunOnResult& res) { return g(res.series.x.back() * 1e3); });
+  row("travel per period [mm]",
+      [](const RunOnResult& res) { return g(res.series.x.back() * 1e3); });
   if (r.sampling.strand_mass) {
     row("max |inertial force| [N]", [&](const RunOnResult& res) {
-      return g(*r.sampling.strand_mass * std::max(std::abs(res.extremes.ax_min), std::abs(res.extremes.ax_max)));
+      return g(*r.sampling.strand_mass *
+               std::max(std::abs(res.extremes.ax_min), std::abs(res.extremes.ax_max)));
     });
   }
   return out.str();

@@ -26,7 +26,8 @@ CliRun run(const std::string& args) {
   FILE* pipe = ::popen(command.c_str(), "r");
   std::array<char, 4096> buffer{};
   std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.out.append(buffer.data(), n);
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+    r.out.append(buffer.data(), n);
   const int status = ::pclose(pipe);
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   std::ifstream in(err_path);
@@ -40,7 +41,9 @@ CliRun run(const std::string& args) {
 const char* kPaper = "pocketwheel --pitch 64mm --wire 18mm --teeth 8 --omega 5";
 
 TEST(PocketwheelCli, JsonCarriesTheContractFieldsInSi) {
-  const CliRun r = run(std::string(kPaper) + " --guide tangential --guide-end 256mm --strand-mass 40kg --points 721 --format json");
+  const CliRun r =
+      run(std::string(kPaper) +
+          " --guide tangential --guide-end 256mm --strand-mass 40kg --points 721 --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key : {"pitch_radius", "delta1", "delta2", "transverse_displacement", "period",
@@ -50,7 +53,8 @@ TEST(PocketwheelCli, JsonCarriesTheContractFieldsInSi) {
   EXPECT_NEAR(j["pitch_radius"].get<double>(), 0.164283, 1e-6);
   EXPECT_NEAR(j["guide_height"].get<double>(), j["pitch_radius"].get<double>(), 1e-15);
   EXPECT_NEAR(j["period"].get<double>(), 2 * 3.14159265358979 / 8 / 5, 1e-12);
-  for (const char* key : {"vx_min", "vx_max", "ax_min", "ax_max"}) EXPECT_TRUE(j["extremes"].contains(key));
+  for (const char* key : {"vx_min", "vx_max", "ax_min", "ax_max"})
+    EXPECT_TRUE(j["extremes"].contains(key));
   const auto& s = j["series"];
   for (const char* key : {"phi", "time", "x", "vx", "ax", "inertial_force"}) {
     ASSERT_TRUE(s.contains(key)) << key;
@@ -60,7 +64,8 @@ TEST(PocketwheelCli, JsonCarriesTheContractFieldsInSi) {
   EXPECT_EQ(s["x"][0].get<double>(), 0.0);
   EXPECT_NEAR(s["phi"][720].get<double>(), 2 * 3.14159265358979 / 8, 1e-12);
   EXPECT_NEAR(s["inertial_force"][5].get<double>(), -40.0 * s["ax"][5].get<double>(), 1e-9);
-  for (const char* key : {"pitch_radius", "period", "x", "vx", "ax", "inertial_force", "seating_angles"}) {
+  for (const char* key :
+       {"pitch_radius", "period", "x", "vx", "ax", "inertial_force", "seating_angles"}) {
     EXPECT_TRUE(j["units"].contains(key)) << key;
   }
   EXPECT_EQ(j["units"]["ax"], "m/s^2");
@@ -89,18 +94,24 @@ TEST(PocketwheelCli, CsvIsAHeaderAndTheSeries) {
 }
 
 TEST(PocketwheelCli, UnitsAreAcceptedInAnySpelling) {
-  const CliRun a = run("pocketwheel --pitch 0.064m --wire '18 mm' --teeth 8 --omega '47.746 rpm' --format json --points 3");
-  const CliRun b = run("pocketwheel --pitch 64 --wire 18 --teeth 8 --omega 5 --format json --points 3");
+  const CliRun a =
+      run("pocketwheel --pitch 0.064m --wire '18 mm' --teeth 8 --omega '47.746 rpm' --format json "
+          "--points 3");
+  const CliRun b =
+      run("pocketwheel --pitch 64 --wire 18 --teeth 8 --omega 5 --format json --points 3");
   ASSERT_EQ(a.status, 0) << a.err;
   ASSERT_EQ(b.status, 0) << b.err;
   EXPECT_NEAR(nlohmann::json::parse(a.out)["omega"].get<double>(), 5.0, 1e-4);
-  EXPECT_EQ(nlohmann::json::parse(a.out)["pitch_radius"], nlohmann::json::parse(b.out)["pitch_radius"]);
+  EXPECT_EQ(nlohmann::json::parse(a.out)["pitch_radius"],
+            nlohmann::json::parse(b.out)["pitch_radius"]);
 }
 
 TEST(PocketwheelCli, BadInputNamesEveryFlagAndWritesNothing) {
   const auto out = std::filesystem::temp_directory_path() / "catena_cli_should_not_exist.json";
   std::filesystem::remove(out);
-  const CliRun r = run("pocketwheel --pitch 5kg --wire 18mm --teeth 2 --omega '5 Hz' --format json --output " + out.string());
+  const CliRun r =
+      run("pocketwheel --pitch 5kg --wire 18mm --teeth 2 --omega '5 Hz' --format json --output " +
+          out.string());
   EXPECT_EQ(r.status, 2);
   EXPECT_TRUE(r.out.empty());
   EXPECT_FALSE(std::filesystem::exists(out));
@@ -116,8 +127,11 @@ TEST(PocketwheelCli, InfeasibleGeometryStatesTheLimit) {
   EXPECT_NE(r.err.find("greater than the wire diameter"), std::string::npos) << r.err;
   r = run(std::string(kPaper) + " --guide tangential --guide-end 100mm");
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("--guide-end = 0.1 m: expected a guide end outside the pitch circle: l > R = 0.164283 m"),
-            std::string::npos) << r.err;
+  EXPECT_NE(
+      r.err.find(
+          "--guide-end = 0.1 m: expected a guide end outside the pitch circle: l > R = 0.164283 m"),
+      std::string::npos)
+      << r.err;
   r = run(std::string(kPaper) + " --guide height --guide-height 150mm");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--guide-height"), std::string::npos) << r.err;
@@ -134,7 +148,8 @@ TEST(PocketwheelCli, OutputFileAndCsvSideFile) {
   const auto dir = std::filesystem::temp_directory_path();
   const auto json = dir / "catena_cli_out.json";
   const auto csv = dir / "catena_cli_out.csv";
-  const CliRun r = run("pocketwheel --example --format json --output " + json.string() + " --csv " + csv.string());
+  const CliRun r = run("pocketwheel --example --format json --output " + json.string() + " --csv " +
+                       csv.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(r.out.empty());
   const auto j = nlohmann::json::parse(std::ifstream(json));
@@ -143,14 +158,16 @@ TEST(PocketwheelCli, OutputFileAndCsvSideFile) {
   std::ifstream in(csv);
   std::string header;
   std::getline(in, header);
-  EXPECT_EQ(header.rfind("phi,time,x_none,vx_none,ax_none,vy_none,ay_none,x_chordal", 0), 0u) << header;
+  EXPECT_EQ(header.rfind("phi,time,x_none,vx_none,ax_none,vy_none,ay_none,x_chordal", 0), 0u)
+      << header;
   std::filesystem::remove(json);
   std::filesystem::remove(csv);
 }
 
 TEST(PocketwheelCli, NumericMethodAgreesWithClosedForms) {
   const CliRun a = run(std::string(kPaper) + " --guide tangential --format json --points 101");
-  const CliRun b = run(std::string(kPaper) + " --guide tangential --format json --points 101 --method numeric");
+  const CliRun b =
+      run(std::string(kPaper) + " --guide tangential --format json --points 101 --method numeric");
   ASSERT_EQ(a.status, 0);
   ASSERT_EQ(b.status, 0);
   const auto ja = nlohmann::json::parse(a.out);

@@ -38,7 +38,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Accepted{"5", QuantityKind::kAngularSpeed, 5.0},  // bare: 1/s
                       Accepted{"5 rad/s", QuantityKind::kAngularSpeed, 5.0},
                       Accepted{"5 s-1", QuantityKind::kAngularSpeed, 5.0},
-                      Accepted{"47.75 rpm", QuantityKind::kAngularSpeed, 47.75 * std::numbers::pi / 30.0},
+                      Accepted{"47.75 rpm", QuantityKind::kAngularSpeed,
+                               47.75 * std::numbers::pi / 30.0},
                       Accepted{"60 rev/min", QuantityKind::kAngularSpeed, 2.0 * std::numbers::pi},
                       Accepted{"20deg", QuantityKind::kAngle, 20.0 * kDeg},
                       Accepted{"20 degree", QuantityKind::kAngle, 20.0 * kDeg},

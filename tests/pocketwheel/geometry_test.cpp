@@ -23,9 +23,11 @@ TEST(WheelGeometry, PitchRadiusEq6IsTheRootOfThePolygonClosure) {
     wheel.wire = ratio(rng) * wheel.pitch;
     const WheelGeometry g = wheel_geometry(wheel);
     EXPECT_NEAR(g.pitch_radius, numeric::pitch_radius(wheel), kLengthTol);
-    EXPECT_NEAR(g.delta1 + g.delta2, g.tooth_angle, kAngleTol);                     // eq. (9)
-    EXPECT_NEAR(2.0 * g.pitch_radius * std::sin(g.delta1 / 2), wheel.pitch + wheel.wire, kLengthTol);
-    EXPECT_NEAR(2.0 * g.pitch_radius * std::sin(g.delta2 / 2), wheel.pitch - wheel.wire, kLengthTol);
+    EXPECT_NEAR(g.delta1 + g.delta2, g.tooth_angle, kAngleTol);  // eq. (9)
+    EXPECT_NEAR(2.0 * g.pitch_radius * std::sin(g.delta1 / 2), wheel.pitch + wheel.wire,
+                kLengthTol);
+    EXPECT_NEAR(2.0 * g.pitch_radius * std::sin(g.delta2 / 2), wheel.pitch - wheel.wire,
+                kLengthTol);
     EXPECT_GT(g.delta1, g.delta2);
   }
 }

@@ -38,21 +38,33 @@ std::vector<Case> cases() {
   std::vector<Case> out;
   for (SpanModel span : {SpanModel::kSlider, SpanModel::kPivot}) {
     const bool slider = span == SpanModel::kSlider;
-    out.push_back({slider ? "free" : "free_again", kPaperWheel, {GuideKind::kNone, 0, 0, span}, kPaperOmega});
-    out.push_back({slider ? "chordal_slider" : "chordal_pivot", kPaperWheel,
-                   {GuideKind::kChordal, 0, kPaperGuideEnd, span}, kPaperOmega});
-    out.push_back({slider ? "tangential_slider" : "tangential_pivot", kPaperWheel,
-                   {GuideKind::kTangential, 0, kPaperGuideEnd, span}, kPaperOmega});
-    out.push_back({slider ? "mid_slider" : "mid_pivot", kPaperWheel,
-                   {GuideKind::kHeight, mid, kPaperGuideEnd, span}, kPaperOmega});
-    out.push_back({slider ? "high_slider" : "high_pivot", kPaperWheel,
-                   {GuideKind::kHeight, g.chordal_height + 0.9 * (g.pitch_radius - g.chordal_height),
-                    0.4, span},
+    out.push_back(
+        {slider ? "free" : "free_again", kPaperWheel, {GuideKind::kNone, 0, 0, span}, kPaperOmega});
+    out.push_back({slider ? "chordal_slider" : "chordal_pivot",
+                   kPaperWheel,
+                   {GuideKind::kChordal, 0, kPaperGuideEnd, span},
                    kPaperOmega});
-    out.push_back({slider ? "z5_slider" : "z5_pivot", PocketWheel{0.042, 0.014, 5},
-                   {GuideKind::kTangential, 0, 0.3, span}, 12.0});
-    out.push_back({slider ? "z12_chordal" : "z12_chordal_pivot", PocketWheel{0.092, 0.026, 12},
-                   {GuideKind::kChordal, 0, 0.9, span}, 2.0});
+    out.push_back({slider ? "tangential_slider" : "tangential_pivot",
+                   kPaperWheel,
+                   {GuideKind::kTangential, 0, kPaperGuideEnd, span},
+                   kPaperOmega});
+    out.push_back({slider ? "mid_slider" : "mid_pivot",
+                   kPaperWheel,
+                   {GuideKind::kHeight, mid, kPaperGuideEnd, span},
+                   kPaperOmega});
+    out.push_back({slider ? "high_slider" : "high_pivot",
+                   kPaperWheel,
+                   {GuideKind::kHeight,
+                    g.chordal_height + 0.9 * (g.pitch_radius - g.chordal_height), 0.4, span},
+                   kPaperOmega});
+    out.push_back({slider ? "z5_slider" : "z5_pivot",
+                   PocketWheel{0.042, 0.014, 5},
+                   {GuideKind::kTangential, 0, 0.3, span},
+                   12.0});
+    out.push_back({slider ? "z12_chordal" : "z12_chordal_pivot",
+                   PocketWheel{0.092, 0.026, 12},
+                   {GuideKind::kChordal, 0, 0.9, span},
+                   2.0});
   }
   return out;
 }
@@ -100,8 +112,8 @@ TEST_P(RunOnCase, ClosedFormsAgreeWithTheNumericalSolver) {
 TEST_P(RunOnCase, DerivativesMatchFiniteDifferencesOfTheirOwnPositions) {
   const Case& c = GetParam();
   const RunOnPlan plan = plan_run_on(c.wheel, c.guide);
-  constexpr double h = 1e-5;                 // [rad]
-  constexpr double kFdTol = 50.0 * h * h;    // relative to the scale R, central differences O(h²)
+  constexpr double h = 1e-5;               // [rad]
+  constexpr double kFdTol = 50.0 * h * h;  // relative to the scale R, central differences O(h²)
   const double scale = plan.geometry.pitch_radius;
   for (std::size_t index = 0; index < plan.phases.size(); ++index) {
     const Phase& p = plan.phases[index];
@@ -129,7 +141,8 @@ TEST_P(RunOnCase, PositionIsContinuousAndAdvancesTwoPitchesPerPeriod) {
         << "x jumps at the seating at phi = " << at;
   }
   const double period = plan.geometry.tooth_angle;
-  EXPECT_NEAR(evaluate_phase(plan, plan.phases.size() - 1, period).x, 2.0 * c.wheel.pitch, kPositionTol);
+  EXPECT_NEAR(evaluate_phase(plan, plan.phases.size() - 1, period).x, 2.0 * c.wheel.pitch,
+              kPositionTol);
   EXPECT_NEAR(evaluate(plan, period).x, 2.0 * c.wheel.pitch, kPositionTol);
   // At 2π/z the sample holds the right-hand limit: the next period's start.
   EXPECT_DOUBLE_EQ(evaluate(plan, period).d2x, evaluate(plan, 0.0).d2x);
@@ -156,7 +169,8 @@ TEST(RunOn, FarGuideTendsToFreeRunOn) {
   // run-on does, with an error of order R/l.
   const double l = 2000.0;  // [m]
   const RunOnPlan free = plan_run_on(kPaperWheel, Guide{});
-  const RunOnPlan far = plan_run_on(kPaperWheel, Guide{GuideKind::kChordal, 0, l, SpanModel::kSlider});
+  const RunOnPlan far =
+      plan_run_on(kPaperWheel, Guide{GuideKind::kChordal, 0, l, SpanModel::kSlider});
   const double r = free.geometry.pitch_radius;
   for (int i = 0; i < 200; ++i) {
     const double phi = free.geometry.tooth_angle * (i + 0.5) / 200;
@@ -182,8 +196,11 @@ TEST(RunOn, InfeasibleGuidesAreErrorsThatStateTheLimit) {
     EXPECT_NE(text.find("l ≥ "), std::string::npos) << text;
     // the stated limit is the boundary: just above it the plan exists
     const double limit = std::stod(text.substr(text.find("l ≥ ") + std::string("l ≥ ").size()));
-    EXPECT_NO_THROW(plan_run_on(kPaperWheel, Guide{GuideKind::kChordal, 0, limit * 1.0001, SpanModel::kSlider}));
-    EXPECT_THROW(plan_run_on(kPaperWheel, Guide{GuideKind::kChordal, 0, limit * 0.999, SpanModel::kSlider}), InputError);
+    EXPECT_NO_THROW(plan_run_on(kPaperWheel,
+                                Guide{GuideKind::kChordal, 0, limit * 1.0001, SpanModel::kSlider}));
+    EXPECT_THROW(
+        plan_run_on(kPaperWheel, Guide{GuideKind::kChordal, 0, limit * 0.999, SpanModel::kSlider}),
+        InputError);
   }
   try {
     plan_run_on(kPaperWheel, Guide{GuideKind::kHeight, 0.1, 0.256, SpanModel::kSlider});

@@ -69,11 +69,11 @@ struct Phase {
 struct RunOnPlan {
   WheelGeometry geometry;
   Guide guide;
-  double guide_height = 0.0;            ///< [m] H (0 for free run-on)
-  std::vector<Phase> phases;            ///< cover [0, 2π/z] in order
-  std::vector<double> seating_angles;   ///< [rad] seating events in [0, 2π/z)
-  double first_link = 0.0;              ///< [m] length of the first link to seat after φ = 0
-  double span0 = 0.0;                   ///< [m] slider bar length / pivot span at φ = 0
+  double guide_height = 0.0;           ///< [m] H (0 for free run-on)
+  std::vector<Phase> phases;           ///< cover [0, 2π/z] in order
+  std::vector<double> seating_angles;  ///< [rad] seating events in [0, 2π/z)
+  double first_link = 0.0;             ///< [m] length of the first link to seat after φ = 0
+  double span0 = 0.0;                  ///< [m] slider bar length / pivot span at φ = 0
 };
 
 /// Kinematics at one φ, as derivatives with respect to φ (multiply by ω, ω² for time).

@@ -6,8 +6,7 @@
 namespace catena::pocketwheel {
 
 template <class Evaluate>
-RunOnResult sample_run_on(const RunOnPlan& plan, const Sampling& sampling,
-                          Evaluate&& evaluate_at) {
+RunOnResult sample_run_on(const RunOnPlan& plan, const Sampling& sampling, Evaluate&& evaluate_at) {
   throw_if_any(validate(sampling));
   RunOnResult result;
   result.plan = plan;
@@ -28,9 +27,9 @@ RunOnResult sample_run_on(const RunOnPlan& plan, const Sampling& sampling,
   }
   for (std::size_t i = 0; i < n; ++i) {
     // Both ends included; the last sample is exactly 2π/z.
-    const double phi = i + 1 == n ? period_angle
-                                  : period_angle * static_cast<double>(i) /
-                                        static_cast<double>(n - 1);
+    const double phi = i + 1 == n
+                           ? period_angle
+                           : period_angle * static_cast<double>(i) / static_cast<double>(n - 1);
     const PointKinematics k = evaluate_at(phi);
     s.phi[i] = phi;
     s.time[i] = phi / omega;

@@ -6,9 +6,9 @@
 namespace catena {
 namespace {
 std::string join(const std::vector<Issue>& issues) {
-  std::string text = issues.size() == 1 ? "invalid input:" : "invalid input (" +
-                                                                  std::to_string(issues.size()) +
-                                                                  " problems):";
+  std::string text = issues.size() == 1
+                         ? "invalid input:"
+                         : "invalid input (" + std::to_string(issues.size()) + " problems):";
   for (const Issue& issue : issues) text += "\n  " + to_string(issue);
   return text;
 }

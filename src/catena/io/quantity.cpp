@@ -127,14 +127,17 @@ const char* target_spelling(QuantityKind kind) {
 // UDUNITS-2 treats radian as dimensionless, so "3" or "50 %" would convert to an angle and
 // "1/min" to an angular speed. Angles must name an angle unit; angular speeds must name rad or
 // revolution, or be exactly 1/s.
-bool names_angle(const std::string& definition) { return definition.find("rad") != std::string::npos; }
+bool names_angle(const std::string& definition) {
+  return definition.find("rad") != std::string::npos;
+}
 
 // True when the unit part of "<number> <unit>" is written as exactly one per second.
 bool is_per_second(const std::string& expression) {
   char* end = nullptr;
   std::strtod(expression.c_str(), &end);
   const std::string unit = trim(end == nullptr ? expression : std::string_view(end));
-  return unit == "1/s" || unit == "/s" || unit == "s-1" || unit == "s^-1" || unit == "s\u207b\u00b9";
+  return unit == "1/s" || unit == "/s" || unit == "s-1" || unit == "s^-1" ||
+         unit == "s\u207b\u00b9";
 }
 
 }  // namespace
@@ -185,8 +188,9 @@ std::optional<double> parse_quantity(std::string_view raw, QuantityKind kind,
                                      std::string_view field, std::vector<Issue>& issues) {
   const std::string text = trim(raw);
   auto fail = [&](const std::string& why) -> std::optional<double> {
-    issues.push_back({std::string(field), "'" + std::string(raw) + "'",
-                      std::string(accepted_spellings(kind)) + (why.empty() ? "" : " (" + why + ")")});
+    issues.push_back(
+        {std::string(field), "'" + std::string(raw) + "'",
+         std::string(accepted_spellings(kind)) + (why.empty() ? "" : " (" + why + ")")});
     return std::nullopt;
   };
   if (text.empty()) return fail("the value is empty");
@@ -203,8 +207,9 @@ std::optional<double> parse_quantity(std::string_view raw, QuantityKind kind,
     expression = text;
   }
   if (kind == QuantityKind::kAngularSpeed && mentions_hertz(text)) {
-    return fail("Hz does not say whether it counts revolutions or radians per second: use rpm "
-                "or 1/s");
+    return fail(
+        "Hz does not say whether it counts revolutions or radians per second: use rpm "
+        "or 1/s");
   }
 
   UnitSystem& system = units();

@@ -14,7 +14,9 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kEventTol = 1e-12;  // [rad] two events closer than this are one event
 constexpr int kFeasibilityGrid = 256;
 
-double central_angle(double radius, double chord) { return 2.0 * std::asin(chord / (2.0 * radius)); }
+double central_angle(double radius, double chord) {
+  return 2.0 * std::asin(chord / (2.0 * radius));
+}
 
 // Wraps an angle to (−π, π].
 double wrap(double angle) {
@@ -137,7 +139,8 @@ std::optional<RunOnPlan> forced_plan(RunOnPlan plan, double theta0, double first
   if (plan.phases.front().end <= kEventTol) return std::nullopt;  // J1 already seated at φ = 0
   // Seating events in [0, 2π/z): the ends of all phases but the last; with two phases the
   // second seating falls on 2π/z, which is the event at φ = 0 of the period.
-  for (std::size_t i = 0; i + 1 < plan.phases.size(); ++i) plan.seating_angles.push_back(plan.phases[i].end);
+  for (std::size_t i = 0; i + 1 < plan.phases.size(); ++i)
+    plan.seating_angles.push_back(plan.phases[i].end);
   if (plan.phases.size() == 2) plan.seating_angles.push_back(0.0);
   std::sort(plan.seating_angles.begin(), plan.seating_angles.end());
   return plan;
@@ -234,28 +237,27 @@ const char* to_string(GuideKind kind) {
   return "unknown";
 }
 
-const char* to_string(SpanModel model) {
-  return model == SpanModel::kSlider ? "slider" : "pivot";
-}
+const char* to_string(SpanModel model) { return model == SpanModel::kSlider ? "slider" : "pivot"; }
 
 std::vector<Issue> validate(const PocketWheel& wheel, const Guide& guide) {
   std::vector<Issue> issues = validate(wheel);
   if (guide.kind == GuideKind::kNone) return issues;
   check::finite_positive(issues, "guide_end", guide.end_distance, "m");
-  if (guide.kind == GuideKind::kHeight) check::finite_positive(issues, "guide_height", guide.height, "m");
+  if (guide.kind == GuideKind::kHeight)
+    check::finite_positive(issues, "guide_height", guide.height, "m");
   if (!issues.empty()) return issues;
   const WheelGeometry g = wheel_geometry(wheel);
   if (guide.end_distance <= g.pitch_radius) {
-    issues.push_back({"guide_end", check::format_si(guide.end_distance, "m"),
-                      "a guide end outside the pitch circle: l > R = " +
-                          check::format_si(g.pitch_radius, "m")});
+    issues.push_back(
+        {"guide_end", check::format_si(guide.end_distance, "m"),
+         "a guide end outside the pitch circle: l > R = " + check::format_si(g.pitch_radius, "m")});
   }
-  if (guide.kind == GuideKind::kHeight &&
-      (guide.height < g.chordal_height * (1.0 - 1e-12) || guide.height > g.pitch_radius * (1.0 + 1e-12))) {
-    issues.push_back({"guide_height", check::format_si(guide.height, "m"),
-                      "H between the chordal height R·cos(δ1/2) = " +
-                          check::format_si(g.chordal_height, "m") + " and the tangential R = " +
-                          check::format_si(g.pitch_radius, "m")});
+  if (guide.kind == GuideKind::kHeight && (guide.height < g.chordal_height * (1.0 - 1e-12) ||
+                                           guide.height > g.pitch_radius * (1.0 + 1e-12))) {
+    issues.push_back(
+        {"guide_height", check::format_si(guide.height, "m"),
+         "H between the chordal height R·cos(δ1/2) = " + check::format_si(g.chordal_height, "m") +
+             " and the tangential R = " + check::format_si(g.pitch_radius, "m")});
   }
   return issues;
 }
@@ -332,7 +334,8 @@ std::vector<Issue> validate(const Sampling& sampling) {
   if (sampling.points < 2) {
     issues.push_back({"points", std::to_string(sampling.points), "at least 2 samples"});
   }
-  if (sampling.strand_mass) check::finite_positive(issues, "strand_mass", *sampling.strand_mass, "kg");
+  if (sampling.strand_mass)
+    check::finite_positive(issues, "strand_mass", *sampling.strand_mass, "kg");
   return issues;
 }
 
@@ -362,8 +365,8 @@ Extremes extremes(const RunOnPlan& plan, double omega) {
         }
         if (best > 0 && best < kGrid) {  // interior: refine with Brent's method
           auto [at, refined] = boost::math::tools::brent_find_minima(
-              [&](double phi) { return value(phi, accel, sign); },
-              p.begin + (best - 1) * step, p.begin + (best + 1) * step, 52);
+              [&](double phi) { return value(phi, accel, sign); }, p.begin + (best - 1) * step,
+              p.begin + (best + 1) * step, 52);
           (void)at;
           best_value = std::min(best_value, refined);
         }

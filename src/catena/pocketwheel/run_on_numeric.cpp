@@ -22,13 +22,16 @@ Vec2 rotate(Vec2 p, double angle) {  // counter-clockwise by `angle`
 double norm(Vec2 p) { return std::hypot(p.x, p.y); }
 
 // The wheel turns clockwise in this frame (the top moves towards +x).
-Vec2 crank_at(const NumericPhase& phase, double phi) { return rotate(phase.crank_begin, -(phi - phase.begin)); }
+Vec2 crank_at(const NumericPhase& phase, double phi) {
+  return rotate(phase.crank_begin, -(phi - phase.begin));
+}
 
 // Guided point of the slider: G = (g, H) with |G − J| = L, g < J.x (Newton on the constraint).
 Vec2 guided_point(Vec2 crank, double height, double span) {
   double g = crank.x - span;
   for (int i = 0; i < 60; ++i) {
-    const double f = (g - crank.x) * (g - crank.x) + (height - crank.y) * (height - crank.y) - span * span;
+    const double f =
+        (g - crank.x) * (g - crank.x) + (height - crank.y) * (height - crank.y) - span * span;
     const double df = 2.0 * (g - crank.x);
     const double step = f / df;
     g -= step;
@@ -44,7 +47,8 @@ Vec2 span_target(const NumericPlan& plan, const NumericPhase& phase, Vec2 crank)
     case GuideKind::kNone:
       return {crank.x - 1.0, crank.y};
     default:
-      if (plan.guide.span_model == SpanModel::kSlider) return guided_point(crank, plan.height, phase.span);
+      if (plan.guide.span_model == SpanModel::kSlider)
+        return guided_point(crank, plan.height, phase.span);
       return {-plan.guide.end_distance, plan.height};
   }
 }
@@ -60,7 +64,8 @@ double next_joint_gap(const NumericPlan& plan, const NumericPhase& phase, double
 }
 
 // First φ after phase.begin at which the next joint reaches the pitch circle, up to `limit`.
-std::optional<double> find_seating(const NumericPlan& plan, const NumericPhase& phase, double limit) {
+std::optional<double> find_seating(const NumericPlan& plan, const NumericPhase& phase,
+                                   double limit) {
   const double step = plan.period / kScanSteps;
   double a = phase.begin + 1e-9;
   double fa = next_joint_gap(plan, phase, a);
@@ -100,7 +105,8 @@ std::optional<NumericPlan> try_order(NumericPlan plan, Vec2 crank0, double first
     const Vec2 crank = crank_at(phase, phase.end);
     const Vec2 target = span_target(plan, phase, crank);
     const double n = std::hypot(target.x - crank.x, target.y - crank.y);
-    const Vec2 next{crank.x + link * (target.x - crank.x) / n, crank.y + link * (target.y - crank.y) / n};
+    const Vec2 next{crank.x + link * (target.x - crank.x) / n,
+                    crank.y + link * (target.y - crank.y) / n};
     seated += link;
     NumericPhase following{phase.end, 0.0, next, 0.0, 0.0, 0.0};
     if (free) {
@@ -120,7 +126,8 @@ std::optional<NumericPlan> try_order(NumericPlan plan, Vec2 crank0, double first
     plan.phases.back().end = plan.period;
   }
   if (plan.phases.front().end <= 1e-10) return std::nullopt;
-  for (std::size_t i = 0; i + 1 < plan.phases.size(); ++i) plan.seating_angles.push_back(plan.phases[i].end);
+  for (std::size_t i = 0; i + 1 < plan.phases.size(); ++i)
+    plan.seating_angles.push_back(plan.phases[i].end);
   if (plan.phases.size() == 2) plan.seating_angles.insert(plan.seating_angles.begin(), 0.0);
   return plan;
 }
@@ -138,9 +145,8 @@ double pitch_radius(const PocketWheel& wheel) {
   double hi = lo;
   while (closure(hi) > 0.0) hi *= 2.0;
   boost::uintmax_t iterations = 200;
-  auto [a, b] = boost::math::tools::toms748_solve(closure, lo, hi,
-                                                  boost::math::tools::eps_tolerance<double>(53),
-                                                  iterations);
+  auto [a, b] = boost::math::tools::toms748_solve(
+      closure, lo, hi, boost::math::tools::eps_tolerance<double>(53), iterations);
   return 0.5 * (a + b);
 }
 
@@ -196,7 +202,8 @@ NumericPlan plan(const PocketWheel& wheel, const Guide& guide) {
 Vec2 position(const NumericPlan& plan, std::size_t index, double phi) {
   const NumericPhase& phase = plan.phases[index];
   const Vec2 crank = crank_at(phase, phi);
-  if (plan.guide.kind == GuideKind::kNone) return {phase.offset + crank.x - phase.crank_begin.x, crank.y};
+  if (plan.guide.kind == GuideKind::kNone)
+    return {phase.offset + crank.x - phase.crank_begin.x, crank.y};
   if (plan.guide.span_model == SpanModel::kSlider) {
     return {guided_point(crank, plan.height, phase.span).x + plan.guide.end_distance, 0.0};
   }
@@ -204,14 +211,17 @@ Vec2 position(const NumericPlan& plan, std::size_t index, double phi) {
   return {phase.offset + span, 0.0};
 }
 
-PointKinematics evaluate_phase(const NumericPlan& plan, std::size_t index, double phi, double step) {
+PointKinematics evaluate_phase(const NumericPlan& plan, std::size_t index, double phi,
+                               double step) {
   // Fourth-order central differences on the phase's own position function.
   const Vec2 m2 = position(plan, index, phi - 2.0 * step);
   const Vec2 m1 = position(plan, index, phi - step);
   const Vec2 c0 = position(plan, index, phi);
   const Vec2 p1 = position(plan, index, phi + step);
   const Vec2 p2 = position(plan, index, phi + 2.0 * step);
-  auto first = [&](double a, double b, double c, double e) { return (a - 8.0 * b + 8.0 * c - e) / (12.0 * step); };
+  auto first = [&](double a, double b, double c, double e) {
+    return (a - 8.0 * b + 8.0 * c - e) / (12.0 * step);
+  };
   auto second = [&](double a, double b, double c, double e, double f) {
     return (-a + 16.0 * b - 30.0 * c + 16.0 * e - f) / (12.0 * step * step);
   };
@@ -242,7 +252,8 @@ RunOnResult run_on(const PocketWheel& wheel, const Guide& guide, const Sampling&
   // Describe the numerically found phases in closed-form terms for reporting and extremes.
   RunOnPlan described = plan_run_on(wheel, guide);
   described.seating_angles = numeric.seating_angles;
-  return sample_run_on(described, sampling, [&numeric](double phi) { return evaluate(numeric, phi); });
+  return sample_run_on(described, sampling,
+                       [&numeric](double phi) { return evaluate(numeric, phi); });
 }
 
 }  // namespace catena::pocketwheel::numeric
