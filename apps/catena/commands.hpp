@@ -11,5 +11,7 @@ namespace catena::cli {
 
 /// Registers `catena pocketwheel` on `app`; the returned action runs it and returns the exit code.
 std::function<int()> add_pocketwheel(CLI::App& app);
+/// Registers `catena hinge` (and `catena hinge sweep`).
+std::function<int()> add_hinge(CLI::App& app);
 
 }  // namespace catena::cli

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("catena ") + CATENA_VERSION);
   app.require_subcommand(1);
   auto pocketwheel = catena::cli::add_pocketwheel(app);
+  auto hinge = catena::cli::add_hinge(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (app.got_subcommand("pocketwheel")) return pocketwheel();
+    if (app.got_subcommand("hinge")) return hinge();
   } catch (const catena::InputError& error) {
     std::cerr << "catena: " << error.what() << "\n";
     return 2;

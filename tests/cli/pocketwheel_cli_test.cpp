@@ -1,6 +1,5 @@
 // `catena pocketwheel` as scripts call it: the CLI contract.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
@@ -10,33 +9,9 @@
 #include <sstream>
 #include <string>
 
+#include "cli_run.hpp"
+
 namespace {
-
-struct CliRun {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
-
-CliRun run(const std::string& args) {
-  const auto dir = std::filesystem::temp_directory_path();
-  const std::string err_path = (dir / ("catena_cli_err_" + std::to_string(::getpid()))).string();
-  const std::string command = std::string(CATENA_CLI) + " " + args + " 2>" + err_path;
-  CliRun r;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  std::array<char, 4096> buffer{};
-  std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    r.out.append(buffer.data(), n);
-  const int status = ::pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err_path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  r.err = ss.str();
-  std::filesystem::remove(err_path);
-  return r;
-}
 
 const char* kPaper = "pocketwheel --pitch 64mm --wire 18mm --teeth 8 --omega 5";
 

@@ -40,7 +40,7 @@ const char* to_string(Diagnostic::Severity severity) {
 namespace check {
 std::string format_si(double value, const char* unit) {
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.6g %s", value, unit);
+  std::snprintf(buffer, sizeof buffer, unit[0] == '\0' ? "%.6g%s" : "%.6g %s", value, unit);
   return buffer;
 }
 

@@ -37,7 +37,7 @@ Diagnostic diagnostic(Diagnostic::Severity severity, const char* code, std::stri
 }
 
 std::string mm(double metres) { return check::format_si(metres * 1e3, "mm"); }
-std::string degrees(double rad) { return check::format_si(rad * 180.0 / kPi, "°"); }
+std::string degrees(double rad) { return check::format_si(rad * 180.0 / kPi, "") + "°"; }
 
 }  // namespace
 

@@ -1,0 +1,373 @@
+// catena hinge: rolling-friction hinge synthesis, kinematics and pitch change (seed 000 §1.2–1.3);
+// catena hinge sweep: the design sweep over R1.
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
+
+#include "catena/hinge/kinematics.hpp"
+#include "catena/hinge/sweep.hpp"
+#include "catena/hinge/synthesis.hpp"
+#include "cli_support.hpp"
+#include "commands.hpp"
+
+namespace catena::cli {
+namespace {
+
+using io::QuantityKind;
+using nlohmann::ordered_json;
+using namespace catena::hinge;
+
+struct Flags {
+  std::string pin_diameter, half_thickness, plate_radius, teeth, strokes = "1", roller_radius;
+  bool flat = false;
+  std::string face_half_length, loaded_length;
+  std::string tension, allowable_shear, contact_length, modulus = "210GPa", poisson = "0.3";
+  std::string allowable_contact, pitch, friction, points = "101", format = "table", output;
+  std::string svg, dxf, count = "20";
+};
+
+struct Request {
+  Hinge hinge;
+  Loads loads;
+  std::optional<double> pitch;
+  int points = 101;
+  int count = 20;
+};
+
+std::string g(double v, int digits = 6) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
+  return b;
+}
+double deg(double rad) { return rad * 180.0 / std::numbers::pi; }
+ordered_json opt(const std::optional<double>& v) { return v ? ordered_json(*v) : ordered_json(); }
+
+Request read(const Flags& f) {
+  FlagReader in;
+  Request r;
+  auto required = [&](const std::string& flag, const std::string& text,
+                      QuantityKind kind) -> double {
+    if (text.empty()) {
+      in.add({flag, "(missing)", "a value"});
+      return NAN;
+    }
+    return in.quantity(flag, text, kind).value_or(NAN);
+  };
+  auto optional = [&](const std::string& flag, const std::string& text, QuantityKind kind) {
+    std::optional<double> v = in.quantity(flag, text, kind);
+    if (!text.empty() && !v) v = NAN;
+    return v;
+  };
+  Hinge& h = r.hinge;
+  h.face = f.flat ? Face::kFlat : Face::kConcave;
+  h.pin_diameter = required("--pin-diameter", f.pin_diameter, QuantityKind::kLength);
+  h.half_thickness = required("--half-thickness", f.half_thickness, QuantityKind::kLength);
+  h.plate_radius = required("--plate-radius", f.plate_radius, QuantityKind::kLength);
+  if (f.teeth.empty()) {
+    in.add({"--teeth", "(missing)", "a whole number z ≥ 3"});
+  } else {
+    h.teeth = in.integer("--teeth", f.teeth, 3).value_or(0);
+  }
+  h.strokes = in.integer("--strokes", f.strokes, 1).value_or(1);
+  if (!f.roller_radius.empty()) {
+    if (f.flat) in.add({"--roller-radius", f.roller_radius, "no R2 together with --flat"});
+    h.roller_radius =
+        in.quantity("--roller-radius", f.roller_radius, QuantityKind::kLength).value_or(NAN);
+  }
+  if (f.flat) {
+    h.face_half_length = required("--face-half-length", f.face_half_length, QuantityKind::kLength);
+    h.loaded_length = required("--loaded-length", f.loaded_length, QuantityKind::kLength);
+  } else if (!f.face_half_length.empty() || !f.loaded_length.empty()) {
+    in.add({"--face-half-length/--loaded-length", "given", "only with --flat"});
+  }
+  Loads& l = r.loads;
+  l.tension = optional("--tension", f.tension, QuantityKind::kForce);
+  l.allowable_shear = optional("--allowable-shear", f.allowable_shear, QuantityKind::kStress);
+  l.contact_length = optional("--contact-length", f.contact_length, QuantityKind::kLength);
+  l.allowable_contact = optional("--allowable-contact", f.allowable_contact, QuantityKind::kStress);
+  const double modulus = required("--modulus", f.modulus, QuantityKind::kStress);
+  char* end = nullptr;
+  const double poisson = std::strtod(f.poisson.c_str(), &end);
+  if (f.poisson.empty() || *end != '\0')
+    in.add({"--poisson", "'" + f.poisson + "'", "a number 0 ≤ ν < 0.5"});
+  l.plate = l.roller = Elastic{modulus, poisson};
+  if (!f.friction.empty()) {
+    const double fr = std::strtod(f.friction.c_str(), &end);
+    if (*end != '\0') {
+      in.add({"--friction", "'" + f.friction + "'", "a friction factor f ≥ 0"});
+    } else {
+      l.friction = fr;
+    }
+  }
+  r.pitch = optional("--pitch", f.pitch, QuantityKind::kLength);
+  r.points = in.integer("--points", f.points, 2).value_or(2);
+  r.count = in.integer("--count", f.count, 2).value_or(2);
+  if (!f.svg.empty() || !f.dxf.empty()) {
+    in.add({!f.svg.empty() ? "--svg" : "--dxf", !f.svg.empty() ? f.svg : f.dxf,
+            "nothing yet: the aperture drawing (SVG/DXF) is not implemented in this version"});
+  }
+  in.throw_if_any();
+  in.add_model_issues(validate(r.hinge));
+  in.add_model_issues(validate(r.loads));
+  if (r.pitch && (!std::isfinite(*r.pitch) || *r.pitch <= 0))
+    in.add({"--pitch", g(*r.pitch), "a pitch > 0"});
+  in.throw_if_any();
+  return r;
+}
+
+ordered_json diagnostics_json(const std::vector<Diagnostic>& list) {
+  ordered_json out = ordered_json::array();
+  for (const Diagnostic& d : list) {
+    out.push_back({{"code", d.code},
+                   {"message", d.message},
+                   {"limit", d.limit},
+                   {"severity", to_string(d.severity)},
+                   {"value", d.value}});
+  }
+  return out;
+}
+
+int run_hinge(const Flags& f) {
+  const Request r = read(f);
+  const Synthesis s = synthesize(r.hinge, r.loads);
+  const std::size_t n = static_cast<std::size_t>(r.points);
+  std::vector<double> phi(n), dt(n), dt_t, m1x(n), m1y(n), o2x(n), o2y(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    phi[i] =
+        i + 1 == n ? s.phi_max : s.phi_max * static_cast<double>(i) / static_cast<double>(n - 1);
+    const Pose p = pose(r.hinge, s.r2, phi[i]);
+    dt[i] = 2.0 * p.centre.x;
+    m1x[i] = p.contact.x;
+    m1y[i] = p.contact.y;
+    o2x[i] = p.centre.x;
+    o2y[i] = p.centre.y;
+    if (r.pitch) dt_t.push_back(dt[i] / *r.pitch);
+  }
+  std::string text;
+  if (f.format == "json") {
+    ordered_json j;
+    j["model"] = "hinge.rolling_friction";
+    j["source"] = "000 Pudans, section 1.2-1.3, eqs. (1)-(21), corrected";
+    j["face"] = r.hinge.face == Face::kFlat ? "flat" : "concave";
+    j["x_N1"] = s.x_n1;
+    j["psi1_max"] = s.psi1_max;
+    j["gamma_max"] = s.gamma_max;
+    j["phi_max"] = s.phi_max;
+    j["R1"] = r.hinge.plate_radius;
+    j["R1_max"] = s.r1_max;
+    j["R2"] = std::isfinite(s.r2) ? ordered_json(s.r2) : ordered_json();
+    j["R2_from_eq6"] = s.r2_from_eq6;
+    j["a_min"] = opt(s.a_min);
+    j["section_area"] = s.section_area;
+    j["section_area_eq10"] = s.section_area_eq10;
+    j["shear_stress"] = opt(s.shear_stress);
+    j["rolling_limit"] = opt(s.rolling_limit);
+    j["contact_stress"] = opt(s.contact_stress);
+    j["contact_half_width"] = opt(s.contact_half_width);
+    j["face_margin"] = s.face_margin;
+    j["max_pitch_change"] = max_pitch_change(r.hinge, s.r2, r.points);
+    ordered_json pc{{"phi", phi}, {"dt", dt}};
+    if (r.pitch) pc["dt_over_t"] = dt_t;
+    j["pitch_change"] = pc;
+    j["trajectories"] = {{"phi", phi}, {"M1x", m1x}, {"M1y", m1y}, {"O2x", o2x}, {"O2y", o2y}};
+    j["diagnostics"] = diagnostics_json(s.diagnostics);
+    j["units"] = {{"x_N1", "m"},
+                  {"psi1_max", "rad"},
+                  {"gamma_max", "rad"},
+                  {"phi_max", "rad"},
+                  {"R1", "m"},
+                  {"R1_max", "m"},
+                  {"R2", "m"},
+                  {"a_min", "m"},
+                  {"section_area", "m^2"},
+                  {"section_area_eq10", "m^2"},
+                  {"shear_stress", "Pa"},
+                  {"rolling_limit", "rad"},
+                  {"contact_stress", "Pa"},
+                  {"contact_half_width", "m"},
+                  {"face_margin", "m"},
+                  {"max_pitch_change", "m"},
+                  {"phi", "rad"},
+                  {"dt", "m"},
+                  {"dt_over_t", "1"},
+                  {"M1x", "m"},
+                  {"M1y", "m"},
+                  {"O2x", "m"},
+                  {"O2y", "m"},
+                  {"limit", "SI"}};
+    text = j.dump(2) + "\n";
+  } else if (f.format == "csv") {
+    std::ostringstream out;
+    out << "phi,dt" << (r.pitch ? ",dt_over_t" : "") << ",M1x,M1y,O2x,O2y\n";
+    for (std::size_t i = 0; i < n; ++i) {
+      out << g(phi[i], 12) << "," << g(dt[i], 12);
+      if (r.pitch) out << "," << g(dt_t[i], 12);
+      out << "," << g(m1x[i], 12) << "," << g(m1y[i], 12) << "," << g(o2x[i], 12) << ","
+          << g(o2y[i], 12) << "\n";
+    }
+    text = out.str();
+  } else {
+    std::ostringstream out;
+    char line[256];
+    auto row = [&](const char* label, const std::string& value) {
+      std::snprintf(line, sizeof line, "  %-42s %s\n", label, value.c_str());
+      out << line;
+    };
+    out << "Catena hinge: rolling-friction hinge (seed 000 section 1.2-1.3), "
+        << (r.hinge.face == Face::kFlat ? "flat" : "concave") << " roller faces\n";
+    out << "d = " << g(r.hinge.pin_diameter * 1e3) << " mm, a = " << g(r.hinge.half_thickness * 1e3)
+        << " mm, R1 = " << g(r.hinge.plate_radius * 1e3) << " mm, z = " << r.hinge.teeth
+        << ", m = " << r.hinge.strokes << "\n\n";
+    row("gamma_max, roller turn (eq. 12) [deg]", g(deg(s.gamma_max)));
+    row("x of N1 (eq. 4) [mm]", g(s.x_n1 * 1e3));
+    row("psi1_max (eq. 5) [deg]", g(deg(s.psi1_max)));
+    row("R1_max (eq. 7) [mm]", g(s.r1_max * 1e3));
+    row(s.r2_from_eq6 ? "R2 (eq. 6) [mm]" : "R2 (given) [mm]",
+        std::isfinite(s.r2) ? g(s.r2 * 1e3) : "flat");
+    row("face margin at phi_max [mm]", g(s.face_margin * 1e3));
+    row("section: true / eq. (10) [mm^2]",
+        g(s.section_area * 1e6) + " / " + g(s.section_area_eq10 * 1e6));
+    if (s.a_min) row("a_min (eq. 10) [mm]", g(*s.a_min * 1e3));
+    if (s.shear_stress) row("shear stress F/A [MPa]", g(*s.shear_stress / 1e6));
+    if (s.contact_stress) row("Hertz contact stress sigma_H [MPa]", g(*s.contact_stress / 1e6));
+    if (s.rolling_limit) row("rolling limit (eq. 21) [deg]", g(deg(*s.rolling_limit)));
+    row("largest |pitch change| [mm]", g(max_pitch_change(r.hinge, s.r2, r.points) * 1e3));
+    row("pitch change at phi_max [mm]", g(dt.back() * 1e3));
+    if (r.pitch) row("pitch change at phi_max / t [-]", g(dt_t.back()));
+    for (const Diagnostic& d : s.diagnostics)
+      out << "\n" << to_string(d.severity) << ": " << d.message << "\n";
+    text = out.str();
+  }
+  emit(f.output, text);
+  return 0;
+}
+
+int run_sweep(const Flags& f) {
+  const Request r = read(f);
+  const Sweep sw = sweep(r.hinge, r.loads, r.count);
+  std::string text;
+  auto cell = [](const std::optional<double>& v, double scale) {
+    return v ? g(*v * scale) : std::string("-");
+  };
+  if (f.format == "json") {
+    ordered_json rows = ordered_json::array();
+    for (const SweepRow& row : sw.rows) {
+      rows.push_back({{"R1", row.r1},
+                      {"R2", row.r2},
+                      {"psi1_max", row.psi1_max},
+                      {"effective_radius", row.effective_radius},
+                      {"contact_stress", opt(row.contact_stress)},
+                      {"rolling_limit", opt(row.rolling_limit)},
+                      {"a_min", opt(row.a_min)},
+                      {"max_pitch_change", row.max_pitch_change},
+                      {"face_margin", row.face_margin},
+                      {"feasible", row.feasible}});
+    }
+    ordered_json j{{"rows", rows},
+                   {"best", sw.best ? ordered_json(*sw.best) : ordered_json()},
+                   {"criterion", sw.criterion},
+                   {"units",
+                    {{"R1", "m"},
+                     {"R2", "m"},
+                     {"psi1_max", "rad"},
+                     {"effective_radius", "m"},
+                     {"contact_stress", "Pa"},
+                     {"rolling_limit", "rad"},
+                     {"a_min", "m"},
+                     {"max_pitch_change", "m"},
+                     {"face_margin", "m"}}}};
+    text = j.dump(2) + "\n";
+  } else {
+    const bool csv = f.format == "csv";
+    std::ostringstream out;
+    if (csv) {
+      out << "R1,R2,psi1_max,effective_radius,contact_stress,rolling_limit,a_min,max_pitch_change,"
+             "face_margin,feasible\n";
+    } else {
+      out << "Catena hinge sweep: R1 up to R1max with R2 from eq. (6) (seed 000 section 1.2)\n\n";
+      char head[256];
+      std::snprintf(head, sizeof head, "  %10s %12s %10s %12s %12s %10s %10s %10s %9s\n", "R1 [mm]",
+                    "R2 [mm]", "psi1 [deg]", "R* [mm]", "sigmaH [MPa]", "roll [deg]", "a_min [mm]",
+                    "|dt| [mm]", "feasible");
+      out << head;
+    }
+    for (std::size_t i = 0; i < sw.rows.size(); ++i) {
+      const SweepRow& row = sw.rows[i];
+      if (csv) {
+        out << g(row.r1, 12) << "," << g(row.r2, 12) << "," << g(row.psi1_max, 12) << ","
+            << g(row.effective_radius, 12) << ","
+            << (row.contact_stress ? g(*row.contact_stress, 12) : "") << ","
+            << (row.rolling_limit ? g(*row.rolling_limit, 12) : "") << ","
+            << (row.a_min ? g(*row.a_min, 12) : "") << "," << g(row.max_pitch_change, 12) << ","
+            << g(row.face_margin, 12) << "," << (row.feasible ? 1 : 0) << "\n";
+      } else {
+        char line[256];
+        std::snprintf(line, sizeof line, "%s %10s %12s %10s %12s %12s %10s %10s %10s %9s\n",
+                      sw.best && *sw.best == i ? "*" : " ", g(row.r1 * 1e3).c_str(),
+                      g(row.r2 * 1e3).c_str(), g(deg(row.psi1_max)).c_str(),
+                      g(row.effective_radius * 1e3).c_str(), cell(row.contact_stress, 1e-6).c_str(),
+                      row.rolling_limit ? g(deg(*row.rolling_limit)).c_str() : "-",
+                      cell(row.a_min, 1e3).c_str(), g(row.max_pitch_change * 1e3).c_str(),
+                      row.feasible ? "yes" : "no");
+        out << line;
+      }
+    }
+    if (!csv) out << "\n* best: " << sw.criterion << "\n";
+    text = out.str();
+  }
+  emit(f.output, text);
+  return 0;
+}
+
+}  // namespace
+
+std::function<int()> add_hinge(CLI::App& app) {
+  auto f = std::make_shared<Flags>();
+  CLI::App* cmd = app.add_subcommand(
+      "hinge",
+      "Rolling-friction hinge (seed 000 section 1.2-1.3): synthesis, contact point and roller "
+      "centre trajectories, pitch change; 'hinge sweep' for the design sweep over R1");
+  cmd->add_option("--pin-diameter", f->pin_diameter,
+                  "d, diameter of the roller's cylindrical part (bare: mm)");
+  cmd->add_option("--half-thickness", f->half_thickness,
+                  "a, roller centre to its working face (flat faces: b of fig. 8) (bare: mm)");
+  cmd->add_option("--plate-radius", f->plate_radius,
+                  "R1, the plate's convex working arc (bare: mm)");
+  cmd->add_option("--teeth", f->teeth, "z, sprocket teeth");
+  cmd->add_option("--strokes", f->strokes,
+                  "m, sprocket strokes (default 1): gamma_max = 180deg m/z");
+  cmd->add_option("--roller-radius", f->roller_radius, "R2 of the concave faces (default: eq. 6)");
+  cmd->add_flag("--flat", f->flat, "flat roller faces (section 1.3.1)");
+  cmd->add_option("--face-half-length", f->face_half_length,
+                  "flat faces: a of fig. 8, half the face length L");
+  cmd->add_option(
+      "--loaded-length", f->loaded_length,
+      "flat faces: c of fig. 8, face length loaded in straight running (contact at c - a)");
+  cmd->add_option("--tension", f->tension, "chain tension F (bare: N)");
+  cmd->add_option("--allowable-shear", f->allowable_shear, "[tau] of the roller (bare: MPa)");
+  cmd->add_option("--contact-length", f->contact_length,
+                  "length of the R1-R2 line contact (bare: mm)");
+  cmd->add_option("--modulus", f->modulus, "Young's modulus of plate and roller (default 210GPa)");
+  cmd->add_option("--poisson", f->poisson, "Poisson's ratio (default 0.3)");
+  cmd->add_option("--allowable-contact", f->allowable_contact, "[sigma_H] (bare: MPa)");
+  cmd->add_option("--pitch", f->pitch, "chain pitch t, for dt/t (bare: mm)");
+  cmd->add_option("--friction", f->friction,
+                  "friction factor f roller-plate, for the rolling limit");
+  cmd->add_option("--points", f->points, "samples over [0, phi_max], both ends (default 101)");
+  cmd->add_option("--format", f->format, "table|json|csv (default table)")
+      ->check(CLI::IsMember({"table", "json", "csv"}));
+  cmd->add_option("--output", f->output, "write the output to FILE instead of stdout");
+  cmd->add_option("--svg", f->svg, "aperture drawing as SVG (not implemented yet)");
+  cmd->add_option("--dxf", f->dxf, "aperture contour as DXF (not implemented yet)");
+  CLI::App* sw = cmd->add_subcommand("sweep", "design sweep over R1 up to R1max (table/json/csv)");
+  sw->fallthrough();
+  sw->add_option("--count", f->count, "number of R1 values (default 20)");
+  return [f, sw]() { return sw->parsed() ? run_sweep(*f) : run_hinge(*f); };
+}
+
+}  // namespace catena::cli

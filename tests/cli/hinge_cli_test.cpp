@@ -1,0 +1,94 @@
+// `catena hinge` and `catena hinge sweep` as scripts call them: the CLI contract.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_run.hpp"
+
+namespace {
+
+const std::string kHinge =
+    "hinge --pin-diameter 40mm --half-thickness 8mm --plate-radius 20mm --teeth 8 --strokes 1";
+
+TEST(HingeCli, JsonCarriesTheContractFieldsInSi) {
+  const CliRun r = run(kHinge +
+                       " --tension 29.4kN --allowable-shear 100MPa --contact-length 24mm "
+                       "--modulus 210GPa --poisson 0.3 --allowable-contact 1200MPa --pitch 125mm "
+                       "--friction 0.15 --points 101 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key :
+       {"x_N1", "psi1_max", "gamma_max", "R1_max", "R2", "a_min", "rolling_limit", "contact_stress",
+        "pitch_change", "trajectories", "diagnostics", "units"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_NEAR(j["x_N1"].get<double>(), 0.014, 1e-12);
+  EXPECT_NEAR(j["R2"].get<double>(), 0.0395033, 1e-6);
+  EXPECT_NEAR(j["gamma_max"].get<double>(), 3.14159265358979 / 8, 1e-12);
+  EXPECT_EQ(j["pitch_change"]["phi"].size(), 101u);
+  EXPECT_EQ(j["pitch_change"]["dt_over_t"].size(), 101u);
+  EXPECT_EQ(j["pitch_change"]["dt"][0].get<double>(), 0.0);
+  EXPECT_NEAR(j["pitch_change"]["dt"][100].get<double>(), -4.47004e-3, 1e-8);
+  for (const char* key : {"phi", "M1x", "M1y", "O2x", "O2y"})
+    EXPECT_EQ(j["trajectories"][key].size(), 101u);
+  ASSERT_GE(j["diagnostics"].size(), 1u);  // the rolling limit is below γmax
+  EXPECT_TRUE(j["diagnostics"][0].contains("code"));
+  EXPECT_TRUE(j["diagnostics"][0].contains("message"));
+  EXPECT_TRUE(j["diagnostics"][0].contains("limit"));
+  EXPECT_EQ(j["units"]["contact_stress"], "Pa");
+}
+
+TEST(HingeCli, OptionalResultsAreNullWithoutTheirInputs) {
+  const CliRun r = run(kHinge + " --format json --points 3");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["a_min"].is_null());
+  EXPECT_TRUE(j["contact_stress"].is_null());
+  EXPECT_TRUE(j["rolling_limit"].is_null());
+  EXPECT_FALSE(j["pitch_change"].contains("dt_over_t"));
+}
+
+TEST(HingeCli, FlatFacesAndCsv) {
+  const CliRun r =
+      run(kHinge + " --flat --face-half-length 15mm --loaded-length 12mm --points 5 --format csv");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.substr(0, r.out.find('\n')), "phi,dt,M1x,M1y,O2x,O2y");
+}
+
+TEST(HingeCli, InfeasibleDesignIsADiagnosticNotAnError) {
+  const CliRun r = run(
+      "hinge --pin-diameter 40mm --half-thickness 8mm --plate-radius 50mm --teeth 8 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["diagnostics"][0]["code"], "hinge.r1_exceeds_r1max");
+  EXPECT_NEAR(j["diagnostics"][0]["limit"].get<double>(), 0.043149, 1e-6);
+}
+
+TEST(HingeCli, BadInputNamesEveryFlag) {
+  const CliRun r =
+      run("hinge --pin-diameter 40kg --half-thickness 30mm --plate-radius 20mm --teeth 2");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--pin-diameter = '40kg'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--teeth = '2'"), std::string::npos) << r.err;
+  const CliRun s = run(kHinge + " --roller-radius 10mm");
+  EXPECT_EQ(s.status, 2);
+  EXPECT_NE(s.err.find("--roller-radius"), std::string::npos) << s.err;
+}
+
+TEST(HingeCli, SweepPicksTheBestRow) {
+  const CliRun s =
+      run("hinge sweep --pin-diameter 40mm --half-thickness 8mm --plate-radius 20mm --teeth 8 "
+          "--tension 29.4kN --contact-length 24mm --count 6 --format json");
+  ASSERT_EQ(s.status, 0) << s.err;
+  const auto j = nlohmann::json::parse(s.out);
+  ASSERT_EQ(j["rows"].size(), 6u);
+  ASSERT_FALSE(j["best"].is_null());
+  const auto& best = j["rows"][j["best"].get<std::size_t>()];
+  for (const auto& row : j["rows"]) {
+    if (row["feasible"].get<bool>()) {
+      EXPECT_LE(best["contact_stress"].get<double>(), row["contact_stress"].get<double>());
+    }
+  }
+}
+
+}  // namespace
