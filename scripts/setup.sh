@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libudunits2-dev udunits-bin
   libcli11-dev nlohmann-json3-dev libfmt-dev libboost-dev
+  libcairo2-dev libdxflib-dev
 )
 
 missing=()

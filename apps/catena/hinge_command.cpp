@@ -8,10 +8,13 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
+#include <tuple>
 
+#include "catena/hinge/aperture.hpp"
 #include "catena/hinge/kinematics.hpp"
 #include "catena/hinge/sweep.hpp"
 #include "catena/hinge/synthesis.hpp"
+#include "catena/io/drawing.hpp"
 #include "cli_support.hpp"
 #include "commands.hpp"
 
@@ -28,7 +31,7 @@ struct Flags {
   std::string face_half_length, loaded_length;
   std::string tension, allowable_shear, contact_length, modulus = "210GPa", poisson = "0.3";
   std::string allowable_contact, pitch, friction, points = "101", format = "table", output;
-  std::string svg, dxf, count = "20";
+  std::string svg, dxf, count = "20", clearance = "0.5mm";
 };
 
 struct Request {
@@ -37,6 +40,7 @@ struct Request {
   std::optional<double> pitch;
   int points = 101;
   int count = 20;
+  double clearance = 0.5e-3;  ///< [m] aperture clearance
 };
 
 std::string g(double v, int digits = 6) {
@@ -107,15 +111,15 @@ Request read(const Flags& f) {
   r.pitch = optional("--pitch", f.pitch, QuantityKind::kLength);
   r.points = in.integer("--points", f.points, 2).value_or(2);
   r.count = in.integer("--count", f.count, 2).value_or(2);
-  if (!f.svg.empty() || !f.dxf.empty()) {
-    in.add({!f.svg.empty() ? "--svg" : "--dxf", !f.svg.empty() ? f.svg : f.dxf,
-            "nothing yet: the aperture drawing (SVG/DXF) is not implemented in this version"});
-  }
+  r.clearance = in.quantity("--clearance", f.clearance, QuantityKind::kLength).value_or(NAN);
   in.throw_if_any();
   in.add_model_issues(validate(r.hinge));
   in.add_model_issues(validate(r.loads));
   if (r.pitch && (!std::isfinite(*r.pitch) || *r.pitch <= 0))
     in.add({"--pitch", g(*r.pitch), "a pitch > 0"});
+  if (!(r.clearance >= 0.0) || r.clearance > 0.5 * r.hinge.pin_diameter) {
+    in.add({"--clearance", f.clearance, "a clearance from 0 to d/2"});
+  }
   in.throw_if_any();
   return r;
 }
@@ -130,6 +134,41 @@ ordered_json diagnostics_json(const std::vector<Diagnostic>& list) {
                    {"value", d.value}});
   }
   return out;
+}
+
+// The hinge drawing: aperture, roller at φ = 0 and φmax, the plate's arc, the centre's path and
+// the feature points' trajectories (eq. 11).
+io::Drawing hinge_drawing(const Request& r, const Synthesis& s, const Aperture& ap) {
+  io::Drawing d;
+  d.title = "Catena rolling-friction hinge";
+  auto add = [&](const char* layer, const std::vector<Point>& pts, bool closed, double width,
+                 unsigned rgb) {
+    io::Polyline p{layer, {}, closed, width, rgb};
+    for (const Point& q : pts) p.points.push_back({q.x, q.y});
+    d.polylines.push_back(std::move(p));
+  };
+  add("APERTURE", ap.contour, true, 0.35, 0x000000);
+  const std::vector<Point> body = roller_outline(r.hinge, s.r2);
+  for (auto [layer, phi, rgb] : {std::tuple{"ROLLER_PHI0", 0.0, 0x1f77b4u},
+                                 std::tuple{"ROLLER_PHIMAX", s.phi_max, 0xd62728u}}) {
+    const Pose p = pose(r.hinge, s.r2, phi);
+    std::vector<Point> pts;
+    for (const Point& q : body) pts.push_back(roller_point(p, q));
+    add(layer, pts, true, 0.25, rgb);
+  }
+  std::vector<Point> centre, arc;
+  std::vector<std::vector<Point>> corners(4);
+  const std::vector<Point> features = feature_points(r.hinge, s.r2);
+  for (int i = 0; i <= 90; ++i) {
+    const Pose p = pose(r.hinge, s.r2, s.phi_max * i / 90.0);
+    centre.push_back(p.centre);
+    arc.push_back(p.contact);
+    for (std::size_t k = 0; k < 4; ++k) corners[k].push_back(roller_point(p, features[k]));
+  }
+  add("O2_PATH", centre, false, 0.18, 0x2ca02c);
+  add("WORKING_ARC", arc, false, 0.5, 0xff7f0e);
+  for (std::size_t k = 0; k < 4; ++k) add("FEATURE_PATHS", corners[k], false, 0.18, 0x9467bd);
+  return d;
 }
 
 int run_hinge(const Flags& f) {
@@ -148,6 +187,8 @@ int run_hinge(const Flags& f) {
     o2y[i] = p.centre.y;
     if (r.pitch) dt_t.push_back(dt[i] / *r.pitch);
   }
+  std::optional<Aperture> ap;
+  if (!f.svg.empty() || !f.dxf.empty()) ap = aperture(r.hinge, s.r2, ApertureOptions{r.clearance});
   std::string text;
   if (f.format == "json") {
     ordered_json j;
@@ -175,6 +216,19 @@ int run_hinge(const Flags& f) {
     if (r.pitch) pc["dt_over_t"] = dt_t;
     j["pitch_change"] = pc;
     j["trajectories"] = {{"phi", phi}, {"M1x", m1x}, {"M1y", m1y}, {"O2x", o2x}, {"O2y", o2y}};
+    if (ap) {
+      double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+      for (const Point& q : ap->contour) {
+        xmin = std::min(xmin, q.x), xmax = std::max(xmax, q.x), ymin = std::min(ymin, q.y),
+        ymax = std::max(ymax, q.y);
+      }
+      j["aperture"] = {{"clearance", ap->clearance},
+                       {"points", ap->contour.size()},
+                       {"xmin", xmin},
+                       {"xmax", xmax},
+                       {"ymin", ymin},
+                       {"ymax", ymax}};
+    }
     j["diagnostics"] = diagnostics_json(s.diagnostics);
     j["units"] = {{"x_N1", "m"},
                   {"psi1_max", "rad"},
@@ -242,6 +296,11 @@ int run_hinge(const Flags& f) {
     for (const Diagnostic& d : s.diagnostics)
       out << "\n" << to_string(d.severity) << ": " << d.message << "\n";
     text = out.str();
+  }
+  if (ap) {  // drawings first: everything is computed before any file is written
+    const io::Drawing drawing = hinge_drawing(r, s, *ap);
+    if (!f.svg.empty()) io::write_svg(f.svg, drawing);
+    if (!f.dxf.empty()) io::write_dxf(f.dxf, drawing);
   }
   emit(f.output, text);
   return 0;
@@ -362,8 +421,11 @@ std::function<int()> add_hinge(CLI::App& app) {
   cmd->add_option("--format", f->format, "table|json|csv (default table)")
       ->check(CLI::IsMember({"table", "json", "csv"}));
   cmd->add_option("--output", f->output, "write the output to FILE instead of stdout");
-  cmd->add_option("--svg", f->svg, "aperture drawing as SVG (not implemented yet)");
-  cmd->add_option("--dxf", f->dxf, "aperture contour as DXF (not implemented yet)");
+  cmd->add_option("--svg", f->svg,
+                  "hinge drawing (aperture, roller at 0 and phi_max, paths) as SVG, mm");
+  cmd->add_option("--dxf", f->dxf, "the same drawing as DXF (R12, mm; aperture on layer APERTURE)");
+  cmd->add_option("--clearance", f->clearance,
+                  "aperture clearance off the working arc (default 0.5mm)");
   CLI::App* sw = cmd->add_subcommand("sweep", "design sweep over R1 up to R1max (table/json/csv)");
   sw->fallthrough();
   sw->add_option("--count", f->count, "number of R1 values (default 20)");

@@ -92,3 +92,28 @@ TEST(HingeCli, SweepPicksTheBestRow) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(HingeCli, WritesTheApertureAsSvgAndDxf) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const auto svg = dir / "catena_cli_hinge.svg";
+  const auto dxf = dir / "catena_cli_hinge.dxf";
+  const CliRun r = run(kHinge + " --clearance 0.3mm --format json --svg " + svg.string() +
+                       " --dxf " + dxf.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["aperture"]["clearance"].get<double>(), 0.3e-3, 1e-15);
+  EXPECT_NEAR(j["aperture"]["ymin"].get<double>(), -0.0203, 1e-6);
+  std::ifstream s(svg), d(dxf);
+  std::stringstream svg_text, dxf_text;
+  svg_text << s.rdbuf();
+  dxf_text << d.rdbuf();
+  EXPECT_NE(svg_text.str().find("</svg>"), std::string::npos);
+  EXPECT_NE(dxf_text.str().find("APERTURE"), std::string::npos);
+  EXPECT_NE(dxf_text.str().find("$INSUNITS"), std::string::npos);
+  std::filesystem::remove(svg);
+  std::filesystem::remove(dxf);
+}
+
+}  // namespace

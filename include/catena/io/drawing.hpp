@@ -1,0 +1,33 @@
+// Drawings for CAD and for people: polylines in SI metres written as SVG (cairo) or DXF (dxflib)
+// in millimetres. Files are written atomically.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace catena::io {
+
+struct Polyline {
+  std::string layer;                              ///< DXF layer / SVG group name
+  std::vector<std::pair<double, double>> points;  ///< [m] x, y
+  bool closed = false;
+  double width_mm = 0.25;   ///< SVG stroke width
+  unsigned rgb = 0x000000;  ///< SVG stroke colour
+};
+
+struct Drawing {
+  std::string title;
+  std::vector<Polyline> polylines;
+};
+
+/// SVG text of the drawing, scaled 1:1 in millimetres, y up, with a 5 mm margin.
+std::string to_svg(const Drawing& drawing);
+/// Writes the drawing as SVG to `path` (atomically).
+void write_svg(const std::string& path, const Drawing& drawing);
+/// Writes the drawing as DXF (R12, $INSUNITS = mm) to `path`: one POLYLINE per polyline, on its
+/// layer, closed ones with the closed flag. Atomic.
+void write_dxf(const std::string& path, const Drawing& drawing);
+/// Reads the POLYLINEs (and LWPOLYLINEs) of a DXF file back, in metres (for tests and checks).
+std::vector<Polyline> read_dxf_polylines(const std::string& path);
+
+}  // namespace catena::io
