@@ -204,6 +204,8 @@ int run_hinge(const Flags& f) {
     j["R2"] = std::isfinite(s.r2) ? ordered_json(s.r2) : ordered_json();
     j["R2_from_eq6"] = s.r2_from_eq6;
     j["a_min"] = opt(s.a_min);
+    j["step1"] = s.step1 ? ordered_json{{"a_min", s.step1->a_min}, {"R1_max", s.step1->r1_max}}
+                         : ordered_json();
     j["section_area"] = s.section_area;
     j["section_area_eq10"] = s.section_area_eq10;
     j["shear_stress"] = opt(s.shear_stress);
@@ -287,6 +289,10 @@ int run_hinge(const Flags& f) {
     row("section: true / eq. (10) [mm^2]",
         g(s.section_area * 1e6) + " / " + g(s.section_area_eq10 * 1e6));
     if (s.a_min) row("a_min (eq. 10) [mm]", g(*s.a_min * 1e3));
+    if (s.step1) {
+      row("step 1, eqs. (7)+(10): a_min / R1max [mm]",
+          g(s.step1->a_min * 1e3) + " / " + g(s.step1->r1_max * 1e3));
+    }
     if (s.shear_stress) row("shear stress F/A [MPa]", g(*s.shear_stress / 1e6));
     if (s.contact_stress) row("Hertz contact stress sigma_H [MPa]", g(*s.contact_stress / 1e6));
     if (s.rolling_limit) row("rolling limit (eq. 21) [deg]", g(deg(*s.rolling_limit)));

@@ -100,6 +100,16 @@ TEST(HingeSynthesis, AMinSolvesTheShearEquation10) {
   EXPECT_TRUE(has(s, "hinge.half_thickness_below_a_min"));
 }
 
+TEST(HingeSynthesis, Step1SolvesEqs7And10Together) {
+  const double d = 0.040, f = 120e3, tau = 100e6, gmax = kPi / 8;
+  const auto j = a_min_at_r1max(d, gmax, f, tau);
+  ASSERT_TRUE(j.has_value());
+  EXPECT_NEAR(j->r1_max, r1_max(d, j->a_min, gmax), 1e-15);
+  EXPECT_NEAR(section_area(d, j->a_min, j->r1_max), f / tau, 1e-12);
+  EXPECT_NEAR(psi1_max(d, j->a_min, j->r1_max), gmax, 1e-9);  // R1max: flat-face limit
+  EXPECT_FALSE(a_min_at_r1max(0.010, gmax, f, tau).has_value());
+}
+
 TEST(HingeSynthesis, RollingLimitEq21MatchesTheSimulatedForceAngle) {
   // With the roller held, the chain force runs along the plate axis; friction holds while the
   // angle β between it and the contact normal satisfies tan β ≤ f (eq. 20).

@@ -28,6 +28,16 @@ double section_area(double d, double a, double face_radius);
 /// nothing when even the full circle cannot (πd²/4 < F/[τ]).
 std::optional<double> a_min_eq10(double d, double r1, double tension, double allowable_shear);
 
+/// Step 1 of the procedure: eqs. (7) and (10) solved together — the half-thickness a at which
+/// the section of eq. (10) with R1 = R1max(a) carries F at [τ], and that R1max. Nothing when no
+/// a in (0, d/2) does.
+struct JointLimit {
+  double a_min = 0.0;   ///< [m]
+  double r1_max = 0.0;  ///< [m]
+};
+std::optional<JointLimit> a_min_at_r1max(double d, double gamma_max, double tension,
+                                         double allowable_shear);
+
 /// [rad] the roller turn up to which friction alone keeps the hinge rolling with the roller
 /// held, eq. (21): γ = arctan(f)·(1 − R1/R2).
 double rolling_limit(double friction, double r1, double r2);
@@ -57,6 +67,7 @@ struct Synthesis {
   double section_area_eq10 = 0.0;      ///< [m²] the section as eq. (10) approximates it (R1 arcs)
   double section_area = 0.0;           ///< [m²] the true section (R2 arcs or flat faces)
   std::optional<double> a_min;         ///< [m] eq. (10) solved for a (with F and [τ])
+  std::optional<JointLimit> step1;     ///< eqs. (7) + (10) solved together (with F and [τ])
   std::optional<double> shear_stress;  ///< [Pa] F / true section
   std::optional<double> contact_stress;      ///< [Pa] Hertz σH of R1 in R2 over the contact length
   std::optional<double> contact_half_width;  ///< [m]

@@ -85,6 +85,20 @@ std::optional<double> a_min_eq10(double d, double r1, double tension, double all
   return 0.5 * (lo + hi);
 }
 
+std::optional<JointLimit> a_min_at_r1max(double d, double gmax, double tension,
+                                         double allowable_shear) {
+  const double need = tension / allowable_shear;
+  auto excess = [&](double a) { return section_area(d, a, r1_max(d, a, gmax)) - need; };
+  const double lo = 1e-9 * d, hi = 0.5 * d * (1 - 1e-9);
+  if (excess(lo) >= 0.0) return JointLimit{0.0, r1_max(d, 0.0, gmax)};
+  if (excess(hi) < 0.0) return std::nullopt;
+  boost::uintmax_t iterations = 200;
+  auto [a, b] = boost::math::tools::toms748_solve(
+      excess, lo, hi, boost::math::tools::eps_tolerance<double>(50), iterations);
+  const double a_min = 0.5 * (a + b);
+  return JointLimit{a_min, r1_max(d, a_min, gmax)};
+}
+
 double rolling_limit(double friction, double r1, double r2) {
   const double ratio = std::isfinite(r2) && r2 != 0.0 ? r1 / r2 : 0.0;
   return std::atan(friction) * (1.0 - ratio);  // 000 eq. (21)
@@ -172,6 +186,7 @@ Synthesis synthesize(const Hinge& h, const Loads& loads) {
   if (loads.tension && loads.allowable_shear) {
     const double need = *loads.tension / *loads.allowable_shear;
     s.a_min = a_min_eq10(d, r1, *loads.tension, *loads.allowable_shear);
+    s.step1 = a_min_at_r1max(d, s.gamma_max, *loads.tension, *loads.allowable_shear);
     s.shear_stress = *loads.tension / s.section_area;
     if (!s.a_min) {
       s.diagnostics.push_back(diagnostic(
