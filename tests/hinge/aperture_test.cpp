@@ -9,18 +9,12 @@
 
 #include "catena/hinge/synthesis.hpp"
 #include "catena/io/drawing.hpp"
+#include "examples.hpp"
 
 namespace catena::hinge {
 namespace {
 
-Hinge example() {
-  Hinge h;
-  h.pin_diameter = 0.040;
-  h.half_thickness = 0.008;
-  h.plate_radius = 0.020;
-  h.teeth = 8;
-  return h;
-}
+Hinge example() { return testing::example_hinge(); }
 
 // Signed distance from p to the closed polygon (positive inside), by edges and crossings.
 double inside_distance(const std::vector<Point>& poly, Point p) {

@@ -2,15 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include "examples.hpp"
+
 namespace catena::hinge {
 namespace {
 
 TEST(HingeSweep, R2GrowsWithoutBoundTowardsR1maxAndTheBestRowIsFeasible) {
-  Hinge h;
-  h.pin_diameter = 0.040;
-  h.half_thickness = 0.008;
-  h.plate_radius = 0.020;
-  h.teeth = 8;
+  Hinge h = testing::example_hinge();
   Loads loads;
   loads.tension = 29.4e3;
   loads.contact_length = 0.024;

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <random>
 
+#include "examples.hpp"
 #include "rolling_simulation.hpp"
 
 namespace catena::hinge {
@@ -14,14 +15,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Hinge example() {
-  Hinge h;
-  h.pin_diameter = 0.040;
-  h.half_thickness = 0.008;
-  h.plate_radius = 0.020;
-  h.teeth = 8;
-  return h;
-}
+Hinge example() { return testing::example_hinge(); }
 
 bool has(const Synthesis& s, const std::string& code) {
   for (const auto& d : s.diagnostics) {
