@@ -1,0 +1,83 @@
+// Roller–sprocket tooth line contact with axis skew (seed 001: Harshniev & Maksymovych).
+//
+// Frame: s runs along the roller axis from its centre (−L/2 … L/2); the skew φ tilts the
+// roller axis against the tooth's generatrix in the plane of the contact normal, so the gap
+// opens linearly along s: g(s) = s·tan φ (the measuring device's Δh over the base B).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "catena/core/error.hpp"
+#include "catena/core/hertz.hpp"
+
+namespace catena::contact {
+
+enum class Profile {
+  kConcave,  ///< tooth flank hollow (the roller sits in it): 1/ρ = 2/D − 1/r1
+  kConvex,   ///< tooth flank convex: 1/ρ = 2/D + 1/r1
+};
+
+/// The roller and the tooth flank (constant model).
+struct RollerTooth {
+  double roller_diameter = 0.0;  ///< [m] D_p
+  double roller_length = 0.0;    ///< [m] L_p, the length of the line contact when aligned
+  double tooth_radius = 0.0;     ///< [m] r1, the flank's profile radius in the contact zone
+  Profile profile = Profile::kConcave;
+  Elastic roller;  ///< roller material (steel)
+  Elastic tooth;   ///< tooth material (steel)
+};
+
+std::vector<Issue> validate(const RollerTooth& c);
+
+/// [m] ρ = D_p r1 / (2(r1 ± 0.5 D_p)), + convex, − concave (001, below eq. 1).
+double reduced_radius(const RollerTooth& c);
+
+/// [Pa] the paper's eq. (1): σ = 0.418 √(Q E/(L ρ)), steel on steel (E the modulus of both).
+double paper_stress(double load, double modulus, double length, double radius);
+
+/// General Hertz line contact of the aligned roller under `load` [N] over its length.
+struct HertzResult {
+  double peak_pressure = 0.0;    ///< [Pa] p0
+  double half_width = 0.0;       ///< [m] b
+  double max_shear = 0.0;        ///< [Pa] τ1max = 0.300·p0 (principal shear, plane strain)
+  double max_shear_depth = 0.0;  ///< [m] z = 0.786·b below the surface
+};
+HertzResult hertz(const RollerTooth& c, double load);
+
+/// γ of eq. (2) from the paper's table for the pitches 12.7, 15.875, 19.05 and 25.4 mm; nothing
+/// for any other pitch (no extrapolation: give γ explicitly).
+std::optional<double> skew_gamma(double pitch);
+
+/// [rad] skew from the measuring device: φ = arctg(Δh/B) (001).
+double skew_from_gauge(double dh, double base);
+
+/// Q_n/Q_nom = 1 + γ·φ_p², φ_p = φ·K_φ in arc-minutes (eqs. 2–3).
+double load_factor(double gamma, double skew, double skew_factor = 1.0);
+
+/// Beyond the paper: the skewed roller as slices along its length, each a plane-strain Hertz
+/// line contact with the compliance δ(q) of Johnson (1985, eq. 5.36 form):
+/// δ = (q/π)·Σ_bodies (1 − ν²)/E·(2 ln(4R_ref/b) − 1), R_ref = D_p/2 for both bodies (an
+/// assumption: the reference depth of the approach), b = √(4qρ/(πE*)). The roller approaches by
+/// δ0 at its centre and the gap opens as s·tan φ; δ0 is solved so that the slice loads sum to Q.
+struct SliceOptions {
+  int slices = 201;  ///< number of slices (odd keeps one at the centre)
+};
+
+struct SliceResult {
+  std::vector<double> s;       ///< [m] slice centres along the roller
+  std::vector<double> q;       ///< [N/m] load per unit length
+  double approach = 0.0;       ///< [m] δ0 at the roller centre
+  double loaded_length = 0.0;  ///< [m] length carrying load
+  double peak_load = 0.0;      ///< [N/m]
+  double stress_peak = 0.0;    ///< [Pa] Hertz p0 at the most loaded slice
+  double load_sum = 0.0;       ///< [N] Σ q·Δs (equals the load)
+  int iterations = 0;          ///< outer iterations of the approach solve
+};
+SliceResult slice_model(const RollerTooth& c, double load, double skew,
+                        const SliceOptions& options = {});
+
+/// [m] plane-strain approach δ(q) of the slice law above.
+double slice_approach(const RollerTooth& c, double load_per_length);
+
+}  // namespace catena::contact

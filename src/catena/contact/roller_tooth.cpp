@@ -1,0 +1,159 @@
+#include "catena/contact/roller_tooth.hpp"
+
+#include <algorithm>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <numbers>
+
+namespace catena::contact {
+namespace {
+constexpr double kPi = std::numbers::pi;
+constexpr double kArcminute = kPi / (180.0 * 60.0);  // [rad]
+}  // namespace
+
+std::vector<Issue> validate(const RollerTooth& c) {
+  std::vector<Issue> issues;
+  check::finite_positive(issues, "roller_diameter", c.roller_diameter, "m");
+  check::finite_positive(issues, "roller_length", c.roller_length, "m");
+  check::finite_positive(issues, "tooth_radius", c.tooth_radius, "m");
+  for (const Elastic* e : {&c.roller, &c.tooth}) {
+    check::finite_positive(issues, "modulus", e->modulus, "Pa");
+    if (!(e->poisson >= 0.0 && e->poisson < 0.5)) {
+      issues.push_back({"poisson", check::format_si(e->poisson, ""), "0 ≤ ν < 0.5"});
+    }
+  }
+  if (issues.empty() && c.profile == Profile::kConcave &&
+      c.tooth_radius <= 0.5 * c.roller_diameter) {
+    issues.push_back(
+        {"tooth_radius", check::format_si(c.tooth_radius, "m"),
+         "a concave flank radius r1 > D_p/2 = " + check::format_si(0.5 * c.roller_diameter, "m") +
+             " (the roller must fit in the hollow)"});
+  }
+  return issues;
+}
+
+double reduced_radius(const RollerTooth& c) {
+  const double sign = c.profile == Profile::kConvex ? 1.0 : -1.0;
+  return c.roller_diameter * c.tooth_radius /
+         (2.0 * (c.tooth_radius + sign * 0.5 * c.roller_diameter));
+}
+
+double paper_stress(double load, double modulus, double length, double radius) {
+  return 0.418 * std::sqrt(load * modulus / (length * radius));  // 001 eq. (1)
+}
+
+HertzResult hertz(const RollerTooth& c, double load) {
+  throw_if_any(validate(c));
+  const LineContact lc =
+      line_contact(load / c.roller_length, reduced_radius(c), contact_modulus(c.roller, c.tooth));
+  // Johnson (1985) §4.2: beneath a plane-strain Hertz contact the principal shear stress peaks at
+  // z = 0.786 b with τ1 = 0.300 p0, independent of ν (checked numerically in the tests).
+  return {lc.peak_pressure, lc.half_width, 0.300 * lc.peak_pressure, 0.786 * lc.half_width};
+}
+
+std::optional<double> skew_gamma(double pitch) {
+  // 001, below eq. (2): γ by chain pitch.
+  constexpr std::pair<double, double> kTable[] = {
+      {12.7e-3, 0.0023}, {15.875e-3, 0.00195}, {19.05e-3, 0.0016}, {25.4e-3, 0.0012}};
+  for (auto [p, g] : kTable) {
+    if (std::abs(pitch - p) < 1e-6) return g;
+  }
+  return std::nullopt;
+}
+
+double skew_from_gauge(double dh, double base) { return std::atan(dh / base); }
+
+double load_factor(double gamma, double skew, double skew_factor) {
+  const double arcmin = skew * skew_factor / kArcminute;  // φ_p in arc-minutes (001, eq. 2)
+  return 1.0 + gamma * arcmin * arcmin;
+}
+
+double slice_approach(const RollerTooth& c, double q) {
+  if (q <= 0.0) return 0.0;
+  const double e_star = contact_modulus(c.roller, c.tooth);
+  const double b = std::sqrt(4.0 * q * reduced_radius(c) / (kPi * e_star));
+  const double r_ref = 0.5 * c.roller_diameter;
+  const double log_term = 2.0 * std::log(4.0 * r_ref / b) - 1.0;
+  double sum = 0.0;
+  for (const Elastic* e : {&c.roller, &c.tooth})
+    sum += (1.0 - e->poisson * e->poisson) / e->modulus;
+  return q / kPi * sum * log_term;
+}
+
+namespace {
+// Largest load per length for which δ(q) still increases: b = 4R_ref/e (beyond it the
+// plane-strain approach formula is outside its range).
+double slice_load_limit(const RollerTooth& c) {
+  const double b_max = 4.0 * 0.5 * c.roller_diameter / std::exp(1.0);
+  return kPi * contact_modulus(c.roller, c.tooth) * b_max * b_max / (4.0 * reduced_radius(c));
+}
+
+// Inverse of slice_approach on its increasing branch; clamps at the limit.
+double slice_load(const RollerTooth& c, double delta, double q_max) {
+  if (delta <= 0.0) return 0.0;
+  if (slice_approach(c, q_max) <= delta) return q_max;
+  boost::uintmax_t it = 100;
+  auto [lo, up] =
+      boost::math::tools::toms748_solve([&](double q) { return slice_approach(c, q) - delta; }, 0.0,
+                                        q_max, boost::math::tools::eps_tolerance<double>(48), it);
+  return 0.5 * (lo + up);
+}
+}  // namespace
+
+SliceResult slice_model(const RollerTooth& c, double load, double skew, const SliceOptions& o) {
+  std::vector<Issue> issues = validate(c);
+  check::finite_positive(issues, "load", load, "N");
+  check::finite(issues, "skew", skew, "rad");
+  if (std::abs(skew) >= 0.5 * kPi)
+    issues.push_back({"skew", check::format_si(skew, "rad"), "|φ| < 90°"});
+  if (o.slices < 3) issues.push_back({"slices", std::to_string(o.slices), "at least 3 slices"});
+  throw_if_any(issues);
+  const int n = o.slices;
+  const double w = c.roller_length / n;
+  const double slope = std::tan(std::abs(skew));
+  SliceResult r;
+  for (int k = 0; k < n; ++k) r.s.push_back(-0.5 * c.roller_length + (k + 0.5) * w);
+  const double q_mean = load / c.roller_length;
+  const double q_max = slice_load_limit(c);
+  if (q_mean * n >=
+      q_max * (n - 1)) {  // even spread over the roller it would exceed the law's range
+    throw InputError({{"load", check::format_si(load, "N"),
+                       "a load below " + check::format_si(q_max * c.roller_length, "N") +
+                           " for the slice model's compliance law (b < 4R/e)"}});
+  }
+  auto total = [&](double delta0) {
+    double sum = 0.0;
+    for (double s : r.s) sum += slice_load(c, delta0 - s * slope, q_max) * w;
+    return sum;
+  };
+  // bracket δ0: at −(L/2)·tan φ no slice touches; δ0 < 0 when less than half the roller carries
+  double lo = -0.5 * c.roller_length * slope;
+  double hi = slice_approach(c, q_mean) + 0.5 * c.roller_length * slope;
+  for (int guard = 0; total(hi) < load; ++guard) {
+    if (guard > 200 || hi > 1.0) {
+      throw InputError(
+          {{"load", check::format_si(load, "N"),
+            "a load the skewed roller can carry within the slice law's range (b < 4R/e "
+            "at every slice)"}});
+    }
+    hi = 2.0 * hi + 1e-9;
+  }
+  boost::uintmax_t it = 200;
+  auto [a, b] =
+      boost::math::tools::toms748_solve([&](double d0) { return total(d0) - load; }, lo, hi,
+                                        boost::math::tools::eps_tolerance<double>(48), it);
+  r.iterations = static_cast<int>(it);
+  r.approach = 0.5 * (a + b);
+  const double e_star = contact_modulus(c.roller, c.tooth);
+  for (double s : r.s) {
+    const double q = slice_load(c, r.approach - s * slope, q_max);
+    r.q.push_back(q);
+    r.load_sum += q * w;
+    if (q > 0.0) r.loaded_length += w;
+    r.peak_load = std::max(r.peak_load, q);
+  }
+  r.stress_peak = line_contact(r.peak_load, reduced_radius(c), e_star).peak_pressure;
+  return r;
+}
+
+}  // namespace catena::contact

@@ -1,0 +1,151 @@
+#include "catena/contact/roller_tooth.hpp"
+
+#include <gtest/gtest.h>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/math/tools/minima.hpp>
+#include <numbers>
+#include <random>
+
+namespace catena::contact {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kArcmin = kPi / 10800.0;
+
+// 12B-like roller on a concave flank, steel on steel.
+RollerTooth example(Profile profile = Profile::kConcave) {
+  RollerTooth c;
+  c.roller_diameter = 12.07e-3;
+  c.roller_length = 11.68e-3;
+  c.tooth_radius = 15.56e-3;
+  c.profile = profile;
+  return c;
+}
+
+TEST(RollerTooth, PaperConstant0418IsHertzForSteelOnSteel) {
+  // σ = √(P'E*/(πρ)) with E* = E/(2(1 − ν²)): √(1/(2π(1 − 0.09))) = 0.41820 for ν = 0.3.
+  EXPECT_NEAR(std::sqrt(1.0 / (2 * kPi * (1 - 0.09))), 0.418, 3e-4);
+  const RollerTooth c = example();
+  const double q = 1000.0;
+  const double paper = paper_stress(q, 210e9, c.roller_length, reduced_radius(c));
+  EXPECT_NEAR(paper / hertz(c, q).peak_pressure, 1.0, 5e-4);
+}
+
+TEST(RollerTooth, ReducedRadiusIsTheRelativeCurvature) {
+  const RollerTooth cc = example(Profile::kConcave), cv = example(Profile::kConvex);
+  EXPECT_NEAR(1 / reduced_radius(cc), 2 / cc.roller_diameter - 1 / cc.tooth_radius, 1e-9);
+  EXPECT_NEAR(1 / reduced_radius(cv), 2 / cv.roller_diameter + 1 / cv.tooth_radius, 1e-9);
+}
+
+TEST(RollerTooth, HertzPressureReproducesTheSurfaceCurvatureNumerically) {
+  // Independent check of the closed form: the surface slope under the elliptical pressure of
+  // the half-space (plane strain), du/dx = −(2/(πE*)) PV∫ p(s)/(x − s) ds, must equal −x/ρ
+  // inside the contact. The principal value is taken by subtracting the singular part.
+  const RollerTooth c = example();
+  const HertzResult h = hertz(c, 2000.0);
+  const double e_star = contact_modulus(c.roller, c.tooth), rho = reduced_radius(c),
+               b = h.half_width;
+  for (double xi : {-0.813, -0.291, 0.137, 0.533, 0.917}) {  // off the quadrature nodes
+    auto p = [&](double t) { return h.peak_pressure * std::sqrt(std::max(0.0, 1 - t * t)); };
+    const double regular = boost::math::quadrature::gauss_kronrod<double, 61>::integrate(
+        [&](double t) { return (p(t) - p(xi)) / (xi - t); }, -1.0, 1.0, 12, 1e-12);
+    const double pv =
+        regular + p(xi) * std::log((1 + xi) / (1 - xi));  // ∫ dt/(x − t), x in units of b
+    const double slope = -2.0 / (kPi * e_star) * pv;      // t and x scaled by b cancel
+    EXPECT_NEAR(slope, -xi * b / rho, 1e-6 * b / rho) << xi;
+  }
+}
+
+TEST(RollerTooth, MaxShearDepthAndValueFromTheFlamantSolution) {
+  // Stresses on the axis below the contact by integrating Flamant's point-load solution over the
+  // Hertz pressure; the principal shear (σx − σz)/2 peaks at 0.786 b with 0.300 p0.
+  const RollerTooth c = example();
+  const HertzResult h = hertz(c, 2000.0);
+  const double b = h.half_width, p0 = h.peak_pressure;
+  auto shear = [&](double z) {
+    auto p = [&](double s) { return p0 * std::sqrt(std::max(0.0, 1 - s * s / (b * b))); };
+    auto integral = [&](auto f) {
+      return boost::math::quadrature::gauss_kronrod<double, 61>::integrate(f, -b, b, 12, 1e-12);
+    };
+    const double sz = -2 * z * z * z / kPi *
+                      integral([&](double s) { return p(s) / std::pow(s * s + z * z, 2); });
+    const double sx = -2 * z / kPi *
+                      integral([&](double s) { return p(s) * s * s / std::pow(s * s + z * z, 2); });
+    return -(sx - sz) / 2;  // minimised below: maximum of (σx − σz)/2 in magnitude
+  };
+  const auto [z, neg] = boost::math::tools::brent_find_minima(
+      [&](double zz) { return -std::abs(shear(zz)); }, 0.2 * b, 2 * b, 40);
+  EXPECT_NEAR(z / b, 0.786, 2e-3);
+  EXPECT_NEAR(-neg / p0, 0.300, 1e-3);
+  EXPECT_NEAR(h.max_shear / p0, 0.300, 1e-12);
+}
+
+TEST(RollerTooth, SkewLoadFactorOfThePaper) {
+  EXPECT_EQ(skew_gamma(19.05e-3).value(), 0.0016);
+  EXPECT_EQ(skew_gamma(12.7e-3).value(), 0.0023);
+  EXPECT_FALSE(skew_gamma(31.75e-3).has_value());                          // no extrapolation
+  EXPECT_NEAR(skew_from_gauge(0.155e-3, 12.7e-3) / kArcmin, 41.96, 0.01);  // ≈ 0°42′
+  // 0 → 50′ for a 19.05 mm chain: Q_n/Q_nom = 1 + 0.0016·50² = 5, the stress × √5 = 2.24
+  EXPECT_NEAR(load_factor(0.0016, 50 * kArcmin), 5.0, 1e-12);
+  // the measured range 0°42′…3°26′: 3.82 … 68.9
+  EXPECT_NEAR(load_factor(0.0016, 42 * kArcmin), 1 + 0.0016 * 42 * 42, 1e-12);
+  EXPECT_NEAR(load_factor(0.0016, 206 * kArcmin), 1 + 0.0016 * 206 * 206, 1e-9);
+  EXPECT_NEAR(load_factor(0.0016, 50 * kArcmin, 0.65), 1 + 0.0016 * 32.5 * 32.5, 1e-12);
+}
+
+TEST(SliceModel, AlignedRollerIsHertzAndLoadIsConserved) {
+  const RollerTooth c = example();
+  const SliceResult aligned = slice_model(c, 3000.0, 0.0);
+  for (double q : aligned.q) EXPECT_NEAR(q, 3000.0 / c.roller_length, 1e-8 * q);
+  EXPECT_NEAR(aligned.stress_peak, hertz(c, 3000.0).peak_pressure, 1e-6 * aligned.stress_peak);
+  EXPECT_NEAR(aligned.loaded_length, c.roller_length, 1e-12);
+  double previous_peak = aligned.stress_peak, previous_length = aligned.loaded_length;
+  for (double arcmin : {5.0, 20.0, 42.0, 100.0, 206.0}) {
+    const SliceResult r = slice_model(c, 3000.0, arcmin * kArcmin);
+    EXPECT_NEAR(r.load_sum, 3000.0, 1e-9 * 3000.0) << arcmin;
+    EXPECT_GE(r.stress_peak, previous_peak);
+    EXPECT_LE(r.loaded_length, previous_length + 1e-12);
+    EXPECT_GE(r.q.front(), r.q.back());  // the gap opens towards +s
+    previous_peak = r.stress_peak;
+    previous_length = r.loaded_length;
+  }
+}
+
+TEST(SliceModel, ComplianceIsMonotone) {
+  const RollerTooth c = example();
+  double previous = 0.0;
+  for (double q = 1e3; q < 1e7; q *= 1.5) {
+    const double d = slice_approach(c, q);
+    EXPECT_GT(d, previous);
+    previous = d;
+  }
+}
+
+TEST(SliceModel, RandomInputsStayFinite) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < 60; ++i) {
+    RollerTooth c = example(u(rng) < 0.5 ? Profile::kConcave : Profile::kConvex);
+    c.roller_diameter = 5e-3 + 20e-3 * u(rng);
+    c.tooth_radius = c.roller_diameter * (0.6 + 2 * u(rng));
+    c.roller_length = 3e-3 + 20e-3 * u(rng);
+    const SliceResult r =
+        slice_model(c, 100 + 1e4 * u(rng), 240 * kArcmin * u(rng), SliceOptions{51});
+    ASSERT_TRUE(std::isfinite(r.stress_peak) && std::isfinite(r.approach));
+    EXPECT_GT(r.loaded_length, 0.0);
+  }
+}
+
+TEST(RollerTooth, InvalidInputIsReported) {
+  RollerTooth c = example();
+  c.tooth_radius = 5e-3;  // concave flank tighter than the roller
+  EXPECT_EQ(validate(c).size(), 1u);
+  c.roller.poisson = 0.7;
+  c.roller_length = -1;
+  EXPECT_EQ(validate(c).size(), 2u);
+  EXPECT_THROW(slice_model(example(), -1.0, 0.0), InputError);
+}
+
+}  // namespace
+}  // namespace catena::contact
