@@ -1,10 +1,13 @@
 #include "cli_support.hpp"
 
 #include <cctype>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
-
-#include "catena/io/atomic_file.hpp"
+#include <random>
 
 namespace catena::cli {
 
@@ -33,12 +36,41 @@ void FlagReader::add_model_issues(const std::vector<Issue>& model_issues) {
   }
 }
 
-void emit(const std::string& path, const std::string& content) {
-  if (path.empty()) {
-    std::cout << content << std::flush;
-  } else {
-    io::write_file_atomic(path, content);
+void Outputs::add(std::string flag, std::string path, std::string content) {
+  files_.push_back({std::move(flag), std::move(path), std::move(content), {}});
+}
+
+void Outputs::commit(const std::string& stdout_text) {
+  namespace fs = std::filesystem;
+  auto discard = [&] {
+    for (File& f : files_) {
+      std::error_code ignored;
+      if (!f.temporary.empty()) fs::remove(f.temporary, ignored);
+    }
+  };
+  std::random_device random;
+  for (File& f : files_) {
+    f.temporary = f.path + ".tmp" + std::to_string(random());
+    std::ofstream out(f.temporary, std::ios::binary | std::ios::trunc);
+    out.write(f.content.data(), static_cast<std::streamsize>(f.content.size()));
+    out.close();
+    if (!out) {
+      const std::string reason = std::strerror(errno);
+      discard();
+      throw InputError(
+          {{f.flag, f.path, "a writable file path (" + reason + "); nothing was written"}});
+    }
   }
+  for (File& f : files_) {
+    std::error_code error;
+    fs::rename(f.temporary, f.path, error);
+    if (error) {
+      discard();
+      throw InputError({{f.flag, f.path, "a writable file path (" + error.message() + ")"}});
+    }
+    f.temporary.clear();
+  }
+  if (!stdout_text.empty()) std::cout << stdout_text << std::flush;
 }
 
 }  // namespace catena::cli

@@ -29,7 +29,21 @@ class FlagReader {
   std::vector<Issue> issues_;
 };
 
-/// Writes `content` to `path` atomically, or to stdout when `path` is empty.
-void emit(const std::string& path, const std::string& content);
+/// The outputs of one command, written all or nothing: every file goes to a temporary beside its
+/// target first; only when all are written are they renamed into place. Then the text meant for
+/// stdout is printed (when no --output file took it). An unwritable path is invalid input.
+class Outputs {
+ public:
+  /// `flag` names the option the path came from, for the error message.
+  void add(std::string flag, std::string path, std::string content);
+  /// Writes everything; `stdout_text` goes to stdout unless empty.
+  void commit(const std::string& stdout_text = "");
+
+ private:
+  struct File {
+    std::string flag, path, content, temporary;
+  };
+  std::vector<File> files_;
+};
 
 }  // namespace catena::cli

@@ -51,7 +51,7 @@ std::string g(double v, int digits = 6) {
 double deg(double rad) { return rad * 180.0 / std::numbers::pi; }
 ordered_json opt(const std::optional<double>& v) { return v ? ordered_json(*v) : ordered_json(); }
 
-Request read(const Flags& f) {
+Request read(const Flags& f, bool sweep = false) {
   FlagReader in;
   Request r;
   auto required = [&](const std::string& flag, const std::string& text,
@@ -71,7 +71,25 @@ Request read(const Flags& f) {
   h.face = f.flat ? Face::kFlat : Face::kConcave;
   h.pin_diameter = required("--pin-diameter", f.pin_diameter, QuantityKind::kLength);
   h.half_thickness = required("--half-thickness", f.half_thickness, QuantityKind::kLength);
-  h.plate_radius = required("--plate-radius", f.plate_radius, QuantityKind::kLength);
+  if (sweep) {
+    // the sweep sets R1 itself; flags that only the single analysis uses are refused, not ignored
+    const std::pair<const char*, const std::string*> unused[] = {
+        {"--plate-radius", &f.plate_radius},
+        {"--roller-radius", &f.roller_radius},
+        {"--pitch", &f.pitch},
+        {"--svg", &f.svg},
+        {"--dxf", &f.dxf}};
+    for (auto [flag, text] : unused) {
+      if (!text->empty()) in.add({flag, *text, "nothing: 'hinge sweep' does not use it"});
+    }
+    if (f.points != "101" || f.clearance != "0.5mm" || f.flat) {
+      in.add({"--points/--clearance/--flat", "given", "nothing: 'hinge sweep' does not use them"});
+    }
+    // a placeholder inside the valid range; the sweep replaces it
+    h.plate_radius = 1.0;
+  } else {
+    h.plate_radius = required("--plate-radius", f.plate_radius, QuantityKind::kLength);
+  }
   if (f.teeth.empty()) {
     in.add({"--teeth", "(missing)", "a whole number z ≥ 3"});
   } else {
@@ -213,7 +231,7 @@ int run_hinge(const Flags& f) {
     j["contact_stress"] = opt(s.contact_stress);
     j["contact_half_width"] = opt(s.contact_half_width);
     j["face_margin"] = s.face_margin;
-    j["max_pitch_change"] = max_pitch_change(r.hinge, s.r2, r.points);
+    j["max_pitch_change"] = max_pitch_change(r.hinge, s.r2);
     ordered_json pc{{"phi", phi}, {"dt", dt}};
     if (r.pitch) pc["dt_over_t"] = dt_t;
     j["pitch_change"] = pc;
@@ -296,24 +314,27 @@ int run_hinge(const Flags& f) {
     if (s.shear_stress) row("shear stress F/A [MPa]", g(*s.shear_stress / 1e6));
     if (s.contact_stress) row("Hertz contact stress sigma_H [MPa]", g(*s.contact_stress / 1e6));
     if (s.rolling_limit) row("rolling limit (eq. 21) [deg]", g(deg(*s.rolling_limit)));
-    row("largest |pitch change| [mm]", g(max_pitch_change(r.hinge, s.r2, r.points) * 1e3));
+    row("largest |pitch change| [mm]", g(max_pitch_change(r.hinge, s.r2) * 1e3));
     row("pitch change at phi_max [mm]", g(dt.back() * 1e3));
     if (r.pitch) row("pitch change at phi_max / t [-]", g(dt_t.back()));
     for (const Diagnostic& d : s.diagnostics)
       out << "\n" << to_string(d.severity) << ": " << d.message << "\n";
     text = out.str();
   }
-  if (ap) {  // drawings first: everything is computed before any file is written
+  // everything is computed before any file is written, and the files are written all or nothing
+  Outputs outputs;
+  if (ap) {
     const io::Drawing drawing = hinge_drawing(r, s, *ap);
-    if (!f.svg.empty()) io::write_svg(f.svg, drawing);
-    if (!f.dxf.empty()) io::write_dxf(f.dxf, drawing);
+    if (!f.svg.empty()) outputs.add("--svg", f.svg, io::to_svg(drawing));
+    if (!f.dxf.empty()) outputs.add("--dxf", f.dxf, io::to_dxf(drawing));
   }
-  emit(f.output, text);
+  if (!f.output.empty()) outputs.add("--output", f.output, text);
+  outputs.commit(f.output.empty() ? text : "");
   return 0;
 }
 
 int run_sweep(const Flags& f) {
-  const Request r = read(f);
+  const Request r = read(f, true);
   const Sweep sw = sweep(r.hinge, r.loads, r.count);
   std::string text;
   auto cell = [](const std::optional<double>& v, double scale) {
@@ -385,7 +406,9 @@ int run_sweep(const Flags& f) {
     if (!csv) out << "\n* best: " << sw.criterion << "\n";
     text = out.str();
   }
-  emit(f.output, text);
+  Outputs outputs;
+  if (!f.output.empty()) outputs.add("--output", f.output, text);
+  outputs.commit(f.output.empty() ? text : "");
   return 0;
 }
 

@@ -15,7 +15,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    return app.exit(error);
+    // --help and --version exit 0; every other command-line error is invalid input: status 2.
+    const int status = app.exit(error);
+    return status == 0 ? 0 : 2;
   }
   try {
     if (app.got_subcommand("pocketwheel")) return pocketwheel();

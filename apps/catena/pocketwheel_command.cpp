@@ -355,9 +355,11 @@ std::function<int()> add_pocketwheel(CLI::App& app) {
     } else {
       text = to_table(request, results);
     }
-    // Everything is computed before anything is written: no half-written outputs.
-    if (!flags->csv.empty()) emit(flags->csv, to_csv(request, results));
-    emit(flags->output, text);
+    // Everything is computed before anything is written, and written all or nothing.
+    Outputs outputs;
+    if (!flags->csv.empty()) outputs.add("--csv", flags->csv, to_csv(request, results));
+    if (!flags->output.empty()) outputs.add("--output", flags->output, text);
+    outputs.commit(flags->output.empty() ? text : "");
     if (!flags->csv.empty()) std::cerr << "catena: wrote the series to " << flags->csv << "\n";
     return 0;
   };

@@ -76,8 +76,12 @@ TEST(HingeCli, BadInputNamesEveryFlag) {
 }
 
 TEST(HingeCli, SweepPicksTheBestRow) {
+  const CliRun refused =
+      run("hinge sweep --pin-diameter 40mm --half-thickness 8mm --plate-radius 20mm --teeth 8");
+  EXPECT_EQ(refused.status, 2);  // the sweep sets R1 itself: a given R1 is refused, not ignored
+  EXPECT_NE(refused.err.find("--plate-radius"), std::string::npos) << refused.err;
   const CliRun s =
-      run("hinge sweep --pin-diameter 40mm --half-thickness 8mm --plate-radius 20mm --teeth 8 "
+      run("hinge sweep --pin-diameter 40mm --half-thickness 8mm --teeth 8 "
           "--tension 29.4kN --contact-length 24mm --count 6 --format json");
   ASSERT_EQ(s.status, 0) << s.err;
   const auto j = nlohmann::json::parse(s.out);

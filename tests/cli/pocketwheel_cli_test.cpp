@@ -153,3 +153,21 @@ TEST(PocketwheelCli, NumericMethodAgreesWithClosedForms) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(PocketwheelCli, CommandLineErrorsExitWithStatus2AndNothingHalfWritten) {
+  EXPECT_EQ(run("pocketwheel --example --format yaml").status, 2);
+  EXPECT_EQ(run("pocketwheel --example --no-such-flag").status, 2);
+  EXPECT_EQ(run("").status, 2);
+  EXPECT_EQ(run("--version").status, 0);
+  const auto csv = std::filesystem::temp_directory_path() / "catena_cli_partial.csv";
+  std::filesystem::remove(csv);
+  const CliRun r =
+      run("pocketwheel --example --csv " + csv.string() + " --output /nonexistent/dir/x.json");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--output"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(csv)) << "the CSV must not be left behind";
+}
+
+}  // namespace

@@ -124,12 +124,14 @@ TEST(HingeAperture, DxfRoundTripKeepsTheClosedContourAndItsExtent) {
 }
 
 TEST(HingeAperture, SvgIsAValidDocumentInMillimetres) {
-  io::Drawing d;
+  io::Drawing d;  // 10 mm × 20 mm, plus 5 mm margins: 20 mm × 30 mm
   d.polylines.push_back({"A", {{0.0, 0.0}, {0.01, 0.0}, {0.01, 0.02}}, true});
   const std::string svg = io::to_svg(d);
   EXPECT_NE(svg.find("<svg"), std::string::npos);
-  EXPECT_NE(svg.find("mm\""), std::string::npos);  // width/height in mm
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  EXPECT_NE(svg.find("width=\"20mm\""), std::string::npos) << svg.substr(0, 400);
+  EXPECT_NE(svg.find("height=\"30mm\""), std::string::npos) << svg.substr(0, 400);
+  EXPECT_NE(svg.find("viewBox=\"0 0 20 30\""), std::string::npos) << svg.substr(0, 400);
 }
 
 }  // namespace

@@ -103,15 +103,18 @@ TEST(Paper000, FlatFaceEq17AsPrintedDoesNotVanishAtZeroTurnCorrectedHolds) {
 
 TEST(Paper000, Eq13IsAnIdentityNotTheRolledLength) {
   // a = H_max tg(γmax/2) = R1(1 − cos γmax) holds identically with H_max = R1 sin γmax; the
-  // length the contact travels along a flat face is R1·γmax (no slip), which is longer.
-  const double r1 = 0.02, g = kPi / 8;
-  EXPECT_NEAR(r1 * std::sin(g) * std::tan(g / 2), r1 * (1 - std::cos(g)), 1e-17);
+  // length the contact travels along a flat face is R1·γmax (no slip), which the simulation shows.
   const Hinge h = example(Face::kFlat);
+  const double r1 = h.plate_radius, g = gamma_max(h);
+  EXPECT_NEAR(r1 * std::sin(g) * std::tan(g / 2), r1 * (1 - std::cos(g)), 1e-17);
   const testing::RollingSimulation sim(h, std::numeric_limits<double>::infinity());
   const testing::SimulatedPose p = sim.at_phi(2 * g);
-  const double along = p.contact.y;  // contact position along the face in the plate frame …
-  (void)along;
-  EXPECT_GT(r1 * g, r1 * (1 - std::cos(g)));
+  // the contact in the roller's body frame: rotate back by the body's rotation about its centre
+  const double dx = p.contact.x - p.centre.x, dy = p.contact.y - p.centre.y;
+  const double along = -std::sin(p.rotation) * dx + std::cos(p.rotation) * dy;  // body y
+  const double start = h.loaded_length - h.face_half_length;                    // e
+  EXPECT_NEAR(along - start, r1 * g, 1e-9);
+  EXPECT_GT(std::abs((along - start) - r1 * (1 - std::cos(g))), 1e-3);
 }
 
 TEST(Paper000, ThesisExampleR1_34_R2_35_4CannotComeFromEq6) {
@@ -127,10 +130,23 @@ TEST(Paper000, ThesisExampleR1_34_R2_35_4CannotComeFromEq6) {
   auto d_needed = [&](int z) { return 4 * r1 * std::sin(ratio * kPi / z / 2); };
   EXPECT_GT(d_needed(26), t);               // 135.9 mm > t
   EXPECT_NEAR(d_needed(40), 0.1139, 1e-3);  // still a pin of 114 mm in a 125 mm pitch chain
-  // and the design does reproduce R2 when such inputs are given:
+  // and eq. (6) does reproduce R2 from such inputs (a → 0):
   const double psi = ratio * kPi / 40;
   const double d = 4 * r1 * std::sin(psi / 2);
-  EXPECT_NEAR(*r2_eq6(d, 0.0, r1, kPi / 40), r2, 1e-9);
+  EXPECT_NEAR(*r2_eq6(d, 1e-12, r1, kPi / 40), r2, 1e-6);
+  // The pair as a design with d = 40, a = 8 mm, z = 8 (numbers quoted in docs/models/hinge.md):
+  Hinge h = example();
+  h.plate_radius = r1;
+  h.roller_radius = r2;
+  Loads loads;
+  loads.tension = 29.4e3;
+  loads.contact_length = 0.024;
+  loads.friction = 0.15;
+  const Synthesis s = synthesize(h, loads);
+  EXPECT_NEAR(conformal_radius(r1, r2), 0.8597, 1e-4);      // R* = 860 mm
+  EXPECT_NEAR(*s.contact_stress / 1e6, 228.77, 0.01);       // σH [MPa]
+  EXPECT_NEAR(*s.rolling_limit * 180 / kPi, 0.3374, 1e-4);  // [°]
+  EXPECT_NEAR(s.face_margin * 1e3, -320.9, 0.1);            // contact runs off the face [mm]
 }
 
 }  // namespace

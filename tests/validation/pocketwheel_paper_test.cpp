@@ -327,7 +327,7 @@ double end_jump(const RunOnResult& r) {  // a(2π/z⁺) − a(2π/z⁻): the cha
   return w * w * (evaluate(p, P).d2x - evaluate_phase(p, p.phases.size() - 1, P).d2x);
 }
 
-TEST(Paper003, ConclusionAboutTheEndOfThePeriodHolds) {
+TEST(Paper003, ConclusionAboutTheEndOfThePeriod) {
   // "Free run-on has the most abrupt change of sign of the acceleration at the end of the period;
   // it is smaller for chordal run-on; tangential run-on has no change of sign there, only a drop
   // of the acceleration to zero."

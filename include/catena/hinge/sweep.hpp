@@ -35,7 +35,8 @@ struct Sweep {
 /// what limits a rolling hinge's life; ties are not expected. Concave faces only.
 Sweep sweep(const Hinge& hinge, const Loads& loads, int count);
 
-/// [m] largest |Δt| over `samples` turns in [0, φmax].
-double max_pitch_change(const Hinge& hinge, double r2, int samples = 101);
+/// [m] largest |Δt| over [0, φmax]: `samples` turns, an interior maximum refined by Brent's
+/// method (so the result does not depend on an output's sampling).
+double max_pitch_change(const Hinge& hinge, double r2, int samples = 201);
 
 }  // namespace catena::hinge

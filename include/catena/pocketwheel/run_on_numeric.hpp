@@ -52,8 +52,9 @@ PointKinematics evaluate_phase(const NumericPlan& plan, std::size_t index, doubl
                                double step = 1e-3);
 PointKinematics evaluate(const NumericPlan& plan, double phi, double step = 1e-3);
 
-/// The numerical analysis with the same outputs as run_on() (extremes from the closed forms on
-/// the numerically found phases).
+/// The numerical analysis with the same outputs as run_on(): the series and the seating angles
+/// come from the numerical solver; the reported plan (phases, first_link) and the extremes are
+/// the closed forms' (the tests hold the two plans equal to 1e-10 rad).
 RunOnResult run_on(const PocketWheel& wheel, const Guide& guide, const Sampling& sampling);
 
 }  // namespace catena::pocketwheel::numeric

@@ -22,6 +22,16 @@ std::vector<Issue> validate(const Hinge& h) {
                       "a half-thickness a < d/2 = " + check::format_si(0.5 * h.pin_diameter, "m") +
                           " (the working faces must cut the roller's circle)"});
   }
+  if (issues.empty()) {
+    // Below (d/2 − a)/2 the plate's R1 circle lies inside the roller's circle: N1 (eq. 4) does
+    // not exist and eqs. (5)–(7) lose their meaning.
+    const double lowest = 0.5 * (0.5 * h.pin_diameter - h.half_thickness);
+    if (h.plate_radius <= lowest) {
+      issues.push_back({"plate_radius", check::format_si(h.plate_radius, "m"),
+                        "R1 > (d/2 − a)/2 = " + check::format_si(lowest, "m") +
+                            " (a smaller plate arc lies inside the roller's circle: no point N1)"});
+    }
+  }
   if (h.face == Face::kConcave && h.roller_radius != 0.0) {
     if (!std::isfinite(h.roller_radius) || h.roller_radius <= h.plate_radius) {
       issues.push_back({"roller_radius", check::format_si(h.roller_radius, "m"),

@@ -1,6 +1,7 @@
 #include "catena/hinge/sweep.hpp"
 
 #include <algorithm>
+#include <boost/math/tools/minima.hpp>
 #include <cmath>
 
 #include "catena/hinge/kinematics.hpp"
@@ -9,10 +10,19 @@ namespace catena::hinge {
 
 double max_pitch_change(const Hinge& hinge, double r2, int samples) {
   const double phi_max = 2.0 * gamma_max(hinge);
+  auto magnitude = [&](double phi) { return std::abs(pitch_change(hinge, r2, phi)); };
+  int best = 0;
   double worst = 0.0;
   for (int i = 0; i < samples; ++i) {
-    const double phi = phi_max * i / (samples - 1);
-    worst = std::max(worst, std::abs(pitch_change(hinge, r2, phi)));
+    const double v = magnitude(phi_max * i / (samples - 1));
+    if (v > worst) worst = v, best = i;
+  }
+  if (best > 0 && best + 1 < samples) {  // an interior maximum: refine it (Brent)
+    const double step = phi_max / (samples - 1);
+    const auto [at, value] = boost::math::tools::brent_find_minima(
+        [&](double phi) { return -magnitude(phi); }, (best - 1) * step, (best + 1) * step, 50);
+    (void)at;
+    worst = std::max(worst, -value);
   }
   return worst;
 }

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 #include <memory>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 
@@ -17,7 +18,6 @@
 namespace catena::io {
 namespace {
 
-constexpr double kPointsPerMm = 72.0 / 25.4;
 constexpr double kMarginMm = 5.0;
 
 cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
@@ -36,8 +36,10 @@ std::string to_svg(const Drawing& d) {
     }
   }
   if (!(xmax >= xmin)) xmin = ymin = 0, xmax = ymax = 1;
-  const double width = (xmax - xmin + 2 * kMarginMm) * kPointsPerMm;
-  const double height = (ymax - ymin + 2 * kMarginMm) * kPointsPerMm;
+  // With the document unit set to mm, cairo writes width/height with that unit and a viewBox of
+  // the same numbers: the surface size is given in mm and one user unit is one millimetre.
+  const double width = xmax - xmin + 2 * kMarginMm;
+  const double height = ymax - ymin + 2 * kMarginMm;
   std::string svg;
   cairo_surface_t* surface = cairo_svg_surface_create_for_stream(append, &svg, width, height);
   cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_MM);
@@ -45,7 +47,7 @@ std::string to_svg(const Drawing& d) {
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
   // millimetres, y up, origin at the drawing's lower-left plus margin
-  cairo_scale(cr, kPointsPerMm, -kPointsPerMm);
+  cairo_scale(cr, 1.0, -1.0);
   cairo_translate(cr, kMarginMm - xmin, -(ymax + kMarginMm));
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   for (const Polyline& p : d.polylines) {
@@ -101,6 +103,21 @@ void write_dxf(const std::string& path, const Drawing& d) {
     fs::remove(temporary, error);
     throw std::runtime_error("cannot write '" + path + "'");
   }
+}
+
+std::string to_dxf(const Drawing& d) {
+  namespace fs = std::filesystem;
+  std::random_device random;
+  const fs::path path =
+      fs::temp_directory_path() / ("catena_dxf_" + std::to_string(random()) + ".dxf");
+  write_dxf(path.string(), d);
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  in.close();
+  std::error_code ignored;
+  fs::remove(path, ignored);
+  return text.str();
 }
 
 namespace {

@@ -212,9 +212,18 @@ std::optional<double> parse_quantity(std::string_view raw, QuantityKind kind,
         "or 1/s");
   }
 
+  // The number and the unit are parsed apart: UDUNITS-2 cannot scale a unit by 0, so "0 mm"
+  // as one expression would fail.
+  char* number_end = nullptr;
+  const double number = std::strtod(expression.c_str(), &number_end);
+  if (number_end == expression.c_str()) return fail("not a number with a unit UDUNITS-2 knows");
+  if (!std::isfinite(number)) return fail("the value is not finite");
+  const std::string unit_text = trim(std::string_view(number_end));
+  if (unit_text.empty()) return fail("not a number with a unit UDUNITS-2 knows");
+
   UnitSystem& system = units();
   std::lock_guard<std::mutex> lock(system.mutex);
-  UnitPtr parsed(ut_parse(system.system, expression.c_str(), UT_UTF8));
+  UnitPtr parsed(ut_parse(system.system, unit_text.c_str(), UT_UTF8));
   if (!parsed) return fail("not a number with a unit UDUNITS-2 knows");
   UnitPtr target(ut_parse(system.system, target_spelling(kind), UT_UTF8));
   if (!ut_are_convertible(parsed.get(), target.get())) return fail("wrong dimension");
@@ -225,7 +234,7 @@ std::optional<double> parse_quantity(std::string_view raw, QuantityKind kind,
   if (kind == QuantityKind::kAngle && !names_angle(def)) return fail("no angle unit given");
 
   cv_converter* converter = ut_get_converter(parsed.get(), target.get());
-  const double value = cv_convert_double(converter, 1.0);
+  const double value = number * cv_convert_double(converter, 1.0);
   cv_free(converter);
   if (kind == QuantityKind::kAngularSpeed && !names_angle(def) && !is_per_second(expression)) {
     return fail("a frequency other than 1/s is ambiguous: use rpm or 1/s");
