@@ -13,5 +13,8 @@ namespace catena::cli {
 std::function<int()> add_pocketwheel(CLI::App& app);
 /// Registers `catena hinge` (and `catena hinge sweep`).
 std::function<int()> add_hinge(CLI::App& app);
+/// Registers `catena contact` and `catena fretting`.
+std::function<int()> add_contact(CLI::App& app);
+std::function<int()> add_fretting(CLI::App& app);
 
 }  // namespace catena::cli

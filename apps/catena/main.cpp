@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   auto pocketwheel = catena::cli::add_pocketwheel(app);
   auto hinge = catena::cli::add_hinge(app);
+  auto contact = catena::cli::add_contact(app);
+  auto fretting = catena::cli::add_fretting(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -22,6 +24,8 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("pocketwheel")) return pocketwheel();
     if (app.got_subcommand("hinge")) return hinge();
+    if (app.got_subcommand("contact")) return contact();
+    if (app.got_subcommand("fretting")) return fretting();
   } catch (const catena::InputError& error) {
     std::cerr << "catena: " << error.what() << "\n";
     return 2;

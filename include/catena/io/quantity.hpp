@@ -22,6 +22,7 @@ enum class QuantityKind {
   kStress,        ///< SI Pa; bare number: MPa
   kMass,          ///< SI kg; bare number: kg
   kTime,          ///< SI s; bare number: s
+  kFrequency,     ///< SI 1/s (cycles per second); bare number: Hz
 };
 
 /// The SI unit the library uses for `kind` ("m", "rad", "rad/s", "N", "Pa", "kg", "s").

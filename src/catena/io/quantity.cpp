@@ -99,6 +99,8 @@ const char* accepted_spellings(QuantityKind kind) {
       return "a mass, e.g. 40kg, 500 g (bare number: kg)";
     case QuantityKind::kTime:
       return "a time, e.g. 2 s, 5 min (bare number: s)";
+    case QuantityKind::kFrequency:
+      return "a frequency in cycles per second, e.g. 20 Hz, 1200 1/min (bare number: Hz)";
   }
   return "a quantity";
 }
@@ -120,6 +122,8 @@ const char* target_spelling(QuantityKind kind) {
       return "kg";
     case QuantityKind::kTime:
       return "s";
+    case QuantityKind::kFrequency:
+      return "1/s";
   }
   return "1";
 }
@@ -158,6 +162,8 @@ const char* si_unit(QuantityKind kind) {
       return "kg";
     case QuantityKind::kTime:
       return "s";
+    case QuantityKind::kFrequency:
+      return "1/s";
   }
   return "1";
 }
@@ -178,6 +184,8 @@ const char* default_unit(QuantityKind kind) {
       return "kg";
     case QuantityKind::kTime:
       return "s";
+    case QuantityKind::kFrequency:
+      return "Hz";
   }
   return "1";
 }
