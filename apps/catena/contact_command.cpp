@@ -25,7 +25,8 @@ constexpr double kArcmin = std::numbers::pi / 10800.0;
 
 struct ContactFlags {
   std::string roller_diameter, roller_length, tooth_radius, profile = "concave", modulus = "210GPa";
-  std::string poisson = "0.3", load, pitch, skew, skew_factor = "1", gauge_dh, gauge_base, gamma;
+  std::string poisson = "0.3", tooth_modulus, tooth_poisson, load, pitch, skew, skew_factor = "1",
+              gauge_dh, gauge_base, gamma;
   std::string chain, format = "table", output, sweep, slices = "201";
 };
 
@@ -89,6 +90,12 @@ ContactRequest read(const ContactFlags& f) {
   const double modulus = in.quantity("--modulus", f.modulus, QuantityKind::kStress).value_or(NAN);
   const double poisson = number(in, "--poisson", f.poisson, "a number 0 ≤ ν < 0.5").value_or(0.3);
   r.c.roller = r.c.tooth = Elastic{modulus, poisson};
+  if (!f.tooth_modulus.empty())
+    r.c.tooth.modulus =
+        in.quantity("--tooth-modulus", f.tooth_modulus, QuantityKind::kStress).value_or(NAN);
+  if (!f.tooth_poisson.empty())
+    r.c.tooth.poisson =
+        number(in, "--tooth-poisson", f.tooth_poisson, "a number 0 ≤ ν < 0.5").value_or(0.3);
   if (f.load.empty()) {
     in.add({"--load", "(missing)", "the nominal load Q_nom on the roller"});
   } else {
@@ -109,7 +116,13 @@ ContactRequest read(const ContactFlags& f) {
     if (!(base > 0)) in.add({"--skew-gauge-base", f.gauge_base, "a base B > 0"});
   } else if (!f.skew.empty()) {
     r.skew = in.quantity("--skew", f.skew, QuantityKind::kAngle).value_or(NAN);
+  } else if (f.sweep.empty()) {
+    in.add({"--skew", "(missing)",
+            "the measured skew φ (e.g. 0.7deg, 0°42'), or --skew-gauge-dh with "
+            "--skew-gauge-base, or --skew-sweep (an aligned roller is --skew 0)"});
   }
+  if (!f.sweep.empty() && (gauge || !f.skew.empty()))
+    in.add({"--skew-sweep", f.sweep, "either a sweep or one skew (--skew or the gauge), not both"});
   r.skew_factor =
       number(in, "--skew-factor", f.skew_factor, "K_φ, a number in (0, 1]").value_or(1.0);
   if (!(r.skew_factor > 0 && r.skew_factor <= 1))
@@ -119,34 +132,49 @@ ContactRequest read(const ContactFlags& f) {
     std::stringstream ss(f.sweep);
     std::string part;
     int k = 0;
-    while (std::getline(ss, part, ':') && k < 3)
-      parts[k++] = in.quantity("--skew-sweep", part, QuantityKind::kAngle).value_or(NAN);
-    if (k != 3 || !(parts[2] > 0) || !(parts[1] >= parts[0]) ||
-        (parts[1] - parts[0]) / parts[2] > 10000) {
+    while (std::getline(ss, part, ':')) {
+      if (k < 3) parts[k] = in.quantity("--skew-sweep", part, QuantityKind::kAngle).value_or(NAN);
+      ++k;
+    }
+    constexpr double kRight = std::numbers::pi / 2;
+    if (k != 3 || !(parts[2] > 0) || !(parts[1] >= parts[0]) || !(std::abs(parts[0]) < kRight) ||
+        !(std::abs(parts[1]) < kRight) || (parts[1] - parts[0]) / parts[2] > 10000) {
       in.add({"--skew-sweep", f.sweep,
-              "FROM:TO:STEP angles, FROM ≤ TO, STEP > 0, at most 10000 steps"});
+              "FROM:TO:STEP, three angles, -90° < FROM ≤ TO < 90°, STEP > 0, at most 10000 "
+              "steps"});
     } else {
       r.sweep = parts;
     }
   }
-  r.slices = in.integer("--slices", f.slices, 3).value_or(3);
-  in.throw_if_any();
-  in.add_model_issues(validate(r.c));
-  if (!(r.load > 0)) in.add({"--load", f.load, "a load > 0"});
-  if (!std::isfinite(r.skew) || std::abs(r.skew) >= std::numbers::pi / 2)
-    in.add({"--skew", f.skew, "|φ| < 90°"});
   const auto table = skew_gamma(r.pitch);
   if (!f.gamma.empty()) {
     r.gamma = number(in, "--gamma", f.gamma, "γ ≥ 0 of eq. (2)").value_or(NAN);
     if (!(r.gamma >= 0)) in.add({"--gamma", f.gamma, "γ ≥ 0"});
-  } else if (table) {
-    r.gamma = *table;
+  } else if (table || !std::isfinite(r.pitch)) {  // a bad pitch is reported already
+    r.gamma = table.value_or(NAN);
   } else {
     in.add(
         {"--pitch", g(r.pitch * 1e3) + " mm",
          "a pitch of the paper's γ table (12.7, 15.875, 19.05, 25.4 mm), or γ given with --gamma "
          "(no extrapolation)"});
   }
+  r.slices = in.integer("--slices", f.slices, 3).value_or(3);
+  constexpr int kMaxSlices = 20001;
+  constexpr double kMaxSliceWork = 2e6;  // slices × sweep points: a few seconds at most
+  if (r.slices > kMaxSlices) {
+    in.add({"--slices", f.slices, "3 … " + std::to_string(kMaxSlices) + " slices"});
+  } else if (r.sweep &&
+             r.slices * ((*r.sweep)[1] - (*r.sweep)[0]) / (*r.sweep)[2] > kMaxSliceWork) {
+    in.add({"--slices", f.slices,
+            "at most " + g(kMaxSliceWork) +
+                " slices × sweep points in all: fewer slices or a "
+                "coarser --skew-sweep"});
+  }
+  in.throw_if_any();
+  in.add_model_issues(validate(r.c));
+  if (!(r.load > 0)) in.add({"--load", f.load, "a load > 0"});
+  if (!std::isfinite(r.skew) || std::abs(r.skew) >= std::numbers::pi / 2)
+    in.add({"--skew", f.skew, "|φ| < 90°"});
   in.throw_if_any();
   return r;
 }
@@ -248,6 +276,7 @@ int run_contact(const ContactFlags& f) {
       j["slice_model"] = {{"stress_peak", s.stress_peak},
                           {"stress_factor", s.stress_peak / nominal.peak_pressure},
                           {"loaded_length", s.loaded_length},
+                          {"peak_half_width", s.peak_half_width},
                           {"approach", s.approach},
                           {"load_sum", s.load_sum},
                           {"distribution", {{"s", s.s}, {"q", s.q}}}};
@@ -266,6 +295,7 @@ int run_contact(const ContactFlags& f) {
                     {"stress_peak", "Pa"},
                     {"stress_factor", "1"},
                     {"loaded_length", "m"},
+                    {"peak_half_width", "m"},
                     {"approach", "m"},
                     {"load_sum", "N"},
                     {"s", "m"},
@@ -281,7 +311,7 @@ int run_contact(const ContactFlags& f) {
       std::ostringstream out;
       char line[256];
       auto row = [&](const char* label, const std::string& v) {
-        std::snprintf(line, sizeof line, "  %-44s %s\n", label, v.c_str());
+        std::snprintf(line, sizeof line, "  %-46s %s\n", label, v.c_str());
         out << line;
       };
       out << "Catena contact: roller on sprocket tooth with axis skew (seed 001)\n\n";
@@ -301,6 +331,11 @@ int run_contact(const ContactFlags& f) {
       row("paper: stress factor sqrt(Q_n/Q_nom)", g(std::sqrt(p.load_factor)));
       row("slice model: loaded length [mm]",
           g(s.loaded_length * 1e3) + " of " + g(r.c.roller_length * 1e3));
+      row("slice model: loaded length / peak half-width",
+          g(s.loaded_length / s.peak_half_width, 3) +
+              (s.loaded_length < 5 * s.peak_half_width
+                   ? "  (< 5: a short patch, the strip model is rough here)"
+                   : ""));
       text = out.str();
     }
   }
@@ -328,12 +363,15 @@ int run_fretting(const FrettingFlags& f) {
   m.amplitude = need("--amplitude", f.amplitude, QuantityKind::kLength);
   m.load = need("--load", f.load, QuantityKind::kForce);
   m.frequency = need("--frequency", f.frequency, QuantityKind::kFrequency);
-  m.k1 =
-      number(in, "--k1", f.k1.empty() ? "x" : f.k1, "K1 in s/m (SI number), empirical: no default")
-          .value_or(NAN);
-  m.k2 =
-      number(in, "--k2", f.k2.empty() ? "x" : f.k2, "K2 in s/N (SI number), empirical: no default")
-          .value_or(NAN);
+  auto constant = [&](const char* flag, const std::string& text, const char* expected) -> double {
+    if (text.empty()) {
+      in.add({flag, "(missing)", expected});
+      return NAN;
+    }
+    return number(in, flag, text, expected).value_or(NAN);
+  };
+  m.k1 = constant("--k1", f.k1, "K1 in s/m (SI number), empirical: no default");
+  m.k2 = constant("--k2", f.k2, "K2 in s/N (SI number), empirical: no default");
   in.throw_if_any();
   in.add_model_issues(validate(m));
   in.throw_if_any();
@@ -376,8 +414,10 @@ std::function<int()> add_contact(CLI::App& app) {
                 "r1, flank profile radius in the contact zone (bare: mm)");
   c->add_option("--profile", f->profile, "concave (default) or convex flank")
       ->check(CLI::IsMember({"concave", "convex"}));
-  c->add_option("--modulus", f->modulus, "E of roller and tooth (default 210GPa)");
+  c->add_option("--modulus", f->modulus, "E of the roller, and of the tooth (default 210GPa)");
   c->add_option("--poisson", f->poisson, "nu (default 0.3)");
+  c->add_option("--tooth-modulus", f->tooth_modulus, "E of the tooth (default: --modulus)");
+  c->add_option("--tooth-poisson", f->tooth_poisson, "nu of the tooth (default: --poisson)");
   c->add_option("--load", f->load, "nominal load Q_nom on the roller (bare: N)");
   c->add_option("--pitch", f->pitch, "chain pitch, selects gamma (bare: mm; --chain fills p)");
   c->add_option("--skew", f->skew, "measured skew phi (0.7deg, 42arcmin, 0°42'; bare: degree)");

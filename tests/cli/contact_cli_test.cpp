@@ -2,7 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
 
 #include "cli_run.hpp"
 
@@ -56,12 +60,118 @@ TEST(ContactCli, NoSilentExtrapolationOfGamma) {
   EXPECT_NE(r.err.find("--gamma"), std::string::npos) << r.err;
   r =
       run("contact --roller-diameter 19.05mm --roller-length 18.9mm --tooth-radius 25mm --load 1kN "
-          "--pitch 31.75mm --gamma 0.001");
+          "--pitch 31.75mm --gamma 0.001 --skew 0");
   EXPECT_EQ(r.status, 0) << r.err;
   r = run(kContact + " --skew 5kg --chain 99X");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--skew = '5kg'"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--chain"), std::string::npos) << r.err;
+}
+
+nlohmann::json contact_json(const std::string& extra) {
+  const CliRun r = run(kContact + " " + extra + " --format json");
+  EXPECT_EQ(r.status, 0) << extra << "\n" << r.err;
+  return r.status == 0 ? nlohmann::json::parse(r.out) : nlohmann::json{};
+}
+
+TEST(ContactCli, HertzValuesAtTheEffectiveLoad) {
+  // Plane-strain Hertz, steel on steel: E* = E/(2(1 − ν²)), p0 = √(P′E*/(πρ)), b = √(4P′ρ/(πE*))
+  const auto j = contact_json("--skew 30arcmin");
+  const double rho = j["reduced_radius"].get<double>();
+  EXPECT_NEAR(rho, 11.91 * 15.56 / (2 * (15.56 - 0.5 * 11.91)) * 1e-3, 1e-12);
+  const double p = j["effective_load"].get<double>() / 12.7e-3;
+  const double e_star = 210e9 / (2 * (1 - 0.09));
+  EXPECT_NEAR(j["hertz_stress"].get<double>(), std::sqrt(p * e_star / (std::numbers::pi * rho)),
+              1e-6 * j["hertz_stress"].get<double>());
+  EXPECT_NEAR(j["half_width"].get<double>(), std::sqrt(4 * p * rho / (std::numbers::pi * e_star)),
+              1e-9 * j["half_width"].get<double>());
+  EXPECT_NEAR(j["hertz_stress_nominal"].get<double>(),
+              j["hertz_stress"].get<double>() / std::sqrt(j["load_factor"].get<double>()), 1.0);
+  // A softer tooth changes the general Hertz stress but not the paper's steel formula (3).
+  const auto soft = contact_json("--skew 30arcmin --tooth-modulus 105GPa --tooth-poisson 0.35");
+  const double e_soft = 1 / ((1 - 0.09) / 210e9 + (1 - 0.35 * 0.35) / 105e9);
+  EXPECT_NEAR(soft["hertz_stress"].get<double>() / j["hertz_stress"].get<double>(),
+              std::sqrt(e_soft / e_star), 1e-9);
+  EXPECT_EQ(soft["contact_stress"].get<double>(), j["contact_stress"].get<double>());
+}
+
+TEST(ContactCli, SkewFactorScalesTheSkewOnce) {
+  // K_φ = 0.65 on a measured 60′ is the design skew 39′, in eq. (2) and in the slice model alike.
+  const auto k = contact_json("--skew 60arcmin --skew-factor 0.65");
+  const auto d = contact_json("--skew 39arcmin");
+  EXPECT_NEAR(k["load_factor"].get<double>(), 1 + 0.0016 * 39 * 39, 1e-9);
+  EXPECT_NEAR(k["design_skew"].get<double>(), 39 * std::numbers::pi / 10800, 1e-12);
+  EXPECT_NEAR(k["load_factor"].get<double>(), d["load_factor"].get<double>(), 1e-12);
+  EXPECT_NEAR(k["slice_model"]["stress_peak"].get<double>(),
+              d["slice_model"]["stress_peak"].get<double>(),
+              1e-9 * d["slice_model"]["stress_peak"].get<double>());
+  EXPECT_NEAR(k["slice_model"]["load_sum"].get<double>(), 1000.0, 1e-6);
+}
+
+TEST(ContactCli, SweepValuesCsvTableAndOutputFile) {
+  const CliRun json = run(kContact + " --skew-sweep 0deg:1deg:15arcmin --format json");
+  ASSERT_EQ(json.status, 0) << json.err;
+  const auto j = nlohmann::json::parse(json.out);
+  ASSERT_EQ(j["skew"].size(), 5u);
+  for (int i = 0; i < 5; ++i) {
+    const double arcmin = 15.0 * i;
+    EXPECT_NEAR(j["skew"][i].get<double>(), arcmin * std::numbers::pi / 10800, 1e-12);
+    EXPECT_NEAR(j["load_factor"][i].get<double>(), 1 + 0.0016 * arcmin * arcmin, 1e-9);
+    if (i > 0) {
+      EXPECT_GT(j["slice_stress_peak"][i].get<double>(),
+                j["slice_stress_peak"][i - 1].get<double>());
+      EXPECT_LT(j["slice_loaded_length"][i].get<double>(),
+                j["slice_loaded_length"][i - 1].get<double>() + 1e-15);
+    }
+  }
+  // the aligned point of the sweep is the single-point run at zero skew
+  EXPECT_NEAR(j["slice_stress_peak"][0].get<double>(),
+              contact_json("--skew 0")["slice_model"]["stress_peak"].get<double>(), 1e-6);
+
+  const CliRun csv = run(kContact + " --skew-sweep 0deg:1deg:15arcmin --format csv");
+  ASSERT_EQ(csv.status, 0) << csv.err;
+  EXPECT_EQ(csv.out.rfind("skew,load_factor,effective_load,contact_stress,", 0), 0u) << csv.out;
+  EXPECT_EQ(std::count(csv.out.begin(), csv.out.end(), '\n'), 6);
+
+  const CliRun table = run(kContact + " --skew 0.7deg");
+  ASSERT_EQ(table.status, 0) << table.err;
+  for (const char* label : {"load factor", "contact stress eq. (3)", "slice model: peak stress"})
+    EXPECT_NE(table.out.find(label), std::string::npos) << label;
+
+  const auto path = std::filesystem::temp_directory_path() / "catena_contact_cli_output.json";
+  std::filesystem::remove(path);
+  const CliRun file = run(kContact + " --skew 0.7deg --format json --output " + path.string());
+  ASSERT_EQ(file.status, 0) << file.err;
+  EXPECT_TRUE(file.out.empty());
+  std::ifstream in(path);
+  std::stringstream content;
+  content << in.rdbuf();
+  EXPECT_EQ(content.str(), run(kContact + " --skew 0.7deg --format json").out);
+  std::filesystem::remove(path);
+}
+
+TEST(ContactCli, BadSkewAndSliceRequestsAreRejected) {
+  struct Case {
+    std::string args, fragment;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"", "--skew = (missing)"},
+           {"--skew 1deg --skew-sweep 0deg:1deg:1arcmin", "not both"},
+           {"--skew-sweep 0deg:95deg:1deg", "-90°"},
+           {"--skew-sweep 0deg:1deg:1arcmin:5deg", "three angles"},
+           {"--skew-sweep 1deg:0deg:1arcmin", "FROM ≤ TO"},
+           {"--skew 1deg --slices 50000000", "20001"},
+           {"--skew 1deg --slices 2", "≥ 3"},
+           {"--skew-sweep 0deg:80deg:1arcmin --slices 20001", "slices × sweep points"},
+           {"--skew 1deg --modulus -5GPa", "--modulus"},
+       }) {
+    const CliRun r = run(kContact + " " + c.args);
+    EXPECT_EQ(r.status, 2) << c.args;
+    EXPECT_NE(r.err.find(c.fragment), std::string::npos) << c.args << "\n" << r.err;
+  }
+  // one bad modulus shared by both bodies is reported once
+  const CliRun r = run(kContact + " --skew 1deg --modulus -5GPa");
+  EXPECT_EQ(r.err.find("--modulus"), r.err.rfind("--modulus")) << r.err;
 }
 
 TEST(FrettingCli, LatentPeriodAndTheSignOfK2) {
@@ -77,7 +187,20 @@ TEST(FrettingCli, LatentPeriodAndTheSignOfK2) {
   EXPECT_NE(r.err.find("--k2"), std::string::npos) << r.err;
   r = run("fretting --roughness 0.8um --amplitude 5um --load 2kN --frequency 20Hz");
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("--k1"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--k1 = (missing)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--k2 = (missing)"), std::string::npos) << r.err;
+  // rpm counts radians, not cycles: a frequency must be given in Hz or 1/min
+  r =
+      run("fretting --roughness 0.8um --amplitude 5um --load 2kN --frequency 20rpm --k1 1e9 --k2 "
+          "-1e-6");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--frequency"), std::string::npos) << r.err;
+  r =
+      run("fretting --roughness 0.8um --amplitude 5um --load 2kN --frequency '1200 1/min' --k1 1e9 "
+          "--k2 -1e-6 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NEAR(nlohmann::json::parse(r.out)["latent_period"].get<double>(), 800 * std::exp(-0.25),
+              1e-9);
 }
 
 }  // namespace

@@ -56,6 +56,10 @@ INSTANTIATE_TEST_SUITE_P(
         Accepted{"350", QuantityKind::kStress, 350e6},  // bare: MPa
         Accepted{"40kg", QuantityKind::kMass, 40.0}, Accepted{"500 g", QuantityKind::kMass, 0.5},
         Accepted{"2 min", QuantityKind::kTime, 120.0},
+        Accepted{"20 Hz", QuantityKind::kFrequency, 20.0},
+        Accepted{"20", QuantityKind::kFrequency, 20.0},  // bare: Hz
+        Accepted{"1200 1/min", QuantityKind::kFrequency, 20.0},
+        Accepted{"2 kHz", QuantityKind::kFrequency, 2000.0},
         Accepted{"0", QuantityKind::kLength, 0.0},  // zero, which UDUNITS cannot scale by
         Accepted{"0mm", QuantityKind::kLength, 0.0}, Accepted{"0 m", QuantityKind::kLength, 0.0},
         Accepted{"-5 mm", QuantityKind::kLength, -0.005}));
@@ -95,7 +99,10 @@ INSTANTIATE_TEST_SUITE_P(
                       Rejected{"2 mm/m", QuantityKind::kAngle, "no angle unit"},
                       Rejected{"3 m/m", QuantityKind::kAngle, "no angle unit"},
                       Rejected{"20 mm", QuantityKind::kAngle, "wrong dimension"},
-                      Rejected{"3 MPa", QuantityKind::kForce, "wrong dimension"}));
+                      Rejected{"3 MPa", QuantityKind::kForce, "wrong dimension"},
+                      Rejected{"20 rpm", QuantityKind::kFrequency, "does not count cycles"},
+                      Rejected{"5 rad/s", QuantityKind::kFrequency, "does not count cycles"},
+                      Rejected{"5 N", QuantityKind::kFrequency, "wrong dimension"}));
 
 TEST(Quantity, ThrowingOverloadCarriesTheIssue) {
   try {

@@ -68,11 +68,15 @@ struct SliceResult {
   std::vector<double> s;       ///< [m] slice centres along the roller
   std::vector<double> q;       ///< [N/m] load per unit length
   double approach = 0.0;       ///< [m] δ0 at the roller centre
-  double loaded_length = 0.0;  ///< [m] length carrying load
-  double peak_load = 0.0;      ///< [N/m]
-  double stress_peak = 0.0;    ///< [Pa] Hertz p0 at the most loaded slice
-  double load_sum = 0.0;       ///< [N] Σ q·Δs (equals the load)
-  int iterations = 0;          ///< outer iterations of the approach solve
+  double loaded_length = 0.0;  ///< [m] length carrying load, where δ0 − s·tan φ > 0 (exact)
+  double peak_load = 0.0;      ///< [N/m] at the roller's most loaded end s = −L/2
+  double stress_peak = 0.0;    ///< [Pa] Hertz p0 of peak_load
+  /// [m] Hertz half-width b of peak_load. The slices are plane-strain strips: the model is a
+  /// fair approximation while loaded_length ≫ peak_half_width and rough below ~5 b, where the
+  /// contact is closer to a short elliptical (3-D Hertz) patch.
+  double peak_half_width = 0.0;
+  double load_sum = 0.0;  ///< [N] Σ q·Δs (equals the load)
+  int iterations = 0;     ///< outer iterations of the approach solve
 };
 SliceResult slice_model(const RollerTooth& c, double load, double skew,
                         const SliceOptions& options = {});

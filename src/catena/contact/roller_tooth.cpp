@@ -4,6 +4,8 @@
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
 
 namespace catena::contact {
 namespace {
@@ -16,10 +18,15 @@ std::vector<Issue> validate(const RollerTooth& c) {
   check::finite_positive(issues, "roller_diameter", c.roller_diameter, "m");
   check::finite_positive(issues, "roller_length", c.roller_length, "m");
   check::finite_positive(issues, "tooth_radius", c.tooth_radius, "m");
-  for (const Elastic* e : {&c.roller, &c.tooth}) {
-    check::finite_positive(issues, "modulus", e->modulus, "Pa");
+  // The tooth's constants are reported under their own names, and only when they differ from
+  // the roller's: one bad --modulus for both bodies is one problem, not two.
+  const bool same = c.tooth.modulus == c.roller.modulus && c.tooth.poisson == c.roller.poisson;
+  for (const auto& [e, prefix] : {std::pair{&c.roller, ""}, std::pair{&c.tooth, "tooth_"}}) {
+    if (same && e == &c.tooth) break;
+    check::finite_positive(issues, (std::string(prefix) + "modulus").c_str(), e->modulus, "Pa");
     if (!(e->poisson >= 0.0 && e->poisson < 0.5)) {
-      issues.push_back({"poisson", check::format_si(e->poisson, ""), "0 ≤ ν < 0.5"});
+      issues.push_back(
+          {std::string(prefix) + "poisson", check::format_si(e->poisson, ""), "0 ≤ ν < 0.5"});
     }
   }
   if (issues.empty() && c.profile == Profile::kConcave &&
@@ -149,10 +156,23 @@ SliceResult slice_model(const RollerTooth& c, double load, double skew, const Sl
     const double q = slice_load(c, r.approach - s * slope, q_max);
     r.q.push_back(q);
     r.load_sum += q * w;
-    if (q > 0.0) r.loaded_length += w;
-    r.peak_load = std::max(r.peak_load, q);
   }
-  r.stress_peak = line_contact(r.peak_load, reduced_radius(c), e_star).peak_pressure;
+  // The peak and the loaded length are taken from the solved approach itself, not from the
+  // slice centres: the most loaded point is the roller's end s = −L/2, and the gap closes at
+  // s = δ0/tan φ. (At slice centres both would carry an O(Δs) mesh error.)
+  r.peak_load = slice_load(c, r.approach + 0.5 * c.roller_length * slope, q_max);
+  if (r.peak_load >= q_max * (1.0 - 1e-12)) {
+    throw InputError(
+        {{"load", check::format_si(load, "N"),
+          "a load whose skewed end load stays below " + check::format_si(q_max, "N/m") +
+              " per length, the slice law's range (b < 4R/e)"}});
+  }
+  r.loaded_length =
+      slope == 0.0 ? c.roller_length
+                   : std::clamp(r.approach / slope + 0.5 * c.roller_length, 0.0, c.roller_length);
+  const LineContact peak = line_contact(r.peak_load, reduced_radius(c), e_star);
+  r.stress_peak = peak.peak_pressure;
+  r.peak_half_width = peak.half_width;
   return r;
 }
 

@@ -240,6 +240,9 @@ std::optional<double> parse_quantity(std::string_view raw, QuantityKind kind,
   ut_format(parsed.get(), definition, sizeof definition - 1, UT_ASCII | UT_DEFINITION);
   const std::string def(definition);
   if (kind == QuantityKind::kAngle && !names_angle(def)) return fail("no angle unit given");
+  if (kind == QuantityKind::kFrequency && names_angle(def)) {
+    return fail("an angular unit (rad/s, rpm) does not count cycles: use Hz or 1/min");
+  }
 
   cv_converter* converter = ut_get_converter(parsed.get(), target.get());
   const double value = number * cv_convert_double(converter, 1.0);
