@@ -40,8 +40,20 @@ void Outputs::add(std::string flag, std::string path, std::string content) {
   files_.push_back({std::move(flag), std::move(path), std::move(content), {}});
 }
 
+namespace {
+Capture* active_capture = nullptr;
+}  // namespace
+
+Capture::Capture() { active_capture = this; }
+Capture::~Capture() { active_capture = nullptr; }
+
 void Outputs::commit(const std::string& stdout_text) {
   namespace fs = std::filesystem;
+  if (active_capture) {
+    for (File& f : files_) active_capture->files.emplace_back(f.flag, std::move(f.content));
+    active_capture->stdout_text += stdout_text;
+    return;
+  }
   auto discard = [&] {
     for (File& f : files_) {
       std::error_code ignored;

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "catena/core/error.hpp"
@@ -44,6 +45,20 @@ class Outputs {
     std::string flag, path, content, temporary;
   };
   std::vector<File> files_;
+};
+
+/// While a Capture exists, Outputs::commit hands its files and stdout text to it instead of
+/// writing them: the case runner runs a subcommand in-process and keeps what it produced.
+/// (The program is single-threaded; captures do not nest.)
+class Capture {
+ public:
+  Capture();
+  ~Capture();
+  Capture(const Capture&) = delete;
+  Capture& operator=(const Capture&) = delete;
+  std::string stdout_text;
+  /// (flag, content) of every file the command would have written
+  std::vector<std::pair<std::string, std::string>> files;
 };
 
 }  // namespace catena::cli

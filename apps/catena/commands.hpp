@@ -2,6 +2,8 @@
 #pragma once
 
 #include <functional>
+#include <map>
+#include <string>
 
 namespace CLI {
 class App;
@@ -16,5 +18,13 @@ std::function<int()> add_hinge(CLI::App& app);
 /// Registers `catena contact` and `catena fretting`.
 std::function<int()> add_contact(CLI::App& app);
 std::function<int()> add_fretting(CLI::App& app);
+
+/// Registers every analysis subcommand above on `app`; returns their actions by name. The case
+/// runner uses it too: a model added here (and described in case_command.cpp's registry) is
+/// reachable from case files and reports.
+std::map<std::string, std::function<int()>> register_analyses(CLI::App& app);
+/// Registers `catena run CASE` (JSON result tree) and `catena report [CASE]` (HTML report).
+std::function<int()> add_run(CLI::App& app);
+std::function<int()> add_report(CLI::App& app);
 
 }  // namespace catena::cli

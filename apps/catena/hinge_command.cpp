@@ -273,6 +273,11 @@ int run_hinge(const Flags& f) {
                   {"M1y", "m"},
                   {"O2x", "m"},
                   {"O2y", "m"},
+                  {"clearance", "m"},
+                  {"xmin", "m"},
+                  {"xmax", "m"},
+                  {"ymin", "m"},
+                  {"ymax", "m"},
                   {"limit", "SI"}};
     text = j.dump(2) + "\n";
   } else if (f.format == "csv") {
@@ -354,7 +359,9 @@ int run_sweep(const Flags& f) {
                       {"face_margin", row.face_margin},
                       {"feasible", row.feasible}});
     }
-    ordered_json j{{"rows", rows},
+    ordered_json j{{"model", "hinge.rolling_friction_sweep"},
+                   {"source", "000 Pudans, section 1.2, eqs. (4)-(7), (10), (21), corrected"},
+                   {"rows", rows},
                    {"best", sw.best ? ordered_json(*sw.best) : ordered_json()},
                    {"criterion", sw.criterion},
                    {"units",

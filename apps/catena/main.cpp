@@ -10,10 +10,9 @@ int main(int argc, char** argv) {
   CLI::App app{"Catena: chain conveyor and chain drive engineering toolkit"};
   app.set_version_flag("--version", std::string("catena ") + CATENA_VERSION);
   app.require_subcommand(1);
-  auto pocketwheel = catena::cli::add_pocketwheel(app);
-  auto hinge = catena::cli::add_hinge(app);
-  auto contact = catena::cli::add_contact(app);
-  auto fretting = catena::cli::add_fretting(app);
+  auto actions = catena::cli::register_analyses(app);
+  actions["run"] = catena::cli::add_run(app);
+  actions["report"] = catena::cli::add_report(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -22,10 +21,9 @@ int main(int argc, char** argv) {
     return status == 0 ? 0 : 2;
   }
   try {
-    if (app.got_subcommand("pocketwheel")) return pocketwheel();
-    if (app.got_subcommand("hinge")) return hinge();
-    if (app.got_subcommand("contact")) return contact();
-    if (app.got_subcommand("fretting")) return fretting();
+    for (auto& [name, action] : actions) {
+      if (app.got_subcommand(name)) return action();
+    }
   } catch (const catena::InputError& error) {
     std::cerr << "catena: " << error.what() << "\n";
     return 2;

@@ -1,0 +1,77 @@
+// The engineering report: one self-contained HTML file (inputs, results tables, interactive
+// charts, drawings, diagnostics, sources) that opens offline. The charting library's script is
+// passed in by the caller and written into the file, so the file needs no network.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace catena::io {
+
+/// A row of a results or inputs table: what, value (already formatted), unit.
+struct ReportRow {
+  std::string name, value, unit;
+};
+
+struct ReportTable {
+  std::string title;
+  std::vector<ReportRow> rows;
+};
+
+/// A table with columns (a sweep: one row per design). Headers carry their units.
+struct ReportGrid {
+  std::string title;
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;
+  std::vector<bool> highlighted;  ///< per row (e.g. the best design); may be empty
+};
+
+/// One curve of a chart (x and y of equal length; non-finite values are drawn as gaps).
+struct ReportTrace {
+  std::string name;
+  std::vector<double> x, y;
+};
+
+struct ReportChart {
+  std::string title, x_label, y_label;
+  std::vector<ReportTrace> traces;
+  bool equal_axes = false;  ///< same scale on x and y (paths, outlines)
+};
+
+/// A finding about the design: severity ("error", "warning", "note"), message, limit.
+struct ReportDiagnostic {
+  std::string severity, message, limit;
+};
+
+/// One analysis of the case.
+struct ReportSection {
+  std::string id;      ///< HTML anchor, [a-z0-9_-]
+  std::string title;   ///< "Rolling-friction hinge (seed 000 §1.2–1.3)"
+  std::string source;  ///< where the equations come from
+  std::string docs;    ///< documentation page, relative to the repository ("docs/models/hinge.md")
+  std::vector<ReportDiagnostic> diagnostics;
+  std::vector<ReportTable> tables;
+  std::vector<ReportGrid> grids;
+  std::vector<ReportChart> charts;
+  std::vector<std::string> drawings_svg;  ///< complete SVG documents, inlined
+  std::string failure;  ///< the analysis could not run: why (then the rest is empty)
+};
+
+struct Report {
+  std::string title;              ///< the case's title
+  std::string case_name;          ///< file name or "built-in"
+  std::string case_hash;          ///< SHA-256 of the case file's bytes
+  std::string version;            ///< Catena version
+  std::vector<ReportRow> inputs;  ///< the case's values as typed, path = name
+  std::vector<ReportSection> sections;
+};
+
+/// The report as one HTML document. `chart_script` is the charting library (Plotly) source,
+/// written into the document; each chart is drawn by Plotly.newPlot into its own element.
+std::string to_html(const Report& report, std::string_view chart_script);
+
+/// Escapes text for HTML element content and attribute values.
+std::string html_escape(std::string_view text);
+
+}  // namespace catena::io

@@ -1,0 +1,120 @@
+#include "catena/io/case_file.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <utility>
+
+namespace catena::io {
+namespace {
+
+std::string number_text(const toml::node& node) {
+  // toml++ keeps no source spelling; integers print exactly, floats with round-trip precision.
+  if (const auto* i = node.as_integer()) return std::to_string(i->get());
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.17g", node.as_floating_point()->get());
+  // shortest spelling that reads back to the same double
+  for (int digits = 1; digits <= 17; ++digits) {
+    char shorter[64];
+    std::snprintf(shorter, sizeof shorter, "%.*g", digits, node.as_floating_point()->get());
+    if (std::strtod(shorter, nullptr) == node.as_floating_point()->get()) return shorter;
+  }
+  return buffer;
+}
+
+void flatten(const toml::table& table, const std::string& prefix, CaseFile& out,
+             std::vector<std::pair<int, std::string>>& tables) {
+  for (const auto& [key, node] : table) {
+    const std::string path =
+        prefix.empty() ? std::string(key.str()) : prefix + "." + std::string(key.str());
+    const int line = static_cast<int>(node.source().begin.line);
+    if (const auto* sub = node.as_table()) {
+      tables.emplace_back(line, path);
+      flatten(*sub, path, out, tables);
+    } else if (node.is_string()) {
+      out.values.push_back(
+          {path, std::string(node.as_string()->get()), CaseValue::Type::kString, line});
+    } else if (node.is_integer() || node.is_floating_point()) {
+      out.values.push_back({path, number_text(node), CaseValue::Type::kNumber, line});
+    } else if (node.is_boolean()) {
+      out.values.push_back(
+          {path, node.as_boolean()->get() ? "true" : "false", CaseValue::Type::kBoolean, line});
+    } else {
+      out.values.push_back({path, "(an array or date)", CaseValue::Type::kOther, line});
+    }
+  }
+}
+
+}  // namespace
+
+const CaseValue* CaseFile::find(std::string_view path) const {
+  for (const CaseValue& v : values) {
+    if (v.path == path) return &v;
+  }
+  return nullptr;
+}
+
+std::vector<std::string> CaseFile::children(std::string_view parent) const {
+  std::vector<std::string> out;
+  const std::string prefix = std::string(parent) + ".";
+  for (const std::string& t : tables) {
+    if (t.rfind(prefix, 0) == 0 && t.find('.', prefix.size()) == std::string::npos)
+      out.push_back(t.substr(prefix.size()));
+  }
+  return out;
+}
+
+CaseFile parse_case(std::string_view text, std::string name) {
+  CaseFile out;
+  out.name = std::move(name);
+  out.text = std::string(text);
+  toml::table parsed;
+  try {
+    parsed = toml::parse(out.text, out.name);
+  } catch (const toml::parse_error& error) {
+    throw InputError({{out.name + ":" + std::to_string(error.source().begin.line) + ":" +
+                           std::to_string(error.source().begin.column),
+                       "(TOML syntax)", "valid TOML: " + std::string(error.description())}});
+  }
+  // toml++ iterates a table's keys in sorted order; put the values back in file order
+  std::vector<std::pair<int, std::string>> tables;
+  flatten(parsed, "", out, tables);
+  std::stable_sort(tables.begin(), tables.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (auto& [line, path] : tables) out.tables.push_back(std::move(path));
+  std::stable_sort(out.values.begin(), out.values.end(),
+                   [](const CaseValue& a, const CaseValue& b) { return a.line < b.line; });
+  return out;
+}
+
+std::optional<std::string> did_you_mean(std::string_view word,
+                                        const std::vector<std::string>& candidates) {
+  auto distance = [](std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+      std::size_t diagonal = row[0];
+      row[0] = i;
+      for (std::size_t j = 1; j <= b.size(); ++j) {
+        const std::size_t above = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        diagonal = above;
+      }
+    }
+    return row[b.size()];
+  };
+  std::optional<std::string> best;
+  std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
+  for (const std::string& c : candidates) {
+    const std::size_t d = distance(word, c);
+    if (d < best_distance) {
+      best_distance = d;
+      best = c;
+    }
+  }
+  return best;
+}
+
+}  // namespace catena::io

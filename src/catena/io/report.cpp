@@ -1,0 +1,270 @@
+#include "catena/io/report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace catena::io {
+namespace {
+
+// JSON string literal, safe inside an HTML <script> element ("<" never appears raw).
+std::string json_string(std::string_view text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '<':
+        out += "\\u003c";
+        break;
+      case '>':
+        out += "\\u003e";
+        break;
+      case '&':
+        out += "\\u0026";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char buffer[8];
+          std::snprintf(buffer, sizeof buffer, "\\u%04x", static_cast<unsigned>(c));
+          out += buffer;
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+std::string json_numbers(const std::vector<double>& values) {
+  std::string out = "[";
+  char buffer[32];
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (i) out += ",";
+    if (std::isfinite(values[i])) {
+      std::snprintf(buffer, sizeof buffer, "%.10g", values[i]);
+      out += buffer;
+    } else {
+      out += "null";
+    }
+  }
+  return out + "]";
+}
+
+// Makes the ids of one inlined SVG document unique in the page (cairo names its glyphs and
+// surfaces the same way in every drawing) and drops the XML declaration.
+std::string inline_svg(std::string svg, int index) {
+  if (svg.rfind("<?xml", 0) == 0) svg.erase(0, svg.find("?>") + 2);
+  svg.erase(0, svg.find_first_not_of(" \t\r\n"));
+  const std::string prefix = "catena-d" + std::to_string(index) + "-";
+  for (const std::string& marker :
+       {std::string("id=\""), std::string("href=\"#"), std::string("url(#")}) {
+    for (std::size_t at = svg.find(marker); at != std::string::npos;
+         at = svg.find(marker, at + marker.size() + prefix.size())) {
+      svg.insert(at + marker.size(), prefix);
+    }
+  }
+  return svg;
+}
+
+const char* kStyle = R"css(
+body{font-family:system-ui,-apple-system,"Segoe UI",Roboto,sans-serif;margin:0;color:#1d2330;background:#f6f7f9}
+header{background:#1d2a44;color:#fff;padding:18px 28px}
+header h1{margin:0 0 6px;font-size:22px}
+header .meta{font-size:13px;opacity:.85}
+header code{color:#fff}
+main{max-width:1100px;margin:0 auto;padding:18px 28px 60px}
+nav{margin:12px 0 18px;font-size:14px}
+nav a{margin-right:14px}
+section{background:#fff;border:1px solid #dde1e8;border-radius:6px;padding:16px 20px;margin:18px 0}
+h2{margin:0 0 4px;font-size:19px}
+.source{font-size:13px;color:#555;margin-bottom:10px}
+table{border-collapse:collapse;margin:8px 0 14px;font-size:14px}
+th,td{border-bottom:1px solid #e4e7ec;padding:4px 10px;text-align:left;vertical-align:top}
+td.value{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
+td.text{max-width:640px}
+.grid{overflow-x:auto}
+.grid td{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
+tr.best td{background:#e8f5e9;font-weight:600}
+caption{text-align:left;font-weight:600;padding:6px 0}
+.diagnostic{border-left:4px solid;padding:6px 10px;margin:6px 0;font-size:14px}
+.diagnostic.error{border-color:#c62828;background:#fdecea}
+.diagnostic.warning{border-color:#e0a100;background:#fff6dd}
+.diagnostic.note{border-color:#1565c0;background:#e8f1fc}
+.diagnostic .limit{color:#444}
+.failure{border-left:4px solid #c62828;background:#fdecea;padding:8px 10px;white-space:pre-wrap}
+.chart{width:100%;height:380px;margin:10px 0}
+.drawing{border:1px solid #e4e7ec;margin:10px 0;padding:6px;background:#fff}
+.drawing svg{width:100%;height:auto;max-height:560px}
+.ok{color:#2e7d32}
+footer{font-size:12px;color:#666;margin-top:30px}
+summary{cursor:pointer}
+)css";
+
+const char* kChartCode = R"js(
+(function () {
+  var charts = JSON.parse(document.getElementById('catena-charts').textContent);
+  charts.forEach(function (c) {
+    var traces = c.traces.map(function (t) {
+      return {x: t.x, y: t.y, name: t.name, type: 'scatter', mode: 'lines', connectgaps: false};
+    });
+    var layout = {title: {text: c.title, font: {size: 15}}, margin: {l: 70, r: 20, t: 45, b: 55},
+                  xaxis: {title: {text: c.x}}, yaxis: {title: {text: c.y}},
+                  showlegend: c.traces.length > 1, legend: {orientation: 'h', y: -0.22}};
+    if (c.equal) layout.yaxis.scaleanchor = 'x';
+    Plotly.newPlot(c.id, traces, layout, {responsive: true, displaylogo: false});
+  });
+})();
+)js";
+
+}  // namespace
+
+std::string html_escape(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string to_html(const Report& report, std::string_view chart_script) {
+  std::ostringstream html;
+  auto table = [&](const std::string& caption, const std::vector<ReportRow>& rows,
+                   const char* name_header) {
+    html << "<table>";
+    if (!caption.empty()) html << "<caption>" << html_escape(caption) << "</caption>";
+    html << "<tr><th>" << name_header << "</th><th>value</th><th>unit</th></tr>";
+    for (const ReportRow& r : rows) {
+      // numbers line up on the right; words and sentences wrap on the left
+      const bool numeric =
+          !r.value.empty() && r.value.find_first_not_of("0123456789.eE+-, ") == std::string::npos;
+      html << "<tr><td>" << html_escape(r.name) << "</td><td class=\""
+           << (numeric ? "value" : "text") << "\">" << html_escape(r.value) << "</td><td>"
+           << html_escape(r.unit) << "</td></tr>";
+    }
+    html << "</table>\n";
+  };
+  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
+       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
+       << "<meta name=\"generator\" content=\"Catena " << html_escape(report.version) << "\">"
+       << "<title>" << html_escape(report.title) << " — Catena report</title><style>" << kStyle
+       << "</style></head><body>\n";
+  html << "<header><h1>" << html_escape(report.title) << "</h1><div class=\"meta\">Catena "
+       << html_escape(report.version) << " · case <code>" << html_escape(report.case_name)
+       << "</code> · SHA-256 <code id=\"case-hash\">" << html_escape(report.case_hash)
+       << "</code></div></header>\n<main>\n<nav>";
+  html << "<a href=\"#inputs\">Inputs</a>";
+  for (const ReportSection& s : report.sections)
+    html << "<a href=\"#" << html_escape(s.id) << "\">" << html_escape(s.title) << "</a>";
+  html << "</nav>\n";
+
+  // a summary of the findings first: what an engineer looks for before the numbers
+  int errors = 0, warnings = 0;
+  for (const ReportSection& s : report.sections) {
+    if (!s.failure.empty()) ++errors;
+    for (const ReportDiagnostic& d : s.diagnostics) (d.severity == "error" ? errors : warnings)++;
+  }
+  html << "<section id=\"summary\"><h2>Findings</h2>";
+  if (errors + warnings == 0) {
+    html << "<p class=\"ok\">Every check of every analysis passed.</p>";
+  } else {
+    html << "<p>" << errors << " error(s), " << warnings
+         << " warning(s): see the highlighted diagnostics below.</p>";
+  }
+  html << "</section>\n";
+
+  html << "<section id=\"inputs\"><details><summary><h2 style=\"display:inline\">Inputs</h2> ("
+       << report.inputs.size()
+       << " values)</summary><div class=\"source\">The case file's values as typed; a bare "
+          "number is in the field's default unit, named beside it (docs/units.md).</div>";
+  table("", report.inputs, "path");
+  html << "</details></section>\n";
+
+  std::string charts_json = "[";
+  int chart_count = 0, drawing_count = 0;
+  for (const ReportSection& s : report.sections) {
+    html << "<section id=\"" << html_escape(s.id) << "\" class=\"analysis\"><h2>"
+         << html_escape(s.title) << "</h2><div class=\"source\">Source: " << html_escape(s.source);
+    if (!s.docs.empty())
+      html << " · model documentation: <code>" << html_escape(s.docs) << "</code>";
+    html << "</div>\n";
+    if (!s.failure.empty()) {
+      html << "<div class=\"failure\">This analysis could not run: " << html_escape(s.failure)
+           << "</div></section>\n";
+      continue;
+    }
+    for (const ReportDiagnostic& d : s.diagnostics) {
+      html << "<div class=\"diagnostic " << html_escape(d.severity) << "\"><b>"
+           << html_escape(d.severity) << ":</b> " << html_escape(d.message);
+      if (!d.limit.empty())
+        html << " <span class=\"limit\">(limit: " << html_escape(d.limit) << ")</span>";
+      html << "</div>\n";
+    }
+    for (const ReportTable& t : s.tables) table(t.title, t.rows, "quantity");
+    for (const ReportGrid& g : s.grids) {
+      html << "<div class=\"grid\"><table><caption>" << html_escape(g.title) << "</caption><tr>";
+      for (const std::string& c : g.columns) html << "<th>" << html_escape(c) << "</th>";
+      html << "</tr>";
+      for (std::size_t i = 0; i < g.rows.size(); ++i) {
+        html << (i < g.highlighted.size() && g.highlighted[i] ? "<tr class=\"best\">" : "<tr>");
+        for (const std::string& cell : g.rows[i]) html << "<td>" << html_escape(cell) << "</td>";
+        html << "</tr>";
+      }
+      html << "</table></div>\n";
+    }
+    for (const ReportChart& c : s.charts) {
+      const std::string id = "catena-chart-" + std::to_string(chart_count);
+      html << "<div class=\"chart\" id=\"" << id << "\"></div>\n";
+      if (chart_count++) charts_json += ",";
+      charts_json += "{\"id\":" + json_string(id) + ",\"title\":" + json_string(c.title) +
+                     ",\"x\":" + json_string(c.x_label) + ",\"y\":" + json_string(c.y_label) +
+                     ",\"equal\":" + (c.equal_axes ? "true" : "false") + ",\"traces\":[";
+      for (std::size_t i = 0; i < c.traces.size(); ++i) {
+        if (i) charts_json += ",";
+        charts_json += "{\"name\":" + json_string(c.traces[i].name) +
+                       ",\"x\":" + json_numbers(c.traces[i].x) +
+                       ",\"y\":" + json_numbers(c.traces[i].y) + "}";
+      }
+      charts_json += "]}";
+    }
+    for (const std::string& svg : s.drawings_svg)
+      html << "<div class=\"drawing\">" << inline_svg(svg, drawing_count++) << "</div>\n";
+    html << "</section>\n";
+  }
+  charts_json += "]";
+  html << "<footer>Generated by Catena " << html_escape(report.version)
+       << ". Every number is in the units named beside it. Charts: Plotly (MIT licence), embedded."
+       << "</footer>\n</main>\n";
+  html << "<script type=\"application/json\" id=\"catena-charts\">" << charts_json
+       << "</script>\n<script>" << chart_script << "</script>\n<script>" << kChartCode
+       << "</script>\n</body></html>\n";
+  return html.str();
+}
+
+}  // namespace catena::io

@@ -1,0 +1,176 @@
+// `catena run` and `catena report`: case files as an engineer writes them, and every kind of
+// mistake in them.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli_run.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kExamples = CATENA_EXAMPLES_DIR;
+
+std::string write_case(const std::string& name, const std::string& text) {
+  const fs::path path = fs::temp_directory_path() / ("catena_case_" + name + ".toml");
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+nlohmann::json run_json(const std::string& args) {
+  const CliRun r = run(args);
+  EXPECT_EQ(r.status, 0) << args << "\n" << r.err;
+  return r.status == 0 ? nlohmann::json::parse(r.out) : nlohmann::json{};
+}
+
+TEST(CaseCli, EachExampleGivesWhatItsSubcommandGives) {
+  // The case runner must feed the very flags a user would type: the results are identical.
+  const auto hinge = run_json("run " + kExamples + "/000_thesis_rolling_hinge.toml");
+  const auto direct_hinge = run_json(
+      "hinge --pitch 125mm --pin-diameter 40mm --half-thickness 8mm --contact-length 24mm "
+      "--teeth 8 --strokes 2 --tension 29.4kN --modulus 210GPa --poisson 0.3 "
+      "--allowable-shear 120MPa --allowable-contact 1600MPa --friction 0.15 --plate-radius 34mm "
+      "--roller-radius 35.4mm --format json");
+  ASSERT_TRUE(hinge["analyses"].contains("hinge"));
+  for (const char* key : {"R2", "contact_stress", "rolling_limit", "face_margin", "pitch_change"})
+    EXPECT_EQ(hinge["analyses"]["hinge"][key], direct_hinge[key]) << key;
+  ASSERT_TRUE(hinge["analyses"].contains("hinge_sweep"));
+  EXPECT_EQ(hinge["analyses"]["hinge_sweep"]["rows"].size(), 24u);
+
+  const auto contact = run_json("run " + kExamples + "/001_roller_chain_skew.toml");
+  const auto direct_contact = run_json(
+      "contact --chain 12B --load 1kN --tooth-radius 15.56mm --profile concave "
+      "--skew-gauge-dh 0.155mm --skew-gauge-base 12.7mm --format json");
+  EXPECT_EQ(contact["analyses"]["contact"], direct_contact);
+
+  const auto wheel = run_json("run " + kExamples + "/003_pocket_wheel.toml");
+  const auto direct_wheel = run_json(
+      "pocketwheel --pitch 64mm --wire 18mm --teeth 8 --omega 5 --guide tangential "
+      "--guide-end 256mm --format json");
+  EXPECT_EQ(wheel["analyses"]["pocketwheel"], direct_wheel);
+  EXPECT_EQ(wheel["case_sha256"].get<std::string>().size(), 64u);
+}
+
+TEST(CaseCli, ReportIsOneSelfContainedHtmlFile) {
+  const fs::path dir = fs::temp_directory_path() / "catena_report_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  // the built-in case, from a directory with nothing in it
+  const CliRun r = run("report -o " + (dir / "r.html").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string html = slurp(dir / "r.html");
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  for (const char* fragment :
+       {"<section id=\"hinge\" class=\"analysis\">",
+        "<section id=\"hinge_sweep\" class=\"analysis\">", "class=\"diagnostic",
+        "<div class=\"drawing\"><svg", "Plotly.newPlot", "SHA-256"})
+    EXPECT_NE(html.find(fragment), std::string::npos) << fragment;
+  // nothing loaded from elsewhere (the browser test also watches the network)
+  EXPECT_EQ(html.find("<script src"), std::string::npos);
+  EXPECT_EQ(html.find("<link "), std::string::npos);
+  // the hash in the report is the hash of the built-in case's bytes
+  const std::string digest = run_json("report --format json")["case_sha256"];
+  EXPECT_NE(html.find(digest), std::string::npos);
+  const CliRun json = run("report " + kExamples + "/003_pocket_wheel.toml --format json");
+  ASSERT_EQ(json.status, 0) << json.err;
+  EXPECT_TRUE(nlohmann::json::parse(json.out)["analyses"].contains("pocketwheel"));
+  fs::remove_all(dir);
+}
+
+struct BadCase {
+  const char* name;
+  const char* text;
+  std::vector<const char*> fragments;  // each must appear in stderr
+};
+
+class BadCaseFile : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadCaseFile, IsRefusedWithEveryProblemNamedAndNoReport) {
+  const BadCase& c = GetParam();
+  const std::string path = write_case(c.name, c.text);
+  const fs::path out = fs::temp_directory_path() / (std::string("catena_bad_") + c.name + ".html");
+  fs::remove(out);
+  const CliRun r = run("report " + path + " -o " + out.string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_FALSE(fs::exists(out));
+  for (const char* f : c.fragments)
+    EXPECT_NE(r.err.find(f), std::string::npos) << f << "\n" << r.err;
+  fs::remove(path);
+}
+
+const char* kHinge =
+    "[chain]\ntype = \"rolling-hinge\"\npin_diameter = \"40 mm\"\nhalf_thickness = \"8 mm\"\n"
+    "[sprocket]\nteeth = 8\n";
+
+INSTANTIATE_TEST_SUITE_P(
+    Kinds, BadCaseFile,
+    ::testing::Values(
+        BadCase{"syntax", "[chain]\ntype = \"rolling-hinge\npitch = 3\n", {":2:", "valid TOML"}},
+        BadCase{"top_key",
+                "titel = \"x\"\n[chain]\ntype = \"round-link\"\n[analyses.pocketwheel]\n",
+                {"titel", "did you mean 'title'"}},
+        BadCase{"analysis_key",
+                "[chain]\ntype = \"rolling-hinge\"\n[analyses.hinge]\nplate_radus = \"20 mm\"\n",
+                {"analyses.hinge.plate_radus", "did you mean 'plate_radius'"}},
+        BadCase{"analysis_name",
+                "[chain]\ntype = \"rolling-hinge\"\n[analyses.hinje]\n",
+                {"analyses.hinje", "did you mean 'hinge'"}},
+        BadCase{"shared_key",
+                "[chain]\ntype = \"round-link\"\npich = \"64 mm\"\n[analyses.pocketwheel]\n",
+                {"chain.pich", "did you mean 'pitch'"}},
+        BadCase{"missing_type",
+                "[chain]\npitch = \"64 mm\"\n[analyses.pocketwheel]\n",
+                {"chain.type = (missing)"}},
+        BadCase{"bad_type",
+                "[chain]\ntype = \"round-lnk\"\n[analyses.pocketwheel]\n",
+                {"chain.type", "did you mean 'round-link'"}},
+        BadCase{"wrong_chain",
+                "[chain]\ntype = \"round-link\"\n[analyses.hinge]\n",
+                {"analyses.hinge", "applies to rolling-hinge"}},
+        BadCase{"no_analyses", "[chain]\ntype = \"round-link\"\n", {"analyses = (missing)"}},
+        BadCase{"output_key",
+                "[chain]\ntype = \"rolling-hinge\"\n[analyses.hinge]\nformat = \"csv\"\n",
+                {"analyses.hinge.format", "no output option"}},
+        BadCase{"flag_type",
+                "[chain]\ntype = \"rolling-hinge\"\n[analyses.hinge]\nflat = \"yes\"\n",
+                {"analyses.hinge.flat", "true or false"}},
+        BadCase{"bool_value",
+                "[chain]\ntype = \"rolling-hinge\"\n[analyses.hinge]\nplate_radius = true\n",
+                {"analyses.hinge.plate_radius", "bare number: mm"}},
+        // model-level errors keep the case-file path, all at once, across analyses
+        BadCase{"units_and_missing",
+                "[chain]\ntype = \"rolling-hinge\"\npin_diameter = \"40 kg\"\n"
+                "half_thickness = \"8 mm\"\n[sprocket]\nteeth = 8\n[analyses.hinge]\n"
+                "[analyses.hinge_sweep]\ncount = 1\n",
+                {"chain.pin_diameter = '40 kg'", "wrong dimension",
+                 "analyses.hinge.plate_radius = (missing)", "analyses.hinge_sweep.count"}},
+        BadCase{"duplicate_shared",
+                "[chain]\ntype = \"round-link\"\nteeth = 8\n[sprocket]\nteeth = 9\n"
+                "[analyses.pocketwheel]\n",
+                {"sprocket.teeth", "also given as chain.teeth"}}),
+    [](const ::testing::TestParamInfo<BadCase>& info) { return std::string(info.param.name); });
+
+TEST(CaseCli, SharedValuesFeedEveryAnalysisThatTakesThem) {
+  // chain.pitch reaches the hinge (dt/t) but the sweep, which refuses --pitch, does not get it
+  const std::string path =
+      write_case("shared", std::string(kHinge) +
+                               "pitch = \"125 mm\"\n[analyses.hinge]\nplate_radius = \"20 mm\"\n"
+                               "[analyses.hinge_sweep]\ncount = 5\n");
+  const auto j = run_json("run " + path);
+  EXPECT_TRUE(j["analyses"]["hinge"]["pitch_change"].contains("dt_over_t"));
+  EXPECT_EQ(j["analyses"]["hinge_sweep"]["rows"].size(), 5u);
+  fs::remove(path);
+}
+
+}  // namespace

@@ -1,0 +1,82 @@
+#include "catena/io/report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace catena::io {
+namespace {
+
+Report sample() {
+  Report r;
+  r.title = "Chain </script><script>alert(1)</script> & co";
+  r.case_name = "case.toml";
+  r.case_hash = std::string(64, 'a');
+  r.version = "0.1.0";
+  r.inputs.push_back({"chain.pitch", "125 mm", ""});
+  ReportSection s;
+  s.id = "hinge";
+  s.title = "Hinge";
+  s.source = "000 eq. (6)";
+  s.diagnostics.push_back({"error", "σH > [σH]", "1.2e9 Pa"});
+  s.tables.push_back({"Results", {{"R2", "35.4", "mm"}}});
+  s.grids.push_back({"Designs", {"R1 [mm]", "ok"}, {{"1", "yes"}, {"2", "no"}}, {false, true}});
+  ReportChart c;
+  c.title = "dt </script>";
+  c.traces.push_back({"dt", {0.0, 1.0, 2.0}, {0.0, NAN, 4.0}});
+  s.charts.push_back(c);
+  s.drawings_svg.push_back(
+      "<?xml version=\"1.0\"?><svg><defs><g id=\"glyph0\"/></defs><use xlink:href=\"#glyph0\"/>"
+      "<path clip-path=\"url(#clip1)\"/></svg>");
+  s.drawings_svg.push_back("<svg><g id=\"glyph0\"/></svg>");
+  r.sections.push_back(s);
+  ReportSection failed;
+  failed.id = "contact";
+  failed.title = "Contact";
+  failed.failure = "no data";
+  r.sections.push_back(failed);
+  return r;
+}
+
+TEST(Report, UserTextIsEscapedAndCannotCloseAScript) {
+  const std::string html = to_html(sample(), "/*plotly*/");
+  EXPECT_EQ(html.find("<script>alert"), std::string::npos);
+  EXPECT_NE(html.find("Chain &lt;/script&gt;&lt;script&gt;alert(1)&lt;/script&gt; &amp; co"),
+            std::string::npos);
+  // in the chart data "<" is written \u003c: exactly the three script elements close
+  std::size_t closes = 0;
+  for (std::size_t at = html.find("</script>"); at != std::string::npos;
+       at = html.find("</script>", at + 1))
+    ++closes;
+  EXPECT_EQ(closes, 3u);
+  EXPECT_NE(html.find("dt \\u003c/script\\u003e"), std::string::npos);
+}
+
+TEST(Report, ChartDataGapsAndSectionsAreWritten) {
+  const std::string html = to_html(sample(), "/*plotly*/");
+  EXPECT_NE(html.find("\"y\":[0,null,4]"), std::string::npos);  // NaN becomes a gap
+  EXPECT_NE(html.find("<div class=\"chart\" id=\"catena-chart-0\">"), std::string::npos);
+  EXPECT_NE(html.find("<section id=\"hinge\" class=\"analysis\">"), std::string::npos);
+  EXPECT_NE(html.find("class=\"diagnostic error\""), std::string::npos);
+  EXPECT_NE(html.find("could not run: no data"), std::string::npos);
+  EXPECT_NE(html.find("<tr class=\"best\"><td>2</td>"), std::string::npos);
+  EXPECT_NE(html.find("/*plotly*/"), std::string::npos);
+  EXPECT_NE(html.find("2 error(s)"), std::string::npos);  // the diagnostic and the failure
+}
+
+TEST(Report, InlinedDrawingsGetUniqueIds) {
+  const std::string html = to_html(sample(), "");
+  EXPECT_EQ(html.find("<?xml"), std::string::npos);
+  EXPECT_NE(html.find("id=\"catena-d0-glyph0\""), std::string::npos);
+  EXPECT_NE(html.find("xlink:href=\"#catena-d0-glyph0\""), std::string::npos);
+  EXPECT_NE(html.find("url(#catena-d0-clip1)"), std::string::npos);
+  EXPECT_NE(html.find("id=\"catena-d1-glyph0\""), std::string::npos);
+  EXPECT_EQ(html.find("id=\"glyph0\""), std::string::npos);
+}
+
+TEST(Report, HtmlEscape) {
+  EXPECT_EQ(html_escape("<a href='x'>&\""), "&lt;a href=&#39;x&#39;&gt;&amp;&quot;");
+}
+
+}  // namespace
+}  // namespace catena::io
