@@ -125,7 +125,7 @@ const std::vector<AnalysisSpec>& analysis_specs() {
        "docs/models/pocketwheel.md",
        {"round-link"},
        {},
-       {},
+       {"--svg", "pocketwheel.svg"},
        [](const ordered_json& r, io::ReportSection& s) {
          if (!r.contains("series")) return;
          const ordered_json& series = r["series"];

@@ -7,6 +7,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "catena/io/drawing.hpp"
+#include "catena/pocketwheel/layout.hpp"
 #include "catena/pocketwheel/run_on.hpp"
 #include "catena/pocketwheel/run_on_numeric.hpp"
 #include "cli_support.hpp"
@@ -16,6 +18,8 @@ namespace catena::cli {
 namespace {
 
 using io::QuantityKind;
+using pocketwheel::chain_layout;
+using pocketwheel::ChainLayout;
 using pocketwheel::Guide;
 using pocketwheel::GuideKind;
 using pocketwheel::RunOnResult;
@@ -31,6 +35,7 @@ constexpr const char* kDefaultGuideEnd = "256mm";
 struct Flags {
   std::string pitch, wire, teeth, omega, guide, guide_height, guide_end, span_model = "slider";
   std::string strand_mass, points = "721", format = "table", output, csv, method = "closed";
+  std::string svg, dxf;
   bool example = false;
 };
 
@@ -119,6 +124,41 @@ RunOnResult analyse(const Request& r, const Guide& guide) {
     renamed.throw_if_any();
     throw;
   }
+}
+
+// The wheel at φ = 0: pitch circle, seated joints and links, the free strand, the guide.
+io::Drawing wheel_drawing(const Request& r, const RunOnResult& res) {
+  const ChainLayout layout = chain_layout(r.wheel, res.plan);
+  const double radius = res.plan.geometry.pitch_radius, d = r.wheel.wire;
+  io::Drawing drawing;
+  drawing.title = "Catena pocket wheel at phi = 0";
+  auto circle = [&](const char* layer, double cx, double cy, double rr, double width,
+                    unsigned rgb) {
+    io::Polyline p{layer, {}, true, width, rgb};
+    for (int i = 0; i < 144; ++i) {
+      const double a = 2.0 * std::numbers::pi * i / 144.0;
+      p.points.push_back({cx + rr * std::cos(a), cy + rr * std::sin(a)});
+    }
+    drawing.polylines.push_back(std::move(p));
+  };
+  circle("PITCH_CIRCLE", 0.0, 0.0, radius, 0.18, 0x888888);
+  drawing.polylines.push_back(
+      {"AXIS", {{-0.1 * radius, 0.0}, {0.1 * radius, 0.0}}, false, 0.18, 0x888888});
+  drawing.polylines.push_back(
+      {"AXIS", {{0.0, -0.1 * radius}, {0.0, 0.1 * radius}}, false, 0.18, 0x888888});
+  drawing.polylines.push_back({"SEATED_CHAIN", layout.seated, false, 0.5, 0x1f77b4});
+  drawing.polylines.push_back({"STRAND", layout.strand, false, 0.5, 0xd62728});
+  for (std::size_t i = 0; i < layout.seated.size(); ++i) {
+    circle(i == 0 ? "CRANK_JOINT" : "JOINTS", layout.seated[i].first, layout.seated[i].second,
+           0.5 * d, i == 0 ? 0.5 : 0.25, i == 0 ? 0xd62728 : 0x1f77b4);
+  }
+  if (res.plan.guide.kind != GuideKind::kNone) {
+    // the guide's running surface, half a wire below the chain's centre line
+    const double l = res.plan.guide.end_distance, h = res.plan.guide_height - 0.5 * d;
+    drawing.polylines.push_back(
+        {"GUIDE", {{-l, h}, {-l - 3.0 * r.wheel.pitch, h}}, false, 0.8, 0x2ca02c});
+  }
+  return drawing;
 }
 
 std::string guide_label(const Guide& guide) {
@@ -331,6 +371,10 @@ std::function<int()> add_pocketwheel(CLI::App& app) {
       ->check(CLI::IsMember({"table", "json", "csv"}));
   cmd->add_option("--output", flags->output, "write the output to FILE instead of stdout");
   cmd->add_option("--csv", flags->csv, "also write the series as CSV to FILE");
+  cmd->add_option("--svg", flags->svg,
+                  "drawing of the wheel at phi = 0 (pitch circle, seated joints, strand, guide) as "
+                  "SVG, mm; one --guide");
+  cmd->add_option("--dxf", flags->dxf, "the same drawing as DXF (R12, mm)");
   cmd->add_option("--method", flags->method,
                   "closed (closed forms, default) or numeric (independent geometric solver)")
       ->check(CLI::IsMember({"closed", "numeric"}));
@@ -357,6 +401,15 @@ std::function<int()> add_pocketwheel(CLI::App& app) {
     }
     // Everything is computed before anything is written, and written all or nothing.
     Outputs outputs;
+    if (!flags->svg.empty() || !flags->dxf.empty()) {
+      if (results.size() != 1) {
+        throw InputError({{flags->svg.empty() ? "--dxf" : "--svg", "given",
+                           "one run-on to draw: choose --guide"}});
+      }
+      const io::Drawing drawing = wheel_drawing(request, results.front());
+      if (!flags->svg.empty()) outputs.add("--svg", flags->svg, io::to_svg(drawing));
+      if (!flags->dxf.empty()) outputs.add("--dxf", flags->dxf, io::to_dxf(drawing));
+    }
     if (!flags->csv.empty()) outputs.add("--csv", flags->csv, to_csv(request, results));
     if (!flags->output.empty()) outputs.add("--output", flags->output, text);
     outputs.commit(flags->output.empty() ? text : "");

@@ -159,7 +159,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "[chain]\ntype = \"round-link\"\nteeth = 8\n[sprocket]\nteeth = 9\n"
                 "[analyses.pocketwheel]\n",
                 {"sprocket.teeth", "also given as chain.teeth"}}),
-    [](const ::testing::TestParamInfo<BadCase>& info) { return std::string(info.param.name); });
+    [](const ::testing::TestParamInfo<BadCase>& param) { return std::string(param.param.name); });
 
 TEST(CaseCli, SharedValuesFeedEveryAnalysisThatTakesThem) {
   // chain.pitch reaches the hinge (dt/t) but the sweep, which refuses --pitch, does not get it
