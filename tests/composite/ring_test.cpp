@@ -1,0 +1,198 @@
+// Orthotropic ring (seed 002): exact power-law solver against the paper's sweep, the isotropic
+// Lamé solution, whole-ring equilibrium, truncation convergence and wide random inputs.
+#include "catena/composite/ring.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace {
+
+using namespace catena::composite;
+
+Ring paper_ring(double alpha, double er_over_ephi) {
+  Ring r;
+  r.outer_radius = 10e-3;
+  r.inner_radius = alpha * r.outer_radius;
+  r.thickness = 1e-3;
+  r.E_phi = 40e9;
+  r.E_r = er_over_ephi * r.E_phi;
+  r.G = 4e9;
+  r.nu_phi_r = 0.28;
+  r.gap = 0.02e-3;
+  return r;
+}
+
+std::vector<double> grid(double alpha, int m, int points) {
+  std::vector<double> rho;
+  for (int i = 0; i < points; ++i) rho.push_back(alpha + (1 - alpha) * i / (points - 1.0));
+  rho.back() = 1.0;
+  (void)m;
+  return rho;
+}
+
+[[maybe_unused]] double max_diff(const Harmonic& a, const Harmonic& b) {
+  double d = 0;
+  for (std::size_t i = 0; i < a.sigma_phi.size(); ++i) {
+    d = std::max(d, std::abs(a.sigma_phi[i] - b.sigma_phi[i]));
+    d = std::max(d, std::abs(a.sigma_r[i] - b.sigma_r[i]));
+    d = std::max(d, std::abs(a.tau[i] - b.tau[i]));
+  }
+  return d;
+}
+
+double max_abs(const Harmonic& a) {
+  double d = 0;
+  for (double v : a.sigma_phi) d = std::max(d, std::abs(v));
+  return d;
+}
+
+// Isotropic n = 0 against Lamé: u = a r + b/r, σ_r(1) = 0 ⇒ b = a(1 + ν)/(1 − ν).
+TEST(RingIsotropic, AxisymmetricHarmonicIsLame) {
+  constexpr double kRelTol = 1e-12;  // [-]
+  Ring ring = paper_ring(0.6, 1.0);
+  ring.G = ring.E_phi / (2 * (1 + ring.nu_phi_r));
+  const double nu = ring.nu_phi_r, E = ring.E_phi, al = 0.6;
+  const double u_in = 0.5 * ring.gap / ring.outer_radius * 2.0 / M_PI;
+  // u(α) = a α + b/α = u_in
+  const double a = u_in / (al + (1 + nu) / (1 - nu) / al);
+  const double b = a * (1 + nu) / (1 - nu);
+  const auto rho = grid(al, 0, 21);
+  const Harmonic h = solve_exact(ring, 0, rho);
+  for (std::size_t i = 0; i < rho.size(); ++i) {
+    const double r = rho[i];
+    const double sr = E / (1 - nu * nu) * ((1 + nu) * a - (1 - nu) * b / (r * r));
+    const double sp = E / (1 - nu * nu) * ((1 + nu) * a + (1 - nu) * b / (r * r));
+    EXPECT_NEAR(h.sigma_r[i], sr, kRelTol * std::abs(sp) + 1e-6);
+    EXPECT_NEAR(h.sigma_phi[i], sp, kRelTol * std::abs(sp) * 10);
+  }
+}
+
+// Isotropic n ≥ 2 against the Michell stress function Φ = (A ρ² + B ρ⁴ + C ρ⁻² + D) cos nφ
+// (n = 2): its stresses σ_r = −(2A + 6C/ρ⁴ + 4D/ρ²), σ_φ = 2A + 12Bρ² + 6C/ρ⁴,
+// τ = 2A + 6Bρ² − 6C/ρ⁴ − 2D/ρ². The exact solution must be of this form: fit A..D at four
+// radii, then compare everywhere.
+TEST(RingIsotropic, SecondHarmonicIsMichell) {
+  constexpr double kRelTol = 1e-8;  // [-]
+  Ring ring = paper_ring(0.5, 1.0);
+  ring.G = ring.E_phi / (2 * (1 + ring.nu_phi_r));
+  const auto rho = grid(0.5, 0, 41);
+  const Harmonic h = solve_exact(ring, 2, rho);
+  // σ_φ and τ at two radii give A, B, C, D (4 linear equations)
+  const std::size_t i1 = 0, i2 = 40;
+  auto rowp = [](double r) { return std::vector<double>{2, 12 * r * r, 6 / std::pow(r, 4), 0}; };
+  auto rowt = [](double r) {
+    return std::vector<double>{2, 6 * r * r, -6 / std::pow(r, 4), -2 / (r * r)};
+  };
+  std::vector<std::vector<double>> M = {rowp(rho[i1]), rowt(rho[i1]), rowp(rho[i2]), rowt(rho[i2])};
+  std::vector<double> b = {h.sigma_phi[i1], h.tau[i1], h.sigma_phi[i2], h.tau[i2]};
+  for (std::size_t k = 0; k < 4; ++k) {
+    std::size_t p = k;
+    for (std::size_t i = k + 1; i < 4; ++i)
+      if (std::abs(M[i][k]) > std::abs(M[p][k])) p = i;
+    std::swap(M[k], M[p]);
+    std::swap(b[k], b[p]);
+    for (std::size_t i = k + 1; i < 4; ++i) {
+      const double f = M[i][k] / M[k][k];
+      for (std::size_t j = k; j < 4; ++j) M[i][j] -= f * M[k][j];
+      b[i] -= f * b[k];
+    }
+  }
+  std::vector<double> x(4);
+  for (std::size_t k = 4; k-- > 0;) {
+    double s = b[k];
+    for (std::size_t j = k + 1; j < 4; ++j) s -= M[k][j] * x[j];
+    x[k] = s / M[k][k];
+  }
+  double scale = max_abs(h);
+  for (std::size_t i = 0; i < rho.size(); ++i) {
+    const double r = rho[i];
+    const double sr = -(2 * x[0] + 6 * x[2] / std::pow(r, 4) + 4 * x[3] / (r * r));
+    EXPECT_NEAR(h.sigma_r[i], sr, kRelTol * scale) << r;
+    EXPECT_NEAR(h.sigma_phi[i], rowp(r)[0] * x[0] + rowp(r)[1] * x[1] + rowp(r)[2] * x[2],
+                kRelTol * scale);
+  }
+  // traction-free outer boundary, τ = 0 at the inner one
+  EXPECT_NEAR(h.sigma_r.back(), 0.0, kRelTol * scale);
+  EXPECT_NEAR(h.tau.front(), 0.0, kRelTol * scale);
+}
+
+// Equilibrium of the whole ring: P from σ_φ on the sections equals P from the contact pressure.
+TEST(RingEquilibrium, SectionLoadEqualsContactLoad) {
+  constexpr double kRelTol = 1e-9;  // [-]
+  for (double al : {0.3, 0.472, 0.95})
+    for (double er : {0.1, 0.25, 1.0, 3.0}) {
+      const Ring ring = paper_ring(al, er);
+      Options o;
+      o.harmonics = 200;
+      const Result r = analyse(ring, o);
+      EXPECT_GT(r.load, 0.0);
+      EXPECT_NEAR(r.load, r.load_contact, kRelTol * r.load) << al << " " << er;
+    }
+}
+
+// The default N converges σ_φ to 0.1 % (φ = 0 everywhere, φ = π/2 outside the corner zone).
+TEST(RingConvergence, DefaultHarmonicsConvergeSigmaPhi) {
+  constexpr double kConvTol = 1e-3;  // [-] the issue's 0.1 %
+  for (double al : {0.472, 0.95})
+    for (double er : {0.25, 1.0}) {
+      const Ring ring = paper_ring(al, er);
+      const Result base = analyse(ring);
+      Options o;
+      o.harmonics = 4 * base.summary.harmonics;
+      const Result ref = analyse(ring, o);
+      const double cutoff = ring.inner_radius + 0.05 * (ring.outer_radius - ring.inner_radius);
+      double big = 0;
+      for (double v : ref.sigma_phi_0) big = std::max(big, std::abs(v));
+      for (std::size_t i = 0; i < ref.r.size(); ++i) {
+        EXPECT_NEAR(base.sigma_phi_0[i], ref.sigma_phi_0[i], kConvTol * std::abs(ref.sigma_phi_0[i]) + 1e-9 * big)
+            << al << " " << er << " r=" << ref.r[i];
+        if (ref.r[i] >= cutoff - 1e-15) {
+          EXPECT_NEAR(base.sigma_phi_90[i], ref.sigma_phi_90[i],
+                      kConvTol * std::abs(ref.sigma_phi_90[i]))
+              << al << " " << er << " r=" << ref.r[i];
+        }
+      }
+    }
+}
+
+// Wide random inputs: finite results, equilibrium, linear in the gap.
+TEST(RingProperty, RandomRingsAreFiniteAndInEquilibrium) {
+  constexpr double kRelTol = 1e-8;  // [-]
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int k = 0; k < 60; ++k) {
+    Ring ring;
+    ring.outer_radius = 5e-3 + 20e-3 * u(rng);
+    ring.inner_radius = (0.1 + 0.85 * u(rng)) * ring.outer_radius;
+    ring.thickness = 1e-3 + 5e-3 * u(rng);
+    ring.E_phi = 1e9 * std::pow(10.0, 2 * u(rng));
+    ring.E_r = ring.E_phi * std::pow(10.0, -1.5 + 2 * u(rng));
+    ring.G = ring.E_phi * std::pow(10.0, -2 + 1.5 * u(rng));
+    ring.nu_phi_r = 0.45 * u(rng) * std::min(1.0, std::sqrt(ring.E_phi / ring.E_r));
+    ring.gap = 1e-3 * ring.inner_radius * (0.1 + u(rng));
+    Options o;
+    o.harmonics = 100;
+    const Result r = analyse(ring, o);
+    ASSERT_TRUE(std::isfinite(r.load));
+    EXPECT_NEAR(r.load, r.load_contact, kRelTol * std::abs(r.load)) << k;
+    for (double v : r.sigma_phi_90) ASSERT_TRUE(std::isfinite(v));
+    for (double v : r.contact_pressure) ASSERT_TRUE(std::isfinite(v));
+    Ring twice = ring;
+    twice.gap *= 2;
+    EXPECT_NEAR(analyse(twice, o).load, 2 * r.load, kRelTol * std::abs(r.load));
+  }
+}
+
+TEST(RingValidate, ListsEveryProblem) {
+  Ring bad;
+  bad.inner_radius = -1;
+  bad.nu_phi_r = -0.1;
+  const auto issues = validate(bad);
+  EXPECT_GE(issues.size(), 7u);
+  EXPECT_THROW(analyse(bad), catena::InputError);
+}
+
+}  // namespace
