@@ -13,8 +13,8 @@ using namespace catena::warp;
 
 constexpr double kForceTol = 1e-6;       // [N] on forces of order 10 kN (solver tol 1e-10·F)
 constexpr double kRelForceTol = 1e-7;    // [-] relative, solver vs FE / closed form
-constexpr double kRigidEi = 1e12;        // [-] factor on E that makes the roller rigid
-constexpr double kRigidTol = 1e-6;       // [-] relative, rigid-roller limit vs closed form
+constexpr double kRigidEi = 1e5;  // [-] factor on E: bending compliance ~3e-6 of the joints'
+constexpr double kRigidTol = 1e-4;  // [-] relative, rigid-roller limit vs closed form
 
 Warp example() {
   Warp w;
@@ -72,8 +72,13 @@ TEST(Warp, AgreesWithFiniteElementModel) {
     const WarpResult r = solve(w, load);
     ASSERT_TRUE(r.summary.converged) << r.summary.termination;
     const auto fe = solve_fe(w, load, 10);
-    for (std::size_t i = 0; i < 4; ++i)
+    const WarpResult flex = solve_flexibility(w, load);
+    ASSERT_TRUE(flex.summary.converged) << flex.summary.termination;
+    for (std::size_t i = 0; i < 4; ++i) {
       EXPECT_NEAR(r.force[i], fe[i], 35e3 * kRelForceTol) << "n = " << n << " joint " << i;
+      EXPECT_NEAR(r.force[i], flex.force[i], 35e3 * kRelForceTol) << "n = " << n << " joint " << i;
+      EXPECT_NEAR(r.deflection[i], flex.deflection[i], 1e-12) << "n = " << n << " joint " << i;
+    }
   }
 }
 
@@ -121,6 +126,7 @@ TEST(Warp, SlidingAndRollingStresses) {
 
 TEST(Warp, PropertyRandomInputs) {
   constexpr int kTrials = 300;
+  constexpr double kEquilibriumTol = 1e-6;  // [-] of F (stiff random rollers: round-off)
   std::mt19937 rng(20261123);
   std::uniform_real_distribution<double> u(0, 1);
   int failures = 0;
@@ -148,17 +154,15 @@ TEST(Warp, PropertyRandomInputs) {
       EXPECT_TRUE(flagged) << trial;
       continue;
     }
-    EXPECT_LE(r.force_residual, 1e-8 * load.force) << trial;
-    EXPECT_LE(r.moment_residual, 1e-8 * load.force * w.supports[3].height) << trial;
+    EXPECT_LE(r.force_residual, kEquilibriumTol * load.force) << trial;
+    EXPECT_LE(r.moment_residual, kEquilibriumTol * load.force * w.supports[3].height) << trial;
     for (double f : r.force) {
       EXPECT_TRUE(std::isfinite(f));
       EXPECT_GE(f, 0.0);
     }
     EXPECT_TRUE(std::isfinite(r.tilt) && std::isfinite(r.bending_stress));
   }
-  // Known limitation (docs/models/warp.md): the Newton iteration in the joint forces can chatter
-  // between active sets for very flexible rollers (d ≈ 5 mm over a 0.1 m span); it then says so.
-  EXPECT_LE(failures, kTrials / 50) << failures << " of " << kTrials << " did not converge";
+  EXPECT_EQ(failures, 0) << failures << " of " << kTrials << " did not converge";
 }
 
 TEST(Warp, ValidateListsEveryProblem) {

@@ -83,9 +83,15 @@ struct SolveOptions {
   double tolerance = 1e-10;  ///< [-] relative to F
 };
 
-/// Solves the beam on four unilateral joints (Macaulay flexibility form, damped Newton).
-/// Throws InputError on invalid input.
+/// Solves the beam on four unilateral joints: displacement method (Hermite beam elements between
+/// the joints and the load point, exact for point loads), Newton descent on the convex total
+/// potential energy. Throws InputError on invalid input.
 WarpResult solve(const Warp& w, const Load& load, const SolveOptions& options = {});
+
+/// Independent check: a force method — Macaulay's closed-form deflection of the free roller,
+/// unknowns (a, b, R_i), damped Newton with load continuation. Less robust (the active set can
+/// chatter for a flexible roller): it reports converged = false then.
+WarpResult solve_flexibility(const Warp& w, const Load& load, const SolveOptions& options = {});
 
 /// Independent check: the same problem by a Hermite-cubic finite-element model of the roller
 /// with `elements` elements between consecutive feature points, penalty-free, unilateral springs

@@ -181,8 +181,77 @@ std::array<double, 4> rigid_linear(const Warp& w, const Load& load) {
   return r;
 }
 
-WarpResult solve(const Warp& w, const Load& load, const SolveOptions& options) {
-  throw_if_any(validate(w, load));
+namespace {
+// Joint forces, deflections, moments, stresses and diagnostics of a solved state.
+WarpResult build_result(const Warp& w, const Load& load, const State& s,
+                        const SolverSummary& summary, const SolveOptions& options) {
+  const double f = load.force;
+  const double n = w.exponent;
+  WarpResult out;
+  out.summary = summary;
+  // Results.
+  out.offset = s.a;
+  out.rotation = s.b;
+  double sum = 0, mom = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Support& sp = w.supports[i];
+    out.deflection[i] = deflection(w, load, s, sp.height);
+    out.deformation[i] = std::max(0.0, out.deflection[i] - sp.clearance);
+    // The joint law evaluated at the converged deflection (never a tension); the residuals
+    // below then measure how well these forces balance F.
+    out.force[i] = law(sp.stiffness, n, out.deflection[i] - sp.clearance);
+    sum += out.force[i];
+    mom += out.force[i] * sp.height;
+  }
+  for (std::size_t i = 0; i < 4; ++i) {
+    out.moment[i] = moment_at(w, load, out.force, w.supports[i].height);
+    out.contact_stress[i] = contact_stress(w, static_cast<int>(i), std::max(0.0, out.force[i]));
+  }
+  // |M| is piecewise linear: its maximum is at a load point.
+  out.moment_max = std::abs(moment_at(w, load, out.force, load.height));
+  for (double m : out.moment) out.moment_max = std::max(out.moment_max, std::abs(m));
+  out.bending_stress = out.moment_max * 0.5 * w.roller_diameter / second_moment(w.roller_diameter);
+  out.tilt = std::atan((out.deflection[3] - out.deflection[0]) /
+                       (w.supports[3].height - w.supports[0].height));
+  const double lower = out.force[kF11] + out.force[kF21];
+  out.upper_share = lower > 0 ? (out.force[kF12] + out.force[kF22]) / lower - 1.0 : INFINITY;
+  out.force_residual = std::abs(f - sum);
+  out.moment_residual = std::abs(f * load.height - mom);
+  // Diagnostics.
+  if (!out.summary.converged)
+    out.diagnostics.push_back({Diagnostic::Severity::kInfeasible, "warp.not_converged",
+                               "the joint-force solver did not converge (" +
+                                   out.summary.termination + "); results are not valid",
+                               out.summary.residual, options.tolerance * f});
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (out.force[i] <= 0.0)
+      out.diagnostics.push_back(
+          {Diagnostic::Severity::kInfo, std::string("warp.joint_open.") + kJointName[i],
+           std::string("joint ") + kJointName[i] +
+               " carries no load: its clearance is not closed (approach ≤ clearance)",
+           out.deflection[i], w.supports[i].clearance});
+    if (w.kind == HingeKind::kRolling && out.force[i] > 0) {
+      const Elastic e{w.modulus, w.poisson};
+      const double b = line_contact(out.force[i] / w.supports[i].width,
+                                    conformal_radius(w.r1, w.r2), contact_modulus(e, e))
+                           .half_width;
+      constexpr double kHertzWidthLimit = 0.1;  // [-] b/R1 beyond which conformal Hertz is rough
+      if (b > kHertzWidthLimit * w.r1)
+        out.diagnostics.push_back(
+            {Diagnostic::Severity::kWarning, std::string("warp.hertz_conformal.") + kJointName[i],
+             std::string("joint ") + kJointName[i] +
+                 ": Hertz half-width exceeds 0.1·R1, the conformal contact is outside Hertz' "
+                 "small-contact assumption (Persson's conformal theory would apply)",
+             b, kHertzWidthLimit * w.r1});
+    }
+  }
+  return out;
+}
+}  // namespace
+
+namespace {
+WarpResult flexibility_impl(const Warp& w, const Load& load, const SolveOptions& options,
+                            const State* initial) {
   const double f = load.force;
   const double n = w.exponent;
   const double ei = w.modulus * second_moment(w.roller_diameter);
@@ -247,7 +316,7 @@ WarpResult solve(const Warp& w, const Load& load, const SolveOptions& options) {
     return st;
   };
   int it = 0;
-  State s = start(f);
+  State s = initial ? *initial : start(f);
   double rn = newton(s, load, it, options.max_iterations);
   // Fallback when the active set chatters (a flexible roller, joints far apart): load
   // continuation, each increment started from the previous converged state.
@@ -269,67 +338,29 @@ WarpResult solve(const Warp& w, const Load& load, const SolveOptions& options) {
                                 : "iteration limit (after load continuation)";
   out.summary.iterations = it;
   out.summary.residual = rn * f;
-  // Results.
-  out.offset = s.a;
-  out.rotation = s.b;
-  double sum = 0, mom = 0;
-  for (std::size_t i = 0; i < 4; ++i) {
-    const Support& sp = w.supports[i];
-    out.deflection[i] = deflection(w, load, s, sp.height);
-    out.deformation[i] = std::max(0.0, out.deflection[i] - sp.clearance);
-    // The joint law evaluated at the converged deflection (never a tension); the residuals
-    // below then measure how well these forces balance F.
-    out.force[i] = law(sp.stiffness, n, out.deflection[i] - sp.clearance);
-    sum += out.force[i];
-    mom += out.force[i] * sp.height;
-  }
-  for (std::size_t i = 0; i < 4; ++i) {
-    out.moment[i] = moment_at(w, load, out.force, w.supports[i].height);
-    out.contact_stress[i] = contact_stress(w, static_cast<int>(i), std::max(0.0, out.force[i]));
-  }
-  // |M| is piecewise linear: its maximum is at a load point.
-  out.moment_max = std::abs(moment_at(w, load, out.force, load.height));
-  for (double m : out.moment) out.moment_max = std::max(out.moment_max, std::abs(m));
-  out.bending_stress = out.moment_max * 0.5 * w.roller_diameter / second_moment(w.roller_diameter);
-  out.tilt = std::atan((out.deflection[3] - out.deflection[0]) /
-                       (w.supports[3].height - w.supports[0].height));
-  const double lower = out.force[kF11] + out.force[kF21];
-  out.upper_share = lower > 0 ? (out.force[kF12] + out.force[kF22]) / lower - 1.0 : INFINITY;
-  out.force_residual = std::abs(f - sum);
-  out.moment_residual = std::abs(f * load.height - mom);
-  // Diagnostics.
-  if (!out.summary.converged)
-    out.diagnostics.push_back({Diagnostic::Severity::kInfeasible, "warp.not_converged",
-                               "the joint-force solver did not converge (" +
-                                   out.summary.termination + "); results are not valid",
-                               out.summary.residual, options.tolerance * f});
-  for (std::size_t i = 0; i < 4; ++i) {
-    if (out.force[i] <= 0.0)
-      out.diagnostics.push_back(
-          {Diagnostic::Severity::kInfo, std::string("warp.joint_open.") + kJointName[i],
-           std::string("joint ") + kJointName[i] +
-               " carries no load: its clearance is not closed (approach ≤ clearance)",
-           out.deflection[i], w.supports[i].clearance});
-    if (w.kind == HingeKind::kRolling && out.force[i] > 0) {
-      const Elastic e{w.modulus, w.poisson};
-      const double b = line_contact(out.force[i] / w.supports[i].width,
-                                    conformal_radius(w.r1, w.r2), contact_modulus(e, e))
-                           .half_width;
-      constexpr double kHertzWidthLimit = 0.1;  // [-] b/R1 beyond which conformal Hertz is rough
-      if (b > kHertzWidthLimit * w.r1)
-        out.diagnostics.push_back(
-            {Diagnostic::Severity::kWarning, std::string("warp.hertz_conformal.") + kJointName[i],
-             std::string("joint ") + kJointName[i] +
-                 ": Hertz half-width exceeds 0.1·R1, the conformal contact is outside Hertz' "
-                 "small-contact assumption (Persson's conformal theory would apply)",
-             b, kHertzWidthLimit * w.r1});
-    }
-  }
-  return out;
+  return build_result(w, load, s, out.summary, options);
+}
+}  // namespace
+
+WarpResult solve_flexibility(const Warp& w, const Load& load, const SolveOptions& options) {
+  throw_if_any(validate(w, load));
+  return flexibility_impl(w, load, options, nullptr);
 }
 
-std::array<double, 4> solve_fe(const Warp& w, const Load& load, int elements) {
-  throw_if_any(validate(w, load));
+namespace {
+struct FeSolution {
+  std::vector<double> z, u;   // node heights, (w, θ) per node
+  std::array<int, 4> joint_node{};
+  int iterations = 0;
+  double residual = 0;  // [N] max |nodal force residual|
+  bool converged = false;
+};
+
+// Displacement method: minimises the convex total potential energy
+// Π(u) = ½ uᵀK u − F w(L1) + Σ k_i/(n+1) · max(0, w_i − c_i)^(n+1)
+// by Newton with Armijo backtracking on Π (globally convergent for a convex Π).
+FeSolution fe_solve(const Warp& w, const Load& load, int elements, double tolerance,
+                    int max_iterations) {
   // Nodes: the joints, the load point and `elements` subdivisions of every segment between them.
   std::vector<double> key = {w.supports[0].height, w.supports[1].height, w.supports[2].height,
                              w.supports[3].height, load.height};
@@ -386,6 +417,20 @@ std::array<double, 4> solve_fe(const Warp& w, const Load& load, int elements) {
     }
     return r;
   };
+  auto energy = [&](const std::vector<double>& v) {
+    double e = 0;
+    for (int i = 0; i < dof; ++i)
+      for (int j = 0; j < dof; ++j)
+        e += 0.5 * v[static_cast<std::size_t>(i)] * kb[static_cast<std::size_t>(i * dof + j)] *
+             v[static_cast<std::size_t>(j)];
+    e -= f * v[static_cast<std::size_t>(2 * ln)];
+    for (std::size_t i = 0; i < 4; ++i) {
+      const Support& sp = w.supports[i];
+      const double gap = v[static_cast<std::size_t>(2 * sn[i])] - sp.clearance;
+      e += gap > 0 ? law(sp.stiffness, n, gap) * gap / (n + 1) : 0.0;
+    }
+    return e;
+  };
   auto rnorm = [&](const std::vector<double>& r) {
     double m = 0;
     for (double v : r) m = std::max(m, std::abs(v));
@@ -393,7 +438,21 @@ std::array<double, 4> solve_fe(const Warp& w, const Load& load, int elements) {
   };
   std::vector<double> r = resid(u);
   double rn = rnorm(r);
-  for (int it = 0; it < 200 && rn > 1e-11 * f; ++it) {
+  // Round-off floor of the nodal residual: a stiff roller makes K·u large terms that cancel.
+  constexpr double kRoundoff = 1e-13;  // [-]
+  auto floor_of = [&](const std::vector<double>& v) {
+    double m = 0;
+    for (int i = 0; i < dof; ++i) {
+      double row = 0;
+      for (int j = 0; j < dof; ++j)
+        row += std::abs(kb[static_cast<std::size_t>(i * dof + j)] * v[static_cast<std::size_t>(j)]);
+      m = std::max(m, row);
+    }
+    return kRoundoff * m;
+  };
+  double en = energy(u);
+  FeSolution sol;
+  for (int it = 0; it < max_iterations && rn > tolerance * f + floor_of(u); ++it, ++sol.iterations) {
     std::vector<double> jac = kb;
     for (std::size_t i = 0; i < 4; ++i) {
       const Support& sp = w.supports[i];
@@ -406,23 +465,71 @@ std::array<double, 4> solve_fe(const Warp& w, const Load& load, int elements) {
     if (!solve_dense(jac, du, dof)) break;
     double step = 1.0;
     std::vector<double> trial(u.size());
-    std::vector<double> tr;
-    double tn = rn;
-    for (int k = 0; k < 40; ++k, step *= 0.5) {
+    double slope = 0;  // dΠ/dstep at 0 = r·du < 0 (the modified Hessian is positive definite)
+    for (std::size_t i = 0; i < u.size(); ++i) slope += r[i] * du[i];
+    double te = en;
+    for (int k = 0; k < 60; ++k, step *= 0.5) {
       for (std::size_t i = 0; i < u.size(); ++i) trial[i] = u[i] + step * du[i];
-      tr = resid(trial);
-      tn = rnorm(tr);
-      if (tn < rn * (1 - 1e-4 * step)) break;
+      te = energy(trial);
+      if (te <= en + 1e-4 * step * slope) break;
     }
     u = trial;
-    r = tr;
-    rn = tn;
+    en = te;
+    r = resid(u);
+    rn = rnorm(r);
   }
+  sol.z = z;
+  sol.u = u;
+  sol.joint_node = sn;
+  sol.residual = rn;
+  sol.converged = rn <= tolerance * f + floor_of(u);
+  return sol;
+}
+}  // namespace
+
+std::array<double, 4> solve_fe(const Warp& w, const Load& load, int elements) {
+  throw_if_any(validate(w, load));
+  const FeSolution sol = fe_solve(w, load, elements, 1e-11, 500);
   std::array<double, 4> out{};
   for (std::size_t i = 0; i < 4; ++i)
-    out[i] = law(w.supports[i].stiffness, n,
-                 u[static_cast<std::size_t>(2 * sn[i])] - w.supports[i].clearance);
+    out[i] = law(w.supports[i].stiffness, w.exponent,
+                 sol.u[static_cast<std::size_t>(2 * sol.joint_node[i])] - w.supports[i].clearance);
   return out;
+}
+
+
+WarpResult solve(const Warp& w, const Load& load, const SolveOptions& options) {
+  throw_if_any(validate(w, load));
+  // One element per segment between joints and load point: exact for the Euler–Bernoulli
+  // beam under point loads (cubic between them).
+  const FeSolution sol = fe_solve(w, load, 1, options.tolerance, options.max_iterations);
+  State s;
+  for (std::size_t i = 0; i < 4; ++i)
+    s.r[i] = law(w.supports[i].stiffness, w.exponent,
+                 sol.u[static_cast<std::size_t>(2 * sol.joint_node[i])] - w.supports[i].clearance);
+  // Below every load w = a + b z: b is the slope, a the intercept at the lowest node.
+  s.b = sol.u[1];
+  s.a = sol.u[0] - s.b * sol.z[0];
+  // Polish: the force method started from this state (active set known) restores equilibrium
+  // to round-off of F rather than of K·u; kept only if it converges.
+  SolveOptions polish = options;
+  polish.max_iterations = 20;
+  WarpResult polished = flexibility_impl(w, load, polish, &s);
+  if (polished.summary.converged) {
+    polished.summary.iterations += sol.iterations;
+    polished.summary.termination =
+        "energy-descent Newton (displacement method), polished by the force method: " +
+        polished.summary.termination;
+    return polished;
+  }
+  SolverSummary summary;
+  summary.iterations = sol.iterations;
+  summary.residual = sol.residual;
+  summary.converged = sol.converged;
+  summary.termination = summary.converged
+                            ? "max |nodal force residual| ≤ tolerance·F + round-off floor (energy-descent Newton)"
+                            : "iteration limit";
+  return build_result(w, load, s, summary, options);
 }
 
 }  // namespace catena::warp
