@@ -216,6 +216,7 @@ const std::vector<AnalysisSpec>& analysis_specs() {
 
 struct AnalysisRun {
   const AnalysisSpec* spec;
+  std::string name;  ///< the table's name: the spec's, or "<spec>-<label>" for one of several
   ordered_json result;
   std::vector<std::pair<std::string, std::string>> files;  // captured (flag, content)
 };
@@ -352,13 +353,18 @@ CaseRun run_case(const io::CaseFile& file) {
   }
   struct Planned {
     const AnalysisSpec* spec;
+    std::string name;
     std::vector<std::string> args;
     std::map<std::string, std::string> flag_to_path;
   };
   std::vector<Planned> planned;
   for (const std::string& name : wanted) {
     const auto it = std::find_if(specs.begin(), specs.end(),
-                                 [&](const AnalysisSpec& s) { return s.name == name; });
+                                 [&](const AnalysisSpec& s) {
+                                   // "pocketwheel" or "pocketwheel-<label>": several runs of one
+                                   // analysis, e.g. pocketwheel-free, pocketwheel-chordal
+                                   return s.name == name || name.rfind(s.name + "-", 0) == 0;
+                                 });
     if (it == specs.end()) {
       issues.push_back({"analyses." + name, "(table)",
                         "an analysis Catena has: pocketwheel, hinge, hinge_sweep, contact, "
@@ -376,10 +382,10 @@ CaseRun run_case(const io::CaseFile& file) {
            "an analysis for chain.type = " + chain_type + "; '" + name + "' applies to " + types});
       continue;
     }
-    const auto& keys = keys_of[name];
+    const auto& keys = keys_of[spec.name];
     std::vector<std::string> key_names;
     for (const auto& [k, o] : keys) key_names.push_back(k);
-    Planned p{&spec, {"catena"}, {}};
+    Planned p{&spec, name, {"catena"}, {}};
     for (const std::string& c : spec.command) p.args.push_back(c);
     std::map<std::string, const io::CaseValue*> given;
     const std::string prefix = "analyses." + name + ".";
@@ -437,12 +443,13 @@ CaseRun run_case(const io::CaseFile& file) {
     const auto actions = register_analyses(app);
     std::vector<const char*> argv;
     for (const std::string& a : p.args) argv.push_back(a.c_str());
-    const std::string where = "analyses." + p.spec->name;
+    const std::string where = "analyses." + p.name;
     try {
       app.parse(static_cast<int>(argv.size()), argv.data());
       Capture capture;
       actions.at(p.spec->command.front())();
-      AnalysisRun run{p.spec, ordered_json::parse(capture.stdout_text), std::move(capture.files)};
+      AnalysisRun run{p.spec, p.name, ordered_json::parse(capture.stdout_text),
+                      std::move(capture.files)};
       out.runs.push_back(std::move(run));
     } catch (const CLI::ParseError& e) {
       issues.push_back({where, "(options)", std::string("valid options: ") + e.what()});
@@ -479,7 +486,7 @@ ordered_json result_tree(const CaseRun& run) {
   const io::CaseValue* title = run.file.find("title");
   j["title"] = title ? title->text : run.file.name;
   ordered_json analyses = ordered_json::object();
-  for (const AnalysisRun& r : run.runs) analyses[r.spec->name] = r.result;
+  for (const AnalysisRun& r : run.runs) analyses[r.name] = r.result;
   j["analyses"] = analyses;
   return j;
 }
@@ -542,8 +549,9 @@ io::Report build_report(const CaseRun& run) {
   }
   for (const AnalysisRun& r : run.runs) {
     io::ReportSection s;
-    s.id = r.spec->name;
+    s.id = r.name;
     s.title = r.spec->title;
+    if (r.name != r.spec->name) s.title += " — " + r.name.substr(r.spec->name.size() + 1);
     s.docs = r.spec->docs;
     const ordered_json& j = r.result;
     s.source = j.value("source", std::string("see ") + r.spec->docs);

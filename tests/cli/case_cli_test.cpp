@@ -53,11 +53,14 @@ TEST(CaseCli, EachExampleGivesWhatItsSubcommandGives) {
       "--skew-gauge-dh 0.155mm --skew-gauge-base 12.7mm --format json");
   EXPECT_EQ(contact["analyses"]["contact"], direct_contact);
 
+  // the paper's comparison: one analysis table per run-on ("pocketwheel-<label>")
   const auto wheel = run_json("run " + kExamples + "/003_pocket_wheel.toml");
-  const auto direct_wheel = run_json(
-      "pocketwheel --pitch 64mm --wire 18mm --teeth 8 --omega 5 --guide tangential "
-      "--guide-end 256mm --format json");
-  EXPECT_EQ(wheel["analyses"]["pocketwheel"], direct_wheel);
+  for (const std::string guide : {"free", "chordal", "tangential"}) {
+    const auto direct_wheel =
+        run_json("pocketwheel --pitch 64mm --wire 18mm --teeth 8 --omega 5 --guide " +
+                 std::string(guide == "free" ? "none" : guide) + " --guide-end 256mm --format json");
+    EXPECT_EQ(wheel["analyses"]["pocketwheel-" + guide], direct_wheel) << guide;
+  }
   EXPECT_EQ(wheel["case_sha256"].get<std::string>().size(), 64u);
 }
 
@@ -83,7 +86,7 @@ TEST(CaseCli, ReportIsOneSelfContainedHtmlFile) {
   EXPECT_NE(html.find(digest), std::string::npos);
   const CliRun json = run("report " + kExamples + "/003_pocket_wheel.toml --format json");
   ASSERT_EQ(json.status, 0) << json.err;
-  EXPECT_TRUE(nlohmann::json::parse(json.out)["analyses"].contains("pocketwheel"));
+  EXPECT_TRUE(nlohmann::json::parse(json.out)["analyses"].contains("pocketwheel-chordal"));
   fs::remove_all(dir);
 }
 
