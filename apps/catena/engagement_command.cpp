@@ -24,7 +24,7 @@ struct Flags {
   std::string friction, tooth_friction, journal_diameter, tooth_diameter;
   std::string pin_diameter, half_thickness, plate_radius, roller_radius;
   std::string rolling_coefficient, tooth_arm;
-  std::string points = "91", format = "table", output;
+  std::string points = "91", format = "table", output, wrap_angle = "180deg";
 };
 
 std::string g(double v, int digits = 6) {
@@ -37,6 +37,7 @@ double deg(double rad) { return rad * 180.0 / std::numbers::pi; }
 struct Request {
   bool rolling = false;
   double pitch = 0.0;
+  double wrap_angle = 0.0;
   SlidingInput sliding;
   RollingInput rolling_in;
 };
@@ -76,6 +77,7 @@ Request read(const Flags& f) {
   const double tension = required("--tension", f.tension, QuantityKind::kForce);
   const double flank = in.quantity("--flank-angle", f.flank_angle, QuantityKind::kAngle).value_or(NAN);
   const int points = in.integer("--points", f.points, 2).value_or(2);
+  r.wrap_angle = in.quantity("--wrap-angle", f.wrap_angle, QuantityKind::kAngle).value_or(NAN);
   // flags of the other hinge are refused, not ignored
   auto refuse = [&](std::initializer_list<std::pair<const char*, const std::string*>> list,
                     const char* why) {
@@ -135,6 +137,9 @@ Request read(const Flags& f) {
   }
   in.throw_if_any();
   if (!(r.pitch > 0.0) || !std::isfinite(r.pitch)) in.add({"--pitch", f.pitch, "a pitch > 0"});
+  if (!(r.wrap_angle > 0.0) || !(r.wrap_angle <= 2.0 * std::numbers::pi)) {
+    in.add({"--wrap-angle", f.wrap_angle, "a wrap angle in (0, 360deg]"});
+  }
   in.add_model_issues(r.rolling ? validate(r.rolling_in) : validate(r.sliding));
   in.throw_if_any();
   return r;
@@ -157,6 +162,7 @@ int run_engagement(const Flags& f) {
   const Result res = r.rolling ? solve_rolling(r.rolling_in) : solve_sliding(r.sliding);
   const double tension = r.rolling ? r.rolling_in.tension : r.sliding.tension;
   const std::size_t n = res.series.size();
+  const Wrap w = wrap(res, tension, r.pitch, r.wrap_angle);
   std::string text;
   if (f.format == "json") {
     ordered_json gamma = ordered_json::array(), f2 = ordered_json::array(),
@@ -202,13 +208,19 @@ int run_engagement(const Flags& f) {
     j["series"] = series;
     j["roller_turns"] = ranges;
     j["max_residual"] = res.max_residual;
+    j["wrap"] = {{"pitch_radius", w.pitch_radius},
+                 {"rollers", w.rollers},
+                 {"tension", w.tension},
+                 {"tooth_load", w.tooth_load},
+                 {"torque", w.torque}};
     j["diagnostics"] = diagnostics_json(res.diagnostics);
     j["units"] = {{"pitch", "m"},     {"tension", "N"},  {"gamma_sigma", "rad"}, {"alpha", "rad"},
                   {"epsilon", "rad"}, {"psi", "rad"},    {"beta1", "rad"},       {"gamma", "rad"},
                   {"F2", "N"},        {"FN", "N"},       {"xi", "rad"},
                   {"rolling_resistance", "N"},           {"residual", "1"},
                   {"friction_force", "N"},               {"from", "rad"},        {"to", "rad"},
-                  {"max_residual", "1"},                 {"limit", "SI"}};
+                  {"max_residual", "1"},                 {"limit", "SI"},
+                  {"pitch_radius", "m"},  {"tooth_load", "N"}, {"torque", "N*m"}};
     text = j.dump(2) + "\n";
   } else if (f.format == "csv") {
     std::ostringstream out;
@@ -247,6 +259,9 @@ int run_engagement(const Flags& f) {
     for (const Range& rg : res.roller_turns) out << " [" << g(deg(rg.from)) << ", " << g(deg(rg.to)) << "]";
     if (res.roller_turns.empty()) out << " none";
     out << "\nlargest equilibrium residual: " << g(res.max_residual, 3) << "\n";
+    out << "whole wrap: " << w.rollers << " seated rollers, tension " << g(w.tension.front() / 1e3)
+        << " -> " << g(w.tension.back() / 1e3) << " kN, sprocket torque " << g(w.torque / 1e3)
+        << " kN*m (tooth normals only)\n";
     for (const Diagnostic& d : res.diagnostics)
       out << "\n" << to_string(d.severity) << ": " << d.message << "\n";
     text = out.str();
@@ -285,6 +300,8 @@ std::function<int()> add_engagement(CLI::App& app) {
                   "rolling: c_r, rolling resistance F_k = c_r*F (default 0.001)");
   cmd->add_option("--tooth-arm", f->tooth_arm,
                   "rolling: lambda1, rolling-resistance arm of F_N at the tooth (default 0mm)");
+  cmd->add_option("--wrap-angle", f->wrap_angle,
+                  "whole wrap: angle of the engaged arc (default 180deg)");
   cmd->add_option("--points", f->points, "samples over [0, gammaSigma], both ends (default 91)");
   cmd->add_option("--format", f->format, "table|json|csv (default table)")
       ->check(CLI::IsMember({"table", "json", "csv"}));

@@ -33,6 +33,9 @@ TEST(EngagementCli, SlidingJsonCarriesTheContractFieldsInSi) {
   EXPECT_EQ(j["units"]["F2"], "N");
   EXPECT_EQ(j["units"]["gamma"], "rad");
   EXPECT_TRUE(j["roller_turns"].is_array());
+  EXPECT_EQ(j["wrap"]["rollers"], 2);
+  EXPECT_EQ(j["wrap"]["tension"].size(), 3u);
+  EXPECT_EQ(j["units"]["torque"], "N*m");
 }
 
 TEST(EngagementCli, RollingJsonAndCsv) {
@@ -72,6 +75,9 @@ TEST(EngagementCli, InvalidInputExitsTwoWithEveryProblem) {
   EXPECT_EQ(flank.status, 2);
   EXPECT_NE(flank.err.find("--flank-angle"), std::string::npos) << flank.err;
   EXPECT_NE(flank.err.find("--rolling-coefficient"), std::string::npos) << flank.err;
+  const CliRun wrap = run(kSliding + " --wrap-angle 400deg");
+  EXPECT_EQ(wrap.status, 2);
+  EXPECT_NE(wrap.err.find("--wrap-angle"), std::string::npos);
   const CliRun missing = run("engagement --hinge rolling --pitch 125mm --teeth 8 --tension 1kN");
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.err.find("--pin-diameter"), std::string::npos);

@@ -243,6 +243,24 @@ TEST(EngagementRolling, RandomInputsNoNanAndBounded) {
   EXPECT_GT(solved, 50);
 }
 
+// The whole wrap, frictionless: the sprocket's torque from the tooth loads equals the global
+// balance of the engaged chain, (F_in − F_out)·R·cos(γΣ/2) (spans along the polygon's sides).
+TEST(EngagementWrap, FrictionlessTorqueIsTheTensionDropTimesTheSideDistance) {
+  for (double psi : {0.0, deg(10), deg(21.6)}) {
+    const SlidingInput in = sliding(0.0, psi);
+    const Result r = solve_sliding(in);
+    const double t = 0.125;
+    const Wrap w = wrap(r, in.tension, t, kPi);
+    ASSERT_EQ(w.rollers, 2);
+    ASSERT_EQ(w.tension.size(), 3u);
+    const double global = (w.tension.front() - w.tension.back()) * w.pitch_radius *
+                          std::cos(0.5 * r.angles.gamma_sigma);
+    EXPECT_NEAR(w.torque, global, 1e-9 * in.tension * t);
+    for (std::size_t k = 1; k < w.tension.size(); ++k) EXPECT_LE(w.tension[k], w.tension[k - 1] + 1e-9);
+  }
+  EXPECT_THROW(wrap(solve_sliding(sliding()), 29.4e3, -1.0, 0.0), InputError);
+}
+
 TEST(EngagementErrors, ValidateListsEveryProblem) {
   SlidingInput s;
   s.tension = -1;

@@ -100,6 +100,19 @@ Sample solve_rolling_at(const RollingInput& in, double r2, double gamma);
 /// System (28) over 0 ≤ γ ≤ γΣ. Throws InputError for invalid input.
 Result solve_rolling(const RollingInput& in);
 
+/// Beyond the paper: the whole wrap. Every seated roller passes the ratio F2/F1 and F_N/F1 of a
+/// completed engagement (γ = γΣ) on to the next: the equations are homogeneous in the forces.
+struct Wrap {
+  double pitch_radius = 0.0;         ///< [m] R = t/(2 sin(γΣ/2)), the engaged rollers' polygon
+  int rollers = 0;                   ///< [-] seated rollers K = round(wrap angle / γΣ)
+  std::vector<double> tension;       ///< [N] link tension before roller k (K + 1 values)
+  std::vector<double> tooth_load;    ///< [N] F_N on the tooth under roller k (K values)
+  double torque = 0.0;               ///< [N·m] Σ R·F_N,k·sin ψ: tooth normals through the roller
+                                     ///< centres (the λ1 arm is not counted)
+};
+/// `r` from solve_sliding/solve_rolling with the same F1; throws InputError for invalid input.
+Wrap wrap(const Result& r, double tension, double pitch, double wrap_angle);
+
 /// The contact offset of a plate on the roller, M1 − O2 in the plate frame (hinge model), for a
 /// roller turned by `theta` relative to that plate (θ < 0 mirrored: y negated).
 struct Offset {

@@ -384,4 +384,32 @@ Result solve_rolling(const RollingInput& in) {
   return r;
 }
 
+Wrap wrap(const Result& r, double tension, double pitch, double wrap_angle) {
+  std::vector<Issue> issues;
+  check::finite_positive(issues, "tension", tension, "N");
+  check::finite_positive(issues, "pitch", pitch, "m");
+  if (!(wrap_angle > 0.0) || !(wrap_angle <= 2.0 * kPi)) {
+    issues.push_back({"wrap_angle", num(wrap_angle) + " rad", "0 < wrap angle <= 2 pi"});
+  }
+  if (r.series.empty() || std::isnan(r.series.back().f2)) {
+    issues.push_back({"result", "(empty)", "a solved engagement ending at gamma = gammaSigma"});
+  }
+  throw_if_any(issues);
+  const Angles& a = r.angles;
+  const double q = r.series.back().f2 / tension;  // F2/F1 of a completed engagement
+  const double p = r.series.back().fn / tension;  // F_N/F1
+  Wrap w;
+  w.pitch_radius = pitch / (2.0 * std::sin(0.5 * a.gamma_sigma));
+  w.rollers = std::max(1, static_cast<int>(std::lround(wrap_angle / a.gamma_sigma)));
+  w.tension.push_back(tension);
+  for (int k = 0; k < w.rollers; ++k) {
+    const double fk = w.tension.back();
+    w.tooth_load.push_back(p * fk);
+    w.tension.push_back(q * fk);
+    // the tooth normal at roller k is the radius tilted by ψ: its moment about the sprocket axis
+    w.torque += w.pitch_radius * p * fk * std::sin(a.psi);
+  }
+  return w;
+}
+
 }  // namespace catena::engagement
