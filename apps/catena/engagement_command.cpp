@@ -45,7 +45,8 @@ struct Request {
 Request read(const Flags& f) {
   FlagReader in;
   Request r;
-  auto required = [&](const std::string& flag, const std::string& text, QuantityKind kind) -> double {
+  auto required = [&](const std::string& flag, const std::string& text,
+                      QuantityKind kind) -> double {
     if (text.empty()) {
       in.add({flag, "(missing)", "a value"});
       return NAN;
@@ -75,7 +76,8 @@ Request read(const Flags& f) {
   }
   const int strokes = in.integer("--strokes", f.strokes, 1).value_or(1);
   const double tension = required("--tension", f.tension, QuantityKind::kForce);
-  const double flank = in.quantity("--flank-angle", f.flank_angle, QuantityKind::kAngle).value_or(NAN);
+  const double flank =
+      in.quantity("--flank-angle", f.flank_angle, QuantityKind::kAngle).value_or(NAN);
   const int points = in.integer("--points", f.points, 2).value_or(2);
   r.wrap_angle = in.quantity("--wrap-angle", f.wrap_angle, QuantityKind::kAngle).value_or(NAN);
   // flags of the other hinge are refused, not ignored
@@ -103,9 +105,10 @@ Request read(const Flags& f) {
     ri.tension = tension;
     ri.flank_angle = flank;
     ri.rolling_coefficient = number("--rolling-coefficient", f.rolling_coefficient, 1e-3);
-    ri.tooth_arm = f.tooth_arm.empty()
-                       ? 0.0
-                       : in.quantity("--tooth-arm", f.tooth_arm, QuantityKind::kLength).value_or(NAN);
+    ri.tooth_arm =
+        f.tooth_arm.empty()
+            ? 0.0
+            : in.quantity("--tooth-arm", f.tooth_arm, QuantityKind::kLength).value_or(NAN);
     ri.points = points;
   } else {
     refuse({{"--pin-diameter", &f.pin_diameter},
@@ -166,9 +169,9 @@ int run_engagement(const Flags& f) {
   std::string text;
   if (f.format == "json") {
     ordered_json gamma = ordered_json::array(), f2 = ordered_json::array(),
-                 fn = ordered_json::array(), xi = ordered_json::array(),
-                 rr = ordered_json::array(), resid = ordered_json::array(),
-                 ff = ordered_json::array(), turns = ordered_json::array();
+                 fn = ordered_json::array(), xi = ordered_json::array(), rr = ordered_json::array(),
+                 resid = ordered_json::array(), ff = ordered_json::array(),
+                 turns = ordered_json::array();
     auto num = [](double v) { return std::isfinite(v) ? ordered_json(v) : ordered_json(); };
     for (const Sample& s : res.series) {
       gamma.push_back(s.gamma);
@@ -185,7 +188,7 @@ int run_engagement(const Flags& f) {
         turns.push_back(s.roller_turns);
       }
     }
-    ordered_json series{{"gamma", gamma}, {"F2", f2}, {"FN", fn}, {"xi", xi},
+    ordered_json series{{"gamma", gamma},           {"F2", f2},         {"FN", fn}, {"xi", xi},
                         {"rolling_resistance", rr}, {"residual", resid}};
     if (!r.rolling) {
       series["friction_force"] = ff;
@@ -214,21 +217,23 @@ int run_engagement(const Flags& f) {
                  {"tooth_load", w.tooth_load},
                  {"torque", w.torque}};
     j["diagnostics"] = diagnostics_json(res.diagnostics);
-    j["units"] = {{"pitch", "m"},     {"tension", "N"},  {"gamma_sigma", "rad"}, {"alpha", "rad"},
-                  {"epsilon", "rad"}, {"psi", "rad"},    {"beta1", "rad"},       {"gamma", "rad"},
-                  {"F2", "N"},        {"FN", "N"},       {"xi", "rad"},
-                  {"rolling_resistance", "N"},           {"residual", "1"},
-                  {"friction_force", "N"},               {"from", "rad"},        {"to", "rad"},
-                  {"max_residual", "1"},                 {"limit", "SI"},
-                  {"pitch_radius", "m"},  {"tooth_load", "N"}, {"torque", "N*m"}};
+    j["units"] = {{"pitch", "m"},        {"tension", "N"},        {"gamma_sigma", "rad"},
+                  {"alpha", "rad"},      {"epsilon", "rad"},      {"psi", "rad"},
+                  {"beta1", "rad"},      {"gamma", "rad"},        {"F2", "N"},
+                  {"FN", "N"},           {"xi", "rad"},           {"rolling_resistance", "N"},
+                  {"residual", "1"},     {"friction_force", "N"}, {"from", "rad"},
+                  {"to", "rad"},         {"max_residual", "1"},   {"limit", "SI"},
+                  {"pitch_radius", "m"}, {"tooth_load", "N"},     {"torque", "N*m"}};
     text = j.dump(2) + "\n";
   } else if (f.format == "csv") {
     std::ostringstream out;
     out << "gamma,F2,FN,xi,rolling_resistance,residual\n";
     for (const Sample& s : res.series) {
       out << g(s.gamma, 12) << "," << g(s.f2, 12) << "," << g(s.fn, 12) << ",";
-      if (r.rolling) out << g(s.xi, 12) << "," << g(std::max(s.f1k, s.f2k), 12);
-      else out << ",";
+      if (r.rolling)
+        out << g(s.xi, 12) << "," << g(std::max(s.f1k, s.f2k), 12);
+      else
+        out << ",";
       out << "," << g(s.residual, 6) << "\n";
     }
     text = out.str();
@@ -237,8 +242,8 @@ int run_engagement(const Flags& f) {
     out << "Catena engagement: " << (r.rolling ? "rolling" : "sliding")
         << "-friction hinge entering a sprocket (seed 000 section 1.6)\n";
     out << "F1 = " << g(tension / 1e3) << " kN, gammaSigma = " << g(deg(res.angles.gamma_sigma))
-        << " deg, beta1 = " << g(deg(res.angles.beta1)) << " deg, epsilon = "
-        << g(deg(res.angles.epsilon)) << " deg\n\n";
+        << " deg, beta1 = " << g(deg(res.angles.beta1))
+        << " deg, epsilon = " << g(deg(res.angles.epsilon)) << " deg\n\n";
     out << "  gamma[deg]    F2[kN]    FN[kN]   " << (r.rolling ? " xi[deg]  Fk[N]" : " turns")
         << "   residual\n";
     const std::size_t step = n > 11 ? (n - 1) / 10 : 1;
@@ -246,9 +251,8 @@ int run_engagement(const Flags& f) {
       const Sample& s = res.series[i];
       char line[200];
       if (r.rolling) {
-        std::snprintf(line, sizeof line, "  %10.3f %9.4f %9.4f %8.4f %6.2f %10.2e\n",
-                      deg(s.gamma), s.f2 / 1e3, s.fn / 1e3, deg(s.xi), std::max(s.f1k, s.f2k),
-                      s.residual);
+        std::snprintf(line, sizeof line, "  %10.3f %9.4f %9.4f %8.4f %6.2f %10.2e\n", deg(s.gamma),
+                      s.f2 / 1e3, s.fn / 1e3, deg(s.xi), std::max(s.f1k, s.f2k), s.residual);
       } else {
         std::snprintf(line, sizeof line, "  %10.3f %9.4f %9.4f %6s %10.2e\n", deg(s.gamma),
                       s.f2 / 1e3, s.fn / 1e3, s.roller_turns ? "yes" : "no", s.residual);
@@ -256,7 +260,8 @@ int run_engagement(const Flags& f) {
       out << line;
     }
     out << "\nroller turns over gamma [deg]:";
-    for (const Range& rg : res.roller_turns) out << " [" << g(deg(rg.from)) << ", " << g(deg(rg.to)) << "]";
+    for (const Range& rg : res.roller_turns)
+      out << " [" << g(deg(rg.from)) << ", " << g(deg(rg.to)) << "]";
     if (res.roller_turns.empty()) out << " none";
     out << "\nlargest equilibrium residual: " << g(res.max_residual, 3) << "\n";
     out << "whole wrap: " << w.rollers << " seated rollers, tension " << g(w.tension.front() / 1e3)
@@ -283,14 +288,17 @@ std::function<int()> add_engagement(CLI::App& app) {
   cmd->add_option("--hinge", f->hinge, "sliding|rolling");
   cmd->add_option("--pitch", f->pitch, "chain pitch t (bare: mm)");
   cmd->add_option("--teeth", f->teeth, "z, sprocket teeth");
-  cmd->add_option("--strokes", f->strokes, "m, sprocket strokes (default 1); gammaSigma = 360deg*m/z");
+  cmd->add_option("--strokes", f->strokes,
+                  "m, sprocket strokes (default 1); gammaSigma = 360deg*m/z");
   cmd->add_option("--tension", f->tension, "F1 of the link entering engagement (bare: N)");
-  cmd->add_option("--flank-angle", f->flank_angle,
-                  "psi, tilt of the tooth normal from the radius towards the motion (default 0deg)");
+  cmd->add_option(
+      "--flank-angle", f->flank_angle,
+      "psi, tilt of the tooth normal from the radius towards the motion (default 0deg)");
   cmd->add_option("--friction", f->friction, "sliding: f = f1, roller-plate friction (default 0)");
   cmd->add_option("--tooth-friction", f->tooth_friction,
                   "sliding: roller-tooth friction in (24)/(25) (default = --friction)");
-  cmd->add_option("--journal-diameter", f->journal_diameter, "sliding: d1 of (24)/(25) (default 40mm)");
+  cmd->add_option("--journal-diameter", f->journal_diameter,
+                  "sliding: d1 of (24)/(25) (default 40mm)");
   cmd->add_option("--tooth-diameter", f->tooth_diameter, "sliding: d2 of (24)/(25) (default 40mm)");
   cmd->add_option("--pin-diameter", f->pin_diameter, "rolling: d, roller's cylindrical part");
   cmd->add_option("--half-thickness", f->half_thickness, "rolling: a, centre to working face");

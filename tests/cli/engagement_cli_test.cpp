@@ -84,9 +84,9 @@ TEST(EngagementCli, InvalidInputExitsTwoWithEveryProblem) {
 }
 
 TEST(EngagementCli, LockedSlidingHingeIsADiagnosticNotAnError) {
-  const CliRun r = run(
-      "engagement --hinge sliding --pitch 125mm --teeth 8 --strokes 2 --tension 29.4kN "
-      "--friction 2 --format json");
+  const CliRun r =
+      run("engagement --hinge sliding --pitch 125mm --teeth 8 --strokes 2 --tension 29.4kN "
+          "--friction 2 --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_GE(j["diagnostics"].size(), 1u);

@@ -1,21 +1,22 @@
 // Engagement forces (seed 000 §1.6): residuals, the frictionless polygon from independent statics,
 // limits, monotonicity, and invalid input.
+#include "catena/engagement/engagement.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <random>
 
-#include "catena/engagement/engagement.hpp"
 #include "catena/hinge/kinematics.hpp"
 
 namespace catena::engagement {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kResidualTol = 1e-9;   // [-] equilibrium residual, relative to F1
-constexpr double kRelForceTol = 1e-9;   // [-] forces compared relative to F1
-constexpr double kAngleTol = 1e-9;      // [rad]
+constexpr double kResidualTol = 1e-9;  // [-] equilibrium residual, relative to F1
+constexpr double kRelForceTol = 1e-9;  // [-] forces compared relative to F1
+constexpr double kAngleTol = 1e-9;     // [rad]
 
 constexpr double kR2 = 0.0627597756933;  // [m] eq. (6) for the test hinge (hinge CLI)
 
@@ -26,7 +27,7 @@ hinge::Hinge thesis_hinge() {
   h.pin_diameter = 0.040;
   h.half_thickness = 0.008;
   h.plate_radius = 0.015;  // the thesis' R1 = 34 mm, R2 = 35.4 mm exceed R1max for d = 40 mm
-  h.roller_radius = 0.0;    // eq. (6): R2 = 62.76 mm
+  h.roller_radius = 0.0;   // eq. (6): R2 = 62.76 mm
   h.teeth = 8;
   h.strokes = 2;
   return h;
@@ -137,8 +138,8 @@ TEST(EngagementSliding, RollerTurnsWhereCriterion25Holds) {
   const Result r = solve_sliding(in);
   for (const Sample& s : r.series) {
     const double lhs = in.friction * in.tension * in.journal_diameter / 2;  // eq. (25) left
-    const double rhs = in.friction * s.f2 * in.journal_diameter / 2 +
-                       in.friction * s.fn * in.tooth_diameter / 2;
+    const double rhs =
+        in.friction * s.f2 * in.journal_diameter / 2 + in.friction * s.fn * in.tooth_diameter / 2;
     EXPECT_EQ(s.roller_turns, lhs > rhs);
     bool inside = false;
     for (const Range& g : r.roller_turns) inside = inside || (s.gamma >= g.from && s.gamma <= g.to);
@@ -153,9 +154,9 @@ TEST(EngagementSliding, RollerTurnsWhereCriterion25Holds) {
   in.tooth_diameter = 0.0;  // not valid input; used only to locate F2 = F1 through the margin
   const double from = all.roller_turns[0].from;
   const Angles& a = all.angles;
-  const double f2_at_from =
-      in.tension * (std::sin(epsilon_at(a, from)) - 0.15 * std::cos(epsilon_at(a, from))) /
-      std::sin(a.theta);
+  const double f2_at_from = in.tension *
+                            (std::sin(epsilon_at(a, from)) - 0.15 * std::cos(epsilon_at(a, from))) /
+                            std::sin(a.theta);
   EXPECT_NEAR(f2_at_from, in.tension, 0.01 * in.tension);
 }
 
@@ -223,8 +224,8 @@ TEST(EngagementRolling, RandomInputsNoNanAndBounded) {
     in.hinge.half_thickness = in.hinge.pin_diameter * (0.1 + 0.2 * u(rng));
     in.hinge.teeth = 6 + static_cast<int>(20 * u(rng));
     in.hinge.strokes = 1 + (u(rng) < 0.5 ? 1 : 0);
-    in.hinge.plate_radius = (0.25 * in.hinge.pin_diameter - 0.5 * in.hinge.half_thickness) *
-                            (1.0 + 0.5 * u(rng));
+    in.hinge.plate_radius =
+        (0.25 * in.hinge.pin_diameter - 0.5 * in.hinge.half_thickness) * (1.0 + 0.5 * u(rng));
     in.tension = 1e3 + 1e5 * u(rng);
     const double alpha = angles(in.hinge.teeth, in.hinge.strokes, 0).alpha;
     in.flank_angle = (2.0 * u(rng) - 1.0) * 0.5 * alpha;
@@ -237,7 +238,8 @@ TEST(EngagementRolling, RandomInputsNoNanAndBounded) {
       ASSERT_FALSE(std::isnan(s.xi));
       EXPECT_LE(s.residual, kResidualTol);
       // triangle inequality of the force balance: |F_N| ≤ F1 + F2 + F1k + F2k
-      EXPECT_LE(std::abs(s.fn), in.tension + std::abs(s.f2) + s.f1k + std::abs(s.f2k) + 1e-9 * in.tension);
+      EXPECT_LE(std::abs(s.fn),
+                in.tension + std::abs(s.f2) + s.f1k + std::abs(s.f2k) + 1e-9 * in.tension);
     }
   }
   EXPECT_GT(solved, 50);
@@ -256,7 +258,8 @@ TEST(EngagementWrap, FrictionlessTorqueIsTheTensionDropTimesTheSideDistance) {
     const double global = (w.tension.front() - w.tension.back()) * w.pitch_radius *
                           std::cos(0.5 * r.angles.gamma_sigma);
     EXPECT_NEAR(w.torque, global, 1e-9 * in.tension * t);
-    for (std::size_t k = 1; k < w.tension.size(); ++k) EXPECT_LE(w.tension[k], w.tension[k - 1] + 1e-9);
+    for (std::size_t k = 1; k < w.tension.size(); ++k)
+      EXPECT_LE(w.tension[k], w.tension[k - 1] + 1e-9);
   }
   EXPECT_THROW(wrap(solve_sliding(sliding()), 29.4e3, -1.0, 0.0), InputError);
 }

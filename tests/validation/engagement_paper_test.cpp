@@ -14,20 +14,20 @@ namespace catena::engagement {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kF1 = 29.4e3;          // [N] conclusion 9
-constexpr double kF2End = 12.7e3;       // [N] conclusion 9
-constexpr double kFnEnd = 46e3;         // [N] conclusion 9
-constexpr double kRollingMax = 0.05e3;  // [N] conclusion 9
-constexpr double kThesisRound = 0.05e3; // [N] the thesis prints kN to one decimal
-constexpr double kAngleTol = 1e-9;      // [rad]
+constexpr double kF1 = 29.4e3;           // [N] conclusion 9
+constexpr double kF2End = 12.7e3;        // [N] conclusion 9
+constexpr double kFnEnd = 46e3;          // [N] conclusion 9
+constexpr double kRollingMax = 0.05e3;   // [N] conclusion 9
+constexpr double kThesisRound = 0.05e3;  // [N] the thesis prints kN to one decimal
+constexpr double kAngleTol = 1e-9;       // [rad]
 
 RollingInput thesis(double flank) {
   RollingInput in;
   in.hinge.pin_diameter = 0.040;  // d, a: not in the summary (examples/000_thesis_rolling_hinge)
   in.hinge.half_thickness = 0.008;
   in.hinge.plate_radius = 0.015;  // conclusion 7
-  in.hinge.roller_radius = 0.0;  // eq. (6)
-  in.hinge.teeth = 8;  // two-stroke sprocket (§1.6.2); z = 8 is our choice
+  in.hinge.roller_radius = 0.0;   // eq. (6)
+  in.hinge.teeth = 8;             // two-stroke sprocket (§1.6.2); z = 8 is our choice
   in.hinge.strokes = 2;
   in.tension = kF1;
   in.flank_angle = flank;
@@ -90,10 +90,10 @@ TEST(EngagementPaper, RollingFrictionForcesBelow0_05kNWithTheDefaultLaw) {
   EXPECT_GT(worst, 0.0);
 }
 
-// ξ ≤ 0.5·γΣ holds where F2 ≤ F1 and both plates' levers e(θ) = (M1 − O2)·y still grow with the turn (the
-// rocker is stable): F1 ≥ F2 then forces ξ ≤ γ/2. On the test hinge (d = 40, a = 8, R1 = 15 mm)
-// the lever peaks near θ = 34° and past it the balance jumps to a branch with ξ > γΣ/2 (and the
-// contact leaves the arc, diagnosed): the thesis' claim is reproduced only on the stable part;
+// ξ ≤ 0.5·γΣ holds where F2 ≤ F1 and both plates' levers e(θ) = (M1 − O2)·y still grow with the
+// turn (the rocker is stable): F1 ≥ F2 then forces ξ ≤ γ/2. On the test hinge (d = 40, a = 8, R1 =
+// 15 mm) the lever peaks near θ = 34° and past it the balance jumps to a branch with ξ > γΣ/2 (and
+// the contact leaves the arc, diagnosed): the thesis' claim is reproduced only on the stable part;
 // its hinge's d, a are not in the summary.
 TEST(EngagementPaper, RollerTurnAtMostHalfTheEngagementAngleWhileTheRockerIsStable) {
   const RollingInput in = thesis(flank_for_thesis_f2());
@@ -115,7 +115,8 @@ TEST(EngagementPaper, RollerTurnAtMostHalfTheEngagementAngleWhileTheRockerIsStab
   EXPECT_GT(stable, 5);
   EXPECT_GT(beyond, 0);  // not reproduced past the lever's peak on this hinge
   bool off_arc = false;
-  for (const Diagnostic& d : r.diagnostics) off_arc = off_arc || d.code == "engagement.contact_off_arc";
+  for (const Diagnostic& d : r.diagnostics)
+    off_arc = off_arc || d.code == "engagement.contact_off_arc";
   EXPECT_TRUE(off_arc);
 }
 

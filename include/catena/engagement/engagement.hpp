@@ -32,9 +32,9 @@ struct Angles {
   double gamma_sigma = 0.0;  ///< [rad] 360°·m/z
   double alpha = 0.0;        ///< [rad] 90° − γΣ/2, polygon side to the radius at the vertex
   double psi = 0.0;          ///< [rad] flank angle: tooth normal's tilt from the radius
-  double theta = 0.0;        ///< [rad] φ + α − ψ = 90° + γΣ/2 − ψ, between F2 and the normal
-  double epsilon = 0.0;      ///< [rad] ε at γ = γΣ: α − ψ, between F1 and the line of N
-  double beta1 = 0.0;        ///< [rad] β1 at γ = γΣ: γΣ/2 + ψ, direction of F_N (eq. 28)
+  double theta = 0.0;    ///< [rad] φ + α − ψ = 90° + γΣ/2 − ψ, between F2 and the normal
+  double epsilon = 0.0;  ///< [rad] ε at γ = γΣ: α − ψ, between F1 and the line of N
+  double beta1 = 0.0;    ///< [rad] β1 at γ = γΣ: γΣ/2 + ψ, direction of F_N (eq. 28)
 };
 Angles angles(int teeth, int strokes, double flank_angle);
 /// [rad] ε(γ) = θ − γ, between F1 and the line of N at mutual turn γ.
@@ -68,15 +68,15 @@ struct RollingInput {
 std::vector<Issue> validate(const RollingInput& in);
 
 struct Sample {
-  double gamma = 0.0;               ///< [rad] mutual turn of link 1 relative to link 2
-  double f2 = 0.0;                  ///< [N] F2
-  double fn = 0.0;                  ///< [N] F_N (N of eq. 27)
-  double xi = 0.0;                  ///< [rad] ξ, roller turn relative to link 1 (rolling only)
-  double f1k = 0.0;                 ///< [N] rolling resistance at link 1 (rolling only)
-  double f2k = 0.0;                 ///< [N] rolling resistance at link 2 (rolling only)
-  double friction_force = 0.0;      ///< [N] braking force f1·F1 (sliding only)
-  bool roller_turns = false;        ///< sliding: criterion (25) holds
-  double residual = 0.0;            ///< [-] largest equilibrium residual / F1 (moment / (F1·a))
+  double gamma = 0.0;           ///< [rad] mutual turn of link 1 relative to link 2
+  double f2 = 0.0;              ///< [N] F2
+  double fn = 0.0;              ///< [N] F_N (N of eq. 27)
+  double xi = 0.0;              ///< [rad] ξ, roller turn relative to link 1 (rolling only)
+  double f1k = 0.0;             ///< [N] rolling resistance at link 1 (rolling only)
+  double f2k = 0.0;             ///< [N] rolling resistance at link 2 (rolling only)
+  double friction_force = 0.0;  ///< [N] braking force f1·F1 (sliding only)
+  bool roller_turns = false;    ///< sliding: criterion (25) holds
+  double residual = 0.0;        ///< [-] largest equilibrium residual / F1 (moment / (F1·a))
 };
 
 struct Range {
@@ -103,12 +103,12 @@ Result solve_rolling(const RollingInput& in);
 /// Beyond the paper: the whole wrap. Every seated roller passes the ratio F2/F1 and F_N/F1 of a
 /// completed engagement (γ = γΣ) on to the next: the equations are homogeneous in the forces.
 struct Wrap {
-  double pitch_radius = 0.0;         ///< [m] R = t/(2 sin(γΣ/2)), the engaged rollers' polygon
-  int rollers = 0;                   ///< [-] seated rollers K = round(wrap angle / γΣ)
-  std::vector<double> tension;       ///< [N] link tension before roller k (K + 1 values)
-  std::vector<double> tooth_load;    ///< [N] F_N on the tooth under roller k (K values)
-  double torque = 0.0;               ///< [N·m] Σ R·F_N,k·sin ψ: tooth normals through the roller
-                                     ///< centres (the λ1 arm is not counted)
+  double pitch_radius = 0.0;       ///< [m] R = t/(2 sin(γΣ/2)), the engaged rollers' polygon
+  int rollers = 0;                 ///< [-] seated rollers K = round(wrap angle / γΣ)
+  std::vector<double> tension;     ///< [N] link tension before roller k (K + 1 values)
+  std::vector<double> tooth_load;  ///< [N] F_N on the tooth under roller k (K values)
+  double torque = 0.0;             ///< [N·m] Σ R·F_N,k·sin ψ: tooth normals through the roller
+                                   ///< centres (the λ1 arm is not counted)
 };
 /// `r` from solve_sliding/solve_rolling with the same F1; throws InputError for invalid input.
 Wrap wrap(const Result& r, double tension, double pitch, double wrap_angle);

@@ -118,7 +118,7 @@ SlidingForces sliding_forces(const SlidingInput& in, const Angles& a, double gam
   const double eps = epsilon_at(a, gamma);
   const double theta = a.theta;  // φ + α − ψ
   SlidingForces s;
-  s.f2 = in.tension * (std::sin(eps) - f1 * std::cos(eps)) / std::sin(theta);  // 000 eq. (26)
+  s.f2 = in.tension * (std::sin(eps) - f1 * std::cos(eps)) / std::sin(theta);        // 000 eq. (26)
   s.n = in.tension * (std::cos(eps) + f1 * std::sin(eps)) - s.f2 * std::cos(theta);  // eq. (27)
   return s;
 }
@@ -272,8 +272,8 @@ double rolling_residual(const RollingInput& in, double beta1, const State& s, do
   const double sy = f2y + ny + k1y + k2y;
   const double sm = s.r1y * f1 + (s.r2x * f2y - s.r2y * f2x) + (s.r1x * k1y - s.r1y * k1x) +
                     (s.r2x * k2y - s.r2y * k2x) + in.tooth_arm * s.fn;
-  return std::max({std::abs(sx) / f1, std::abs(sy) / f1,
-                   std::abs(sm) / (f1 * in.hinge.half_thickness)});
+  return std::max(
+      {std::abs(sx) / f1, std::abs(sy) / f1, std::abs(sm) / (f1 * in.hinge.half_thickness)});
 }
 
 }  // namespace
@@ -326,8 +326,8 @@ Result solve_rolling(const RollingInput& in) {
   Result r;
   r.angles = angles(in.hinge.teeth, in.hinge.strokes, in.flank_angle);
   const double gs = r.angles.gamma_sigma;
-  const double psi_max = hinge::psi1_max(in.hinge.pin_diameter, in.hinge.half_thickness,
-                                         in.hinge.plate_radius);
+  const double psi_max =
+      hinge::psi1_max(in.hinge.pin_diameter, in.hinge.half_thickness, in.hinge.plate_radius);
   bool unsolved = false, lift = false, senses = false;
   double worst_turn = 0.0, worst_psi = 0.0;
   for (int i = 0; i < in.points; ++i) {
@@ -351,7 +351,8 @@ Result solve_rolling(const RollingInput& in) {
   for (std::size_t i = 1; i < r.series.size(); ++i) {
     if (!(r.series[i].xi > r.series[i - 1].xi)) continue;
     Range rg{r.series[i - 1].gamma, r.series[i].gamma};
-    while (i + 1 < r.series.size() && r.series[i + 1].xi > r.series[i].xi) rg.to = r.series[++i].gamma;
+    while (i + 1 < r.series.size() && r.series[i + 1].xi > r.series[i].xi)
+      rg.to = r.series[++i].gamma;
     r.roller_turns.push_back(rg);
   }
   const double design_turn = hinge::gamma_max(in.hinge);
