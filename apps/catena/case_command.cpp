@@ -620,7 +620,8 @@ std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
   return {{"pocketwheel", add_pocketwheel(app)},
           {"hinge", add_hinge(app)},
           {"contact", add_contact(app)},
-          {"fretting", add_fretting(app)}};
+          {"fretting", add_fretting(app)},
+          {"engagement", add_engagement(app)}};
 }
 
 std::function<int()> add_run(CLI::App& app) {
