@@ -46,6 +46,13 @@ struct AnalysisSpec {
   std::set<std::string> not_shared;      ///< keys it must not take from the shared tables
   std::vector<std::string> extra_args;   ///< appended to the flags (e.g. a drawing to capture)
   ChartBuilder charts;
+  /// Per chain type: flags the chain type implies (engagement: --hinge rolling) and shared keys
+  /// that do not apply to it (a rolling hinge takes no sliding friction from [material]).
+  struct ChainVariant {
+    std::vector<std::string> args;
+    std::set<std::string> not_shared;
+  };
+  std::map<std::string, ChainVariant> variants = {};
 };
 
 const std::vector<std::string> kChainTypes = {"rolling-hinge", "sliding-hinge", "roller-iso606",
@@ -207,6 +214,37 @@ const std::vector<AnalysisSpec>& analysis_specs() {
        {},
        {},
        {}},
+      {"engagement",
+       {"engagement"},
+       "Chain–sprocket engagement forces (seed 000 §1.6)",
+       "docs/models/engagement.md",
+       {"rolling-hinge", "sliding-hinge"},
+       {},
+       {},
+       [](const ordered_json& r, io::ReportSection& s) {
+         s.charts.push_back(series_chart(r, r["series"], "Link and tooth forces over the engagement",
+                                         "gamma", {"F2", "FN"}, "force"));
+         if (r.value("hinge", std::string()) == "rolling")
+           s.charts.push_back(series_chart(r, r["series"], "Roller turn ξ over the engagement",
+                                           "gamma", {"xi"}, "ξ"));
+         if (r.contains("wrap") && r["wrap"].is_object()) {
+           const ordered_json& w = r["wrap"];
+           io::ReportChart c;
+           c.title = "Tension before each seated roller around the sprocket";
+           c.x_label = "roller k";
+           c.y_label = "tension [" + unit_of(r, "tension") + "]";
+           std::vector<double> k;
+           for (std::size_t i = 0; i < w["tension"].size(); ++i) k.push_back(double(i));
+           c.traces.push_back({"tension", k, numbers(w["tension"])});
+           s.charts.push_back(c);
+         }
+       },
+       {{"rolling-hinge",
+         {{"--hinge", "rolling"}, {"friction", "tooth_friction", "journal_diameter",
+                                   "tooth_diameter"}}},
+        {"sliding-hinge",
+         {{"--hinge", "sliding"}, {"pin_diameter", "half_thickness", "plate_radius",
+                                   "roller_radius", "rolling_coefficient", "tooth_arm"}}}}},
   };
   return specs;
 }
@@ -243,6 +281,15 @@ std::map<std::string, CLI::Option*> case_keys(CLI::App& app, const AnalysisSpec&
   }
   if (spec.command.size() > 1) {
     for (const std::string& k : spec.not_shared) keys.erase(k);
+  }
+  // flags implied by chain.type (engagement's --hinge) are not the case file's to set
+  for (const auto& [type, variant] : spec.variants) {
+    for (const std::string& a : variant.args) {
+      if (a.rfind("--", 0) != 0) continue;
+      std::string key = a.substr(2);
+      for (char& c : key) c = c == '-' ? '_' : c;
+      keys.erase(key);
+    }
   }
   return keys;
 }
@@ -349,7 +396,7 @@ CaseRun run_case(const io::CaseFile& file) {
   if (wanted.empty() && file.find("analyses") == nullptr) {
     issues.push_back({"analyses", "(missing)",
                       "at least one [analyses.<name>] table; names: pocketwheel, hinge, "
-                      "hinge_sweep, contact, fretting"});
+                      "hinge_sweep, contact, fretting, engagement"});
   }
   struct Planned {
     const AnalysisSpec* spec;
@@ -368,7 +415,7 @@ CaseRun run_case(const io::CaseFile& file) {
     if (it == specs.end()) {
       issues.push_back({"analyses." + name, "(table)",
                         "an analysis Catena has: pocketwheel, hinge, hinge_sweep, contact, "
-                        "fretting" +
+                        "fretting, engagement" +
                             suggest(name, spec_names)});
       continue;
     }
@@ -404,8 +451,13 @@ CaseRun run_case(const io::CaseFile& file) {
         given[key] = &v;
       }
     }
+    const auto variant = spec.variants.find(chain_type);
+    const AnalysisSpec::ChainVariant* chain_variant =
+        variant == spec.variants.end() ? nullptr : &variant->second;
     for (const auto& [key, v] : shared) {
-      if (keys.count(key) && !given.count(key) && !spec.not_shared.count(key)) given[key] = v;
+      if (keys.count(key) && !given.count(key) && !spec.not_shared.count(key) &&
+          !(chain_variant && chain_variant->not_shared.count(key)))
+        given[key] = v;
     }
     for (const auto& [key, v] : given) {
       const CLI::Option* option = keys.at(key);
@@ -430,6 +482,8 @@ CaseRun run_case(const io::CaseFile& file) {
       }
     }
     for (const std::string& a : spec.extra_args) p.args.push_back(a);
+    if (chain_variant)
+      for (const std::string& a : chain_variant->args) p.args.push_back(a);
     p.args.push_back("--format");
     p.args.push_back("json");
     planned.push_back(std::move(p));

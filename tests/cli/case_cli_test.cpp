@@ -46,6 +46,13 @@ TEST(CaseCli, EachExampleGivesWhatItsSubcommandGives) {
     EXPECT_EQ(hinge["analyses"]["hinge"][key], direct_hinge[key]) << key;
   ASSERT_TRUE(hinge["analyses"].contains("hinge_sweep"));
   EXPECT_EQ(hinge["analyses"]["hinge_sweep"]["rows"].size(), 24u);
+  // engagement: chain.type = rolling-hinge implies --hinge rolling; the shared sliding friction
+  // of [material] is not passed to a rolling hinge
+  const auto direct_engagement = run_json(
+      "engagement --hinge rolling --pitch 125mm --pin-diameter 40mm --half-thickness 8mm "
+      "--teeth 8 --strokes 2 --tension 29.4kN --plate-radius 15mm --flank-angle 21.65deg "
+      "--format json");
+  EXPECT_EQ(hinge["analyses"]["engagement"], direct_engagement);
 
   const auto contact = run_json("run " + kExamples + "/001_roller_chain_skew.toml");
   const auto direct_contact = run_json(
@@ -158,6 +165,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "[analyses.hinge_sweep]\ncount = 1\n",
                 {"chain.pin_diameter = '40 kg'", "wrong dimension",
                  "analyses.hinge.plate_radius = (missing)", "analyses.hinge_sweep.count"}},
+        // chain.type decides the engagement's hinge: the case file cannot contradict it
+        BadCase{"implied_flag",
+                "[chain]\ntype = \"sliding-hinge\"\n[analyses.engagement]\nhinge = \"rolling\"\n",
+                {"analyses.engagement.hinge", "an option of 'engagement'"}},
         BadCase{"duplicate_shared",
                 "[chain]\ntype = \"round-link\"\nteeth = 8\n[sprocket]\nteeth = 9\n"
                 "[analyses.pocketwheel]\n",
@@ -173,6 +184,22 @@ TEST(CaseCli, SharedValuesFeedEveryAnalysisThatTakesThem) {
   const auto j = run_json("run " + path);
   EXPECT_TRUE(j["analyses"]["hinge"]["pitch_change"].contains("dt_over_t"));
   EXPECT_EQ(j["analyses"]["hinge_sweep"]["rows"].size(), 5u);
+  fs::remove(path);
+}
+
+TEST(CaseCli, ChainTypeChoosesTheEngagementHingeAndItsSharedValues) {
+  // a sliding-hinge case: [material] friction reaches the sliding engagement; the same values in
+  // a rolling-hinge case would not (a rolling hinge refuses --friction on the command line)
+  const std::string path = write_case(
+      "sliding", "[chain]\ntype = \"sliding-hinge\"\npitch = \"125 mm\"\n[sprocket]\nteeth = 8\n"
+                 "strokes = 2\n[loads]\ntension = \"29.4 kN\"\n[material]\nfriction = 0.15\n"
+                 "[analyses.engagement]\n");
+  const auto j = run_json("run " + path);
+  const auto direct = run_json(
+      "engagement --hinge sliding --pitch 125mm --teeth 8 --strokes 2 --tension 29.4kN "
+      "--friction 0.15 --format json");
+  EXPECT_EQ(j["analyses"]["engagement"], direct);
+  EXPECT_EQ(j["analyses"]["engagement"]["hinge"], "sliding");
   fs::remove(path);
 }
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -247,6 +248,26 @@ TEST(EngagementRolling, RandomInputsNoNanAndBounded) {
 
 // The whole wrap, frictionless: the sprocket's torque from the tooth loads equals the global
 // balance of the engaged chain, (F_in − F_out)·R·cos(γΣ/2) (spans along the polygon's sides).
+// A tooth reaction that turns negative is reported with the least value reached (the rolling
+// resistances make F_N slightly negative at γ = 0 with a radial tooth).
+TEST(EngagementRolling, ToothLiftOffReportsTheLeastReaction) {
+  const Result r = solve_rolling(rolling(0.0, 1e-3));
+  double least = 0.0;
+  for (const Sample& s : r.series) least = std::min(least, s.fn);
+  ASSERT_LT(least, 0.0);
+  bool found = false;
+  for (const Diagnostic& d : r.diagnostics) {
+    if (d.code != "engagement.tooth_lift_off") continue;
+    found = true;
+    EXPECT_EQ(d.value, least);
+    EXPECT_EQ(d.limit, 0.0);
+  }
+  EXPECT_TRUE(found);
+  // without rolling resistance the radial tooth carries nothing at γ = 0 and never pulls
+  for (const Diagnostic& d : solve_rolling(rolling(0.0, 0.0)).diagnostics)
+    EXPECT_NE(d.code, "engagement.tooth_lift_off");
+}
+
 TEST(EngagementWrap, FrictionlessTorqueIsTheTensionDropTimesTheSideDistance) {
   for (double psi : {0.0, deg(10), deg(21.6)}) {
     const SlidingInput in = sliding(0.0, psi);

@@ -140,6 +140,7 @@ Result solve_sliding(const SlidingInput& in) {
   const Angles& a = r.angles;
   const double f1 = in.tension;
   bool slack = false, lift = false;
+  double min_fn = 0.0;  // [N] the most negative tooth reaction, for the lift-off diagnostic
   for (int i = 0; i < in.points; ++i) {
     Sample s;
     s.gamma = sample_gamma(a.gamma_sigma, i, in.points);
@@ -155,6 +156,7 @@ Result solve_sliding(const SlidingInput& in) {
     s.residual = std::max(std::abs(rx), std::abs(ry)) / f1;
     slack = slack || s.f2 <= 0.0;
     lift = lift || s.fn < 0.0;
+    min_fn = std::min(min_fn, s.fn);
     r.max_residual = std::max(r.max_residual, s.residual);
     r.series.push_back(s);
   }
@@ -187,7 +189,9 @@ Result solve_sliding(const SlidingInput& in) {
   }
   if (lift) {
     r.diagnostics.push_back({Diagnostic::Severity::kInfeasible, "engagement.tooth_lift_off",
-                             "N < 0 somewhere: the roller would leave the tooth", 0.0, 0.0});
+                             "N < 0 somewhere: the roller would leave the tooth (value: the least N; "
+                             "limit: 0)",
+                             min_fn, 0.0});
   }
   return r;
 }
@@ -329,6 +333,7 @@ Result solve_rolling(const RollingInput& in) {
   const double psi_max =
       hinge::psi1_max(in.hinge.pin_diameter, in.hinge.half_thickness, in.hinge.plate_radius);
   bool unsolved = false, lift = false, senses = false;
+  double min_fn = 0.0;  // [N] the most negative tooth reaction, for the lift-off diagnostic
   double worst_turn = 0.0, worst_psi = 0.0;
   for (int i = 0; i < in.points; ++i) {
     Sample s = solve_rolling_at(in, r2, sample_gamma(gs, i, in.points));
@@ -336,6 +341,7 @@ Result solve_rolling(const RollingInput& in) {
       unsolved = true;
     } else {
       lift = lift || s.fn < 0.0;
+      min_fn = std::min(min_fn, s.fn);
       r.max_residual = std::max(r.max_residual, s.residual);
       worst_turn = std::max({worst_turn, std::abs(s.xi), std::abs(s.gamma - s.xi)});
       for (double th : {s.xi, s.gamma - s.xi}) {
@@ -362,7 +368,9 @@ Result solve_rolling(const RollingInput& in) {
   }
   if (lift) {
     r.diagnostics.push_back({Diagnostic::Severity::kInfeasible, "engagement.tooth_lift_off",
-                             "F_N < 0 somewhere: the roller would leave the tooth", 0.0, 0.0});
+                             "F_N < 0 somewhere: the roller would leave the tooth (value: the least "
+                             "F_N; limit: 0)",
+                             min_fn, 0.0});
   }
   if (senses) {
     r.diagnostics.push_back({Diagnostic::Severity::kWarning, "engagement.rolling_sense",
