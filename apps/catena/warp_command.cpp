@@ -90,16 +90,16 @@ int run_warp(const WarpFlags& f) {
   w.exponent = number(in, "--exponent", f.exponent, "n in [1, 3]").value_or(NAN);
   w.roller_diameter =
       f.diameter.empty()
-          ? (in.add({"--roller-diameter", "(missing)", "d of the roller"}), NAN)
-          : in.quantity("--roller-diameter", f.diameter, QuantityKind::kLength).value_or(NAN);
+          ? (in.add({"--pin-diameter", "(missing)", "d of the roller"}), NAN)
+          : in.quantity("--pin-diameter", f.diameter, QuantityKind::kLength).value_or(NAN);
   w.modulus = in.quantity("--modulus", f.modulus, QuantityKind::kStress).value_or(NAN);
   w.poisson = number(in, "--poisson", f.poisson, "0 ≤ ν < 0.5").value_or(NAN);
   w.kind = f.hinge == "rolling" ? HingeKind::kRolling : HingeKind::kSliding;
   if (w.kind == HingeKind::kRolling) {
-    w.r1 = f.r1.empty() ? (in.add({"--r1", "(missing)", "R1 for a rolling hinge"}), NAN)
-                        : in.quantity("--r1", f.r1, QuantityKind::kLength).value_or(NAN);
-    w.r2 = f.r2.empty() ? (in.add({"--r2", "(missing)", "R2 for a rolling hinge"}), NAN)
-                        : in.quantity("--r2", f.r2, QuantityKind::kLength).value_or(NAN);
+    w.r1 = f.r1.empty() ? (in.add({"--plate-radius", "(missing)", "R1 for a rolling hinge"}), NAN)
+                        : in.quantity("--plate-radius", f.r1, QuantityKind::kLength).value_or(NAN);
+    w.r2 = f.r2.empty() ? (in.add({"--roller-radius", "(missing)", "R2 for a rolling hinge"}), NAN)
+                        : in.quantity("--roller-radius", f.r2, QuantityKind::kLength).value_or(NAN);
   }
   const auto forces = list(in, "--force", f.force, QuantityKind::kForce, 0,
                            "F, one value or a comma-separated sweep");
@@ -120,6 +120,12 @@ int run_warp(const WarpFlags& f) {
         for (const auto& e : issues) seen |= e.field == is.field && e.value == is.value;
         if (!seen) issues.push_back(is);
       }
+  // the model's field names → the flags' primary names (shared with catena hinge)
+  for (Issue& is : issues) {
+    if (is.field == "roller_diameter") is.field = "pin_diameter";
+    if (is.field == "r1") is.field = "plate_radius";
+    if (is.field == "r2") is.field = "roller_radius";
+  }
   in.add_model_issues(issues);
   in.throw_if_any();
 
@@ -216,13 +222,15 @@ std::function<int()> add_warp(CLI::App& app) {
   c->add_option("--stiffness", f->stiffness, "k of R = k·g^n in SI N/m^n, 1 or 4 values");
   c->add_option("--exponent", f->exponent, "n of the joint law in [1, 3] (default 1)");
   c->add_option("--widths", f->widths, "plate thicknesses B_i, 1 or 4");
-  c->add_option("--roller-diameter", f->diameter, "roller diameter d (bare: mm)");
+  c->add_option("--pin-diameter,--roller-diameter", f->diameter,
+                "roller (pin) diameter d, as catena hinge (bare: mm)");
   c->add_option("--modulus", f->modulus, "E (default 210GPa)");
   c->add_option("--poisson", f->poisson, "nu (default 0.3)");
   c->add_option("--hinge", f->hinge, "sliding (default) or rolling")
       ->check(CLI::IsMember({"sliding", "rolling"}));
-  c->add_option("--r1", f->r1, "rolling hinge: plate convex radius R1");
-  c->add_option("--r2", f->r2, "rolling hinge: roller concave radius R2 > R1");
+  c->add_option("--plate-radius,--r1", f->r1, "rolling hinge: plate convex radius R1 (bare: mm)");
+  c->add_option("--roller-radius,--r2", f->r2,
+                "rolling hinge: roller concave radius R2 > R1 (bare: mm)");
   c->add_option("--force", f->force, "tooth load F, or a comma-separated sweep (30kN,35kN,40kN)");
   c->add_option("--load-height", f->load_height, "L1, or a comma-separated sweep");
   c->add_option("--format", f->format, "table|json|csv")

@@ -57,8 +57,8 @@ TEST(WarpCli, OpenJointIsADiagnosticWithItsLimit) {
 TEST(WarpCli, InvalidInputListsEveryProblemAndExits2) {
   const CliRun missing = run("warp --hinge rolling --force 3kN");
   EXPECT_EQ(missing.status, 2);
-  for (const char* flag : {"--heights", "--stiffness", "--widths", "--roller-diameter", "--r1",
-                           "--r2", "--load-height"})
+  for (const char* flag : {"--heights", "--stiffness", "--widths", "--pin-diameter",
+                           "--plate-radius", "--roller-radius", "--load-height"})
     EXPECT_NE(missing.err.find(flag), std::string::npos) << flag << "\n" << missing.err;
   const CliRun bad = run(
       "warp --heights 0,10mm,5mm,60mm --stiffness -1 --widths 8mm --roller-diameter 24mm "
