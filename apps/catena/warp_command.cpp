@@ -1,5 +1,6 @@
 // catena warp: roller warp in the vertical plane (seed 000 §1.4), swept over L1 and F.
 #include <CLI/CLI.hpp>
+#include <map>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -130,6 +131,7 @@ int run_warp(const WarpFlags& f) {
   in.throw_if_any();
 
   ordered_json points = ordered_json::array(), diags = ordered_json::array();
+  std::map<std::string, std::pair<std::size_t, double>> worst;  // code → (index, value/limit)
   std::ostringstream csv, table;
   csv << "force,load_height,F21,F11,F12,F22,delta21,delta11,delta12,delta22,tilt,upper_share,"
          "bending_stress,stress21,stress11,stress12,stress22,converged,iterations,residual\n";
@@ -158,14 +160,32 @@ int run_warp(const WarpFlags& f) {
                      {"residual", r.summary.residual},
                      {"termination", r.summary.termination}};
       points.push_back(p);
-      for (const auto& d : r.diagnostics)
+      // one diagnostic per code over the whole sweep: the point where it is worst (largest
+      // value/limit), with the number of sweep points at which it fired
+      for (const auto& d : r.diagnostics) {
+        const double excess = d.limit > 0.0 ? d.value / d.limit : d.value;
+        const auto seen = worst.find(d.code);
+        if (seen != worst.end()) {
+          ordered_json& e = diags[seen->second.first];
+          e["points"] = e["points"].get<int>() + 1;
+          if (!(excess > seen->second.second)) continue;
+          seen->second.second = excess;
+          e["value"] = d.value;
+          e["limit"] = d.limit;
+          e["force"] = F;
+          e["load_height"] = L;
+          continue;
+        }
+        worst[d.code] = {diags.size(), excess};
         diags.push_back({{"severity", to_string(d.severity)},
                          {"code", d.code},
                          {"message", d.message},
                          {"value", d.value},
                          {"limit", d.limit},
                          {"force", F},
-                         {"load_height", L}});
+                         {"load_height", L},
+                         {"points", 1}});
+      }
       csv << g(F, 12) << "," << g(L, 12);
       for (double v : r.force) csv << "," << g(v, 12);
       for (double v : r.deformation) csv << "," << g(v, 12);

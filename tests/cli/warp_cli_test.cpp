@@ -54,6 +54,32 @@ TEST(WarpCli, OpenJointIsADiagnosticWithItsLimit) {
   EXPECT_TRUE(found) << r.out;
 }
 
+TEST(WarpCli, ASweepReportsEachDiagnosticOnceAtItsWorstPoint) {
+  // the open joint fires at every (F, L1) of the sweep: one entry, counted, at the worst point
+  const CliRun r = run(kWarp + "--clearances 0,0,0,1mm --force 5kN,10kN --load-height 28mm,30mm "
+                               "--format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  int entries = 0;
+  for (const auto& d : j["diagnostics"]) {
+    if (d["code"] != "warp.joint_open.F22") continue;
+    ++entries;
+    EXPECT_EQ(d["points"].get<int>(), 4);
+    // its value is the largest over the four points of the sweep
+    const CliRun one = run(kWarp + "--clearances 0,0,0,1mm --force " +
+                           std::to_string(d["force"].get<double>()) + "N --load-height " +
+                           std::to_string(d["load_height"].get<double>() * 1e3) +
+                           "mm --format json");
+    ASSERT_EQ(one.status, 0) << one.err;
+    for (const auto& e : nlohmann::json::parse(one.out)["diagnostics"]) {
+      if (e["code"] == d["code"]) {
+        EXPECT_DOUBLE_EQ(e["value"].get<double>(), d["value"].get<double>());
+      }
+    }
+  }
+  EXPECT_EQ(entries, 1) << r.out;
+}
+
 TEST(WarpCli, InvalidInputListsEveryProblemAndExits2) {
   const CliRun missing = run("warp --hinge rolling --force 3kN");
   EXPECT_EQ(missing.status, 2);
