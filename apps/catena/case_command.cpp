@@ -46,6 +46,13 @@ struct AnalysisSpec {
   std::set<std::string> not_shared;      ///< keys it must not take from the shared tables
   std::vector<std::string> extra_args;   ///< appended to the flags (e.g. a drawing to capture)
   ChartBuilder charts;
+  /// Per chain type: flags the chain type implies (engagement: --hinge rolling) and shared keys
+  /// that do not apply to it (a rolling hinge takes no sliding friction from [material]).
+  struct ChainVariant {
+    std::vector<std::string> args;
+    std::set<std::string> not_shared;
+  };
+  std::map<std::string, ChainVariant> variants = {};
 };
 
 const std::vector<std::string> kChainTypes = {"rolling-hinge", "sliding-hinge", "roller-iso606",
@@ -207,6 +214,65 @@ const std::vector<AnalysisSpec>& analysis_specs() {
        {},
        {},
        {}},
+      {"engagement",
+       {"engagement"},
+       "Chain–sprocket engagement forces (seed 000 §1.6)",
+       "docs/models/engagement.md",
+       {"rolling-hinge", "sliding-hinge"},
+       {},
+       {},
+       [](const ordered_json& r, io::ReportSection& s) {
+         s.charts.push_back(series_chart(r, r["series"], "Link and tooth forces over the engagement",
+                                         "gamma", {"F2", "FN"}, "force"));
+         if (r.value("hinge", std::string()) == "rolling")
+           s.charts.push_back(series_chart(r, r["series"], "Roller turn ξ over the engagement",
+                                           "gamma", {"xi"}, "ξ"));
+         if (r.contains("wrap") && r["wrap"].is_object()) {
+           const ordered_json& w = r["wrap"];
+           io::ReportChart c;
+           c.title = "Tension before each seated roller around the sprocket";
+           c.x_label = "roller k";
+           c.y_label = "tension [" + unit_of(r, "tension") + "]";
+           std::vector<double> k;
+           for (std::size_t i = 0; i < w["tension"].size(); ++i) k.push_back(double(i));
+           c.traces.push_back({"tension", k, numbers(w["tension"])});
+           s.charts.push_back(c);
+         }
+       },
+       {{"rolling-hinge",
+         {{"--hinge", "rolling"}, {"friction", "tooth_friction", "journal_diameter",
+                                   "tooth_diameter"}}},
+        {"sliding-hinge",
+         {{"--hinge", "sliding"}, {"pin_diameter", "half_thickness", "plate_radius",
+                                   "roller_radius", "rolling_coefficient", "tooth_arm"}}}}},
+      {"warp",
+       {"warp"},
+       "Roller warp: the roller on four plate joints with clearance (seed 000 §1.4)",
+       "docs/models/warp.md",
+       {"rolling-hinge", "sliding-hinge"},
+       {},
+       {},
+       [](const ordered_json& r, io::ReportSection& s) {
+         // one line per load F: the upper plates' share of the load versus its height L1
+         std::map<double, std::pair<std::vector<double>, std::vector<double>>> by_force;
+         for (const ordered_json& p : r["points"]) {
+           auto& [x, y] = by_force[p["force"].get<double>()];
+           x.push_back(p["load_height"].get<double>() * 1e3);
+           y.push_back(p["upper_share"].is_number() ? p["upper_share"].get<double>() * 100 : NAN);
+         }
+         io::ReportChart c;
+         c.title = "Share of the load on the upper plates versus the load height L1";
+         c.x_label = "L1 [mm]";
+         c.y_label = "upper share [%]";
+         for (const auto& [force, xy] : by_force) {
+           char name[48];
+           std::snprintf(name, sizeof name, "F = %.4g kN", force * 1e-3);
+           c.traces.push_back({name, xy.first, xy.second});
+         }
+         s.charts.push_back(c);
+       },
+       {{"rolling-hinge", {{"--hinge", "rolling"}, {}}},
+        {"sliding-hinge", {{"--hinge", "sliding"}, {"plate_radius", "roller_radius"}}}}},
   };
   return specs;
 }
@@ -216,6 +282,7 @@ const std::vector<AnalysisSpec>& analysis_specs() {
 
 struct AnalysisRun {
   const AnalysisSpec* spec;
+  std::string name;  ///< the table's name: the spec's, or "<spec>-<label>" for one of several
   ordered_json result;
   std::vector<std::pair<std::string, std::string>> files;  // captured (flag, content)
 };
@@ -242,6 +309,15 @@ std::map<std::string, CLI::Option*> case_keys(CLI::App& app, const AnalysisSpec&
   }
   if (spec.command.size() > 1) {
     for (const std::string& k : spec.not_shared) keys.erase(k);
+  }
+  // flags implied by chain.type (engagement's --hinge) are not the case file's to set
+  for (const auto& [type, variant] : spec.variants) {
+    for (const std::string& a : variant.args) {
+      if (a.rfind("--", 0) != 0) continue;
+      std::string key = a.substr(2);
+      for (char& c : key) c = c == '-' ? '_' : c;
+      keys.erase(key);
+    }
   }
   return keys;
 }
@@ -348,21 +424,26 @@ CaseRun run_case(const io::CaseFile& file) {
   if (wanted.empty() && file.find("analyses") == nullptr) {
     issues.push_back({"analyses", "(missing)",
                       "at least one [analyses.<name>] table; names: pocketwheel, hinge, "
-                      "hinge_sweep, contact, fretting"});
+                      "hinge_sweep, contact, fretting, engagement, warp"});
   }
   struct Planned {
     const AnalysisSpec* spec;
+    std::string name;
     std::vector<std::string> args;
     std::map<std::string, std::string> flag_to_path;
   };
   std::vector<Planned> planned;
   for (const std::string& name : wanted) {
     const auto it = std::find_if(specs.begin(), specs.end(),
-                                 [&](const AnalysisSpec& s) { return s.name == name; });
+                                 [&](const AnalysisSpec& s) {
+                                   // "pocketwheel" or "pocketwheel-<label>": several runs of one
+                                   // analysis, e.g. pocketwheel-free, pocketwheel-chordal
+                                   return s.name == name || name.rfind(s.name + "-", 0) == 0;
+                                 });
     if (it == specs.end()) {
       issues.push_back({"analyses." + name, "(table)",
                         "an analysis Catena has: pocketwheel, hinge, hinge_sweep, contact, "
-                        "fretting" +
+                        "fretting, engagement, warp" +
                             suggest(name, spec_names)});
       continue;
     }
@@ -376,10 +457,10 @@ CaseRun run_case(const io::CaseFile& file) {
            "an analysis for chain.type = " + chain_type + "; '" + name + "' applies to " + types});
       continue;
     }
-    const auto& keys = keys_of[name];
+    const auto& keys = keys_of[spec.name];
     std::vector<std::string> key_names;
     for (const auto& [k, o] : keys) key_names.push_back(k);
-    Planned p{&spec, {"catena"}, {}};
+    Planned p{&spec, name, {"catena"}, {}};
     for (const std::string& c : spec.command) p.args.push_back(c);
     std::map<std::string, const io::CaseValue*> given;
     const std::string prefix = "analyses." + name + ".";
@@ -398,8 +479,13 @@ CaseRun run_case(const io::CaseFile& file) {
         given[key] = &v;
       }
     }
+    const auto variant = spec.variants.find(chain_type);
+    const AnalysisSpec::ChainVariant* chain_variant =
+        variant == spec.variants.end() ? nullptr : &variant->second;
     for (const auto& [key, v] : shared) {
-      if (keys.count(key) && !given.count(key) && !spec.not_shared.count(key)) given[key] = v;
+      if (keys.count(key) && !given.count(key) && !spec.not_shared.count(key) &&
+          !(chain_variant && chain_variant->not_shared.count(key)))
+        given[key] = v;
     }
     for (const auto& [key, v] : given) {
       const CLI::Option* option = keys.at(key);
@@ -424,6 +510,8 @@ CaseRun run_case(const io::CaseFile& file) {
       }
     }
     for (const std::string& a : spec.extra_args) p.args.push_back(a);
+    if (chain_variant)
+      for (const std::string& a : chain_variant->args) p.args.push_back(a);
     p.args.push_back("--format");
     p.args.push_back("json");
     planned.push_back(std::move(p));
@@ -437,12 +525,13 @@ CaseRun run_case(const io::CaseFile& file) {
     const auto actions = register_analyses(app);
     std::vector<const char*> argv;
     for (const std::string& a : p.args) argv.push_back(a.c_str());
-    const std::string where = "analyses." + p.spec->name;
+    const std::string where = "analyses." + p.name;
     try {
       app.parse(static_cast<int>(argv.size()), argv.data());
       Capture capture;
       actions.at(p.spec->command.front())();
-      AnalysisRun run{p.spec, ordered_json::parse(capture.stdout_text), std::move(capture.files)};
+      AnalysisRun run{p.spec, p.name, ordered_json::parse(capture.stdout_text),
+                      std::move(capture.files)};
       out.runs.push_back(std::move(run));
     } catch (const CLI::ParseError& e) {
       issues.push_back({where, "(options)", std::string("valid options: ") + e.what()});
@@ -479,7 +568,7 @@ ordered_json result_tree(const CaseRun& run) {
   const io::CaseValue* title = run.file.find("title");
   j["title"] = title ? title->text : run.file.name;
   ordered_json analyses = ordered_json::object();
-  for (const AnalysisRun& r : run.runs) analyses[r.spec->name] = r.result;
+  for (const AnalysisRun& r : run.runs) analyses[r.name] = r.result;
   j["analyses"] = analyses;
   return j;
 }
@@ -542,8 +631,9 @@ io::Report build_report(const CaseRun& run) {
   }
   for (const AnalysisRun& r : run.runs) {
     io::ReportSection s;
-    s.id = r.spec->name;
+    s.id = r.name;
     s.title = r.spec->title;
+    if (r.name != r.spec->name) s.title += " — " + r.name.substr(r.spec->name.size() + 1);
     s.docs = r.spec->docs;
     const ordered_json& j = r.result;
     s.source = j.value("source", std::string("see ") + r.spec->docs);
@@ -612,7 +702,9 @@ std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
   return {{"pocketwheel", add_pocketwheel(app)},
           {"hinge", add_hinge(app)},
           {"contact", add_contact(app)},
-          {"fretting", add_fretting(app)}};
+          {"fretting", add_fretting(app)},
+          {"warp", add_warp(app)},
+          {"engagement", add_engagement(app)}};
 }
 
 std::function<int()> add_run(CLI::App& app) {

@@ -18,6 +18,10 @@ std::function<int()> add_hinge(CLI::App& app);
 /// Registers `catena contact` and `catena fretting`.
 std::function<int()> add_contact(CLI::App& app);
 std::function<int()> add_fretting(CLI::App& app);
+/// Registers `catena warp` (roller warp, seed 000 §1.4).
+std::function<int()> add_warp(CLI::App& app);
+/// Registers `catena engagement`.
+std::function<int()> add_engagement(CLI::App& app);
 
 /// Registers every analysis subcommand above on `app`; returns their actions by name. The case
 /// runner uses it too: a model added here (and described in case_command.cpp's registry) is

@@ -46,6 +46,19 @@ TEST(CaseCli, EachExampleGivesWhatItsSubcommandGives) {
     EXPECT_EQ(hinge["analyses"]["hinge"][key], direct_hinge[key]) << key;
   ASSERT_TRUE(hinge["analyses"].contains("hinge_sweep"));
   EXPECT_EQ(hinge["analyses"]["hinge_sweep"]["rows"].size(), 24u);
+  // engagement: chain.type = rolling-hinge implies --hinge rolling; the shared sliding friction
+  // of [material] is not passed to a rolling hinge
+  const auto direct_engagement = run_json(
+      "engagement --hinge rolling --pitch 125mm --pin-diameter 40mm --half-thickness 8mm "
+      "--teeth 8 --strokes 2 --tension 29.4kN --plate-radius 15mm --flank-angle 21.65deg "
+      "--format json");
+  EXPECT_EQ(hinge["analyses"]["engagement"], direct_engagement);
+  const auto direct_warp = run_json(
+      "warp --hinge rolling --pin-diameter 40mm --modulus 210GPa --poisson 0.3 "
+      "--heights '0, 8 mm, 48 mm, 56 mm' --widths 8mm --stiffness 2e8 "
+      "--force '30 kN, 35 kN, 40 kN' --load-height '28 mm, 28.5 mm, 29 mm, 29.5 mm, 30 mm' "
+      "--plate-radius 34mm --roller-radius 35.4mm --format json");
+  EXPECT_EQ(hinge["analyses"]["warp"], direct_warp);
 
   const auto contact = run_json("run " + kExamples + "/001_roller_chain_skew.toml");
   const auto direct_contact = run_json(
@@ -53,11 +66,14 @@ TEST(CaseCli, EachExampleGivesWhatItsSubcommandGives) {
       "--skew-gauge-dh 0.155mm --skew-gauge-base 12.7mm --format json");
   EXPECT_EQ(contact["analyses"]["contact"], direct_contact);
 
+  // the paper's comparison: one analysis table per run-on ("pocketwheel-<label>")
   const auto wheel = run_json("run " + kExamples + "/003_pocket_wheel.toml");
-  const auto direct_wheel = run_json(
-      "pocketwheel --pitch 64mm --wire 18mm --teeth 8 --omega 5 --guide tangential "
-      "--guide-end 256mm --format json");
-  EXPECT_EQ(wheel["analyses"]["pocketwheel"], direct_wheel);
+  for (const std::string guide : {"free", "chordal", "tangential"}) {
+    const auto direct_wheel =
+        run_json("pocketwheel --pitch 64mm --wire 18mm --teeth 8 --omega 5 --guide " +
+                 std::string(guide == "free" ? "none" : guide) + " --guide-end 256mm --format json");
+    EXPECT_EQ(wheel["analyses"]["pocketwheel-" + guide], direct_wheel) << guide;
+  }
   EXPECT_EQ(wheel["case_sha256"].get<std::string>().size(), 64u);
 }
 
@@ -83,7 +99,7 @@ TEST(CaseCli, ReportIsOneSelfContainedHtmlFile) {
   EXPECT_NE(html.find(digest), std::string::npos);
   const CliRun json = run("report " + kExamples + "/003_pocket_wheel.toml --format json");
   ASSERT_EQ(json.status, 0) << json.err;
-  EXPECT_TRUE(nlohmann::json::parse(json.out)["analyses"].contains("pocketwheel"));
+  EXPECT_TRUE(nlohmann::json::parse(json.out)["analyses"].contains("pocketwheel-chordal"));
   fs::remove_all(dir);
 }
 
@@ -155,6 +171,10 @@ INSTANTIATE_TEST_SUITE_P(
                 "[analyses.hinge_sweep]\ncount = 1\n",
                 {"chain.pin_diameter = '40 kg'", "wrong dimension",
                  "analyses.hinge.plate_radius = (missing)", "analyses.hinge_sweep.count"}},
+        // chain.type decides the engagement's hinge: the case file cannot contradict it
+        BadCase{"implied_flag",
+                "[chain]\ntype = \"sliding-hinge\"\n[analyses.engagement]\nhinge = \"rolling\"\n",
+                {"analyses.engagement.hinge", "an option of 'engagement'"}},
         BadCase{"duplicate_shared",
                 "[chain]\ntype = \"round-link\"\nteeth = 8\n[sprocket]\nteeth = 9\n"
                 "[analyses.pocketwheel]\n",
@@ -170,6 +190,22 @@ TEST(CaseCli, SharedValuesFeedEveryAnalysisThatTakesThem) {
   const auto j = run_json("run " + path);
   EXPECT_TRUE(j["analyses"]["hinge"]["pitch_change"].contains("dt_over_t"));
   EXPECT_EQ(j["analyses"]["hinge_sweep"]["rows"].size(), 5u);
+  fs::remove(path);
+}
+
+TEST(CaseCli, ChainTypeChoosesTheEngagementHingeAndItsSharedValues) {
+  // a sliding-hinge case: [material] friction reaches the sliding engagement; the same values in
+  // a rolling-hinge case would not (a rolling hinge refuses --friction on the command line)
+  const std::string path = write_case(
+      "sliding", "[chain]\ntype = \"sliding-hinge\"\npitch = \"125 mm\"\n[sprocket]\nteeth = 8\n"
+                 "strokes = 2\n[loads]\ntension = \"29.4 kN\"\n[material]\nfriction = 0.15\n"
+                 "[analyses.engagement]\n");
+  const auto j = run_json("run " + path);
+  const auto direct = run_json(
+      "engagement --hinge sliding --pitch 125mm --teeth 8 --strokes 2 --tension 29.4kN "
+      "--friction 0.15 --format json");
+  EXPECT_EQ(j["analyses"]["engagement"], direct);
+  EXPECT_EQ(j["analyses"]["engagement"]["hinge"], "sliding");
   fs::remove(path);
 }
 

@@ -1,0 +1,96 @@
+// `catena engagement` as scripts call it: the CLI contract.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+
+#include "cli_run.hpp"
+
+namespace {
+
+constexpr double kResidualTol = 1e-9;  // [-]
+
+const std::string kSliding =
+    "engagement --hinge sliding --pitch 125mm --teeth 8 --strokes 2 --tension 29.4kN "
+    "--friction 0.15";
+const std::string kRolling =
+    "engagement --hinge rolling --pitch 125mm --teeth 8 --strokes 2 --tension 29.4kN "
+    "--pin-diameter 40mm --half-thickness 8mm --plate-radius 15mm";
+
+TEST(EngagementCli, SlidingJsonCarriesTheContractFieldsInSi) {
+  const CliRun r = run(kSliding + " --points 31 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key : {"series", "roller_turns", "diagnostics", "units"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  for (const char* key : {"gamma", "F2", "FN", "xi", "rolling_resistance", "residual"}) {
+    ASSERT_TRUE(j["series"].contains(key)) << key;
+    EXPECT_EQ(j["series"][key].size(), 31u) << key;
+  }
+  EXPECT_NEAR(j["series"]["gamma"][30].get<double>(), 3.14159265358979 / 2, 1e-12);
+  EXPECT_TRUE(j["series"]["xi"][0].is_null());  // no ξ for a sliding hinge
+  for (const auto& v : j["series"]["residual"]) EXPECT_LE(v.get<double>(), kResidualTol);
+  EXPECT_EQ(j["units"]["F2"], "N");
+  EXPECT_EQ(j["units"]["gamma"], "rad");
+  EXPECT_TRUE(j["roller_turns"].is_array());
+  EXPECT_EQ(j["wrap"]["rollers"], 2);
+  EXPECT_EQ(j["wrap"]["tension"].size(), 3u);
+  EXPECT_EQ(j["units"]["torque"], "N*m");
+}
+
+TEST(EngagementCli, RollingJsonAndCsv) {
+  const CliRun r = run(kRolling + " --flank-angle 21.6deg --points 11 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["series"]["F2"][0].get<double>(), 29.4e3, 50.0);
+  EXPECT_NEAR(j["series"]["F2"][10].get<double>(), 12.7e3, 100.0);
+  EXPECT_NEAR(j["series"]["rolling_resistance"][0].get<double>(), 29.4, 1e-9);
+  for (const auto& v : j["series"]["residual"]) EXPECT_LE(v.get<double>(), kResidualTol);
+  EXPECT_GE(j["roller_turns"].size(), 1u);
+  const CliRun c = run(kRolling + " --points 5 --format csv");
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_EQ(c.out.substr(0, c.out.find('\n')), "gamma,F2,FN,xi,rolling_resistance,residual");
+  EXPECT_EQ(std::count(c.out.begin(), c.out.end(), '\n'), 6);
+}
+
+TEST(EngagementCli, TableRuns) {
+  const CliRun r = run(kSliding);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("roller turns"), std::string::npos);
+}
+
+TEST(EngagementCli, InvalidInputExitsTwoWithEveryProblem) {
+  const CliRun r = run("engagement --hinge wobbly --pitch -5mm --tension 3kg --strokes 0");
+  EXPECT_EQ(r.status, 2);
+  for (const char* flag : {"--hinge", "--teeth", "--tension", "--strokes"})
+    EXPECT_NE(r.err.find(flag), std::string::npos) << flag << "\n" << r.err;
+  const CliRun mixed = run(kSliding + " --plate-radius 34mm --rolling-coefficient 0.01");
+  EXPECT_EQ(mixed.status, 2);
+  EXPECT_NE(mixed.err.find("--plate-radius"), std::string::npos);
+  EXPECT_NE(mixed.err.find("--rolling-coefficient"), std::string::npos);
+  const CliRun rolling = run(kRolling + " --friction 0.1");
+  EXPECT_EQ(rolling.status, 2);
+  EXPECT_NE(rolling.err.find("--friction"), std::string::npos);
+  const CliRun flank = run(kRolling + " --flank-angle 60deg --rolling-coefficient -1");
+  EXPECT_EQ(flank.status, 2);
+  EXPECT_NE(flank.err.find("--flank-angle"), std::string::npos) << flank.err;
+  EXPECT_NE(flank.err.find("--rolling-coefficient"), std::string::npos) << flank.err;
+  const CliRun wrap = run(kSliding + " --wrap-angle 400deg");
+  EXPECT_EQ(wrap.status, 2);
+  EXPECT_NE(wrap.err.find("--wrap-angle"), std::string::npos);
+  const CliRun missing = run("engagement --hinge rolling --pitch 125mm --teeth 8 --tension 1kN");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("--pin-diameter"), std::string::npos);
+}
+
+TEST(EngagementCli, LockedSlidingHingeIsADiagnosticNotAnError) {
+  const CliRun r =
+      run("engagement --hinge sliding --pitch 125mm --teeth 8 --strokes 2 --tension 29.4kN "
+          "--friction 2 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_GE(j["diagnostics"].size(), 1u);
+  EXPECT_EQ(j["diagnostics"][0]["code"], "engagement.link2_slack");
+}
+
+}  // namespace
