@@ -195,4 +195,12 @@ TEST(RingValidate, ListsEveryProblem) {
   EXPECT_THROW(analyse(bad), catena::InputError);
 }
 
+TEST(RingValidate, TheUnvalidatedSweepIsNotOffered) {
+  Options sweep;
+  sweep.method = Method::kSweep;
+  const auto issues = validate(sweep);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].field, "method");
+}
+
 }  // namespace
