@@ -71,7 +71,8 @@ TEST(WarpCli, ASweepReportsEachDiagnosticOnceAtItsWorstPoint) {
                            std::to_string(d["load_height"].get<double>() * 1e3) +
                            "mm --format json");
     ASSERT_EQ(one.status, 0) << one.err;
-    for (const auto& e : nlohmann::json::parse(one.out)["diagnostics"]) {
+    const auto single = nlohmann::json::parse(one.out);  // named: the loop must not outlive it
+    for (const auto& e : single["diagnostics"]) {
       if (e["code"] == d["code"]) {
         EXPECT_DOUBLE_EQ(e["value"].get<double>(), d["value"].get<double>());
       }
