@@ -62,7 +62,16 @@ INSTANTIATE_TEST_SUITE_P(
         Accepted{"2 kHz", QuantityKind::kFrequency, 2000.0},
         Accepted{"0", QuantityKind::kLength, 0.0},  // zero, which UDUNITS cannot scale by
         Accepted{"0mm", QuantityKind::kLength, 0.0}, Accepted{"0 m", QuantityKind::kLength, 0.0},
-        Accepted{"-5 mm", QuantityKind::kLength, -0.005}));
+        Accepted{"-5 mm", QuantityKind::kLength, -0.005},
+        Accepted{"0.5 m/s", QuantityKind::kSpeed, 0.5},
+        Accepted{"0.5", QuantityKind::kSpeed, 0.5},  // bare: m/s
+        Accepted{"30 m/min", QuantityKind::kSpeed, 0.5},
+        Accepted{"1.8 km/h", QuantityKind::kSpeed, 0.5},
+        Accepted{"150 N/m", QuantityKind::kForcePerLength, 150.0},
+        Accepted{"150", QuantityKind::kForcePerLength, 150.0},  // bare: N/m
+        Accepted{"0.15 kN/m", QuantityKind::kForcePerLength, 150.0},
+        Accepted{"0.15 N/mm", QuantityKind::kForcePerLength, 150.0},
+        Accepted{"10 kgf/m", QuantityKind::kForcePerLength, 98.0665}));
 
 struct Rejected {
   const char* text;
@@ -102,7 +111,13 @@ INSTANTIATE_TEST_SUITE_P(
                       Rejected{"3 MPa", QuantityKind::kForce, "wrong dimension"},
                       Rejected{"20 rpm", QuantityKind::kFrequency, "does not count cycles"},
                       Rejected{"5 rad/s", QuantityKind::kFrequency, "does not count cycles"},
-                      Rejected{"5 N", QuantityKind::kFrequency, "wrong dimension"}));
+                      Rejected{"5 N", QuantityKind::kFrequency, "wrong dimension"},
+                      Rejected{"5 1/s", QuantityKind::kSpeed, "wrong dimension"},
+                      Rejected{"5 rpm", QuantityKind::kSpeed, "wrong dimension"},
+                      Rejected{"5 m", QuantityKind::kSpeed, "wrong dimension"},
+                      Rejected{"15 kg/m", QuantityKind::kForcePerLength, "kgf/m"},
+                      Rejected{"150 N", QuantityKind::kForcePerLength, "wrong dimension"},
+                      Rejected{"150 Pa", QuantityKind::kForcePerLength, "wrong dimension"}));
 
 TEST(Quantity, ThrowingOverloadCarriesTheIssue) {
   try {
@@ -120,6 +135,10 @@ TEST(Quantity, DefaultUnitsAreDocumented) {
   EXPECT_STREQ(default_unit(QuantityKind::kStress), "MPa");
   EXPECT_STREQ(default_unit(QuantityKind::kAngle), "degree");
   EXPECT_STREQ(si_unit(QuantityKind::kAngularSpeed), "rad/s");
+  EXPECT_STREQ(default_unit(QuantityKind::kSpeed), "m/s");
+  EXPECT_STREQ(si_unit(QuantityKind::kSpeed), "m/s");
+  EXPECT_STREQ(default_unit(QuantityKind::kForcePerLength), "N/m");
+  EXPECT_STREQ(si_unit(QuantityKind::kForcePerLength), "N/m");
 }
 
 }  // namespace

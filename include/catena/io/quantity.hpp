@@ -1,7 +1,8 @@
 // Unit-tagged quantities at the I/O boundary, parsed with UDUNITS-2.
 //
 // "64mm", "64 mm", "0.064m", "5 1/s", "47.75 rpm", "20deg", "0°42'", "29.4kN", "210GPa" all parse;
-// a bare number takes the kind's default unit (mm, 1/s, N, MPa, degree, kg, s). The result is SI.
+// a bare number takes the kind's default unit (mm, 1/s, N, MPa, degree, kg, s, m/s, N/m). The
+// result is SI.
 #pragma once
 
 #include <optional>
@@ -23,11 +24,16 @@ enum class QuantityKind {
   kMass,          ///< SI kg; bare number: kg
   kTime,          ///< SI s; bare number: s
   kFrequency,     ///< SI 1/s (cycles per second); bare number: Hz
+  kSpeed,         ///< SI m/s; bare number: m/s
+  kForcePerLength,  ///< SI N/m (a weight per metre of a conveyor run); bare number: N/m;
+                    ///< a mass per metre (kg/m) is rejected with a hint to write kgf/m
 };
 
-/// The SI unit the library uses for `kind` ("m", "rad", "rad/s", "N", "Pa", "kg", "s").
+/// The SI unit the library uses for `kind` ("m", "rad", "rad/s", "N", "Pa", "kg", "s", "m/s",
+/// "N/m").
 const char* si_unit(QuantityKind kind);
-/// The unit a bare number is taken in ("mm", "degree", "1/s", "N", "MPa", "kg", "s").
+/// The unit a bare number is taken in ("mm", "degree", "1/s", "N", "MPa", "kg", "s", "m/s",
+/// "N/m").
 const char* default_unit(QuantityKind kind);
 /// A short human description used in messages, e.g. "a length".
 const char* describe(QuantityKind kind);

@@ -101,6 +101,10 @@ const char* accepted_spellings(QuantityKind kind) {
       return "a time, e.g. 2 s, 5 min (bare number: s)";
     case QuantityKind::kFrequency:
       return "a frequency in cycles per second, e.g. 20 Hz, 1200 1/min (bare number: Hz)";
+    case QuantityKind::kSpeed:
+      return "a speed, e.g. 0.5 m/s, 30 m/min (bare number: m/s)";
+    case QuantityKind::kForcePerLength:
+      return "a weight (force) per length, e.g. 150 N/m, 0.15 kN/m, 15 kgf/m (bare number: N/m)";
   }
   return "a quantity";
 }
@@ -124,6 +128,10 @@ const char* target_spelling(QuantityKind kind) {
       return "s";
     case QuantityKind::kFrequency:
       return "1/s";
+    case QuantityKind::kSpeed:
+      return "m/s";
+    case QuantityKind::kForcePerLength:
+      return "N/m";
   }
   return "1";
 }
@@ -164,6 +172,10 @@ const char* si_unit(QuantityKind kind) {
       return "s";
     case QuantityKind::kFrequency:
       return "1/s";
+    case QuantityKind::kSpeed:
+      return "m/s";
+    case QuantityKind::kForcePerLength:
+      return "N/m";
   }
   return "1";
 }
@@ -186,6 +198,10 @@ const char* default_unit(QuantityKind kind) {
       return "s";
     case QuantityKind::kFrequency:
       return "Hz";
+    case QuantityKind::kSpeed:
+      return "m/s";
+    case QuantityKind::kForcePerLength:
+      return "N/m";
   }
   return "1";
 }
@@ -234,7 +250,14 @@ std::optional<double> parse_quantity(std::string_view raw, QuantityKind kind,
   UnitPtr parsed(ut_parse(system.system, unit_text.c_str(), UT_UTF8));
   if (!parsed) return fail("not a number with a unit UDUNITS-2 knows");
   UnitPtr target(ut_parse(system.system, target_spelling(kind), UT_UTF8));
-  if (!ut_are_convertible(parsed.get(), target.get())) return fail("wrong dimension");
+  if (!ut_are_convertible(parsed.get(), target.get())) {
+    if (kind == QuantityKind::kForcePerLength) {
+      UnitPtr mass_per_length(ut_parse(system.system, "kg/m", UT_UTF8));
+      if (ut_are_convertible(parsed.get(), mass_per_length.get()))
+        return fail("wrong dimension: a mass per length is not a weight; write kgf/m");
+    }
+    return fail("wrong dimension");
+  }
 
   char definition[256] = {0};
   ut_format(parsed.get(), definition, sizeof definition - 1, UT_ASCII | UT_DEFINITION);
