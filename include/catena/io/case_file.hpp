@@ -37,7 +37,9 @@ struct CaseFile {
 
 /// Parses TOML text. A syntax error throws InputError naming name:line:column and the parser's
 /// message. Numbers keep the spelling of the file where TOML allows (1.5e3 stays 1.5e3);
-/// arrays are kept as one kOther value (no analysis takes an array yet).
+/// an array of tables ([[loop.segment]]) is flattened element by element with 0-based indices
+/// ("loop.segment[2].length"; tables "loop.segment" and "loop.segment[2]"); other arrays are kept
+/// as one kOther value (no analysis takes an array yet).
 CaseFile parse_case(std::string_view text, std::string name);
 
 /// The candidate closest to `word` by edit distance, when close enough to be a likely typo

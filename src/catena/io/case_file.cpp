@@ -41,6 +41,16 @@ void flatten(const toml::table& table, const std::string& prefix, CaseFile& out,
     } else if (node.is_boolean()) {
       out.values.push_back(
           {path, node.as_boolean()->get() ? "true" : "false", CaseValue::Type::kBoolean, line});
+    } else if (const auto* array = node.as_array();
+               array != nullptr && !array->empty() && array->is_array_of_tables()) {
+      // [[loop.segment]]: each element is a table "loop.segment[0]", "loop.segment[1]", …
+      tables.emplace_back(line, path);
+      std::size_t index = 0;
+      for (const toml::node& element : *array) {
+        const std::string element_path = path + "[" + std::to_string(index++) + "]";
+        tables.emplace_back(static_cast<int>(element.source().begin.line), element_path);
+        flatten(*element.as_table(), element_path, out, tables);
+      }
     } else {
       out.values.push_back({path, "(an array or date)", CaseValue::Type::kOther, line});
     }
