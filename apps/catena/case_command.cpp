@@ -53,6 +53,9 @@ struct AnalysisSpec {
     std::set<std::string> not_shared;
   };
   std::map<std::string, ChainVariant> variants = {};
+  /// The subcommand reads a table of the case file itself (loop: [loop] and [[loop.segment]]):
+  /// the runner passes the case file's path as its positional argument.
+  bool reads_case_file = false;
 };
 
 const std::vector<std::string> kChainTypes = {"rolling-hinge", "sliding-hinge", "roller-iso606",
@@ -273,6 +276,43 @@ const std::vector<AnalysisSpec>& analysis_specs() {
        },
        {{"rolling-hinge", {{"--hinge", "rolling"}, {}}},
         {"sliding-hinge", {{"--hinge", "sliding"}, {"plate_radius", "roller_radius"}}}}},
+      {"loop",
+       {"loop"},
+       "Conveyor loop: chain tension at every point by the contour method (seed 000 §1.5 fig. 19)",
+       "docs/models/loop.md",
+       kChainTypes,
+       {},
+       {},
+       [](const ordered_json& r, io::ReportSection& s) {
+         // tension along the path: a vertical step at each turn and over the drive sprocket
+         io::ReportChart c;
+         c.title = "Chain tension along the loop (from the drive sprocket's slack side)";
+         c.x_label = "path length s [m]";
+         c.y_label = "tension [kN]";
+         std::vector<double> x, y;
+         for (const ordered_json& p : r["points"]) {
+           x.push_back(p["s"].get<double>());
+           y.push_back(p["tension"].get<double>() * 1e-3);
+         }
+         c.traces.push_back({"tension", x, y});
+         s.charts.push_back(c);
+         io::ReportGrid grid{"Segments", {"#", "name", "kind", "s start [m]", "s end [m]",
+                                          "S in [kN]", "S out [kN]", "ΔS [kN]"}, {}, {}};
+         auto f = [](const ordered_json& v, double scale) {
+           char b[32];
+           std::snprintf(b, sizeof b, "%.5g", v.get<double>() * scale);
+           return std::string(b);
+         };
+         for (const ordered_json& g : r["segments"])
+           grid.rows.push_back({std::to_string(g["segment"].get<int>()),
+                                g["name"].get<std::string>(), g["kind"].get<std::string>(),
+                                f(g["s_start"], 1.0), f(g["s_end"], 1.0),
+                                f(g["tension_in"], 1e-3), f(g["tension_out"], 1e-3),
+                                f(g["resistance"], 1e-3)});
+         s.grids.push_back(std::move(grid));
+       },
+       {},
+       true},
   };
   return specs;
 }
@@ -353,13 +393,13 @@ CaseRun run_case(const io::CaseFile& file) {
 
   // the file's structure: top-level keys, shared tables, analyses
   const std::vector<std::string> top = {"title", "description", "chain",   "sprocket",
-                                        "loads", "material",    "analyses"};
+                                        "loads", "material",    "analyses", "loop"};
   for (const io::CaseValue& v : file.values) {
     const std::string head = v.path.substr(0, v.path.find('.'));
     if (std::find(top.begin(), top.end(), head) == top.end()) {
       issues.push_back({v.path, v.text,
                         "a known key: title, description, chain, sprocket, loads, "
-                        "material, analyses" +
+                        "material, loop, analyses" +
                             suggest(head, top)});
     }
   }
@@ -368,7 +408,8 @@ CaseRun run_case(const io::CaseFile& file) {
     if (std::find(top.begin(), top.end(), head) == top.end() && t.find('.') == std::string::npos)
       issues.push_back(
           {t, "(table)",
-           "a known table: chain, sprocket, loads, material, analyses" + suggest(head, top)});
+           "a known table: chain, sprocket, loads, material, loop, analyses" +
+               suggest(head, top)});
   }
   const io::CaseValue* type = file.find("chain.type");
   std::string chain_type;
@@ -424,7 +465,7 @@ CaseRun run_case(const io::CaseFile& file) {
   if (wanted.empty() && file.find("analyses") == nullptr) {
     issues.push_back({"analyses", "(missing)",
                       "at least one [analyses.<name>] table; names: pocketwheel, hinge, "
-                      "hinge_sweep, contact, fretting, engagement, warp"});
+                      "hinge_sweep, contact, fretting, engagement, warp, loop"});
   }
   struct Planned {
     const AnalysisSpec* spec;
@@ -443,7 +484,7 @@ CaseRun run_case(const io::CaseFile& file) {
     if (it == specs.end()) {
       issues.push_back({"analyses." + name, "(table)",
                         "an analysis Catena has: pocketwheel, hinge, hinge_sweep, contact, "
-                        "fretting, engagement, warp" +
+                        "fretting, engagement, warp, loop" +
                             suggest(name, spec_names)});
       continue;
     }
@@ -510,6 +551,7 @@ CaseRun run_case(const io::CaseFile& file) {
       }
     }
     for (const std::string& a : spec.extra_args) p.args.push_back(a);
+    if (spec.reads_case_file) p.args.push_back(file.name);
     if (chain_variant)
       for (const std::string& a : chain_variant->args) p.args.push_back(a);
     p.args.push_back("--format");
@@ -538,6 +580,10 @@ CaseRun run_case(const io::CaseFile& file) {
     } catch (const InputError& e) {
       const auto& keys = keys_of[p.spec->name];
       for (Issue issue : e.issues()) {
+        if (p.spec->reads_case_file && issue.field.rfind("--", 0) != 0) {
+          issues.push_back(std::move(issue));  // it names the case file's own path and line
+          continue;
+        }
         // name the case-file path the value came from, or where a missing one belongs
         std::string key = issue.field.rfind("--", 0) == 0 ? issue.field.substr(2) : "";
         for (char& c : key) c = c == '-' ? '_' : c;
@@ -617,7 +663,9 @@ io::Report build_report(const CaseRun& run) {
   register_analyses(probe);
   for (const io::CaseValue& v : run.file.values) {
     std::string unit;
-    if (v.type == io::CaseValue::Type::kNumber) {
+    if (v.type == io::CaseValue::Type::kNumber && v.path.rfind("loop.", 0) == 0) {
+      unit = loop_bare_unit(v.path);
+    } else if (v.type == io::CaseValue::Type::kNumber) {
       // a bare number: name the default unit of the flag it feeds
       const std::string key = v.path.substr(v.path.rfind('.') + 1);
       for (const AnalysisSpec& spec : analysis_specs()) {
@@ -704,7 +752,8 @@ std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
           {"contact", add_contact(app)},
           {"fretting", add_fretting(app)},
           {"warp", add_warp(app)},
-          {"engagement", add_engagement(app)}};
+          {"engagement", add_engagement(app)},
+          {"loop", add_loop(app)}};
 }
 
 std::function<int()> add_run(CLI::App& app) {

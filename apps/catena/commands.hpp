@@ -22,6 +22,11 @@ std::function<int()> add_fretting(CLI::App& app);
 std::function<int()> add_warp(CLI::App& app);
 /// Registers `catena engagement`.
 std::function<int()> add_engagement(CLI::App& app);
+/// Registers `catena loop FILE` (conveyor loop tensions, seed 000 §1.5 fig. 19). It reads the
+/// [loop] table of a TOML file, so the case runner hands it the case file's path.
+std::function<int()> add_loop(CLI::App& app);
+/// The unit a bare number takes at a [loop] path ("loop.segment[2].length" → "m"), for reports.
+std::string loop_bare_unit(const std::string& path);
 
 /// Registers every analysis subcommand above on `app`; returns their actions by name. The case
 /// runner uses it too: a model added here (and described in case_command.cpp's registry) is

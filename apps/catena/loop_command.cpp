@@ -1,0 +1,453 @@
+// catena loop FILE: chain tensions around a conveyor loop by the contour method (seed 000 §1.5,
+// fig. 19). FILE is TOML with a [loop] table and [[loop.segment]] array of tables — the schema
+// case files use, so `catena loop case.toml` reads a case file's loop and ignores the rest.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "catena/io/case_file.hpp"
+#include "catena/strength/loop.hpp"
+#include "cli_support.hpp"
+#include "commands.hpp"
+
+namespace catena::cli {
+namespace {
+
+using io::QuantityKind;
+using nlohmann::ordered_json;
+using namespace catena::strength;
+
+struct LoopFlags {
+  std::string path, format = "table", output;
+};
+
+std::string g(double v, int digits = 6) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
+  return b;
+}
+
+// What a key of the loop schema holds. kNone: a plain number (dimensionless).
+struct Key {
+  enum class Type { kQuantity, kNumber, kText } type;
+  QuantityKind kind = QuantityKind::kLength;
+  const char* bare = "";  ///< the unit a bare number is taken in (documented)
+};
+
+const std::map<std::string, Key>& loop_keys() {
+  static const std::map<std::string, Key> keys = {
+      {"speed", {Key::Type::kQuantity, QuantityKind::kSpeed, "m/s"}},
+      {"efficiency", {Key::Type::kNumber, QuantityKind::kLength, ""}},
+      {"min_tension", {Key::Type::kQuantity, QuantityKind::kForce, "N"}},
+      {"allowable_tension", {Key::Type::kQuantity, QuantityKind::kForce, "N"}},
+      {"name", {Key::Type::kText, QuantityKind::kLength, ""}},
+  };
+  return keys;
+}
+
+const std::map<std::string, Key>& segment_keys() {
+  static const std::map<std::string, Key> keys = {
+      {"kind", {Key::Type::kText, QuantityKind::kLength, ""}},
+      {"name", {Key::Type::kText, QuantityKind::kLength, ""}},
+      // conveyor runs are metres long: a bare length here is in m (not the mm of chain geometry)
+      {"length", {Key::Type::kQuantity, QuantityKind::kLength, "m"}},
+      {"incline", {Key::Type::kQuantity, QuantityKind::kAngle, "degree"}},
+      {"chain_weight", {Key::Type::kQuantity, QuantityKind::kForcePerLength, "N/m"}},
+      {"load_weight", {Key::Type::kQuantity, QuantityKind::kForcePerLength, "N/m"}},
+      {"resistance", {Key::Type::kNumber, QuantityKind::kLength, ""}},
+      {"factor", {Key::Type::kNumber, QuantityKind::kLength, ""}},
+      {"wrap", {Key::Type::kQuantity, QuantityKind::kAngle, "degree"}},
+      {"friction", {Key::Type::kNumber, QuantityKind::kLength, ""}},
+      {"pretension", {Key::Type::kQuantity, QuantityKind::kForce, "N"}},
+      {"loss", {Key::Type::kNumber, QuantityKind::kLength, ""}},
+  };
+  return keys;
+}
+
+// The keys each kind takes (besides kind and name).
+const std::map<std::string, std::vector<std::string>>& kind_keys() {
+  static const std::map<std::string, std::vector<std::string>> keys = {
+      {"straight", {"length", "incline", "chain_weight", "load_weight", "resistance"}},
+      {"turn", {"factor", "wrap", "friction"}},
+      {"takeup", {"pretension"}},
+      {"drive", {"loss"}},
+  };
+  return keys;
+}
+
+std::string where(const io::CaseValue& v) {
+  return v.path + " (line " + std::to_string(v.line) + ")";
+}
+
+// Reads one value as SI; appends an issue naming the path and line on failure.
+std::optional<double> read(const io::CaseValue& v, const Key& key, std::vector<Issue>& issues) {
+  if (v.type != io::CaseValue::Type::kString && v.type != io::CaseValue::Type::kNumber) {
+    issues.push_back({where(v), v.text, "a number or a string"});
+    return std::nullopt;
+  }
+  if (key.type == Key::Type::kNumber) {
+    char* end = nullptr;
+    const double x = std::strtod(v.text.c_str(), &end);
+    if (v.text.empty() || *end != '\0' || !std::isfinite(x)) {
+      issues.push_back({where(v), "'" + v.text + "'", "a plain (dimensionless) number"});
+      return std::nullopt;
+    }
+    return x;
+  }
+  // a bare number takes the key's documented unit
+  const std::string text =
+      v.type == io::CaseValue::Type::kNumber ? v.text + " " + key.bare : v.text;
+  std::vector<Issue> found;
+  const auto x = io::parse_quantity(text, key.kind, where(v), found);
+  for (Issue& i : found) {
+    i.value = "'" + v.text + "'";
+    if (std::string(key.bare) != io::default_unit(key.kind))
+      i.expected += "; here a bare number is in " + std::string(key.bare);
+    issues.push_back(std::move(i));
+  }
+  return x;
+}
+
+struct Parsed {
+  Loop loop;
+  std::vector<int> segment_lines;  ///< line of each segment's first value (0: none)
+  std::map<std::string, int> lines;  ///< loop-relative field ("segment[2].length") → line
+};
+
+Parsed parse_loop(const io::CaseFile& file) {
+  Parsed out;
+  std::vector<Issue> issues;
+  const bool has_loop =
+      std::find(file.tables.begin(), file.tables.end(), "loop") != file.tables.end();
+  if (!has_loop) {
+    throw InputError({{"loop", "(missing)",
+                       "a [loop] table (speed, efficiency) and its segments as [[loop.segment]] "
+                       "tables (docs/models/loop.md)"}});
+  }
+  // the segments: tables loop.segment[i]
+  std::size_t count = 0;
+  static const std::regex element(R"(^loop\.segment\[(\d+)\]$)");
+  for (const std::string& t : file.tables) {
+    std::smatch m;
+    if (std::regex_match(t, m, element)) count = std::max<std::size_t>(count, std::stoul(m[1]) + 1);
+  }
+  out.loop.segments.resize(count);
+  out.segment_lines.assign(count, 0);
+  std::vector<const io::CaseValue*> kinds(count, nullptr);
+  std::vector<bool> kind_ok(count, false);  // the segment's kind was read
+  std::vector<std::map<std::string, const io::CaseValue*>> given(count);
+
+  std::vector<std::string> loop_names, segment_names;
+  for (const auto& [k, key] : loop_keys()) loop_names.push_back(k);
+  loop_names.push_back("segment");
+  for (const auto& [k, key] : segment_keys()) segment_names.push_back(k);
+  auto suggest = [](const std::string& word, const std::vector<std::string>& candidates) {
+    const auto m = io::did_you_mean(word, candidates);
+    return m ? " (did you mean '" + *m + "'?)" : std::string();
+  };
+
+  static const std::regex segment_value(R"(^loop\.segment\[(\d+)\]\.([^.]+)$)");
+  for (const io::CaseValue& v : file.values) {
+    if (v.path.rfind("loop.", 0) != 0) continue;  // the rest of a case file is not ours
+    std::smatch m;
+    if (std::regex_match(v.path, m, segment_value)) {
+      const std::size_t i = std::stoul(m[1]);
+      const std::string key = m[2];
+      if (out.segment_lines[i] == 0) out.segment_lines[i] = v.line;
+      out.lines["segment[" + std::to_string(i) + "]." + key] = v.line;
+      if (!segment_keys().count(key)) {
+        issues.push_back({where(v), v.text,
+                          "a key of a loop segment" + suggest(key, segment_names) +
+                              ": kind, name, length, incline, chain_weight, load_weight, "
+                              "resistance, factor, wrap, friction, pretension, loss"});
+        continue;
+      }
+      if (key == "kind") kinds[i] = &v;
+      given[i][key] = &v;
+      continue;
+    }
+    const std::string key = v.path.substr(5);
+    if (key.rfind("segment", 0) == 0) {
+      issues.push_back({where(v), v.text,
+                        "segments as an array of tables: [[loop.segment]] (double brackets), one "
+                        "per segment"});
+      continue;
+    }
+    const auto k = loop_keys().find(key);
+    if (k == loop_keys().end()) {
+      issues.push_back({where(v), v.text,
+                        "a key of [loop]" + suggest(key, loop_names) +
+                            ": speed, efficiency, min_tension, allowable_tension, name, and "
+                            "[[loop.segment]] tables"});
+      continue;
+    }
+    out.lines[key] = v.line;
+    if (key == "name") continue;
+    const auto x = read(v, k->second, issues);
+    if (!x) continue;
+    if (key == "speed") out.loop.speed = *x;
+    if (key == "efficiency") out.loop.efficiency = *x;
+    if (key == "min_tension") out.loop.min_tension = *x;
+    if (key == "allowable_tension") out.loop.allowable_tension = *x;
+  }
+  if (!out.lines.count("speed"))
+    issues.push_back({"loop.speed", "(missing)", "the chain speed v, e.g. \"0.5 m/s\""});
+  if (!out.lines.count("efficiency"))
+    issues.push_back({"loop.efficiency", "(missing)", "the drive efficiency η in (0, 1], e.g. 0.85"});
+
+  std::vector<std::string> kind_names;
+  for (const auto& [k, keys] : kind_keys()) kind_names.push_back(k);
+  for (std::size_t i = 0; i < count; ++i) {
+    Segment& s = out.loop.segments[i];
+    const std::string base = "loop.segment[" + std::to_string(i) + "]";
+    const std::string at =
+        out.segment_lines[i] ? " (line " + std::to_string(out.segment_lines[i]) + ")" : "";
+    if (!kinds[i]) {
+      issues.push_back({base + ".kind" + at, "(missing)",
+                        "the segment's kind: straight, turn, takeup or drive"});
+      continue;
+    }
+    const std::string kind = kinds[i]->text;
+    const auto kk = kind_keys().find(kind);
+    if (kinds[i]->type != io::CaseValue::Type::kString || kk == kind_keys().end()) {
+      issues.push_back({where(*kinds[i]), "'" + kind + "'",
+                        "straight, turn, takeup or drive" + suggest(kind, kind_names)});
+      continue;
+    }
+    kind_ok[i] = true;
+    s.kind = kind == "straight" ? SegmentKind::kStraight
+             : kind == "turn"   ? SegmentKind::kTurn
+             : kind == "takeup" ? SegmentKind::kTakeup
+                                : SegmentKind::kDrive;
+    const std::vector<std::string>& allowed = kk->second;
+    for (const auto& [key, v] : given[i]) {
+      if (key == "kind") continue;
+      if (key == "name") {
+        s.name = v->text;
+        continue;
+      }
+      if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+        std::string list;
+        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        issues.push_back({where(*v), v->text, "a key of a " + kind + " segment: " + list});
+        continue;
+      }
+      const auto x = read(*v, segment_keys().at(key), issues);
+      if (!x) continue;
+      if (key == "length") s.length = *x;
+      if (key == "incline") s.incline = *x;
+      if (key == "chain_weight") s.chain_weight = *x;
+      if (key == "load_weight") s.load_weight = *x;
+      if (key == "resistance") s.resistance = *x;
+      if (key == "factor") s.factor = *x;
+      if (key == "wrap") s.wrap = *x;
+      if (key == "friction") s.friction = *x;
+      if (key == "pretension") s.pretension = *x;
+      if (key == "loss") s.loss = *x;
+    }
+    // required keys (no default that would hide an omission; incline 0, load 0, loss 0 default)
+    auto require = [&](const char* key, const char* what) {
+      if (!given[i].count(key)) issues.push_back({base + "." + key + at, "(missing)", what});
+    };
+    if (s.kind == SegmentKind::kStraight) {
+      require("length", "the run's length L along its slope, e.g. \"30 m\" (bare: m)");
+      require("chain_weight", "the chain's weight per metre q0, e.g. \"150 N/m\" (bare: N/m)");
+      require("resistance", "the running resistance factor w of the run, e.g. 0.1");
+    }
+    if (s.kind == SegmentKind::kTakeup)
+      require("pretension", "the take-up's pretension S0, e.g. \"2 kN\" (bare: N)");
+  }
+
+  // the model's own checks, renamed to the file's paths and lines; only those not already found
+  // while reading (a value that failed to parse is left at its default)
+  std::set<std::string> reported;
+  for (const Issue& i : issues) reported.insert(i.field.substr(0, i.field.find(' ')));
+  for (Issue i : validate(out.loop)) {
+    if (i.field == "segments") {
+      i.field = "loop.segment";
+    } else {
+      const auto line = out.lines.find(i.field);
+      const std::string path = "loop." + i.field;
+      if (reported.count(path)) continue;
+      if (line != out.lines.end()) {
+        i.field = path + " (line " + std::to_string(line->second) + ")";
+      } else {
+        // a missing value: the segment's line
+        static const std::regex index(R"(^segment\[(\d+)\])");
+        std::smatch m;
+        int l = 0;
+        if (std::regex_search(i.field, m, index)) l = out.segment_lines.at(std::stoul(m[1]));
+        i.field = path + (l ? " (line " + std::to_string(l) + ")" : "");
+      }
+    }
+    // a segment whose kind could not be read already has its issue, and the counts of drives
+    // and take-ups are not known then
+    bool skip = false;
+    for (std::size_t k = 0; k < count; ++k)
+      if (!kind_ok[k] && (i.field == "loop.segment" ||
+                          i.field.rfind("loop.segment[" + std::to_string(k) + "]", 0) == 0))
+        skip = true;
+    if (!skip) issues.push_back(std::move(i));
+  }
+  throw_if_any(issues);
+  return out;
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+int run_loop(const LoopFlags& f) {
+  std::ifstream in(f.path, std::ios::binary);
+  if (!in) throw InputError({{"FILE", f.path, "a readable TOML file with a [loop] table"}});
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const io::CaseFile file = io::parse_case(buffer.str(), f.path);
+  const Parsed p = parse_loop(file);
+  const Loop& loop = p.loop;
+  const LoopResult r = solve(loop);
+
+  auto name_of = [&](std::size_t i) { return loop.segments[i].name; };
+  auto at = [&](const Extremum& e) {
+    return ordered_json{{"segment", e.segment},
+                        {"name", name_of(e.segment)},
+                        {"at", e.at_end ? "end" : "start"},
+                        {"s", e.s}};
+  };
+
+  std::string text;
+  if (f.format == "json") {
+    ordered_json j;
+    j["model"] = "strength.loop_contour";
+    j["source"] =
+        "000 §1.5 fig. 19 (qualitative); contour (point-by-point) traction method of conveyor "
+        "textbooks (Spivakovsky & Dyachkov, Conveyors and related equipment)";
+    const io::CaseValue* title = file.find("loop.name");
+    if (title) j["name"] = title->text;
+    j["speed"] = loop.speed;
+    j["efficiency"] = loop.efficiency;
+    ordered_json points = ordered_json::array(), segments = ordered_json::array();
+    for (std::size_t i = 0; i < r.segments.size(); ++i) {
+      const SegmentTension& t = r.segments[i];
+      const char* kind = to_string(loop.segments[i].kind);
+      points.push_back({{"segment", i}, {"name", name_of(i)}, {"kind", kind}, {"at", "start"},
+                        {"s", t.s_start}, {"tension", t.tension_in}});
+      points.push_back({{"segment", i}, {"name", name_of(i)}, {"kind", kind}, {"at", "end"},
+                        {"s", t.s_end}, {"tension", t.tension_out}});
+      segments.push_back({{"segment", i},
+                          {"name", name_of(i)},
+                          {"kind", kind},
+                          {"s_start", t.s_start},
+                          {"s_end", t.s_end},
+                          {"tension_in", t.tension_in},
+                          {"tension_out", t.tension_out},
+                          {"resistance", t.resistance}});
+    }
+    j["points"] = points;
+    j["segments"] = segments;
+    j["max_tension"] = r.max.tension;
+    j["max_tension_at"] = at(r.max);
+    j["min_tension"] = r.min.tension;
+    j["min_tension_at"] = at(r.min);
+    j["slack_tension"] = r.slack_tension;
+    j["tight_tension"] = r.tight_tension;
+    j["drive_force"] = r.drive_force;
+    j["power"] = r.power;
+    j["length"] = r.length;
+    ordered_json diags = ordered_json::array();
+    for (const Diagnostic& d : r.diagnostics)
+      diags.push_back({{"severity", to_string(d.severity)},
+                       {"code", d.code},
+                       {"message", d.message},
+                       {"value", d.value},
+                       {"limit", d.limit}});
+    j["diagnostics"] = diags;
+    j["units"] = {{"speed", "m/s"},        {"efficiency", "1"},     {"s", "m"},
+                  {"s_start", "m"},        {"s_end", "m"},          {"tension", "N"},
+                  {"tension_in", "N"},     {"tension_out", "N"},    {"resistance", "N"},
+                  {"max_tension", "N"},    {"min_tension", "N"},    {"slack_tension", "N"},
+                  {"tight_tension", "N"},  {"drive_force", "N"},    {"power", "W"},
+                  {"length", "m"},         {"value", "SI"},         {"limit", "SI"}};
+    text = j.dump(2) + "\n";
+  } else if (f.format == "csv") {
+    std::ostringstream csv;
+    csv << "segment,name,kind,at,s,tension\n";
+    for (std::size_t i = 0; i < r.segments.size(); ++i) {
+      const SegmentTension& t = r.segments[i];
+      const std::string head =
+          std::to_string(i) + "," + csv_field(name_of(i)) + "," + to_string(loop.segments[i].kind);
+      csv << head << ",start," << g(t.s_start, 12) << "," << g(t.tension_in, 12) << "\n";
+      csv << head << ",end," << g(t.s_end, 12) << "," << g(t.tension_out, 12) << "\n";
+    }
+    text = csv.str();
+  } else {
+    std::ostringstream table;
+    table << "Catena loop: chain tensions by the contour method (seed 000 §1.5, fig. 19)\n\n"
+          << "   #  segment               kind        s start [m]  s end [m]   S in [kN]  "
+             "S out [kN]  dS [kN]\n";
+    for (std::size_t i = 0; i < r.segments.size(); ++i) {
+      const SegmentTension& t = r.segments[i];
+      char line[256];
+      std::snprintf(line, sizeof line, "  %2zu  %-20.20s  %-10s %11.3f %10.3f %11.4g %11.4g %8.4g\n",
+                    i, name_of(i).c_str(), to_string(loop.segments[i].kind), t.s_start, t.s_end,
+                    t.tension_in / 1e3, t.tension_out / 1e3, t.resistance / 1e3);
+      table << line;
+    }
+    auto place = [&](const Extremum& e) {
+      return "segment " + std::to_string(e.segment) +
+             (name_of(e.segment).empty() ? "" : " '" + name_of(e.segment) + "'") +
+             (e.at_end ? " end" : " start") + ", s = " + g(e.s, 5) + " m";
+    };
+    table << "\n  tight side S_t " << g(r.tight_tension / 1e3, 5) << " kN, slack side S_s "
+          << g(r.slack_tension / 1e3, 5) << " kN\n"
+          << "  max tension  " << g(r.max.tension / 1e3, 5) << " kN at " << place(r.max) << "\n"
+          << "  min tension  " << g(r.min.tension / 1e3, 5) << " kN at " << place(r.min) << "\n"
+          << "  drive force  " << g(r.drive_force / 1e3, 5) << " kN; power "
+          << g(r.power / 1e3, 5) << " kW at v = " << g(loop.speed, 4)
+          << " m/s, eta = " << g(loop.efficiency, 4) << "\n";
+    for (const Diagnostic& d : r.diagnostics)
+      table << "  " << to_string(d.severity) << ": " << d.message << "\n";
+    text = table.str();
+  }
+  Outputs outputs;
+  if (!f.output.empty()) outputs.add("--output", f.output, text);
+  outputs.commit(f.output.empty() ? text : "");
+  return 0;
+}
+
+}  // namespace
+
+std::string loop_bare_unit(const std::string& path) {
+  const std::string key = path.substr(path.rfind('.') + 1);
+  const auto& keys = path.find("segment[") != std::string::npos ? segment_keys() : loop_keys();
+  const auto k = keys.find(key);
+  return k == keys.end() ? std::string() : std::string(k->second.bare);
+}
+
+std::function<int()> add_loop(CLI::App& app) {
+  auto f = std::make_shared<LoopFlags>();
+  CLI::App* c = app.add_subcommand(
+      "loop",
+      "Chain tensions around a conveyor loop by the contour method: every point, maximum, drive "
+      "force and power (seed 000 §1.5 fig. 19)");
+  c->add_option("FILE", f->path,
+                "TOML file with a [loop] table and [[loop.segment]] tables (a case file works)")
+      ->required();
+  c->add_option("--format", f->format, "table|json|csv")
+      ->check(CLI::IsMember({"table", "json", "csv"}));
+  c->add_option("-o,--output", f->output, "write the output to FILE");
+  return [f]() { return run_loop(*f); };
+}
+
+}  // namespace catena::cli
