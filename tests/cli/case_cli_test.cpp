@@ -75,6 +75,11 @@ TEST(CaseCli, EachExampleGivesWhatItsSubcommandGives) {
     EXPECT_EQ(wheel["analyses"]["pocketwheel-" + guide], direct_wheel) << guide;
   }
   EXPECT_EQ(wheel["case_sha256"].get<std::string>().size(), 64u);
+
+  // the conveyor loop: `catena loop` reads the [loop] table of the very case file
+  const auto loop = run_json("run " + kExamples + "/000_loop.toml");
+  const auto direct_loop = run_json("loop " + kExamples + "/000_loop.toml --format json");
+  EXPECT_EQ(loop["analyses"]["loop"], direct_loop);
 }
 
 TEST(CaseCli, ReportIsOneSelfContainedHtmlFile) {
