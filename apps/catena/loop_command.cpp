@@ -301,6 +301,13 @@ Parsed parse_loop(const io::CaseFile& file) {
   return out;
 }
 
+// At most `width` bytes of `text`, never cutting a UTF-8 sequence, padded to `width` bytes.
+std::string column(const std::string& text, std::size_t width) {
+  std::size_t n = std::min(text.size(), width);
+  while (n > 0 && n < text.size() && (static_cast<unsigned char>(text[n]) & 0xC0) == 0x80) --n;
+  return text.substr(0, n) + std::string(width - n, ' ');
+}
+
 std::string csv_field(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos) return text;
   std::string out = "\"";
@@ -399,8 +406,9 @@ int run_loop(const LoopFlags& f) {
     for (std::size_t i = 0; i < r.segments.size(); ++i) {
       const SegmentTension& t = r.segments[i];
       char line[256];
-      std::snprintf(line, sizeof line, "  %2zu  %-20.20s  %-10s %11.3f %10.3f %11.4g %11.4g %8.4g\n",
-                    i, name_of(i).c_str(), to_string(loop.segments[i].kind), t.s_start, t.s_end,
+      std::snprintf(line, sizeof line, "  %2zu  %s  %-10s %11.3f %10.3f %11.4g %11.4g %8.4g\n",
+                    i, column(name_of(i), 20).c_str(), to_string(loop.segments[i].kind), t.s_start,
+                    t.s_end,
                     t.tension_in / 1e3, t.tension_out / 1e3, t.resistance / 1e3);
       table << line;
     }

@@ -25,11 +25,17 @@ std::string field(std::size_t i, const char* name) {
   return "segment[" + std::to_string(i) + "]." + name;
 }
 
-// value within [lo, hi] (and finite); appends an Issue otherwise
+// value within [lo, hi] (and finite); appends an Issue otherwise (the strings are built only
+// then: validation runs on every solve)
 void in_range(std::vector<Issue>& out, const std::string& name, double value, double lo,
-              double hi, const char* unit, const std::string& expected) {
+              double hi, const char* unit, const char* expected) {
   if (!std::isfinite(value) || value < lo || value > hi)
     out.push_back({name, check::format_si(value, unit), expected});
+}
+void in_range(std::vector<Issue>& out, std::size_t i, const char* name, double value, double lo,
+              double hi, const char* unit, const char* expected) {
+  if (!std::isfinite(value) || value < lo || value > hi)
+    out.push_back({field(i, name), check::format_si(value, unit), expected});
 }
 
 std::string label(const Loop& loop, std::size_t i) {
@@ -70,13 +76,13 @@ std::vector<Issue> validate(const Loop& loop) {
         if (!(std::isfinite(s.length) && s.length > 0.0 && s.length <= 1e6))
           out.push_back({field(i, "length"), check::format_si(s.length, "m"),
                          "a length 0 < L ≤ 1000 km along the run"});
-        in_range(out, field(i, "incline"), s.incline, -kPi / 2, kPi / 2, "rad",
+        in_range(out, i, "incline", s.incline, -kPi / 2, kPi / 2, "rad",
                  "an incline β in [-90°, 90°] (positive rising in the travel direction)");
-        in_range(out, field(i, "chain_weight"), s.chain_weight, 0.0, 1e7, "N/m",
+        in_range(out, i, "chain_weight", s.chain_weight, 0.0, 1e7, "N/m",
                  "a chain weight per metre q0 in [0, 1e7] N/m");
-        in_range(out, field(i, "load_weight"), s.load_weight, 0.0, 1e7, "N/m",
+        in_range(out, i, "load_weight", s.load_weight, 0.0, 1e7, "N/m",
                  "a load weight per metre q in [0, 1e7] N/m (0 on the return run)");
-        in_range(out, field(i, "resistance"), s.resistance, 0.0, kMaxResistance, "",
+        in_range(out, i, "resistance", s.resistance, 0.0, kMaxResistance, "",
                  "a running resistance factor w in [0, 1]");
         break;
       case SegmentKind::kTurn: {
@@ -88,7 +94,7 @@ std::vector<Issue> validate(const Loop& loop) {
         } else if (s.factor) {
           // k < 1 would make a passive turn give energy back to the chain: an error, not a
           // diagnostic (no design has it; it is a typo such as 0.05 for 1.05)
-          in_range(out, field(i, "factor"), *s.factor, 1.0, kMaxFactor, "",
+          in_range(out, i, "factor", *s.factor, 1.0, kMaxFactor, "",
                    "a turn resistance factor k in [1, 10] (S_out = k·S_in; a passive turn "
                    "cannot lower the tension, so k ≥ 1)");
         } else if (euler) {
@@ -96,10 +102,10 @@ std::vector<Issue> validate(const Loop& loop) {
           if (!s.friction)
             out.push_back({field(i, "friction"), "(missing)", "a friction factor f with α"});
           if (s.wrap)
-            in_range(out, field(i, "wrap"), *s.wrap, 0.0, kMaxWrap, "rad",
+            in_range(out, i, "wrap", *s.wrap, 0.0, kMaxWrap, "rad",
                      "a wrap angle α in [0°, 360°]");
           if (s.friction)
-            in_range(out, field(i, "friction"), *s.friction, 0.0, kMaxFriction, "",
+            in_range(out, i, "friction", *s.friction, 0.0, kMaxFriction, "",
                      "a friction factor f in [0, 1]");
         } else {
           out.push_back({field(i, "factor"), "(missing)",
@@ -109,12 +115,12 @@ std::vector<Issue> validate(const Loop& loop) {
       }
       case SegmentKind::kTakeup:
         ++takeups;
-        in_range(out, field(i, "pretension"), s.pretension, 0.0, 1e9, "N",
+        in_range(out, i, "pretension", s.pretension, 0.0, 1e9, "N",
                  "a take-up pretension S0 in [0, 1e9] N");
         break;
       case SegmentKind::kDrive:
         ++drives;
-        in_range(out, field(i, "loss"), s.loss, 0.0, kMaxLoss, "",
+        in_range(out, i, "loss", s.loss, 0.0, kMaxLoss, "",
                  "a drive sprocket loss factor ξ in [0, 0.5]");
         if (i + 1 != n)
           out.push_back({field(i, "kind"), "drive",
