@@ -102,9 +102,15 @@ std::optional<double> read(const io::CaseValue& v, const Key& key, std::vector<I
     }
     return x;
   }
-  // a bare number takes the key's documented unit
-  const std::string text =
-      v.type == io::CaseValue::Type::kNumber ? v.text + " " + key.bare : v.text;
+  // a bare number (a TOML number, or a string holding only a number: "20") takes the key's
+  // documented unit, which for lengths (m) is not the kind's default (mm)
+  char* end = nullptr;
+  std::strtod(v.text.c_str(), &end);
+  while (end && (*end == ' ' || *end == '\t')) ++end;
+  const bool bare = v.type == io::CaseValue::Type::kNumber ||
+                    (end != v.text.c_str() && end && *end == '\0' &&
+                     v.text.find_first_not_of(" \t") != std::string::npos);
+  const std::string text = bare ? v.text + " " + key.bare : v.text;
   std::vector<Issue> found;
   const auto x = io::parse_quantity(text, key.kind, where(v), found);
   for (Issue& i : found) {

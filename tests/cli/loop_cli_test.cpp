@@ -47,7 +47,7 @@ factor = 1.05
 [[loop.segment]]
 kind = "straight"
 name = "carrying"
-length = "20000 mm"
+length = "20"
 chain_weight = 100
 load_weight = "400 N/m"
 resistance = 0.1
@@ -70,6 +70,7 @@ TEST(LoopCli, JsonCarriesTheContractFieldsInSi) {
   EXPECT_EQ(points[2]["name"], "return");
   EXPECT_EQ(points[3]["kind"], "straight");
   EXPECT_NEAR(points[3]["s"].get<double>(), 20.0, 1e-12);  // bare length: metres
+  EXPECT_NEAR(points[7]["s"].get<double>(), 40.0, 1e-12);  // "20" (a string) too
   EXPECT_NEAR(points[3]["tension"].get<double>(), 1200.0, kHandTol);
   EXPECT_NEAR(points[9]["tension"].get<double>(), 2305.2, kHandTol);
   EXPECT_NEAR(j["max_tension"].get<double>(), 2305.2, kHandTol);
