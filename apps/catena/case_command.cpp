@@ -704,7 +704,8 @@ std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
           {"contact", add_contact(app)},
           {"fretting", add_fretting(app)},
           {"warp", add_warp(app)},
-          {"engagement", add_engagement(app)}};
+          {"engagement", add_engagement(app)},
+          {"ring", add_ring(app)}};
 }
 
 std::function<int()> add_run(CLI::App& app) {

@@ -23,6 +23,13 @@ std::function<int()> add_warp(CLI::App& app);
 /// Registers `catena engagement`.
 std::function<int()> add_engagement(CLI::App& app);
 
+/// Registers `catena ring` (orthotropic ring link, seed 002).
+std::function<int()> add_ring(CLI::App& app);
+/// Register `capacity` (eq. (9), mass comparison) and `design` (sizing) as subcommands of the
+/// given `catena ring` App; the ring action runs the returned action when its subcommand parsed.
+std::function<int()> add_ring_capacity(CLI::App& ring);
+std::function<int()> add_ring_design(CLI::App& ring);
+
 /// Registers every analysis subcommand above on `app`; returns their actions by name. The case
 /// runner uses it too: a model added here (and described in case_command.cpp's registry) is
 /// reachable from case files and reports.
