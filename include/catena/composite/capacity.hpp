@@ -170,7 +170,7 @@ struct Design {
   bool has_steel = false;
   SteelPlateResult steel;
   double mass_ratio = 0.0;  ///< steel / composite (0 without steel)
-  std::vector<Diagnostic> diagnostics;
+  std::vector<Diagnostic> diagnostics;  ///< the chosen α's ring analysis, then the design's
 };
 
 /// Field names as the CLI flags: load, fibre_*, matrix_*, fibre_fraction, thickness, pitch,

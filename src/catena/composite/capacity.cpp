@@ -243,10 +243,12 @@ Design design(const DesignInput& d) {
   double best_mass = std::numeric_limits<double>::infinity();
   double lightest_any = std::numeric_limits<double>::infinity();
   bool any_feasible = false;
+  std::vector<std::vector<Diagnostic>> ring_diagnostics;
   for (std::size_t i = 0; i < alphas.size(); ++i) {
     DesignPoint p;
     p.alpha = alphas[i];
     const Result res = analyse(reference_ring(l, p.alpha), d.analysis);
+    ring_diagnostics.push_back(res.diagnostics);
     p.k = res.stress_concentration;
     p.sum_sigma_r = res.sum_sigma_r;
     p.leg_area = d.load * p.k / (2.0 * l.strength);
@@ -275,6 +277,9 @@ Design design(const DesignInput& d) {
     }
     out.scan.push_back(p);
   }
+  // the ring analysis's own findings (e.g. contact tension under bilateral contact) for the
+  // chosen α
+  out.diagnostics = ring_diagnostics[out.best];
   if (!any_feasible) {
     const DesignPoint& p = out.scan[out.best];
     out.diagnostics.push_back(
