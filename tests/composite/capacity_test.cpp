@@ -333,6 +333,32 @@ TEST(Design, MonotoneTrends) {
   for (std::size_t i = 1; i < s.scan.size(); ++i) EXPECT_LT(s.scan[i].k, s.scan[i - 1].k);
 }
 
+TEST(Design, WideRandomInputsGiveFiniteConsistentDesigns) {
+  // fibres from soft to stiff, any matrix softer than the fibre, V_f over its whole range,
+  // loads from 100 N to 1 MN: finite results, A = PK/(2σ_c), r2 = A/((1 − α)t), valid rings
+  std::mt19937 gen(42);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int k = 0; k < 25; ++k) {
+    DesignInput d;
+    d.load = std::pow(10.0, 2.0 + 4.0 * u(gen));
+    d.fibre = {std::pow(10.0, 10.0 + 1.5 * u(gen)), 0.45 * u(gen), 5e8 + 4.5e9 * u(gen),
+               1000 + 2000 * u(gen)};
+    d.matrix = {d.fibre.modulus * (0.005 + 0.5 * u(gen)), 0.45 * u(gen), 900 + 600 * u(gen)};
+    d.fibre_fraction = 0.01 + 0.89 * u(gen);
+    d.thickness = 1e-3 + 2e-2 * u(gen);
+    d.pitch = 1.0;
+    d.alphas = {0.2 + 0.7 * u(gen)};
+    const Design out = design(d);
+    EXPECT_TRUE(catena::composite::validate(ring_of(out.lamina, d.alphas[0], 0.01, 1e-3)).empty());
+    EXPECT_GE(out.lamina.E_phi, out.lamina.E_r * (1 - 1e-12));
+    const DesignPoint& p = out.scan[0];
+    ASSERT_TRUE(std::isfinite(p.k) && p.k >= 1.0) << k;
+    EXPECT_NEAR(p.leg_area, d.load * p.k / (2 * out.lamina.strength), 1e-12 * p.leg_area);
+    EXPECT_NEAR(p.outer_radius * (1 - p.alpha) * d.thickness, p.leg_area, 1e-12 * p.leg_area);
+    EXPECT_TRUE(std::isfinite(p.mass.total) && p.mass.total > 0) << k;
+  }
+}
+
 TEST(Design, PitchTooShortIsADiagnosticNotAnError) {
   DesignInput d = paper_design();
   d.pitch = 2e-3;
