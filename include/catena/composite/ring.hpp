@@ -62,9 +62,10 @@ double inner_coefficient(int n);
 
 /// Exact per-harmonic solution (powers ρ^λ, λ² from a quadratic) at radii `rho`.
 Harmonic solve_exact(const Ring& ring, int n, const std::vector<double>& rho);
-/// NOT VALIDATED (work in progress, see docs): the paper's sweep (6)–(8) with m intervals;
-/// its second-order test against solve_exact does not pass yet (NaN / O(1e-3) errors).  `rho` must be nodes of the grid
-/// (α + i(1 − α)/m). m must be even (Simpson's rule for the section integral).
+/// The paper's finite-difference sweep (6)–(8) with m intervals: central differences inside,
+/// second-order one-sided differences at both edges, block (2×2) forward elimination and back
+/// substitution. Second order in h (RingSweep tests). `rho` must be nodes of the grid
+/// (α + i(1 − α)/m); m must be even (Simpson's rule for the section integral).
 Harmonic solve_sweep(const Ring& ring, int n, int m, const std::vector<double>& rho);
 
 struct Summary {
