@@ -261,6 +261,38 @@ TEST(RingSweep, DefaultsAgreeWithTheExactSolverAndRichardsonEstimatesTheError) {
     }
 }
 
+// Unilateral contact: where the bilateral solution pulls, the ring separates. The minimum of
+// strain energy over the larger admissible set is lower, and with the energy = ½·P·δ identity
+// (Clapeyron; no work where the ring is free) the load for the same opening cannot rise.
+// Pressure no longer pulls (to the collocation's resolution), equilibrium still holds, and the
+// contact angle is stable under refinement.
+TEST(RingUnilateral, SeparatesWhereTheBilateralPullsAndCarriesNoMore) {
+  constexpr double kPullTol = 0.03;  // [-] of the mean stress, between collocation points
+  for (double er : {0.25, 1.0}) {
+    Ring ring = paper_ring(0.472, er);
+    if (er == 1.0) ring.G = ring.E_phi / (2 * (1 + ring.nu_phi_r));
+    Options o;
+    o.harmonics = 160;
+    const Result bi = analyse(ring, o);
+    o.unilateral = true;
+    const Result uni = analyse(ring, o);
+    EXPECT_LT(uni.contact_angle, 0.5 * M_PI);
+    EXPECT_GT(uni.contact_angle, 0.25 * M_PI);
+    EXPECT_LE(uni.load, bi.load);
+    EXPECT_NEAR(uni.load, uni.load_contact, 1e-9 * uni.load);
+    for (std::size_t j = 0; j < uni.contact_pressure.size(); ++j) {
+      EXPECT_GT(uni.contact_pressure[j], -kPullTol * uni.mean_stress) << uni.contact_phi[j];
+      if (uni.contact_phi[j] > uni.contact_angle + 0.05) {  // well inside the free zone
+        EXPECT_NEAR(uni.contact_pressure[j], 0.0, kPullTol * uni.mean_stress);
+      }
+    }
+    o.harmonics = 320;
+    const Result fine = analyse(ring, o);
+    EXPECT_NEAR(fine.contact_angle, uni.contact_angle, 1.5 * M_PI / 180) << er;
+    EXPECT_NEAR(fine.load, uni.load, 2e-3 * uni.load) << er;
+  }
+}
+
 TEST(RingValidate, OptionsListEveryProblem) {
   Options o;
   o.harmonics = 1;

@@ -33,6 +33,10 @@ struct Options {
   int harmonics = 0;  ///< highest even harmonic N; 0: default_harmonics(ring)
   int nodes = 0;      ///< sweep intervals m; 0: default_nodes(ring, N)
   int points = 41;    ///< output radii, equally spaced from r1 to r2 (odd, ≥ 21)
+  /// Unilateral contact: where the bilateral solution would have the half-disc pull on the ring,
+  /// the ring separates (σ_r = τ = 0 there, no penetration), found by an active-set iteration
+  /// over collocation points (one per harmonic).
+  bool unilateral = false;
 };
 
 std::vector<Issue> validate(const Ring& ring);
@@ -91,6 +95,10 @@ struct Result {
   double max_shear = 0.0;             ///< [Pa] max |τ| over the quarter ring grid
   double max_shear_r = 0.0, max_shear_phi = 0.0;  ///< [m], [rad] where
   double sum_sigma_r = 0.0;  ///< ∫_0^{π/2} σ̃_r cos φ dφ with σ̃_r = −σ_r(r1)/mean (eq. (9))
+  /// Unilateral contact: the half-disc touches the ring for φ < contact_angle (π/2: everywhere;
+  /// bilateral: always π/2), found after `contact_iterations` active-set passes.
+  double contact_angle = 0.0;  ///< [rad]
+  int contact_iterations = 0;
   std::vector<Diagnostic> diagnostics;
   Summary summary;
 };

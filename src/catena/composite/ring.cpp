@@ -74,6 +74,96 @@ M2 inv(const M2& p) {
 }
 M2 neg(const M2& p) { return {-p.a, -p.b, -p.c, -p.d}; }
 
+/// Dense real solve with partial pivoting (row-major n×n `a`); false if singular.
+bool solve_real(std::vector<double> a, std::vector<double>& b) {
+  const std::size_t n = b.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t p = k;
+    for (std::size_t i = k + 1; i < n; ++i)
+      if (std::abs(a[i * n + k]) > std::abs(a[p * n + k])) p = i;
+    if (!(std::abs(a[p * n + k]) > 0.0)) return false;
+    if (p != k) {
+      for (std::size_t j = 0; j < n; ++j) std::swap(a[k * n + j], a[p * n + j]);
+      std::swap(b[k], b[p]);
+    }
+    const double piv = a[k * n + k];
+    for (std::size_t i = k + 1; i < n; ++i) {
+      const double f = a[i * n + k] / piv;
+      if (f == 0.0) continue;
+      for (std::size_t j = k; j < n; ++j) a[i * n + j] -= f * a[k * n + j];
+      b[i] -= f * b[k];
+    }
+  }
+  for (std::size_t k = n; k-- > 0;) {
+    double s = b[k];
+    for (std::size_t j = k + 1; j < n; ++j) s -= a[k * n + j] * b[j];
+    b[k] = s / a[k * n + k];
+  }
+  return true;
+}
+
+/// Unilateral contact (seed 002 extended): each harmonic's solution for the inner displacement
+/// Δc_n is rescaled by s_n so that, at collocation angles φ_j = j(π/2)/(K − 1), either the ring
+/// follows the half-disc (Σ s_n Δc_n cos nφ_j = Δ cos φ_j, contact) or is free (pressure
+/// −Σ s_n σ_r,n(α) cos nφ_j = 0, separated). Active set: contact points with tension leave,
+/// separated points that would penetrate (u < Δ cos φ) return. Returns the scales; sets the
+/// contact angle and the pass count.
+std::vector<double> unilateral_scales(const std::vector<Harmonic>& hs, double delta,
+                                      double& contact_angle, int& passes) {
+  const std::size_t k = hs.size();
+  std::vector<double> phi(k), u0(k), scale(k, 1.0);
+  for (std::size_t j = 0; j < k; ++j) {
+    phi[j] = 0.5 * kPi * static_cast<double>(j) / static_cast<double>(k - 1);
+    u0[j] = delta * std::cos(phi[j]);
+  }
+  auto disp = [&](std::size_t j, const std::vector<double>& s) {
+    double u = 0;
+    for (std::size_t n = 0; n < k; ++n)
+      u += s[n] * delta * inner_coefficient(hs[n].n) * std::cos(hs[n].n * phi[j]);
+    return u;
+  };
+  auto pressure = [&](std::size_t j, const std::vector<double>& s) {
+    double p = 0;
+    for (std::size_t n = 0; n < k; ++n) p -= s[n] * hs[n].inner_sigma_r * std::cos(hs[n].n * phi[j]);
+    return p;
+  };
+  std::vector<char> contact(k, 1);
+  constexpr int kMaxPasses = 100;
+  for (passes = 1; passes <= kMaxPasses; ++passes) {
+    std::vector<double> a(k * k), b(k);
+    for (std::size_t j = 0; j < k; ++j) {
+      for (std::size_t n = 0; n < k; ++n) {
+        const double c = std::cos(hs[n].n * phi[j]);
+        a[j * k + n] = contact[j] ? delta * inner_coefficient(hs[n].n) * c
+                                  : -hs[n].inner_sigma_r * c;
+      }
+      b[j] = contact[j] ? u0[j] : 0.0;
+    }
+    if (!solve_real(a, b)) break;
+    scale = b;
+    bool changed = false;
+    double pscale = 0;
+    for (std::size_t j = 0; j < k; ++j) pscale = std::max(pscale, std::abs(pressure(j, scale)));
+    for (std::size_t j = 0; j < k; ++j) {
+      if (contact[j] && pressure(j, scale) < -1e-12 * pscale) {
+        contact[j] = 0;
+        changed = true;
+      } else if (!contact[j] && disp(j, scale) < u0[j] - 1e-12 * delta) {
+        contact[j] = 1;
+        changed = true;
+      }
+    }
+    if (!changed) break;
+  }
+  contact_angle = 0.5 * kPi;
+  for (std::size_t j = 0; j < k; ++j)
+    if (!contact[j]) {
+      contact_angle = j == 0 ? 0.0 : 0.5 * (phi[j - 1] + phi[j]);
+      break;
+    }
+  return scale;
+}
+
 double simpson(const std::vector<double>& f, double h) {
   const std::size_t m = f.size() - 1;
   double s = f.front() + f.back();
@@ -429,6 +519,25 @@ Result analyse(const Ring& ring, const Options& options) {
     hs.push_back(std::move(hm));
     if (sweep) coarse.push_back(solve_sweep(ring, n, m / 2, rho));
   }
+  res.contact_angle = 0.5 * kPi;
+  if (options.unilateral) {
+    const double delta = 0.5 * ring.gap / ring.outer_radius;
+    auto rescale = [](std::vector<Harmonic>& list, const std::vector<double>& sc) {
+      for (std::size_t k = 0; k < list.size(); ++k) {
+        Harmonic& hm = list[k];
+        for (auto* v : {&hm.sigma_r, &hm.sigma_phi, &hm.tau})
+          for (double& x : *v) x *= sc[k];
+        hm.section_integral *= sc[k];
+        hm.inner_sigma_r *= sc[k];
+      }
+    };
+    rescale(hs, unilateral_scales(hs, delta, res.contact_angle, res.contact_iterations));
+    if (!coarse.empty()) {  // the coarse sweep finds its own contact zone (Richardson)
+      double angle = 0;
+      int passes = 0;
+      rescale(coarse, unilateral_scales(coarse, delta, angle, passes));
+    }
+  }
   // sums at φ = 0 (cos nφ = 1) and φ = π/2 (cos nφ = (−1)^{n/2}); τ vanishes on both sections
   const double r2 = ring.outer_radius;
   auto sum_sections = [&](const std::vector<Harmonic>& list, std::size_t upto,
@@ -518,13 +627,24 @@ Result analyse(const Ring& ring, const Options& options) {
   // diagnostics: tension in the contact, corner singularity
   double pmin = 0;
   for (double p : res.contact_pressure) pmin = std::min(pmin, p);
-  if (pmin < 0) {
+  if (pmin < 0 && !options.unilateral) {
+    double at = 0;
+    for (std::size_t j = 0; j < res.contact_pressure.size(); ++j)
+      if (res.contact_pressure[j] < 0) {
+        at = res.contact_phi[j];
+        break;
+      }
     res.diagnostics.push_back(
         {Diagnostic::Severity::kWarning, "composite.contact_tension",
-         "the half-disc pulls on the ring somewhere (negative contact pressure): bilateral "
-         "contact assumed by eq. (2); --unilateral is not implemented",
+         "the half-disc pulls on the ring (negative contact pressure, value: the least, Pa) from "
+         "phi = " + std::to_string(at * 180.0 / kPi).substr(0, 5) +
+             " deg: eq. (2) assumes bilateral contact; --unilateral lets the ring separate there",
          pmin, 0.0});
   }
+  if (options.unilateral && res.contact_iterations > 100)
+    res.diagnostics.push_back({Diagnostic::Severity::kWarning, "composite.unilateral_not_settled",
+                               "the contact zone did not settle in 100 active-set passes",
+                               static_cast<double>(res.contact_iterations), 100.0});
   res.diagnostics.push_back(
       {Diagnostic::Severity::kInfo, "composite.corner_singularity",
        "sigma_phi at (r1, pi/2), where the half-discs meet, grows without bound with the number "
