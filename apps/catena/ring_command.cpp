@@ -24,7 +24,7 @@ using namespace catena::composite;
 struct RingFlags {
   std::string inner_radius, outer_radius, thickness, E_r, E_phi, G, nu_phi_r, gap;
   std::string harmonics, nodes, points = "41", method = "exact";
-  bool unilateral = false;
+  bool unilateral = false, field = false;
   std::string format = "table", output;
 };
 
@@ -130,6 +130,13 @@ int run_ring(const RingFlags& f) {
                    {"sigma_phi", r.corner_sigma_phi},
                    {"harmonics", r.summary.harmonics},
                    {"note", "singular where the half-discs meet: grows with the harmonic count"}};
+    if (f.field)
+      j["field"] = {{"r", r.r},
+                    {"phi", r.contact_phi},
+                    {"sigma_r", r.field_sigma_r},
+                    {"sigma_phi", r.field_sigma_phi},
+                    {"tau", r.field_tau},
+                    {"layout", "[phi index][r index]"}};
     j["max_shear"] = {{"tau", r.max_shear}, {"r", r.max_shear_r}, {"phi", r.max_shear_phi}};
     j["sum_sigma_r"] = r.sum_sigma_r;
     j["load_contact"] = r.load_contact;
@@ -231,6 +238,8 @@ std::function<int()> add_ring(CLI::App& app) {
       ->check(CLI::IsMember({"exact", "sweep"}));
   c->add_flag("--unilateral", f->unilateral,
               "let the ring separate where the half-disc would pull on it");
+  c->add_flag("--field", f->field,
+              "JSON: add the stresses over the quarter ring (91 angles x the output radii)");
   c->add_option("--format", f->format, "table|json|csv")
       ->check(CLI::IsMember({"table", "json", "csv"}));
   c->add_option("--output", f->output, "write the output to FILE");

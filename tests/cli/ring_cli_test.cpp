@@ -77,6 +77,17 @@ TEST(RingCli, UnilateralSeparatesAndCarriesLess) {
   for (const auto& d : b["diagnostics"]) EXPECT_NE(d["code"], "composite.contact_tension");
 }
 
+TEST(RingCli, FieldIsOptIn) {
+  const CliRun plain = run(kRing + "--harmonics 40 --points 21 --format json");
+  const CliRun field = run(kRing + "--harmonics 40 --points 21 --field --format json");
+  ASSERT_EQ(field.status, 0) << field.err;
+  EXPECT_FALSE(nlohmann::json::parse(plain.out).contains("field"));
+  const auto j = nlohmann::json::parse(field.out);
+  ASSERT_EQ(j["field"]["phi"].size(), j["field"]["sigma_phi"].size());
+  EXPECT_EQ(j["field"]["sigma_phi"][0].size(), 21u);
+  EXPECT_EQ(j["field"]["tau"][0][0], 0.0);  // τ = 0 on the symmetry section φ = 0
+}
+
 TEST(RingCli, CsvAndTable) {
   const CliRun csv = run(kRing + "--harmonics 60 --points 21 --format csv");
   ASSERT_EQ(csv.status, 0) << csv.err;

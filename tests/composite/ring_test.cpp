@@ -293,6 +293,32 @@ TEST(RingUnilateral, SeparatesWhereTheBilateralPullsAndCarriesNoMore) {
   }
 }
 
+// The quarter-ring field is the same series: its φ = 0 and φ = π/2 rows are the sections, its
+// inner column is minus the contact pressure, τ vanishes on both symmetry sections, and σ_r and τ
+// vanish on the free outer edge.
+TEST(RingField, AgreesWithSectionsContactAndFreeEdges) {
+  const Ring ring = paper_ring(0.6, 0.5);
+  Options o;
+  o.harmonics = 120;
+  const Result r = analyse(ring, o);
+  ASSERT_EQ(r.field_sigma_phi.size(), r.contact_phi.size());
+  const double tol = 1e-9 * r.mean_stress * 100;
+  const std::size_t last = r.contact_phi.size() - 1, np = r.r.size();
+  for (std::size_t i = 0; i < np; ++i) {
+    EXPECT_NEAR(r.field_sigma_phi[0][i], r.sigma_phi_0[i], tol);
+    EXPECT_NEAR(r.field_sigma_r[0][i], r.sigma_r_0[i], tol);
+    EXPECT_NEAR(r.field_sigma_phi[last][i], r.sigma_phi_90[i], tol);
+    EXPECT_NEAR(r.field_tau[0][i], 0.0, tol);
+    EXPECT_NEAR(r.field_tau[last][i], 0.0, tol);
+  }
+  for (std::size_t j = 0; j <= last; ++j) {
+    EXPECT_NEAR(r.field_sigma_r[j][0], -r.contact_pressure[j], tol);
+    EXPECT_NEAR(r.field_sigma_r[j][np - 1], 0.0, 1e-6 * r.mean_stress);
+    EXPECT_NEAR(r.field_tau[j][np - 1], 0.0, 1e-6 * r.mean_stress);
+    EXPECT_NEAR(r.field_tau[j][0], 0.0, 1e-6 * r.mean_stress);  // smooth half-discs
+  }
+}
+
 TEST(RingValidate, OptionsListEveryProblem) {
   Options o;
   o.harmonics = 1;

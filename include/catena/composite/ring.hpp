@@ -87,6 +87,8 @@ struct Result {
   std::vector<double> sigma_r_90, sigma_phi_90, tau_90;  ///< [Pa] section φ = π/2
   std::vector<double> contact_phi;                       ///< [rad] 0..π/2
   std::vector<double> contact_pressure;                  ///< [Pa] −σ_r(r1, φ); < 0 is tension
+  /// [Pa] the stresses over the quarter ring: [j][i] at φ = contact_phi[j], r = r[i]
+  std::vector<std::vector<double>> field_sigma_r, field_sigma_phi, field_tau;
   double load = 0.0;          ///< [N] P from σ_φ on the two φ = π/2 sections
   double load_contact = 0.0;  ///< [N] P from the contact pressure (equilibrium check)
   double mean_stress = 0.0;   ///< [Pa] P / (2 (r2 − r1) t)

@@ -583,15 +583,27 @@ Result analyse(const Ring& ring, const Options& options) {
     for (const Harmonic& hm : hs) p -= hm.inner_sigma_r * std::cos(hm.n * phi);
     res.contact_phi.push_back(phi);
     res.contact_pressure.push_back(p);
+    std::vector<double> fr(np), fp(np), ft(np);
     for (std::size_t i = 0; i < np; ++i) {
-      double t = 0;
-      for (const Harmonic& hm : hs) t += hm.tau[i] * std::sin(hm.n * phi);
+      double t = 0, sr = 0, sp = 0;
+      for (const Harmonic& hm : hs) {
+        const double c = std::cos(hm.n * phi);
+        t += hm.tau[i] * std::sin(hm.n * phi);
+        sr += hm.sigma_r[i] * c;
+        sp += hm.sigma_phi[i] * c;
+      }
+      fr[i] = sr;
+      fp[i] = sp;
+      ft[i] = t;
       if (std::abs(t) > std::abs(res.max_shear)) {
         res.max_shear = t;
         res.max_shear_r = res.r[i];
         res.max_shear_phi = phi;
       }
     }
+    res.field_sigma_r.push_back(std::move(fr));
+    res.field_sigma_phi.push_back(std::move(fp));
+    res.field_tau.push_back(std::move(ft));
   }
   const double cutoff = alpha + kCornerFraction * (1.0 - alpha) - 1e-12;
   double smax = -1e300;
