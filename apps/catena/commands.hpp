@@ -22,9 +22,9 @@ std::function<int()> add_fretting(CLI::App& app);
 std::function<int()> add_warp(CLI::App& app);
 /// Registers `catena engagement`.
 std::function<int()> add_engagement(CLI::App& app);
-
-/// Registers `catena ring` (orthotropic ring link, seed 002).
+/// Registers `catena ring` (seed 002 composite link).
 std::function<int()> add_ring(CLI::App& app);
+
 /// Register `capacity` (eq. (9), mass comparison) and `design` (sizing) as subcommands of the
 /// given `catena ring` App; the ring action runs the returned action when its subcommand parsed.
 std::function<int()> add_ring_capacity(CLI::App& ring);
