@@ -243,7 +243,17 @@ std::function<int()> add_ring(CLI::App& app) {
   c->add_option("--format", f->format, "table|json|csv")
       ->check(CLI::IsMember({"table", "json", "csv"}));
   c->add_option("--output", f->output, "write the output to FILE");
-  return [f]() { return run_ring(*f); };
+  // `catena ring capacity` (eq. 9, the mass comparison) and `catena ring design` (sizing):
+  // ring_capacity_command.cpp; the ring's own flags stay optional at parse time for them
+  auto cap = add_ring_capacity(*c);
+  auto des = add_ring_design(*c);
+  CLI::App* cap_app = c->get_subcommand("capacity");
+  CLI::App* des_app = c->get_subcommand("design");
+  return [f, cap, des, cap_app, des_app]() {
+    if (cap_app->parsed()) return cap();
+    if (des_app->parsed()) return des();
+    return run_ring(*f);
+  };
 }
 
 }  // namespace catena::cli
