@@ -16,6 +16,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "catena/io/case_file.hpp"
 #include "catena/io/report.hpp"
@@ -123,6 +124,8 @@ ordered_json column(const ordered_json& rows, const std::string& key) {
   for (const auto& row : rows) out.push_back(row.contains(key) ? row[key] : ordered_json());
   return out;
 }
+
+std::string format_value(const ordered_json& v, double scale);  // below, with the outputs
 
 const std::vector<AnalysisSpec>& analysis_specs() {
   static const std::vector<AnalysisSpec> specs = {
@@ -270,6 +273,47 @@ const std::vector<AnalysisSpec>& analysis_specs() {
            c.traces.push_back({name, xy.first, xy.second});
          }
          s.charts.push_back(c);
+       },
+       {{"rolling-hinge", {{"--hinge", "rolling"}, {}}},
+        {"sliding-hinge", {{"--hinge", "sliding"}, {"plate_radius", "roller_radius"}}}}},
+      {"strength",
+       {"strength"},
+       "Strength of the roller and plates: M and Q diagrams, safety factors (seed 000 §1.5)",
+       "docs/models/strength.md",
+       {"rolling-hinge", "sliding-hinge"},
+       {},
+       {},
+       [](const ordered_json& r, io::ReportSection& s) {
+         if (r.contains("checks") && r["checks"].is_array()) {
+           io::ReportGrid grid{"Safety factors",
+                               {"check", "section", "stress [MPa]", "allowable [MPa]", "n",
+                                "required", "ok"},
+                               {},
+                               {}};
+           for (const ordered_json& c : r["checks"]) {
+             grid.rows.push_back({c.value("name", std::string()), c.value("section", std::string()),
+                                  format_value(c["stress"], 1e-6),
+                                  format_value(c["allowable"], 1e-6),
+                                  format_value(c["safety_factor"], 1.0),
+                                  format_value(c["required"], 1.0), format_value(c["ok"], 1.0)});
+           }
+           s.grids.push_back(std::move(grid));
+         }
+         if (!r.contains("diagrams") || !r["diagrams"].is_object()) return;
+         const ordered_json& d = r["diagrams"];
+         for (const auto& [key, title, unit, scale] :
+              {std::tuple<const char*, const char*, const char*, double>{
+                   "M", "Bending moment along the roller", "M [N·m]", 1.0},
+               {"Q", "Shear force along the roller", "Q [kN]", 1e-3}}) {
+           io::ReportChart c;
+           c.title = title;
+           c.x_label = "z [mm]";
+           c.y_label = unit;
+           for (auto it = d.begin(); it != d.end(); ++it)
+             c.traces.push_back({it.key(), numbers(it.value()["x"], 1e3),
+                                 numbers(it.value()[key], scale)});
+           s.charts.push_back(c);
+         }
        },
        {{"rolling-hinge", {{"--hinge", "rolling"}, {}}},
         {"sliding-hinge", {{"--hinge", "sliding"}, {"plate_radius", "roller_radius"}}}}},
@@ -424,7 +468,7 @@ CaseRun run_case(const io::CaseFile& file) {
   if (wanted.empty() && file.find("analyses") == nullptr) {
     issues.push_back({"analyses", "(missing)",
                       "at least one [analyses.<name>] table; names: pocketwheel, hinge, "
-                      "hinge_sweep, contact, fretting, engagement, warp"});
+                      "hinge_sweep, contact, fretting, engagement, warp, strength"});
   }
   struct Planned {
     const AnalysisSpec* spec;
@@ -443,7 +487,7 @@ CaseRun run_case(const io::CaseFile& file) {
     if (it == specs.end()) {
       issues.push_back({"analyses." + name, "(table)",
                         "an analysis Catena has: pocketwheel, hinge, hinge_sweep, contact, "
-                        "fretting, engagement, warp" +
+                        "fretting, engagement, warp, strength" +
                             suggest(name, spec_names)});
       continue;
     }
@@ -704,7 +748,8 @@ std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
           {"contact", add_contact(app)},
           {"fretting", add_fretting(app)},
           {"warp", add_warp(app)},
-          {"engagement", add_engagement(app)}};
+          {"engagement", add_engagement(app)},
+          {"strength", add_strength(app)}};
 }
 
 std::function<int()> add_run(CLI::App& app) {

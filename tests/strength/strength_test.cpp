@@ -62,7 +62,7 @@ TEST(Strength, SymmetricLayoutOneMomentByHand) {
   EXPECT_NEAR(e.moment_at, 0.028, 1e-12);
   EXPECT_NEAR(e.shear, 15e3, 1e-9);
   // σ = M/W, W = π d³/32
-  const Result r = check(in);
+  const Result r = assess(in);
   EXPECT_NEAR(find(r, "roller.bending", 1).stress, 420.0 / (kPi * 0.04 * 0.04 * 0.04 / 32.0),
               1e-3);
   EXPECT_NEAR(find(r, "roller.shear", 1).stress, 4.0 / 3.0 * 15e3 / (kPi * 0.04 * 0.04 / 4.0),
@@ -214,7 +214,7 @@ TEST(Strength, ShearFactorMatchesJourawskiOnTheNeutralAxis) {
 TEST(Strength, SlidingContactIsEquation23) {
   Input in = example();
   in.hinge.contact_angle = 2.0;
-  const Result r = check(in);
+  const Result r = assess(in);
   // most loaded plate: 15 kN on 8 mm; c = d sin(1), p = N/(c B)
   EXPECT_NEAR(r.contact.force, 15e3, 1e-9);
   EXPECT_NEAR(r.contact.c, 0.04 * std::sin(1.0), 1e-15);
@@ -228,7 +228,7 @@ TEST(Strength, RollingContactIsHertzAndEquation23IsItsMean) {
   in.hinge.kind = HingeKind::kRolling;
   in.hinge.r1 = 0.034;
   in.hinge.r2 = 0.0354;
-  const Result r = check(in);
+  const Result r = assess(in);
   ASSERT_TRUE(r.contact.hertz);
   // against core/hertz and against Johnson's formulas written out here
   const catena::Elastic steel{210e9, 0.3};
@@ -251,7 +251,7 @@ TEST(Strength, PlateSectionsByHand) {
   in.hinge.stress_concentration = 2.0;
   in.hinge.hole_diameter = 0.041;
   in.material.plate_ultimate = 700e6;
-  const Result r = check(in);
+  const Result r = assess(in);
   // the largest plate force is S/2 = 15 kN on an 8 mm plate
   EXPECT_NEAR(find(r, "plate.tension").stress, 2.0 * 15e3 / ((0.090 - 0.041) * 0.008), 1e-3);
   EXPECT_NEAR(find(r, "plate.tension_ultimate").safety_factor,
@@ -264,7 +264,7 @@ TEST(Strength, PlateSectionsByHand) {
 TEST(Strength, FailingChecksGetDiagnosticsWithTheLimit) {
   Input in = example();
   in.material.roller_yield = 80e6;  // σ_b = 66.8 MPa in layout 1: n = 1.2 < 1.5
-  const Result r = check(in);
+  const Result r = assess(in);
   const Check& c = find(r, "roller.bending", 1);
   EXPECT_FALSE(c.ok);
   EXPECT_NEAR(c.safety_factor, 80e6 / c.stress, 1e-12);
@@ -312,7 +312,7 @@ TEST(Strength, PropertyRandomInputs) {
     in.loads.load_height = glo + 0.5 * in.loads.tooth_width +
                            (ghi - glo - in.loads.tooth_width) * u(rng);
     ASSERT_TRUE(validate(in).empty()) << trial;
-    const Result r = check(in);
+    const Result r = assess(in);
     const double scale = in.loads.tension;
     const double arm = in.hinge.heights[3] - in.hinge.heights[0] + in.hinge.widths[3];
     for (const LayoutResult& lr : r.layouts) {
@@ -332,7 +332,7 @@ TEST(Strength, PropertyRandomInputs) {
     Input twice = in;
     twice.loads.tension *= 2;
     twice.loads.tooth_force *= 2;
-    const Result r2 = check(twice);
+    const Result r2 = assess(twice);
     ASSERT_EQ(r2.checks.size(), r.checks.size());
     for (std::size_t i = 0; i < r.checks.size(); ++i) {
       if (!std::isfinite(r.checks[i].safety_factor)) continue;
@@ -360,7 +360,7 @@ TEST(Strength, ValidateListsEveryProblem) {
   for (const char* f : {"hole_diameter", "end_distance", "heights", "bore", "tooth_force",
                         "load_height", "roller_yield", "allowable_pressure", "safety_factor"})
     EXPECT_TRUE(fields.count(f)) << f;
-  EXPECT_THROW(check(in), catena::InputError);
+  EXPECT_THROW(assess(in), catena::InputError);
   // a rolling hinge needs R2 > R1 and [σ_H]
   Input roll = example();
   roll.hinge.kind = HingeKind::kRolling;

@@ -165,7 +165,8 @@ struct Result {
   std::vector<Diagnostic> diagnostics;
 };
 
-/// Runs every check; throws InputError on invalid input.
-Result check(const Input& in);
+/// Runs every check (named assess: catena::check is the namespace of input checks); throws
+/// InputError on invalid input.
+Result assess(const Input& in);
 
 }  // namespace catena::strength

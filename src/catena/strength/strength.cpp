@@ -261,7 +261,7 @@ double shear_factor(double outer, double inner) {
   return 4.0 / 3.0 * (ro * ro + ro * ri + ri * ri) / (ro * ro + ri * ri);
 }
 
-Result check(const Input& in) {
+Result assess(const Input& in) {
   throw_if_any(validate(in));
   const Hinge& h = in.hinge;
   const Material& mat = in.material;
