@@ -381,11 +381,14 @@ Result assess(const Input& in) {
   r.checks.push_back(shear_out);
   r.checks.push_back(bearing);
 
-  if (worst.hertz && worst.half_width > 0.25 * h.r1)
-    r.diagnostics.push_back({Diagnostic::Severity::kWarning, "strength.hertz_wide_contact",
-                             "the Hertz contact half-width exceeds R1/4: the conformal contact "
-                             "is outside the half-space assumption, p0 is approximate",
-                             worst.half_width, 0.25 * h.r1});
+  // as catena warp: beyond b = 0.1·R1 the conformal contact leaves Hertz's half-space
+  // assumption (Persson's conformal-cylinder theory would apply; not implemented)
+  if (worst.hertz && worst.half_width > 0.1 * h.r1)
+    r.diagnostics.push_back({Diagnostic::Severity::kWarning, "strength.hertz_conformal",
+                             "the Hertz contact half-width b exceeds 0.1·R1: the conformal "
+                             "contact of R1 in R2 is outside the half-space assumption, p0 is "
+                             "approximate",
+                             worst.half_width, 0.1 * h.r1});
   for (const Check& c : r.checks) {
     if (c.ok) continue;
     r.diagnostics.push_back(
