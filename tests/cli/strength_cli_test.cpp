@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -130,6 +132,24 @@ TEST(StrengthCli, EveryProblemAtOnceExitTwo) {
   std::string bad_unit = kSliding;
   bad_unit.replace(bad_unit.find("30kN"), 4, "3parsec");
   EXPECT_EQ(run(bad_unit).status, 2);
+}
+
+TEST(StrengthCli, SlidingHingeCaseFileGivesWhatTheCommandGives) {
+  // chain.type = sliding-hinge implies --hinge sliding; the shared pin diameter, tension and
+  // material values reach the analysis, the rolling-hinge radii of [chain] do not
+  const auto path = std::filesystem::temp_directory_path() / "catena_case_strength_sliding.toml";
+  std::ofstream(path) << "[chain]\ntype = \"sliding-hinge\"\npin_diameter = \"40 mm\"\n"
+                         "plate_radius = \"34 mm\"\n[loads]\ntension = \"30 kN\"\n"
+                         "[material]\nallowable_pressure = \"60 MPa\"\n"
+                         "[analyses.strength]\nheights = \"0, 8 mm, 48 mm, 56 mm\"\n"
+                         "widths = \"8 mm\"\nplate_width = \"90 mm\"\nend_distance = \"45 mm\"\n"
+                         "roller_yield = \"600 MPa\"\nplate_yield = \"400 MPa\"\n";
+  const CliRun r = run("run " + path.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["analyses"]["strength"], run_json(kSliding));
+  EXPECT_EQ(j["analyses"]["strength"]["hinge"], "sliding");
+  std::filesystem::remove(path);
 }
 
 }  // namespace
