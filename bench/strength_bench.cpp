@@ -17,7 +17,7 @@ Input example(HingeKind kind) {
   in.hinge.kind = kind;
   in.hinge.r1 = 0.034;
   in.hinge.r2 = 0.0354;
-  in.loads = {29.4e3, 29.4e3, 0.030, 0.010};
+  in.loads = {29.4e3, 0.0, 0.0, 0.030, 0.010};  // N = S over a 10 mm tooth
   in.material = {600e6, 355e6, 490e6, 60e6, 1600e6, 1.5};
   return in;
 }

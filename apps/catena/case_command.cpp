@@ -309,9 +309,13 @@ const std::vector<AnalysisSpec>& analysis_specs() {
            c.title = title;
            c.x_label = "z [mm]";
            c.y_label = unit;
-           for (auto it = d.begin(); it != d.end(); ++it)
-             c.traces.push_back({it.key(), numbers(it.value()["x"], 1e3),
-                                 numbers(it.value()[key], scale)});
+           for (auto it = d.begin(); it != d.end(); ++it) {
+             // links at an angle: the resultant's magnitude
+             std::string k = key;
+             if (it.value().contains(k + "_resultant")) k += "_resultant";
+             c.traces.push_back({it.key() + (k == key ? "" : " |" + std::string(key) + "|"),
+                                 numbers(it.value()["x"], 1e3), numbers(it.value()[k], scale)});
+           }
            s.charts.push_back(c);
          }
        },

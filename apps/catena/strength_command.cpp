@@ -24,7 +24,8 @@ using namespace catena::strength;
 constexpr const char* kPlateKey[4] = {"lower_outer", "lower_inner", "upper_inner", "upper_outer"};
 
 struct StrengthFlags {
-  std::string tension, tooth_force, load_height, tooth_width = "0", layout = "both";
+  std::string tension, tooth_force, exit_tension, link_angle = "0", load_height,
+      tooth_width = "0", layout = "both";
   std::string hinge = "sliding", heights, widths, diameter, bore = "0", hole, plate_width,
               end_distance, stress_concentration = "1", contact_angle = "180deg", r1, r2,
               modulus = "210GPa", poisson = "0.3";
@@ -125,10 +126,25 @@ int run_strength(const StrengthFlags& f) {
   Loads& l = x.loads;
   l.tension = required_quantity(in, "--tension", f.tension, QuantityKind::kForce,
                                 "S, the free link's tension");
-  l.tooth_force = f.tooth_force.empty()
-                      ? l.tension
-                      : in.quantity("--tooth-force", f.tooth_force, QuantityKind::kForce)
-                            .value_or(NAN);
+  l.link_angle = in.quantity("--link-angle", f.link_angle, QuantityKind::kAngle).value_or(NAN);
+  if (!f.tooth_force.empty() && !f.exit_tension.empty()) {
+    in.add({"--tooth-force", f.tooth_force, "either --tooth-force or --exit-tension, not both"});
+  } else if (!f.tooth_force.empty()) {
+    // collinear links: N = S − S2
+    if (l.link_angle != 0.0)
+      in.add({"--tooth-force", f.tooth_force,
+              "collinear links only (--link-angle 0); with a link angle give --exit-tension"});
+    const double n = in.quantity("--tooth-force", f.tooth_force, QuantityKind::kForce).value_or(NAN);
+    if (std::isfinite(n) && std::isfinite(l.tension) && !(n >= 0.0 && n <= l.tension))
+      in.add({"--tooth-force", f.tooth_force,
+              "0 ≤ N ≤ S = " + g(l.tension) + " N (collinear: the seated link cannot push)"});
+    l.exit_tension = l.tension - n;
+  } else {
+    l.exit_tension =
+        f.exit_tension.empty()
+            ? 0.0
+            : in.quantity("--exit-tension", f.exit_tension, QuantityKind::kForce).value_or(NAN);
+  }
   l.tooth_width = in.quantity("--tooth-width", f.tooth_width, QuantityKind::kLength).value_or(NAN);
   // default L1: midway between the inner plates' mid-planes
   l.load_height = f.load_height.empty()
@@ -190,7 +206,12 @@ int run_strength(const StrengthFlags& f) {
     const std::string key = "layout_" + std::to_string(lr.loads.layout);
     ordered_json lj;
     for (std::size_t i = 0; i < 4; ++i) lj["plate_force"][kPlateKey[i]] = lr.loads.plate_force[i];
-    lj["tooth_force"] = -lr.loads.tooth.force;
+    lj["tooth_force"] = std::hypot(lr.loads.tooth.force, lr.loads.tooth_y);
+    if (lr.planar) {
+      for (std::size_t i = 0; i < 4; ++i)
+        lj["plate_force_y"][kPlateKey[i]] = lr.loads.plate_force_y[i];
+      lj["tooth_force_direction"] = std::atan2(lr.loads.tooth_y, lr.loads.tooth.force);
+    }
     lj["moment_max"] = lr.extremes.moment;
     lj["moment_at"] = lr.extremes.moment_at;
     lj["shear_max"] = lr.extremes.shear;
@@ -199,6 +220,17 @@ int run_strength(const StrengthFlags& f) {
     lj["moment_residual"] = lr.moment_residual;
     layouts[key] = lj;
     diagrams[key] = {{"x", lr.diagram.x}, {"M", lr.diagram.moment}, {"Q", lr.diagram.shear}};
+    if (lr.planar) {
+      std::vector<double> mr, qr;
+      for (std::size_t i = 0; i < lr.diagram.x.size(); ++i) {
+        mr.push_back(std::hypot(lr.diagram.moment[i], lr.diagram.moment_y[i]));
+        qr.push_back(std::hypot(lr.diagram.shear[i], lr.diagram.shear_y[i]));
+      }
+      diagrams[key]["My"] = lr.diagram.moment_y;
+      diagrams[key]["Qy"] = lr.diagram.shear_y;
+      diagrams[key]["M_resultant"] = mr;
+      diagrams[key]["Q_resultant"] = qr;
+    }
     for (std::size_t i = 0; i < lr.diagram.x.size(); ++i)
       csv << lr.loads.layout << "," << g(lr.diagram.x[i], 12) << "," << g(lr.diagram.moment[i], 12)
           << "," << g(lr.diagram.shear[i], 12) << "\n";
@@ -230,6 +262,9 @@ int run_strength(const StrengthFlags& f) {
                   {"safety_factor", "1"},   {"min_safety_margin", "1"},
                   {"x", "m"},               {"M", "N*m"},           {"Q", "N"},
                   {"plate_force", "N"},     {"tooth_force", "N"},   {"lower_outer", "N"},
+                  {"plate_force_y", "N"},   {"tooth_force_direction", "rad"},
+                  {"My", "N*m"},            {"Qy", "N"},            {"M_resultant", "N*m"},
+                  {"Q_resultant", "N"},
                   {"lower_inner", "N"},     {"upper_inner", "N"},   {"upper_outer", "N"},   {"moment_max", "N*m"},
                   {"moment_at", "m"},       {"shear_max", "N"},     {"shear_at", "m"},
                   {"force_residual", "N"},  {"moment_residual", "N*m"},
@@ -245,7 +280,10 @@ int run_strength(const StrengthFlags& f) {
     std::ostringstream t;
     t << "Catena strength: roller and plates of a " << (rolling ? "rolling" : "sliding")
       << "-friction hinge (seed 000 §1.5; S = " << g(l.tension / 1e3, 4)
-      << " kN, N = " << g(l.tooth_force / 1e3, 4) << " kN at L1 = " << g(l.load_height * 1e3, 4)
+      << " kN, S2 = " << g(l.exit_tension / 1e3, 4) << " kN at "
+      << g(l.link_angle * 180.0 / std::numbers::pi, 4) << "°, tooth N = "
+      << g(std::hypot(tooth_force(l)[0], tooth_force(l)[1]) / 1e3, 4) << " kN at L1 = "
+      << g(l.load_height * 1e3, 4)
       << " mm)\n\n";
     char line[512];
     std::snprintf(line, sizeof line, "  %-24s %12s %15s %8s %8s  %s\n", "check", "stress [MPa]",
@@ -295,7 +333,12 @@ std::function<int()> add_strength(CLI::App& app) {
       "§1.5)");
   c->add_option("--tension", f->tension, "S, the free link's chain tension (bare: N)");
   c->add_option("--tooth-force", f->tooth_force,
-                "N, the tooth's load on the roller, 0 ≤ N ≤ S (default S; 0: a straight run)");
+                "N on the roller with collinear links, 0 ≤ N ≤ S (sets S2 = S − N; default: S2 "
+                "given or 0, i.e. N = S; bare: N)");
+  c->add_option("--exit-tension", f->exit_tension,
+                "S2, the seated link's tension (default 0: the tooth takes all; bare: N)");
+  c->add_option("--link-angle", f->link_angle,
+                "θ between the free and the seated link (default 0: collinear; bare: degree)");
   c->add_option("--load-height", f->load_height,
                 "L1, the tooth load's height (default: midway between the inner plates; bare: mm)");
   c->add_option("--tooth-width", f->tooth_width,

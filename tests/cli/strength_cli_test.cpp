@@ -134,6 +134,33 @@ TEST(StrengthCli, EveryProblemAtOnceExitTwo) {
   EXPECT_EQ(run(bad_unit).status, 2);
 }
 
+TEST(StrengthCli, LinksAtAnAngle) {
+  // θ = 90°: the tooth takes S along the chain line and S2 sideways, |N| = √(S² + S2²)
+  const auto j = run_json(kSliding + "--exit-tension 10kN --link-angle 90");
+  const nlohmann::json l1 = j["layouts"]["layout_1"];
+  EXPECT_NEAR(l1["tooth_force"].get<double>(), std::hypot(30e3, 10e3), 1e-6);
+  ASSERT_TRUE(l1.contains("plate_force_y"));
+  EXPECT_NEAR(l1["plate_force_y"]["lower_inner"].get<double>() +
+                  l1["plate_force_y"]["upper_inner"].get<double>(),
+              10e3, 1e-9);
+  const nlohmann::json d = j["diagrams"]["layout_1"];
+  for (const char* key : {"My", "Qy", "M_resultant", "Q_resultant"})
+    EXPECT_EQ(d[key].size(), d["x"].size()) << key;
+  double mmax = 0;
+  for (const auto& m : d["M_resultant"]) mmax = std::max(mmax, m.get<double>());
+  EXPECT_LE(mmax, l1["moment_max"].get<double>() + 1e-9);
+  // collinear --tooth-force N is --exit-tension S − N
+  EXPECT_EQ(run_json(kSliding + "--tooth-force 20kN"), run_json(kSliding + "--exit-tension 10kN"));
+  // refused: both at once; --tooth-force with an angle; the tooth pulling
+  EXPECT_EQ(run(kSliding + "--tooth-force 20kN --exit-tension 10kN").status, 2);
+  const CliRun angle = run(kSliding + "--tooth-force 20kN --link-angle 30");
+  EXPECT_EQ(angle.status, 2);
+  EXPECT_NE(angle.err.find("--exit-tension"), std::string::npos) << angle.err;
+  const CliRun pull = run(kSliding + "--exit-tension 40kN");
+  EXPECT_EQ(pull.status, 2);
+  EXPECT_NE(pull.err.find("--exit-tension"), std::string::npos) << pull.err;
+}
+
 TEST(StrengthCli, SlidingHingeCaseFileGivesWhatTheCommandGives) {
   // chain.type = sliding-hinge implies --hinge sliding; the shared pin diameter, tension and
   // material values reach the analysis, the rolling-hinge radii of [chain] do not

@@ -28,7 +28,7 @@ Input example() {
   in.hinge.pin_diameter = 0.040;
   in.hinge.plate_width = 0.090;
   in.hinge.end_distance = 0.045;
-  in.loads = {30e3, 30e3, 0.028, 0.0};
+  in.loads = {30e3, 0.0, 0.0, 0.028, 0.0};  // S, S2 = 0 (N = S), θ = 0, L1, point load
   in.material = {600e6, 400e6, 0.0, 60e6, 1600e6, 1.5};
   return in;
 }
@@ -75,7 +75,7 @@ TEST(Strength, SymmetricLayoutTwoAndStraightRunByHand) {
   EXPECT_NEAR(extremes(beam(in, layout_loads(in, 2))).moment, 15e3 * 0.020, 1e-9);
   // a straight run (N = 0): S/2 in at the outer plates, S/2 out at the inner ones; between the
   // inner plates the moment is constant S/2 · 8 mm and the shear zero
-  in.loads.tooth_force = 0.0;
+  in.loads.exit_tension = 30e3;  // N = 0
   const Beam b = beam(in, layout_loads(in, 1));
   for (double z : {0.013, 0.028, 0.040}) {
     EXPECT_NEAR(moment(b, z), 15e3 * 0.008, 1e-9) << z;
@@ -86,7 +86,7 @@ TEST(Strength, SymmetricLayoutTwoAndStraightRunByHand) {
 
 TEST(Strength, OffCentreToothReactionsByStatics) {
   Input in = example();
-  in.loads.tooth_force = 20e3;
+  in.loads.exit_tension = 10e3;  // N = 20 kN
   in.loads.load_height = 0.036;
   for (int layout : {1, 2}) {
     const LayoutLoads l = layout_loads(in, layout);
@@ -100,14 +100,13 @@ TEST(Strength, OffCentreToothReactionsByStatics) {
     EXPECT_NEAR(m, 0.0, 1e-9);
     const auto [a, bb] = layout == 1 ? std::pair{kLowerInner, kUpperInner}
                                      : std::pair{kLowerOuter, kUpperOuter};
-    EXPECT_NEAR(l.plate_force[a] + l.plate_force[bb], in.loads.tooth_force - in.loads.tension,
-                1e-9);
+    EXPECT_NEAR(l.plate_force[a] + l.plate_force[bb], -in.loads.exit_tension, 1e-9);
   }
 }
 
 TEST(Strength, MomentDerivativeIsShearAndShearIntegratesToMoment) {
   Input in = example();
-  in.loads = {30e3, 24e3, 0.031, 0.010};
+  in.loads = {30e3, 6e3, 0.0, 0.031, 0.010};  // N = 24 kN over 10 mm
   for (int layout : {1, 2}) {
     const Beam b = beam(in, layout_loads(in, layout));
     // finite differences of M (central, h = 1 µm) against Q, away from block boundaries
@@ -139,7 +138,7 @@ TEST(Strength, ExtremesAgreeWithDenseSampling) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int trial = 0; trial < 50; ++trial) {
     Input in = example();
-    in.loads.tooth_force = in.loads.tension * u(rng);
+    in.loads.exit_tension = in.loads.tension * u(rng);
     in.loads.tooth_width = 0.03 * u(rng);
     const double lo = 0.012 + 0.5 * in.loads.tooth_width, hi = 0.044 - 0.5 * in.loads.tooth_width;
     in.loads.load_height = lo + (hi - lo) * u(rng);
@@ -305,7 +304,8 @@ TEST(Strength, PropertyRandomInputs) {
     in.hinge.r2 = in.hinge.r1 * (1.001 + 0.5 * u(rng));
     in.hinge.contact_angle = kPi * (0.01 + 0.99 * u(rng));
     in.loads.tension = std::pow(10.0, 2 + 4 * u(rng));
-    in.loads.tooth_force = in.loads.tension * u(rng);
+    in.loads.exit_tension = in.loads.tension * u(rng);
+    in.loads.link_angle = u(rng) < 0.5 ? 0.0 : 3.1 * u(rng);
     const double glo = in.hinge.heights[1] + 0.5 * in.hinge.widths[1];
     const double ghi = in.hinge.heights[2] - 0.5 * in.hinge.widths[2];
     in.loads.tooth_width = (ghi - glo) * u(rng);
@@ -318,9 +318,11 @@ TEST(Strength, PropertyRandomInputs) {
     for (const LayoutResult& lr : r.layouts) {
       EXPECT_LE(lr.force_residual, 1e-9 * scale) << trial;
       EXPECT_LE(lr.moment_residual, 1e-9 * scale * (arm + 0.05)) << trial;
-      const Beam b = beam(in, lr.loads);
-      EXPECT_LE(std::abs(moment(b, b.stop)), 1e-9 * scale * arm) << trial;
-      EXPECT_LE(std::abs(shear(b, b.stop)), 1e-9 * scale) << trial;
+      for (int component : {0, 1}) {
+        const Beam b = beam(in, lr.loads, component);
+        EXPECT_LE(std::abs(moment(b, b.stop)), 1e-9 * scale * arm) << trial;
+        EXPECT_LE(std::abs(shear(b, b.stop)), 1e-9 * scale) << trial;
+      }
       for (double v : lr.diagram.moment) ASSERT_TRUE(std::isfinite(v));
       for (double v : lr.diagram.shear) ASSERT_TRUE(std::isfinite(v));
     }
@@ -331,7 +333,7 @@ TEST(Strength, PropertyRandomInputs) {
     // doubling the loads halves every safety factor (Hertz: by √2)
     Input twice = in;
     twice.loads.tension *= 2;
-    twice.loads.tooth_force *= 2;
+    twice.loads.exit_tension *= 2;
     const Result r2 = assess(twice);
     ASSERT_EQ(r2.checks.size(), r.checks.size());
     for (std::size_t i = 0; i < r.checks.size(); ++i) {
@@ -343,13 +345,75 @@ TEST(Strength, PropertyRandomInputs) {
   }
 }
 
+TEST(Strength, PlanarLinksBalanceAndTheResultantByHand) {
+  // the seated link pulls at θ = 60°: N = −(S x̂ + S2 û), |N|² = S² + S2² − 2 S S2 cos θ
+  Input in = example();
+  in.loads.exit_tension = 12.7e3;
+  in.loads.link_angle = kPi / 3;
+  const auto n = tooth_force(in.loads);
+  EXPECT_NEAR(std::hypot(n[0], n[1]),
+              std::sqrt(30e3 * 30e3 + 12.7e3 * 12.7e3 - 2 * 30e3 * 12.7e3 * 0.5), 1e-6);
+  const LayoutLoads l = layout_loads(in, 1);
+  // symmetric, tooth at mid-height: each seated (inner) plate pulls S2/2 along û
+  EXPECT_NEAR(l.plate_force[kLowerInner], -0.5 * 12.7e3 * 0.5, 1e-9);
+  EXPECT_NEAR(l.plate_force_y[kUpperInner], 0.5 * 12.7e3 * std::sin(kPi / 3), 1e-9);
+  const Beam bx = beam(in, l, 0), by = beam(in, l, 1);
+  // M at the tooth: S/2 x̂ at 28 mm arm and S2/2 û at 20 mm arm
+  const double mx = 15e3 * 0.028 - 0.5 * 12.7e3 * 0.5 * 0.020;
+  const double my = 0.5 * 12.7e3 * std::sin(kPi / 3) * 0.020;
+  EXPECT_NEAR(moment(bx, 0.028), mx, 1e-9);
+  EXPECT_NEAR(moment(by, 0.028), my, 1e-9);
+  // the resultant's maximum against dense sampling
+  const Extremes e = extremes(bx, by);
+  double m = 0, q = 0;
+  for (int i = 0; i <= 200000; ++i) {
+    const double z = bx.start + (bx.stop - bx.start) * i / 200000.0;
+    m = std::max(m, std::hypot(moment(bx, z), moment(by, z)));
+    q = std::max(q, std::hypot(shear(bx, z), shear(by, z)));
+  }
+  EXPECT_NEAR(e.moment, m, 1e-6 * m);
+  EXPECT_GE(e.moment, std::hypot(mx, my) - 1e-9);
+  EXPECT_NEAR(e.shear, q, 1e-3 * q);
+  const Result r = assess(in);
+  ASSERT_TRUE(r.layouts[0].planar);
+  EXPECT_NEAR(find(r, "roller.bending", 1).stress, e.moment / (kPi * 0.04 * 0.04 * 0.04 / 32.0),
+              1e-6);
+  EXPECT_EQ(r.layouts[0].diagram.moment_y.size(), r.layouts[0].diagram.x.size());
+}
+
+TEST(Strength, PlanarExtremesAgreeWithDenseSampling) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 40; ++trial) {
+    Input in = example();
+    in.loads.exit_tension = in.loads.tension * u(rng);
+    in.loads.link_angle = 3.1 * u(rng);
+    in.loads.tooth_width = 0.03 * u(rng);
+    const double lo = 0.012 + 0.5 * in.loads.tooth_width, hi = 0.044 - 0.5 * in.loads.tooth_width;
+    in.loads.load_height = lo + (hi - lo) * u(rng);
+    for (int layout : {1, 2}) {
+      const LayoutLoads l = layout_loads(in, layout);
+      const Beam bx = beam(in, l, 0), by = beam(in, l, 1);
+      const Extremes e = extremes(bx, by);
+      double m = 0.0;
+      for (int i = 0; i <= 100000; ++i) {
+        const double z = bx.start + (bx.stop - bx.start) * i / 100000.0;
+        m = std::max(m, std::hypot(moment(bx, z), moment(by, z)));
+      }
+      EXPECT_GE(e.moment, m - 1e-9) << trial;
+      EXPECT_NEAR(e.moment, m, 1e-6 * e.moment) << trial;
+    }
+  }
+}
+
 TEST(Strength, ValidateListsEveryProblem) {
   Input in = example();
   in.hinge.hole_diameter = 0.1;        // larger than the plate width 90 mm
   in.hinge.end_distance = 0.02;        // less than the hole radius
   in.hinge.widths[1] = 0.02;           // the lower inner plate overlaps the lower outer one
   in.hinge.bore = 0.05;                // larger than d
-  in.loads.tooth_force = 40e3;         // more than S
+  in.loads.exit_tension = -1.0;        // negative
+  in.loads.link_angle = 4.0;           // beyond 180°
   in.loads.load_height = 0.05;         // not between the inner plates
   in.material.roller_yield = -1;
   in.material.allowable_pressure = 0;  // a sliding hinge needs it
@@ -357,10 +421,18 @@ TEST(Strength, ValidateListsEveryProblem) {
   const auto issues = validate(in);
   std::set<std::string> fields;
   for (const auto& i : issues) fields.insert(i.field);
-  for (const char* f : {"hole_diameter", "end_distance", "heights", "bore", "tooth_force",
+  for (const char* f : {"hole_diameter", "end_distance", "heights", "bore", "exit_tension", "link_angle",
                         "load_height", "roller_yield", "allowable_pressure", "safety_factor"})
     EXPECT_TRUE(fields.count(f)) << f;
   EXPECT_THROW(assess(in), catena::InputError);
+  // the tooth pushes: S2 cos θ ≤ S
+  Input pull = example();
+  pull.loads.exit_tension = 40e3;
+  const auto pi = validate(pull);
+  ASSERT_EQ(pi.size(), 1u);
+  EXPECT_EQ(pi[0].field, "exit_tension");
+  pull.loads.link_angle = kPi / 2;  // now the tooth takes it sideways: valid
+  EXPECT_TRUE(validate(pull).empty());
   // a rolling hinge needs R2 > R1 and [σ_H]
   Input roll = example();
   roll.hinge.kind = HingeKind::kRolling;

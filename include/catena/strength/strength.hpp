@@ -11,9 +11,10 @@
 //    upper inner, upper outer plate mid-planes, bottom to top); every load acts along the chain
 //    line x and is spread uniformly over its plate's thickness B_i (the tooth load over the
 //    tooth width, a point load when that is 0);
-//  * the free link (tension S) pulls the roller through its two plates, S/2 each; the tooth
-//    pushes with N (0 ≤ N ≤ S) at height L1; the seated link's two plates carry the rest
-//    S − N, split by the roller's statics (two supports: statically determinate);
+//  * the free link (tension S) pulls the roller through its two plates, S/2 each; the seated
+//    link pulls with S2 at the link angle θ, its two plates split by the roller's statics (two
+//    supports: statically determinate, in each of the two directions x, y); the tooth pushes
+//    with the balance N at height L1 (collinear θ = 0: N = S − S2);
 //  * layout 1: the seated (engaged) link is the inner link, S enters through the outer plates;
 //    layout 2: the seated link is the outer link, S enters through the inner plates.
 #pragma once
@@ -49,11 +50,17 @@ struct Hinge {
 };
 
 struct Loads {
-  double tension = 0.0;      ///< [N] S, the free link's tension
-  double tooth_force = 0.0;  ///< [N] N on the roller, 0 ≤ N ≤ S (0: a hinge on a straight run)
-  double load_height = 0.0;  ///< [m] L1, centre of the tooth load (same datum as the heights)
-  double tooth_width = 0.0;  ///< [m] width of the tooth load along z (0: a point load)
+  double tension = 0.0;       ///< [N] S, the free link's tension (along +x)
+  double exit_tension = 0.0;  ///< [N] S2 ≥ 0, the seated link's tension (0: all onto the tooth)
+  double link_angle = 0.0;    ///< [rad] θ between the two links' lines, 0 ≤ θ < π (0: collinear)
+  double load_height = 0.0;   ///< [m] L1, centre of the tooth load (same datum as the heights)
+  double tooth_width = 0.0;   ///< [m] width of the tooth load along z (0: a point load)
 };
+
+/// [N] (x, y) of the tooth's force on the roller, which balances the free link's pull S·x̂ and the
+/// seated link's pull S2·û, û = (−cos θ, sin θ): N = (S2 cos θ − S, −S2 sin θ). Collinear
+/// (θ = 0): N = S − S2 against the free link.
+std::array<double, 2> tooth_force(const Loads& loads);
 
 struct Material {
   double roller_yield = 0.0;        ///< [Pa] σ_y of the roller
@@ -90,15 +97,18 @@ struct Beam {
   double stop = 0.0;   ///< [m] upper end
 };
 
-/// Signed forces of the four plates on the roller (+x toward the free span), by Plate index, and
-/// the tooth's block, for layout 1 or 2.
+/// Signed forces of the four plates on the roller (x: +x toward the free span; y: normal to it
+/// in the plane of the links), by Plate index, and the tooth's load, for layout 1 or 2.
 struct LayoutLoads {
   int layout = 1;
-  std::array<double, 4> plate_force{};
-  Block tooth;
+  std::array<double, 4> plate_force{};    ///< [N] x components
+  std::array<double, 4> plate_force_y{};  ///< [N] y components (0 when the links are collinear)
+  Block tooth;                            ///< x component
+  double tooth_y = 0.0;                   ///< [N] y component, over the same interval
 };
 LayoutLoads layout_loads(const Input& in, int layout);
-Beam beam(const Input& in, const LayoutLoads& loads);
+/// The roller's loads in one direction: component 0 = x, 1 = y.
+Beam beam(const Input& in, const LayoutLoads& loads, int component = 0);
 
 /// Shear force Q(z) = Σ forces below z (the part of a block below z); `above` picks the limit
 /// from above at a point load. Bending moment M(z) = Σ forces below z × arm to z. dM/dz = Q.
@@ -107,9 +117,12 @@ double moment(const Beam& b, double z);
 
 struct Diagram {
   std::vector<double> x, moment, shear;  ///< [m], [N·m], [N]; x repeated at a point load
+  std::vector<double> moment_y, shear_y;  ///< the y components (filled by the two-beam form)
 };
 /// Samples every block boundary and `per_block` interior points of every distributed block.
 Diagram diagram(const Beam& b, int per_block = 8);
+/// Both components; `y` has the same blocks as `x` (beam(in, loads, 1)).
+Diagram diagram(const Beam& x, const Beam& y, int per_block = 8);
 
 struct Extremes {
   double moment = 0.0, moment_at = 0.0;  ///< [N·m] max |M| and where
@@ -117,6 +130,10 @@ struct Extremes {
 };
 /// Exact: |M| peaks at a block boundary or where Q = 0 inside a block; |Q| at a boundary.
 Extremes extremes(const Beam& b);
+/// Of the resultants |M| = hypot(Mx, My), |Q| = hypot(Qx, Qy): |Q| is convex between boundaries
+/// (max at one); |M|² has its stationary points where Mx·Qx + My·Qy = 0, found by a 64-point
+/// scan and bisection inside each interval. Reduces to the exact form when y carries no load.
+Extremes extremes(const Beam& x, const Beam& y);
 
 /// [m] eq. (22): projection of a contact arc of angle γ on radius r onto the plane normal to N.
 double projection(double radius, double angle);
@@ -137,7 +154,7 @@ struct Check {
 struct Contact {
   int layout = 1;
   int plate = 0;
-  double force = 0.0;   ///< [N] N of the most loaded plate–roller contact
+  double force = 0.0;   ///< [N] |N| of the most loaded plate–roller contact
   double width = 0.0;   ///< [m] B of that plate
   double radius = 0.0;  ///< [m] r of eq. (22): d/2 (sliding) or R1 (rolling)
   double angle = 0.0;   ///< [rad] γ of the contact arc
@@ -154,8 +171,9 @@ struct LayoutResult {
   LayoutLoads loads;
   Diagram diagram;
   Extremes extremes;
-  double force_residual = 0.0;   ///< [N] |ΣF| of the roller
-  double moment_residual = 0.0;  ///< [N·m] |ΣM| about z = 0
+  bool planar = false;           ///< loads in y too (θ ≠ 0 and S2 ≠ 0)
+  double force_residual = 0.0;   ///< [N] max |ΣF| of the roller over x and y
+  double moment_residual = 0.0;  ///< [N·m] max |ΣM| about z = 0 over x and y
 };
 
 struct Result {

@@ -99,11 +99,17 @@ std::vector<Issue> validate(const Input& in) {
     out.push_back({"poisson", fmt("%g", h.poisson), "0 ≤ ν < 0.5"});
 
   check::finite_positive(out, "tension", l.tension, "N");
-  if (!(l.tooth_force >= 0.0 && std::isfinite(l.tooth_force)) ||
-      (std::isfinite(l.tension) && l.tension > 0 && !(l.tooth_force <= l.tension)))
-    out.push_back({"tooth_force", check::format_si(l.tooth_force, "N"),
-                   "0 ≤ N ≤ S = " + check::format_si(l.tension, "N") +
-                       " (collinear loads: the seated link cannot push)"});
+  if (!(l.exit_tension >= 0.0 && std::isfinite(l.exit_tension)))
+    out.push_back({"exit_tension", check::format_si(l.exit_tension, "N"),
+                   "S2 ≥ 0, the seated link's tension"});
+  if (!(l.link_angle >= 0.0 && l.link_angle < kPi))
+    out.push_back({"link_angle", check::format_si(l.link_angle, "rad"), "0 ≤ θ < 180°"});
+  if (std::isfinite(l.tension) && l.tension > 0 && l.exit_tension >= 0 &&
+      std::isfinite(l.exit_tension) && l.link_angle >= 0 && l.link_angle < kPi &&
+      !(l.exit_tension * std::cos(l.link_angle) <= l.tension))
+    out.push_back({"exit_tension", check::format_si(l.exit_tension, "N"),
+                   "S2·cos θ ≤ S = " + check::format_si(l.tension, "N") +
+                       " (the tooth can only push the roller against the free link's pull)"});
   check::finite(out, "load_height", l.load_height, "m");
   if (!(l.tooth_width >= 0.0 && std::isfinite(l.tooth_width)))
     out.push_back({"tooth_width", check::format_si(l.tooth_width, "m"), "a length ≥ 0 m"});
@@ -132,34 +138,51 @@ std::vector<Issue> validate(const Input& in) {
   return out;
 }
 
+std::array<double, 2> tooth_force(const Loads& l) {
+  return {l.exit_tension * std::cos(l.link_angle) - l.tension,
+          -l.exit_tension * std::sin(l.link_angle)};
+}
+
 LayoutLoads layout_loads(const Input& in, int layout) {
   const Hinge& h = in.hinge;
-  const double s = in.loads.tension, n = in.loads.tooth_force, l1 = in.loads.load_height;
+  const double l1 = in.loads.load_height;
+  const auto n = tooth_force(in.loads);
   LayoutLoads out;
   out.layout = layout;
   // layout 1: the inner link is seated, S enters through the outer plates; layout 2: swapped
   const int p = layout == 1 ? kLowerOuter : kLowerInner, q = layout == 1 ? kUpperOuter : kUpperInner;
   const int a = layout == 1 ? kLowerInner : kLowerOuter, b = layout == 1 ? kUpperInner : kUpperOuter;
   const auto z = [&](int i) { return h.heights[static_cast<std::size_t>(i)]; };
-  auto& f = out.plate_force;
-  f[static_cast<std::size_t>(p)] = 0.5 * s;
-  f[static_cast<std::size_t>(q)] = 0.5 * s;
-  // the seated link's plates a, b: ΣF = S + Fa + Fb − N = 0, ΣM(0) = S/2 (zp + zq) + Fa za
-  // + Fb zb − N L1 = 0 (a uniform block acts at its centre, the plate's mid-plane)
-  const double fb = (n * l1 - 0.5 * s * (z(p) + z(q)) - (n - s) * z(a)) / (z(b) - z(a));
-  f[static_cast<std::size_t>(b)] = fb;
-  f[static_cast<std::size_t>(a)] = (n - s) - fb;
-  out.tooth = {l1 - 0.5 * in.loads.tooth_width, l1 + 0.5 * in.loads.tooth_width, -n};
+  const auto at = [](std::array<double, 4>& f, int i) -> double& {
+    return f[static_cast<std::size_t>(i)];
+  };
+  // per direction: the free plates carry `free` each, the tooth `tooth` at L1; the seated
+  // plates a, b balance them: Fa + Fb = −(2 free + tooth), Fa za + Fb zb = −(free (zp + zq) +
+  // tooth L1) (a uniform block acts at its centre, the plate's mid-plane)
+  const auto split = [&](std::array<double, 4>& f, double free, double tooth) {
+    at(f, p) = free;
+    at(f, q) = free;
+    const double sum = -(2.0 * free + tooth);
+    const double mom = -(free * (z(p) + z(q)) + tooth * l1);
+    at(f, b) = (mom - sum * z(a)) / (z(b) - z(a));
+    at(f, a) = sum - at(f, b);
+  };
+  split(out.plate_force, 0.5 * in.loads.tension, n[0]);
+  split(out.plate_force_y, 0.0, n[1]);
+  out.tooth = {l1 - 0.5 * in.loads.tooth_width, l1 + 0.5 * in.loads.tooth_width, n[0]};
+  out.tooth_y = n[1];
   return out;
 }
 
-Beam beam(const Input& in, const LayoutLoads& loads) {
+Beam beam(const Input& in, const LayoutLoads& loads, int component) {
   const Hinge& h = in.hinge;
+  const auto& f = component == 0 ? loads.plate_force : loads.plate_force_y;
   Beam out;
   for (std::size_t i = 0; i < 4; ++i)
-    out.blocks.push_back({h.heights[i] - 0.5 * h.widths[i], h.heights[i] + 0.5 * h.widths[i],
-                          loads.plate_force[i]});
+    out.blocks.push_back(
+        {h.heights[i] - 0.5 * h.widths[i], h.heights[i] + 0.5 * h.widths[i], f[i]});
   out.blocks.push_back(loads.tooth);
+  if (component != 0) out.blocks.back().force = loads.tooth_y;
   out.start = out.blocks[0].begin;
   out.stop = out.blocks[3].end;
   return out;
@@ -193,7 +216,9 @@ double moment(const Beam& b, double z) {
   return m;
 }
 
-Diagram diagram(const Beam& b, int per_block) {
+namespace {
+
+Diagram sample(const Beam& b, const Beam* y, int per_block) {
   std::vector<double> xs{b.start, b.stop};
   std::vector<double> points;
   for (const Block& k : b.blocks) {
@@ -209,19 +234,86 @@ Diagram diagram(const Beam& b, int per_block) {
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
   Diagram d;
-  for (double x : xs) {
-    const double m = moment(b, x);
-    const bool jump = std::find(points.begin(), points.end(), x) != points.end();
+  auto push = [&](double x, bool above) {
     d.x.push_back(x);
-    d.moment.push_back(m);
-    d.shear.push_back(shear(b, x, false));
-    if (jump) {  // the value just above a point load
-      d.x.push_back(x);
-      d.moment.push_back(m);
-      d.shear.push_back(shear(b, x, true));
+    d.moment.push_back(moment(b, x));
+    d.shear.push_back(shear(b, x, above));
+    if (y) {
+      d.moment_y.push_back(moment(*y, x));
+      d.shear_y.push_back(shear(*y, x, above));
     }
+  };
+  for (double x : xs) {
+    push(x, false);
+    // the value just above a point load
+    if (std::find(points.begin(), points.end(), x) != points.end()) push(x, true);
   }
   return d;
+}
+
+// Block boundaries and the roller's ends, sorted, unique.
+std::vector<double> boundaries(const Beam& b) {
+  std::vector<double> xs{b.start, b.stop};
+  for (const Block& k : b.blocks) {
+    xs.push_back(k.begin);
+    xs.push_back(k.end);
+  }
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  return xs;
+}
+
+}  // namespace
+
+Diagram diagram(const Beam& b, int per_block) { return sample(b, nullptr, per_block); }
+Diagram diagram(const Beam& x, const Beam& y, int per_block) { return sample(x, &y, per_block); }
+
+Extremes extremes(const Beam& x, const Beam& y) {
+  bool planar = false;
+  for (const Block& k : y.blocks) planar |= k.force != 0.0;
+  if (!planar) return extremes(x);
+  Extremes e;
+  const auto m = [&](double z) { return std::hypot(moment(x, z), moment(y, z)); };
+  const auto consider = [&](double z) {
+    const double v = m(z);
+    if (v > e.moment) {
+      e.moment = v;
+      e.moment_at = z;
+    }
+    for (bool above : {false, true}) {
+      const double q = std::hypot(shear(x, z, above), shear(y, z, above));
+      if (q > e.shear) {
+        e.shear = q;
+        e.shear_at = z;
+      }
+    }
+  };
+  // d|M|²/dz / 2 = Mx Qx + My Qy (continuous inside an interval between boundaries)
+  const auto slope = [&](double z) {
+    return moment(x, z) * shear(x, z) + moment(y, z) * shear(y, z);
+  };
+  const std::vector<double> xs = boundaries(x);
+  for (double z : xs) consider(z);
+  constexpr int kScan = 64;
+  for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
+    const double a = xs[i], b = xs[i + 1];
+    double z0 = a, f0 = slope(a + 1e-12 * (b - a));
+    for (int j = 1; j <= kScan; ++j) {
+      const double z1 = j == kScan ? b : a + (b - a) * j / kScan;
+      const double f1 = slope(j == kScan ? b - 1e-12 * (b - a) : z1);
+      if (f0 > 0.0 && f1 < 0.0) {  // a maximum of |M|² between z0 and z1
+        double lo = z0, hi = z1;
+        for (int it = 0; it < 100 && hi - lo > 1e-15 * (b - a); ++it) {
+          const double mid = 0.5 * (lo + hi);
+          (slope(mid) > 0.0 ? lo : hi) = mid;
+        }
+        consider(0.5 * (lo + hi));
+      }
+      z0 = z1;
+      f0 = f1;
+    }
+  }
+  return e;
 }
 
 Extremes extremes(const Beam& b) {
@@ -237,13 +329,7 @@ Extremes extremes(const Beam& b) {
       }
     }
   };
-  std::vector<double> xs{b.start, b.stop};
-  for (const Block& k : b.blocks) {
-    xs.push_back(k.begin);
-    xs.push_back(k.end);
-  }
-  std::sort(xs.begin(), xs.end());
-  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  const std::vector<double> xs = boundaries(b);
   for (double z : xs) consider(z);
   // between consecutive boundaries Q is linear: M has a stationary point where Q = 0
   for (std::size_t i = 0; i + 1 < xs.size(); ++i) {
@@ -277,16 +363,20 @@ Result assess(const Input& in) {
   for (int layout : which) {
     LayoutResult lr;
     lr.loads = layout_loads(in, layout);
-    const Beam bm = beam(in, lr.loads);
-    lr.diagram = diagram(bm);
-    lr.extremes = extremes(bm);
-    double sf = 0.0, sm = 0.0;
-    for (const Block& k : bm.blocks) {
-      sf += k.force;
-      sm += k.force * 0.5 * (k.begin + k.end);
+    const Beam bx = beam(in, lr.loads, 0), by = beam(in, lr.loads, 1);
+    lr.planar = false;
+    for (const Block& k : by.blocks) lr.planar |= k.force != 0.0;
+    lr.diagram = lr.planar ? diagram(bx, by) : diagram(bx);
+    lr.extremes = extremes(bx, by);
+    for (const Beam* bm : {&bx, &by}) {
+      double sf = 0.0, sm = 0.0;
+      for (const Block& k : bm->blocks) {
+        sf += k.force;
+        sm += k.force * 0.5 * (k.begin + k.end);
+      }
+      lr.force_residual = std::max(lr.force_residual, std::abs(sf));
+      lr.moment_residual = std::max(lr.moment_residual, std::abs(sm));
     }
-    lr.force_residual = std::abs(sf);
-    lr.moment_residual = std::abs(sm);
     const std::string where = "layout " + std::to_string(layout);
     r.checks.push_back(make_check("roller.bending",
                                   where + ", z = " + mm(lr.extremes.moment_at) + ": σ = M/W",
@@ -295,16 +385,19 @@ Result assess(const Input& in) {
                                   where + ", z = " + mm(lr.extremes.shear_at) +
                                       ": τ = " + fmt("%.4g", kq) + "·Q/A vs σ_y/√3",
                                   kq * lr.extremes.shear / area, shear_yield, mat.required));
-    for (std::size_t i = 0; i < 4; ++i)
-      if (lr.loads.plate_force[i] * (layout == 1 ? (i == 0 || i == 3 ? 1.0 : -1.0)
-                                                 : (i == 1 || i == 2 ? 1.0 : -1.0)) < -1e-9 *
-                                                                                        in.loads.tension)
+    // a seated plate is expected to pull along the seated link, û = (−cos θ, sin θ)
+    const double ux = -std::cos(in.loads.link_angle), uy = std::sin(in.loads.link_angle);
+    for (int i : {layout == 1 ? kLowerInner : kLowerOuter, layout == 1 ? kUpperInner : kUpperOuter}) {
+      const auto k = static_cast<std::size_t>(i);
+      const double along = lr.loads.plate_force[k] * ux + lr.loads.plate_force_y[k] * uy;
+      if (along < -1e-9 * in.loads.tension)
         r.diagnostics.push_back(
             {Diagnostic::Severity::kInfo, "strength.plate_reversed",
-             where + ": the " + kPlateName[i] +
-                 " pushes the roller toward the free span (the tooth load is off the middle of "
-                 "the seated link's plates); its magnitude is checked",
-             lr.loads.plate_force[i], 0.0});
+             where + ": the " + kPlateName[k] +
+                 " pushes the roller away from the seated link (the tooth load is off the middle "
+                 "of the seated link's plates); its magnitude is checked",
+             along, 0.0});
+    }
     r.layouts.push_back(std::move(lr));
   }
 
@@ -319,11 +412,13 @@ Result assess(const Input& in) {
   for (std::size_t i = 0; i < 4; ++i) {
     double f = 0.0;
     int at = which.front();
-    for (const LayoutResult& lr : r.layouts)
-      if (std::abs(lr.loads.plate_force[i]) > f) {
-        f = std::abs(lr.loads.plate_force[i]);
+    for (const LayoutResult& lr : r.layouts) {
+      const double v = std::hypot(lr.loads.plate_force[i], lr.loads.plate_force_y[i]);
+      if (v > f) {
+        f = v;
         at = lr.loads.layout;
       }
+    }
     const double s = h.widths[i];
     const std::string where = std::string(kPlateName[i]) + ", layout " + std::to_string(at);
     const Check t = make_check("plate.tension", where + ": net section (b − d_h)·s, K_t = " +
