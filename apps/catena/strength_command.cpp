@@ -304,6 +304,12 @@ int run_strength(const StrengthFlags& f) {
                     p[0] / 1e3, p[1] / 1e3, p[2] / 1e3, p[3] / 1e3, lr.extremes.moment,
                     lr.extremes.moment_at * 1e3, lr.extremes.shear / 1e3);
       t << line;
+      if (lr.planar) {
+        const auto& y = lr.loads.plate_force_y;
+        std::snprintf(line, sizeof line, "     (y)  %8.4g %8.4g %8.4g %8.4g   (M, Q: resultants)\n",
+                      y[0] / 1e3, y[1] / 1e3, y[2] / 1e3, y[3] / 1e3);
+        t << line;
+      }
     }
     t << "\n  contact (" << kPlateKey[c.plate] << ", layout " << c.layout << "): N = "
       << g(c.force / 1e3, 4) << " kN, eq. (22) c = " << g(c.c * 1e3, 4)
