@@ -321,6 +321,37 @@ const std::vector<AnalysisSpec>& analysis_specs() {
        },
        {{"rolling-hinge", {{"--hinge", "rolling"}, {}}},
         {"sliding-hinge", {{"--hinge", "sliding"}, {"plate_radius", "roller_radius"}}}}},
+      {"ring",
+       {"ring"},
+       "Fibre-reinforced polymer link: orthotropic ring on two rigid half-discs (seed 002)",
+       "docs/models/composite.md",
+       {"composite-link"},
+       {},
+       {},
+       [](const ordered_json& r, io::ReportSection& s) {
+         // hoop stress across the two sections, and the contact pressure along the pin
+         io::ReportChart c;
+         c.title = "Hoop stress across the sections phi = 0 and phi = 90 deg";
+         c.x_label = "r [mm]";
+         c.y_label = "sigma_phi [MPa]";
+         for (const char* key : {"0", "90"}) {
+           const ordered_json& sec = r["sections"][key];
+           std::vector<double> x, y;
+           for (const auto& v : sec["r"]) x.push_back(v.get<double>() * 1e3);
+           for (const auto& v : sec["sigma_phi"]) y.push_back(v.get<double>() * 1e-6);
+           c.traces.push_back({std::string("phi = ") + key + " deg", x, y});
+         }
+         s.charts.push_back(c);
+         io::ReportChart p;
+         p.title = "Contact pressure on the pin";
+         p.x_label = "phi [deg]";
+         p.y_label = "pressure [MPa]";
+         std::vector<double> x, y;
+         for (const auto& v : r["contact"]["phi"]) x.push_back(v.get<double>() * 180.0 / M_PI);
+         for (const auto& v : r["contact"]["pressure"]) y.push_back(v.get<double>() * 1e-6);
+         p.traces.push_back({"pressure", x, y});
+         s.charts.push_back(p);
+       }},
   };
   return specs;
 }
@@ -472,7 +503,7 @@ CaseRun run_case(const io::CaseFile& file) {
   if (wanted.empty() && file.find("analyses") == nullptr) {
     issues.push_back({"analyses", "(missing)",
                       "at least one [analyses.<name>] table; names: pocketwheel, hinge, "
-                      "hinge_sweep, contact, fretting, engagement, warp, strength"});
+                      "hinge_sweep, contact, fretting, engagement, warp, ring, strength"});
   }
   struct Planned {
     const AnalysisSpec* spec;
@@ -491,7 +522,7 @@ CaseRun run_case(const io::CaseFile& file) {
     if (it == specs.end()) {
       issues.push_back({"analyses." + name, "(table)",
                         "an analysis Catena has: pocketwheel, hinge, hinge_sweep, contact, "
-                        "fretting, engagement, warp, strength" +
+                        "fretting, engagement, warp, ring, strength" +
                             suggest(name, spec_names)});
       continue;
     }
@@ -753,6 +784,7 @@ std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
           {"fretting", add_fretting(app)},
           {"warp", add_warp(app)},
           {"engagement", add_engagement(app)},
+          {"ring", add_ring(app)},
           {"strength", add_strength(app)}};
 }
 

@@ -24,6 +24,8 @@ std::function<int()> add_warp(CLI::App& app);
 std::function<int()> add_strength(CLI::App& app);
 /// Registers `catena engagement`.
 std::function<int()> add_engagement(CLI::App& app);
+/// Registers `catena ring` (seed 002 composite link).
+std::function<int()> add_ring(CLI::App& app);
 
 /// Registers every analysis subcommand above on `app`; returns their actions by name. The case
 /// runner uses it too: a model added here (and described in case_command.cpp's registry) is

@@ -82,6 +82,14 @@ TEST(CaseCli, EachExampleGivesWhatItsSubcommandGives) {
     EXPECT_EQ(wheel["analyses"]["pocketwheel-" + guide], direct_wheel) << guide;
   }
   EXPECT_EQ(wheel["case_sha256"].get<std::string>().size(), 64u);
+
+  // seed 002: the composite link, bilateral and unilateral (a boolean key becomes a bare flag)
+  const auto ring = run_json("run " + kExamples + "/002_composite_link.toml");
+  const std::string ring_flags =
+      "ring --inner-radius 4.72mm --outer-radius 10mm --thickness 1mm --E-r 10GPa --E-phi 40GPa "
+      "--G 4GPa --nu-phi-r 0.28 --gap 0.02mm --format json";
+  EXPECT_EQ(ring["analyses"]["ring"], run_json(ring_flags));
+  EXPECT_EQ(ring["analyses"]["ring-unilateral"], run_json(ring_flags + " --unilateral"));
 }
 
 TEST(CaseCli, ReportIsOneSelfContainedHtmlFile) {

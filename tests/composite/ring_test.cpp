@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -195,12 +196,142 @@ TEST(RingValidate, ListsEveryProblem) {
   EXPECT_THROW(analyse(bad), catena::InputError);
 }
 
-TEST(RingValidate, TheUnvalidatedSweepIsNotOffered) {
+// The paper's sweep (6)–(8) converges to the exact power-law solution at second order: the
+// error of σ_r, σ_φ, τ (relative to the harmonic's largest stress) falls by 4 per halving of h.
+TEST(RingSweep, ConvergesToTheExactSolutionAtSecondOrder) {
+  constexpr double kOrderLow = 1.85, kOrderHigh = 2.15;  // [-] observed order band
+  for (double al : {0.472, 0.95})
+    for (double er : {0.25, 1.0})
+      for (int n : {0, 2, 4, 10}) {
+        const Ring ring = paper_ring(al, er);
+        const auto rho = grid(al, 0, 21);
+        const Harmonic ex = solve_exact(ring, n, rho);
+        double big = 0;
+        for (std::size_t i = 0; i < rho.size(); ++i)
+          big = std::max({big, std::abs(ex.sigma_phi[i]), std::abs(ex.sigma_r[i])});
+        std::vector<double> err;
+        for (int m : {200, 400, 800}) {
+          const Harmonic sw = solve_sweep(ring, n, m, rho);
+          double e = 0;
+          for (std::size_t i = 0; i < rho.size(); ++i)
+            e = std::max({e, std::abs(sw.sigma_phi[i] - ex.sigma_phi[i]),
+                          std::abs(sw.sigma_r[i] - ex.sigma_r[i]), std::abs(sw.tau[i] - ex.tau[i])});
+          err.push_back(e / big);
+        }
+        for (std::size_t k = 1; k < err.size(); ++k) {
+          const double order = std::log2(err[k - 1] / err[k]);
+          EXPECT_GT(order, kOrderLow) << "alpha " << al << " Er/Ephi " << er << " n " << n;
+          EXPECT_LT(order, kOrderHigh) << "alpha " << al << " Er/Ephi " << er << " n " << n;
+        }
+        EXPECT_LT(err.back(), 1e-3) << al << " " << er << " " << n;
+      }
+}
+
+// With its defaults the sweep gives the exact solver's σ_φ to the issue's 0.1 % (φ = 0, and
+// φ = π/2 outside the corner zone), the same load, and a Richardson estimate that is the
+// size of the error it estimates.
+TEST(RingSweep, DefaultsAgreeWithTheExactSolverAndRichardsonEstimatesTheError) {
+  constexpr double kAgreeTol = 1e-3;  // [-] relative to the largest checked σ_φ
+  for (double al : {0.472, 0.95})
+    for (double er : {0.25, 1.0}) {
+      const Ring ring = paper_ring(al, er);
+      const Result ex = analyse(ring);
+      Options o;
+      o.method = Method::kSweep;
+      const Result sw = analyse(ring, o);
+      ASSERT_EQ(sw.summary.harmonics, ex.summary.harmonics);
+      EXPECT_GT(sw.summary.nodes, 0);
+      const double cutoff = ring.inner_radius + 0.05 * (ring.outer_radius - ring.inner_radius);
+      double big = 0, err = 0;
+      for (std::size_t i = 0; i < ex.r.size(); ++i) {
+        big = std::max(big, std::abs(ex.sigma_phi_0[i]));
+        err = std::max(err, std::abs(sw.sigma_phi_0[i] - ex.sigma_phi_0[i]));
+        if (ex.r[i] >= cutoff - 1e-15) {
+          big = std::max(big, std::abs(ex.sigma_phi_90[i]));
+          err = std::max(err, std::abs(sw.sigma_phi_90[i] - ex.sigma_phi_90[i]));
+        }
+      }
+      EXPECT_LT(err / big, kAgreeTol) << al << " " << er;
+      EXPECT_NEAR(sw.load, ex.load, kAgreeTol * ex.load);
+      // the estimate (relative to the mean stress) against the true error (same measure)
+      const double actual = err / std::abs(ex.mean_stress);
+      EXPECT_GT(sw.summary.richardson_error, 0.0);
+      EXPECT_GT(sw.summary.richardson_error, 0.5 * actual) << al << " " << er;
+      EXPECT_LT(sw.summary.richardson_error, 2.0 * actual) << al << " " << er;
+    }
+}
+
+// Unilateral contact: where the bilateral solution pulls, the ring separates. The minimum of
+// strain energy over the larger admissible set is lower, and with the energy = ½·P·δ identity
+// (Clapeyron; no work where the ring is free) the load for the same opening cannot rise.
+// Pressure no longer pulls (to the collocation's resolution), equilibrium still holds, and the
+// contact angle is stable under refinement.
+TEST(RingUnilateral, SeparatesWhereTheBilateralPullsAndCarriesNoMore) {
+  constexpr double kPullTol = 0.03;  // [-] of the mean stress, between collocation points
+  for (double er : {0.25, 1.0}) {
+    Ring ring = paper_ring(0.472, er);
+    if (er == 1.0) ring.G = ring.E_phi / (2 * (1 + ring.nu_phi_r));
+    Options o;
+    o.harmonics = 160;
+    const Result bi = analyse(ring, o);
+    o.unilateral = true;
+    const Result uni = analyse(ring, o);
+    EXPECT_LT(uni.contact_angle, 0.5 * M_PI);
+    EXPECT_GT(uni.contact_angle, 0.25 * M_PI);
+    EXPECT_LE(uni.load, bi.load);
+    EXPECT_NEAR(uni.load, uni.load_contact, 1e-9 * uni.load);
+    for (std::size_t j = 0; j < uni.contact_pressure.size(); ++j) {
+      EXPECT_GT(uni.contact_pressure[j], -kPullTol * uni.mean_stress) << uni.contact_phi[j];
+      if (uni.contact_phi[j] > uni.contact_angle + 0.05) {  // well inside the free zone
+        EXPECT_NEAR(uni.contact_pressure[j], 0.0, kPullTol * uni.mean_stress);
+      }
+    }
+    o.harmonics = 320;
+    const Result fine = analyse(ring, o);
+    EXPECT_NEAR(fine.contact_angle, uni.contact_angle, 1.5 * M_PI / 180) << er;
+    EXPECT_NEAR(fine.load, uni.load, 2e-3 * uni.load) << er;
+  }
+}
+
+// The quarter-ring field is the same series: its φ = 0 and φ = π/2 rows are the sections, its
+// inner column is minus the contact pressure, τ vanishes on both symmetry sections, and σ_r and τ
+// vanish on the free outer edge.
+TEST(RingField, AgreesWithSectionsContactAndFreeEdges) {
+  const Ring ring = paper_ring(0.6, 0.5);
+  Options o;
+  o.harmonics = 120;
+  const Result r = analyse(ring, o);
+  ASSERT_EQ(r.field_sigma_phi.size(), r.contact_phi.size());
+  const double tol = 1e-9 * r.mean_stress * 100;
+  const std::size_t last = r.contact_phi.size() - 1, np = r.r.size();
+  for (std::size_t i = 0; i < np; ++i) {
+    EXPECT_NEAR(r.field_sigma_phi[0][i], r.sigma_phi_0[i], tol);
+    EXPECT_NEAR(r.field_sigma_r[0][i], r.sigma_r_0[i], tol);
+    EXPECT_NEAR(r.field_sigma_phi[last][i], r.sigma_phi_90[i], tol);
+    EXPECT_NEAR(r.field_tau[0][i], 0.0, tol);
+    EXPECT_NEAR(r.field_tau[last][i], 0.0, tol);
+  }
+  for (std::size_t j = 0; j <= last; ++j) {
+    EXPECT_NEAR(r.field_sigma_r[j][0], -r.contact_pressure[j], tol);
+    EXPECT_NEAR(r.field_sigma_r[j][np - 1], 0.0, 1e-6 * r.mean_stress);
+    EXPECT_NEAR(r.field_tau[j][np - 1], 0.0, 1e-6 * r.mean_stress);
+    EXPECT_NEAR(r.field_tau[j][0], 0.0, 1e-6 * r.mean_stress);  // smooth half-discs
+  }
+}
+
+TEST(RingValidate, OptionsListEveryProblem) {
+  Options o;
+  o.harmonics = 1;
+  o.nodes = 5;
+  o.points = 20;
+  const auto issues = validate(o);
+  ASSERT_EQ(issues.size(), 3u);
+  EXPECT_EQ(issues[0].field, "harmonics");
+  EXPECT_EQ(issues[1].field, "nodes");
+  EXPECT_EQ(issues[2].field, "points");
   Options sweep;
   sweep.method = Method::kSweep;
-  const auto issues = validate(sweep);
-  ASSERT_EQ(issues.size(), 1u);
-  EXPECT_EQ(issues[0].field, "method");
+  EXPECT_TRUE(validate(sweep).empty());
 }
 
 }  // namespace

@@ -33,6 +33,10 @@ struct Options {
   int harmonics = 0;  ///< highest even harmonic N; 0: default_harmonics(ring)
   int nodes = 0;      ///< sweep intervals m; 0: default_nodes(ring, N)
   int points = 41;    ///< output radii, equally spaced from r1 to r2 (odd, ≥ 21)
+  /// Unilateral contact: where the bilateral solution would have the half-disc pull on the ring,
+  /// the ring separates (σ_r = τ = 0 there, no penetration), found by an active-set iteration
+  /// over collocation points (one per harmonic).
+  bool unilateral = false;
 };
 
 std::vector<Issue> validate(const Ring& ring);
@@ -62,9 +66,10 @@ double inner_coefficient(int n);
 
 /// Exact per-harmonic solution (powers ρ^λ, λ² from a quadratic) at radii `rho`.
 Harmonic solve_exact(const Ring& ring, int n, const std::vector<double>& rho);
-/// NOT VALIDATED (work in progress, see docs): the paper's sweep (6)–(8) with m intervals;
-/// its second-order test against solve_exact does not pass yet (NaN / O(1e-3) errors).  `rho` must be nodes of the grid
-/// (α + i(1 − α)/m). m must be even (Simpson's rule for the section integral).
+/// The paper's finite-difference sweep (6)–(8) with m intervals: central differences inside,
+/// second-order one-sided differences at both edges, block (2×2) forward elimination and back
+/// substitution. Second order in h (RingSweep tests). `rho` must be nodes of the grid
+/// (α + i(1 − α)/m); m must be even (Simpson's rule for the section integral).
 Harmonic solve_sweep(const Ring& ring, int n, int m, const std::vector<double>& rho);
 
 struct Summary {
@@ -82,6 +87,8 @@ struct Result {
   std::vector<double> sigma_r_90, sigma_phi_90, tau_90;  ///< [Pa] section φ = π/2
   std::vector<double> contact_phi;                       ///< [rad] 0..π/2
   std::vector<double> contact_pressure;                  ///< [Pa] −σ_r(r1, φ); < 0 is tension
+  /// [Pa] the stresses over the quarter ring: [j][i] at φ = contact_phi[j], r = r[i]
+  std::vector<std::vector<double>> field_sigma_r, field_sigma_phi, field_tau;
   double load = 0.0;          ///< [N] P from σ_φ on the two φ = π/2 sections
   double load_contact = 0.0;  ///< [N] P from the contact pressure (equilibrium check)
   double mean_stress = 0.0;   ///< [Pa] P / (2 (r2 − r1) t)
@@ -90,6 +97,10 @@ struct Result {
   double max_shear = 0.0;             ///< [Pa] max |τ| over the quarter ring grid
   double max_shear_r = 0.0, max_shear_phi = 0.0;  ///< [m], [rad] where
   double sum_sigma_r = 0.0;  ///< ∫_0^{π/2} σ̃_r cos φ dφ with σ̃_r = −σ_r(r1)/mean (eq. (9))
+  /// Unilateral contact: the half-disc touches the ring for φ < contact_angle (π/2: everywhere;
+  /// bilateral: always π/2), found after `contact_iterations` active-set passes.
+  double contact_angle = 0.0;  ///< [rad]
+  int contact_iterations = 0;
   std::vector<Diagnostic> diagnostics;
   Summary summary;
 };

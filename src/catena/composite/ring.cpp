@@ -74,6 +74,96 @@ M2 inv(const M2& p) {
 }
 M2 neg(const M2& p) { return {-p.a, -p.b, -p.c, -p.d}; }
 
+/// Dense real solve with partial pivoting (row-major n×n `a`); false if singular.
+bool solve_real(std::vector<double> a, std::vector<double>& b) {
+  const std::size_t n = b.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t p = k;
+    for (std::size_t i = k + 1; i < n; ++i)
+      if (std::abs(a[i * n + k]) > std::abs(a[p * n + k])) p = i;
+    if (!(std::abs(a[p * n + k]) > 0.0)) return false;
+    if (p != k) {
+      for (std::size_t j = 0; j < n; ++j) std::swap(a[k * n + j], a[p * n + j]);
+      std::swap(b[k], b[p]);
+    }
+    const double piv = a[k * n + k];
+    for (std::size_t i = k + 1; i < n; ++i) {
+      const double f = a[i * n + k] / piv;
+      if (f == 0.0) continue;
+      for (std::size_t j = k; j < n; ++j) a[i * n + j] -= f * a[k * n + j];
+      b[i] -= f * b[k];
+    }
+  }
+  for (std::size_t k = n; k-- > 0;) {
+    double s = b[k];
+    for (std::size_t j = k + 1; j < n; ++j) s -= a[k * n + j] * b[j];
+    b[k] = s / a[k * n + k];
+  }
+  return true;
+}
+
+/// Unilateral contact (seed 002 extended): each harmonic's solution for the inner displacement
+/// Δc_n is rescaled by s_n so that, at collocation angles φ_j = j(π/2)/(K − 1), either the ring
+/// follows the half-disc (Σ s_n Δc_n cos nφ_j = Δ cos φ_j, contact) or is free (pressure
+/// −Σ s_n σ_r,n(α) cos nφ_j = 0, separated). Active set: contact points with tension leave,
+/// separated points that would penetrate (u < Δ cos φ) return. Returns the scales; sets the
+/// contact angle and the pass count.
+std::vector<double> unilateral_scales(const std::vector<Harmonic>& hs, double delta,
+                                      double& contact_angle, int& passes) {
+  const std::size_t k = hs.size();
+  std::vector<double> phi(k), u0(k), scale(k, 1.0);
+  for (std::size_t j = 0; j < k; ++j) {
+    phi[j] = 0.5 * kPi * static_cast<double>(j) / static_cast<double>(k - 1);
+    u0[j] = delta * std::cos(phi[j]);
+  }
+  auto disp = [&](std::size_t j, const std::vector<double>& s) {
+    double u = 0;
+    for (std::size_t n = 0; n < k; ++n)
+      u += s[n] * delta * inner_coefficient(hs[n].n) * std::cos(hs[n].n * phi[j]);
+    return u;
+  };
+  auto pressure = [&](std::size_t j, const std::vector<double>& s) {
+    double p = 0;
+    for (std::size_t n = 0; n < k; ++n) p -= s[n] * hs[n].inner_sigma_r * std::cos(hs[n].n * phi[j]);
+    return p;
+  };
+  std::vector<char> contact(k, 1);
+  constexpr int kMaxPasses = 100;
+  for (passes = 1; passes <= kMaxPasses; ++passes) {
+    std::vector<double> a(k * k), b(k);
+    for (std::size_t j = 0; j < k; ++j) {
+      for (std::size_t n = 0; n < k; ++n) {
+        const double c = std::cos(hs[n].n * phi[j]);
+        a[j * k + n] = contact[j] ? delta * inner_coefficient(hs[n].n) * c
+                                  : -hs[n].inner_sigma_r * c;
+      }
+      b[j] = contact[j] ? u0[j] : 0.0;
+    }
+    if (!solve_real(a, b)) break;
+    scale = b;
+    bool changed = false;
+    double pscale = 0;
+    for (std::size_t j = 0; j < k; ++j) pscale = std::max(pscale, std::abs(pressure(j, scale)));
+    for (std::size_t j = 0; j < k; ++j) {
+      if (contact[j] && pressure(j, scale) < -1e-12 * pscale) {
+        contact[j] = 0;
+        changed = true;
+      } else if (!contact[j] && disp(j, scale) < u0[j] - 1e-12 * delta) {
+        contact[j] = 1;
+        changed = true;
+      }
+    }
+    if (!changed) break;
+  }
+  contact_angle = 0.5 * kPi;
+  for (std::size_t j = 0; j < k; ++j)
+    if (!contact[j]) {
+      contact_angle = j == 0 ? 0.0 : 0.5 * (phi[j - 1] + phi[j]);
+      break;
+    }
+  return scale;
+}
+
 double simpson(const std::vector<double>& f, double h) {
   const std::size_t m = f.size() - 1;
   double s = f.front() + f.back();
@@ -121,10 +211,6 @@ std::vector<Issue> validate(const Options& o) {
     out.push_back({"nodes", std::to_string(o.nodes), "0 (default) or 20..2000000"});
   if (o.points < 21 || o.points > 2001 || o.points % 2 == 0)
     out.push_back({"points", std::to_string(o.points), "an odd number 21..2001"});
-  // The paper's sweep (6)–(8) is implemented but its convergence to the exact solution is not
-  // yet shown (issue 7 is open): it is not offered until a test proves it.
-  if (o.method == Method::kSweep)
-    out.push_back({"method", "sweep", "exact (the finite-difference sweep is not validated yet)"});
   return out;
 }
 
@@ -214,8 +300,6 @@ Harmonic solve_exact(const Ring& ring, int n, const std::vector<double>& rho) {
     for (std::size_t j = i + 1; j < 4; ++j) sep = std::min(sep, std::abs(lam[i] - lam[j]));
   if (!(sep > kRepeatTol * scale) || !std::isfinite(scale)) {
     // (nearly) repeated exponents: the power basis degenerates; use a fine sweep instead
-    const double m_want = std::max(2000.0, 40.0 * dn * (1.0 - alpha) / alpha);
-    (void)m_want;
     h.fallback = true;
     return h;  // caller replaces by the sweep
   }
@@ -315,10 +399,15 @@ Harmonic solve_sweep(const Ring& ring, int n, int m, const std::vector<double>& 
     M2 b0 = {1.0, 0.0, -dn, -1.0 - 3.0 * r / (2 * h)};
     M2 c0 = {0.0, 0.0, 0.0, 4.0 * r / (2 * h)};
     M2 e0 = {0.0, 0.0, 0.0, -r / (2 * h)};
-    if (n == 0) b0 = {1.0, 0.0, 0.0, 1.0}, c0 = {0, 0, 0, 0}, e0 = {0, 0, 0, 0};
-    const M2 t = mul(e0, inv(C[1]));  // eliminate y2 with row 1
-    B[0] = sub(b0, mul(t, A[1]));
-    C[0] = sub(c0, mul(t, B[1]));
+    if (n == 0) {
+      // W ≡ 0 and V(α) given: no derivative, nothing to eliminate (C[1] is singular here)
+      B[0] = {1.0, 0.0, 0.0, 1.0};
+      C[0] = {0.0, 0.0, 0.0, 0.0};
+    } else {
+      const M2 t = mul(e0, inv(C[1]));  // eliminate y2 with row 1
+      B[0] = sub(b0, mul(t, A[1]));
+      C[0] = sub(c0, mul(t, B[1]));
+    }
     F[0] = {delta * inner_coefficient(n), 0.0};
   }
   // boundary ρ = 1: c11 V' + c12(V + nW) = 0; W' − W − nV = 0 with (7)
@@ -326,11 +415,16 @@ Harmonic solve_sweep(const Ring& ring, int n, int m, const std::vector<double>& 
     const M2 bm = {c.c11 * 3.0 / (2 * h) + c.c12, c.c12 * dn, -dn, 3.0 / (2 * h) - 1.0};
     const M2 am = {c.c11 * -4.0 / (2 * h), 0.0, 0.0, -4.0 / (2 * h)};
     const M2 fm = {c.c11 * 1.0 / (2 * h), 0.0, 0.0, 1.0 / (2 * h)};
-    M2 bb = bm, aa = am, ff = fm;
-    if (n == 0) bb.b = bb.c = 0, bb.d = 1, aa.d = 0, ff.d = 0;
-    const M2 t = mul(ff, inv(A[mm - 1]));  // eliminate y_{m−2} with row m−1
-    A[mm] = sub(aa, mul(t, B[mm - 1]));
-    B[mm] = sub(bb, mul(t, C[mm - 1]));
+    if (n == 0) {
+      // W ≡ 0: only the first row, a scalar elimination of V_{m−2} with row m−1's V part
+      const double t = fm.a / A[mm - 1].a;
+      A[mm] = {am.a - t * B[mm - 1].a, 0.0, 0.0, 0.0};
+      B[mm] = {bm.a - t * C[mm - 1].a, 0.0, 0.0, 1.0};
+    } else {
+      const M2 t = mul(fm, inv(A[mm - 1]));  // eliminate y_{m−2} with row m−1
+      A[mm] = sub(am, mul(t, B[mm - 1]));
+      B[mm] = sub(bm, mul(t, C[mm - 1]));
+    }
   }
   // forward elimination (8): y_i = P_i y_{i+1} + g_i
   std::vector<M2> P(mm + 1);
@@ -398,8 +492,9 @@ Result analyse(const Ring& ring, const Options& options) {
   const bool sweep = options.method == Method::kSweep;
   int m = options.nodes > 0 ? options.nodes : default_nodes(ring, N, options.points);
   const int step = options.points - 1;
-  if (m % step != 0) m = (m / step + 1) * step;
-  if (m % 2 != 0) m += step;
+  // m a multiple of 2·step: the output radii are nodes of both m and m/2 (Richardson), and m/2
+  // is even (Simpson); step is even because points is odd
+  if (m % (2 * step) != 0) m = (m / (2 * step) + 1) * (2 * step);
   const auto np = static_cast<std::size_t>(options.points);
   std::vector<double> rho(np);
   for (std::size_t i = 0; i < np; ++i)
@@ -412,17 +507,36 @@ Result analyse(const Ring& ring, const Options& options) {
   res.summary.nodes = sweep ? m : 0;
   std::vector<Harmonic> hs;
   std::vector<Harmonic> coarse;  // sweep with m/2 for Richardson
-  const int fallback_m = std::max(2 * step, default_nodes(ring, N, options.points) * 2);
+  int fallback_m = std::max(2 * step, default_nodes(ring, N, options.points) * 2);
+  fallback_m += (2 * step - fallback_m % (2 * step)) % (2 * step);
   for (int n = 0; n <= N; n += 2) {
     Harmonic hm = sweep ? solve_sweep(ring, n, m, rho) : solve_exact(ring, n, rho);
     if (hm.fallback) {
-      hm = solve_sweep(ring, n, fallback_m - fallback_m % (2 * step), rho);
+      hm = solve_sweep(ring, n, fallback_m, rho);
       hm.fallback = true;
       ++res.summary.fallbacks;
     }
     hs.push_back(std::move(hm));
-    if (sweep && (m / 2) % step == 0 && (m / 2) % 2 == 0)
-      coarse.push_back(solve_sweep(ring, n, m / 2, rho));
+    if (sweep) coarse.push_back(solve_sweep(ring, n, m / 2, rho));
+  }
+  res.contact_angle = 0.5 * kPi;
+  if (options.unilateral) {
+    const double delta = 0.5 * ring.gap / ring.outer_radius;
+    auto rescale = [](std::vector<Harmonic>& list, const std::vector<double>& sc) {
+      for (std::size_t k = 0; k < list.size(); ++k) {
+        Harmonic& hm = list[k];
+        for (auto* v : {&hm.sigma_r, &hm.sigma_phi, &hm.tau})
+          for (double& x : *v) x *= sc[k];
+        hm.section_integral *= sc[k];
+        hm.inner_sigma_r *= sc[k];
+      }
+    };
+    rescale(hs, unilateral_scales(hs, delta, res.contact_angle, res.contact_iterations));
+    if (!coarse.empty()) {  // the coarse sweep finds its own contact zone (Richardson)
+      double angle = 0;
+      int passes = 0;
+      rescale(coarse, unilateral_scales(coarse, delta, angle, passes));
+    }
   }
   // sums at φ = 0 (cos nφ = 1) and φ = π/2 (cos nφ = (−1)^{n/2}); τ vanishes on both sections
   const double r2 = ring.outer_radius;
@@ -469,15 +583,27 @@ Result analyse(const Ring& ring, const Options& options) {
     for (const Harmonic& hm : hs) p -= hm.inner_sigma_r * std::cos(hm.n * phi);
     res.contact_phi.push_back(phi);
     res.contact_pressure.push_back(p);
+    std::vector<double> fr(np), fp(np), ft(np);
     for (std::size_t i = 0; i < np; ++i) {
-      double t = 0;
-      for (const Harmonic& hm : hs) t += hm.tau[i] * std::sin(hm.n * phi);
+      double t = 0, sr = 0, sp = 0;
+      for (const Harmonic& hm : hs) {
+        const double c = std::cos(hm.n * phi);
+        t += hm.tau[i] * std::sin(hm.n * phi);
+        sr += hm.sigma_r[i] * c;
+        sp += hm.sigma_phi[i] * c;
+      }
+      fr[i] = sr;
+      fp[i] = sp;
+      ft[i] = t;
       if (std::abs(t) > std::abs(res.max_shear)) {
         res.max_shear = t;
         res.max_shear_r = res.r[i];
         res.max_shear_phi = phi;
       }
     }
+    res.field_sigma_r.push_back(std::move(fr));
+    res.field_sigma_phi.push_back(std::move(fp));
+    res.field_tau.push_back(std::move(ft));
   }
   const double cutoff = alpha + kCornerFraction * (1.0 - alpha) - 1e-12;
   double smax = -1e300;
@@ -513,22 +639,34 @@ Result analyse(const Ring& ring, const Options& options) {
   // diagnostics: tension in the contact, corner singularity
   double pmin = 0;
   for (double p : res.contact_pressure) pmin = std::min(pmin, p);
-  if (pmin < 0) {
+  if (pmin < 0 && !options.unilateral) {
+    double at = 0;
+    for (std::size_t j = 0; j < res.contact_pressure.size(); ++j)
+      if (res.contact_pressure[j] < 0) {
+        at = res.contact_phi[j];
+        break;
+      }
     res.diagnostics.push_back(
         {Diagnostic::Severity::kWarning, "composite.contact_tension",
-         "the half-disc pulls on the ring somewhere (negative contact pressure): bilateral "
-         "contact assumed by eq. (2); --unilateral is not implemented",
+         "the half-disc pulls on the ring (negative contact pressure, value: the least, Pa) from "
+         "phi = " + std::to_string(at * 180.0 / kPi).substr(0, 5) +
+             " deg: eq. (2) assumes bilateral contact; --unilateral lets the ring separate there",
          pmin, 0.0});
   }
+  if (options.unilateral && res.contact_iterations > 100)
+    res.diagnostics.push_back({Diagnostic::Severity::kWarning, "composite.unilateral_not_settled",
+                               "the contact zone did not settle in 100 active-set passes",
+                               static_cast<double>(res.contact_iterations), 100.0});
   res.diagnostics.push_back(
       {Diagnostic::Severity::kInfo, "composite.corner_singularity",
        "sigma_phi at (r1, pi/2), where the half-discs meet, grows without bound with the number "
        "of harmonics; it is reported for N = " + std::to_string(N) + " only",
        res.corner_sigma_phi, 0.0});
   if (res.summary.fallbacks > 0)
-    res.diagnostics.push_back({Diagnostic::Severity::kWarning, "composite.repeated_exponents",
-                               "some harmonics had (nearly) repeated exponents; the paper's sweep, "
-                               "not validated yet, solved them: their part is unverified",
+    res.diagnostics.push_back({Diagnostic::Severity::kInfo, "composite.repeated_exponents",
+                               "some harmonics had (nearly) repeated exponents, where the power "
+                               "basis degenerates; the paper's sweep solved them with " +
+                                   std::to_string(fallback_m) + " intervals (value: how many)",
                                static_cast<double>(res.summary.fallbacks), 0.0});
   return res;
 }
