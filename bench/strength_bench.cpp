@@ -34,6 +34,14 @@ void BM_StrengthRollingBothLayouts(benchmark::State& state) {
 }
 BENCHMARK(BM_StrengthRollingBothLayouts);
 
+void BM_StrengthSlidingLinksAtAnAngle(benchmark::State& state) {
+  Input in = example(HingeKind::kSliding);
+  in.loads.exit_tension = 12.7e3;  // the thesis' F2 at the end of the engagement
+  in.loads.link_angle = 0.785;     // 45°: both directions loaded, the resultant's scan
+  for (auto _ : state) benchmark::DoNotOptimize(assess(in));
+}
+BENCHMARK(BM_StrengthSlidingLinksAtAnAngle);
+
 void BM_StrengthMomentAt(benchmark::State& state) {
   const Input in = example(HingeKind::kSliding);
   const Beam b = beam(in, layout_loads(in, 1));
