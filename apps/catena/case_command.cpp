@@ -16,6 +16,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "catena/io/case_file.hpp"
 #include "catena/io/report.hpp"
@@ -126,6 +127,8 @@ ordered_json column(const ordered_json& rows, const std::string& key) {
   for (const auto& row : rows) out.push_back(row.contains(key) ? row[key] : ordered_json());
   return out;
 }
+
+std::string format_value(const ordered_json& v, double scale);  // below, with the outputs
 
 const std::vector<AnalysisSpec>& analysis_specs() {
   static const std::vector<AnalysisSpec> specs = {
@@ -273,6 +276,51 @@ const std::vector<AnalysisSpec>& analysis_specs() {
            c.traces.push_back({name, xy.first, xy.second});
          }
          s.charts.push_back(c);
+       },
+       {{"rolling-hinge", {{"--hinge", "rolling"}, {}}},
+        {"sliding-hinge", {{"--hinge", "sliding"}, {"plate_radius", "roller_radius"}}}}},
+      {"strength",
+       {"strength"},
+       "Strength of the roller and plates: M and Q diagrams, safety factors (seed 000 §1.5)",
+       "docs/models/strength.md",
+       {"rolling-hinge", "sliding-hinge"},
+       {},
+       {},
+       [](const ordered_json& r, io::ReportSection& s) {
+         if (r.contains("checks") && r["checks"].is_array()) {
+           io::ReportGrid grid{"Safety factors",
+                               {"check", "section", "stress [MPa]", "allowable [MPa]", "n",
+                                "required", "ok"},
+                               {},
+                               {}};
+           for (const ordered_json& c : r["checks"]) {
+             grid.rows.push_back({c.value("name", std::string()), c.value("section", std::string()),
+                                  format_value(c["stress"], 1e-6),
+                                  format_value(c["allowable"], 1e-6),
+                                  format_value(c["safety_factor"], 1.0),
+                                  format_value(c["required"], 1.0), format_value(c["ok"], 1.0)});
+           }
+           s.grids.push_back(std::move(grid));
+         }
+         if (!r.contains("diagrams") || !r["diagrams"].is_object()) return;
+         const ordered_json& d = r["diagrams"];
+         for (const auto& [key, title, unit, scale] :
+              {std::tuple<const char*, const char*, const char*, double>{
+                   "M", "Bending moment along the roller", "M [N·m]", 1.0},
+               {"Q", "Shear force along the roller", "Q [kN]", 1e-3}}) {
+           io::ReportChart c;
+           c.title = title;
+           c.x_label = "z [mm]";
+           c.y_label = unit;
+           for (auto it = d.begin(); it != d.end(); ++it) {
+             // links at an angle: the resultant's magnitude
+             std::string k = key;
+             if (it.value().contains(k + "_resultant")) k += "_resultant";
+             c.traces.push_back({it.key() + (k == key ? "" : " |" + std::string(key) + "|"),
+                                 numbers(it.value()["x"], 1e3), numbers(it.value()[k], scale)});
+           }
+           s.charts.push_back(c);
+         }
        },
        {{"rolling-hinge", {{"--hinge", "rolling"}, {}}},
         {"sliding-hinge", {{"--hinge", "sliding"}, {"plate_radius", "roller_radius"}}}}},
@@ -496,7 +544,7 @@ CaseRun run_case(const io::CaseFile& file) {
   if (wanted.empty() && file.find("analyses") == nullptr) {
     issues.push_back({"analyses", "(missing)",
                       "at least one [analyses.<name>] table; names: pocketwheel, hinge, "
-                      "hinge_sweep, contact, fretting, engagement, warp, ring, loop"});
+                      "hinge_sweep, contact, fretting, engagement, warp, ring, loop, strength"});
   }
   struct Planned {
     const AnalysisSpec* spec;
@@ -515,7 +563,7 @@ CaseRun run_case(const io::CaseFile& file) {
     if (it == specs.end()) {
       issues.push_back({"analyses." + name, "(table)",
                         "an analysis Catena has: pocketwheel, hinge, hinge_sweep, contact, "
-                        "fretting, engagement, warp, ring, loop" +
+                        "fretting, engagement, warp, ring, loop, strength" +
                             suggest(name, spec_names)});
       continue;
     }
@@ -785,7 +833,8 @@ std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
           {"warp", add_warp(app)},
           {"engagement", add_engagement(app)},
           {"ring", add_ring(app)},
-          {"loop", add_loop(app)}};
+          {"loop", add_loop(app)},
+          {"strength", add_strength(app)}};
 }
 
 std::function<int()> add_run(CLI::App& app) {

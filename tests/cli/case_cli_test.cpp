@@ -59,6 +59,13 @@ TEST(CaseCli, EachExampleGivesWhatItsSubcommandGives) {
       "--force '30 kN, 35 kN, 40 kN' --load-height '28 mm, 28.5 mm, 29 mm, 29.5 mm, 30 mm' "
       "--plate-radius 34mm --roller-radius 35.4mm --format json");
   EXPECT_EQ(hinge["analyses"]["warp"], direct_warp);
+  const auto direct_strength = run_json(
+      "strength --hinge rolling --pin-diameter 40mm --modulus 210GPa --poisson 0.3 "
+      "--tension 29.4kN --allowable-contact 1600MPa --heights '0, 8 mm, 48 mm, 56 mm' "
+      "--widths 8mm --plate-width 80mm --end-distance 40mm --plate-radius 34mm "
+      "--roller-radius 35.4mm --roller-yield 600MPa --plate-yield 355MPa --plate-ultimate 490MPa "
+      "--safety-factor 1.5 --format json");
+  EXPECT_EQ(hinge["analyses"]["strength"], direct_strength);
 
   const auto contact = run_json("run " + kExamples + "/001_roller_chain_skew.toml");
   const auto direct_contact = run_json(
