@@ -11,6 +11,11 @@
 
 namespace catena::cli {
 
+/// `v` with `digits` significant digits (printf's %g): numbers in tables and messages.
+std::string format_g(double v, int digits = 6);
+/// The comma-separated parts of a list flag ("30kN,35kN"), empty parts kept.
+std::vector<std::string> split_commas(const std::string& text);
+
 /// Parses flags into SI values, collecting every problem so that all are reported at once.
 class FlagReader {
  public:

@@ -30,12 +30,6 @@ struct ContactFlags {
   std::string chain, format = "table", output, sweep, slices = "201";
 };
 
-std::string g(double v, int digits = 6) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
-
 std::optional<double> number(FlagReader& in, const std::string& flag, const std::string& text,
                              const char* expected) {
   if (text.empty()) return std::nullopt;
@@ -154,7 +148,7 @@ ContactRequest read(const ContactFlags& f) {
     r.gamma = table.value_or(NAN);
   } else {
     in.add(
-        {"--pitch", g(r.pitch * 1e3) + " mm",
+        {"--pitch", format_g(r.pitch * 1e3) + " mm",
          "a pitch of the paper's γ table (12.7, 15.875, 19.05, 25.4 mm), or γ given with --gamma "
          "(no extrapolation)"});
   }
@@ -166,7 +160,7 @@ ContactRequest read(const ContactFlags& f) {
   } else if (r.sweep &&
              r.slices * ((*r.sweep)[1] - (*r.sweep)[0]) / (*r.sweep)[2] > kMaxSliceWork) {
     in.add({"--slices", f.slices,
-            "at most " + g(kMaxSliceWork) +
+            "at most " + format_g(kMaxSliceWork) +
                 " slices × sweep points in all: fewer slices or a "
                 "coarser --skew-sweep"});
   }
@@ -239,9 +233,10 @@ int run_contact(const ContactFlags& f) {
                     "slice factor  loaded [mm]\n");
       for (const auto& p : rows) {
         if (csv) {
-          out << g(p.skew, 12) << "," << g(p.load_factor, 12) << "," << g(p.effective_load, 12)
-              << "," << g(p.paper_stress, 12) << "," << g(p.hertz_effective, 12) << ","
-              << g(p.slice_peak, 12) << "," << g(p.slice_length, 12) << "\n";
+          out << format_g(p.skew, 12) << "," << format_g(p.load_factor, 12) << ","
+              << format_g(p.effective_load, 12) << "," << format_g(p.paper_stress, 12) << ","
+              << format_g(p.hertz_effective, 12) << "," << format_g(p.slice_peak, 12) << ","
+              << format_g(p.slice_length, 12) << "\n";
         } else {
           char line[256];
           std::snprintf(line, sizeof line, "  %13.4g %8.4g %18.5g %13.4g %17.5g %13.4g %12.4g\n",
@@ -305,7 +300,7 @@ int run_contact(const ContactFlags& f) {
       std::ostringstream out;
       out << "s,q\n";
       for (std::size_t i = 0; i < s.s.size(); ++i)
-        out << g(s.s[i], 12) << "," << g(s.q[i], 12) << "\n";
+        out << format_g(s.s[i], 12) << "," << format_g(s.q[i], 12) << "\n";
       text = out.str();
     } else {
       std::ostringstream out;
@@ -315,24 +310,24 @@ int run_contact(const ContactFlags& f) {
         out << line;
       };
       out << "Catena contact: roller on sprocket tooth with axis skew (seed 001)\n\n";
-      row("reduced radius rho [mm]", g(reduced_radius(r.c) * 1e3));
+      row("reduced radius rho [mm]", format_g(reduced_radius(r.c) * 1e3));
       row("skew measured / design (K_phi) [arcmin]",
-          g(r.skew / kArcmin) + " / " + g(r.skew * r.skew_factor / kArcmin));
-      row("gamma of eq. (2) [1/arcmin^2]", g(r.gamma));
-      row("load factor Q_n/Q_nom (eq. 2)", g(p.load_factor));
-      row("contact stress eq. (3), 0.418 [MPa]", g(p.paper_stress / 1e6));
+          format_g(r.skew / kArcmin) + " / " + format_g(r.skew * r.skew_factor / kArcmin));
+      row("gamma of eq. (2) [1/arcmin^2]", format_g(r.gamma));
+      row("load factor Q_n/Q_nom (eq. 2)", format_g(p.load_factor));
+      row("contact stress eq. (3), 0.418 [MPa]", format_g(p.paper_stress / 1e6));
       row("Hertz stress at Q_n / at Q_nom [MPa]",
-          g(eff.peak_pressure / 1e6) + " / " + g(nominal.peak_pressure / 1e6));
-      row("half-width b at Q_n [mm]", g(eff.half_width * 1e3));
+          format_g(eff.peak_pressure / 1e6) + " / " + format_g(nominal.peak_pressure / 1e6));
+      row("half-width b at Q_n [mm]", format_g(eff.half_width * 1e3));
       row("max shear 0.300 p0 at depth 0.786 b [MPa, mm]",
-          g(eff.max_shear / 1e6) + ", " + g(eff.max_shear_depth * 1e3));
-      row("slice model: peak stress [MPa]", g(s.stress_peak / 1e6));
-      row("slice model: stress factor vs aligned", g(s.stress_peak / nominal.peak_pressure));
-      row("paper: stress factor sqrt(Q_n/Q_nom)", g(std::sqrt(p.load_factor)));
+          format_g(eff.max_shear / 1e6) + ", " + format_g(eff.max_shear_depth * 1e3));
+      row("slice model: peak stress [MPa]", format_g(s.stress_peak / 1e6));
+      row("slice model: stress factor vs aligned", format_g(s.stress_peak / nominal.peak_pressure));
+      row("paper: stress factor sqrt(Q_n/Q_nom)", format_g(std::sqrt(p.load_factor)));
       row("slice model: loaded length [mm]",
-          g(s.loaded_length * 1e3) + " of " + g(r.c.roller_length * 1e3));
+          format_g(s.loaded_length * 1e3) + " of " + format_g(r.c.roller_length * 1e3));
       row("slice model: loaded length / peak half-width",
-          g(s.loaded_length / s.peak_half_width, 3) +
+          format_g(s.loaded_length / s.peak_half_width, 3) +
               (s.loaded_length < 5 * s.peak_half_width
                    ? "  (< 5: a short patch, the strip model is rough here)"
                    : ""));
@@ -387,13 +382,13 @@ int run_fretting(const FrettingFlags& f) {
                    {"units", {{"latent_period", "s"}, {"exponent", "1"}, {"cycles", "1"}}}};
     text = j.dump(2) + "\n";
   } else if (f.format == "csv") {
-    text = "latent_period,exponent,cycles\n" + g(tau, 12) + "," + g(exponent, 12) + "," +
-           g(tau * m.frequency, 12) + "\n";
+    text = "latent_period,exponent,cycles\n" + format_g(tau, 12) + "," + format_g(exponent, 12) +
+           "," + format_g(tau * m.frequency, 12) + "\n";
   } else {
     text =
         "Catena fretting: latent period (seed 001, Vikulov eq. 1)\n\n  latent period tau [s]   " +
-        g(tau) + " (" + g(tau / 3600) + " h, " + g(tau * m.frequency) +
-        " cycles)\n  exponent K2 A N f / Ra  " + g(exponent) + "\n";
+        format_g(tau) + " (" + format_g(tau / 3600) + " h, " + format_g(tau * m.frequency) +
+        " cycles)\n  exponent K2 A N f / Ra  " + format_g(exponent) + "\n";
   }
   Outputs outputs;
   if (!f.output.empty()) outputs.add("--output", f.output, text);

@@ -27,11 +27,6 @@ struct Flags {
   std::string points = "91", format = "table", output, wrap_angle = "180deg";
 };
 
-std::string g(double v, int digits = 6) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
 double deg(double rad) { return rad * 180.0 / std::numbers::pi; }
 
 struct Request {
@@ -229,21 +224,22 @@ int run_engagement(const Flags& f) {
     std::ostringstream out;
     out << "gamma,F2,FN,xi,rolling_resistance,residual\n";
     for (const Sample& s : res.series) {
-      out << g(s.gamma, 12) << "," << g(s.f2, 12) << "," << g(s.fn, 12) << ",";
+      out << format_g(s.gamma, 12) << "," << format_g(s.f2, 12) << "," << format_g(s.fn, 12) << ",";
       if (r.rolling)
-        out << g(s.xi, 12) << "," << g(std::max(s.f1k, s.f2k), 12);
+        out << format_g(s.xi, 12) << "," << format_g(std::max(s.f1k, s.f2k), 12);
       else
         out << ",";
-      out << "," << g(s.residual, 6) << "\n";
+      out << "," << format_g(s.residual, 6) << "\n";
     }
     text = out.str();
   } else {
     std::ostringstream out;
     out << "Catena engagement: " << (r.rolling ? "rolling" : "sliding")
         << "-friction hinge entering a sprocket (seed 000 section 1.6)\n";
-    out << "F1 = " << g(tension / 1e3) << " kN, gammaSigma = " << g(deg(res.angles.gamma_sigma))
-        << " deg, beta1 = " << g(deg(res.angles.beta1))
-        << " deg, epsilon = " << g(deg(res.angles.epsilon)) << " deg\n\n";
+    out << "F1 = " << format_g(tension / 1e3)
+        << " kN, gammaSigma = " << format_g(deg(res.angles.gamma_sigma))
+        << " deg, beta1 = " << format_g(deg(res.angles.beta1))
+        << " deg, epsilon = " << format_g(deg(res.angles.epsilon)) << " deg\n\n";
     out << "  gamma[deg]    F2[kN]    FN[kN]   " << (r.rolling ? " xi[deg]  Fk[N]" : " turns")
         << "   residual\n";
     const std::size_t step = n > 11 ? (n - 1) / 10 : 1;
@@ -261,12 +257,12 @@ int run_engagement(const Flags& f) {
     }
     out << "\nroller turns over gamma [deg]:";
     for (const Range& rg : res.roller_turns)
-      out << " [" << g(deg(rg.from)) << ", " << g(deg(rg.to)) << "]";
+      out << " [" << format_g(deg(rg.from)) << ", " << format_g(deg(rg.to)) << "]";
     if (res.roller_turns.empty()) out << " none";
-    out << "\nlargest equilibrium residual: " << g(res.max_residual, 3) << "\n";
-    out << "whole wrap: " << w.rollers << " seated rollers, tension " << g(w.tension.front() / 1e3)
-        << " -> " << g(w.tension.back() / 1e3) << " kN, sprocket torque " << g(w.torque / 1e3)
-        << " kN*m (tooth normals only)\n";
+    out << "\nlargest equilibrium residual: " << format_g(res.max_residual, 3) << "\n";
+    out << "whole wrap: " << w.rollers << " seated rollers, tension "
+        << format_g(w.tension.front() / 1e3) << " -> " << format_g(w.tension.back() / 1e3)
+        << " kN, sprocket torque " << format_g(w.torque / 1e3) << " kN*m (tooth normals only)\n";
     for (const Diagnostic& d : res.diagnostics)
       out << "\n" << to_string(d.severity) << ": " << d.message << "\n";
     text = out.str();

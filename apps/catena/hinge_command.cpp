@@ -43,11 +43,6 @@ struct Request {
   double clearance = 0.5e-3;  ///< [m] aperture clearance
 };
 
-std::string g(double v, int digits = 6) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
 double deg(double rad) { return rad * 180.0 / std::numbers::pi; }
 ordered_json opt(const std::optional<double>& v) { return v ? ordered_json(*v) : ordered_json(); }
 
@@ -134,7 +129,7 @@ Request read(const Flags& f, bool sweep = false) {
   in.add_model_issues(validate(r.hinge));
   in.add_model_issues(validate(r.loads));
   if (r.pitch && (!std::isfinite(*r.pitch) || *r.pitch <= 0))
-    in.add({"--pitch", g(*r.pitch), "a pitch > 0"});
+    in.add({"--pitch", format_g(*r.pitch), "a pitch > 0"});
   if (!(r.clearance >= 0.0) || r.clearance > 0.5 * r.hinge.pin_diameter) {
     in.add({"--clearance", f.clearance, "a clearance from 0 to d/2"});
   }
@@ -284,10 +279,10 @@ int run_hinge(const Flags& f) {
     std::ostringstream out;
     out << "phi,dt" << (r.pitch ? ",dt_over_t" : "") << ",M1x,M1y,O2x,O2y\n";
     for (std::size_t i = 0; i < n; ++i) {
-      out << g(phi[i], 12) << "," << g(dt[i], 12);
-      if (r.pitch) out << "," << g(dt_t[i], 12);
-      out << "," << g(m1x[i], 12) << "," << g(m1y[i], 12) << "," << g(o2x[i], 12) << ","
-          << g(o2y[i], 12) << "\n";
+      out << format_g(phi[i], 12) << "," << format_g(dt[i], 12);
+      if (r.pitch) out << "," << format_g(dt_t[i], 12);
+      out << "," << format_g(m1x[i], 12) << "," << format_g(m1y[i], 12) << ","
+          << format_g(o2x[i], 12) << "," << format_g(o2y[i], 12) << "\n";
     }
     text = out.str();
   } else {
@@ -299,29 +294,31 @@ int run_hinge(const Flags& f) {
     };
     out << "Catena hinge: rolling-friction hinge (seed 000 section 1.2-1.3), "
         << (r.hinge.face == Face::kFlat ? "flat" : "concave") << " roller faces\n";
-    out << "d = " << g(r.hinge.pin_diameter * 1e3) << " mm, a = " << g(r.hinge.half_thickness * 1e3)
-        << " mm, R1 = " << g(r.hinge.plate_radius * 1e3) << " mm, z = " << r.hinge.teeth
+    out << "d = " << format_g(r.hinge.pin_diameter * 1e3)
+        << " mm, a = " << format_g(r.hinge.half_thickness * 1e3)
+        << " mm, R1 = " << format_g(r.hinge.plate_radius * 1e3) << " mm, z = " << r.hinge.teeth
         << ", m = " << r.hinge.strokes << "\n\n";
-    row("gamma_max, roller turn (eq. 12) [deg]", g(deg(s.gamma_max)));
-    row("x of N1 (eq. 4) [mm]", g(s.x_n1 * 1e3));
-    row("psi1_max (eq. 5) [deg]", g(deg(s.psi1_max)));
-    row("R1_max (eq. 7) [mm]", g(s.r1_max * 1e3));
+    row("gamma_max, roller turn (eq. 12) [deg]", format_g(deg(s.gamma_max)));
+    row("x of N1 (eq. 4) [mm]", format_g(s.x_n1 * 1e3));
+    row("psi1_max (eq. 5) [deg]", format_g(deg(s.psi1_max)));
+    row("R1_max (eq. 7) [mm]", format_g(s.r1_max * 1e3));
     row(s.r2_from_eq6 ? "R2 (eq. 6) [mm]" : "R2 (given) [mm]",
-        std::isfinite(s.r2) ? g(s.r2 * 1e3) : "flat");
-    row("face margin at phi_max [mm]", g(s.face_margin * 1e3));
+        std::isfinite(s.r2) ? format_g(s.r2 * 1e3) : "flat");
+    row("face margin at phi_max [mm]", format_g(s.face_margin * 1e3));
     row("section: true / eq. (10) [mm^2]",
-        g(s.section_area * 1e6) + " / " + g(s.section_area_eq10 * 1e6));
-    if (s.a_min) row("a_min (eq. 10) [mm]", g(*s.a_min * 1e3));
+        format_g(s.section_area * 1e6) + " / " + format_g(s.section_area_eq10 * 1e6));
+    if (s.a_min) row("a_min (eq. 10) [mm]", format_g(*s.a_min * 1e3));
     if (s.step1) {
       row("step 1, eqs. (7)+(10): a_min / R1max [mm]",
-          g(s.step1->a_min * 1e3) + " / " + g(s.step1->r1_max * 1e3));
+          format_g(s.step1->a_min * 1e3) + " / " + format_g(s.step1->r1_max * 1e3));
     }
-    if (s.shear_stress) row("shear stress F/A [MPa]", g(*s.shear_stress / 1e6));
-    if (s.contact_stress) row("Hertz contact stress sigma_H [MPa]", g(*s.contact_stress / 1e6));
-    if (s.rolling_limit) row("rolling limit (eq. 21) [deg]", g(deg(*s.rolling_limit)));
-    row("largest |pitch change| [mm]", g(max_pitch_change(r.hinge, s.r2) * 1e3));
-    row("pitch change at phi_max [mm]", g(dt.back() * 1e3));
-    if (r.pitch) row("pitch change at phi_max / t [-]", g(dt_t.back()));
+    if (s.shear_stress) row("shear stress F/A [MPa]", format_g(*s.shear_stress / 1e6));
+    if (s.contact_stress)
+      row("Hertz contact stress sigma_H [MPa]", format_g(*s.contact_stress / 1e6));
+    if (s.rolling_limit) row("rolling limit (eq. 21) [deg]", format_g(deg(*s.rolling_limit)));
+    row("largest |pitch change| [mm]", format_g(max_pitch_change(r.hinge, s.r2) * 1e3));
+    row("pitch change at phi_max [mm]", format_g(dt.back() * 1e3));
+    if (r.pitch) row("pitch change at phi_max / t [-]", format_g(dt_t.back()));
     for (const Diagnostic& d : s.diagnostics)
       out << "\n" << to_string(d.severity) << ": " << d.message << "\n";
     text = out.str();
@@ -343,7 +340,7 @@ int run_sweep(const Flags& f) {
   const Sweep sw = sweep(r.hinge, r.loads, r.count);
   std::string text;
   auto cell = [](const std::optional<double>& v, double scale) {
-    return v ? g(*v * scale) : std::string("-");
+    return v ? format_g(*v * scale) : std::string("-");
   };
   if (f.format == "json") {
     ordered_json rows = ordered_json::array();
@@ -392,20 +389,22 @@ int run_sweep(const Flags& f) {
     for (std::size_t i = 0; i < sw.rows.size(); ++i) {
       const SweepRow& row = sw.rows[i];
       if (csv) {
-        out << g(row.r1, 12) << "," << g(row.r2, 12) << "," << g(row.psi1_max, 12) << ","
-            << g(row.effective_radius, 12) << ","
-            << (row.contact_stress ? g(*row.contact_stress, 12) : "") << ","
-            << (row.rolling_limit ? g(*row.rolling_limit, 12) : "") << ","
-            << (row.a_min ? g(*row.a_min, 12) : "") << "," << g(row.max_pitch_change, 12) << ","
-            << g(row.face_margin, 12) << "," << (row.feasible ? 1 : 0) << "\n";
+        out << format_g(row.r1, 12) << "," << format_g(row.r2, 12) << ","
+            << format_g(row.psi1_max, 12) << "," << format_g(row.effective_radius, 12) << ","
+            << (row.contact_stress ? format_g(*row.contact_stress, 12) : "") << ","
+            << (row.rolling_limit ? format_g(*row.rolling_limit, 12) : "") << ","
+            << (row.a_min ? format_g(*row.a_min, 12) : "") << ","
+            << format_g(row.max_pitch_change, 12) << "," << format_g(row.face_margin, 12) << ","
+            << (row.feasible ? 1 : 0) << "\n";
       } else {
         char line[256];
         std::snprintf(line, sizeof line, "%s %10s %12s %10s %12s %12s %10s %10s %10s %9s\n",
-                      sw.best && *sw.best == i ? "*" : " ", g(row.r1 * 1e3).c_str(),
-                      g(row.r2 * 1e3).c_str(), g(deg(row.psi1_max)).c_str(),
-                      g(row.effective_radius * 1e3).c_str(), cell(row.contact_stress, 1e-6).c_str(),
-                      row.rolling_limit ? g(deg(*row.rolling_limit)).c_str() : "-",
-                      cell(row.a_min, 1e3).c_str(), g(row.max_pitch_change * 1e3).c_str(),
+                      sw.best && *sw.best == i ? "*" : " ", format_g(row.r1 * 1e3).c_str(),
+                      format_g(row.r2 * 1e3).c_str(), format_g(deg(row.psi1_max)).c_str(),
+                      format_g(row.effective_radius * 1e3).c_str(),
+                      cell(row.contact_stress, 1e-6).c_str(),
+                      row.rolling_limit ? format_g(deg(*row.rolling_limit)).c_str() : "-",
+                      cell(row.a_min, 1e3).c_str(), format_g(row.max_pitch_change * 1e3).c_str(),
                       row.feasible ? "yes" : "no");
         out << line;
       }

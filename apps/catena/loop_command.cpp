@@ -29,12 +29,6 @@ struct LoopFlags {
   std::string path, format = "table", output;
 };
 
-std::string g(double v, int digits = 6) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
-
 // What a key of the loop schema holds. kNone: a plain number (dimensionless).
 struct Key {
   enum class Type { kQuantity, kNumber, kText } type;
@@ -124,7 +118,7 @@ std::optional<double> read(const io::CaseValue& v, const Key& key, std::vector<I
 
 struct Parsed {
   Loop loop;
-  std::vector<int> segment_lines;  ///< line of each segment's first value (0: none)
+  std::vector<int> segment_lines;    ///< line of each segment's first value (0: none)
   std::map<std::string, int> lines;  ///< loop-relative field ("segment[2].length") → line
 };
 
@@ -207,7 +201,8 @@ Parsed parse_loop(const io::CaseFile& file) {
   if (!out.lines.count("speed"))
     issues.push_back({"loop.speed", "(missing)", "the chain speed v, e.g. \"0.5 m/s\""});
   if (!out.lines.count("efficiency"))
-    issues.push_back({"loop.efficiency", "(missing)", "the drive efficiency η in (0, 1], e.g. 0.85"});
+    issues.push_back(
+        {"loop.efficiency", "(missing)", "the drive efficiency η in (0, 1], e.g. 0.85"});
 
   std::vector<std::string> kind_names;
   for (const auto& [k, keys] : kind_keys()) kind_names.push_back(k);
@@ -354,10 +349,18 @@ int run_loop(const LoopFlags& f) {
     for (std::size_t i = 0; i < r.segments.size(); ++i) {
       const SegmentTension& t = r.segments[i];
       const char* kind = to_string(loop.segments[i].kind);
-      points.push_back({{"segment", i}, {"name", name_of(i)}, {"kind", kind}, {"at", "start"},
-                        {"s", t.s_start}, {"tension", t.tension_in}});
-      points.push_back({{"segment", i}, {"name", name_of(i)}, {"kind", kind}, {"at", "end"},
-                        {"s", t.s_end}, {"tension", t.tension_out}});
+      points.push_back({{"segment", i},
+                        {"name", name_of(i)},
+                        {"kind", kind},
+                        {"at", "start"},
+                        {"s", t.s_start},
+                        {"tension", t.tension_in}});
+      points.push_back({{"segment", i},
+                        {"name", name_of(i)},
+                        {"kind", kind},
+                        {"at", "end"},
+                        {"s", t.s_end},
+                        {"tension", t.tension_out}});
       segments.push_back({{"segment", i},
                           {"name", name_of(i)},
                           {"kind", kind},
@@ -386,12 +389,12 @@ int run_loop(const LoopFlags& f) {
                        {"value", d.value},
                        {"limit", d.limit}});
     j["diagnostics"] = diags;
-    j["units"] = {{"speed", "m/s"},        {"efficiency", "1"},     {"s", "m"},
-                  {"s_start", "m"},        {"s_end", "m"},          {"tension", "N"},
-                  {"tension_in", "N"},     {"tension_out", "N"},    {"resistance", "N"},
-                  {"max_tension", "N"},    {"min_tension", "N"},    {"slack_tension", "N"},
-                  {"tight_tension", "N"},  {"drive_force", "N"},    {"power", "W"},
-                  {"length", "m"},         {"value", "SI"},         {"limit", "SI"}};
+    j["units"] = {{"speed", "m/s"},       {"efficiency", "1"},  {"s", "m"},
+                  {"s_start", "m"},       {"s_end", "m"},       {"tension", "N"},
+                  {"tension_in", "N"},    {"tension_out", "N"}, {"resistance", "N"},
+                  {"max_tension", "N"},   {"min_tension", "N"}, {"slack_tension", "N"},
+                  {"tight_tension", "N"}, {"drive_force", "N"}, {"power", "W"},
+                  {"length", "m"},        {"value", "SI"},      {"limit", "SI"}};
     text = j.dump(2) + "\n";
   } else if (f.format == "csv") {
     std::ostringstream csv;
@@ -400,8 +403,9 @@ int run_loop(const LoopFlags& f) {
       const SegmentTension& t = r.segments[i];
       const std::string head =
           std::to_string(i) + "," + csv_field(name_of(i)) + "," + to_string(loop.segments[i].kind);
-      csv << head << ",start," << g(t.s_start, 12) << "," << g(t.tension_in, 12) << "\n";
-      csv << head << ",end," << g(t.s_end, 12) << "," << g(t.tension_out, 12) << "\n";
+      csv << head << ",start," << format_g(t.s_start, 12) << "," << format_g(t.tension_in, 12)
+          << "\n";
+      csv << head << ",end," << format_g(t.s_end, 12) << "," << format_g(t.tension_out, 12) << "\n";
     }
     text = csv.str();
   } else {
@@ -412,24 +416,25 @@ int run_loop(const LoopFlags& f) {
     for (std::size_t i = 0; i < r.segments.size(); ++i) {
       const SegmentTension& t = r.segments[i];
       char line[256];
-      std::snprintf(line, sizeof line, "  %2zu  %s  %-10s %11.3f %10.3f %11.4g %11.4g %8.4g\n",
-                    i, column(name_of(i), 20).c_str(), to_string(loop.segments[i].kind), t.s_start,
-                    t.s_end,
-                    t.tension_in / 1e3, t.tension_out / 1e3, t.resistance / 1e3);
+      std::snprintf(line, sizeof line, "  %2zu  %s  %-10s %11.3f %10.3f %11.4g %11.4g %8.4g\n", i,
+                    column(name_of(i), 20).c_str(), to_string(loop.segments[i].kind), t.s_start,
+                    t.s_end, t.tension_in / 1e3, t.tension_out / 1e3, t.resistance / 1e3);
       table << line;
     }
     auto place = [&](const Extremum& e) {
       return "segment " + std::to_string(e.segment) +
              (name_of(e.segment).empty() ? "" : " '" + name_of(e.segment) + "'") +
-             (e.at_end ? " end" : " start") + ", s = " + g(e.s, 5) + " m";
+             (e.at_end ? " end" : " start") + ", s = " + format_g(e.s, 5) + " m";
     };
-    table << "\n  tight side S_t " << g(r.tight_tension / 1e3, 5) << " kN, slack side S_s "
-          << g(r.slack_tension / 1e3, 5) << " kN\n"
-          << "  max tension  " << g(r.max.tension / 1e3, 5) << " kN at " << place(r.max) << "\n"
-          << "  min tension  " << g(r.min.tension / 1e3, 5) << " kN at " << place(r.min) << "\n"
-          << "  drive force  " << g(r.drive_force / 1e3, 5) << " kN; power "
-          << g(r.power / 1e3, 5) << " kW at v = " << g(loop.speed, 4)
-          << " m/s, eta = " << g(loop.efficiency, 4) << "\n";
+    table << "\n  tight side S_t " << format_g(r.tight_tension / 1e3, 5) << " kN, slack side S_s "
+          << format_g(r.slack_tension / 1e3, 5) << " kN\n"
+          << "  max tension  " << format_g(r.max.tension / 1e3, 5) << " kN at " << place(r.max)
+          << "\n"
+          << "  min tension  " << format_g(r.min.tension / 1e3, 5) << " kN at " << place(r.min)
+          << "\n"
+          << "  drive force  " << format_g(r.drive_force / 1e3, 5) << " kN; power "
+          << format_g(r.power / 1e3, 5) << " kW at v = " << format_g(loop.speed, 4)
+          << " m/s, eta = " << format_g(loop.efficiency, 4) << "\n";
     for (const Diagnostic& d : r.diagnostics)
       table << "  " << to_string(d.severity) << ": " << d.message << "\n";
     text = table.str();

@@ -46,12 +46,6 @@ struct Request {
   bool numeric = false;
 };
 
-std::string g(double value, int digits = 6) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
-  return buffer;
-}
-
 double deg(double rad) { return rad * 180.0 / std::numbers::pi; }
 
 Request read(const Flags& f) {
@@ -272,7 +266,7 @@ std::string to_csv(const Request& r, const std::vector<RunOnResult>& results) {
   const std::size_t n = cols.front().second->size();
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t c = 0; c < cols.size(); ++c)
-      out << (c ? "," : "") << g((*cols[c].second)[i], 12);
+      out << (c ? "," : "") << format_g((*cols[c].second)[i], 12);
     out << "\n";
   }
   return out.str();
@@ -282,22 +276,22 @@ std::string to_table(const Request& r, const std::vector<RunOnResult>& results) 
   const auto& geo = results.front().plan.geometry;
   std::ostringstream out;
   out << "Catena pocketwheel: round-link chain running onto a pocket wheel (seed 003)\n";
-  out << "chain d x t = " << g(r.wheel.wire * 1e3) << " x " << g(r.wheel.pitch * 1e3)
-      << " mm, z = " << r.wheel.teeth << ", omega = " << g(r.sampling.omega) << " rad/s ("
-      << g(r.sampling.omega * 30.0 / std::numbers::pi)
+  out << "chain d x t = " << format_g(r.wheel.wire * 1e3) << " x " << format_g(r.wheel.pitch * 1e3)
+      << " mm, z = " << r.wheel.teeth << ", omega = " << format_g(r.sampling.omega) << " rad/s ("
+      << format_g(r.sampling.omega * 30.0 / std::numbers::pi)
       << " rpm), method: " << (r.numeric ? "numeric" : "closed form") << "\n\n";
   char line[256];
   std::snprintf(line, sizeof line, "  %-34s %s mm\n", "pitch radius R (eq. 6)",
-                g(geo.pitch_radius * 1e3).c_str());
+                format_g(geo.pitch_radius * 1e3).c_str());
   out << line;
   std::snprintf(line, sizeof line, "  %-34s %s / %s deg\n", "delta1 / delta2 (eqs. 7-8)",
-                g(deg(geo.delta1)).c_str(), g(deg(geo.delta2)).c_str());
+                format_g(deg(geo.delta1)).c_str(), format_g(deg(geo.delta2)).c_str());
   out << line;
   std::snprintf(line, sizeof line, "  %-34s %s mm\n", "transverse displacement dy (free)",
-                g(geo.transverse_displacement * 1e3).c_str());
+                format_g(geo.transverse_displacement * 1e3).c_str());
   out << line;
   std::snprintf(line, sizeof line, "  %-34s %s s (%s deg of wheel turn)\n", "tooth period",
-                g(results.front().period).c_str(), g(deg(geo.tooth_angle)).c_str());
+                format_g(results.front().period).c_str(), format_g(deg(geo.tooth_angle)).c_str());
   out << line << "\n";
   std::snprintf(line, sizeof line, "  %-26s", "guide");
   out << line;
@@ -317,27 +311,27 @@ std::string to_table(const Request& r, const std::vector<RunOnResult>& results) 
   };
   row("guide height H [mm]", [](const RunOnResult& res) {
     return res.plan.guide.kind == GuideKind::kNone ? std::string("-")
-                                                   : g(res.plan.guide_height * 1e3);
+                                                   : format_g(res.plan.guide_height * 1e3);
   });
   row("guide end l [mm]", [](const RunOnResult& res) {
     return res.plan.guide.kind == GuideKind::kNone ? std::string("-")
-                                                   : g(res.plan.guide.end_distance * 1e3);
+                                                   : format_g(res.plan.guide.end_distance * 1e3);
   });
   row("seating angles [deg]", [](const RunOnResult& res) {
     std::string s;
-    for (double a : res.plan.seating_angles) s += (s.empty() ? "" : ", ") + g(deg(a), 5);
+    for (double a : res.plan.seating_angles) s += (s.empty() ? "" : ", ") + format_g(deg(a), 5);
     return s;
   });
-  row("v_x min [m/s]", [](const RunOnResult& res) { return g(res.extremes.vx_min); });
-  row("v_x max [m/s]", [](const RunOnResult& res) { return g(res.extremes.vx_max); });
-  row("a_x min [m/s^2]", [](const RunOnResult& res) { return g(res.extremes.ax_min); });
-  row("a_x max [m/s^2]", [](const RunOnResult& res) { return g(res.extremes.ax_max); });
+  row("v_x min [m/s]", [](const RunOnResult& res) { return format_g(res.extremes.vx_min); });
+  row("v_x max [m/s]", [](const RunOnResult& res) { return format_g(res.extremes.vx_max); });
+  row("a_x min [m/s^2]", [](const RunOnResult& res) { return format_g(res.extremes.ax_min); });
+  row("a_x max [m/s^2]", [](const RunOnResult& res) { return format_g(res.extremes.ax_max); });
   row("travel per period [mm]",
-      [](const RunOnResult& res) { return g(res.series.x.back() * 1e3); });
+      [](const RunOnResult& res) { return format_g(res.series.x.back() * 1e3); });
   if (r.sampling.strand_mass) {
     row("max |inertial force| [N]", [&](const RunOnResult& res) {
-      return g(*r.sampling.strand_mass *
-               std::max(std::abs(res.extremes.ax_min), std::abs(res.extremes.ax_max)));
+      return format_g(*r.sampling.strand_mass *
+                      std::max(std::abs(res.extremes.ax_min), std::abs(res.extremes.ax_max)));
     });
   }
   return out.str();

@@ -1,6 +1,7 @@
 // catena ring capacity: seed 002 eq. (9) and the mass comparison;
-// catena ring design: size a fibre-wound link for a breaking force (docs/models/composite_capacity.md).
-// Both are subcommands of `catena ring` (ring_command.cpp calls add_ring_capacity/add_ring_design).
+// catena ring design: size a fibre-wound link for a breaking force
+// (docs/models/composite_capacity.md). Both are subcommands of `catena ring` (ring_command.cpp
+// calls add_ring_capacity/add_ring_design).
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
@@ -22,20 +23,6 @@ using namespace catena::composite;
 constexpr const char* kSource =
     "seed 002 eq. (9) and its example; micromechanics: rule of mixtures, Halpin-Tsai "
     "(Halpin & Kardos 1976; Jones, Mechanics of Composite Materials, 2nd ed. 1999, sec. 3.3-3.4)";
-
-std::string g(double v, int digits = 6) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
-
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream ss(text);
-  std::string part;
-  while (std::getline(ss, part, ',')) out.push_back(part);
-  return out;
-}
 
 // A number followed by one of `units` (factor to SI); a bare number takes units[0].
 struct UnitFactor {
@@ -63,16 +50,21 @@ std::optional<double> with_units(FlagReader& in, const std::string& flag, const 
 
 std::optional<double> area(FlagReader& in, const std::string& flag, const std::string& text) {
   return with_units(in, flag, text,
-                    {{"mm^2", 1e-6}, {"mm2", 1e-6}, {"mm²", 1e-6}, {"cm^2", 1e-4}, {"cm2", 1e-4},
-                     {"m^2", 1.0}, {"m2", 1.0}},
+                    {{"mm^2", 1e-6},
+                     {"mm2", 1e-6},
+                     {"mm²", 1e-6},
+                     {"cm^2", 1e-4},
+                     {"cm2", 1e-4},
+                     {"m^2", 1.0},
+                     {"m2", 1.0}},
                     "an area: mm^2 (bare number), cm^2 or m^2, e.g. 22.7mm^2");
 }
 
 std::optional<double> density(FlagReader& in, const std::string& flag, const std::string& text) {
-  return with_units(in, flag, text,
-                    {{"kg/m^3", 1.0}, {"kg/m3", 1.0}, {"g/cm^3", 1e3}, {"g/cm3", 1e3},
-                     {"g/cc", 1e3}},
-                    "a density: kg/m^3 (bare number) or g/cm^3, e.g. 2.56g/cm^3");
+  return with_units(
+      in, flag, text,
+      {{"kg/m^3", 1.0}, {"kg/m3", 1.0}, {"g/cm^3", 1e3}, {"g/cm3", 1e3}, {"g/cc", 1e3}},
+      "a density: kg/m^3 (bare number) or g/cm^3, e.g. 2.56g/cm^3");
 }
 
 std::optional<double> number(FlagReader& in, const std::string& flag, const std::string& text,
@@ -128,16 +120,15 @@ struct CapacityFlags {
 
 int run_capacity(const CapacityFlags& f) {
   FlagReader in;
-  const bool analysed = !(f.E_r.empty() && f.E_phi.empty() && f.G.empty() &&
-                          f.nu_phi_r.empty() && f.inner_radius.empty() &&
-                          f.outer_radius.empty());
+  const bool analysed = !(f.E_r.empty() && f.E_phi.empty() && f.G.empty() && f.nu_phi_r.empty() &&
+                          f.inner_radius.empty() && f.outer_radius.empty());
   Eq9 e;
   Ring ring;
   Options options;
   if (analysed) {
-    for (const auto& [flag, text] : {std::pair{"--alpha", &f.alpha},
-                                     std::pair{"--sum-sigma-r", &f.sum_sigma_r},
-                                     std::pair{"--k-max", &f.k_max}})
+    for (const auto& [flag, text] :
+         {std::pair{"--alpha", &f.alpha}, std::pair{"--sum-sigma-r", &f.sum_sigma_r},
+          std::pair{"--k-max", &f.k_max}})
       if (!text->empty())
         in.add({flag, *text,
                 "not with the elastic constants (α, Σσ̃_r and K then come from the ring "
@@ -159,7 +150,8 @@ int run_capacity(const CapacityFlags& f) {
         in.quantity("--outer-radius", f.outer_radius, QuantityKind::kLength).value_or(NAN);
     ring.thickness = 1e-3;  // K and Σσ̃_r do not depend on t or the opening (linear problem)
     ring.gap = 1e-3 * ring.inner_radius;
-    if (!f.harmonics.empty()) options.harmonics = in.integer("--harmonics", f.harmonics, 2).value_or(0);
+    if (!f.harmonics.empty())
+      options.harmonics = in.integer("--harmonics", f.harmonics, 2).value_or(0);
   } else {
     const char* need = "required (or give the ring's elastic constants and radii instead)";
     missing(in, "--alpha", f.alpha, need);
@@ -182,9 +174,9 @@ int run_capacity(const CapacityFlags& f) {
   if (steel_mass.has_value() != link_mass_given.has_value())
     in.add({steel_mass ? "--link-mass" : "--steel-mass", "(missing)",
             "--steel-mass and --link-mass go together (mass comparison)"});
-  for (const auto& [flag, v] : {std::pair{"--steel-mass", steel_mass},
-                                std::pair{"--link-mass", link_mass_given}})
-    if (v && !(*v > 0)) in.add({flag, g(*v) + " kg", "a mass > 0 kg"});
+  for (const auto& [flag, v] :
+       {std::pair{"--steel-mass", steel_mass}, std::pair{"--link-mass", link_mass_given}})
+    if (v && !(*v > 0)) in.add({flag, format_g(*v) + " kg", "a mass > 0 kg"});
   std::vector<Issue> model;
   if (analysed) {
     model = validate(ring);
@@ -258,28 +250,38 @@ int run_capacity(const CapacityFlags& f) {
                    {"steel", *steel_mass},
                    {"ratio", *steel_mass / *link_mass_given}};
     }
-    j["units"] = {{"alpha", "1"},         {"sum_sigma_r", "1"},  {"k_max", "1"},
-                  {"fibre_strength", "Pa"}, {"fibre_area", "m^2"}, {"load", "N"},
-                  {"eq9_factor", "1"},    {"load_concentration", "N"}, {"load_uniform", "N"},
-                  {"consistent_sum_sigma_r", "1"}, {"ring_sum_sigma_r", "1"}, {"mass", "kg"}};
+    j["units"] = {{"alpha", "1"},
+                  {"sum_sigma_r", "1"},
+                  {"k_max", "1"},
+                  {"fibre_strength", "Pa"},
+                  {"fibre_area", "m^2"},
+                  {"load", "N"},
+                  {"eq9_factor", "1"},
+                  {"load_concentration", "N"},
+                  {"load_uniform", "N"},
+                  {"consistent_sum_sigma_r", "1"},
+                  {"ring_sum_sigma_r", "1"},
+                  {"mass", "kg"}};
     j["diagnostics"] = diagnostics_json(diags);
     text = j.dump(2) + "\n";
   } else {
     std::ostringstream t;
     t << "Catena ring capacity: eq. (9) of seed 002, P = Σσ̃_r/(α(1−α)K)·2Fσ^a\n\n";
-    t << "  alpha = r1/r2            " << g(e.alpha, 5) << "\n";
-    t << "  sum sigma_r              " << g(e.sum_sigma_r, 5)
+    t << "  alpha = r1/r2            " << format_g(e.alpha, 5) << "\n";
+    t << "  sum sigma_r              " << format_g(e.sum_sigma_r, 5)
       << (analysed ? "  (α(1−α): the normalisation that makes (9) = 2Fσ^a/K)" : "") << "\n";
-    if (analysed) t << "  ring's own sum sigma_r   " << g(ring_sum, 5) << "  ((1−α)/α)\n";
-    t << "  K max                    " << g(e.k_max, 5) << "\n";
-    t << "  fibre strength [MPa]     " << g(e.fibre_strength / 1e6, 6) << "\n";
-    t << "  fibre area F [mm^2]      " << g(F * 1e6, 5) << (fibre_area ? "" : "  (sized)") << "\n";
-    t << "  P max, eq. (9) [N]       " << g(P, 6) << "\n";
-    t << "  2Fσ^a/K [N]              " << g(p_concentration, 6) << "\n";
-    t << "  2Fσ^a [N]                " << g(uniform, 6) << "\n";
+    if (analysed) t << "  ring's own sum sigma_r   " << format_g(ring_sum, 5) << "  ((1−α)/α)\n";
+    t << "  K max                    " << format_g(e.k_max, 5) << "\n";
+    t << "  fibre strength [MPa]     " << format_g(e.fibre_strength / 1e6, 6) << "\n";
+    t << "  fibre area F [mm^2]      " << format_g(F * 1e6, 5) << (fibre_area ? "" : "  (sized)")
+      << "\n";
+    t << "  P max, eq. (9) [N]       " << format_g(P, 6) << "\n";
+    t << "  2Fσ^a/K [N]              " << format_g(p_concentration, 6) << "\n";
+    t << "  2Fσ^a [N]                " << format_g(uniform, 6) << "\n";
     if (steel_mass)
-      t << "  mass: link " << g(*link_mass_given, 4) << " kg, steel " << g(*steel_mass, 4)
-        << " kg, steel/link " << g(*steel_mass / *link_mass_given, 4) << "\n";
+      t << "  mass: link " << format_g(*link_mass_given, 4) << " kg, steel "
+        << format_g(*steel_mass, 4) << " kg, steel/link "
+        << format_g(*steel_mass / *link_mass_given, 4) << "\n";
     for (const auto& d : diags) t << "\n  " << to_string(d.severity) << ": " << d.message << "\n";
     text = t.str();
   }
@@ -322,8 +324,7 @@ int run_design(const DesignFlags& f) {
   d.fibre.density = density(in, "--fibre-density", f.fibre_density).value_or(NAN);
   d.matrix.modulus =
       in.quantity("--matrix-modulus", f.matrix_modulus, QuantityKind::kStress).value_or(NAN);
-  d.matrix.poisson =
-      number(in, "--matrix-poisson", f.matrix_poisson, "0 ≤ ν < 0.5").value_or(NAN);
+  d.matrix.poisson = number(in, "--matrix-poisson", f.matrix_poisson, "0 ≤ ν < 0.5").value_or(NAN);
   d.matrix.density = density(in, "--matrix-density", f.matrix_density).value_or(NAN);
   d.fibre_fraction =
       number(in, "--fibre-fraction", f.fibre_fraction, "0 < V_f ≤ 0.9069").value_or(NAN);
@@ -331,8 +332,9 @@ int run_design(const DesignFlags& f) {
   d.pitch = in.quantity("--pitch", f.pitch, QuantityKind::kLength).value_or(NAN);
   d.insert_density = density(in, "--insert-density", f.insert_density).value_or(NAN);
   if (!f.alpha.empty())
-    for (const auto& p : split(f.alpha))
-      d.alphas.push_back(number(in, "--alpha", p, "0.05 ≤ α ≤ 0.95, or a comma list").value_or(NAN));
+    for (const auto& p : split_commas(f.alpha))
+      d.alphas.push_back(
+          number(in, "--alpha", p, "0.05 ≤ α ≤ 0.95, or a comma list").value_or(NAN));
   if (!f.steel_strength.empty() || !f.steel_thickness.empty()) {
     missing(in, "--steel-strength", f.steel_strength, "with --steel-thickness");
     missing(in, "--steel-thickness", f.steel_thickness, "with --steel-strength");
@@ -342,7 +344,8 @@ int run_design(const DesignFlags& f) {
         in.quantity("--steel-thickness", f.steel_thickness, QuantityKind::kLength).value_or(NAN);
     d.steel_density = density(in, "--steel-density", f.steel_density).value_or(NAN);
   }
-  if (!f.harmonics.empty()) d.analysis.harmonics = in.integer("--harmonics", f.harmonics, 2).value_or(0);
+  if (!f.harmonics.empty())
+    d.analysis.harmonics = in.integer("--harmonics", f.harmonics, 2).value_or(0);
   add_parsed_model_issues(in, validate(d));
   in.throw_if_any();
 
@@ -355,21 +358,25 @@ int run_design(const DesignFlags& f) {
     j["model"] = "composite.ring_design";
     j["source"] = kSource;
     j["load"] = d.load;
-    j["lamina"] = {{"fibre_fraction", l.fibre_fraction}, {"E_phi", l.E_phi}, {"E_r", l.E_r},
-                   {"G", l.G}, {"nu_phi_r", l.nu_phi_r}, {"strength", l.strength},
+    j["lamina"] = {{"fibre_fraction", l.fibre_fraction},
+                   {"E_phi", l.E_phi},
+                   {"E_r", l.E_r},
+                   {"G", l.G},
+                   {"nu_phi_r", l.nu_phi_r},
+                   {"strength", l.strength},
                    {"density", l.density}};
     auto point = [&](const DesignPoint& p) {
-      return ordered_json{{"alpha", p.alpha},
-                          {"k", p.k},
-                          {"sum_sigma_r", p.sum_sigma_r},
-                          {"inner_radius", p.inner_radius},
-                          {"outer_radius", p.outer_radius},
-                          {"thickness", d.thickness},
-                          {"leg_area", p.leg_area},
-                          {"fibre_area", p.fibre_area},
-                          {"mass", {{"band", p.mass.band}, {"insert", p.mass.insert},
-                                    {"total", p.mass.total}}},
-                          {"feasible", p.feasible}};
+      return ordered_json{
+          {"alpha", p.alpha},
+          {"k", p.k},
+          {"sum_sigma_r", p.sum_sigma_r},
+          {"inner_radius", p.inner_radius},
+          {"outer_radius", p.outer_radius},
+          {"thickness", d.thickness},
+          {"leg_area", p.leg_area},
+          {"fibre_area", p.fibre_area},
+          {"mass", {{"band", p.mass.band}, {"insert", p.mass.insert}, {"total", p.mass.total}}},
+          {"feasible", p.feasible}};
     };
     j["design"] = point(b);
     ordered_json scan = ordered_json::array();
@@ -378,36 +385,40 @@ int run_design(const DesignFlags& f) {
     if (out.has_steel)
       j["steel"] = {{"net_area", out.steel.net_area}, {"width", out.steel.width},
                     {"thickness", d.steel_thickness}, {"face_area", out.steel.face_area},
-                    {"mass", out.steel.mass}, {"mass_ratio", out.mass_ratio}};
-    j["units"] = {{"load", "N"}, {"E_phi", "Pa"}, {"E_r", "Pa"}, {"G", "Pa"}, {"strength", "Pa"},
-                  {"density", "kg/m^3"}, {"inner_radius", "m"}, {"outer_radius", "m"},
-                  {"thickness", "m"}, {"leg_area", "m^2"}, {"fibre_area", "m^2"},
-                  {"net_area", "m^2"}, {"width", "m"}, {"face_area", "m^2"}, {"mass", "kg"},
-                  {"alpha", "1"}, {"k", "1"}, {"sum_sigma_r", "1"}, {"mass_ratio", "1"},
-                  {"fibre_fraction", "1"}, {"nu_phi_r", "1"}};
+                    {"mass", out.steel.mass},         {"mass_ratio", out.mass_ratio}};
+    j["units"] = {
+        {"load", "N"},      {"E_phi", "Pa"},       {"E_r", "Pa"},         {"G", "Pa"},
+        {"strength", "Pa"}, {"density", "kg/m^3"}, {"inner_radius", "m"}, {"outer_radius", "m"},
+        {"thickness", "m"}, {"leg_area", "m^2"},   {"fibre_area", "m^2"}, {"net_area", "m^2"},
+        {"width", "m"},     {"face_area", "m^2"},  {"mass", "kg"},        {"alpha", "1"},
+        {"k", "1"},         {"sum_sigma_r", "1"},  {"mass_ratio", "1"},   {"fibre_fraction", "1"},
+        {"nu_phi_r", "1"}};
     j["diagnostics"] = diagnostics_json(out.diagnostics);
     text = j.dump(2) + "\n";
   } else {
     std::ostringstream t;
-    t << "Catena ring design: fibre-wound link for P = " << g(d.load, 6) << " N\n\n";
-    t << "  ring constants (V_f " << g(l.fibre_fraction, 3) << "): E_phi " << g(l.E_phi / 1e9, 4)
-      << " GPa, E_r " << g(l.E_r / 1e9, 4) << " GPa, G " << g(l.G / 1e9, 4) << " GPa, nu_phi_r "
-      << g(l.nu_phi_r, 3) << ", hoop strength " << g(l.strength / 1e6, 5) << " MPa, density "
-      << g(l.density, 5) << " kg/m^3\n\n";
+    t << "Catena ring design: fibre-wound link for P = " << format_g(d.load, 6) << " N\n\n";
+    t << "  ring constants (V_f " << format_g(l.fibre_fraction, 3) << "): E_phi "
+      << format_g(l.E_phi / 1e9, 4) << " GPa, E_r " << format_g(l.E_r / 1e9, 4) << " GPa, G "
+      << format_g(l.G / 1e9, 4) << " GPa, nu_phi_r " << format_g(l.nu_phi_r, 3)
+      << ", hoop strength " << format_g(l.strength / 1e6, 5) << " MPa, density "
+      << format_g(l.density, 5) << " kg/m^3\n\n";
     t << "   alpha      K   r1 [mm]   r2 [mm]  A leg [mm^2]  F fibre [mm^2]  mass [g]\n";
     for (std::size_t i = 0; i < out.scan.size(); ++i) {
       const auto& p = out.scan[i];
       char line[200];
-      std::snprintf(line, sizeof line, "  %6.3f %6.3f %9.4g %9.4g %13.4g %15.4g %9.4g%s\n",
-                    p.alpha, p.k, p.inner_radius * 1e3, p.outer_radius * 1e3, p.leg_area * 1e6,
+      std::snprintf(line, sizeof line, "  %6.3f %6.3f %9.4g %9.4g %13.4g %15.4g %9.4g%s\n", p.alpha,
+                    p.k, p.inner_radius * 1e3, p.outer_radius * 1e3, p.leg_area * 1e6,
                     p.fibre_area * 1e6, p.mass.total * 1e3,
-                    !p.feasible ? "  pins overlap (p <= 2 r1)" : i == out.best ? "  <- lightest" : "");
+                    !p.feasible     ? "  pins overlap (p <= 2 r1)"
+                    : i == out.best ? "  <- lightest"
+                                    : "");
       t << line;
     }
     if (out.has_steel)
-      t << "\n  steel plate: width " << g(out.steel.width * 1e3, 4) << " mm, thickness "
-        << g(d.steel_thickness * 1e3, 4) << " mm, mass " << g(out.steel.mass * 1e3, 4)
-        << " g; steel/composite " << g(out.mass_ratio, 4) << "\n";
+      t << "\n  steel plate: width " << format_g(out.steel.width * 1e3, 4) << " mm, thickness "
+        << format_g(d.steel_thickness * 1e3, 4) << " mm, mass " << format_g(out.steel.mass * 1e3, 4)
+        << " g; steel/composite " << format_g(out.mass_ratio, 4) << "\n";
     for (const auto& dg : out.diagnostics)
       t << "\n  " << to_string(dg.severity) << ": " << dg.message << "\n";
     text = t.str();

@@ -28,8 +28,8 @@ struct RingFlags {
   std::string format = "table", output;
 };
 
-double required(FlagReader& in, const std::string& flag, const std::string& text,
-                QuantityKind kind, const char* what) {
+double required(FlagReader& in, const std::string& flag, const std::string& text, QuantityKind kind,
+                const char* what) {
   if (text.empty()) {
     in.add({flag, "(missing)", what});
     return NAN;
@@ -66,8 +66,8 @@ int run_ring(const RingFlags& f) {
   ring.thickness = required(in, "--thickness", f.thickness, QuantityKind::kLength,
                             "t, the ring's thickness (plane stress)");
   ring.E_r = required(in, "--E-r", f.E_r, QuantityKind::kStress, "radial Young's modulus");
-  ring.E_phi = required(in, "--E-phi", f.E_phi, QuantityKind::kStress,
-                        "hoop (fibre) Young's modulus");
+  ring.E_phi =
+      required(in, "--E-phi", f.E_phi, QuantityKind::kStress, "hoop (fibre) Young's modulus");
   ring.G = required(in, "--G", f.G, QuantityKind::kStress, "in-plane shear modulus G_rphi");
   ring.nu_phi_r = ratio(in, "--nu-phi-r", f.nu_phi_r,
                         "nu_phi_r = -eps_r/eps_phi under pure hoop stress, a plain number");
@@ -83,11 +83,14 @@ int run_ring(const RingFlags& f) {
     in.add({"--nodes", f.nodes, "only with --method sweep (the exact solver has no grid)"});
   // the model's checks too, so that every problem is reported at once; a field that could not be
   // read (NaN) has been reported already
-  const std::map<std::string, double> read = {
-      {"inner_radius", ring.inner_radius}, {"outer_radius", ring.outer_radius},
-      {"thickness", ring.thickness},       {"E_r", ring.E_r},
-      {"E_phi", ring.E_phi},               {"G", ring.G},
-      {"nu_phi_r", ring.nu_phi_r},         {"gap", ring.gap}};
+  const std::map<std::string, double> read = {{"inner_radius", ring.inner_radius},
+                                              {"outer_radius", ring.outer_radius},
+                                              {"thickness", ring.thickness},
+                                              {"E_r", ring.E_r},
+                                              {"E_phi", ring.E_phi},
+                                              {"G", ring.G},
+                                              {"nu_phi_r", ring.nu_phi_r},
+                                              {"gap", ring.gap}};
   std::vector<Issue> issues;
   for (Issue& is : validate(ring)) {
     const auto it = read.find(is.field);
@@ -156,11 +159,20 @@ int run_ring(const RingFlags& f) {
                        {"value", d.value},
                        {"limit", d.limit}});
     j["diagnostics"] = diags;
-    j["units"] = {{"load", "N"},          {"mean_stress", "Pa"},  {"r", "m"},
-                  {"sigma_r", "Pa"},      {"sigma_phi", "Pa"},    {"tau", "Pa"},
-                  {"phi", "rad"},         {"pressure", "Pa"},     {"angle", "rad"},
-                  {"stress_concentration", "1"}, {"sum_sigma_r", "1"}, {"load_contact", "N"},
-                  {"truncation_change", "1"},    {"richardson_error", "1"}};
+    j["units"] = {{"load", "N"},
+                  {"mean_stress", "Pa"},
+                  {"r", "m"},
+                  {"sigma_r", "Pa"},
+                  {"sigma_phi", "Pa"},
+                  {"tau", "Pa"},
+                  {"phi", "rad"},
+                  {"pressure", "Pa"},
+                  {"angle", "rad"},
+                  {"stress_concentration", "1"},
+                  {"sum_sigma_r", "1"},
+                  {"load_contact", "N"},
+                  {"truncation_change", "1"},
+                  {"richardson_error", "1"}};
     text = j.dump(2) + "\n";
   } else if (f.format == "csv") {
     std::ostringstream csv;
@@ -176,8 +188,8 @@ int run_ring(const RingFlags& f) {
   } else {
     std::ostringstream t;
     char line[1024];
-    t << "Catena ring: orthotropic link on two rigid half-discs (seed 002; "
-      << r.summary.method << " solver, " << r.summary.harmonics << " harmonics"
+    t << "Catena ring: orthotropic link on two rigid half-discs (seed 002; " << r.summary.method
+      << " solver, " << r.summary.harmonics << " harmonics"
       << (r.summary.nodes > 0 ? ", " + std::to_string(r.summary.nodes) + " intervals" : "")
       << (o.unilateral ? ", unilateral contact" : ", bilateral contact") << ")\n\n";
     std::snprintf(line, sizeof line,
@@ -189,10 +201,10 @@ int run_ring(const RingFlags& f) {
                   "  sum sigma~_r        %10.5g      (eq. 9)\n"
                   "  contact angle       %10.5g deg\n"
                   "  truncation change   %10.3g      (N/2 -> N)\n",
-                  r.load / 1e3, r.load_contact / 1e3, r.mean_stress / 1e6,
-                  r.stress_concentration, r.corner_sigma_phi / 1e6, std::abs(r.max_shear) / 1e6,
-                  r.max_shear_r * 1e3, r.max_shear_phi * kDeg, r.sum_sigma_r,
-                  r.contact_angle * kDeg, r.summary.truncation_change);
+                  r.load / 1e3, r.load_contact / 1e3, r.mean_stress / 1e6, r.stress_concentration,
+                  r.corner_sigma_phi / 1e6, std::abs(r.max_shear) / 1e6, r.max_shear_r * 1e3,
+                  r.max_shear_phi * kDeg, r.sum_sigma_r, r.contact_angle * kDeg,
+                  r.summary.truncation_change);
     t << line;
     if (r.summary.nodes > 0) {
       std::snprintf(line, sizeof line, "  Richardson error    %10.3g      (of mean stress)\n",
@@ -206,7 +218,8 @@ int run_ring(const RingFlags& f) {
                     r.sigma_phi_90[i] / 1e6);
       t << line;
     }
-    for (const auto& d : r.diagnostics) t << "\n  " << to_string(d.severity) << " " << d.code << ": " << d.message;
+    for (const auto& d : r.diagnostics)
+      t << "\n  " << to_string(d.severity) << " " << d.code << ": " << d.message;
     t << "\n";
     text = t.str();
   }

@@ -24,8 +24,8 @@ using namespace catena::strength;
 constexpr const char* kPlateKey[4] = {"lower_outer", "lower_inner", "upper_inner", "upper_outer"};
 
 struct StrengthFlags {
-  std::string tension, tooth_force, exit_tension, link_angle = "0", load_height,
-      tooth_width = "0", layout = "both";
+  std::string tension, tooth_force, exit_tension, link_angle = "0", load_height, tooth_width = "0",
+                                                  layout = "both";
   std::string hinge = "sliding", heights, widths, diameter, bore = "0", hole, plate_width,
               end_distance, stress_concentration = "1", contact_angle = "180deg", r1, r2,
               modulus = "210GPa", poisson = "0.3";
@@ -34,32 +34,19 @@ struct StrengthFlags {
   std::string format = "table", output;
 };
 
-std::string g(double v, int digits = 6) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
-
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream ss(text);
-  std::string part;
-  while (std::getline(ss, part, ',')) out.push_back(part);
-  return out;
-}
-
 // Four plate values bottom to top (lower outer, lower inner, upper inner, upper outer); one value
 // is repeated to all four.
 std::array<double, 4> four(FlagReader& in, const std::string& flag, const std::string& text) {
   std::array<double, 4> out{NAN, NAN, NAN, NAN};
-  const char* what = "1 or 4 comma-separated lengths, bottom to top: lower outer, lower inner, "
-                     "upper inner, upper outer plate";
+  const char* what =
+      "1 or 4 comma-separated lengths, bottom to top: lower outer, lower inner, "
+      "upper inner, upper outer plate";
   if (text.empty()) {
     in.add({flag, "(missing)", what});
     return out;
   }
   std::vector<double> v;
-  for (const auto& p : split(text))
+  for (const auto& p : split_commas(text))
     v.push_back(in.quantity(flag, p, QuantityKind::kLength).value_or(NAN));
   if (v.size() == 1) v.assign(4, v[0]);
   if (v.size() != 4) {
@@ -90,7 +77,9 @@ double plain(FlagReader& in, const std::string& flag, const std::string& text,
   return v;
 }
 
-ordered_json number_or_null(double v) { return std::isfinite(v) ? ordered_json(v) : ordered_json(); }
+ordered_json number_or_null(double v) {
+  return std::isfinite(v) ? ordered_json(v) : ordered_json();
+}
 
 int run_strength(const StrengthFlags& f) {
   FlagReader in;
@@ -101,9 +90,9 @@ int run_strength(const StrengthFlags& f) {
   h.pin_diameter = required_quantity(in, "--pin-diameter", f.diameter, QuantityKind::kLength,
                                      "d of the roller (pin)");
   h.bore = in.quantity("--bore", f.bore, QuantityKind::kLength).value_or(NAN);
-  h.hole_diameter = f.hole.empty()
-                        ? 0.0
-                        : in.quantity("--hole-diameter", f.hole, QuantityKind::kLength).value_or(NAN);
+  h.hole_diameter =
+      f.hole.empty() ? 0.0
+                     : in.quantity("--hole-diameter", f.hole, QuantityKind::kLength).value_or(NAN);
   h.plate_width = required_quantity(in, "--plate-width", f.plate_width, QuantityKind::kLength,
                                     "b, the plate's depth across the chain line");
   h.end_distance = required_quantity(in, "--end-distance", f.end_distance, QuantityKind::kLength,
@@ -134,10 +123,12 @@ int run_strength(const StrengthFlags& f) {
     if (l.link_angle != 0.0)
       in.add({"--tooth-force", f.tooth_force,
               "collinear links only (--link-angle 0); with a link angle give --exit-tension"});
-    const double n = in.quantity("--tooth-force", f.tooth_force, QuantityKind::kForce).value_or(NAN);
+    const double n =
+        in.quantity("--tooth-force", f.tooth_force, QuantityKind::kForce).value_or(NAN);
     if (std::isfinite(n) && std::isfinite(l.tension) && !(n >= 0.0 && n <= l.tension))
-      in.add({"--tooth-force", f.tooth_force,
-              "0 ≤ N ≤ S = " + g(l.tension) + " N (collinear: the seated link cannot push)"});
+      in.add(
+          {"--tooth-force", f.tooth_force,
+           "0 ≤ N ≤ S = " + format_g(l.tension) + " N (collinear: the seated link cannot push)"});
     l.exit_tension = l.tension - n;
   } else {
     l.exit_tension =
@@ -147,10 +138,10 @@ int run_strength(const StrengthFlags& f) {
   }
   l.tooth_width = in.quantity("--tooth-width", f.tooth_width, QuantityKind::kLength).value_or(NAN);
   // default L1: midway between the inner plates' mid-planes
-  l.load_height = f.load_height.empty()
-                      ? 0.5 * (h.heights[1] + h.heights[2])
-                      : in.quantity("--load-height", f.load_height, QuantityKind::kLength)
-                            .value_or(NAN);
+  l.load_height =
+      f.load_height.empty()
+          ? 0.5 * (h.heights[1] + h.heights[2])
+          : in.quantity("--load-height", f.load_height, QuantityKind::kLength).value_or(NAN);
 
   Material& m = x.material;
   m.roller_yield = required_quantity(in, "--roller-yield", f.roller_yield, QuantityKind::kStress,
@@ -232,13 +223,19 @@ int run_strength(const StrengthFlags& f) {
       diagrams[key]["Q_resultant"] = qr;
     }
     for (std::size_t i = 0; i < lr.diagram.x.size(); ++i)
-      csv << lr.loads.layout << "," << g(lr.diagram.x[i], 12) << "," << g(lr.diagram.moment[i], 12)
-          << "," << g(lr.diagram.shear[i], 12) << "\n";
+      csv << lr.loads.layout << "," << format_g(lr.diagram.x[i], 12) << ","
+          << format_g(lr.diagram.moment[i], 12) << "," << format_g(lr.diagram.shear[i], 12) << "\n";
   }
   const Contact& c = r.contact;
-  ordered_json contact{{"layout", c.layout}, {"plate", kPlateKey[c.plate]}, {"N", c.force},
-                       {"B", c.width},       {"r", c.radius},              {"gamma", c.angle},
-                       {"c", c.c},           {"A", c.area},                {"p", c.p}};
+  ordered_json contact{{"layout", c.layout},
+                       {"plate", kPlateKey[c.plate]},
+                       {"N", c.force},
+                       {"B", c.width},
+                       {"r", c.radius},
+                       {"gamma", c.angle},
+                       {"c", c.c},
+                       {"A", c.area},
+                       {"p", c.p}};
   contact["hertz"] = c.hertz ? ordered_json{{"p0", c.peak},
                                             {"half_width", c.half_width},
                                             {"effective_radius", c.effective_radius}}
@@ -258,19 +255,41 @@ int run_strength(const StrengthFlags& f) {
     j["layouts"] = layouts;
     j["diagrams"] = diagrams;
     j["contact"] = contact;
-    j["units"] = {{"stress", "Pa"},         {"allowable", "Pa"},    {"required", "1"},
-                  {"safety_factor", "1"},   {"min_safety_margin", "1"},
-                  {"x", "m"},               {"M", "N*m"},           {"Q", "N"},
-                  {"plate_force", "N"},     {"tooth_force", "N"},   {"lower_outer", "N"},
-                  {"plate_force_y", "N"},   {"tooth_force_direction", "rad"},
-                  {"My", "N*m"},            {"Qy", "N"},            {"M_resultant", "N*m"},
+    j["units"] = {{"stress", "Pa"},
+                  {"allowable", "Pa"},
+                  {"required", "1"},
+                  {"safety_factor", "1"},
+                  {"min_safety_margin", "1"},
+                  {"x", "m"},
+                  {"M", "N*m"},
+                  {"Q", "N"},
+                  {"plate_force", "N"},
+                  {"tooth_force", "N"},
+                  {"lower_outer", "N"},
+                  {"plate_force_y", "N"},
+                  {"tooth_force_direction", "rad"},
+                  {"My", "N*m"},
+                  {"Qy", "N"},
+                  {"M_resultant", "N*m"},
                   {"Q_resultant", "N"},
-                  {"lower_inner", "N"},     {"upper_inner", "N"},   {"upper_outer", "N"},   {"moment_max", "N*m"},
-                  {"moment_at", "m"},       {"shear_max", "N"},     {"shear_at", "m"},
-                  {"force_residual", "N"},  {"moment_residual", "N*m"},
-                  {"N", "N"},               {"B", "m"},             {"r", "m"},
-                  {"gamma", "rad"},         {"c", "m"},             {"A", "m^2"},
-                  {"p", "Pa"},              {"p0", "Pa"},           {"half_width", "m"},
+                  {"lower_inner", "N"},
+                  {"upper_inner", "N"},
+                  {"upper_outer", "N"},
+                  {"moment_max", "N*m"},
+                  {"moment_at", "m"},
+                  {"shear_max", "N"},
+                  {"shear_at", "m"},
+                  {"force_residual", "N"},
+                  {"moment_residual", "N*m"},
+                  {"N", "N"},
+                  {"B", "m"},
+                  {"r", "m"},
+                  {"gamma", "rad"},
+                  {"c", "m"},
+                  {"A", "m^2"},
+                  {"p", "Pa"},
+                  {"p0", "Pa"},
+                  {"half_width", "m"},
                   {"effective_radius", "m"}};
     j["diagnostics"] = diags;
     text = j.dump(2) + "\n";
@@ -279,12 +298,11 @@ int run_strength(const StrengthFlags& f) {
   } else {
     std::ostringstream t;
     t << "Catena strength: roller and plates of a " << (rolling ? "rolling" : "sliding")
-      << "-friction hinge (seed 000 §1.5; S = " << g(l.tension / 1e3, 4)
-      << " kN, S2 = " << g(l.exit_tension / 1e3, 4) << " kN at "
-      << g(l.link_angle * 180.0 / std::numbers::pi, 4) << "°, tooth N = "
-      << g(std::hypot(tooth_force(l)[0], tooth_force(l)[1]) / 1e3, 4) << " kN at L1 = "
-      << g(l.load_height * 1e3, 4)
-      << " mm)\n\n";
+      << "-friction hinge (seed 000 §1.5; S = " << format_g(l.tension / 1e3, 4)
+      << " kN, S2 = " << format_g(l.exit_tension / 1e3, 4) << " kN at "
+      << format_g(l.link_angle * 180.0 / std::numbers::pi, 4)
+      << "°, tooth N = " << format_g(std::hypot(tooth_force(l)[0], tooth_force(l)[1]) / 1e3, 4)
+      << " kN at L1 = " << format_g(l.load_height * 1e3, 4) << " mm)\n\n";
     char line[512];
     std::snprintf(line, sizeof line, "  %-24s %12s %15s %8s %8s  %s\n", "check", "stress [MPa]",
                   "allowable [MPa]", "n", "n req", "section");
@@ -299,10 +317,9 @@ int run_strength(const StrengthFlags& f) {
          "   M_max [N·m] at z [mm]   Q_max [kN]\n";
     for (const LayoutResult& lr : r.layouts) {
       const auto& p = lr.loads.plate_force;
-      std::snprintf(line, sizeof line,
-                    "  %6d  %8.4g %8.4g %8.4g %8.4g %38.4g at %-8.4g %10.4g\n", lr.loads.layout,
-                    p[0] / 1e3, p[1] / 1e3, p[2] / 1e3, p[3] / 1e3, lr.extremes.moment,
-                    lr.extremes.moment_at * 1e3, lr.extremes.shear / 1e3);
+      std::snprintf(line, sizeof line, "  %6d  %8.4g %8.4g %8.4g %8.4g %38.4g at %-8.4g %10.4g\n",
+                    lr.loads.layout, p[0] / 1e3, p[1] / 1e3, p[2] / 1e3, p[3] / 1e3,
+                    lr.extremes.moment, lr.extremes.moment_at * 1e3, lr.extremes.shear / 1e3);
       t << line;
       if (lr.planar) {
         const auto& y = lr.loads.plate_force_y;
@@ -311,12 +328,12 @@ int run_strength(const StrengthFlags& f) {
         t << line;
       }
     }
-    t << "\n  contact (" << kPlateKey[c.plate] << ", layout " << c.layout << "): N = "
-      << g(c.force / 1e3, 4) << " kN, eq. (22) c = " << g(c.c * 1e3, 4)
-      << " mm, eq. (23) p = N/(c·B) = " << g(c.p / 1e6, 4) << " MPa";
+    t << "\n  contact (" << kPlateKey[c.plate] << ", layout " << c.layout
+      << "): N = " << format_g(c.force / 1e3, 4) << " kN, eq. (22) c = " << format_g(c.c * 1e3, 4)
+      << " mm, eq. (23) p = N/(c·B) = " << format_g(c.p / 1e6, 4) << " MPa";
     if (c.hertz)
-      t << "; Hertz p0 = " << g(c.peak / 1e6, 4) << " MPa (b = " << g(c.half_width * 1e3, 4)
-        << " mm; p is the mean pressure π/4·p0)";
+      t << "; Hertz p0 = " << format_g(c.peak / 1e6, 4)
+        << " MPa (b = " << format_g(c.half_width * 1e3, 4) << " mm; p is the mean pressure π/4·p0)";
     t << "\n";
     if (!r.diagnostics.empty()) t << "\n";
     for (const Diagnostic& d : r.diagnostics)

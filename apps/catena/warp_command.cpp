@@ -1,9 +1,9 @@
 // catena warp: roller warp in the vertical plane (seed 000 §1.4), swept over L1 and F.
 #include <CLI/CLI.hpp>
-#include <map>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -26,20 +26,6 @@ struct WarpFlags {
   std::string force, load_height, format = "table", output;
 };
 
-std::string g(double v, int digits = 6) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
-
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream ss(text);
-  std::string part;
-  while (std::getline(ss, part, ',')) out.push_back(part);
-  return out;
-}
-
 // A list of quantities; `count` > 0 demands that many (one value is repeated to all).
 std::vector<double> list(FlagReader& in, const std::string& flag, const std::string& text,
                          QuantityKind kind, std::size_t count, const char* what) {
@@ -48,7 +34,7 @@ std::vector<double> list(FlagReader& in, const std::string& flag, const std::str
     return {};
   }
   std::vector<double> v;
-  for (const auto& p : split(text)) v.push_back(in.quantity(flag, p, kind).value_or(NAN));
+  for (const auto& p : split_commas(text)) v.push_back(in.quantity(flag, p, kind).value_or(NAN));
   if (count > 0 && v.size() == 1) v.assign(count, v[0]);
   if (count > 0 && v.size() != count) {
     in.add({flag, text, std::string(what) + ": 1 or 4 comma-separated values"});
@@ -75,7 +61,8 @@ std::optional<double> number(FlagReader& in, const std::string& flag, const std:
 int run_warp(const WarpFlags& f) {
   FlagReader in;
   Warp w;
-  const char* four = "four values, bottom to top: lower outer, lower inner, upper inner, upper outer";
+  const char* four =
+      "four values, bottom to top: lower outer, lower inner, upper inner, upper outer";
   const auto z = list(in, "--heights", f.heights, QuantityKind::kLength, 4, four);
   const auto c = list(in, "--clearances", f.clearances, QuantityKind::kLength, 4, four);
   const auto b = list(in, "--widths", f.widths, QuantityKind::kLength, 4, four);
@@ -83,7 +70,7 @@ int run_warp(const WarpFlags& f) {
   if (f.stiffness.empty()) {
     in.add({"--stiffness", "(missing)", "k of R = k·g^n in SI (N/m^n), 1 or 4 values"});
   } else {
-    for (const auto& p : split(f.stiffness))
+    for (const auto& p : split_commas(f.stiffness))
       k.push_back(number(in, "--stiffness", p, "k in SI (N/m^n), a plain number").value_or(NAN));
     if (k.size() == 1) k.assign(4, k[0]);
     if (k.size() != 4) in.add({"--stiffness", f.stiffness, "1 or 4 values"});
@@ -108,8 +95,9 @@ int run_warp(const WarpFlags& f) {
                             "L1 (from the lower outer joint's datum), one value or a sweep");
   constexpr std::size_t kMaxPoints = 100000;
   if (forces.size() * heights.size() > kMaxPoints)
-    in.add({"--force", g(static_cast<double>(forces.size())) + " × " +
-                           g(static_cast<double>(heights.size())) + " points",
+    in.add({"--force",
+            format_g(static_cast<double>(forces.size())) + " × " +
+                format_g(static_cast<double>(heights.size())) + " points",
             "at most 100000 sweep points"});
   in.throw_if_any();
   for (std::size_t i = 0; i < 4; ++i) w.supports[i] = {z[i], c[i], k[i], b[i]};
@@ -186,13 +174,14 @@ int run_warp(const WarpFlags& f) {
                          {"load_height", L},
                          {"points", 1}});
       }
-      csv << g(F, 12) << "," << g(L, 12);
-      for (double v : r.force) csv << "," << g(v, 12);
-      for (double v : r.deformation) csv << "," << g(v, 12);
-      csv << "," << g(r.tilt, 12) << "," << g(r.upper_share, 12) << "," << g(r.bending_stress, 12);
-      for (double v : r.contact_stress) csv << "," << g(v, 12);
+      csv << format_g(F, 12) << "," << format_g(L, 12);
+      for (double v : r.force) csv << "," << format_g(v, 12);
+      for (double v : r.deformation) csv << "," << format_g(v, 12);
+      csv << "," << format_g(r.tilt, 12) << "," << format_g(r.upper_share, 12) << ","
+          << format_g(r.bending_stress, 12);
+      for (double v : r.contact_stress) csv << "," << format_g(v, 12);
       csv << "," << (r.summary.converged ? 1 : 0) << "," << r.summary.iterations << ","
-          << g(r.summary.residual, 6) << "\n";
+          << format_g(r.summary.residual, 6) << "\n";
       char line[256];
       std::snprintf(line, sizeof line,
                     "  %8.4g %8.4g %9.4g %9.4g %9.4g %9.4g %14.4g %12.4g %16.4g %14.4g%s\n",
@@ -211,11 +200,11 @@ int run_warp(const WarpFlags& f) {
     j["hinge"] = w.kind == HingeKind::kRolling ? "rolling" : "sliding";
     j["exponent"] = w.exponent;
     j["points"] = points;
-    j["units"] = {{"force", "N"},         {"load_height", "m"},   {"joint_force", "N"},
-                  {"deformation", "m"},   {"deflection", "m"},    {"contact_stress", "Pa"},
-                  {"tilt", "rad"},        {"upper_share", "1"},   {"moment_max", "N*m"},
+    j["units"] = {{"force", "N"},           {"load_height", "m"},    {"joint_force", "N"},
+                  {"deformation", "m"},     {"deflection", "m"},     {"contact_stress", "Pa"},
+                  {"tilt", "rad"},          {"upper_share", "1"},    {"moment_max", "N*m"},
                   {"bending_stress", "Pa"}, {"force_residual", "N"}, {"moment_residual", "N*m"},
-                  {"residual", "N"},      {"stiffness", "N/m^n"}, {"exponent", "1"}};
+                  {"residual", "N"},        {"stiffness", "N/m^n"},  {"exponent", "1"}};
     j["diagnostics"] = diags;
     text = j.dump(2) + "\n";
   } else if (f.format == "csv") {
