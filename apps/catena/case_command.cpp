@@ -875,7 +875,8 @@ std::function<int()> add_report(CLI::App& app) {
     const std::string path = f->output.empty() ? "report.html" : f->output;
     outputs.add("--output", path, io::to_html(build_report(run), plotly_js()));
     outputs.commit();
-    std::cerr << "catena: wrote " << path << " (" << run.runs.size() << " analyses)\n";
+    std::cerr << "catena: wrote " << path << " (" << run.runs.size()
+              << (run.runs.size() == 1 ? " analysis)\n" : " analyses)\n");
     return 0;
   };
 }
