@@ -846,9 +846,7 @@ std::function<int()> add_run(CLI::App& app) {
   return [f]() {
     const CaseRun run = run_case(load(f->path));
     const std::string text = result_tree(run).dump(2) + "\n";
-    Outputs outputs;
-    if (!f->output.empty()) outputs.add("--output", f->output, text);
-    outputs.commit(f->output.empty() ? text : "");
+    write_text_output(f->output, text);
     return 0;
   };
 }

@@ -52,6 +52,23 @@ void FlagReader::add_model_issues(const std::vector<Issue>& model_issues) {
   }
 }
 
+nlohmann::ordered_json diagnostics_json(const std::vector<Diagnostic>& diagnostics) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const Diagnostic& d : diagnostics)
+    out.push_back({{"severity", to_string(d.severity)},
+                   {"code", d.code},
+                   {"message", d.message},
+                   {"value", d.value},
+                   {"limit", d.limit}});
+  return out;
+}
+
+void write_text_output(const std::string& output, const std::string& text) {
+  Outputs outputs;
+  if (!output.empty()) outputs.add("--output", output, text);
+  outputs.commit(output.empty() ? text : "");
+}
+
 void Outputs::add(std::string flag, std::string path, std::string content) {
   files_.push_back({std::move(flag), std::move(path), std::move(content), {}});
 }

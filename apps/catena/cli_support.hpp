@@ -1,6 +1,7 @@
 // Helpers shared by the subcommands: unit-tagged flags, output destinations.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <utility>
@@ -15,6 +16,8 @@ namespace catena::cli {
 std::string format_g(double v, int digits = 6);
 /// The comma-separated parts of a list flag ("30kN,35kN"), empty parts kept.
 std::vector<std::string> split_commas(const std::string& text);
+/// A model's diagnostics as the commands' JSON array: {severity, code, message, value, limit}.
+nlohmann::ordered_json diagnostics_json(const std::vector<Diagnostic>& diagnostics);
 
 /// Parses flags into SI values, collecting every problem so that all are reported at once.
 class FlagReader {
@@ -51,6 +54,9 @@ class Outputs {
   };
   std::vector<File> files_;
 };
+
+/// A command's text output: to the --output FILE when one is given, else to stdout.
+void write_text_output(const std::string& output, const std::string& text);
 
 /// While a Capture exists, Outputs::commit hands its files and stdout text to it instead of
 /// writing them: the case runner runs a subcommand in-process and keeps what it produced.

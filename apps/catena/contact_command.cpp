@@ -334,9 +334,7 @@ int run_contact(const ContactFlags& f) {
       text = out.str();
     }
   }
-  Outputs outputs;
-  if (!f.output.empty()) outputs.add("--output", f.output, text);
-  outputs.commit(f.output.empty() ? text : "");
+  write_text_output(f.output, text);
   return 0;
 }
 
@@ -390,9 +388,7 @@ int run_fretting(const FrettingFlags& f) {
         format_g(tau) + " (" + format_g(tau / 3600) + " h, " + format_g(tau * m.frequency) +
         " cycles)\n  exponent K2 A N f / Ra  " + format_g(exponent) + "\n";
   }
-  Outputs outputs;
-  if (!f.output.empty()) outputs.add("--output", f.output, text);
-  outputs.commit(f.output.empty() ? text : "");
+  write_text_output(f.output, text);
   return 0;
 }
 

@@ -143,18 +143,6 @@ Request read(const Flags& f) {
   return r;
 }
 
-ordered_json diagnostics_json(const std::vector<Diagnostic>& list) {
-  ordered_json out = ordered_json::array();
-  for (const Diagnostic& d : list) {
-    out.push_back({{"code", d.code},
-                   {"message", d.message},
-                   {"limit", d.limit},
-                   {"severity", to_string(d.severity)},
-                   {"value", d.value}});
-  }
-  return out;
-}
-
 int run_engagement(const Flags& f) {
   const Request r = read(f);
   const Result res = r.rolling ? solve_rolling(r.rolling_in) : solve_sliding(r.sliding);
@@ -267,9 +255,7 @@ int run_engagement(const Flags& f) {
       out << "\n" << to_string(d.severity) << ": " << d.message << "\n";
     text = out.str();
   }
-  Outputs outputs;
-  if (!f.output.empty()) outputs.add("--output", f.output, text);
-  outputs.commit(f.output.empty() ? text : "");
+  write_text_output(f.output, text);
   return 0;
 }
 

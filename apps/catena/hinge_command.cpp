@@ -137,18 +137,6 @@ Request read(const Flags& f, bool sweep = false) {
   return r;
 }
 
-ordered_json diagnostics_json(const std::vector<Diagnostic>& list) {
-  ordered_json out = ordered_json::array();
-  for (const Diagnostic& d : list) {
-    out.push_back({{"code", d.code},
-                   {"message", d.message},
-                   {"limit", d.limit},
-                   {"severity", to_string(d.severity)},
-                   {"value", d.value}});
-  }
-  return out;
-}
-
 // The hinge drawing: aperture, roller at φ = 0 and φmax, the plate's arc, the centre's path and
 // the feature points' trajectories (eq. 11).
 io::Drawing hinge_drawing(const Request& r, const Synthesis& s, const Aperture& ap) {
@@ -412,9 +400,7 @@ int run_sweep(const Flags& f) {
     if (!csv) out << "\n* best: " << sw.criterion << "\n";
     text = out.str();
   }
-  Outputs outputs;
-  if (!f.output.empty()) outputs.add("--output", f.output, text);
-  outputs.commit(f.output.empty() ? text : "");
+  write_text_output(f.output, text);
   return 0;
 }
 

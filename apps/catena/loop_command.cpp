@@ -381,14 +381,7 @@ int run_loop(const LoopFlags& f) {
     j["drive_force"] = r.drive_force;
     j["power"] = r.power;
     j["length"] = r.length;
-    ordered_json diags = ordered_json::array();
-    for (const Diagnostic& d : r.diagnostics)
-      diags.push_back({{"severity", to_string(d.severity)},
-                       {"code", d.code},
-                       {"message", d.message},
-                       {"value", d.value},
-                       {"limit", d.limit}});
-    j["diagnostics"] = diags;
+    j["diagnostics"] = diagnostics_json(r.diagnostics);
     j["units"] = {{"speed", "m/s"},       {"efficiency", "1"},  {"s", "m"},
                   {"s_start", "m"},       {"s_end", "m"},       {"tension", "N"},
                   {"tension_in", "N"},    {"tension_out", "N"}, {"resistance", "N"},
@@ -439,9 +432,7 @@ int run_loop(const LoopFlags& f) {
       table << "  " << to_string(d.severity) << ": " << d.message << "\n";
     text = table.str();
   }
-  Outputs outputs;
-  if (!f.output.empty()) outputs.add("--output", f.output, text);
-  outputs.commit(f.output.empty() ? text : "");
+  write_text_output(f.output, text);
   return 0;
 }
 

@@ -202,15 +202,7 @@ nlohmann::ordered_json to_json(const Request& r, const RunOnResult& res) {
   }
   if (r.sampling.strand_mass) series["inertial_force"] = res.series.inertial_force;
   j["series"] = series;
-  ordered_json diagnostics = ordered_json::array();
-  for (const Diagnostic& d : res.diagnostics) {
-    diagnostics.push_back({{"severity", to_string(d.severity)},
-                           {"code", d.code},
-                           {"message", d.message},
-                           {"value", d.value},
-                           {"limit", d.limit}});
-  }
-  j["diagnostics"] = diagnostics;
+  j["diagnostics"] = diagnostics_json(res.diagnostics);
   j["units"] = {{"pitch", "m"},
                 {"wire", "m"},
                 {"teeth", "1"},

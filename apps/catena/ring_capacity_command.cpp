@@ -92,23 +92,6 @@ void missing(FlagReader& in, const std::string& flag, const std::string& text, c
   if (text.empty()) in.add({flag, "(missing)", what});
 }
 
-ordered_json diagnostics_json(const std::vector<Diagnostic>& ds) {
-  ordered_json a = ordered_json::array();
-  for (const auto& d : ds)
-    a.push_back({{"severity", to_string(d.severity)},
-                 {"code", d.code},
-                 {"message", d.message},
-                 {"value", d.value},
-                 {"limit", d.limit}});
-  return a;
-}
-
-void emit(const std::string& output, const std::string& text) {
-  Outputs outputs;
-  if (!output.empty()) outputs.add("--output", output, text);
-  outputs.commit(output.empty() ? text : "");
-}
-
 // ---------------------------------------------------------------------------------------------
 // catena ring capacity
 
@@ -285,7 +268,7 @@ int run_capacity(const CapacityFlags& f) {
     for (const auto& d : diags) t << "\n  " << to_string(d.severity) << ": " << d.message << "\n";
     text = t.str();
   }
-  emit(f.output, text);
+  write_text_output(f.output, text);
   return 0;
 }
 
@@ -423,7 +406,7 @@ int run_design(const DesignFlags& f) {
       t << "\n  " << to_string(dg.severity) << ": " << dg.message << "\n";
     text = t.str();
   }
-  emit(f.output, text);
+  write_text_output(f.output, text);
   return 0;
 }
 

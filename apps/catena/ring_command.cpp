@@ -151,14 +151,7 @@ int run_ring(const RingFlags& f) {
                     {"richardson_error", r.summary.richardson_error},
                     {"equilibrium_residual",
                      std::abs(r.load - r.load_contact) / std::max(std::abs(r.load), 1e-300)}};
-    ordered_json diags = ordered_json::array();
-    for (const auto& d : r.diagnostics)
-      diags.push_back({{"severity", to_string(d.severity)},
-                       {"code", d.code},
-                       {"message", d.message},
-                       {"value", d.value},
-                       {"limit", d.limit}});
-    j["diagnostics"] = diags;
+    j["diagnostics"] = diagnostics_json(r.diagnostics);
     j["units"] = {{"load", "N"},
                   {"mean_stress", "Pa"},
                   {"r", "m"},
@@ -223,9 +216,7 @@ int run_ring(const RingFlags& f) {
     t << "\n";
     text = t.str();
   }
-  Outputs outputs;
-  if (!f.output.empty()) outputs.add("--output", f.output, text);
-  outputs.commit(f.output.empty() ? text : "");
+  write_text_output(f.output, text);
   return 0;
 }
 

@@ -172,7 +172,7 @@ int run_strength(const StrengthFlags& f) {
 
   const Result r = assess(x);
   const bool rolling = h.kind == HingeKind::kRolling;
-  ordered_json checks = ordered_json::array(), diags = ordered_json::array();
+  ordered_json checks = ordered_json::array();
   double worst = INFINITY;
   for (const Check& c : r.checks) {
     checks.push_back({{"name", c.name},
@@ -184,12 +184,7 @@ int run_strength(const StrengthFlags& f) {
                       {"ok", c.ok}});
     worst = std::min(worst, c.safety_factor / c.required);
   }
-  for (const Diagnostic& d : r.diagnostics)
-    diags.push_back({{"severity", to_string(d.severity)},
-                     {"code", d.code},
-                     {"message", d.message},
-                     {"value", d.value},
-                     {"limit", d.limit}});
+  const ordered_json diags = diagnostics_json(r.diagnostics);
   ordered_json layouts = ordered_json::object(), diagrams = ordered_json::object();
   std::ostringstream csv;
   csv << "layout,x,M,Q\n";
@@ -340,9 +335,7 @@ int run_strength(const StrengthFlags& f) {
       t << "  " << to_string(d.severity) << ": " << d.message << "\n";
     text = t.str();
   }
-  Outputs outputs;
-  if (!f.output.empty()) outputs.add("--output", f.output, text);
-  outputs.commit(f.output.empty() ? text : "");
+  write_text_output(f.output, text);
   return 0;
 }
 

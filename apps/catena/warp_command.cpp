@@ -212,9 +212,7 @@ int run_warp(const WarpFlags& f) {
   } else {
     text = table.str();
   }
-  Outputs outputs;
-  if (!f.output.empty()) outputs.add("--output", f.output, text);
-  outputs.commit(f.output.empty() ? text : "");
+  write_text_output(f.output, text);
   return 0;
 }
 
