@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -31,6 +32,30 @@ std::optional<double> FlagReader::quantity(const std::string& flag, const std::s
                                            io::QuantityKind kind) {
   if (text.empty()) return std::nullopt;
   return io::parse_quantity(text, kind, flag, issues_);
+}
+
+double FlagReader::required_quantity(const std::string& flag, const std::string& text,
+                                     io::QuantityKind kind, const std::string& what) {
+  if (text.empty()) {
+    add({flag, "(missing)", what});
+    return NAN;
+  }
+  return quantity(flag, text, kind).value_or(NAN);
+}
+
+double FlagReader::required_number(const std::string& flag, const std::string& text,
+                                   const std::string& what) {
+  if (text.empty()) {
+    add({flag, "(missing)", what});
+    return NAN;
+  }
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (*end != '\0' || !std::isfinite(v)) {
+    add({flag, "'" + text + "'", what});
+    return NAN;
+  }
+  return v;
 }
 
 std::optional<int> FlagReader::integer(const std::string& flag, const std::string& text, int min) {

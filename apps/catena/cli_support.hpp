@@ -25,6 +25,13 @@ class FlagReader {
   /// A unit-tagged flag; `text` empty means "not given" and yields nothing without an issue.
   std::optional<double> quantity(const std::string& flag, const std::string& text,
                                  io::QuantityKind kind);
+  /// A unit-tagged flag that must be given: empty adds "(missing): expected `what`". NaN when
+  /// missing or unreadable (the problem is recorded either way).
+  double required_quantity(const std::string& flag, const std::string& text, io::QuantityKind kind,
+                           const std::string& what);
+  /// A plain number that must be given (a ratio, an exponent, a factor in SI): empty adds
+  /// "(missing)", text that is not a finite number adds "'text'", each with `what`; NaN then.
+  double required_number(const std::string& flag, const std::string& text, const std::string& what);
   /// A whole number ≥ `min`.
   std::optional<int> integer(const std::string& flag, const std::string& text, int min);
   void add(Issue issue) { issues_.push_back(std::move(issue)); }

@@ -28,29 +28,6 @@ struct RingFlags {
   std::string format = "table", output;
 };
 
-double required(FlagReader& in, const std::string& flag, const std::string& text, QuantityKind kind,
-                const char* what) {
-  if (text.empty()) {
-    in.add({flag, "(missing)", what});
-    return NAN;
-  }
-  return in.quantity(flag, text, kind).value_or(NAN);
-}
-
-double ratio(FlagReader& in, const std::string& flag, const std::string& text, const char* what) {
-  if (text.empty()) {
-    in.add({flag, "(missing)", what});
-    return NAN;
-  }
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (*end != '\0' || !std::isfinite(v)) {
-    in.add({flag, "'" + text + "'", what});
-    return NAN;
-  }
-  return v;
-}
-
 ordered_json section(const Result& r, const std::vector<double>& sr, const std::vector<double>& sp,
                      const std::vector<double>& tau) {
   return {{"r", r.r}, {"sigma_r", sr}, {"sigma_phi", sp}, {"tau", tau}};
@@ -59,20 +36,20 @@ ordered_json section(const Result& r, const std::vector<double>& sr, const std::
 int run_ring(const RingFlags& f) {
   FlagReader in;
   Ring ring;
-  ring.inner_radius = required(in, "--inner-radius", f.inner_radius, QuantityKind::kLength,
-                               "r1, the pin's (half-discs') radius");
-  ring.outer_radius = required(in, "--outer-radius", f.outer_radius, QuantityKind::kLength,
-                               "r2 > r1, the ring's outer radius");
-  ring.thickness = required(in, "--thickness", f.thickness, QuantityKind::kLength,
-                            "t, the ring's thickness (plane stress)");
-  ring.E_r = required(in, "--E-r", f.E_r, QuantityKind::kStress, "radial Young's modulus");
-  ring.E_phi =
-      required(in, "--E-phi", f.E_phi, QuantityKind::kStress, "hoop (fibre) Young's modulus");
-  ring.G = required(in, "--G", f.G, QuantityKind::kStress, "in-plane shear modulus G_rphi");
-  ring.nu_phi_r = ratio(in, "--nu-phi-r", f.nu_phi_r,
-                        "nu_phi_r = -eps_r/eps_phi under pure hoop stress, a plain number");
-  ring.gap = required(in, "--gap", f.gap, QuantityKind::kLength,
-                      "the full opening 2*delta between the half-discs");
+  ring.inner_radius = in.required_quantity("--inner-radius", f.inner_radius, QuantityKind::kLength,
+                                           "r1, the pin's (half-discs') radius");
+  ring.outer_radius = in.required_quantity("--outer-radius", f.outer_radius, QuantityKind::kLength,
+                                           "r2 > r1, the ring's outer radius");
+  ring.thickness = in.required_quantity("--thickness", f.thickness, QuantityKind::kLength,
+                                        "t, the ring's thickness (plane stress)");
+  ring.E_r = in.required_quantity("--E-r", f.E_r, QuantityKind::kStress, "radial Young's modulus");
+  ring.E_phi = in.required_quantity("--E-phi", f.E_phi, QuantityKind::kStress,
+                                    "hoop (fibre) Young's modulus");
+  ring.G = in.required_quantity("--G", f.G, QuantityKind::kStress, "in-plane shear modulus G_rphi");
+  ring.nu_phi_r = in.required_number(
+      "--nu-phi-r", f.nu_phi_r, "nu_phi_r = -eps_r/eps_phi under pure hoop stress, a plain number");
+  ring.gap = in.required_quantity("--gap", f.gap, QuantityKind::kLength,
+                                  "the full opening 2*delta between the half-discs");
   Options o;
   o.method = f.method == "sweep" ? Method::kSweep : Method::kExact;
   o.unilateral = f.unilateral;

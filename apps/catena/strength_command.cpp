@@ -57,26 +57,6 @@ std::array<double, 4> four(FlagReader& in, const std::string& flag, const std::s
   return out;
 }
 
-double required_quantity(FlagReader& in, const std::string& flag, const std::string& text,
-                         QuantityKind kind, const char* what) {
-  if (text.empty()) {
-    in.add({flag, "(missing)", what});
-    return NAN;
-  }
-  return in.quantity(flag, text, kind).value_or(NAN);
-}
-
-double plain(FlagReader& in, const std::string& flag, const std::string& text,
-             const char* expected) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v)) {
-    in.add({flag, "'" + text + "'", expected});
-    return NAN;
-  }
-  return v;
-}
-
 ordered_json number_or_null(double v) {
   return std::isfinite(v) ? ordered_json(v) : ordered_json();
 }
@@ -87,34 +67,34 @@ int run_strength(const StrengthFlags& f) {
   Hinge& h = x.hinge;
   h.heights = four(in, "--heights", f.heights);
   h.widths = four(in, "--widths", f.widths);
-  h.pin_diameter = required_quantity(in, "--pin-diameter", f.diameter, QuantityKind::kLength,
-                                     "d of the roller (pin)");
+  h.pin_diameter = in.required_quantity("--pin-diameter", f.diameter, QuantityKind::kLength,
+                                        "d of the roller (pin)");
   h.bore = in.quantity("--bore", f.bore, QuantityKind::kLength).value_or(NAN);
   h.hole_diameter =
       f.hole.empty() ? 0.0
                      : in.quantity("--hole-diameter", f.hole, QuantityKind::kLength).value_or(NAN);
-  h.plate_width = required_quantity(in, "--plate-width", f.plate_width, QuantityKind::kLength,
-                                    "b, the plate's depth across the chain line");
-  h.end_distance = required_quantity(in, "--end-distance", f.end_distance, QuantityKind::kLength,
-                                     "e, from the hole centre to the plate's end");
-  h.stress_concentration =
-      plain(in, "--stress-concentration", f.stress_concentration, "K_t ≥ 1, a plain number");
+  h.plate_width = in.required_quantity("--plate-width", f.plate_width, QuantityKind::kLength,
+                                       "b, the plate's depth across the chain line");
+  h.end_distance = in.required_quantity("--end-distance", f.end_distance, QuantityKind::kLength,
+                                        "e, from the hole centre to the plate's end");
+  h.stress_concentration = in.required_number("--stress-concentration", f.stress_concentration,
+                                              "K_t ≥ 1, a plain number");
   h.kind = f.hinge == "rolling" ? HingeKind::kRolling : HingeKind::kSliding;
   if (h.kind == HingeKind::kSliding) {
     h.contact_angle =
         in.quantity("--contact-angle", f.contact_angle, QuantityKind::kAngle).value_or(NAN);
   } else {
-    h.r1 = required_quantity(in, "--plate-radius", f.r1, QuantityKind::kLength,
-                             "R1 for a rolling hinge");
-    h.r2 = required_quantity(in, "--roller-radius", f.r2, QuantityKind::kLength,
-                             "R2 for a rolling hinge");
+    h.r1 = in.required_quantity("--plate-radius", f.r1, QuantityKind::kLength,
+                                "R1 for a rolling hinge");
+    h.r2 = in.required_quantity("--roller-radius", f.r2, QuantityKind::kLength,
+                                "R2 for a rolling hinge");
   }
   h.modulus = in.quantity("--modulus", f.modulus, QuantityKind::kStress).value_or(NAN);
-  h.poisson = plain(in, "--poisson", f.poisson, "0 ≤ ν < 0.5, a plain number");
+  h.poisson = in.required_number("--poisson", f.poisson, "0 ≤ ν < 0.5, a plain number");
 
   Loads& l = x.loads;
-  l.tension = required_quantity(in, "--tension", f.tension, QuantityKind::kForce,
-                                "S, the free link's tension");
+  l.tension = in.required_quantity("--tension", f.tension, QuantityKind::kForce,
+                                   "S, the free link's tension");
   l.link_angle = in.quantity("--link-angle", f.link_angle, QuantityKind::kAngle).value_or(NAN);
   if (!f.tooth_force.empty() && !f.exit_tension.empty()) {
     in.add({"--tooth-force", f.tooth_force, "either --tooth-force or --exit-tension, not both"});
@@ -144,23 +124,24 @@ int run_strength(const StrengthFlags& f) {
           : in.quantity("--load-height", f.load_height, QuantityKind::kLength).value_or(NAN);
 
   Material& m = x.material;
-  m.roller_yield = required_quantity(in, "--roller-yield", f.roller_yield, QuantityKind::kStress,
-                                     "σ_y of the roller");
-  m.plate_yield = required_quantity(in, "--plate-yield", f.plate_yield, QuantityKind::kStress,
-                                    "σ_y of the plates");
+  m.roller_yield = in.required_quantity("--roller-yield", f.roller_yield, QuantityKind::kStress,
+                                        "σ_y of the roller");
+  m.plate_yield = in.required_quantity("--plate-yield", f.plate_yield, QuantityKind::kStress,
+                                       "σ_y of the plates");
   m.plate_ultimate =
       f.plate_ultimate.empty()
           ? 0.0
           : in.quantity("--plate-ultimate", f.plate_ultimate, QuantityKind::kStress).value_or(NAN);
   if (h.kind == HingeKind::kSliding)
     m.allowable_pressure =
-        required_quantity(in, "--allowable-pressure", f.allowable_pressure, QuantityKind::kStress,
-                          "[p], the allowable specific pressure of a sliding hinge");
+        in.required_quantity("--allowable-pressure", f.allowable_pressure, QuantityKind::kStress,
+                             "[p], the allowable specific pressure of a sliding hinge");
   else
     m.allowable_contact =
-        required_quantity(in, "--allowable-contact", f.allowable_contact, QuantityKind::kStress,
-                          "[σ_H], the allowable Hertz stress of a rolling hinge");
-  m.required = plain(in, "--safety-factor", f.safety_factor, "the required safety factor > 0");
+        in.required_quantity("--allowable-contact", f.allowable_contact, QuantityKind::kStress,
+                             "[σ_H], the allowable Hertz stress of a rolling hinge");
+  m.required =
+      in.required_number("--safety-factor", f.safety_factor, "the required safety factor > 0");
   x.layouts = f.layout == "1" ? Layouts::kOne : f.layout == "2" ? Layouts::kTwo : Layouts::kBoth;
   // every problem at once: the model's checks too, except for the values the flags above
   // already reported (those were read as NaN)

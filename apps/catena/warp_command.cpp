@@ -43,21 +43,6 @@ std::vector<double> list(FlagReader& in, const std::string& flag, const std::str
   return v;
 }
 
-std::optional<double> number(FlagReader& in, const std::string& flag, const std::string& text,
-                             const char* expected) {
-  if (text.empty()) {
-    in.add({flag, "(missing)", expected});
-    return std::nullopt;
-  }
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (*end != '\0' || !std::isfinite(v)) {
-    in.add({flag, "'" + text + "'", expected});
-    return std::nullopt;
-  }
-  return v;
-}
-
 int run_warp(const WarpFlags& f) {
   FlagReader in;
   Warp w;
@@ -71,23 +56,21 @@ int run_warp(const WarpFlags& f) {
     in.add({"--stiffness", "(missing)", "k of R = k·g^n in SI (N/m^n), 1 or 4 values"});
   } else {
     for (const auto& p : split_commas(f.stiffness))
-      k.push_back(number(in, "--stiffness", p, "k in SI (N/m^n), a plain number").value_or(NAN));
+      k.push_back(in.required_number("--stiffness", p, "k in SI (N/m^n), a plain number"));
     if (k.size() == 1) k.assign(4, k[0]);
     if (k.size() != 4) in.add({"--stiffness", f.stiffness, "1 or 4 values"});
   }
-  w.exponent = number(in, "--exponent", f.exponent, "n in [1, 3]").value_or(NAN);
+  w.exponent = in.required_number("--exponent", f.exponent, "n in [1, 3]");
   w.roller_diameter =
-      f.diameter.empty()
-          ? (in.add({"--pin-diameter", "(missing)", "d of the roller"}), NAN)
-          : in.quantity("--pin-diameter", f.diameter, QuantityKind::kLength).value_or(NAN);
+      in.required_quantity("--pin-diameter", f.diameter, QuantityKind::kLength, "d of the roller");
   w.modulus = in.quantity("--modulus", f.modulus, QuantityKind::kStress).value_or(NAN);
-  w.poisson = number(in, "--poisson", f.poisson, "0 ≤ ν < 0.5").value_or(NAN);
+  w.poisson = in.required_number("--poisson", f.poisson, "0 ≤ ν < 0.5");
   w.kind = f.hinge == "rolling" ? HingeKind::kRolling : HingeKind::kSliding;
   if (w.kind == HingeKind::kRolling) {
-    w.r1 = f.r1.empty() ? (in.add({"--plate-radius", "(missing)", "R1 for a rolling hinge"}), NAN)
-                        : in.quantity("--plate-radius", f.r1, QuantityKind::kLength).value_or(NAN);
-    w.r2 = f.r2.empty() ? (in.add({"--roller-radius", "(missing)", "R2 for a rolling hinge"}), NAN)
-                        : in.quantity("--roller-radius", f.r2, QuantityKind::kLength).value_or(NAN);
+    w.r1 = in.required_quantity("--plate-radius", f.r1, QuantityKind::kLength,
+                                "R1 for a rolling hinge");
+    w.r2 = in.required_quantity("--roller-radius", f.r2, QuantityKind::kLength,
+                                "R2 for a rolling hinge");
   }
   const auto forces = list(in, "--force", f.force, QuantityKind::kForce, 0,
                            "F, one value or a comma-separated sweep");
