@@ -78,20 +78,20 @@ struct Summary {
   int nodes = 0;                   ///< sweep intervals (0 for the exact solver)
   int fallbacks = 0;               ///< harmonics the exact solver handed to the sweep
   double truncation_change = 0.0;  ///< max relative change of checked σ_φ from N/2 to N
-  double richardson_error = 0.0;   ///< sweep: max |σ_φ(m) − σ_φ(m/2)|/3 relative to mean stress
+  double richardson_error = 0.0;  ///< sweep: max |σ_φ(m) − σ_φ(m/2)|/3 relative to mean stress
 };
 
 struct Result {
-  std::vector<double> r;  ///< [m] output radii, ascending
+  std::vector<double> r;                                 ///< [m] output radii, ascending
   std::vector<double> sigma_r_0, sigma_phi_0, tau_0;     ///< [Pa] section φ = 0
   std::vector<double> sigma_r_90, sigma_phi_90, tau_90;  ///< [Pa] section φ = π/2
   std::vector<double> contact_phi;                       ///< [rad] 0..π/2
   std::vector<double> contact_pressure;                  ///< [Pa] −σ_r(r1, φ); < 0 is tension
   /// [Pa] the stresses over the quarter ring: [j][i] at φ = contact_phi[j], r = r[i]
   std::vector<std::vector<double>> field_sigma_r, field_sigma_phi, field_tau;
-  double load = 0.0;          ///< [N] P from σ_φ on the two φ = π/2 sections
-  double load_contact = 0.0;  ///< [N] P from the contact pressure (equilibrium check)
-  double mean_stress = 0.0;   ///< [Pa] P / (2 (r2 − r1) t)
+  double load = 0.0;                  ///< [N] P from σ_φ on the two φ = π/2 sections
+  double load_contact = 0.0;          ///< [N] P from the contact pressure (equilibrium check)
+  double mean_stress = 0.0;           ///< [Pa] P / (2 (r2 − r1) t)
   double stress_concentration = 0.0;  ///< max σ_φ(π/2) for r ≥ r1 + 0.05(r2 − r1) / mean
   double corner_sigma_phi = 0.0;      ///< [Pa] σ_φ(r1, π/2), grows with N
   double max_shear = 0.0;             ///< [Pa] max |τ| over the quarter ring grid

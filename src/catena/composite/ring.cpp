@@ -13,7 +13,7 @@ namespace {
 
 using cplx = std::complex<double>;
 constexpr double kPi = std::numbers::pi;
-constexpr double kRepeatTol = 1e-6;  // [-] relative exponent separation below which λ repeat
+constexpr double kRepeatTol = 1e-6;       // [-] relative exponent separation below which λ repeat
 constexpr double kCornerFraction = 0.05;  // [-] singular zone r < r1 + 0.05(r2 − r1)
 
 /// Plane-stress stiffnesses divided by E_φ (seed 002 constants D of eq. (1), derived):
@@ -116,39 +116,43 @@ std::vector<double> unilateral_scales(const std::vector<Harmonic>& hs, double de
     phi[j] = 0.5 * kPi * static_cast<double>(j) / static_cast<double>(k - 1);
     u0[j] = delta * std::cos(phi[j]);
   }
-  auto disp = [&](std::size_t j, const std::vector<double>& s) {
-    double u = 0;
-    for (std::size_t n = 0; n < k; ++n)
-      u += s[n] * delta * inner_coefficient(hs[n].n) * std::cos(hs[n].n * phi[j]);
-    return u;
-  };
-  auto pressure = [&](std::size_t j, const std::vector<double>& s) {
-    double p = 0;
-    for (std::size_t n = 0; n < k; ++n) p -= s[n] * hs[n].inner_sigma_r * std::cos(hs[n].n * phi[j]);
-    return p;
+  // the two kinds of collocation row, built once: u(φ_j) = Σ D_jn s_n and p(φ_j) = Σ Q_jn s_n
+  std::vector<double> disp_row(k * k), pres_row(k * k);
+  for (std::size_t j = 0; j < k; ++j)
+    for (std::size_t n = 0; n < k; ++n) {
+      const double c = std::cos(hs[n].n * phi[j]);
+      disp_row[j * k + n] = delta * inner_coefficient(hs[n].n) * c;
+      pres_row[j * k + n] = -hs[n].inner_sigma_r * c;
+    }
+  auto dot = [&](const std::vector<double>& rows, std::size_t j, const std::vector<double>& s) {
+    double v = 0;
+    for (std::size_t n = 0; n < k; ++n) v += rows[j * k + n] * s[n];
+    return v;
   };
   std::vector<char> contact(k, 1);
+  std::vector<double> p(k);
   constexpr int kMaxPasses = 100;
   for (passes = 1; passes <= kMaxPasses; ++passes) {
     std::vector<double> a(k * k), b(k);
     for (std::size_t j = 0; j < k; ++j) {
-      for (std::size_t n = 0; n < k; ++n) {
-        const double c = std::cos(hs[n].n * phi[j]);
-        a[j * k + n] = contact[j] ? delta * inner_coefficient(hs[n].n) * c
-                                  : -hs[n].inner_sigma_r * c;
-      }
+      const std::vector<double>& rows = contact[j] ? disp_row : pres_row;
+      std::copy_n(rows.begin() + static_cast<std::ptrdiff_t>(j * k), k,
+                  a.begin() + static_cast<std::ptrdiff_t>(j * k));
       b[j] = contact[j] ? u0[j] : 0.0;
     }
     if (!solve_real(a, b)) break;
     scale = b;
     bool changed = false;
     double pscale = 0;
-    for (std::size_t j = 0; j < k; ++j) pscale = std::max(pscale, std::abs(pressure(j, scale)));
     for (std::size_t j = 0; j < k; ++j) {
-      if (contact[j] && pressure(j, scale) < -1e-12 * pscale) {
+      p[j] = dot(pres_row, j, scale);
+      pscale = std::max(pscale, std::abs(p[j]));
+    }
+    for (std::size_t j = 0; j < k; ++j) {
+      if (contact[j] && p[j] < -1e-12 * pscale) {
         contact[j] = 0;
         changed = true;
-      } else if (!contact[j] && disp(j, scale) < u0[j] - 1e-12 * delta) {
+      } else if (!contact[j] && dot(disp_row, j, scale) < u0[j] - 1e-12 * delta) {
         contact[j] = 1;
         changed = true;
       }
@@ -186,9 +190,9 @@ std::vector<Issue> validate(const Ring& ring) {
       ring.inner_radius > 0 && ring.outer_radius > 0) {
     const double a = ring.inner_radius / ring.outer_radius;
     if (!(a < 0.995) || a < 0.05)
-      out.push_back({"inner_radius", check::format_si(ring.inner_radius, "m"),
-                     "0.05 ≤ r1/r2 ≤ 0.995 (r2 = " +
-                         check::format_si(ring.outer_radius, "m") + ")"});
+      out.push_back(
+          {"inner_radius", check::format_si(ring.inner_radius, "m"),
+           "0.05 ≤ r1/r2 ≤ 0.995 (r2 = " + check::format_si(ring.outer_radius, "m") + ")"});
   }
   if (!std::isfinite(ring.nu_phi_r) || ring.nu_phi_r < 0.0) {
     out.push_back({"nu_phi_r", check::format_si(ring.nu_phi_r, ""), "a ratio ≥ 0"});
@@ -198,8 +202,8 @@ std::vector<Issue> validate(const Ring& ring) {
                    "ν_φr² E_r/E_φ < 1 (positive-definite stiffness)"});
   }
   if (std::isfinite(ring.gap) && ring.gap > 0 && ring.gap >= 0.1 * ring.inner_radius)
-    out.push_back({"gap", check::format_si(ring.gap, "m"),
-                   "a small opening 2δ < 0.1 r1 (linear theory)"});
+    out.push_back(
+        {"gap", check::format_si(ring.gap, "m"), "a small opening 2δ < 0.1 r1 (linear theory)"});
   return out;
 }
 
@@ -284,8 +288,8 @@ Harmonic solve_exact(const Ring& ring, int n, const std::vector<double>& rho) {
   // n ≥ 2: V = a ρ^λ, W = b ρ^λ in (4); det = 0 is biquadratic, a4 μ² + a2 μ + a0 = 0, μ = λ²
   const double n2 = dn * dn;
   const double a4 = c.c11 * c.g;
-  const double a2 = -c.c11 * (c.g + n2 * c.c22) - c.g * (c.c22 + n2 * c.g) +
-                    n2 * (c.c12 + c.g) * (c.c12 + c.g);
+  const double a2 =
+      -c.c11 * (c.g + n2 * c.c22) - c.g * (c.c22 + n2 * c.g) + n2 * (c.c12 + c.g) * (c.c12 + c.g);
   const double a0 = (c.c22 + n2 * c.g) * (c.g + n2 * c.c22) - n2 * (c.g + c.c22) * (c.g + c.c22);
   const cplx disc = std::sqrt(cplx(a2 * a2 - 4.0 * a4 * a0));
   // stable quadratic roots
@@ -324,7 +328,7 @@ Harmonic solve_exact(const Ring& ring, int n, const std::vector<double>& rho) {
       w = -p2;
     }
     const cplx sr = c.c11 * l * v + c.c12 * (v + dn * w);  // ρσ_r
-    const cplx tr = c.g * (l * w - w - dn * v);           // ρτ
+    const cplx tr = c.g * (l * w - w - dn * v);            // ρτ
     const cplx sp = c.c12 * l * v + c.c22 * (v + dn * w);  // ρσ_φ
     const double norm = std::max({std::abs(v), std::abs(w), std::abs(sr), std::abs(tr)});
     mode[j] = {l, v / norm, w / norm, sr / norm, tr / norm, sp / norm, l.real() >= 0 ? 0.0 : s0};
@@ -383,7 +387,8 @@ Harmonic solve_sweep(const Ring& ring, int n, int m, const std::vector<double>& 
     const double pw = c.g * r * r, qw = c.g * r;  // eq. 2, W
     const double qv2 = -dn * (c.g + c.c12) * r, zw2 = -(c.g + dn * dn * c.c22),
                  zv2 = -dn * (c.g + c.c22);
-    A[i] = {pv / (h * h) - qv / (2 * h), -qw1 / (2 * h), -qv2 / (2 * h), pw / (h * h) - qw / (2 * h)};
+    A[i] = {pv / (h * h) - qv / (2 * h), -qw1 / (2 * h), -qv2 / (2 * h),
+            pw / (h * h) - qw / (2 * h)};
     B[i] = {-2 * pv / (h * h) + zv1, zw1, zv2, -2 * pw / (h * h) + zw2};
     C[i] = {pv / (h * h) + qv / (2 * h), qw1 / (2 * h), qv2 / (2 * h), pw / (h * h) + qw / (2 * h)};
     if (n == 0) {  // W decoupled (rigid rotation): W ≡ 0
@@ -487,8 +492,8 @@ Result analyse(const Ring& ring, const Options& options) {
   issues.insert(issues.end(), more.begin(), more.end());
   throw_if_any(issues);
   const double alpha = ring.inner_radius / ring.outer_radius;
-  const int N = options.harmonics > 0 ? options.harmonics - options.harmonics % 2
-                                      : default_harmonics(ring);
+  const int N =
+      options.harmonics > 0 ? options.harmonics - options.harmonics % 2 : default_harmonics(ring);
   const bool sweep = options.method == Method::kSweep;
   int m = options.nodes > 0 ? options.nodes : default_nodes(ring, N, options.points);
   const int step = options.points - 1;
@@ -577,20 +582,24 @@ Result analyse(const Ring& ring, const Options& options) {
   res.sum_sigma_r = con / res.mean_stress;
   // contact pressure and the quarter-ring shear
   const int nphi = 91;
+  std::vector<double> cos_n(hs.size()), sin_n(hs.size());  // per angle, not per radius
   for (int j = 0; j < nphi; ++j) {
     const double phi = 0.5 * kPi * j / (nphi - 1);
     double p = 0;
-    for (const Harmonic& hm : hs) p -= hm.inner_sigma_r * std::cos(hm.n * phi);
+    for (std::size_t k = 0; k < hs.size(); ++k) {
+      cos_n[k] = std::cos(hs[k].n * phi);
+      sin_n[k] = std::sin(hs[k].n * phi);
+      p -= hs[k].inner_sigma_r * cos_n[k];
+    }
     res.contact_phi.push_back(phi);
     res.contact_pressure.push_back(p);
     std::vector<double> fr(np), fp(np), ft(np);
     for (std::size_t i = 0; i < np; ++i) {
       double t = 0, sr = 0, sp = 0;
-      for (const Harmonic& hm : hs) {
-        const double c = std::cos(hm.n * phi);
-        t += hm.tau[i] * std::sin(hm.n * phi);
-        sr += hm.sigma_r[i] * c;
-        sp += hm.sigma_phi[i] * c;
+      for (std::size_t k = 0; k < hs.size(); ++k) {
+        t += hs[k].tau[i] * sin_n[k];
+        sr += hs[k].sigma_r[i] * cos_n[k];
+        sp += hs[k].sigma_phi[i] * cos_n[k];
       }
       fr[i] = sr;
       fp[i] = sp;
@@ -649,7 +658,8 @@ Result analyse(const Ring& ring, const Options& options) {
     res.diagnostics.push_back(
         {Diagnostic::Severity::kWarning, "composite.contact_tension",
          "the half-disc pulls on the ring (negative contact pressure, value: the least, Pa) from "
-         "phi = " + std::to_string(at * 180.0 / kPi).substr(0, 5) +
+         "phi = " +
+             std::to_string(at * 180.0 / kPi).substr(0, 5) +
              " deg: eq. (2) assumes bilateral contact; --unilateral lets the ring separate there",
          pmin, 0.0});
   }
@@ -660,7 +670,8 @@ Result analyse(const Ring& ring, const Options& options) {
   res.diagnostics.push_back(
       {Diagnostic::Severity::kInfo, "composite.corner_singularity",
        "sigma_phi at (r1, pi/2), where the half-discs meet, grows without bound with the number "
-       "of harmonics; it is reported for N = " + std::to_string(N) + " only",
+       "of harmonics; it is reported for N = " +
+           std::to_string(N) + " only",
        res.corner_sigma_phi, 0.0});
   if (res.summary.fallbacks > 0)
     res.diagnostics.push_back({Diagnostic::Severity::kInfo, "composite.repeated_exponents",
