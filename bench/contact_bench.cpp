@@ -31,7 +31,9 @@ BENCHMARK(BM_HertzLineContact);
 void BM_SliceModel(benchmark::State& state) {
   const RollerTooth c = roller();
   const double skew = 42.0 * std::numbers::pi / 10800.0;
-  for (auto _ : state) benchmark::DoNotOptimize(slice_model(c, 1000.0, skew, SliceOptions{static_cast<int>(state.range(0))}));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        slice_model(c, 1000.0, skew, SliceOptions{static_cast<int>(state.range(0))}));
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_SliceModel)->Arg(51)->Arg(201)->Unit(benchmark::kMillisecond);

@@ -228,8 +228,9 @@ const std::vector<AnalysisSpec>& analysis_specs() {
        {},
        {},
        [](const ordered_json& r, io::ReportSection& s) {
-         s.charts.push_back(series_chart(r, r["series"], "Link and tooth forces over the engagement",
-                                         "gamma", {"F2", "FN"}, "force"));
+         s.charts.push_back(series_chart(r, r["series"],
+                                         "Link and tooth forces over the engagement", "gamma",
+                                         {"F2", "FN"}, "force"));
          if (r.value("hinge", std::string()) == "rolling")
            s.charts.push_back(series_chart(r, r["series"], "Roller turn ξ over the engagement",
                                            "gamma", {"xi"}, "ξ"));
@@ -246,11 +247,12 @@ const std::vector<AnalysisSpec>& analysis_specs() {
          }
        },
        {{"rolling-hinge",
-         {{"--hinge", "rolling"}, {"friction", "tooth_friction", "journal_diameter",
-                                   "tooth_diameter"}}},
+         {{"--hinge", "rolling"},
+          {"friction", "tooth_friction", "journal_diameter", "tooth_diameter"}}},
         {"sliding-hinge",
-         {{"--hinge", "sliding"}, {"pin_diameter", "half_thickness", "plate_radius",
-                                   "roller_radius", "rolling_coefficient", "tooth_arm"}}}}},
+         {{"--hinge", "sliding"},
+          {"pin_diameter", "half_thickness", "plate_radius", "roller_radius", "rolling_coefficient",
+           "tooth_arm"}}}}},
       {"warp",
        {"warp"},
        "Roller warp: the roller on four plate joints with clearance (seed 000 §1.4)",
@@ -288,11 +290,11 @@ const std::vector<AnalysisSpec>& analysis_specs() {
        {},
        [](const ordered_json& r, io::ReportSection& s) {
          if (r.contains("checks") && r["checks"].is_array()) {
-           io::ReportGrid grid{"Safety factors",
-                               {"check", "section", "stress [MPa]", "allowable [MPa]", "n",
-                                "required", "ok"},
-                               {},
-                               {}};
+           io::ReportGrid grid{
+               "Safety factors",
+               {"check", "section", "stress [MPa]", "allowable [MPa]", "n", "required", "ok"},
+               {},
+               {}};
            for (const ordered_json& c : r["checks"]) {
              grid.rows.push_back({c.value("name", std::string()), c.value("section", std::string()),
                                   format_value(c["stress"], 1e-6),
@@ -375,8 +377,11 @@ const std::vector<AnalysisSpec>& analysis_specs() {
          }
          c.traces.push_back({"tension", x, y});
          s.charts.push_back(c);
-         io::ReportGrid grid{"Segments", {"#", "name", "kind", "s start [m]", "s end [m]",
-                                          "S in [kN]", "S out [kN]", "ΔS [kN]"}, {}, {}};
+         io::ReportGrid grid{"Segments",
+                             {"#", "name", "kind", "s start [m]", "s end [m]", "S in [kN]",
+                              "S out [kN]", "ΔS [kN]"},
+                             {},
+                             {}};
          auto f = [](const ordered_json& v, double scale) {
            char b[32];
            std::snprintf(b, sizeof b, "%.5g", v.get<double>() * scale);
@@ -385,9 +390,8 @@ const std::vector<AnalysisSpec>& analysis_specs() {
          for (const ordered_json& g : r["segments"])
            grid.rows.push_back({std::to_string(g["segment"].get<int>()),
                                 g["name"].get<std::string>(), g["kind"].get<std::string>(),
-                                f(g["s_start"], 1.0), f(g["s_end"], 1.0),
-                                f(g["tension_in"], 1e-3), f(g["tension_out"], 1e-3),
-                                f(g["resistance"], 1e-3)});
+                                f(g["s_start"], 1.0), f(g["s_end"], 1.0), f(g["tension_in"], 1e-3),
+                                f(g["tension_out"], 1e-3), f(g["resistance"], 1e-3)});
          s.grids.push_back(std::move(grid));
        },
        {},
@@ -471,7 +475,7 @@ CaseRun run_case(const io::CaseFile& file) {
   };
 
   // the file's structure: top-level keys, shared tables, analyses
-  const std::vector<std::string> top = {"title", "description", "chain",   "sprocket",
+  const std::vector<std::string> top = {"title", "description", "chain",    "sprocket",
                                         "loads", "material",    "analyses", "loop"};
   for (const io::CaseValue& v : file.values) {
     const std::string head = v.path.substr(0, v.path.find('.'));
@@ -487,8 +491,7 @@ CaseRun run_case(const io::CaseFile& file) {
     if (std::find(top.begin(), top.end(), head) == top.end() && t.find('.') == std::string::npos)
       issues.push_back(
           {t, "(table)",
-           "a known table: chain, sprocket, loads, material, loop, analyses" +
-               suggest(head, top)});
+           "a known table: chain, sprocket, loads, material, loop, analyses" + suggest(head, top)});
   }
   const io::CaseValue* type = file.find("chain.type");
   std::string chain_type;
@@ -554,12 +557,11 @@ CaseRun run_case(const io::CaseFile& file) {
   };
   std::vector<Planned> planned;
   for (const std::string& name : wanted) {
-    const auto it = std::find_if(specs.begin(), specs.end(),
-                                 [&](const AnalysisSpec& s) {
-                                   // "pocketwheel" or "pocketwheel-<label>": several runs of one
-                                   // analysis, e.g. pocketwheel-free, pocketwheel-chordal
-                                   return s.name == name || name.rfind(s.name + "-", 0) == 0;
-                                 });
+    const auto it = std::find_if(specs.begin(), specs.end(), [&](const AnalysisSpec& s) {
+      // "pocketwheel" or "pocketwheel-<label>": several runs of one
+      // analysis, e.g. pocketwheel-free, pocketwheel-chordal
+      return s.name == name || name.rfind(s.name + "-", 0) == 0;
+    });
     if (it == specs.end()) {
       issues.push_back({"analyses." + name, "(table)",
                         "an analysis Catena has: pocketwheel, hinge, hinge_sweep, contact, "

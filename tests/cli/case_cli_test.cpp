@@ -76,9 +76,9 @@ TEST(CaseCli, EachExampleGivesWhatItsSubcommandGives) {
   // the paper's comparison: one analysis table per run-on ("pocketwheel-<label>")
   const auto wheel = run_json("run " + kExamples + "/003_pocket_wheel.toml");
   for (const std::string guide : {"free", "chordal", "tangential"}) {
-    const auto direct_wheel =
-        run_json("pocketwheel --pitch 64mm --wire 18mm --teeth 8 --omega 5 --guide " +
-                 std::string(guide == "free" ? "none" : guide) + " --guide-end 256mm --format json");
+    const auto direct_wheel = run_json(
+        "pocketwheel --pitch 64mm --wire 18mm --teeth 8 --omega 5 --guide " +
+        std::string(guide == "free" ? "none" : guide) + " --guide-end 256mm --format json");
     EXPECT_EQ(wheel["analyses"]["pocketwheel-" + guide], direct_wheel) << guide;
   }
   EXPECT_EQ(wheel["case_sha256"].get<std::string>().size(), 64u);
@@ -216,8 +216,9 @@ TEST(CaseCli, SharedValuesFeedEveryAnalysisThatTakesThem) {
 TEST(CaseCli, ChainTypeChoosesTheEngagementHingeAndItsSharedValues) {
   // a sliding-hinge case: [material] friction reaches the sliding engagement; the same values in
   // a rolling-hinge case would not (a rolling hinge refuses --friction on the command line)
-  const std::string path = write_case(
-      "sliding", "[chain]\ntype = \"sliding-hinge\"\npitch = \"125 mm\"\n[sprocket]\nteeth = 8\n"
+  const std::string path =
+      write_case("sliding",
+                 "[chain]\ntype = \"sliding-hinge\"\npitch = \"125 mm\"\n[sprocket]\nteeth = 8\n"
                  "strokes = 2\n[loads]\ntension = \"29.4 kN\"\n[material]\nfriction = 0.15\n"
                  "[analyses.engagement]\n");
   const auto j = run_json("run " + path);

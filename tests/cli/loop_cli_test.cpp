@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "cli_run.hpp"
 
@@ -66,7 +66,8 @@ TEST(LoopCli, JsonCarriesTheContractFieldsInSi) {
   const auto& points = j["points"];
   ASSERT_EQ(points.size(), 12u);  // start and end of 6 segments
   for (const auto& p : points)
-    for (const char* k : {"segment", "name", "kind", "s", "tension"}) EXPECT_TRUE(p.contains(k)) << k;
+    for (const char* k : {"segment", "name", "kind", "s", "tension"})
+      EXPECT_TRUE(p.contains(k)) << k;
   EXPECT_EQ(points[2]["name"], "return");
   EXPECT_EQ(points[3]["kind"], "straight");
   EXPECT_NEAR(points[3]["s"].get<double>(), 20.0, 1e-12);  // bare length: metres
@@ -185,8 +186,8 @@ kind = "drive"
 
 TEST(LoopCli, CaseFileRunsTheLoopAndNamesItsLines) {
   // a case file's loop runs through `catena run`; its errors name the case file's path and line
-  const std::string good = "[chain]\ntype = \"sliding-hinge\"\n" + kHorizontal +
-                           "\n[analyses.loop]\n";
+  const std::string good =
+      "[chain]\ntype = \"sliding-hinge\"\n" + kHorizontal + "\n[analyses.loop]\n";
   const CliRun r = run("run " + write("case.toml", good));
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);

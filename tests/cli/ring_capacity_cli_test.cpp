@@ -20,17 +20,18 @@ const std::string kDesign =
 
 std::set<std::string> flags_in(const std::string& err) {
   std::set<std::string> out;
-  for (const char* f : {"--alpha", "--sum-sigma-r", "--k-max", "--fibre-strength", "--fibre-area",
-                        "--load", "--E-phi", "--G", "--inner-radius", "--nu-phi-r", "--pitch",
-                        "--fibre-fraction", "--fibre-density", "--thickness", "--steel-mass",
-                        "--link-mass"})
+  for (const char* f :
+       {"--alpha", "--sum-sigma-r", "--k-max", "--fibre-strength", "--fibre-area", "--load",
+        "--E-phi", "--G", "--inner-radius", "--nu-phi-r", "--pitch", "--fibre-fraction",
+        "--fibre-density", "--thickness", "--steel-mass", "--link-mass"})
     if (err.find(std::string("  ") + f + " =") != std::string::npos) out.insert(f);
   return out;
 }
 
 TEST(RingCapacityCli, PaperExampleSizesTheArea) {
-  const CliRun r = run(kPaper + "--load 29700N --steel-mass 0.337kg --link-mass 0.035kg "
-                                "--format json");
+  const CliRun r = run(kPaper +
+                       "--load 29700N --steel-mass 0.337kg --link-mass 0.035kg "
+                       "--format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["mode"], "coefficients");
@@ -57,9 +58,10 @@ TEST(RingCapacityCli, GivenAreaGivesTheLoadAndTheTableSaysSo) {
 }
 
 TEST(RingCapacityCli, AnalysedModeUsesTheRingsConcentration) {
-  const CliRun r = run("ring capacity --E-r 10GPa --E-phi 40GPa --G 4GPa --nu-phi-r 0.28 "
-                       "--inner-radius 4.2mm --outer-radius 10mm --fibre-strength 2500MPa "
-                       "--fibre-area 22.7mm^2 --format json");
+  const CliRun r =
+      run("ring capacity --E-r 10GPa --E-phi 40GPa --G 4GPa --nu-phi-r 0.28 "
+          "--inner-radius 4.2mm --outer-radius 10mm --fibre-strength 2500MPa "
+          "--fibre-area 22.7mm^2 --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["mode"], "analysed");
@@ -70,21 +72,22 @@ TEST(RingCapacityCli, AnalysedModeUsesTheRingsConcentration) {
   // consistent normalisation: (9) equals 2Fσ/K
   EXPECT_NEAR(j["load"].get<double>(), j["load_concentration"].get<double>(),
               1e-9 * j["load"].get<double>());
-  EXPECT_NEAR(j["load"].get<double>(),
-              2 * 22.7e-6 * 2500e6 / j["k_max"].get<double>(), 1e-6);
+  EXPECT_NEAR(j["load"].get<double>(), 2 * 22.7e-6 * 2500e6 / j["k_max"].get<double>(), 1e-6);
   EXPECT_GT(j["k_max"].get<double>(), 1.0);
 }
 
 TEST(RingCapacityCli, EveryProblemAtOnce) {
-  const CliRun r = run("ring capacity --alpha 1.5 --k-max 0.5 --fibre-strength -3MPa "
-                       "--fibre-area 1 --load 3 --steel-mass 1");
+  const CliRun r =
+      run("ring capacity --alpha 1.5 --k-max 0.5 --fibre-strength -3MPa "
+          "--fibre-area 1 --load 3 --steel-mass 1");
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(flags_in(r.err), (std::set<std::string>{"--alpha", "--sum-sigma-r", "--k-max",
-                                                    "--fibre-strength", "--fibre-area",
-                                                    "--link-mass"}))
+  EXPECT_EQ(flags_in(r.err),
+            (std::set<std::string>{"--alpha", "--sum-sigma-r", "--k-max", "--fibre-strength",
+                                   "--fibre-area", "--link-mass"}))
       << r.err;
-  const CliRun m = run("ring capacity --alpha 0.4 --E-phi x --G 4GPa --fibre-strength 1GPa "
-                       "--fibre-area 1");
+  const CliRun m =
+      run("ring capacity --alpha 0.4 --E-phi x --G 4GPa --fibre-strength 1GPa "
+          "--fibre-area 1");
   EXPECT_EQ(m.status, 2);
   const auto f = flags_in(m.err);
   EXPECT_TRUE(f.count("--alpha") && f.count("--E-phi") && f.count("--inner-radius")) << m.err;
@@ -94,8 +97,9 @@ TEST(RingCapacityCli, EveryProblemAtOnce) {
 }
 
 TEST(RingDesignCli, JsonDesignCarriesTheContract) {
-  const CliRun r = run(kDesign + "--pitch 50mm --alpha 0.4,0.5,0.6 --steel-strength 600MPa "
-                                 "--steel-thickness 6mm --format json");
+  const CliRun r = run(kDesign +
+                       "--pitch 50mm --alpha 0.4,0.5,0.6 --steel-strength 600MPa "
+                       "--steel-thickness 6mm --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j["scan"].size(), 3u);
@@ -125,8 +129,9 @@ TEST(RingDesignCli, ShortPitchIsADiagnosticAndBadInputIsExit2) {
       EXPECT_NEAR(d["value"].get<double>(), 2e-3, 1e-15);
     }
   EXPECT_TRUE(found) << r.out;
-  const CliRun bad = run("ring design --load -1 --fibre-fraction 2 --fibre-density 3kg "
-                         "--thickness 6 --pitch 20");
+  const CliRun bad =
+      run("ring design --load -1 --fibre-fraction 2 --fibre-density 3kg "
+          "--thickness 6 --pitch 20");
   EXPECT_EQ(bad.status, 2);
   const auto f = flags_in(bad.err);
   EXPECT_TRUE(f.count("--load") && f.count("--fibre-fraction") && f.count("--fibre-density"))

@@ -100,9 +100,9 @@ TEST(RingCli, CsvAndTable) {
 }
 
 TEST(RingCli, EveryProblemAtOnceWithExitTwo) {
-  const CliRun r = run(
-      "ring --inner-radius 12mm --outer-radius 10mm --E-r=-1GPa --nu-phi-r x --gap 2kg "
-      "--harmonics 1 --nodes 40");
+  const CliRun r =
+      run("ring --inner-radius 12mm --outer-radius 10mm --E-r=-1GPa --nu-phi-r x --gap 2kg "
+          "--harmonics 1 --nodes 40");
   EXPECT_EQ(r.status, 2);
   for (const char* flag : {"--thickness", "--E-phi", "--G", "--nu-phi-r", "--gap", "--E-r",
                            "--inner-radius", "--harmonics", "--nodes"})

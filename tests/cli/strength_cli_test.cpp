@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <cmath>
 #include <nlohmann/json.hpp>
 #include <numbers>
 
@@ -19,7 +19,8 @@ const std::string kHinge =
     "--plate-yield 400MPa ";
 const std::string kSliding = kHinge + "--allowable-pressure 60MPa ";
 const std::string kRolling =
-    kHinge + "--hinge rolling --plate-radius 34mm --roller-radius 35.4mm --allowable-contact 1600MPa ";
+    kHinge +
+    "--hinge rolling --plate-radius 34mm --roller-radius 35.4mm --allowable-contact 1600MPa ";
 
 nlohmann::json run_json(const std::string& args) {
   const CliRun r = run(args + " --format json");
@@ -113,20 +114,21 @@ TEST(StrengthCli, TableAndCsv) {
   EXPECT_EQ(csv.out.rfind("layout,x,M,Q\n", 0), 0u);
   const auto j = run_json(kSliding);
   const auto rows = static_cast<std::size_t>(std::count(csv.out.begin(), csv.out.end(), '\n'));
-  EXPECT_EQ(rows, 1 + j["diagrams"]["layout_1"]["x"].size() + j["diagrams"]["layout_2"]["x"].size());
+  EXPECT_EQ(rows,
+            1 + j["diagrams"]["layout_1"]["x"].size() + j["diagrams"]["layout_2"]["x"].size());
 }
 
 TEST(StrengthCli, EveryProblemAtOnceExitTwo) {
-  const CliRun r = run(
-      "strength --heights '0, 8 mm, 48 mm, 56 mm' --widths 8mm --pin-diameter 40mm "
-      "--plate-width 30mm --hole-diameter 41mm --end-distance 10mm --tension 30kN "
-      "--tooth-force 40kN --roller-yield -3 --load-height 80mm --hinge rolling "
-      "--plate-radius 34mm --roller-radius 30mm");
+  const CliRun r =
+      run("strength --heights '0, 8 mm, 48 mm, 56 mm' --widths 8mm --pin-diameter 40mm "
+          "--plate-width 30mm --hole-diameter 41mm --end-distance 10mm --tension 30kN "
+          "--tooth-force 40kN --roller-yield -3 --load-height 80mm --hinge rolling "
+          "--plate-radius 34mm --roller-radius 30mm");
   EXPECT_EQ(r.status, 2);
   EXPECT_TRUE(r.out.empty());
-  for (const char* flag : {"--plate-yield", "--allowable-contact", "--hole-diameter",
-                           "--end-distance", "--tooth-force", "--roller-yield", "--load-height",
-                           "--roller-radius"})
+  for (const char* flag :
+       {"--plate-yield", "--allowable-contact", "--hole-diameter", "--end-distance",
+        "--tooth-force", "--roller-yield", "--load-height", "--roller-radius"})
     EXPECT_NE(r.err.find(flag), std::string::npos) << flag << "\n" << r.err;
   EXPECT_EQ(run(kSliding + "--layout 3").status, 2);
   std::string bad_unit = kSliding;

@@ -41,8 +41,9 @@ TEST(WarpCli, CsvAndTable) {
 }
 
 TEST(WarpCli, OpenJointIsADiagnosticWithItsLimit) {
-  const CliRun r = run(kWarp + "--clearances 0,0,0,1mm --force 10kN --load-height 30mm "
-                               "--format json");
+  const CliRun r = run(kWarp +
+                       "--clearances 0,0,0,1mm --force 10kN --load-height 30mm "
+                       "--format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   bool found = false;
@@ -56,8 +57,9 @@ TEST(WarpCli, OpenJointIsADiagnosticWithItsLimit) {
 
 TEST(WarpCli, ASweepReportsEachDiagnosticOnceAtItsWorstPoint) {
   // the open joint fires at every (F, L1) of the sweep: one entry, counted, at the worst point
-  const CliRun r = run(kWarp + "--clearances 0,0,0,1mm --force 5kN,10kN --load-height 28mm,30mm "
-                               "--format json");
+  const CliRun r = run(kWarp +
+                       "--clearances 0,0,0,1mm --force 5kN,10kN --load-height 28mm,30mm "
+                       "--format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   int entries = 0;
@@ -66,10 +68,10 @@ TEST(WarpCli, ASweepReportsEachDiagnosticOnceAtItsWorstPoint) {
     ++entries;
     EXPECT_EQ(d["points"].get<int>(), 4);
     // its value is the largest over the four points of the sweep
-    const CliRun one = run(kWarp + "--clearances 0,0,0,1mm --force " +
-                           std::to_string(d["force"].get<double>()) + "N --load-height " +
-                           std::to_string(d["load_height"].get<double>() * 1e3) +
-                           "mm --format json");
+    const CliRun one =
+        run(kWarp + "--clearances 0,0,0,1mm --force " + std::to_string(d["force"].get<double>()) +
+            "N --load-height " + std::to_string(d["load_height"].get<double>() * 1e3) +
+            "mm --format json");
     ASSERT_EQ(one.status, 0) << one.err;
     const auto single = nlohmann::json::parse(one.out);  // named: the loop must not outlive it
     for (const auto& e : single["diagnostics"]) {
@@ -87,9 +89,9 @@ TEST(WarpCli, InvalidInputListsEveryProblemAndExits2) {
   for (const char* flag : {"--heights", "--stiffness", "--widths", "--pin-diameter",
                            "--plate-radius", "--roller-radius", "--load-height"})
     EXPECT_NE(missing.err.find(flag), std::string::npos) << flag << "\n" << missing.err;
-  const CliRun bad = run(
-      "warp --heights 0,10mm,5mm,60mm --stiffness -1 --widths 8mm --roller-diameter 24mm "
-      "--force -3kN --load-height 90mm");
+  const CliRun bad =
+      run("warp --heights 0,10mm,5mm,60mm --stiffness -1 --widths 8mm --roller-diameter 24mm "
+          "--force -3kN --load-height 90mm");
   EXPECT_EQ(bad.status, 2);
   for (const char* what : {"F12 height", "stiffness", "force", "load"})
     EXPECT_NE(bad.err.find(what), std::string::npos) << what << "\n" << bad.err;

@@ -137,7 +137,7 @@ TEST(Eq9, RejectsEveryBadCoefficientAtOnce) {
     std::set<std::string> fields;
     for (const auto& i : e.issues()) fields.insert(i.field);
     EXPECT_EQ(fields, (std::set<std::string>{"alpha", "sum_sigma_r", "k_max", "fibre_strength",
-                                              "fibre_area"}));
+                                             "fibre_area"}));
   }
   EXPECT_THROW(area_for_load(kPaper, 0.0), InputError);
   EXPECT_THROW(consistent_sum_sigma_r(1.0), InputError);
@@ -240,9 +240,8 @@ TEST(Micromechanics, RejectsEveryBadPropertyAtOnce) {
     std::set<std::string> fields;
     for (const auto& i : e.issues()) fields.insert(i.field);
     EXPECT_EQ(fields, (std::set<std::string>{"fibre_modulus", "fibre_poisson", "fibre_strength",
-                                              "fibre_density", "matrix_modulus",
-                                              "matrix_poisson", "matrix_density",
-                                              "fibre_fraction"}));
+                                             "fibre_density", "matrix_modulus", "matrix_poisson",
+                                             "matrix_density", "fibre_fraction"}));
   }
   EXPECT_THROW(ring_lamina(kGlass, Matrix{80e9, 0.3, 1200}, 0.5), InputError);  // E_m > E_f
 }
@@ -264,8 +263,8 @@ TEST(Mass, HandDerivedStadium) {
 }
 
 TEST(Mass, RejectsBadGeometry) {
-  EXPECT_THROW(link_mass({3, 2, 1, 10, 1, 1}), InputError);  // r1 ≥ r2
-  EXPECT_THROW(link_mass({3, 4, 1, 5, 1, 1}), InputError);   // pins overlap
+  EXPECT_THROW(link_mass({3, 2, 1, 10, 1, 1}), InputError);      // r1 ≥ r2
+  EXPECT_THROW(link_mass({3, 4, 1, 5, 1, 1}), InputError);       // pins overlap
   EXPECT_THROW(steel_plate({10, 1, 2, 5, 1}, 100), InputError);  // plate wider than pitch
 }
 
@@ -311,7 +310,8 @@ TEST(Design, SizedLinkReanalysedCarriesTheLoadAtItsStrength) {
   ASSERT_TRUE(out.has_steel);
   EXPECT_GT(out.mass_ratio, 1.0);
   EXPECT_NEAR(out.mass_ratio, out.steel.mass / out.scan[out.best].mass.total, 1e-12);
-  for (const auto& dg : out.diagnostics) EXPECT_EQ(dg.code.rfind("ring.design.", 0), std::string::npos);
+  for (const auto& dg : out.diagnostics)
+    EXPECT_EQ(dg.code.rfind("ring.design.", 0), std::string::npos);
 }
 
 TEST(Design, MonotoneTrends) {
@@ -365,8 +365,9 @@ TEST(Design, PitchTooShortIsADiagnosticNotAnError) {
   d.steel_strength = 0;
   d.steel_thickness = 0;
   const Design out = design(d);
-  const auto it = std::find_if(out.diagnostics.begin(), out.diagnostics.end(),
-                               [](const auto& dg) { return dg.code == "ring.design.pitch_too_small"; });
+  const auto it = std::find_if(out.diagnostics.begin(), out.diagnostics.end(), [](const auto& dg) {
+    return dg.code == "ring.design.pitch_too_small";
+  });
   ASSERT_NE(it, out.diagnostics.end());
   EXPECT_EQ(it->severity, catena::Diagnostic::Severity::kInfeasible);
   EXPECT_GT(it->limit, it->value);
@@ -389,7 +390,7 @@ TEST(Design, RejectsEveryBadInputAtOnce) {
     std::set<std::string> fields;
     for (const auto& i : e.issues()) fields.insert(i.field);
     EXPECT_EQ(fields, (std::set<std::string>{"load", "thickness", "pitch", "fibre_strength",
-                                              "fibre_fraction", "alpha", "steel_thickness"}));
+                                             "fibre_fraction", "alpha", "steel_thickness"}));
   }
 }
 

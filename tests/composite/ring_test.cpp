@@ -148,7 +148,8 @@ TEST(RingConvergence, DefaultHarmonicsConvergeSigmaPhi) {
       double big = 0;
       for (double v : ref.sigma_phi_0) big = std::max(big, std::abs(v));
       for (std::size_t i = 0; i < ref.r.size(); ++i) {
-        EXPECT_NEAR(base.sigma_phi_0[i], ref.sigma_phi_0[i], kConvTol * std::abs(ref.sigma_phi_0[i]) + 1e-9 * big)
+        EXPECT_NEAR(base.sigma_phi_0[i], ref.sigma_phi_0[i],
+                    kConvTol * std::abs(ref.sigma_phi_0[i]) + 1e-9 * big)
             << al << " " << er << " r=" << ref.r[i];
         if (ref.r[i] >= cutoff - 1e-15) {
           EXPECT_NEAR(base.sigma_phi_90[i], ref.sigma_phi_90[i],
@@ -215,7 +216,8 @@ TEST(RingSweep, ConvergesToTheExactSolutionAtSecondOrder) {
           double e = 0;
           for (std::size_t i = 0; i < rho.size(); ++i)
             e = std::max({e, std::abs(sw.sigma_phi[i] - ex.sigma_phi[i]),
-                          std::abs(sw.sigma_r[i] - ex.sigma_r[i]), std::abs(sw.tau[i] - ex.tau[i])});
+                          std::abs(sw.sigma_r[i] - ex.sigma_r[i]),
+                          std::abs(sw.tau[i] - ex.tau[i])});
           err.push_back(e / big);
         }
         for (std::size_t k = 1; k < err.size(); ++k) {

@@ -55,13 +55,13 @@ TEST(CaseFile, ArraysAreKeptAsOneOtherValue) {
 
 TEST(CaseFile, ArraysOfTablesAreFlattenedWithIndicesAndLines) {
   const CaseFile f = parse_case(
-      "[loop]\n"                 // 1
+      "[loop]\n"               // 1
       "speed = \"0.5 m/s\"\n"  // 2
-      "[[loop.segment]]\n"       // 3
+      "[[loop.segment]]\n"     // 3
       "kind = \"takeup\"\n"    // 4
-      "[[loop.segment]]\n"       // 5
+      "[[loop.segment]]\n"     // 5
       "kind = \"straight\"\n"  // 6
-      "length = 12\n",           // 7
+      "length = 12\n",         // 7
       "loop.toml");
   ASSERT_EQ(f.values.size(), 4u);
   EXPECT_EQ(f.values[1].path, "loop.segment[0].kind");
@@ -69,8 +69,7 @@ TEST(CaseFile, ArraysOfTablesAreFlattenedWithIndicesAndLines) {
   EXPECT_EQ(f.values[3].path, "loop.segment[1].length");
   EXPECT_EQ(f.values[3].type, CaseValue::Type::kNumber);
   EXPECT_EQ(f.values[3].line, 7);
-  EXPECT_EQ(f.children("loop"),
-            (std::vector<std::string>{"segment", "segment[0]", "segment[1]"}));
+  EXPECT_EQ(f.children("loop"), (std::vector<std::string>{"segment", "segment[0]", "segment[1]"}));
   EXPECT_EQ(f.tables.front(), "loop");
 }
 

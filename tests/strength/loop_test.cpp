@@ -61,8 +61,9 @@ Segment drive(double loss = 0.0) {
 // head guide, drive.
 Loop horizontal() {
   Loop l;
-  l.segments = {takeup(1000.0), straight(20.0, 100.0, 0.0, 0.1), turn(1.05),
-                straight(20.0, 100.0, 400.0, 0.1), turn(1.02), drive(0.03)};
+  l.segments = {takeup(1000.0), straight(20.0, 100.0, 0.0, 0.1),
+                turn(1.05),     straight(20.0, 100.0, 400.0, 0.1),
+                turn(1.02),     drive(0.03)};
   l.speed = 0.5;
   l.efficiency = 0.8;
   return l;
@@ -108,14 +109,14 @@ TEST(Loop, TakeUpElsewhereSolvesBackwards) {
   // turn), S0 = 1200 N: then S_slack + 200 = 1200 → S_slack = 1000, and every tension is the
   // hand-derived one above.
   Loop l = horizontal();
-  l.segments = {straight(20.0, 100.0, 0.0, 0.1), takeup(1200.0), turn(1.05),
-                straight(20.0, 100.0, 400.0, 0.1), turn(1.02), drive(0.03)};
+  l.segments = {straight(20.0, 100.0, 0.0, 0.1),   takeup(1200.0), turn(1.05),
+                straight(20.0, 100.0, 400.0, 0.1), turn(1.02),     drive(0.03)};
   const LoopResult r = solve(l);
   EXPECT_NEAR(r.slack_tension, 1000.0, kHandTol);
   EXPECT_NEAR(r.tight_tension, 2305.2, kHandTol);
   EXPECT_NEAR(r.drive_force, 1404.356, kHandTol);
   // and after the tail turn: S_slack = (1260 − 200)/1.05 ... with S0 = 1260 at that point
-  l.segments = {straight(20.0, 100.0, 0.0, 0.1), turn(1.05), takeup(1260.0),
+  l.segments = {straight(20.0, 100.0, 0.0, 0.1),   turn(1.05), takeup(1260.0),
                 straight(20.0, 100.0, 400.0, 0.1), turn(1.02), drive(0.03)};
   EXPECT_NEAR(solve(l).slack_tension, 1000.0, kHandTol);
 }
@@ -234,8 +235,8 @@ TEST(Loop, RandomLoopsHoldTheContourInvariants) {
           expected = (s.chain_weight + s.load_weight) * s.length *
                      (s.resistance * std::cos(s.incline) + std::sin(s.incline));
         if (s.kind == SegmentKind::kTurn)
-          expected = ((s.factor ? *s.factor : std::exp(*s.friction * *s.wrap)) - 1.0) *
-                     t.tension_in;
+          expected =
+              ((s.factor ? *s.factor : std::exp(*s.friction * *s.wrap)) - 1.0) * t.tension_in;
         EXPECT_NEAR(t.tension_out - t.tension_in, expected, 1e-9 * magnitude) << trial << " " << i;
         sum += expected;
         if (s.kind == SegmentKind::kTakeup) {
@@ -441,7 +442,7 @@ TEST(Loop, DriveAndTakeUpCountsAreChecked) {
   l.segments = {takeup(100.0), drive(), straight(10.0, 100.0, 0.0, 0.1), drive()};  // two
   const auto two = issues_of(l);
   EXPECT_TRUE(names(two, "segments"));
-  EXPECT_TRUE(names(two, "segment[1].kind"));  // and the first is not last
+  EXPECT_TRUE(names(two, "segment[1].kind"));               // and the first is not last
   l.segments = {straight(10.0, 100.0, 0.0, 0.1), drive()};  // no take-up
   EXPECT_TRUE(names(issues_of(l), "segments"));
   l.segments = {};

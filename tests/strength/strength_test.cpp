@@ -63,8 +63,7 @@ TEST(Strength, SymmetricLayoutOneMomentByHand) {
   EXPECT_NEAR(e.shear, 15e3, 1e-9);
   // σ = M/W, W = π d³/32
   const Result r = assess(in);
-  EXPECT_NEAR(find(r, "roller.bending", 1).stress, 420.0 / (kPi * 0.04 * 0.04 * 0.04 / 32.0),
-              1e-3);
+  EXPECT_NEAR(find(r, "roller.bending", 1).stress, 420.0 / (kPi * 0.04 * 0.04 * 0.04 / 32.0), 1e-3);
   EXPECT_NEAR(find(r, "roller.shear", 1).stress, 4.0 / 3.0 * 15e3 / (kPi * 0.04 * 0.04 / 4.0),
               1e-3);
 }
@@ -98,8 +97,8 @@ TEST(Strength, OffCentreToothReactionsByStatics) {
     }
     EXPECT_NEAR(f, 0.0, 1e-9);
     EXPECT_NEAR(m, 0.0, 1e-9);
-    const auto [a, bb] = layout == 1 ? std::pair{kLowerInner, kUpperInner}
-                                     : std::pair{kLowerOuter, kUpperOuter};
+    const auto [a, bb] =
+        layout == 1 ? std::pair{kLowerInner, kUpperInner} : std::pair{kLowerOuter, kUpperOuter};
     EXPECT_NEAR(l.plate_force[a] + l.plate_force[bb], -in.loads.exit_tension, 1e-9);
   }
 }
@@ -309,8 +308,8 @@ TEST(Strength, PropertyRandomInputs) {
     const double glo = in.hinge.heights[1] + 0.5 * in.hinge.widths[1];
     const double ghi = in.hinge.heights[2] - 0.5 * in.hinge.widths[2];
     in.loads.tooth_width = (ghi - glo) * u(rng);
-    in.loads.load_height = glo + 0.5 * in.loads.tooth_width +
-                           (ghi - glo - in.loads.tooth_width) * u(rng);
+    in.loads.load_height =
+        glo + 0.5 * in.loads.tooth_width + (ghi - glo - in.loads.tooth_width) * u(rng);
     ASSERT_TRUE(validate(in).empty()) << trial;
     const Result r = assess(in);
     const double scale = in.loads.tension;
@@ -408,21 +407,22 @@ TEST(Strength, PlanarExtremesAgreeWithDenseSampling) {
 
 TEST(Strength, ValidateListsEveryProblem) {
   Input in = example();
-  in.hinge.hole_diameter = 0.1;        // larger than the plate width 90 mm
-  in.hinge.end_distance = 0.02;        // less than the hole radius
-  in.hinge.widths[1] = 0.02;           // the lower inner plate overlaps the lower outer one
-  in.hinge.bore = 0.05;                // larger than d
-  in.loads.exit_tension = -1.0;        // negative
-  in.loads.link_angle = 4.0;           // beyond 180°
-  in.loads.load_height = 0.05;         // not between the inner plates
+  in.hinge.hole_diameter = 0.1;  // larger than the plate width 90 mm
+  in.hinge.end_distance = 0.02;  // less than the hole radius
+  in.hinge.widths[1] = 0.02;     // the lower inner plate overlaps the lower outer one
+  in.hinge.bore = 0.05;          // larger than d
+  in.loads.exit_tension = -1.0;  // negative
+  in.loads.link_angle = 4.0;     // beyond 180°
+  in.loads.load_height = 0.05;   // not between the inner plates
   in.material.roller_yield = -1;
   in.material.allowable_pressure = 0;  // a sliding hinge needs it
   in.material.required = NAN;
   const auto issues = validate(in);
   std::set<std::string> fields;
   for (const auto& i : issues) fields.insert(i.field);
-  for (const char* f : {"hole_diameter", "end_distance", "heights", "bore", "exit_tension", "link_angle",
-                        "load_height", "roller_yield", "allowable_pressure", "safety_factor"})
+  for (const char* f :
+       {"hole_diameter", "end_distance", "heights", "bore", "exit_tension", "link_angle",
+        "load_height", "roller_yield", "allowable_pressure", "safety_factor"})
     EXPECT_TRUE(fields.count(f)) << f;
   EXPECT_THROW(assess(in), catena::InputError);
   // the tooth pushes: S2 cos θ ≤ S

@@ -54,8 +54,8 @@ TEST(CompositePaper, FortyPercentAtPhiZeroDependsOnTheReading) {
   // the maximum at φ = 0 is at the inner fibre in every case
   for (const Result* r : {&ortho, &iso_g, &iso})
     EXPECT_DOUBLE_EQ(inner(*r), *std::max_element(r->sigma_phi_0.begin(), r->sigma_phi_0.end()));
-  const double same_gap_g = inner(ortho) / inner(iso_g) - 1;      // +9.8 %
-  const double same_gap_iso = inner(ortho) / inner(iso) - 1;      // +35.5 %
+  const double same_gap_g = inner(ortho) / inner(iso_g) - 1;       // +9.8 %
+  const double same_gap_iso = inner(ortho) / inner(iso) - 1;       // +35.5 %
   const double same_load_g = inner_n(ortho) / inner_n(iso_g) - 1;  // +47.7 %
   const double same_load_iso = inner_n(ortho) / inner_n(iso) - 1;  // +92.2 %
   EXPECT_NEAR(same_gap_g, 0.098, kPinTol);
@@ -91,7 +91,8 @@ TEST(CompositePaper, CornerRatiosDependOnTruncationButKeepThePapersOrder) {
   auto corner_ratio = [](double er, bool iso_g, int n) {
     const Result thick = solve(ring(0.472, er, iso_g), n);
     const Result thin = solve(ring(0.95, er, iso_g), n);
-    return (thick.corner_sigma_phi / thick.mean_stress) / (thin.corner_sigma_phi / thin.mean_stress);
+    return (thick.corner_sigma_phi / thick.mean_stress) /
+           (thin.corner_sigma_phi / thin.mean_stress);
   };
   auto k_ratio = [](double er, bool iso_g) {
     return solve(ring(0.472, er, iso_g)).stress_concentration /
@@ -132,7 +133,7 @@ TEST(CompositePaper, ShearPeakLiesWhereThePaperPutsIt) {
     EXPECT_NEAR(phi_deg, 81.0, 2.0) << iso_g;
     const double normal = r.stress_concentration * r.mean_stress;
     const double ratio = normal / std::abs(r.max_shear);
-    EXPECT_GT(ratio, 5.0) << iso_g;   // 6.6 (G isotropic) and 11.2 (G = 0.1 E_φ)
+    EXPECT_GT(ratio, 5.0) << iso_g;  // 6.6 (G isotropic) and 11.2 (G = 0.1 E_φ)
     EXPECT_LT(ratio, 15.0) << iso_g;
     const Result converged = solve(rg);
     const double d_conv =

@@ -60,9 +60,9 @@ TEST(WarpPaper, FourPercentDeformationNeedsTheLevinaReshetovExponent) {
   for (const Warp* w : {&lin, &lr}) {
     const double mid = 0.5 * w->supports[3].height;
     const WarpResult r = solve(*w, {35e3, mid + offset_for_share(*w, 35e3, 0.07)});
-    const double ratio = (r.deformation[kF12] + r.deformation[kF22]) /
-                             (r.deformation[kF11] + r.deformation[kF21]) -
-                         1.0;
+    const double ratio =
+        (r.deformation[kF12] + r.deformation[kF22]) / (r.deformation[kF11] + r.deformation[kF21]) -
+        1.0;
     if (w->exponent == 1.0) {
       EXPECT_NEAR(ratio, 0.07, 0.005);
     } else {
@@ -79,8 +79,7 @@ TEST(WarpPaper, MeasuredDifferenceOf1_4kNIsInsideTheShareBandAt30kN) {
   const double share = 2 * 1.4 / (30 - 1.4);
   const double mid = 0.5 * w.supports[3].height;
   const WarpResult r = solve(w, {30e3, mid + offset_for_share(w, 30e3, share)});
-  const double diff =
-      r.force[kF12] + r.force[kF22] - r.force[kF11] - r.force[kF21];
+  const double diff = r.force[kF12] + r.force[kF22] - r.force[kF11] - r.force[kF21];
   EXPECT_NEAR(diff, 1.4e3, 30e3 * kShareTol);
   EXPECT_GT(share, 0.07);
   EXPECT_LT(share, 0.19);
@@ -107,11 +106,11 @@ TEST(WarpPaper, RollingVersusSlidingStressConclusion7) {
   const catena::Elastic steel{};
   const double e = catena::contact_modulus(steel, steel);
   const double q = 10e3 / 0.008;  // [N/m] an upper joint at F ≈ 35 kN
-  const double roll = catena::line_contact(q, catena::conformal_radius(0.034, 0.0354), e)
-                          .peak_pressure;
+  const double roll =
+      catena::line_contact(q, catena::conformal_radius(0.034, 0.0354), e).peak_pressure;
   const double r = 0.012, gap = 0.00067;  // sliding pin Ø24 mm in a hole 0.67 mm larger (radius)
-  const double slide = catena::line_contact(q, catena::conformal_radius(r, r + gap), e)
-                           .peak_pressure;
+  const double slide =
+      catena::line_contact(q, catena::conformal_radius(r, r + gap), e).peak_pressure;
   EXPECT_NEAR(roll / slide, 0.5, 0.05);
 }
 

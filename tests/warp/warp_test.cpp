@@ -11,10 +11,10 @@ namespace {
 
 using namespace catena::warp;
 
-constexpr double kForceTol = 1e-6;       // [N] on forces of order 10 kN (solver tol 1e-10·F)
-constexpr double kRelForceTol = 1e-7;    // [-] relative, solver vs FE / closed form
-constexpr double kRigidEi = 1e5;  // [-] factor on E: bending compliance ~3e-6 of the joints'
-constexpr double kRigidTol = 1e-4;  // [-] relative, rigid-roller limit vs closed form
+constexpr double kForceTol = 1e-6;     // [N] on forces of order 10 kN (solver tol 1e-10·F)
+constexpr double kRelForceTol = 1e-7;  // [-] relative, solver vs FE / closed form
+constexpr double kRigidEi = 1e5;       // [-] factor on E: bending compliance ~3e-6 of the joints'
+constexpr double kRigidTol = 1e-4;     // [-] relative, rigid-roller limit vs closed form
 
 Warp example() {
   Warp w;
@@ -140,8 +140,8 @@ TEST(Warp, PropertyRandomInputs) {
       s.width = 0.002 + 0.02 * u(rng);
     }
     w.exponent = 1 + 2 * u(rng);
-    for (auto& s : w.supports) s.stiffness = std::pow(10.0, 6 + 3 * u(rng)) *
-                                             std::pow(1e-5, 1 - w.exponent);
+    for (auto& s : w.supports)
+      s.stiffness = std::pow(10.0, 6 + 3 * u(rng)) * std::pow(1e-5, 1 - w.exponent);
     w.roller_diameter = 0.005 + 0.04 * u(rng);
     const Load load{100 + 1e5 * u(rng),
                     w.supports[0].height + u(rng) * (w.supports[3].height - w.supports[0].height)};

@@ -91,12 +91,12 @@ Lamina ring_lamina(const Fibre& f, const Matrix& m, double fibre_fraction);
 /// The link: a wound band of cross-section (r2 − r1)·t around a stadium (two pins of radius r1,
 /// centres `pitch` apart), filled between the pins by a polyamide insert of thickness t.
 struct LinkGeometry {
-  double inner_radius = 0.0;       ///< [m] r1 (pin)
-  double outer_radius = 0.0;       ///< [m] r2
-  double thickness = 0.0;          ///< [m] t (band width)
-  double pitch = 0.0;              ///< [m] p, pin centre distance, p > 2 r1
-  double band_density = 0.0;       ///< [kg/m³] composite
-  double insert_density = 0.0;     ///< [kg/m³] polyamide
+  double inner_radius = 0.0;    ///< [m] r1 (pin)
+  double outer_radius = 0.0;    ///< [m] r2
+  double thickness = 0.0;       ///< [m] t (band width)
+  double pitch = 0.0;           ///< [m] p, pin centre distance, p > 2 r1
+  double band_density = 0.0;    ///< [kg/m³] composite
+  double insert_density = 0.0;  ///< [kg/m³] polyamide
 };
 
 struct LinkMass {
@@ -140,27 +140,27 @@ struct DesignInput {
   double load = 0.0;  ///< [N] required breaking force P
   Fibre fibre;
   Matrix matrix;
-  double fibre_fraction = 0.0;  ///< [-] V_f
-  double thickness = 0.0;       ///< [m] t, band width: given; r2 follows
-  double pitch = 0.0;           ///< [m] p
+  double fibre_fraction = 0.0;     ///< [-] V_f
+  double thickness = 0.0;          ///< [m] t, band width: given; r2 follows
+  double pitch = 0.0;              ///< [m] p
   double insert_density = 1130.0;  ///< [kg/m³] PA6
-  std::vector<double> alphas;   ///< r1/r2 to try; empty: 0.30, 0.35, …, 0.90
-  double steel_strength = 0.0;  ///< [Pa]; 0: no steel comparison
-  double steel_thickness = 0.0; ///< [m]
+  std::vector<double> alphas;      ///< r1/r2 to try; empty: 0.30, 0.35, …, 0.90
+  double steel_strength = 0.0;     ///< [Pa]; 0: no steel comparison
+  double steel_thickness = 0.0;    ///< [m]
   double steel_density = 7850.0;
-  Options analysis;             ///< ring solver options (exact method)
+  Options analysis;  ///< ring solver options (exact method)
 };
 
 struct DesignPoint {
   double alpha = 0.0;
-  double k = 0.0;              ///< stress concentration (ring.hpp Result)
-  double sum_sigma_r = 0.0;    ///< ring.hpp normalisation: (1 − α)/α
-  double leg_area = 0.0;       ///< [m²] A = PK/(2σ_c)
-  double fibre_area = 0.0;     ///< [m²] V_f A (F of eq. (9))
-  double inner_radius = 0.0;   ///< [m] r1
-  double outer_radius = 0.0;   ///< [m] r2 = A/((1 − α)t)
+  double k = 0.0;             ///< stress concentration (ring.hpp Result)
+  double sum_sigma_r = 0.0;   ///< ring.hpp normalisation: (1 − α)/α
+  double leg_area = 0.0;      ///< [m²] A = PK/(2σ_c)
+  double fibre_area = 0.0;    ///< [m²] V_f A (F of eq. (9))
+  double inner_radius = 0.0;  ///< [m] r1
+  double outer_radius = 0.0;  ///< [m] r2 = A/((1 − α)t)
   LinkMass mass;
-  bool feasible = true;        ///< p > 2 r1: the pins clear each other, the insert exists
+  bool feasible = true;  ///< p > 2 r1: the pins clear each other, the insert exists
 };
 
 struct Design {
@@ -169,7 +169,7 @@ struct Design {
   std::size_t best = 0;  ///< index into scan: the feasible point of least mass
   bool has_steel = false;
   SteelPlateResult steel;
-  double mass_ratio = 0.0;  ///< steel / composite (0 without steel)
+  double mass_ratio = 0.0;              ///< steel / composite (0 without steel)
   std::vector<Diagnostic> diagnostics;  ///< the chosen α's ring analysis, then the design's
 };
 

@@ -16,15 +16,15 @@ namespace catena::io {
 
 /// What a value measures; decides the accepted units and the default unit of a bare number.
 enum class QuantityKind {
-  kLength,        ///< SI m; bare number: mm
-  kAngle,         ///< SI rad; bare number: degree
-  kAngularSpeed,  ///< SI rad/s; bare number: 1/s (= rad/s); rpm accepted, Hz rejected
-  kForce,         ///< SI N; bare number: N
-  kStress,        ///< SI Pa; bare number: MPa
-  kMass,          ///< SI kg; bare number: kg
-  kTime,          ///< SI s; bare number: s
-  kFrequency,     ///< SI 1/s (cycles per second); bare number: Hz
-  kSpeed,         ///< SI m/s; bare number: m/s
+  kLength,          ///< SI m; bare number: mm
+  kAngle,           ///< SI rad; bare number: degree
+  kAngularSpeed,    ///< SI rad/s; bare number: 1/s (= rad/s); rpm accepted, Hz rejected
+  kForce,           ///< SI N; bare number: N
+  kStress,          ///< SI Pa; bare number: MPa
+  kMass,            ///< SI kg; bare number: kg
+  kTime,            ///< SI s; bare number: s
+  kFrequency,       ///< SI 1/s (cycles per second); bare number: Hz
+  kSpeed,           ///< SI m/s; bare number: m/s
   kForcePerLength,  ///< SI N/m (a weight per metre of a conveyor run); bare number: N/m;
                     ///< a mass per metre (kg/m) is rejected with a hint to write kgf/m
 };

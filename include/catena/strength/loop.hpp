@@ -54,10 +54,10 @@ struct Segment {
 };
 
 struct Loop {
-  std::vector<Segment> segments;  ///< travel order, from the drive's slack side; the drive last
-  double speed = 0.0;             ///< [m/s] chain speed v (> 0)
-  double efficiency = 1.0;        ///< [-] η of the drive train (0 < η ≤ 1)
-  std::optional<double> min_tension;        ///< [N] a diagnostic fires below it (≥ 0)
+  std::vector<Segment> segments;      ///< travel order, from the drive's slack side; the drive last
+  double speed = 0.0;                 ///< [m/s] chain speed v (> 0)
+  double efficiency = 1.0;            ///< [-] η of the drive train (0 < η ≤ 1)
+  std::optional<double> min_tension;  ///< [N] a diagnostic fires below it (≥ 0)
   std::optional<double> allowable_tension;  ///< [N] breaking force / safety factor (> 0)
 };
 
@@ -73,29 +73,29 @@ struct Affine {
 Affine affine(const Segment& segment);
 
 struct SegmentTension {
-  double s_start = 0.0;     ///< [m] path length from the drive's slack side at the segment start
-  double s_end = 0.0;       ///< [m] … at its end (turns, take-up and drive have no length)
-  double tension_in = 0.0;  ///< [N] S at the start
-  double tension_out = 0.0; ///< [N] S at the end (for the drive: S_slack, the loop's start)
-  double resistance = 0.0;  ///< [N] S_out − S_in (for the drive: the force it supplies, −F)
+  double s_start = 0.0;      ///< [m] path length from the drive's slack side at the segment start
+  double s_end = 0.0;        ///< [m] … at its end (turns, take-up and drive have no length)
+  double tension_in = 0.0;   ///< [N] S at the start
+  double tension_out = 0.0;  ///< [N] S at the end (for the drive: S_slack, the loop's start)
+  double resistance = 0.0;   ///< [N] S_out − S_in (for the drive: the force it supplies, −F)
 };
 
 struct Extremum {
-  double tension = 0.0;      ///< [N]
-  std::size_t segment = 0;   ///< index of the segment
-  bool at_end = false;       ///< at the segment's end (else its start)
-  double s = 0.0;            ///< [m] path length
+  double tension = 0.0;     ///< [N]
+  std::size_t segment = 0;  ///< index of the segment
+  bool at_end = false;      ///< at the segment's end (else its start)
+  double s = 0.0;           ///< [m] path length
 };
 
 struct LoopResult {
   std::vector<SegmentTension> segments;  ///< one per input segment
-  double slack_tension = 0.0;  ///< [N] S leaving the drive sprocket (start of the walk)
-  double tight_tension = 0.0;  ///< [N] S arriving at the drive sprocket
-  double drive_force = 0.0;    ///< [N] peripheral force F = S_t − S_s + ξ(S_t + S_s)
-  double power = 0.0;          ///< [W] F·v/η (F ≥ 0); F·v·η when the drive brakes (F < 0)
-  double length = 0.0;         ///< [m] path length of the loop
-  Extremum max;                ///< greatest tension over the points
-  Extremum min;                ///< least tension over the points
+  double slack_tension = 0.0;            ///< [N] S leaving the drive sprocket (start of the walk)
+  double tight_tension = 0.0;            ///< [N] S arriving at the drive sprocket
+  double drive_force = 0.0;              ///< [N] peripheral force F = S_t − S_s + ξ(S_t + S_s)
+  double power = 0.0;   ///< [W] F·v/η (F ≥ 0); F·v·η when the drive brakes (F < 0)
+  double length = 0.0;  ///< [m] path length of the loop
+  Extremum max;         ///< greatest tension over the points
+  Extremum min;         ///< least tension over the points
   std::vector<Diagnostic> diagnostics;
 };
 

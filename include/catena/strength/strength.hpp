@@ -33,17 +33,17 @@ enum class HingeKind { kSliding, kRolling };
 enum Plate : int { kLowerOuter = 0, kLowerInner = 1, kUpperInner = 2, kUpperOuter = 3 };
 
 struct Hinge {
-  std::array<double, 4> heights{};  ///< [m] plate mid-plane z, strictly increasing
-  std::array<double, 4> widths{};   ///< [m] plate thickness B_i (= s of the plate checks)
-  double pin_diameter = 0.0;        ///< [m] d of the roller's bending section
-  double bore = 0.0;                ///< [m] inner diameter of a hollow roller (0: solid)
-  double hole_diameter = 0.0;       ///< [m] d_h of the plate's hole/aperture (0: = d)
-  double plate_width = 0.0;         ///< [m] b, the plate's depth across the chain line
-  double end_distance = 0.0;        ///< [m] e, from the hole centre to the plate's end
+  std::array<double, 4> heights{};    ///< [m] plate mid-plane z, strictly increasing
+  std::array<double, 4> widths{};     ///< [m] plate thickness B_i (= s of the plate checks)
+  double pin_diameter = 0.0;          ///< [m] d of the roller's bending section
+  double bore = 0.0;                  ///< [m] inner diameter of a hollow roller (0: solid)
+  double hole_diameter = 0.0;         ///< [m] d_h of the plate's hole/aperture (0: = d)
+  double plate_width = 0.0;           ///< [m] b, the plate's depth across the chain line
+  double end_distance = 0.0;          ///< [m] e, from the hole centre to the plate's end
   double stress_concentration = 1.0;  ///< [-] K_t on the net section (1: nominal stress)
   HingeKind kind = HingeKind::kSliding;
   double contact_angle = 3.141592653589793;  ///< [rad] γ of the sliding pin's contact arc
-  double r1 = 0.0;         ///< [m] rolling hinge: plate convex working radius R1
+  double r1 = 0.0;                           ///< [m] rolling hinge: plate convex working radius R1
   double r2 = 0.0;         ///< [m] rolling hinge: roller concave working radius R2 > R1
   double modulus = 210e9;  ///< [Pa] E of roller and plates (Hertz)
   double poisson = 0.3;    ///< [-] ν
@@ -52,9 +52,9 @@ struct Hinge {
 struct Loads {
   double tension = 0.0;       ///< [N] S, the free link's tension (along +x)
   double exit_tension = 0.0;  ///< [N] S2 ≥ 0, the seated link's tension (0: all onto the tooth)
-  double link_angle = 0.0;    ///< [rad] θ between the two links' lines, 0 ≤ θ < π (0: collinear)
-  double load_height = 0.0;   ///< [m] L1, centre of the tooth load (same datum as the heights)
-  double tooth_width = 0.0;   ///< [m] width of the tooth load along z (0: a point load)
+  double link_angle = 0.0;  ///< [rad] θ between the two links' lines, 0 ≤ θ < π (0: collinear)
+  double load_height = 0.0;  ///< [m] L1, centre of the tooth load (same datum as the heights)
+  double tooth_width = 0.0;  ///< [m] width of the tooth load along z (0: a point load)
 };
 
 /// [N] (x, y) of the tooth's force on the roller, which balances the free link's pull S·x̂ and the
@@ -116,7 +116,7 @@ double shear(const Beam& b, double z, bool above = false);
 double moment(const Beam& b, double z);
 
 struct Diagram {
-  std::vector<double> x, moment, shear;  ///< [m], [N·m], [N]; x repeated at a point load
+  std::vector<double> x, moment, shear;   ///< [m], [N·m], [N]; x repeated at a point load
   std::vector<double> moment_y, shear_y;  ///< the y components (filled by the two-beam form)
 };
 /// Samples every block boundary and `per_block` interior points of every distributed block.
@@ -142,11 +142,11 @@ double projection(double radius, double angle);
 double shear_factor(double outer, double inner);
 
 struct Check {
-  std::string name;     ///< e.g. "roller.bending"
-  std::string section;  ///< where: layout, plate, height
-  double stress = 0.0;     ///< [Pa]
-  double allowable = 0.0;  ///< [Pa] the strength or allowable stress it is compared with
-  double required = 0.0;   ///< [-] the safety factor it must reach
+  std::string name;            ///< e.g. "roller.bending"
+  std::string section;         ///< where: layout, plate, height
+  double stress = 0.0;         ///< [Pa]
+  double allowable = 0.0;      ///< [Pa] the strength or allowable stress it is compared with
+  double required = 0.0;       ///< [-] the safety factor it must reach
   double safety_factor = 0.0;  ///< [-] allowable/stress (∞ for zero stress)
   bool ok = true;
 };
@@ -154,16 +154,16 @@ struct Check {
 struct Contact {
   int layout = 1;
   int plate = 0;
-  double force = 0.0;   ///< [N] |N| of the most loaded plate–roller contact
-  double width = 0.0;   ///< [m] B of that plate
-  double radius = 0.0;  ///< [m] r of eq. (22): d/2 (sliding) or R1 (rolling)
-  double angle = 0.0;   ///< [rad] γ of the contact arc
-  double c = 0.0;       ///< [m] eq. (22)
-  double area = 0.0;    ///< [m²] A = c·B
-  double p = 0.0;       ///< [Pa] eq. (23) p = N/A (rolling: the mean Hertz pressure)
-  bool hertz = false;   ///< rolling hinge: the Hertz fields below are set
-  double peak = 0.0;        ///< [Pa] Hertz p0
-  double half_width = 0.0;  ///< [m] Hertz b
+  double force = 0.0;             ///< [N] |N| of the most loaded plate–roller contact
+  double width = 0.0;             ///< [m] B of that plate
+  double radius = 0.0;            ///< [m] r of eq. (22): d/2 (sliding) or R1 (rolling)
+  double angle = 0.0;             ///< [rad] γ of the contact arc
+  double c = 0.0;                 ///< [m] eq. (22)
+  double area = 0.0;              ///< [m²] A = c·B
+  double p = 0.0;                 ///< [Pa] eq. (23) p = N/A (rolling: the mean Hertz pressure)
+  bool hertz = false;             ///< rolling hinge: the Hertz fields below are set
+  double peak = 0.0;              ///< [Pa] Hertz p0
+  double half_width = 0.0;        ///< [m] Hertz b
   double effective_radius = 0.0;  ///< [m] R* = R1 R2/(R2 − R1)
 };
 

@@ -61,19 +61,19 @@ struct SolverSummary {
 };
 
 struct WarpResult {
-  std::array<double, 4> force{};        ///< [N] R_i ≥ 0 (F21, F11, F12, F22)
-  std::array<double, 4> deflection{};   ///< [m] w(z_i), roller axis displacement at the joint
-  std::array<double, 4> deformation{};  ///< [m] contact approach δ_i = max(0, w_i − c_i)
-  std::array<double, 4> moment{};       ///< [N·m] bending moment in the roller at z_i
+  std::array<double, 4> force{};           ///< [N] R_i ≥ 0 (F21, F11, F12, F22)
+  std::array<double, 4> deflection{};      ///< [m] w(z_i), roller axis displacement at the joint
+  std::array<double, 4> deformation{};     ///< [m] contact approach δ_i = max(0, w_i − c_i)
+  std::array<double, 4> moment{};          ///< [N·m] bending moment in the roller at z_i
   std::array<double, 4> contact_stress{};  ///< [Pa] sliding: p = R/(d·B); rolling: Hertz p0
-  double offset = 0.0;           ///< [m] a: rigid translation at z = 0
-  double rotation = 0.0;         ///< [rad] b: rigid rotation (w = a + b z + bending)
-  double tilt = 0.0;             ///< [rad] γ: chord slope between the outer joints
-  double moment_max = 0.0;       ///< [N·m] max |M| along the roller
-  double bending_stress = 0.0;   ///< [Pa] σ_b = M_max·(d/2)/I
-  double upper_share = 0.0;      ///< [-] (F12 + F22)/(F11 + F21) − 1
-  double force_residual = 0.0;   ///< [N] |F − ΣR|
-  double moment_residual = 0.0;  ///< [N·m] |F·L1 − ΣR z|
+  double offset = 0.0;                     ///< [m] a: rigid translation at z = 0
+  double rotation = 0.0;                   ///< [rad] b: rigid rotation (w = a + b z + bending)
+  double tilt = 0.0;                       ///< [rad] γ: chord slope between the outer joints
+  double moment_max = 0.0;                 ///< [N·m] max |M| along the roller
+  double bending_stress = 0.0;             ///< [Pa] σ_b = M_max·(d/2)/I
+  double upper_share = 0.0;                ///< [-] (F12 + F22)/(F11 + F21) − 1
+  double force_residual = 0.0;             ///< [N] |F − ΣR|
+  double moment_residual = 0.0;            ///< [N·m] |F·L1 − ΣR z|
   SolverSummary summary;
   std::vector<Diagnostic> diagnostics;
 };

@@ -117,9 +117,9 @@ std::vector<Issue> validate(const Fibre& f, const Matrix& m, double vf) {
   check::finite_positive(out, "matrix_density", m.density, "kg/m^3");
   if (std::isfinite(f.modulus) && std::isfinite(m.modulus) && f.modulus > 0 && m.modulus > 0 &&
       !(m.modulus < f.modulus))
-    out.push_back({"matrix_modulus", check::format_si(m.modulus, "Pa"),
-                   "E_m < E_f = " + check::format_si(f.modulus, "Pa") +
-                       " (the fibre is the stiff phase)"});
+    out.push_back(
+        {"matrix_modulus", check::format_si(m.modulus, "Pa"),
+         "E_m < E_f = " + check::format_si(f.modulus, "Pa") + " (the fibre is the stiff phase)"});
   if (!std::isfinite(vf) || vf < 0.0 || vf > 0.9069)
     out.push_back({"fibre_fraction", check::format_si(vf, ""),
                    "0 ≤ V_f ≤ 0.9069 (hexagonal packing of round fibres, π/(2√3))"});
@@ -200,8 +200,8 @@ SteelPlateResult steel_plate(const SteelPlate& s, double load) {
                           " (the plate outline must be a stadium)"});
     throw_if_any(issues);
   }
-  r.face_area = r.width * s.pitch + kPi * r.width * r.width / 4.0 -
-                2.0 * kPi * s.hole_radius * s.hole_radius;
+  r.face_area =
+      r.width * s.pitch + kPi * r.width * r.width / 4.0 - 2.0 * kPi * s.hole_radius * s.hole_radius;
   r.mass = s.density * s.thickness * r.face_area;
   return r;
 }
@@ -257,8 +257,8 @@ Design design(const DesignInput& d) {
     p.inner_radius = p.alpha * p.outer_radius;
     p.feasible = d.pitch > 2.0 * p.inner_radius;
     if (p.feasible) {
-      p.mass = link_mass({p.inner_radius, p.outer_radius, d.thickness, d.pitch, l.density,
-                          d.insert_density});
+      p.mass = link_mass(
+          {p.inner_radius, p.outer_radius, d.thickness, d.pitch, l.density, d.insert_density});
       if (p.mass.total < best_mass) {
         best_mass = p.mass.total;
         out.best = i;
@@ -290,13 +290,11 @@ Design design(const DesignInput& d) {
   }
   if (d.steel_strength > 0.0) {
     const DesignPoint& p = out.scan[out.best];
-    const double width =
-        2.0 * p.inner_radius + d.load / (d.steel_strength * d.steel_thickness);
+    const double width = 2.0 * p.inner_radius + d.load / (d.steel_strength * d.steel_thickness);
     if (d.pitch > width) {
       out.has_steel = true;
       out.steel = steel_plate(
-          {d.steel_strength, d.steel_thickness, d.steel_density, d.pitch, p.inner_radius},
-          d.load);
+          {d.steel_strength, d.steel_thickness, d.steel_density, d.pitch, p.inner_radius}, d.load);
       out.mass_ratio = out.steel.mass / p.mass.total;
     } else {
       out.diagnostics.push_back(

@@ -188,10 +188,11 @@ Result solve_sliding(const SlidingInput& in) {
                              in.friction, std::tan(epsilon_at(a, a.gamma_sigma))});
   }
   if (lift) {
-    r.diagnostics.push_back({Diagnostic::Severity::kInfeasible, "engagement.tooth_lift_off",
-                             "N < 0 somewhere: the roller would leave the tooth (value: the least N; "
-                             "limit: 0)",
-                             min_fn, 0.0});
+    r.diagnostics.push_back(
+        {Diagnostic::Severity::kInfeasible, "engagement.tooth_lift_off",
+         "N < 0 somewhere: the roller would leave the tooth (value: the least N; "
+         "limit: 0)",
+         min_fn, 0.0});
   }
   return r;
 }
@@ -367,10 +368,11 @@ Result solve_rolling(const RollingInput& in) {
                              "no roller turn xi balances the moments of (28) at some gamma", 0, 0});
   }
   if (lift) {
-    r.diagnostics.push_back({Diagnostic::Severity::kInfeasible, "engagement.tooth_lift_off",
-                             "F_N < 0 somewhere: the roller would leave the tooth (value: the least "
-                             "F_N; limit: 0)",
-                             min_fn, 0.0});
+    r.diagnostics.push_back(
+        {Diagnostic::Severity::kInfeasible, "engagement.tooth_lift_off",
+         "F_N < 0 somewhere: the roller would leave the tooth (value: the least "
+         "F_N; limit: 0)",
+         min_fn, 0.0});
   }
   if (senses) {
     r.diagnostics.push_back({Diagnostic::Severity::kWarning, "engagement.rolling_sense",

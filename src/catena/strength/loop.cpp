@@ -9,11 +9,11 @@ namespace catena::strength {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kMaxFactor = 10.0;      // [-] k: a turn that multiplies by > 10 is a typo
-constexpr double kMaxWrap = 2.0 * kPi;   // [rad] α: one full wrap
-constexpr double kMaxFriction = 1.0;     // [-] f
-constexpr double kMaxResistance = 1.0;   // [-] w
-constexpr double kMaxLoss = 0.5;         // [-] ξ
+constexpr double kMaxFactor = 10.0;     // [-] k: a turn that multiplies by > 10 is a typo
+constexpr double kMaxWrap = 2.0 * kPi;  // [rad] α: one full wrap
+constexpr double kMaxFriction = 1.0;    // [-] f
+constexpr double kMaxResistance = 1.0;  // [-] w
+constexpr double kMaxLoss = 0.5;        // [-] ξ
 
 std::string g(double v) {
   char b[48];
@@ -27,8 +27,8 @@ std::string field(std::size_t i, const char* name) {
 
 // value within [lo, hi] (and finite); appends an Issue otherwise (the strings are built only
 // then: validation runs on every solve)
-void in_range(std::vector<Issue>& out, const std::string& name, double value, double lo,
-              double hi, const char* unit, const char* expected) {
+void in_range(std::vector<Issue>& out, const std::string& name, double value, double lo, double hi,
+              const char* unit, const char* expected) {
   if (!std::isfinite(value) || value < lo || value > hi)
     out.push_back({name, check::format_si(value, unit), expected});
 }
@@ -102,8 +102,7 @@ std::vector<Issue> validate(const Loop& loop) {
           if (!s.friction)
             out.push_back({field(i, "friction"), "(missing)", "a friction factor f with α"});
           if (s.wrap)
-            in_range(out, i, "wrap", *s.wrap, 0.0, kMaxWrap, "rad",
-                     "a wrap angle α in [0°, 360°]");
+            in_range(out, i, "wrap", *s.wrap, 0.0, kMaxWrap, "rad", "a wrap angle α in [0°, 360°]");
           if (s.friction)
             in_range(out, i, "friction", *s.friction, 0.0, kMaxFriction, "",
                      "a friction factor f in [0, 1]");
@@ -137,7 +136,8 @@ std::vector<Issue> validate(const Loop& loop) {
                    "exactly one segment of kind takeup (its pretension fixes the loop's tension "
                    "level)"});
   if (!(std::isfinite(loop.speed) && loop.speed > 0.0 && loop.speed <= 100.0))
-    out.push_back({"speed", check::format_si(loop.speed, "m/s"), "a chain speed v in (0, 100] m/s"});
+    out.push_back(
+        {"speed", check::format_si(loop.speed, "m/s"), "a chain speed v in (0, 100] m/s"});
   if (!(loop.efficiency > 0.0 && loop.efficiency <= 1.0))
     out.push_back({"efficiency", g(loop.efficiency), "a drive efficiency η in (0, 1]"});
   if (loop.min_tension)
@@ -242,19 +242,18 @@ LoopResult solve(const Loop& loop) {
              g(-r.min.tension) + " N or move the take-up to that point",
          r.min.tension, 0.0});
   } else if (loop.min_tension && r.min.tension < *loop.min_tension) {
-    r.diagnostics.push_back(
-        {Diagnostic::Severity::kWarning, "loop.below_min_tension",
-         "the tension falls to " + g(r.min.tension) + " N at " + at(r.min) +
-             ", below the least allowed " + g(*loop.min_tension) + " N (min_tension)",
-         r.min.tension, *loop.min_tension});
+    r.diagnostics.push_back({Diagnostic::Severity::kWarning, "loop.below_min_tension",
+                             "the tension falls to " + g(r.min.tension) + " N at " + at(r.min) +
+                                 ", below the least allowed " + g(*loop.min_tension) +
+                                 " N (min_tension)",
+                             r.min.tension, *loop.min_tension});
   }
   if (loop.allowable_tension && r.max.tension > *loop.allowable_tension) {
-    r.diagnostics.push_back(
-        {Diagnostic::Severity::kInfeasible, "loop.over_allowable_tension",
-         "the greatest tension " + g(r.max.tension) + " N at " + at(r.max) +
-             " exceeds the allowable " + g(*loop.allowable_tension) +
-             " N (allowable_tension: breaking force / safety factor)",
-         r.max.tension, *loop.allowable_tension});
+    r.diagnostics.push_back({Diagnostic::Severity::kInfeasible, "loop.over_allowable_tension",
+                             "the greatest tension " + g(r.max.tension) + " N at " + at(r.max) +
+                                 " exceeds the allowable " + g(*loop.allowable_tension) +
+                                 " N (allowable_tension: breaking force / safety factor)",
+                             r.max.tension, *loop.allowable_tension});
   }
   if (r.drive_force < 0.0) {
     r.diagnostics.push_back(

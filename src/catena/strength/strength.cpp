@@ -27,7 +27,9 @@ std::string mm(double v) { return fmt("%.4g mm", v * 1e3); }
 
 bool point(const Block& b) { return b.end == b.begin; }
 
-double section_modulus(double d, double di) { return kPi * (d * d * d * d - di * di * di * di) / (32.0 * d); }
+double section_modulus(double d, double di) {
+  return kPi * (d * d * d * d - di * di * di * di) / (32.0 * d);
+}
 double section_area(double d, double di) { return kPi * (d * d - di * di) / 4.0; }
 
 double hole_of(const Hinge& h) { return h.hole_diameter > 0.0 ? h.hole_diameter : h.pin_diameter; }
@@ -63,8 +65,8 @@ std::vector<Issue> validate(const Input& in) {
   check::finite_positive(out, "pin_diameter", h.pin_diameter, "m");
   if (!(h.bore >= 0.0 && std::isfinite(h.bore)) ||
       (std::isfinite(h.pin_diameter) && h.pin_diameter > 0 && !(h.bore < h.pin_diameter)))
-    out.push_back({"bore", check::format_si(h.bore, "m"),
-                   "0 ≤ bore < pin diameter (0: a solid roller)"});
+    out.push_back(
+        {"bore", check::format_si(h.bore, "m"), "0 ≤ bore < pin diameter (0: a solid roller)"});
   if (!(h.hole_diameter >= 0.0 && std::isfinite(h.hole_diameter)))
     out.push_back({"hole_diameter", check::format_si(h.hole_diameter, "m"),
                    "a length > 0 m (0 or omitted: the pin diameter)"});
@@ -74,8 +76,8 @@ std::vector<Issue> validate(const Input& in) {
   if (std::isfinite(dh) && dh > 0 && std::isfinite(h.plate_width) && h.plate_width > 0 &&
       !(dh < h.plate_width))
     out.push_back({"hole_diameter", check::format_si(dh, "m"),
-                   "a hole smaller than the plate width b = " + check::format_si(h.plate_width, "m") +
-                       " (else no net section is left)"});
+                   "a hole smaller than the plate width b = " +
+                       check::format_si(h.plate_width, "m") + " (else no net section is left)"});
   if (std::isfinite(dh) && dh > 0 && std::isfinite(h.end_distance) && h.end_distance > 0 &&
       !(h.end_distance > 0.5 * dh))
     out.push_back({"end_distance", check::format_si(h.end_distance, "m"),
@@ -150,8 +152,10 @@ LayoutLoads layout_loads(const Input& in, int layout) {
   LayoutLoads out;
   out.layout = layout;
   // layout 1: the inner link is seated, S enters through the outer plates; layout 2: swapped
-  const int p = layout == 1 ? kLowerOuter : kLowerInner, q = layout == 1 ? kUpperOuter : kUpperInner;
-  const int a = layout == 1 ? kLowerInner : kLowerOuter, b = layout == 1 ? kUpperInner : kUpperOuter;
+  const int p = layout == 1 ? kLowerOuter : kLowerInner,
+            q = layout == 1 ? kUpperOuter : kUpperInner;
+  const int a = layout == 1 ? kLowerInner : kLowerOuter,
+            b = layout == 1 ? kUpperInner : kUpperOuter;
   const auto z = [&](int i) { return h.heights[static_cast<std::size_t>(i)]; };
   const auto at = [](std::array<double, 4>& f, int i) -> double& {
     return f[static_cast<std::size_t>(i)];
@@ -381,13 +385,14 @@ Result assess(const Input& in) {
     r.checks.push_back(make_check("roller.bending",
                                   where + ", z = " + mm(lr.extremes.moment_at) + ": σ = M/W",
                                   lr.extremes.moment / w, mat.roller_yield, mat.required));
-    r.checks.push_back(make_check("roller.shear",
-                                  where + ", z = " + mm(lr.extremes.shear_at) +
-                                      ": τ = " + fmt("%.4g", kq) + "·Q/A vs σ_y/√3",
-                                  kq * lr.extremes.shear / area, shear_yield, mat.required));
+    r.checks.push_back(make_check(
+        "roller.shear",
+        where + ", z = " + mm(lr.extremes.shear_at) + ": τ = " + fmt("%.4g", kq) + "·Q/A vs σ_y/√3",
+        kq * lr.extremes.shear / area, shear_yield, mat.required));
     // a seated plate is expected to pull along the seated link, û = (−cos θ, sin θ)
     const double ux = -std::cos(in.loads.link_angle), uy = std::sin(in.loads.link_angle);
-    for (int i : {layout == 1 ? kLowerInner : kLowerOuter, layout == 1 ? kUpperInner : kUpperOuter}) {
+    for (int i :
+         {layout == 1 ? kLowerInner : kLowerOuter, layout == 1 ? kUpperInner : kUpperOuter}) {
       const auto k = static_cast<std::size_t>(i);
       const double along = lr.loads.plate_force[k] * ux + lr.loads.plate_force_y[k] * uy;
       if (along < -1e-9 * in.loads.tension)
@@ -421,15 +426,17 @@ Result assess(const Input& in) {
     }
     const double s = h.widths[i];
     const std::string where = std::string(kPlateName[i]) + ", layout " + std::to_string(at);
-    const Check t = make_check("plate.tension", where + ": net section (b − d_h)·s, K_t = " +
-                                                    fmt("%g", h.stress_concentration),
-                               h.stress_concentration * f / (net * s), mat.plate_yield, mat.required);
-    const Check u = make_check("plate.tension_ultimate", t.section,
-                               t.stress, mat.plate_ultimate, mat.required);
-    const Check so = make_check("plate.shear_out", where + ": two planes (e − d_h/2)·s vs σ_y/√3",
-                                f / (2.0 * end * s), mat.plate_yield / std::sqrt(3.0), mat.required);
-    const Check br = make_check("plate.bearing", where + ": d_h·s", f / (dh * s), mat.plate_yield,
-                                mat.required);
+    const Check t =
+        make_check("plate.tension",
+                   where + ": net section (b − d_h)·s, K_t = " + fmt("%g", h.stress_concentration),
+                   h.stress_concentration * f / (net * s), mat.plate_yield, mat.required);
+    const Check u =
+        make_check("plate.tension_ultimate", t.section, t.stress, mat.plate_ultimate, mat.required);
+    const Check so =
+        make_check("plate.shear_out", where + ": two planes (e − d_h/2)·s vs σ_y/√3",
+                   f / (2.0 * end * s), mat.plate_yield / std::sqrt(3.0), mat.required);
+    const Check br =
+        make_check("plate.bearing", where + ": d_h·s", f / (dh * s), mat.plate_yield, mat.required);
     if (first || t.safety_factor < tension.safety_factor) tension = t;
     if (first || u.safety_factor < ultimate.safety_factor) ultimate = u;
     if (first || so.safety_factor < shear_out.safety_factor) shear_out = so;
@@ -463,8 +470,8 @@ Result assess(const Input& in) {
     }
   }
   r.contact = worst;
-  const std::string cwhere = std::string(kPlateName[worst.plate]) + ", layout " +
-                             std::to_string(worst.layout);
+  const std::string cwhere =
+      std::string(kPlateName[worst.plate]) + ", layout " + std::to_string(worst.layout);
   if (h.kind == HingeKind::kSliding)
     r.checks.push_back(make_check("hinge.pressure", cwhere + ": eq. (23) p = N/(c·B)", worst.p,
                                   mat.allowable_pressure, 1.0));

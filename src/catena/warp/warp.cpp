@@ -72,8 +72,9 @@ struct State {
 double deflection(const Warp& w, const Load& load, const State& s, double z) {
   const double ei = w.modulus * second_moment(w.roller_diameter);
   double bend = load.force * cube_plus(z - load.height);
-  for (int j = 0; j < 4; ++j) bend -= s.r[static_cast<std::size_t>(j)] *
-                                      cube_plus(z - w.supports[static_cast<std::size_t>(j)].height);
+  for (int j = 0; j < 4; ++j)
+    bend -= s.r[static_cast<std::size_t>(j)] *
+            cube_plus(z - w.supports[static_cast<std::size_t>(j)].height);
   return s.a + s.b * z + bend / (6.0 * ei);
 }
 
@@ -100,7 +101,7 @@ std::array<double, 6> residual(const Warp& w, const Load& load, const State& s) 
     sum += s.r[i];
     mom += s.r[i] * sp.height;
   }
-  res[4] = (sum - f) / f;                       // ΣF = 0
+  res[4] = (sum - f) / f;                         // ΣF = 0
   res[5] = (mom - f * load.height) / (f * span);  // ΣM = 0 about z = 0
   return res;
 }
@@ -270,13 +271,13 @@ WarpResult flexibility_impl(const Warp& w, const Load& load, const SolveOptions&
       for (std::size_t i = 0; i < 4; ++i) {
         const Support& sp = w.supports[i];
         const double g = deflection(w, ld, s, sp.height) - sp.clearance;
-        const double kt = std::max(law_slope(sp.stiffness, n, g),
-                                                 kJacobianFloor * secant(sp.stiffness, n, fl));
+        const double kt =
+            std::max(law_slope(sp.stiffness, n, g), kJacobianFloor * secant(sp.stiffness, n, fl));
         jac[i * 6 + 0] = -kt / fl;
         jac[i * 6 + 1] = -kt * sp.height / fl;
         for (std::size_t j = 0; j < 4; ++j) {
-            const double dw = -cube_plus(sp.height - w.supports[j].height) / (6.0 * ei);
-            jac[i * 6 + 2 + j] = ((i == j ? 1.0 : 0.0) - kt * dw) / fl;
+          const double dw = -cube_plus(sp.height - w.supports[j].height) / (6.0 * ei);
+          jac[i * 6 + 2 + j] = ((i == j ? 1.0 : 0.0) - kt * dw) / fl;
         }
       }
       for (std::size_t j = 0; j < 4; ++j) {
@@ -333,9 +334,8 @@ WarpResult flexibility_impl(const Warp& w, const Load& load, const SolveOptions&
     }
   }
   out.summary.converged = rn <= options.tolerance;
-  out.summary.termination = out.summary.converged
-                                ? "max |scaled residual| ≤ tolerance"
-                                : "iteration limit (after load continuation)";
+  out.summary.termination = out.summary.converged ? "max |scaled residual| ≤ tolerance"
+                                                  : "iteration limit (after load continuation)";
   out.summary.iterations = it;
   out.summary.residual = rn * f;
   return build_result(w, load, s, out.summary, options);
@@ -349,7 +349,7 @@ WarpResult solve_flexibility(const Warp& w, const Load& load, const SolveOptions
 
 namespace {
 struct FeSolution {
-  std::vector<double> z, u;   // node heights, (w, θ) per node
+  std::vector<double> z, u;  // node heights, (w, θ) per node
   std::array<int, 4> joint_node{};
   int iterations = 0;
   double residual = 0;  // [N] max |nodal force residual|
@@ -368,8 +368,7 @@ FeSolution fe_solve(const Warp& w, const Load& load, int elements, double tolera
   key.erase(std::unique(key.begin(), key.end()), key.end());
   std::vector<double> z;
   for (std::size_t s = 0; s + 1 < key.size(); ++s)
-    for (int e = 0; e < elements; ++e)
-      z.push_back(key[s] + (key[s + 1] - key[s]) * e / elements);
+    for (int e = 0; e < elements; ++e) z.push_back(key[s] + (key[s + 1] - key[s]) * e / elements);
   z.push_back(key.back());
   const int nodes = static_cast<int>(z.size());
   const int dof = 2 * nodes;
@@ -452,7 +451,8 @@ FeSolution fe_solve(const Warp& w, const Load& load, int elements, double tolera
   };
   double en = energy(u);
   FeSolution sol;
-  for (int it = 0; it < max_iterations && rn > tolerance * f + floor_of(u); ++it, ++sol.iterations) {
+  for (int it = 0; it < max_iterations && rn > tolerance * f + floor_of(u);
+       ++it, ++sol.iterations) {
     std::vector<double> jac = kb;
     for (std::size_t i = 0; i < 4; ++i) {
       const Support& sp = w.supports[i];
@@ -497,7 +497,6 @@ std::array<double, 4> solve_fe(const Warp& w, const Load& load, int elements) {
   return out;
 }
 
-
 WarpResult solve(const Warp& w, const Load& load, const SolveOptions& options) {
   throw_if_any(validate(w, load));
   // One element per segment between joints and load point: exact for the Euler–Bernoulli
@@ -526,9 +525,10 @@ WarpResult solve(const Warp& w, const Load& load, const SolveOptions& options) {
   summary.iterations = sol.iterations;
   summary.residual = sol.residual;
   summary.converged = sol.converged;
-  summary.termination = summary.converged
-                            ? "max |nodal force residual| ≤ tolerance·F + round-off floor (energy-descent Newton)"
-                            : "iteration limit";
+  summary.termination =
+      summary.converged
+          ? "max |nodal force residual| ≤ tolerance·F + round-off floor (energy-descent Newton)"
+          : "iteration limit";
   return build_result(w, load, s, summary, options);
 }
 
