@@ -18,7 +18,10 @@
 #include <sstream>
 #include <tuple>
 
+#include "catena/catena.hpp"
+#include "catena/io/bind.hpp"
 #include "catena/io/case_file.hpp"
+#include "catena/io/record.hpp"
 #include "catena/io/report.hpp"
 #include "catena/io/sha256.hpp"
 #include "cli_support.hpp"
@@ -132,26 +135,6 @@ std::string format_value(const ordered_json& v, double scale);  // below, with t
 
 const std::vector<AnalysisSpec>& analysis_specs() {
   static const std::vector<AnalysisSpec> specs = {
-      {"pocketwheel",
-       {"pocketwheel"},
-       "Round-link chain running onto a pocket wheel (seed 003)",
-       "docs/models/pocketwheel.md",
-       {"round-link"},
-       {},
-       {"--svg", "pocketwheel.svg"},
-       [](const ordered_json& r, io::ReportSection& s) {
-         if (!r.contains("series")) return;
-         const ordered_json& series = r["series"];
-         s.charts.push_back(
-             series_chart(r, series, "Strand position over one tooth period", "phi", {"x"}));
-         s.charts.push_back(
-             series_chart(r, series, "Strand velocity", "phi", {"vx", "vy"}, "velocity"));
-         s.charts.push_back(
-             series_chart(r, series, "Strand acceleration", "phi", {"ax", "ay"}, "acceleration"));
-         if (series.contains("inertial_force"))
-           s.charts.push_back(series_chart(r, series, "Inertial force of the strand −M·a_x", "phi",
-                                           {"inertial_force"}));
-       }},
       {"hinge",
        {"hinge"},
        "Rolling-friction hinge: synthesis, kinematics, pitch change (seed 000 §1.2–1.3)",
@@ -404,11 +387,35 @@ const std::vector<AnalysisSpec>& analysis_specs() {
 // Running the analyses of a case
 
 struct AnalysisRun {
-  const AnalysisSpec* spec;
+  const AnalysisSpec* spec;  ///< a subcommand not yet on the analysis interface, or nullptr
   std::string name;  ///< the table's name: the spec's, or "<spec>-<label>" for one of several
   ordered_json result;
   std::vector<std::pair<std::string, std::string>> files;  // captured (flag, content)
+  const analysis::Analysis* analysis = nullptr;            ///< an analysis of the registry
+  analysis::Record record;                                 ///< its record
 };
+
+// The registry analysis a case table names ("pocketwheel" or "pocketwheel-<label>").
+const analysis::Analysis* registry_analysis(const std::string& name) {
+  for (const analysis::Analysis* a : catena::analyses()) {
+    if (a->name == name || name.rfind(a->name + "-", 0) == 0) return a;
+  }
+  return nullptr;
+}
+
+io::RawInput::Type raw_type(io::CaseValue::Type type) {
+  switch (type) {
+    case io::CaseValue::Type::kString:
+      return io::RawInput::Type::kText;
+    case io::CaseValue::Type::kNumber:
+      return io::RawInput::Type::kNumber;
+    case io::CaseValue::Type::kBoolean:
+      return io::RawInput::Type::kBoolean;
+    case io::CaseValue::Type::kOther:
+      break;
+  }
+  return io::RawInput::Type::kOther;
+}
 
 struct CaseRun {
   io::CaseFile file;
@@ -466,7 +473,13 @@ CaseRun run_case(const io::CaseFile& file) {
     keys_of[spec.name] = case_keys(probe, spec);
     for (const auto& [k, o] : keys_of[spec.name]) any_key.insert(k);
   }
+  for (const analysis::Analysis* a : catena::analyses()) {
+    for (const analysis::Parameter& p : a->parameters) {
+      if (!p.cli_only) any_key.insert(p.name);
+    }
+  }
   std::vector<std::string> spec_names;
+  for (const analysis::Analysis* a : catena::analyses()) spec_names.push_back(a->name);
   for (const AnalysisSpec& spec : specs) spec_names.push_back(spec.name);
 
   auto suggest = [](const std::string& word, const std::vector<std::string>& candidates) {
@@ -554,9 +567,74 @@ CaseRun run_case(const io::CaseFile& file) {
     std::string name;
     std::vector<std::string> args;
     std::map<std::string, std::string> flag_to_path;
+    const analysis::Analysis* analysis = nullptr;
+    std::vector<io::RawInput> raw;
   };
   std::vector<Planned> planned;
   for (const std::string& name : wanted) {
+    if (const analysis::Analysis* a = registry_analysis(name)) {
+      if (!chain_type.empty() && std::find(a->chain_types.begin(), a->chain_types.end(),
+                                           chain_type) == a->chain_types.end()) {
+        std::string types;
+        for (const auto& t : a->chain_types) types += (types.empty() ? "" : ", ") + t;
+        issues.push_back({"analyses." + name, "(table)",
+                          "an analysis for chain.type = " + chain_type + "; '" + name +
+                              "' applies to " + types});
+        continue;
+      }
+      std::vector<std::string> key_names;
+      for (const analysis::Parameter& p : a->parameters) {
+        if (!p.cli_only && !kOutputFlags.count(p.name)) key_names.push_back(p.name);
+      }
+      Planned p{nullptr, name, {}, {}, a, {}};
+      std::map<std::string, const io::CaseValue*> given;
+      const std::string prefix = "analyses." + name + ".";
+      for (const io::CaseValue& v : file.values) {
+        if (v.path.rfind(prefix, 0) != 0) continue;
+        const std::string key = v.path.substr(prefix.size());
+        const analysis::Parameter* param = a->parameter(key);
+        if (kOutputFlags.count(key)) {
+          issues.push_back({v.path, v.text,
+                            "no output option in a case file: 'catena report' and "
+                            "'catena run' choose the outputs"});
+        } else if (!param || param->cli_only) {
+          issues.push_back({v.path, v.text,
+                            "an option of '" + name + "'" + suggest(key, key_names) +
+                                " (docs/cli.md lists them; '_' for '-')"});
+        } else {
+          given[key] = &v;
+        }
+      }
+      const analysis::Analysis::Variant* variant = nullptr;
+      for (const auto& [type, v] : a->variants) {
+        if (type == chain_type) variant = &v;
+      }
+      for (const auto& [key, v] : shared) {
+        const analysis::Parameter* param = a->parameter(key);
+        const bool excluded =
+            variant && std::find(variant->not_shared.begin(), variant->not_shared.end(), key) !=
+                           variant->not_shared.end();
+        if (param && !param->cli_only && !param->not_shared && !given.count(key) && !excluded)
+          given[key] = v;
+      }
+      for (const auto& [key, v] : given) {
+        p.flag_to_path[key] = v->path;
+        p.raw.push_back({key, v->text, raw_type(v->type), {}, {}});
+      }
+      if (variant) {
+        for (const auto& [key, value] : variant->set) {
+          const analysis::Parameter* param = a->parameter(key);
+          const bool is_flag = param && param->type == analysis::ParameterType::kFlag;
+          p.raw.push_back({key,
+                           value,
+                           is_flag ? io::RawInput::Type::kBoolean : io::RawInput::Type::kText,
+                           {},
+                           {}});
+        }
+      }
+      planned.push_back(std::move(p));
+      continue;
+    }
     const auto it = std::find_if(specs.begin(), specs.end(), [&](const AnalysisSpec& s) {
       // "pocketwheel" or "pocketwheel-<label>": several runs of one
       // analysis, e.g. pocketwheel-free, pocketwheel-chordal
@@ -644,6 +722,34 @@ CaseRun run_case(const io::CaseFile& file) {
 
   // run each through its own subcommand, collecting every analysis' input errors
   for (const Planned& p : planned) {
+    if (p.analysis) {
+      const std::string where = "analyses." + p.name;
+      std::vector<Issue> found;
+      const analysis::Inputs inputs = io::bind(*p.analysis, p.raw, found);
+      AnalysisRun run{nullptr, p.name, {}, {}, p.analysis, {}};
+      if (found.empty()) {
+        try {
+          run.record = p.analysis->evaluate(inputs);
+          run.result = ordered_json::parse(io::to_json(run.record.data, -1));
+          out.runs.push_back(std::move(run));
+        } catch (const InputError& e) {
+          found = e.issues();
+        }
+      }
+      for (Issue issue : found) {
+        // name the case-file path the value came from, or where a missing one belongs
+        const auto path = p.flag_to_path.find(issue.field);
+        if (path != p.flag_to_path.end()) {
+          issue.field = path->second;
+        } else if (p.analysis->parameter(issue.field)) {
+          issue.field = where + "." + issue.field;
+        } else {
+          issue.field = where + " (" + issue.field + ")";
+        }
+        issues.push_back(std::move(issue));
+      }
+      continue;
+    }
     CLI::App app;
     const auto actions = register_analyses(app);
     std::vector<const char*> argv;
@@ -712,27 +818,6 @@ std::string format_value(const ordered_json& v, double scale) {
   return v.dump();
 }
 
-// The scalars of a result (nested objects with dotted names), in display units.
-void scalar_rows(const ordered_json& result, const ordered_json& object, const std::string& prefix,
-                 std::vector<io::ReportRow>& rows) {
-  static const std::set<std::string> skip = {"model", "source", "units", "diagnostics"};
-  for (auto it = object.begin(); it != object.end(); ++it) {
-    if (skip.count(it.key())) continue;
-    const ordered_json& v = it.value();
-    if (v.is_object()) {
-      scalar_rows(result, v, prefix + it.key() + ".", rows);
-    } else if (!v.is_array()) {
-      const Display d = display(unit_of(result, it.key()));
-      rows.push_back({prefix + it.key(), format_value(v, v.is_number() ? d.scale : 1.0), d.unit});
-    } else if (v.size() <= 4 && !v.empty() && v[0].is_number()) {  // short vectors: list them
-      const Display d = display(unit_of(result, it.key()));
-      std::string text;
-      for (const auto& e : v) text += (text.empty() ? "" : ", ") + format_value(e, d.scale);
-      rows.push_back({prefix + it.key(), text, d.unit});
-    }
-  }
-}
-
 io::Report build_report(const CaseRun& run) {
   io::Report report;
   const io::CaseValue* title = run.file.find("title");
@@ -749,6 +834,12 @@ io::Report build_report(const CaseRun& run) {
     } else if (v.type == io::CaseValue::Type::kNumber) {
       // a bare number: name the default unit of the flag it feeds
       const std::string key = v.path.substr(v.path.rfind('.') + 1);
+      const auto alias_key = kAliases.find(v.path);
+      const std::string parameter_key = alias_key != kAliases.end() ? alias_key->second : key;
+      for (const analysis::Analysis* a : catena::analyses()) {
+        const analysis::Parameter* p = a->parameter(parameter_key);
+        if (p && unit.empty()) unit = io::bare_unit(*p);
+      }
       for (const AnalysisSpec& spec : analysis_specs()) {
         const auto keys = case_keys(probe, spec);
         const auto alias = kAliases.find(v.path);
@@ -759,50 +850,32 @@ io::Report build_report(const CaseRun& run) {
     report.inputs.push_back({v.path, v.text, unit});
   }
   for (const AnalysisRun& r : run.runs) {
-    io::ReportSection s;
-    s.id = r.name;
-    s.title = r.spec->title;
-    if (r.name != r.spec->name) s.title += " — " + r.name.substr(r.spec->name.size() + 1);
-    s.docs = r.spec->docs;
-    const ordered_json& j = r.result;
-    s.source = j.value("source", std::string("see ") + r.spec->docs);
-    if (j.contains("diagnostics")) {
-      for (const auto& d : j["diagnostics"]) {
-        io::ReportDiagnostic rd;
-        rd.severity = d.value("severity", std::string("warning"));
-        if (rd.severity == "infeasible") rd.severity = "error";
-        rd.message = d.value("message", std::string());
-        if (d.contains("limit") && d["limit"].is_number())
-          rd.limit = format_value(d["limit"], 1.0) + " in SI units (m, rad, Pa, N)";
-        s.diagnostics.push_back(rd);
-      }
+    const std::string& base = r.analysis ? r.analysis->name : r.spec->name;
+    std::string title = r.analysis ? r.analysis->title : r.spec->title;
+    if (r.name != base) title += " — " + r.name.substr(base.size() + 1);
+    const std::string& docs = r.analysis ? r.analysis->docs : r.spec->docs;
+    if (r.analysis) {
+      report.sections.push_back(io::report_section(r.record, r.name, title, docs));
+      continue;
     }
-    io::ReportTable results{"Results", {}};
-    scalar_rows(j, j, "", results.rows);
-    if (j.contains("rows") && j["rows"].is_array() && !j["rows"].empty()) {
-      // a sweep: one grid row per design, the best one highlighted
-      const ordered_json& rows = j["rows"];
-      io::ReportGrid grid{"Designs", {}, {}, {}};
-      for (auto it = rows[0].begin(); it != rows[0].end(); ++it) {
-        const Display d = display(unit_of(j, it.key()));
-        grid.columns.push_back(it.key() + (d.unit.empty() ? "" : " [" + d.unit + "]"));
-      }
-      const std::size_t best = j.contains("best") && j["best"].is_number_unsigned()
-                                   ? j["best"].get<std::size_t>()
-                                   : rows.size();
-      for (std::size_t i = 0; i < rows.size(); ++i) {
-        std::vector<std::string> cells;
-        for (auto it = rows[i].begin(); it != rows[i].end(); ++it) {
-          const Display d = display(unit_of(j, it.key()));
-          cells.push_back(format_value(it.value(), it.value().is_number() ? d.scale : 1.0));
-        }
-        grid.rows.push_back(std::move(cells));
-        grid.highlighted.push_back(i == best);
-      }
-      s.grids.push_back(std::move(grid));
+    // a subcommand not yet on the analysis interface: its JSON, charts and captured drawing
+    analysis::Record record;
+    record.data = io::parse_json(r.result.dump());
+    for (const analysis::Value& d : record.data.at("diagnostics").is_array()
+                                        ? record.data.at("diagnostics").as_array()
+                                        : analysis::Value::Array{}) {
+      Diagnostic diagnostic;
+      const std::string severity =
+          d.at("severity").is_string() ? d.at("severity").as_string() : "warning";
+      diagnostic.severity = severity == "infeasible" ? Diagnostic::Severity::kInfeasible
+                            : severity == "info"     ? Diagnostic::Severity::kInfo
+                                                     : Diagnostic::Severity::kWarning;
+      diagnostic.message = d.at("message").is_string() ? d.at("message").as_string() : "";
+      diagnostic.limit = d.at("limit").is_number() ? d.at("limit").as_number() : NAN;
+      record.diagnostics.push_back(diagnostic);
     }
-    s.tables.push_back(results);
-    if (r.spec->charts) r.spec->charts(j, s);
+    io::ReportSection s = io::report_section(record, r.name, title, docs);
+    if (r.spec->charts) r.spec->charts(r.result, s);
     for (const auto& [flag, content] : r.files) {
       if (flag == "--svg") s.drawings_svg.push_back(content);
     }
@@ -828,15 +901,36 @@ struct CaseFlags {
 }  // namespace
 
 std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
-  return {{"pocketwheel", add_pocketwheel(app)},
-          {"hinge", add_hinge(app)},
-          {"contact", add_contact(app)},
-          {"fretting", add_fretting(app)},
-          {"warp", add_warp(app)},
-          {"engagement", add_engagement(app)},
-          {"ring", add_ring(app)},
-          {"loop", add_loop(app)},
-          {"strength", add_strength(app)}};
+  std::map<std::string, std::function<int()>> actions = {{"hinge", add_hinge(app)},
+                                                         {"contact", add_contact(app)},
+                                                         {"fretting", add_fretting(app)},
+                                                         {"warp", add_warp(app)},
+                                                         {"engagement", add_engagement(app)},
+                                                         {"ring", add_ring(app)},
+                                                         {"loop", add_loop(app)},
+                                                         {"strength", add_strength(app)}};
+  // the analyses of the registry; one below another (hinge sweep) runs when its own name was
+  // parsed, else its parent's action
+  std::map<std::string, std::vector<std::pair<CLI::App*, std::function<int()>>>> children;
+  for (const analysis::Analysis* a : catena::analyses()) {
+    if (a->command.size() == 1) {
+      actions[a->command.front()] = add_analysis(app, *a);
+    } else {
+      std::function<int()> action = add_analysis(app, *a);
+      CLI::App* sub = app.get_subcommand(a->command.front());
+      for (std::size_t i = 1; i < a->command.size(); ++i) sub = sub->get_subcommand(a->command[i]);
+      children[a->command.front()].push_back({sub, std::move(action)});
+    }
+  }
+  for (auto& [name, subs] : children) {
+    actions[name] = [own = actions[name], subs = subs]() {
+      for (const auto& [sub, action] : subs) {
+        if (sub->parsed()) return action();
+      }
+      return own();
+    };
+  }
+  return actions;
 }
 
 std::function<int()> add_run(CLI::App& app) {

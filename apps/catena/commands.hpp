@@ -9,10 +9,16 @@ namespace CLI {
 class App;
 }
 
+namespace catena::analysis {
+struct Analysis;
+}
+
 namespace catena::cli {
 
-/// Registers `catena pocketwheel` on `app`; the returned action runs it and returns the exit code.
-std::function<int()> add_pocketwheel(CLI::App& app);
+/// Registers the subcommand of an analysis of the registry (its path `analysis.command` under
+/// `root`), with a flag per parameter and the output options it offers; the returned action
+/// binds, runs, describes and writes, and returns the exit code.
+std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& analysis);
 /// Registers `catena hinge` (and `catena hinge sweep`).
 std::function<int()> add_hinge(CLI::App& app);
 /// Registers `catena contact` and `catena fretting`.

@@ -5,20 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "catena/core/drawing.hpp"
+
 namespace catena::io {
 
-struct Polyline {
-  std::string layer;                              ///< DXF layer / SVG group name
-  std::vector<std::pair<double, double>> points;  ///< [m] x, y
-  bool closed = false;
-  double width_mm = 0.25;   ///< SVG stroke width
-  unsigned rgb = 0x000000;  ///< SVG stroke colour
-};
-
-struct Drawing {
-  std::string title;
-  std::vector<Polyline> polylines;
-};
+using Polyline = catena::Polyline;
+using Drawing = catena::Drawing;
 
 /// SVG text of the drawing, 1:1 in millimetres (width and height in mm, 1 user unit = 1 mm),
 /// y up, with a 5 mm margin.

@@ -11,23 +11,12 @@
 #include <vector>
 
 #include "catena/core/error.hpp"
+#include "catena/core/quantity_kind.hpp"
 
 namespace catena::io {
 
-/// What a value measures; decides the accepted units and the default unit of a bare number.
-enum class QuantityKind {
-  kLength,          ///< SI m; bare number: mm
-  kAngle,           ///< SI rad; bare number: degree
-  kAngularSpeed,    ///< SI rad/s; bare number: 1/s (= rad/s); rpm accepted, Hz rejected
-  kForce,           ///< SI N; bare number: N
-  kStress,          ///< SI Pa; bare number: MPa
-  kMass,            ///< SI kg; bare number: kg
-  kTime,            ///< SI s; bare number: s
-  kFrequency,       ///< SI 1/s (cycles per second); bare number: Hz
-  kSpeed,           ///< SI m/s; bare number: m/s
-  kForcePerLength,  ///< SI N/m (a weight per metre of a conveyor run); bare number: N/m;
-                    ///< a mass per metre (kg/m) is rejected with a hint to write kgf/m
-};
+/// The kind of a value (core/quantity_kind.hpp), here for the parser's callers.
+using QuantityKind = catena::QuantityKind;
 
 /// The SI unit the library uses for `kind` ("m", "rad", "rad/s", "N", "Pa", "kg", "s", "m/s",
 /// "N/m").
@@ -43,6 +32,15 @@ const char* describe(QuantityKind kind);
 /// are rejected here; ranges are checked by the caller.
 std::optional<double> parse_quantity(std::string_view text, QuantityKind kind,
                                      std::string_view field, std::vector<Issue>& issues);
+
+/// A plain real number ("0.3", "-1.5e3"): nothing else in the text, finite. On failure appends
+/// Issue{field, "'text'", expected}. The only number parser besides parse_quantity.
+std::optional<double> parse_number(std::string_view text, std::string_view field,
+                                   std::string_view expected, std::vector<Issue>& issues);
+
+/// A whole number in [min, 10⁹]. On failure appends Issue{field, "'text'", "a whole number ≥ min"}.
+std::optional<long> parse_integer(std::string_view text, std::string_view field, long min,
+                                  std::vector<Issue>& issues);
 
 /// As above, but throws InputError.
 double parse_quantity(std::string_view text, QuantityKind kind, std::string_view field);

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "catena/analysis/record.hpp"
+
 namespace catena::io {
 
 /// A row of a results or inputs table: what, value (already formatted), unit.
@@ -19,25 +21,10 @@ struct ReportTable {
   std::vector<ReportRow> rows;
 };
 
-/// A table with columns (a sweep: one row per design). Headers carry their units.
-struct ReportGrid {
-  std::string title;
-  std::vector<std::string> columns;
-  std::vector<std::vector<std::string>> rows;
-  std::vector<bool> highlighted;  ///< per row (e.g. the best design); may be empty
-};
-
-/// One curve of a chart (x and y of equal length; non-finite values are drawn as gaps).
-struct ReportTrace {
-  std::string name;
-  std::vector<double> x, y;
-};
-
-struct ReportChart {
-  std::string title, x_label, y_label;
-  std::vector<ReportTrace> traces;
-  bool equal_axes = false;  ///< same scale on x and y (paths, outlines)
-};
+/// Tables with columns, charts and their curves: the analysis Record's types.
+using ReportGrid = analysis::Grid;
+using ReportTrace = analysis::Trace;
+using ReportChart = analysis::Chart;
 
 /// A finding about the design: severity ("error", "warning", "note"), message, limit.
 struct ReportDiagnostic {

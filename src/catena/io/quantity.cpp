@@ -277,6 +277,31 @@ std::optional<double> parse_quantity(std::string_view raw, QuantityKind kind,
   return value;
 }
 
+std::optional<double> parse_number(std::string_view text, std::string_view field,
+                                   std::string_view expected, std::vector<Issue>& issues) {
+  const std::string copy(text);
+  char* end = nullptr;
+  const double v = std::strtod(copy.c_str(), &end);
+  if (copy.empty() || *end != '\0' || !std::isfinite(v)) {
+    issues.push_back({std::string(field), "'" + copy + "'", std::string(expected)});
+    return std::nullopt;
+  }
+  return v;
+}
+
+std::optional<long> parse_integer(std::string_view text, std::string_view field, long min,
+                                  std::vector<Issue>& issues) {
+  const std::string copy(text);
+  char* end = nullptr;
+  const long value = std::strtol(copy.c_str(), &end, 10);
+  if (copy.empty() || *end != '\0' || value < min || value > 1000000000L) {
+    issues.push_back(
+        {std::string(field), "'" + copy + "'", "a whole number ≥ " + std::to_string(min)});
+    return std::nullopt;
+  }
+  return value;
+}
+
 double parse_quantity(std::string_view text, QuantityKind kind, std::string_view field) {
   std::vector<Issue> issues;
   const auto value = parse_quantity(text, kind, field, issues);

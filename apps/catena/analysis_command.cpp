@@ -1,0 +1,152 @@
+// One subcommand per analysis, built from its parameter table: a flag per parameter, the output
+// options the analysis offers, and one action — bind, run, describe, write. Nothing here knows
+// a model.
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <map>
+#include <memory>
+
+#include "catena/io/bind.hpp"
+#include "catena/io/drawing.hpp"
+#include "catena/io/quantity.hpp"
+#include "catena/io/record.hpp"
+#include "cli_support.hpp"
+#include "commands.hpp"
+
+namespace catena::cli {
+namespace {
+
+using analysis::Parameter;
+using analysis::ParameterType;
+
+std::string flag_of(const std::string& key) {
+  std::string flag = "--" + key;
+  for (char& c : flag) c = c == '_' ? '-' : c;
+  return flag;
+}
+
+// A model's and the binder's issues name parameter keys; the user typed flags.
+std::vector<Issue> as_flags(std::vector<Issue> issues) {
+  for (Issue& issue : issues) {
+    if (issue.field.rfind("--", 0) != 0) issue.field = flag_of(issue.field);
+  }
+  return issues;
+}
+
+std::string help_of(const Parameter& p) {
+  std::string help = p.doc;
+  std::string notes;
+  auto note = [&](const std::string& n) { notes += (notes.empty() ? "" : "; ") + n; };
+  if (p.type == ParameterType::kQuantity) {
+    note(std::string(kind_name(p.kind)) + ", bare number: " + io::default_unit(p.kind));
+  }
+  if (p.list) note("comma-separated list");
+  if (p.required) note("required");
+  if (!p.default_text.empty()) note("default " + p.default_text);
+  if (!p.choices.empty()) {
+    std::string c;
+    for (const std::string& each : p.choices) c += (c.empty() ? "" : "|") + each;
+    note(c);
+  }
+  return notes.empty() ? help : help + " (" + notes + ")";
+}
+
+struct State {
+  std::map<std::string, std::string> texts;
+  std::map<std::string, bool> flags;
+  std::string format, output, csv, svg, dxf;
+  std::map<std::string, std::string> extra_files;
+};
+
+}  // namespace
+
+CLI::App* analysis_app(CLI::App& root, const analysis::Analysis& a) {
+  CLI::App* parent = &root;
+  for (std::size_t i = 0; i + 1 < a.command.size(); ++i)
+    parent = parent->get_subcommand(a.command[i]);
+  return parent->add_subcommand(a.command.back(), a.help.empty() ? a.title : a.help);
+}
+
+std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
+  auto state = std::make_shared<State>();
+  CLI::App* cmd = analysis_app(root, a);
+  for (const Parameter& p : a.parameters) {
+    if (p.type == ParameterType::kFlag) {
+      cmd->add_flag(flag_of(p.name), state->flags[p.name], p.doc);
+      continue;
+    }
+    CLI::Option* o = cmd->add_option(flag_of(p.name), state->texts[p.name], help_of(p));
+    if (!p.choices.empty()) o->check(CLI::IsMember(p.choices));
+  }
+  std::vector<std::string> formats;
+  if (a.formats.table) formats.push_back("table");
+  formats.push_back("json");
+  if (a.formats.csv) formats.push_back("csv");
+  state->format = formats.front();
+  std::string format_help;
+  for (const std::string& f : formats) format_help += (format_help.empty() ? "" : "|") + f;
+  cmd->add_option("--format", state->format,
+                  "output: " + format_help + " (default " + formats.front() + ")")
+      ->check(CLI::IsMember(formats));
+  cmd->add_option("--output", state->output, "write the output to FILE instead of stdout");
+  if (a.formats.csv) cmd->add_option("--csv", state->csv, "also write the series as CSV to FILE");
+  if (a.formats.drawing) {
+    cmd->add_option("--svg", state->svg, "the drawing as SVG (mm)");
+    cmd->add_option("--dxf", state->dxf, "the same drawing as DXF (R12, mm)");
+  }
+  for (const analysis::ExtraOutput& e : a.extra_outputs) {
+    cmd->add_option("--" + e.name, state->extra_files[e.name], e.doc);
+  }
+  return [state, &a]() {
+    std::vector<io::RawInput> raw;
+    for (const Parameter& p : a.parameters) {
+      if (p.type == ParameterType::kFlag) {
+        if (state->flags[p.name])
+          raw.push_back({p.name, "true", io::RawInput::Type::kBoolean, {}, {}});
+      } else if (!state->texts[p.name].empty()) {
+        raw.push_back({p.name, state->texts[p.name], io::RawInput::Type::kText, {}, {}});
+      }
+    }
+    std::vector<Issue> issues;
+    const analysis::Inputs inputs = io::bind(a, raw, issues);
+    throw_if_any(as_flags(std::move(issues)));
+    analysis::Record record;
+    try {
+      record = a.evaluate(inputs);
+    } catch (const InputError& error) {
+      throw InputError(as_flags(error.issues()));
+    }
+    std::string text;
+    if (state->format == "json") {
+      text = io::to_json(record.data);
+    } else if (state->format == "csv") {
+      text = io::to_csv(record.columns);
+    } else {
+      text = record.table;
+    }
+    // Everything is computed before anything is written, and written all or nothing.
+    Outputs outputs;
+    if (!state->svg.empty() || !state->dxf.empty()) {
+      if (record.drawings.empty()) {
+        throw InputError(
+            {{state->svg.empty() ? "--dxf" : "--svg", "given", record.drawing_unavailable}});
+      }
+      if (!state->svg.empty())
+        outputs.add("--svg", state->svg, io::to_svg(record.drawings.front()));
+      if (!state->dxf.empty())
+        outputs.add("--dxf", state->dxf, io::to_dxf(record.drawings.front()));
+    }
+    if (!state->csv.empty()) outputs.add("--csv", state->csv, io::to_csv(record.columns));
+    for (const auto& [name, content] : record.files) {
+      const auto file = state->extra_files.find(name);
+      if (file != state->extra_files.end() && !file->second.empty())
+        outputs.add("--" + name, file->second, content);
+    }
+    if (!state->output.empty()) outputs.add("--output", state->output, text);
+    outputs.commit(state->output.empty() ? text : "");
+    if (!state->csv.empty()) std::cerr << "catena: wrote the series to " << state->csv << "\n";
+    return 0;
+  };
+}
+
+}  // namespace catena::cli

@@ -1,0 +1,76 @@
+// One analysis, described once: who it is (name, title, seed and section, docs), its inputs (the
+// parameter table), and what it does — `run(inputs) → Result` (everything the analysis computes,
+// every diagnostic) and `describe(result) → Record` (the result as named fields with SI units,
+// and what front ends show of it). Each model folder defines its analyses in analysis.hpp/.cpp;
+// the registry (catena/catena.hpp) lists them; every front end is generic over this type.
+#pragma once
+
+#include <any>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "catena/analysis/parameter.hpp"
+#include "catena/analysis/record.hpp"
+#include "catena/core/error.hpp"
+
+namespace catena::analysis {
+
+/// Output formats an analysis offers on the command line besides JSON.
+struct Formats {
+  bool table = true;     ///< --format table (the default when offered)
+  bool csv = false;      ///< --format csv and --csv FILE
+  bool drawing = false;  ///< --svg FILE and --dxf FILE
+};
+
+/// An extra output file an analysis can write (`--NAME FILE`), its content in Record::files.
+struct ExtraOutput {
+  std::string name;  ///< flag without "--"; Record::files carries the content under this name
+  std::string doc;
+};
+
+struct Analysis {
+  std::string name;                  ///< registry and case-file name ("pocketwheel", "hinge_sweep")
+  std::vector<std::string> command;  ///< the CLI path: {"hinge", "sweep"}
+  std::string title;                 ///< one line for people and reports
+  std::string help;                  ///< the command's description in --help
+  std::string seed;                  ///< "003", "000 §1.2–1.3"
+  std::string docs;                  ///< "docs/models/pocketwheel.md"
+  std::vector<std::string> chain_types;  ///< case files: chain.type values it applies to
+  std::vector<Parameter> parameters;
+  Formats formats;
+  std::vector<ExtraOutput> extra_outputs;
+  /// Fills missing values from each parameter's `example` when `--example` is given.
+  std::string example_doc;  ///< non-empty: the analysis has an example; the --example help
+  /// Cross-field input rules beyond one parameter (a value only with a given choice, a flag that
+  /// a mode refuses): appends issues, named by parameter key. Called after every value is bound.
+  std::function<void(const Inputs&, std::vector<Issue>&)> check;
+  /// Runs the analysis; throws InputError (fields named by parameter key) for invalid input.
+  std::function<std::any(const Inputs&)> run;
+  /// The result as a Record.
+  std::function<Record(const std::any&, const Inputs&)> describe;
+  /// Per chain type (case files): values the type implies (engagement: hinge = rolling) and
+  /// shared keys that do not apply to it.
+  struct Variant {
+    std::vector<std::pair<std::string, std::string>> set;
+    std::vector<std::string> not_shared;
+  };
+  std::vector<std::pair<std::string, Variant>> variants;
+
+  /// run, then describe.
+  Record evaluate(const Inputs& inputs) const { return describe(run(inputs), inputs); }
+  const Parameter* parameter(std::string_view key) const;
+};
+
+/// Wraps typed run/describe functions into an Analysis' type-erased ones.
+template <class Result>
+void set_functions(Analysis& a, std::function<Result(const Inputs&)> run,
+                   std::function<Record(const Result&, const Inputs&)> describe) {
+  a.run = [run = std::move(run)](const Inputs& in) -> std::any { return run(in); };
+  a.describe = [describe = std::move(describe)](const std::any& r, const Inputs& in) {
+    return describe(std::any_cast<const Result&>(r), in);
+  };
+}
+
+}  // namespace catena::analysis

@@ -1,0 +1,83 @@
+// What an analysis' `describe` returns: the result as named fields with SI units (the Value tree
+// that `--format json` prints, its `units` object inside), and everything else a front end shows
+// of it — the text table, CSV columns, drawings, the report's charts and grids, and the
+// diagnostics. Writers in io/ turn a Record into files; no front end writes a model's fields.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "catena/analysis/value.hpp"
+#include "catena/core/drawing.hpp"
+#include "catena/core/error.hpp"
+
+namespace catena::analysis {
+
+/// One curve of a chart (x and y of equal length; non-finite values are drawn as gaps), in the
+/// display units of the chart's axis labels.
+struct Trace {
+  std::string name;
+  std::vector<double> x, y;
+};
+
+/// A chart of the report.
+struct Chart {
+  std::string title, x_label, y_label;
+  std::vector<Trace> traces;
+  bool equal_axes = false;  ///< same scale on x and y (paths, outlines)
+};
+
+/// A table with columns (a sweep: one row per design; safety checks). Headers carry units.
+struct Grid {
+  std::string title;
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;
+  std::vector<bool> highlighted;  ///< per row (e.g. the best design); may be empty
+};
+
+/// A named column of numbers, for CSV (`--format csv`, `--csv FILE`).
+struct Column {
+  std::string name;
+  std::vector<double> values;
+};
+
+struct Record {
+  Value data;  ///< the JSON tree (an object, or a list of objects for several runs)
+  std::vector<Diagnostic> diagnostics;  ///< findings about the design (also inside `data`)
+  std::string table;                    ///< the text table (`--format table`)
+  std::vector<Column> columns;          ///< CSV columns; empty: the analysis has no CSV
+  std::string csv_unavailable;          ///< why there is no CSV, when `columns` is empty
+  std::vector<Drawing> drawings;        ///< for --svg / --dxf and the report
+  std::string drawing_unavailable;      ///< why there is no drawing (for the --svg message)
+  std::vector<Chart> charts;            ///< the report's charts
+  std::vector<Grid> grids;              ///< the report's tables with columns
+  /// Extra text files the analysis offers (flag without "--" → content), e.g. ring --field.
+  std::vector<std::pair<std::string, std::string>> files;
+};
+
+/// `v` with `digits` significant digits (printf's %g): numbers in tables and messages.
+std::string format_g(double v, int digits = 6);
+
+/// A unit people read for an SI unit: "m" → mm (×1000), "Pa" → MPa, "rad" → °.
+struct Display {
+  std::string unit;
+  double scale = 1.0;
+};
+Display display(const std::string& si_unit);
+
+/// The SI unit of `key` in the `units` object of `result` ("" when it has none).
+std::string unit_of(const Value& result, const std::string& key);
+
+/// A chart of y(x) for arrays inside `object` (`x` and each of `ys` are its keys), in display
+/// units taken from `result`'s `units`; a missing y is left out.
+Chart series_chart(const Value& result, const Value& object, const std::string& title,
+                   const std::string& x, const std::vector<std::string>& ys,
+                   const std::string& y_label = "");
+
+/// Diagnostics as the JSON array every analysis prints: {severity, code, message, value, limit}.
+Value diagnostics_value(const std::vector<Diagnostic>& diagnostics);
+
+/// The `units` object from (key, unit) pairs, in order.
+Value units_value(const std::vector<std::pair<const char*, const char*>>& units);
+
+}  // namespace catena::analysis

@@ -1,0 +1,27 @@
+// The library's entry point: every analysis Catena has, their parameter tables, and running one
+// by name with values as a user types them ("64 mm", "29.4kN", a bare number in the parameter's
+// default unit). The command line, case files, the report, the Python module and sweeps all go
+// through here.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "catena/analysis/analysis.hpp"
+
+namespace catena {
+
+/// Every analysis, in registry order.
+const std::vector<const analysis::Analysis*>& analyses();
+
+/// The analysis called `name` ("pocketwheel", "hinge_sweep"), or nullptr.
+const analysis::Analysis* find_analysis(std::string_view name);
+
+/// Binds `inputs` (key → text) to the analysis' parameters, runs it and describes the result.
+/// Throws InputError listing every problem at once, fields named by parameter key.
+analysis::Record run(std::string_view name,
+                     const std::vector<std::pair<std::string, std::string>>& inputs);
+
+}  // namespace catena

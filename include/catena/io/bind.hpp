@@ -1,0 +1,40 @@
+// Binding text to an analysis' parameter table: every value a user typed (a flag's text, a case
+// file's value) becomes an SI number, a whole number, a choice or a table, through the one
+// quantity parser (UDUNITS-2). Every problem is collected, named by parameter key; the caller
+// renames keys to what its user typed (--flag, analyses.hinge.key) and reports them all at once.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "catena/analysis/analysis.hpp"
+#include "catena/core/error.hpp"
+
+namespace catena::io {
+
+/// One value as a front end received it.
+struct RawInput {
+  enum class Type {
+    kText,     ///< typed text ("64mm", "8", "tangential"), or a TOML string
+    kNumber,   ///< a TOML number (its spelling in `text`)
+    kBoolean,  ///< "true"/"false" (a CLI flag, a TOML boolean)
+    kOther,    ///< a TOML array or other value no parameter takes
+    kTable,    ///< a table of the case file (`table` holds its values)
+  };
+  std::string key;
+  std::string text;
+  Type type = Type::kText;
+  std::vector<analysis::InputValue::Entry> table;  ///< kTable
+  std::string source;                              ///< kTable: the file
+};
+
+/// Binds `raw` to `analysis.parameters` (defaults and, with the `example` flag, example values
+/// for what is absent), then applies the analysis' cross-field `check`. Appends every problem to
+/// `issues`; values that could not be read are NaN (numbers) or absent.
+analysis::Inputs bind(const analysis::Analysis& analysis, const std::vector<RawInput>& raw,
+                      std::vector<Issue>& issues);
+
+/// The unit a bare number takes for `parameter` ("mm", "1/s"; "" for plain numbers and text).
+std::string bare_unit(const analysis::Parameter& parameter);
+
+}  // namespace catena::io

@@ -1,0 +1,167 @@
+#include "catena/analysis/analysis.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+#include <stdexcept>
+
+namespace catena::analysis {
+
+// ---- parameters
+
+const InputValue& Inputs::at(std::string_view key) const {
+  const auto it = values_.find(key);
+  if (it != values_.end()) return it->second;
+  if (parameters_) {
+    for (const Parameter& p : *parameters_) {
+      if (p.name == key) {
+        static const InputValue absent;
+        return absent;
+      }
+    }
+  }
+  throw std::logic_error("analysis input '" + std::string(key) + "' is not in its table");
+}
+
+InputValue& Inputs::set(std::string_view key) {
+  const auto it = values_.find(key);
+  if (it != values_.end()) return it->second;
+  return values_.emplace(std::string(key), InputValue{}).first->second;
+}
+
+std::optional<double> Inputs::optional(std::string_view key) const {
+  const InputValue& v = at(key);
+  if (!v.present) return std::nullopt;
+  return v.number;
+}
+
+namespace {
+Parameter make(std::string name, ParameterType type, std::string doc) {
+  Parameter p;
+  p.name = std::move(name);
+  p.type = type;
+  p.doc = std::move(doc);
+  return p;
+}
+}  // namespace
+
+Parameter quantity(std::string name, QuantityKind kind, std::string doc) {
+  Parameter p = make(std::move(name), ParameterType::kQuantity, std::move(doc));
+  p.kind = kind;
+  return p;
+}
+Parameter number(std::string name, std::string doc) {
+  return make(std::move(name), ParameterType::kNumber, std::move(doc));
+}
+Parameter integer(std::string name, int min, std::string doc) {
+  Parameter p = make(std::move(name), ParameterType::kInteger, std::move(doc));
+  p.min_integer = min;
+  return p;
+}
+Parameter choice(std::string name, std::vector<std::string> choices, std::string doc) {
+  Parameter p = make(std::move(name), ParameterType::kChoice, std::move(doc));
+  p.choices = std::move(choices);
+  return p;
+}
+Parameter flag(std::string name, std::string doc) {
+  return make(std::move(name), ParameterType::kFlag, std::move(doc));
+}
+Parameter text(std::string name, std::string doc) {
+  return make(std::move(name), ParameterType::kText, std::move(doc));
+}
+
+Parameter operator|(Parameter p, const Required& r) {
+  p.required = true;
+  p.expected = r.expected;
+  return p;
+}
+Parameter operator|(Parameter p, const Default& d) {
+  p.default_text = d.text;
+  return p;
+}
+Parameter operator|(Parameter p, const Example& e) {
+  p.example = e.text;
+  return p;
+}
+Parameter operator|(Parameter p, ListOf) {
+  p.list = true;
+  return p;
+}
+Parameter operator|(Parameter p, NotShared) {
+  p.not_shared = true;
+  return p;
+}
+
+// ---- records
+
+Value diagnostics_value(const std::vector<Diagnostic>& diagnostics) {
+  Value out = Value::array();
+  for (const Diagnostic& d : diagnostics) {
+    out.push_back(Value::object({{"severity", to_string(d.severity)},
+                                 {"code", d.code},
+                                 {"message", d.message},
+                                 {"value", d.value},
+                                 {"limit", d.limit}}));
+  }
+  return out;
+}
+
+Value units_value(const std::vector<std::pair<const char*, const char*>>& units) {
+  Value out = Value::object();
+  for (const auto& [key, unit] : units) out[key] = unit;
+  return out;
+}
+
+Display display(const std::string& si_unit) {
+  static const std::map<std::string, Display> table = {{"m", {"mm", 1e3}},
+                                                       {"m^2", {"mm²", 1e6}},
+                                                       {"Pa", {"MPa", 1e-6}},
+                                                       {"rad", {"°", 180.0 / std::numbers::pi}},
+                                                       {"N/m", {"N/mm", 1e-3}},
+                                                       {"1", {"", 1.0}},
+                                                       {"1/arcmin^2", {"1/arcmin²", 1.0}}};
+  const auto it = table.find(si_unit);
+  return it == table.end() ? Display{si_unit, 1.0} : it->second;
+}
+
+std::string format_g(double v, int digits) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
+  return b;
+}
+
+std::string unit_of(const Value& result, const std::string& key) {
+  const Value& u = result.at("units").at(key);
+  return u.is_string() ? u.as_string() : "";
+}
+
+Chart series_chart(const Value& result, const Value& object, const std::string& title,
+                   const std::string& x, const std::vector<std::string>& ys,
+                   const std::string& y_label) {
+  Chart chart;
+  chart.title = title;
+  const Display dx = display(unit_of(result, x));
+  chart.x_label = x + (dx.unit.empty() ? "" : " [" + dx.unit + "]");
+  std::string common_unit;
+  for (const std::string& y : ys) {
+    if (!object.contains(y)) continue;
+    const Display dy = display(unit_of(result, y));
+    common_unit = dy.unit;
+    chart.traces.push_back({y, object.at(x).numbers(dx.scale), object.at(y).numbers(dy.scale)});
+  }
+  chart.y_label = (y_label.empty() ? (ys.size() == 1 ? ys[0] : std::string("value")) : y_label) +
+                  (common_unit.empty() ? "" : " [" + common_unit + "]");
+  return chart;
+}
+
+// ---- analyses
+
+const Parameter* Analysis::parameter(std::string_view key) const {
+  for (const Parameter& p : parameters) {
+    if (p.name == key) return &p;
+  }
+  return nullptr;
+}
+
+}  // namespace catena::analysis

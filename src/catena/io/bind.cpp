@@ -1,0 +1,151 @@
+#include "catena/io/bind.hpp"
+
+#include <sstream>
+
+#include "catena/io/quantity.hpp"
+
+namespace catena::io {
+
+using analysis::InputValue;
+using analysis::Parameter;
+using analysis::ParameterType;
+
+std::string bare_unit(const Parameter& parameter) {
+  return parameter.type == ParameterType::kQuantity ? default_unit(parameter.kind) : "";
+}
+
+namespace {
+
+std::vector<std::string> split_commas(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  std::string part;
+  while (std::getline(ss, part, ',')) out.push_back(part);
+  return out;
+}
+
+std::string one_of(const std::vector<std::string>& choices) {
+  std::string s;
+  for (const std::string& c : choices) s += (s.empty() ? "" : ", ") + c;
+  return "one of " + s;
+}
+
+// Parses one text of a scalar parameter into `v`.
+void parse_scalar(const Parameter& p, const std::string& text, InputValue& v,
+                  std::vector<Issue>& issues) {
+  switch (p.type) {
+    case ParameterType::kQuantity:
+      v.number = parse_quantity(text, p.kind, p.name, issues).value_or(NAN);
+      break;
+    case ParameterType::kNumber:
+      v.number = parse_number(text, p.name, p.expected.empty() ? "a number" : p.expected, issues)
+                     .value_or(NAN);
+      break;
+    case ParameterType::kInteger:
+      v.integer = parse_integer(text, p.name, p.min_integer, issues).value_or(p.min_integer);
+      v.number = static_cast<double>(v.integer);
+      break;
+    case ParameterType::kChoice: {
+      bool known = false;
+      for (const std::string& c : p.choices) known = known || c == text;
+      if (!known) issues.push_back({p.name, "'" + text + "'", one_of(p.choices)});
+      break;
+    }
+    case ParameterType::kFlag:
+    case ParameterType::kText:
+    case ParameterType::kTable:
+      break;
+  }
+}
+
+}  // namespace
+
+analysis::Inputs bind(const analysis::Analysis& a, const std::vector<RawInput>& raw,
+                      std::vector<Issue>& issues) {
+  analysis::Inputs in(&a.parameters);
+  std::vector<const RawInput*> given(a.parameters.size(), nullptr);
+  for (const RawInput& r : raw) {
+    bool found = false;
+    for (std::size_t i = 0; i < a.parameters.size(); ++i) {
+      if (a.parameters[i].name == r.key) {
+        given[i] = &r;
+        found = true;
+      }
+    }
+    if (!found) issues.push_back({r.key, r.text, "an input of '" + a.name + "'"});
+  }
+  // flags first: --example decides what absent values become
+  for (std::size_t i = 0; i < a.parameters.size(); ++i) {
+    const Parameter& p = a.parameters[i];
+    if (p.type != ParameterType::kFlag) continue;
+    InputValue& v = in.set(p.name);
+    if (!given[i]) continue;
+    if (given[i]->type != RawInput::Type::kBoolean) {
+      issues.push_back({p.name, given[i]->text, "true or false"});
+      continue;
+    }
+    v.given = v.present = true;
+    v.text = given[i]->text;
+    v.flag = given[i]->text == "true";
+  }
+  const bool example = !a.example_doc.empty() && in.flag("example");
+  for (std::size_t i = 0; i < a.parameters.size(); ++i) {
+    const Parameter& p = a.parameters[i];
+    if (p.type == ParameterType::kFlag) continue;
+    InputValue& v = in.set(p.name);
+    const RawInput* r = given[i];
+    if (p.type == ParameterType::kTable) {
+      if (r && r->type == RawInput::Type::kTable) {
+        v.given = v.present = true;
+        v.table = r->table;
+        v.source = r->source;
+        v.text = r->text;
+      } else if (r) {
+        issues.push_back({p.name, r->text, "a table"});
+      } else if (p.required) {
+        issues.push_back({p.name, "(missing)", p.expected.empty() ? "a table" : p.expected});
+      }
+      continue;
+    }
+    if (r && (r->type == RawInput::Type::kBoolean || r->type == RawInput::Type::kOther)) {
+      const std::string unit = bare_unit(p);
+      issues.push_back({p.name, r->text,
+                        "a number or a string with a unit" +
+                            (unit.empty() ? std::string() : " (bare number: " + unit + ")")});
+      continue;
+    }
+    if (r) {
+      v.given = true;
+      v.text = r->text;
+    } else if (example && !p.example.empty()) {
+      v.text = p.example;
+    } else if (!p.default_text.empty()) {
+      v.text = p.default_text;
+    } else {
+      if (p.required) {
+        std::string expected = p.expected.empty() ? "a value" : p.expected;
+        if (!a.example_doc.empty() && !p.example.empty())
+          expected += " (or --example for the paper's example)";
+        issues.push_back({p.name, "(missing)", expected});
+      }
+      continue;
+    }
+    v.present = true;
+    if (p.list) {
+      v.parts = split_commas(v.text);
+      if (v.parts.empty()) v.parts.push_back("");
+      for (const std::string& part : v.parts) {
+        InputValue one;
+        parse_scalar(p, part, one, issues);
+        v.list.push_back(one.number);
+      }
+      v.number = v.list.front();
+    } else {
+      parse_scalar(p, v.text, v, issues);
+    }
+  }
+  if (a.check) a.check(in, issues);
+  return in;
+}
+
+}  // namespace catena::io

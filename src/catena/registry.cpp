@@ -1,0 +1,41 @@
+// The registry: one line per analysis. A model added to Catena is listed here and nowhere else.
+#include <stdexcept>
+
+#include "catena/catena.hpp"
+#include "catena/io/bind.hpp"
+#include "catena/pocketwheel/analysis.hpp"
+
+namespace catena {
+
+const std::vector<const analysis::Analysis*>& analyses() {
+  static const std::vector<const analysis::Analysis*> all = {
+      &pocketwheel::run_on_analysis(),
+  };
+  return all;
+}
+
+const analysis::Analysis* find_analysis(std::string_view name) {
+  for (const analysis::Analysis* a : analyses()) {
+    if (a->name == name) return a;
+  }
+  return nullptr;
+}
+
+analysis::Record run(std::string_view name,
+                     const std::vector<std::pair<std::string, std::string>>& inputs) {
+  const analysis::Analysis* a = find_analysis(name);
+  if (a == nullptr) throw InputError({{"analysis", std::string(name), "an analysis Catena has"}});
+  std::vector<io::RawInput> raw;
+  for (const auto& [key, text] : inputs) {
+    const analysis::Parameter* p = a->parameter(key);
+    const bool is_flag = p && p->type == analysis::ParameterType::kFlag;
+    raw.push_back(
+        {key, text, is_flag ? io::RawInput::Type::kBoolean : io::RawInput::Type::kText, {}, {}});
+  }
+  std::vector<Issue> issues;
+  const analysis::Inputs in = io::bind(*a, raw, issues);
+  throw_if_any(issues);
+  return a->evaluate(in);
+}
+
+}  // namespace catena
