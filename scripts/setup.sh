@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git clang-format
   libgtest-dev libgmock-dev libbenchmark-dev
   libudunits2-dev udunits-bin
   libcli11-dev nlohmann-json3-dev libfmt-dev libboost-dev

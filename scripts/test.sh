@@ -6,6 +6,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
 
+echo "== formatting (clang-format, .clang-format)" >&2
+git ls-files -z '*.cpp' '*.hpp' '*.ipp' '*.h' | xargs -0 clang-format --dry-run --Werror
+
 echo "== build (warnings as errors) and test" >&2
 cmake --preset ci >/dev/null
 cmake --build --preset ci -j "$jobs"
