@@ -2,11 +2,14 @@
 // options the analysis offers, and one action — bind, run, describe, write. Nothing here knows
 // a model.
 #include <CLI/CLI.hpp>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <sstream>
 
 #include "catena/io/bind.hpp"
+#include "catena/io/case_file.hpp"
 #include "catena/io/drawing.hpp"
 #include "catena/io/quantity.hpp"
 #include "catena/io/record.hpp"
@@ -26,9 +29,9 @@ std::string flag_of(const std::string& key) {
 }
 
 // A model's and the binder's issues name parameter keys; the user typed flags.
-std::vector<Issue> as_flags(std::vector<Issue> issues) {
+std::vector<Issue> as_flags(const analysis::Analysis& a, std::vector<Issue> issues) {
   for (Issue& issue : issues) {
-    if (issue.field.rfind("--", 0) != 0) issue.field = flag_of(issue.field);
+    if (a.renames(issue.field)) issue.field = flag_of(issue.field);
   }
   return issues;
 }
@@ -75,6 +78,10 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
       cmd->add_flag(flag_of(p.name), state->flags[p.name], p.doc);
       continue;
     }
+    if (p.type == ParameterType::kTable) {  // a TOML file holding the table
+      cmd->add_option("FILE", state->texts[p.name], p.doc)->required();
+      continue;
+    }
     CLI::Option* o = cmd->add_option(flag_of(p.name), state->texts[p.name], help_of(p));
     if (!p.choices.empty()) o->check(CLI::IsMember(p.choices));
   }
@@ -88,7 +95,7 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
   cmd->add_option("--format", state->format,
                   "output: " + format_help + " (default " + formats.front() + ")")
       ->check(CLI::IsMember(formats));
-  cmd->add_option("--output", state->output, "write the output to FILE instead of stdout");
+  cmd->add_option("-o,--output", state->output, "write the output to FILE instead of stdout");
   if (a.formats.csv) cmd->add_option("--csv", state->csv, "also write the series as CSV to FILE");
   if (a.formats.drawing) {
     cmd->add_option("--svg", state->svg, "the drawing as SVG (mm)");
@@ -103,24 +110,32 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
       if (p.type == ParameterType::kFlag) {
         if (state->flags[p.name])
           raw.push_back({p.name, "true", io::RawInput::Type::kBoolean, {}, {}});
+      } else if (p.type == ParameterType::kTable) {
+        const std::string& path = state->texts[p.name];
+        std::ifstream in(path, std::ios::binary);
+        if (!in)
+          throw InputError({{"FILE", path, "a readable TOML file with a [" + p.name + "] table"}});
+        std::stringstream text;
+        text << in.rdbuf();
+        raw.push_back(io::table_input(io::parse_case(text.str(), path), p));
       } else if (!state->texts[p.name].empty()) {
         raw.push_back({p.name, state->texts[p.name], io::RawInput::Type::kText, {}, {}});
       }
     }
     std::vector<Issue> issues;
     const analysis::Inputs inputs = io::bind(a, raw, issues);
-    throw_if_any(as_flags(std::move(issues)));
+    throw_if_any(as_flags(a, std::move(issues)));
     analysis::Record record;
     try {
       record = a.evaluate(inputs);
     } catch (const InputError& error) {
-      throw InputError(as_flags(error.issues()));
+      throw InputError(as_flags(a, error.issues()));
     }
     std::string text;
     if (state->format == "json") {
       text = io::to_json(record.data);
     } else if (state->format == "csv") {
-      text = io::to_csv(record.columns);
+      text = record.csv.empty() ? io::to_csv(record.columns) : record.csv;
     } else {
       text = record.table;
     }
@@ -136,7 +151,9 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
       if (!state->dxf.empty())
         outputs.add("--dxf", state->dxf, io::to_dxf(record.drawings.front()));
     }
-    if (!state->csv.empty()) outputs.add("--csv", state->csv, io::to_csv(record.columns));
+    if (!state->csv.empty())
+      outputs.add("--csv", state->csv,
+                  record.csv.empty() ? io::to_csv(record.columns) : record.csv);
     for (const auto& [name, content] : record.files) {
       const auto file = state->extra_files.find(name);
       if (file != state->extra_files.end() && !file->second.empty())

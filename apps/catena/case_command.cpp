@@ -57,9 +57,6 @@ struct AnalysisSpec {
     std::set<std::string> not_shared;
   };
   std::map<std::string, ChainVariant> variants = {};
-  /// The subcommand reads a table of the case file itself (loop: [loop] and [[loop.segment]]):
-  /// the runner passes the case file's path as its positional argument.
-  bool reads_case_file = false;
 };
 
 const std::vector<std::string> kChainTypes = {"rolling-hinge", "sliding-hinge", "roller-iso606",
@@ -340,45 +337,6 @@ const std::vector<AnalysisSpec>& analysis_specs() {
          p.traces.push_back({"pressure", x, y});
          s.charts.push_back(p);
        }},
-      {"loop",
-       {"loop"},
-       "Conveyor loop: chain tension at every point by the contour method (seed 000 §1.5 fig. 19)",
-       "docs/models/loop.md",
-       kChainTypes,
-       {},
-       {},
-       [](const ordered_json& r, io::ReportSection& s) {
-         // tension along the path: a vertical step at each turn and over the drive sprocket
-         io::ReportChart c;
-         c.title = "Chain tension along the loop (from the drive sprocket's slack side)";
-         c.x_label = "path length s [m]";
-         c.y_label = "tension [kN]";
-         std::vector<double> x, y;
-         for (const ordered_json& p : r["points"]) {
-           x.push_back(p["s"].get<double>());
-           y.push_back(p["tension"].get<double>() * 1e-3);
-         }
-         c.traces.push_back({"tension", x, y});
-         s.charts.push_back(c);
-         io::ReportGrid grid{"Segments",
-                             {"#", "name", "kind", "s start [m]", "s end [m]", "S in [kN]",
-                              "S out [kN]", "ΔS [kN]"},
-                             {},
-                             {}};
-         auto f = [](const ordered_json& v, double scale) {
-           char b[32];
-           std::snprintf(b, sizeof b, "%.5g", v.get<double>() * scale);
-           return std::string(b);
-         };
-         for (const ordered_json& g : r["segments"])
-           grid.rows.push_back({std::to_string(g["segment"].get<int>()),
-                                g["name"].get<std::string>(), g["kind"].get<std::string>(),
-                                f(g["s_start"], 1.0), f(g["s_end"], 1.0), f(g["tension_in"], 1e-3),
-                                f(g["tension_out"], 1e-3), f(g["resistance"], 1e-3)});
-         s.grids.push_back(std::move(grid));
-       },
-       {},
-       true},
   };
   return specs;
 }
@@ -606,8 +564,8 @@ CaseRun run_case(const io::CaseFile& file) {
         }
       }
       const analysis::Analysis::Variant* variant = nullptr;
-      for (const auto& [type, v] : a->variants) {
-        if (type == chain_type) variant = &v;
+      for (const auto& [variant_type, v] : a->variants) {
+        if (variant_type == chain_type) variant = &v;
       }
       for (const auto& [key, v] : shared) {
         const analysis::Parameter* param = a->parameter(key);
@@ -620,6 +578,11 @@ CaseRun run_case(const io::CaseFile& file) {
       for (const auto& [key, v] : given) {
         p.flag_to_path[key] = v->path;
         p.raw.push_back({key, v->text, raw_type(v->type), {}, {}});
+      }
+      for (const analysis::Parameter& param : a->parameters) {
+        // a table parameter reads the case file's own table ([loop] and [[loop.segment]])
+        if (param.type == analysis::ParameterType::kTable)
+          p.raw.push_back(io::table_input(file, param));
       }
       if (variant) {
         for (const auto& [key, value] : variant->set) {
@@ -710,7 +673,6 @@ CaseRun run_case(const io::CaseFile& file) {
       }
     }
     for (const std::string& a : spec.extra_args) p.args.push_back(a);
-    if (spec.reads_case_file) p.args.push_back(file.name);
     if (chain_variant)
       for (const std::string& a : chain_variant->args) p.args.push_back(a);
     p.args.push_back("--format");
@@ -739,7 +701,9 @@ CaseRun run_case(const io::CaseFile& file) {
       for (Issue issue : found) {
         // name the case-file path the value came from, or where a missing one belongs
         const auto path = p.flag_to_path.find(issue.field);
-        if (path != p.flag_to_path.end()) {
+        if (!p.analysis->renames(issue.field)) {
+          // it names the case file's own path and line already
+        } else if (path != p.flag_to_path.end()) {
           issue.field = path->second;
         } else if (p.analysis->parameter(issue.field)) {
           issue.field = where + "." + issue.field;
@@ -767,10 +731,6 @@ CaseRun run_case(const io::CaseFile& file) {
     } catch (const InputError& e) {
       const auto& keys = keys_of[p.spec->name];
       for (Issue issue : e.issues()) {
-        if (p.spec->reads_case_file && issue.field.rfind("--", 0) != 0) {
-          issues.push_back(std::move(issue));  // it names the case file's own path and line
-          continue;
-        }
         // name the case-file path the value came from, or where a missing one belongs
         std::string key = issue.field.rfind("--", 0) == 0 ? issue.field.substr(2) : "";
         for (char& c : key) c = c == '-' ? '_' : c;
@@ -829,8 +789,12 @@ io::Report build_report(const CaseRun& run) {
   register_analyses(probe);
   for (const io::CaseValue& v : run.file.values) {
     std::string unit;
-    if (v.type == io::CaseValue::Type::kNumber && v.path.rfind("loop.", 0) == 0) {
-      unit = loop_bare_unit(v.path);
+    const analysis::Parameter* table_field = nullptr;
+    for (const analysis::Analysis* a : catena::analyses()) {
+      if (!table_field) table_field = a->table_field(v.path);
+    }
+    if (v.type == io::CaseValue::Type::kNumber && table_field) {
+      unit = io::bare_unit(*table_field);
     } else if (v.type == io::CaseValue::Type::kNumber) {
       // a bare number: name the default unit of the flag it feeds
       const std::string key = v.path.substr(v.path.rfind('.') + 1);
@@ -851,11 +815,11 @@ io::Report build_report(const CaseRun& run) {
   }
   for (const AnalysisRun& r : run.runs) {
     const std::string& base = r.analysis ? r.analysis->name : r.spec->name;
-    std::string title = r.analysis ? r.analysis->title : r.spec->title;
-    if (r.name != base) title += " — " + r.name.substr(base.size() + 1);
+    std::string section_title = r.analysis ? r.analysis->title : r.spec->title;
+    if (r.name != base) section_title += " — " + r.name.substr(base.size() + 1);
     const std::string& docs = r.analysis ? r.analysis->docs : r.spec->docs;
     if (r.analysis) {
-      report.sections.push_back(io::report_section(r.record, r.name, title, docs));
+      report.sections.push_back(io::report_section(r.record, r.name, section_title, docs));
       continue;
     }
     // a subcommand not yet on the analysis interface: its JSON, charts and captured drawing
@@ -874,7 +838,7 @@ io::Report build_report(const CaseRun& run) {
       diagnostic.limit = d.at("limit").is_number() ? d.at("limit").as_number() : NAN;
       record.diagnostics.push_back(diagnostic);
     }
-    io::ReportSection s = io::report_section(record, r.name, title, docs);
+    io::ReportSection s = io::report_section(record, r.name, section_title, docs);
     if (r.spec->charts) r.spec->charts(r.result, s);
     for (const auto& [flag, content] : r.files) {
       if (flag == "--svg") s.drawings_svg.push_back(content);
@@ -901,14 +865,11 @@ struct CaseFlags {
 }  // namespace
 
 std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
-  std::map<std::string, std::function<int()>> actions = {{"hinge", add_hinge(app)},
-                                                         {"contact", add_contact(app)},
-                                                         {"fretting", add_fretting(app)},
-                                                         {"warp", add_warp(app)},
-                                                         {"engagement", add_engagement(app)},
-                                                         {"ring", add_ring(app)},
-                                                         {"loop", add_loop(app)},
-                                                         {"strength", add_strength(app)}};
+  std::map<std::string, std::function<int()>> actions = {
+      {"hinge", add_hinge(app)},           {"contact", add_contact(app)},
+      {"fretting", add_fretting(app)},     {"warp", add_warp(app)},
+      {"engagement", add_engagement(app)}, {"ring", add_ring(app)},
+      {"strength", add_strength(app)}};
   // the analyses of the registry; one below another (hinge sweep) runs when its own name was
   // parsed, else its parent's action
   std::map<std::string, std::vector<std::pair<CLI::App*, std::function<int()>>>> children;

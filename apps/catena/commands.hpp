@@ -37,11 +37,6 @@ std::function<int()> add_ring(CLI::App& app);
 /// given `catena ring` App; the ring action runs the returned action when its subcommand parsed.
 std::function<int()> add_ring_capacity(CLI::App& ring);
 std::function<int()> add_ring_design(CLI::App& ring);
-/// Registers `catena loop FILE` (conveyor loop tensions, seed 000 §1.5 fig. 19). It reads the
-/// [loop] table of a TOML file, so the case runner hands it the case file's path.
-std::function<int()> add_loop(CLI::App& app);
-/// The unit a bare number takes at a [loop] path ("loop.segment[2].length" → "m"), for reports.
-std::string loop_bare_unit(const std::string& path);
 
 /// Registers every analysis subcommand above on `app`; returns their actions by name. The case
 /// runner uses it too: a model added here (and described in case_command.cpp's registry) is

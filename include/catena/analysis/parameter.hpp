@@ -50,6 +50,14 @@ struct Parameter {
   /// Not taken from the case file's shared tables ([chain], [loads], ...): only from the
   /// analysis' own table.
   bool not_shared = false;
+  /// The unit a bare number takes when it is not the kind's default (a conveyor run's length in
+  /// m, not the mm of chain geometry); empty: the kind's default.
+  std::string bare_unit;
+  /// kTable: the keys of the table itself ([loop]: speed, efficiency, …) and, when it holds an
+  /// array of tables, that array's name ("segment") and the keys of each element.
+  std::vector<Parameter> fields;
+  std::string rows_name;
+  std::vector<Parameter> row_fields;
 };
 
 /// One bound input: what the user gave (or the default) and its value in SI.
@@ -72,7 +80,8 @@ struct InputValue {
     bool is_boolean = false;  ///< a TOML boolean
   };
   std::vector<Entry> table;
-  std::string source;  ///< kTable: the file the table came from
+  std::vector<std::string> tables;  ///< kTable: every table's path, empty ones too
+  std::string source;               ///< kTable: the file the table came from
 };
 
 /// The inputs of one run, bound to a parameter table (io::bind makes them from text).

@@ -46,11 +46,11 @@ struct Record {
   std::vector<Diagnostic> diagnostics;  ///< findings about the design (also inside `data`)
   std::string table;                    ///< the text table (`--format table`)
   std::vector<Column> columns;          ///< CSV columns; empty: the analysis has no CSV
-  std::string csv_unavailable;          ///< why there is no CSV, when `columns` is empty
-  std::vector<Drawing> drawings;        ///< for --svg / --dxf and the report
-  std::string drawing_unavailable;      ///< why there is no drawing (for the --svg message)
-  std::vector<Chart> charts;            ///< the report's charts
-  std::vector<Grid> grids;              ///< the report's tables with columns
+  std::string csv;  ///< a CSV the analysis wrote itself (text columns); used instead of `columns`
+  std::vector<Drawing> drawings;    ///< for --svg / --dxf and the report
+  std::string drawing_unavailable;  ///< why there is no drawing (for the --svg message)
+  std::vector<Chart> charts;        ///< the report's charts
+  std::vector<Grid> grids;          ///< the report's tables with columns
   /// Extra text files the analysis offers (flag without "--" → content), e.g. ring --field.
   std::vector<std::pair<std::string, std::string>> files;
 };

@@ -9,6 +9,7 @@
 
 #include "catena/analysis/analysis.hpp"
 #include "catena/core/error.hpp"
+#include "catena/io/case_file.hpp"
 
 namespace catena::io {
 
@@ -25,6 +26,7 @@ struct RawInput {
   std::string text;
   Type type = Type::kText;
   std::vector<analysis::InputValue::Entry> table;  ///< kTable
+  std::vector<std::string> tables;                 ///< kTable: every table's path
   std::string source;                              ///< kTable: the file
 };
 
@@ -34,7 +36,12 @@ struct RawInput {
 analysis::Inputs bind(const analysis::Analysis& analysis, const std::vector<RawInput>& raw,
                       std::vector<Issue>& issues);
 
-/// The unit a bare number takes for `parameter` ("mm", "1/s"; "" for plain numbers and text).
+/// The values of `file` under the table `parameter.name` ("loop." …) as the raw input of a table
+/// parameter: every leaf with its path and line, every table's path, the file's name.
+RawInput table_input(const CaseFile& file, const analysis::Parameter& parameter);
+
+/// The unit a bare number takes for `parameter` ("mm", "1/s"; its own `bare_unit` where set; ""
+/// for plain numbers and text).
 std::string bare_unit(const analysis::Parameter& parameter);
 
 }  // namespace catena::io

@@ -38,6 +38,9 @@ std::optional<double> parse_quantity(std::string_view text, QuantityKind kind,
 std::optional<double> parse_number(std::string_view text, std::string_view field,
                                    std::string_view expected, std::vector<Issue>& issues);
 
+/// True when `text` is a number with nothing after it but blanks ("20", " 1.5e3 "): a bare number.
+bool is_bare_number(std::string_view text);
+
 /// A whole number in [min, 10⁹]. On failure appends Issue{field, "'text'", "a whole number ≥ min"}.
 std::optional<long> parse_integer(std::string_view text, std::string_view field, long min,
                                   std::vector<Issue>& issues);

@@ -1,5 +1,6 @@
 #include "catena/analysis/analysis.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -160,6 +161,27 @@ Chart series_chart(const Value& result, const Value& object, const std::string& 
 const Parameter* Analysis::parameter(std::string_view key) const {
   for (const Parameter& p : parameters) {
     if (p.name == key) return &p;
+  }
+  return nullptr;
+}
+
+bool Analysis::renames(const std::string& field) const {
+  for (char c : field) {
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+  }
+  const Parameter* p = parameter(field);
+  return !(p && p->type == ParameterType::kTable);
+}
+
+const Parameter* Analysis::table_field(const std::string& path) const {
+  const std::string head = path.substr(0, path.find('.'));
+  const Parameter* table = parameter(head);
+  if (!table || table->type != ParameterType::kTable || head.size() == path.size()) return nullptr;
+  const std::string key = path.substr(path.rfind('.') + 1);
+  const bool in_row =
+      !table->rows_name.empty() && path.rfind(head + "." + table->rows_name + "[", 0) == 0;
+  for (const Parameter& f : in_row ? table->row_fields : table->fields) {
+    if (f.name == key) return &f;
   }
   return nullptr;
 }

@@ -11,7 +11,24 @@ using analysis::Parameter;
 using analysis::ParameterType;
 
 std::string bare_unit(const Parameter& parameter) {
-  return parameter.type == ParameterType::kQuantity ? default_unit(parameter.kind) : "";
+  if (parameter.type != ParameterType::kQuantity) return "";
+  return parameter.bare_unit.empty() ? default_unit(parameter.kind) : parameter.bare_unit;
+}
+
+RawInput table_input(const CaseFile& file, const Parameter& parameter) {
+  RawInput raw;
+  raw.key = parameter.name;
+  raw.type = RawInput::Type::kTable;
+  raw.text = "[" + parameter.name + "]";
+  raw.source = file.name;
+  const std::string prefix = parameter.name + ".";
+  for (const CaseValue& v : file.values) {
+    if (v.path.rfind(prefix, 0) != 0) continue;
+    raw.table.push_back({v.path, v.text, v.line, v.type == CaseValue::Type::kString,
+                         v.type == CaseValue::Type::kNumber, v.type == CaseValue::Type::kBoolean});
+  }
+  raw.tables = file.tables;
+  return raw;
 }
 
 namespace {
@@ -98,6 +115,7 @@ analysis::Inputs bind(const analysis::Analysis& a, const std::vector<RawInput>& 
       if (r && r->type == RawInput::Type::kTable) {
         v.given = v.present = true;
         v.table = r->table;
+        v.tables = r->tables;
         v.source = r->source;
         v.text = r->text;
       } else if (r) {

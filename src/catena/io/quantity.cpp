@@ -289,6 +289,11 @@ std::optional<double> parse_number(std::string_view text, std::string_view field
   return v;
 }
 
+bool is_bare_number(std::string_view text) {
+  const std::string t = trim(text);
+  return bare_number(t).has_value();
+}
+
 std::optional<long> parse_integer(std::string_view text, std::string_view field, long min,
                                   std::vector<Issue>& issues) {
   const std::string copy(text);

@@ -1,68 +1,78 @@
-// catena loop FILE: chain tensions around a conveyor loop by the contour method (seed 000 §1.5,
-// fig. 19). FILE is TOML with a [loop] table and [[loop.segment]] array of tables — the schema
-// case files use, so `catena loop case.toml` reads a case file's loop and ignores the rest.
-#include <CLI/CLI.hpp>
+// `loop` — conveyor loop tensions by the contour method (seed 000 §1.5, fig. 19) — as an
+// analysis. Its input is the [loop] table with [[loop.segment]] elements: the schema of case
+// files, so `catena loop case.toml` reads a case file's loop and ignores the rest.
+#include "catena/strength/loop_analysis.hpp"
+
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <fstream>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <sstream>
 
+#include "catena/io/bind.hpp"
 #include "catena/io/case_file.hpp"
-#include "catena/strength/loop.hpp"
-#include "cli_support.hpp"
-#include "commands.hpp"
+#include "catena/io/quantity.hpp"
 
-namespace catena::cli {
+namespace catena::strength {
 namespace {
 
-using io::QuantityKind;
-using nlohmann::ordered_json;
-using namespace catena::strength;
+using analysis::format_g;
+using analysis::InputValue;
+using analysis::Parameter;
+using analysis::ParameterType;
+using analysis::Record;
+using analysis::Value;
+using Entry = analysis::InputValue::Entry;
+using K = QuantityKind;
 
-struct LoopFlags {
-  std::string path, format = "table", output;
-};
+// The keys of [loop] and of each [[loop.segment]], with the unit a bare number takes.
+std::vector<Parameter> loop_fields() {
+  using analysis::number;
+  using analysis::quantity;
+  using analysis::text;
+  return {quantity("speed", K::kSpeed, "chain speed v"),
+          number("efficiency", "drive efficiency eta in (0, 1]"),
+          quantity("min_tension", K::kForce, "smallest tension the chain must keep"),
+          quantity("allowable_tension", K::kForce, "largest tension the chain may carry"),
+          text("name", "the loop's name")};
+}
 
-// What a key of the loop schema holds. kNone: a plain number (dimensionless).
-struct Key {
-  enum class Type { kQuantity, kNumber, kText } type;
-  QuantityKind kind = QuantityKind::kLength;
-  const char* bare = "";  ///< the unit a bare number is taken in (documented)
-};
+std::vector<Parameter> segment_fields() {
+  using analysis::number;
+  using analysis::quantity;
+  using analysis::text;
+  Parameter length = quantity("length", K::kLength, "the run's length L along its slope");
+  length.bare_unit = "m";  // conveyor runs are metres long, not the mm of chain geometry
+  return {text("kind", "straight, turn, takeup or drive"),
+          text("name", "the segment's name"),
+          length,
+          quantity("incline", K::kAngle, "the run's incline beta (rising in the travel direction)"),
+          quantity("chain_weight", K::kForcePerLength, "the chain's weight per metre q0"),
+          quantity("load_weight", K::kForcePerLength, "the load's weight per metre q"),
+          number("resistance", "running resistance factor w of a straight run"),
+          number("factor", "turn: tension ratio k = S_out/S_in >= 1"),
+          quantity("wrap", K::kAngle, "turn: wrap angle alpha (with friction, k = exp(f alpha))"),
+          number("friction", "turn: friction coefficient f"),
+          quantity("pretension", K::kForce, "take-up: pretension S0"),
+          number("loss", "drive: tension lost over the drive sprocket, as a share")};
+}
 
-const std::map<std::string, Key>& loop_keys() {
-  static const std::map<std::string, Key> keys = {
-      {"speed", {Key::Type::kQuantity, QuantityKind::kSpeed, "m/s"}},
-      {"efficiency", {Key::Type::kNumber, QuantityKind::kLength, ""}},
-      {"min_tension", {Key::Type::kQuantity, QuantityKind::kForce, "N"}},
-      {"allowable_tension", {Key::Type::kQuantity, QuantityKind::kForce, "N"}},
-      {"name", {Key::Type::kText, QuantityKind::kLength, ""}},
-  };
+const analysis::Parameter& table_parameter();
+
+std::map<std::string, const Parameter*> keys_of(const std::vector<Parameter>& fields) {
+  std::map<std::string, const Parameter*> keys;
+  for (const Parameter& p : fields) keys[p.name] = &p;
   return keys;
 }
 
-const std::map<std::string, Key>& segment_keys() {
-  static const std::map<std::string, Key> keys = {
-      {"kind", {Key::Type::kText, QuantityKind::kLength, ""}},
-      {"name", {Key::Type::kText, QuantityKind::kLength, ""}},
-      // conveyor runs are metres long: a bare length here is in m (not the mm of chain geometry)
-      {"length", {Key::Type::kQuantity, QuantityKind::kLength, "m"}},
-      {"incline", {Key::Type::kQuantity, QuantityKind::kAngle, "degree"}},
-      {"chain_weight", {Key::Type::kQuantity, QuantityKind::kForcePerLength, "N/m"}},
-      {"load_weight", {Key::Type::kQuantity, QuantityKind::kForcePerLength, "N/m"}},
-      {"resistance", {Key::Type::kNumber, QuantityKind::kLength, ""}},
-      {"factor", {Key::Type::kNumber, QuantityKind::kLength, ""}},
-      {"wrap", {Key::Type::kQuantity, QuantityKind::kAngle, "degree"}},
-      {"friction", {Key::Type::kNumber, QuantityKind::kLength, ""}},
-      {"pretension", {Key::Type::kQuantity, QuantityKind::kForce, "N"}},
-      {"loss", {Key::Type::kNumber, QuantityKind::kLength, ""}},
-  };
+const std::map<std::string, const Parameter*>& loop_keys() {
+  static const auto keys = keys_of(table_parameter().fields);
+  return keys;
+}
+
+const std::map<std::string, const Parameter*>& segment_keys() {
+  static const auto keys = keys_of(table_parameter().row_fields);
   return keys;
 }
 
@@ -77,40 +87,31 @@ const std::map<std::string, std::vector<std::string>>& kind_keys() {
   return keys;
 }
 
-std::string where(const io::CaseValue& v) {
-  return v.path + " (line " + std::to_string(v.line) + ")";
-}
+std::string where(const Entry& v) { return v.path + " (line " + std::to_string(v.line) + ")"; }
 
 // Reads one value as SI; appends an issue naming the path and line on failure.
-std::optional<double> read(const io::CaseValue& v, const Key& key, std::vector<Issue>& issues) {
-  if (v.type != io::CaseValue::Type::kString && v.type != io::CaseValue::Type::kNumber) {
+std::optional<double> read(const Entry& v, const Parameter& key, std::vector<Issue>& issues) {
+  if (!v.is_string && !v.is_number) {
     issues.push_back({where(v), v.text, "a number or a string"});
     return std::nullopt;
   }
-  if (key.type == Key::Type::kNumber) {
-    char* end = nullptr;
-    const double x = std::strtod(v.text.c_str(), &end);
-    if (v.text.empty() || *end != '\0' || !std::isfinite(x)) {
-      issues.push_back({where(v), "'" + v.text + "'", "a plain (dimensionless) number"});
-      return std::nullopt;
-    }
+  if (key.type == ParameterType::kNumber) {
+    std::vector<Issue> found;
+    const auto x = io::parse_number(v.text, where(v), "a plain (dimensionless) number", found);
+    issues.insert(issues.end(), found.begin(), found.end());
     return x;
   }
   // a bare number (a TOML number, or a string holding only a number: "20") takes the key's
   // documented unit, which for lengths (m) is not the kind's default (mm)
-  char* end = nullptr;
-  std::strtod(v.text.c_str(), &end);
-  while (end && (*end == ' ' || *end == '\t')) ++end;
-  const bool bare = v.type == io::CaseValue::Type::kNumber ||
-                    (end != v.text.c_str() && end && *end == '\0' &&
-                     v.text.find_first_not_of(" \t") != std::string::npos);
-  const std::string text = bare ? v.text + " " + key.bare : v.text;
+  const std::string bare_unit = io::bare_unit(key);
+  const bool bare = v.is_number || io::is_bare_number(v.text);
+  const std::string text = bare ? v.text + " " + bare_unit : v.text;
   std::vector<Issue> found;
   const auto x = io::parse_quantity(text, key.kind, where(v), found);
   for (Issue& i : found) {
     i.value = "'" + v.text + "'";
-    if (std::string(key.bare) != io::default_unit(key.kind))
-      i.expected += "; here a bare number is in " + std::string(key.bare);
+    if (bare_unit != io::default_unit(key.kind))
+      i.expected += "; here a bare number is in " + bare_unit;
     issues.push_back(std::move(i));
   }
   return x;
@@ -118,11 +119,13 @@ std::optional<double> read(const io::CaseValue& v, const Key& key, std::vector<I
 
 struct Parsed {
   Loop loop;
+  std::string name;
+  bool has_name = false;
   std::vector<int> segment_lines;    ///< line of each segment's first value (0: none)
   std::map<std::string, int> lines;  ///< loop-relative field ("segment[2].length") → line
 };
 
-Parsed parse_loop(const io::CaseFile& file) {
+Parsed parse_loop(const InputValue& file) {
   Parsed out;
   std::vector<Issue> issues;
   const bool has_loop =
@@ -141,9 +144,9 @@ Parsed parse_loop(const io::CaseFile& file) {
   }
   out.loop.segments.resize(count);
   out.segment_lines.assign(count, 0);
-  std::vector<const io::CaseValue*> kinds(count, nullptr);
+  std::vector<const Entry*> kinds(count, nullptr);
   std::vector<bool> kind_ok(count, false);  // the segment's kind was read
-  std::vector<std::map<std::string, const io::CaseValue*>> given(count);
+  std::vector<std::map<std::string, const Entry*>> given(count);
 
   std::vector<std::string> loop_names, segment_names;
   for (const auto& [k, key] : loop_keys()) loop_names.push_back(k);
@@ -155,7 +158,7 @@ Parsed parse_loop(const io::CaseFile& file) {
   };
 
   static const std::regex segment_value(R"(^loop\.segment\[(\d+)\]\.([^.]+)$)");
-  for (const io::CaseValue& v : file.values) {
+  for (const Entry& v : file.table) {
     if (v.path.rfind("loop.", 0) != 0) continue;  // the rest of a case file is not ours
     std::smatch m;
     if (std::regex_match(v.path, m, segment_value)) {
@@ -190,8 +193,12 @@ Parsed parse_loop(const io::CaseFile& file) {
       continue;
     }
     out.lines[key] = v.line;
-    if (key == "name") continue;
-    const auto x = read(v, k->second, issues);
+    if (key == "name") {
+      out.name = v.text;
+      out.has_name = true;
+      continue;
+    }
+    const auto x = read(v, *k->second, issues);
     if (!x) continue;
     if (key == "speed") out.loop.speed = *x;
     if (key == "efficiency") out.loop.efficiency = *x;
@@ -218,7 +225,7 @@ Parsed parse_loop(const io::CaseFile& file) {
     }
     const std::string kind = kinds[i]->text;
     const auto kk = kind_keys().find(kind);
-    if (kinds[i]->type != io::CaseValue::Type::kString || kk == kind_keys().end()) {
+    if (!kinds[i]->is_string || kk == kind_keys().end()) {
       issues.push_back({where(*kinds[i]), "'" + kind + "'",
                         "straight, turn, takeup or drive" + suggest(kind, kind_names)});
       continue;
@@ -241,7 +248,7 @@ Parsed parse_loop(const io::CaseFile& file) {
         issues.push_back({where(*v), v->text, "a key of a " + kind + " segment: " + list});
         continue;
       }
-      const auto x = read(*v, segment_keys().at(key), issues);
+      const auto x = read(*v, *segment_keys().at(key), issues);
       if (!x) continue;
       if (key == "length") s.length = *x;
       if (key == "incline") s.incline = *x;
@@ -316,59 +323,58 @@ std::string csv_field(const std::string& text) {
   return out + "\"";
 }
 
-int run_loop(const LoopFlags& f) {
-  std::ifstream in(f.path, std::ios::binary);
-  if (!in) throw InputError({{"FILE", f.path, "a readable TOML file with a [loop] table"}});
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const io::CaseFile file = io::parse_case(buffer.str(), f.path);
-  const Parsed p = parse_loop(file);
-  const Loop& loop = p.loop;
-  const LoopResult r = solve(loop);
+LoopAnalysis run(const analysis::Inputs& in) {
+  const Parsed p = parse_loop(in.at("loop"));
+  LoopAnalysis a{p.loop, p.name, p.has_name, solve(p.loop)};
+  return a;
+}
 
+Record describe(const LoopAnalysis& a, const analysis::Inputs&) {
+  const Loop& loop = a.loop;
+  const LoopResult& r = a.result;
+  Record rec;
+  rec.diagnostics = r.diagnostics;
   auto name_of = [&](std::size_t i) { return loop.segments[i].name; };
   auto at = [&](const Extremum& e) {
-    return ordered_json{{"segment", e.segment},
-                        {"name", name_of(e.segment)},
-                        {"at", e.at_end ? "end" : "start"},
-                        {"s", e.s}};
+    return Value::object({{"segment", e.segment},
+                          {"name", name_of(e.segment)},
+                          {"at", e.at_end ? "end" : "start"},
+                          {"s", e.s}});
   };
 
-  std::string text;
-  if (f.format == "json") {
-    ordered_json j;
+  {
+    Value j = Value::object();
     j["model"] = "strength.loop_contour";
     j["source"] =
         "000 §1.5 fig. 19 (qualitative); contour (point-by-point) traction method of conveyor "
         "textbooks (Spivakovsky & Dyachkov, Conveyors and related equipment)";
-    const io::CaseValue* title = file.find("loop.name");
-    if (title) j["name"] = title->text;
+    if (a.has_name) j["name"] = a.name;
     j["speed"] = loop.speed;
     j["efficiency"] = loop.efficiency;
-    ordered_json points = ordered_json::array(), segments = ordered_json::array();
+    Value points = Value::array(), segments = Value::array();
     for (std::size_t i = 0; i < r.segments.size(); ++i) {
       const SegmentTension& t = r.segments[i];
       const char* kind = to_string(loop.segments[i].kind);
-      points.push_back({{"segment", i},
-                        {"name", name_of(i)},
-                        {"kind", kind},
-                        {"at", "start"},
-                        {"s", t.s_start},
-                        {"tension", t.tension_in}});
-      points.push_back({{"segment", i},
-                        {"name", name_of(i)},
-                        {"kind", kind},
-                        {"at", "end"},
-                        {"s", t.s_end},
-                        {"tension", t.tension_out}});
-      segments.push_back({{"segment", i},
-                          {"name", name_of(i)},
-                          {"kind", kind},
-                          {"s_start", t.s_start},
-                          {"s_end", t.s_end},
-                          {"tension_in", t.tension_in},
-                          {"tension_out", t.tension_out},
-                          {"resistance", t.resistance}});
+      points.push_back(Value::object({{"segment", i},
+                                      {"name", name_of(i)},
+                                      {"kind", kind},
+                                      {"at", "start"},
+                                      {"s", t.s_start},
+                                      {"tension", t.tension_in}}));
+      points.push_back(Value::object({{"segment", i},
+                                      {"name", name_of(i)},
+                                      {"kind", kind},
+                                      {"at", "end"},
+                                      {"s", t.s_end},
+                                      {"tension", t.tension_out}}));
+      segments.push_back(Value::object({{"segment", i},
+                                        {"name", name_of(i)},
+                                        {"kind", kind},
+                                        {"s_start", t.s_start},
+                                        {"s_end", t.s_end},
+                                        {"tension_in", t.tension_in},
+                                        {"tension_out", t.tension_out},
+                                        {"resistance", t.resistance}}));
     }
     j["points"] = points;
     j["segments"] = segments;
@@ -381,15 +387,28 @@ int run_loop(const LoopFlags& f) {
     j["drive_force"] = r.drive_force;
     j["power"] = r.power;
     j["length"] = r.length;
-    j["diagnostics"] = diagnostics_json(r.diagnostics);
-    j["units"] = {{"speed", "m/s"},       {"efficiency", "1"},  {"s", "m"},
-                  {"s_start", "m"},       {"s_end", "m"},       {"tension", "N"},
-                  {"tension_in", "N"},    {"tension_out", "N"}, {"resistance", "N"},
-                  {"max_tension", "N"},   {"min_tension", "N"}, {"slack_tension", "N"},
-                  {"tight_tension", "N"}, {"drive_force", "N"}, {"power", "W"},
-                  {"length", "m"},        {"value", "SI"},      {"limit", "SI"}};
-    text = j.dump(2) + "\n";
-  } else if (f.format == "csv") {
+    j["diagnostics"] = analysis::diagnostics_value(r.diagnostics);
+    j["units"] = analysis::units_value({{"speed", "m/s"},
+                                        {"efficiency", "1"},
+                                        {"s", "m"},
+                                        {"s_start", "m"},
+                                        {"s_end", "m"},
+                                        {"tension", "N"},
+                                        {"tension_in", "N"},
+                                        {"tension_out", "N"},
+                                        {"resistance", "N"},
+                                        {"max_tension", "N"},
+                                        {"min_tension", "N"},
+                                        {"slack_tension", "N"},
+                                        {"tight_tension", "N"},
+                                        {"drive_force", "N"},
+                                        {"power", "W"},
+                                        {"length", "m"},
+                                        {"value", "SI"},
+                                        {"limit", "SI"}});
+    rec.data = std::move(j);
+  }
+  {
     std::ostringstream csv;
     csv << "segment,name,kind,at,s,tension\n";
     for (std::size_t i = 0; i < r.segments.size(); ++i) {
@@ -400,8 +419,9 @@ int run_loop(const LoopFlags& f) {
           << "\n";
       csv << head << ",end," << format_g(t.s_end, 12) << "," << format_g(t.tension_out, 12) << "\n";
     }
-    text = csv.str();
-  } else {
+    rec.csv = csv.str();
+  }
+  {
     std::ostringstream table;
     table << "Catena loop: chain tensions by the contour method (seed 000 §1.5, fig. 19)\n\n"
           << "   #  segment               kind        s start [m]  s end [m]   S in [kN]  "
@@ -430,34 +450,80 @@ int run_loop(const LoopFlags& f) {
           << " m/s, eta = " << format_g(loop.efficiency, 4) << "\n";
     for (const Diagnostic& d : r.diagnostics)
       table << "  " << to_string(d.severity) << ": " << d.message << "\n";
-    text = table.str();
+    rec.table = table.str();
   }
-  write_text_output(f.output, text);
-  return 0;
+  // the report: tension along the path (a vertical step at each turn and over the drive
+  // sprocket) and the segments
+  analysis::Chart c;
+  c.title = "Chain tension along the loop (from the drive sprocket's slack side)";
+  c.x_label = "path length s [m]";
+  c.y_label = "tension [kN]";
+  std::vector<double> x, y;
+  for (const Value& p : rec.data.at("points").as_array()) {
+    x.push_back(p.at("s").as_number());
+    y.push_back(p.at("tension").as_number() * 1e-3);
+  }
+  c.traces.push_back({"tension", x, y});
+  rec.charts.push_back(c);
+  analysis::Grid grid{
+      "Segments",
+      {"#", "name", "kind", "s start [m]", "s end [m]", "S in [kN]", "S out [kN]", "ΔS [kN]"},
+      {},
+      {}};
+  auto f = [](const Value& v, double scale) { return format_g(v.as_number() * scale, 5); };
+  for (const Value& g : rec.data.at("segments").as_array())
+    grid.rows.push_back({std::to_string(g.at("segment").as_integer()), g.at("name").as_string(),
+                         g.at("kind").as_string(), f(g.at("s_start"), 1.0), f(g.at("s_end"), 1.0),
+                         f(g.at("tension_in"), 1e-3), f(g.at("tension_out"), 1e-3),
+                         f(g.at("resistance"), 1e-3)});
+  rec.grids.push_back(std::move(grid));
+  return rec;
+}
+
+const analysis::Parameter& table_parameter() {
+  static const Parameter p = [] {
+    Parameter t;
+    t.name = "loop";
+    t.type = ParameterType::kTable;
+    t.doc =
+        "TOML file with a [loop] table and [[loop.segment]] tables (a case file works); in a case "
+        "file, its own [loop] table";
+    t.required = true;
+    t.expected =
+        "a [loop] table (speed, efficiency) and its segments as [[loop.segment]] tables "
+        "(docs/models/loop.md)";
+    t.fields = loop_fields();
+    t.rows_name = "segment";
+    t.row_fields = segment_fields();
+    return t;
+  }();
+  return p;
+}
+
+analysis::Analysis make() {
+  analysis::Analysis a;
+  a.name = "loop";
+  a.command = {"loop"};
+  a.title =
+      "Conveyor loop: chain tension at every point by the contour method (seed 000 §1.5 fig. 19)";
+  a.help =
+      "Chain tensions around a conveyor loop by the contour method: every point, maximum, drive "
+      "force and power (seed 000 §1.5 fig. 19)";
+  a.seed = "000 §1.5";
+  a.docs = "docs/models/loop.md";
+  a.chain_types = {"rolling-hinge", "sliding-hinge", "roller-iso606", "round-link",
+                   "composite-link"};
+  a.formats = {.table = true, .csv = true, .drawing = false};
+  a.parameters = {table_parameter()};
+  analysis::set_functions<LoopAnalysis>(a, run, describe);
+  return a;
 }
 
 }  // namespace
 
-std::string loop_bare_unit(const std::string& path) {
-  const std::string key = path.substr(path.rfind('.') + 1);
-  const auto& keys = path.find("segment[") != std::string::npos ? segment_keys() : loop_keys();
-  const auto k = keys.find(key);
-  return k == keys.end() ? std::string() : std::string(k->second.bare);
+const analysis::Analysis& loop_analysis() {
+  static const analysis::Analysis a = make();
+  return a;
 }
 
-std::function<int()> add_loop(CLI::App& app) {
-  auto f = std::make_shared<LoopFlags>();
-  CLI::App* c = app.add_subcommand(
-      "loop",
-      "Chain tensions around a conveyor loop by the contour method: every point, maximum, drive "
-      "force and power (seed 000 §1.5 fig. 19)");
-  c->add_option("FILE", f->path,
-                "TOML file with a [loop] table and [[loop.segment]] tables (a case file works)")
-      ->required();
-  c->add_option("--format", f->format, "table|json|csv")
-      ->check(CLI::IsMember({"table", "json", "csv"}));
-  c->add_option("-o,--output", f->output, "write the output to FILE");
-  return [f]() { return run_loop(*f); };
-}
-
-}  // namespace catena::cli
+}  // namespace catena::strength
