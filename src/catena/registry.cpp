@@ -4,12 +4,14 @@
 #include "catena/catena.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/pocketwheel/analysis.hpp"
+#include "catena/strength/analysis.hpp"
 
 namespace catena {
 
 const std::vector<const analysis::Analysis*>& analyses() {
   static const std::vector<const analysis::Analysis*> all = {
       &pocketwheel::run_on_analysis(),
+      &strength::strength_analysis(),
   };
   return all;
 }

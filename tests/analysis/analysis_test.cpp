@@ -59,8 +59,9 @@ TEST(Registry, EveryDefaultBindsWithoutAProblem) {
     for (const Parameter& p : a->parameters) {
       if (p.default_text.empty() || p.type == ParameterType::kFlag) continue;
       EXPECT_TRUE(in.present(p.name)) << a->name << "." << p.name;
-      if (p.type == ParameterType::kQuantity || p.type == ParameterType::kNumber)
+      if (p.type == ParameterType::kQuantity || p.type == ParameterType::kNumber) {
         EXPECT_TRUE(std::isfinite(in.number(p.name))) << a->name << "." << p.name;
+      }
     }
   }
 }

@@ -50,6 +50,9 @@ struct Parameter {
   /// Not taken from the case file's shared tables ([chain], [loads], ...): only from the
   /// analysis' own table.
   bool not_shared = false;
+  /// Other names of its flag on the command line ("r1" → --r1), kept for scripts that used
+  /// them; not keys of case files.
+  std::vector<std::string> aliases;
 };
 
 /// One bound input: what the user gave (or the default) and its value in SI.
@@ -121,10 +124,14 @@ struct Example {
 };
 struct ListOf {};
 struct NotShared {};
+struct Alias {
+  std::string name;  ///< snake_case, as `Parameter::name`
+};
 Parameter operator|(Parameter p, const Required& r);
 Parameter operator|(Parameter p, const Default& d);
 Parameter operator|(Parameter p, const Example& e);
 Parameter operator|(Parameter p, ListOf);
 Parameter operator|(Parameter p, NotShared);
+Parameter operator|(Parameter p, const Alias& a);
 
 }  // namespace catena::analysis
