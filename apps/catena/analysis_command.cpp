@@ -74,15 +74,20 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
   auto state = std::make_shared<State>();
   CLI::App* cmd = analysis_app(root, a);
   for (const Parameter& p : a.parameters) {
+    std::string names = flag_of(p.name);
+    for (const std::string& alias : p.aliases) {
+      names += ',';
+      names += flag_of(alias);
+    }
     if (p.type == ParameterType::kFlag) {
-      cmd->add_flag(flag_of(p.name), state->flags[p.name], p.doc);
+      cmd->add_flag(names, state->flags[p.name], p.doc);
       continue;
     }
     if (p.type == ParameterType::kTable) {  // a TOML file holding the table
       cmd->add_option("FILE", state->texts[p.name], p.doc)->required();
       continue;
     }
-    CLI::Option* o = cmd->add_option(flag_of(p.name), state->texts[p.name], help_of(p));
+    CLI::Option* o = cmd->add_option(names, state->texts[p.name], help_of(p));
     if (!p.choices.empty()) o->check(CLI::IsMember(p.choices));
   }
   std::vector<std::string> formats;

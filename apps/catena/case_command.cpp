@@ -16,7 +16,6 @@
 #include <regex>
 #include <set>
 #include <sstream>
-#include <tuple>
 
 #include "catena/catena.hpp"
 #include "catena/io/bind.hpp"
@@ -127,8 +126,6 @@ ordered_json column(const ordered_json& rows, const std::string& key) {
   for (const auto& row : rows) out.push_back(row.contains(key) ? row[key] : ordered_json());
   return out;
 }
-
-std::string format_value(const ordered_json& v, double scale);  // below, with the outputs
 
 const std::vector<AnalysisSpec>& analysis_specs() {
   static const std::vector<AnalysisSpec> specs = {
@@ -258,51 +255,6 @@ const std::vector<AnalysisSpec>& analysis_specs() {
            c.traces.push_back({name, xy.first, xy.second});
          }
          s.charts.push_back(c);
-       },
-       {{"rolling-hinge", {{"--hinge", "rolling"}, {}}},
-        {"sliding-hinge", {{"--hinge", "sliding"}, {"plate_radius", "roller_radius"}}}}},
-      {"strength",
-       {"strength"},
-       "Strength of the roller and plates: M and Q diagrams, safety factors (seed 000 §1.5)",
-       "docs/models/strength.md",
-       {"rolling-hinge", "sliding-hinge"},
-       {},
-       {},
-       [](const ordered_json& r, io::ReportSection& s) {
-         if (r.contains("checks") && r["checks"].is_array()) {
-           io::ReportGrid grid{
-               "Safety factors",
-               {"check", "section", "stress [MPa]", "allowable [MPa]", "n", "required", "ok"},
-               {},
-               {}};
-           for (const ordered_json& c : r["checks"]) {
-             grid.rows.push_back({c.value("name", std::string()), c.value("section", std::string()),
-                                  format_value(c["stress"], 1e-6),
-                                  format_value(c["allowable"], 1e-6),
-                                  format_value(c["safety_factor"], 1.0),
-                                  format_value(c["required"], 1.0), format_value(c["ok"], 1.0)});
-           }
-           s.grids.push_back(std::move(grid));
-         }
-         if (!r.contains("diagrams") || !r["diagrams"].is_object()) return;
-         const ordered_json& d = r["diagrams"];
-         for (const auto& [key, title, unit, scale] :
-              {std::tuple<const char*, const char*, const char*, double>{
-                   "M", "Bending moment along the roller", "M [N·m]", 1.0},
-               {"Q", "Shear force along the roller", "Q [kN]", 1e-3}}) {
-           io::ReportChart c;
-           c.title = title;
-           c.x_label = "z [mm]";
-           c.y_label = unit;
-           for (auto it = d.begin(); it != d.end(); ++it) {
-             // links at an angle: the resultant's magnitude
-             std::string k = key;
-             if (it.value().contains(k + "_resultant")) k += "_resultant";
-             c.traces.push_back({it.key() + (k == key ? "" : " |" + std::string(key) + "|"),
-                                 numbers(it.value()["x"], 1e3), numbers(it.value()[k], scale)});
-           }
-           s.charts.push_back(c);
-         }
        },
        {{"rolling-hinge", {{"--hinge", "rolling"}, {}}},
         {"sliding-hinge", {{"--hinge", "sliding"}, {"plate_radius", "roller_radius"}}}}},
@@ -766,18 +718,6 @@ ordered_json result_tree(const CaseRun& run) {
   return j;
 }
 
-std::string format_value(const ordered_json& v, double scale) {
-  if (v.is_number()) {
-    char b[64];
-    std::snprintf(b, sizeof b, "%.6g", v.get<double>() * scale);
-    return b;
-  }
-  if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
-  if (v.is_null()) return "—";
-  if (v.is_string()) return v.get<std::string>();
-  return v.dump();
-}
-
 io::Report build_report(const CaseRun& run) {
   io::Report report;
   const io::CaseValue* title = run.file.find("title");
@@ -868,8 +808,7 @@ std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
   std::map<std::string, std::function<int()>> actions = {
       {"hinge", add_hinge(app)},           {"contact", add_contact(app)},
       {"fretting", add_fretting(app)},     {"warp", add_warp(app)},
-      {"engagement", add_engagement(app)}, {"ring", add_ring(app)},
-      {"strength", add_strength(app)}};
+      {"engagement", add_engagement(app)}, {"ring", add_ring(app)}};
   // the analyses of the registry; one below another (hinge sweep) runs when its own name was
   // parsed, else its parent's action
   std::map<std::string, std::vector<std::pair<CLI::App*, std::function<int()>>>> children;

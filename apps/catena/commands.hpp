@@ -26,8 +26,6 @@ std::function<int()> add_contact(CLI::App& app);
 std::function<int()> add_fretting(CLI::App& app);
 /// Registers `catena warp` (roller warp, seed 000 §1.4).
 std::function<int()> add_warp(CLI::App& app);
-/// Registers `catena strength` (roller and plate strength checks, seed 000 §1.5).
-std::function<int()> add_strength(CLI::App& app);
 /// Registers `catena engagement`.
 std::function<int()> add_engagement(CLI::App& app);
 /// Registers `catena ring` (seed 002 composite link).

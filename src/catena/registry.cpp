@@ -4,6 +4,7 @@
 #include "catena/catena.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/pocketwheel/analysis.hpp"
+#include "catena/strength/analysis.hpp"
 #include "catena/strength/loop_analysis.hpp"
 
 namespace catena {
@@ -12,6 +13,7 @@ const std::vector<const analysis::Analysis*>& analyses() {
   static const std::vector<const analysis::Analysis*> all = {
       &pocketwheel::run_on_analysis(),
       &strength::loop_analysis(),
+      &strength::strength_analysis(),
   };
   return all;
 }

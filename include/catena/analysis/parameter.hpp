@@ -58,6 +58,9 @@ struct Parameter {
   std::vector<Parameter> fields;
   std::string rows_name;
   std::vector<Parameter> row_fields;
+  /// Other names of its flag on the command line ("r1" → --r1), kept for scripts that used
+  /// them; not keys of case files.
+  std::vector<std::string> aliases;
 };
 
 /// One bound input: what the user gave (or the default) and its value in SI.
@@ -130,10 +133,14 @@ struct Example {
 };
 struct ListOf {};
 struct NotShared {};
+struct Alias {
+  std::string name;  ///< snake_case, as `Parameter::name`
+};
 Parameter operator|(Parameter p, const Required& r);
 Parameter operator|(Parameter p, const Default& d);
 Parameter operator|(Parameter p, const Example& e);
 Parameter operator|(Parameter p, ListOf);
 Parameter operator|(Parameter p, NotShared);
+Parameter operator|(Parameter p, const Alias& a);
 
 }  // namespace catena::analysis

@@ -93,6 +93,10 @@ Parameter operator|(Parameter p, NotShared) {
   p.not_shared = true;
   return p;
 }
+Parameter operator|(Parameter p, const Alias& a) {
+  p.aliases.push_back(a.name);
+  return p;
+}
 
 // ---- records
 
