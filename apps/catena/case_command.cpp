@@ -172,31 +172,6 @@ const std::vector<AnalysisSpec>& analysis_specs() {
          s.charts.push_back(series_chart(r, table, "Largest pitch change versus R1", "R1",
                                          {"max_pitch_change"}, "|Δt|"));
        }},
-      {"contact",
-       {"contact"},
-       "Roller–sprocket tooth contact with axis skew (seed 001)",
-       "docs/models/contact.md",
-       {"roller-iso606"},
-       {},
-       {},
-       [](const ordered_json& r, io::ReportSection& s) {
-         if (r.contains("slice_model")) {
-           s.charts.push_back(series_chart(r, r["slice_model"]["distribution"],
-                                           "Slice model: load along the roller", "s", {"q"}, "q"));
-         } else if (r.contains("skew")) {  // a skew sweep
-           io::ReportChart c = series_chart(r, r, "Contact stress versus skew", "skew",
-                                            {"contact_stress", "slice_stress_peak"}, "stress");
-           s.charts.push_back(c);
-         }
-       }},
-      {"fretting",
-       {"fretting"},
-       "Fretting latent period of multi-strand chain joints (seed 001)",
-       "docs/models/fretting.md",
-       {"roller-iso606"},
-       {},
-       {},
-       {}},
       {"engagement",
        {"engagement"},
        "Chain–sprocket engagement forces (seed 000 §1.6)",
@@ -805,10 +780,10 @@ struct CaseFlags {
 }  // namespace
 
 std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
-  std::map<std::string, std::function<int()>> actions = {
-      {"hinge", add_hinge(app)},           {"contact", add_contact(app)},
-      {"fretting", add_fretting(app)},     {"warp", add_warp(app)},
-      {"engagement", add_engagement(app)}, {"ring", add_ring(app)}};
+  std::map<std::string, std::function<int()>> actions = {{"hinge", add_hinge(app)},
+                                                         {"warp", add_warp(app)},
+                                                         {"engagement", add_engagement(app)},
+                                                         {"ring", add_ring(app)}};
   // the analyses of the registry; one below another (hinge sweep) runs when its own name was
   // parsed, else its parent's action
   std::map<std::string, std::vector<std::pair<CLI::App*, std::function<int()>>>> children;

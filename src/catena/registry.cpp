@@ -2,6 +2,7 @@
 #include <stdexcept>
 
 #include "catena/catena.hpp"
+#include "catena/contact/analysis.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/pocketwheel/analysis.hpp"
 #include "catena/strength/analysis.hpp"
@@ -11,8 +12,8 @@ namespace catena {
 
 const std::vector<const analysis::Analysis*>& analyses() {
   static const std::vector<const analysis::Analysis*> all = {
-      &pocketwheel::run_on_analysis(),
-      &strength::loop_analysis(),
+      &pocketwheel::run_on_analysis(), &contact::contact_analysis(),
+      &contact::fretting_analysis(),   &strength::loop_analysis(),
       &strength::strength_analysis(),
   };
   return all;
