@@ -75,7 +75,9 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
       cmd->add_flag(flag_of(p.name), state->flags[p.name], p.doc);
       continue;
     }
-    CLI::Option* o = cmd->add_option(flag_of(p.name), state->texts[p.name], help_of(p));
+    std::string names = flag_of(p.name);
+    for (const std::string& alias : p.aliases) names += "," + flag_of(alias);
+    CLI::Option* o = cmd->add_option(names, state->texts[p.name], help_of(p));
     if (!p.choices.empty()) o->check(CLI::IsMember(p.choices));
   }
   std::vector<std::string> formats;

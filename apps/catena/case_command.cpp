@@ -606,8 +606,8 @@ CaseRun run_case(const io::CaseFile& file) {
         }
       }
       const analysis::Analysis::Variant* variant = nullptr;
-      for (const auto& [type, v] : a->variants) {
-        if (type == chain_type) variant = &v;
+      for (const auto& [variant_type, v] : a->variants) {
+        if (variant_type == chain_type) variant = &v;
       }
       for (const auto& [key, v] : shared) {
         const analysis::Parameter* param = a->parameter(key);
@@ -851,11 +851,11 @@ io::Report build_report(const CaseRun& run) {
   }
   for (const AnalysisRun& r : run.runs) {
     const std::string& base = r.analysis ? r.analysis->name : r.spec->name;
-    std::string title = r.analysis ? r.analysis->title : r.spec->title;
-    if (r.name != base) title += " — " + r.name.substr(base.size() + 1);
+    std::string section_title = r.analysis ? r.analysis->title : r.spec->title;
+    if (r.name != base) section_title += " — " + r.name.substr(base.size() + 1);
     const std::string& docs = r.analysis ? r.analysis->docs : r.spec->docs;
     if (r.analysis) {
-      report.sections.push_back(io::report_section(r.record, r.name, title, docs));
+      report.sections.push_back(io::report_section(r.record, r.name, section_title, docs));
       continue;
     }
     // a subcommand not yet on the analysis interface: its JSON, charts and captured drawing
@@ -874,7 +874,7 @@ io::Report build_report(const CaseRun& run) {
       diagnostic.limit = d.at("limit").is_number() ? d.at("limit").as_number() : NAN;
       record.diagnostics.push_back(diagnostic);
     }
-    io::ReportSection s = io::report_section(record, r.name, title, docs);
+    io::ReportSection s = io::report_section(record, r.name, section_title, docs);
     if (r.spec->charts) r.spec->charts(r.result, s);
     for (const auto& [flag, content] : r.files) {
       if (flag == "--svg") s.drawings_svg.push_back(content);

@@ -50,6 +50,9 @@ struct Parameter {
   /// Not taken from the case file's shared tables ([chain], [loads], ...): only from the
   /// analysis' own table.
   bool not_shared = false;
+  /// Other names of the flag on the command line (keys, e.g. "roller_diameter" for
+  /// --roller-diameter); case files know the parameter by `name` only.
+  std::vector<std::string> aliases;
 };
 
 /// One bound input: what the user gave (or the default) and its value in SI.
@@ -121,10 +124,14 @@ struct Example {
 };
 struct ListOf {};
 struct NotShared {};
+struct Aliases {
+  std::vector<std::string> names;
+};
 Parameter operator|(Parameter p, const Required& r);
 Parameter operator|(Parameter p, const Default& d);
 Parameter operator|(Parameter p, const Example& e);
 Parameter operator|(Parameter p, ListOf);
 Parameter operator|(Parameter p, NotShared);
+Parameter operator|(Parameter p, const Aliases& a);
 
 }  // namespace catena::analysis

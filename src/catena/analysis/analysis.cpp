@@ -92,6 +92,10 @@ Parameter operator|(Parameter p, NotShared) {
   p.not_shared = true;
   return p;
 }
+Parameter operator|(Parameter p, const Aliases& a) {
+  p.aliases.insert(p.aliases.end(), a.names.begin(), a.names.end());
+  return p;
+}
 
 // ---- records
 
