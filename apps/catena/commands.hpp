@@ -24,12 +24,8 @@ std::function<int()> add_hinge(CLI::App& app);
 /// Registers `catena contact` and `catena fretting`.
 std::function<int()> add_contact(CLI::App& app);
 std::function<int()> add_fretting(CLI::App& app);
-/// Registers `catena warp` (roller warp, seed 000 §1.4).
-std::function<int()> add_warp(CLI::App& app);
 /// Registers `catena strength` (roller and plate strength checks, seed 000 §1.5).
 std::function<int()> add_strength(CLI::App& app);
-/// Registers `catena engagement`.
-std::function<int()> add_engagement(CLI::App& app);
 /// Registers `catena ring` (seed 002 composite link).
 std::function<int()> add_ring(CLI::App& app);
 

@@ -2,14 +2,18 @@
 #include <stdexcept>
 
 #include "catena/catena.hpp"
+#include "catena/engagement/analysis.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/pocketwheel/analysis.hpp"
+#include "catena/warp/analysis.hpp"
 
 namespace catena {
 
 const std::vector<const analysis::Analysis*>& analyses() {
   static const std::vector<const analysis::Analysis*> all = {
       &pocketwheel::run_on_analysis(),
+      &engagement::engagement_analysis(),
+      &warp::warp_analysis(),
   };
   return all;
 }
