@@ -49,7 +49,7 @@ struct AnalysisSpec {
   std::set<std::string> not_shared;      ///< keys it must not take from the shared tables
   std::vector<std::string> extra_args;   ///< appended to the flags (e.g. a drawing to capture)
   ChartBuilder charts;
-  /// Per chain type: flags the chain type implies (engagement: --hinge rolling) and shared keys
+  /// Per chain type: flags the chain type implies (strength: --hinge rolling) and shared keys
   /// that do not apply to it (a rolling hinge takes no sliding friction from [material]).
   struct ChainVariant {
     std::vector<std::string> args;
@@ -172,67 +172,6 @@ const std::vector<AnalysisSpec>& analysis_specs() {
          s.charts.push_back(series_chart(r, table, "Largest pitch change versus R1", "R1",
                                          {"max_pitch_change"}, "|Δt|"));
        }},
-      {"engagement",
-       {"engagement"},
-       "Chain–sprocket engagement forces (seed 000 §1.6)",
-       "docs/models/engagement.md",
-       {"rolling-hinge", "sliding-hinge"},
-       {},
-       {},
-       [](const ordered_json& r, io::ReportSection& s) {
-         s.charts.push_back(series_chart(r, r["series"],
-                                         "Link and tooth forces over the engagement", "gamma",
-                                         {"F2", "FN"}, "force"));
-         if (r.value("hinge", std::string()) == "rolling")
-           s.charts.push_back(series_chart(r, r["series"], "Roller turn ξ over the engagement",
-                                           "gamma", {"xi"}, "ξ"));
-         if (r.contains("wrap") && r["wrap"].is_object()) {
-           const ordered_json& w = r["wrap"];
-           io::ReportChart c;
-           c.title = "Tension before each seated roller around the sprocket";
-           c.x_label = "roller k";
-           c.y_label = "tension [" + unit_of(r, "tension") + "]";
-           std::vector<double> k;
-           for (std::size_t i = 0; i < w["tension"].size(); ++i) k.push_back(double(i));
-           c.traces.push_back({"tension", k, numbers(w["tension"])});
-           s.charts.push_back(c);
-         }
-       },
-       {{"rolling-hinge",
-         {{"--hinge", "rolling"},
-          {"friction", "tooth_friction", "journal_diameter", "tooth_diameter"}}},
-        {"sliding-hinge",
-         {{"--hinge", "sliding"},
-          {"pin_diameter", "half_thickness", "plate_radius", "roller_radius", "rolling_coefficient",
-           "tooth_arm"}}}}},
-      {"warp",
-       {"warp"},
-       "Roller warp: the roller on four plate joints with clearance (seed 000 §1.4)",
-       "docs/models/warp.md",
-       {"rolling-hinge", "sliding-hinge"},
-       {},
-       {},
-       [](const ordered_json& r, io::ReportSection& s) {
-         // one line per load F: the upper plates' share of the load versus its height L1
-         std::map<double, std::pair<std::vector<double>, std::vector<double>>> by_force;
-         for (const ordered_json& p : r["points"]) {
-           auto& [x, y] = by_force[p["force"].get<double>()];
-           x.push_back(p["load_height"].get<double>() * 1e3);
-           y.push_back(p["upper_share"].is_number() ? p["upper_share"].get<double>() * 100 : NAN);
-         }
-         io::ReportChart c;
-         c.title = "Share of the load on the upper plates versus the load height L1";
-         c.x_label = "L1 [mm]";
-         c.y_label = "upper share [%]";
-         for (const auto& [force, xy] : by_force) {
-           char name[48];
-           std::snprintf(name, sizeof name, "F = %.4g kN", force * 1e-3);
-           c.traces.push_back({name, xy.first, xy.second});
-         }
-         s.charts.push_back(c);
-       },
-       {{"rolling-hinge", {{"--hinge", "rolling"}, {}}},
-        {"sliding-hinge", {{"--hinge", "sliding"}, {"plate_radius", "roller_radius"}}}}},
       {"ring",
        {"ring"},
        "Fibre-reinforced polymer link: orthotropic ring on two rigid half-discs (seed 002)",
@@ -325,7 +264,7 @@ std::map<std::string, CLI::Option*> case_keys(CLI::App& app, const AnalysisSpec&
   if (spec.command.size() > 1) {
     for (const std::string& k : spec.not_shared) keys.erase(k);
   }
-  // flags implied by chain.type (engagement's --hinge) are not the case file's to set
+  // flags implied by chain.type (strength's --hinge) are not the case file's to set
   for (const auto& [type, variant] : spec.variants) {
     for (const std::string& a : variant.args) {
       if (a.rfind("--", 0) != 0) continue;
@@ -634,8 +573,10 @@ CaseRun run_case(const io::CaseFile& file) {
           issue.field = path->second;
         } else if (p.analysis->parameter(issue.field)) {
           issue.field = where + "." + issue.field;
-        } else {
-          issue.field = where + " (" + issue.field + ")";
+        } else {  // a model's field: named as the command line names it
+          std::string flag = "--" + issue.field;
+          for (char& c : flag) c = c == '_' ? '-' : c;
+          issue.field = where + " (" + flag + ")";
         }
         issues.push_back(std::move(issue));
       }
@@ -781,8 +722,6 @@ struct CaseFlags {
 
 std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
   std::map<std::string, std::function<int()>> actions = {{"hinge", add_hinge(app)},
-                                                         {"warp", add_warp(app)},
-                                                         {"engagement", add_engagement(app)},
                                                          {"ring", add_ring(app)}};
   // the analyses of the registry; one below another (hinge sweep) runs when its own name was
   // parsed, else its parent's action

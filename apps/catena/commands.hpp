@@ -21,10 +21,6 @@ namespace catena::cli {
 std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& analysis);
 /// Registers `catena hinge` (and `catena hinge sweep`).
 std::function<int()> add_hinge(CLI::App& app);
-/// Registers `catena warp` (roller warp, seed 000 §1.4).
-std::function<int()> add_warp(CLI::App& app);
-/// Registers `catena engagement`.
-std::function<int()> add_engagement(CLI::App& app);
 /// Registers `catena ring` (seed 002 composite link).
 std::function<int()> add_ring(CLI::App& app);
 

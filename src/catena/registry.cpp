@@ -3,17 +3,20 @@
 
 #include "catena/catena.hpp"
 #include "catena/contact/analysis.hpp"
+#include "catena/engagement/analysis.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/pocketwheel/analysis.hpp"
 #include "catena/strength/analysis.hpp"
 #include "catena/strength/loop_analysis.hpp"
+#include "catena/warp/analysis.hpp"
 
 namespace catena {
 
 const std::vector<const analysis::Analysis*>& analyses() {
   static const std::vector<const analysis::Analysis*> all = {
       &pocketwheel::run_on_analysis(), &contact::contact_analysis(),
-      &contact::fretting_analysis(),   &strength::loop_analysis(),
+      &contact::fretting_analysis(),   &engagement::engagement_analysis(),
+      &warp::warp_analysis(),          &strength::loop_analysis(),
       &strength::strength_analysis(),
   };
   return all;

@@ -61,9 +61,9 @@ struct Analysis {
   /// run, then describe.
   Record evaluate(const Inputs& inputs) const { return describe(run(inputs), inputs); }
   const Parameter* parameter(std::string_view key) const;
-  /// True when an issue's field is a parameter key or a model field a front end names after
-  /// its own spelling (--flag, analyses.x.key); false for paths that a table parameter's reader
-  /// already wrote as the user's ("loop.segment[2].length (line 27)", "loop").
+  /// True when an issue's field is a parameter key or a model field ("joint F21 stiffness") that a
+  /// front end names in its own spelling (--flag, analyses.x.key); false for paths that a table
+  /// parameter's reader already wrote as the user's ("loop.segment[2].length (line 27)", "loop").
   bool renames(const std::string& field) const;
   /// The parameter of a value inside a table parameter ("loop.segment[2].length" → length),
   /// or nullptr.

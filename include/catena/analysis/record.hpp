@@ -35,10 +35,12 @@ struct Grid {
   std::vector<bool> highlighted;  ///< per row (e.g. the best design); may be empty
 };
 
-/// A named column of numbers, for CSV (`--format csv`, `--csv FILE`).
+/// A named column of numbers, for CSV (`--format csv`, `--csv FILE`). A column shorter than the
+/// first leaves its remaining cells empty (a quantity the run does not have).
 struct Column {
   std::string name;
   std::vector<double> values;
+  int digits = 12;  ///< significant digits written
 };
 
 struct Record {

@@ -1,6 +1,5 @@
 #include "catena/analysis/analysis.hpp"
 
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -170,9 +169,7 @@ const Parameter* Analysis::parameter(std::string_view key) const {
 }
 
 bool Analysis::renames(const std::string& field) const {
-  for (char c : field) {
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
-  }
+  if (field.find('.') != std::string::npos) return false;  // a path of a table's reader
   const Parameter* p = parameter(field);
   return !(p && p->type == ParameterType::kTable);
 }
