@@ -124,60 +124,10 @@ io::ReportChart series_chart(const ordered_json& result, const ordered_json& obj
   return chart;
 }
 
-// Column `key` of an array of row objects.
-ordered_json column(const ordered_json& rows, const std::string& key) {
-  ordered_json out = ordered_json::array();
-  for (const auto& row : rows) out.push_back(row.contains(key) ? row[key] : ordered_json());
-  return out;
-}
-
 std::string format_value(const ordered_json& v, double scale);  // below, with the outputs
 
 const std::vector<AnalysisSpec>& analysis_specs() {
   static const std::vector<AnalysisSpec> specs = {
-      {"hinge",
-       {"hinge"},
-       "Rolling-friction hinge: synthesis, kinematics, pitch change (seed 000 §1.2–1.3)",
-       "docs/models/hinge.md",
-       {"rolling-hinge"},
-       {},
-       {"--svg", "hinge.svg"},
-       [](const ordered_json& r, io::ReportSection& s) {
-         s.charts.push_back(series_chart(r, r["pitch_change"], "Pitch change over the roller turn",
-                                         "phi", {"dt"}, "Δt"));
-         const ordered_json& t = r["trajectories"];
-         io::ReportChart paths;
-         paths.title = "Contact point M1 and roller centre O2 (plate frame)";
-         paths.x_label = "x [mm]";
-         paths.y_label = "y [mm]";
-         paths.equal_axes = true;
-         paths.traces.push_back(
-             {"contact point M1", numbers(t["M1x"], 1e3), numbers(t["M1y"], 1e3)});
-         paths.traces.push_back(
-             {"roller centre O2", numbers(t["O2x"], 1e3), numbers(t["O2y"], 1e3)});
-         s.charts.push_back(paths);
-       }},
-      {"hinge_sweep",
-       {"hinge", "sweep"},
-       "Rolling-friction hinge: design sweep over R1 (seed 000 §1.2)",
-       "docs/models/hinge.md",
-       {"rolling-hinge"},
-       {"plate_radius", "roller_radius", "pitch", "points", "clearance", "flat", "face_half_length",
-        "loaded_length"},
-       {},
-       [](const ordered_json& r, io::ReportSection& s) {
-         const ordered_json& rows = r["rows"];
-         ordered_json table{{"R1", column(rows, "R1")},
-                            {"contact_stress", column(rows, "contact_stress")},
-                            {"rolling_limit", column(rows, "rolling_limit")},
-                            {"max_pitch_change", column(rows, "max_pitch_change")}};
-         s.charts.push_back(series_chart(r, table, "Hertz contact stress versus R1", "R1",
-                                         {"contact_stress"}, "σH"));
-         s.charts.push_back(series_chart(r, table, "Rolling limit versus R1", "R1",
-                                         {"rolling_limit"}, "rolling limit"));
-         s.charts.push_back(series_chart(r, table, "Largest pitch change versus R1", "R1",
-                                         {"max_pitch_change"}, "|Δt|"));
-       }},
       {"contact",
        {"contact"},
        "Roller–sprocket tooth contact with axis skew (seed 001)",
@@ -606,8 +556,8 @@ CaseRun run_case(const io::CaseFile& file) {
         }
       }
       const analysis::Analysis::Variant* variant = nullptr;
-      for (const auto& [type, v] : a->variants) {
-        if (type == chain_type) variant = &v;
+      for (const auto& [variant_type, v] : a->variants) {
+        if (variant_type == chain_type) variant = &v;
       }
       for (const auto& [key, v] : shared) {
         const analysis::Parameter* param = a->parameter(key);
@@ -725,7 +675,8 @@ CaseRun run_case(const io::CaseFile& file) {
     if (p.analysis) {
       const std::string where = "analyses." + p.name;
       std::vector<Issue> found;
-      const analysis::Inputs inputs = io::bind(*p.analysis, p.raw, found);
+      analysis::Inputs inputs = io::bind(*p.analysis, p.raw, found);
+      inputs.want_drawing();  // the report shows the drawing
       AnalysisRun run{nullptr, p.name, {}, {}, p.analysis, {}};
       if (found.empty()) {
         try {
@@ -851,11 +802,11 @@ io::Report build_report(const CaseRun& run) {
   }
   for (const AnalysisRun& r : run.runs) {
     const std::string& base = r.analysis ? r.analysis->name : r.spec->name;
-    std::string title = r.analysis ? r.analysis->title : r.spec->title;
-    if (r.name != base) title += " — " + r.name.substr(base.size() + 1);
+    std::string section_title = r.analysis ? r.analysis->title : r.spec->title;
+    if (r.name != base) section_title += " — " + r.name.substr(base.size() + 1);
     const std::string& docs = r.analysis ? r.analysis->docs : r.spec->docs;
     if (r.analysis) {
-      report.sections.push_back(io::report_section(r.record, r.name, title, docs));
+      report.sections.push_back(io::report_section(r.record, r.name, section_title, docs));
       continue;
     }
     // a subcommand not yet on the analysis interface: its JSON, charts and captured drawing
@@ -874,7 +825,7 @@ io::Report build_report(const CaseRun& run) {
       diagnostic.limit = d.at("limit").is_number() ? d.at("limit").as_number() : NAN;
       record.diagnostics.push_back(diagnostic);
     }
-    io::ReportSection s = io::report_section(record, r.name, title, docs);
+    io::ReportSection s = io::report_section(record, r.name, section_title, docs);
     if (r.spec->charts) r.spec->charts(r.result, s);
     for (const auto& [flag, content] : r.files) {
       if (flag == "--svg") s.drawings_svg.push_back(content);
@@ -901,14 +852,10 @@ struct CaseFlags {
 }  // namespace
 
 std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
-  std::map<std::string, std::function<int()>> actions = {{"hinge", add_hinge(app)},
-                                                         {"contact", add_contact(app)},
-                                                         {"fretting", add_fretting(app)},
-                                                         {"warp", add_warp(app)},
-                                                         {"engagement", add_engagement(app)},
-                                                         {"ring", add_ring(app)},
-                                                         {"loop", add_loop(app)},
-                                                         {"strength", add_strength(app)}};
+  std::map<std::string, std::function<int()>> actions = {
+      {"contact", add_contact(app)},       {"fretting", add_fretting(app)}, {"warp", add_warp(app)},
+      {"engagement", add_engagement(app)}, {"ring", add_ring(app)},         {"loop", add_loop(app)},
+      {"strength", add_strength(app)}};
   // the analyses of the registry; one below another (hinge sweep) runs when its own name was
   // parsed, else its parent's action
   std::map<std::string, std::vector<std::pair<CLI::App*, std::function<int()>>>> children;

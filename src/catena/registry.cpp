@@ -2,6 +2,7 @@
 #include <stdexcept>
 
 #include "catena/catena.hpp"
+#include "catena/hinge/analysis.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/pocketwheel/analysis.hpp"
 
@@ -10,6 +11,8 @@ namespace catena {
 const std::vector<const analysis::Analysis*>& analyses() {
   static const std::vector<const analysis::Analysis*> all = {
       &pocketwheel::run_on_analysis(),
+      &hinge::hinge_analysis(),
+      &hinge::sweep_analysis(),
   };
   return all;
 }

@@ -39,6 +39,7 @@ struct Grid {
 struct Column {
   std::string name;
   std::vector<double> values;
+  bool blank_nan = false;  ///< NaN written as an empty cell (an optional value that is absent)
 };
 
 struct Record {

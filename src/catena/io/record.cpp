@@ -86,8 +86,10 @@ std::string to_csv(const std::vector<analysis::Column>& columns) {
   out << "\n";
   const std::size_t n = columns.empty() ? 0 : columns.front().values.size();
   for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t c = 0; c < columns.size(); ++c)
-      out << (c ? "," : "") << format_g(columns[c].values[i], 12);
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      const double v = columns[c].values[i];
+      out << (c ? "," : "") << (columns[c].blank_nan && std::isnan(v) ? "" : format_g(v, 12));
+    }
     out << "\n";
   }
   return out.str();
