@@ -109,7 +109,32 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
   for (const analysis::ExtraOutput& e : a.extra_outputs) {
     cmd->add_option("--" + e.name, state->extra_files[e.name], e.doc);
   }
-  return [state, &a]() {
+  return [state, &a, cmd]() {
+    // A command below another (hinge sweep) also takes what its parent parsed before the
+    // command's own name (`catena hinge --teeth 8 sweep`), unless given again after it.
+    CLI::App* parent = a.command.size() > 1 ? cmd->get_parent() : nullptr;
+    auto from_parent = [&](const std::string& name) -> const CLI::Option* {
+      const CLI::Option* own = cmd->get_option_no_throw(name);
+      if (parent == nullptr || own == nullptr || own->count() > 0) return nullptr;
+      const CLI::Option* o = parent->get_option_no_throw(name);
+      return o != nullptr && o->count() > 0 ? o : nullptr;
+    };
+    for (const Parameter& p : a.parameters) {
+      if (const CLI::Option* o = from_parent(flag_of(p.name))) {
+        if (p.type == ParameterType::kFlag) {
+          state->flags[p.name] = true;
+        } else if (!o->results().empty()) {
+          state->texts[p.name] = o->results().back();
+        }
+      }
+    }
+    for (auto [name, text] :
+         {std::pair{"--format", &state->format}, std::pair{"--output", &state->output},
+          std::pair{"--csv", &state->csv}, std::pair{"--svg", &state->svg},
+          std::pair{"--dxf", &state->dxf}}) {
+      const CLI::Option* o = from_parent(name);
+      if (o != nullptr && !o->results().empty()) *text = o->results().back();
+    }
     std::vector<io::RawInput> raw;
     for (const Parameter& p : a.parameters) {
       if (p.type == ParameterType::kFlag) {
@@ -128,8 +153,9 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
       }
     }
     std::vector<Issue> issues;
-    const analysis::Inputs inputs = io::bind(a, raw, issues);
+    analysis::Inputs inputs = io::bind(a, raw, issues);
     throw_if_any(as_flags(a, std::move(issues)));
+    inputs.want_drawing(!state->svg.empty() || !state->dxf.empty());
     analysis::Record record;
     try {
       record = a.evaluate(inputs);

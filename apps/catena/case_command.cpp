@@ -69,109 +69,8 @@ const std::map<std::string, std::string> kAliases = {{"chain.designation", "chai
 const std::set<std::string> kOutputFlags = {"help", "format", "output", "csv",
                                             "svg",  "dxf",    "example"};
 
-// Conversion of SI values to the units engineers read.
-struct Display {
-  std::string unit;
-  double scale;
-};
-Display display(const std::string& si_unit) {
-  static const std::map<std::string, Display> table = {{"m", {"mm", 1e3}},
-                                                       {"m^2", {"mm²", 1e6}},
-                                                       {"Pa", {"MPa", 1e-6}},
-                                                       {"rad", {"°", 180.0 / std::numbers::pi}},
-                                                       {"N/m", {"N/mm", 1e-3}},
-                                                       {"1", {"", 1.0}},
-                                                       {"1/arcmin^2", {"1/arcmin²", 1.0}}};
-  const auto it = table.find(si_unit);
-  return it == table.end() ? Display{si_unit, 1.0} : it->second;
-}
-
-std::vector<double> numbers(const ordered_json& array, double scale = 1.0) {
-  std::vector<double> out;
-  if (!array.is_array()) return out;
-  for (const auto& v : array) out.push_back(v.is_number() ? v.get<double>() * scale : NAN);
-  return out;
-}
-
-// Unit of a leaf key from the result's "units" object.
-std::string unit_of(const ordered_json& result, const std::string& key) {
-  if (result.contains("units") && result["units"].contains(key) && result["units"][key].is_string())
-    return result["units"][key].get<std::string>();
-  return "";
-}
-
-// A chart of y(x) for arrays inside `object` (x and y keys), in display units.
-io::ReportChart series_chart(const ordered_json& result, const ordered_json& object,
-                             const std::string& title, const std::string& x,
-                             const std::vector<std::string>& ys, const std::string& y_label = "") {
-  io::ReportChart chart;
-  chart.title = title;
-  const Display dx = display(unit_of(result, x));
-  chart.x_label = x + (dx.unit.empty() ? "" : " [" + dx.unit + "]");
-  std::string common_unit;
-  for (const std::string& y : ys) {
-    if (!object.contains(y)) continue;
-    const Display dy = display(unit_of(result, y));
-    common_unit = dy.unit;
-    chart.traces.push_back({y, numbers(object[x], dx.scale), numbers(object[y], dy.scale)});
-  }
-  chart.y_label = (y_label.empty() ? (ys.size() == 1 ? ys[0] : std::string("value")) : y_label) +
-                  (common_unit.empty() ? "" : " [" + common_unit + "]");
-  return chart;
-}
-
-// Column `key` of an array of row objects.
-ordered_json column(const ordered_json& rows, const std::string& key) {
-  ordered_json out = ordered_json::array();
-  for (const auto& row : rows) out.push_back(row.contains(key) ? row[key] : ordered_json());
-  return out;
-}
-
 const std::vector<AnalysisSpec>& analysis_specs() {
   static const std::vector<AnalysisSpec> specs = {
-      {"hinge",
-       {"hinge"},
-       "Rolling-friction hinge: synthesis, kinematics, pitch change (seed 000 §1.2–1.3)",
-       "docs/models/hinge.md",
-       {"rolling-hinge"},
-       {},
-       {"--svg", "hinge.svg"},
-       [](const ordered_json& r, io::ReportSection& s) {
-         s.charts.push_back(series_chart(r, r["pitch_change"], "Pitch change over the roller turn",
-                                         "phi", {"dt"}, "Δt"));
-         const ordered_json& t = r["trajectories"];
-         io::ReportChart paths;
-         paths.title = "Contact point M1 and roller centre O2 (plate frame)";
-         paths.x_label = "x [mm]";
-         paths.y_label = "y [mm]";
-         paths.equal_axes = true;
-         paths.traces.push_back(
-             {"contact point M1", numbers(t["M1x"], 1e3), numbers(t["M1y"], 1e3)});
-         paths.traces.push_back(
-             {"roller centre O2", numbers(t["O2x"], 1e3), numbers(t["O2y"], 1e3)});
-         s.charts.push_back(paths);
-       }},
-      {"hinge_sweep",
-       {"hinge", "sweep"},
-       "Rolling-friction hinge: design sweep over R1 (seed 000 §1.2)",
-       "docs/models/hinge.md",
-       {"rolling-hinge"},
-       {"plate_radius", "roller_radius", "pitch", "points", "clearance", "flat", "face_half_length",
-        "loaded_length"},
-       {},
-       [](const ordered_json& r, io::ReportSection& s) {
-         const ordered_json& rows = r["rows"];
-         ordered_json table{{"R1", column(rows, "R1")},
-                            {"contact_stress", column(rows, "contact_stress")},
-                            {"rolling_limit", column(rows, "rolling_limit")},
-                            {"max_pitch_change", column(rows, "max_pitch_change")}};
-         s.charts.push_back(series_chart(r, table, "Hertz contact stress versus R1", "R1",
-                                         {"contact_stress"}, "σH"));
-         s.charts.push_back(series_chart(r, table, "Rolling limit versus R1", "R1",
-                                         {"rolling_limit"}, "rolling limit"));
-         s.charts.push_back(series_chart(r, table, "Largest pitch change versus R1", "R1",
-                                         {"max_pitch_change"}, "|Δt|"));
-       }},
       {"ring",
        {"ring"},
        "Fibre-reinforced polymer link: orthotropic ring on two rigid half-discs (seed 002)",
@@ -553,7 +452,8 @@ CaseRun run_case(const io::CaseFile& file) {
     if (p.analysis) {
       const std::string where = "analyses." + p.name;
       std::vector<Issue> found;
-      const analysis::Inputs inputs = io::bind(*p.analysis, p.raw, found);
+      analysis::Inputs inputs = io::bind(*p.analysis, p.raw, found);
+      inputs.want_drawing();  // the report shows the drawing
       AnalysisRun run{nullptr, p.name, {}, {}, p.analysis, {}};
       if (found.empty()) {
         try {
@@ -721,8 +621,7 @@ struct CaseFlags {
 }  // namespace
 
 std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
-  std::map<std::string, std::function<int()>> actions = {{"hinge", add_hinge(app)},
-                                                         {"ring", add_ring(app)}};
+  std::map<std::string, std::function<int()>> actions = {{"ring", add_ring(app)}};
   // the analyses of the registry; one below another (hinge sweep) runs when its own name was
   // parsed, else its parent's action
   std::map<std::string, std::vector<std::pair<CLI::App*, std::function<int()>>>> children;

@@ -19,8 +19,6 @@ namespace catena::cli {
 /// `root`), with a flag per parameter and the output options it offers; the returned action
 /// binds, runs, describes and writes, and returns the exit code.
 std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& analysis);
-/// Registers `catena hinge` (and `catena hinge sweep`).
-std::function<int()> add_hinge(CLI::App& app);
 /// Registers `catena ring` (seed 002 composite link).
 std::function<int()> add_ring(CLI::App& app);
 

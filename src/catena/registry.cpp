@@ -4,6 +4,7 @@
 #include "catena/catena.hpp"
 #include "catena/contact/analysis.hpp"
 #include "catena/engagement/analysis.hpp"
+#include "catena/hinge/analysis.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/pocketwheel/analysis.hpp"
 #include "catena/strength/analysis.hpp"
@@ -14,7 +15,8 @@ namespace catena {
 
 const std::vector<const analysis::Analysis*>& analyses() {
   static const std::vector<const analysis::Analysis*> all = {
-      &pocketwheel::run_on_analysis(), &contact::contact_analysis(),
+      &pocketwheel::run_on_analysis(), &hinge::hinge_analysis(),
+      &hinge::sweep_analysis(),        &contact::contact_analysis(),
       &contact::fretting_analysis(),   &engagement::engagement_analysis(),
       &warp::warp_analysis(),          &strength::loop_analysis(),
       &strength::strength_analysis(),

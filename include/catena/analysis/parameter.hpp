@@ -107,9 +107,15 @@ class Inputs {
   const std::string& text(std::string_view key) const { return at(key).text; }
   const std::vector<double>& list(std::string_view key) const { return at(key).list; }
   const std::vector<Parameter>* parameters() const { return parameters_; }
+  /// The front end writes the record's drawing (--svg/--dxf given; a case run, whose report
+  /// shows it). An analysis whose drawing needs work of its own (the hinge's aperture) does that
+  /// work, and reports its results, only then.
+  bool drawing_wanted() const { return drawing_wanted_; }
+  void want_drawing(bool wanted = true) { drawing_wanted_ = wanted; }
 
  private:
   const std::vector<Parameter>* parameters_ = nullptr;
+  bool drawing_wanted_ = false;
   std::map<std::string, InputValue, std::less<>> values_;
 };
 

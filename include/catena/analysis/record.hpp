@@ -40,7 +40,8 @@ struct Grid {
 struct Column {
   std::string name;
   std::vector<double> values;
-  int digits = 12;  ///< significant digits written
+  int digits = 12;         ///< significant digits written
+  bool blank_nan = false;  ///< NaN written as an empty cell (an optional value that is absent)
 };
 
 struct Record {

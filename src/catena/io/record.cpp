@@ -87,8 +87,10 @@ std::string to_csv(const std::vector<analysis::Column>& columns) {
   const std::size_t n = columns.empty() ? 0 : columns.front().values.size();
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t c = 0; c < columns.size(); ++c) {
+      const double v = i < columns[c].values.size() ? columns[c].values[i] : NAN;
       out << (c ? "," : "");
-      if (i < columns[c].values.size()) out << format_g(columns[c].values[i], columns[c].digits);
+      if (i < columns[c].values.size() && !(columns[c].blank_nan && std::isnan(v)))
+        out << format_g(v, columns[c].digits);
     }
     out << "\n";
   }
