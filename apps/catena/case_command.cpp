@@ -309,37 +309,6 @@ const std::vector<AnalysisSpec>& analysis_specs() {
        },
        {{"rolling-hinge", {{"--hinge", "rolling"}, {}}},
         {"sliding-hinge", {{"--hinge", "sliding"}, {"plate_radius", "roller_radius"}}}}},
-      {"ring",
-       {"ring"},
-       "Fibre-reinforced polymer link: orthotropic ring on two rigid half-discs (seed 002)",
-       "docs/models/composite.md",
-       {"composite-link"},
-       {},
-       {},
-       [](const ordered_json& r, io::ReportSection& s) {
-         // hoop stress across the two sections, and the contact pressure along the pin
-         io::ReportChart c;
-         c.title = "Hoop stress across the sections phi = 0 and phi = 90 deg";
-         c.x_label = "r [mm]";
-         c.y_label = "sigma_phi [MPa]";
-         for (const char* key : {"0", "90"}) {
-           const ordered_json& sec = r["sections"][key];
-           std::vector<double> x, y;
-           for (const auto& v : sec["r"]) x.push_back(v.get<double>() * 1e3);
-           for (const auto& v : sec["sigma_phi"]) y.push_back(v.get<double>() * 1e-6);
-           c.traces.push_back({std::string("phi = ") + key + " deg", x, y});
-         }
-         s.charts.push_back(c);
-         io::ReportChart p;
-         p.title = "Contact pressure on the pin";
-         p.x_label = "phi [deg]";
-         p.y_label = "pressure [MPa]";
-         std::vector<double> x, y;
-         for (const auto& v : r["contact"]["phi"]) x.push_back(v.get<double>() * 180.0 / M_PI);
-         for (const auto& v : r["contact"]["pressure"]) y.push_back(v.get<double>() * 1e-6);
-         p.traces.push_back({"pressure", x, y});
-         s.charts.push_back(p);
-       }},
       {"loop",
        {"loop"},
        "Conveyor loop: chain tension at every point by the contour method (seed 000 §1.5 fig. 19)",
@@ -606,8 +575,8 @@ CaseRun run_case(const io::CaseFile& file) {
         }
       }
       const analysis::Analysis::Variant* variant = nullptr;
-      for (const auto& [type, v] : a->variants) {
-        if (type == chain_type) variant = &v;
+      for (const auto& [variant_type, v] : a->variants) {
+        if (variant_type == chain_type) variant = &v;
       }
       for (const auto& [key, v] : shared) {
         const analysis::Parameter* param = a->parameter(key);
@@ -851,11 +820,11 @@ io::Report build_report(const CaseRun& run) {
   }
   for (const AnalysisRun& r : run.runs) {
     const std::string& base = r.analysis ? r.analysis->name : r.spec->name;
-    std::string title = r.analysis ? r.analysis->title : r.spec->title;
-    if (r.name != base) title += " — " + r.name.substr(base.size() + 1);
+    std::string section_title = r.analysis ? r.analysis->title : r.spec->title;
+    if (r.name != base) section_title += " — " + r.name.substr(base.size() + 1);
     const std::string& docs = r.analysis ? r.analysis->docs : r.spec->docs;
     if (r.analysis) {
-      report.sections.push_back(io::report_section(r.record, r.name, title, docs));
+      report.sections.push_back(io::report_section(r.record, r.name, section_title, docs));
       continue;
     }
     // a subcommand not yet on the analysis interface: its JSON, charts and captured drawing
@@ -874,7 +843,7 @@ io::Report build_report(const CaseRun& run) {
       diagnostic.limit = d.at("limit").is_number() ? d.at("limit").as_number() : NAN;
       record.diagnostics.push_back(diagnostic);
     }
-    io::ReportSection s = io::report_section(record, r.name, title, docs);
+    io::ReportSection s = io::report_section(record, r.name, section_title, docs);
     if (r.spec->charts) r.spec->charts(r.result, s);
     for (const auto& [flag, content] : r.files) {
       if (flag == "--svg") s.drawings_svg.push_back(content);
@@ -901,14 +870,11 @@ struct CaseFlags {
 }  // namespace
 
 std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
-  std::map<std::string, std::function<int()>> actions = {{"hinge", add_hinge(app)},
-                                                         {"contact", add_contact(app)},
-                                                         {"fretting", add_fretting(app)},
-                                                         {"warp", add_warp(app)},
-                                                         {"engagement", add_engagement(app)},
-                                                         {"ring", add_ring(app)},
-                                                         {"loop", add_loop(app)},
-                                                         {"strength", add_strength(app)}};
+  std::map<std::string, std::function<int()>> actions = {
+      {"hinge", add_hinge(app)},           {"contact", add_contact(app)},
+      {"fretting", add_fretting(app)},     {"warp", add_warp(app)},
+      {"engagement", add_engagement(app)}, {"loop", add_loop(app)},
+      {"strength", add_strength(app)}};
   // the analyses of the registry; one below another (hinge sweep) runs when its own name was
   // parsed, else its parent's action
   std::map<std::string, std::vector<std::pair<CLI::App*, std::function<int()>>>> children;

@@ -30,13 +30,6 @@ std::function<int()> add_warp(CLI::App& app);
 std::function<int()> add_strength(CLI::App& app);
 /// Registers `catena engagement`.
 std::function<int()> add_engagement(CLI::App& app);
-/// Registers `catena ring` (seed 002 composite link).
-std::function<int()> add_ring(CLI::App& app);
-
-/// Register `capacity` (eq. (9), mass comparison) and `design` (sizing) as subcommands of the
-/// given `catena ring` App; the ring action runs the returned action when its subcommand parsed.
-std::function<int()> add_ring_capacity(CLI::App& ring);
-std::function<int()> add_ring_design(CLI::App& ring);
 /// Registers `catena loop FILE` (conveyor loop tensions, seed 000 §1.5 fig. 19). It reads the
 /// [loop] table of a TOML file, so the case runner hands it the case file's path.
 std::function<int()> add_loop(CLI::App& app);

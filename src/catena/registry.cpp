@@ -2,6 +2,7 @@
 #include <stdexcept>
 
 #include "catena/catena.hpp"
+#include "catena/composite/analysis.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/pocketwheel/analysis.hpp"
 
@@ -10,6 +11,9 @@ namespace catena {
 const std::vector<const analysis::Analysis*>& analyses() {
   static const std::vector<const analysis::Analysis*> all = {
       &pocketwheel::run_on_analysis(),
+      &composite::ring_analysis(),
+      &composite::ring_capacity_analysis(),
+      &composite::ring_design_analysis(),
   };
   return all;
 }

@@ -71,7 +71,11 @@ INSTANTIATE_TEST_SUITE_P(
         Accepted{"150", QuantityKind::kForcePerLength, 150.0},  // bare: N/m
         Accepted{"0.15 kN/m", QuantityKind::kForcePerLength, 150.0},
         Accepted{"0.15 N/mm", QuantityKind::kForcePerLength, 150.0},
-        Accepted{"10 kgf/m", QuantityKind::kForcePerLength, 98.0665}));
+        Accepted{"10 kgf/m", QuantityKind::kForcePerLength, 98.0665},
+        Accepted{"22.7mm^2", QuantityKind::kArea, 22.7e-6},
+        Accepted{"22.7", QuantityKind::kArea, 22.7e-6},  // bare: mm^2
+        Accepted{"2.56g/cm^3", QuantityKind::kDensity, 2560.0},
+        Accepted{"1200", QuantityKind::kDensity, 1200.0}));  // bare: kg/m^3
 
 struct Rejected {
   const char* text;
@@ -117,7 +121,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Rejected{"5 m", QuantityKind::kSpeed, "wrong dimension"},
                       Rejected{"15 kg/m", QuantityKind::kForcePerLength, "kgf/m"},
                       Rejected{"150 N", QuantityKind::kForcePerLength, "wrong dimension"},
-                      Rejected{"150 Pa", QuantityKind::kForcePerLength, "wrong dimension"}));
+                      Rejected{"150 Pa", QuantityKind::kForcePerLength, "wrong dimension"},
+                      Rejected{"3kg", QuantityKind::kArea, "wrong dimension"},
+                      Rejected{"1200 kg/m", QuantityKind::kDensity, "wrong dimension"}));
 
 TEST(Quantity, ThrowingOverloadCarriesTheIssue) {
   try {

@@ -105,6 +105,10 @@ const char* accepted_spellings(QuantityKind kind) {
       return "a speed, e.g. 0.5 m/s, 30 m/min (bare number: m/s)";
     case QuantityKind::kForcePerLength:
       return "a weight (force) per length, e.g. 150 N/m, 0.15 kN/m, 15 kgf/m (bare number: N/m)";
+    case QuantityKind::kArea:
+      return "an area, e.g. 22.7mm^2, 22.7 mm2, 0.227 cm^2 (bare number: mm^2)";
+    case QuantityKind::kDensity:
+      return "a density, e.g. 2.56g/cm^3, 1200 kg/m^3 (bare number: kg/m^3)";
   }
   return "a quantity";
 }
@@ -132,6 +136,10 @@ const char* target_spelling(QuantityKind kind) {
       return "m/s";
     case QuantityKind::kForcePerLength:
       return "N/m";
+    case QuantityKind::kArea:
+      return "m^2";
+    case QuantityKind::kDensity:
+      return "kg/m^3";
   }
   return "1";
 }
@@ -176,6 +184,10 @@ const char* si_unit(QuantityKind kind) {
       return "m/s";
     case QuantityKind::kForcePerLength:
       return "N/m";
+    case QuantityKind::kArea:
+      return "m^2";
+    case QuantityKind::kDensity:
+      return "kg/m^3";
   }
   return "1";
 }
@@ -202,6 +214,10 @@ const char* default_unit(QuantityKind kind) {
       return "m/s";
     case QuantityKind::kForcePerLength:
       return "N/m";
+    case QuantityKind::kArea:
+      return "mm^2";
+    case QuantityKind::kDensity:
+      return "kg/m^3";
   }
   return "1";
 }
