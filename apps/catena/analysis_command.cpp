@@ -8,6 +8,7 @@
 #include <memory>
 #include <sstream>
 
+#include "catena/catena.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/io/case_file.hpp"
 #include "catena/io/drawing.hpp"
@@ -195,6 +196,31 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
     if (!state->csv.empty()) std::cerr << "catena: wrote the series to " << state->csv << "\n";
     return 0;
   };
+}
+
+std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
+  std::map<std::string, std::function<int()>> actions;
+  // one below another (hinge sweep) runs when its own name was parsed, else its parent's action
+  std::map<std::string, std::vector<std::pair<CLI::App*, std::function<int()>>>> children;
+  for (const analysis::Analysis* a : catena::analyses()) {
+    std::function<int()> action = add_analysis(app, *a);
+    if (a->command.size() == 1) {
+      actions[a->command.front()] = std::move(action);
+      continue;
+    }
+    CLI::App* sub = app.get_subcommand(a->command.front());
+    for (std::size_t i = 1; i < a->command.size(); ++i) sub = sub->get_subcommand(a->command[i]);
+    children[a->command.front()].push_back({sub, std::move(action)});
+  }
+  for (auto& [name, subs] : children) {
+    actions[name] = [own = actions[name], subs = subs]() {
+      for (const auto& [sub, action] : subs) {
+        if (sub->parsed()) return action();
+      }
+      return own();
+    };
+  }
+  return actions;
 }
 
 }  // namespace catena::cli

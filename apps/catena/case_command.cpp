@@ -1,19 +1,12 @@
 // catena run CASE / catena report [CASE]: one TOML case file describes a chain system; every
-// analysis it names runs through the very subcommand a user would call (same flags, same
-// validation, same JSON), and the results become one JSON tree or one HTML report.
-//
-// Adding a model to case files and reports: register its subcommand in register_analyses()
-// and describe it in analysis_specs() (which chain types it applies to, its charts).
+// analysis it names binds its [analyses.<name>] table and the shared tables straight onto that
+// analysis' parameter table (the registry's), runs, and becomes part of one JSON tree or one
+// HTML report. Nothing here knows a model: a model added to the registry is in case files too.
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <nlohmann/json.hpp>
-#include <numbers>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -33,94 +26,38 @@ std::string_view default_case_toml();  // embedded examples/000_thesis_rolling_h
 
 namespace {
 
-using nlohmann::ordered_json;
+using analysis::Analysis;
+using analysis::Parameter;
+using analysis::ParameterType;
+using analysis::Value;
 
-// ---------------------------------------------------------------------------------------------
-// The registry
-
-using ChartBuilder = std::function<void(const ordered_json& result, io::ReportSection& section)>;
-
-struct AnalysisSpec {
-  std::string name;                  ///< [analyses.<name>] in the case file
-  std::vector<std::string> command;  ///< the subcommand path: {"hinge", "sweep"}
-  std::string title;
-  std::string docs;
-  std::vector<std::string> chain_types;  ///< chain.type values it applies to
-  std::set<std::string> not_shared;      ///< keys it must not take from the shared tables
-  std::vector<std::string> extra_args;   ///< appended to the flags (e.g. a drawing to capture)
-  ChartBuilder charts;
-  /// Per chain type: flags the chain type implies (strength: --hinge rolling) and shared keys
-  /// that do not apply to it (a rolling hinge takes no sliding friction from [material]).
-  struct ChainVariant {
-    std::vector<std::string> args;
-    std::set<std::string> not_shared;
-  };
-  std::map<std::string, ChainVariant> variants = {};
-};
-
+// The case-file schema around the analyses (docs/case_files.md).
 const std::vector<std::string> kChainTypes = {"rolling-hinge", "sliding-hinge", "roller-iso606",
                                               "round-link", "composite-link"};
-// Shared tables: a key there goes to every analysis that has a flag of that name.
+// Shared tables: a key there goes to every analysis that has a parameter of that name.
 const std::vector<std::string> kSharedTables = {"chain", "sprocket", "loads", "material"};
-// Keys of the shared tables that describe rather than feed a flag, and renamed keys.
+// Keys of the shared tables that describe rather than feed a parameter, and renamed keys.
 const std::set<std::string> kDescriptive = {"chain.type", "chain.name", "chain.description"};
 const std::map<std::string, std::string> kAliases = {{"chain.designation", "chain"}};
-// Flags that choose output destinations: the case runner owns those.
+// Options that choose output destinations: the case runner owns those.
 const std::set<std::string> kOutputFlags = {"help", "format", "output", "csv",
                                             "svg",  "dxf",    "example"};
 
-const std::vector<AnalysisSpec>& analysis_specs() {
-  static const std::vector<AnalysisSpec> specs = {
-      {"ring",
-       {"ring"},
-       "Fibre-reinforced polymer link: orthotropic ring on two rigid half-discs (seed 002)",
-       "docs/models/composite.md",
-       {"composite-link"},
-       {},
-       {},
-       [](const ordered_json& r, io::ReportSection& s) {
-         // hoop stress across the two sections, and the contact pressure along the pin
-         io::ReportChart c;
-         c.title = "Hoop stress across the sections phi = 0 and phi = 90 deg";
-         c.x_label = "r [mm]";
-         c.y_label = "sigma_phi [MPa]";
-         for (const char* key : {"0", "90"}) {
-           const ordered_json& sec = r["sections"][key];
-           std::vector<double> x, y;
-           for (const auto& v : sec["r"]) x.push_back(v.get<double>() * 1e3);
-           for (const auto& v : sec["sigma_phi"]) y.push_back(v.get<double>() * 1e-6);
-           c.traces.push_back({std::string("phi = ") + key + " deg", x, y});
-         }
-         s.charts.push_back(c);
-         io::ReportChart p;
-         p.title = "Contact pressure on the pin";
-         p.x_label = "phi [deg]";
-         p.y_label = "pressure [MPa]";
-         std::vector<double> x, y;
-         for (const auto& v : r["contact"]["phi"]) x.push_back(v.get<double>() * 180.0 / M_PI);
-         for (const auto& v : r["contact"]["pressure"]) y.push_back(v.get<double>() * 1e-6);
-         p.traces.push_back({"pressure", x, y});
-         s.charts.push_back(p);
-       }},
-  };
-  return specs;
+std::string joined(const std::vector<std::string>& items) {
+  std::string s;
+  for (const std::string& item : items) s += (s.empty() ? "" : ", ") + item;
+  return s;
 }
 
-// ---------------------------------------------------------------------------------------------
-// Running the analyses of a case
+std::string suggest(const std::string& word, const std::vector<std::string>& candidates) {
+  const auto m = io::did_you_mean(word, candidates);
+  return m ? " (did you mean '" + *m + "'?)" : std::string();
+}
 
-struct AnalysisRun {
-  const AnalysisSpec* spec;  ///< a subcommand not yet on the analysis interface, or nullptr
-  std::string name;  ///< the table's name: the spec's, or "<spec>-<label>" for one of several
-  ordered_json result;
-  std::vector<std::pair<std::string, std::string>> files;  // captured (flag, content)
-  const analysis::Analysis* analysis = nullptr;            ///< an analysis of the registry
-  analysis::Record record;                                 ///< its record
-};
-
-// The registry analysis a case table names ("pocketwheel" or "pocketwheel-<label>").
-const analysis::Analysis* registry_analysis(const std::string& name) {
-  for (const analysis::Analysis* a : catena::analyses()) {
+// The analysis a case table names: "pocketwheel", or "pocketwheel-<label>" for one of several
+// runs of it (pocketwheel-free, pocketwheel-chordal).
+const Analysis* analysis_named(const std::string& name) {
+  for (const Analysis* a : catena::analyses()) {
     if (a->name == name || name.rfind(a->name + "-", 0) == 0) return a;
   }
   return nullptr;
@@ -140,113 +77,73 @@ io::RawInput::Type raw_type(io::CaseValue::Type type) {
   return io::RawInput::Type::kOther;
 }
 
+struct AnalysisRun {
+  const Analysis* analysis;
+  std::string name;  ///< the table's name: the analysis', or "<name>-<label>"
+  analysis::Record record;
+};
+
 struct CaseRun {
   io::CaseFile file;
   std::string hash;
   std::vector<AnalysisRun> runs;
 };
 
-// The options a subcommand path accepts, by case-file key (flag name with '_' for '-').
-std::map<std::string, CLI::Option*> case_keys(CLI::App& app, const AnalysisSpec& spec) {
-  std::map<std::string, CLI::Option*> keys;
-  CLI::App* cmd = &app;
-  for (const std::string& name : spec.command) {
-    cmd = cmd->get_subcommand(name);
-    for (CLI::Option* o : cmd->get_options()) {
-      if (o->get_lnames().empty()) continue;
-      std::string key = o->get_lnames().front();
-      if (kOutputFlags.count(key)) continue;
-      for (char& c : key) c = c == '-' ? '_' : c;
-      keys[key] = o;
+// One [analyses.<name>] table bound to its analysis' parameters, ready to run.
+struct Planned {
+  const Analysis* analysis;
+  std::string name;
+  std::vector<io::RawInput> raw;
+  std::map<std::string, std::string> path_of;  ///< parameter key → the case-file path it came from
+};
+
+// The file's structure: top-level keys and tables, chain.type. Returns the chain type ("" when
+// missing or unknown: the problem is recorded).
+std::string check_structure(const io::CaseFile& file, std::vector<Issue>& issues) {
+  std::vector<std::string> top = {"title", "description", "chain", "sprocket", "loads", "material"};
+  for (const Analysis* a : catena::analyses()) {
+    for (const Parameter& p : a->parameters) {
+      if (p.type == ParameterType::kTable && std::find(top.begin(), top.end(), p.name) == top.end())
+        top.push_back(p.name);  // [loop]
     }
   }
-  if (spec.command.size() > 1) {
-    for (const std::string& k : spec.not_shared) keys.erase(k);
-  }
-  // flags implied by chain.type (strength's --hinge) are not the case file's to set
-  for (const auto& [type, variant] : spec.variants) {
-    for (const std::string& a : variant.args) {
-      if (a.rfind("--", 0) != 0) continue;
-      std::string key = a.substr(2);
-      for (char& c : key) c = c == '-' ? '_' : c;
-      keys.erase(key);
-    }
-  }
-  return keys;
-}
-
-std::string default_unit_of(const CLI::Option* option) {
-  static const std::regex bare(R"(bare(?: number)?: ([^;,)]+))");
-  std::smatch m;
-  const std::string& d = option->get_description();
-  return std::regex_search(d, m, bare) ? m[1].str() : std::string();
-}
-
-CaseRun run_case(const io::CaseFile& file) {
-  CaseRun out{file, io::sha256_hex(file.text), {}};
-  std::vector<Issue> issues;
-  const auto& specs = analysis_specs();
-
-  // every key any analysis takes, for the shared tables and for suggestions
-  CLI::App probe;
-  register_analyses(probe);
-  std::map<std::string, std::map<std::string, CLI::Option*>> keys_of;
-  std::set<std::string> any_key;
-  for (const AnalysisSpec& spec : specs) {
-    keys_of[spec.name] = case_keys(probe, spec);
-    for (const auto& [k, o] : keys_of[spec.name]) any_key.insert(k);
-  }
-  for (const analysis::Analysis* a : catena::analyses()) {
-    for (const analysis::Parameter& p : a->parameters) {
-      if (!p.cli_only) any_key.insert(p.name);
-    }
-  }
-  std::vector<std::string> spec_names;
-  for (const analysis::Analysis* a : catena::analyses()) spec_names.push_back(a->name);
-  for (const AnalysisSpec& spec : specs) spec_names.push_back(spec.name);
-
-  auto suggest = [](const std::string& word, const std::vector<std::string>& candidates) {
-    const auto m = io::did_you_mean(word, candidates);
-    return m ? " (did you mean '" + *m + "'?)" : std::string();
-  };
-
-  // the file's structure: top-level keys, shared tables, analyses
-  const std::vector<std::string> top = {"title", "description", "chain",    "sprocket",
-                                        "loads", "material",    "analyses", "loop"};
+  top.push_back("analyses");
   for (const io::CaseValue& v : file.values) {
     const std::string head = v.path.substr(0, v.path.find('.'));
-    if (std::find(top.begin(), top.end(), head) == top.end()) {
-      issues.push_back({v.path, v.text,
-                        "a known key: title, description, chain, sprocket, loads, "
-                        "material, loop, analyses" +
-                            suggest(head, top)});
-    }
+    if (std::find(top.begin(), top.end(), head) == top.end())
+      issues.push_back({v.path, v.text, "a known key: " + joined(top) + suggest(head, top)});
   }
   for (const std::string& t : file.tables) {
     const std::string head = t.substr(0, t.find('.'));
     if (std::find(top.begin(), top.end(), head) == top.end() && t.find('.') == std::string::npos)
       issues.push_back(
           {t, "(table)",
-           "a known table: chain, sprocket, loads, material, loop, analyses" + suggest(head, top)});
+           "a known table: " + joined({top.begin() + 2, top.end()}) + suggest(head, top)});
   }
   const io::CaseValue* type = file.find("chain.type");
-  std::string chain_type;
   if (!type) {
-    issues.push_back({"chain.type", "(missing)",
-                      "one of rolling-hinge, sliding-hinge, "
-                      "roller-iso606, round-link, composite-link"});
-  } else if (std::find(kChainTypes.begin(), kChainTypes.end(), type->text) == kChainTypes.end()) {
-    issues.push_back({"chain.type", "'" + type->text + "'",
-                      "one of rolling-hinge, sliding-hinge, roller-iso606, round-link, "
-                      "composite-link" +
-                          suggest(type->text, kChainTypes)});
-  } else {
-    chain_type = type->text;
+    issues.push_back({"chain.type", "(missing)", "one of " + joined(kChainTypes)});
+    return "";
   }
+  if (std::find(kChainTypes.begin(), kChainTypes.end(), type->text) == kChainTypes.end()) {
+    issues.push_back({"chain.type", "'" + type->text + "'",
+                      "one of " + joined(kChainTypes) + suggest(type->text, kChainTypes)});
+    return "";
+  }
+  return type->text;
+}
 
-  // shared values: key → value; each must feed at least one analysis
+// Shared values, key → value; each must feed at least one analysis.
+std::map<std::string, const io::CaseValue*> shared_values(const io::CaseFile& file,
+                                                          std::vector<Issue>& issues) {
+  std::set<std::string> any_key;
+  for (const Analysis* a : catena::analyses()) {
+    for (const Parameter& p : a->parameters) {
+      if (!p.cli_only) any_key.insert(p.name);
+    }
+  }
+  const std::vector<std::string> candidates(any_key.begin(), any_key.end());
   std::map<std::string, const io::CaseValue*> shared;
-  std::vector<std::string> shared_candidates(any_key.begin(), any_key.end());
   for (const io::CaseValue& v : file.values) {
     const std::string head = v.path.substr(0, v.path.find('.'));
     if (std::find(kSharedTables.begin(), kSharedTables.end(), head) == kSharedTables.end())
@@ -261,7 +158,7 @@ CaseRun run_case(const io::CaseFile& file) {
     const std::string key = alias != kAliases.end() ? alias->second : rest;
     if (!any_key.count(key)) {
       issues.push_back({v.path, v.text,
-                        "a key some analysis takes" + suggest(rest, shared_candidates) +
+                        "a key some analysis takes" + suggest(rest, candidates) +
                             " (docs/case_files.md lists them)"});
       continue;
     }
@@ -272,248 +169,139 @@ CaseRun run_case(const io::CaseFile& file) {
     }
     shared[key] = &v;
   }
+  return shared;
+}
 
-  // the analyses, in file order
-  const std::vector<std::string> wanted = file.children("analyses");
+// The analysis' own table, then the shared values it takes, then what the chain type implies.
+Planned plan(const Analysis& a, const std::string& name, const io::CaseFile& file,
+             const std::string& chain_type,
+             const std::map<std::string, const io::CaseValue*>& shared,
+             std::vector<Issue>& issues) {
+  Planned p{&a, name, {}, {}};
+  std::vector<std::string> key_names;
+  for (const Parameter& param : a.parameters) {
+    if (!param.cli_only && !kOutputFlags.count(param.name)) key_names.push_back(param.name);
+  }
+  std::map<std::string, const io::CaseValue*> given;
+  const std::string prefix = "analyses." + name + ".";
+  for (const io::CaseValue& v : file.values) {
+    if (v.path.rfind(prefix, 0) != 0) continue;
+    const std::string key = v.path.substr(prefix.size());
+    const Parameter* param = a.parameter(key);
+    if (kOutputFlags.count(key)) {
+      issues.push_back({v.path, v.text,
+                        "no output option in a case file: 'catena report' and "
+                        "'catena run' choose the outputs"});
+    } else if (!param || param->cli_only) {
+      issues.push_back({v.path, v.text,
+                        "an option of '" + name + "'" + suggest(key, key_names) +
+                            " (docs/cli.md lists them; '_' for '-')"});
+    } else {
+      given[key] = &v;
+    }
+  }
+  const Analysis::Variant* variant = nullptr;
+  for (const auto& [variant_type, v] : a.variants) {
+    if (variant_type == chain_type) variant = &v;
+  }
+  for (const auto& [key, v] : shared) {
+    const Parameter* param = a.parameter(key);
+    const bool excluded =
+        variant && std::find(variant->not_shared.begin(), variant->not_shared.end(), key) !=
+                       variant->not_shared.end();
+    if (param && !param->cli_only && !param->not_shared && !given.count(key) && !excluded)
+      given[key] = v;
+  }
+  for (const auto& [key, v] : given) {
+    p.path_of[key] = v->path;
+    p.raw.push_back({key, v->text, raw_type(v->type), {}, {}});
+  }
+  for (const Parameter& param : a.parameters) {
+    // a table parameter reads the case file's own table ([loop] and [[loop.segment]])
+    if (param.type == ParameterType::kTable) p.raw.push_back(io::table_input(file, param));
+  }
+  if (variant) {
+    for (const auto& [key, value] : variant->set) {
+      const Parameter* param = a.parameter(key);
+      const bool is_flag = param && param->type == ParameterType::kFlag;
+      p.raw.push_back(
+          {key, value, is_flag ? io::RawInput::Type::kBoolean : io::RawInput::Type::kText, {}, {}});
+    }
+  }
+  return p;
+}
+
+// Binds and runs one planned analysis; its problems are named by the case file's paths.
+void run_planned(const Planned& p, CaseRun& out, std::vector<Issue>& issues) {
+  const std::string where = "analyses." + p.name;
+  std::vector<Issue> found;
+  analysis::Inputs inputs = io::bind(*p.analysis, p.raw, found);
+  inputs.want_drawing();  // the report shows the drawing
+  if (found.empty()) {
+    try {
+      out.runs.push_back({p.analysis, p.name, p.analysis->evaluate(inputs)});
+    } catch (const InputError& e) {
+      found = e.issues();
+    }
+  }
+  for (Issue issue : found) {
+    // name the case-file path the value came from, or where a missing one belongs
+    const auto path = p.path_of.find(issue.field);
+    if (!p.analysis->renames(issue.field)) {
+      // it names the case file's own path and line already
+    } else if (path != p.path_of.end()) {
+      issue.field = path->second;
+    } else if (p.analysis->parameter(issue.field)) {
+      issue.field = where + "." + issue.field;
+    } else {  // a model's field: named as the command line names it
+      std::string flag = "--" + issue.field;
+      for (char& c : flag) c = c == '_' ? '-' : c;
+      issue.field = where + " (" + flag + ")";
+    }
+    issues.push_back(std::move(issue));
+  }
+}
+
+CaseRun run_case(const io::CaseFile& file) {
+  CaseRun out{file, io::sha256_hex(file.text), {}};
+  std::vector<Issue> issues;
+  const std::string chain_type = check_structure(file, issues);
+  const auto shared = shared_values(file, issues);
+
+  std::vector<std::string> names;
+  for (const Analysis* a : catena::analyses()) {
+    if (!a->chain_types.empty()) names.push_back(a->name);
+  }
+  const std::vector<std::string> wanted = file.children("analyses");  // in file order
   for (const io::CaseValue& v : file.values) {
     if (v.path.rfind("analyses.", 0) == 0 &&
         v.path.find('.', std::string("analyses.").size()) == std::string::npos)
       issues.push_back({v.path, v.text, "a table [" + v.path + "] of that analysis' options"});
   }
   if (wanted.empty() && file.find("analyses") == nullptr) {
-    issues.push_back({"analyses", "(missing)",
-                      "at least one [analyses.<name>] table; names: pocketwheel, hinge, "
-                      "hinge_sweep, contact, fretting, engagement, warp, ring, loop, strength"});
+    issues.push_back(
+        {"analyses", "(missing)", "at least one [analyses.<name>] table; names: " + joined(names)});
   }
-  struct Planned {
-    const AnalysisSpec* spec;
-    std::string name;
-    std::vector<std::string> args;
-    std::map<std::string, std::string> flag_to_path;
-    const analysis::Analysis* analysis = nullptr;
-    std::vector<io::RawInput> raw;
-  };
   std::vector<Planned> planned;
   for (const std::string& name : wanted) {
-    if (const analysis::Analysis* a = registry_analysis(name)) {
-      if (!chain_type.empty() && std::find(a->chain_types.begin(), a->chain_types.end(),
-                                           chain_type) == a->chain_types.end()) {
-        std::string types;
-        for (const auto& t : a->chain_types) types += (types.empty() ? "" : ", ") + t;
-        issues.push_back({"analyses." + name, "(table)",
-                          "an analysis for chain.type = " + chain_type + "; '" + name +
-                              "' applies to " + types});
-        continue;
-      }
-      std::vector<std::string> key_names;
-      for (const analysis::Parameter& p : a->parameters) {
-        if (!p.cli_only && !kOutputFlags.count(p.name)) key_names.push_back(p.name);
-      }
-      Planned p{nullptr, name, {}, {}, a, {}};
-      std::map<std::string, const io::CaseValue*> given;
-      const std::string prefix = "analyses." + name + ".";
-      for (const io::CaseValue& v : file.values) {
-        if (v.path.rfind(prefix, 0) != 0) continue;
-        const std::string key = v.path.substr(prefix.size());
-        const analysis::Parameter* param = a->parameter(key);
-        if (kOutputFlags.count(key)) {
-          issues.push_back({v.path, v.text,
-                            "no output option in a case file: 'catena report' and "
-                            "'catena run' choose the outputs"});
-        } else if (!param || param->cli_only) {
-          issues.push_back({v.path, v.text,
-                            "an option of '" + name + "'" + suggest(key, key_names) +
-                                " (docs/cli.md lists them; '_' for '-')"});
-        } else {
-          given[key] = &v;
-        }
-      }
-      const analysis::Analysis::Variant* variant = nullptr;
-      for (const auto& [variant_type, v] : a->variants) {
-        if (variant_type == chain_type) variant = &v;
-      }
-      for (const auto& [key, v] : shared) {
-        const analysis::Parameter* param = a->parameter(key);
-        const bool excluded =
-            variant && std::find(variant->not_shared.begin(), variant->not_shared.end(), key) !=
-                           variant->not_shared.end();
-        if (param && !param->cli_only && !param->not_shared && !given.count(key) && !excluded)
-          given[key] = v;
-      }
-      for (const auto& [key, v] : given) {
-        p.flag_to_path[key] = v->path;
-        p.raw.push_back({key, v->text, raw_type(v->type), {}, {}});
-      }
-      for (const analysis::Parameter& param : a->parameters) {
-        // a table parameter reads the case file's own table ([loop] and [[loop.segment]])
-        if (param.type == analysis::ParameterType::kTable)
-          p.raw.push_back(io::table_input(file, param));
-      }
-      if (variant) {
-        for (const auto& [key, value] : variant->set) {
-          const analysis::Parameter* param = a->parameter(key);
-          const bool is_flag = param && param->type == analysis::ParameterType::kFlag;
-          p.raw.push_back({key,
-                           value,
-                           is_flag ? io::RawInput::Type::kBoolean : io::RawInput::Type::kText,
-                           {},
-                           {}});
-        }
-      }
-      planned.push_back(std::move(p));
-      continue;
-    }
-    const auto it = std::find_if(specs.begin(), specs.end(), [&](const AnalysisSpec& s) {
-      // "pocketwheel" or "pocketwheel-<label>": several runs of one
-      // analysis, e.g. pocketwheel-free, pocketwheel-chordal
-      return s.name == name || name.rfind(s.name + "-", 0) == 0;
-    });
-    if (it == specs.end()) {
+    const Analysis* a = analysis_named(name);
+    if (a == nullptr || a->chain_types.empty()) {
       issues.push_back({"analyses." + name, "(table)",
-                        "an analysis Catena has: pocketwheel, hinge, hinge_sweep, contact, "
-                        "fretting, engagement, warp, ring, loop, strength" +
-                            suggest(name, spec_names)});
+                        "an analysis Catena has: " + joined(names) + suggest(name, names)});
       continue;
     }
-    const AnalysisSpec& spec = *it;
-    if (!chain_type.empty() && std::find(spec.chain_types.begin(), spec.chain_types.end(),
-                                         chain_type) == spec.chain_types.end()) {
-      std::string types;
-      for (const auto& t : spec.chain_types) types += (types.empty() ? "" : ", ") + t;
-      issues.push_back(
-          {"analyses." + name, "(table)",
-           "an analysis for chain.type = " + chain_type + "; '" + name + "' applies to " + types});
+    if (!chain_type.empty() && std::find(a->chain_types.begin(), a->chain_types.end(),
+                                         chain_type) == a->chain_types.end()) {
+      issues.push_back({"analyses." + name, "(table)",
+                        "an analysis for chain.type = " + chain_type + "; '" + name +
+                            "' applies to " + joined(a->chain_types)});
       continue;
     }
-    const auto& keys = keys_of[spec.name];
-    std::vector<std::string> key_names;
-    for (const auto& [k, o] : keys) key_names.push_back(k);
-    Planned p{&spec, name, {"catena"}, {}};
-    for (const std::string& c : spec.command) p.args.push_back(c);
-    std::map<std::string, const io::CaseValue*> given;
-    const std::string prefix = "analyses." + name + ".";
-    for (const io::CaseValue& v : file.values) {
-      if (v.path.rfind(prefix, 0) != 0) continue;
-      const std::string key = v.path.substr(prefix.size());
-      if (kOutputFlags.count(key)) {
-        issues.push_back({v.path, v.text,
-                          "no output option in a case file: 'catena report' and "
-                          "'catena run' choose the outputs"});
-      } else if (!keys.count(key)) {
-        issues.push_back({v.path, v.text,
-                          "an option of '" + name + "'" + suggest(key, key_names) +
-                              " (docs/cli.md lists them; '_' for '-')"});
-      } else {
-        given[key] = &v;
-      }
-    }
-    const auto variant = spec.variants.find(chain_type);
-    const AnalysisSpec::ChainVariant* chain_variant =
-        variant == spec.variants.end() ? nullptr : &variant->second;
-    for (const auto& [key, v] : shared) {
-      if (keys.count(key) && !given.count(key) && !spec.not_shared.count(key) &&
-          !(chain_variant && chain_variant->not_shared.count(key)))
-        given[key] = v;
-    }
-    for (const auto& [key, v] : given) {
-      const CLI::Option* option = keys.at(key);
-      const std::string flag = "--" + option->get_lnames().front();
-      p.flag_to_path[flag] = v->path;
-      const bool is_flag = option->get_expected_max() == 0;  // a flag takes no value
-      if (is_flag) {
-        if (v->type != io::CaseValue::Type::kBoolean) {
-          issues.push_back({v->path, v->text, "true or false"});
-        } else if (v->text == "true") {
-          p.args.push_back(flag);
-        }
-      } else if (v->type == io::CaseValue::Type::kBoolean ||
-                 v->type == io::CaseValue::Type::kOther) {
-        const std::string unit = default_unit_of(option);
-        issues.push_back({v->path, v->text,
-                          "a number or a string with a unit" +
-                              (unit.empty() ? std::string() : " (bare number: " + unit + ")")});
-      } else {
-        p.args.push_back(flag);
-        p.args.push_back(v->text);
-      }
-    }
-    for (const std::string& a : spec.extra_args) p.args.push_back(a);
-    if (chain_variant)
-      for (const std::string& a : chain_variant->args) p.args.push_back(a);
-    p.args.push_back("--format");
-    p.args.push_back("json");
-    planned.push_back(std::move(p));
+    planned.push_back(plan(*a, name, file, chain_type, shared, issues));
   }
-  // no stop here: the analyses that could be planned run too, so that a misspelt key and a
+  // no stop before: the analyses that could be planned run too, so that a misspelt key and a
   // wrong unit elsewhere are reported together
-
-  // run each through its own subcommand, collecting every analysis' input errors
-  for (const Planned& p : planned) {
-    if (p.analysis) {
-      const std::string where = "analyses." + p.name;
-      std::vector<Issue> found;
-      analysis::Inputs inputs = io::bind(*p.analysis, p.raw, found);
-      inputs.want_drawing();  // the report shows the drawing
-      AnalysisRun run{nullptr, p.name, {}, {}, p.analysis, {}};
-      if (found.empty()) {
-        try {
-          run.record = p.analysis->evaluate(inputs);
-          run.result = ordered_json::parse(io::to_json(run.record.data, -1));
-          out.runs.push_back(std::move(run));
-        } catch (const InputError& e) {
-          found = e.issues();
-        }
-      }
-      for (Issue issue : found) {
-        // name the case-file path the value came from, or where a missing one belongs
-        const auto path = p.flag_to_path.find(issue.field);
-        if (!p.analysis->renames(issue.field)) {
-          // it names the case file's own path and line already
-        } else if (path != p.flag_to_path.end()) {
-          issue.field = path->second;
-        } else if (p.analysis->parameter(issue.field)) {
-          issue.field = where + "." + issue.field;
-        } else {  // a model's field: named as the command line names it
-          std::string flag = "--" + issue.field;
-          for (char& c : flag) c = c == '_' ? '-' : c;
-          issue.field = where + " (" + flag + ")";
-        }
-        issues.push_back(std::move(issue));
-      }
-      continue;
-    }
-    CLI::App app;
-    const auto actions = register_analyses(app);
-    std::vector<const char*> argv;
-    for (const std::string& a : p.args) argv.push_back(a.c_str());
-    const std::string where = "analyses." + p.name;
-    try {
-      app.parse(static_cast<int>(argv.size()), argv.data());
-      Capture capture;
-      actions.at(p.spec->command.front())();
-      AnalysisRun run{p.spec, p.name, ordered_json::parse(capture.stdout_text),
-                      std::move(capture.files)};
-      out.runs.push_back(std::move(run));
-    } catch (const CLI::ParseError& e) {
-      issues.push_back({where, "(options)", std::string("valid options: ") + e.what()});
-    } catch (const InputError& e) {
-      const auto& keys = keys_of[p.spec->name];
-      for (Issue issue : e.issues()) {
-        // name the case-file path the value came from, or where a missing one belongs
-        std::string key = issue.field.rfind("--", 0) == 0 ? issue.field.substr(2) : "";
-        for (char& c : key) c = c == '-' ? '_' : c;
-        const auto path = p.flag_to_path.find(issue.field);
-        if (path != p.flag_to_path.end()) {
-          issue.field = path->second;
-        } else if (!key.empty() && keys.count(key)) {
-          issue.field = where + "." + key;
-        } else {
-          issue.field = where + " (" + issue.field + ")";
-        }
-        issues.push_back(std::move(issue));
-      }
-    }
-  }
+  for (const Planned& p : planned) run_planned(p, out, issues);
   throw_if_any(issues);
   return out;
 }
@@ -521,17 +309,35 @@ CaseRun run_case(const io::CaseFile& file) {
 // ---------------------------------------------------------------------------------------------
 // Outputs
 
-ordered_json result_tree(const CaseRun& run) {
-  ordered_json j;
+Value result_tree(const CaseRun& run) {
+  Value j = Value::object();
   j["catena_version"] = CATENA_VERSION;
   j["case"] = run.file.name;
   j["case_sha256"] = run.hash;
   const io::CaseValue* title = run.file.find("title");
   j["title"] = title ? title->text : run.file.name;
-  ordered_json analyses = ordered_json::object();
-  for (const AnalysisRun& r : run.runs) analyses[r.name] = r.result;
-  j["analyses"] = analyses;
+  Value analyses = Value::object();
+  for (const AnalysisRun& r : run.runs) analyses[r.name] = r.record.data;
+  j["analyses"] = std::move(analyses);
   return j;
+}
+
+// The unit a bare number in the case file takes: its parameter's (or its table field's).
+std::string bare_unit_at(const io::CaseValue& v) {
+  if (v.type != io::CaseValue::Type::kNumber) return "";
+  for (const Analysis* a : catena::analyses()) {
+    if (const Parameter* field = a->table_field(v.path)) return io::bare_unit(*field);
+  }
+  const auto alias = kAliases.find(v.path);
+  const std::string key =
+      alias != kAliases.end() ? alias->second : v.path.substr(v.path.rfind('.') + 1);
+  for (const Analysis* a : catena::analyses()) {
+    if (const Parameter* p = a->parameter(key)) {
+      const std::string unit = io::bare_unit(*p);
+      if (!unit.empty()) return unit;
+    }
+  }
+  return "";
 }
 
 io::Report build_report(const CaseRun& run) {
@@ -541,65 +347,14 @@ io::Report build_report(const CaseRun& run) {
   report.case_name = run.file.name;
   report.case_hash = run.hash;
   report.version = CATENA_VERSION;
-  CLI::App probe;
-  register_analyses(probe);
-  for (const io::CaseValue& v : run.file.values) {
-    std::string unit;
-    const analysis::Parameter* table_field = nullptr;
-    for (const analysis::Analysis* a : catena::analyses()) {
-      if (!table_field) table_field = a->table_field(v.path);
-    }
-    if (v.type == io::CaseValue::Type::kNumber && table_field) {
-      unit = io::bare_unit(*table_field);
-    } else if (v.type == io::CaseValue::Type::kNumber) {
-      // a bare number: name the default unit of the flag it feeds
-      const std::string key = v.path.substr(v.path.rfind('.') + 1);
-      const auto alias_key = kAliases.find(v.path);
-      const std::string parameter_key = alias_key != kAliases.end() ? alias_key->second : key;
-      for (const analysis::Analysis* a : catena::analyses()) {
-        const analysis::Parameter* p = a->parameter(parameter_key);
-        if (p && unit.empty()) unit = io::bare_unit(*p);
-      }
-      for (const AnalysisSpec& spec : analysis_specs()) {
-        const auto keys = case_keys(probe, spec);
-        const auto alias = kAliases.find(v.path);
-        const auto k = keys.find(alias != kAliases.end() ? alias->second : key);
-        if (k != keys.end() && unit.empty()) unit = default_unit_of(k->second);
-      }
-    }
-    report.inputs.push_back({v.path, v.text, unit});
-  }
+  for (const io::CaseValue& v : run.file.values)
+    report.inputs.push_back({v.path, v.text, bare_unit_at(v)});
   for (const AnalysisRun& r : run.runs) {
-    const std::string& base = r.analysis ? r.analysis->name : r.spec->name;
-    std::string section_title = r.analysis ? r.analysis->title : r.spec->title;
-    if (r.name != base) section_title += " — " + r.name.substr(base.size() + 1);
-    const std::string& docs = r.analysis ? r.analysis->docs : r.spec->docs;
-    if (r.analysis) {
-      report.sections.push_back(io::report_section(r.record, r.name, section_title, docs));
-      continue;
-    }
-    // a subcommand not yet on the analysis interface: its JSON, charts and captured drawing
-    analysis::Record record;
-    record.data = io::parse_json(r.result.dump());
-    for (const analysis::Value& d : record.data.at("diagnostics").is_array()
-                                        ? record.data.at("diagnostics").as_array()
-                                        : analysis::Value::Array{}) {
-      Diagnostic diagnostic;
-      const std::string severity =
-          d.at("severity").is_string() ? d.at("severity").as_string() : "warning";
-      diagnostic.severity = severity == "infeasible" ? Diagnostic::Severity::kInfeasible
-                            : severity == "info"     ? Diagnostic::Severity::kInfo
-                                                     : Diagnostic::Severity::kWarning;
-      diagnostic.message = d.at("message").is_string() ? d.at("message").as_string() : "";
-      diagnostic.limit = d.at("limit").is_number() ? d.at("limit").as_number() : NAN;
-      record.diagnostics.push_back(diagnostic);
-    }
-    io::ReportSection s = io::report_section(record, r.name, section_title, docs);
-    if (r.spec->charts) r.spec->charts(r.result, s);
-    for (const auto& [flag, content] : r.files) {
-      if (flag == "--svg") s.drawings_svg.push_back(content);
-    }
-    report.sections.push_back(std::move(s));
+    std::string section_title = r.analysis->title;
+    if (r.name != r.analysis->name)
+      section_title += " — " + r.name.substr(r.analysis->name.size() + 1);
+    report.sections.push_back(
+        io::report_section(r.record, r.name, section_title, r.analysis->docs));
   }
   return report;
 }
@@ -620,32 +375,6 @@ struct CaseFlags {
 
 }  // namespace
 
-std::map<std::string, std::function<int()>> register_analyses(CLI::App& app) {
-  std::map<std::string, std::function<int()>> actions = {{"ring", add_ring(app)}};
-  // the analyses of the registry; one below another (hinge sweep) runs when its own name was
-  // parsed, else its parent's action
-  std::map<std::string, std::vector<std::pair<CLI::App*, std::function<int()>>>> children;
-  for (const analysis::Analysis* a : catena::analyses()) {
-    if (a->command.size() == 1) {
-      actions[a->command.front()] = add_analysis(app, *a);
-    } else {
-      std::function<int()> action = add_analysis(app, *a);
-      CLI::App* sub = app.get_subcommand(a->command.front());
-      for (std::size_t i = 1; i < a->command.size(); ++i) sub = sub->get_subcommand(a->command[i]);
-      children[a->command.front()].push_back({sub, std::move(action)});
-    }
-  }
-  for (auto& [name, subs] : children) {
-    actions[name] = [own = actions[name], subs = subs]() {
-      for (const auto& [sub, action] : subs) {
-        if (sub->parsed()) return action();
-      }
-      return own();
-    };
-  }
-  return actions;
-}
-
 std::function<int()> add_run(CLI::App& app) {
   auto f = std::make_shared<CaseFlags>();
   CLI::App* c = app.add_subcommand(
@@ -653,9 +382,7 @@ std::function<int()> add_run(CLI::App& app) {
   c->add_option("CASE", f->path, "TOML case file (docs/case_files.md)")->required();
   c->add_option("-o,--output", f->output, "write the JSON to FILE instead of stdout");
   return [f]() {
-    const CaseRun run = run_case(load(f->path));
-    const std::string text = result_tree(run).dump(2) + "\n";
-    write_text_output(f->output, text);
+    write_text_output(f->output, io::to_json(result_tree(run_case(load(f->path)))));
     return 0;
   };
 }
@@ -672,14 +399,12 @@ std::function<int()> add_report(CLI::App& app) {
       ->check(CLI::IsMember({"html", "json"}));
   return [f]() {
     const CaseRun run = run_case(load(f->path));
-    Outputs outputs;
     if (f->format == "json") {
-      const std::string text = result_tree(run).dump(2) + "\n";
-      if (!f->output.empty()) outputs.add("--output", f->output, text);
-      outputs.commit(f->output.empty() ? text : "");
+      write_text_output(f->output, io::to_json(result_tree(run)));
       return 0;
     }
     const std::string path = f->output.empty() ? "report.html" : f->output;
+    Outputs outputs;
     outputs.add("--output", path, io::to_html(build_report(run), plotly_js()));
     outputs.commit();
     std::cerr << "catena: wrote " << path << " (" << run.runs.size()

@@ -19,17 +19,9 @@ namespace catena::cli {
 /// `root`), with a flag per parameter and the output options it offers; the returned action
 /// binds, runs, describes and writes, and returns the exit code.
 std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& analysis);
-/// Registers `catena ring` (seed 002 composite link).
-std::function<int()> add_ring(CLI::App& app);
 
-/// Register `capacity` (eq. (9), mass comparison) and `design` (sizing) as subcommands of the
-/// given `catena ring` App; the ring action runs the returned action when its subcommand parsed.
-std::function<int()> add_ring_capacity(CLI::App& ring);
-std::function<int()> add_ring_design(CLI::App& ring);
-
-/// Registers every analysis subcommand above on `app`; returns their actions by name. The case
-/// runner uses it too: a model added here (and described in case_command.cpp's registry) is
-/// reachable from case files and reports.
+/// Registers the subcommand of every analysis of the registry on `app`; returns their actions by
+/// top-level name (a sub-command's action runs from its parent's when its own name was parsed).
 std::map<std::string, std::function<int()>> register_analyses(CLI::App& app);
 /// Registers `catena run CASE` (JSON result tree) and `catena report [CASE]` (HTML report).
 std::function<int()> add_run(CLI::App& app);

@@ -2,6 +2,7 @@
 #include <stdexcept>
 
 #include "catena/catena.hpp"
+#include "catena/composite/analysis.hpp"
 #include "catena/contact/analysis.hpp"
 #include "catena/engagement/analysis.hpp"
 #include "catena/hinge/analysis.hpp"
@@ -15,10 +16,17 @@ namespace catena {
 
 const std::vector<const analysis::Analysis*>& analyses() {
   static const std::vector<const analysis::Analysis*> all = {
-      &pocketwheel::run_on_analysis(), &hinge::hinge_analysis(),
-      &hinge::sweep_analysis(),        &contact::contact_analysis(),
-      &contact::fretting_analysis(),   &engagement::engagement_analysis(),
-      &warp::warp_analysis(),          &strength::loop_analysis(),
+      &pocketwheel::run_on_analysis(),
+      &hinge::hinge_analysis(),
+      &hinge::sweep_analysis(),
+      &contact::contact_analysis(),
+      &contact::fretting_analysis(),
+      &engagement::engagement_analysis(),
+      &warp::warp_analysis(),
+      &composite::ring_analysis(),
+      &composite::ring_capacity_analysis(),
+      &composite::ring_design_analysis(),
+      &strength::loop_analysis(),
       &strength::strength_analysis(),
   };
   return all;

@@ -71,7 +71,11 @@ INSTANTIATE_TEST_SUITE_P(
         Accepted{"150", QuantityKind::kForcePerLength, 150.0},  // bare: N/m
         Accepted{"0.15 kN/m", QuantityKind::kForcePerLength, 150.0},
         Accepted{"0.15 N/mm", QuantityKind::kForcePerLength, 150.0},
-        Accepted{"10 kgf/m", QuantityKind::kForcePerLength, 98.0665}));
+        Accepted{"10 kgf/m", QuantityKind::kForcePerLength, 98.0665},
+        Accepted{"22.7mm^2", QuantityKind::kArea, 22.7e-6},
+        Accepted{"22.7", QuantityKind::kArea, 22.7e-6},  // bare: mm^2
+        Accepted{"2.56g/cm^3", QuantityKind::kDensity, 2560.0},
+        Accepted{"1200", QuantityKind::kDensity, 1200.0}));  // bare: kg/m^3
 
 struct Rejected {
   const char* text;
@@ -117,7 +121,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Rejected{"5 m", QuantityKind::kSpeed, "wrong dimension"},
                       Rejected{"15 kg/m", QuantityKind::kForcePerLength, "kgf/m"},
                       Rejected{"150 N", QuantityKind::kForcePerLength, "wrong dimension"},
-                      Rejected{"150 Pa", QuantityKind::kForcePerLength, "wrong dimension"}));
+                      Rejected{"150 Pa", QuantityKind::kForcePerLength, "wrong dimension"},
+                      Rejected{"3kg", QuantityKind::kArea, "wrong dimension"},
+                      Rejected{"1200 kg/m", QuantityKind::kDensity, "wrong dimension"}));
 
 TEST(Quantity, ThrowingOverloadCarriesTheIssue) {
   try {
@@ -143,3 +149,19 @@ TEST(Quantity, DefaultUnitsAreDocumented) {
 
 }  // namespace
 }  // namespace catena::io
+
+namespace {
+
+// UDUNITS-2's composed factors can be a few ulps off an exact decimal; the parser gives the
+// decimal (docs/units.md). rpm's 2π/60 is no short decimal and stays as it is.
+TEST(Quantity, ExactDecimalFactorsStayExact) {
+  using catena::io::parse_quantity;
+  using catena::io::QuantityKind;
+  EXPECT_EQ(parse_quantity("2.56 g/cm^3", QuantityKind::kDensity, "rho"), 2.56 * 1000.0);
+  EXPECT_EQ(parse_quantity("1 g/cm^3", QuantityKind::kDensity, "rho"), 1000.0);
+  EXPECT_EQ(parse_quantity("64mm", QuantityKind::kLength, "pitch"), 64 * 0.001);
+  EXPECT_EQ(parse_quantity("60 rpm", QuantityKind::kAngularSpeed, "omega"),
+            60 * (2.0 * 3.14159265358979323846 / 60.0));
+}
+
+}  // namespace

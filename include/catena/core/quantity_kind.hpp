@@ -17,6 +17,8 @@ enum class QuantityKind {
   kSpeed,           ///< SI m/s; bare number: m/s
   kForcePerLength,  ///< SI N/m (a weight per metre of a conveyor run); bare number: N/m;
                     ///< a mass per metre (kg/m) is rejected with a hint to write kgf/m
+  kArea,            ///< SI m^2; bare number: mm^2
+  kDensity,         ///< SI kg/m^3 (mass per volume); bare number: kg/m^3
 };
 
 /// A short name of the kind for help texts ("length", "angular speed").
@@ -42,6 +44,10 @@ constexpr const char* kind_name(QuantityKind kind) {
       return "speed";
     case QuantityKind::kForcePerLength:
       return "force per length";
+    case QuantityKind::kArea:
+      return "area";
+    case QuantityKind::kDensity:
+      return "density";
   }
   return "quantity";
 }

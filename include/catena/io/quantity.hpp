@@ -19,10 +19,10 @@ namespace catena::io {
 using QuantityKind = catena::QuantityKind;
 
 /// The SI unit the library uses for `kind` ("m", "rad", "rad/s", "N", "Pa", "kg", "s", "m/s",
-/// "N/m").
+/// "N/m", "m^2", "kg/m^3").
 const char* si_unit(QuantityKind kind);
 /// The unit a bare number is taken in ("mm", "degree", "1/s", "N", "MPa", "kg", "s", "m/s",
-/// "N/m").
+/// "N/m", "mm^2", "kg/m^3").
 const char* default_unit(QuantityKind kind);
 /// A short human description used in messages, e.g. "a length".
 const char* describe(QuantityKind kind);

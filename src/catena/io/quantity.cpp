@@ -105,6 +105,10 @@ const char* accepted_spellings(QuantityKind kind) {
       return "a speed, e.g. 0.5 m/s, 30 m/min (bare number: m/s)";
     case QuantityKind::kForcePerLength:
       return "a weight (force) per length, e.g. 150 N/m, 0.15 kN/m, 15 kgf/m (bare number: N/m)";
+    case QuantityKind::kArea:
+      return "an area, e.g. 22.7mm^2, 22.7 mm2, 0.227 cm^2 (bare number: mm^2)";
+    case QuantityKind::kDensity:
+      return "a density, e.g. 2.56g/cm^3, 1200 kg/m^3 (bare number: kg/m^3)";
   }
   return "a quantity";
 }
@@ -132,6 +136,10 @@ const char* target_spelling(QuantityKind kind) {
       return "m/s";
     case QuantityKind::kForcePerLength:
       return "N/m";
+    case QuantityKind::kArea:
+      return "m^2";
+    case QuantityKind::kDensity:
+      return "kg/m^3";
   }
   return "1";
 }
@@ -150,6 +158,17 @@ bool is_per_second(const std::string& expression) {
   const std::string unit = trim(end == nullptr ? expression : std::string_view(end));
   return unit == "1/s" || unit == "/s" || unit == "s-1" || unit == "s^-1" ||
          unit == "s\u207b\u00b9";
+}
+
+// UDUNITS-2 builds a conversion factor by multiplying its database's factors, so an exact
+// decimal factor can come out a few ulps off (g/cm^3 → kg/m^3 gives 999.99999999999989, and
+// 2.56 g/cm^3 would read 2559.9999999999995 kg/m^3). A factor within 1e-14 of a number with 12
+// significant digits is that number; factors that are not short decimals (rpm's 2π/60) are kept.
+double tidy_factor(double factor) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.12g", factor);
+  const double short_form = std::strtod(text, nullptr);
+  return std::abs(short_form - factor) <= 1e-14 * std::abs(factor) ? short_form : factor;
 }
 
 }  // namespace
@@ -176,6 +195,10 @@ const char* si_unit(QuantityKind kind) {
       return "m/s";
     case QuantityKind::kForcePerLength:
       return "N/m";
+    case QuantityKind::kArea:
+      return "m^2";
+    case QuantityKind::kDensity:
+      return "kg/m^3";
   }
   return "1";
 }
@@ -202,6 +225,10 @@ const char* default_unit(QuantityKind kind) {
       return "m/s";
     case QuantityKind::kForcePerLength:
       return "N/m";
+    case QuantityKind::kArea:
+      return "mm^2";
+    case QuantityKind::kDensity:
+      return "kg/m^3";
   }
   return "1";
 }
@@ -268,7 +295,7 @@ std::optional<double> parse_quantity(std::string_view raw, QuantityKind kind,
   }
 
   cv_converter* converter = ut_get_converter(parsed.get(), target.get());
-  const double value = number * cv_convert_double(converter, 1.0);
+  const double value = number * tidy_factor(cv_convert_double(converter, 1.0));
   cv_free(converter);
   if (kind == QuantityKind::kAngularSpeed && !names_angle(def) && !is_per_second(expression)) {
     return fail("a frequency other than 1/s is ambiguous: use rpm or 1/s");
