@@ -18,8 +18,9 @@ using catena::InputError;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
-constexpr double kHandTol = 1e-9;  // [N] hand sums of numbers of order 1e3 (round-off only)
-constexpr double kRelTol = 1e-12;  // [1] relative, round-off of a few dozen operations
+constexpr double kHandTol = 1e-9;   // [N] hand sums of numbers of order 1e3 (round-off only)
+constexpr double kPowerTol = 1e-9;  // [W] hand-derived powers of order 1e3 (round-off only)
+constexpr double kRelTol = 1e-12;   // [1] relative, round-off of a few dozen operations
 // [1] relative to the loop's tensions (up to ~1e6 N): round-off of sums and products along a
 // random loop of up to 21 segments
 constexpr double kSumRelTol = 1e-9;
@@ -95,7 +96,7 @@ TEST(Loop, HorizontalLoopByHand) {
   EXPECT_NEAR(r.slack_tension, 1000.0, kHandTol);
   EXPECT_NEAR(r.tight_tension, 2305.2, kHandTol);
   EXPECT_NEAR(r.drive_force, 1404.356, kHandTol);
-  EXPECT_NEAR(r.power, 877.7225, kHandTol);
+  EXPECT_NEAR(r.power, 877.7225, kPowerTol);
   EXPECT_DOUBLE_EQ(r.length, 40.0);
   EXPECT_DOUBLE_EQ(r.segments[3].s_start, 20.0);
   EXPECT_DOUBLE_EQ(r.segments[3].s_end, 40.0);
@@ -410,7 +411,7 @@ TEST(Loop, DownhillLoopBrakesWithItsPowerReturned) {
   const LoopResult r = solve(l);
   ASSERT_LT(r.drive_force, 0.0);
   EXPECT_TRUE(has(r, "loop.drive_brakes"));
-  EXPECT_NEAR(r.power, r.drive_force * 0.5 * 0.8, kHandTol);
+  EXPECT_NEAR(r.power, r.drive_force * 0.5 * 0.8, kPowerTol);
 }
 
 std::vector<catena::Issue> issues_of(const Loop& l) {
