@@ -12,6 +12,20 @@
 
 namespace {
 
+// Tolerances. The JSON carries doubles to full precision, so the CLI's values differ from the
+// formulas written here only by the round-off of those formulas.
+constexpr double kRatioTol = 1e-9;        // [1] load factors and stress ratios of order 1
+constexpr double kExactRatioTol = 1e-12;  // [1] the same load factor from two runs
+constexpr double kAngleTol = 1e-12;       // [rad] skews of ~1e-2 rad converted from arcmin
+constexpr double kRadiusTol = 1e-12;      // [m] the reduced radius, ~1e-2 m
+constexpr double kLengthTol = 1e-15;      // [m] loaded lengths of ~2e-3 m: round-off
+constexpr double kLoadTol = 1e-6;         // [N] loads of 1e3 to 4e3 N
+constexpr double kStressTol = 1.0;        // [Pa] contact stresses of ~1e9 Pa: 1e-9 relative
+constexpr double kPeakStressTol = 1e-6;   // [Pa] the same slice-model peak (~2e9 Pa) from two runs
+constexpr double kRelTol = 1e-9;          // [1] relative, the same value by two formulas
+constexpr double kHertzRelTol = 1e-6;     // [1] relative, the Hertz peak pressure written out here
+constexpr double kTimeTol = 1e-9;         // [s] the latent period, ~6e2 s
+
 const std::string kContact =
     "contact --roller-diameter 11.91mm --roller-length 12.7mm --tooth-radius 15.56mm --profile "
     "concave "
@@ -25,12 +39,13 @@ TEST(ContactCli, JsonCarriesTheContractFields) {
                           "hertz_stress", "half_width", "slice_model", "units"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
-  EXPECT_NEAR(j["load_factor"].get<double>(), 1 + 0.0016 * 42 * 42, 1e-9);
-  EXPECT_NEAR(j["effective_load"].get<double>(), 1000 * (1 + 0.0016 * 42 * 42), 1e-6);
+  EXPECT_NEAR(j["load_factor"].get<double>(), 1 + 0.0016 * 42 * 42, kRatioTol);
+  EXPECT_NEAR(j["effective_load"].get<double>(), 1000 * (1 + 0.0016 * 42 * 42), kLoadTol);
   // the paper's formula with its printed 0.418
   const double rho = j["reduced_radius"].get<double>();
   EXPECT_NEAR(j["contact_stress"].get<double>(),
-              0.418 * std::sqrt(j["effective_load"].get<double>() * 210e9 / (12.7e-3 * rho)), 1);
+              0.418 * std::sqrt(j["effective_load"].get<double>() * 210e9 / (12.7e-3 * rho)),
+              kStressTol);
   for (const char* key : {"stress_peak", "loaded_length", "distribution"})
     EXPECT_TRUE(j["slice_model"].contains(key));
   EXPECT_EQ(j["slice_model"]["distribution"]["s"].size(), 201u);
@@ -41,7 +56,7 @@ TEST(ContactCli, GaugeChainAndSweep) {
       run(kContact + " --skew-gauge-dh 0.155mm --skew-gauge-base 12.7mm --format json");
   ASSERT_EQ(gauge.status, 0) << gauge.err;
   EXPECT_NEAR(nlohmann::json::parse(gauge.out)["skew"].get<double>(), std::atan(0.155 / 12.7),
-              1e-12);
+              kAngleTol);
   const CliRun chain =
       run("contact --chain 12B --tooth-radius 15.56mm --load 1kN --skew '0°42′' --format json");
   ASSERT_EQ(chain.status, 0) << chain.err;
@@ -78,20 +93,21 @@ TEST(ContactCli, HertzValuesAtTheEffectiveLoad) {
   // Plane-strain Hertz, steel on steel: E* = E/(2(1 − ν²)), p0 = √(P′E*/(πρ)), b = √(4P′ρ/(πE*))
   const auto j = contact_json("--skew 30arcmin");
   const double rho = j["reduced_radius"].get<double>();
-  EXPECT_NEAR(rho, 11.91 * 15.56 / (2 * (15.56 - 0.5 * 11.91)) * 1e-3, 1e-12);
+  EXPECT_NEAR(rho, 11.91 * 15.56 / (2 * (15.56 - 0.5 * 11.91)) * 1e-3, kRadiusTol);
   const double p = j["effective_load"].get<double>() / 12.7e-3;
   const double e_star = 210e9 / (2 * (1 - 0.09));
   EXPECT_NEAR(j["hertz_stress"].get<double>(), std::sqrt(p * e_star / (std::numbers::pi * rho)),
-              1e-6 * j["hertz_stress"].get<double>());
+              kHertzRelTol * j["hertz_stress"].get<double>());
   EXPECT_NEAR(j["half_width"].get<double>(), std::sqrt(4 * p * rho / (std::numbers::pi * e_star)),
-              1e-9 * j["half_width"].get<double>());
+              kRelTol * j["half_width"].get<double>());
   EXPECT_NEAR(j["hertz_stress_nominal"].get<double>(),
-              j["hertz_stress"].get<double>() / std::sqrt(j["load_factor"].get<double>()), 1.0);
+              j["hertz_stress"].get<double>() / std::sqrt(j["load_factor"].get<double>()),
+              kStressTol);
   // A softer tooth changes the general Hertz stress but not the paper's steel formula (3).
   const auto soft = contact_json("--skew 30arcmin --tooth-modulus 105GPa --tooth-poisson 0.35");
   const double e_soft = 1 / ((1 - 0.09) / 210e9 + (1 - 0.35 * 0.35) / 105e9);
   EXPECT_NEAR(soft["hertz_stress"].get<double>() / j["hertz_stress"].get<double>(),
-              std::sqrt(e_soft / e_star), 1e-9);
+              std::sqrt(e_soft / e_star), kRatioTol);
   EXPECT_EQ(soft["contact_stress"].get<double>(), j["contact_stress"].get<double>());
 }
 
@@ -99,13 +115,13 @@ TEST(ContactCli, SkewFactorScalesTheSkewOnce) {
   // K_φ = 0.65 on a measured 60′ is the design skew 39′, in eq. (2) and in the slice model alike.
   const auto k = contact_json("--skew 60arcmin --skew-factor 0.65");
   const auto d = contact_json("--skew 39arcmin");
-  EXPECT_NEAR(k["load_factor"].get<double>(), 1 + 0.0016 * 39 * 39, 1e-9);
-  EXPECT_NEAR(k["design_skew"].get<double>(), 39 * std::numbers::pi / 10800, 1e-12);
-  EXPECT_NEAR(k["load_factor"].get<double>(), d["load_factor"].get<double>(), 1e-12);
+  EXPECT_NEAR(k["load_factor"].get<double>(), 1 + 0.0016 * 39 * 39, kRatioTol);
+  EXPECT_NEAR(k["design_skew"].get<double>(), 39 * std::numbers::pi / 10800, kAngleTol);
+  EXPECT_NEAR(k["load_factor"].get<double>(), d["load_factor"].get<double>(), kExactRatioTol);
   EXPECT_NEAR(k["slice_model"]["stress_peak"].get<double>(),
               d["slice_model"]["stress_peak"].get<double>(),
-              1e-9 * d["slice_model"]["stress_peak"].get<double>());
-  EXPECT_NEAR(k["slice_model"]["load_sum"].get<double>(), 1000.0, 1e-6);
+              kRelTol * d["slice_model"]["stress_peak"].get<double>());
+  EXPECT_NEAR(k["slice_model"]["load_sum"].get<double>(), 1000.0, kLoadTol);
 }
 
 TEST(ContactCli, SweepValuesCsvTableAndOutputFile) {
@@ -115,18 +131,18 @@ TEST(ContactCli, SweepValuesCsvTableAndOutputFile) {
   ASSERT_EQ(j["skew"].size(), 5u);
   for (int i = 0; i < 5; ++i) {
     const double arcmin = 15.0 * i;
-    EXPECT_NEAR(j["skew"][i].get<double>(), arcmin * std::numbers::pi / 10800, 1e-12);
-    EXPECT_NEAR(j["load_factor"][i].get<double>(), 1 + 0.0016 * arcmin * arcmin, 1e-9);
+    EXPECT_NEAR(j["skew"][i].get<double>(), arcmin * std::numbers::pi / 10800, kAngleTol);
+    EXPECT_NEAR(j["load_factor"][i].get<double>(), 1 + 0.0016 * arcmin * arcmin, kRatioTol);
     if (i > 0) {
       EXPECT_GT(j["slice_stress_peak"][i].get<double>(),
                 j["slice_stress_peak"][i - 1].get<double>());
       EXPECT_LT(j["slice_loaded_length"][i].get<double>(),
-                j["slice_loaded_length"][i - 1].get<double>() + 1e-15);
+                j["slice_loaded_length"][i - 1].get<double>() + kLengthTol);
     }
   }
   // the aligned point of the sweep is the single-point run at zero skew
   EXPECT_NEAR(j["slice_stress_peak"][0].get<double>(),
-              contact_json("--skew 0")["slice_model"]["stress_peak"].get<double>(), 1e-6);
+              contact_json("--skew 0")["slice_model"]["stress_peak"].get<double>(), kPeakStressTol);
 
   const CliRun csv = run(kContact + " --skew-sweep 0deg:1deg:15arcmin --format csv");
   ASSERT_EQ(csv.status, 0) << csv.err;
@@ -180,7 +196,7 @@ TEST(FrettingCli, LatentPeriodAndTheSignOfK2) {
           "-1e-6 --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NEAR(nlohmann::json::parse(r.out)["latent_period"].get<double>(), 800 * std::exp(-0.25),
-              1e-9);
+              kTimeTol);
   r = run(
       "fretting --roughness 0.8um --amplitude 5um --load 2kN --frequency 20Hz --k1 1e9 --k2 1e-6");
   EXPECT_EQ(r.status, 2);
@@ -200,7 +216,7 @@ TEST(FrettingCli, LatentPeriodAndTheSignOfK2) {
           "--k2 -1e-6 --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NEAR(nlohmann::json::parse(r.out)["latent_period"].get<double>(), 800 * std::exp(-0.25),
-              1e-9);
+              kTimeTol);
 }
 
 }  // namespace

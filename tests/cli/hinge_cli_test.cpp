@@ -7,6 +7,12 @@
 
 namespace {
 
+constexpr double kLengthTol = 1e-12;       // [m] lengths of ~1e-2 m by one formula: round-off
+constexpr double kExactLengthTol = 1e-15;  // [m] an input length passed through
+constexpr double kMicronTol = 1e-6;  // [m] lengths written here to 1 µm or finer (0.0395033 m)
+constexpr double kPitchChangeTol = 1e-8;  // [m] Δt = −4.47004 mm, written to 6 digits
+constexpr double kAngleTol = 1e-12;       // [rad] γmax = π/z
+
 const std::string kHinge =
     "hinge --pin-diameter 40mm --half-thickness 8mm --plate-radius 20mm --teeth 8 --strokes 1";
 
@@ -22,13 +28,13 @@ TEST(HingeCli, JsonCarriesTheContractFieldsInSi) {
         "pitch_change", "trajectories", "diagnostics", "units"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
-  EXPECT_NEAR(j["x_N1"].get<double>(), 0.014, 1e-12);
-  EXPECT_NEAR(j["R2"].get<double>(), 0.0395033, 1e-6);
-  EXPECT_NEAR(j["gamma_max"].get<double>(), 3.14159265358979 / 8, 1e-12);
+  EXPECT_NEAR(j["x_N1"].get<double>(), 0.014, kLengthTol);
+  EXPECT_NEAR(j["R2"].get<double>(), 0.0395033, kMicronTol);
+  EXPECT_NEAR(j["gamma_max"].get<double>(), 3.14159265358979 / 8, kAngleTol);
   EXPECT_EQ(j["pitch_change"]["phi"].size(), 101u);
   EXPECT_EQ(j["pitch_change"]["dt_over_t"].size(), 101u);
   EXPECT_EQ(j["pitch_change"]["dt"][0].get<double>(), 0.0);
-  EXPECT_NEAR(j["pitch_change"]["dt"][100].get<double>(), -4.47004e-3, 1e-8);
+  EXPECT_NEAR(j["pitch_change"]["dt"][100].get<double>(), -4.47004e-3, kPitchChangeTol);
   for (const char* key : {"phi", "M1x", "M1y", "O2x", "O2y"})
     EXPECT_EQ(j["trajectories"][key].size(), 101u);
   ASSERT_GE(j["diagnostics"].size(), 1u);  // the rolling limit is below γmax
@@ -61,7 +67,7 @@ TEST(HingeCli, InfeasibleDesignIsADiagnosticNotAnError) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["diagnostics"][0]["code"], "hinge.r1_exceeds_r1max");
-  EXPECT_NEAR(j["diagnostics"][0]["limit"].get<double>(), 0.043149, 1e-6);
+  EXPECT_NEAR(j["diagnostics"][0]["limit"].get<double>(), 0.043149, kMicronTol);
 }
 
 TEST(HingeCli, BadInputNamesEveryFlag) {
@@ -107,8 +113,8 @@ TEST(HingeCli, WritesTheApertureAsSvgAndDxf) {
                        " --dxf " + dxf.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_NEAR(j["aperture"]["clearance"].get<double>(), 0.3e-3, 1e-15);
-  EXPECT_NEAR(j["aperture"]["ymin"].get<double>(), -0.0203, 1e-6);
+  EXPECT_NEAR(j["aperture"]["clearance"].get<double>(), 0.3e-3, kExactLengthTol);
+  EXPECT_NEAR(j["aperture"]["ymin"].get<double>(), -0.0203, kMicronTol);
   std::ifstream s(svg), d(dxf);
   std::stringstream svg_text, dxf_text;
   svg_text << s.rdbuf();

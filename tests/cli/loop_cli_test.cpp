@@ -14,7 +14,10 @@
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kHandTol = 1e-9;  // [N]
+constexpr double kHandTol = 1e-9;     // [N] hand sums of tensions of order 1e3 (round-off only)
+constexpr double kPowerTol = 1e-9;    // [W] the hand-derived power, ~9e2 W (round-off only)
+constexpr double kLengthTol = 1e-12;  // [m] path positions of ~1e1 m read from the file
+constexpr double kSpeedTol = 1e-12;   // [m/s] the chain speed read from the file
 
 std::string write(const std::string& name, const std::string& text) {
   const fs::path dir = fs::temp_directory_path() / "catena_loop_cli_test";
@@ -70,16 +73,16 @@ TEST(LoopCli, JsonCarriesTheContractFieldsInSi) {
       EXPECT_TRUE(p.contains(k)) << k;
   EXPECT_EQ(points[2]["name"], "return");
   EXPECT_EQ(points[3]["kind"], "straight");
-  EXPECT_NEAR(points[3]["s"].get<double>(), 20.0, 1e-12);  // bare length: metres
-  EXPECT_NEAR(points[7]["s"].get<double>(), 40.0, 1e-12);  // "20" (a string) too
+  EXPECT_NEAR(points[3]["s"].get<double>(), 20.0, kLengthTol);  // bare length: metres
+  EXPECT_NEAR(points[7]["s"].get<double>(), 40.0, kLengthTol);  // "20" (a string) too
   EXPECT_NEAR(points[3]["tension"].get<double>(), 1200.0, kHandTol);
   EXPECT_NEAR(points[9]["tension"].get<double>(), 2305.2, kHandTol);
   EXPECT_NEAR(j["max_tension"].get<double>(), 2305.2, kHandTol);
   EXPECT_EQ(j["max_tension_at"]["segment"], 4);
   EXPECT_NEAR(j["min_tension"].get<double>(), 1000.0, kHandTol);
   EXPECT_NEAR(j["drive_force"].get<double>(), 1404.356, kHandTol);
-  EXPECT_NEAR(j["power"].get<double>(), 877.7225, kHandTol);
-  EXPECT_NEAR(j["speed"].get<double>(), 0.5, 1e-12);
+  EXPECT_NEAR(j["power"].get<double>(), 877.7225, kPowerTol);
+  EXPECT_NEAR(j["speed"].get<double>(), 0.5, kSpeedTol);
   EXPECT_TRUE(j["diagnostics"].is_array());
   EXPECT_EQ(j["units"]["tension"], "N");
   EXPECT_EQ(j["units"]["s"], "m");

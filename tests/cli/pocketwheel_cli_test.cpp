@@ -13,6 +13,13 @@
 
 namespace {
 
+constexpr double kMicronTol = 1e-6;        // [m] R = 0.164283 m, written here to 1 µm
+constexpr double kExactLengthTol = 1e-15;  // [m] the same radius under two names
+constexpr double kTimeTol = 1e-12;         // [s] the tooth period 2π/(zω) ≈ 0.16 s
+constexpr double kAngleTol = 1e-12;        // [rad] the last sample's φ = 2π/z
+constexpr double kForceTol = 1e-9;         // [N] −m·a_x for a 40 kg strand: round-off
+constexpr double kSpeedTol = 1e-9;         // [m/s] the numerical solver against the closed form
+
 const char* kPaper = "pocketwheel --pitch 64mm --wire 18mm --teeth 8 --omega 5";
 
 TEST(PocketwheelCli, JsonCarriesTheContractFieldsInSi) {
@@ -25,9 +32,9 @@ TEST(PocketwheelCli, JsonCarriesTheContractFieldsInSi) {
                           "guide_height", "seating_angles", "extremes", "series", "units"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
-  EXPECT_NEAR(j["pitch_radius"].get<double>(), 0.164283, 1e-6);
-  EXPECT_NEAR(j["guide_height"].get<double>(), j["pitch_radius"].get<double>(), 1e-15);
-  EXPECT_NEAR(j["period"].get<double>(), 2 * 3.14159265358979 / 8 / 5, 1e-12);
+  EXPECT_NEAR(j["pitch_radius"].get<double>(), 0.164283, kMicronTol);
+  EXPECT_NEAR(j["guide_height"].get<double>(), j["pitch_radius"].get<double>(), kExactLengthTol);
+  EXPECT_NEAR(j["period"].get<double>(), 2 * 3.14159265358979 / 8 / 5, kTimeTol);
   for (const char* key : {"vx_min", "vx_max", "ax_min", "ax_max"})
     EXPECT_TRUE(j["extremes"].contains(key));
   const auto& s = j["series"];
@@ -37,8 +44,8 @@ TEST(PocketwheelCli, JsonCarriesTheContractFieldsInSi) {
   }
   EXPECT_FALSE(s.contains("vy")) << "vy only for free run-on";
   EXPECT_EQ(s["x"][0].get<double>(), 0.0);
-  EXPECT_NEAR(s["phi"][720].get<double>(), 2 * 3.14159265358979 / 8, 1e-12);
-  EXPECT_NEAR(s["inertial_force"][5].get<double>(), -40.0 * s["ax"][5].get<double>(), 1e-9);
+  EXPECT_NEAR(s["phi"][720].get<double>(), 2 * 3.14159265358979 / 8, kAngleTol);
+  EXPECT_NEAR(s["inertial_force"][5].get<double>(), -40.0 * s["ax"][5].get<double>(), kForceTol);
   for (const char* key :
        {"pitch_radius", "period", "x", "vx", "ax", "inertial_force", "seating_angles"}) {
     EXPECT_TRUE(j["units"].contains(key)) << key;
@@ -76,7 +83,8 @@ TEST(PocketwheelCli, UnitsAreAcceptedInAnySpelling) {
       run("pocketwheel --pitch 64 --wire 18 --teeth 8 --omega 5 --format json --points 3");
   ASSERT_EQ(a.status, 0) << a.err;
   ASSERT_EQ(b.status, 0) << b.err;
-  EXPECT_NEAR(nlohmann::json::parse(a.out)["omega"].get<double>(), 5.0, 1e-4);
+  constexpr double kRpmTol = 1e-4;  // [rad/s] 47.746 rpm is 5 rad/s to 5 digits (4.99995)
+  EXPECT_NEAR(nlohmann::json::parse(a.out)["omega"].get<double>(), 5.0, kRpmTol);
   EXPECT_EQ(nlohmann::json::parse(a.out)["pitch_radius"],
             nlohmann::json::parse(b.out)["pitch_radius"]);
 }
@@ -148,7 +156,8 @@ TEST(PocketwheelCli, NumericMethodAgreesWithClosedForms) {
   const auto ja = nlohmann::json::parse(a.out);
   const auto jb = nlohmann::json::parse(b.out);
   for (std::size_t i = 1; i + 1 < 101; ++i) {
-    EXPECT_NEAR(ja["series"]["vx"][i].get<double>(), jb["series"]["vx"][i].get<double>(), 1e-9);
+    EXPECT_NEAR(ja["series"]["vx"][i].get<double>(), jb["series"]["vx"][i].get<double>(),
+                kSpeedTol);
   }
 }
 

@@ -10,6 +10,16 @@
 
 namespace {
 
+// Tolerances. The JSON is SI with doubles at full precision.
+constexpr double kAreaMm2Tol = 0.005;  // [mm²] the paper's 22.68 mm²: half a unit of the last digit
+constexpr double kLoadTol = 1e-6;      // [N] loads of ~3e4 N: round-off
+constexpr double kRelTol = 1e-9;       // [1] relative, the same load by (9) and by 2Fσ/K
+constexpr double kRatioTol = 1e-12;    // [1] O(1) factors and ratios by one formula
+// [1] Σσ̃_r ≈ 1.4 of the analysed ring: its contact integral against equilibrium
+constexpr double kEquilibriumTol = 1e-6;
+constexpr double kLengthTol = 1e-15;  // [m] a 2 mm pitch passed through: round-off
+constexpr double kAreaTol = 1e-15;    // [m²] leg areas of ~2e-5 m² by hand: ~5e-11 relative
+
 const std::string kPaper =
     "ring capacity --alpha 0.42 --sum-sigma-r 0.2662 --k-max 4.173 --fibre-strength 2500MPa ";
 
@@ -35,10 +45,10 @@ TEST(RingCapacityCli, PaperExampleSizesTheArea) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["mode"], "coefficients");
-  EXPECT_NEAR(j["fibre_area"].get<double>() * 1e6, 22.68, 0.005);
-  EXPECT_NEAR(j["load"].get<double>(), 29700.0, 1e-6);
-  EXPECT_NEAR(j["eq9_factor"].get<double>(), 0.2662 / (0.42 * 0.58 * 4.173), 1e-12);
-  EXPECT_NEAR(j["mass"]["ratio"].get<double>(), 0.337 / 0.035, 1e-12);
+  EXPECT_NEAR(j["fibre_area"].get<double>() * 1e6, 22.68, kAreaMm2Tol);
+  EXPECT_NEAR(j["load"].get<double>(), 29700.0, kLoadTol);
+  EXPECT_NEAR(j["eq9_factor"].get<double>(), 0.2662 / (0.42 * 0.58 * 4.173), kRatioTol);
+  EXPECT_NEAR(j["mass"]["ratio"].get<double>(), 0.337 / 0.035, kRatioTol);
   EXPECT_EQ(j["units"]["fibre_area"], "m^2");
   EXPECT_EQ(j["units"]["load"], "N");
   // (9) exceeds 2Fσ/K by Σσ̃_r/(α(1−α)) = 1.093: an info diagnostic with both values
@@ -46,7 +56,7 @@ TEST(RingCapacityCli, PaperExampleSizesTheArea) {
   for (const auto& d : j["diagnostics"])
     if (d["code"] == "ring.capacity.eq9_above_concentration_capacity") {
       found = true;
-      EXPECT_NEAR(d["limit"].get<double>(), 0.42 * 0.58, 1e-12);
+      EXPECT_NEAR(d["limit"].get<double>(), 0.42 * 0.58, kRatioTol);
     }
   EXPECT_TRUE(found) << r.out;
 }
@@ -66,13 +76,13 @@ TEST(RingCapacityCli, AnalysedModeUsesTheRingsConcentration) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["mode"], "analysed");
   const double a = j["alpha"].get<double>();
-  EXPECT_NEAR(a, 0.42, 1e-12);
-  EXPECT_NEAR(j["ring_sum_sigma_r"].get<double>(), (1 - a) / a, 1e-6);
-  EXPECT_NEAR(j["sum_sigma_r"].get<double>(), a * (1 - a), 1e-12);
+  EXPECT_NEAR(a, 0.42, kRatioTol);
+  EXPECT_NEAR(j["ring_sum_sigma_r"].get<double>(), (1 - a) / a, kEquilibriumTol);
+  EXPECT_NEAR(j["sum_sigma_r"].get<double>(), a * (1 - a), kRatioTol);
   // consistent normalisation: (9) equals 2Fσ/K
   EXPECT_NEAR(j["load"].get<double>(), j["load_concentration"].get<double>(),
-              1e-9 * j["load"].get<double>());
-  EXPECT_NEAR(j["load"].get<double>(), 2 * 22.7e-6 * 2500e6 / j["k_max"].get<double>(), 1e-6);
+              kRelTol * j["load"].get<double>());
+  EXPECT_NEAR(j["load"].get<double>(), 2 * 22.7e-6 * 2500e6 / j["k_max"].get<double>(), kLoadTol);
   EXPECT_GT(j["k_max"].get<double>(), 1.0);
 }
 
@@ -106,10 +116,10 @@ TEST(RingDesignCli, JsonDesignCarriesTheContract) {
   const auto& d = j["design"];
   EXPECT_GT(d["outer_radius"].get<double>(), d["inner_radius"].get<double>());
   EXPECT_NEAR(d["inner_radius"].get<double>() / d["outer_radius"].get<double>(),
-              d["alpha"].get<double>(), 1e-12);
+              d["alpha"].get<double>(), kRatioTol);
   // the leg section carries P at the hoop strength over K: A = PK/(2σ_c)
   EXPECT_NEAR(d["leg_area"].get<double>(),
-              32900 * d["k"].get<double>() / (2 * j["lamina"]["strength"].get<double>()), 1e-15);
+              32900 * d["k"].get<double>() / (2 * j["lamina"]["strength"].get<double>()), kAreaTol);
   for (const auto& p : j["scan"])
     EXPECT_GE(p["mass"]["total"].get<double>(), d["mass"]["total"].get<double>());
   EXPECT_GT(j["steel"]["mass_ratio"].get<double>(), 1.0);
@@ -126,7 +136,7 @@ TEST(RingDesignCli, ShortPitchIsADiagnosticAndBadInputIsExit2) {
     if (d["code"] == "ring.design.pitch_too_small") {
       found = true;
       EXPECT_EQ(d["severity"], "infeasible");
-      EXPECT_NEAR(d["value"].get<double>(), 2e-3, 1e-15);
+      EXPECT_NEAR(d["value"].get<double>(), 2e-3, kLengthTol);
     }
   EXPECT_TRUE(found) << r.out;
   const CliRun bad =

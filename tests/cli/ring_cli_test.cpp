@@ -10,6 +10,11 @@
 
 namespace {
 
+constexpr double kRadiusTol = 1e-12;   // [m] radii of ~1e-2 m passed through: round-off
+constexpr double kEdgeRelTol = 1e-6;   // [1] of the mean stress: σ_r on the free edge, truncated
+constexpr double kResidualTol = 1e-9;  // [1] the relative equilibrium residual |P − P_contact|/P
+constexpr double kSweepRelTol = 1e-3;  // [1] relative, the sweep's load against the exact one
+
 const std::string kRing =
     "ring --inner-radius 4.72mm --outer-radius 10mm --thickness 1mm --E-r 10GPa --E-phi 40GPa "
     "--G 4GPa --nu-phi-r 0.28 --gap 0.02mm ";
@@ -24,23 +29,27 @@ TEST(RingCli, JsonCarriesTheContractFields) {
   const double load = j["load"].get<double>();
   EXPECT_GT(load, 0.0);
   // mean stress is P / (2 (r2 − r1) t) in SI
-  EXPECT_NEAR(j["mean_stress"].get<double>(), load / (2 * (10e-3 - 4.72e-3) * 1e-3), 1e-6 * load);
+  // [Pa/N] times the load [N] bounds a stress [Pa]: 1e-6 · 2(r2 − r1)t ≈ 1e-11 of the mean stress
+  constexpr double kMeanStressTolPerLoad = 1e-6;
+  EXPECT_NEAR(j["mean_stress"].get<double>(), load / (2 * (10e-3 - 4.72e-3) * 1e-3),
+              kMeanStressTolPerLoad * load);
   for (const char* s : {"0", "90"}) {
     const auto& sec = j["sections"][s];
     ASSERT_EQ(sec["r"].size(), sec["sigma_phi"].size());
     ASSERT_EQ(sec["r"].size(), sec["sigma_r"].size());
     ASSERT_EQ(sec["r"].size(), sec["tau"].size());
-    EXPECT_NEAR(sec["r"].front().get<double>(), 4.72e-3, 1e-12);  // metres, ascending
-    EXPECT_NEAR(sec["r"].back().get<double>(), 10e-3, 1e-12);
+    EXPECT_NEAR(sec["r"].front().get<double>(), 4.72e-3, kRadiusTol);  // metres, ascending
+    EXPECT_NEAR(sec["r"].back().get<double>(), 10e-3, kRadiusTol);
     for (std::size_t i = 1; i < sec["r"].size(); ++i)
       EXPECT_GT(sec["r"][i].get<double>(), sec["r"][i - 1].get<double>());
     // free outer edge
-    EXPECT_NEAR(sec["sigma_r"].back().get<double>(), 0.0, 1e-6 * j["mean_stress"].get<double>());
+    EXPECT_NEAR(sec["sigma_r"].back().get<double>(), 0.0,
+                kEdgeRelTol * j["mean_stress"].get<double>());
   }
   EXPECT_EQ(j["contact"]["phi"].size(), j["contact"]["pressure"].size());
   EXPECT_EQ(j["summary"]["method"], "exact");
   EXPECT_EQ(j["summary"]["harmonics"], 200);
-  EXPECT_LT(j["summary"]["equilibrium_residual"].get<double>(), 1e-9);
+  EXPECT_LT(j["summary"]["equilibrium_residual"].get<double>(), kResidualTol);
   EXPECT_EQ(j["units"]["load"], "N");
   EXPECT_EQ(j["units"]["sigma_phi"], "Pa");
   // the bilateral contact pulls near phi = 90 deg: a diagnostic, not an error (exit 0)
@@ -58,7 +67,8 @@ TEST(RingCli, SweepAgreesWithExactAndReportsItsGrid) {
   const auto b = nlohmann::json::parse(sw.out);
   EXPECT_EQ(b["summary"]["nodes"], 2000);
   EXPECT_GT(b["summary"]["richardson_error"].get<double>(), 0.0);
-  EXPECT_NEAR(b["load"].get<double>(), a["load"].get<double>(), 1e-3 * a["load"].get<double>());
+  EXPECT_NEAR(b["load"].get<double>(), a["load"].get<double>(),
+              kSweepRelTol * a["load"].get<double>());
 }
 
 TEST(RingCli, UnilateralSeparatesAndCarriesLess) {

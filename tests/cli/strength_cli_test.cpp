@@ -13,6 +13,17 @@
 
 namespace {
 
+// Tolerances. The JSON is SI with doubles at full precision: the CLI's values differ from the
+// hand values below by round-off only (loads ~1e4 N, moments ~1e2 N·m, stresses ~1e7-1e9 Pa).
+constexpr double kRatioTol = 1e-9;       // [1] safety factors and their ratios
+constexpr double kForceTol = 1e-9;       // [N] plate forces
+constexpr double kResultantTol = 1e-6;   // [N] |N| of ~3e4 N through a square root
+constexpr double kMomentTol = 1e-9;      // [N·m] bending moments
+constexpr double kLengthTol = 1e-12;     // [m] the contact chord c, ~4e-2 m
+constexpr double kStressTol = 1e-3;      // [Pa] hand formulas for stresses of ~5e7 Pa
+constexpr double kFineStressTol = 1e-6;  // [Pa] the same Hertz pressure (~3e8 Pa) in two places
+constexpr double kHertzRelTol = 1e-6;    // [1] relative, the mean pressure against p0
+
 const std::string kHinge =
     "strength --heights '0, 8 mm, 48 mm, 56 mm' --widths 8mm --pin-diameter 40mm "
     "--plate-width 90mm --end-distance 45mm --tension 30kN --roller-yield 600MPa "
@@ -38,23 +49,23 @@ TEST(StrengthCli, JsonCarriesTheContract) {
     for (const char* key : {"name", "section", "stress", "allowable", "safety_factor", "ok"})
       EXPECT_TRUE(c.contains(key)) << key;
     EXPECT_NEAR(c["safety_factor"].get<double>(),
-                c["allowable"].get<double>() / c["stress"].get<double>(), 1e-9);
+                c["allowable"].get<double>() / c["stress"].get<double>(), kRatioTol);
   }
   // both layouts by default, each with its diagram; by hand (symmetric, N = S at mid-height):
   // layout 1: M_max = S/2 · 28 mm = 420 N·m, layout 2: S/2 · 20 mm = 300 N·m
   ASSERT_TRUE(j["diagrams"].contains("layout_1"));
   ASSERT_TRUE(j["diagrams"].contains("layout_2"));
-  EXPECT_NEAR(j["layouts"]["layout_1"]["moment_max"].get<double>(), 420.0, 1e-9);
-  EXPECT_NEAR(j["layouts"]["layout_2"]["moment_max"].get<double>(), 300.0, 1e-9);
+  EXPECT_NEAR(j["layouts"]["layout_1"]["moment_max"].get<double>(), 420.0, kMomentTol);
+  EXPECT_NEAR(j["layouts"]["layout_2"]["moment_max"].get<double>(), 300.0, kMomentTol);
   const nlohmann::json d = j["diagrams"]["layout_1"];
   ASSERT_EQ(d["x"].size(), d["M"].size());
   ASSERT_EQ(d["x"].size(), d["Q"].size());
   double mmax = 0;
   for (const auto& m : d["M"]) mmax = std::max(mmax, std::abs(m.get<double>()));
-  EXPECT_NEAR(mmax, 420.0, 1e-9);
+  EXPECT_NEAR(mmax, 420.0, kMomentTol);
   // the sliding hinge's contact: eq. (22) with γ = 180°: c = d; eq. (23) p = 15 kN/(40 × 8 mm²)
-  EXPECT_NEAR(j["contact"]["c"].get<double>(), 0.040, 1e-12);
-  EXPECT_NEAR(j["contact"]["p"].get<double>(), 15e3 / (0.040 * 0.008), 1e-3);
+  EXPECT_NEAR(j["contact"]["c"].get<double>(), 0.040, kLengthTol);
+  EXPECT_NEAR(j["contact"]["p"].get<double>(), 15e3 / (0.040 * 0.008), kStressTol);
   EXPECT_TRUE(j["contact"]["hertz"].is_null());
   EXPECT_EQ(j["units"]["stress"], "Pa");
   EXPECT_EQ(j["units"]["M"], "N*m");
@@ -65,12 +76,12 @@ TEST(StrengthCli, RollingHingeGivesHertz) {
   const auto j = run_json(kRolling);
   ASSERT_TRUE(j["contact"]["hertz"].is_object());
   const double p0 = j["contact"]["hertz"]["p0"].get<double>();
-  EXPECT_NEAR(j["contact"]["p"].get<double>(), std::numbers::pi / 4 * p0, 1e-6 * p0);
+  EXPECT_NEAR(j["contact"]["p"].get<double>(), std::numbers::pi / 4 * p0, kHertzRelTol * p0);
   bool found = false;
   for (const auto& c : j["checks"])
     if (c["name"] == "hinge.contact") {
       found = true;
-      EXPECT_NEAR(c["stress"].get<double>(), p0, 1e-6);
+      EXPECT_NEAR(c["stress"].get<double>(), p0, kFineStressTol);
     }
   EXPECT_TRUE(found);
 }
@@ -87,7 +98,7 @@ TEST(StrengthCli, OneLayoutAndSafetyFactorsScaleWithLoad) {
   for (std::size_t i = 0; i < one["checks"].size(); ++i)
     EXPECT_NEAR(one["checks"][i]["safety_factor"].get<double>() /
                     twice["checks"][i]["safety_factor"].get<double>(),
-                2.0, 1e-9);
+                2.0, kRatioTol);
 }
 
 TEST(StrengthCli, FailingCheckIsADiagnosticWithTheLimit) {
@@ -98,8 +109,8 @@ TEST(StrengthCli, FailingCheckIsADiagnosticWithTheLimit) {
     if (d["code"] == "strength.hinge.pressure") {
       found = true;
       EXPECT_EQ(d["severity"], "infeasible");
-      EXPECT_NEAR(d["limit"].get<double>(), 30e6, 1e-3);
-      EXPECT_NEAR(d["value"].get<double>(), 15e3 / (0.040 * 0.008), 1e-3);
+      EXPECT_NEAR(d["limit"].get<double>(), 30e6, kStressTol);
+      EXPECT_NEAR(d["value"].get<double>(), 15e3 / (0.040 * 0.008), kStressTol);
     }
   EXPECT_TRUE(found);
 }
@@ -140,17 +151,17 @@ TEST(StrengthCli, LinksAtAnAngle) {
   // θ = 90°: the tooth takes S along the chain line and S2 sideways, |N| = √(S² + S2²)
   const auto j = run_json(kSliding + "--exit-tension 10kN --link-angle 90");
   const nlohmann::json l1 = j["layouts"]["layout_1"];
-  EXPECT_NEAR(l1["tooth_force"].get<double>(), std::hypot(30e3, 10e3), 1e-6);
+  EXPECT_NEAR(l1["tooth_force"].get<double>(), std::hypot(30e3, 10e3), kResultantTol);
   ASSERT_TRUE(l1.contains("plate_force_y"));
   EXPECT_NEAR(l1["plate_force_y"]["lower_inner"].get<double>() +
                   l1["plate_force_y"]["upper_inner"].get<double>(),
-              10e3, 1e-9);
+              10e3, kForceTol);
   const nlohmann::json d = j["diagrams"]["layout_1"];
   for (const char* key : {"My", "Qy", "M_resultant", "Q_resultant"})
     EXPECT_EQ(d[key].size(), d["x"].size()) << key;
   double mmax = 0;
   for (const auto& m : d["M_resultant"]) mmax = std::max(mmax, m.get<double>());
-  EXPECT_LE(mmax, l1["moment_max"].get<double>() + 1e-9);
+  EXPECT_LE(mmax, l1["moment_max"].get<double>() + kMomentTol);
   // collinear --tooth-force N is --exit-tension S − N
   EXPECT_EQ(run_json(kSliding + "--tooth-force 20kN"), run_json(kSliding + "--exit-tension 10kN"));
   // refused: both at once; --tooth-force with an angle; the tooth pulling

@@ -21,6 +21,24 @@ using catena::InputError;
 constexpr double kMm2 = 1e-6;  // [m²]
 constexpr double kPi = std::numbers::pi;
 
+// Tolerances. Values the paper (or a comment here) prints are held to its last digit; values
+// computed two ways to the round-off of the formulas. The micromechanics tests use unit-free
+// test numbers (p_f = 2, p_m = 1): there [1] stands for whatever unit the inputs have.
+constexpr double kAreaMm2Tol = 0.005;       // [mm²] printed to 2 decimals: half a unit of the last
+constexpr double kPrintedRatioTol = 0.005;  // [1] a ratio printed to 2 decimals (9.63)
+constexpr double kForceTol = 1e-9;          // [N] loads of ~3e4 N: round-off
+constexpr double kExactTol = 1e-15;         // [1] O(1) values from one closed formula: a few ulps
+constexpr double kRatioTol = 1e-12;         // [1] O(1) ratios and factors computed two ways
+constexpr double kRelTol = 1e-9;            // [1] relative, the same capacity by two formulas
+constexpr double kRoundOffRelTol = 1e-12;   // [1] relative, round-off of a few operations
+// [1] relative: Σσ̃_r comes from the contact integral, the load from the section integral
+constexpr double kEquilibriumRelTol = 1e-6;
+constexpr double kModulusTol = 1e-6;         // [Pa] moduli of ~3.5e9 Pa: a couple of ulps
+constexpr double kDensityTol = 1e-12;        // [kg/m³] a phase's density returned unchanged
+constexpr double kMixtureDensityTol = 1e-9;  // [kg/m³] ~2e3 kg/m³ by the rule of mixtures
+constexpr double kMassTol = 1e-12;           // [kg] O(10) kg hand-derived masses of unit rings
+constexpr double kLengthTol = 1e-12;         // [m] O(10) m plate width by hand
+
 // Seed 002, lines after eq. (9): glass fibre, σ_B^a = 2500 MPa, α = 0.42, Σσ̃_r = 0.2662,
 // K_σ^max = 4.173, P = 29 700 N, link mass 0.035 kg; the steel plate: 45G, 6 mm, 0.337 kg,
 // 32 900 N; "area of the reinforcement at η = 0.7 is 19 mm²".
@@ -65,46 +83,51 @@ double max_checked_sigma_phi(const Ring& ring, const Result& res) {
 TEST(Eq9, PaperExampleImpliesTheReinforcementArea) {
   // (9) read literally: P = Σσ̃/(α(1−α)K)·2Fσ; the paper does not print F for P = 29 700 N.
   const double factor = 0.2662 / (0.42 * (1 - 0.42) * 4.173);
-  EXPECT_NEAR(eq9_factor(kPaper), factor, 1e-15);
+  EXPECT_NEAR(eq9_factor(kPaper), factor, kExactTol);
   const double f = area_for_load(kPaper, kPaperLoad);
-  EXPECT_NEAR(f / kMm2, 22.68, 0.005);  // ≈ 22.7 mm²
-  EXPECT_NEAR(capacity(kPaper, f), kPaperLoad, 1e-9);
+  EXPECT_NEAR(f / kMm2, 22.68, kAreaMm2Tol);  // ≈ 22.7 mm²
+  EXPECT_NEAR(capacity(kPaper, f), kPaperLoad, kForceTol);
   // The factor is below 1: (9) does not exceed the uniform-stress capacity 2Fσ^a ...
   EXPECT_LT(eq9_factor(kPaper), 1.0);
   // ... but it exceeds the capacity from the concentration alone, 2Fσ^a/K, by 9.3 %:
   // Σσ̃_r = 0.2662 against α(1 − α) = 0.2436 (the value that makes them equal).
-  EXPECT_NEAR(eq9_factor(kPaper) * kPaper.k_max, 1.0928, 5e-4);
-  EXPECT_NEAR(consistent_sum_sigma_r(0.42), 0.2436, 1e-12);
+  constexpr double kPercentTol = 5e-4;  // [1] half of the 0.1 % to which "9.3 %" is given
+  EXPECT_NEAR(eq9_factor(kPaper) * kPaper.k_max, 1.0928, kPercentTol);
+  EXPECT_NEAR(consistent_sum_sigma_r(0.42), 0.2436, kRatioTol);
 }
 
 TEST(Eq9, TheNineteenSquareMillimetresAreThePlainTensionSection) {
   // Which reading of "19 mm² at η = 0.7 for 32 900 N" holds (each computed, not assumed):
+  constexpr double kFibreAreaMm2Tol = 0.01;    // [mm²] 25.13 mm², one unit of the 2nd decimal
+  constexpr double kPrintedForceTol = 1.0;     // [N] 17 414 N, given to the newton
+  constexpr double kPrintedRatioTol3 = 0.001;  // [1] 3.819, one unit of the 3rd decimal
   // (a) (9) literally, F the fibre area per leg: 25.1 mm² — not 19.
   const double fibre_eq9 = area_for_load(kPaper, kSteelLoad);
-  EXPECT_NEAR(fibre_eq9 / kMm2, 25.13, 0.01);
+  EXPECT_NEAR(fibre_eq9 / kMm2, 25.13, kFibreAreaMm2Tol);
   EXPECT_GT(std::abs(fibre_eq9 - kPaperArea), 5 * kMm2);
   // (b) (9) with F the composite area (fibre η·F): 35.9 mm² — not 19.
   EXPECT_GT(std::abs(fibre_eq9 / kEta - kPaperArea), 15 * kMm2);
   // (c) 19 mm² of composite, η·19 = 13.3 mm² of fibre, in (9): 17 400 N — not 32 900 N.
   const double p_c = capacity(kPaper, kEta * kPaperArea);
-  EXPECT_NEAR(p_c, 17414.0, 1.0);
+  EXPECT_NEAR(p_c, 17414.0, kPrintedForceTol);
   // (d) plain tension without stress concentration (as the steel plate is rated), the
   // composite section over both legs: P/(η σ_B) = 18.8 mm², printed rounded as 19 mm².
   const double plain = kSteelLoad / (kEta * kPaper.fibre_strength);
-  EXPECT_NEAR(plain / kMm2, 18.8, 0.005);
+  EXPECT_NEAR(plain / kMm2, 18.8, kAreaMm2Tol);
   EXPECT_EQ(std::lround(plain / kMm2), 19);
   // So the 19 mm² ignores both K and (9). Per leg, (9) needs 25.13 mm² of fibre where (d)
   // puts 0.7·18.8/2 = 6.58 mm²: 3.8× more; as totals over both legs 2·25.13/13.16 = 3.82.
-  EXPECT_NEAR(2 * fibre_eq9 / (kEta * plain), 3.819, 0.001);
+  EXPECT_NEAR(2 * fibre_eq9 / (kEta * plain), 3.819, kPrintedRatioTol3);
 }
 
 TEST(Eq9, MassRatioOfThePaper) {
   // "0.035 kg, 9 times less than the steel one": 0.337/0.035 = 9.63, "9" is its floor.
   const double ratio = kSteelMass / kLinkMass;
-  EXPECT_NEAR(ratio, 9.63, 0.005);
+  EXPECT_NEAR(ratio, 9.63, kPrintedRatioTol);
   EXPECT_EQ(static_cast<int>(ratio), 9);
   // the steel plate's face area implied by its mass and thickness (steel 7850 kg/m³): 7155 mm²
-  EXPECT_NEAR(kSteelMass / (7850.0 * 6e-3) / kMm2, 7155.0, 1.0);
+  constexpr double kFaceAreaMm2Tol = 1.0;  // [mm²] 7155 mm², given to the square millimetre
+  EXPECT_NEAR(kSteelMass / (7850.0 * 6e-3) / kMm2, 7155.0, kFaceAreaMm2Tol);
 }
 
 TEST(Eq9, PaperConcentrationFactorIsNotTheConvergedOne) {
@@ -158,7 +181,7 @@ TEST(Eq9Normalisation, RingSumSigmaRIsFixedByEquilibrium) {
       r.E_r = er * r.E_phi;
       r.G = er == 1.0 ? r.E_phi / (2 * (1 + r.nu_phi_r)) : r.G;
       const Result res = analyse(r);
-      EXPECT_NEAR(res.sum_sigma_r, (1 - a) / a, 1e-6 * (1 - a) / a) << a << " " << er;
+      EXPECT_NEAR(res.sum_sigma_r, (1 - a) / a, kEquilibriumRelTol * (1 - a) / a) << a << " " << er;
     }
 }
 
@@ -177,11 +200,13 @@ TEST(Eq9Normalisation, ConsistentFormEqualsCapacityFromTheCriticalStress) {
     const double f = (ring.outer_radius - ring.inner_radius) * t;
     const double p9 =
         capacity(Eq9{a, consistent_sum_sigma_r(a), res.stress_concentration, strength}, f);
-    EXPECT_NEAR(p9, p_direct, 1e-9 * p_direct) << a;
+    EXPECT_NEAR(p9, p_direct, kRelTol * p_direct) << a;
     EXPECT_NEAR(capacity_from_concentration(f, strength, res.stress_concentration), p_direct,
-                1e-9 * p_direct);
+                kRelTol * p_direct);
     const double p_ours = capacity(Eq9{a, res.sum_sigma_r, res.stress_concentration, strength}, f);
-    EXPECT_NEAR(p_ours / p_direct, 1 / (a * a), 1e-5 / (a * a));
+    // [1] relative: the equilibrium error of Σσ̃_r (kEquilibriumRelTol) with room to spare
+    constexpr double kNormalisationRelTol = 1e-5;
+    EXPECT_NEAR(p_ours / p_direct, 1 / (a * a), kNormalisationRelTol / (a * a));
   }
 }
 
@@ -190,29 +215,32 @@ TEST(Eq9Normalisation, ConsistentFormEqualsCapacityFromTheCriticalStress) {
 
 TEST(Micromechanics, HandDerivedHalpinTsai) {
   // p_f/p_m = 2, ξ = 1, V = 0.5: η = 1/3, p = p_m (1 + 1/6)/(1 − 1/6) = 1.4 p_m
-  EXPECT_NEAR(halpin_tsai(2.0, 1.0, 1.0, 0.5), 1.4, 1e-15);
+  EXPECT_NEAR(halpin_tsai(2.0, 1.0, 1.0, 0.5), 1.4, kExactTol);
   // ξ = 2: η = 1/4, (1 + 1/4)/(1 − 1/8) = 10/7
-  EXPECT_NEAR(halpin_tsai(2.0, 1.0, 2.0, 0.5), 10.0 / 7.0, 1e-15);
-  EXPECT_NEAR(rule_of_mixtures(2.0, 1.0, 0.5), 1.5, 1e-15);
-  EXPECT_NEAR(inverse_rule_of_mixtures(2.0, 1.0, 0.5), 4.0 / 3.0, 1e-15);
+  EXPECT_NEAR(halpin_tsai(2.0, 1.0, 2.0, 0.5), 10.0 / 7.0, kExactTol);
+  EXPECT_NEAR(rule_of_mixtures(2.0, 1.0, 0.5), 1.5, kExactTol);
+  EXPECT_NEAR(inverse_rule_of_mixtures(2.0, 1.0, 0.5), 4.0 / 3.0, kExactTol);
 }
 
 TEST(Micromechanics, PhaseLimits) {
   const Lamina m = ring_lamina(kGlass, kEpoxy, 0.0);
-  EXPECT_NEAR(m.E_phi, kEpoxy.modulus, 1e-6);
-  EXPECT_NEAR(m.E_r, kEpoxy.modulus, 1e-6);
-  EXPECT_NEAR(m.G, kEpoxy.modulus / (2 * 1.35), 1e-6);
-  EXPECT_NEAR(m.nu_phi_r, kEpoxy.poisson, 1e-15);
-  EXPECT_NEAR(m.density, kEpoxy.density, 1e-12);
+  EXPECT_NEAR(m.E_phi, kEpoxy.modulus, kModulusTol);
+  EXPECT_NEAR(m.E_r, kEpoxy.modulus, kModulusTol);
+  EXPECT_NEAR(m.G, kEpoxy.modulus / (2 * 1.35), kModulusTol);
+  EXPECT_NEAR(m.nu_phi_r, kEpoxy.poisson, kExactTol);
+  EXPECT_NEAR(m.density, kEpoxy.density, kDensityTol);
   // V_f = 1 is outside the valid range (packing); the formulas' limit is checked directly
+  constexpr double kLimitRelTol = 1e-6;  // [1] relative, Halpin-Tsai at V_f = 1 with real moduli
+  constexpr double kLimitTol = 1e-14;    // [1] Halpin-Tsai at V_f = 1, unit-free test moduli
   EXPECT_NEAR(halpin_tsai(kGlass.modulus, kEpoxy.modulus, 2.0, 1.0), kGlass.modulus,
-              1e-6 * kGlass.modulus);
-  EXPECT_NEAR(halpin_tsai(7.0, 3.0, 1.0, 1.0), 7.0, 1e-14);
-  EXPECT_NEAR(rule_of_mixtures(7.0, 3.0, 1.0), 7.0, 1e-15);
+              kLimitRelTol * kGlass.modulus);
+  EXPECT_NEAR(halpin_tsai(7.0, 3.0, 1.0, 1.0), 7.0, kLimitTol);
+  EXPECT_NEAR(rule_of_mixtures(7.0, 3.0, 1.0), 7.0, kExactTol);
   // strength: fibre-dominated, the matrix at the fibre's failure strain
   const Lamina g = ring_lamina(kGlass, kEpoxy, 0.7);
-  EXPECT_NEAR(g.strength, 0.7 * 2500e6 + 0.3 * 3.5e9 * 2500e6 / 72.4e9, 1.0);
-  EXPECT_NEAR(g.density, 0.7 * 2560 + 0.3 * 1200, 1e-9);  // 2152 kg/m³
+  constexpr double kStrengthTol = 1.0;  // [Pa] ~1.8e9 Pa by the rule of mixtures: round-off
+  EXPECT_NEAR(g.strength, 0.7 * 2500e6 + 0.3 * 3.5e9 * 2500e6 / 72.4e9, kStrengthTol);
+  EXPECT_NEAR(g.density, 0.7 * 2560 + 0.3 * 1200, kMixtureDensityTol);  // 2152 kg/m³
 }
 
 TEST(Micromechanics, HalpinTsaiBetweenReussAndVoigtForRandomInputs) {
@@ -224,12 +252,14 @@ TEST(Micromechanics, HalpinTsaiBetweenReussAndVoigtForRandomInputs) {
     const double ht = halpin_tsai(pf, pm, xi, v);
     ASSERT_TRUE(std::isfinite(ht));
     const double lo = inverse_rule_of_mixtures(pf, pm, v), hi = rule_of_mixtures(pf, pm, v);
-    ASSERT_GE(ht, lo * (1 - 1e-12)) << pf << " " << pm << " " << v << " " << xi;
-    ASSERT_LE(ht, hi * (1 + 1e-12)) << pf << " " << pm << " " << v << " " << xi;
+    ASSERT_GE(ht, lo * (1 - kRoundOffRelTol)) << pf << " " << pm << " " << v << " " << xi;
+    ASSERT_LE(ht, hi * (1 + kRoundOffRelTol)) << pf << " " << pm << " " << v << " " << xi;
   }
   // ξ → 0 is the Reuss bound, ξ → ∞ the Voigt bound
-  EXPECT_NEAR(halpin_tsai(10.0, 1.0, 0.0, 0.4), inverse_rule_of_mixtures(10.0, 1.0, 0.4), 1e-12);
-  EXPECT_NEAR(halpin_tsai(10.0, 1.0, 1e9, 0.4), rule_of_mixtures(10.0, 1.0, 0.4), 1e-6);
+  constexpr double kVoigtTol = 1e-6;  // [1] ξ = 1e9 stands in for ∞: the gap closes like 1/ξ
+  EXPECT_NEAR(halpin_tsai(10.0, 1.0, 0.0, 0.4), inverse_rule_of_mixtures(10.0, 1.0, 0.4),
+              kRatioTol);
+  EXPECT_NEAR(halpin_tsai(10.0, 1.0, 1e9, 0.4), rule_of_mixtures(10.0, 1.0, 0.4), kVoigtTol);
 }
 
 TEST(Micromechanics, RejectsEveryBadPropertyAtOnce) {
@@ -252,14 +282,15 @@ TEST(Micromechanics, RejectsEveryBadPropertyAtOnce) {
 TEST(Mass, HandDerivedStadium) {
   // r1 = 1, r2 = 2, t = 1, p = 10, densities 1 and 2: band 1·(20 + 3π), insert 2·(20 − π)
   const LinkMass m = link_mass({1, 2, 1, 10, 1, 2});
-  EXPECT_NEAR(m.band, 20 + 3 * kPi, 1e-12);
-  EXPECT_NEAR(m.insert, 2 * (20 - kPi), 1e-12);
-  EXPECT_NEAR(m.total, m.band + m.insert, 1e-12);
+  EXPECT_NEAR(m.band, 20 + 3 * kPi, kMassTol);
+  EXPECT_NEAR(m.insert, 2 * (20 - kPi), kMassTol);
+  EXPECT_NEAR(m.total, m.band + m.insert, kMassTol);
   // steel plate: P = 100, σ = 10, t_s = 1, hole radius 1, p = 20: w = 2 + 10 = 12,
   // face = 240 + 36π − 2π, mass = 2·face
+  constexpr double kPlateMassTol = 1e-9;  // [kg] ~7e2 kg (density 2 over a 346 m² face)
   const SteelPlateResult s = steel_plate({10, 1, 2, 20, 1}, 100);
-  EXPECT_NEAR(s.width, 12, 1e-12);
-  EXPECT_NEAR(s.mass, 2 * (240 + 34 * kPi), 1e-9);
+  EXPECT_NEAR(s.width, 12, kLengthTol);
+  EXPECT_NEAR(s.mass, 2 * (240 + 34 * kPi), kPlateMassTol);
 }
 
 TEST(Mass, RejectsBadGeometry) {
@@ -285,6 +316,9 @@ DesignInput paper_design() {
 }
 
 TEST(Design, SizedLinkReanalysedCarriesTheLoadAtItsStrength) {
+  constexpr double kRadiusTol = 1e-15;       // [m] radii of ~1e-2 m through one product: round-off
+  constexpr double kAreaTol = 1e-15;         // [m²] fibre areas of ~1e-5 m²: 1e-10 relative
+  constexpr double kRoundTripRelTol = 1e-6;  // [1] relative, a fresh solve of the sized ring
   const DesignInput d = paper_design();
   const Design out = design(d);
   ASSERT_FALSE(out.scan.empty());
@@ -292,12 +326,12 @@ TEST(Design, SizedLinkReanalysedCarriesTheLoadAtItsStrength) {
     if (!p.feasible) continue;
     // round trip: the real-size ring, solved afresh, scaled to the required load
     const Ring ring = ring_of(out.lamina, p.alpha, p.outer_radius, d.thickness);
-    EXPECT_NEAR(ring.inner_radius, p.inner_radius, 1e-15);
+    EXPECT_NEAR(ring.inner_radius, p.inner_radius, kRadiusTol);
     const Result res = analyse(ring);
     const double stress = max_checked_sigma_phi(ring, res) * d.load / res.load;
-    EXPECT_NEAR(stress, out.lamina.strength, 1e-6 * out.lamina.strength) << p.alpha;
+    EXPECT_NEAR(stress, out.lamina.strength, kRoundTripRelTol * out.lamina.strength) << p.alpha;
     EXPECT_NEAR(p.fibre_area, d.fibre_fraction * (p.outer_radius - p.inner_radius) * d.thickness,
-                1e-15);
+                kAreaTol);
     EXPECT_GT(p.mass.total, 0.0);
     EXPECT_GT(p.mass.insert, 0.0);
   }
@@ -309,7 +343,7 @@ TEST(Design, SizedLinkReanalysedCarriesTheLoadAtItsStrength) {
   }
   ASSERT_TRUE(out.has_steel);
   EXPECT_GT(out.mass_ratio, 1.0);
-  EXPECT_NEAR(out.mass_ratio, out.steel.mass / out.scan[out.best].mass.total, 1e-12);
+  EXPECT_NEAR(out.mass_ratio, out.steel.mass / out.scan[out.best].mass.total, kRatioTol);
   for (const auto& dg : out.diagnostics)
     EXPECT_EQ(dg.code.rfind("ring.design.", 0), std::string::npos);
 }
@@ -350,11 +384,12 @@ TEST(Design, WideRandomInputsGiveFiniteConsistentDesigns) {
     d.alphas = {0.2 + 0.7 * u(gen)};
     const Design out = design(d);
     EXPECT_TRUE(catena::composite::validate(ring_of(out.lamina, d.alphas[0], 0.01, 1e-3)).empty());
-    EXPECT_GE(out.lamina.E_phi, out.lamina.E_r * (1 - 1e-12));
+    EXPECT_GE(out.lamina.E_phi, out.lamina.E_r * (1 - kRoundOffRelTol));
     const DesignPoint& p = out.scan[0];
     ASSERT_TRUE(std::isfinite(p.k) && p.k >= 1.0) << k;
-    EXPECT_NEAR(p.leg_area, d.load * p.k / (2 * out.lamina.strength), 1e-12 * p.leg_area);
-    EXPECT_NEAR(p.outer_radius * (1 - p.alpha) * d.thickness, p.leg_area, 1e-12 * p.leg_area);
+    EXPECT_NEAR(p.leg_area, d.load * p.k / (2 * out.lamina.strength), kRoundOffRelTol * p.leg_area);
+    EXPECT_NEAR(p.outer_radius * (1 - p.alpha) * d.thickness, p.leg_area,
+                kRoundOffRelTol * p.leg_area);
     EXPECT_TRUE(std::isfinite(p.mass.total) && p.mass.total > 0) << k;
   }
 }

@@ -7,11 +7,13 @@
 namespace catena::contact {
 namespace {
 
+constexpr double kTimeTol = 1e-9;  // [s] latent periods of ~6e2 s: round-off
+
 Fretting example() { return {0.8e-6, 5e-6, 2000.0, 20.0, 1e9, -1e-6}; }
 
 TEST(Fretting, Eq1HandValue) {
   // τ = K1·Ra·exp(K2·A·N·f/Ra) = 1e9·0.8e-6·exp(−1e-6·5e-6·2000·20/0.8e-6) = 800·e^(−0.25)
-  EXPECT_NEAR(latent_period(example()), 800.0 * std::exp(-0.25), 1e-9);
+  EXPECT_NEAR(latent_period(example()), 800.0 * std::exp(-0.25), kTimeTol);
 }
 
 TEST(Fretting, LatentPeriodFallsWithAmplitudeLoadAndFrequency) {

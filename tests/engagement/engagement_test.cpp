@@ -15,9 +15,11 @@ namespace catena::engagement {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kResidualTol = 1e-9;  // [-] equilibrium residual, relative to F1
-constexpr double kRelForceTol = 1e-9;  // [-] forces compared relative to F1
-constexpr double kAngleTol = 1e-9;     // [rad]
+constexpr double kResidualTol = 1e-9;   // [1] equilibrium residual, relative to F1
+constexpr double kRelForceTol = 1e-9;   // [1] forces compared relative to F1
+constexpr double kRelMomentTol = 1e-9;  // [1] moments compared relative to F1 times a length
+constexpr double kAngleTol = 1e-9;      // [rad]
+constexpr double kTensionTol = 1e-9;    // [N] tensions of ~3e4 N along the wrap: round-off
 
 constexpr double kR2 = 0.0627597756933;  // [m] eq. (6) for the test hinge (hinge CLI)
 
@@ -117,8 +119,9 @@ TEST(EngagementSliding, ResidualsAndFrictionLimit) {
               kRelForceTol * 29.4e3);
   EXPECT_NEAR(r.series.front().fn, 29.4e3 * 0.15 / std::sin(a.theta), kRelForceTol * 29.4e3);
   // friction → 0: continuous towards the polygon
+  constexpr double kForceTol = 1e-6;  // [N] f1 = 1e-12 moves F2 by ~3e-8 N
   const Result small = solve_sliding(sliding(1e-12));
-  EXPECT_NEAR(small.series.front().f2, 29.4e3, 1e-6);
+  EXPECT_NEAR(small.series.front().f2, 29.4e3, kForceTol);
 }
 
 // F2 falls over the whole engagement when ε(0) = θ ≤ 90°, i.e. ψ ≥ γΣ/2 (z = 12, m = 2: 30°)
@@ -158,7 +161,8 @@ TEST(EngagementSliding, RollerTurnsWhereCriterion25Holds) {
   const double f2_at_from = in.tension *
                             (std::sin(epsilon_at(a, from)) - 0.15 * std::cos(epsilon_at(a, from))) /
                             std::sin(a.theta);
-  EXPECT_NEAR(f2_at_from, in.tension, 0.01 * in.tension);
+  constexpr double kGridRelTol = 0.01;  // [1] relative: `from` is a γ sample, not the crossing
+  EXPECT_NEAR(f2_at_from, in.tension, kGridRelTol * in.tension);
 }
 
 TEST(EngagementSliding, LargeFrictionIsDiagnosedNotThrown) {
@@ -192,7 +196,8 @@ TEST(EngagementRolling, FrictionlessForcesAreThePolygonAndXiBalancesTheLevers) {
         const hinge::Pose q = hinge::pose(in.hinge, kR2, 2.0 * th);
         return q.contact.y - q.centre.y;
       };
-      EXPECT_NEAR(in.tension * e(s.xi), s.f2 * e(s.gamma - s.xi), 1e-9 * in.tension * 0.008);
+      EXPECT_NEAR(in.tension * e(s.xi), s.f2 * e(s.gamma - s.xi),
+                  kRelMomentTol * in.tension * 0.008);
       // F2 ≤ F1 ⇒ ξ ≤ γ/2 while the lever e grows with the turn (it peaks near 34° here)
       auto rising = [&](double th) { return e(th + 1e-6) > e(th); };
       if (s.f2 <= in.tension && rising(s.xi) && rising(s.gamma - s.xi)) {
@@ -240,7 +245,7 @@ TEST(EngagementRolling, RandomInputsNoNanAndBounded) {
       EXPECT_LE(s.residual, kResidualTol);
       // triangle inequality of the force balance: |F_N| ≤ F1 + F2 + F1k + F2k
       EXPECT_LE(std::abs(s.fn),
-                in.tension + std::abs(s.f2) + s.f1k + std::abs(s.f2k) + 1e-9 * in.tension);
+                in.tension + std::abs(s.f2) + s.f1k + std::abs(s.f2k) + kRelForceTol * in.tension);
     }
   }
   EXPECT_GT(solved, 50);
@@ -278,9 +283,9 @@ TEST(EngagementWrap, FrictionlessTorqueIsTheTensionDropTimesTheSideDistance) {
     ASSERT_EQ(w.tension.size(), 3u);
     const double global = (w.tension.front() - w.tension.back()) * w.pitch_radius *
                           std::cos(0.5 * r.angles.gamma_sigma);
-    EXPECT_NEAR(w.torque, global, 1e-9 * in.tension * t);
+    EXPECT_NEAR(w.torque, global, kRelMomentTol * in.tension * t);
     for (std::size_t k = 1; k < w.tension.size(); ++k)
-      EXPECT_LE(w.tension[k], w.tension[k - 1] + 1e-9);
+      EXPECT_LE(w.tension[k], w.tension[k - 1] + kTensionTol);
   }
   EXPECT_THROW(wrap(solve_sliding(sliding()), 29.4e3, -1.0, 0.0), InputError);
 }

@@ -16,6 +16,12 @@ namespace {
 
 Hinge example() { return testing::example_hinge(); }
 
+constexpr double kArcTol = 1e-9;  // [m] distances to the plate's arc, radii ~1e-2 m: round-off
+// [m] where the roller rolls on the plate's arc, the polygonal contour may cut the arc's chords
+constexpr double kChordTol = 2e-6;
+constexpr double kClearanceShare = 0.9;  // [1] share of the clearance the polygonal contour keeps
+constexpr double kRelTol = 1e-12;        // [1] relative, radii: round-off
+
 // Signed distance from p to the closed polygon (positive inside), by edges and crossings.
 double inside_distance(const std::vector<Point>& poly, Point p) {
   bool inside = false;
@@ -63,13 +69,14 @@ TEST_P(ApertureCase, HoldsTheRollerInEveryPositionWithTheClearance) {
       const Point w = roller_point(p, q);
       const double dist = inside_distance(ap.contour, w);
       const double to_arc = std::hypot(w.x - o1.x, w.y - o1.y) - r1;  // ≥ 0: not in the plate's arc
-      EXPECT_GE(to_arc, -1e-9);
+      EXPECT_GE(to_arc, -kArcTol);
       // inside with the clearance, except where the roller rolls on the plate's arc
       if (to_arc > c) {
-        EXPECT_GE(dist, 0.9 * c) << "k " << k << " at " << w.x << ", " << w.y << " to_arc "
-                                 << to_arc;
+        EXPECT_GE(dist, kClearanceShare * c)
+            << "k " << k << " at " << w.x << ", " << w.y << " to_arc " << to_arc;
       } else {
-        EXPECT_GE(dist, -2e-6) << "k " << k << " at " << w.x << ", " << w.y << " to_arc " << to_arc;
+        EXPECT_GE(dist, -kChordTol)
+            << "k " << k << " at " << w.x << ", " << w.y << " to_arc " << to_arc;
       }
     }
   }
@@ -78,7 +85,7 @@ TEST_P(ApertureCase, HoldsTheRollerInEveryPositionWithTheClearance) {
   for (const Point& q : ap.contour) {
     const double psi = std::atan2(q.y - o1.y, o1.x - q.x);
     if (psi >= -0.5 * std::numbers::pi && psi <= psi_end) {
-      EXPECT_GE(std::hypot(q.x - o1.x, q.y - o1.y), r1 * (1 - 1e-12)) << psi;
+      EXPECT_GE(std::hypot(q.x - o1.x, q.y - o1.y), r1 * (1 - kRelTol)) << psi;
     }
   }
 }
@@ -118,7 +125,8 @@ TEST(HingeAperture, DxfRoundTripKeepsTheClosedContourAndItsExtent) {
   EXPECT_NEAR(bymin, ymin, kDxfTol);
   EXPECT_NEAR(bymax, ymax, kDxfTol);
   // extent: the roller circle plus clearance bounds it below; the arc and the swept corners above
-  EXPECT_NEAR(ymin, -(0.5 * h.pin_diameter + 0.5e-3), 1e-6);
+  constexpr double kExtentTol = 1e-6;  // [m] the contour's lowest vertex against the circle
+  EXPECT_NEAR(ymin, -(0.5 * h.pin_diameter + 0.5e-3), kExtentTol);
   EXPECT_LE(xmax, h.half_thickness + h.plate_radius);
   EXPECT_GT(xmax, h.half_thickness);
 }

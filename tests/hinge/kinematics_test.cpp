@@ -13,6 +13,13 @@ namespace catena::hinge {
 namespace {
 
 constexpr double kPositionTol = 1e-9;  // [m] the bound
+constexpr double kRootTol = 1e-9;      // [rad] the simulation's root finder for the turn
+// [m] lengths of ~1e-2 m where both sides are the same closed form (or exactly 0): round-off
+constexpr double kRoundOffLengthTol = 1e-15;
+// [m] below one ulp of a = 8 mm: the zero-turn values must come out exact
+constexpr double kZeroTurnTol = 1e-18;
+// [1] relative: the small-turn expansion drops terms of relative order Ψ1 = 1e-3
+constexpr double kExpansionRelTol = 1e-3;
 
 struct Case {
   const char* name;
@@ -58,7 +65,7 @@ TEST_P(HingeCase, ClosedFormsAgreeWithTheRollingSimulation) {
   for (int i = 0; i <= 20; ++i) {
     const double phi = phi_max * i / 20.0;
     const testing::SimulatedPose s = sim.at_phi(phi);
-    EXPECT_NEAR(s.gamma, phi / 2, 1e-9);      // the simulation's root finder
+    EXPECT_NEAR(s.gamma, phi / 2, kRootTol);  // the simulation's root finder
     const Pose p = pose(h, r2, 2 * s.gamma);  // at the simulated turn itself
     EXPECT_NEAR(p.contact.x, s.contact.x, kPositionTol) << "phi " << phi;
     EXPECT_NEAR(p.contact.y, s.contact.y, kPositionTol) << "phi " << phi;
@@ -77,17 +84,17 @@ TEST_P(HingeCase, ClosedFormsAgreeWithTheRollingSimulation) {
 TEST_P(HingeCase, StartsStraightAndIsMirrorSymmetric) {
   const Hinge& h = GetParam().hinge;
   const double r2 = r2_of(h);
-  EXPECT_NEAR(pitch_change(h, r2, 0.0), 0.0, 1e-15);
+  EXPECT_NEAR(pitch_change(h, r2, 0.0), 0.0, kRoundOffLengthTol);
   const Pose zero = pose(h, r2, 0.0);
-  EXPECT_NEAR(zero.centre.x, 0.0, 1e-15);
-  EXPECT_NEAR(zero.centre.y, 0.0, 1e-15);
+  EXPECT_NEAR(zero.centre.x, 0.0, kRoundOffLengthTol);
+  EXPECT_NEAR(zero.centre.y, 0.0, kRoundOffLengthTol);
   if (h.face == Face::kFlat && flat_contact_offset(h) != 0.0) return;  // offset breaks the mirror
   for (double phi : {0.05, 0.2, 0.4}) {  // turning the other way mirrors the hinge in y
     const Pose p = pose(h, r2, phi);
     const Pose m = pose(h, r2, -phi);
-    EXPECT_NEAR(p.centre.x, m.centre.x, 1e-15);
-    EXPECT_NEAR(p.centre.y, -m.centre.y, 1e-15);
-    EXPECT_NEAR(p.contact.y, -m.contact.y, 1e-15);
+    EXPECT_NEAR(p.centre.x, m.centre.x, kRoundOffLengthTol);
+    EXPECT_NEAR(p.centre.y, -m.centre.y, kRoundOffLengthTol);
+    EXPECT_NEAR(p.contact.y, -m.contact.y, kRoundOffLengthTol);
   }
 }
 
@@ -111,11 +118,11 @@ TEST(HingeKinematics, DerivedV1V2ReproduceThePrintedForm18_19) {
     // 000 eqs. (18)–(19), Latvian printing, with V1, V2 as derived
     const double x = a + r1 - (r1 + p.v2) * std::cos(p.psi1) - p.v1 * std::sin(phi / 2);
     const double y = (r1 + p.v2) * std::sin(p.psi1) - p.v1 * std::cos(phi / 2);
-    EXPECT_NEAR(x, p.centre.x, 1e-15);
-    EXPECT_NEAR(y, p.centre.y, 1e-15);
+    EXPECT_NEAR(x, p.centre.x, kRoundOffLengthTol);
+    EXPECT_NEAR(y, p.centre.y, kRoundOffLengthTol);
   }
-  EXPECT_NEAR(pose(h, r2, 0).v1, 0.0, 1e-18);
-  EXPECT_NEAR(pose(h, r2, 0).v2, a, 1e-18);
+  EXPECT_NEAR(pose(h, r2, 0).v1, 0.0, kZeroTurnTol);
+  EXPECT_NEAR(pose(h, r2, 0).v2, a, kZeroTurnTol);
   EXPECT_GT(pose(h, r2, 0.5).v1, 0.0);  // not constants
 }
 
@@ -142,7 +149,8 @@ TEST(HingeKinematics, RandomHingesAreFiniteAndMatchTheSmallTurnExpansion) {
     // small turns: Δt ≈ −γ²[R1R2 − a(R2 − R1)]/(R2 − R1) (second-order expansion of 2·X_O2)
     const double g = 1e-3 * (*r2 - r1) / *r2;  // Ψ1 = 1e-3: the expansion is in Ψ1
     const double expected = -g * g * (r1 * *r2 - a * (*r2 - r1)) / (*r2 - r1);
-    EXPECT_NEAR(pitch_change(h, *r2, 2 * g), expected, 1e-3 * std::abs(expected) + 1e-15);
+    EXPECT_NEAR(pitch_change(h, *r2, 2 * g), expected,
+                kExpansionRelTol * std::abs(expected) + kRoundOffLengthTol);
   }
 }
 

@@ -15,6 +15,13 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+// Tolerances. Lengths are ~1e-2 m, areas 3e-4 to 1.2e-3 m².
+constexpr double kLengthTol = 1e-15;    // [m] a length from the same closed form: round-off
+constexpr double kOnCircleTol = 1e-14;  // [m] the point N1 on the plate's circle: round-off
+constexpr double kAngleTol = 1e-12;     // [rad] closed-form angles against atan2 and each other
+constexpr double kAreaTol = 1e-12;      // [m²] sections that solve eq. (10) for the area F/[τ]
+constexpr double kMicronTol = 1e-6;     // [m] lengths written here to 1 µm or finer
+
 Hinge example() { return testing::example_hinge(); }
 
 bool has(const Synthesis& s, const std::string& code) {
@@ -48,8 +55,8 @@ TEST(HingeSynthesis, N1IsWhereTheTwoCirclesMeetEq4_5) {
                  r1 = (0.2 + 2 * u(rng)) * d;
     const double x = x_n1(d, a, r1);
     const double y = std::sqrt(d * d / 4 - x * x);
-    EXPECT_NEAR(std::hypot(x - a - r1, y), r1, 1e-14);  // on the plate's circle as well
-    EXPECT_NEAR(psi1_max(d, a, r1), std::atan2(y, a + r1 - x), 1e-12);
+    EXPECT_NEAR(std::hypot(x - a - r1, y), r1, kOnCircleTol);  // on the plate's circle as well
+    EXPECT_NEAR(psi1_max(d, a, r1), std::atan2(y, a + r1 - x), kAngleTol);
   }
 }
 
@@ -57,7 +64,7 @@ TEST(HingeSynthesis, R1maxIsWhereEq6NeedsAFlatFace) {
   const Hinge h = example();
   const double gmax = gamma_max(h);
   const double rmax = r1_max(h.pin_diameter, h.half_thickness, gmax);
-  EXPECT_NEAR(psi1_max(h.pin_diameter, h.half_thickness, rmax), gmax, 1e-12);
+  EXPECT_NEAR(psi1_max(h.pin_diameter, h.half_thickness, rmax), gmax, kAngleTol);
   double previous = 0.0;
   for (double f : {0.5, 0.9, 0.99, 0.999, 0.99999}) {  // R2 → ∞ as R1 → R1max, monotonically
     const double r2 = *r2_eq6(h.pin_diameter, h.half_thickness, f * rmax, gmax);
@@ -69,8 +76,11 @@ TEST(HingeSynthesis, R1maxIsWhereEq6NeedsAFlatFace) {
 }
 
 TEST(HingeSynthesis, SectionAreasMatchQuadrature) {
+  // [m²] sections of ~6e-4 m² against Gauss-Kronrod over a width with kinks: ~2e-7 relative
+  constexpr double kQuadratureAreaTol = 1e-10;
   for (double face : {0.0, 0.020, 0.0395, 0.2}) {
-    EXPECT_NEAR(section_area(0.040, 0.008, face), section_by_quadrature(0.040, 0.008, face), 1e-10)
+    EXPECT_NEAR(section_area(0.040, 0.008, face), section_by_quadrature(0.040, 0.008, face),
+                kQuadratureAreaTol)
         << face;
   }
   // (10) with R1 arcs overstates the true section (R2 > R1 cuts deeper at the edges)
@@ -81,7 +91,7 @@ TEST(HingeSynthesis, AMinSolvesTheShearEquation10) {
   const double d = 0.040, r1 = 0.020, f = 29.4e3, tau = 100e6;
   const auto a = a_min_eq10(d, r1, f, tau);
   ASSERT_TRUE(a.has_value());
-  EXPECT_NEAR(section_area(d, *a, r1), f / tau, 1e-12);
+  EXPECT_NEAR(section_area(d, *a, r1), f / tau, kAreaTol);
   EXPECT_FALSE(a_min_eq10(0.010, r1, 29.4e3, 100e6).has_value());  // πd²/4 = 78.5 mm² < 294 mm²
   Hinge h = example();
   Loads loads;
@@ -98,9 +108,10 @@ TEST(HingeSynthesis, Step1SolvesEqs7And10Together) {
   const double d = 0.040, f = 120e3, tau = 100e6, gmax = kPi / 8;
   const auto j = a_min_at_r1max(d, gmax, f, tau);
   ASSERT_TRUE(j.has_value());
-  EXPECT_NEAR(j->r1_max, r1_max(d, j->a_min, gmax), 1e-15);
-  EXPECT_NEAR(section_area(d, j->a_min, j->r1_max), f / tau, 1e-12);
-  EXPECT_NEAR(psi1_max(d, j->a_min, j->r1_max), gmax, 1e-9);  // R1max: flat-face limit
+  EXPECT_NEAR(j->r1_max, r1_max(d, j->a_min, gmax), kLengthTol);
+  EXPECT_NEAR(section_area(d, j->a_min, j->r1_max), f / tau, kAreaTol);
+  constexpr double kJointAngleTol = 1e-9;  // [rad] through the joint root of eqs. (7) and (10)
+  EXPECT_NEAR(psi1_max(d, j->a_min, j->r1_max), gmax, kJointAngleTol);  // R1max: flat-face limit
   EXPECT_FALSE(a_min_at_r1max(0.010, gmax, f, tau).has_value());
 }
 
@@ -109,11 +120,12 @@ TEST(HingeSynthesis, RollingLimitEq21MatchesTheSimulatedForceAngle) {
   // angle β between it and the contact normal satisfies tan β ≤ f (eq. 20).
   const Hinge h = example();
   const double r2 = *r2_eq6(h.pin_diameter, h.half_thickness, h.plate_radius, gamma_max(h));
+  constexpr double kFrictionTol = 1e-9;  // [1] tan β at the simulation's root-found pose
   const testing::RollingSimulation sim(h, r2);
   for (double f : {0.05, 0.15, 0.3}) {
     const double limit = rolling_limit(f, h.plate_radius, r2);
     const testing::SimulatedPose p = sim.at_phi(2 * limit);
-    EXPECT_NEAR(std::tan(p.beta), f, 1e-9) << f;
+    EXPECT_NEAR(std::tan(p.beta), f, kFrictionTol) << f;
   }
 }
 
@@ -129,7 +141,7 @@ TEST(HingeSynthesis, DiagnosticsNameTheLimit) {
   ASSERT_TRUE(has(s, "hinge.r1_exceeds_r1max"));
   for (const auto& d : s.diagnostics) {
     if (d.code == "hinge.r1_exceeds_r1max") {
-      EXPECT_NEAR(d.limit, 0.0431490, 1e-6);
+      EXPECT_NEAR(d.limit, 0.0431490, kMicronTol);
       EXPECT_NE(d.message.find("R1max = 43.149 mm"), std::string::npos) << d.message;
     }
   }
@@ -140,7 +152,7 @@ TEST(HingeSynthesis, DiagnosticsNameTheLimit) {
   const Synthesis ok = synthesize(h, loads);
   EXPECT_FALSE(has(ok, "hinge.contact_stress"));
   EXPECT_FALSE(has(ok, "hinge.r1_exceeds_r1max"));
-  EXPECT_NEAR(ok.r2, 0.0395033, 1e-6);
+  EXPECT_NEAR(ok.r2, 0.0395033, kMicronTol);
 }
 
 TEST(HingeSynthesis, InvalidInputListsEveryProblem) {

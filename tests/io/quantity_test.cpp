@@ -7,7 +7,9 @@
 namespace catena::io {
 namespace {
 
-constexpr double kRelTol = 1e-12;
+constexpr double kRelTol = 1e-12;  // [1] relative, unit conversions: round-off
+// [SI unit of the quantity] keeps the bound positive when the expected value is 0
+constexpr double kZeroFloorTol = 1e-300;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 double parse(const char* text, QuantityKind kind) { return parse_quantity(text, kind, "--flag"); }
@@ -22,7 +24,7 @@ class AcceptedSpelling : public ::testing::TestWithParam<Accepted> {};
 
 TEST_P(AcceptedSpelling, ConvertsToSi) {
   const Accepted& c = GetParam();
-  EXPECT_NEAR(parse(c.text, c.kind), c.si, kRelTol * std::abs(c.si) + 1e-300) << c.text;
+  EXPECT_NEAR(parse(c.text, c.kind), c.si, kRelTol * std::abs(c.si) + kZeroFloorTol) << c.text;
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -34,10 +34,13 @@ TEST(WheelGeometry, PitchRadiusEq6IsTheRootOfThePolygonClosure) {
 
 TEST(WheelGeometry, ThinWireLimitIsTheRegularPolygon) {
   // d → 0: the polygon becomes regular with 2z sides t, R = t / (2 sin(π/2z)).
+  constexpr double kThinWireLengthTol = 1e-9;  // [m] a wire of d = 1e-9 m moves R by O(d)
+  constexpr double kThinWireAngleTol = 1e-7;   // [rad] δ1 − δ2 ≈ 1.2e-8 rad for d = 1e-9 m
   const PocketWheel wheel{0.064, 1e-9, 8};
   const WheelGeometry g = wheel_geometry(wheel);
-  EXPECT_NEAR(g.pitch_radius, 0.064 / (2.0 * std::sin(std::numbers::pi / 16.0)), 1e-9);
-  EXPECT_NEAR(g.delta1, g.delta2, 1e-7);  // δ1 − δ2 ≈ 2d/(R cos(π/2z))
+  EXPECT_NEAR(g.pitch_radius, 0.064 / (2.0 * std::sin(std::numbers::pi / 16.0)),
+              kThinWireLengthTol);
+  EXPECT_NEAR(g.delta1, g.delta2, kThinWireAngleTol);  // δ1 − δ2 ≈ 2d/(R cos(π/2z))
 }
 
 TEST(WheelGeometry, ValidateReportsAllProblemsAtOnce) {

@@ -18,8 +18,16 @@ using catena::InputError;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
-constexpr double kHandTol = 1e-9;  // [N] hand sums of numbers of order 1e3 (round-off only)
-constexpr double kRelTol = 1e-12;  // [-] relative, round-off of a few dozen operations
+constexpr double kHandTol = 1e-9;   // [N] hand sums of numbers of order 1e3 (round-off only)
+constexpr double kPowerTol = 1e-9;  // [W] hand-derived powers of order 1e3 (round-off only)
+constexpr double kRelTol = 1e-12;   // [1] relative, round-off of a few dozen operations
+// [1] relative to the loop's tensions (up to ~1e6 N): round-off of sums and products along a
+// random loop of up to 21 segments
+constexpr double kSumRelTol = 1e-9;
+// [1] relative to the loop's tensions, when the two sides come from different walks of the loop
+// (a bisection stopped at 1e-10 of a ±1e9 N bracket, a take-up moved elsewhere)
+constexpr double kWalkRelTol = 1e-8;
+constexpr double kShiftTol = 1e-8;  // [N] a tension shift of ~1e2 N taken between ~1e6 N tensions
 
 Segment straight(double L, double q0, double q, double w, double beta = 0.0) {
   Segment s;
@@ -88,7 +96,7 @@ TEST(Loop, HorizontalLoopByHand) {
   EXPECT_NEAR(r.slack_tension, 1000.0, kHandTol);
   EXPECT_NEAR(r.tight_tension, 2305.2, kHandTol);
   EXPECT_NEAR(r.drive_force, 1404.356, kHandTol);
-  EXPECT_NEAR(r.power, 877.7225, kHandTol);
+  EXPECT_NEAR(r.power, 877.7225, kPowerTol);
   EXPECT_DOUBLE_EQ(r.length, 40.0);
   EXPECT_DOUBLE_EQ(r.segments[3].s_start, 20.0);
   EXPECT_DOUBLE_EQ(r.segments[3].s_end, 40.0);
@@ -128,9 +136,10 @@ TEST(Loop, DescendingRunLowersTheTension) {
   l.segments = {takeup(500.0), straight(10.0, 100.0, 0.0, 0.1, -10.0 * kDeg), turn(1.0),
                 straight(10.0, 100.0, 0.0, 0.1, 10.0 * kDeg), drive()};
   l.speed = 1.0;
+  constexpr double kPrintedTol = 1e-4;  // [N] the hand value −75.1674 has 4 decimals
   const LoopResult r = solve(l);
   const double down = 1000.0 * (0.1 * std::cos(10.0 * kDeg) - std::sin(10.0 * kDeg));
-  EXPECT_NEAR(down, -75.1674, 1e-4);
+  EXPECT_NEAR(down, -75.1674, kPrintedTol);
   EXPECT_NEAR(r.segments[1].tension_out, 500.0 + down, kHandTol);
   EXPECT_LT(r.segments[1].tension_out, r.segments[1].tension_in);
   // rising back by the same height: the heights cancel and only friction is left,
@@ -142,10 +151,11 @@ TEST(Loop, DescendingRunLowersTheTension) {
 
 TEST(Loop, EulerFormAgreesWithItsFactor) {
   // exp(f·α) with f = 0.2, α = 90° is the factor k = exp(0.1·π) = 1.369107…
+  constexpr double kPrintedTol = 1e-4;  // [1] the factor is written 1.3691, with 4 decimals
   Loop a = horizontal(), b = horizontal();
   a.segments[2] = guide(0.2, kPi / 2);
   b.segments[2] = turn(std::exp(0.2 * kPi / 2));
-  EXPECT_NEAR(std::exp(0.1 * kPi), 1.3691, 1e-4);
+  EXPECT_NEAR(std::exp(0.1 * kPi), 1.3691, kPrintedTol);
   const LoopResult ra = solve(a), rb = solve(b);
   for (std::size_t i = 0; i < ra.segments.size(); ++i)
     EXPECT_NEAR(ra.segments[i].tension_out, rb.segments[i].tension_out,
@@ -211,7 +221,7 @@ TEST(Loop, AffineSolutionMatchesBruteForceSearch) {
     const Loop l = random_loop(rng);
     const LoopResult r = solve(l);
     const double scale = 1.0 + r.max.tension - r.min.tension + std::abs(r.slack_tension);
-    EXPECT_NEAR(r.slack_tension, bisect_slack(l), 1e-8 * scale) << trial;
+    EXPECT_NEAR(r.slack_tension, bisect_slack(l), kWalkRelTol * scale) << trial;
   }
 }
 
@@ -237,19 +247,21 @@ TEST(Loop, RandomLoopsHoldTheContourInvariants) {
         if (s.kind == SegmentKind::kTurn)
           expected =
               ((s.factor ? *s.factor : std::exp(*s.friction * *s.wrap)) - 1.0) * t.tension_in;
-        EXPECT_NEAR(t.tension_out - t.tension_in, expected, 1e-9 * magnitude) << trial << " " << i;
+        EXPECT_NEAR(t.tension_out - t.tension_in, expected, kSumRelTol * magnitude)
+            << trial << " " << i;
         sum += expected;
         if (s.kind == SegmentKind::kTakeup) {
-          EXPECT_NEAR(t.tension_in, s.pretension, 1e-9 * magnitude);
+          EXPECT_NEAR(t.tension_in, s.pretension, kSumRelTol * magnitude);
         }
       }
     }
     // the drive supplies what the loop resists, plus its own loss
     const double xi = l.segments.back().loss;
-    EXPECT_NEAR(r.drive_force, sum + xi * (r.tight_tension + r.slack_tension), 1e-9 * magnitude)
+    EXPECT_NEAR(r.drive_force, sum + xi * (r.tight_tension + r.slack_tension),
+                kSumRelTol * magnitude)
         << trial;
     EXPECT_NEAR(r.power * (r.drive_force >= 0 ? l.efficiency : 1.0 / l.efficiency),
-                r.drive_force * l.speed, 1e-9 * magnitude * l.speed);
+                r.drive_force * l.speed, kSumRelTol * magnitude * l.speed);
     EXPECT_LE(r.min.tension, r.max.tension);
     EXPECT_EQ(r.segments.back().tension_out, r.slack_tension);  // the loop closes
   }
@@ -272,7 +284,7 @@ TEST(Loop, TensionsAreAffineInTheWeights) {
     for (std::size_t i = 0; i < l1.segments.size(); ++i) {
       const double d1 = r1.segments[i].tension_out - r0.segments[i].tension_out;
       const double dl = rl.segments[i].tension_out - r0.segments[i].tension_out;
-      EXPECT_NEAR(dl, k * d1, 1e-9 * (1.0 + std::abs(k * d1) + r0.segments[i].tension_out))
+      EXPECT_NEAR(dl, k * d1, kSumRelTol * (1.0 + std::abs(k * d1) + r0.segments[i].tension_out))
           << trial << " " << i;
     }
   }
@@ -290,7 +302,7 @@ TEST(Loop, MovingTheTakeUpOrItsPretensionShiftsTheTensions) {
       if (s.kind == SegmentKind::kTakeup) s.pretension += 750.0;
     const LoopResult b = solve(raised);
     for (std::size_t i = 0; i < l.segments.size(); ++i)
-      EXPECT_NEAR(b.segments[i].tension_out - a.segments[i].tension_out, 750.0, 1e-8);
+      EXPECT_NEAR(b.segments[i].tension_out - a.segments[i].tension_out, 750.0, kShiftTol);
     // moved elsewhere with the tension it had found there: the same loop
     std::size_t from = 0;
     for (std::size_t i = 0; i < l.segments.size(); ++i)
@@ -302,8 +314,8 @@ TEST(Loop, MovingTheTakeUpOrItsPretensionShiftsTheTensions) {
     if (moved.pretension < 0.0) continue;  // a take-up cannot push: not a valid input
     l.segments.insert(l.segments.begin() + static_cast<std::ptrdiff_t>(to), moved);
     const LoopResult c = solve(l);
-    EXPECT_NEAR(c.slack_tension, a.slack_tension, 1e-8 * (1.0 + a.max.tension)) << trial;
-    EXPECT_NEAR(c.drive_force, a.drive_force, 1e-8 * (1.0 + a.max.tension)) << trial;
+    EXPECT_NEAR(c.slack_tension, a.slack_tension, kWalkRelTol * (1.0 + a.max.tension)) << trial;
+    EXPECT_NEAR(c.drive_force, a.drive_force, kWalkRelTol * (1.0 + a.max.tension)) << trial;
   }
   // with turns, ΔS_i = ΔS0·A_i/A_takeup (A_i the product of the factors k up to point i): every
   // tension rises, by exactly ΔS0 at the take-up, less before it and more after it
@@ -317,9 +329,9 @@ TEST(Loop, MovingTheTakeUpOrItsPretensionShiftsTheTensions) {
     EXPECT_GT(previous, 0.0);
     for (std::size_t i = 0; i + 1 < l.segments.size(); ++i) {
       const double shift = b.segments[i].tension_out - a.segments[i].tension_out;
-      EXPECT_GE(shift, previous * (1 - 1e-9)) << trial << " " << i;
+      EXPECT_GE(shift, previous * (1 - kSumRelTol)) << trial << " " << i;
       if (l.segments[i].kind == SegmentKind::kTakeup) {
-        EXPECT_NEAR(shift, 100.0, 1e-8);
+        EXPECT_NEAR(shift, 100.0, kShiftTol);
       }
       previous = shift;
     }
@@ -339,8 +351,8 @@ TEST(Loop, HorizontalLoopsPeakAtTheDriveTightSide) {
                                 [](const Segment& s) { return s.kind == SegmentKind::kTakeup; });
     std::rotate(l.segments.begin(), t, t + 1);
     const LoopResult r = solve(l);
-    EXPECT_NEAR(r.max.tension, r.tight_tension, 1e-9 * r.tight_tension);
-    EXPECT_NEAR(r.min.tension, r.slack_tension, 1e-9 * (1.0 + r.tight_tension));
+    EXPECT_NEAR(r.max.tension, r.tight_tension, kSumRelTol * r.tight_tension);
+    EXPECT_NEAR(r.min.tension, r.slack_tension, kSumRelTol * (1.0 + r.tight_tension));
     EXPECT_DOUBLE_EQ(r.max.s, r.length);
     EXPECT_EQ(r.min.s, 0.0);
     for (std::size_t i = 0; i + 1 < l.segments.size(); ++i)
@@ -399,7 +411,7 @@ TEST(Loop, DownhillLoopBrakesWithItsPowerReturned) {
   const LoopResult r = solve(l);
   ASSERT_LT(r.drive_force, 0.0);
   EXPECT_TRUE(has(r, "loop.drive_brakes"));
-  EXPECT_NEAR(r.power, r.drive_force * 0.5 * 0.8, kHandTol);
+  EXPECT_NEAR(r.power, r.drive_force * 0.5 * 0.8, kPowerTol);
 }
 
 std::vector<catena::Issue> issues_of(const Loop& l) {

@@ -20,6 +20,32 @@ namespace {
 using namespace catena::strength;
 constexpr double kPi = std::numbers::pi;
 
+// Tolerances. The hand formulas below and the library do the same few operations on loads of
+// ~1e4 N, lengths of ~1e-2 m and stresses of ~1e8 Pa, so they agree to round-off; the numerical
+// checks (finite differences, quadrature, dense sampling) get the size of their own error.
+constexpr double kForceTol = 1e-9;         // [N] plate forces, shears, ΣF of ~1e4 N: round-off
+constexpr double kResultantTol = 1e-6;     // [N] |N| of ~3e4 N through a square root
+constexpr double kMomentTol = 1e-9;        // [N·m] bending moments, ΣM of ~1e2 N·m: round-off
+constexpr double kStartMomentTol = 1e-12;  // [N·m] M at the roller's first end: zero but round-off
+constexpr double kLengthTol = 1e-12;       // [m] positions and contact widths of ~1e-2 m
+constexpr double kExactLengthTol = 1e-15;  // [m] ~1e-2 m from one closed formula: round-off
+constexpr double kStressTol = 1e-3;        // [Pa] hand formulas for stresses of ~1e8 Pa
+constexpr double kFineStressTol = 1e-6;    // [Pa] the same stress or limit by the same formula
+constexpr double kCopiedStressTol = 1e-9;  // [Pa] below one ulp of ~6e7 Pa: the value is copied
+constexpr double kRatioTol = 1e-12;        // [1] safety factors, quotients of the same numbers
+constexpr double kRelTol = 1e-9;           // [1] relative, closed formulas against each other
+constexpr double kHertzRelTol = 1e-6;      // [1] relative, Hertz pressures written out by hand
+// [N] central difference of M with h = 1 µm against Q: O(h²) truncation and round-off of M/h
+constexpr double kFiniteDifferenceTol = 1e-3;
+// [N·m] composite Simpson rule with 20000 intervals over Q, which has kinks at the plates' edges
+constexpr double kQuadratureTol = 1e-3;
+constexpr double kSamplingRelTol = 1e-6;  // [1] a dense grid misses |M|'s peak by O(h²)
+// [1] the grid misses |Q|'s peak, which sits at a jump or a kink, by O(h)
+constexpr double kShearSamplingRelTol = 1e-3;
+constexpr double kShearSamplingTol = 1e-6;  // [N] absolute floor under kShearSamplingRelTol
+// [1] per γ² in the relative chord error γ²/24: the next term of the series is ~γ⁴/1920
+constexpr double kSeriesTol = 1e-3;
+
 // A t = 125 mm class hinge: 8 mm plates, inner plates 40 mm apart (the built-in case's warp).
 Input example() {
   Input in;
@@ -48,39 +74,40 @@ TEST(Strength, SymmetricLayoutOneMomentByHand) {
   const LayoutLoads l = layout_loads(in, 1);
   EXPECT_DOUBLE_EQ(l.plate_force[kLowerOuter], 15e3);
   EXPECT_DOUBLE_EQ(l.plate_force[kUpperOuter], 15e3);
-  EXPECT_NEAR(l.plate_force[kLowerInner], 0.0, 1e-9);
-  EXPECT_NEAR(l.plate_force[kUpperInner], 0.0, 1e-9);
+  EXPECT_NEAR(l.plate_force[kLowerInner], 0.0, kForceTol);
+  EXPECT_NEAR(l.plate_force[kUpperInner], 0.0, kForceTol);
   const Beam b = beam(in, l);
-  EXPECT_NEAR(moment(b, 0.028), 15e3 * 0.028, 1e-9);
+  EXPECT_NEAR(moment(b, 0.028), 15e3 * 0.028, kMomentTol);
   // inside the lower outer plate (uniform over [-4, 4] mm): M(2 mm) = (S/2)/8 mm · (6 mm)²/2
-  EXPECT_NEAR(moment(b, 0.002), 15e3 / 0.008 * 0.5 * 0.006 * 0.006, 1e-9);
-  EXPECT_NEAR(shear(b, 0.020), 15e3, 1e-9);
-  EXPECT_NEAR(shear(b, 0.028, false), 15e3, 1e-9);
-  EXPECT_NEAR(shear(b, 0.028, true), -15e3, 1e-9);
+  EXPECT_NEAR(moment(b, 0.002), 15e3 / 0.008 * 0.5 * 0.006 * 0.006, kMomentTol);
+  EXPECT_NEAR(shear(b, 0.020), 15e3, kForceTol);
+  EXPECT_NEAR(shear(b, 0.028, false), 15e3, kForceTol);
+  EXPECT_NEAR(shear(b, 0.028, true), -15e3, kForceTol);
   const Extremes e = extremes(b);
-  EXPECT_NEAR(e.moment, 420.0, 1e-9);
-  EXPECT_NEAR(e.moment_at, 0.028, 1e-12);
-  EXPECT_NEAR(e.shear, 15e3, 1e-9);
+  EXPECT_NEAR(e.moment, 420.0, kMomentTol);
+  EXPECT_NEAR(e.moment_at, 0.028, kLengthTol);
+  EXPECT_NEAR(e.shear, 15e3, kForceTol);
   // σ = M/W, W = π d³/32
   const Result r = assess(in);
-  EXPECT_NEAR(find(r, "roller.bending", 1).stress, 420.0 / (kPi * 0.04 * 0.04 * 0.04 / 32.0), 1e-3);
+  EXPECT_NEAR(find(r, "roller.bending", 1).stress, 420.0 / (kPi * 0.04 * 0.04 * 0.04 / 32.0),
+              kStressTol);
   EXPECT_NEAR(find(r, "roller.shear", 1).stress, 4.0 / 3.0 * 15e3 / (kPi * 0.04 * 0.04 / 4.0),
-              1e-3);
+              kStressTol);
 }
 
 TEST(Strength, SymmetricLayoutTwoAndStraightRunByHand) {
   Input in = example();
   // layout 2: S enters through the inner plates (z = 8, 48 mm): M(28 mm) = S/2 · 20 mm
-  EXPECT_NEAR(extremes(beam(in, layout_loads(in, 2))).moment, 15e3 * 0.020, 1e-9);
+  EXPECT_NEAR(extremes(beam(in, layout_loads(in, 2))).moment, 15e3 * 0.020, kMomentTol);
   // a straight run (N = 0): S/2 in at the outer plates, S/2 out at the inner ones; between the
   // inner plates the moment is constant S/2 · 8 mm and the shear zero
   in.loads.exit_tension = 30e3;  // N = 0
   const Beam b = beam(in, layout_loads(in, 1));
   for (double z : {0.013, 0.028, 0.040}) {
-    EXPECT_NEAR(moment(b, z), 15e3 * 0.008, 1e-9) << z;
-    EXPECT_NEAR(shear(b, z), 0.0, 1e-9) << z;
+    EXPECT_NEAR(moment(b, z), 15e3 * 0.008, kMomentTol) << z;
+    EXPECT_NEAR(shear(b, z), 0.0, kForceTol) << z;
   }
-  EXPECT_NEAR(extremes(b).moment, 120.0, 1e-9);
+  EXPECT_NEAR(extremes(b).moment, 120.0, kMomentTol);
 }
 
 TEST(Strength, OffCentreToothReactionsByStatics) {
@@ -95,11 +122,11 @@ TEST(Strength, OffCentreToothReactionsByStatics) {
       f += l.plate_force[i];
       m += l.plate_force[i] * in.hinge.heights[i];
     }
-    EXPECT_NEAR(f, 0.0, 1e-9);
-    EXPECT_NEAR(m, 0.0, 1e-9);
+    EXPECT_NEAR(f, 0.0, kForceTol);
+    EXPECT_NEAR(m, 0.0, kMomentTol);
     const auto [a, bb] =
         layout == 1 ? std::pair{kLowerInner, kUpperInner} : std::pair{kLowerOuter, kUpperOuter};
-    EXPECT_NEAR(l.plate_force[a] + l.plate_force[bb], -in.loads.exit_tension, 1e-9);
+    EXPECT_NEAR(l.plate_force[a] + l.plate_force[bb], -in.loads.exit_tension, kForceTol);
   }
 }
 
@@ -111,7 +138,9 @@ TEST(Strength, MomentDerivativeIsShearAndShearIntegratesToMoment) {
     // finite differences of M (central, h = 1 µm) against Q, away from block boundaries
     for (double z = b.start + 0.5e-3; z < b.stop; z += 1.3e-3) {
       const double h = 1e-6;
-      EXPECT_NEAR((moment(b, z + h) - moment(b, z - h)) / (2 * h), shear(b, z), 1e-3) << z;
+      EXPECT_NEAR((moment(b, z + h) - moment(b, z - h)) / (2 * h), shear(b, z),
+                  kFiniteDifferenceTol)
+          << z;
     }
     // ∫Q dz by the composite Simpson rule over the whole roller (Q is piecewise linear and
     // continuous for distributed loads): the jump of M from end to end, which is zero, and over
@@ -123,12 +152,12 @@ TEST(Strength, MomentDerivativeIsShearAndShearIntegratesToMoment) {
       for (int i = 1; i < n; ++i) s += shear(b, z1 + i * h) * (i % 2 ? 4 : 2);
       return s * h / 3;
     };
-    EXPECT_NEAR(integral(b.start, 0.030), moment(b, 0.030) - moment(b, b.start), 1e-3);
-    EXPECT_NEAR(integral(0.003, 0.053), moment(b, 0.053) - moment(b, 0.003), 1e-3);
-    EXPECT_NEAR(integral(b.start, b.stop), 0.0, 1e-3);
-    EXPECT_NEAR(moment(b, b.start), 0.0, 1e-12);
-    EXPECT_NEAR(moment(b, b.stop), 0.0, 1e-9);
-    EXPECT_NEAR(shear(b, b.stop), 0.0, 1e-9);
+    EXPECT_NEAR(integral(b.start, 0.030), moment(b, 0.030) - moment(b, b.start), kQuadratureTol);
+    EXPECT_NEAR(integral(0.003, 0.053), moment(b, 0.053) - moment(b, 0.003), kQuadratureTol);
+    EXPECT_NEAR(integral(b.start, b.stop), 0.0, kQuadratureTol);
+    EXPECT_NEAR(moment(b, b.start), 0.0, kStartMomentTol);
+    EXPECT_NEAR(moment(b, b.stop), 0.0, kMomentTol);
+    EXPECT_NEAR(shear(b, b.stop), 0.0, kForceTol);
   }
 }
 
@@ -150,10 +179,10 @@ TEST(Strength, ExtremesAgreeWithDenseSampling) {
         m = std::max(m, std::abs(moment(b, z)));
         q = std::max(q, std::abs(shear(b, z)));
       }
-      EXPECT_GE(e.moment, m - 1e-9);
-      EXPECT_NEAR(e.moment, m, 1e-6 * e.moment);  // the grid can miss the peak by O(h²)
-      EXPECT_GE(e.shear, q - 1e-9);
-      EXPECT_NEAR(e.shear, q, 1e-3 * e.shear + 1e-6);
+      EXPECT_GE(e.moment, m - kMomentTol);
+      EXPECT_NEAR(e.moment, m, kSamplingRelTol * e.moment);  // the grid can miss the peak by O(h²)
+      EXPECT_GE(e.shear, q - kForceTol);
+      EXPECT_NEAR(e.shear, q, kShearSamplingRelTol * e.shear + kShearSamplingTol);
     }
   }
 }
@@ -168,13 +197,13 @@ TEST(Strength, DiagramHoldsTheJumpAtAPointLoad) {
     EXPECT_LE(d.x[i], d.x[i + 1]);
     if (d.x[i] == d.x[i + 1]) {
       ++jumps;
-      EXPECT_NEAR(d.x[i], 0.028, 1e-15);
-      EXPECT_NEAR(d.shear[i] - d.shear[i + 1], 30e3, 1e-9);  // Q drops by N
+      EXPECT_NEAR(d.x[i], 0.028, kExactLengthTol);
+      EXPECT_NEAR(d.shear[i] - d.shear[i + 1], 30e3, kForceTol);  // Q drops by N
     }
   }
   EXPECT_EQ(jumps, 1);
-  EXPECT_NEAR(d.moment.front(), 0.0, 1e-12);
-  EXPECT_NEAR(d.moment.back(), 0.0, 1e-9);
+  EXPECT_NEAR(d.moment.front(), 0.0, kStartMomentTol);
+  EXPECT_NEAR(d.moment.back(), 0.0, kMomentTol);
 }
 
 TEST(Strength, ProjectionIsTheIntegralOfTheArcAndTendsToItsLength) {
@@ -185,14 +214,15 @@ TEST(Strength, ProjectionIsTheIntegralOfTheArcAndTendsToItsLength) {
     double s = 0.0;
     for (int i = 0; i < n; ++i) s += r * std::cos(-gamma / 2 + gamma * (i + 0.5) / n) * gamma / n;
     // the midpoint rule's error bound: r γ³/(24 n²)
-    EXPECT_NEAR(projection(r, gamma), s, r * gamma * gamma * gamma / (24.0 * n * n) + 1e-15)
+    EXPECT_NEAR(projection(r, gamma), s,
+                r * gamma * gamma * gamma / (24.0 * n * n) + kExactLengthTol)
         << gamma;
   }
-  EXPECT_NEAR(projection(0.02, kPi), 0.04, 1e-15);  // the half-embraced pin: c = d
+  EXPECT_NEAR(projection(0.02, kPi), 0.04, kExactLengthTol);  // the half-embraced pin: c = d
   // small γ: the chord tends to the arc length r·γ, the error ~ r γ³/24
   for (double gamma : {0.1, 0.01, 0.001}) {
     const double rel = 1.0 - projection(1.0, gamma) / gamma;
-    EXPECT_NEAR(rel, gamma * gamma / 24.0, 1e-3 * gamma * gamma) << gamma;
+    EXPECT_NEAR(rel, gamma * gamma / 24.0, kSeriesTol * gamma * gamma) << gamma;
   }
 }
 
@@ -204,7 +234,7 @@ TEST(Strength, ShearFactorMatchesJourawskiOnTheNeutralAxis) {
     const double tau = (2.0 / 3.0) * (ro * ro * ro - ri * ri * ri) /
                        (kPi * (ro * ro * ro * ro - ri * ri * ri * ri) / 4.0 * 2.0 * (ro - ri));
     const double a = kPi * (ro * ro - ri * ri);
-    EXPECT_NEAR(shear_factor(2 * ro, 2 * ri) / a, tau, 1e-9 * tau) << ri;
+    EXPECT_NEAR(shear_factor(2 * ro, 2 * ri) / a, tau, kRelTol * tau) << ri;
   }
   EXPECT_DOUBLE_EQ(shear_factor(0.04, 0.0), 4.0 / 3.0);
 }
@@ -214,11 +244,11 @@ TEST(Strength, SlidingContactIsEquation23) {
   in.hinge.contact_angle = 2.0;
   const Result r = assess(in);
   // most loaded plate: 15 kN on 8 mm; c = d sin(1), p = N/(c B)
-  EXPECT_NEAR(r.contact.force, 15e3, 1e-9);
-  EXPECT_NEAR(r.contact.c, 0.04 * std::sin(1.0), 1e-15);
-  EXPECT_NEAR(r.contact.p, 15e3 / (0.04 * std::sin(1.0) * 0.008), 1e-3);
+  EXPECT_NEAR(r.contact.force, 15e3, kForceTol);
+  EXPECT_NEAR(r.contact.c, 0.04 * std::sin(1.0), kExactLengthTol);
+  EXPECT_NEAR(r.contact.p, 15e3 / (0.04 * std::sin(1.0) * 0.008), kStressTol);
   EXPECT_FALSE(r.contact.hertz);
-  EXPECT_NEAR(find(r, "hinge.pressure").stress, r.contact.p, 1e-9);
+  EXPECT_NEAR(find(r, "hinge.pressure").stress, r.contact.p, kCopiedStressTol);
 }
 
 TEST(Strength, RollingContactIsHertzAndEquation23IsItsMean) {
@@ -235,13 +265,14 @@ TEST(Strength, RollingContactIsHertzAndEquation23IsItsMean) {
   const double load = 15e3 / 0.008;
   const auto lc = catena::line_contact(load, catena::conformal_radius(0.034, 0.0354),
                                        catena::contact_modulus(steel, steel));
-  EXPECT_NEAR(r.contact.peak, lc.peak_pressure, 1e-6);
-  EXPECT_NEAR(r.contact.peak, std::sqrt(load * estar / (kPi * rstar)), 1e-6 * r.contact.peak);
-  EXPECT_NEAR(r.contact.half_width, std::sqrt(4 * load * rstar / (kPi * estar)), 1e-12);
+  EXPECT_NEAR(r.contact.peak, lc.peak_pressure, kFineStressTol);
+  EXPECT_NEAR(r.contact.peak, std::sqrt(load * estar / (kPi * rstar)),
+              kHertzRelTol * r.contact.peak);
+  EXPECT_NEAR(r.contact.half_width, std::sqrt(4 * load * rstar / (kPi * estar)), kLengthTol);
   // (22) on the Hertz arc: c = 2b; (23): p = N/(2bB) = π/4 p0, the mean pressure
-  EXPECT_NEAR(r.contact.c, 2 * r.contact.half_width, 1e-12);
-  EXPECT_NEAR(r.contact.p, kPi / 4 * r.contact.peak, 1e-6 * r.contact.peak);
-  EXPECT_NEAR(find(r, "hinge.contact").stress, r.contact.peak, 1e-6);
+  EXPECT_NEAR(r.contact.c, 2 * r.contact.half_width, kLengthTol);
+  EXPECT_NEAR(r.contact.p, kPi / 4 * r.contact.peak, kHertzRelTol * r.contact.peak);
+  EXPECT_NEAR(find(r, "hinge.contact").stress, r.contact.peak, kFineStressTol);
 }
 
 TEST(Strength, PlateSectionsByHand) {
@@ -251,12 +282,12 @@ TEST(Strength, PlateSectionsByHand) {
   in.material.plate_ultimate = 700e6;
   const Result r = assess(in);
   // the largest plate force is S/2 = 15 kN on an 8 mm plate
-  EXPECT_NEAR(find(r, "plate.tension").stress, 2.0 * 15e3 / ((0.090 - 0.041) * 0.008), 1e-3);
+  EXPECT_NEAR(find(r, "plate.tension").stress, 2.0 * 15e3 / ((0.090 - 0.041) * 0.008), kStressTol);
   EXPECT_NEAR(find(r, "plate.tension_ultimate").safety_factor,
-              700e6 / find(r, "plate.tension").stress, 1e-12);
-  EXPECT_NEAR(find(r, "plate.shear_out").stress, 15e3 / (2 * (0.045 - 0.0205) * 0.008), 1e-3);
-  EXPECT_NEAR(find(r, "plate.shear_out").allowable, 400e6 / std::sqrt(3.0), 1e-3);
-  EXPECT_NEAR(find(r, "plate.bearing").stress, 15e3 / (0.041 * 0.008), 1e-3);
+              700e6 / find(r, "plate.tension").stress, kRatioTol);
+  EXPECT_NEAR(find(r, "plate.shear_out").stress, 15e3 / (2 * (0.045 - 0.0205) * 0.008), kStressTol);
+  EXPECT_NEAR(find(r, "plate.shear_out").allowable, 400e6 / std::sqrt(3.0), kStressTol);
+  EXPECT_NEAR(find(r, "plate.bearing").stress, 15e3 / (0.041 * 0.008), kStressTol);
 }
 
 TEST(Strength, FailingChecksGetDiagnosticsWithTheLimit) {
@@ -265,13 +296,13 @@ TEST(Strength, FailingChecksGetDiagnosticsWithTheLimit) {
   const Result r = assess(in);
   const Check& c = find(r, "roller.bending", 1);
   EXPECT_FALSE(c.ok);
-  EXPECT_NEAR(c.safety_factor, 80e6 / c.stress, 1e-12);
+  EXPECT_NEAR(c.safety_factor, 80e6 / c.stress, kRatioTol);
   int found = 0;
   for (const auto& d : r.diagnostics)
     if (d.code == "strength.roller.bending") {
       ++found;
       EXPECT_EQ(d.severity, catena::Diagnostic::Severity::kInfeasible);
-      EXPECT_NEAR(d.limit, 80e6 / 1.5, 1e-6);
+      EXPECT_NEAR(d.limit, 80e6 / 1.5, kFineStressTol);
       EXPECT_GT(d.value, d.limit);
     }
   EXPECT_EQ(found, 1);  // layout 2 (σ = 47.7 MPa, n = 1.68) passes
@@ -315,12 +346,12 @@ TEST(Strength, PropertyRandomInputs) {
     const double scale = in.loads.tension;
     const double arm = in.hinge.heights[3] - in.hinge.heights[0] + in.hinge.widths[3];
     for (const LayoutResult& lr : r.layouts) {
-      EXPECT_LE(lr.force_residual, 1e-9 * scale) << trial;
-      EXPECT_LE(lr.moment_residual, 1e-9 * scale * (arm + 0.05)) << trial;
+      EXPECT_LE(lr.force_residual, kRelTol * scale) << trial;
+      EXPECT_LE(lr.moment_residual, kRelTol * scale * (arm + 0.05)) << trial;
       for (int component : {0, 1}) {
         const Beam b = beam(in, lr.loads, component);
-        EXPECT_LE(std::abs(moment(b, b.stop)), 1e-9 * scale * arm) << trial;
-        EXPECT_LE(std::abs(shear(b, b.stop)), 1e-9 * scale) << trial;
+        EXPECT_LE(std::abs(moment(b, b.stop)), kRelTol * scale * arm) << trial;
+        EXPECT_LE(std::abs(shear(b, b.stop)), kRelTol * scale) << trial;
       }
       for (double v : lr.diagram.moment) ASSERT_TRUE(std::isfinite(v));
       for (double v : lr.diagram.shear) ASSERT_TRUE(std::isfinite(v));
@@ -338,7 +369,7 @@ TEST(Strength, PropertyRandomInputs) {
     for (std::size_t i = 0; i < r.checks.size(); ++i) {
       if (!std::isfinite(r.checks[i].safety_factor)) continue;
       const double ratio = r.checks[i].name == "hinge.contact" ? std::sqrt(2.0) : 2.0;
-      EXPECT_NEAR(r.checks[i].safety_factor / r2.checks[i].safety_factor, ratio, 1e-9 * ratio)
+      EXPECT_NEAR(r.checks[i].safety_factor / r2.checks[i].safety_factor, ratio, kRelTol * ratio)
           << r.checks[i].name << " " << trial;
     }
   }
@@ -351,17 +382,17 @@ TEST(Strength, PlanarLinksBalanceAndTheResultantByHand) {
   in.loads.link_angle = kPi / 3;
   const auto n = tooth_force(in.loads);
   EXPECT_NEAR(std::hypot(n[0], n[1]),
-              std::sqrt(30e3 * 30e3 + 12.7e3 * 12.7e3 - 2 * 30e3 * 12.7e3 * 0.5), 1e-6);
+              std::sqrt(30e3 * 30e3 + 12.7e3 * 12.7e3 - 2 * 30e3 * 12.7e3 * 0.5), kResultantTol);
   const LayoutLoads l = layout_loads(in, 1);
   // symmetric, tooth at mid-height: each seated (inner) plate pulls S2/2 along û
-  EXPECT_NEAR(l.plate_force[kLowerInner], -0.5 * 12.7e3 * 0.5, 1e-9);
-  EXPECT_NEAR(l.plate_force_y[kUpperInner], 0.5 * 12.7e3 * std::sin(kPi / 3), 1e-9);
+  EXPECT_NEAR(l.plate_force[kLowerInner], -0.5 * 12.7e3 * 0.5, kForceTol);
+  EXPECT_NEAR(l.plate_force_y[kUpperInner], 0.5 * 12.7e3 * std::sin(kPi / 3), kForceTol);
   const Beam bx = beam(in, l, 0), by = beam(in, l, 1);
   // M at the tooth: S/2 x̂ at 28 mm arm and S2/2 û at 20 mm arm
   const double mx = 15e3 * 0.028 - 0.5 * 12.7e3 * 0.5 * 0.020;
   const double my = 0.5 * 12.7e3 * std::sin(kPi / 3) * 0.020;
-  EXPECT_NEAR(moment(bx, 0.028), mx, 1e-9);
-  EXPECT_NEAR(moment(by, 0.028), my, 1e-9);
+  EXPECT_NEAR(moment(bx, 0.028), mx, kMomentTol);
+  EXPECT_NEAR(moment(by, 0.028), my, kMomentTol);
   // the resultant's maximum against dense sampling
   const Extremes e = extremes(bx, by);
   double m = 0, q = 0;
@@ -370,13 +401,13 @@ TEST(Strength, PlanarLinksBalanceAndTheResultantByHand) {
     m = std::max(m, std::hypot(moment(bx, z), moment(by, z)));
     q = std::max(q, std::hypot(shear(bx, z), shear(by, z)));
   }
-  EXPECT_NEAR(e.moment, m, 1e-6 * m);
-  EXPECT_GE(e.moment, std::hypot(mx, my) - 1e-9);
-  EXPECT_NEAR(e.shear, q, 1e-3 * q);
+  EXPECT_NEAR(e.moment, m, kSamplingRelTol * m);
+  EXPECT_GE(e.moment, std::hypot(mx, my) - kMomentTol);
+  EXPECT_NEAR(e.shear, q, kShearSamplingRelTol * q);
   const Result r = assess(in);
   ASSERT_TRUE(r.layouts[0].planar);
   EXPECT_NEAR(find(r, "roller.bending", 1).stress, e.moment / (kPi * 0.04 * 0.04 * 0.04 / 32.0),
-              1e-6);
+              kFineStressTol);
   EXPECT_EQ(r.layouts[0].diagram.moment_y.size(), r.layouts[0].diagram.x.size());
 }
 
@@ -399,8 +430,8 @@ TEST(Strength, PlanarExtremesAgreeWithDenseSampling) {
         const double z = bx.start + (bx.stop - bx.start) * i / 100000.0;
         m = std::max(m, std::hypot(moment(bx, z), moment(by, z)));
       }
-      EXPECT_GE(e.moment, m - 1e-9) << trial;
-      EXPECT_NEAR(e.moment, m, 1e-6 * e.moment) << trial;
+      EXPECT_GE(e.moment, m - kMomentTol) << trial;
+      EXPECT_NEAR(e.moment, m, kSamplingRelTol * e.moment) << trial;
     }
   }
 }

@@ -24,7 +24,12 @@ constexpr int z = 8;                // [-]
 constexpr double w = 5.0;           // [1/s] ω
 constexpr double l = 0.256;         // [m] guide end
 constexpr double kAgreeTol = 1e-9;  // [m, m/s, m/s²] printed formula agrees with the model
-constexpr double kDisagree = 1e-3;  // a printed formula is wrong if it deviates by more
+constexpr double kDisagree = 1e-3;  // [m, m/s, m/s²] a printed formula is wrong if it deviates more
+constexpr double kLengthTol = 1e-12;       // [m] R against the independent closure root
+constexpr double kExactLengthTol = 1e-15;  // [m] lengths of ~0.1 m by the same formula: round-off
+constexpr double kExactAngleTol = 1e-15;   // [rad] an event angle that is exactly π/z
+constexpr double kSeatingTol = 1e-12;      // [rad] seating angles by eqs. (29), (34) and the model
+constexpr double kQuotedDegreeTol = 0.01;  // [°] angles quoted here to 0.01°
 
 const PocketWheel kWheel{t, d, z};
 const WheelGeometry kG = wheel_geometry(kWheel);
@@ -57,14 +62,17 @@ Fn model_a(const RunOnPlan& p) {
 
 TEST(Paper003, GeometryEqs6To9AndTransverseDisplacement) {
   // Eq. (6) printed with 's' for z; the closure root (numeric::pitch_radius) confirms it.
+  constexpr double kQuotedRTol = 1e-10;            // [m] R written to 10 decimals of a metre
+  constexpr double kAngleSumTol = 1e-14;           // [rad] δ1 + δ2 = 2π/z: round-off
+  constexpr double kQuotedDisplacementTol = 1e-8;  // [m] 5.19842 mm, one unit of its last digit
   const double half = kPi / (2 * z);
   EXPECT_NEAR(R, 0.5 * std::sqrt(std::pow(t / std::sin(half), 2) + std::pow(d / std::cos(half), 2)),
-              1e-15);
-  EXPECT_NEAR(R, numeric::pitch_radius(kWheel), 1e-12);
-  EXPECT_NEAR(R, 0.1642830686, 1e-10);  // the example: R = 164.283 mm
-  EXPECT_NEAR(d1 + d2, P, 1e-14);       // eq. (9)
-  EXPECT_NEAR(kG.transverse_displacement, R * (1 - std::cos(d1 / 2)), 1e-15);
-  EXPECT_NEAR(kG.transverse_displacement, 5.19842e-3, 1e-8);
+              kExactLengthTol);
+  EXPECT_NEAR(R, numeric::pitch_radius(kWheel), kLengthTol);
+  EXPECT_NEAR(R, 0.1642830686, kQuotedRTol);  // the example: R = 164.283 mm
+  EXPECT_NEAR(d1 + d2, P, kAngleSumTol);      // eq. (9)
+  EXPECT_NEAR(kG.transverse_displacement, R * (1 - std::cos(d1 / 2)), kExactLengthTol);
+  EXPECT_NEAR(kG.transverse_displacement, 5.19842e-3, kQuotedDisplacementTol);
 }
 
 TEST(Paper003, FreeRunOnEqs1To4And10To13HoldWithOmegaRestored) {
@@ -82,7 +90,7 @@ TEST(Paper003, FreeRunOnEqs1To4And10To13HoldWithOmegaRestored) {
   const Fn ay = [&p](double f) { return w * w * evaluate(p, f).d2y; };
   // The printed intervals [0, π/z], [π/z, 2π/z] are the geometric ones: the t − d link seats at
   // φ = π/z exactly (crank from +δ1/2 to −δ2/2).
-  EXPECT_NEAR(p.seating_angles[1], kPi / z, 1e-15);
+  EXPECT_NEAR(p.seating_angles[1], kPi / z, kExactAngleTol);
   EXPECT_LT(deviation(v1, model_v(p), 0, P / 2), kAgreeTol);
   EXPECT_LT(deviation(v2, model_v(p), P / 2, P), kAgreeTol);
   EXPECT_LT(deviation(vy3, vy, 0, P / 2), kAgreeTol);
@@ -126,8 +134,8 @@ struct Chordal {
 TEST(Paper003, ChordalRunOnFirstPhaseEqs14_15_18Hold) {
   const Chordal c;
   const RunOnPlan p = plan_run_on(kWheel, Guide{GuideKind::kChordal, 0, l, SpanModel::kSlider});
-  const double seat = p.seating_angles[1];     // the t − d link seats by geometry ...
-  EXPECT_NEAR(seat * 180 / kPi, 21.44, 0.01);  // ... at 21.44°, before the printed π/z = 22.5°
+  const double seat = p.seating_angles[1];  // the t − d link seats by geometry at 21.44°,
+  EXPECT_NEAR(seat * 180 / kPi, 21.44, kQuotedDegreeTol);  // before the printed π/z = 22.5°
   EXPECT_LT(seat, kPi / z);
   EXPECT_LT(deviation([&](double f) { return c.x(c.L0, d1 / 2 - f); }, model_x(p), 0, seat),
             kAgreeTol);
@@ -175,7 +183,7 @@ TEST(Paper003, ChordalSecondPhaseEqs16_17UseASpanOnePitchTooLong) {
   const RunOnPlan p = plan_run_on(kWheel, Guide{GuideKind::kChordal, 0, l, SpanModel::kSlider});
   const double seat = p.seating_angles[1];
   const double L1 = c.L0 - (t - d);
-  EXPECT_NEAR(p.phases[1].span, L1, 1e-15);
+  EXPECT_NEAR(p.phases[1].span, L1, kExactLengthTol);
   const double th_switch = kPi / z + d2 / 2 - kPi / z;  // crank angle of (16) at φ = π/z
   const double jump = c.x(c.L1printed, th_switch) - c.x(c.L0, d1 / 2 - kPi / z);
   EXPECT_GT(std::abs(jump), 0.5 * t) << "printed x jumps by " << jump << " m at phi = pi/z";
@@ -228,16 +236,17 @@ TEST(Paper003, TangentialSeatingAnglesEq29And34HoldWithTheGeometricSpans) {
   const RunOnPlan p = plan_run_on(kWheel, Guide{GuideKind::kTangential, 0, l, SpanModel::kSlider});
   ASSERT_EQ(p.seating_angles.size(), 2u);
   // (29) as printed (with l for '1')
-  EXPECT_NEAR(Tangential::seating(d1 / 2, l, d1), p.seating_angles[0], 1e-12);
+  EXPECT_NEAR(Tangential::seating(d1 / 2, l, d1), p.seating_angles[0], kSeatingTol);
   // (34) prints the span as (1 − d); the bar from the first seated joint is l − (t + d)
-  EXPECT_NEAR(Tangential::seating(P - d2 / 2, l - t - d, d2), p.seating_angles[1], 1e-12);
+  EXPECT_NEAR(Tangential::seating(P - d2 / 2, l - t - d, d2), p.seating_angles[1], kSeatingTol);
   EXPECT_GT(std::abs(Tangential::seating(P - d2 / 2, l - d, d2) - p.seating_angles[1]), 1e-3);
   // and (33) prints cos(−δ2/2 + ξ2); the geometry (and (34) itself) need cos(δ2/2 + ξ2)
+  constexpr double kSineTol = 1e-12;  // [1] both sides of eq. (33) at the model's seating
   const double xi2 = p.seating_angles[1] - (P - d2 / 2);
-  EXPECT_NEAR(std::sin(xi2), R / (l - t - d) * (1 - std::cos(d2 / 2 + xi2)), 1e-12);
+  EXPECT_NEAR(std::sin(xi2), R / (l - t - d) * (1 - std::cos(d2 / 2 + xi2)), kSineTol);
   EXPECT_GT(std::abs(std::sin(xi2) - R / (l - t - d) * (1 - std::cos(-d2 / 2 + xi2))), 1e-4);
-  EXPECT_NEAR(p.seating_angles[0] * 180 / kPi, 15.85, 0.01);
-  EXPECT_NEAR(p.seating_angles[1] * 180 / kPi, 37.57, 0.01);
+  EXPECT_NEAR(p.seating_angles[0] * 180 / kPi, 15.85, kQuotedDegreeTol);
+  EXPECT_NEAR(p.seating_angles[1] * 180 / kPi, 37.57, kQuotedDegreeTol);
 }
 
 TEST(Paper003, TangentialPositionsEqs26_30_31HoldAnd35NeedsTwoCorrections) {
@@ -260,7 +269,7 @@ TEST(Paper003, TangentialPositionsEqs26_30_31HoldAnd35NeedsTwoCorrections) {
   const Fn x35_fixed = [](double f) { return Tangential::x(l - 2 * t, P - f); };
   EXPECT_LT(deviation(x35_fixed, model_x(p), g2, P), kAgreeTol);
   EXPECT_GT(deviation(x35_printed, model_x(p), g2, P), 0.5 * t);
-  EXPECT_NEAR(x35_fixed(P), 2 * t, 1e-15);  // the strand advances two pitches per period
+  EXPECT_NEAR(x35_fixed(P), 2 * t, kExactLengthTol);  // the strand advances two pitches per period
 }
 
 TEST(Paper003, TangentialVelocitiesEqs36To39HoldWithTheGeometricSpans) {
@@ -331,32 +340,39 @@ TEST(Paper003, ConclusionAboutTheEndOfThePeriod) {
   // "Free run-on has the most abrupt change of sign of the acceleration at the end of the period;
   // it is smaller for chordal run-on; tangential run-on has no change of sign there, only a drop
   // of the acceleration to zero."
+  constexpr double kJumpTol = 1e-12;       // [m/s²] the free jump of ~2 m/s² in closed form
+  constexpr double kZeroAccelTol = 1e-15;  // [m/s²] the tangential acceleration at 2π/z, zero
+  constexpr double kEndJumpTol = 1e-5;     // [m/s²] what is left of the jump (~1 m/s² scale)
   const Example e;
   const double free_jump = end_jump(e.free);
   const double chordal_jump = end_jump(e.chordal);
-  EXPECT_NEAR(free_jump, 2 * w * w * R * std::sin(d1 / 2), 1e-12);  // −1.025 → +1.025 m/s²
-  EXPECT_LT(std::abs(chordal_jump), std::abs(free_jump));           // 1.997 < 2.050 m/s²
+  EXPECT_NEAR(free_jump, 2 * w * w * R * std::sin(d1 / 2), kJumpTol);  // −1.025 → +1.025 m/s²
+  EXPECT_LT(std::abs(chordal_jump), std::abs(free_jump));              // 1.997 < 2.050 m/s²
   const RunOnPlan& tp = e.tangential.plan;
   const double a_before = w * w * evaluate_phase(tp, tp.phases.size() - 1, P - 1e-6).d2x;
-  EXPECT_GE(a_before, 0.0);                              // no change of sign ...
-  EXPECT_NEAR(w * w * evaluate(tp, P).d2x, 0.0, 1e-15);  // ... the acceleration drops to zero
-  EXPECT_NEAR(end_jump(e.tangential), 0.0, 1e-5);
+  EXPECT_GE(a_before, 0.0);  // no change of sign ...
+  EXPECT_NEAR(w * w * evaluate(tp, P).d2x, 0.0,
+              kZeroAccelTol);  // ... the acceleration drops to zero
+  EXPECT_NEAR(end_jump(e.tangential), 0.0, kEndJumpTol);
 }
 
 TEST(Paper003, ConclusionThatTangentialRunOnHasTheSmallestExtremesDoesNotHold) {
   // "Tangential run-on also has the smallest extreme accelerations." On the corrected model of
   // the paper's example (l = 256 mm) it does not: the jumps move from the period's end to the
   // seatings inside the period, where the inclined span adds to the crank's acceleration.
+  constexpr double kSampledPeakTol = 1e-9;  // [m/s²] the free peak sits on a sample (φ = 0)
+  constexpr double kQuotedAccelTol = 1e-4;  // [m/s²] peaks quoted to 4 decimals
+  constexpr double kRangeTol = 1e-3;        // [m/s²] slack on "no smaller" for sampled ranges
   const Example e;
   auto peak = [](const RunOnResult& r) { return std::max(-r.extremes.ax_min, r.extremes.ax_max); };
-  EXPECT_NEAR(peak(e.free), w * w * R * std::sin(d1 / 2), 1e-9);  // 1.025 m/s²
-  EXPECT_NEAR(peak(e.chordal), 1.2205, 1e-4);
-  EXPECT_NEAR(peak(e.tangential), 1.2233, 1e-4);
+  EXPECT_NEAR(peak(e.free), w * w * R * std::sin(d1 / 2), kSampledPeakTol);  // 1.025 m/s²
+  EXPECT_NEAR(peak(e.chordal), 1.2205, kQuotedAccelTol);
+  EXPECT_NEAR(peak(e.tangential), 1.2233, kQuotedAccelTol);
   EXPECT_GT(peak(e.tangential), peak(e.chordal));
   EXPECT_GT(peak(e.chordal), peak(e.free));
   // the range a_max − a_min is also no smaller for tangential than for free run-on
   EXPECT_GE(e.tangential.extremes.ax_max - e.tangential.extremes.ax_min,
-            e.free.extremes.ax_max - e.free.extremes.ax_min - 1e-3);
+            e.free.extremes.ax_max - e.free.extremes.ax_min - kRangeTol);
 }
 
 }  // namespace
