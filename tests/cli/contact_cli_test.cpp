@@ -89,6 +89,27 @@ nlohmann::json contact_json(const std::string& extra) {
   return r.status == 0 ? nlohmann::json::parse(r.out) : nlohmann::json{};
 }
 
+// The slice model's short-patch caveat is a finding of the analysis (JSON and report), not a
+// note of the text table only; a long patch has none.
+TEST(ContactCli, ShortPatchIsADiagnosticInJson) {
+  const CliRun short_patch =
+      run("contact --chain 12B --load 1kN --tooth-radius 15.56mm --profile concave "
+          "--skew 1deg --format json");
+  ASSERT_EQ(short_patch.status, 0) << short_patch.err;
+  const auto j = nlohmann::json::parse(short_patch.out);
+  ASSERT_EQ(j["diagnostics"].size(), 1u);
+  EXPECT_EQ(j["diagnostics"][0]["code"], "contact.short_patch");
+  EXPECT_EQ(j["diagnostics"][0]["severity"], "info");
+  EXPECT_LT(j["diagnostics"][0]["value"].get<double>(), 5.0);
+  EXPECT_NEAR(j["diagnostics"][0]["value"].get<double>(),
+              j["slice_model"]["loaded_length"].get<double>() /
+                  j["slice_model"]["peak_half_width"].get<double>(),
+              kRelTol);
+  const CliRun aligned = run(kContact + " --skew 0 --format json");
+  ASSERT_EQ(aligned.status, 0) << aligned.err;
+  EXPECT_TRUE(nlohmann::json::parse(aligned.out)["diagnostics"].empty());
+}
+
 TEST(ContactCli, HertzValuesAtTheEffectiveLoad) {
   // Plane-strain Hertz, steel on steel: E* = E/(2(1 − ν²)), p0 = √(P′E*/(πρ)), b = √(4P′ρ/(πE*))
   const auto j = contact_json("--skew 30arcmin");

@@ -44,6 +44,8 @@ struct ContactAnalysis {
   /// The slice model's caveat: loaded length < 5 peak half-widths, a short patch where the
   /// plane-strain strips are rough (shown in the text table only; not part of the JSON).
   bool short_patch = false;
+  /// findings: the short-patch caveat of the slice model (kInfo)
+  std::vector<Diagnostic> diagnostics;
   // a sweep
   std::vector<SkewPoint> rows;
 };

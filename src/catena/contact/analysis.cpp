@@ -264,6 +264,7 @@ Value skew_value(const ContactAnalysis& a) {
                      {"approach", s.approach},
                      {"load_sum", s.load_sum},
                      {"distribution", Value::object({{"s", Value(s.s)}, {"q", Value(s.q)}})}});
+  j["diagnostics"] = analysis::diagnostics_value(a.diagnostics);
   j["units"] = analysis::units_value({{"reduced_radius", "m"},
                                       {"gamma", "1/arcmin^2"},
                                       {"skew", "rad"},
@@ -332,6 +333,7 @@ Record describe_contact(const ContactAnalysis& a, const Inputs&) {
                                                 {"contact_stress", "slice_stress_peak"}, "stress"));
   } else {
     rec.data = skew_value(a);
+    rec.diagnostics = a.diagnostics;
     rec.table = skew_table(a);
     rec.columns = {{"s", a.slice.s}, {"q", a.slice.q}};
     const Value& r = rec.data;
@@ -480,6 +482,14 @@ ContactAnalysis contact_analysis_run(const analysis::Inputs& in) {
     a.point = at_skew(a, a.skew, &a.slice);
     a.effective = hertz(a.contact, a.point.effective_load);
     a.short_patch = a.slice.loaded_length < 5 * a.slice.peak_half_width;
+    if (a.short_patch) {
+      const double ratio = a.slice.loaded_length / a.slice.peak_half_width;
+      a.diagnostics.push_back(
+          {Diagnostic::Severity::kInfo, "contact.short_patch",
+           "the loaded length is " + format_g(ratio, 3) +
+               " peak half-widths (< 5): a short patch, the slice (strip) model is rough here",
+           ratio, 5.0});
+    }
   }
   return a;
 }
