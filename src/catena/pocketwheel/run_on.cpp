@@ -1,6 +1,7 @@
 #include "catena/pocketwheel/run_on.hpp"
 
 #include <algorithm>
+#include <array>
 #include <boost/math/tools/minima.hpp>
 #include <cmath>
 #include <limits>
@@ -357,21 +358,27 @@ Extremes extremes(const RunOnPlan& plan, double omega) {
   constexpr int kGrid = 512;
   Extremes e{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
              std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  std::array<PointKinematics, kGrid + 1> grid;
   for (std::size_t index = 0; index < plan.phases.size(); ++index) {
     const Phase& p = plan.phases[index];
     const double step = (p.end - p.begin) / kGrid;
     if (step <= 0.0) continue;
-    // value(φ, which, sign): sign·v_x or sign·a_x; minimised over the phase.
-    auto value = [&](double phi, bool accel, double sign) {
-      const PointKinematics k = evaluate_phase(plan, index, phi);
+    // of(k, which, sign): sign·v_x or sign·a_x; minimised over the phase.
+    auto of = [omega](const PointKinematics& k, bool accel, double sign) {
       return sign * (accel ? omega * omega * k.d2x : omega * k.dx);
     };
+    auto value = [&](double phi, bool accel, double sign) {
+      return of(evaluate_phase(plan, index, phi), accel, sign);
+    };
+    // The grid's kinematics once for all four searches (min and max of v_x and of a_x).
+    grid[0] = evaluate_phase(plan, index, p.begin);
+    for (int i = 1; i <= kGrid; ++i) grid[i] = evaluate_phase(plan, index, p.begin + i * step);
     for (bool accel : {false, true}) {
       for (double sign : {1.0, -1.0}) {
         int best = 0;
-        double best_value = value(p.begin, accel, sign);
+        double best_value = of(grid[0], accel, sign);
         for (int i = 1; i <= kGrid; ++i) {
-          const double v = value(p.begin + i * step, accel, sign);
+          const double v = of(grid[i], accel, sign);
           if (v < best_value) {
             best_value = v;
             best = i;
