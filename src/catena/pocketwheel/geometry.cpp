@@ -4,6 +4,8 @@
 #include <numbers>
 #include <string>
 
+#include "geometry_detail.hpp"
+
 namespace catena::pocketwheel {
 
 std::vector<Issue> validate(const PocketWheel& wheel) {
@@ -23,8 +25,7 @@ std::vector<Issue> validate(const PocketWheel& wheel) {
   return issues;
 }
 
-WheelGeometry wheel_geometry(const PocketWheel& wheel) {
-  throw_if_any(validate(wheel));
+WheelGeometry detail::geometry_of_valid(const PocketWheel& wheel) {
   const double t = wheel.pitch;
   const double d = wheel.wire;
   const double half = std::numbers::pi / (2.0 * wheel.teeth);  // π/(2z)
@@ -39,6 +40,11 @@ WheelGeometry wheel_geometry(const PocketWheel& wheel) {
   g.transverse_displacement = g.pitch_radius * (1.0 - std::cos(0.5 * g.delta1));  // 003 §2
   g.chordal_height = g.pitch_radius * std::cos(0.5 * g.delta1);                   // 003 §3
   return g;
+}
+
+WheelGeometry wheel_geometry(const PocketWheel& wheel) {
+  throw_if_any(validate(wheel));
+  return detail::geometry_of_valid(wheel);
 }
 
 }  // namespace catena::pocketwheel

@@ -1,11 +1,15 @@
 #include "catena/pocketwheel/run_on.hpp"
 
 #include <algorithm>
+#include <array>
 #include <boost/math/tools/minima.hpp>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
+
+#include "geometry_detail.hpp"
 
 namespace catena::pocketwheel {
 namespace {
@@ -163,11 +167,13 @@ RunOnPlan free_plan(RunOnPlan plan) {
   return plan;
 }
 
-std::optional<RunOnPlan> try_plan(const PocketWheel& wheel, const Guide& guide) {
+// `g` is the geometry of `wheel`, derived once by the caller (the bisection in
+// minimum_end_distance calls this some 80 times for the same wheel).
+std::optional<RunOnPlan> try_plan(const PocketWheel& wheel, const WheelGeometry& g,
+                                  const Guide& guide) {
   RunOnPlan plan;
-  plan.geometry = wheel_geometry(wheel);
+  plan.geometry = g;
   plan.guide = guide;
-  const WheelGeometry& g = plan.geometry;
   if (guide.kind == GuideKind::kNone) return free_plan(plan);
   double theta0 = 0.0;  // crank angle at which the span lies along the guide line (y = H)
   switch (guide.kind) {
@@ -205,20 +211,46 @@ std::optional<RunOnPlan> try_plan(const PocketWheel& wheel, const Guide& guide) 
 }
 
 // Smallest guide end distance for which the period is consistent (bisection on feasibility).
-double minimum_end_distance(const PocketWheel& wheel, Guide guide) {
-  const double r = wheel_geometry(wheel).pitch_radius;
+double minimum_end_distance(const PocketWheel& wheel, const WheelGeometry& g, Guide guide) {
+  const double r = g.pitch_radius;
   double lo = r;
   double hi = r + 4.0 * (wheel.pitch + wheel.wire);
   guide.end_distance = hi;
-  for (int i = 0; i < 20 && !try_plan(wheel, guide); ++i) {
+  for (int i = 0; i < 20 && !try_plan(wheel, g, guide); ++i) {
     hi *= 2.0;
     guide.end_distance = hi;
   }
   for (int i = 0; i < 60; ++i) {
     guide.end_distance = 0.5 * (lo + hi);
-    (try_plan(wheel, guide) ? hi : lo) = guide.end_distance;
+    (try_plan(wheel, g, guide) ? hi : lo) = guide.end_distance;
   }
   return hi;
+}
+
+// validate(wheel, guide), also handing out the wheel's geometry in `g` once the wheel is valid,
+// so that plan_run_on validates the wheel and derives its geometry once per run.
+std::vector<Issue> validate_with_geometry(const PocketWheel& wheel, const Guide& guide,
+                                          WheelGeometry& g) {
+  std::vector<Issue> issues = validate(wheel);
+  if (issues.empty()) g = detail::geometry_of_valid(wheel);
+  if (guide.kind == GuideKind::kNone) return issues;
+  check::finite_positive(issues, "guide_end", guide.end_distance, "m");
+  if (guide.kind == GuideKind::kHeight)
+    check::finite_positive(issues, "guide_height", guide.height, "m");
+  if (!issues.empty()) return issues;
+  if (guide.end_distance <= g.pitch_radius) {
+    issues.push_back(
+        {"guide_end", check::format_si(guide.end_distance, "m"),
+         "a guide end outside the pitch circle: l > R = " + check::format_si(g.pitch_radius, "m")});
+  }
+  if (guide.kind == GuideKind::kHeight && (guide.height < g.chordal_height * (1.0 - 1e-12) ||
+                                           guide.height > g.pitch_radius * (1.0 + 1e-12))) {
+    issues.push_back(
+        {"guide_height", check::format_si(guide.height, "m"),
+         "H between the chordal height R·cos(δ1/2) = " + check::format_si(g.chordal_height, "m") +
+             " and the tangential R = " + check::format_si(g.pitch_radius, "m")});
+  }
+  return issues;
 }
 
 }  // namespace
@@ -240,36 +272,19 @@ const char* to_string(GuideKind kind) {
 const char* to_string(SpanModel model) { return model == SpanModel::kSlider ? "slider" : "pivot"; }
 
 std::vector<Issue> validate(const PocketWheel& wheel, const Guide& guide) {
-  std::vector<Issue> issues = validate(wheel);
-  if (guide.kind == GuideKind::kNone) return issues;
-  check::finite_positive(issues, "guide_end", guide.end_distance, "m");
-  if (guide.kind == GuideKind::kHeight)
-    check::finite_positive(issues, "guide_height", guide.height, "m");
-  if (!issues.empty()) return issues;
-  const WheelGeometry g = wheel_geometry(wheel);
-  if (guide.end_distance <= g.pitch_radius) {
-    issues.push_back(
-        {"guide_end", check::format_si(guide.end_distance, "m"),
-         "a guide end outside the pitch circle: l > R = " + check::format_si(g.pitch_radius, "m")});
-  }
-  if (guide.kind == GuideKind::kHeight && (guide.height < g.chordal_height * (1.0 - 1e-12) ||
-                                           guide.height > g.pitch_radius * (1.0 + 1e-12))) {
-    issues.push_back(
-        {"guide_height", check::format_si(guide.height, "m"),
-         "H between the chordal height R·cos(δ1/2) = " + check::format_si(g.chordal_height, "m") +
-             " and the tangential R = " + check::format_si(g.pitch_radius, "m")});
-  }
-  return issues;
+  WheelGeometry g;
+  return validate_with_geometry(wheel, guide, g);
 }
 
 RunOnPlan plan_run_on(const PocketWheel& wheel, const Guide& guide) {
-  throw_if_any(validate(wheel, guide));
+  WheelGeometry g;
+  throw_if_any(validate_with_geometry(wheel, guide, g));
   Guide resolved = guide;
   if (guide.kind == GuideKind::kHeight) {
-    resolved.height = std::min(guide.height, wheel_geometry(wheel).pitch_radius);
+    resolved.height = std::min(guide.height, g.pitch_radius);
   }
-  if (auto plan = try_plan(wheel, resolved)) return *plan;
-  const double l_min = minimum_end_distance(wheel, resolved);
+  if (auto plan = try_plan(wheel, g, resolved)) return std::move(*plan);
+  const double l_min = minimum_end_distance(wheel, g, resolved);
   throw InputError({{"guide_end", check::format_si(guide.end_distance, "m"),
                      "a guide end far enough from the wheel for the free span (" +
                          std::string(to_string(guide.span_model)) +
@@ -343,21 +358,27 @@ Extremes extremes(const RunOnPlan& plan, double omega) {
   constexpr int kGrid = 512;
   Extremes e{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
              std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  std::array<PointKinematics, kGrid + 1> grid;
   for (std::size_t index = 0; index < plan.phases.size(); ++index) {
     const Phase& p = plan.phases[index];
     const double step = (p.end - p.begin) / kGrid;
     if (step <= 0.0) continue;
-    // value(φ, which, sign): sign·v_x or sign·a_x; minimised over the phase.
-    auto value = [&](double phi, bool accel, double sign) {
-      const PointKinematics k = evaluate_phase(plan, index, phi);
+    // of(k, which, sign): sign·v_x or sign·a_x; minimised over the phase.
+    auto of = [omega](const PointKinematics& k, bool accel, double sign) {
       return sign * (accel ? omega * omega * k.d2x : omega * k.dx);
     };
+    auto value = [&](double phi, bool accel, double sign) {
+      return of(evaluate_phase(plan, index, phi), accel, sign);
+    };
+    // The grid's kinematics once for all four searches (min and max of v_x and of a_x).
+    grid[0] = evaluate_phase(plan, index, p.begin);
+    for (int i = 1; i <= kGrid; ++i) grid[i] = evaluate_phase(plan, index, p.begin + i * step);
     for (bool accel : {false, true}) {
       for (double sign : {1.0, -1.0}) {
         int best = 0;
-        double best_value = value(p.begin, accel, sign);
+        double best_value = of(grid[0], accel, sign);
         for (int i = 1; i <= kGrid; ++i) {
-          const double v = value(p.begin + i * step, accel, sign);
+          const double v = of(grid[i], accel, sign);
           if (v < best_value) {
             best_value = v;
             best = i;

@@ -132,10 +132,8 @@ std::optional<NumericPlan> try_order(NumericPlan plan, Vec2 crank0, double first
   return plan;
 }
 
-}  // namespace
-
-double pitch_radius(const PocketWheel& wheel) {
-  throw_if_any(validate(wheel));
+// pitch_radius() for a wheel already validated (plan() has checked it with the guide).
+double pitch_radius_of_valid(const PocketWheel& wheel) {
   const double t = wheel.pitch;
   const double d = wheel.wire;
   auto closure = [&](double r) {
@@ -150,10 +148,17 @@ double pitch_radius(const PocketWheel& wheel) {
   return 0.5 * (a + b);
 }
 
+}  // namespace
+
+double pitch_radius(const PocketWheel& wheel) {
+  throw_if_any(validate(wheel));
+  return pitch_radius_of_valid(wheel);
+}
+
 NumericPlan plan(const PocketWheel& wheel, const Guide& guide) {
   throw_if_any(validate(wheel, guide));
   NumericPlan plan;
-  plan.radius = pitch_radius(wheel);
+  plan.radius = pitch_radius_of_valid(wheel);
   plan.period = 2.0 * kPi / wheel.teeth;
   plan.guide = guide;
   const double r = plan.radius;
