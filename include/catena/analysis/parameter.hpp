@@ -139,6 +139,12 @@ struct Example {
 };
 struct ListOf {};
 struct NotShared {};
+/// The "expected" text of messages about the value (unreadable, or missing when required).
+struct Expects {
+  std::string text;
+};
+/// A flag of the command line only (not a case-file key).
+struct CliOnly {};
 struct Alias {
   std::string name;  ///< snake_case, as `Parameter::name`
 };
@@ -147,6 +153,8 @@ Parameter operator|(Parameter p, const Default& d);
 Parameter operator|(Parameter p, const Example& e);
 Parameter operator|(Parameter p, ListOf);
 Parameter operator|(Parameter p, NotShared);
+Parameter operator|(Parameter p, const Expects& e);
+Parameter operator|(Parameter p, CliOnly);
 Parameter operator|(Parameter p, const Alias& a);
 
 }  // namespace catena::analysis

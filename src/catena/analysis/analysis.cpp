@@ -92,6 +92,14 @@ Parameter operator|(Parameter p, NotShared) {
   p.not_shared = true;
   return p;
 }
+Parameter operator|(Parameter p, const Expects& e) {
+  p.expected = e.text;
+  return p;
+}
+Parameter operator|(Parameter p, CliOnly) {
+  p.cli_only = true;
+  return p;
+}
 Parameter operator|(Parameter p, const Alias& a) {
   p.aliases.push_back(a.name);
   return p;

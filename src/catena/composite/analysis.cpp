@@ -499,15 +499,11 @@ analysis::Analysis make_capacity() {
   a.docs = "docs/models/composite_capacity.md";
   a.chain_types = {"composite-link"};
   a.formats = {.table = true, .csv = false, .drawing = false};
-  auto with_expected = [](Parameter p, std::string expected) {
-    p.expected = std::move(expected);
-    return p;
-  };
   a.parameters = {
-      with_expected(number("alpha", "alpha = r1/r2 of eq. (9)"), "0 < α < 1"),
-      with_expected(number("sum_sigma_r", "Σσ̃_r of eq. (9) (the paper's normalisation)"),
-                    "a number > 0"),
-      with_expected(number("k_max", "K_σ^max of eq. (9)"), "a number ≥ 1"),
+      number("alpha", "alpha = r1/r2 of eq. (9)") | Expects{"0 < α < 1"},
+      number("sum_sigma_r", "Σσ̃_r of eq. (9) (the paper's normalisation)") |
+          Expects{"a number > 0"},
+      number("k_max", "K_σ^max of eq. (9)") | Expects{"a number ≥ 1"},
       quantity("fibre_strength", K::kStress, "σ^a, reinforcement strength") |
           Required{"σ^a, the reinforcement's strength"},
       quantity("fibre_area", K::kArea, "F, reinforcement area; or --load"),
@@ -515,7 +511,7 @@ analysis::Analysis make_capacity() {
       quantity("E_r", K::kStress, "instead of --alpha/--sum-sigma-r/--k-max: radial modulus"),
       quantity("E_phi", K::kStress, "hoop (fibre) modulus"),
       quantity("G", K::kStress, "shear modulus G_rφ"),
-      with_expected(number("nu_phi_r", "−ε_r/ε_φ under hoop stress"), "a ratio ≥ 0"),
+      number("nu_phi_r", "−ε_r/ε_φ under hoop stress") | Expects{"a ratio ≥ 0"},
       quantity("inner_radius", K::kLength, "r1"),
       quantity("outer_radius", K::kLength, "r2"),
       integer("harmonics", 2, "ring solver harmonics (default: converged)"),
@@ -690,31 +686,26 @@ analysis::Analysis make_design() {
   a.docs = "docs/models/composite_capacity.md";
   a.chain_types = {"composite-link"};
   a.formats = {.table = true, .csv = false, .drawing = false};
-  auto with_expected = [](Parameter p, std::string expected) {
-    p.expected = std::move(expected);
-    return p;
-  };
   // Plain numbers that are required say "0 ≤ ν < 0.5" when unreadable and "required" when
   // missing: their missing issue comes from the check.
   a.parameters = {
       quantity("load", K::kForce, "required breaking force P") |
           Required{"the required breaking force"},
       quantity("fibre_modulus", K::kStress, "E_f, e.g. 72.4GPa") | Required{"required"},
-      with_expected(number("fibre_poisson", "ν_f (required)"), "0 ≤ ν < 0.5"),
+      number("fibre_poisson", "ν_f (required)") | Expects{"0 ≤ ν < 0.5"},
       quantity("fibre_strength", K::kStress, "σ_f") | Required{"required"},
       quantity("fibre_density", K::kDensity, "ρ_f, e.g. 2.56g/cm^3") | Required{"required"},
       quantity("matrix_modulus", K::kStress, "E_m") | Required{"required"},
-      with_expected(number("matrix_poisson", "ν_m (required)"), "0 ≤ ν < 0.5"),
+      number("matrix_poisson", "ν_m (required)") | Expects{"0 ≤ ν < 0.5"},
       quantity("matrix_density", K::kDensity, "ρ_m") | Required{"required"},
-      with_expected(number("fibre_fraction", "V_f (required)"), "0 < V_f ≤ 0.9069"),
+      number("fibre_fraction", "V_f (required)") | Expects{"0 < V_f ≤ 0.9069"},
       quantity("thickness", K::kLength, "t, band width; r2 follows") |
           Required{"t, the band width (r2 follows from it)"},
       quantity("pitch", K::kLength, "p, pin centre distance") |
           Required{"p, the pin centre distance"},
       quantity("insert_density", K::kDensity, "polyamide insert") | Default{"1130"},
-      with_expected(number("alpha", "r1/r2, one or a comma list (default 0.30..0.90 by 0.05)"),
-                    "0.05 ≤ α ≤ 0.95, or a comma list") |
-          ListOf{},
+      number("alpha", "r1/r2, one or a comma list (default 0.30..0.90 by 0.05)") |
+          Expects{"0.05 ≤ α ≤ 0.95, or a comma list"} | ListOf{},
       quantity("steel_strength", K::kStress, "steel plate σ_B for the comparison"),
       quantity("steel_thickness", K::kLength, "steel plate thickness"),
       quantity("steel_density", K::kDensity, "steel plate density") | Default{"7850"},

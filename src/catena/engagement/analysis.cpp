@@ -223,11 +223,6 @@ Record describe(const EngagementAnalysis& a, const Inputs&) {
   return rec;
 }
 
-analysis::Parameter cli_only(analysis::Parameter p) {
-  p.cli_only = true;
-  return p;
-}
-
 analysis::Analysis make() {
   using namespace analysis;
   using K = QuantityKind;
@@ -246,7 +241,7 @@ analysis::Analysis make() {
   // then each hinge's own (see `check`).
   a.parameters = {
       // chain.type decides it in a case file
-      cli_only(text("hinge", "sliding|rolling") | Required{"sliding or rolling"}),
+      text("hinge", "sliding|rolling") | Required{"sliding or rolling"} | CliOnly{},
       quantity("pitch", K::kLength, "chain pitch t") | Required{},
       integer("teeth", 3, "z, sprocket teeth") | Required{"a whole number z >= 3"},
       integer("strokes", 1, "m, sprocket strokes; gammaSigma = 360deg*m/z") | Default{"1"},

@@ -374,8 +374,7 @@ Record describe_sweep(const SweepAnalysis& a, const Inputs&) {
 // A parameter of the single analysis that the sweep takes only to refuse it: on the command line
 // only, never from a case file (its own table nor the shared ones).
 analysis::Parameter refused(analysis::Parameter p) {
-  p = std::move(p) | analysis::NotShared{};
-  p.cli_only = true;
+  p = std::move(p) | analysis::NotShared{} | analysis::CliOnly{};
   p.doc += "; refused: 'hinge sweep' does not use it";
   return p;
 }

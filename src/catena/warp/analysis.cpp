@@ -209,11 +209,6 @@ Record describe(const WarpAnalysis& a, const Inputs&) {
   return rec;
 }
 
-analysis::Parameter cli_only(analysis::Parameter p) {
-  p.cli_only = true;
-  return p;
-}
-
 analysis::Analysis make() {
   using namespace analysis;
   using K = QuantityKind;
@@ -254,7 +249,7 @@ analysis::Analysis make() {
         return p;
       }(),
       // chain.type decides it in a case file
-      cli_only(choice("hinge", {"sliding", "rolling"}, "the hinge") | Default{"sliding"}),
+      choice("hinge", {"sliding", "rolling"}, "the hinge") | Default{"sliding"} | CliOnly{},
       quantity("plate_radius", K::kLength,
                "rolling hinge: plate convex radius R1 (required with --hinge rolling)") |
           Alias{"r1"},
