@@ -59,7 +59,6 @@ struct State {
   std::map<std::string, std::string> texts;
   std::map<std::string, bool> flags;
   std::string format, output, csv, svg, dxf;
-  std::map<std::string, std::string> extra_files;
 };
 
 }  // namespace
@@ -106,9 +105,6 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
   if (a.formats.drawing) {
     cmd->add_option("--svg", state->svg, "the drawing as SVG (mm)");
     cmd->add_option("--dxf", state->dxf, "the same drawing as DXF (R12, mm)");
-  }
-  for (const analysis::ExtraOutput& e : a.extra_outputs) {
-    cmd->add_option("--" + e.name, state->extra_files[e.name], e.doc);
   }
   return [state, &a, cmd]() {
     // A command below another (hinge sweep) also takes what its parent parsed before the
@@ -186,11 +182,6 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
     if (!state->csv.empty())
       outputs.add("--csv", state->csv,
                   record.csv.empty() ? io::to_csv(record.columns) : record.csv);
-    for (const auto& [name, content] : record.files) {
-      const auto file = state->extra_files.find(name);
-      if (file != state->extra_files.end() && !file->second.empty())
-        outputs.add("--" + name, file->second, content);
-    }
     if (!state->output.empty()) outputs.add("--output", state->output, text);
     outputs.commit(state->output.empty() ? text : "");
     if (!state->csv.empty()) std::cerr << "catena: wrote the series to " << state->csv << "\n";

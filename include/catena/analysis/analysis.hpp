@@ -24,12 +24,6 @@ struct Formats {
   bool drawing = false;  ///< --svg FILE and --dxf FILE
 };
 
-/// An extra output file an analysis can write (`--NAME FILE`), its content in Record::files.
-struct ExtraOutput {
-  std::string name;  ///< flag without "--"; Record::files carries the content under this name
-  std::string doc;
-};
-
 struct Analysis {
   std::string name;                  ///< registry and case-file name ("pocketwheel", "hinge_sweep")
   std::vector<std::string> command;  ///< the CLI path: {"hinge", "sweep"}
@@ -40,7 +34,6 @@ struct Analysis {
   std::vector<std::string> chain_types;  ///< case files: chain.type values it applies to
   std::vector<Parameter> parameters;
   Formats formats;
-  std::vector<ExtraOutput> extra_outputs;
   /// Fills missing values from each parameter's `example` when `--example` is given.
   std::string example_doc;  ///< non-empty: the analysis has an example; the --example help
   /// Cross-field input rules beyond one parameter (a value only with a given choice, a flag that

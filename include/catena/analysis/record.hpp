@@ -54,8 +54,6 @@ struct Record {
   std::string drawing_unavailable;  ///< why there is no drawing (for the --svg message)
   std::vector<Chart> charts;        ///< the report's charts
   std::vector<Grid> grids;          ///< the report's tables with columns
-  /// Extra text files the analysis offers (flag without "--" → content), e.g. ring --field.
-  std::vector<std::pair<std::string, std::string>> files;
 };
 
 /// `v` with `digits` significant digits (printf's %g): numbers in tables and messages.
