@@ -63,6 +63,14 @@ struct Analysis {
   const Parameter* table_field(const std::string& path) const;
 };
 
+/// The problems of one binding in the order a command reads its inputs, for a `check`: first
+/// the binder's problems about keys outside `order` (as found), then for each key of `order` the
+/// binder's problems about it — unless `read(key)` is false (a value the chosen mode does not
+/// read) — followed by the check's own (`added`) about it.
+std::vector<Issue> in_read_order(const std::vector<Issue>& bound, const std::vector<Issue>& added,
+                                 const std::vector<std::string>& order,
+                                 const std::function<bool(const std::string&)>& read);
+
 /// Wraps typed run/describe functions into an Analysis' type-erased ones.
 template <class Result>
 void set_functions(Analysis& a, std::function<Result(const Inputs&)> run,

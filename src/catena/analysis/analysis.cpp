@@ -1,5 +1,6 @@
 #include "catena/analysis/analysis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -168,6 +169,26 @@ Chart series_chart(const Value& result, const Value& object, const std::string& 
 }
 
 // ---- analyses
+
+std::vector<Issue> in_read_order(const std::vector<Issue>& bound, const std::vector<Issue>& added,
+                                 const std::vector<std::string>& order,
+                                 const std::function<bool(const std::string&)>& read) {
+  std::vector<Issue> out;
+  for (const Issue& issue : bound) {  // not an input of the table (an unknown key)
+    if (std::find(order.begin(), order.end(), issue.field) == order.end()) out.push_back(issue);
+  }
+  for (const std::string& key : order) {
+    if (read(key)) {
+      for (const Issue& issue : bound) {
+        if (issue.field == key) out.push_back(issue);
+      }
+    }
+    for (const Issue& issue : added) {
+      if (issue.field == key) out.push_back(issue);
+    }
+  }
+  return out;
+}
 
 const Parameter* Analysis::parameter(std::string_view key) const {
   for (const Parameter& p : parameters) {

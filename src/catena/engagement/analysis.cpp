@@ -56,20 +56,9 @@ void check(const Inputs& in, std::vector<Issue>& issues) {
   std::vector<std::string> order = kCommon;
   order.insert(order.end(), refused.begin(), refused.end());
   order.insert(order.end(), own.begin(), own.end());
-  std::vector<Issue> out;
-  for (const Issue& issue : issues) {  // not an input of the table (an unknown key)
-    if (std::find(order.begin(), order.end(), issue.field) == order.end()) out.push_back(issue);
-  }
-  for (const std::string& key : order) {
-    const bool read = std::find(refused.begin(), refused.end(), key) == refused.end();
-    for (const Issue& issue : issues) {
-      if (read && issue.field == key) out.push_back(issue);
-    }
-    for (const Issue& issue : added) {
-      if (issue.field == key) out.push_back(issue);
-    }
-  }
-  issues = std::move(out);
+  issues = analysis::in_read_order(issues, added, order, [&](const std::string& key) {
+    return std::find(refused.begin(), refused.end(), key) == refused.end();
+  });
 }
 
 Value to_value(const EngagementAnalysis& a) {

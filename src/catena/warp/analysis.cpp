@@ -51,19 +51,10 @@ void check(const Inputs& in, std::vector<Issue>& issues) {
     if (!in.given("roller_radius"))
       added.push_back({"roller_radius", "(missing)", "R2 for a rolling hinge"});
   }
-  std::vector<Issue> out;
-  for (const Issue& issue : issues) {  // not an input of the table (an unknown key)
-    if (std::find(kOrder.begin(), kOrder.end(), issue.field) == kOrder.end()) out.push_back(issue);
-  }
-  for (const std::string& key : kOrder) {
-    const bool read = rolling || (key != "plate_radius" && key != "roller_radius");
-    for (const Issue& issue : issues) {
-      if (read && issue.field == key) out.push_back(issue);
-    }
-    for (const Issue& issue : added) {
-      if (issue.field == key) out.push_back(issue);
-    }
-  }
+  std::vector<Issue> out =
+      analysis::in_read_order(issues, added, kOrder, [&](const std::string& key) {
+        return rolling || (key != "plate_radius" && key != "roller_radius");
+      });
   const double forces = static_cast<double>(in.list("force").size()),
                heights = static_cast<double>(in.list("load_height").size());
   if (forces * heights > static_cast<double>(kMaxPoints)) {
