@@ -39,7 +39,7 @@ TEST(Paper000, Eqs8_9LatvianPrintingHoldsEnglishDoesNot) {
   const double a = h.half_thickness, r1 = h.plate_radius;
   const double r2 = *r2_eq6(h.pin_diameter, a, r1, gamma_max(h));
   const testing::RollingSimulation sim(h, r2);
-  double english_error = 0.0;
+  double english_error = 0.0, english_error_mm = 0.0;
   for (double phi = 0.05; phi <= 2 * gamma_max(h); phi += 0.05) {
     const testing::SimulatedPose s = sim.at_phi(phi);
     const double lv = r2 / (r2 - r1) * phi / 2;  // Latvian: R2/(R2 − R1)·φ/2
@@ -47,8 +47,11 @@ TEST(Paper000, Eqs8_9LatvianPrintingHoldsEnglishDoesNot) {
     EXPECT_NEAR(r1 * std::sin(lv), s.contact.y, kPositionTol);
     const double en = (r2 - r1) / 2 * phi;  // English: (R2 − R1)/2·φ — a length times an angle
     english_error = std::max(english_error, std::abs(r1 * std::sin(en) - s.contact.y));
+    const double en_mm = (r2 - r1) * 1e3 / 2 * phi;  // the same with lengths in mm (thesis' unit)
+    english_error_mm = std::max(english_error_mm, std::abs(r1 * std::sin(en_mm) - s.contact.y));
   }
-  EXPECT_GT(english_error, 1e-3);
+  EXPECT_GT(english_error, 1e-3);     // lengths in m
+  EXPECT_GT(english_error_mm, 1e-3);  // lengths in mm: wrong in either unit
 }
 
 // The English summary prints the argument of (18)–(19) as (R2 − φ)/(R2 − R1)·φ/2, the Latvian
