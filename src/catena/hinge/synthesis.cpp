@@ -61,7 +61,10 @@ double r1_max(double d, double a, double gmax) {
 }
 
 std::optional<double> r2_eq6(double d, double a, double r1, double gmax) {
-  // 000 eq. (6): γmax = Ψ1max (R2 − R1)/R2 (eqs. 2–3) ⇒ R2 = R1 Ψ1max / (Ψ1max − γmax).
+  // 000 eq. (6): γmax = Ψ1max (R2 − R1)/R2 (eqs. 2–3) ⇒ R2 = R1 Ψ1max / (Ψ1max − γmax), both
+  // angles in radians. Conclusion 7's R2 = 35.4 mm for R1 = 34 mm is out of reach of this form;
+  // taken with Ψ1max in degrees it gives such near-conformal pairs (docs/models/hinge.md,
+  // test Paper000.ThesisR2_35_4IsEq6WithPsi1maxInDegreesForInputsTheSummaryDoesNotPrint).
   const double psi = psi1_max(d, a, r1);
   if (psi < gmax) return std::nullopt;
   if (psi == gmax) return kInf;
