@@ -152,6 +152,13 @@ TEST(CompositePaper, CornerRatiosDependOnTruncationButKeepThePapersOrder) {
   // the corner value moves with p, and p is not printed
   EXPECT_GT(std::abs(ortho20 - 4.0), 0.9);
   EXPECT_NE(corner_ratio(0.25, false, 10), ortho20);
+  // no common truncation p = 10…380 gives the paper's numbers: 2.80–3.05 for E_r/E_φ = 0.25
+  // (not 4), 2.14–2.35 (G kept) and 2.27–2.83 (G = E/(2(1 + ν))) for the isotropic ring (not 2.9)
+  for (int p : {10, 12, 20, 40, 80, 160, 380}) {
+    EXPECT_LT(corner_ratio(0.25, false, p), 3.1) << p;
+    EXPECT_LT(corner_ratio(1.0, false, p), 2.4) << p;
+    EXPECT_LT(corner_ratio(1.0, true, p), 2.85) << p;
+  }
   // converged, outside the corner zone (r ≥ r1 + 5 %): 1.57 (0.25) > 1.23 / 1.21 (isotropic)
   constexpr double kConcentrationRatioTol = 0.02;  // [1] the pinned converged ratio 1.574
   const double k_ortho = k_ratio(0.25, false);
