@@ -11,6 +11,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libfmt-dev libboost-dev
   libcairo2-dev libdxflib-dev libtomlplusplus-dev
   chromium
+  calculix-ccx
 )
 
 missing=()
