@@ -174,6 +174,9 @@ TEST(Eq9, MassAgainstTheDesignHelper) {
   ASSERT_TRUE(best.feasible);
   ASSERT_TRUE(out.has_steel);
   EXPECT_NEAR(best.alpha, 0.50, kExactTol);
+  constexpr double kPrintedRadiusMmTol = 0.005;  // [mm] radii printed to 0.01 mm
+  EXPECT_NEAR(best.inner_radius * 1e3, 3.65, kPrintedRadiusMmTol);
+  EXPECT_NEAR(best.outer_radius * 1e3, 7.29, kPrintedRadiusMmTol);
   EXPECT_NEAR(best.mass.total * 1e3, 30.1, kPrintedMassGramTol);
   EXPECT_NEAR(out.steel.mass * 1e3, 160.8, kPrintedMassGramTol);
   EXPECT_NEAR(out.mass_ratio, 5.35, kPrintedRatioTol);
