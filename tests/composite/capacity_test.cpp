@@ -26,11 +26,13 @@ constexpr double kPi = std::numbers::pi;
 // test numbers (p_f = 2, p_m = 1): there [1] stands for whatever unit the inputs have.
 constexpr double kAreaMm2Tol = 0.005;       // [mm²] printed to 2 decimals: half a unit of the last
 constexpr double kPrintedRatioTol = 0.005;  // [1] a ratio printed to 2 decimals (9.63)
-constexpr double kForceTol = 1e-9;          // [N] loads of ~3e4 N: round-off
-constexpr double kExactTol = 1e-15;         // [1] O(1) values from one closed formula: a few ulps
-constexpr double kRatioTol = 1e-12;         // [1] O(1) ratios and factors computed two ways
-constexpr double kRelTol = 1e-9;            // [1] relative, the same capacity by two formulas
-constexpr double kRoundOffRelTol = 1e-12;   // [1] relative, round-off of a few operations
+constexpr double kPrintedRatioTol1 = 0.05;  // [1] a ratio printed to 1 decimal (11.2)
+constexpr double kPrintedAreaMm2Tol1 = 0.05;  // [mm²] areas printed to 1 decimal (49.3)
+constexpr double kForceTol = 1e-9;            // [N] loads of ~3e4 N: round-off
+constexpr double kExactTol = 1e-15;           // [1] O(1) values from one closed formula: a few ulps
+constexpr double kRatioTol = 1e-12;           // [1] O(1) ratios and factors computed two ways
+constexpr double kRelTol = 1e-9;              // [1] relative, the same capacity by two formulas
+constexpr double kRoundOffRelTol = 1e-12;     // [1] relative, round-off of a few operations
 // [1] relative: Σσ̃_r comes from the contact integral, the load from the section integral
 constexpr double kEquilibriumRelTol = 1e-6;
 constexpr double kModulusTol = 1e-6;         // [Pa] moduli of ~3.5e9 Pa: a couple of ulps
@@ -97,7 +99,8 @@ TEST(Eq9, PaperExampleImpliesTheReinforcementArea) {
 }
 
 TEST(Eq9, TheNineteenSquareMillimetresAreThePlainTensionSection) {
-  // Which reading of "19 mm² at η = 0.7 for 32 900 N" holds (each computed, not assumed):
+  // Which reading of "19 mm² at η = 0.7 for 32 900 N" holds, each by a library call. The
+  // paper's inputs: P = 32 900 N, σ_B = 2500 MPa, η = 0.7, and (9)'s α, Σσ̃_r, K of kPaper.
   constexpr double kFibreAreaMm2Tol = 0.01;    // [mm²] 25.13 mm², one unit of the 2nd decimal
   constexpr double kPrintedForceTol = 1.0;     // [N] 17 414 N, given to the newton
   constexpr double kPrintedRatioTol3 = 0.001;  // [1] 3.819, one unit of the 3rd decimal
@@ -108,26 +111,87 @@ TEST(Eq9, TheNineteenSquareMillimetresAreThePlainTensionSection) {
   // (b) (9) with F the composite area (fibre η·F): 35.9 mm² — not 19.
   EXPECT_GT(std::abs(fibre_eq9 / kEta - kPaperArea), 15 * kMm2);
   // (c) 19 mm² of composite, η·19 = 13.3 mm² of fibre, in (9): 17 400 N — not 32 900 N.
-  const double p_c = capacity(kPaper, kEta * kPaperArea);
-  EXPECT_NEAR(p_c, 17414.0, kPrintedForceTol);
-  // (d) plain tension without stress concentration (as the steel plate is rated), the
-  // composite section over both legs: P/(η σ_B) = 18.8 mm², printed rounded as 19 mm².
-  const double plain = kSteelLoad / (kEta * kPaper.fibre_strength);
-  EXPECT_NEAR(plain / kMm2, 18.8, kAreaMm2Tol);
-  EXPECT_EQ(std::lround(plain / kMm2), 19);
+  EXPECT_NEAR(capacity(kPaper, kEta * kPaperArea), 17414.0, kPrintedForceTol);
+  // (d) plain tension without stress concentration (K = 1, as the steel plate is rated), the
+  // composite carrying η σ_B (the fibres only): capacity_from_concentration is linear in the
+  // leg area, so the leg area for P is P over the capacity of a unit area. Both legs: 18.8 mm²,
+  // printed rounded as 19 mm².
+  const double unit_area = 1.0 * kMm2;
+  const double leg_plain =
+      kSteelLoad / capacity_from_concentration(unit_area, kEta * kPaper.fibre_strength, 1.0) *
+      unit_area;
+  EXPECT_NEAR(capacity_from_concentration(leg_plain, kEta * kPaper.fibre_strength, 1.0), kSteelLoad,
+              kForceTol);
+  EXPECT_NEAR(2 * leg_plain / kMm2, 18.8, kAreaMm2Tol);
+  EXPECT_EQ(std::lround(2 * leg_plain / kMm2), 19);
+  // (d′) the same with the library's hoop strength of the lamina, which lets the matrix carry
+  // its share (E-glass 72.4 GPa / epoxy 3.5 GPa: chosen, not the paper's): σ_c = 1786 MPa and
+  // 18.42 mm², which rounds to 18. So the paper's 19 is (d) with the fibres alone.
+  const double sigma_c = ring_lamina(kGlass, kEpoxy, kEta).strength;
+  const double leg_lamina =
+      kSteelLoad / capacity_from_concentration(unit_area, sigma_c, 1.0) * unit_area;
+  EXPECT_NEAR(2 * leg_lamina / kMm2, 18.42, kAreaMm2Tol);
+  EXPECT_EQ(std::lround(2 * leg_lamina / kMm2), 18);
   // So the 19 mm² ignores both K and (9). Per leg, (9) needs 25.13 mm² of fibre where (d)
-  // puts 0.7·18.8/2 = 6.58 mm²: 3.8× more; as totals over both legs 2·25.13/13.16 = 3.82.
-  EXPECT_NEAR(2 * fibre_eq9 / (kEta * plain), 3.819, kPrintedRatioTol3);
+  // puts 0.7·9.4 = 6.58 mm²: as totals over both legs 2·25.13/13.16 = 3.82.
+  EXPECT_NEAR(fibre_eq9 / (kEta * leg_plain), 3.819, kPrintedRatioTol3);
+  // (e) the design helper at the paper's α = 0.42, with K from the ring analysis of the chosen
+  // E-glass/epoxy lamina: the section the link really needs is K times (d′).
+  DesignInput d;
+  d.load = kSteelLoad;
+  d.fibre = kGlass;
+  d.matrix = kEpoxy;
+  d.fibre_fraction = kEta;
+  d.thickness = 6e-3;  // [m] chosen: the steel plate's 6 mm
+  d.pitch = 0.2;       // [m] chosen (see MassAgainstTheDesignHelper)
+  d.alphas = {0.42};
+  const DesignPoint p = design(d).scan.at(0);
+  EXPECT_NEAR(p.k, 2.67, kPrintedRatioTol);
+  EXPECT_NEAR(2 * p.leg_area / kMm2, 49.3, kPrintedAreaMm2Tol1);
+  EXPECT_NEAR(2 * p.fibre_area / kMm2, 34.5, kPrintedAreaMm2Tol1);
+  EXPECT_GT(2 * p.leg_area, 2.5 * kPaperArea);
 }
 
-TEST(Eq9, MassRatioOfThePaper) {
-  // "0.035 kg, 9 times less than the steel one": 0.337/0.035 = 9.63, "9" is its floor.
-  const double ratio = kSteelMass / kLinkMass;
-  EXPECT_NEAR(ratio, 9.63, kPrintedRatioTol);
-  EXPECT_EQ(static_cast<int>(ratio), 9);
-  // the steel plate's face area implied by its mass and thickness (steel 7850 kg/m³): 7155 mm²
+TEST(Eq9, MassAgainstTheDesignHelper) {
+  // "0.035 kg, 9 times less than the steel one" (0.337 kg). The ratio of the two printed
+  // masses is the CLI's (RingCapacityCli test, 9.63); here the library predicts both masses.
+  // The paper's inputs: P = 32 900 N, σ_B = 2500 MPa, η = 0.7, steel plate 6 mm thick.
+  // Chosen (not printed): pitch 200 mm (the "200" of ПМЦ-200 Д read as the pitch), band width
+  // t = 6 mm, E-glass/epoxy constants and densities, PA6 insert 1130 kg/m³, 45G's σ_B = 600 MPa,
+  // steel 7850 kg/m³.
+  constexpr double kPrintedMassGramTol = 0.05;  // [g] masses printed to 0.1 g
+  DesignInput d;
+  d.load = kSteelLoad;
+  d.fibre = kGlass;
+  d.matrix = kEpoxy;
+  d.fibre_fraction = kEta;
+  d.thickness = 6e-3;
+  d.pitch = 0.2;
+  d.steel_strength = 600e6;
+  d.steel_thickness = 6e-3;
+  const Design out = design(d);
+  const DesignPoint& best = out.scan.at(out.best);
+  ASSERT_TRUE(best.feasible);
+  ASSERT_TRUE(out.has_steel);
+  EXPECT_NEAR(best.alpha, 0.50, kExactTol);
+  constexpr double kPrintedRadiusMmTol = 0.005;  // [mm] radii printed to 0.01 mm
+  EXPECT_NEAR(best.inner_radius * 1e3, 3.65, kPrintedRadiusMmTol);
+  EXPECT_NEAR(best.outer_radius * 1e3, 7.29, kPrintedRadiusMmTol);
+  EXPECT_NEAR(best.mass.total * 1e3, 30.1, kPrintedMassGramTol);
+  EXPECT_NEAR(out.steel.mass * 1e3, 160.8, kPrintedMassGramTol);
+  EXPECT_NEAR(out.mass_ratio, 5.35, kPrintedRatioTol);
+  // Against the paper: the link within 15 % of its 0.035 kg; the idealised plate (net section
+  // only) under half its 0.337 kg, so the library's ratio 5.35 is below the paper's 9.63, and
+  // the paper's steel mass over the library's link gives 11.2, above it.
+  EXPECT_LT(std::abs(best.mass.total / kLinkMass - 1), 0.15);
+  EXPECT_LT(out.steel.mass, 0.5 * kSteelMass);
+  EXPECT_NEAR(kSteelMass / best.mass.total, 11.2, kPrintedRatioTol1);
+  EXPECT_LT(out.mass_ratio, kSteelMass / kLinkMass);
+  EXPECT_GT(kSteelMass / best.mass.total, kSteelMass / kLinkMass);
+  // the paper's steel plate's face area implied by its mass and thickness (steel 7850 kg/m³,
+  // chosen) is 7155 mm², 2.2 times the idealised plate's
   constexpr double kFaceAreaMm2Tol = 1.0;  // [mm²] 7155 mm², given to the square millimetre
-  EXPECT_NEAR(kSteelMass / (7850.0 * 6e-3) / kMm2, 7155.0, kFaceAreaMm2Tol);
+  EXPECT_NEAR(kSteelMass / (d.steel_density * d.steel_thickness) / kMm2, 7155.0, kFaceAreaMm2Tol);
 }
 
 TEST(Eq9, PaperConcentrationFactorIsNotTheConvergedOne) {

@@ -115,7 +115,8 @@ TEST(RollerTooth, SkewLoadFactorOfThePaper) {
   EXPECT_NEAR(skew_from_gauge(0.155e-3, 12.7e-3) / kArcmin, 41.96, kPrintedArcminTol);  // ≈ 0°42′
   // 0 → 50′ for a 19.05 mm chain: Q_n/Q_nom = 1 + 0.0016·50² = 5, the stress × √5 = 2.24
   EXPECT_NEAR(load_factor(0.0016, 50 * kArcmin), 5.0, kFactorTol);
-  // the measured range 0°42′…3°26′: 3.82 … 68.9
+  // the measured range 0°42′…3°26′ (held to the doc's printed 3.82 … 68.9 in
+  // contact_paper_test.cpp: ContactPaper.MeasuredSkewRangeGivesTheDocsLoadAndStressFactors)
   EXPECT_NEAR(load_factor(0.0016, 42 * kArcmin), 1 + 0.0016 * 42 * 42, kFactorTol);
   EXPECT_NEAR(load_factor(0.0016, 206 * kArcmin), 1 + 0.0016 * 206 * 206, kLargeFactorTol);
   EXPECT_NEAR(load_factor(0.0016, 50 * kArcmin, 0.65), 1 + 0.0016 * 32.5 * 32.5, kFactorTol);
