@@ -650,5 +650,52 @@ TEST(Paper003, ConclusionThatTangentialRunOnHasTheSmallestExtremesDoesNotHold) {
             e.free.extremes.ax_max - e.free.extremes.ax_min - kRangeTol);
 }
 
+TEST(Paper003, ConclusionThatChordalRunOnHasTheSmallerEndJumpDependsOnTheSpanReading) {
+  // "The abrupt change of sign at the end of the period is smaller for chordal run-on" (than the
+  // free one's 2ω²R sin(δ1/2) = 2.050 m/s²). It holds only in the slider reading with the guided
+  // point re-chosen at each period start; it fails when the same chain point is followed across
+  // the boundary, and in the pivot reading.
+  constexpr double kQuotedJumpTol = 1e-3;  // [m/s²] jumps and limits quoted to 3 decimals
+  const Sampling s{w, 33, std::nullopt};
+  const double free_jump = end_jump(run_on(kWheel, Guide{}, s));
+  EXPECT_NEAR(free_jump, 2.050, kQuotedJumpTol);
+  // slider, reset at the period start: −0.776 → +1.220 m/s²
+  const RunOnPlan slider =
+      plan_run_on(kWheel, Guide{GuideKind::kChordal, 0, l, SpanModel::kSlider});
+  const double a_end = w * w * evaluate_phase(slider, slider.phases.size() - 1, P).d2x;
+  EXPECT_NEAR(a_end, -0.776, kQuotedJumpTol);
+  EXPECT_NEAR(w * w * evaluate(slider, 0).d2x - a_end, 1.997, kQuotedJumpTol);
+  // slider, the same chain point: after the t + d link seats at 2π/z the bar from the new crank
+  // (at θ = δ1/2 again) to the old guided point is two pitches shorter than the reset one.
+  const Chordal c;
+  const double a_same_point = c.a_corrected(c.L0 - 2 * t, d1 / 2);  // eq. (22) corrected
+  EXPECT_NEAR(a_same_point, 1.508, kQuotedJumpTol);
+  // ... the same from the independent numerical solver with that span
+  numeric::NumericPlan np =
+      numeric::plan(kWheel, Guide{GuideKind::kChordal, 0, l, SpanModel::kSlider});
+  np.phases[0].span -= 2 * t;
+  EXPECT_NEAR(w * w * numeric::evaluate_phase(np, 0, 0.0).d2x, a_same_point, kNumericAccelTol);
+  EXPECT_GT(a_same_point - a_end, free_jump);  // 2.284 > 2.050 m/s²
+  // pivot: −0.8835 → +1.2205 m/s²
+  const double pivot_jump =
+      end_jump(run_on(kWheel, Guide{GuideKind::kChordal, 0, l, SpanModel::kPivot}, s));
+  EXPECT_NEAR(pivot_jump, 2.104, kQuotedJumpTol);
+  EXPECT_GT(pivot_jump, free_jump);
+}
+
+TEST(Paper003, ConclusionThatTangentialRunOnHasTheSmallestExtremesFailsInThePivotReadingToo) {
+  // Conclusion 2 of §4 (tangential run-on is the most favourable for inertial loads, which are
+  // −M·a_x) read with the pivot span: its peak |a_x| 1.2175 m/s² is still above free run-on's
+  // 1.025 m/s².
+  constexpr double kQuotedAccelTol = 1e-4;  // [m/s²] peaks quoted to 4 decimals
+  const Sampling s{w, 33, std::nullopt};
+  const RunOnResult free = run_on(kWheel, Guide{}, s);
+  const RunOnResult tangential =
+      run_on(kWheel, Guide{GuideKind::kTangential, 0, l, SpanModel::kPivot}, s);
+  auto peak = [](const RunOnResult& r) { return std::max(-r.extremes.ax_min, r.extremes.ax_max); };
+  EXPECT_NEAR(peak(tangential), 1.2175, kQuotedAccelTol);
+  EXPECT_GT(peak(tangential), peak(free));
+}
+
 }  // namespace
 }  // namespace catena::pocketwheel
