@@ -456,6 +456,9 @@ TEST(Paper003, TangentialSeatingAnglesEq29And34HoldWithTheGeometricSpans) {
   // (34) prints the span as (1 − d); the bar from the first seated joint is l − (t + d)
   EXPECT_NEAR(Tangential::seating(P - d2 / 2, l - t - d, d2), p.seating_angles[1], kSeatingTol);
   EXPECT_GT(std::abs(Tangential::seating(P - d2 / 2, l - d, d2) - p.seating_angles[1]), 1e-3);
+  // (34) as printed, span (l − d): 37.38°, 0.185° early
+  EXPECT_TRUE(IsQuoted(
+      (Tangential::seating(P - d2 / 2, l - d, d2) - p.seating_angles[1]) * 180 / kPi, -0.185));
   // and (33) prints cos(−δ2/2 + ξ2); the geometry (and (34) itself) need cos(δ2/2 + ξ2)
   constexpr double kSineTol = 1e-12;  // [1] both sides of eq. (33) at the model's seating
   const double xi2 = p.seating_angles[1] - (P - d2 / 2);
@@ -496,6 +499,13 @@ TEST(Paper003, TangentialPositionsEqs26_30_31HoldAnd35NeedsTwoCorrections) {
   const Fn x31 = [](double f) { return Tangential::x(l - t - d, -(d2 + f - P)); };
   EXPECT_LT(deviation(x30, model_x(p), g1, d1), kAgreeTol);
   EXPECT_LT(deviation(x31, model_x(p), d1, g2), kAgreeTol);
+  // (30), (31) as printed, span (l − d): one pitch too long, x off by 64.0 mm
+  const Fn x30_printed = [](double f) { return Tangential::x(l - d, d1 - f); };
+  const Fn x31_printed = [](double f) {
+    return l + R * std::sin(d2 + f - P) - Tangential::root(l - d, d2 + f - P);
+  };
+  EXPECT_TRUE(IsQuoted(signed_deviation(x30_printed, model_x(p), g1, d1), -0.0640));  // [m]
+  EXPECT_TRUE(IsQuoted(signed_deviation(x31_printed, model_x(p), d1, g2), -0.0640));  // [m]
   // (35) as printed: span (l − t) and '+' under the root. Geometry: span l − 2t, '−'.
   const Fn x35_printed = [](double f) {
     return l - R * std::sin(P - f) -
@@ -541,6 +551,16 @@ TEST(Paper003, TangentialVelocitiesEqs36To39HoldWithTheGeometricSpans) {
             kAgreeTol);
   EXPECT_GT(deviation([](double f) { return Tangential::v(l - t, P - f); }, model_v(p), g2, P),
             1e-6);
+  // (38), (39) as printed, span (l − t): −0.123 and +0.376 mm/s
+  const Fn v38_printed = [](double f) {
+    const double psi = d2 + f - P;
+    return w * R *
+           (std::cos(psi) + R * (1 - std::cos(psi)) * std::sin(psi) / Tangential::root(l - t, psi));
+  };
+  EXPECT_TRUE(IsQuoted(signed_deviation(v38_printed, model_v(p), d1, g2), -1.23e-4));  // [m/s]
+  EXPECT_TRUE(IsQuoted(
+      signed_deviation([](double f) { return Tangential::v(l - t, P - f); }, model_v(p), g2, P),
+      3.76e-4));  // [m/s]
 }
 
 TEST(Paper003, TangentialAccelerationsEq40And42HoldEqs41And43HaveTheWrongSign) {
@@ -553,6 +573,10 @@ TEST(Paper003, TangentialAccelerationsEq40And42HoldEqs41And43HaveTheWrongSign) {
   EXPECT_LT(deviation([](double f) { return Tangential::a40(l - t - d, d2 + f - P); }, model_a(p),
                       d1, g2),
             kAgreeTol);
+  // (42) as printed, span (l − d): −0.0351 m/s²
+  EXPECT_TRUE(IsQuoted(signed_deviation([](double f) { return Tangential::a40(l - d, d2 + f - P); },
+                                        model_a(p), d1, g2),
+                       -0.0351));
   // (41), (43): the bracket enters with '−'; the derivative of (37), (39) needs '+'
   const Fn a41 = [](double f) { return Tangential::a_printed(l - t - d, d1 - f); };
   const Fn a41_fixed = [](double f) {
