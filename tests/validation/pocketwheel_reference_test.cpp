@@ -1,5 +1,7 @@
-// The closed forms against golden data of the paper's example produced by the independent
-// numerical solver (data/reference/pocketwheel_paper/README.md says how).
+// A regression check, not an external reference: the closed forms against golden data of the
+// paper's example produced by Catena's own numerical solver (`--method numeric`;
+// data/reference/pocketwheel_paper/README.md says how). The external reference, sharing no code
+// with Catena, is tested in pocketwheel_independent_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -316,6 +316,13 @@ PointKinematics evaluate_phase(const RunOnPlan& plan, std::size_t index, double 
     // with the span lengths of the geometry (see docs/models/pocketwheel.md).
     const double s = std::sqrt(p.span * p.span - h * h);
     k.x = plan.guide.end_distance - r * sin_t - s;
+    // dx/dφ: 003 eqs. (18)–(21), (36)–(39); d²x/dφ²: (22)–(25), (40)–(43). As printed, (19),
+    // (21) have the wrong sign of the second term, (22), (24), (41), (43) the wrong sign of the
+    // bracket, (22)–(25) lose the factor cos(δ1/2) (here inside h r cos θ, h = R(cos θ − c)), and
+    // (20), (21), (24), (25), (38), (39), (42), (43) print a span one pitch too long; shown by
+    // tests/validation/pocketwheel_paper_test.cpp (Paper003.ChordalEq19…–ChordalEq25…,
+    // Paper003.Tangential…Eq43…), and the corrected forms here by the external reference
+    // (pocketwheel_independent_test.cpp).
     k.dx = r * cos_t + h * dh / s;
     k.d2x = r * sin_t + (dh * dh - h * r * cos_t) / s + h * h * dh * dh / (s * s * s);
     return k;
