@@ -107,9 +107,10 @@ TEST(Eq9, TheNineteenSquareMillimetresAreThePlainTensionSection) {
   // (a) (9) literally, F the fibre area per leg: 25.1 mm² — not 19.
   const double fibre_eq9 = area_for_load(kPaper, kSteelLoad);
   EXPECT_NEAR(fibre_eq9 / kMm2, 25.13, kFibreAreaMm2Tol);
-  EXPECT_GT(std::abs(fibre_eq9 - kPaperArea), 5 * kMm2);
+  constexpr double kNotARounding = 5 * kMm2;  // [m²] far beyond rounding 19 mm² to integers
+  EXPECT_GT(std::abs(fibre_eq9 - kPaperArea), kNotARounding);
   // (b) (9) with F the composite area (fibre η·F): 35.9 mm² — not 19.
-  EXPECT_GT(std::abs(fibre_eq9 / kEta - kPaperArea), 15 * kMm2);
+  EXPECT_GT(std::abs(fibre_eq9 / kEta - kPaperArea), 3 * kNotARounding);
   // (c) 19 mm² of composite, η·19 = 13.3 mm² of fibre, in (9): 17 400 N — not 32 900 N.
   EXPECT_NEAR(capacity(kPaper, kEta * kPaperArea), 17414.0, kPrintedForceTol);
   // (d) plain tension without stress concentration (K = 1, as the steel plate is rated), the
@@ -120,8 +121,6 @@ TEST(Eq9, TheNineteenSquareMillimetresAreThePlainTensionSection) {
   const double leg_plain =
       kSteelLoad / capacity_from_concentration(unit_area, kEta * kPaper.fibre_strength, 1.0) *
       unit_area;
-  EXPECT_NEAR(capacity_from_concentration(leg_plain, kEta * kPaper.fibre_strength, 1.0), kSteelLoad,
-              kForceTol);
   EXPECT_NEAR(2 * leg_plain / kMm2, 18.8, kAreaMm2Tol);
   EXPECT_EQ(std::lround(2 * leg_plain / kMm2), 19);
   // (d′) the same with the library's hoop strength of the lamina, which lets the matrix carry
@@ -149,7 +148,8 @@ TEST(Eq9, TheNineteenSquareMillimetresAreThePlainTensionSection) {
   EXPECT_NEAR(p.k, 2.67, kPrintedRatioTol);
   EXPECT_NEAR(2 * p.leg_area / kMm2, 49.3, kPrintedAreaMm2Tol1);
   EXPECT_NEAR(2 * p.fibre_area / kMm2, 34.5, kPrintedAreaMm2Tol1);
-  EXPECT_GT(2 * p.leg_area, 2.5 * kPaperArea);
+  constexpr double kConcentrationPenalty = 2.5;  // [1] the analysed link needs 49.3/19 = 2.6×
+  EXPECT_GT(2 * p.leg_area, kConcentrationPenalty * kPaperArea);
 }
 
 TEST(Eq9, MassAgainstTheDesignHelper) {
@@ -183,15 +183,15 @@ TEST(Eq9, MassAgainstTheDesignHelper) {
   // Against the paper: the link within 15 % of its 0.035 kg; the idealised plate (net section
   // only) under half its 0.337 kg, so the library's ratio 5.35 is below the paper's 9.63, and
   // the paper's steel mass over the library's link gives 11.2, above it.
-  EXPECT_LT(std::abs(best.mass.total / kLinkMass - 1), 0.15);
-  EXPECT_LT(out.steel.mass, 0.5 * kSteelMass);
+  constexpr double kLinkMassBand = 0.15;   // [1] the link within 15 % of the paper's 35 g
+  constexpr double kIdealisedPlate = 0.5;  // [1] the net-section plate under half of 0.337 kg
+  EXPECT_LT(std::abs(best.mass.total / kLinkMass - 1), kLinkMassBand);
+  EXPECT_LT(out.steel.mass, kIdealisedPlate * kSteelMass);
   EXPECT_NEAR(kSteelMass / best.mass.total, 11.2, kPrintedRatioTol1);
   EXPECT_LT(out.mass_ratio, kSteelMass / kLinkMass);
   EXPECT_GT(kSteelMass / best.mass.total, kSteelMass / kLinkMass);
-  // the paper's steel plate's face area implied by its mass and thickness (steel 7850 kg/m³,
-  // chosen) is 7155 mm², 2.2 times the idealised plate's
-  constexpr double kFaceAreaMm2Tol = 1.0;  // [mm²] 7155 mm², given to the square millimetre
-  EXPECT_NEAR(kSteelMass / (d.steel_density * d.steel_thickness) / kMm2, 7155.0, kFaceAreaMm2Tol);
+  // (The paper's plate, 0.337 kg at 6 mm and 7850 kg/m³ (chosen), has a face of 7155 mm², 2.2
+  // times the idealised plate's: arithmetic on inputs, in composite_capacity.md, not tested.)
 }
 
 TEST(Eq9, PaperConcentrationFactorIsNotTheConvergedOne) {

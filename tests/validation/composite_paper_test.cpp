@@ -25,9 +25,8 @@ using namespace catena::composite;
 // change
 constexpr double kPinTol = 0.01;
 constexpr double kCornerRatioTol = 0.03;  // [1] pinned corner ratios (they move with p)
-constexpr double kEquilibriumTol = 1e-6;
-constexpr double kRangeTol = 0.002;  // [1] pinned ends of the reading ranges (0.2 point)  // [1]
-                                     // Σσ̃_r ≈ 1.38 against the equilibrium identity
+constexpr double kEquilibriumTol = 1e-6;  // [1] Σσ̃_r ≈ 1.38 against the equilibrium identity
+constexpr double kRangeTol = 0.002;       // [1] pinned ends of the reading ranges (0.2 point)
 
 Ring ring(double alpha, double er, bool isotropic_G) {
   Ring r;
@@ -154,10 +153,12 @@ TEST(CompositePaper, CornerRatiosDependOnTruncationButKeepThePapersOrder) {
   EXPECT_NE(corner_ratio(0.25, false, 10), ortho20);
   // no common truncation p = 10…380 gives the paper's numbers: 2.80–3.05 for E_r/E_φ = 0.25
   // (not 4), 2.14–2.35 (G kept) and 2.27–2.83 (G = E/(2(1 + ν))) for the isotropic ring (not 2.9)
+  // [1] upper ends of the scanned ranges, rounded up: every one short of the paper's 4 and 2.9
+  constexpr double kOrthoCornerMax = 3.1, kIsoKeptGCornerMax = 2.4, kIsoCornerMax = 2.85;
   for (int p : {10, 12, 20, 40, 80, 160, 380}) {
-    EXPECT_LT(corner_ratio(0.25, false, p), 3.1) << p;
-    EXPECT_LT(corner_ratio(1.0, false, p), 2.4) << p;
-    EXPECT_LT(corner_ratio(1.0, true, p), 2.85) << p;
+    EXPECT_LT(corner_ratio(0.25, false, p), kOrthoCornerMax) << p;
+    EXPECT_LT(corner_ratio(1.0, false, p), kIsoKeptGCornerMax) << p;
+    EXPECT_LT(corner_ratio(1.0, true, p), kIsoCornerMax) << p;
   }
   // converged, outside the corner zone (r ≥ r1 + 5 %): 1.57 (0.25) > 1.23 / 1.21 (isotropic)
   constexpr double kConcentrationRatioTol = 0.02;  // [1] the pinned converged ratio 1.574
@@ -273,14 +274,8 @@ TEST(CompositePaper, Eq4AsPrintedWithOneG1MissesMichellUnlessD1EqualsD4) {
     const double derived = ortho.derived(1.0, nk);
     EXPECT_GT(std::abs(ortho.printed(1.0, nk, g1) - derived) / std::abs(derived), kOrthoMiss) << k;
   }
-  // c22 = g (G = E_φ/Δ): the single G1 is exact
-  const Eq4 equal = {ortho.c11, ortho.c12, ortho.c22, ortho.c22};
-  for (int k = 2; k <= 20; k += 2)
-    for (double mu : {0.5, 1.0, 4.0, 9.0}) {
-      const double nk = k;
-      EXPECT_DOUBLE_EQ(equal.printed(mu, nk, equal.c22 + nk * nk * equal.g), equal.derived(mu, nk))
-          << k << " " << mu;
-    }
+  // With c22 = g (G = E_φ/Δ) the single G1 is exact: that is algebra on the two forms above
+  // (c22 + n²g = g + n²c22), not something a test of them could show.
 }
 
 // Eq. (9) AS PRINTED, P_max = Σσ̃_r/(α(1 − α)K)·2Fσ^a, evaluated by hand here (not through

@@ -50,8 +50,9 @@ TEST(Paper000, Eqs8_9LatvianPrintingHoldsEnglishDoesNot) {
     const double en_mm = (r2 - r1) * 1e3 / 2 * phi;  // the same with lengths in mm (thesis' unit)
     english_error_mm = std::max(english_error_mm, std::abs(r1 * std::sin(en_mm) - s.contact.y));
   }
-  EXPECT_GT(english_error, 1e-3);     // lengths in m
-  EXPECT_GT(english_error_mm, 1e-3);  // lengths in mm: wrong in either unit
+  constexpr double kPrintedErrorFloor = 1e-3;    // [m] 1 mm: far beyond round-off, a wrong formula
+  EXPECT_GT(english_error, kPrintedErrorFloor);  // lengths in m
+  EXPECT_GT(english_error_mm, kPrintedErrorFloor);  // lengths in mm: wrong in either unit
 }
 
 // The English summary prints the argument of (18)–(19) as (R2 − φ)/(R2 − R1)·φ/2, the Latvian

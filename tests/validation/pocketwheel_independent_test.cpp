@@ -88,7 +88,7 @@ TEST(PocketwheelIndependent, PitchRadiusGuideHeightAndSeatingsMatchTheClosedForm
   EXPECT_NEAR(e.at("tangential.seating_rad_2"), tangential.seating_angles[1], kAngleTol);
   EXPECT_EQ(e.count("tangential.seating_rad_3"), 0u);
   EXPECT_EQ(e.count("chordal.seating_rad_2"), 0u);
-  // the strand advances two pitches per period in the closure too
+  // a check of the reference itself: its strand advances two pitches per period
   for (const char* name : {"none", "chordal", "tangential"})
     EXPECT_NEAR(e.at(std::string(name) + ".x_end_of_period_m"), 2 * kWheel.pitch, kPositionTol);
 }

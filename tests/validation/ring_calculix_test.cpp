@@ -168,7 +168,8 @@ TEST(RingCalculix, HoopAndRadialStressProfilesMatchOutsideTheCorner) {
       }
     }
     // refining the FE mesh brings its profiles toward Catena's
-    EXPECT_LT(dist_fine, 0.5 * dist_coarse) << c.alpha << " " << c.material;
+    constexpr double kRefinementGain = 0.5;  // [1] two mesh levels (h/4) at least halve the gap
+    EXPECT_LT(dist_fine, kRefinementGain * dist_coarse) << c.alpha << " " << c.material;
   }
 }
 
