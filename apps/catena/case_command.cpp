@@ -4,11 +4,9 @@
 // HTML report. Nothing here knows a model: a model added to the registry is in case files too.
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include "catena/catena.hpp"
 #include "catena/io/bind.hpp"
@@ -359,19 +357,16 @@ io::Report build_report(const CaseRun& run) {
   return report;
 }
 
-io::CaseFile load(const std::string& path) {
-  if (path.empty())
-    return io::parse_case(default_case_toml(), "built-in:000_thesis_rolling_hinge.toml");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({{"CASE", path, "a readable TOML case file"}});
-  std::stringstream text;
-  text << in.rdbuf();
-  return io::parse_case(text.str(), path);
-}
-
 struct CaseFlags {
   std::string path, output, format = "html";
+  CLI::Option* case_option = nullptr;  ///< given at all: `catena run ""` names no file
 };
+
+io::CaseFile load(const CaseFlags& f) {
+  if (f.case_option->count() == 0)
+    return io::parse_case(default_case_toml(), "built-in:000_thesis_rolling_hinge.toml");
+  return io::read_case(f.path);
+}
 
 }  // namespace
 
@@ -379,10 +374,11 @@ std::function<int()> add_run(CLI::App& app) {
   auto f = std::make_shared<CaseFlags>();
   CLI::App* c = app.add_subcommand(
       "run", "Run every analysis of a case file; print the JSON result tree (SI, with units)");
-  c->add_option("CASE", f->path, "TOML case file (docs/case_files.md)")->required();
+  f->case_option =
+      c->add_option("CASE", f->path, "TOML case file (docs/case_files.md)")->required();
   c->add_option("-o,--output", f->output, "write the JSON to FILE instead of stdout");
   return [f]() {
-    write_text_output(f->output, io::to_json(result_tree(run_case(load(f->path)))));
+    write_text_output(f->output, io::to_json(result_tree(run_case(load(*f)))));
     return 0;
   };
 }
@@ -393,12 +389,13 @@ std::function<int()> add_report(CLI::App& app) {
       "report",
       "Run a case file and write one self-contained HTML report (no CASE: the built-in thesis "
       "rolling-hinge conveyor chain)");
-  c->add_option("CASE", f->path, "TOML case file (docs/case_files.md); default: built-in case");
+  f->case_option =
+      c->add_option("CASE", f->path, "TOML case file (docs/case_files.md); default: built-in case");
   c->add_option("-o,--output", f->output, "the report file (default report.html; json: stdout)");
   c->add_option("--format", f->format, "html (default) or json (the whole result tree)")
       ->check(CLI::IsMember({"html", "json"}));
   return [f]() {
-    const CaseRun run = run_case(load(f->path));
+    const CaseRun run = run_case(load(*f));
     if (f->format == "json") {
       write_text_output(f->output, io::to_json(result_tree(run)));
       return 0;

@@ -1,11 +1,6 @@
 #include "cli_support.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
-#include <random>
+#include "catena/io/atomic_file.hpp"
 
 namespace catena::cli {
 
@@ -16,40 +11,34 @@ void write_text_output(const std::string& output, const std::string& text) {
 }
 
 void Outputs::add(std::string flag, std::string path, std::string content) {
-  files_.push_back({std::move(flag), std::move(path), std::move(content), {}});
+  // Two outputs to one file would leave only the last one there, while both are reported
+  // written: refuse them, whatever the spelling of the path (links followed).
+  const std::string target = io::output_target(path);
+  for (const File& f : files_) {
+    if (io::output_target(f.path) == target)
+      throw InputError({{flag, path,
+                         "a file other than " + f.flag + "'s (both name " + target +
+                             "): each output needs its own file"}});
+  }
+  files_.push_back({std::move(flag), std::move(path), std::move(content)});
 }
 
 void Outputs::commit(const std::string& stdout_text) {
-  namespace fs = std::filesystem;
-  auto discard = [&] {
-    for (File& f : files_) {
-      std::error_code ignored;
-      if (!f.temporary.empty()) fs::remove(f.temporary, ignored);
-    }
-  };
-  std::random_device random;
-  for (File& f : files_) {
-    f.temporary = f.path + ".tmp" + std::to_string(random());
-    std::ofstream out(f.temporary, std::ios::binary | std::ios::trunc);
-    out.write(f.content.data(), static_cast<std::streamsize>(f.content.size()));
-    out.close();
-    if (!out) {
-      const std::string reason = std::strerror(errno);
-      discard();
+  // Open every file first (a path that cannot be written is the user's input: nothing is
+  // written then), write them, and only when all are written rename them into place.
+  std::vector<io::StagedFile> staged;
+  staged.reserve(files_.size());
+  for (const File& f : files_) {
+    try {
+      staged.emplace_back(f.path);
+    } catch (const io::WriteError& error) {
       throw InputError(
-          {{f.flag, f.path, "a writable file path (" + reason + "); nothing was written"}});
+          {{f.flag, f.path, "a writable file path (" + error.reason() + "); nothing was written"}});
     }
   }
-  for (File& f : files_) {
-    std::error_code error;
-    fs::rename(f.temporary, f.path, error);
-    if (error) {
-      discard();
-      throw InputError({{f.flag, f.path, "a writable file path (" + error.message() + ")"}});
-    }
-    f.temporary.clear();
-  }
-  if (!stdout_text.empty()) std::cout << stdout_text << std::flush;
+  for (std::size_t i = 0; i < files_.size(); ++i) staged[i].write(files_[i].content);
+  for (io::StagedFile& file : staged) file.commit();
+  if (!stdout_text.empty()) io::write_stdout(stdout_text);
 }
 
 }  // namespace catena::cli

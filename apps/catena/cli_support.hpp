@@ -10,7 +10,8 @@ namespace catena::cli {
 
 /// The outputs of one command, written all or nothing: every file goes to a temporary beside its
 /// target first; only when all are written are they renamed into place. Then the text meant for
-/// stdout is printed (when no --output file took it). An unwritable path is invalid input.
+/// stdout is printed (when no --output file took it). An unwritable path, or two outputs to one
+/// file, is invalid input; a write that fails once started (disk full) throws io::WriteError.
 class Outputs {
  public:
   /// `flag` names the option the path came from, for the error message.
@@ -20,7 +21,7 @@ class Outputs {
 
  private:
   struct File {
-    std::string flag, path, content, temporary;
+    std::string flag, path, content;
   };
   std::vector<File> files_;
 };

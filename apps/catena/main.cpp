@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "catena/core/error.hpp"
+#include "catena/io/atomic_file.hpp"
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
@@ -27,6 +28,10 @@ int main(int argc, char** argv) {
   } catch (const catena::InputError& error) {
     std::cerr << "catena: " << error.what() << "\n";
     return 2;
+  } catch (const catena::io::WriteError& error) {
+    // The output could not be written (disk full, stdout closed): not the input's fault.
+    std::cerr << "catena: " << error.what() << "\n";
+    return 1;
   } catch (const std::exception& error) {
     std::cerr << "catena: internal error: " << error.what() << "\n";
     return 1;

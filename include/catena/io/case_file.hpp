@@ -4,6 +4,7 @@
 // docs/case_files.md for the schema.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -41,6 +42,15 @@ struct CaseFile {
 /// ("loop.segment[2].length"; tables "loop.segment" and "loop.segment[2]"); other arrays are kept
 /// as one kOther value (no analysis takes an array yet).
 CaseFile parse_case(std::string_view text, std::string name);
+
+/// The largest case file read [bytes]. A case is a few kilobytes; a file near this size is not
+/// one (a log, an image, /dev/zero), and reading it whole would only exhaust memory.
+inline constexpr std::size_t kMaxCaseFileBytes = std::size_t{16} << 20;
+
+/// Reads and parses the case file at `path`. Throws InputError (field "CASE") for an empty path,
+/// a folder, a file that cannot be read, or one larger than kMaxCaseFileBytes (read no further
+/// than the cap, so endless inputs such as /dev/zero end too).
+CaseFile read_case(const std::string& path);
 
 /// The candidate closest to `word` by edit distance, when close enough to be a likely typo
 /// (distance ≤ max(2, |word|/3)); nothing otherwise.

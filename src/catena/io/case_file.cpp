@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <utility>
 
 namespace catena::io {
@@ -125,6 +127,25 @@ std::optional<std::string> did_you_mean(std::string_view word,
     }
   }
   return best;
+}
+
+CaseFile read_case(const std::string& path) {
+  const char* kExpected = "a readable TOML case file";
+  if (path.empty()) throw InputError({{"CASE", "''", "a path (an empty path names no file)"}});
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw InputError({{"CASE", path, "a TOML case file, not a folder"}});
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({{"CASE", path, kExpected}});
+  std::string text(kMaxCaseFileBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  if (in.bad()) throw InputError({{"CASE", path, kExpected}});
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxCaseFileBytes)
+    throw InputError({{"CASE", path,
+                       "a case file of at most " + std::to_string(kMaxCaseFileBytes >> 20) +
+                           " MiB (this one is larger; a case is a few kilobytes)"}});
+  return parse_case(text, path);
 }
 
 }  // namespace catena::io

@@ -146,8 +146,24 @@ std::string html_escape(std::string_view text) {
       case '\'':
         out += "&#39;";
         break;
-      default:
+      case '\t':
+      case '\n':
+      case '\r':
         out += c;
+        break;
+      default: {
+        // C0 controls and DEL are not allowed in HTML text (NUL least of all): shown as their
+        // Unicode control pictures, U+2400 + c (␀, ␁, …) and U+2421 (␡), so nothing is lost.
+        const auto u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u == 0x7f) {
+          const unsigned code = u == 0x7f ? 0x2421u : 0x2400u + u;
+          out += static_cast<char>(0xe0 | (code >> 12));
+          out += static_cast<char>(0x80 | ((code >> 6) & 0x3f));
+          out += static_cast<char>(0x80 | (code & 0x3f));
+        } else {
+          out += c;
+        }
+      }
     }
   }
   return out;

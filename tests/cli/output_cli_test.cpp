@@ -1,0 +1,142 @@
+// Output that cannot lose data or lie about it, and the case file's boundary: a full disk, two
+// outputs to one file, an output through a symbolic link, control characters in the report, and
+// case paths that are no case file (issue 18).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "cli_run.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kWheel = "pocketwheel --pitch 64 --wire 18 --teeth 8 --omega 5 ";
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("catena_output_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+bool has_full_device() { return fs::is_character_file("/dev/full"); }
+
+TEST(OutputCli, AFullDiskIsAnErrorNamingThePath) {
+  if (!has_full_device()) GTEST_SKIP() << "no /dev/full on this system";
+  const CliRun file = run(kWheel + "--output /dev/full");
+  EXPECT_EQ(file.status, 1) << file.err;
+  EXPECT_NE(file.err.find("cannot write '/dev/full'"), std::string::npos) << file.err;
+  EXPECT_NE(file.err.find("No space left"), std::string::npos) << file.err;
+  EXPECT_TRUE(fs::is_character_file("/dev/full"));  // written to, never replaced
+
+  const CliRun report = run("report -o /dev/full");
+  EXPECT_EQ(report.status, 1) << report.err;
+  EXPECT_NE(report.err.find("cannot write '/dev/full'"), std::string::npos) << report.err;
+  EXPECT_EQ(report.err.find("catena: wrote"), std::string::npos) << report.err;
+}
+
+TEST(OutputCli, AStdoutThatCannotBeWrittenIsAnError) {
+  if (!has_full_device()) GTEST_SKIP() << "no /dev/full on this system";
+  // `run` reads stdout through a pipe; this command sends it to /dev/full instead.
+  const CliRun r = run(kWheel + "--format json >/dev/full");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("cannot write 'stdout'"), std::string::npos) << r.err;
+}
+
+TEST(OutputCli, ADeviceIsWrittenDirectly) {
+  const CliRun r = run(kWheel + "--output /dev/null");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+}
+
+TEST(OutputCli, TwoOutputsToOneFileAreRefusedNamingBothFlags) {
+  const fs::path same = scratch("same.txt");
+  fs::remove(same);
+  const CliRun table = run(kWheel + "--output " + same.string() + " --csv " + same.string());
+  EXPECT_EQ(table.status, 2);
+  EXPECT_NE(table.err.find("--output"), std::string::npos) << table.err;
+  EXPECT_NE(table.err.find("--csv"), std::string::npos) << table.err;
+  EXPECT_FALSE(fs::exists(same));  // nothing written
+
+  // the same file under another spelling
+  const fs::path drawing = scratch("wheel.svg");
+  const std::string other = (drawing.parent_path() / "." / drawing.filename()).string();
+  const CliRun svg = run(kWheel + "--svg " + drawing.string() + " --dxf " + other);
+  EXPECT_EQ(svg.status, 2);
+  EXPECT_NE(svg.err.find("--svg"), std::string::npos) << svg.err;
+  EXPECT_NE(svg.err.find("--dxf"), std::string::npos) << svg.err;
+  EXPECT_FALSE(fs::exists(drawing));
+}
+
+TEST(OutputCli, AnOutputThroughASymbolicLinkWritesItsTargetAndKeepsTheLink) {
+  const fs::path target = scratch("target.json");
+  const fs::path link = scratch("link.json");
+  fs::remove(link);
+  std::ofstream(target) << "old";
+  fs::create_symlink(target.filename(), link);  // relative, as people make them
+  const CliRun r = run(kWheel + "--format json --output " + link.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::is_symlink(link));
+  const std::string written = slurp(target);
+  EXPECT_EQ(written.rfind("{", 0), 0u) << written.substr(0, 40);
+  // a dangling link: its target is created, the link kept
+  fs::remove(target);
+  const CliRun again = run(kWheel + "--format json --output " + link.string());
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_TRUE(fs::is_regular_file(target));
+}
+
+TEST(OutputCli, AFolderOrAMissingFolderIsInvalidInput) {
+  const CliRun folder = run(kWheel + "--output " + fs::temp_directory_path().string());
+  EXPECT_EQ(folder.status, 2);
+  EXPECT_NE(folder.err.find("--output"), std::string::npos) << folder.err;
+  const CliRun missing = run(kWheel + "--output /nonexistent-catena-dir/out.txt");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("nothing was written"), std::string::npos) << missing.err;
+}
+
+TEST(OutputCli, ControlCharactersInACaseReachTheReportAsVisibleSymbols) {
+  const fs::path case_path = scratch("control.toml");
+  // TOML's \u0000 and \u0007 escapes put a NUL and a BEL into the title.
+  std::ofstream(case_path)
+      << "title = \"Wheel\\u0000A\\u0007B\"\n"
+         "[chain]\ntype = \"round-link\"\npitch = \"64 mm\"\nwire = \"18 mm\"\n"
+         "[sprocket]\nteeth = 8\n[analyses.pocketwheel]\nomega = \"5 1/s\"\n";
+  const fs::path html = scratch("control.html");
+  const CliRun r = run("report " + case_path.string() + " -o " + html.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string page = slurp(html);
+  EXPECT_EQ(page.find('\0'), std::string::npos);
+  EXPECT_EQ(page.find('\a'), std::string::npos);
+  EXPECT_NE(page.find("Wheel\u2400A\u2407B"), std::string::npos);
+}
+
+TEST(OutputCli, CasePathsThatAreNoCaseFileAreRefused) {
+  const CliRun endless = run("run /dev/zero");
+  EXPECT_EQ(endless.status, 2) << endless.err;
+  EXPECT_NE(endless.err.find("at most 16 MiB"), std::string::npos) << endless.err;
+
+  const CliRun folder = run("run " + fs::temp_directory_path().string());
+  EXPECT_EQ(folder.status, 2);
+  EXPECT_NE(folder.err.find("not a folder"), std::string::npos) << folder.err;
+
+  for (const char* command : {"run ''", "report ''"}) {
+    const CliRun empty = run(command);
+    EXPECT_EQ(empty.status, 2) << command;
+    EXPECT_NE(empty.err.find("empty path"), std::string::npos) << empty.err;
+  }
+}
+
+}  // namespace
