@@ -185,6 +185,12 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
     if (!state->output.empty()) outputs.add("--output", state->output, text);
     outputs.commit(state->output.empty() ? text : "");
     if (!state->csv.empty()) std::cerr << "catena: wrote the series to " << state->csv << "\n";
+    // A result that is not finite is named on stderr too: the text table and CSV do not carry
+    // diagnostics, and a reader of them must not take inf or nan for an answer.
+    for (const Diagnostic& d : record.diagnostics) {
+      if (d.severity == Diagnostic::Severity::kError)
+        std::cerr << "catena: error: " << d.message << "\n";
+    }
     return 0;
   };
 }

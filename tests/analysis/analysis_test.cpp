@@ -149,3 +149,56 @@ TEST(Csv, HeaderThenRowsWithTwelveDigits) {
 }
 
 }  // namespace
+
+namespace {
+
+// A result that is not finite is an error diagnostic naming the field; an absent value (null)
+// is not; units and the diagnostics array are not results.
+TEST(NonFinite, FieldsAreFoundByPathAndCountedPerArray) {
+  const double inf = INFINITY;
+  Value data = Value::object({{"a", 1.0},
+                              {"b", Value::object({{"c", -inf}, {"absent", Value()}})},
+                              {"series", std::vector<double>{1.0, NAN, inf, 2.0}},
+                              {"runs", Value(Value::Array{Value::object({{"x", NAN}})})},
+                              {"units", Value::object({{"a", "m"}})},
+                              {"diagnostics", Value::array()}});
+  const std::vector<catena::analysis::NonFinite> f = catena::analysis::non_finite_fields(data);
+  ASSERT_EQ(f.size(), 3u);
+  EXPECT_EQ(f[0].path, "b.c");
+  EXPECT_EQ(f[0].count, 1u);
+  EXPECT_EQ(f[1].path, "series");
+  EXPECT_EQ(f[1].count, 2u);
+  EXPECT_EQ(f[1].total, 4u);
+  EXPECT_TRUE(std::isnan(f[1].first));
+  EXPECT_EQ(f[2].path, "runs[0].x");
+
+  catena::analysis::Record record;
+  record.data = data;
+  catena::analysis::diagnose_non_finite(record);
+  ASSERT_EQ(record.diagnostics.size(), 3u);
+  for (const catena::Diagnostic& d : record.diagnostics) {
+    EXPECT_EQ(d.severity, catena::Diagnostic::Severity::kError);
+    EXPECT_EQ(d.code, "result.non_finite");
+    EXPECT_TRUE(std::isfinite(d.value));
+  }
+  EXPECT_NE(record.diagnostics[1].message.find("'series'"), std::string::npos);
+  EXPECT_NE(record.diagnostics[1].message.find("2 of 4"), std::string::npos);
+  EXPECT_EQ(record.data.at("diagnostics").size(), 3u);  // in the JSON's own array too
+  EXPECT_EQ(record.data.at("diagnostics").as_array()[0].at("severity").as_string(), "error");
+}
+
+TEST(NonFinite, EveryAnalysisRunByNameDiagnosesAnOverflowingInput) {
+  // omega = 1e200 1/s squares to an acceleration beyond double precision
+  const catena::analysis::Record r = catena::run(
+      "pocketwheel", {{"pitch", "64 mm"}, {"wire", "18"}, {"teeth", "8"}, {"omega", "1e200"}});
+  std::set<std::string> codes;
+  for (const catena::Diagnostic& d : r.diagnostics) codes.insert(d.code);
+  EXPECT_TRUE(codes.count("result.non_finite")) << "no diagnostic for a_x = ±inf";
+  // and a sound input has none
+  const catena::analysis::Record ok = catena::run(
+      "pocketwheel", {{"pitch", "64 mm"}, {"wire", "18"}, {"teeth", "8"}, {"omega", "5"}});
+  EXPECT_TRUE(catena::analysis::non_finite_fields(ok.data).empty());
+  for (const catena::Diagnostic& d : ok.diagnostics) EXPECT_NE(d.code, "result.non_finite");
+}
+
+}  // namespace

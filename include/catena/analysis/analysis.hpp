@@ -51,8 +51,9 @@ struct Analysis {
   };
   std::vector<std::pair<std::string, Variant>> variants;
 
-  /// run, then describe.
-  Record evaluate(const Inputs& inputs) const { return describe(run(inputs), inputs); }
+  /// run, then describe; then every result field that is not finite becomes an error diagnostic
+  /// (diagnose_non_finite), so no front end shows a silent null.
+  Record evaluate(const Inputs& inputs) const;
   const Parameter* parameter(std::string_view key) const;
   /// True when an issue's field is a parameter key or a model field ("joint F21 stiffness") that a
   /// front end names in its own spelling (--flag, analyses.x.key); false for paths that a table

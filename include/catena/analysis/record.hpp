@@ -4,6 +4,7 @@
 // diagnostics. Writers in io/ turn a Record into files; no front end writes a model's fields.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,22 @@ std::string unit_of(const Value& result, const std::string& key);
 Chart series_chart(const Value& result, const Value& object, const std::string& title,
                    const std::string& x, const std::vector<std::string>& ys,
                    const std::string& y_label = "");
+
+/// A result field whose numbers are not all finite: its path in the data ("series.ax",
+/// "layouts.layout_1.safety_factor"), how many of its numbers are ±inf or NaN, and the first.
+struct NonFinite {
+  std::string path;
+  std::size_t count = 0, total = 0;
+  double first = 0.0;
+};
+/// Every real number of `data` that is ±inf or NaN, grouped by field (an array is one field),
+/// in document order; `units` and `diagnostics` are not results and are skipped. Absent values
+/// are null Values, not NaN, so they are not listed.
+std::vector<NonFinite> non_finite_fields(const Value& data);
+
+/// Adds to `record` one error diagnostic `result.non_finite` per field of non_finite_fields,
+/// to `diagnostics` and to the data's own `diagnostics` array where it has one.
+void diagnose_non_finite(Record& record);
 
 /// Diagnostics as the JSON array every analysis prints: {severity, code, message, value, limit}.
 Value diagnostics_value(const std::vector<Diagnostic>& diagnostics);

@@ -36,7 +36,9 @@ void throw_if_any(const std::vector<Issue>& issues);
 
 /// A finding about a valid design: infeasible, or outside a model's range of validity.
 struct Diagnostic {
-  enum class Severity { kInfo, kWarning, kInfeasible };
+  /// kError: the result itself is unusable (a field that is not finite), not a finding about
+  /// the design.
+  enum class Severity { kInfo, kWarning, kInfeasible, kError };
   Severity severity = Severity::kWarning;
   std::string code;     ///< stable identifier, e.g. "pocketwheel.guide_end_too_close"
   std::string message;  ///< sentence naming the reason and the limit

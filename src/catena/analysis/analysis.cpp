@@ -108,6 +108,68 @@ Parameter operator|(Parameter p, const Alias& a) {
 
 // ---- records
 
+namespace {
+
+// Collects the non-finite reals below `v` (path `path`); an array of numbers is one field.
+void collect_non_finite(const Value& v, const std::string& path, std::vector<NonFinite>& out) {
+  if (v.is_real()) {
+    const double x = v.as_number();
+    if (!std::isfinite(x)) out.push_back({path, 1, 1, x});
+  } else if (v.is_array()) {
+    const Value::Array& items = v.as_array();
+    const bool numbers = std::all_of(items.begin(), items.end(),
+                                     [](const Value& e) { return e.is_number() || e.is_null(); });
+    if (numbers && !items.empty()) {
+      NonFinite f{path, 0, items.size(), 0.0};
+      for (const Value& e : items) {
+        if (e.is_real() && !std::isfinite(e.as_number()) && f.count++ == 0) f.first = e.as_number();
+      }
+      if (f.count > 0) out.push_back(f);
+      return;
+    }
+    for (std::size_t i = 0; i < items.size(); ++i)
+      collect_non_finite(items[i], path + "[" + std::to_string(i) + "]", out);
+  } else if (v.is_object()) {
+    for (const auto& [key, member] : v.as_object()) {
+      if (key == "units" || key == "diagnostics") continue;
+      collect_non_finite(member, path.empty() ? key : path + "." + key, out);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<NonFinite> non_finite_fields(const Value& data) {
+  std::vector<NonFinite> out;
+  collect_non_finite(data, "", out);
+  return out;
+}
+
+void diagnose_non_finite(Record& record) {
+  const std::vector<NonFinite> fields = non_finite_fields(record.data);
+  if (fields.empty()) return;
+  Value* listed = record.data.is_object() && record.data.contains("diagnostics") &&
+                          record.data.at("diagnostics").is_array()
+                      ? &record.data["diagnostics"]
+                      : nullptr;
+  for (const NonFinite& f : fields) {
+    const char* what = std::isnan(f.first) ? "NaN" : (f.first > 0 ? "+inf" : "-inf");
+    Diagnostic d;
+    d.severity = Diagnostic::Severity::kError;
+    d.code = "result.non_finite";
+    d.message =
+        "the result '" + (f.path.empty() ? std::string("(value)") : f.path) + "' is not finite (" +
+        what +
+        (f.total > 1 ? ", " + std::to_string(f.count) + " of " + std::to_string(f.total) + " values"
+                     : std::string()) +
+        "): an input lies outside the range the model can compute in double precision";
+    d.value = static_cast<double>(f.count);
+    d.limit = 0.0;
+    record.diagnostics.push_back(d);
+    if (listed) listed->push_back(diagnostics_value({d}).as_array().front());
+  }
+}
+
 Value diagnostics_value(const std::vector<Diagnostic>& diagnostics) {
   Value out = Value::array();
   for (const Diagnostic& d : diagnostics) {
@@ -214,6 +276,12 @@ const Parameter* Analysis::table_field(const std::string& path) const {
     if (f.name == key) return &f;
   }
   return nullptr;
+}
+
+Record Analysis::evaluate(const Inputs& inputs) const {
+  Record record = describe(run(inputs), inputs);
+  diagnose_non_finite(record);
+  return record;
 }
 
 }  // namespace catena::analysis

@@ -33,6 +33,8 @@ const char* to_string(Diagnostic::Severity severity) {
       return "warning";
     case Diagnostic::Severity::kInfeasible:
       return "infeasible";
+    case Diagnostic::Severity::kError:
+      return "error";
   }
   return "unknown";
 }
