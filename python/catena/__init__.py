@@ -6,6 +6,7 @@ the parameter's bare unit (``catena.analyses()`` lists it). See docs/python.md.
 
 from __future__ import annotations
 
+import functools
 import numbers
 import os
 from typing import Any, Iterable, Mapping, Sequence
@@ -71,11 +72,17 @@ def analyses() -> list[dict]:
     return _core.analyses()
 
 
+@functools.lru_cache(maxsize=None)
+def _tables() -> dict:
+    """name → analysis, read once (the registry does not change while the process runs)."""
+    return {a["name"]: a for a in _core.analyses()}
+
+
 def _analysis(name: str) -> dict:
-    for a in _core.analyses():
-        if a["name"] == name:
-            return a
-    names = ", ".join(a["name"] for a in _core.analyses())
+    a = _tables().get(name)
+    if a is not None:
+        return a
+    names = ", ".join(_tables())
     raise InputError([{"field": "analysis", "value": str(name),
                        "expected": f"an analysis Catena has: {names}"}])
 
@@ -106,7 +113,7 @@ def _is_list(value: Any) -> bool:
 def _texts(analysis: dict, values: Mapping[str, Any]) -> tuple[list[tuple[str, str]], list[dict]]:
     """(key, text) pairs for the library, and the problems only Python can see (a list where a
     single value is required)."""
-    params = {p["name"]: p for p in analysis["parameters"]}
+    params = analysis.setdefault("_by_key", {p["name"]: p for p in analysis["parameters"]})
     texts: list[tuple[str, str]] = []
     issues: list[dict] = []
     for key, value in values.items():
