@@ -185,3 +185,15 @@ def test_non_finite_values_are_none_as_json_null():
     d = catena.run("pocketwheel", example=True, guide="none").to_dict()
     assert d["guide_end"] is None
     assert not any(isinstance(x, float) and not math.isfinite(x) for x in d["series"]["vx"])
+
+
+def test_concurrent_runs_from_python_threads_give_the_serial_results():
+    # the GIL is released while a model runs: calls from several threads run in the library
+    # at once and must not disturb each other
+    from concurrent.futures import ThreadPoolExecutor
+    kw = [dict(pin_diameter=d, half_thickness=8, plate_radius=34, teeth=z, strokes=1)
+          for d in (30, 40, 50) for z in (6, 8, 10, 12)]
+    serial = [catena.run("hinge", **k).to_dict() for k in kw]
+    with ThreadPoolExecutor(4) as pool:
+        threaded = list(pool.map(lambda k: catena.run("hinge", **k).to_dict(), kw * 4))
+    assert threaded == serial * 4
