@@ -55,6 +55,9 @@ def sweep_chunk(name: str, points: Sequence[Mapping[str, Any]], threads: int = 0
         sets.append(texts)
     if issues:
         raise InputError(issues)
+    if not hasattr(_core, "sweep"):
+        raise NotImplementedError("catena.sweep runs the library's C++ sweep, which this build "
+                                  "does not have yet (issue 17)")
     try:
         columns, rows = _core.sweep(name, sets, int(threads))
     except _core._InputError as error:
