@@ -12,6 +12,8 @@ packages=(
   libcairo2-dev libdxflib-dev libtomlplusplus-dev
   chromium
   calculix-ccx
+  pybind11-dev python3-dev python3-pytest python3-numpy python3-pandas python3-distributed
+  python3-matplotlib
 )
 
 missing=()

@@ -1,19 +1,12 @@
-// catena run CASE / catena report [CASE]: one TOML case file describes a chain system; every
-// analysis it names binds its [analyses.<name>] table and the shared tables straight onto that
-// analysis' parameter table (the registry's), runs, and becomes part of one JSON tree or one
-// HTML report. Nothing here knows a model: a model added to the registry is in case files too.
+// catena run CASE / catena report [CASE]: the command-line front of the library's case runner
+// (catena/io/case_run.hpp): which file, which output. Nothing here knows a model or the schema.
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <iostream>
-#include <map>
-#include <set>
 
-#include "catena/catena.hpp"
-#include "catena/io/bind.hpp"
 #include "catena/io/case_file.hpp"
+#include "catena/io/case_run.hpp"
 #include "catena/io/record.hpp"
 #include "catena/io/report.hpp"
-#include "catena/io/sha256.hpp"
 #include "cli_support.hpp"
 #include "commands.hpp"
 
@@ -23,339 +16,6 @@ std::string_view plotly_js();          // embedded web/node_modules/plotly.js-di
 std::string_view default_case_toml();  // embedded examples/000_thesis_rolling_hinge.toml
 
 namespace {
-
-using analysis::Analysis;
-using analysis::Parameter;
-using analysis::ParameterType;
-using analysis::Value;
-
-// The case-file schema around the analyses (docs/case_files.md).
-const std::vector<std::string> kChainTypes = {"rolling-hinge", "sliding-hinge", "roller-iso606",
-                                              "round-link", "composite-link"};
-// Shared tables: a key there goes to every analysis that has a parameter of that name.
-const std::vector<std::string> kSharedTables = {"chain", "sprocket", "loads", "material"};
-// Keys of the shared tables that describe rather than feed a parameter, and renamed keys.
-const std::set<std::string> kDescriptive = {"chain.type", "chain.name", "chain.description"};
-const std::map<std::string, std::string> kAliases = {{"chain.designation", "chain"}};
-// Options that choose output destinations: the case runner owns those.
-const std::set<std::string> kOutputFlags = {"help", "format", "output", "csv",
-                                            "svg",  "dxf",    "example"};
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string s;
-  for (const std::string& item : items) s += (s.empty() ? "" : ", ") + item;
-  return s;
-}
-
-std::string suggest(const std::string& word, const std::vector<std::string>& candidates) {
-  const auto m = io::did_you_mean(word, candidates);
-  return m ? " (did you mean '" + *m + "'?)" : std::string();
-}
-
-// The analysis a case table names: "pocketwheel", or "pocketwheel-<label>" for one of several
-// runs of it (pocketwheel-free, pocketwheel-chordal).
-const Analysis* analysis_named(const std::string& name) {
-  for (const Analysis* a : catena::analyses()) {
-    if (a->name == name || name.rfind(a->name + "-", 0) == 0) return a;
-  }
-  return nullptr;
-}
-
-io::RawInput::Type raw_type(io::CaseValue::Type type) {
-  switch (type) {
-    case io::CaseValue::Type::kString:
-      return io::RawInput::Type::kText;
-    case io::CaseValue::Type::kNumber:
-      return io::RawInput::Type::kNumber;
-    case io::CaseValue::Type::kBoolean:
-      return io::RawInput::Type::kBoolean;
-    case io::CaseValue::Type::kOther:
-      break;
-  }
-  return io::RawInput::Type::kOther;
-}
-
-struct AnalysisRun {
-  const Analysis* analysis;
-  std::string name;  ///< the table's name: the analysis', or "<name>-<label>"
-  analysis::Record record;
-};
-
-struct CaseRun {
-  io::CaseFile file;
-  std::string hash;
-  std::vector<AnalysisRun> runs;
-};
-
-// One [analyses.<name>] table bound to its analysis' parameters, ready to run.
-struct Planned {
-  const Analysis* analysis;
-  std::string name;
-  std::vector<io::RawInput> raw;
-  std::map<std::string, std::string> path_of;  ///< parameter key → the case-file path it came from
-};
-
-// The file's structure: top-level keys and tables, chain.type. Returns the chain type ("" when
-// missing or unknown: the problem is recorded).
-std::string check_structure(const io::CaseFile& file, std::vector<Issue>& issues) {
-  std::vector<std::string> top = {"title", "description", "chain", "sprocket", "loads", "material"};
-  for (const Analysis* a : catena::analyses()) {
-    for (const Parameter& p : a->parameters) {
-      if (p.type == ParameterType::kTable && std::find(top.begin(), top.end(), p.name) == top.end())
-        top.push_back(p.name);  // [loop]
-    }
-  }
-  top.push_back("analyses");
-  for (const io::CaseValue& v : file.values) {
-    const std::string head = v.path.substr(0, v.path.find('.'));
-    if (std::find(top.begin(), top.end(), head) == top.end())
-      issues.push_back({v.path, v.text, "a known key: " + joined(top) + suggest(head, top)});
-  }
-  for (const std::string& t : file.tables) {
-    const std::string head = t.substr(0, t.find('.'));
-    if (std::find(top.begin(), top.end(), head) == top.end() && t.find('.') == std::string::npos)
-      issues.push_back(
-          {t, "(table)",
-           "a known table: " + joined({top.begin() + 2, top.end()}) + suggest(head, top)});
-  }
-  const io::CaseValue* type = file.find("chain.type");
-  if (!type) {
-    issues.push_back({"chain.type", "(missing)", "one of " + joined(kChainTypes)});
-    return "";
-  }
-  if (std::find(kChainTypes.begin(), kChainTypes.end(), type->text) == kChainTypes.end()) {
-    issues.push_back({"chain.type", "'" + type->text + "'",
-                      "one of " + joined(kChainTypes) + suggest(type->text, kChainTypes)});
-    return "";
-  }
-  return type->text;
-}
-
-// Shared values, key → value; each must feed at least one analysis.
-std::map<std::string, const io::CaseValue*> shared_values(const io::CaseFile& file,
-                                                          std::vector<Issue>& issues) {
-  std::set<std::string> any_key;
-  for (const Analysis* a : catena::analyses()) {
-    for (const Parameter& p : a->parameters) {
-      if (!p.cli_only) any_key.insert(p.name);
-    }
-  }
-  const std::vector<std::string> candidates(any_key.begin(), any_key.end());
-  std::map<std::string, const io::CaseValue*> shared;
-  for (const io::CaseValue& v : file.values) {
-    const std::string head = v.path.substr(0, v.path.find('.'));
-    if (std::find(kSharedTables.begin(), kSharedTables.end(), head) == kSharedTables.end())
-      continue;
-    if (kDescriptive.count(v.path)) continue;
-    const std::string rest = v.path.substr(head.size() + 1);
-    if (rest.find('.') != std::string::npos) {
-      issues.push_back({v.path, v.text, "a value directly in [" + head + "]"});
-      continue;
-    }
-    const auto alias = kAliases.find(v.path);
-    const std::string key = alias != kAliases.end() ? alias->second : rest;
-    if (!any_key.count(key)) {
-      issues.push_back({v.path, v.text,
-                        "a key some analysis takes" + suggest(rest, candidates) +
-                            " (docs/case_files.md lists them)"});
-      continue;
-    }
-    if (shared.count(key)) {
-      issues.push_back({v.path, v.text,
-                        "one value per key: '" + key + "' is also given as " + shared[key]->path});
-      continue;
-    }
-    shared[key] = &v;
-  }
-  return shared;
-}
-
-// The analysis' own table, then the shared values it takes, then what the chain type implies.
-Planned plan(const Analysis& a, const std::string& name, const io::CaseFile& file,
-             const std::string& chain_type,
-             const std::map<std::string, const io::CaseValue*>& shared,
-             std::vector<Issue>& issues) {
-  Planned p{&a, name, {}, {}};
-  std::vector<std::string> key_names;
-  for (const Parameter& param : a.parameters) {
-    if (!param.cli_only && !kOutputFlags.count(param.name)) key_names.push_back(param.name);
-  }
-  std::map<std::string, const io::CaseValue*> given;
-  const std::string prefix = "analyses." + name + ".";
-  for (const io::CaseValue& v : file.values) {
-    if (v.path.rfind(prefix, 0) != 0) continue;
-    const std::string key = v.path.substr(prefix.size());
-    const Parameter* param = a.parameter(key);
-    if (kOutputFlags.count(key)) {
-      issues.push_back({v.path, v.text,
-                        "no output option in a case file: 'catena report' and "
-                        "'catena run' choose the outputs"});
-    } else if (!param || param->cli_only) {
-      issues.push_back({v.path, v.text,
-                        "an option of '" + name + "'" + suggest(key, key_names) +
-                            " (docs/cli.md lists them; '_' for '-')"});
-    } else {
-      given[key] = &v;
-    }
-  }
-  const Analysis::Variant* variant = nullptr;
-  for (const auto& [variant_type, v] : a.variants) {
-    if (variant_type == chain_type) variant = &v;
-  }
-  for (const auto& [key, v] : shared) {
-    const Parameter* param = a.parameter(key);
-    const bool excluded =
-        variant && std::find(variant->not_shared.begin(), variant->not_shared.end(), key) !=
-                       variant->not_shared.end();
-    if (param && !param->cli_only && !param->not_shared && !given.count(key) && !excluded)
-      given[key] = v;
-  }
-  for (const auto& [key, v] : given) {
-    p.path_of[key] = v->path;
-    p.raw.push_back({key, v->text, raw_type(v->type), {}, {}});
-  }
-  for (const Parameter& param : a.parameters) {
-    // a table parameter reads the case file's own table ([loop] and [[loop.segment]])
-    if (param.type == ParameterType::kTable) p.raw.push_back(io::table_input(file, param));
-  }
-  if (variant) {
-    for (const auto& [key, value] : variant->set) {
-      const Parameter* param = a.parameter(key);
-      const bool is_flag = param && param->type == ParameterType::kFlag;
-      p.raw.push_back(
-          {key, value, is_flag ? io::RawInput::Type::kBoolean : io::RawInput::Type::kText, {}, {}});
-    }
-  }
-  return p;
-}
-
-// Binds and runs one planned analysis; its problems are named by the case file's paths.
-void run_planned(const Planned& p, CaseRun& out, std::vector<Issue>& issues) {
-  const std::string where = "analyses." + p.name;
-  std::vector<Issue> found;
-  analysis::Inputs inputs = io::bind(*p.analysis, p.raw, found);
-  inputs.want_drawing();  // the report shows the drawing
-  if (found.empty()) {
-    try {
-      out.runs.push_back({p.analysis, p.name, p.analysis->evaluate(inputs)});
-    } catch (const InputError& e) {
-      found = e.issues();
-    }
-  }
-  for (Issue issue : found) {
-    // name the case-file path the value came from, or where a missing one belongs
-    const auto path = p.path_of.find(issue.field);
-    if (!p.analysis->renames(issue.field)) {
-      // it names the case file's own path and line already
-    } else if (path != p.path_of.end()) {
-      issue.field = path->second;
-    } else if (p.analysis->parameter(issue.field)) {
-      issue.field = where + "." + issue.field;
-    } else {  // a model's field: named as the command line names it
-      std::string flag = "--" + issue.field;
-      for (char& c : flag) c = c == '_' ? '-' : c;
-      issue.field = where + " (" + flag + ")";
-    }
-    issues.push_back(std::move(issue));
-  }
-}
-
-CaseRun run_case(const io::CaseFile& file) {
-  CaseRun out{file, io::sha256_hex(file.text), {}};
-  std::vector<Issue> issues;
-  const std::string chain_type = check_structure(file, issues);
-  const auto shared = shared_values(file, issues);
-
-  std::vector<std::string> names;
-  for (const Analysis* a : catena::analyses()) {
-    if (!a->chain_types.empty()) names.push_back(a->name);
-  }
-  const std::vector<std::string> wanted = file.children("analyses");  // in file order
-  for (const io::CaseValue& v : file.values) {
-    if (v.path.rfind("analyses.", 0) == 0 &&
-        v.path.find('.', std::string("analyses.").size()) == std::string::npos)
-      issues.push_back({v.path, v.text, "a table [" + v.path + "] of that analysis' options"});
-  }
-  if (wanted.empty() && file.find("analyses") == nullptr) {
-    issues.push_back(
-        {"analyses", "(missing)", "at least one [analyses.<name>] table; names: " + joined(names)});
-  }
-  std::vector<Planned> planned;
-  for (const std::string& name : wanted) {
-    const Analysis* a = analysis_named(name);
-    if (a == nullptr || a->chain_types.empty()) {
-      issues.push_back({"analyses." + name, "(table)",
-                        "an analysis Catena has: " + joined(names) + suggest(name, names)});
-      continue;
-    }
-    if (!chain_type.empty() && std::find(a->chain_types.begin(), a->chain_types.end(),
-                                         chain_type) == a->chain_types.end()) {
-      issues.push_back({"analyses." + name, "(table)",
-                        "an analysis for chain.type = " + chain_type + "; '" + name +
-                            "' applies to " + joined(a->chain_types)});
-      continue;
-    }
-    planned.push_back(plan(*a, name, file, chain_type, shared, issues));
-  }
-  // no stop before: the analyses that could be planned run too, so that a misspelt key and a
-  // wrong unit elsewhere are reported together
-  for (const Planned& p : planned) run_planned(p, out, issues);
-  throw_if_any(issues);
-  return out;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Outputs
-
-Value result_tree(const CaseRun& run) {
-  Value j = Value::object();
-  j["catena_version"] = CATENA_VERSION;
-  j["case"] = run.file.name;
-  j["case_sha256"] = run.hash;
-  const io::CaseValue* title = run.file.find("title");
-  j["title"] = title ? title->text : run.file.name;
-  Value analyses = Value::object();
-  for (const AnalysisRun& r : run.runs) analyses[r.name] = r.record.data;
-  j["analyses"] = std::move(analyses);
-  return j;
-}
-
-// The unit a bare number in the case file takes: its parameter's (or its table field's).
-std::string bare_unit_at(const io::CaseValue& v) {
-  if (v.type != io::CaseValue::Type::kNumber) return "";
-  for (const Analysis* a : catena::analyses()) {
-    if (const Parameter* field = a->table_field(v.path)) return io::bare_unit(*field);
-  }
-  const auto alias = kAliases.find(v.path);
-  const std::string key =
-      alias != kAliases.end() ? alias->second : v.path.substr(v.path.rfind('.') + 1);
-  for (const Analysis* a : catena::analyses()) {
-    if (const Parameter* p = a->parameter(key)) {
-      const std::string unit = io::bare_unit(*p);
-      if (!unit.empty()) return unit;
-    }
-  }
-  return "";
-}
-
-io::Report build_report(const CaseRun& run) {
-  io::Report report;
-  const io::CaseValue* title = run.file.find("title");
-  report.title = title ? title->text : "Catena case " + run.file.name;
-  report.case_name = run.file.name;
-  report.case_hash = run.hash;
-  report.version = CATENA_VERSION;
-  for (const io::CaseValue& v : run.file.values)
-    report.inputs.push_back({v.path, v.text, bare_unit_at(v)});
-  for (const AnalysisRun& r : run.runs) {
-    std::string section_title = r.analysis->title;
-    if (r.name != r.analysis->name)
-      section_title += " — " + r.name.substr(r.analysis->name.size() + 1);
-    report.sections.push_back(
-        io::report_section(r.record, r.name, section_title, r.analysis->docs));
-  }
-  return report;
-}
 
 struct CaseFlags {
   std::string path, output, format = "html";
@@ -378,7 +38,8 @@ std::function<int()> add_run(CLI::App& app) {
       c->add_option("CASE", f->path, "TOML case file (docs/case_files.md)")->required();
   c->add_option("-o,--output", f->output, "write the JSON to FILE instead of stdout");
   return [f]() {
-    write_text_output(f->output, io::to_json(result_tree(run_case(load(*f)))));
+    write_text_output(f->output,
+                      io::to_json(io::result_tree(io::run_case(load(*f)), CATENA_VERSION)));
     return 0;
   };
 }
@@ -395,14 +56,14 @@ std::function<int()> add_report(CLI::App& app) {
   c->add_option("--format", f->format, "html (default) or json (the whole result tree)")
       ->check(CLI::IsMember({"html", "json"}));
   return [f]() {
-    const CaseRun run = run_case(load(*f));
+    const io::CaseRun run = io::run_case(load(*f));
     if (f->format == "json") {
-      write_text_output(f->output, io::to_json(result_tree(run)));
+      write_text_output(f->output, io::to_json(io::result_tree(run, CATENA_VERSION)));
       return 0;
     }
     const std::string path = f->output.empty() ? "report.html" : f->output;
     Outputs outputs;
-    outputs.add("--output", path, io::to_html(build_report(run), plotly_js()));
+    outputs.add("--output", path, io::to_html(io::build_report(run, CATENA_VERSION), plotly_js()));
     outputs.commit();
     std::cerr << "catena: wrote " << path << " (" << run.runs.size()
               << (run.runs.size() == 1 ? " analysis)\n" : " analyses)\n");

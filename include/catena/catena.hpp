@@ -20,6 +20,7 @@ const std::vector<const analysis::Analysis*>& analyses();
 const analysis::Analysis* find_analysis(std::string_view name);
 
 /// Binds `inputs` (key → text) to the analysis' parameters, runs it and describes the result.
+/// A table parameter's text is the path of a TOML file holding the table (as on the command line).
 /// Throws InputError listing every problem at once, fields named by parameter key.
 analysis::Record run(std::string_view name,
                      const std::vector<std::pair<std::string, std::string>>& inputs);

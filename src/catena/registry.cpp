@@ -1,4 +1,5 @@
 // The registry: one line per analysis. A model added to Catena is listed here and nowhere else.
+#include <algorithm>
 #include <stdexcept>
 
 #include "catena/catena.hpp"
@@ -7,6 +8,7 @@
 #include "catena/engagement/analysis.hpp"
 #include "catena/hinge/analysis.hpp"
 #include "catena/io/bind.hpp"
+#include "catena/io/case_file.hpp"
 #include "catena/pocketwheel/analysis.hpp"
 #include "catena/strength/analysis.hpp"
 #include "catena/strength/loop_analysis.hpp"
@@ -44,14 +46,32 @@ analysis::Record run(std::string_view name,
   const analysis::Analysis* a = find_analysis(name);
   if (a == nullptr) throw InputError({{"analysis", std::string(name), "an analysis Catena has"}});
   std::vector<io::RawInput> raw;
+  std::vector<Issue> issues;
+  std::vector<std::string> unread;  // table parameters whose file could not be read
   for (const auto& [key, text] : inputs) {
     const analysis::Parameter* p = a->parameter(key);
+    if (p && p->type == analysis::ParameterType::kTable) {  // the TOML file holding the table
+      try {
+        raw.push_back(io::table_input(io::read_case(text), *p));
+      } catch (const InputError& e) {
+        unread.push_back(key);
+        for (const Issue& issue : e.issues())
+          issues.push_back({key, text,
+                            "a readable TOML file with a [" + p->name + "] table (" + issue.field +
+                                " = " + issue.value + ": " + issue.expected + ")"});
+      }
+      continue;
+    }
     const bool is_flag = p && p->type == analysis::ParameterType::kFlag;
     raw.push_back(
         {key, text, is_flag ? io::RawInput::Type::kBoolean : io::RawInput::Type::kText, {}, {}});
   }
-  std::vector<Issue> issues;
-  const analysis::Inputs in = io::bind(*a, raw, issues);
+  std::vector<Issue> bound;
+  const analysis::Inputs in = io::bind(*a, raw, bound);
+  for (Issue& issue : bound) {  // not again as missing
+    if (std::find(unread.begin(), unread.end(), issue.field) == unread.end())
+      issues.push_back(std::move(issue));
+  }
   throw_if_any(issues);
   return a->evaluate(in);
 }
