@@ -20,7 +20,10 @@ const std::vector<const analysis::Analysis*>& analyses();
 const analysis::Analysis* find_analysis(std::string_view name);
 
 /// Binds `inputs` (key → text) to the analysis' parameters, runs it and describes the result.
-/// Throws InputError listing every problem at once, fields named by parameter key.
+/// Throws InputError listing every problem at once, fields named by parameter key. Safe to call
+/// from several threads at once (sweeps do): the registry is built once and only read, analyses
+/// keep no state between runs, and UDUNITS-2 (not thread-safe) is used under one mutex in
+/// io/quantity.cpp; tests/analysis/sweep_test.cpp runs it on 8 threads.
 analysis::Record run(std::string_view name,
                      const std::vector<std::pair<std::string, std::string>>& inputs);
 
