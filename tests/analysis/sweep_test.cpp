@@ -144,7 +144,7 @@ TEST(Sweep, KeysThatCanNeverBindAreRefusedUpFrontAllAtOnce) {
     EXPECT_EQ(e.issues()[1].field, "modulus");
   }
   request = hinge_grid();
-  request.base[7].second = "40 parsec";  // pin_diameter: every point sets its own
+  request.base[7].second = "40 kg";  // pin_diameter: every point sets its own
   EXPECT_EQ(sweep_points(request).size(), 30u);
   EXPECT_THROW(sweep({.analysis = "hinj", .base = {}, .grid = {{"teeth", {"8"}}}, .points = {}}),
                InputError);
