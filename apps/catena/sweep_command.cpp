@@ -51,9 +51,12 @@ class ProgressBar {
     std::fflush(stderr);
     drawn_ = true;
   }
-  ~ProgressBar() {
+  /// Ends the bar's line, so that later messages start on their own.
+  void finish() {
     if (drawn_) std::fputs("\n", stderr);
+    drawn_ = false;
   }
+  ~ProgressBar() { finish(); }
   ProgressBar(const ProgressBar&) = delete;
   ProgressBar& operator=(const ProgressBar&) = delete;
 
@@ -201,6 +204,7 @@ std::function<int()> add_sweep(CLI::App& app) {
     options.keep_records = false;
     options.progress = [&bar](std::size_t done, std::size_t total) { bar(done, total); };
     const SweepResult result = sweep(request, options);
+    bar.finish();
     std::size_t failed = 0;
     for (const SweepPoint& p : result.points) failed += p.ok() ? 0 : 1;
     write_text_output(f->output, sweep_csv(sweep_table(result)));
