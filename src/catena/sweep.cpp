@@ -80,11 +80,19 @@ void check_key(const analysis::Analysis& a, const std::vector<std::string>& know
 
 // Runs one point into its slot. Only InputError is the point's own: anything else is kept for
 // the caller to rethrow.
+// `layout` is the worker's last list of scalar names: points with the same names share it, so a
+// long sweep holds its names once, not once per point.
 void run_point(const std::string& name, const InputSet& base, SweepPoint& point, bool keep,
+               std::shared_ptr<const std::vector<ScalarName>>& layout,
                std::exception_ptr& failure) {
   try {
     analysis::Record record = run(name, merged(base, point.inputs));
     point.scalars = scalars_of(record.data);
+    if (layout && *layout == *point.scalars.names) {
+      point.scalars.names = layout;
+    } else {
+      layout = point.scalars.names;
+    }
     point.worst = worst_diagnostic(record.diagnostics);
     if (keep) point.record = std::move(record);
   } catch (const InputError& e) {
@@ -279,10 +287,11 @@ SweepResult sweep(const SweepRequest& request, const SweepOptions& options) {
   std::condition_variable finished;
   const bool keep = options.keep_records;
   auto work = [&] {
+    std::shared_ptr<const std::vector<ScalarName>> layout;
     for (;;) {
       const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
       if (i >= total) break;
-      run_point(request.analysis, request.base, result.points[i], keep, failures[i]);
+      run_point(request.analysis, request.base, result.points[i], keep, layout, failures[i]);
       if (done.fetch_add(1, std::memory_order_acq_rel) + 1 == total) {
         const std::lock_guard<std::mutex> lock(mutex);
         finished.notify_all();
