@@ -4,6 +4,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -26,5 +27,8 @@ std::map<std::string, std::function<int()>> register_analyses(CLI::App& app);
 /// Registers `catena run CASE` (JSON result tree) and `catena report [CASE]` (HTML report).
 std::function<int()> add_run(CLI::App& app);
 std::function<int()> add_report(CLI::App& app);
+/// Registers `catena sweep CASE --grid KEY=VALUES ...` (CSV, one row per point).
+std::function<int()> add_sweep(CLI::App& app);
+
 
 }  // namespace catena::cli

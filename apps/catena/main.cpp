@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   auto actions = catena::cli::register_analyses(app);
   actions["run"] = catena::cli::add_run(app);
   actions["report"] = catena::cli::add_report(app);
+  actions["sweep"] = catena::cli::add_sweep(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -21,7 +21,10 @@ const analysis::Analysis* find_analysis(std::string_view name);
 
 /// Binds `inputs` (key → text) to the analysis' parameters, runs it and describes the result.
 /// A table parameter's text is the path of a TOML file holding the table (as on the command line).
-/// Throws InputError listing every problem at once, fields named by parameter key.
+/// Throws InputError listing every problem at once, fields named by parameter key. Safe to call
+/// from several threads at once (sweeps do): the registry is built once and only read, analyses
+/// keep no state between runs, and UDUNITS-2 (not thread-safe) is used under one mutex in
+/// io/quantity.cpp; tests/analysis/sweep_test.cpp runs it on 8 threads.
 analysis::Record run(std::string_view name,
                      const std::vector<std::pair<std::string, std::string>>& inputs);
 

@@ -127,6 +127,24 @@ INSTANTIATE_TEST_SUITE_P(
                       Rejected{"3kg", QuantityKind::kArea, "wrong dimension"},
                       Rejected{"1200 kg/m", QuantityKind::kDensity, "wrong dimension"}));
 
+// Outcomes are remembered (sweeps read the same texts at every point): a text read again, by
+// another field or as another kind, gives what the parser gives the first time.
+TEST(Quantity, ARememberedOutcomeIsTheParsersOwnForThatTextAndKind) {
+  for (int round = 0; round < 2; ++round) {
+    std::vector<Issue> issues;
+    EXPECT_EQ(parse_quantity("20", QuantityKind::kLength, "a", issues), 0.020);
+    EXPECT_EQ(parse_quantity("20", QuantityKind::kAngle, "b", issues), 20 * kDeg);
+    EXPECT_FALSE(parse_quantity("8 kg", QuantityKind::kLength, "c", issues).has_value());
+    EXPECT_FALSE(parse_quantity("8 kg", QuantityKind::kLength, "d", issues).has_value());
+    EXPECT_EQ(parse_quantity("8 kg", QuantityKind::kMass, "e", issues), 8.0);
+    ASSERT_EQ(issues.size(), 2u) << round;
+    EXPECT_EQ(issues[0].field, "c");
+    EXPECT_EQ(issues[1].field, "d");
+    EXPECT_EQ(issues[0].expected, issues[1].expected);
+    EXPECT_NE(issues[0].expected.find("wrong dimension"), std::string::npos);
+  }
+}
+
 TEST(Quantity, ThrowingOverloadCarriesTheIssue) {
   try {
     parse_quantity("5kg", QuantityKind::kLength, "--pitch");

@@ -36,6 +36,11 @@ struct RawInput {
 analysis::Inputs bind(const analysis::Analysis& analysis, const std::vector<RawInput>& raw,
                       std::vector<Issue>& issues);
 
+/// The problems of one value read on its own, as `bind` reads it (a unit, a number, a whole
+/// number, a choice, the kind of value), without other values or the analysis' cross-field
+/// `check`: what no other input can mend (a sweep checks its shared values with it).
+std::vector<Issue> value_issues(const analysis::Parameter& parameter, const RawInput& raw);
+
 /// The values of `file` under the table `parameter.name` ("loop." …) as the raw input of a table
 /// parameter: every leaf with its path and line, every table's path, the file's name.
 RawInput table_input(const CaseFile& file, const analysis::Parameter& parameter);

@@ -5,11 +5,14 @@
 // `catena run`, `catena report` and the Python module; docs/case_files.md describes the schema.
 #pragma once
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "catena/analysis/analysis.hpp"
+#include "catena/core/error.hpp"
+#include "catena/io/bind.hpp"
 #include "catena/io/case_file.hpp"
 #include "catena/io/report.hpp"
 
@@ -28,6 +31,21 @@ struct CaseRun {
   std::string hash;  ///< SHA-256 of the file's bytes, hex
   std::vector<AnalysisRun> runs;
 };
+
+/// One analysis' inputs as a case file gives them to `catena run`: its [analyses.<name>] table,
+/// the shared tables, what the chain type implies; each value with the case path it came from.
+/// Used by `catena sweep` to bind a case's values for one analysis.
+struct CaseInputs {
+  const analysis::Analysis* analysis = nullptr;  ///< nullptr when `name` names none
+  std::vector<RawInput> raw;
+  std::map<std::string, std::string> path_of;  ///< parameter key → case-file path
+};
+/// The inputs of the analysis table `name` ("hinge", "pocketwheel-free"; the table may be absent:
+/// the shared tables still apply). Problems of the file's structure, its chain type and the
+/// table's keys are appended, named by case-file path.
+CaseInputs case_inputs(const CaseFile& file, const std::string& name, std::vector<Issue>& issues);
+/// The [analyses.<name>] tables of `file`, in file order.
+std::vector<std::string> analysis_tables(const CaseFile& file);
 
 /// Binds every [analyses.<name>] table of `file` (with the shared tables and what chain.type
 /// implies) and runs it. Throws InputError listing every problem of the whole file at once,

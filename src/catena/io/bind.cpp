@@ -77,6 +77,34 @@ void parse_scalar(const Parameter& p, const std::string& text, InputValue& v,
 
 }  // namespace
 
+std::vector<Issue> value_issues(const Parameter& p, const RawInput& raw) {
+  std::vector<Issue> issues;
+  if (p.type == ParameterType::kFlag) {
+    if (raw.type != RawInput::Type::kBoolean) issues.push_back({p.name, raw.text, "true or false"});
+    return issues;
+  }
+  if (p.type == ParameterType::kTable) {
+    if (raw.type != RawInput::Type::kTable) issues.push_back({p.name, raw.text, "a table"});
+    return issues;
+  }
+  if (raw.type == RawInput::Type::kBoolean || raw.type == RawInput::Type::kOther ||
+      raw.type == RawInput::Type::kTable) {
+    const std::string unit = bare_unit(p);
+    issues.push_back({p.name, raw.text,
+                      "a number or a string with a unit" +
+                          (unit.empty() ? std::string() : " (bare number: " + unit + ")")});
+    return issues;
+  }
+  InputValue v;
+  if (p.list) {
+    for (const std::string& part : split_commas(raw.text)) parse_scalar(p, part, v, issues);
+    if (raw.text.empty()) parse_scalar(p, "", v, issues);
+  } else {
+    parse_scalar(p, raw.text, v, issues);
+  }
+  return issues;
+}
+
 analysis::Inputs bind(const analysis::Analysis& a, const std::vector<RawInput>& raw,
                       std::vector<Issue>& issues) {
   analysis::Inputs in(&a.parameters);

@@ -262,6 +262,36 @@ std::string bare_unit_at(const CaseValue& v) {
 
 }  // namespace
 
+std::vector<std::string> analysis_tables(const CaseFile& file) { return file.children("analyses"); }
+
+CaseInputs case_inputs(const CaseFile& file, const std::string& name, std::vector<Issue>& issues) {
+  CaseInputs out;
+  const std::string chain_type = check_structure(file, issues);
+  const auto shared = shared_values(file, issues);
+  std::vector<std::string> names;
+  for (const Analysis* a : catena::analyses()) {
+    if (!a->chain_types.empty()) names.push_back(a->name);
+  }
+  const Analysis* a = analysis_named(name);
+  if (a == nullptr || a->chain_types.empty()) {
+    issues.push_back({"analyses." + name, "(table)",
+                      "an analysis Catena has: " + joined(names) + suggest(name, names)});
+    return out;
+  }
+  if (!chain_type.empty() &&
+      std::find(a->chain_types.begin(), a->chain_types.end(), chain_type) == a->chain_types.end()) {
+    issues.push_back({"analyses." + name, "(table)",
+                      "an analysis for chain.type = " + chain_type + "; '" + name +
+                          "' applies to " + joined(a->chain_types)});
+    return out;
+  }
+  Planned p = plan(*a, name, file, chain_type, shared, issues);
+  out.analysis = a;
+  out.raw = std::move(p.raw);
+  out.path_of = std::move(p.path_of);
+  return out;
+}
+
 CaseRun run_case(const CaseFile& file) {
   CaseRun out{file, sha256_hex(file.text), {}};
   std::vector<Issue> issues;

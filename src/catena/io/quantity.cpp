@@ -10,7 +10,10 @@
 #include <memory>
 #include <mutex>
 #include <regex>
+#include <shared_mutex>
 #include <stdexcept>
+#include <string>
+#include <unordered_map>
 
 namespace catena::io {
 namespace {
@@ -235,15 +238,17 @@ const char* default_unit(QuantityKind kind) {
 
 const char* describe(QuantityKind kind) { return accepted_spellings(kind); }
 
-std::optional<double> parse_quantity(std::string_view raw, QuantityKind kind,
-                                     std::string_view field, std::vector<Issue>& issues) {
+namespace {
+
+// What reading one text gives: the value in SI, or why it is not one.
+struct Outcome {
+  std::optional<double> value;
+  std::string why;
+};
+
+Outcome parse_uncached(std::string_view raw, QuantityKind kind) {
   const std::string text = trim(raw);
-  auto fail = [&](const std::string& why) -> std::optional<double> {
-    issues.push_back(
-        {std::string(field), "'" + std::string(raw) + "'",
-         std::string(accepted_spellings(kind)) + (why.empty() ? "" : " (" + why + ")")});
-    return std::nullopt;
-  };
+  auto fail = [](const std::string& why) { return Outcome{std::nullopt, why}; };
   if (text.empty()) return fail("the value is empty");
 
   std::string expression;
@@ -301,7 +306,48 @@ std::optional<double> parse_quantity(std::string_view raw, QuantityKind kind,
     return fail("a frequency other than 1/s is ambiguous: use rpm or 1/s");
   }
   if (!std::isfinite(value)) return fail("the value is not finite");
-  return value;
+  return Outcome{value, ""};
+}
+
+// Reading a text is a function of the text and the kind alone, and UDUNITS-2 runs under one
+// mutex: threads that read the same texts over and over (a sweep's shared values, at every
+// point) would queue on it. Outcomes are remembered, up to kRemembered texts (then forgotten
+// all at once); a remembered outcome is the one the parser gave, so nothing read changes.
+class Remembered {
+ public:
+  Outcome get(std::string_view raw, QuantityKind kind) {
+    std::string key(1, static_cast<char>(kind));
+    key += raw;
+    {
+      const std::shared_lock<std::shared_mutex> lock(mutex_);
+      const auto found = outcomes_.find(key);
+      if (found != outcomes_.end()) return found->second;
+    }
+    Outcome outcome = parse_uncached(raw, kind);
+    const std::unique_lock<std::shared_mutex> lock(mutex_);
+    if (outcomes_.size() >= kRemembered) outcomes_.clear();
+    outcomes_.emplace(std::move(key), outcome);
+    return outcome;
+  }
+
+ private:
+  static constexpr std::size_t kRemembered = 4096;
+  std::shared_mutex mutex_;
+  std::unordered_map<std::string, Outcome> outcomes_;
+};
+
+}  // namespace
+
+std::optional<double> parse_quantity(std::string_view raw, QuantityKind kind,
+                                     std::string_view field, std::vector<Issue>& issues) {
+  static Remembered remembered;
+  Outcome outcome = remembered.get(raw, kind);
+  if (!outcome.value) {
+    issues.push_back({std::string(field), "'" + std::string(raw) + "'",
+                      std::string(accepted_spellings(kind)) +
+                          (outcome.why.empty() ? "" : " (" + outcome.why + ")")});
+  }
+  return outcome.value;
 }
 
 std::optional<double> parse_number(std::string_view text, std::string_view field,

@@ -1,0 +1,223 @@
+// catena sweep CASE --grid KEY=VALUES ...: one analysis of a case file over a grid of values, on
+// the library's thread pool (catena/sweep.hpp), written as CSV — one row per point: the swept
+// inputs, the scalar results, the worst diagnostic. The case gives the analysis and the values
+// every point shares exactly as `catena run` binds them; the grid keys are case paths
+// (analyses.hinge.teeth) or, when the case has one analysis table, bare keys (teeth).
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "catena/catena.hpp"
+#include "catena/io/case_file.hpp"
+#include "catena/io/case_run.hpp"
+#include "catena/sweep.hpp"
+#include "cli_support.hpp"
+#include "commands.hpp"
+
+namespace catena::cli {
+namespace {
+
+struct SweepFlags {
+  std::string path, output;
+  std::vector<std::string> grid;
+  unsigned threads = 0;
+};
+
+// One --grid as the user typed it, and what it sweeps.
+struct GridFlag {
+  std::string flag;   ///< "--grid analyses.hinge.teeth": how problems name it
+  std::string table;  ///< the analysis table it names ("" for a bare key)
+  SweepAxis axis;     ///< key: the parameter key
+};
+
+// A bar on stderr, drawn only when stderr is a terminal and the sweep has run for a second.
+class ProgressBar {
+ public:
+  ProgressBar() : terminal_(::isatty(STDERR_FILENO) == 1), start_(Clock::now()) {}
+  void operator()(std::size_t done, std::size_t total) {
+    if (!terminal_) return;
+    const double seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+    if (seconds < 1.0 && !drawn_) return;
+    constexpr int kWidth = 40;
+    const int filled = total == 0 ? kWidth : static_cast<int>(kWidth * done / total);
+    std::fprintf(stderr, "\rcatena sweep [%s%s] %zu/%zu points, %.0f s",
+                 std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                 std::string(static_cast<std::size_t>(kWidth - filled), '.').c_str(), done, total,
+                 seconds);
+    std::fflush(stderr);
+    drawn_ = true;
+  }
+  /// Ends the bar's line, so that later messages start on their own.
+  void finish() {
+    if (drawn_) std::fputs("\n", stderr);
+    drawn_ = false;
+  }
+  ~ProgressBar() { finish(); }
+  ProgressBar(const ProgressBar&) = delete;
+  ProgressBar& operator=(const ProgressBar&) = delete;
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  bool terminal_;
+  bool drawn_ = false;
+  Clock::time_point start_;
+};
+
+std::vector<GridFlag> read_grid(const std::vector<std::string>& texts, std::vector<Issue>& issues) {
+  std::vector<GridFlag> out;
+  const std::string prefix = "analyses.";
+  for (const std::string& text : texts) {
+    std::optional<SweepAxis> axis = parse_axis(text, "--grid", issues);
+    if (!axis) continue;
+    GridFlag g{"--grid " + axis->key, "", *axis};
+    if (axis->key.rfind(prefix, 0) == 0) {
+      const std::string rest = axis->key.substr(prefix.size());
+      const std::size_t dot = rest.find('.');
+      if (dot == std::string::npos || dot == 0 || dot + 1 == rest.size()) {
+        issues.push_back({"--grid", "'" + text + "'",
+                          "analyses.<name>.<key>=values (e.g. analyses.hinge.teeth=6:20)"});
+        continue;
+      }
+      g.table = rest.substr(0, dot);
+      g.axis.key = rest.substr(dot + 1);
+    } else if (axis->key.find('.') != std::string::npos) {
+      issues.push_back({"--grid", "'" + text + "'",
+                        "an input of the analysis: a key (teeth) or analyses.<name>.<key>"});
+      continue;
+    }
+    out.push_back(std::move(g));
+  }
+  return out;
+}
+
+// The analysis table the grid sweeps: the one its keys name, or the case's only one.
+std::string table_of(const std::vector<GridFlag>& grid, const io::CaseFile& file,
+                     std::vector<Issue>& issues) {
+  std::string table;
+  for (const GridFlag& g : grid) {
+    if (g.table.empty()) continue;
+    if (table.empty()) {
+      table = g.table;
+    } else if (g.table != table) {
+      issues.push_back({g.flag, "(grid)",
+                        "keys of one analysis: the grid also sweeps analyses." + table +
+                            " (one sweep runs one analysis)"});
+    }
+  }
+  if (!table.empty()) return table;
+  const std::vector<std::string> tables = io::analysis_tables(file);
+  if (tables.size() == 1) return tables.front();
+  std::string names;
+  for (const std::string& t : tables) names += (names.empty() ? "" : ", ") + t;
+  issues.push_back(
+      {"--grid", "(no analysis named)",
+       tables.empty()
+           ? std::string("analyses.<name>.<key>=values: the case has no analysis table")
+           : "analyses.<name>.<key>=values naming one of the case's analyses (" + names + ")"});
+  return "";
+}
+
+}  // namespace
+
+std::function<int()> add_sweep(CLI::App& app) {
+  auto f = std::make_shared<SweepFlags>();
+  CLI::App* c = app.add_subcommand(
+      "sweep",
+      "Run one analysis of a case file over a grid of values; write CSV, one row per point "
+      "(swept inputs, scalar results in SI, worst diagnostic)");
+  c->add_option("CASE", f->path,
+                "TOML case file (docs/case_files.md): the analysis and the values "
+                "every point shares")
+      ->required();
+  c->add_option("--grid", f->grid,
+                "KEY=a:b (whole numbers, inclusive), KEY=a:b:step or KEY=v1,v2,... (texts with "
+                "units: 30mm,40mm); KEY is analyses.<name>.<key>, or <key> when the case has one "
+                "analysis; repeat for more axes (the first varies slowest)")
+      ->required();
+  c->add_option("--threads", f->threads, "worker threads (default 0: every hardware thread)");
+  c->add_option("-o,--output", f->output, "write the CSV to FILE instead of stdout");
+  return [f]() {
+    std::vector<Issue> issues;
+    std::optional<io::CaseFile> file;
+    try {
+      file = io::read_case(f->path);
+    } catch (const InputError& e) {  // listed with the grid's problems
+      issues.insert(issues.end(), e.issues().begin(), e.issues().end());
+    }
+    const std::vector<GridFlag> grid = read_grid(f->grid, issues);
+    const std::string table = file ? table_of(grid, *file, issues) : "";
+    io::CaseInputs inputs;
+    if (!table.empty()) inputs = io::case_inputs(*file, table, issues);
+
+    SweepRequest request;
+    std::map<std::string, std::string> flag_of;  // parameter key → the --grid that sweeps it
+    for (const GridFlag& g : grid) {
+      if (!g.table.empty() && g.table != table) continue;  // refused above
+      request.grid.push_back(g.axis);
+      flag_of.emplace(g.axis.key, g.flag);
+    }
+    if (inputs.analysis != nullptr) {
+      request.analysis = inputs.analysis->name;
+      for (const analysis::Parameter& p : inputs.analysis->parameters) {
+        if (p.type == analysis::ParameterType::kTable)
+          issues.push_back({"analyses." + table, "(table)",
+                            "an analysis without a table parameter ([" + p.name +
+                                "]): a sweep passes every value as text"});
+      }
+      for (const io::RawInput& raw : inputs.raw) {
+        if (raw.type == io::RawInput::Type::kTable) continue;
+        // a value no point replaces must read as `catena run` reads it (its TOML type too)
+        const analysis::Parameter* p = inputs.analysis->parameter(raw.key);
+        if (p != nullptr && !flag_of.count(raw.key)) {
+          for (Issue issue : io::value_issues(*p, raw)) {
+            const auto path = inputs.path_of.find(issue.field);
+            if (path != inputs.path_of.end()) issue.field = path->second;
+            issues.push_back(std::move(issue));
+          }
+        }
+        request.base.emplace_back(raw.key, raw.text);
+      }
+      try {
+        sweep_points(request);
+      } catch (const InputError& e) {
+        for (Issue issue : e.issues()) {
+          const auto path = inputs.path_of.find(issue.field);
+          const auto swept = flag_of.find(issue.field);
+          if (swept != flag_of.end()) {
+            issue.field = swept->second;
+          } else if (path != inputs.path_of.end()) {
+            continue;  // a shared value's problem: reported above, by its path
+          }
+          issues.push_back(std::move(issue));
+        }
+      }
+    }
+    throw_if_any(issues);
+
+    ProgressBar bar;
+    SweepOptions options;
+    options.threads = f->threads;
+    options.keep_records = false;
+    options.progress = [&bar](std::size_t done, std::size_t total) { bar(done, total); };
+    const SweepResult result = sweep(request, options);
+    bar.finish();
+    std::size_t failed = 0;
+    for (const SweepPoint& p : result.points) failed += p.ok() ? 0 : 1;
+    write_text_output(f->output, sweep_csv(sweep_table(result)));
+    if (failed > 0) {
+      std::cerr << "catena: " << failed << " of " << result.points.size()
+                << " points did not run (the error column says why)\n";
+    }
+    if (!f->output.empty()) {
+      std::cerr << "catena: wrote " << result.points.size() << " points to " << f->output << "\n";
+    }
+    return 0;
+  };
+}
+
+}  // namespace catena::cli

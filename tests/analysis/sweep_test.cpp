@@ -1,0 +1,264 @@
+#include "catena/sweep.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "catena/catena.hpp"
+#include "catena/io/record.hpp"
+
+namespace catena {
+namespace {
+
+// The hinge of the thesis' example case with a plate radius inside R1max for every pin swept.
+const InputSet kBase = {{"half_thickness", "8 mm"},     {"plate_radius", "15 mm"},
+                        {"tension", "29.4 kN"},         {"contact_length", "24 mm"},
+                        {"allowable_shear", "120 MPa"}, {"allowable_contact", "1600 MPa"},
+                        {"friction", "0.15"},           {"pin_diameter", "40 mm"}};
+
+SweepRequest hinge_grid() {
+  SweepRequest r;
+  r.analysis = "hinge";
+  r.base = kBase;
+  // teeth = 2 is below the model's z ≥ 3: those points must fail alone.
+  r.grid = {{"teeth", {"2", "6", "8", "12", "20"}},
+            {"pin_diameter", {"30mm", "40 mm", "50mm"}},
+            {"strokes", {"1", "2"}}};
+  return r;
+}
+
+std::vector<std::string> json_of(const SweepResult& result) {
+  std::vector<std::string> out;
+  for (const SweepPoint& p : result.points)
+    out.push_back(p.ok() ? io::to_json(p.record->data) : "error: " + p.error);
+  return out;
+}
+
+TEST(Sweep, GridOrderIsTheCartesianProductFirstAxisSlowest) {
+  const std::vector<InputSet> points = sweep_points(hinge_grid());
+  ASSERT_EQ(points.size(), 5u * 3u * 2u);
+  EXPECT_EQ(points[0], (InputSet{{"teeth", "2"}, {"pin_diameter", "30mm"}, {"strokes", "1"}}));
+  EXPECT_EQ(points[1], (InputSet{{"teeth", "2"}, {"pin_diameter", "30mm"}, {"strokes", "2"}}));
+  EXPECT_EQ(points[2], (InputSet{{"teeth", "2"}, {"pin_diameter", "40 mm"}, {"strokes", "1"}}));
+  EXPECT_EQ(points[6], (InputSet{{"teeth", "6"}, {"pin_diameter", "30mm"}, {"strokes", "1"}}));
+  EXPECT_EQ(points.back(), (InputSet{{"teeth", "20"}, {"pin_diameter", "50mm"}, {"strokes", "2"}}));
+  const SweepResult result = sweep(hinge_grid(), {.threads = 3});
+  ASSERT_EQ(result.points.size(), points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) EXPECT_EQ(result.points[i].inputs, points[i]);
+  EXPECT_EQ(result.keys, (std::vector<std::string>{"teeth", "pin_diameter", "strokes"}));
+}
+
+TEST(Sweep, IdenticalBitForBitOnOneTwoAndEightThreads) {
+  const SweepResult one = sweep(hinge_grid(), {.threads = 1});
+  const std::vector<std::string> reference = json_of(one);
+  for (unsigned threads : {2u, 8u}) {
+    for (int repeat = 0; repeat < 3; ++repeat) {
+      const SweepResult many = sweep(hinge_grid(), {.threads = threads});
+      EXPECT_EQ(json_of(many), reference) << threads << " threads";
+      EXPECT_EQ(sweep_csv(sweep_table(many)), sweep_csv(sweep_table(one))) << threads;
+    }
+  }
+}
+
+TEST(Sweep, EqualsCatenaRunPointByPoint) {
+  const SweepRequest request = hinge_grid();
+  const SweepResult result = sweep(request, {.threads = 4});
+  std::size_t failed = 0;
+  for (const SweepPoint& p : result.points) {
+    InputSet inputs = request.base;
+    for (const auto& [key, text] : p.inputs) {
+      bool replaced = false;
+      for (auto& kv : inputs) {
+        if (kv.first == key) {
+          kv.second = text;
+          replaced = true;
+        }
+      }
+      if (!replaced) inputs.emplace_back(key, text);
+    }
+    try {
+      const analysis::Record direct = run("hinge", inputs);
+      ASSERT_TRUE(p.ok()) << p.error;
+      EXPECT_EQ(io::to_json(p.record->data), io::to_json(direct.data));
+    } catch (const InputError& e) {
+      ++failed;
+      EXPECT_FALSE(p.ok());
+      EXPECT_EQ(p.error, e.what());
+    }
+  }
+  EXPECT_EQ(failed, 3u * 2u);  // every teeth = 2 point, and only those
+}
+
+TEST(Sweep, APointThatFailsToBindKeepsItsErrorAndTheRestRun) {
+  SweepRequest request;
+  request.analysis = "hinge";
+  request.base = kBase;
+  request.points = {{{"teeth", "8"}},
+                    {{"teeth", "eight"}},
+                    {{"teeth", "9"}, {"strokes", "0"}},
+                    {{"teeth", "10"}}};
+  const SweepResult result = sweep(request, {.threads = 2});
+  ASSERT_EQ(result.points.size(), 4u);
+  EXPECT_TRUE(result.points[0].ok());
+  EXPECT_TRUE(result.points[3].ok());
+  ASSERT_FALSE(result.points[1].ok());
+  EXPECT_NE(result.points[1].error.find("teeth = 'eight'"), std::string::npos)
+      << result.points[1].error;
+  ASSERT_EQ(result.points[2].issues.size(), 1u);
+  EXPECT_EQ(result.points[2].issues[0].field, "strokes");
+  EXPECT_FALSE(result.points[1].record.has_value());
+  EXPECT_EQ(result.keys, (std::vector<std::string>{"teeth", "strokes"}));
+}
+
+TEST(Sweep, KeysThatCanNeverBindAreRefusedUpFrontAllAtOnce) {
+  SweepRequest request = hinge_grid();
+  request.base.emplace_back("tooth_count", "8");
+  request.grid.push_back({"pin_diamter", {"30mm"}});
+  request.grid.push_back({"strokes", {}});
+  try {
+    sweep(request);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    ASSERT_EQ(e.issues().size(), 4u) << what;
+    EXPECT_EQ(e.issues()[0].field, "tooth_count");
+    EXPECT_EQ(e.issues()[1].field, "pin_diamter");
+    EXPECT_NE(what.find("did you mean 'pin_diameter'"), std::string::npos) << what;
+    EXPECT_EQ(e.issues()[2].field, "strokes");  // swept twice
+    EXPECT_EQ(e.issues()[3].field, "strokes");  // no values
+  }
+  // a shared value that does not read fails up front, unless every point replaces it
+  request = hinge_grid();
+  request.base.emplace_back("modulus", "210 parsec");
+  request.base[0].second = "8 furlongs per fortnight";
+  try {
+    sweep_points(request);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.issues().size(), 2u) << e.what();
+    EXPECT_EQ(e.issues()[0].field, "half_thickness");
+    EXPECT_EQ(e.issues()[1].field, "modulus");
+  }
+  request = hinge_grid();
+  request.base[7].second = "40 kg";  // pin_diameter: every point sets its own
+  EXPECT_EQ(sweep_points(request).size(), 30u);
+  EXPECT_THROW(sweep({.analysis = "hinj", .base = {}, .grid = {{"teeth", {"8"}}}, .points = {}}),
+               InputError);
+  EXPECT_THROW(sweep({.analysis = "hinge", .base = kBase, .grid = {}, .points = {}}), InputError);
+}
+
+TEST(Sweep, ProgressIsReportedOnTheCallingThreadEndingAtTheTotal) {
+  std::vector<std::size_t> seen;
+  const auto caller = std::this_thread::get_id();
+  bool elsewhere = false;
+  SweepOptions options;
+  options.threads = 2;
+  options.progress = [&](std::size_t done, std::size_t total) {
+    EXPECT_EQ(total, 30u);
+    elsewhere = elsewhere || std::this_thread::get_id() != caller;
+    seen.push_back(done);
+  };
+  sweep(hinge_grid(), options);
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(seen.back(), 30u);
+  EXPECT_FALSE(elsewhere);
+  for (std::size_t i = 1; i < seen.size(); ++i) EXPECT_GT(seen[i], seen[i - 1]);
+}
+
+TEST(Sweep, TableColumnsAreInputsThenScalarResultsWithUnitsThenWorstDiagnostic) {
+  const SweepResult result =
+      sweep(hinge_grid(), {.threads = 2, .progress = {}, .keep_records = false});
+  EXPECT_FALSE(result.points[6].record.has_value());
+  const SweepTable table = sweep_table(result);
+  ASSERT_EQ(table.rows(), 30u);
+  ASSERT_EQ(table.inputs.size(), 3u);
+  EXPECT_EQ(table.inputs[0].name, "teeth");
+  EXPECT_EQ(table.inputs[1].values[2], "40 mm");
+  std::vector<std::string> names;
+  for (const auto& c : table.results) names.push_back(c.name + "|" + c.unit);
+  const auto has = [&](const std::string& n) {
+    return std::find(names.begin(), names.end(), n) != names.end();
+  };
+  EXPECT_TRUE(has("R1_max|m"));
+  EXPECT_TRUE(has("shear_stress|Pa"));
+  EXPECT_TRUE(has("step1.R1_max|m"));  // nested: dotted path, unit of its key
+  EXPECT_FALSE(has("R2_from_eq6|"));   // a boolean is not a number
+  for (const std::string& n : names) EXPECT_EQ(n.find("pitch_change.phi"), std::string::npos);
+  EXPECT_FALSE(has("model|"));
+  // row 6 (teeth 6, d 30 mm, m 1) against the hinge run alone
+  InputSet inputs = kBase;
+  inputs[7].second = "30mm";
+  inputs.emplace_back("teeth", "6");
+  inputs.emplace_back("strokes", "1");
+  const analysis::Record direct = run("hinge", inputs);
+  for (const auto& c : table.results) {
+    if (c.name == "R1_max") {
+      EXPECT_EQ(c.values[6], direct.data.at("R1_max").as_number());
+    }
+    EXPECT_TRUE(std::isnan(c.values[0])) << c.name;  // teeth 2 did not run
+  }
+  const auto worst = worst_diagnostic(direct.diagnostics);
+  ASSERT_TRUE(worst.has_value());
+  EXPECT_EQ(table.severity.values[6], to_string(worst->severity));
+  EXPECT_EQ(table.code.values[6], worst->code);
+  EXPECT_EQ(table.error.values[6], "");
+  EXPECT_NE(table.error.values[0].find("teeth"), std::string::npos);
+
+  const std::string csv = sweep_csv(table);
+  const std::string header = csv.substr(0, csv.find('\n'));
+  EXPECT_EQ(header.rfind("teeth,pin_diameter,strokes,x_N1 [m],", 0), 0u) << header;
+  EXPECT_NE(header.find(",R1_max [m],"), std::string::npos);
+  const std::string tail = ",worst_severity,worst_code,error";
+  ASSERT_GT(header.size(), tail.size());
+  EXPECT_EQ(header.substr(header.size() - tail.size()), tail);
+  std::size_t lines = 0;
+  for (char ch : csv) lines += ch == '\n';
+  EXPECT_EQ(lines, 31u);
+  // the error cell is the point's problems on one line
+  EXPECT_EQ(table.error.values[0], "teeth = '2': expected a whole number ≥ 3");
+}
+
+TEST(Sweep, CsvNumbersReadBackExactlyAndAbsentCellsAreEmpty) {
+  SweepTable table;
+  table.inputs = {{"k", {"a,b", "say \"x\""}}};
+  table.results = {{"v", "m", {0.1 + 0.2, NAN}}};
+  table.severity.values = {"warning", ""};
+  table.code.values = {"c", ""};
+  table.error.values = {"", "line\nbreak"};
+  EXPECT_EQ(sweep_csv(table),
+            "k,v [m],worst_severity,worst_code,error\n"
+            "\"a,b\",0.30000000000000004,warning,c,\n"
+            "\"say \"\"x\"\"\",,,,\"line\nbreak\"\n");
+}
+
+TEST(Sweep, AxesParseRangesStepsAndListsWithUnits) {
+  std::vector<Issue> issues;
+  auto a = parse_axis("teeth=6:9", "--grid", issues);
+  ASSERT_TRUE(a);
+  EXPECT_EQ(a->key, "teeth");
+  EXPECT_EQ(a->values, (std::vector<std::string>{"6", "7", "8", "9"}));
+  a = parse_axis("teeth=6:20:5", "--grid", issues);
+  ASSERT_TRUE(a);
+  EXPECT_EQ(a->values, (std::vector<std::string>{"6", "11", "16"}));
+  a = parse_axis("pin_diameter=30mm, 40 mm,50mm", "--grid", issues);
+  ASSERT_TRUE(a);
+  EXPECT_EQ(a->values, (std::vector<std::string>{"30mm", "40 mm", "50mm"}));
+  a = parse_axis("teeth=8", "--grid", issues);
+  ASSERT_TRUE(a);
+  EXPECT_EQ(a->values, (std::vector<std::string>{"8"}));
+  EXPECT_TRUE(issues.empty());
+  for (const char* bad : {"teeth", "=6:9", "teeth=9:6", "teeth=6:9:0", "teeth=6.5:9", "teeth=a:b",
+                          "teeth=6:9:1:2", "d=30mm,,40mm", "d="}) {
+    std::vector<Issue> one;
+    EXPECT_FALSE(parse_axis(bad, "--grid", one)) << bad;
+    ASSERT_EQ(one.size(), 1u) << bad;
+    EXPECT_EQ(one[0].field, "--grid");
+  }
+}
+
+}  // namespace
+}  // namespace catena
