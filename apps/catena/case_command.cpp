@@ -378,7 +378,7 @@ std::function<int()> add_run(CLI::App& app) {
       c->add_option("CASE", f->path, "TOML case file (docs/case_files.md)")->required();
   c->add_option("-o,--output", f->output, "write the JSON to FILE instead of stdout");
   return [f]() {
-    write_text_output(f->output, io::to_json(result_tree(run_case(load(*f)))));
+    write_text_output(f->output, io::to_json(result_tree(run_case(load(*f)))), f->path);
     return 0;
   };
 }
@@ -397,11 +397,12 @@ std::function<int()> add_report(CLI::App& app) {
   return [f]() {
     const CaseRun run = run_case(load(*f));
     if (f->format == "json") {
-      write_text_output(f->output, io::to_json(result_tree(run)));
+      write_text_output(f->output, io::to_json(result_tree(run)), f->path);
       return 0;
     }
     const std::string path = f->output.empty() ? "report.html" : f->output;
     Outputs outputs;
+    if (!f->path.empty()) outputs.keep("CASE", f->path);
     outputs.add("--output", path, io::to_html(build_report(run), plotly_js()));
     outputs.commit();
     std::cerr << "catena: wrote " << path << " (" << run.runs.size()
