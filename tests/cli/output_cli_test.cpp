@@ -59,6 +59,9 @@ TEST(OutputCli, ADeviceIsWrittenDirectly) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(r.out.empty());
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  // a device holds no content to be wrong: two outputs may both be discarded there
+  const CliRun both = run(kWheel + "--output /dev/null --csv /dev/null");
+  EXPECT_EQ(both.status, 0) << both.err;
 }
 
 TEST(OutputCli, TwoOutputsToOneFileAreRefusedNamingBothFlags) {
