@@ -39,7 +39,8 @@ std::function<int()> add_run(CLI::App& app) {
   c->add_option("-o,--output", f->output, "write the JSON to FILE instead of stdout");
   return [f]() {
     write_text_output(f->output,
-                      io::to_json(io::result_tree(io::run_case(load(*f)), CATENA_VERSION)));
+                      io::to_json(io::result_tree(io::run_case(load(*f)), CATENA_VERSION)),
+                      f->path);
     return 0;
   };
 }
@@ -58,11 +59,12 @@ std::function<int()> add_report(CLI::App& app) {
   return [f]() {
     const io::CaseRun run = io::run_case(load(*f));
     if (f->format == "json") {
-      write_text_output(f->output, io::to_json(io::result_tree(run, CATENA_VERSION)));
+      write_text_output(f->output, io::to_json(io::result_tree(run, CATENA_VERSION)), f->path);
       return 0;
     }
     const std::string path = f->output.empty() ? "report.html" : f->output;
     Outputs outputs;
+    if (!f->path.empty()) outputs.keep("CASE", f->path);
     outputs.add("--output", path, io::to_html(io::build_report(run, CATENA_VERSION), plotly_js()));
     outputs.commit();
     std::cerr << "catena: wrote " << path << " (" << run.runs.size()

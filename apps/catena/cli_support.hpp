@@ -16,6 +16,8 @@ class Outputs {
  public:
   /// `flag` names the option the path came from, for the error message.
   void add(std::string flag, std::string path, std::string content);
+  /// An input of the command (the case file) that no output may replace; `flag` names it.
+  void keep(std::string flag, std::string path);
   /// Writes everything; `stdout_text` goes to stdout unless empty.
   void commit(const std::string& stdout_text = "");
 
@@ -23,10 +25,12 @@ class Outputs {
   struct File {
     std::string flag, path, content;
   };
-  std::vector<File> files_;
+  std::vector<File> files_, kept_;
 };
 
-/// A command's text output: to the --output FILE when one is given, else to stdout.
-void write_text_output(const std::string& output, const std::string& text);
+/// A command's text output: to the --output FILE when one is given, else to stdout. A
+/// `case_path` (the file the command read) is kept: an --output onto it is refused.
+void write_text_output(const std::string& output, const std::string& text,
+                       const std::string& case_path = "");
 
 }  // namespace catena::cli

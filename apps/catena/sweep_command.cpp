@@ -208,7 +208,7 @@ std::function<int()> add_sweep(CLI::App& app) {
     bar.finish();
     std::size_t failed = 0;
     for (const SweepPoint& p : result.points) failed += p.ok() ? 0 : 1;
-    write_text_output(f->output, sweep_csv(sweep_table(result)));
+    write_text_output(f->output, sweep_csv(sweep_table(result)), f->path);
     if (failed > 0) {
       std::cerr << "catena: " << failed << " of " << result.points.size()
                 << " points did not run (the error column says why)\n";

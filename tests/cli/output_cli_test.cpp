@@ -3,6 +3,7 @@
 // case paths that are no case file (issue 18).
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -58,6 +59,9 @@ TEST(OutputCli, ADeviceIsWrittenDirectly) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(r.out.empty());
   EXPECT_TRUE(fs::is_character_file("/dev/null"));
+  // a device holds no content to be wrong: two outputs may both be discarded there
+  const CliRun both = run(kWheel + "--output /dev/null --csv /dev/null");
+  EXPECT_EQ(both.status, 0) << both.err;
 }
 
 TEST(OutputCli, TwoOutputsToOneFileAreRefusedNamingBothFlags) {
@@ -137,6 +141,105 @@ TEST(OutputCli, CasePathsThatAreNoCaseFileAreRefused) {
     EXPECT_EQ(empty.status, 2) << command;
     EXPECT_NE(empty.err.find("empty path"), std::string::npos) << empty.err;
   }
+}
+
+const char* kCase =
+    "title = \"Wheel\"\n"
+    "[chain]\ntype = \"round-link\"\npitch = \"64 mm\"\nwire = \"18 mm\"\n"
+    "[sprocket]\nteeth = 8\n[analyses.pocketwheel]\nomega = \"5 1/s\"\n";
+
+TEST(OutputCli, AStdoutThatCannotTakeHelpOrVersionIsAnError) {
+  if (!has_full_device()) GTEST_SKIP() << "no /dev/full on this system";
+  for (const char* command : {"--help >/dev/full", "--version >/dev/full"}) {
+    const CliRun r = run(command);
+    EXPECT_EQ(r.status, 1) << command;
+    EXPECT_NE(r.err.find("cannot write 'stdout': No space left"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(run("--version").status, 0);  // a stdout that takes it: as before
+}
+
+TEST(OutputCli, ASymbolicLinkLoopIsRefusedAndTheLinksKept) {
+  const fs::path one = scratch("loop1.txt"), two = scratch("loop2.txt");
+  fs::remove(one);
+  fs::remove(two);
+  fs::create_symlink(two.filename(), one);
+  fs::create_symlink(one.filename(), two);
+  const CliRun r = run(kWheel + "--output " + one.string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("--output"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("loop"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_symlink(one));  // not replaced by a regular file
+  EXPECT_TRUE(fs::is_symlink(two));
+}
+
+TEST(OutputCli, TwoOutputsToHardLinksOfOneFileAreRefused) {
+  const fs::path first = scratch("hard1.txt"), second = scratch("hard2.txt");
+  fs::remove(first);
+  fs::remove(second);
+  std::ofstream(first) << "old";
+  fs::create_hard_link(first, second);
+  const CliRun r = run(kWheel + "--output " + first.string() + " --csv " + second.string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("--output"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--csv"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("are one file"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(first), "old");  // nothing written, the links not split apart
+  EXPECT_TRUE(fs::equivalent(first, second));
+}
+
+TEST(OutputCli, AnOutputOntoTheCaseFileIsRefused) {
+  const fs::path case_path = scratch("own.toml");
+  std::ofstream(case_path) << kCase;
+  const fs::path link = scratch("own-link.toml");
+  fs::remove(link);
+  fs::create_symlink(case_path.filename(), link);
+  const std::string other_spelling =
+      (case_path.parent_path() / "." / case_path.filename()).string();
+  for (const std::string& command :
+       {"run " + case_path.string() + " -o " + other_spelling,
+        "report " + case_path.string() + " -o " + case_path.string(),
+        "report --format json " + link.string() + " -o " + case_path.string()}) {
+    const CliRun r = run(command);
+    EXPECT_EQ(r.status, 2) << command << "\n" << r.err;
+    EXPECT_NE(r.err.find("--output"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("CASE"), std::string::npos) << r.err;
+    EXPECT_EQ(slurp(case_path), kCase) << command;  // the case is still the case
+  }
+  const fs::path result = scratch("own.json");
+  const CliRun elsewhere = run("run " + case_path.string() + " -o " + result.string());
+  EXPECT_EQ(elsewhere.status, 0) << elsewhere.err;
+  EXPECT_EQ(slurp(result).rfind("{", 0), 0u);
+}
+
+TEST(OutputCli, ACaseFileOverTheCapNamesItsSizeAndTheCap) {
+  constexpr std::uintmax_t kCap = std::uintmax_t{16} << 20;  // [bytes] io::kMaxCaseFileBytes
+  const fs::path big = scratch("big.toml");
+  fs::remove(big);
+  std::ofstream(big) << kCase;
+  fs::resize_file(big, kCap + 1);  // sparse: no disk used
+  const CliRun over = run("run " + big.string());
+  EXPECT_EQ(over.status, 2) << over.err;
+  EXPECT_NE(over.err.find(big.string()), std::string::npos) << over.err;
+  EXPECT_NE(over.err.find("at most 16 MiB (16777216 bytes)"), std::string::npos) << over.err;
+  EXPECT_NE(over.err.find("has 16777217 bytes"), std::string::npos) << over.err;
+
+  // exactly the cap: read and run (the padding is one TOML comment)
+  const fs::path at_cap = scratch("at_cap.toml");
+  {
+    std::ofstream out(at_cap, std::ios::binary);
+    const std::string head = std::string(kCase) + "#";
+    out << head << std::string(static_cast<std::size_t>(kCap) - head.size(), 'x');
+  }
+  ASSERT_EQ(fs::file_size(at_cap), kCap);
+  const CliRun fits = run("run " + at_cap.string());
+  EXPECT_EQ(fits.status, 0) << fits.err.substr(0, 400);
+  fs::remove(at_cap);
+  fs::remove(big);
+
+  const CliRun endless = run("run /dev/zero");
+  EXPECT_EQ(endless.status, 2) << endless.err;
+  EXPECT_NE(endless.err.find("/dev/zero"), std::string::npos) << endless.err;
+  EXPECT_NE(endless.err.find("reading stopped at the cap"), std::string::npos) << endless.err;
 }
 
 }  // namespace

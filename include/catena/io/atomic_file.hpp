@@ -28,12 +28,17 @@ class WriteError : public std::runtime_error {
 /// be recognised whatever their spelling.
 std::string output_target(const std::string& path);
 
+/// Whether writing `a` and writing `b` change the same file: the same target after links are
+/// followed, or two names (hard links) of one existing file.
+bool same_file(const std::string& a, const std::string& b);
+
 /// One output file, written whole or not at all. A regular file (or a new one) is written to a
 /// temporary beside its target and renamed into place by commit(); a symbolic link is followed,
 /// so its target is replaced and the link stays a link; a path that is not a regular file (a
 /// character device such as /dev/null or /dev/full, a FIFO) is written directly, since nothing
-/// can be renamed onto it. Throws WriteError on every failure; an uncommitted temporary is
-/// removed on destruction.
+/// can be renamed onto it; a link that ends in no file (a loop) is refused. The temporary is
+/// synced to the disk before the rename. Throws WriteError on every failure; an uncommitted
+/// temporary is removed on destruction.
 class StagedFile {
  public:
   /// Opens the temporary (or the device). Throws WriteError with opening() = true.

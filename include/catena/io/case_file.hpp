@@ -48,7 +48,8 @@ CaseFile parse_case(std::string_view text, std::string name);
 inline constexpr std::size_t kMaxCaseFileBytes = std::size_t{16} << 20;
 
 /// Reads and parses the case file at `path`. Throws InputError (field "CASE") for an empty path,
-/// a folder, a file that cannot be read, or one larger than kMaxCaseFileBytes (read no further
+/// a folder, a file that cannot be read, or one larger than kMaxCaseFileBytes, naming its size
+/// and the cap (a regular file's size is asked before reading; anything else is read no further
 /// than the cap, so endless inputs such as /dev/zero end too).
 CaseFile read_case(const std::string& path);
 

@@ -40,6 +40,10 @@ std::string output_target(const std::string& path) {
 StagedFile::StagedFile(const std::string& path) : path_(path), target_(output_target(path)) {
   if (path.empty()) throw WriteError(path, "the path is empty", true);
   struct stat st {};
+  // A link that output_target could not resolve (a loop, or more than 40 links deep): writing
+  // the temporary beside it and renaming would replace the link with a regular file.
+  if (::lstat(target_.c_str(), &st) == 0 && S_ISLNK(st.st_mode))
+    throw WriteError(path, "its symbolic links do not end in a file (a loop?)", true);
   const bool exists = ::stat(target_.c_str(), &st) == 0;
   if (exists && S_ISDIR(st.st_mode)) throw WriteError(path, "it is a folder", true);
   if (exists && !S_ISREG(st.st_mode)) {
@@ -88,6 +92,14 @@ void StagedFile::write(std::string_view content) {
     data += n;
     left -= static_cast<std::size_t>(n);
   }
+  // The data on the disk before the rename makes it visible: without this, a crash (or a
+  // file system that reports a full disk only when it writes back, such as NFS) could leave
+  // an empty or short file where the old one was. A device is not synced (it cannot be).
+  if (!temporary_.empty() && ::fsync(fd_) != 0) {
+    const std::string reason = std::strerror(errno);
+    discard();
+    throw WriteError(path_, reason, false);
+  }
   const int fd = std::exchange(fd_, -1);
   if (::close(fd) != 0) {
     const std::string reason = std::strerror(errno);
@@ -124,6 +136,12 @@ void write_file_atomic(const std::string& path, std::string_view content) {
   StagedFile file(path);
   file.write(content);
   file.commit();
+}
+
+bool same_file(const std::string& a, const std::string& b) {
+  if (output_target(a) == output_target(b)) return true;
+  std::error_code error;  // a file that does not exist yet is no other one
+  return fs::equivalent(a, b, error) && !error;
 }
 
 void write_stdout(std::string_view text) {

@@ -132,19 +132,34 @@ std::optional<std::string> did_you_mean(std::string_view word,
 CaseFile read_case(const std::string& path) {
   const char* kExpected = "a readable TOML case file";
   if (path.empty()) throw InputError({{"CASE", "''", "a path (an empty path names no file)"}});
+  const std::string cap = std::to_string(kMaxCaseFileBytes >> 20) + " MiB (" +
+                          std::to_string(kMaxCaseFileBytes) + " bytes)";
+  auto too_large = [&](const std::string& size) {
+    return InputError({{"CASE", path,
+                        "a case file of at most " + cap + "; this one has " + size +
+                            " (a case is a few kilobytes)"}});
+  };
   std::error_code error;
-  if (std::filesystem::is_directory(path, error))
+  const auto status = std::filesystem::status(path, error);
+  if (std::filesystem::is_directory(status))
     throw InputError({{"CASE", path, "a TOML case file, not a folder"}});
+  if (std::filesystem::is_regular_file(status)) {
+    const auto size = std::filesystem::file_size(path, error);
+    if (!error && size > kMaxCaseFileBytes) throw too_large(std::to_string(size) + " bytes");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({{"CASE", path, kExpected}});
-  std::string text(kMaxCaseFileBytes + 1, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  // Read in pieces, no further than one byte past the cap: a device or a pipe has no size to
+  // ask for beforehand, and /dev/zero has no end.
+  std::string text;
+  std::vector<char> piece(std::size_t{1} << 16);
+  while (text.size() <= kMaxCaseFileBytes && in) {
+    const std::size_t want = std::min(piece.size(), kMaxCaseFileBytes + 1 - text.size());
+    in.read(piece.data(), static_cast<std::streamsize>(want));
+    text.append(piece.data(), static_cast<std::size_t>(in.gcount()));
+  }
   if (in.bad()) throw InputError({{"CASE", path, kExpected}});
-  text.resize(static_cast<std::size_t>(in.gcount()));
-  if (text.size() > kMaxCaseFileBytes)
-    throw InputError({{"CASE", path,
-                       "a case file of at most " + std::to_string(kMaxCaseFileBytes >> 20) +
-                           " MiB (this one is larger; a case is a few kilobytes)"}});
+  if (text.size() > kMaxCaseFileBytes) throw too_large("more (reading stopped at the cap)");
   return parse_case(text, path);
 }
 
