@@ -17,6 +17,8 @@ struct ChainDimensions {
   std::optional<double> pin_diameter;      ///< [m] d2 max
   std::optional<double> plate_depth;       ///< [m] h2 max
   std::optional<double> tensile_strength;  ///< [N] simplex, minimum
+  std::optional<double> transverse_pitch;  ///< [m] pt (multi-strand chains)
+  std::optional<double> mass_per_metre;    ///< [kg/m] q, simplex
   std::string source;                      ///< source ids (README)
 };
 

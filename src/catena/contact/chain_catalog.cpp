@@ -24,7 +24,7 @@ std::vector<ChainDimensions> load() {
     std::vector<std::string> f;
     std::stringstream row(line);
     for (std::string c; std::getline(row, c, ',');) f.push_back(c);
-    f.resize(8);
+    f.resize(10);
     ChainDimensions c;
     c.name = f[0];
     c.pitch = std::stod(f[1]) * 1e-3;
@@ -33,7 +33,9 @@ std::vector<ChainDimensions> load() {
     c.pin_diameter = cell(f[4], 1e-3);
     c.plate_depth = cell(f[5], 1e-3);
     c.tensile_strength = cell(f[6], 1e3);
-    c.source = f[7];
+    c.transverse_pitch = cell(f[7], 1e-3);
+    c.mass_per_metre = cell(f[8], 1.0);
+    c.source = f[9];
     out.push_back(c);
   }
   return out;
