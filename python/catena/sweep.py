@@ -33,9 +33,21 @@ def sweep_points(grid: Mapping[str, Sequence[Any]] | None = None,
             for combo in itertools.product(*(list(grid[k]) for k in keys))]
 
 
-def _frame(columns: Sequence[str], rows: Sequence[Sequence[Any]]):
+def _frame(points: Sequence[Mapping[str, Any]], columns: Sequence[str], units: Sequence[str],
+           rows: Sequence[Sequence[Any]]):
+    """The chunk's frame: the points' inputs as given (every key any point has, in order of first
+    appearance), then the C++ table's columns. A result named like an input gets the prefix
+    ``result.``; ``frame.attrs["units"]`` maps each result column to its SI unit."""
     import pandas as pd
-    return pd.DataFrame(list(rows), columns=list(columns))
+    keys: list[str] = []
+    for point in points:
+        keys += [k for k in point if k not in keys]
+    names = [f"result.{c}" if c in keys else c for c in columns]
+    frame = pd.DataFrame(list(rows), columns=names)
+    for i, key in enumerate(keys):
+        frame.insert(i, key, pd.Series([p.get(key) for p in points], dtype=object))
+    frame.attrs["units"] = {n: u for n, u in zip(names, units) if u}
+    return frame
 
 
 def sweep_chunk(name: str, points: Sequence[Mapping[str, Any]], threads: int = 0):
@@ -46,23 +58,32 @@ def sweep_chunk(name: str, points: Sequence[Mapping[str, Any]], threads: int = 0
     analysis = _analysis(name)
     sets = []
     issues = []
+    known: dict = {}  # (key, type, value) → _texts of that one value: grids repeat their values
     for i, point in enumerate(points):
-        texts, refused = _texts(analysis, point)
-        for issue in refused:
-            issue = dict(issue)
-            issue["field"] = f"point {i}: {issue['field']}"
-            issues.append(issue)
+        texts = []
+        for key, value in point.items():
+            try:
+                memo = (key, type(value), value)
+                converted = known.get(memo)
+            except TypeError:  # unhashable (a list): converted every time
+                memo, converted = None, None
+            if converted is None:
+                converted = _texts(analysis, {key: value})
+                if memo is not None:
+                    known[memo] = converted
+            texts += converted[0]
+            for issue in converted[1]:
+                issue = dict(issue)
+                issue["field"] = f"point {i}: {issue['field']}"
+                issues.append(issue)
         sets.append(texts)
     if issues:
         raise InputError(issues)
-    if not hasattr(_core, "sweep"):
-        raise NotImplementedError("catena.sweep runs the library's C++ sweep, which this build "
-                                  "does not have yet (issue 17)")
     try:
-        columns, rows = _core.sweep(name, sets, int(threads))
+        columns, units, rows = _core.sweep(name, sets, int(threads))
     except _core._InputError as error:
         raise InputError(_issues_from(error.issues), str(error)) from None
-    return _frame(columns, rows)
+    return _frame(points, columns, units, rows)
 
 
 def sweep(name: str, grid: Mapping[str, Sequence[Any]] | None = None,

@@ -21,6 +21,7 @@
 #include "catena/io/record.hpp"
 #include "catena/io/report.hpp"
 #include "catena/io/sha256.hpp"
+#include "catena/sweep.hpp"
 
 namespace catena::cli {
 std::string_view plotly_js();  // embedded web/node_modules/plotly.js-dist-min/plotly.min.js
@@ -281,6 +282,42 @@ PYBIND11_MODULE(_core, m) {
       r->record = catena::run(name, inputs);
     }
     return r;
+  });
+
+  // A chunk of a sweep: explicit input sets (the package merges grid and base), run on the
+  // library's thread pool with the GIL released. Returns (columns, units, rows): the scalar
+  // results, then the worst diagnostic's severity and code, then the input error ("" when the
+  // point ran); NaN where a point lacks a result. The inputs' columns are the package's.
+  m.def("sweep", [](const std::string& name, const std::vector<Texts>& sets, unsigned threads) {
+    catena::SweepRequest request;
+    request.analysis = name;
+    request.points = sets;
+    catena::SweepOptions options;
+    options.threads = threads;
+    options.keep_records = false;
+    catena::SweepTable table;
+    {
+      py::gil_scoped_release release;
+      table = catena::sweep_table(catena::sweep(request, options));
+    }
+    py::list columns;
+    py::list units;
+    for (const auto& r : table.results) {
+      columns.append(r.name);
+      units.append(r.unit);
+    }
+    for (const auto* t : {&table.severity, &table.code, &table.error}) {
+      columns.append(t->name);
+      units.append("");
+    }
+    py::list rows;
+    for (std::size_t i = 0; i < table.rows(); ++i) {
+      py::list row;
+      for (const auto& r : table.results) row.append(r.values[i]);
+      for (const auto* t : {&table.severity, &table.code, &table.error}) row.append(t->values[i]);
+      rows.append(py::tuple(row));
+    }
+    return py::make_tuple(columns, units, rows);
   });
 
   py::class_<Case, std::shared_ptr<Case>>(m, "Case")
