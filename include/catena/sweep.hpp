@@ -39,7 +39,7 @@ struct SweepRequest {
 };
 
 struct SweepOptions {
-  unsigned threads = 0;  ///< worker threads; 0: every hardware thread
+  unsigned threads = 0;  ///< worker threads; 0: every hardware thread; at most 1024
   /// Called on the calling thread while the sweep runs (at most about every 50 ms, and once at
   /// the end with done == total), never from a worker.
   std::function<void(std::size_t done, std::size_t total)> progress;
@@ -93,7 +93,8 @@ struct SweepResult {
 std::vector<InputSet> sweep_points(const SweepRequest& request);
 
 /// Runs every point (sweep_points, then `catena::run` with `base` overlaid by the point) on
-/// `options.threads` threads. Throws InputError for the problems of sweep_points; a point's own
+/// `options.threads` threads. Throws InputError for the problems of sweep_points and a thread
+/// count over 1024, all at once; a point's own
 /// InputError is its `error`. Any other exception of a point (an internal error) is rethrown,
 /// the first point's first, after every thread has stopped.
 SweepResult sweep(const SweepRequest& request, const SweepOptions& options = {});

@@ -21,8 +21,14 @@ namespace {
 
 using analysis::Value;
 
-// A sweep this large would not fit in memory anyway; refusing it names the problem.
-constexpr std::size_t kMaxPoints = 10'000'000;
+// The size of one sweep: every point is held until the end (~2.4 kB of scalars each, ~2.7 kB
+// with its CSV row: 10⁵ hinge points took 267 MB resident through `catena sweep`), so 10⁶
+// points are ~2.7 GB; more would not fit a 24 GB machine for the larger analyses. Split a
+// bigger study into several sweeps (or Dask chunks). docs/reliability.md lists the caps.
+constexpr std::size_t kMaxPoints = 1'000'000;
+// Threads of one sweep: far more than any machine's cores, few enough that creating them cannot
+// fail for want of resources.
+constexpr unsigned kMaxThreads = 1024;
 
 std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
 
@@ -196,14 +202,21 @@ std::vector<InputSet> sweep_points(const SweepRequest& request) {
     }
     if (axis.values.empty()) issues.push_back({axis.key, "(grid)", "at least one value"});
     if (!axis.values.empty()) {
-      if (total > kMaxPoints / axis.values.size()) too_many = true;
-      total *= axis.values.size();
+      // the product, or "more than the cap" once it could overflow
+      if (too_many || total > std::numeric_limits<std::size_t>::max() / axis.values.size())
+        too_many = true;
+      else
+        total *= axis.values.size();
     }
   }
   if (request.grid.empty()) total = request.points.size();
   if (too_many || total > kMaxPoints)
-    issues.push_back({"grid", "more than " + std::to_string(kMaxPoints) + " points",
-                      "at most " + std::to_string(kMaxPoints) + " points in one sweep"});
+    issues.push_back({"grid",
+                      too_many ? "more than " + std::to_string(kMaxPoints) + " points"
+                               : std::to_string(total) + " points",
+                      "at most " + std::to_string(kMaxPoints) +
+                          " points in one sweep (~2.7 kB of memory each: 10^6 points ~2.7 GB); "
+                          "split the study into several sweeps"});
   std::vector<std::string> unknown;  // each unknown key of the points once
   for (const InputSet& point : request.points) {
     for (const auto& [key, text] : point) {
@@ -257,7 +270,17 @@ std::vector<InputSet> sweep_points(const SweepRequest& request) {
 }
 
 SweepResult sweep(const SweepRequest& request, const SweepOptions& options) {
-  std::vector<InputSet> points = sweep_points(request);
+  std::vector<Issue> issues;
+  if (options.threads > kMaxThreads)
+    issues.push_back({"threads", std::to_string(options.threads),
+                      "0 (every hardware thread) to " + std::to_string(kMaxThreads)});
+  std::vector<InputSet> points;
+  try {
+    points = sweep_points(request);
+  } catch (const InputError& e) {
+    issues.insert(issues.begin(), e.issues().begin(), e.issues().end());
+  }
+  if (!issues.empty()) throw InputError(std::move(issues));
   SweepResult result;
   result.analysis = request.analysis;
   if (!request.grid.empty()) {

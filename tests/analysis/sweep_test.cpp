@@ -260,5 +260,27 @@ TEST(Sweep, AxesParseRangesStepsAndListsWithUnits) {
   }
 }
 
+TEST(Sweep, PointsAndThreadsAreBoundedAndNamedTogether) {
+  // 1001 × 1000 points: one more row than the cap of 10⁶, refused before any point is made
+  SweepRequest request = hinge_grid();
+  std::vector<std::string> many(1000, "8");
+  request.grid = {{"teeth", std::vector<std::string>(1001, "8")}, {"strokes", many}};
+  try {
+    sweep(request, {.threads = 5000, .progress = {}, .keep_records = false});
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.issues().size(), 2u) << e.what();
+    EXPECT_EQ(e.issues()[0].field, "grid");
+    EXPECT_EQ(e.issues()[0].value, "1001000 points");
+    EXPECT_NE(e.issues()[0].expected.find("at most 1000000 points"), std::string::npos);
+    EXPECT_EQ(e.issues()[1].field, "threads");
+    EXPECT_EQ(e.issues()[1].expected, "0 (every hardware thread) to 1024");
+  }
+  // at the caps: the thread count alone is fine
+  request = hinge_grid();
+  EXPECT_EQ(sweep(request, {.threads = 1024, .progress = {}, .keep_records = false}).points.size(),
+            30u);
+}
+
 }  // namespace
 }  // namespace catena

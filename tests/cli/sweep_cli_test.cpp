@@ -157,4 +157,13 @@ TEST(SweepCli, EveryProblemAtOnceWithExitTwoAndNothingWritten) {
       << which.err;
 }
 
+TEST(SweepCli, TooManyThreadsIsRefusedNamingTheFlagsRange) {
+  const CliRun r = run("sweep " + kThesis + " --grid analyses.hinge.teeth=6:8 --threads 100000");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find("threads = 100000: expected 0 (every hardware thread) to 1024"),
+            std::string::npos)
+      << r.err;
+}
+
 }  // namespace
