@@ -190,6 +190,8 @@ std::function<int()> add_sweep(CLI::App& app) {
           const auto swept = flag_of.find(issue.field);
           if (swept != flag_of.end()) {
             issue.field = swept->second;
+          } else if (issue.field == "grid") {
+            issue.field = "--grid";  // the number of points
           } else if (path != inputs.path_of.end()) {
             continue;  // a shared value's problem: reported above, by its path
           }
@@ -197,6 +199,7 @@ std::function<int()> add_sweep(CLI::App& app) {
         }
       }
     }
+    check_threads(f->threads, "--threads", issues);
     throw_if_any(issues);
 
     ProgressBar bar;

@@ -20,6 +20,14 @@
 
 namespace catena {
 
+/// The size of one sweep: every point is held until the end (~2.4 kB of scalars each, ~2.7 kB
+/// with its CSV row: 10⁵ hinge points took 267 MB resident through `catena sweep`), so 10⁶
+/// points are ~2.7 GB. Split a bigger study into several sweeps (or Dask chunks).
+inline constexpr std::size_t kMaxSweepPoints = 1'000'000;
+/// Threads of one sweep: more than any machine's cores, few enough that creating them cannot
+/// fail for want of resources.
+inline constexpr unsigned kMaxSweepThreads = 1024;
+
 /// Inputs as `catena::run` takes them: key → text ("40 mm", "8", "true"), in order.
 using InputSet = std::vector<std::pair<std::string, std::string>>;
 
@@ -98,6 +106,10 @@ std::vector<InputSet> sweep_points(const SweepRequest& request);
 /// InputError is its `error`. Any other exception of a point (an internal error) is rethrown,
 /// the first point's first, after every thread has stopped.
 SweepResult sweep(const SweepRequest& request, const SweepOptions& options = {});
+
+/// Appends an Issue naming `field` when `threads` is over kMaxSweepThreads (front ends check their
+/// flag with it, so that it is listed with their other problems).
+void check_threads(unsigned threads, std::string_view field, std::vector<Issue>& issues);
 
 /// A sweep as columns, one row per point: the swept inputs (as typed), then every scalar result
 /// of any point (the order of first appearance, points in order; NaN where a point lacks it or

@@ -21,14 +21,7 @@ namespace {
 
 using analysis::Value;
 
-// The size of one sweep: every point is held until the end (~2.4 kB of scalars each, ~2.7 kB
-// with its CSV row: 10⁵ hinge points took 267 MB resident through `catena sweep`), so 10⁶
-// points are ~2.7 GB; more would not fit a 24 GB machine for the larger analyses. Split a
-// bigger study into several sweeps (or Dask chunks). docs/reliability.md lists the caps.
-constexpr std::size_t kMaxPoints = 1'000'000;
-// Threads of one sweep: far more than any machine's cores, few enough that creating them cannot
-// fail for want of resources.
-constexpr unsigned kMaxThreads = 1024;
+constexpr std::size_t kMaxPoints = kMaxSweepPoints;
 
 std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
 
@@ -269,11 +262,15 @@ std::vector<InputSet> sweep_points(const SweepRequest& request) {
   return out;
 }
 
+void check_threads(unsigned threads, std::string_view field, std::vector<Issue>& issues) {
+  if (threads > kMaxSweepThreads)
+    issues.push_back({std::string(field), std::to_string(threads),
+                      "0 (every hardware thread) to " + std::to_string(kMaxSweepThreads)});
+}
+
 SweepResult sweep(const SweepRequest& request, const SweepOptions& options) {
   std::vector<Issue> issues;
-  if (options.threads > kMaxThreads)
-    issues.push_back({"threads", std::to_string(options.threads),
-                      "0 (every hardware thread) to " + std::to_string(kMaxThreads)});
+  check_threads(options.threads, "threads", issues);
   std::vector<InputSet> points;
   try {
     points = sweep_points(request);

@@ -157,11 +157,18 @@ TEST(SweepCli, EveryProblemAtOnceWithExitTwoAndNothingWritten) {
       << which.err;
 }
 
-TEST(SweepCli, TooManyThreadsIsRefusedNamingTheFlagsRange) {
-  const CliRun r = run("sweep " + kThesis + " --grid analyses.hinge.teeth=6:8 --threads 100000");
+TEST(SweepCli, TooManyPointsAndThreadsAreRefusedTogetherNamingTheFlags) {
+  const CliRun r =
+      run("sweep " + kThesis +
+          " --grid analyses.hinge.teeth=1:1001 --grid analyses.hinge.plate_radius=1:1000"
+          " --threads 100000");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out, "");
-  EXPECT_NE(r.err.find("threads = 100000: expected 0 (every hardware thread) to 1024"),
+  EXPECT_NE(r.err.find("2 problems"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--grid = 1001000 points: expected at most 1000000 points"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("--threads = 100000: expected 0 (every hardware thread) to 1024"),
             std::string::npos)
       << r.err;
 }
