@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Runs the libFuzzer harnesses (tests/fuzz, docs/reliability.md) for a bounded time, built by the
+# "fuzz" preset. Two at a time on two cores: the analysis harness for SECONDS, and meanwhile the
+# case-file and quantity harnesses for SECONDS/2 each; so the wall time is about SECONDS.
+# Exits 1 on any finding (crash, leak, timeout, sanitizer report, broken invariant), printing the
+# end of the harness' log and the input saved under build/fuzz/findings/; such an input belongs
+# in tests/fuzz/regressions/<harness>/ once fixed. Prints executions per second and in total.
+# Usage: scripts/fuzz.sh [SECONDS] (default 170). Assumes `cmake --build --preset fuzz` has run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-170}
+half=$((seconds / 2))
+build=build/fuzz
+bin=$build/tests/fuzz
+mkdir -p "$build/findings" "$build/logs"
+
+run() {  # harness seconds
+  local harness=$1 time=$2 extra=()
+  mkdir -p "$build/corpus/$harness"  # what this machine's runs found, kept between runs
+  [ -d "tests/fuzz/regressions/$harness" ] && extra+=("tests/fuzz/regressions/$harness")
+  # -timeout: one input taking longer is a finding; -max_len: a case file of a few kB.
+  "$bin/fuzz_$harness" -max_total_time="$time" -timeout=25 -rss_limit_mb=2048 -max_len=4096 \
+    -print_final_stats=1 -artifact_prefix="$build/findings/$harness-" \
+    "$build/corpus/$harness" "tests/fuzz/corpus/$harness" "${extra[@]}" \
+    >"$build/logs/$harness.log" 2>&1
+}
+
+report() {  # harness status
+  local harness=$1 status=$2 log="$build/logs/$1.log"
+  local execs rate
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
+  rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log")
+  if [ "$status" -eq 0 ]; then
+    echo "fuzz: $harness: ${execs:-?} executions, ${rate:-?}/s, no finding" >&2
+  else
+    echo "fuzz: $harness: FINDING (exit $status); end of $log:" >&2
+    tail -n 60 "$log" >&2
+    ls -1 "$build/findings/$harness-"* 2>/dev/null >&2 || true
+  fi
+}
+
+run analysis "$seconds" &
+analysis_pid=$!
+status_case=0 status_quantity=0 status_analysis=0
+run case "$half" || status_case=$?
+run quantity "$half" || status_quantity=$?
+wait "$analysis_pid" || status_analysis=$?
+report case "$status_case"
+report quantity "$status_quantity"
+report analysis "$status_analysis"
+[ $((status_case + status_quantity + status_analysis)) -eq 0 ] || exit 1
