@@ -18,8 +18,9 @@ run() {  # harness seconds
   local harness=$1 time=$2 extra=()
   mkdir -p "$build/corpus/$harness"  # what this machine's runs found, kept between runs
   [ -d "tests/fuzz/regressions/$harness" ] && extra+=("tests/fuzz/regressions/$harness")
-  # -timeout: one input taking longer is a finding; -max_len: a case file of a few kB.
-  "$bin/fuzz_$harness" -max_total_time="$time" -timeout=25 -rss_limit_mb=2048 -max_len=4096 \
+  # -timeout: an input taking over a minute is a finding (the slowest seed takes ~15 s under
+  # ASan); -max_len: a case file of a few kB.
+  "$bin/fuzz_$harness" -max_total_time="$time" -timeout=60 -rss_limit_mb=2048 -max_len=4096 \
     -print_final_stats=1 -artifact_prefix="$build/findings/$harness-" \
     "$build/corpus/$harness" "tests/fuzz/corpus/$harness" "${extra[@]}" \
     >"$build/logs/$harness.log" 2>&1

@@ -89,6 +89,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     inputs.emplace_back(p->name, catena::fuzz::clamp_size(p->name, value));
   }
 
+  // The ring solver's own defaults grow without bound with the inputs (harmonics
+  // 2·ceil(100/(1 − r1/r2)), sweep nodes ∝ harmonics·r2/r1): without a value given, the harness
+  // gives the caps, so that a ring of r1 → r2 or r1 → 0 does not run for minutes.
+  if (analysis->name == "ring") {
+    bool harmonics = false, nodes = false, sweep = false;
+    for (const auto& [key, value] : inputs) {
+      harmonics = harmonics || key == "harmonics";
+      nodes = nodes || key == "nodes";
+      sweep = sweep || (key == "method" && value.find("sweep") != std::string::npos);
+    }
+    if (!harmonics)
+      inputs.emplace_back("harmonics", std::to_string(catena::fuzz::size_cap("harmonics")));
+    if (sweep && !nodes)
+      inputs.emplace_back("nodes", std::to_string(catena::fuzz::size_cap("nodes")));
+  }
+
   try {
     const catena::analysis::Record record = catena::run(analysis->name, inputs);
     catena::fuzz::check_record(record, analysis->name);

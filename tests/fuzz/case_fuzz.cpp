@@ -29,6 +29,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string_view key = std::string_view(value.path).substr(dot + 1);
     value.text = catena::fuzz::clamp_size(key, value.text);
   }
+  // The ring solver's defaults grow without bound with the inputs (analysis_fuzz.cpp): a ring
+  // table without harmonics (or nodes, for the sweep method) is given the caps.
+  for (const std::string& table : catena::io::analysis_tables(file)) {
+    if (table.substr(0, table.find('-')) != "ring") continue;
+    const std::string at = "analyses." + table + ".";
+    auto add = [&](const char* key) {
+      if (file.find(at + key) != nullptr) return;
+      file.values.push_back({at + key, std::to_string(catena::fuzz::size_cap(key)),
+                             catena::io::CaseValue::Type::kNumber, 0});
+    };
+    add("harmonics");
+    const catena::io::CaseValue* method = file.find(at + "method");
+    if (method != nullptr && method->text.find("sweep") != std::string::npos) add("nodes");
+  }
   try {
     const catena::io::CaseRun run = catena::io::run_case(file);
     for (const catena::io::AnalysisRun& r : run.runs)

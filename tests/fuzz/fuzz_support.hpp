@@ -116,11 +116,11 @@ inline bool known_defect(std::string_view analysis, const std::exception& e) {
 /// (issue 18's work model); a fuzzer that asks for 10⁹ points would spend its whole time budget
 /// on one run. Larger values are replaced by the cap, so the value's parsing is still exercised.
 inline long size_cap(std::string_view key) {
-  if (key == "points") return 1000;
-  if (key == "count") return 100;
-  if (key == "nodes") return 2000;
-  if (key == "harmonics") return 50;
-  if (key == "slices") return 500;
+  if (key == "points") return 200;
+  if (key == "count") return 50;
+  if (key == "nodes") return 400;
+  if (key == "harmonics") return 40;  // the least the ring solver's own default takes
+  if (key == "slices") return 100;
   return 0;  // not a size parameter
 }
 
