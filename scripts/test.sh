@@ -31,4 +31,4 @@ ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan
 echo "== fuzz: libFuzzer harnesses under ASan + UBSan for a bounded time (tests/fuzz)" >&2
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$jobs"
-bash scripts/fuzz.sh 170  # runs the seed corpus and the saved findings first
+bash scripts/fuzz.sh 150  # runs the seed corpus and the saved findings first
