@@ -103,6 +103,13 @@ commands = {
     "--plate-width 80 --end-distance 40 --tension 29.4kN --roller-yield 600 --plate-yield 355 "
     "--allowable-pressure 60",
 }
+chain_type = {
+    "pocketwheel": "round-link", "hinge": "rolling-hinge", "hinge_sweep": "rolling-hinge",
+    "contact": "roller-iso606", "fretting": "roller-iso606", "warp": "sliding-hinge",
+    "engagement.sliding": "sliding-hinge", "engagement": "rolling-hinge",
+    "ring": "composite-link", "ring_capacity": "composite-link", "ring_design": "composite-link",
+    "strength": "sliding-hinge",
+}
 for name, command in commands.items():
     words = command.split()
     lines = [words[0]]
@@ -113,6 +120,14 @@ for name, command in commands.items():
         has_value = i + 1 < len(words) and not words[i + 1].startswith("--")
         lines.append(f"{key}={words[i + 1]}" if has_value else key)
     write("analysis", name, "\n".join(lines) + "\n")
+    # the same as a small case file: one analysis table, so that the case harness has cheap
+    # starting points besides the examples (each of which runs several analyses)
+    chain = chain_type.get(name, chain_type.get(words[0]))
+    toml = [f'[chain]\ntype = "{chain}"', f"[analyses.{words[0]}]"]
+    for line in lines[1:]:
+        key, _, value = line.partition("=")
+        toml.append(f'{key} = "{value}"' if value else f"{key} = true")
+    write("case", f"small.{name}.toml", "\n".join(toml) + "\n")
 
 # The quantity parser: first byte the kind (order of quantity_fuzz.cpp), then the text.
 kinds = ["length", "angle", "angular_speed", "force", "stress", "mass", "time", "frequency",
