@@ -6,6 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git clang-format
+  clang libclang-rt-14-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libudunits2-dev udunits-bin
   libcli11-dev nlohmann-json3-dev libfmt-dev libboost-dev

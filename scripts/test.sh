@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds Catena with warnings as errors, runs every test, proves that an installed Catena can be
-# used by another CMake project, then builds and runs the tests again under ASan + UBSan.
+# used by another CMake project, then builds and runs the tests again under ASan + UBSan, and
+# fuzzes the input paths for about three minutes (scripts/fuzz.sh).
 # Assumes scripts/setup.sh has run. Run from anywhere; works in the repository root.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,3 +27,8 @@ echo "== build and test under AddressSanitizer + UndefinedBehaviorSanitizer" >&2
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs" --label-exclude 'browser|python'
+
+echo "== fuzz: libFuzzer harnesses under ASan + UBSan for a bounded time (tests/fuzz)" >&2
+cmake --preset fuzz >/dev/null
+cmake --build --preset fuzz -j "$jobs"
+bash scripts/fuzz.sh 150  # runs the seed corpus and the saved findings first

@@ -38,9 +38,8 @@ std::function<int()> add_run(CLI::App& app) {
       c->add_option("CASE", f->path, "TOML case file (docs/case_files.md)")->required();
   c->add_option("-o,--output", f->output, "write the JSON to FILE instead of stdout");
   return [f]() {
-    write_text_output(f->output,
-                      io::to_json(io::result_tree(io::run_case(load(*f)), CATENA_VERSION)),
-                      f->path);
+    write_text_output(
+        f->output, io::to_json(io::result_tree(io::run_case(load(*f)), CATENA_VERSION)), f->path);
     return 0;
   };
 }

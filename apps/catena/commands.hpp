@@ -30,5 +30,4 @@ std::function<int()> add_report(CLI::App& app);
 /// Registers `catena sweep CASE --grid KEY=VALUES ...` (CSV, one row per point).
 std::function<int()> add_sweep(CLI::App& app);
 
-
 }  // namespace catena::cli

@@ -145,6 +145,21 @@ TEST(Quantity, ARememberedOutcomeIsTheParsersOwnForThatTextAndKind) {
   }
 }
 
+// Found by fuzzing (tests/fuzz/regressions/quantity/): a degrees-minutes-seconds part too long
+// for a double escaped as std::out_of_range from std::stod, an internal error.
+TEST(Quantity, AnOverlongDegreesMinutesSecondsPartIsReadNotThrown) {
+  const std::string huge = "1" + std::string(400, '0') + "°30'";    // 1e400 degrees
+  const std::string tiny = "0." + std::string(400, '0') + "1°30'";  // 1e-401 degrees and 30'
+  const std::string huge_minutes = "1°" + std::string(400, '9') + "'";
+  std::vector<Issue> issues;
+  EXPECT_FALSE(parse_quantity(huge, QuantityKind::kAngle, "--skew", issues).has_value());
+  EXPECT_FALSE(parse_quantity(huge_minutes, QuantityKind::kAngle, "--skew", issues).has_value());
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_NE(issues[0].expected.find("not finite"), std::string::npos) << issues[0].expected;
+  EXPECT_NE(issues[1].expected.find("not finite"), std::string::npos) << issues[1].expected;
+  EXPECT_NEAR(parse(tiny.c_str(), QuantityKind::kAngle), 0.5 * kDeg, kRelTol * 0.5 * kDeg);
+}
+
 TEST(Quantity, ThrowingOverloadCarriesTheIssue) {
   try {
     parse_quantity("5kg", QuantityKind::kLength, "--pitch");

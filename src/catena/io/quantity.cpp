@@ -74,9 +74,12 @@ std::optional<double> dms_degrees(const std::string& text) {
   std::smatch match;
   if (!std::regex_match(text, match, pattern)) return std::nullopt;
   if (!match[3].matched && !match[4].matched) return std::nullopt;  // plain "20°": UDUNITS does it
-  double degrees = std::stod(match[2].str());
-  if (match[3].matched) degrees += std::stod(match[3].str()) / 60.0;
-  if (match[4].matched) degrees += std::stod(match[4].str()) / 3600.0;
+  // strtod, not std::stod: a part of 400 digits overflows to inf (refused by the caller as not
+  // finite) or underflows to 0, where std::stod would throw out_of_range (found by fuzzing).
+  auto part = [&match](int i) { return std::strtod(match[i].str().c_str(), nullptr); };
+  double degrees = part(2);
+  if (match[3].matched) degrees += part(3) / 60.0;
+  if (match[4].matched) degrees += part(4) / 3600.0;
   return match[1].str() == "-" ? -degrees : degrees;
 }
 
