@@ -5,6 +5,7 @@
 #include "catena/catena.hpp"
 #include "catena/composite/analysis.hpp"
 #include "catena/contact/analysis.hpp"
+#include "catena/contact/catalog_analysis.hpp"
 #include "catena/drive/analysis.hpp"
 #include "catena/engagement/analysis.hpp"
 #include "catena/hinge/analysis.hpp"
@@ -32,6 +33,7 @@ const std::vector<const analysis::Analysis*>& analyses() {
       &strength::loop_analysis(),
       &strength::strength_analysis(),
       &drive::sprocket_analysis(),
+      &contact::catalog_analysis(),
   };
   return all;
 }
