@@ -20,7 +20,6 @@ struct Vec {
   double x = 0.0, y = 0.0;
 };
 Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y}; }
-Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y}; }
 Vec operator*(double k, Vec a) { return {k * a.x, k * a.y}; }
 double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y; }
 double norm(Vec a) { return std::hypot(a.x, a.y); }
