@@ -44,7 +44,9 @@ TEST(ChainCatalog, TransversePitchAndMassWhereSourced) {
     EXPECT_LT(*c->roller_diameter, c->pitch) << name;
     EXPECT_GT(*c->inner_width, 0) << name;
     EXPECT_FALSE(c->source.empty()) << name;
-    if (c->transverse_pitch) EXPECT_GT(*c->transverse_pitch, *c->inner_width) << name;
+    if (c->transverse_pitch) {
+      EXPECT_GT(*c->transverse_pitch, *c->inner_width) << name;
+    }
   }
 }
 

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 #include <sstream>
 
 namespace catena::contact {
@@ -76,11 +75,19 @@ Record describe_catalog(const CatalogAnalysis& a, const Inputs&) {
   std::ostringstream table;
   table << "Catena catalog: ISO 606 roller chains, simplex (sources: "
            "data/catalog/iso606/README.md; — = no source found)\n\n";
-  char line[320];
-  std::snprintf(line, sizeof line, "  %-6s %8s %8s %8s %8s %8s %10s %8s %8s  %s\n", "chain",
-                "p [mm]", "d1 [mm]", "b1 [mm]", "d2 [mm]", "h2 [mm]", "Fu [kN]", "pt [mm]",
-                "q [kg/m]", "source");
-  table << line;
+  // right-aligned in `width` characters (not bytes: "—" is three)
+  auto cellw = [](const std::string& text, std::size_t width) {
+    std::size_t n = 0;
+    for (char c : text) n += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+    return std::string(n < width ? width - n : 0, ' ') + text;
+  };
+  auto row = [&](const std::vector<std::string>& cells) {
+    table << "  " << cells[0] << std::string(cells[0].size() < 6 ? 6 - cells[0].size() : 0, ' ');
+    for (std::size_t i = 1; i + 1 < cells.size(); ++i) table << ' ' << cellw(cells[i], 9);
+    table << "  " << cells.back() << '\n';
+  };
+  row({"chain", "p [mm]", "d1 [mm]", "b1 [mm]", "d2 [mm]", "h2 [mm]", "Fu [kN]", "pt [mm]",
+       "q [kg/m]", "source"});
   std::ostringstream csv;
   csv << "chain,pitch,roller_diameter,inner_width,pin_diameter,plate_depth,tensile_strength,"
          "transverse_pitch,mass_per_metre,source\n";
@@ -88,13 +95,9 @@ Record describe_catalog(const CatalogAnalysis& a, const Inputs&) {
     return v ? format_g(*v, 12) : std::string();
   };
   for (const ChainDimensions& c : a.chains) {
-    std::snprintf(line, sizeof line, "  %-6s %8s %8s %8s %8s %8s %10s %8s %8s  %s\n",
-                  c.name.c_str(), format_g(c.pitch * 1e3).c_str(),
-                  cell(c.roller_diameter, 1e3).c_str(), cell(c.inner_width, 1e3).c_str(),
-                  cell(c.pin_diameter, 1e3).c_str(), cell(c.plate_depth, 1e3).c_str(),
-                  cell(c.tensile_strength, 1e-3).c_str(), cell(c.transverse_pitch, 1e3).c_str(),
-                  cell(c.mass_per_metre, 1.0).c_str(), c.source.c_str());
-    table << line;
+    row({c.name, format_g(c.pitch * 1e3), cell(c.roller_diameter, 1e3), cell(c.inner_width, 1e3),
+         cell(c.pin_diameter, 1e3), cell(c.plate_depth, 1e3), cell(c.tensile_strength, 1e-3),
+         cell(c.transverse_pitch, 1e3), cell(c.mass_per_metre, 1.0), c.source});
     csv << c.name << ',' << format_g(c.pitch, 12) << ',' << csv_cell(c.roller_diameter) << ','
         << csv_cell(c.inner_width) << ',' << csv_cell(c.pin_diameter) << ','
         << csv_cell(c.plate_depth) << ',' << csv_cell(c.tensile_strength) << ','

@@ -2,7 +2,6 @@
 #include "catena/drive/analysis.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <sstream>
 
@@ -117,10 +116,11 @@ Value sprocket_value(const SprocketAnalysis& a) {
 std::string sprocket_table(const SprocketAnalysis& a) {
   const Sprocket& s = a.sprocket;
   std::ostringstream out;
-  char line[256];
-  auto row = [&](const char* label, const std::string& v) {
-    std::snprintf(line, sizeof line, "  %-44s %s\n", label, v.c_str());
-    out << line;
+  auto row = [&](const std::string& label, const std::string& v) {
+    // padded by characters, not bytes ("…" is three bytes)
+    std::size_t width = 0;
+    for (char c : label) width += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+    out << "  " << label << std::string(width < 48 ? 48 - width : 1, ' ') << v << "\n";
   };
   auto range = [&](double lo, double hi, std::string (*f)(double)) {
     return f(lo) + " … " + f(hi);
