@@ -111,4 +111,21 @@ TEST(SprocketCli, ExampleCaseEqualsTheCommandLine) {
   EXPECT_EQ(nlohmann::json::parse(c.out)["analyses"]["sprocket"], nlohmann::json::parse(d.out));
 }
 
+// The report: the sprocket's section with its drawing, and the {min, max} members of a length
+// or an angle in display units (they have no unit of their own: their parent's is used).
+TEST(SprocketCli, ReportShowsMinMaxInDisplayUnitsAndTheDrawing) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("catena_sprocket_report_" + std::to_string(::getpid()) + ".html");
+  const CliRun r =
+      run(std::string("report ") + CATENA_EXAMPLES_DIR + "/sprocket_12B.toml -o " + path.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string html = slurp(path);
+  std::filesystem::remove(path);
+  EXPECT_NE(html.find("<td>seat_diameter.min</td><td class=\"value\">91.1665</td><td>mm</td>"),
+            std::string::npos);
+  EXPECT_NE(html.find("<td>seating_angle.max</td><td class=\"value\">134.706</td><td>°</td>"),
+            std::string::npos);
+  EXPECT_NE(html.find("<svg"), std::string::npos);
+}
+
 }  // namespace
