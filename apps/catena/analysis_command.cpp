@@ -75,6 +75,7 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
   CLI::App* cmd = analysis_app(root, a);
   for (const Parameter& p : a.parameters) {
     std::string names = flag_of(p.name);
+    if (p.positional) names = p.name + "," + names;  // also without the flag
     for (const std::string& alias : p.aliases) {
       names += ',';
       names += flag_of(alias);

@@ -5,6 +5,8 @@
 #include "catena/catena.hpp"
 #include "catena/composite/analysis.hpp"
 #include "catena/contact/analysis.hpp"
+#include "catena/contact/catalog_analysis.hpp"
+#include "catena/drive/analysis.hpp"
 #include "catena/engagement/analysis.hpp"
 #include "catena/hinge/analysis.hpp"
 #include "catena/io/bind.hpp"
@@ -30,6 +32,8 @@ const std::vector<const analysis::Analysis*>& analyses() {
       &composite::ring_design_analysis(),
       &strength::loop_analysis(),
       &strength::strength_analysis(),
+      &drive::sprocket_analysis(),
+      &contact::catalog_analysis(),
   };
   return all;
 }

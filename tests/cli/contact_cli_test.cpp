@@ -83,6 +83,28 @@ TEST(ContactCli, NoSilentExtrapolationOfGamma) {
   EXPECT_NE(r.err.find("--chain"), std::string::npos) << r.err;
 }
 
+// Every catalogued chain: its pitch in the paper's γ table runs; any other is refused with the
+// chain, its pitch and why (the paper's measured pitches), and runs with --gamma.
+TEST(ContactCli, EveryCataloguedChainRunsOrSaysWhyNot) {
+  for (const char* chain : {"05B", "06B", "08A", "08B", "10A", "10B", "12A", "12B", "16A", "16B",
+                            "20A", "20B", "24A", "24B", "28A", "28B", "32A", "32B"}) {
+    const std::string base =
+        std::string("contact --chain ") + chain + " --tooth-radius 40mm --load 1kN --skew 0.5deg";
+    const double p = std::stod(std::string(chain).substr(0, 2)) * 25.4 / 16;
+    const bool tabulated = p > 12 && p < 26;
+    const CliRun r = run(base);
+    if (tabulated) {
+      EXPECT_EQ(r.status, 0) << chain << r.err;
+      continue;
+    }
+    EXPECT_EQ(r.status, 2) << chain;
+    EXPECT_NE(r.err.find(std::string("for ") + chain), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--gamma"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("12.7, 15.875, 19.05 and 25.4 mm"), std::string::npos) << r.err;
+    EXPECT_EQ(run(base + " --gamma 0.001").status, 0) << chain;
+  }
+}
+
 nlohmann::json contact_json(const std::string& extra) {
   const CliRun r = run(kContact + " " + extra + " --format json");
   EXPECT_EQ(r.status, 0) << extra << "\n" << r.err;

@@ -47,6 +47,9 @@ struct Parameter {
   /// Shown on the command line only (a per-command option such as --method); still a key in
   /// case files unless `cli_only`.
   bool cli_only = false;
+  /// On the command line the value may also be given without its flag, as the command's first
+  /// word (`catena catalog 12B` = `catena catalog --chain 12B`).
+  bool positional = false;
   /// Not taken from the case file's shared tables ([chain], [loads], ...): only from the
   /// analysis' own table.
   bool not_shared = false;
@@ -145,6 +148,8 @@ struct Expects {
 };
 /// A flag of the command line only (not a case-file key).
 struct CliOnly {};
+/// The value may be given on the command line without its flag (at most one per analysis).
+struct Positional {};
 struct Alias {
   std::string name;  ///< snake_case, as `Parameter::name`
 };
@@ -155,6 +160,7 @@ Parameter operator|(Parameter p, ListOf);
 Parameter operator|(Parameter p, NotShared);
 Parameter operator|(Parameter p, const Expects& e);
 Parameter operator|(Parameter p, CliOnly);
+Parameter operator|(Parameter p, Positional);
 Parameter operator|(Parameter p, const Alias& a);
 
 }  // namespace catena::analysis

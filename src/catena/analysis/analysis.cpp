@@ -97,6 +97,11 @@ Parameter operator|(Parameter p, const Expects& e) {
   p.expected = e.text;
   return p;
 }
+Parameter operator|(Parameter p, Positional) {
+  p.positional = true;
+  return p;
+}
+
 Parameter operator|(Parameter p, CliOnly) {
   p.cli_only = true;
   return p;

@@ -155,6 +155,13 @@ void check_contact(const Inputs& in, std::vector<Issue>& issues) {
   const auto table = skew_gamma(pitch);
   if (in.given("gamma")) {
     if (!(in.number("gamma") >= 0)) issues.push_back({"gamma", in.text("gamma"), "γ ≥ 0"});
+  } else if (!table && std::isfinite(pitch) && chain && !in.given("pitch")) {
+    // a catalogued chain whose pitch the paper's table lacks: say so, name the chain
+    issues.push_back(
+        {"gamma", "(missing)",
+         "γ of eq. (2) for " + chain->name + " (p = " + format_g(pitch * 1e3) +
+             " mm): the paper measured γ only for p = 12.7, 15.875, 19.05 and 25.4 mm and "
+             "Catena does not extrapolate it; give --gamma [1/arcmin²] from a source"});
   } else if (!table && std::isfinite(pitch)) {  // a bad pitch is reported already
     issues.push_back(
         {"pitch", format_g(pitch * 1e3) + " mm",
