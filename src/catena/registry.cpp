@@ -5,6 +5,7 @@
 #include "catena/catena.hpp"
 #include "catena/composite/analysis.hpp"
 #include "catena/contact/analysis.hpp"
+#include "catena/drive/drive_analysis.hpp"
 #include "catena/engagement/analysis.hpp"
 #include "catena/hinge/analysis.hpp"
 #include "catena/io/bind.hpp"
@@ -30,6 +31,8 @@ const std::vector<const analysis::Analysis*>& analyses() {
       &composite::ring_design_analysis(),
       &strength::loop_analysis(),
       &strength::strength_analysis(),
+      &drive::drive_analysis(),
+      &drive::drive_select_analysis(),
   };
   return all;
 }
