@@ -14,8 +14,8 @@ namespace catena::drive {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr int kPhaseSamples = 48;   // driven-sprocket phases sampled per tooth to bracket a root
-constexpr int kDriverSamples = 24;  // driver phases sampled per tooth for the least/largest a
+constexpr int kPhaseSamples = 32;   // driven-sprocket phases sampled per tooth to bracket a root
+constexpr int kDriverSamples = 16;  // driver phases sampled per tooth for the least/largest a
 
 struct Point {
   double x, y;
@@ -156,16 +156,24 @@ PolygonWrap polygon_wrap(double pitch, int z1, int z2, int links, double phase1)
   }
   PolygonWrap best;
   bool found = false;
+  constexpr double kTouch = 1e-12;  // [pitches] a sample that is a root (equal sprockets in line)
   for (int k = 0; k < kPhaseSamples; ++k) {
     const double g0 = offsets[k], g1 = offsets[k + 1];
     if (std::abs(g0) > 0.25 || std::abs(g1) > 0.25) continue;  // the jump at half a pitch
     double phase2;
-    if (g0 == 0) {
+    if (std::abs(g0) <= kTouch) {
       phase2 = phases[k];
-    } else if (g0 * g1 > 0) {
-      continue;
-    } else if (g1 == 0) {
+    } else if (std::abs(g1) <= kTouch) {
       continue;  // found as the next interval's start
+    } else if (g0 * g1 > 0) {
+      if (std::min(std::abs(g0), std::abs(g1)) > 2.0 / kPhaseSamples) continue;
+      // no sign change, but the offset may touch zero inside (a root where the span's end pin
+      // changes): the least |offset| in the interval
+      const auto m = boost::math::tools::brent_find_minima(
+          [&](double phase) { return std::abs(offset(phase)); }, phases[k], phases[k + 1],
+          std::numeric_limits<double>::digits / 2);
+      if (!(m.second <= kTouch)) continue;
+      phase2 = m.first;
     } else {
       boost::math::tools::eps_tolerance<double> tol(std::numeric_limits<double>::digits - 2);
       std::uintmax_t iterations = 200;
