@@ -544,7 +544,7 @@ analysis::Analysis make_drive() {
       quantity("speed", K::kAngularSpeed,
                "driver speed n1, e.g. 1000rpm (a bare number is rad/s)") |
           Required{"the driver's speed n1, e.g. 1000rpm"},
-      quantity("power", K::kPower, "transmitted power P (bare number: kW)") |
+      quantity("power", K::kPower, "transmitted power P") |
           Required{"the transmitted power P, e.g. 7.5kW"},
       number("service_factor", "K_s ≥ 1; required when the chain is rated (A series)"),
       integer("strands", 1, "strands k (rating: 1 … 4)") | Default{"1"},
@@ -575,7 +575,7 @@ analysis::Analysis make_select() {
   a.chain_types = {"roller-iso606"};
   a.formats = {.table = true, .csv = false, .drawing = false};
   a.parameters = {
-      quantity("power", K::kPower, "transmitted power P (bare number: kW)") |
+      quantity("power", K::kPower, "transmitted power P") |
           Required{"the transmitted power P, e.g. 7.5kW"},
       quantity("speed", K::kAngularSpeed,
                "driver speed n1, e.g. 1000rpm (a bare number is rad/s)") |
