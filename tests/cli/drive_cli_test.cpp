@@ -74,7 +74,9 @@ TEST(DriveCli, RefusalsNameTheFlag) {
           "--service-factor 1");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--mass-per-metre"), std::string::npos) << r.err;
-  r = run(kDrive + "--links 100 --service-factor 1 --teeth 17");
+  r =
+      run("drive --chain 08A --teeth 17 --speed 1000rpm --power 3kW --mass-per-metre 0.6kg/m "
+          "--links 100 --service-factor 1");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--teeth"), std::string::npos) << r.err;
   r = run(kDrive + "--links 20 --service-factor 1");  // shorter than round both sprockets
