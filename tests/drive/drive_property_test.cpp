@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 #include <string>
@@ -21,6 +22,13 @@ constexpr double kRelTol = 1e-12;  // [1] identities of the same numbers
 
 double num(const Value& v, const char* key) { return v.at(key).as_number(); }
 
+// A number as text that reads back as the same double.
+std::string exact(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
 TEST(DriveProperties, RandomDrives) {
   std::mt19937 rng(16);
   std::uniform_int_distribution<int> small(9, 40), extra(0, 80), chain(0, 1);
@@ -32,9 +40,9 @@ TEST(DriveProperties, RandomDrives) {
     const double a = pitches(rng) * p, n1 = speed(rng), kw = power(rng);
     const Record r = catena::run("drive", {{"chain", name},
                                            {"teeth", std::to_string(z1) + "," + std::to_string(z2)},
-                                           {"center_distance", std::to_string(a * 1e3) + " mm"},
-                                           {"speed", std::to_string(n1) + " rpm"},
-                                           {"power", std::to_string(kw) + " kW"},
+                                           {"center_distance", exact(a) + " m"},
+                                           {"speed", exact(n1) + " rpm"},
+                                           {"power", exact(kw) + " kW"},
                                            {"service_factor", "1.3"},
                                            {"mass_per_metre", "0.7 kg/m"}});
     const Value& d = r.data;
@@ -79,8 +87,8 @@ TEST(DriveProperties, SelectListsSufficientChainsSmallestPitchFirst) {
   std::uniform_real_distribution<double> speed(50, 3000), power(0.5, 60);
   for (int trial = 0; trial < 10; ++trial) {
     const double n1 = speed(rng), kw = power(rng);
-    const Record r = catena::run("drive_select", {{"power", std::to_string(kw) + " kW"},
-                                                  {"speed", std::to_string(n1) + " rpm"},
+    const Record r = catena::run("drive_select", {{"power", exact(kw) + " kW"},
+                                                  {"speed", exact(n1) + " rpm"},
                                                   {"ratio", "3"},
                                                   {"service_factor", "1.5"}});
     const Value& list = r.data.at("candidates");
