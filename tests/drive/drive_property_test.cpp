@@ -11,6 +11,8 @@
 #include <string>
 
 #include "catena/catena.hpp"
+#include "catena/contact/chain_catalog.hpp"
+#include "catena/drive/rating.hpp"
 
 namespace {
 
@@ -105,6 +107,18 @@ TEST(DriveProperties, SelectListsSufficientChainsSmallestPitchFirst) {
       previous_pitch = pitch;
       previous_strands = strands;
     }
+    // none left out: every rated chain and strand count with margin ≥ 1 is listed
+    std::size_t expected = 0;
+    for (const std::string& name : catena::contact::iso606_names()) {
+      const auto number = catena::drive::ansi_number(name);
+      if (!number) continue;
+      const auto chain = catena::contact::iso606_chain(name);
+      for (int k = 1; k <= 3; ++k)
+        expected += catena::drive::rate(*catena::drive::ansi_constants(*number), chain->pitch, 17,
+                                        n1, k, kw * 1e3, 1.5)
+                        .margin >= 1;
+    }
+    EXPECT_EQ(list.size(), expected);
   }
 }
 
