@@ -264,6 +264,8 @@ Value drive_value(const DriveResult& r) {
                                       {"center_distance", "m"},
                                       {"center_distance_formula", "m"},
                                       {"center_distance_difference", "m"},
+                                      {"center_distance_range", "m"},
+                                      {"center_distance_given", "m"},
                                       {"chain_length", "m"},
                                       {"speed_ratio", "1"},
                                       {"chain_speed", "m/s"},

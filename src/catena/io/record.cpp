@@ -51,19 +51,23 @@ Value from_nlohmann(const ordered_json& j) {
 using analysis::format_g;
 using analysis::unit_of;
 
-// The scalars of a result (nested objects with dotted names), in display units.
+// The scalars of a result (nested objects with dotted names), in display units. A member
+// without a unit of its own takes its enclosing object's (`tension.tight`: the unit of
+// `tension`), so that objects such as {driver, driven} need no unit per member name.
 void scalar_rows(const Value& result, const Value& object, const std::string& prefix,
-                 std::vector<ReportRow>& rows) {
+                 std::vector<ReportRow>& rows, const std::string& inherited = "") {
   static const std::set<std::string> skip = {"model", "source", "units", "diagnostics"};
   for (const auto& [key, v] : object.as_object()) {
     if (skip.count(key)) continue;
+    const std::string own = unit_of(result, key);
+    const std::string unit = own.empty() ? inherited : own;
     if (v.is_object()) {
-      scalar_rows(result, v, prefix + key + ".", rows);
+      scalar_rows(result, v, prefix + key + ".", rows, unit);
     } else if (!v.is_array()) {
-      const Display d = display(unit_of(result, key));
+      const Display d = display(unit);
       rows.push_back({prefix + key, format_cell(v, v.is_number() ? d.scale : 1.0), d.unit});
     } else if (v.size() <= 4 && v.size() > 0 && v.as_array()[0].is_number()) {
-      const Display d = display(unit_of(result, key));
+      const Display d = display(unit);
       std::string text;
       for (const Value& e : v.as_array())
         text += (text.empty() ? "" : ", ") + format_cell(e, d.scale);
