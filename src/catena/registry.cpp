@@ -7,6 +7,7 @@
 #include "catena/contact/analysis.hpp"
 #include "catena/contact/catalog_analysis.hpp"
 #include "catena/drive/analysis.hpp"
+#include "catena/drive/drive_analysis.hpp"
 #include "catena/engagement/analysis.hpp"
 #include "catena/hinge/analysis.hpp"
 #include "catena/io/bind.hpp"
@@ -34,6 +35,8 @@ const std::vector<const analysis::Analysis*>& analyses() {
       &strength::strength_analysis(),
       &drive::sprocket_analysis(),
       &contact::catalog_analysis(),
+      &drive::drive_analysis(),
+      &drive::drive_select_analysis(),
   };
   return all;
 }

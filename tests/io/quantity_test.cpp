@@ -77,7 +77,14 @@ INSTANTIATE_TEST_SUITE_P(
         Accepted{"22.7mm^2", QuantityKind::kArea, 22.7e-6},
         Accepted{"22.7", QuantityKind::kArea, 22.7e-6},  // bare: mm^2
         Accepted{"2.56g/cm^3", QuantityKind::kDensity, 2560.0},
-        Accepted{"1200", QuantityKind::kDensity, 1200.0}));  // bare: kg/m^3
+        Accepted{"1200", QuantityKind::kDensity, 1200.0},  // bare: kg/m^3
+        Accepted{"7.5kW", QuantityKind::kPower, 7500.0},
+        Accepted{"7.5", QuantityKind::kPower, 7500.0},  // bare: kW
+        Accepted{"750 W", QuantityKind::kPower, 750.0},
+        Accepted{"10 hp", QuantityKind::kPower, 7456.999},  // UDUNITS-2: 745.6999 W
+        Accepted{"1.25 kg/m", QuantityKind::kMassPerLength, 1.25},
+        Accepted{"1.25", QuantityKind::kMassPerLength, 1.25},  // bare: kg/m
+        Accepted{"1250 g/m", QuantityKind::kMassPerLength, 1.25}));
 
 struct Rejected {
   const char* text;
@@ -125,7 +132,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Rejected{"150 N", QuantityKind::kForcePerLength, "wrong dimension"},
                       Rejected{"150 Pa", QuantityKind::kForcePerLength, "wrong dimension"},
                       Rejected{"3kg", QuantityKind::kArea, "wrong dimension"},
-                      Rejected{"1200 kg/m", QuantityKind::kDensity, "wrong dimension"}));
+                      Rejected{"1200 kg/m", QuantityKind::kDensity, "wrong dimension"},
+                      Rejected{"7.5 kN", QuantityKind::kPower, "wrong dimension"},
+                      Rejected{"1.25 N/m", QuantityKind::kMassPerLength, "wrong dimension"}));
 
 // Outcomes are remembered (sweeps read the same texts at every point): a text read again, by
 // another field or as another kind, gives what the parser gives the first time.

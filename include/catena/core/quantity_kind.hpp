@@ -19,6 +19,8 @@ enum class QuantityKind {
                     ///< a mass per metre (kg/m) is rejected with a hint to write kgf/m
   kArea,            ///< SI m^2; bare number: mm^2
   kDensity,         ///< SI kg/m^3 (mass per volume); bare number: kg/m^3
+  kPower,           ///< SI W; bare number: kW; hp accepted (the mechanical horsepower)
+  kMassPerLength,   ///< SI kg/m (a chain's mass per metre); bare number: kg/m
 };
 
 /// A short name of the kind for help texts ("length", "angular speed").
@@ -48,6 +50,10 @@ constexpr const char* kind_name(QuantityKind kind) {
       return "area";
     case QuantityKind::kDensity:
       return "density";
+    case QuantityKind::kPower:
+      return "power";
+    case QuantityKind::kMassPerLength:
+      return "mass per length";
   }
   return "quantity";
 }

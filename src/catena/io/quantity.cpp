@@ -115,6 +115,10 @@ const char* accepted_spellings(QuantityKind kind) {
       return "an area, e.g. 22.7mm^2, 22.7 mm2, 0.227 cm^2 (bare number: mm^2)";
     case QuantityKind::kDensity:
       return "a density, e.g. 2.56g/cm^3, 1200 kg/m^3 (bare number: kg/m^3)";
+    case QuantityKind::kPower:
+      return "a power, e.g. 7.5kW, 750 W, 10 hp (bare number: kW)";
+    case QuantityKind::kMassPerLength:
+      return "a mass per length, e.g. 1.25 kg/m, 1250 g/m (bare number: kg/m)";
   }
   return "a quantity";
 }
@@ -146,6 +150,10 @@ const char* target_spelling(QuantityKind kind) {
       return "m^2";
     case QuantityKind::kDensity:
       return "kg/m^3";
+    case QuantityKind::kPower:
+      return "W";
+    case QuantityKind::kMassPerLength:
+      return "kg/m";
   }
   return "1";
 }
@@ -205,6 +213,10 @@ const char* si_unit(QuantityKind kind) {
       return "m^2";
     case QuantityKind::kDensity:
       return "kg/m^3";
+    case QuantityKind::kPower:
+      return "W";
+    case QuantityKind::kMassPerLength:
+      return "kg/m";
   }
   return "1";
 }
@@ -235,6 +247,10 @@ const char* default_unit(QuantityKind kind) {
       return "mm^2";
     case QuantityKind::kDensity:
       return "kg/m^3";
+    case QuantityKind::kPower:
+      return "kW";
+    case QuantityKind::kMassPerLength:
+      return "kg/m";
   }
   return "1";
 }

@@ -52,20 +52,22 @@ using analysis::format_g;
 using analysis::unit_of;
 
 // The scalars of a result (nested objects with dotted names), in display units. A member
-// without a unit of its own takes its parent's (`seat_diameter` {`min`, `max`} are lengths).
+// without a unit of its own takes its enclosing object's (`tension.tight`: the unit of
+// `tension`), so that objects such as {driver, driven} need no unit per member name.
 void scalar_rows(const Value& result, const Value& object, const std::string& prefix,
-                 std::vector<ReportRow>& rows, const std::string& parent = "") {
+                 std::vector<ReportRow>& rows, const std::string& inherited = "") {
   static const std::set<std::string> skip = {"model", "source", "units", "diagnostics"};
   for (const auto& [key, v] : object.as_object()) {
     if (skip.count(key)) continue;
+    const std::string own = unit_of(result, key);
+    const std::string unit = own.empty() ? inherited : own;
     if (v.is_object()) {
-      scalar_rows(result, v, prefix + key + ".", rows, key);
+      scalar_rows(result, v, prefix + key + ".", rows, unit);
     } else if (!v.is_array()) {
-      const std::string own = unit_of(result, key);
-      const Display d = display(own.empty() && !parent.empty() ? unit_of(result, parent) : own);
+      const Display d = display(unit);
       rows.push_back({prefix + key, format_cell(v, v.is_number() ? d.scale : 1.0), d.unit});
     } else if (v.size() <= 4 && v.size() > 0 && v.as_array()[0].is_number()) {
-      const Display d = display(unit_of(result, key));
+      const Display d = display(unit);
       std::string text;
       for (const Value& e : v.as_array())
         text += (text.empty() ? "" : ", ") + format_cell(e, d.scale);

@@ -1,0 +1,77 @@
+// Two-sprocket chain drive layout: the textbook link count and centre distance, and the exact
+// centre distance of the polygon wrap (pins seated on both pitch polygons, both spans taut, a
+// chain of X rigid links), solved numerically. Lengths in m, angles in rad.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+namespace catena::drive {
+
+/// Pitch radius of a sprocket, p / (2 sin(π/z)) [m].
+double pitch_radius(double pitch, int teeth);
+
+/// The link count for centre distance a (not rounded):
+/// X = 2a/p + (z1 + z2)/2 + ((z2 − z1)/2π)² p/a.
+double links_for(double pitch, int z1, int z2, double center_distance);
+
+/// `links` rounded up to the next even whole number.
+int round_up_even(double links);
+
+/// The textbook centre distance for X links:
+/// a = (p/4)[X − Σ/2 + √((X − Σ/2)² − 8Δ²)], Σ = z1 + z2, Δ = (z2 − z1)/2π.
+/// NaN when the root is imaginary (too few links).
+double center_distance_formula(double pitch, int z1, int z2, double links);
+
+/// One taut polygon wrap: sprocket 1 at (0, 0), sprocket 2 at (a, 0); the pins seated on
+/// sprocket 1 are at angles phase1 + 2πi/z1, on sprocket 2 at phase2 + 2πj/z2 (counter-clockwise
+/// index). The chain runs counter-clockwise around the hull: over sprocket 1 from pin `seat1_in`
+/// to `seat1_out` (`wrap1` links), the lower span (`span_lower` links) to sprocket 2's pin
+/// `seat2_in`, over sprocket 2 to `seat2_out` (`wrap2` links), the upper span (`span_upper` links)
+/// back to `seat1_in`.
+struct PolygonWrap {
+  double center_distance = 0.0;       ///< [m]
+  double phase1 = 0.0, phase2 = 0.0;  ///< [rad]
+  int seat1_in = 0, seat1_out = 0, seat2_in = 0, seat2_out = 0;
+  int wrap1 = 0, wrap2 = 0, span_lower = 0, span_upper = 0;
+  /// [m] the upper and lower span lengths as solved (each a whole number of pitches)
+  double upper_length = 0.0, lower_length = 0.0;
+};
+
+/// The hull of both pitch polygons at centre distance a and the given phases: which pins bound
+/// the spans and the spans' lengths (wrap counts and span lengths, span link counts left 0).
+PolygonWrap polygon_hull(double pitch, int z1, int z2, double center_distance, double phase1,
+                         double phase2);
+
+/// The taut wrap of `links` rigid links for the driver at `phase1`: centre distance and the
+/// driven sprocket's phase such that both spans are whole numbers of links. Throws
+/// std::domain_error when the chain is too short to pass around both sprockets.
+PolygonWrap polygon_wrap(double pitch, int z1, int z2, int links, double phase1);
+
+/// The exact centre distance over one pitch of driver rotation (the taut chain's centre distance
+/// varies with the phase when z1 ≠ z2): its least and largest value, and the wrap at the least.
+struct ExactCenterDistance {
+  double min = 0.0, max = 0.0;  ///< [m]
+  PolygonWrap at_min;
+  std::vector<double> phases, values;  ///< [rad], [m] the samples over one driver pitch
+};
+ExactCenterDistance exact_center_distance(double pitch, int z1, int z2, int links);
+
+/// The forces of the chain on the two shafts [N], x along the line of centres (driver → driven),
+/// y up: the tight (upper) span's tension `tight` and the slack (lower) span's `slack` along the
+/// spans of the pitch circles' common tangents at centre distance a, less the centrifugal
+/// tension `centrifugal` in each, which the wrapped chain's own centrifugal force balances.
+struct ShaftLoads {
+  double driver_x = 0.0, driver_y = 0.0, driven_x = 0.0, driven_y = 0.0;
+};
+ShaftLoads shaft_loads(double pitch, int z1, int z2, double center_distance, double tight,
+                       double slack, double centrifugal);
+
+/// The spans' inclination γ = asin((r2 − r1)/a) to the line of centres [rad] (r: pitch radii).
+double span_angle(double pitch, int z1, int z2, double center_distance);
+
+/// Every pin of the wrap, in chain order (links + 1 points, the last equal to the first) [m].
+std::vector<std::pair<double, double>> wrap_pins(const PolygonWrap& w, double pitch, int z1,
+                                                 int z2);
+
+}  // namespace catena::drive

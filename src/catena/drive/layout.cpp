@@ -1,0 +1,263 @@
+// Two-sprocket layout: textbook link count and centre distance; the exact polygon wrap.
+#include "catena/drive/layout.hpp"
+
+#include <algorithm>
+#include <boost/math/tools/minima.hpp>
+#include <boost/math/tools/roots.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace catena::drive {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr int kPhaseSamples = 32;   // driven-sprocket phases sampled per tooth to bracket a root
+constexpr int kDriverSamples = 16;  // driver phases sampled per tooth for the least/largest a
+
+struct Point {
+  double x, y;
+};
+
+Point operator-(Point a, Point b) { return {a.x - b.x, a.y - b.y}; }
+double cross(Point o, Point a, Point b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+double distance(Point a, Point b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+struct Polygon {
+  Point centre;
+  double radius, phase;
+  int teeth;
+  Point operator[](int i) const {
+    const int k = ((i % teeth) + teeth) % teeth;
+    const double t = phase + 2 * kPi * k / teeth;
+    return {centre.x + radius * std::cos(t), centre.y + radius * std::sin(t)};
+  }
+};
+
+int wrap_index(int i, int n) { return ((i % n) + n) % n; }
+
+// The bridge of the hull of two disjoint convex polygons from A to B with both polygons on its
+// left: (index in A, index in B).
+std::pair<int, int> bridge(const Polygon& a, const Polygon& b) {
+  const Point d = b.centre - a.centre;
+  const Point out{d.y, -d.x};  // right normal: the bridge is extreme in this direction
+  auto extreme = [&](const Polygon& p) {
+    int best = 0;
+    double best_dot = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i < p.teeth; ++i) {
+      const Point v = p[i];
+      const double dot = v.x * out.x + v.y * out.y;
+      if (dot > best_dot) {
+        best_dot = dot;
+        best = i;
+      }
+    }
+    return best;
+  };
+  int ia = extreme(a), ib = extreme(b);
+  const double scale = std::pow(std::hypot(d.x, d.y) + a.radius + b.radius, 2);
+  const double tol = 1e-14 * scale;
+  for (int guard = 0; guard < 4 * (a.teeth + b.teeth); ++guard) {
+    bool changed = false;
+    for (int step : {1, -1}) {
+      if (cross(a[ia], b[ib], a[ia + step]) < -tol) {
+        ia = wrap_index(ia + step, a.teeth);
+        changed = true;
+      }
+      if (cross(a[ia], b[ib], b[ib + step]) < -tol) {
+        ib = wrap_index(ib + step, b.teeth);
+        changed = true;
+      }
+    }
+    if (!changed) break;
+  }
+  return {ia, ib};
+}
+
+double perimeter(const PolygonWrap& w, double pitch) {
+  return (w.wrap1 + w.wrap2) * pitch + w.upper_length + w.lower_length;
+}
+
+// The upper span's distance from a whole number of pitches, in pitches: in [−1/2, 1/2]. Where the
+// hull's end pin changes, the span grows or shrinks by exactly one pitch, so this is continuous
+// there; it jumps only where the span is half a pitch off.
+double upper_offset(const PolygonWrap& w, double pitch) {
+  const double n = w.upper_length / pitch;
+  return n - std::round(n);
+}
+
+}  // namespace
+
+double pitch_radius(double pitch, int teeth) { return pitch / (2 * std::sin(kPi / teeth)); }
+
+double links_for(double pitch, int z1, int z2, double a) {
+  const double delta = (z2 - z1) / (2 * kPi);
+  return 2 * a / pitch + (z1 + z2) / 2.0 + delta * delta * pitch / a;
+}
+
+int round_up_even(double links) {
+  const double up = std::ceil(links - 1e-9);  // a whole count computed a few ulps high stays
+  const auto n = static_cast<std::int64_t>(up);
+  return static_cast<int>(n % 2 == 0 ? n : n + 1);
+}
+
+double center_distance_formula(double pitch, int z1, int z2, double links) {
+  const double sigma = z1 + z2, delta = (z2 - z1) / (2 * kPi);
+  const double m = links - sigma / 2;
+  const double disc = m * m - 8 * delta * delta;
+  if (!(disc >= 0) || !(m > 0)) return NAN;
+  return pitch / 4 * (m + std::sqrt(disc));
+}
+
+PolygonWrap polygon_hull(double pitch, int z1, int z2, double a, double phase1, double phase2) {
+  const Polygon p1{{0, 0}, pitch_radius(pitch, z1), phase1, z1};
+  const Polygon p2{{a, 0}, pitch_radius(pitch, z2), phase2, z2};
+  PolygonWrap w;
+  w.center_distance = a;
+  w.phase1 = phase1;
+  w.phase2 = phase2;
+  std::tie(w.seat1_out, w.seat2_in) = bridge(p1, p2);  // lower span, left to right
+  std::tie(w.seat2_out, w.seat1_in) = bridge(p2, p1);  // upper span, right to left
+  w.wrap1 = wrap_index(w.seat1_out - w.seat1_in, z1);
+  w.wrap2 = wrap_index(w.seat2_out - w.seat2_in, z2);
+  w.lower_length = distance(p1[w.seat1_out], p2[w.seat2_in]);
+  w.upper_length = distance(p2[w.seat2_out], p1[w.seat1_in]);
+  return w;
+}
+
+PolygonWrap polygon_wrap(double pitch, int z1, int z2, int links, double phase1) {
+  const double r1 = pitch_radius(pitch, z1), r2 = pitch_radius(pitch, z2);
+  const double a_lo = (r1 + r2) * (1 + 1e-9), a_hi = links * pitch / 2;
+  // the centre distance at which the hull is `links` pitches round, for the driven phase φ2
+  auto taut = [&](double phase2) -> double {
+    auto excess = [&](double a) {
+      return perimeter(polygon_hull(pitch, z1, z2, a, phase1, phase2), pitch) / pitch - links;
+    };
+    if (excess(a_lo) > 0 || !(a_hi > a_lo))
+      throw std::domain_error("the chain is too short to pass round both sprockets");
+    if (excess(a_hi) <= 0) return a_hi;
+    boost::math::tools::eps_tolerance<double> tol(std::numeric_limits<double>::digits - 2);
+    std::uintmax_t iterations = 200;
+    const auto [lo, hi] = boost::math::tools::toms748_solve(excess, a_lo, a_hi, tol, iterations);
+    return (lo + hi) / 2;
+  };
+  auto offset = [&](double phase2) {
+    return upper_offset(polygon_hull(pitch, z1, z2, taut(phase2), phase1, phase2), pitch);
+  };
+  const double period = 2 * kPi / z2;
+  std::vector<double> phases, offsets;
+  for (int k = 0; k <= kPhaseSamples; ++k) {
+    phases.push_back(period * k / kPhaseSamples);
+    offsets.push_back(offset(phases.back()));
+  }
+  PolygonWrap best;
+  bool found = false;
+  constexpr double kTouch = 1e-12;  // [pitches] a sample that is a root (equal sprockets in line)
+  for (int k = 0; k < kPhaseSamples; ++k) {
+    const double g0 = offsets[k], g1 = offsets[k + 1];
+    if (std::abs(g0) > 0.25 || std::abs(g1) > 0.25) continue;  // the jump at half a pitch
+    double phase2;
+    if (std::abs(g0) <= kTouch) {
+      phase2 = phases[k];
+    } else if (std::abs(g1) <= kTouch) {
+      continue;  // found as the next interval's start
+    } else if (g0 * g1 > 0) {
+      if (std::min(std::abs(g0), std::abs(g1)) > 2.0 / kPhaseSamples) continue;
+      // no sign change, but the offset may touch zero inside (a root where the span's end pin
+      // changes): the least |offset| in the interval
+      const auto m = boost::math::tools::brent_find_minima(
+          [&](double phase) { return std::abs(offset(phase)); }, phases[k], phases[k + 1],
+          std::numeric_limits<double>::digits / 2);
+      if (!(m.second <= kTouch)) continue;
+      phase2 = m.first;
+    } else {
+      boost::math::tools::eps_tolerance<double> tol(std::numeric_limits<double>::digits - 2);
+      std::uintmax_t iterations = 200;
+      const auto [lo, hi] = boost::math::tools::toms748_solve(offset, phases[k], phases[k + 1], g0,
+                                                              g1, tol, iterations);
+      phase2 = (lo + hi) / 2;
+    }
+    PolygonWrap w = polygon_hull(pitch, z1, z2, taut(phase2), phase1, phase2);
+    w.span_upper = static_cast<int>(std::lround(w.upper_length / pitch));
+    w.span_lower = links - w.wrap1 - w.wrap2 - w.span_upper;
+    if (w.span_upper < 1 || w.span_lower < 1) continue;
+    if (!found || w.center_distance < best.center_distance) best = w;
+    found = true;
+  }
+  if (!found) throw std::domain_error("no taut polygon wrap found for this phase");
+  return best;
+}
+
+ExactCenterDistance exact_center_distance(double pitch, int z1, int z2, int links) {
+  const double period = 2 * kPi / z1;
+  auto a_at = [&](double phase1) {
+    return polygon_wrap(pitch, z1, z2, links, phase1).center_distance;
+  };
+  std::vector<double> values;
+  for (int k = 0; k < kDriverSamples; ++k) values.push_back(a_at(period * k / kDriverSamples));
+  const auto lo = std::min_element(values.begin(), values.end()) - values.begin();
+  const auto hi = std::max_element(values.begin(), values.end()) - values.begin();
+  const double step = period / kDriverSamples;
+  constexpr int kBits = std::numeric_limits<double>::digits / 2;
+  const auto at_min = boost::math::tools::brent_find_minima(
+      a_at, period * static_cast<double>(lo) / kDriverSamples - step,
+      period * static_cast<double>(lo) / kDriverSamples + step, kBits);
+  const auto at_max = boost::math::tools::brent_find_minima(
+      [&](double phase1) { return -a_at(phase1); },
+      period * static_cast<double>(hi) / kDriverSamples - step,
+      period * static_cast<double>(hi) / kDriverSamples + step, kBits);
+  ExactCenterDistance e;
+  for (int k = 0; k < kDriverSamples; ++k) e.phases.push_back(period * k / kDriverSamples);
+  e.values = values;
+  e.at_min = polygon_wrap(pitch, z1, z2, links, at_min.first);
+  e.min = std::min(e.at_min.center_distance, values[static_cast<std::size_t>(lo)]);
+  if (values[static_cast<std::size_t>(lo)] < e.at_min.center_distance) {
+    e.at_min =
+        polygon_wrap(pitch, z1, z2, links, period * static_cast<double>(lo) / kDriverSamples);
+    e.min = e.at_min.center_distance;
+  }
+  e.max = std::max(-at_max.second, values[static_cast<std::size_t>(hi)]);
+  return e;
+}
+
+double span_angle(double pitch, int z1, int z2, double a) {
+  return std::asin((pitch_radius(pitch, z2) - pitch_radius(pitch, z1)) / a);
+}
+
+ShaftLoads shaft_loads(double pitch, int z1, int z2, double a, double tight, double slack,
+                       double centrifugal) {
+  const double g = span_angle(pitch, z1, z2, a);
+  const double t = tight - centrifugal, s = slack - centrifugal;
+  ShaftLoads l;
+  l.driver_x = (t + s) * std::cos(g);  // the spans pull the driver towards the driven sprocket
+  l.driver_y = (t - s) * std::sin(g);
+  l.driven_x = -l.driver_x;
+  l.driven_y = -l.driver_y;
+  return l;
+}
+
+std::vector<std::pair<double, double>> wrap_pins(const PolygonWrap& w, double pitch, int z1,
+                                                 int z2) {
+  const Polygon p1{{0, 0}, pitch_radius(pitch, z1), w.phase1, z1};
+  const Polygon p2{{w.center_distance, 0}, pitch_radius(pitch, z2), w.phase2, z2};
+  std::vector<std::pair<double, double>> pins;
+  auto add = [&](Point q) { pins.emplace_back(q.x, q.y); };
+  auto span = [&](Point from, Point to, int n) {
+    for (int k = 1; k < n; ++k) {
+      const double t = static_cast<double>(k) / n;
+      add({from.x + t * (to.x - from.x), from.y + t * (to.y - from.y)});
+    }
+  };
+  for (int i = 0; i <= w.wrap1; ++i) add(p1[w.seat1_in + i]);
+  span(p1[w.seat1_out], p2[w.seat2_in], w.span_lower);
+  for (int j = 0; j <= w.wrap2; ++j) add(p2[w.seat2_in + j]);
+  span(p2[w.seat2_out], p1[w.seat1_in], w.span_upper);
+  add(p1[w.seat1_in]);
+  return pins;
+}
+
+}  // namespace catena::drive
