@@ -13,6 +13,7 @@
 #include "catena/strength/analysis.hpp"
 #include "catena/strength/loop_analysis.hpp"
 #include "catena/warp/analysis.hpp"
+#include "catena/wear/analysis.hpp"
 
 namespace catena {
 
@@ -30,6 +31,7 @@ const std::vector<const analysis::Analysis*>& analyses() {
       &composite::ring_design_analysis(),
       &strength::loop_analysis(),
       &strength::strength_analysis(),
+      &wear::wear_analysis(),
   };
   return all;
 }
