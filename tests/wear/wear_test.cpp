@@ -236,6 +236,36 @@ TEST(WearProperties, RandomValidInputsGiveFiniteMonotoneElongation) {
   EXPECT_GT(ran, 60);
 }
 
+TEST(WearLoads, EachArticulationWearsUnderItsOwnTension) {
+  // Archard is linear in F for the sliding hinge: a pass whose two slack-side articulations
+  // carry nothing wears half as fast as one loaded at all four, i.e. lives twice as long.
+  Input all = bench(HingeKind::kSliding);
+  Input half = all;
+  half.tensions = {3500.0, 3500.0, 0.0, 0.0};
+  const Result r_all = run(all), r_half = run(half);
+  EXPECT_NEAR(*r_half.life_hours[2], 2.0 * *r_all.life_hours[2], kRelTol * *r_half.life_hours[2]);
+  EXPECT_NEAR(r_half.pass.slide_pivot_plate, 0.5 * r_all.pass.slide_pivot_plate, 1e-15);
+  // the rolling hinge: the micro-slip grows with the Hertz width (b ∝ √F), so a lighter
+  // articulation wears less than in proportion to its load, and the pass sums its articulations
+  Input roll = bench(HingeKind::kRolling);
+  roll.limit = RollingLimit::kGuided;
+  roll.tensions = {3500.0, 3500.0, 875.0, 875.0};
+  const Result mixed = run(roll);
+  Input light = roll;
+  light.tensions.clear();
+  light.tension = 875.0;
+  Input heavy = light;
+  heavy.tension = 3500.0;
+  const double expected =
+      2.0 * articulate(heavy, {}).plate_depth + 2.0 * articulate(light, {}).plate_depth;
+  EXPECT_NEAR(mixed.pass.plate_depth, expected, kRelTol * expected);
+  EXPECT_LT(articulate(light, {}).plate_depth, 0.25 * articulate(heavy, {}).plate_depth);
+  // one value per articulation, or one for all
+  Input wrong = all;
+  wrong.tensions = {3500.0, 3500.0};
+  EXPECT_FALSE(validate(wrong).empty());
+}
+
 TEST(WearErrors, ValidateListsEveryProblem) {
   Input in = bench(HingeKind::kSliding);
   in.tension = -1.0;

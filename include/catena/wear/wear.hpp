@@ -39,11 +39,14 @@ enum class Creep {
 
 struct Input {
   HingeKind hinge = HingeKind::kRolling;
-  double pitch = 0.0;             ///< [m] t
-  int teeth = 0;                  ///< [-] z
-  int strokes = 1;                ///< [-] m; mutual turn per articulation 360°·m/z
-  int articulations = 4;          ///< [-] articulations per pass of the loop (2 per sprocket)
-  double tension = 0.0;           ///< [N] chain tension at the articulations
+  double pitch = 0.0;     ///< [m] t
+  int teeth = 0;          ///< [-] z
+  int strokes = 1;        ///< [-] m; mutual turn per articulation 360°·m/z
+  int articulations = 4;  ///< [-] articulations per pass of the loop (2 per sprocket)
+  double tension = 0.0;   ///< [N] chain tension at the articulations
+  /// [N] tension at each articulation of a pass (the loop's tensions at the sprockets); empty:
+  /// `tension` at every one; otherwise one value (≥ 0) per articulation.
+  std::vector<double> tensions;
   double speed = 0.0;             ///< [m/s] chain speed
   double loop_length = 0.0;       ///< [m] chain length of the loop (one pass = loop_length / speed)
   double wear_coefficient = 0.0;  ///< [-] Archard k of the pivot–plate pair
@@ -102,8 +105,8 @@ struct Articulation {
   std::vector<Diagnostic> diagnostics;
 };
 
-/// One articulation at the current wear state (the engagement and hinge models re-solved on the
-/// worn geometry). Throws InputError for invalid input.
+/// One articulation under `in.tension` at the current wear state (the engagement and hinge models
+/// re-solved on the worn geometry). Throws InputError for invalid input.
 Articulation articulate(const Input& in, const Worn& worn);
 
 /// [m³] Archard: V = k·F·s/H.
@@ -120,10 +123,11 @@ struct Point {
 };
 
 struct Result {
-  double mutual_turn = 0.0;                       ///< [rad]
-  double passes_per_hour = 0.0;                   ///< [1/h]
-  double block_passes = 0.0;                      ///< ΔN used
-  Articulation first;                             ///< the new chain's articulation
+  double mutual_turn = 0.0;      ///< [rad]
+  double passes_per_hour = 0.0;  ///< [1/h]
+  double block_passes = 0.0;     ///< ΔN used
+  Articulation first;            ///< the new chain's articulation
+  Articulation pass;  ///< the new chain's whole pass: slides and depths summed over articulations
   std::vector<Point> series;                      ///< at each block end, from 0 to the last limit
   std::vector<std::optional<double>> life_hours;  ///< per limit; empty: never reached
   Point at_end;                                   ///< wear at the end of the series

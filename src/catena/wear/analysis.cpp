@@ -60,6 +60,7 @@ Value to_value(const WearAnalysis& w) {
   const Input& in = w.input;
   const Result& r = w.result;
   const Articulation& a = r.first;
+  const Articulation& ps = r.pass;
   const bool rolling = in.hinge == HingeKind::kRolling;
   Value j = Value::object();
   j["model"] = rolling ? "wear.rolling_hinge" : "wear.sliding_hinge";
@@ -84,29 +85,28 @@ Value to_value(const WearAnalysis& w) {
                                    {"plate", r.at_end.plate},
                                    {"pin", Value()},
                                    {"bush", Value()}});
-  const double art = static_cast<double>(in.articulations);
   Value sliding = Value::object();
   sliding["articulations"] = in.articulations;
   sliding["mutual_turn"] = a.mutual_turn;
-  sliding["pivot_plate"] = art * a.slide_pivot_plate;
+  sliding["pivot_plate"] = ps.slide_pivot_plate;
   if (rolling) {
     sliding["plate_turn"] = a.plate_turn;
     sliding["rolling_limit"] = a.rolling_limit;
     sliding["rolled_turn"] = a.rolled_turn;
-    sliding["gross_slide"] = art * 2.0 * a.gross_slide;
-    sliding["micro_slip"] = art * 2.0 * a.micro_slip;
+    sliding["gross_slide"] = 2.0 * ps.gross_slide;
+    sliding["micro_slip"] = 2.0 * ps.micro_slip;
     sliding["rolled_arc"] = a.rolled_arc;
     sliding["half_width"] = a.half_width;
   } else {
     sliding["pivot_turns"] = a.turned;
-    sliding["link1"] = art * a.slide_link1;
-    sliding["link2"] = art * a.slide_link2;
-    sliding["tooth"] = art * a.slide_tooth;
+    sliding["link1"] = ps.slide_link1;
+    sliding["link2"] = ps.slide_link2;
+    sliding["tooth"] = ps.slide_tooth;
     sliding["neck_spread"] = a.neck_spread;
   }
   sliding["band"] = a.band;
-  sliding["roller_depth"] = art * a.roller_depth;
-  sliding["plate_depth"] = art * a.plate_depth;
+  sliding["roller_depth"] = ps.roller_depth;
+  sliding["plate_depth"] = ps.plate_depth;
   j["sliding_per_pass"] = std::move(sliding);
   j["calibration"] =
       Value::object({{"wear_coefficient", in.wear_coefficient},
@@ -153,28 +153,34 @@ std::string to_table(const WearAnalysis& w) {
   const Input& in = w.input;
   const Result& r = w.result;
   const Articulation& a = r.first;
+  const Articulation& ps = r.pass;
   const bool rolling = in.hinge == HingeKind::kRolling;
-  const double art = static_cast<double>(in.articulations);
   std::ostringstream out;
   out << "Catena wear: " << (rolling ? "rolling" : "sliding")
       << "-friction hinge chain, Archard wear on the kinematics' sliding (seed 000 section 2)\n";
-  out << "F = " << format_g(in.tension / 1e3) << " kN, " << in.articulations
-      << " articulations per pass of " << format_g(a.mutual_turn * 180.0 / std::numbers::pi)
-      << " deg, " << format_g(r.passes_per_hour)
-      << " passes/h, k = " << format_g(in.wear_coefficient) << "\n";
-  out << "pivot-plate sliding per pass: " << format_g(art * a.slide_pivot_plate * 1e3) << " mm";
+  out << "F = ";
+  if (in.tensions.empty()) {
+    out << format_g(in.tension / 1e3);
+  } else {
+    for (std::size_t i = 0; i < in.tensions.size(); ++i)
+      out << (i ? "/" : "") << format_g(in.tensions[i] / 1e3);
+  }
+  out << " kN, " << in.articulations << " articulations per pass of "
+      << format_g(a.mutual_turn * 180.0 / std::numbers::pi) << " deg, "
+      << format_g(r.passes_per_hour) << " passes/h, k = " << format_g(in.wear_coefficient) << "\n";
+  out << "pivot-plate sliding per pass: " << format_g(ps.slide_pivot_plate * 1e3) << " mm";
   if (rolling) {
-    out << " (gross " << format_g(art * 2.0 * a.gross_slide * 1e3) << " mm, micro-slip "
-        << format_g(art * 2.0 * a.micro_slip * 1e3) << " mm; rolling limit "
+    out << " (gross " << format_g(2.0 * ps.gross_slide * 1e3) << " mm, micro-slip "
+        << format_g(2.0 * ps.micro_slip * 1e3) << " mm; rolling limit "
         << format_g(a.rolling_limit * 180.0 / std::numbers::pi) << " deg of a "
         << format_g(a.plate_turn * 180.0 / std::numbers::pi) << " deg plate turn)\n";
   } else {
-    out << " (link 1 bores " << format_g(art * a.slide_link1 * 1e3) << " mm, link 2 bores "
-        << format_g(art * a.slide_link2 * 1e3) << " mm; tooth "
-        << format_g(art * a.slide_tooth * 1e3) << " mm)\n";
+    out << " (link 1 bores " << format_g(ps.slide_link1 * 1e3) << " mm, link 2 bores "
+        << format_g(ps.slide_link2 * 1e3) << " mm; tooth " << format_g(ps.slide_tooth * 1e3)
+        << " mm)\n";
   }
-  out << "wear depth per pass: roller (pivot) " << format_g(art * a.roller_depth * 1e9)
-      << " nm, plate " << format_g(art * a.plate_depth * 1e9) << " nm\n\n";
+  out << "wear depth per pass: roller (pivot) " << format_g(ps.roller_depth * 1e9) << " nm, plate "
+      << format_g(ps.plate_depth * 1e9) << " nm\n\n";
   out << "  limit[%]   life[h]\n";
   std::vector<double> sorted = in.limits;
   std::sort(sorted.begin(), sorted.end());
@@ -251,7 +257,9 @@ analysis::Analysis make() {
       integer("teeth", 3, "z, sprocket teeth") | Required{"a whole number z >= 3"},
       integer("strokes", 1, "m, sprocket strokes; mutual turn 360deg*m/z") | Default{"1"},
       integer("articulations", 1, "articulations per pass (2 per sprocket)") | Default{"4"},
-      quantity("tension", K::kForce, "chain tension F at the articulations") | Required{},
+      quantity("tension", K::kForce,
+               "chain tension F at every articulation, or one per articulation of a pass") |
+          Required{} | ListOf{},
       quantity("speed", K::kSpeed, "chain speed v") | Required{},
       loop_length,
       number("wear_coefficient", "Archard k of the pivot-plate pair, 0 < k < 1") | Required{},
@@ -302,6 +310,10 @@ WearAnalysis wear_analysis_run(const analysis::Inputs& in) {
   x.strokes = in.integer("strokes");
   x.articulations = in.integer("articulations");
   x.tension = in.number("tension");
+  if (in.list("tension").size() > 1) {
+    x.tensions = in.list("tension");
+    if (!in.given("articulations")) x.articulations = static_cast<int>(x.tensions.size());
+  }
   x.speed = in.number("speed");
   x.loop_length = in.number("loop_length");
   x.wear_coefficient = in.number("wear_coefficient");

@@ -148,7 +148,21 @@ std::vector<Issue> validate(const Input& in) {
     out.push_back({"strokes", std::to_string(in.strokes), "a whole number 1 <= m < z/2"});
   if (in.articulations < 1)
     out.push_back({"articulations", std::to_string(in.articulations), "a whole number >= 1"});
-  check::finite_positive(out, "tension", in.tension, "N");
+  if (in.tensions.empty()) {
+    check::finite_positive(out, "tension", in.tension, "N");
+  } else {
+    bool loaded = false;
+    for (double f : in.tensions) {
+      if (!(f >= 0.0) || !std::isfinite(f))
+        out.push_back({"tension", check::format_si(f, "N"), "tensions >= 0 N"});
+      loaded = loaded || f > 0.0;
+    }
+    if (!loaded) out.push_back({"tension", "0 N", "at least one articulation under tension > 0"});
+    if (in.tensions.size() != static_cast<std::size_t>(std::max(in.articulations, 0)))
+      out.push_back({"tension", std::to_string(in.tensions.size()) + " values",
+                     "one tension, or one per articulation (articulations = " +
+                         std::to_string(in.articulations) + ")"});
+  }
   check::finite_positive(out, "speed", in.speed, "m/s");
   check::finite_positive(out, "loop_length", in.loop_length, "m");
   if (!(in.wear_coefficient > 0.0) || !(in.wear_coefficient < 1.0))
@@ -199,6 +213,39 @@ Articulation articulate(const Input& in, const Worn& worn) {
   return a;
 }
 
+namespace {
+
+// One pass: every articulation under its own tension, slides and depths summed; the angles, band
+// and half-width of the first loaded articulation.
+Articulation whole_pass(const Input& in, const Worn& worn) {
+  Articulation sum;
+  bool first = true;
+  const int n = in.articulations;
+  for (int i = 0; i < n; ++i) {
+    Input x = in;
+    x.tensions.clear();
+    x.tension = in.tensions.empty() ? in.tension : in.tensions[static_cast<std::size_t>(i)];
+    if (!(x.tension > 0.0)) continue;  // a slack articulation carries no load: no wear
+    const Articulation a = articulate(x, worn);
+    if (first) {
+      sum = a;
+      first = false;
+      continue;
+    }
+    sum.slide_link1 += a.slide_link1;
+    sum.slide_link2 += a.slide_link2;
+    sum.slide_tooth += a.slide_tooth;
+    sum.gross_slide += a.gross_slide;
+    sum.micro_slip += a.micro_slip;
+    sum.slide_pivot_plate += a.slide_pivot_plate;
+    sum.roller_depth += a.roller_depth;
+    sum.plate_depth += a.plate_depth;
+  }
+  return sum;
+}
+
+}  // namespace
+
 Result run(const Input& input) {
   throw_if_any(validate(input));
   Input in = input;
@@ -207,10 +254,18 @@ Result run(const Input& input) {
   res.mutual_turn = engagement::gamma_sigma(in.teeth, in.strokes);
   res.passes_per_hour = in.speed * 3600.0 / in.loop_length;
   Worn worn;
-  res.first = articulate(in, worn);
-  res.diagnostics = res.first.diagnostics;
-  const double art = static_cast<double>(in.articulations);
-  const double rate0 = art * (res.first.roller_depth + res.first.plate_depth) / in.pitch;
+  res.pass = whole_pass(in, worn);
+  res.first = res.pass;  // the first loaded articulation's angles; its slides are the pass's
+  if (in.tensions.empty()) {
+    res.first = articulate(in, worn);
+  } else {
+    Input x = in;
+    x.tensions.clear();
+    x.tension = *std::max_element(in.tensions.begin(), in.tensions.end());
+    res.first = articulate(x, worn);
+  }
+  res.diagnostics = res.pass.diagnostics;
+  const double rate0 = (res.pass.roller_depth + res.pass.plate_depth) / in.pitch;
   res.series.push_back({});
   res.life_hours.assign(in.limits.size(), std::nullopt);
   if (!(rate0 > 0.0)) {
@@ -228,10 +283,10 @@ Result run(const Input& input) {
   int blocks = 0;
   while (p.elongation < last && blocks < kMaxBlocks) {
     // Re-solve the articulation on the worn geometry, then extrapolate over the block.
-    const Articulation a = blocks == 0 ? res.first : articulate(in, worn);
+    const Articulation a = blocks == 0 ? res.pass : whole_pass(in, worn);
     Point next = p;
-    next.roller += art * a.roller_depth * res.block_passes;
-    next.plate += art * a.plate_depth * res.block_passes;
+    next.roller += a.roller_depth * res.block_passes;
+    next.plate += a.plate_depth * res.block_passes;
     next.elongation = (next.roller + next.plate) / in.pitch;
     next.hours += res.block_passes / res.passes_per_hour;
     for (std::size_t j = 0; j < in.limits.size(); ++j) {
