@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "cli_run.hpp"
@@ -14,7 +15,7 @@ constexpr double kRelTol = 1e-9;  // [1] a closed form of the sliding hinge: rou
 const std::string kExamples = CATENA_EXAMPLES_DIR;
 
 const std::string kCommon =
-    "--pitch 125mm --teeth 8 --strokes 2 --tension 3.5kN --speed 0.34 --loop-length 10 "
+    "--pitch 125mm --teeth 8 --strokes 2 --tension 3.5kN --speed 0.34 --loop-length 10m "
     "--wear-coefficient 1e-4 --contact-length 24mm --friction 0.15";
 const std::string kRolling = "wear --hinge rolling " + kCommon +
                              " --pin-diameter 40mm --half-thickness 8mm --plate-radius 15mm";
@@ -72,7 +73,7 @@ TEST(WearCli, TableAndCsv) {
 TEST(WearCli, InvalidInputExitsTwoNamingEveryField) {
   const CliRun r =
       run("wear --hinge sliding --pitch 125mm --teeth 8 --tension -3kN --speed 0.34 "
-          "--loop-length 10 --wear-coefficient 3 --contact-length 24mm "
+          "--loop-length 10m --wear-coefficient 3 --contact-length 24mm "
           "--friction 0.15 --limits 1.5,80");
   EXPECT_EQ(r.status, 2);
   for (const char* flag : {"--tension", "--wear-coefficient", "--limits"})
@@ -85,6 +86,24 @@ TEST(WearCli, InvalidInputExitsTwoNamingEveryField) {
   EXPECT_NE(missing.err.find("--pin-diameter"), std::string::npos) << missing.err;
 }
 
+TEST(WearCli, ATensionPerArticulation) {
+  // the slack side of the loop carries nothing: half the sliding of four loaded articulations
+  const auto j = json_of(
+      "wear --hinge sliding --pitch 125mm --teeth 8 --strokes 2 "
+      "--tension 3.5kN,3.5kN,0,0 --speed 0.34 --loop-length 10m "
+      "--wear-coefficient 1e-4 --contact-length 24mm --friction 0.15 "
+      "--format json");
+  EXPECT_EQ(j["sliding_per_pass"]["articulations"], 4);
+  EXPECT_NEAR(j["sliding_per_pass"]["link1"].get<double>(), 2 * 0.020 * 3.14159265358979 / 2,
+              1e-12);
+  const CliRun bad =
+      run("wear --hinge sliding --pitch 125mm --teeth 8 --strokes 2 --tension 3.5kN,1kN "
+          "--articulations 4 --speed 0.34 --loop-length 10m --wear-coefficient 1e-4 "
+          "--contact-length 24mm --friction 0.15");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("--tension"), std::string::npos) << bad.err;
+}
+
 TEST(WearCli, CaseFilesRunTheSameAnalysis) {
   const auto rolling = json_of("run " + kExamples + "/000_wear_benches.toml");
   ASSERT_TRUE(rolling["analyses"].contains("wear"));
@@ -93,6 +112,14 @@ TEST(WearCli, CaseFilesRunTheSameAnalysis) {
             json_of(kRolling + " --rolling-limit guided --format json"));
   const auto sliding = json_of("run " + kExamples + "/000_wear_sliding.toml");
   EXPECT_EQ(sliding["analyses"]["wear"], json_of(kSliding + " --format json"));
+  // the report renders the wear sections with their elongation charts
+  const auto html = std::filesystem::temp_directory_path() / "catena_wear_report.html";
+  const CliRun report = run("report " + kExamples + "/000_wear_benches.toml -o " + html.string());
+  ASSERT_EQ(report.status, 0) << report.err;
+  std::ifstream in(html);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("Elongation of the rolling-hinge chain"), std::string::npos);
+  std::filesystem::remove(html);
 }
 
 }  // namespace

@@ -247,10 +247,6 @@ analysis::Analysis make() {
   a.docs = "docs/models/wear.md";
   a.chain_types = {"rolling-hinge", "sliding-hinge"};
   a.formats = {.table = true, .csv = true, .drawing = false};
-  Parameter loop_length = quantity("loop_length", K::kLength,
-                                   "chain length of the loop; a pass takes loop_length/speed") |
-                          Required{};
-  loop_length.bare_unit = "m";
   a.parameters = {
       text("hinge", "sliding|rolling") | Required{"sliding or rolling"} | CliOnly{},
       quantity("pitch", K::kLength, "chain pitch t") | Required{},
@@ -261,7 +257,9 @@ analysis::Analysis make() {
                "chain tension F at every articulation, or one per articulation of a pass") |
           Required{} | ListOf{},
       quantity("speed", K::kSpeed, "chain speed v") | Required{},
-      loop_length,
+      quantity("loop_length", K::kLength,
+               "chain length of the loop; a pass takes loop_length/speed (give its unit: 10m)") |
+          Required{},
       number("wear_coefficient", "Archard k of the pivot-plate pair, 0 < k < 1") | Required{},
       quantity("plate_hardness", K::kStress,
                "H of the plates (42 HRC = 412 HV = 4040 MPa: thesis concl. 10, ASTM E140)") |
