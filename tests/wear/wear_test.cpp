@@ -122,6 +122,41 @@ TEST(WearKinematics, RolledArcAndPlateTurnAreTheHingeKinematicsMeasuredNumerical
   EXPECT_NEAR(a.micro_slip, slip, kIntegralTol * slip);
 }
 
+TEST(WearKinematics, SlidingNeckTurnIsTheLinksRelativeRotationOnTheSprocket) {
+  // The sliding hinge's s = r·Δφ against the links' relative rotation measured on the seated
+  // chain: vertices of the engagement model's wrap polygon (pitch radius R), the angle between
+  // two consecutive links from their chords, for several sprockets.
+  for (int z : {6, 8, 11, 17, 25}) {
+    for (int m : {1, 2}) {
+      Input in = bench(HingeKind::kSliding);
+      in.teeth = z;
+      in.strokes = m;
+      if (!validate(in).empty()) continue;
+      const Articulation a = articulate(in, {});
+      engagement::SlidingInput si;
+      si.tension = in.tension;
+      si.teeth = z;
+      si.strokes = m;
+      si.friction = in.friction;
+      si.journal_diameter = in.journal_diameter;
+      si.tooth_diameter = in.tooth_diameter;
+      const engagement::Wrap w =
+          engagement::wrap(engagement::solve_sliding(si), in.tension, in.pitch, kPi);
+      // chord t on a circle of radius R: consecutive vertices 2·asin(t/2R) apart
+      const double step = 2.0 * std::asin(0.5 * in.pitch / w.pitch_radius);
+      double x[3], y[3];
+      for (int k = 0; k < 3; ++k) {
+        x[k] = w.pitch_radius * std::cos(k * step);
+        y[k] = w.pitch_radius * std::sin(k * step);
+      }
+      const double ux = x[1] - x[0], uy = y[1] - y[0], vx = x[2] - x[1], vy = y[2] - y[1];
+      const double turn = std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
+      EXPECT_NEAR((a.slide_link1 + a.slide_link2) / (0.5 * in.journal_diameter), turn, 1e-12)
+          << "z = " << z << ", m = " << m;
+    }
+  }
+}
+
 TEST(WearKinematics, SlidingMovesToTheOtherBoresWhereThePivotTurns) {
   // A forward flank and a small tooth diameter make criterion (25) hold late in the engagement:
   // over that range the neck slides in link 2's bores and on the tooth instead of link 1's.
