@@ -16,6 +16,7 @@
 #include "catena/strength/analysis.hpp"
 #include "catena/strength/loop_analysis.hpp"
 #include "catena/warp/analysis.hpp"
+#include "catena/wear/analysis.hpp"
 
 namespace catena {
 
@@ -37,6 +38,7 @@ const std::vector<const analysis::Analysis*>& analyses() {
       &contact::catalog_analysis(),
       &drive::drive_analysis(),
       &drive::drive_select_analysis(),
+      &wear::wear_analysis(),
   };
   return all;
 }

@@ -1,0 +1,349 @@
+// `wear` — hinge wear and elongation life (seed 000 §2) — as an analysis.
+#include "catena/wear/analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <sstream>
+
+namespace catena::wear {
+namespace {
+
+using analysis::format_g;
+using analysis::Inputs;
+using analysis::Record;
+using analysis::Value;
+
+const std::vector<std::string> kCommon = {
+    "hinge",           "pitch",          "teeth",       "strokes",          "articulations",
+    "tension",         "speed",          "loop_length", "wear_coefficient", "plate_hardness",
+    "roller_hardness", "contact_length", "friction",    "limits",           "block_passes",
+    "samples"};
+const std::vector<std::string> kSlidingKeys = {"journal_diameter", "tooth_diameter",
+                                               "tooth_friction", "flank_angle"};
+const std::vector<std::string> kRollingKeys = {"pin_diameter",  "half_thickness", "plate_radius",
+                                               "roller_radius", "rolling_limit",  "creep"};
+
+// As the engagement analysis: the hinge decides which inputs apply; the other hinge's are refused.
+void check(const Inputs& in, std::vector<Issue>& issues) {
+  const std::string& hinge = in.text("hinge");
+  const bool rolling = hinge == "rolling";
+  std::vector<Issue> added;
+  if (in.present("hinge") && hinge != "sliding" && !rolling)
+    added.push_back({"hinge", hinge, "sliding or rolling"});
+  const std::vector<std::string>& refused = rolling ? kSlidingKeys : kRollingKeys;
+  const std::vector<std::string>& own = rolling ? kRollingKeys : kSlidingKeys;
+  for (const std::string& key : refused) {
+    if (in.given(key)) {
+      added.push_back({key, in.text(key),
+                       rolling ? "nothing: only the sliding hinge uses it"
+                               : "nothing: only the rolling hinge uses it"});
+    }
+  }
+  if (rolling) {
+    for (const char* key : {"pin_diameter", "half_thickness", "plate_radius"}) {
+      if (!in.given(key)) added.push_back({key, "(missing)", "a value"});
+    }
+  }
+  std::vector<std::string> order = kCommon;
+  order.insert(order.end(), refused.begin(), refused.end());
+  order.insert(order.end(), own.begin(), own.end());
+  issues = analysis::in_read_order(issues, added, order, [&](const std::string& key) {
+    return std::find(refused.begin(), refused.end(), key) == refused.end();
+  });
+}
+
+std::string limit_key(double limit) { return format_g(limit * 100.0, 6); }
+
+Value to_value(const WearAnalysis& w) {
+  const Input& in = w.input;
+  const Result& r = w.result;
+  const Articulation& a = r.first;
+  const Articulation& ps = r.pass;
+  const bool rolling = in.hinge == HingeKind::kRolling;
+  Value j = Value::object();
+  j["model"] = rolling ? "wear.rolling_hinge" : "wear.sliding_hinge";
+  j["source"] =
+      "000 Pudans, section 2 and conclusions 8, 10, 11; Archard wear on the sliding of the "
+      "engagement (eqs. 24-25) and hinge (eqs. 3, 21) models; Carter creep";
+  j["hinge"] = rolling ? "rolling" : "sliding";
+  std::vector<double> hours, percent;
+  for (const Point& p : r.series) {
+    hours.push_back(p.hours);
+    percent.push_back(100.0 * p.elongation);
+  }
+  j["elongation"] = Value::object({{"hours", hours}, {"percent", percent}});
+  Value life = Value::object();
+  std::vector<double> sorted = in.limits;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t i = 0; i < sorted.size(); ++i)
+    life[limit_key(sorted[i])] = Value(r.life_hours[i]);
+  j["life_hours"] = std::move(life);
+  // The thesis' chain has pivots ("rollers") and plates; no pin, no bush (null: absent parts).
+  j["wear_depth"] = Value::object({{"roller", r.at_end.roller},
+                                   {"plate", r.at_end.plate},
+                                   {"pin", Value()},
+                                   {"bush", Value()}});
+  Value sliding = Value::object();
+  sliding["articulations"] = in.articulations;
+  sliding["mutual_turn"] = a.mutual_turn;
+  sliding["pivot_plate"] = ps.slide_pivot_plate;
+  if (rolling) {
+    sliding["plate_turn"] = a.plate_turn;
+    sliding["rolling_limit"] = a.rolling_limit;
+    sliding["rolled_turn"] = a.rolled_turn;
+    sliding["gross_slide"] = 2.0 * ps.gross_slide;
+    sliding["micro_slip"] = 2.0 * ps.micro_slip;
+    sliding["rolled_arc"] = a.rolled_arc;
+    sliding["half_width"] = a.half_width;
+  } else {
+    sliding["pivot_turns"] = a.turned;
+    sliding["link1"] = ps.slide_link1;
+    sliding["link2"] = ps.slide_link2;
+    sliding["tooth"] = ps.slide_tooth;
+    sliding["neck_spread"] = a.neck_spread;
+  }
+  sliding["band"] = a.band;
+  sliding["roller_depth"] = ps.roller_depth;
+  sliding["plate_depth"] = ps.plate_depth;
+  j["sliding_per_pass"] = std::move(sliding);
+  j["calibration"] =
+      Value::object({{"wear_coefficient", in.wear_coefficient},
+                     {"source",
+                      "given (wear_coefficient); the thesis prints no absolute wear, so no "
+                      "coefficient is fitted to it: sliding/rolling ratios do not depend on k "
+                      "(docs/models/wear.md)"},
+                     {"fitted", false}});
+  j["passes_per_hour"] = r.passes_per_hour;
+  j["block_passes"] = r.block_passes;
+  j["diagnostics"] = analysis::diagnostics_value(r.diagnostics);
+  j["units"] = analysis::units_value({{"hours", "h"},
+                                      {"percent", "%"},
+                                      {"life_hours", "h"},
+                                      {"roller", "m"},
+                                      {"plate", "m"},
+                                      {"pin", "m"},
+                                      {"bush", "m"},
+                                      {"mutual_turn", "rad"},
+                                      {"pivot_plate", "m"},
+                                      {"plate_turn", "rad"},
+                                      {"rolling_limit", "rad"},
+                                      {"rolled_turn", "rad"},
+                                      {"gross_slide", "m"},
+                                      {"micro_slip", "m"},
+                                      {"rolled_arc", "m"},
+                                      {"half_width", "m"},
+                                      {"pivot_turns", "rad"},
+                                      {"link1", "m"},
+                                      {"link2", "m"},
+                                      {"tooth", "m"},
+                                      {"neck_spread", "1"},
+                                      {"band", "m"},
+                                      {"roller_depth", "m"},
+                                      {"plate_depth", "m"},
+                                      {"wear_coefficient", "1"},
+                                      {"passes_per_hour", "1/h"},
+                                      {"block_passes", "1"},
+                                      {"limit", "SI"}});
+  return j;
+}
+
+std::string to_table(const WearAnalysis& w) {
+  const Input& in = w.input;
+  const Result& r = w.result;
+  const Articulation& a = r.first;
+  const Articulation& ps = r.pass;
+  const bool rolling = in.hinge == HingeKind::kRolling;
+  std::ostringstream out;
+  out << "Catena wear: " << (rolling ? "rolling" : "sliding")
+      << "-friction hinge chain, Archard wear on the kinematics' sliding (seed 000 section 2)\n";
+  out << "F = ";
+  if (in.tensions.empty()) {
+    out << format_g(in.tension / 1e3);
+  } else {
+    for (std::size_t i = 0; i < in.tensions.size(); ++i)
+      out << (i ? "/" : "") << format_g(in.tensions[i] / 1e3);
+  }
+  out << " kN, " << in.articulations << " articulations per pass of "
+      << format_g(a.mutual_turn * 180.0 / std::numbers::pi) << " deg, "
+      << format_g(r.passes_per_hour) << " passes/h, k = " << format_g(in.wear_coefficient) << "\n";
+  out << "pivot-plate sliding per pass: " << format_g(ps.slide_pivot_plate * 1e3) << " mm";
+  if (rolling) {
+    out << " (gross " << format_g(2.0 * ps.gross_slide * 1e3) << " mm, micro-slip "
+        << format_g(2.0 * ps.micro_slip * 1e3) << " mm; rolling limit "
+        << format_g(a.rolling_limit * 180.0 / std::numbers::pi) << " deg of a "
+        << format_g(a.plate_turn * 180.0 / std::numbers::pi) << " deg plate turn)\n";
+  } else {
+    out << " (link 1 bores " << format_g(ps.slide_link1 * 1e3) << " mm, link 2 bores "
+        << format_g(ps.slide_link2 * 1e3) << " mm; tooth " << format_g(ps.slide_tooth * 1e3)
+        << " mm)\n";
+  }
+  out << "wear depth per pass: roller (pivot) " << format_g(ps.roller_depth * 1e9) << " nm, plate "
+      << format_g(ps.plate_depth * 1e9) << " nm\n\n";
+  out << "  limit[%]   life[h]\n";
+  std::vector<double> sorted = in.limits;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t i = 0; i < sorted.size(); ++i) {
+    char line[120];
+    if (r.life_hours[i]) {
+      std::snprintf(line, sizeof line, "  %8s %9.4g\n", limit_key(sorted[i]).c_str(),
+                    *r.life_hours[i]);
+    } else {
+      std::snprintf(line, sizeof line, "  %8s %9s\n", limit_key(sorted[i]).c_str(), "never");
+    }
+    out << line;
+  }
+  out << "\nwear depth at " << format_g(r.at_end.hours) << " h: roller (pivot) "
+      << format_g(r.at_end.roller * 1e3) << " mm, plate " << format_g(r.at_end.plate * 1e3)
+      << " mm (this chain has no pin or bush)\n";
+  for (const Diagnostic& d : r.diagnostics)
+    out << "\n" << to_string(d.severity) << ": " << d.message << "\n";
+  return out.str();
+}
+
+std::vector<analysis::Column> csv_columns(const WearAnalysis& w) {
+  std::vector<analysis::Column> cols = {
+      {"hours", {}, 12}, {"percent", {}, 12}, {"roller", {}, 12}, {"plate", {}, 12}};
+  for (const Point& p : w.result.series) {
+    cols[0].values.push_back(p.hours);
+    cols[1].values.push_back(100.0 * p.elongation);
+    cols[2].values.push_back(p.roller);
+    cols[3].values.push_back(p.plate);
+  }
+  return cols;
+}
+
+Record describe(const WearAnalysis& w, const Inputs&) {
+  Record rec;
+  rec.data = to_value(w);
+  rec.diagnostics = w.result.diagnostics;
+  rec.table = to_table(w);
+  rec.columns = csv_columns(w);
+  analysis::Chart c;
+  c.title = std::string("Elongation of the ") +
+            (w.input.hinge == HingeKind::kRolling ? "rolling" : "sliding") + "-hinge chain";
+  c.x_label = "hours [h]";
+  c.y_label = "elongation [%]";
+  const Value& e = rec.data.at("elongation");
+  c.traces.push_back({w.input.hinge == HingeKind::kRolling ? "rolling" : "sliding",
+                      e.at("hours").numbers(), e.at("percent").numbers()});
+  rec.charts.push_back(std::move(c));
+  return rec;
+}
+
+analysis::Analysis make() {
+  using namespace analysis;
+  using K = QuantityKind;
+  Analysis a;
+  a.name = "wear";
+  a.command = {"wear"};
+  a.title = "Hinge wear and elongation life, sliding vs rolling hinges (seed 000 §2)";
+  a.help =
+      "Archard wear of the pivots and plates from the sliding of each articulation (engagement "
+      "criteria 24/25, hinge rolling limit eq. 21, Carter micro-slip): elongation over time and "
+      "life to the retirement limits, seed 000 section 2";
+  a.seed = "000 §2";
+  a.docs = "docs/models/wear.md";
+  a.chain_types = {"rolling-hinge", "sliding-hinge"};
+  a.formats = {.table = true, .csv = true, .drawing = false};
+  a.parameters = {
+      text("hinge", "sliding|rolling") | Required{"sliding or rolling"} | CliOnly{},
+      quantity("pitch", K::kLength, "chain pitch t") | Required{},
+      integer("teeth", 3, "z, sprocket teeth") | Required{"a whole number z >= 3"},
+      integer("strokes", 1, "m, sprocket strokes; mutual turn 360deg*m/z") | Default{"1"},
+      integer("articulations", 1, "articulations per pass (2 per sprocket)") | Default{"4"},
+      quantity("tension", K::kForce,
+               "chain tension F at every articulation, or one per articulation of a pass") |
+          Required{} | ListOf{},
+      quantity("speed", K::kSpeed, "chain speed v") | Required{},
+      quantity("loop_length", K::kLength,
+               "chain length of the loop; a pass takes loop_length/speed (give its unit: 10m)") |
+          Required{},
+      number("wear_coefficient", "Archard k of the pivot-plate pair, 0 < k < 1") | Required{},
+      quantity("plate_hardness", K::kStress,
+               "H of the plates (42 HRC = 412 HV = 4040 MPa: thesis concl. 10, ASTM E140)") |
+          Default{"4040MPa"},
+      quantity("roller_hardness", K::kStress,
+               "H of the pivots (30 HRC = 302 HV = 2962 MPa: thesis concl. 10, ASTM E140)") |
+          Default{"2962MPa"},
+      quantity("contact_length", K::kLength, "L, bearing length of one pivot-plate interface") |
+          Required{},
+      number("friction", "f, pivot-plate friction, 0 < f < 1") | Required{},
+      number("limits", "retirement elongations in percent") | Default{"1.5,2,3"} | ListOf{},
+      number("block_passes", "passes per block between re-solves (0: automatic)") | Default{"0"},
+      integer("samples", 3, "samples of one articulation") | Default{"181"},
+      quantity("journal_diameter", K::kLength, "sliding: d1, pivot neck in the plate bore") |
+          Default{"40mm"},
+      quantity("tooth_diameter", K::kLength, "sliding: d2, pivot on the tooth") | Default{"40mm"},
+      number("tooth_friction", "sliding: pivot-tooth friction in (24)/(25) (default = friction)"),
+      quantity("flank_angle", K::kAngle, "sliding: psi, tooth normal's tilt") | Default{"0deg"},
+      quantity("pin_diameter", K::kLength, "rolling: d, pivot's cylindrical part"),
+      quantity("half_thickness", K::kLength, "rolling: a, centre to working face"),
+      quantity("plate_radius", K::kLength, "rolling: R1, plate's working arc"),
+      quantity("roller_radius", K::kLength, "rolling: R2 of the faces (default: eq. 6)"),
+      choice("rolling_limit", {"friction", "guided"},
+             "rolling: friction = roll to eq. (21) then slide; guided = roll throughout") |
+          Default{"friction"},
+      choice("creep", {"carter", "none"}, "rolling: micro-slip law of the rolling contact") |
+          Default{"carter"},
+  };
+  a.check = check;
+  a.variants = {
+      {"rolling-hinge", {{{"hinge", "rolling"}}, kSlidingKeys}},
+      {"sliding-hinge", {{{"hinge", "sliding"}}, kRollingKeys}},
+  };
+  set_functions<WearAnalysis>(a, wear_analysis_run, describe);
+  return a;
+}
+
+}  // namespace
+
+WearAnalysis wear_analysis_run(const analysis::Inputs& in) {
+  WearAnalysis w;
+  Input& x = w.input;
+  x.hinge = in.text("hinge") == "rolling" ? HingeKind::kRolling : HingeKind::kSliding;
+  x.pitch = in.number("pitch");
+  x.teeth = in.integer("teeth");
+  x.strokes = in.integer("strokes");
+  x.articulations = in.integer("articulations");
+  x.tension = in.number("tension");
+  if (in.list("tension").size() > 1) {
+    x.tensions = in.list("tension");
+    if (!in.given("articulations")) x.articulations = static_cast<int>(x.tensions.size());
+  }
+  x.speed = in.number("speed");
+  x.loop_length = in.number("loop_length");
+  x.wear_coefficient = in.number("wear_coefficient");
+  x.plate_hardness = in.number("plate_hardness");
+  x.roller_hardness = in.number("roller_hardness");
+  x.contact_length = in.number("contact_length");
+  x.friction = in.number("friction");
+  x.limits.clear();
+  for (double l : in.list("limits")) x.limits.push_back(l / 100.0);
+  x.block_passes = in.number("block_passes");
+  x.samples = in.integer("samples");
+  if (x.hinge == HingeKind::kSliding) {
+    x.journal_diameter = in.number("journal_diameter");
+    x.tooth_diameter = in.number("tooth_diameter");
+    x.tooth_friction = in.optional("tooth_friction").value_or(-1.0);
+    x.flank_angle = in.number("flank_angle");
+  } else {
+    x.geometry.pin_diameter = in.number("pin_diameter");
+    x.geometry.half_thickness = in.number("half_thickness");
+    x.geometry.plate_radius = in.number("plate_radius");
+    if (const auto r2 = in.optional("roller_radius")) x.geometry.roller_radius = *r2;
+    x.limit =
+        in.text("rolling_limit") == "guided" ? RollingLimit::kGuided : RollingLimit::kFriction;
+    x.creep = in.text("creep") == "none" ? Creep::kNone : Creep::kCarter;
+  }
+  w.result = run(x);
+  return w;
+}
+
+const analysis::Analysis& wear_analysis() {
+  static const analysis::Analysis a = make();
+  return a;
+}
+
+}  // namespace catena::wear
