@@ -75,8 +75,14 @@ void validate_inputs(const Inputs& in, const Hinge& h, const Loads& l) {
   const auto found = validate(l);
   issues.insert(issues.end(), found.begin(), found.end());
   const std::optional<double> pitch = in.optional("pitch");
-  if (pitch && (!std::isfinite(*pitch) || *pitch <= 0))
+  if (pitch && (!std::isfinite(*pitch) || *pitch <= 0)) {
     issues.push_back({"pitch", format_g(*pitch), "a pitch > 0"});
+  } else if (pitch && std::isfinite(h.pin_diameter) && h.pin_diameter > 0 &&
+             !(*pitch > h.pin_diameter)) {  // the pins of one link would overlap
+    issues.push_back({"pitch", in.text("pitch"),
+                      "a pitch t > the pin diameter d = " + format_g(h.pin_diameter * 1e3) +
+                          " mm (two pins a pitch apart)"});
+  }
   const double clearance = in.number("clearance");
   if (!(clearance >= 0.0) || clearance > 0.5 * h.pin_diameter)
     issues.push_back({"clearance", in.text("clearance"), "a clearance from 0 to d/2"});
