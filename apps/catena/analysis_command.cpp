@@ -59,6 +59,7 @@ struct State {
   std::map<std::string, std::string> texts;
   std::map<std::string, bool> flags;
   std::string format, output, csv, svg, dxf;
+  bool allow_large = false;
 };
 
 }  // namespace
@@ -90,6 +91,11 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
     }
     CLI::Option* o = cmd->add_option(names, state->texts[p.name], help_of(p));
     if (!p.choices.empty()) o->check(CLI::IsMember(p.choices));
+  }
+  if (a.has_size_caps()) {
+    cmd->add_flag("--allow-large", state->allow_large,
+                  "run sizes (points, harmonics, nodes, count, slices) above their caps; "
+                  "docs/reliability.md lists the caps and estimates");
   }
   std::vector<std::string> formats;
   if (a.formats.table) formats.push_back("table");
@@ -133,7 +139,11 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
       const CLI::Option* o = from_parent(name);
       if (o != nullptr && !o->results().empty()) *text = o->results().back();
     }
+    if (const CLI::Option* o = from_parent("--allow-large")) state->allow_large = o->count() > 0;
     std::vector<io::RawInput> raw;
+    if (state->allow_large)
+      raw.push_back(
+          {std::string(analysis::kAllowLarge), "true", io::RawInput::Type::kBoolean, {}, {}});
     for (const Parameter& p : a.parameters) {
       if (p.type == ParameterType::kFlag) {
         if (state->flags[p.name])

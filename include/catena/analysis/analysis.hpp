@@ -51,8 +51,15 @@ struct Analysis {
   };
   std::vector<std::pair<std::string, Variant>> variants;
 
-  /// run, then describe; then every result field that is not finite becomes an error diagnostic
-  /// (diagnose_non_finite), so no front end shows a silent null.
+  /// The problems of the size parameters of `inputs` whose value is above its cap (unless
+  /// `inputs.large_allowed()`), each naming the value, the estimated time and memory and the
+  /// cap; named by parameter key. The binder appends them; `evaluate` throws them.
+  std::vector<Issue> size_issues(const Inputs& inputs) const;
+  /// True when some parameter has a cap (the command line then offers --allow-large).
+  bool has_size_caps() const;
+  /// Refuses sizes above their caps (size_issues), then run, then describe; then every result field
+  /// that is not finite becomes an error diagnostic (diagnose_non_finite), so no front end shows a
+  /// silent null.
   Record evaluate(const Inputs& inputs) const;
   const Parameter* parameter(std::string_view key) const;
   /// True when an issue's field is a parameter key or a model field ("joint F21 stiffness") that a

@@ -16,6 +16,25 @@
 
 namespace catena::analysis {
 
+/// The key that lets a run exceed the caps of its size parameters: `--allow-large` on the
+/// command line, `allow_large = true` in an [analyses.<name>] table, `allow_large="true"` in
+/// the Python module. Not a parameter of any table: the binder reads it for every analysis.
+inline constexpr std::string_view kAllowLarge = "allow_large";
+
+/// The cost of a size parameter (points, harmonics, nodes, count, slices): a run's time and
+/// memory estimated as `seconds`·n^`time_power` and `bytes`·n^`memory_power` (the constants
+/// measured on the reference machine, docs/reliability.md), and the cap on n beyond which the
+/// binder refuses the value unless allow_large is given. `cap == 0`: not a size parameter.
+struct Work {
+  std::int64_t cap = 0;
+  double seconds = 0.0;
+  double time_power = 1.0;
+  double bytes = 0.0;
+  double memory_power = 1.0;
+  double estimated_seconds(double n) const { return seconds * std::pow(n, time_power); }
+  double estimated_bytes(double n) const { return bytes * std::pow(n, memory_power); }
+};
+
 enum class ParameterType {
   kQuantity,  ///< a dimensional value with a unit ("64mm"); bare number: the kind's default unit
   kNumber,    ///< a plain real (a ratio, an exponent, a factor)
@@ -64,6 +83,8 @@ struct Parameter {
   /// Other names of its flag on the command line ("r1" → --r1), kept for scripts that used
   /// them; not keys of case files.
   std::vector<std::string> aliases;
+  /// kInteger size parameters: the estimated work of a value and its cap.
+  Work work;
 };
 
 /// One bound input: what the user gave (or the default) and its value in SI.
@@ -115,10 +136,14 @@ class Inputs {
   /// work, and reports its results, only then.
   bool drawing_wanted() const { return drawing_wanted_; }
   void want_drawing(bool wanted = true) { drawing_wanted_ = wanted; }
+  /// The user allowed size parameters beyond their caps (kAllowLarge).
+  bool large_allowed() const { return allow_large_; }
+  void allow_large(bool allowed = true) { allow_large_ = allowed; }
 
  private:
   const std::vector<Parameter>* parameters_ = nullptr;
   bool drawing_wanted_ = false;
+  bool allow_large_ = false;
   std::map<std::string, InputValue, std::less<>> values_;
 };
 
@@ -162,5 +187,6 @@ Parameter operator|(Parameter p, const Expects& e);
 Parameter operator|(Parameter p, CliOnly);
 Parameter operator|(Parameter p, Positional);
 Parameter operator|(Parameter p, const Alias& a);
+Parameter operator|(Parameter p, const Work& w);
 
 }  // namespace catena::analysis

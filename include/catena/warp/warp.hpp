@@ -53,12 +53,26 @@ struct Load {
 /// Every problem with the inputs (field, value, expected range).
 std::vector<Issue> validate(const Warp& w, const Load& load);
 
+/// `converged` means both residual tests passed: the solver's (`residual` ≤ `tolerance`) and
+/// the equilibrium of the reported joint forces (`equilibrium_residual` ≤
+/// `equilibrium_tolerance`), all finite.
 struct SolverSummary {
   bool converged = false;
   int iterations = 0;
-  double residual = 0.0;  ///< [N] max |residual| of the support laws and force equilibrium
+  double residual = 0.0;   ///< [N] max |residual| of the support laws and force equilibrium
+  double tolerance = 0.0;  ///< [N] the solver's bound on `residual`
+  /// [N] max(|F − ΣR|, |F·L1 − ΣR z|/(z4 − z1)) of the reported joint forces
+  double equilibrium_residual = 0.0;
+  double equilibrium_tolerance = 0.0;  ///< [N] kEquilibriumTolerance·F
   std::string termination;
 };
+
+/// [-] relative to F: the reported joint forces balance F (and its moment) to this.
+inline constexpr double kEquilibriumTolerance = 1e-6;
+/// [N] the largest tooth load accepted (far above any chain's; keeps the joint laws finite).
+inline constexpr double kMaxForce = 1e9;
+/// [m] the largest joint clearance accepted (a clearance is micrometres to a millimetre).
+inline constexpr double kMaxClearance = 0.1;
 
 struct WarpResult {
   std::array<double, 4> force{};           ///< [N] R_i ≥ 0 (F21, F11, F12, F22)

@@ -110,6 +110,10 @@ Parameter operator|(Parameter p, const Alias& a) {
   p.aliases.push_back(a.name);
   return p;
 }
+Parameter operator|(Parameter p, const Work& w) {
+  p.work = w;
+  return p;
+}
 
 // ---- records
 
@@ -283,7 +287,47 @@ const Parameter* Analysis::table_field(const std::string& path) const {
   return nullptr;
 }
 
+namespace {
+// "0.42", "8.5", "260", "65000", "2.6e+07": two digits below 100, whole numbers to a million.
+std::string estimate_number(double v) {
+  if (v < 100.0 || v >= 1e6) return format_g(v, 2);
+  char b[32];
+  std::snprintf(b, sizeof b, "%.0f", v);
+  return b;
+}
+std::string estimate_text(double seconds, double bytes) {
+  return estimate_number(seconds) + " s and " + estimate_number(bytes / 1e6) + " MB";
+}
+}  // namespace
+
+std::vector<Issue> Analysis::size_issues(const Inputs& inputs) const {
+  std::vector<Issue> issues;
+  if (inputs.large_allowed()) return issues;
+  for (const Parameter& p : parameters) {
+    if (p.type != ParameterType::kInteger || p.work.cap <= 0) continue;
+    const InputValue& v = inputs.at(p.name);
+    if (!v.present || v.integer <= p.work.cap) continue;
+    const double n = static_cast<double>(v.integer);
+    const double cap = static_cast<double>(p.work.cap);
+    issues.push_back(
+        {p.name, "'" + v.text + "'",
+         "at most " + std::to_string(p.work.cap) + " (estimated " +
+             estimate_text(p.work.estimated_seconds(n), p.work.estimated_bytes(n)) +
+             "; at the cap " +
+             estimate_text(p.work.estimated_seconds(cap), p.work.estimated_bytes(cap)) +
+             "); allow_large (--allow-large) runs it anyway"});
+  }
+  return issues;
+}
+
+bool Analysis::has_size_caps() const {
+  return std::any_of(parameters.begin(), parameters.end(), [](const Parameter& p) {
+    return p.type == ParameterType::kInteger && p.work.cap > 0;
+  });
+}
+
 Record Analysis::evaluate(const Inputs& inputs) const {
+  throw_if_any(size_issues(inputs));
   Record record = describe(run(inputs), inputs);
   diagnose_non_finite(record);
   return record;

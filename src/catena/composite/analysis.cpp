@@ -15,6 +15,13 @@
 namespace catena::composite {
 namespace {
 
+// The work of the ring solver's sizes (docs/reliability.md): the harmonics N cost 6.6 ns·N²
+// and 2 kB·N (N = 40 000: 10.6 s, 31 MB max RSS; the N = 200 000 took > 600 s and
+// 415 MB), the sweep's nodes m 0.4 ms and 530 B a node (m = 30 000: 12 s, 16 MB).
+const analysis::Work kHarmonicsWork{
+    .cap = 20000, .seconds = 6.6e-9, .time_power = 2.0, .bytes = 2000.0};
+const analysis::Work kNodesWork{.cap = 20000, .seconds = 400e-6, .bytes = 530.0};
+
 using analysis::format_g;
 using analysis::Inputs;
 using analysis::Record;
@@ -308,8 +315,9 @@ analysis::Analysis make_ring() {
       quantity("gap", K::kLength, "the full opening 2*delta between the half-discs") |
           Required{"the full opening 2*delta between the half-discs"},
       integer("harmonics", 0,
-              "highest even harmonic N (default 2*ceil(100/(1 - r1/r2)), at least 40)"),
-      integer("nodes", 0, "sweep intervals m (default: h*N/alpha <= 0.1)"),
+              "highest even harmonic N (default 2*ceil(100/(1 - r1/r2)), at least 40)") |
+          kHarmonicsWork,
+      integer("nodes", 0, "sweep intervals m (default: h*N/alpha <= 0.1)") | kNodesWork,
       integer("points", 0, "output radii from r1 to r2, odd") | Default{"41"},
       choice("method", {"exact", "sweep"}, "exact (powers r^lambda) or sweep (the paper's)") |
           Default{"exact"},
@@ -514,7 +522,7 @@ analysis::Analysis make_capacity() {
       number("nu_phi_r", "−ε_r/ε_φ under hoop stress") | Expects{"a ratio ≥ 0"},
       quantity("inner_radius", K::kLength, "r1"),
       quantity("outer_radius", K::kLength, "r2"),
-      integer("harmonics", 2, "ring solver harmonics (default: converged)"),
+      integer("harmonics", 2, "ring solver harmonics (default: converged)") | kHarmonicsWork,
       quantity("steel_mass", K::kMass, "steel link mass for the comparison"),
       quantity("link_mass", K::kMass, "composite link mass for the comparison"),
   };
@@ -709,7 +717,7 @@ analysis::Analysis make_design() {
       quantity("steel_strength", K::kStress, "steel plate σ_B for the comparison"),
       quantity("steel_thickness", K::kLength, "steel plate thickness"),
       quantity("steel_density", K::kDensity, "steel plate density") | Default{"7850"},
-      integer("harmonics", 2, "ring solver harmonics (default: converged)"),
+      integer("harmonics", 2, "ring solver harmonics (default: converged)") | kHarmonicsWork,
   };
   a.check = design_check;
   set_functions<DesignAnalysis>(a, ring_design_analysis_run, design_describe);

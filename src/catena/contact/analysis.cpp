@@ -21,7 +21,8 @@ using analysis::Value;
 
 constexpr double kArcmin = std::numbers::pi / 10800.0;
 constexpr int kMaxSlices = 20001;
-constexpr double kMaxSliceWork = 2e6;  // slices × sweep points: a few seconds at most
+constexpr double kMaxSliceWork = 2e6;     // slices × sweep points: a few seconds at most
+constexpr double kMaxGaugeRatio = 500.0;  // |dh/B|: φ = arctg(500) = 89.885°
 
 // ---------------------------------------------------------------------------------------------
 // contact: inputs
@@ -124,12 +125,28 @@ void check_contact(const Inputs& in, std::vector<Issue>& issues) {
     issues.push_back({"skew", in.text("skew"), "either --skew or the gauge readings, not both"});
   if (gauge) {
     take("skew", false);  // the gauge's skew is the one read
+    // one problem per reading: a missing one is named as missing, not parsed as a unit
+    const bool both = in.given("skew_gauge_dh") && in.given("skew_gauge_base");
     for (const char* key : {"skew_gauge_dh", "skew_gauge_base"}) {
       take(key);
-      if (!in.given(key)) (void)io::parse_quantity("(missing)", QuantityKind::kLength, key, issues);
+      if (!in.given(key))
+        issues.push_back({key, "(missing)",
+                          std::string("a length with ") +
+                              (std::string_view(key) == "skew_gauge_dh" ? "--skew-gauge-base"
+                                                                        : "--skew-gauge-dh") +
+                              ": the gauge's two readings give φ = arctg(dh/B)"});
     }
-    if (!(in.number("skew_gauge_base") > 0))
+    const double dh = in.number("skew_gauge_dh"), base = in.number("skew_gauge_base");
+    if (in.given("skew_gauge_base") && std::isfinite(base) && !(base > 0)) {
       issues.push_back({"skew_gauge_base", in.text("skew_gauge_base"), "a base B > 0"});
+    } else if (both && std::isfinite(dh) && std::isfinite(base) &&
+               !(std::abs(dh / base) <= kMaxGaugeRatio)) {
+      // φ = arctg(dh/B) reaches 90° (or dh/B overflows): the reading, not --skew, is wrong
+      issues.push_back({"skew_gauge_dh", in.text("skew_gauge_dh"),
+                        "a reading |dh| ≤ " + format_g(kMaxGaugeRatio) +
+                            "·B = " + format_g(kMaxGaugeRatio * base * 1e3) +
+                            " mm (φ = arctg(dh/B) below 89.9°)"});
+    }
   } else if (in.given("skew")) {
     take("skew");
   } else if (!in.given("skew_sweep")) {
@@ -168,6 +185,14 @@ void check_contact(const Inputs& in, std::vector<Issue>& issues) {
          "a pitch of the paper's γ table (12.7, 15.875, 19.05, 25.4 mm), or γ given with --gamma "
          "(no extrapolation)"});
   }
+
+  // a chain's rollers sit one pitch apart: a roller as large as the pitch cannot be
+  const double roller = length_or_chain(in, "roller_diameter",
+                                        chain ? chain->roller_diameter : std::optional<double>());
+  if (std::isfinite(roller) && std::isfinite(pitch) && roller > 0 && pitch > 0 && !(roller < pitch))
+    issues.push_back({"roller_diameter", format_g(roller * 1e3) + " mm",
+                      "a roller diameter D_p < the pitch p = " + format_g(pitch * 1e3) +
+                          " mm (neighbouring rollers would overlap)"});
 
   take("slices");
   const int slices = in.integer("slices");

@@ -11,13 +11,20 @@ namespace catena::contact {
 namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kArcminute = kPi / (180.0 * 60.0);  // [rad]
+constexpr double kMaxLength = 10.0;                  // [m] roller and tooth sizes
 }  // namespace
 
 std::vector<Issue> validate(const RollerTooth& c) {
   std::vector<Issue> issues;
-  check::finite_positive(issues, "roller_diameter", c.roller_diameter, "m");
-  check::finite_positive(issues, "roller_length", c.roller_length, "m");
-  check::finite_positive(issues, "tooth_radius", c.tooth_radius, "m");
+  // Lengths up to 10 m: beyond them the slice law's limit load π·E*·b²/(4R) overflows.
+  for (const auto& [key, value] :
+       {std::pair{"roller_diameter", c.roller_diameter},
+        std::pair{"roller_length", c.roller_length}, std::pair{"tooth_radius", c.tooth_radius}}) {
+    check::finite_positive(issues, key, value, "m");
+    if (std::isfinite(value) && value > kMaxLength)
+      issues.push_back({key, check::format_si(value, "m"),
+                        "a length 0 < x ≤ " + check::format_si(kMaxLength, "m")});
+  }
   // The tooth's constants are reported under their own names, and only when they differ from
   // the roller's: one bad --modulus for both bodies is one problem, not two.
   const bool same = c.tooth.modulus == c.roller.modulus && c.tooth.poisson == c.roller.poisson;
@@ -122,6 +129,10 @@ SliceResult slice_model(const RollerTooth& c, double load, double skew, const Sl
   for (int k = 0; k < n; ++k) r.s.push_back(-0.5 * c.roller_length + (k + 0.5) * w);
   const double q_mean = load / c.roller_length;
   const double q_max = slice_load_limit(c);
+  if (!std::isfinite(q_max) || !(q_max > 0)) {  // guarded by validate's ranges; never a bracket
+    throw InputError({{"roller_diameter", check::format_si(c.roller_diameter, "m"),
+                       "a roller whose slice-law limit load is finite (smaller D_p, r1, E)"}});
+  }
   if (q_mean * n >=
       q_max * (n - 1)) {  // even spread over the roller it would exceed the law's range
     throw InputError({{"load", check::format_si(load, "N"),

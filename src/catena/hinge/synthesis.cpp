@@ -124,11 +124,14 @@ std::vector<Issue> validate(const Loads& l) {
   positive("allowable_shear", l.allowable_shear, "Pa");
   positive("contact_length", l.contact_length, "m");
   positive("allowable_contact", l.allowable_contact, "Pa");
-  check::finite_positive(issues, "modulus", l.plate.modulus, "Pa");
-  check::finite_positive(issues, "modulus", l.roller.modulus, "Pa");
-  for (double nu : {l.plate.poisson, l.roller.poisson}) {
-    if (!std::isfinite(nu) || nu < 0.0 || nu >= 0.5) {
-      issues.push_back({"poisson", check::format_si(nu, ""), "0 ≤ ν < 0.5"});
+  // One problem per value: plate and roller share --modulus and --poisson, so the roller's
+  // are checked only when they differ from the plate's.
+  const bool same = l.roller.modulus == l.plate.modulus && l.roller.poisson == l.plate.poisson;
+  for (const Elastic* e : {&l.plate, &l.roller}) {
+    if (same && e == &l.roller) break;
+    check::finite_positive(issues, "modulus", e->modulus, "Pa");
+    if (!std::isfinite(e->poisson) || e->poisson < 0.0 || e->poisson >= 0.5) {
+      issues.push_back({"poisson", check::format_si(e->poisson, ""), "0 ≤ ν < 0.5"});
     }
   }
   if (l.friction && (!std::isfinite(*l.friction) || *l.friction < 0.0)) {

@@ -110,6 +110,14 @@ analysis::Inputs bind(const analysis::Analysis& a, const std::vector<RawInput>& 
   analysis::Inputs in(&a.parameters);
   std::vector<const RawInput*> given(a.parameters.size(), nullptr);
   for (const RawInput& r : raw) {
+    if (r.key == analysis::kAllowLarge) {  // not a parameter: lifts the caps of the sizes
+      if ((r.type == RawInput::Type::kBoolean || r.type == RawInput::Type::kText) &&
+          (r.text == "true" || r.text == "false"))
+        in.allow_large(r.text == "true");
+      else
+        issues.push_back({r.key, r.text, "true or false"});
+      continue;
+    }
     bool found = false;
     for (std::size_t i = 0; i < a.parameters.size(); ++i) {
       if (a.parameters[i].name == r.key) {
@@ -190,6 +198,7 @@ analysis::Inputs bind(const analysis::Analysis& a, const std::vector<RawInput>& 
       parse_scalar(p, v.text, v, issues);
     }
   }
+  for (Issue& issue : a.size_issues(in)) issues.push_back(std::move(issue));
   if (a.check) a.check(in, issues);
   return in;
 }

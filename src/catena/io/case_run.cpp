@@ -169,7 +169,10 @@ Planned plan(const Analysis& a, const std::string& name, const CaseFile& file,
     if (v.path.rfind(prefix, 0) != 0) continue;
     const std::string key = v.path.substr(prefix.size());
     const Parameter* param = a.parameter(key);
-    if (kOutputFlags.count(key)) {
+    if (key == analysis::kAllowLarge) {  // lifts the caps of the size parameters
+      p.raw.push_back({key, v.text, raw_type(v.type), {}, {}});
+      p.path_of[key] = v.path;
+    } else if (kOutputFlags.count(key)) {
       issues.push_back({v.path, v.text,
                         "no output option in a case file: 'catena report' and "
                         "'catena run' choose the outputs"});

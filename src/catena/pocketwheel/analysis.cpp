@@ -290,7 +290,9 @@ analysis::Analysis make() {
       integer("teeth", 3, "number of teeth (pockets) z, >= 3") | Required{} | Example{"8"},
       quantity("omega", K::kAngularSpeed, "wheel angular speed (5 1/s, 47.75 rpm)") | Required{} |
           Example{"5 1/s"},
-      integer("points", 2, "samples over [0, 2pi/z], both ends") | Default{"721"},
+      // Work: 65 µs and 850 B a point (10⁶ points: 65 s, 844 MB max RSS; docs/reliability.md).
+      integer("points", 2, "samples over [0, 2pi/z], both ends") | Default{"721"} |
+          Work{.cap = 100000, .seconds = 65e-6, .bytes = 850.0},
       quantity("strand_mass", K::kMass,
                "mass moving with the strand, for the inertial force -M a_x"),
       quantity("guide_end", K::kLength,

@@ -238,10 +238,17 @@ std::vector<Issue> validate_with_geometry(const PocketWheel& wheel, const Guide&
   if (guide.kind == GuideKind::kHeight)
     check::finite_positive(issues, "guide_height", guide.height, "m");
   if (!issues.empty()) return issues;
+  // Far beyond the wheel the strand's kinematics lose the wheel's radius to round-off (the
+  // l − R·sin θ of every phase): a range, not a bogus minimum, names the problem.
+  constexpr double kMaxEndRadii = 1e6;  // 2000 m (12 000·R) still agrees with free run-on
   if (guide.end_distance <= g.pitch_radius) {
     issues.push_back(
         {"guide_end", check::format_si(guide.end_distance, "m"),
          "a guide end outside the pitch circle: l > R = " + check::format_si(g.pitch_radius, "m")});
+  } else if (guide.end_distance > kMaxEndRadii * g.pitch_radius) {
+    issues.push_back({"guide_end", check::format_si(guide.end_distance, "m"),
+                      "a guide end R < l ≤ 10⁶·R: " + check::format_si(g.pitch_radius, "m") +
+                          " < l ≤ " + check::format_si(kMaxEndRadii * g.pitch_radius, "m")});
   }
   if (guide.kind == GuideKind::kHeight && (guide.height < g.chordal_height * (1.0 - 1e-12) ||
                                            guide.height > g.pitch_radius * (1.0 + 1e-12))) {

@@ -119,12 +119,21 @@ std::vector<Issue> validate(const Input& in) {
   const double gap_hi = h.heights[2] - 0.5 * h.widths[2];
   const double t_lo = l.load_height - 0.5 * l.tooth_width;
   const double t_hi = l.load_height + 0.5 * l.tooth_width;
-  if (std::isfinite(gap_lo) && std::isfinite(gap_hi) && std::isfinite(t_lo) &&
-      std::isfinite(t_hi) && l.tooth_width >= 0 && gap_hi > gap_lo &&
-      !(t_lo >= gap_lo - 1e-12 && t_hi <= gap_hi + 1e-12))
+  if (std::isfinite(gap_lo) && std::isfinite(gap_hi) && std::isfinite(l.tooth_width) &&
+      l.tooth_width >= 0 && gap_hi > gap_lo && l.tooth_width > gap_hi - gap_lo + 1e-12) {
+    // no L1 fits a tooth wider than the gap: the width is what is wrong
+    out.push_back({"tooth_width", check::format_si(l.tooth_width, "m"),
+                   "a tooth width ≤ the gap between the inner plates, " +
+                       check::format_si(gap_hi - gap_lo, "m") + " ([" +
+                       check::format_si(gap_lo, "m") + ", " + check::format_si(gap_hi, "m") +
+                       "])"});
+  } else if (std::isfinite(gap_lo) && std::isfinite(gap_hi) && std::isfinite(t_lo) &&
+             std::isfinite(t_hi) && l.tooth_width >= 0 && gap_hi > gap_lo &&
+             !(t_lo >= gap_lo - 1e-12 && t_hi <= gap_hi + 1e-12)) {
     out.push_back({"load_height", check::format_si(l.load_height, "m"),
                    "the tooth load (L1 ± tooth width/2) between the inner plates, within [" +
                        check::format_si(gap_lo, "m") + ", " + check::format_si(gap_hi, "m") + "]"});
+  }
 
   check::finite_positive(out, "roller_yield", m.roller_yield, "Pa");
   check::finite_positive(out, "plate_yield", m.plate_yield, "Pa");

@@ -88,7 +88,10 @@ Value to_value(const WarpAnalysis& a) {
     p["solver"] = Value::object({{"converged", r.summary.converged},
                                  {"iterations", r.summary.iterations},
                                  {"residual", r.summary.residual},
-                                 {"termination", r.summary.termination}});
+                                 {"termination", r.summary.termination},
+                                 {"tolerance", r.summary.tolerance},
+                                 {"equilibrium_residual", r.summary.equilibrium_residual},
+                                 {"equilibrium_tolerance", r.summary.equilibrium_tolerance}});
     points.push_back(std::move(p));
   }
   Value diagnostics = Value::array();
@@ -124,6 +127,9 @@ Value to_value(const WarpAnalysis& a) {
                                       {"force_residual", "N"},
                                       {"moment_residual", "N*m"},
                                       {"residual", "N"},
+                                      {"tolerance", "N"},
+                                      {"equilibrium_residual", "N"},
+                                      {"equilibrium_tolerance", "N"},
                                       {"stiffness", "N/m^n"},
                                       {"exponent", "1"}});
   j["diagnostics"] = std::move(diagnostics);

@@ -139,7 +139,8 @@ FeSolution fe_solve(const Warp& w, const Load& load, int elements, double tolera
   sol.u = u;
   sol.joint_node = sn;
   sol.residual = rn;
-  sol.converged = rn <= tolerance * f + floor_of(u);
+  sol.tolerance = tolerance * f + floor_of(u);
+  sol.converged = rn <= sol.tolerance;
   return sol;
 }
 

@@ -140,6 +140,7 @@ WarpResult flexibility_impl(const Warp& w, const Load& load, const SolveOptions&
                                                   : "iteration limit (after load continuation)";
   out.summary.iterations = it;
   out.summary.residual = rn * f;
+  out.summary.tolerance = options.tolerance * f;
   return build_result(w, load, s, out.summary, options);
 }
 

@@ -55,7 +55,8 @@ struct FeSolution {
   std::vector<double> z, u;  // node heights, (w, θ) per node
   std::array<int, 4> joint_node{};
   int iterations = 0;
-  double residual = 0;  // [N] max |nodal force residual|
+  double residual = 0;   // [N] max |nodal force residual|
+  double tolerance = 0;  // [N] tolerance·F + the round-off floor the residual was tested against
   bool converged = false;
 };
 

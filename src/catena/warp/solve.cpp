@@ -41,6 +41,7 @@ WarpResult solve(const Warp& w, const Load& load, const SolveOptions& options) {
   SolverSummary summary;
   summary.iterations = sol.iterations;
   summary.residual = sol.residual;
+  summary.tolerance = sol.tolerance;
   summary.converged = sol.converged;
   summary.termination =
       summary.converged

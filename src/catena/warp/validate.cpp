@@ -15,8 +15,9 @@ std::vector<Issue> validate(const Warp& w, const Load& load) {
     const Support& s = w.supports[i];
     const std::string name = std::string("joint ") + kJointName[i];
     check::finite(out, (name + " height").c_str(), s.height, "m");
-    if (!(std::isfinite(s.clearance) && s.clearance >= 0))
-      out.push_back({name + " clearance", check::format_si(s.clearance, "m"), "a clearance ≥ 0 m"});
+    if (!(std::isfinite(s.clearance) && s.clearance >= 0 && s.clearance <= kMaxClearance))
+      out.push_back({name + " clearance", check::format_si(s.clearance, "m"),
+                     "a clearance 0 … " + check::format_si(kMaxClearance, "m")});
     check::finite_positive(out, (name + " stiffness").c_str(), s.stiffness, "N/m^n");
     check::finite_positive(out, (name + " width").c_str(), s.width, "m");
     if (i > 0 && std::isfinite(s.height) && std::isfinite(w.supports[i - 1].height) &&
@@ -37,7 +38,9 @@ std::vector<Issue> validate(const Warp& w, const Load& load) {
     if (!(std::isfinite(w.r2) && w.r2 > w.r1))
       out.push_back({"r2", check::format_si(w.r2, "m"), "R2 > R1 (the roller's concave face)"});
   }
-  check::finite_positive(out, "force", load.force, "N");
+  if (!(std::isfinite(load.force) && load.force > 0 && load.force <= kMaxForce))
+    out.push_back({"force", check::format_si(load.force, "N"),
+                   "a tooth load 0 < F ≤ " + check::format_si(kMaxForce, "N")});
   const double lo = w.supports[0].height, hi = w.supports[3].height;
   if (!std::isfinite(load.height)) {
     out.push_back({"load_height", check::format_si(load.height, "m"), "a finite height L1"});
