@@ -76,14 +76,14 @@ WarpResult build_result(const Warp& w, const Load& load, const State& s,
     out.diagnostics.push_back({Diagnostic::Severity::kInfeasible, "warp.not_converged",
                                "the joint-force solver did not converge (" +
                                    out.summary.termination + "); results are not valid",
-                               out.summary.residual, options.tolerance * f});
+                               out.summary.residual, options.tolerance * f, "N"});
   for (std::size_t i = 0; i < 4; ++i) {
     if (out.force[i] <= 0.0)
       out.diagnostics.push_back(
           {Diagnostic::Severity::kInfo, std::string("warp.joint_open.") + kJointName[i],
            std::string("joint ") + kJointName[i] +
                " carries no load: its clearance is not closed (approach ≤ clearance)",
-           out.deflection[i], w.supports[i].clearance});
+           out.deflection[i], w.supports[i].clearance, "m"});
     if (w.kind == HingeKind::kRolling && out.force[i] > 0) {
       const Elastic e{w.modulus, w.poisson};
       const double b = line_contact(out.force[i] / w.supports[i].width,
@@ -96,7 +96,7 @@ WarpResult build_result(const Warp& w, const Load& load, const State& s,
              std::string("joint ") + kJointName[i] +
                  ": Hertz half-width exceeds 0.1·R1, the conformal contact is outside Hertz' "
                  "small-contact assumption (Persson's conformal theory would apply)",
-             b, kHertzWidthLimit * w.r1});
+             b, kHertzWidthLimit * w.r1, "m"});
     }
   }
   return out;
