@@ -203,6 +203,7 @@ Record describe(const EngagementAnalysis& a, const Inputs&) {
   analysis::Chart c;
   c.title = "Tension before each seated roller around the sprocket";
   c.x_label = "roller k";
+  c.integer_x = true;
   c.y_label = "tension [" + analysis::unit_of(r, "tension") + "]";
   const Value& tension = r.at("wrap").at("tension");
   std::vector<double> k;
