@@ -85,7 +85,7 @@ TEST(ReportSection, LimitsAreInTheDisplayUnitsOfTheTables) {
   EXPECT_EQ(s.diagnostics[0].limit, "value 3.9 mm, limit 3.4 mm");
   EXPECT_EQ(s.diagnostics[1].limit, "value 1851 MPa, limit 1600 MPa");
   EXPECT_EQ(s.diagnostics[1].severity, "error");
-  EXPECT_EQ(s.diagnostics[2].limit, "value 57.6747°, limit 45°");
+  EXPECT_EQ(s.diagnostics[2].limit, "value 57.6739°, limit 45°");
   EXPECT_EQ(s.diagnostics[3].limit, "value 0.9, limit 1");
   EXPECT_EQ(s.diagnostics[4].limit, "");  // a note's numbers are context, not a check
   EXPECT_EQ(s.diagnostics[4].severity, "info");
