@@ -1,10 +1,13 @@
 // catena: command-line front end. One subcommand per analysis; no physics here.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "catena/core/error.hpp"
 #include "catena/io/atomic_file.hpp"
@@ -28,6 +31,68 @@ int finish(int status) {
   return 1;
 }
 
+// Levenshtein distance, for "did you mean".
+std::size_t distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// The candidate closest to `word`, when it is close enough to be a misspelling ("" otherwise).
+std::string closest(const std::string& word, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
+  for (const std::string& c : candidates) {
+    const std::size_t d = distance(word, c);
+    if (d < best_distance) best = c, best_distance = d;
+  }
+  return best;
+}
+
+// After a command-line error: the subcommand or flag the user probably meant, walking the
+// arguments the way the parser does (subcommands first, then each word starting with "--" that
+// the innermost subcommand does not know).
+void suggest(const CLI::App& app, int argc, char** argv) {
+  const CLI::App* at = &app;
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (word.rfind("--", 0) == 0 && word.size() > 2) {
+      const std::string name = word.substr(0, word.find('='));
+      if (at->get_option_no_throw(name) != nullptr) continue;
+      std::vector<std::string> flags;
+      for (const CLI::Option* o : at->get_options())
+        for (const std::string& l : o->get_lnames()) flags.push_back("--" + l);
+      const std::string hint = closest(name, flags);
+      if (!hint.empty()) std::cerr << "catena: '" << name << "': did you mean '" << hint << "'?\n";
+      return;
+    }
+    if (word.empty() || word[0] == '-') continue;
+    const CLI::App* next = nullptr;
+    std::vector<std::string> names;
+    for (const CLI::App* sub : at->get_subcommands([](const CLI::App*) { return true; })) {
+      names.push_back(sub->get_name());
+      if (sub->get_name() == word) next = sub;
+    }
+    if (next != nullptr) {
+      at = next;
+    } else if (at == &app) {
+      // the first word names no command: the closest command, if one is close
+      const std::string hint = closest(word, names);
+      if (!hint.empty()) std::cerr << "catena: '" << word << "': did you mean '" << hint << "'?\n";
+      return;
+    }
+  }
+}
+
 int run(int argc, char** argv) {
   CLI::App app{"Catena: chain conveyor and chain drive engineering toolkit"};
   app.set_version_flag("--version", std::string("catena ") + CATENA_VERSION);
@@ -41,6 +106,7 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     // --help and --version exit 0; every other command-line error is invalid input: status 2.
     const int status = app.exit(error);
+    if (status != 0) suggest(app, argc, argv);
     return status == 0 ? 0 : 2;
   }
   try {

@@ -5,7 +5,7 @@
 //
 // usage: node report_test.mjs REPORT.html SCREENSHOT.png WEB_DIR [EXPECTED_SECTIONS]
 import {createRequire} from 'node:module';
-import {mkdtempSync, rmSync} from 'node:fs';
+import {mkdtempSync, rmSync, statSync} from 'node:fs';
 import {tmpdir} from 'node:os';
 import path from 'node:path';
 import {pathToFileURL} from 'node:url';
@@ -19,6 +19,10 @@ const require = createRequire(path.join(path.resolve(webDir), 'package.json'));
 const {chromium} = require('playwright-core');
 
 const failures = [];
+// the embedded chart library is Plotly's partial bundle (scatter, bar, pie: ~1.1 MB), not the
+// full one with maps and 3-D (4.6 MB)
+const bytes = statSync(report).size;
+if (bytes > 2_000_000) failures.push(`report is ${bytes} bytes: is the full Plotly bundle embedded?`);
 const profile = mkdtempSync(path.join(tmpdir(), 'catena-chromium-'));
 let browser;
 try {
@@ -61,12 +65,23 @@ try {
   const drawings = await page.$$eval('div.drawing svg', (s) => s.map(
       (e) => e.getBoundingClientRect().width * e.getBoundingClientRect().height));
   for (const area of drawings) if (!(area > 0)) failures.push('a drawing has no area');
+  // a wide table scrolls inside its card instead of running out of it
+  const overflowing = await page.$$eval('main section', (s) => s.filter(
+      (e) => e.scrollWidth > e.clientWidth + 1).map((e) => e.id));
+  for (const id of overflowing) failures.push(`section '${id}' is wider than its card`);
+  // the findings card lists what it counts, each with a link to a section that exists
+  const findings = await page.$$eval('#summary ul.findings li a', (as) => as.map(
+      (a) => a.getAttribute('href')));
+  for (const href of findings) {
+    if (!(await page.$(href))) failures.push(`finding links to ${href}, which is not in the page`);
+  }
   const hash = await page.textContent('#case-hash');
   if (!/^[0-9a-f]{64}$/.test(hash || '')) failures.push(`case hash missing: '${hash}'`);
 
   await page.screenshot({path: screenshot, fullPage: true});
-  console.log(`report ${report}: ${sections.length} analyses, ${charts.length} charts, ` +
-              `${drawings.length} drawings; screenshot ${screenshot}`);
+  console.log(`report ${report} (${bytes} bytes): ${sections.length} analyses, ` +
+              `${charts.length} charts, ${drawings.length} drawings, ${findings.length} ` +
+              `findings; screenshot ${screenshot}`);
 } catch (e) {
   failures.push(`browser: ${e.message}`);
 } finally {

@@ -104,3 +104,24 @@ TEST(EngagementCli, LockedSlidingHingeIsADiagnosticNotAnError) {
 }
 
 }  // namespace
+
+// A sprocket torque of 0 (radial tooth normals) says why, and what the chain's tension drop puts
+// on the sprocket instead; a tilted flank has a torque and no such line.
+TEST(EngagementCli, AZeroTorqueIsExplained) {
+  const std::string radial =
+      "engagement --hinge sliding --pitch 125mm --teeth 8 --strokes 2 "
+      "--tension 29.4kN ";
+  const CliRun frictionless = run(radial);
+  ASSERT_EQ(frictionless.status, 0) << frictionless.err;
+  EXPECT_NE(frictionless.out.find("sprocket torque 0 kN*m"), std::string::npos);
+  EXPECT_NE(frictionless.out.find("the tension passes every roller unchanged"), std::string::npos)
+      << frictionless.out;
+  const CliRun friction = run(radial + "--friction 0.15");
+  ASSERT_EQ(friction.status, 0) << friction.err;
+  EXPECT_NE(friction.out.find("the tension drop times R·cos(gammaSigma/2), 0.509906 kN*m"),
+            std::string::npos)
+      << friction.out;
+  const CliRun tilted = run(radial + "--friction 0.15 --flank-angle 20deg");
+  ASSERT_EQ(tilted.status, 0) << tilted.err;
+  EXPECT_EQ(tilted.out.find("radial tooth normals"), std::string::npos) << tilted.out;
+}

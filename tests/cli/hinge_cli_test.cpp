@@ -127,3 +127,22 @@ TEST(HingeCli, WritesTheApertureAsSvgAndDxf) {
 }
 
 }  // namespace
+
+// A misspelt flag or command is refused (exit 2) with the closest one named; a word far from
+// every command gets no guess.
+TEST(HingeCli, MisspeltFlagsAndCommandsGetADidYouMean) {
+  const CliRun flag =
+      run("hinge --pin-diameter 40 --half-thickness 8 --plate-radius 15 --teeth 8 "
+          "--pich 125");
+  EXPECT_EQ(flag.status, 2);
+  EXPECT_NE(flag.err.find("'--pich': did you mean '--pitch'?"), std::string::npos) << flag.err;
+  const CliRun sub = run("hinge sweep --pin-diameter 40 --half-thickness 8 --teeth 8 --cont 3");
+  EXPECT_EQ(sub.status, 2);
+  EXPECT_NE(sub.err.find("did you mean '--count'?"), std::string::npos) << sub.err;
+  const CliRun command = run("hinje --pin-diameter 40");
+  EXPECT_EQ(command.status, 2);
+  EXPECT_NE(command.err.find("'hinje': did you mean 'hinge'?"), std::string::npos) << command.err;
+  const CliRun far = run("xylophone");
+  EXPECT_EQ(far.status, 2);
+  EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+}

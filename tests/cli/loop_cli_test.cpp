@@ -208,3 +208,24 @@ TEST(LoopCli, CaseFileRunsTheLoopAndNamesItsLines) {
 }
 
 }  // namespace
+
+// The report's loop section gives its lengths in one unit, the metres of its segment table and
+// chart (it once showed 90000 mm beside s in m), and its tensions in the table's kN.
+TEST(LoopCli, ReportShowsLengthsInMetresAndTensionsInKilonewtons) {
+  const std::string out =
+      (std::filesystem::temp_directory_path() / "catena_loop_cli_report.html").string();
+  const CliRun r = run("report " + std::string(CATENA_EXAMPLES_DIR) + "/000_loop.toml -o " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(out, std::ios::binary);
+  std::stringstream html;
+  html << in.rdbuf();
+  const std::string page = html.str();
+  for (const char* row :
+       {"<td>Loop length L</td><td class=\"value\">90</td><td>m</td>",
+        "<td>… at path length s</td><td class=\"value\">90</td><td>m</td>",
+        "<td>Greatest tension S max</td><td class=\"value\">12.7771</td><td>kN</td>",
+        "<th>s start [m]</th>"})
+    EXPECT_NE(page.find(row), std::string::npos) << row;
+  EXPECT_EQ(page.find("<td>mm</td>"), std::string::npos);
+  std::filesystem::remove(out);
+}

@@ -61,7 +61,62 @@ TEST(Report, ChartDataGapsAndSectionsAreWritten) {
   EXPECT_NE(html.find("could not run: no data"), std::string::npos);
   EXPECT_NE(html.find("<tr class=\"best\"><td>2</td>"), std::string::npos);
   EXPECT_NE(html.find("/*plotly*/"), std::string::npos);
-  EXPECT_NE(html.find("2 error(s)"), std::string::npos);  // the diagnostic and the failure
+  // the diagnostic and the failure are errors; nothing else was found
+  EXPECT_NE(html.find("2 errors, 0 warnings, 0 notes."), std::string::npos);
+}
+
+// The findings card lists every finding with its severity, its analysis and a link to it, and
+// counts notes apart from warnings (a composite report once said "3 warnings" for 1 and 2 notes).
+TEST(Report, FindingsAreListedWithLinksAndNotesAreNotWarnings) {
+  Report r = sample();
+  r.sections[0].diagnostics.push_back({"warning", "b is beyond 0.1 R1", ""});
+  r.sections[0].diagnostics.push_back({"info", "the corner stress depends on N", ""});
+  r.sections[0].diagnostics.push_back({"info", "a second note", ""});
+  const std::string html = to_html(r, "");
+  EXPECT_NE(html.find("2 errors, 1 warning, 2 notes."), std::string::npos);
+  const std::size_t card = html.find("<ul class=\"findings\">");
+  ASSERT_NE(card, std::string::npos);
+  const std::string list = html.substr(card, html.find("</ul>", card) - card);
+  EXPECT_NE(list.find("<li class=\"info\"><span class=\"sev\">note</span><a "
+                      "href=\"#hinge-finding-3\">Hinge</a>: the corner stress depends on N</li>"),
+            std::string::npos)
+      << list;
+  EXPECT_NE(list.find("<li class=\"warning\"><span class=\"sev\">warning</span><a "
+                      "href=\"#hinge-finding-2\">Hinge</a>: b is beyond 0.1 R1</li>"),
+            std::string::npos);
+  EXPECT_NE(list.find("href=\"#contact\">Contact</a>: could not run: no data"), std::string::npos);
+  // each link has its target
+  EXPECT_NE(html.find("id=\"hinge-finding-3\""), std::string::npos);
+  EXPECT_NE(html.find("<section id=\"contact\""), std::string::npos);
+}
+
+TEST(Report, NumberedGridsCountFromOneAndCarryTheirNote) {
+  Report r = sample();
+  r.sections[0].grids[0].numbered = true;
+  r.sections[0].grids[0].note = "Best design, highlighted: #2 (R1 = 2 mm).";
+  const std::string html = to_html(r, "");
+  EXPECT_NE(html.find("<tr><th>#</th><th>R1 [mm]</th>"), std::string::npos);
+  EXPECT_NE(html.find("<tr class=\"best\"><td class=\"n\">2</td><td>2</td>"), std::string::npos);
+  EXPECT_NE(html.find("<p class=\"note\">Best design, highlighted: #2 (R1 = 2 mm).</p>"),
+            std::string::npos);
+  // a wide grid scrolls inside its card
+  EXPECT_NE(html.find(".grid{overflow-x:auto"), std::string::npos);
+}
+
+TEST(Report, DrawingsHaveCaptionLegendAndScaleBar) {
+  Report r = sample();
+  r.sections[0].drawing_keys.push_back({"Catena hinge", {{"plate", 0x1f77b4u}}, 20.0});
+  const std::string html = to_html(r, "");
+  EXPECT_NE(html.find("<div class=\"caption\">Catena hinge</div>"), std::string::npos);
+  EXPECT_NE(html.find("background:#1f77b4\"></span>plate"), std::string::npos);
+  EXPECT_NE(html.find("scale bar 20 mm"), std::string::npos);
+}
+
+TEST(Report, IndexAxesAskForIntegerTicks) {
+  Report r = sample();
+  r.sections[0].charts[0].integer_x = true;
+  EXPECT_NE(to_html(r, "").find("\"integer\":true"), std::string::npos);
+  EXPECT_NE(to_html(sample(), "").find("\"integer\":false"), std::string::npos);
 }
 
 TEST(Report, InlinedDrawingsGetUniqueIds) {

@@ -26,6 +26,7 @@ struct Chart {
   std::string title, x_label, y_label;
   std::vector<Trace> traces;
   bool equal_axes = false;  ///< same scale on x and y (paths, outlines)
+  bool integer_x = false;   ///< x counts things (a roller index): ticks at whole numbers only
 };
 
 /// A table with columns (a sweep: one row per design; safety checks). Headers carry units.
@@ -34,6 +35,8 @@ struct Grid {
   std::vector<std::string> columns;
   std::vector<std::vector<std::string>> rows;
   std::vector<bool> highlighted;  ///< per row (e.g. the best design); may be empty
+  bool numbered = false;          ///< the report adds a column "#" counting rows from 1
+  std::string note;               ///< a line under the table (what the highlighted row is)
 };
 
 /// A named column of numbers, for CSV (`--format csv`, `--csv FILE`). A column shorter than the
@@ -43,6 +46,16 @@ struct Column {
   std::vector<double> values;
   int digits = 12;         ///< significant digits written
   bool blank_nan = false;  ///< NaN written as an empty cell (an optional value that is absent)
+};
+
+/// A person's name for a result field in the report, instead of its path in the data.
+/// `path` is matched against the end of the field's dotted path ("plate_force.lower_outer"
+/// names layouts.layout_1.plate_force.lower_outer and the same field of every layout; the
+/// longest match wins); `text` is the label with its symbol ("Plate force, lower outer F21");
+/// `unit` is the display unit when it is not display()'s ("kN" for N, "m" for m; empty:
+/// display()'s); it must be one display_scale converts to.
+struct Label {
+  std::string path, text, unit;
 };
 
 struct Record {
@@ -55,6 +68,10 @@ struct Record {
   std::string drawing_unavailable;  ///< why there is no drawing (for the --svg message)
   std::vector<Chart> charts;        ///< the report's charts
   std::vector<Grid> grids;          ///< the report's tables with columns
+  std::vector<Label> labels;        ///< the report's names for result fields (optional)
+  /// For a result with sweep `rows`: the row keys that name a design ("R1", "R2"), so that the
+  /// report names the best row by them; empty: by its number only.
+  std::vector<std::string> design_keys;
 };
 
 /// `v` with `digits` significant digits (printf's %g): numbers in tables and messages.
@@ -66,6 +83,10 @@ struct Display {
   double scale = 1.0;
 };
 Display display(const std::string& si_unit);
+
+/// The factor from `si_unit` to the display unit `unit` ("N" → "kN": 1e-3; "m" → "m": 1);
+/// NaN when the pair is not one it knows.
+double display_scale(const std::string& si_unit, const std::string& unit);
 
 /// The SI unit of `key` in the `units` object of `result` ("" when it has none).
 std::string unit_of(const Value& result, const std::string& key);

@@ -44,6 +44,9 @@ struct Diagnostic {
   std::string message;  ///< sentence naming the reason and the limit
   double value = 0.0;   ///< [SI] the value that was checked
   double limit = 0.0;   ///< [SI] the limit it was checked against
+  /// The SI unit of `value` and `limit` ("m", "Pa", "rad"; empty: a pure number), so that the
+  /// report shows the limit in the display units of the tables beside it. Not in the JSON.
+  std::string unit;
 };
 
 const char* to_string(Diagnostic::Severity severity);

@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "catena/analysis/record.hpp"
@@ -31,6 +32,14 @@ struct ReportDiagnostic {
   std::string severity, message, limit;
 };
 
+/// What a drawing of the report shows: caption, legend (layer name and colour 0xRRGGBB) and
+/// the length of its scale bar in mm (0: none).
+struct ReportDrawingKey {
+  std::string caption;
+  std::vector<std::pair<std::string, unsigned>> legend;
+  double scale_bar_mm = 0.0;
+};
+
 /// One analysis of the case.
 struct ReportSection {
   std::string id;      ///< HTML anchor, [a-z0-9_-]
@@ -42,6 +51,9 @@ struct ReportSection {
   std::vector<ReportGrid> grids;
   std::vector<ReportChart> charts;
   std::vector<std::string> drawings_svg;  ///< complete SVG documents, inlined
+  /// Per drawing (same order; may be shorter): its caption, its layers with their colours and
+  /// the length of the scale bar drawn into it.
+  std::vector<ReportDrawingKey> drawing_keys;
   std::string failure;  ///< the analysis could not run: why (then the rest is empty)
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <stdexcept>
@@ -207,6 +208,20 @@ Display display(const std::string& si_unit) {
                                                        {"1/arcmin^2", {"1/arcmin²", 1.0}}};
   const auto it = table.find(si_unit);
   return it == table.end() ? Display{si_unit, 1.0} : it->second;
+}
+
+double display_scale(const std::string& si_unit, const std::string& unit) {
+  if (unit == si_unit) return 1.0;
+  const Display d = display(si_unit);
+  if (unit == d.unit) return d.scale;
+  static const std::map<std::pair<std::string, std::string>, double> table = {
+      {{"N", "kN"}, 1e-3},
+      {{"Pa", "GPa"}, 1e-9},
+      {{"W", "kW"}, 1e-3},
+      {{"N*m", "kN·m"}, 1e-3},
+      {{"N*m", "N·m"}, 1.0}};
+  const auto it = table.find({si_unit, unit});
+  return it == table.end() ? std::numeric_limits<double>::quiet_NaN() : it->second;
 }
 
 std::string format_g(double v, int digits) {

@@ -286,7 +286,7 @@ Design design(const DesignInput& d) {
         {Diagnostic::Severity::kInfeasible, "ring.design.pitch_too_small",
          "no α gives pins that clear each other: the pitch must exceed 2 r1; the smallest r1 "
          "needed is shown as the limit",
-         d.pitch, 2.0 * p.inner_radius});
+         d.pitch, 2.0 * p.inner_radius, "m"});
   }
   if (d.steel_strength > 0.0) {
     const DesignPoint& p = out.scan[out.best];
@@ -301,7 +301,7 @@ Design design(const DesignInput& d) {
           {Diagnostic::Severity::kWarning, "ring.design.steel_plate_too_wide",
            "the steel plate that carries the load (width 2 r1 + P/(σ_B t_s)) is wider than the "
            "pitch; no steel comparison",
-           width, d.pitch});
+           width, d.pitch, "m"});
     }
   }
   return out;

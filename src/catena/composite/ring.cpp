@@ -661,7 +661,7 @@ Result analyse(const Ring& ring, const Options& options) {
          "phi = " +
              std::to_string(at * 180.0 / kPi).substr(0, 5) +
              " deg: eq. (2) assumes bilateral contact; --unilateral lets the ring separate there",
-         pmin, 0.0});
+         pmin, 0.0, "Pa"});
   }
   if (options.unilateral && res.contact_iterations > 100)
     res.diagnostics.push_back({Diagnostic::Severity::kWarning, "composite.unilateral_not_settled",
@@ -672,7 +672,7 @@ Result analyse(const Ring& ring, const Options& options) {
        "sigma_phi at (r1, pi/2), where the half-discs meet, grows without bound with the number "
        "of harmonics; it is reported for N = " +
            std::to_string(N) + " only",
-       res.corner_sigma_phi, 0.0});
+       res.corner_sigma_phi, 0.0, "Pa"});
   if (res.summary.fallbacks > 0)
     res.diagnostics.push_back({Diagnostic::Severity::kInfo, "composite.repeated_exponents",
                                "some harmonics had (nearly) repeated exponents, where the power "

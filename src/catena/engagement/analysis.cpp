@@ -181,6 +181,19 @@ std::string to_table(const EngagementAnalysis& a) {
   out << "whole wrap: " << w.rollers << " seated rollers, tension "
       << format_g(w.tension.front() / 1e3) << " -> " << format_g(w.tension.back() / 1e3)
       << " kN, sprocket torque " << format_g(w.torque / 1e3) << " kN*m (tooth normals only)\n";
+  // a torque of 0 is no failure: radial tooth normals (flank angle 0) take no moment about the
+  // axis; what the chain's tension drop puts on the sprocket then goes through tooth friction
+  if (std::abs(w.torque) <= 1e-9 * std::abs(w.tension.front()) * w.pitch_radius) {
+    // the global balance of the engaged chain: the tension drop times the side distance
+    const double pull = (w.tension.front() - w.tension.back()) * w.pitch_radius *
+                        std::cos(res.angles.gamma_sigma / 2);
+    out << "  (radial tooth normals, flank angle 0, take no moment about the axis; ";
+    if (std::abs(pull) <= 1e-9 * std::abs(w.tension.front()) * w.pitch_radius)
+      out << "the tension passes every roller unchanged, so the sprocket transmits none)\n";
+    else
+      out << "the tension drop times R·cos(gammaSigma/2), " << format_g(pull / 1e3)
+          << " kN*m, goes through friction, which this torque does not count)\n";
+  }
   for (const Diagnostic& d : res.diagnostics)
     out << "\n" << to_string(d.severity) << ": " << d.message << "\n";
   return out.str();
@@ -192,6 +205,12 @@ Record describe(const EngagementAnalysis& a, const Inputs&) {
   rec.diagnostics = a.result.diagnostics;
   rec.table = to_table(a);
   rec.columns = csv_columns(a);
+  rec.labels = {
+      {"wrap.pitch_radius", "Wrap: pitch radius R", ""},
+      {"wrap.rollers", "Wrap: seated rollers", ""},
+      {"wrap.tension", "Wrap: tension before each roller", "kN"},
+      {"wrap.tooth_load", "Wrap: tooth load of each roller", "kN"},
+      {"wrap.torque", "Wrap: sprocket torque from the tooth normals, Σ R·F_N·sin ψ", "kN·m"}};
   const Value& r = rec.data;
   const Value& series = r.at("series");
   rec.charts.push_back(analysis::series_chart(
@@ -203,6 +222,7 @@ Record describe(const EngagementAnalysis& a, const Inputs&) {
   analysis::Chart c;
   c.title = "Tension before each seated roller around the sprocket";
   c.x_label = "roller k";
+  c.integer_x = true;
   c.y_label = "tension [" + analysis::unit_of(r, "tension") + "]";
   const Value& tension = r.at("wrap").at("tension");
   std::vector<double> k;

@@ -192,7 +192,7 @@ Result solve_sliding(const SlidingInput& in) {
         {Diagnostic::Severity::kInfeasible, "engagement.tooth_lift_off",
          "N < 0 somewhere: the roller would leave the tooth (value: the least N; "
          "limit: 0)",
-         min_fn, 0.0});
+         min_fn, 0.0, "N"});
   }
   return r;
 }
@@ -372,7 +372,7 @@ Result solve_rolling(const RollingInput& in) {
         {Diagnostic::Severity::kInfeasible, "engagement.tooth_lift_off",
          "F_N < 0 somewhere: the roller would leave the tooth (value: the least "
          "F_N; limit: 0)",
-         min_fn, 0.0});
+         min_fn, 0.0, "N"});
   }
   if (senses) {
     r.diagnostics.push_back({Diagnostic::Severity::kWarning, "engagement.rolling_sense",
@@ -384,13 +384,13 @@ Result solve_rolling(const RollingInput& in) {
     r.diagnostics.push_back({Diagnostic::Severity::kWarning, "engagement.beyond_design_turn",
                              "the roller turns relative to a plate beyond the hinge's gamma_max = "
                              "180 deg*m/z (eq. 12) it was designed for",
-                             worst_turn, design_turn});
+                             worst_turn, design_turn, "rad"});
   }
   if (worst_psi > psi_max) {
     r.diagnostics.push_back({Diagnostic::Severity::kInfeasible, "engagement.contact_off_arc",
                              "the contact runs beyond the plate's working arc (psi1 > psi1_max, "
                              "eq. 5)",
-                             worst_psi, psi_max});
+                             worst_psi, psi_max, "rad"});
   }
   return r;
 }

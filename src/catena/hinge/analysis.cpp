@@ -374,6 +374,14 @@ Record describe_sweep(const SweepAnalysis& a, const Inputs&) {
                                               {"rolling_limit"}, "rolling limit"));
   rec.charts.push_back(analysis::series_chart(r, table, "Largest pitch change versus R1", "R1",
                                               {"max_pitch_change"}, "|Δt|"));
+  rec.design_keys = {"R1", "R2"};
+  rec.labels = {{"psi1_max", "ψ1max", ""},
+                {"effective_radius", "R*", ""},
+                {"contact_stress", "σH", ""},
+                {"rolling_limit", "γ roll (eq. 21)", ""},
+                {"a_min", "a min", ""},
+                {"max_pitch_change", "|Δt| max", ""},
+                {"face_margin", "face margin", ""}};
   return rec;
 }
 

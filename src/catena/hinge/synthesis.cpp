@@ -36,8 +36,8 @@ double segment(double r0, double a) {
 }
 
 Diagnostic diagnostic(Diagnostic::Severity severity, const char* code, std::string message,
-                      double value, double limit) {
-  return {severity, code, std::move(message), value, limit};
+                      double value, double limit, const char* unit) {
+  return {severity, code, std::move(message), value, limit, unit};
 }
 
 std::string mm(double metres) { return check::format_si(metres * 1e3, "mm"); }
@@ -171,7 +171,7 @@ Synthesis synthesize(const Hinge& h, const Loads& loads) {
                    "R1 = " + mm(r1) + " ≥ R1max = " + mm(s.r1_max) +
                        " (eq. 7): no concave face reaches γmax = " + degrees(s.gamma_max) +
                        " within the roller (R2 → ∞ at R1max); choose R1 < R1max or flat faces",
-                   r1, s.r1_max));
+                   r1, s.r1_max, "m"));
   }
 
   // Arc of the roller's face left beyond the contact at φmax (negative: contact runs off).
@@ -192,7 +192,7 @@ Synthesis synthesize(const Hinge& h, const Loads& loads) {
                                            " beyond the roller's working face before the "
                                            "links reach φmax = " +
                                            degrees(s.phi_max),
-                                       s.face_margin, 0.0));
+                                       s.face_margin, 0.0, "m"));
   }
 
   s.section_area_eq10 = section_area(d, a, r1);
@@ -208,12 +208,12 @@ Synthesis synthesize(const Hinge& h, const Loads& loads) {
           "even the uncut roller circle (" + check::format_si(kPi * d * d / 4 * 1e6, "mm²") +
               ") is smaller than F/[τ] = " + check::format_si(need * 1e6, "mm²") +
               " (eq. 10): a larger pin diameter d is needed",
-          kPi * d * d / 4, need));
+          kPi * d * d / 4, need, "m^2"));
     } else if (a < *s.a_min) {
       s.diagnostics.push_back(diagnostic(
           S::kInfeasible, "hinge.half_thickness_below_a_min",
           "a = " + mm(a) + " < a_min = " + mm(*s.a_min) + " of the shear condition (eq. 10)", a,
-          *s.a_min));
+          *s.a_min, "m"));
     }
     if (*s.shear_stress > *loads.allowable_shear) {
       s.diagnostics.push_back(
@@ -221,7 +221,7 @@ Synthesis synthesize(const Hinge& h, const Loads& loads) {
                      "shear stress F/A = " + check::format_si(*s.shear_stress / 1e6, "MPa") +
                          " on the true section exceeds [τ] = " +
                          check::format_si(*loads.allowable_shear / 1e6, "MPa"),
-                     *s.shear_stress, *loads.allowable_shear));
+                     *s.shear_stress, *loads.allowable_shear, "Pa"));
     }
   }
   if (loads.tension && loads.contact_length) {
@@ -235,7 +235,7 @@ Synthesis synthesize(const Hinge& h, const Loads& loads) {
           S::kInfeasible, "hinge.contact_stress",
           "Hertz contact stress σH = " + check::format_si(c.peak_pressure / 1e6, "MPa") +
               " exceeds [σH] = " + check::format_si(*loads.allowable_contact / 1e6, "MPa"),
-          c.peak_pressure, *loads.allowable_contact));
+          c.peak_pressure, *loads.allowable_contact, "Pa"));
     }
   }
   if (loads.friction) {
@@ -247,7 +247,7 @@ Synthesis synthesize(const Hinge& h, const Loads& loads) {
               " keeps the hinge rolling only up to a roller turn γ = " + degrees(*s.rolling_limit) +
               " (eq. 21), below γmax = " + degrees(s.gamma_max) +
               ": the plate's figured aperture must guide the roller beyond it",
-          *s.rolling_limit, s.gamma_max));
+          *s.rolling_limit, s.gamma_max, "rad"));
     }
   }
   return s;

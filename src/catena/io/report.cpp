@@ -90,14 +90,26 @@ table{border-collapse:collapse;margin:8px 0 14px;font-size:14px}
 th,td{border-bottom:1px solid #e4e7ec;padding:4px 10px;text-align:left;vertical-align:top}
 td.value{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
 td.text{max-width:640px}
-.grid{overflow-x:auto}
+.grid{overflow-x:auto;max-width:100%}
+.grid td.n{color:#777}
+.results{overflow-x:auto;max-width:100%}
 .grid td{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
-tr.best td{background:#e8f5e9;font-weight:600}
+tr.best td{background:#c8e6c9;font-weight:600}
 caption{text-align:left;font-weight:600;padding:6px 0}
 .diagnostic{border-left:4px solid;padding:6px 10px;margin:6px 0;font-size:14px}
 .diagnostic.error{border-color:#c62828;background:#fdecea}
 .diagnostic.warning{border-color:#e0a100;background:#fff6dd}
-.diagnostic.note{border-color:#1565c0;background:#e8f1fc}
+.diagnostic.info{border-color:#1565c0;background:#e8f1fc}
+.findings{list-style:none;padding:0;margin:8px 0}
+.findings li{border-left:4px solid;padding:4px 10px;margin:4px 0;font-size:14px}
+.findings li.error{border-color:#c62828;background:#fdecea}
+.findings li.warning{border-color:#e0a100;background:#fff6dd}
+.findings li.info{border-color:#1565c0;background:#e8f1fc}
+.findings .sev{font-weight:600;text-transform:uppercase;font-size:12px;margin-right:6px}
+.legend{font-size:13px;color:#333;margin:4px 0 0}
+.legend .swatch{display:inline-block;width:18px;height:3px;vertical-align:middle;margin:0 4px 0 12px}
+.drawing .caption{font-size:14px;font-weight:600;margin:4px 0}
+.note{font-size:13px;color:#333;margin:-6px 0 12px}
 .diagnostic .limit{color:#444}
 .failure{border-left:4px solid #c62828;background:#fdecea;padding:8px 10px;white-space:pre-wrap}
 .chart{width:100%;height:380px;margin:10px 0}
@@ -112,13 +124,42 @@ const char* kChartCode = R"js(
 (function () {
   var charts = JSON.parse(document.getElementById('catena-charts').textContent);
   charts.forEach(function (c) {
-    var traces = c.traces.map(function (t) {
-      return {x: t.x, y: t.y, name: t.name, type: 'scatter', mode: 'lines', connectgaps: false};
+    // several curves differ by dash and marker too: lines that coincide stay distinguishable
+    var dashes = ['solid', 'dash', 'dot', 'dashdot', 'longdash', 'longdashdot'];
+    var symbols = ['circle', 'square', 'diamond', 'triangle-up', 'cross', 'x'];
+    var several = c.traces.length > 1;
+    var same = function (a, b) {
+      return a.length === b.length && a.every(function (v, k) {
+        return v === b[k] || (v !== null && b[k] !== null &&
+                              Math.abs(v - b[k]) <= 1e-9 * Math.max(1, Math.abs(v)));
+      });
+    };
+    var traces = c.traces.map(function (t, i) {
+      var marked = several && t.x.length <= 60;
+      // a curve that lies on an earlier one says so in the legend (the warp's shares do not
+      // depend on the force); open markers of growing size keep each visible
+      var name = t.name;
+      for (var j = 0; j < i; ++j) {
+        if (same(t.x, c.traces[j].x) && same(t.y, c.traces[j].y)) {
+          name += ' (on ' + c.traces[j].name + ')';
+          break;
+        }
+      }
+      return {x: t.x, y: t.y, name: name, type: 'scatter', connectgaps: false,
+              mode: marked ? 'lines+markers' : 'lines',
+              line: {dash: several ? dashes[i % dashes.length] : 'solid'},
+              marker: {symbol: symbols[i % symbols.length] + '-open', size: 7 + 4 * (i % 4),
+                       line: {width: 2}}};
     });
     var layout = {title: {text: c.title, font: {size: 15}}, margin: {l: 70, r: 20, t: 45, b: 55},
                   xaxis: {title: {text: c.x}}, yaxis: {title: {text: c.y}},
-                  showlegend: c.traces.length > 1, legend: {orientation: 'h', y: -0.22}};
+                  showlegend: several, legend: {orientation: 'h', y: -0.22}};
     if (c.equal) layout.yaxis.scaleanchor = 'x';
+    if (c.integer) {
+      layout.xaxis.tickformat = 'd';
+      var n = Math.max.apply(null, c.traces.map(function (t) { return t.x.length; }));
+      layout.xaxis.dtick = Math.max(1, Math.ceil(n / 20));
+    }
     Plotly.newPlot(c.id, traces, layout, {responsive: true, displaylogo: false});
   });
 })();
@@ -200,18 +241,35 @@ std::string to_html(const Report& report, std::string_view chart_script) {
     html << "<a href=\"#" << html_escape(s.id) << "\">" << html_escape(s.title) << "</a>";
   html << "</nav>\n";
 
-  // a summary of the findings first: what an engineer looks for before the numbers
-  int errors = 0, warnings = 0;
+  // the findings first, each with its analysis and a link to it: what an engineer looks for
+  // before the numbers. A failure to run is an error; info notes are not warnings.
+  int errors = 0, warnings = 0, notes = 0;
+  std::ostringstream list;
   for (const ReportSection& s : report.sections) {
-    if (!s.failure.empty()) ++errors;
-    for (const ReportDiagnostic& d : s.diagnostics) (d.severity == "error" ? errors : warnings)++;
+    auto item = [&](const std::string& severity, const std::string& anchor,
+                    const std::string& text) {
+      const char* shown = severity == "error" ? "error" : severity == "info" ? "note" : "warning";
+      (severity == "error" ? errors : severity == "info" ? notes : warnings)++;
+      list << "<li class=\"" << (severity == "error" || severity == "info" ? severity : "warning")
+           << "\"><span class=\"sev\">" << shown << "</span><a href=\"#" << html_escape(anchor)
+           << "\">" << html_escape(s.title) << "</a>: " << html_escape(text) << "</li>\n";
+    };
+    if (!s.failure.empty()) item("error", s.id, "could not run: " + s.failure);
+    for (std::size_t i = 0; i < s.diagnostics.size(); ++i)
+      item(s.diagnostics[i].severity, s.id + "-finding-" + std::to_string(i + 1),
+           s.diagnostics[i].message);
   }
+  auto count = [](int n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+  };
   html << "<section id=\"summary\"><h2>Findings</h2>";
-  if (errors + warnings == 0) {
+  if (errors + warnings + notes == 0) {
     html << "<p class=\"ok\">Every check of every analysis passed.</p>";
   } else {
-    html << "<p>" << errors << " error(s), " << warnings
-         << " warning(s): see the highlighted diagnostics below.</p>";
+    html << "<p>" << count(errors, "error", "errors") << ", "
+         << count(warnings, "warning", "warnings") << ", " << count(notes, "note", "notes")
+         << (errors + warnings == 0 ? ": every check passed." : ".")
+         << "</p><ul class=\"findings\">" << list.str() << "</ul>";
   }
   html << "</section>\n";
 
@@ -235,24 +293,34 @@ std::string to_html(const Report& report, std::string_view chart_script) {
            << "</div></section>\n";
       continue;
     }
-    for (const ReportDiagnostic& d : s.diagnostics) {
-      html << "<div class=\"diagnostic " << html_escape(d.severity) << "\"><b>"
-           << html_escape(d.severity) << ":</b> " << html_escape(d.message);
+    for (std::size_t i = 0; i < s.diagnostics.size(); ++i) {
+      const ReportDiagnostic& d = s.diagnostics[i];
+      html << "<div class=\"diagnostic " << html_escape(d.severity) << "\" id=\""
+           << html_escape(s.id) << "-finding-" << i + 1 << "\"><b>"
+           << (d.severity == "info" ? std::string("note") : html_escape(d.severity)) << ":</b> "
+           << html_escape(d.message);
       if (!d.limit.empty())
-        html << " <span class=\"limit\">(limit: " << html_escape(d.limit) << ")</span>";
+        html << " <span class=\"limit\">(" << html_escape(d.limit) << ")</span>";
       html << "</div>\n";
     }
-    for (const ReportTable& t : s.tables) table(t.title, t.rows, "quantity");
+    for (const ReportTable& t : s.tables) {
+      html << "<div class=\"results\">";
+      table(t.title, t.rows, "quantity");
+      html << "</div>";
+    }
     for (const ReportGrid& g : s.grids) {
       html << "<div class=\"grid\"><table><caption>" << html_escape(g.title) << "</caption><tr>";
+      if (g.numbered) html << "<th>#</th>";
       for (const std::string& c : g.columns) html << "<th>" << html_escape(c) << "</th>";
       html << "</tr>";
       for (std::size_t i = 0; i < g.rows.size(); ++i) {
         html << (i < g.highlighted.size() && g.highlighted[i] ? "<tr class=\"best\">" : "<tr>");
+        if (g.numbered) html << "<td class=\"n\">" << i + 1 << "</td>";
         for (const std::string& cell : g.rows[i]) html << "<td>" << html_escape(cell) << "</td>";
         html << "</tr>";
       }
       html << "</table></div>\n";
+      if (!g.note.empty()) html << "<p class=\"note\">" << html_escape(g.note) << "</p>\n";
     }
     for (const ReportChart& c : s.charts) {
       const std::string id = "catena-chart-" + std::to_string(chart_count);
@@ -260,7 +328,8 @@ std::string to_html(const Report& report, std::string_view chart_script) {
       if (chart_count++) charts_json += ",";
       charts_json += "{\"id\":" + json_string(id) + ",\"title\":" + json_string(c.title) +
                      ",\"x\":" + json_string(c.x_label) + ",\"y\":" + json_string(c.y_label) +
-                     ",\"equal\":" + (c.equal_axes ? "true" : "false") + ",\"traces\":[";
+                     ",\"equal\":" + (c.equal_axes ? "true" : "false") +
+                     ",\"integer\":" + (c.integer_x ? "true" : "false") + ",\"traces\":[";
       for (std::size_t i = 0; i < c.traces.size(); ++i) {
         if (i) charts_json += ",";
         charts_json += "{\"name\":" + json_string(c.traces[i].name) +
@@ -269,8 +338,25 @@ std::string to_html(const Report& report, std::string_view chart_script) {
       }
       charts_json += "]}";
     }
-    for (const std::string& svg : s.drawings_svg)
-      html << "<div class=\"drawing\">" << inline_svg(svg, drawing_count++) << "</div>\n";
+    for (std::size_t i = 0; i < s.drawings_svg.size(); ++i) {
+      html << "<div class=\"drawing\">" << inline_svg(s.drawings_svg[i], drawing_count++);
+      if (i < s.drawing_keys.size()) {
+        const ReportDrawingKey& k = s.drawing_keys[i];
+        html << "<div class=\"caption\">" << html_escape(k.caption)
+             << "</div><div class=\"legend\">";
+        for (const auto& [name, rgb] : k.legend) {
+          char colour[8];
+          std::snprintf(colour, sizeof colour, "#%06x", rgb & 0xffffffu);
+          html << "<span class=\"swatch\" style=\"background:" << colour << "\"></span>"
+               << html_escape(name);
+        }
+        if (k.scale_bar_mm > 0)
+          html << "<span class=\"swatch\" style=\"background:#000;height:5px\"></span>scale bar "
+               << k.scale_bar_mm << " mm";
+        html << "</div>";
+      }
+      html << "</div>\n";
+    }
     html << "</section>\n";
   }
   charts_json += "]";

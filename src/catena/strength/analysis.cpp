@@ -394,6 +394,38 @@ Record describe(const StrengthAnalysis& a, const Inputs&) {
   rec.table = to_table(a);
   rec.columns = csv_columns(a.result);
   add_report(rec.data, rec);
+  rec.labels = {{"min_safety_margin", "Least safety factor / required n/[n]", ""},
+                {"layouts", "", ""},
+                {"layout_1", "Layout 1", ""},
+                {"layout_2", "Layout 2", ""},
+                {"plate_force.lower_outer", "Plate force, lower outer F21", "kN"},
+                {"plate_force.lower_inner", "Plate force, lower inner F11", "kN"},
+                {"plate_force.upper_inner", "Plate force, upper inner F12", "kN"},
+                {"plate_force.upper_outer", "Plate force, upper outer F22", "kN"},
+                {"plate_force_y.lower_outer", "Plate force across, lower outer F21y", "kN"},
+                {"plate_force_y.lower_inner", "Plate force across, lower inner F11y", "kN"},
+                {"plate_force_y.upper_inner", "Plate force across, upper inner F12y", "kN"},
+                {"plate_force_y.upper_outer", "Plate force across, upper outer F22y", "kN"},
+                {"tooth_force", "Tooth force N", "kN"},
+                {"tooth_force_direction", "Tooth force direction", ""},
+                {"moment_max", "Largest bending moment M_max", "N·m"},
+                {"moment_at", "… at z", ""},
+                {"shear_max", "Largest shear force Q_max", "kN"},
+                {"shear_at", "… at z", ""},
+                {"force_residual", "Force balance residual", ""},
+                {"moment_residual", "Moment balance residual", "N·m"},
+                {"contact.layout", "Contact: layout", ""},
+                {"contact.plate", "Contact: plate", ""},
+                {"contact.N", "Contact force N", "kN"},
+                {"contact.B", "Contact length B", ""},
+                {"contact.r", "Contact radius r", ""},
+                {"contact.gamma", "Contact angle γ", ""},
+                {"contact.c", "Contact chord c, eq. (22)", ""},
+                {"contact.A", "Contact area A", ""},
+                {"contact.p", "Mean contact pressure p, eq. (23)", ""},
+                {"contact.hertz.p0", "Hertz peak pressure p0", ""},
+                {"contact.hertz.half_width", "Hertz half-width b", ""},
+                {"contact.hertz.effective_radius", "Effective radius R*", ""}};
   return rec;
 }
 

@@ -240,20 +240,20 @@ LoopResult solve(const Loop& loop) {
              ": a chain carries no compression, so it goes slack there and the contour method "
              "(a taut chain) no longer holds; raise the take-up pretension by at least " +
              g(-r.min.tension) + " N or move the take-up to that point",
-         r.min.tension, 0.0});
+         r.min.tension, 0.0, "N"});
   } else if (loop.min_tension && r.min.tension < *loop.min_tension) {
     r.diagnostics.push_back({Diagnostic::Severity::kWarning, "loop.below_min_tension",
                              "the tension falls to " + g(r.min.tension) + " N at " + at(r.min) +
                                  ", below the least allowed " + g(*loop.min_tension) +
                                  " N (min_tension)",
-                             r.min.tension, *loop.min_tension});
+                             r.min.tension, *loop.min_tension, "N"});
   }
   if (loop.allowable_tension && r.max.tension > *loop.allowable_tension) {
     r.diagnostics.push_back({Diagnostic::Severity::kInfeasible, "loop.over_allowable_tension",
                              "the greatest tension " + g(r.max.tension) + " N at " + at(r.max) +
                                  " exceeds the allowable " + g(*loop.allowable_tension) +
                                  " N (allowable_tension: breaking force / safety factor)",
-                             r.max.tension, *loop.allowable_tension});
+                             r.max.tension, *loop.allowable_tension, "N"});
   }
   if (r.drive_force < 0.0) {
     r.diagnostics.push_back(
@@ -261,7 +261,7 @@ LoopResult solve(const Loop& loop) {
          "the drive force is negative (" + g(r.drive_force) +
              " N): the load runs the loop downhill and the drive brakes it; power is the braking "
              "power through the drive train, F·v·η",
-         r.drive_force, 0.0});
+         r.drive_force, 0.0, "N"});
   }
   return r;
 }

@@ -477,6 +477,23 @@ Record describe(const LoopAnalysis& a, const analysis::Inputs&) {
                          f(g.at("tension_in"), 1e-3), f(g.at("tension_out"), 1e-3),
                          f(g.at("resistance"), 1e-3)});
   rec.grids.push_back(std::move(grid));
+  // the results in the units of the segment table and the chart: path lengths in m, forces in
+  // kN (the default display would give mm beside m)
+  rec.labels = {{"max_tension", "Greatest tension S max", "kN"},
+                {"max_tension_at.segment", "… in segment #", ""},
+                {"max_tension_at.name", "… named", ""},
+                {"max_tension_at.at", "… at its", ""},
+                {"max_tension_at.s", "… at path length s", "m"},
+                {"min_tension", "Least tension S min", "kN"},
+                {"min_tension_at.segment", "… in segment #", ""},
+                {"min_tension_at.name", "… named", ""},
+                {"min_tension_at.at", "… at its", ""},
+                {"min_tension_at.s", "… at path length s", "m"},
+                {"slack_tension", "Slack-side tension at the drive", "kN"},
+                {"tight_tension", "Tight-side tension at the drive", "kN"},
+                {"drive_force", "Drive force", "kN"},
+                {"power", "Drive power P", "kW"},
+                {"length", "Loop length L", "m"}};
   return rec;
 }
 

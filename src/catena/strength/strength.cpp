@@ -410,7 +410,7 @@ Result assess(const Input& in) {
              where + ": the " + kPlateName[k] +
                  " pushes the roller away from the seated link (the tooth load is off the middle "
                  "of the seated link's plates); its magnitude is checked",
-             along, 0.0});
+             along, 0.0, "N"});
     }
     r.layouts.push_back(std::move(lr));
   }
@@ -499,7 +499,7 @@ Result assess(const Input& in) {
                              "the Hertz contact half-width b exceeds 0.1·R1: the conformal "
                              "contact of R1 in R2 is outside the half-space assumption, p0 is "
                              "approximate",
-                             worst.half_width, 0.1 * h.r1});
+                             worst.half_width, 0.1 * h.r1, "m"});
   for (const Check& c : r.checks) {
     if (c.ok) continue;
     r.diagnostics.push_back(
@@ -508,7 +508,7 @@ Result assess(const Input& in) {
              " below the required " + fmt("%.3g", c.required) + "; stress " +
              fmt("%.4g MPa", c.stress * 1e-6) + " exceeds the limit allowable/required = " +
              fmt("%.4g MPa", c.allowable / c.required * 1e-6),
-         c.stress, c.allowable / c.required});
+         c.stress, c.allowable / c.required, "Pa"});
   }
   return r;
 }

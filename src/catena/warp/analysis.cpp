@@ -203,6 +203,23 @@ Record describe(const WarpAnalysis& a, const Inputs&) {
   rec.table = to_table(a);
   rec.columns = csv_columns(a);
   rec.charts.push_back(share_chart(a));
+  // the report: every load point with its joint forces, as the text table has them
+  analysis::Grid grid{"Load points",
+                      {"F [kN]", "L1 [mm]", "F21 [kN]", "F11 [kN]", "F12 [kN]", "F22 [kN]",
+                       "upper share [%]", "tilt [mrad]", "σ F12 [MPa]", "σb [MPa]", "converged"},
+                      {},
+                      {},
+                      true,
+                      ""};
+  for (const auto& [load, r] : a.points) {
+    // 5 digits; round-off of a symmetric state (a share of 1e-10 %) is shown as the 0 it is
+    auto g = [](double v) { return std::abs(v) < 1e-6 ? std::string("0") : format_g(v, 5); };
+    grid.rows.push_back({g(load.force / 1e3), g(load.height * 1e3), g(r.force[0] / 1e3),
+                         g(r.force[1] / 1e3), g(r.force[2] / 1e3), g(r.force[3] / 1e3),
+                         g(r.upper_share * 100), g(r.tilt * 1e3), g(r.contact_stress[kF12] / 1e6),
+                         g(r.bending_stress / 1e6), r.summary.converged ? "yes" : "no"});
+  }
+  rec.grids.push_back(std::move(grid));
   return rec;
 }
 

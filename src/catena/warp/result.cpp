@@ -96,7 +96,7 @@ WarpResult build_result(const Warp& w, const Load& load, const State& s,
                         " > tolerance " + check::format_si(sum_up.equilibrium_tolerance, "N")) +
              "; results are not valid",
          solver ? sum_up.residual : sum_up.equilibrium_residual,
-         solver ? sum_up.tolerance : sum_up.equilibrium_tolerance});
+         solver ? sum_up.tolerance : sum_up.equilibrium_tolerance, "N"});
   }
   for (std::size_t i = 0; i < 4; ++i) {
     if (out.force[i] <= 0.0)
@@ -104,7 +104,7 @@ WarpResult build_result(const Warp& w, const Load& load, const State& s,
           {Diagnostic::Severity::kInfo, std::string("warp.joint_open.") + kJointName[i],
            std::string("joint ") + kJointName[i] +
                " carries no load: its clearance is not closed (approach ≤ clearance)",
-           out.deflection[i], w.supports[i].clearance});
+           out.deflection[i], w.supports[i].clearance, "m"});
     if (w.kind == HingeKind::kRolling && out.force[i] > 0) {
       const Elastic e{w.modulus, w.poisson};
       const double b = line_contact(out.force[i] / w.supports[i].width,
@@ -117,7 +117,7 @@ WarpResult build_result(const Warp& w, const Load& load, const State& s,
              std::string("joint ") + kJointName[i] +
                  ": Hertz half-width exceeds 0.1·R1, the conformal contact is outside Hertz' "
                  "small-contact assumption (Persson's conformal theory would apply)",
-             b, kHertzWidthLimit * w.r1});
+             b, kHertzWidthLimit * w.r1, "m"});
     }
   }
   return out;
