@@ -11,6 +11,7 @@
 
 #include "catena/core/error.hpp"
 #include "catena/io/atomic_file.hpp"
+#include "catena/io/case_file.hpp"
 #include "commands.hpp"
 
 namespace {
@@ -31,31 +32,9 @@ int finish(int status) {
   return 1;
 }
 
-// Levenshtein distance, for "did you mean".
-std::size_t distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
 // The candidate closest to `word`, when it is close enough to be a misspelling ("" otherwise).
 std::string closest(const std::string& word, const std::vector<std::string>& candidates) {
-  std::string best;
-  std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
-  for (const std::string& c : candidates) {
-    const std::size_t d = distance(word, c);
-    if (d < best_distance) best = c, best_distance = d;
-  }
-  return best;
+  return catena::io::did_you_mean(word, candidates).value_or("");
 }
 
 // After a command-line error: the subcommand or flag the user probably meant, walking the
