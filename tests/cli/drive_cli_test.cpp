@@ -139,9 +139,12 @@ TEST(DriveCli, ExampleCaseGivesWhatTheCommandGives) {
   ASSERT_EQ(c.status, 0) << c.err;
   const CliRun d =
       run("drive --chain 12B --teeth 17,34 --center-distance 600mm --speed 500rpm --power 5kW "
-          "--mass-per-metre 1.25kg/m --slack 2mm --format json");
+          "--slack 2mm --format json");
   ASSERT_EQ(d.status, 0) << d.err;
   EXPECT_EQ(nlohmann::json::parse(c.out)["analyses"]["drive"], nlohmann::json::parse(d.out));
+  const CliRun s = run("sprocket --chain 12B --teeth 17 --format json");
+  ASSERT_EQ(s.status, 0) << s.err;
+  EXPECT_EQ(nlohmann::json::parse(c.out)["analyses"]["sprocket"], nlohmann::json::parse(s.out));
   const auto html = std::filesystem::temp_directory_path() / "catena_cli_drive_report.html";
   const CliRun r = run("report " + example + " -o " + html.string());
   ASSERT_EQ(r.status, 0) << r.err;
