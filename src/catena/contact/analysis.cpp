@@ -171,7 +171,13 @@ void check_contact(const Inputs& in, std::vector<Issue>& issues) {
   const double pitch = pitch_of(in, chain);
   const auto table = skew_gamma(pitch);
   if (in.given("gamma")) {
-    if (!(in.number("gamma") >= 0)) issues.push_back({"gamma", in.text("gamma"), "γ ≥ 0"});
+    // the paper's γ are 0.0012–0.0023 per arcmin²; above 1 the reduced load Q(1 + γφ²)
+    // overflows for extreme inputs (issue 18) long before a design could need it
+    const double gamma = in.number("gamma");
+    if (!(gamma >= 0)) issues.push_back({"gamma", in.text("gamma"), "γ ≥ 0"});
+    if (gamma > 1)
+      issues.push_back(
+          {"gamma", in.text("gamma"), "γ ≤ 1 per arcmin² (the paper's are 0.0012–0.0023)"});
   } else if (!table && std::isfinite(pitch) && chain && !in.given("pitch")) {
     // a catalogued chain whose pitch the paper's table lacks: say so, name the chain
     issues.push_back(

@@ -81,6 +81,13 @@ std::vector<Issue> validate(const SlidingInput& in) {
   if (!std::isfinite(in.tooth_friction)) {
     out.push_back({"tooth_friction", num(in.tooth_friction), "a friction factor >= 0"});
   }
+  // Friction factors above 1 are outside any steel pair (0.05–0.3) and, at 1e300, overflow the
+  // wrap's torque (issue 18): refused with the range.
+  for (const auto& [field, f] :
+       {std::pair{"friction", in.friction}, std::pair{"tooth_friction", in.tooth_friction}}) {
+    if (std::isfinite(f) && f > 1.0)
+      out.push_back({field, num(f), "a friction factor 0 <= f <= 1 (steel pairs: 0.05-0.3)"});
+  }
   check::finite_positive(out, "journal_diameter", in.journal_diameter, "m");
   check::finite_positive(out, "tooth_diameter", in.tooth_diameter, "m");
   return out;

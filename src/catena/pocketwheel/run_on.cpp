@@ -357,9 +357,16 @@ PointKinematics evaluate(const RunOnPlan& plan, double phi) {
   return evaluate_phase(plan, index, phi);
 }
 
+constexpr double kMaxOmega = 1e4;  // [rad/s]
+
 std::vector<Issue> validate(const Sampling& sampling) {
   std::vector<Issue> issues;
   check::finite_positive(issues, "omega", sampling.omega, "rad/s");
+  // 10⁴ rad/s (95 493 rpm) is far beyond any chain wheel (seed 003's runs at 5 1/s); above it the
+  // run-on accelerations ω²·R overflow long before a design could need them (issue 18).
+  if (std::isfinite(sampling.omega) && sampling.omega > kMaxOmega)
+    issues.push_back({"omega", check::format_si(sampling.omega, "rad/s"),
+                      "a wheel speed 0 < omega <= 10000 rad/s (95 493 rpm)"});
   if (sampling.points < 2) {
     issues.push_back({"points", std::to_string(sampling.points), "at least 2 samples"});
   }

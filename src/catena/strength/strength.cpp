@@ -49,10 +49,15 @@ std::vector<Issue> validate(const Input& in) {
   const Hinge& h = in.hinge;
   const Loads& l = in.loads;
   const Material& m = in.material;
+  bool too_high = false;
   for (std::size_t i = 0; i < 4; ++i) {
     check::finite(out, "heights", h.heights[i], "m");
     check::finite_positive(out, "widths", h.widths[i], "m");
+    too_high = too_high || (std::isfinite(h.heights[i]) && std::abs(h.heights[i]) > 10.0);
   }
+  // Plate heights within a link are millimetres; beyond 10 m the layouts' moments overflow or
+  // cancel (issue 18: 1e13 mm gave NaN plate forces): refused with the range, named once.
+  if (too_high) out.push_back({"heights", "(over 10 m)", "plate mid-plane heights |h| ≤ 10 m"});
   for (std::size_t i = 0; i + 1 < 4; ++i) {
     const double top = h.heights[i] + 0.5 * h.widths[i];
     const double next = h.heights[i + 1] - 0.5 * h.widths[i + 1];
