@@ -50,7 +50,7 @@ TEST(CaseCli, EachExampleGivesWhatItsSubcommandGives) {
   // of [material] is not passed to a rolling hinge
   const auto direct_engagement = run_json(
       "engagement --hinge rolling --pitch 125mm --pin-diameter 40mm --half-thickness 8mm "
-      "--teeth 8 --strokes 2 --tension 29.4kN --plate-radius 15mm --flank-angle 21.65deg "
+      "--teeth 8 --strokes 2 --tension 29.4kN --plate-radius 15mm --flank-angle 21.62deg "
       "--format json");
   EXPECT_EQ(hinge["analyses"]["engagement"], direct_engagement);
   const auto direct_warp = run_json(
