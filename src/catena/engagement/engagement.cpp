@@ -294,9 +294,9 @@ State state(const RollingInput& in, double r2, double beta1, double gamma, doubl
 
 // Residual of all three equations of (28), re-evaluated from the solution's F2, F_N, ξ. The
 // senses of the rolling resistances are derived here afresh, not taken from `state`: each acts
-// against the travel of its contact along the roller's face, found by turning the roller by ±h
-// relative to that plate in the assumed sense and comparing the contact's positions along t. The
-// tooth turns with link 2, so the roller rolls on it in link 2's sense; λ1·F_N opposes that.
+// against the travel of its contact along the roller's face, found from the contact positions
+// with the roller turned by ±h relative to that plate in the assumed sense (below). The tooth
+// turns with link 2, so the roller rolls on it in link 2's sense; λ1·F_N opposes that.
 double rolling_residual(const RollingInput& in, double r2, double beta1, const State& s,
                         double gamma, double xi) {
   const double f1 = in.tension;
