@@ -7,6 +7,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "catena/strength/loop_analysis.hpp"
+
 namespace catena::wear {
 namespace {
 
@@ -19,7 +21,7 @@ const std::vector<std::string> kCommon = {
     "hinge",           "pitch",          "teeth",       "strokes",          "articulations",
     "tension",         "speed",          "loop_length", "wear_coefficient", "plate_hardness",
     "roller_hardness", "contact_length", "friction",    "limits",           "block_passes",
-    "samples"};
+    "samples",         "tension_source", "loop"};
 const std::vector<std::string> kSlidingKeys = {"journal_diameter", "tooth_diameter",
                                                "tooth_friction", "flank_angle"};
 const std::vector<std::string> kRollingKeys = {"pin_diameter",  "half_thickness", "plate_radius",
@@ -44,6 +46,18 @@ void check(const Inputs& in, std::vector<Issue>& issues) {
   if (rolling) {
     for (const char* key : {"pin_diameter", "half_thickness", "plate_radius"}) {
       if (!in.given(key)) added.push_back({key, "(missing)", "a value"});
+    }
+  }
+  // Loads: a given tension, or the loop's tensions at the sprockets (then speed and loop length
+  // default to the loop's). Whether the [loop] table is there is its reader's to say.
+  if (in.text("tension_source") == "loop") {
+    if (!in.given("loop") || in.text("loop").empty())
+      added.push_back({"loop", "(missing)",
+                       "a [loop] table (case file) or --loop FILE: tension_source = loop takes the "
+                       "tensions from it"});
+  } else {
+    for (const char* key : {"tension", "speed", "loop_length"}) {
+      if (!in.present(key)) added.push_back({key, "(missing)", "a value"});
     }
   }
   std::vector<std::string> order = kCommon;
@@ -146,6 +160,29 @@ Value to_value(const WearAnalysis& w) {
                                       {"passes_per_hour", "1/h"},
                                       {"block_passes", "1"},
                                       {"limit", "SI"}});
+  // tension_source = loop (only then, so that a given tension's output stays as it was): the
+  // loads of every articulation and where in the loop each came from
+  if (w.loads.from_loop) {
+    Value points = Value::array();
+    for (const LoopLoad& p : w.loads.points)
+      points.push_back(Value::object({{"segment", p.segment},
+                                      {"name", p.name},
+                                      {"at", p.entry ? "entry" : "exit"},
+                                      {"tension", p.tension}}));
+    j["loads"] =
+        Value::object({{"source", "loop"},
+                       {"tensions", in.tensions},
+                       {"points", std::move(points)},
+                       {"speed", in.speed},
+                       {"speed_from", w.loads.speed_from_loop ? "loop" : "given"},
+                       {"loop_length", in.loop_length},
+                       {"loop_length_from", w.loads.loop_length_from_loop ? "loop" : "given"}});
+    Value& units = j["units"];
+    units["tension"] = "N";
+    units["tensions"] = "N";
+    units["speed"] = "m/s";
+    units["loop_length"] = "m";
+  }
   return j;
 }
 
@@ -168,6 +205,17 @@ std::string to_table(const WearAnalysis& w) {
   out << " kN, " << in.articulations << " articulations per pass of "
       << format_g(a.mutual_turn * 180.0 / std::numbers::pi) << " deg, "
       << format_g(r.passes_per_hour) << " passes/h, k = " << format_g(in.wear_coefficient) << "\n";
+  if (w.loads.from_loop) {
+    out << "loads from the loop: ";
+    for (std::size_t i = 0; i < w.loads.points.size(); ++i) {
+      const LoopLoad& p = w.loads.points[i];
+      out << (i ? ", " : "") << (p.name.empty() ? "segment " + std::to_string(p.segment) : p.name)
+          << (p.entry ? " in " : " out ") << format_g(p.tension / 1e3) << " kN";
+    }
+    out << "; v = " << format_g(in.speed) << " m/s" << (w.loads.speed_from_loop ? " (loop)" : "")
+        << ", loop length " << format_g(in.loop_length) << " m"
+        << (w.loads.loop_length_from_loop ? " (the loop's path)" : "") << "\n";
+  }
   out << "pivot-plate sliding per pass: " << format_g(ps.slide_pivot_plate * 1e3) << " mm";
   if (rolling) {
     out << " (gross " << format_g(2.0 * ps.gross_slide * 1e3) << " mm, micro-slip "
@@ -232,6 +280,17 @@ Record describe(const WearAnalysis& w, const Inputs&) {
   return rec;
 }
 
+// The [loop] table as `catena loop` reads it; optional here (only tension_source = loop reads it),
+// a --loop FILE on the command line.
+analysis::Parameter loop_table() {
+  analysis::Parameter p = strength::loop_table_parameter();
+  p.required = false;
+  p.doc =
+      "tension_source = loop: TOML file with a [loop] table and [[loop.segment]] tables (a case "
+      "file works); in a case file, its own [loop] table";
+  return p;
+}
+
 analysis::Analysis make() {
   using namespace analysis;
   using K = QuantityKind;
@@ -254,12 +313,13 @@ analysis::Analysis make() {
       integer("strokes", 1, "m, sprocket strokes; mutual turn 360deg*m/z") | Default{"1"},
       integer("articulations", 1, "articulations per pass (2 per sprocket)") | Default{"4"},
       quantity("tension", K::kForce,
-               "chain tension F at every articulation, or one per articulation of a pass") |
-          Required{} | ListOf{},
-      quantity("speed", K::kSpeed, "chain speed v") | Required{},
+               "chain tension F at every articulation, or one per articulation of a pass "
+               "(required unless tension_source = loop)") |
+          ListOf{},
+      quantity("speed", K::kSpeed, "chain speed v (tension_source = loop: the loop's by default)"),
       quantity("loop_length", K::kLength,
-               "chain length of the loop; a pass takes loop_length/speed (give its unit: 10m)") |
-          Required{},
+               "chain length of the loop; a pass takes loop_length/speed (give its unit: 10m; "
+               "tension_source = loop: the loop's path length by default)"),
       number("wear_coefficient", "Archard k of the pivot-plate pair, 0 < k < 1") | Required{},
       quantity("plate_hardness", K::kStress,
                "H of the plates (42 HRC = 412 HV = 4040 MPa: thesis concl. 10, ASTM E140)") |
@@ -287,6 +347,11 @@ analysis::Analysis make() {
           Default{"friction"},
       choice("creep", {"carter", "none"}, "rolling: micro-slip law of the rolling contact") |
           Default{"carter"},
+      choice("tension_source", {"given", "loop"},
+             "given = tension; loop = the loop's tension where the chain enters and leaves each "
+             "sprocket (the drive and every turn given by a factor)") |
+          Default{"given"},
+      loop_table(),
   };
   a.check = check;
   a.variants = {
@@ -295,6 +360,62 @@ analysis::Analysis make() {
   };
   set_functions<WearAnalysis>(a, wear_analysis_run, describe);
   return a;
+}
+
+// tension_source = loop: the loop solved as `catena loop` solves it; each sprocket (the drive, and
+// every turn given by a factor: a wheel; a turn given by wrap and friction is a curved guide the
+// chain slides round, without a tooth's articulation) gives two articulations, entering under the
+// tension there and leaving under the tension there. Speed and loop length default to the loop's.
+void load_from_loop(const Inputs& in, WearAnalysis& w) {
+  Input& x = w.input;
+  const strength::LoopAnalysis loop = strength::loop_from_table(in.at("loop"));
+  w.loads.from_loop = true;
+  for (std::size_t i = 0; i < loop.loop.segments.size(); ++i) {
+    const strength::Segment& s = loop.loop.segments[i];
+    const bool sprocket = s.kind == strength::SegmentKind::kDrive ||
+                          (s.kind == strength::SegmentKind::kTurn && s.factor.has_value());
+    if (!sprocket) continue;
+    const strength::SegmentTension& t = loop.result.segments[i];
+    w.loads.points.push_back({i, s.name, true, t.tension_in});
+    w.loads.points.push_back({i, s.name, false, t.tension_out});
+  }
+  std::vector<Issue> issues;
+  if (w.loads.points.empty())
+    issues.push_back({"loop", "(no sprocket)",
+                      "a loop with a drive segment (tension_source = loop reads its sprockets)"});
+  for (const LoopLoad& p : w.loads.points) {
+    x.tensions.push_back(p.tension);
+    if (p.tension < 0.0) {
+      issues.push_back({"loop.segment[" + std::to_string(p.segment) + "]",
+                        format_g(p.tension) + " N " + (p.entry ? "entering" : "leaving"),
+                        "a tension >= 0 where the chain meets a sprocket (raise the take-up's "
+                        "pretension; `catena loop` shows the tensions)"});
+    }
+  }
+  throw_if_any(issues);
+  x.tension = x.tensions.front();
+  const int count = static_cast<int>(x.tensions.size());
+  if (!in.given("articulations")) {
+    x.articulations = count;
+  } else if (x.articulations != count) {
+    issues.push_back({"articulations", in.text("articulations"),
+                      std::to_string(count) + " (2 per sprocket of the [loop] table), or not "
+                                              "given: tension_source = loop"});
+  }
+  const double v = loop.loop.speed;
+  if (!in.present("speed")) {
+    x.speed = v;
+    w.loads.speed_from_loop = true;
+  } else if (std::abs(x.speed - v) > 1e-9 * v) {
+    issues.push_back(
+        {"speed", in.text("speed"),
+         "the [loop] table's speed " + format_g(v) + " m/s, or not given (tension_source = loop)"});
+  }
+  if (!in.present("loop_length")) {
+    x.loop_length = loop.result.length;
+    w.loads.loop_length_from_loop = true;
+  }
+  throw_if_any(issues);
 }
 
 }  // namespace
@@ -307,13 +428,17 @@ WearAnalysis wear_analysis_run(const analysis::Inputs& in) {
   x.teeth = in.integer("teeth");
   x.strokes = in.integer("strokes");
   x.articulations = in.integer("articulations");
-  x.tension = in.number("tension");
-  if (in.list("tension").size() > 1) {
-    x.tensions = in.list("tension");
-    if (!in.given("articulations")) x.articulations = static_cast<int>(x.tensions.size());
-  }
   x.speed = in.number("speed");
   x.loop_length = in.number("loop_length");
+  if (in.text("tension_source") == "loop") {
+    load_from_loop(in, w);
+  } else {
+    x.tension = in.number("tension");
+    if (in.list("tension").size() > 1) {
+      x.tensions = in.list("tension");
+      if (!in.given("articulations")) x.articulations = static_cast<int>(x.tensions.size());
+    }
+  }
   x.wear_coefficient = in.number("wear_coefficient");
   x.plate_hardness = in.number("plate_hardness");
   x.roller_hardness = in.number("roller_hardness");
@@ -338,6 +463,12 @@ WearAnalysis wear_analysis_run(const analysis::Inputs& in) {
     x.creep = in.text("creep") == "none" ? Creep::kNone : Creep::kCarter;
   }
   w.result = run(x);
+  if (w.loads.from_loop && in.present("tension")) {
+    w.result.diagnostics.push_back(
+        {Diagnostic::Severity::kWarning, "wear.tension_not_used",
+         "tension " + in.text("tension") +
+             " is not used: tension_source = loop takes the loop's tensions at the sprockets"});
+  }
   return w;
 }
 
