@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,11 +28,18 @@ struct Loads {
   bool loop_length_from_loop = false;
 };
 
+/// The other hinge type on the same chain, sprocket and loads (compare_wear_coefficient).
+struct Other {
+  Input input;
+  Result result;
+};
+
 /// What `wear` computed: the inputs as the model took them and the life.
 struct WearAnalysis {
   Input input;
   Loads loads;
   Result result;
+  std::optional<Other> other;  ///< compare_wear_coefficient given
 };
 
 /// The analysis description (registered as "wear").

@@ -17,11 +17,25 @@ using analysis::Inputs;
 using analysis::Record;
 using analysis::Value;
 
-const std::vector<std::string> kCommon = {
-    "hinge",           "pitch",          "teeth",       "strokes",          "articulations",
-    "tension",         "speed",          "loop_length", "wear_coefficient", "plate_hardness",
-    "roller_hardness", "contact_length", "friction",    "limits",           "block_passes",
-    "samples",         "tension_source", "loop"};
+const std::vector<std::string> kCommon = {"hinge",
+                                          "pitch",
+                                          "teeth",
+                                          "strokes",
+                                          "articulations",
+                                          "tension",
+                                          "speed",
+                                          "loop_length",
+                                          "wear_coefficient",
+                                          "plate_hardness",
+                                          "roller_hardness",
+                                          "contact_length",
+                                          "friction",
+                                          "limits",
+                                          "block_passes",
+                                          "samples",
+                                          "tension_source",
+                                          "loop",
+                                          "compare_wear_coefficient"};
 const std::vector<std::string> kSlidingKeys = {"journal_diameter", "tooth_diameter",
                                                "tooth_friction", "flank_angle"};
 const std::vector<std::string> kRollingKeys = {"pin_diameter",  "half_thickness", "plate_radius",
@@ -34,8 +48,16 @@ void check(const Inputs& in, std::vector<Issue>& issues) {
   std::vector<Issue> added;
   if (in.present("hinge") && hinge != "sliding" && !rolling)
     added.push_back({"hinge", hinge, "sliding or rolling"});
-  const std::vector<std::string>& refused = rolling ? kSlidingKeys : kRollingKeys;
-  const std::vector<std::string>& own = rolling ? kRollingKeys : kSlidingKeys;
+  // compare_wear_coefficient runs the other hinge too: its keys are read then
+  const bool compare = in.present("compare_wear_coefficient");
+  static const std::vector<std::string> kNone;
+  const std::vector<std::string>& refused =
+      compare ? kNone : (rolling ? kSlidingKeys : kRollingKeys);
+  std::vector<std::string> own = rolling ? kRollingKeys : kSlidingKeys;
+  if (compare) {
+    const std::vector<std::string>& other = rolling ? kSlidingKeys : kRollingKeys;
+    own.insert(own.end(), other.begin(), other.end());
+  }
   for (const std::string& key : refused) {
     if (in.given(key)) {
       added.push_back({key, in.text(key),
@@ -43,9 +65,12 @@ void check(const Inputs& in, std::vector<Issue>& issues) {
                                : "nothing: only the rolling hinge uses it"});
     }
   }
-  if (rolling) {
+  if (rolling || compare) {
     for (const char* key : {"pin_diameter", "half_thickness", "plate_radius"}) {
-      if (!in.given(key)) added.push_back({key, "(missing)", "a value"});
+      if (!in.given(key))
+        added.push_back(
+            {key, "(missing)",
+             rolling ? "a value" : "a value: compare_wear_coefficient runs the rolling hinge too"});
     }
   }
   // Loads: a given tension, or the loop's tensions at the sprockets (then speed and loop length
@@ -160,6 +185,43 @@ Value to_value(const WearAnalysis& w) {
                                       {"passes_per_hour", "1/h"},
                                       {"block_passes", "1"},
                                       {"limit", "SI"}});
+  // compare_wear_coefficient (only then): the other hinge's life beside this one's, and the
+  // sliding/rolling ratios of the new chains per pass (the thesis' ratios, docs/models/wear.md)
+  if (w.other) {
+    const Input& oi = w.other->input;
+    const Result& o = w.other->result;
+    const bool o_rolling = oi.hinge == HingeKind::kRolling;
+    std::vector<double> oh, op;
+    for (const Point& p : o.series) {
+      oh.push_back(p.hours);
+      op.push_back(100.0 * p.elongation);
+    }
+    Value olife = Value::object();
+    for (std::size_t i = 0; i < sorted.size(); ++i)
+      olife[limit_key(sorted[i])] = Value(o.life_hours[i]);
+    const Articulation& sl = rolling ? o.pass : ps;
+    const Articulation& ro = rolling ? ps : o.pass;
+    auto ratio = [](double num, double den) { return den > 0.0 ? Value(num / den) : Value(); };
+    j["compare"] =
+        Value::object({{"hinge", o_rolling ? "rolling" : "sliding"},
+                       {"model", o_rolling ? "wear.rolling_hinge" : "wear.sliding_hinge"},
+                       {"wear_coefficient", oi.wear_coefficient},
+                       {"elongation", Value::object({{"hours", oh}, {"percent", op}})},
+                       {"life_hours", std::move(olife)},
+                       {"wear_depth", Value::object({{"roller", o.at_end.roller},
+                                                     {"plate", o.at_end.plate},
+                                                     {"pin", Value()},
+                                                     {"bush", Value()}})},
+                       {"pivot_plate", o.pass.slide_pivot_plate},
+                       {"roller_depth", o.pass.roller_depth},
+                       {"plate_depth", o.pass.plate_depth},
+                       {"sliding_to_rolling",
+                        Value::object({{"pitch_extension", ratio(sl.roller_depth + sl.plate_depth,
+                                                                 ro.roller_depth + ro.plate_depth)},
+                                       {"roller", ratio(sl.roller_depth, ro.roller_depth)},
+                                       {"plate", ratio(sl.plate_depth, ro.plate_depth)}})}});
+    j["units"]["sliding_to_rolling"] = "1";
+  }
   // tension_source = loop (only then, so that a given tension's output stays as it was): the
   // loads of every articulation and where in the loop each came from
   if (w.loads.from_loop) {
@@ -269,13 +331,34 @@ Record describe(const WearAnalysis& w, const Inputs&) {
   rec.table = to_table(w);
   rec.columns = csv_columns(w);
   analysis::Chart c;
-  c.title = std::string("Elongation of the ") +
-            (w.input.hinge == HingeKind::kRolling ? "rolling" : "sliding") + "-hinge chain";
   c.x_label = "hours [h]";
   c.y_label = "elongation [%]";
   const Value& e = rec.data.at("elongation");
-  c.traces.push_back({w.input.hinge == HingeKind::kRolling ? "rolling" : "sliding",
-                      e.at("hours").numbers(), e.at("percent").numbers()});
+  const bool rolling = w.input.hinge == HingeKind::kRolling;
+  if (!w.other) {
+    c.title =
+        std::string("Elongation of the ") + (rolling ? "rolling" : "sliding") + "-hinge chain";
+    c.traces.push_back(
+        {rolling ? "rolling" : "sliding", e.at("hours").numbers(), e.at("percent").numbers()});
+    rec.charts.push_back(std::move(c));
+    return rec;
+  }
+  // both chains on one chart, the sliding one first, and the retirement limits across it
+  const Value& o = rec.data.at("compare").at("elongation");
+  analysis::Trace self{rolling ? "rolling" : "sliding", e.at("hours").numbers(),
+                       e.at("percent").numbers()};
+  analysis::Trace other{rolling ? "sliding" : "rolling", o.at("hours").numbers(),
+                        o.at("percent").numbers()};
+  c.title = "Elongation of the sliding- and the rolling-hinge chain";
+  c.traces.push_back(rolling ? other : self);
+  c.traces.push_back(rolling ? self : other);
+  double end = 0.0;
+  for (const analysis::Trace& t : c.traces)
+    for (double h : t.x) end = std::max(end, h);
+  std::vector<double> limits = w.input.limits;
+  std::sort(limits.begin(), limits.end());
+  for (double l : limits)
+    c.traces.push_back({"limit " + limit_key(l) + " %", {0.0, end}, {100.0 * l, 100.0 * l}});
   rec.charts.push_back(std::move(c));
   return rec;
 }
@@ -352,6 +435,9 @@ analysis::Analysis make() {
              "sprocket (the drive and every turn given by a factor)") |
           Default{"given"},
       loop_table(),
+      number("compare_wear_coefficient",
+             "Archard k of the other hinge's pair, 0 < k < 1: given, the other hinge type runs "
+             "too on the same chain, sprocket and loads, and the report charts both"),
   };
   a.check = check;
   a.variants = {
@@ -448,21 +534,48 @@ WearAnalysis wear_analysis_run(const analysis::Inputs& in) {
   for (double l : in.list("limits")) x.limits.push_back(l / 100.0);
   x.block_passes = in.number("block_passes");
   x.samples = in.integer("samples");
-  if (x.hinge == HingeKind::kSliding) {
-    x.journal_diameter = in.number("journal_diameter");
-    x.tooth_diameter = in.number("tooth_diameter");
-    x.tooth_friction = in.optional("tooth_friction").value_or(-1.0);
-    x.flank_angle = in.number("flank_angle");
-  } else {
-    x.geometry.pin_diameter = in.number("pin_diameter");
-    x.geometry.half_thickness = in.number("half_thickness");
-    x.geometry.plate_radius = in.number("plate_radius");
-    if (const auto r2 = in.optional("roller_radius")) x.geometry.roller_radius = *r2;
-    x.limit =
+  const auto sliding_keys = [&](Input& y) {
+    y.journal_diameter = in.number("journal_diameter");
+    y.tooth_diameter = in.number("tooth_diameter");
+    y.tooth_friction = in.optional("tooth_friction").value_or(-1.0);
+    y.flank_angle = in.number("flank_angle");
+  };
+  const auto rolling_keys = [&](Input& y) {
+    y.geometry.pin_diameter = in.number("pin_diameter");
+    y.geometry.half_thickness = in.number("half_thickness");
+    y.geometry.plate_radius = in.number("plate_radius");
+    if (const auto r2 = in.optional("roller_radius")) y.geometry.roller_radius = *r2;
+    y.limit =
         in.text("rolling_limit") == "guided" ? RollingLimit::kGuided : RollingLimit::kFriction;
-    x.creep = in.text("creep") == "none" ? Creep::kNone : Creep::kCarter;
+    y.creep = in.text("creep") == "none" ? Creep::kNone : Creep::kCarter;
+  };
+  if (x.hinge == HingeKind::kSliding) {
+    sliding_keys(x);
+  } else {
+    rolling_keys(x);
   }
   w.result = run(x);
+  // compare_wear_coefficient: the other hinge on the same chain, sprocket, loads and hardness,
+  // with its own pair's k (given: nothing is fitted here)
+  if (const auto k = in.optional("compare_wear_coefficient")) {
+    Input o = x;
+    o.wear_coefficient = *k;
+    if (x.hinge == HingeKind::kSliding) {
+      o.hinge = HingeKind::kRolling;
+      rolling_keys(o);
+    } else {
+      o.hinge = HingeKind::kSliding;
+      sliding_keys(o);
+    }
+    try {
+      w.other = Other{o, run(o)};
+    } catch (const InputError& e) {
+      std::vector<Issue> issues = e.issues();
+      for (Issue& i : issues)
+        if (i.field == "wear_coefficient") i.field = "compare_wear_coefficient";
+      throw InputError(issues);
+    }
+  }
   if (w.loads.from_loop && in.present("tension")) {
     w.result.diagnostics.push_back(
         {Diagnostic::Severity::kWarning, "wear.tension_not_used",
