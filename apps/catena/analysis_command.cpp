@@ -32,7 +32,10 @@ std::string flag_of(const std::string& key) {
 // A model's and the binder's issues name parameter keys; the user typed flags.
 std::vector<Issue> as_flags(const analysis::Analysis& a, std::vector<Issue> issues) {
   for (Issue& issue : issues) {
-    if (a.renames(issue.field)) issue.field = flag_of(issue.field);
+    const Parameter* p = a.parameter(issue.field);
+    // an optional table is a --flag FILE here (a required one is the positional FILE)
+    const bool optional_table = p && p->type == ParameterType::kTable && !p->required;
+    if (a.renames(issue.field) || optional_table) issue.field = flag_of(issue.field);
   }
   return issues;
 }

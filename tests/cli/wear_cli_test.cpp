@@ -195,7 +195,11 @@ TEST(WearCli, LoadsFromTheLoopRefuseWhatContradictsIt) {
   // no loop to read
   const CliRun none = run(base);
   EXPECT_EQ(none.status, 2);
-  EXPECT_NE(none.err.find("loop"), std::string::npos) << none.err;
+  EXPECT_NE(none.err.find("--loop = (missing)"), std::string::npos) << none.err;
+  // a file without a [loop] table, named as the flag that gave it
+  const CliRun empty = run(base + " --loop " + kExamples + "/000_wear_benches.toml");
+  EXPECT_EQ(empty.status, 2);
+  EXPECT_NE(empty.err.find("--loop = (missing)"), std::string::npos) << empty.err;
   // two sprockets give four articulations; another speed than the loop's
   const CliRun bad = run(base + " --loop " + file + " --articulations 6 --speed 0.5");
   EXPECT_EQ(bad.status, 2);
