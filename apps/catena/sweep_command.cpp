@@ -164,7 +164,9 @@ std::function<int()> add_sweep(CLI::App& app) {
     if (inputs.analysis != nullptr) {
       request.analysis = inputs.analysis->name;
       for (const analysis::Parameter& p : inputs.analysis->parameters) {
-        if (p.type == analysis::ParameterType::kTable)
+        // an analysis whose one input is a table (loop) cannot be swept; an optional table
+        // (wear's [loop]) is not passed to the points
+        if (p.type == analysis::ParameterType::kTable && p.required)
           issues.push_back({"analyses." + table, "(table)",
                             "an analysis without a table parameter ([" + p.name +
                                 "]): a sweep passes every value as text"});

@@ -108,7 +108,9 @@ TEST(CaseCli, ReportIsOneSelfContainedHtmlFile) {
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   for (const char* fragment :
        {"<section id=\"hinge\" class=\"analysis\">",
-        "<section id=\"hinge_sweep\" class=\"analysis\">", "class=\"diagnostic",
+        "<section id=\"hinge_sweep\" class=\"analysis\">",
+        "<section id=\"wear\" class=\"analysis\">",
+        "Elongation of the sliding- and the rolling-hinge chain", "class=\"diagnostic",
         "<div class=\"drawing\"><svg", "Plotly.newPlot", "SHA-256"})
     EXPECT_NE(html.find(fragment), std::string::npos) << fragment;
   // nothing loaded from elsewhere (the browser test also watches the network)
