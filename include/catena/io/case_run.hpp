@@ -23,6 +23,7 @@ struct AnalysisRun {
   const analysis::Analysis* analysis = nullptr;
   std::string name;  ///< the table's name: the analysis', or "<name>-<label>"
   analysis::Record record;
+  std::string note;  ///< the table's `note`: what this run shows, for the report's reader
 };
 
 /// A case file and its runs, in the file's order of [analyses.<name>] tables.
