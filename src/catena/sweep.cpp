@@ -70,7 +70,8 @@ InputSet merged(const InputSet& base, const InputSet& point) {
 
 void check_key(const analysis::Analysis& a, const std::vector<std::string>& known,
                const std::string& key, const std::string& text, std::vector<Issue>& issues) {
-  if (a.parameter(key) != nullptr) return;
+  // allow_large is no parameter, but every analysis reads it (the binder does)
+  if (a.parameter(key) != nullptr || key == analysis::kAllowLarge) return;
   const auto near = io::did_you_mean(key, known);
   issues.push_back({key, text,
                     "an input of '" + a.name + "'" +
@@ -213,7 +214,7 @@ std::vector<InputSet> sweep_points(const SweepRequest& request) {
   std::vector<std::string> unknown;  // each unknown key of the points once
   for (const InputSet& point : request.points) {
     for (const auto& [key, text] : point) {
-      if (a->parameter(key) != nullptr ||
+      if (a->parameter(key) != nullptr || key == analysis::kAllowLarge ||
           std::find(unknown.begin(), unknown.end(), key) != unknown.end())
         continue;
       unknown.push_back(key);
