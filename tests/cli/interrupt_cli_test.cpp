@@ -12,6 +12,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -53,7 +54,8 @@ fs::path folder(const std::string& name) {
 }
 
 // Runs catena with `args`, stdout and stderr to files in `dir` (stderr to a pseudo-terminal when
-// `terminal`), sends SIGINT after `wait`, and waits for it to end.
+// `terminal`), sends SIGINT after `wait` (on a terminal: once the progress line shows, or after
+// `wait` at most), and waits for it to end.
 Stopped interrupt(const std::vector<std::string>& args, const fs::path& dir,
                   std::chrono::milliseconds wait, bool terminal = false) {
   const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
@@ -76,19 +78,28 @@ Stopped interrupt(const std::vector<std::string>& args, const fs::path& dir,
   }
   if (terminal) ::close(slave);
   std::string shown;
+  std::mutex mutex;
   // the terminal's side: read what the run draws while it runs (the pty would fill otherwise)
   std::thread reader;
   if (terminal) {
-    reader = std::thread([master, &shown] {
+    reader = std::thread([master, &shown, &mutex] {
       char buffer[4096];
       for (;;) {
         const ssize_t n = ::read(master, buffer, sizeof buffer);
         if (n <= 0) break;  // EIO once the child has closed its side
+        const std::lock_guard<std::mutex> lock(mutex);
         shown.append(buffer, static_cast<std::size_t>(n));
       }
     });
   }
-  std::this_thread::sleep_for(wait);
+  const auto deadline = Clock::now() + wait;
+  while (Clock::now() < deadline) {
+    if (terminal) {
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (shown.find(" s") != std::string::npos) break;  // a whole progress line is drawn
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
   const auto sent = Clock::now();
   ::kill(pid, SIGINT);
   int status = 0;
@@ -163,11 +174,15 @@ TEST(InterruptCli, OnATerminalALongRunDrawsItsProgressLineOnStderr) {
   const fs::path dir = folder("terminal");
   std::vector<std::string> args = kLongRing;
   args.insert(args.end(), {"--format", "json"});
-  const Stopped r = interrupt(args, dir, std::chrono::milliseconds(1600), true);
+  // SIGINT once the line shows (after the run's first second), 2.8 s at most
+  const Stopped r = interrupt(args, dir, std::chrono::milliseconds(2800), true);
   EXPECT_EQ(r.status, 130) << r.err;
-  // "\rcatena ring [###.....] 3/41 harmonics, 1 s", redrawn in place, then the message
-  EXPECT_NE(r.err.find("\rcatena ring ["), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find(" harmonics, 1 s"), std::string::npos) << r.err;
+  // "\rcatena ring [#.......] 9/191 harmonics, 1 s", redrawn in place, then the message
+  const std::size_t line = r.err.find("\rcatena ring [");
+  ASSERT_NE(line, std::string::npos) << r.err;
+  const std::size_t unit = r.err.find("/191 harmonics, ", line);
+  ASSERT_NE(unit, std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" s", unit), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("catena: interrupted (Ctrl-C); nothing was written"), std::string::npos)
       << r.err;
   EXPECT_EQ(r.out, "");  // the JSON never started
