@@ -174,10 +174,19 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
     throw_if_any(as_flags(a, std::move(issues)));
     inputs.want_drawing(!state->svg.empty() || !state->dxf.empty());
     analysis::Record record;
-    try {
-      record = a.evaluate(inputs);
-    } catch (const InputError& error) {
-      throw InputError(as_flags(a, error.issues()));
+    {
+      // progress on a terminal, and Ctrl-C, for the run (not for the writing that follows)
+      ProgressBar bar;
+      std::string label;
+      for (const std::string& word : a.command) label += (label.empty() ? "" : " ") + word;
+      const Progress progress = listen(bar, label);
+      inputs.listen(&progress);
+      try {
+        record = a.evaluate(inputs);
+      } catch (const InputError& error) {
+        throw InputError(as_flags(a, error.issues()));
+      }
+      inputs.listen(nullptr);
     }
     std::string text;
     if (state->format == "json") {

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "catena/core/progress.hpp"
 #include "catena/hinge/kinematics.hpp"
 #include "catena/hinge/synthesis.hpp"
 
@@ -149,7 +150,10 @@ Result solve_sliding(const SlidingInput& in) {
   const double f1 = in.tension;
   bool slack = false, lift = false;
   double min_fn = 0.0;  // [N] the most negative tooth reaction, for the lift-off diagnostic
+  const auto points = static_cast<std::size_t>(std::max(in.points, 0));
+  ProgressLoop loop(points, "points");
   for (int i = 0; i < in.points; ++i) {
+    loop.step(static_cast<std::size_t>(i));
     Sample s;
     s.gamma = sample_gamma(a.gamma_sigma, i, in.points);
     const SlidingForces fs = sliding_forces(in, a, s.gamma);
@@ -168,6 +172,7 @@ Result solve_sliding(const SlidingInput& in) {
     r.max_residual = std::max(r.max_residual, s.residual);
     r.series.push_back(s);
   }
+  loop.step(points);
   // ranges where (25) holds, ends refined by bisection on the margin of (25)
   auto margin = [&](double g) { return turn_margin(in, sliding_forces(in, a, g)); };
   auto edge = [&](double lo, double hi) {
@@ -392,7 +397,10 @@ Result solve_rolling(const RollingInput& in) {
   bool unsolved = false, lift = false, senses = false;
   double min_fn = 0.0;  // [N] the most negative tooth reaction, for the lift-off diagnostic
   double worst_turn = 0.0, worst_psi = 0.0;
+  const auto points = static_cast<std::size_t>(std::max(in.points, 0));
+  ProgressLoop loop(points, "points");
   for (int i = 0; i < in.points; ++i) {
+    loop.step(static_cast<std::size_t>(i));
     Sample s = solve_rolling_at(in, r2, sample_gamma(gs, i, in.points));
     if (std::isnan(s.xi)) {
       unsolved = true;
@@ -411,6 +419,7 @@ Result solve_rolling(const RollingInput& in) {
     }
     r.series.push_back(s);
   }
+  loop.step(points);
   for (std::size_t i = 1; i < r.series.size(); ++i) {
     if (!(r.series[i].xi > r.series[i - 1].xi)) continue;
     Range rg{r.series[i - 1].gamma, r.series[i].gamma};

@@ -225,11 +225,13 @@ Planned plan(const Analysis& a, const std::string& name, const CaseFile& file,
 }
 
 // Binds and runs one planned analysis; its problems are named by the case file's paths.
-void run_planned(const Planned& p, CaseRun& out, std::vector<Issue>& issues) {
+void run_planned(const Planned& p, CaseRun& out, std::vector<Issue>& issues,
+                 const Progress* progress) {
   const std::string where = "analyses." + p.name;
   std::vector<Issue> found;
   analysis::Inputs inputs = bind(*p.analysis, p.raw, found);
   inputs.want_drawing();  // the report shows the drawing
+  inputs.listen(progress);
   if (found.empty()) {
     try {
       out.runs.push_back({p.analysis, p.name, p.analysis->evaluate(inputs), p.note});
@@ -304,7 +306,7 @@ CaseInputs case_inputs(const CaseFile& file, const std::string& name, std::vecto
   return out;
 }
 
-CaseRun run_case(const CaseFile& file) {
+CaseRun run_case(const CaseFile& file, const Progress* progress) {
   CaseRun out{file, sha256_hex(file.text), {}};
   std::vector<Issue> issues;
   const std::string chain_type = check_structure(file, issues);
@@ -343,7 +345,7 @@ CaseRun run_case(const CaseFile& file) {
   }
   // no stop before: the analyses that could be planned run too, so that a misspelt key and a
   // wrong unit elsewhere are reported together
-  for (const Planned& p : planned) run_planned(p, out, issues);
+  for (const Planned& p : planned) run_planned(p, out, issues, progress);
   throw_if_any(issues);
   return out;
 }
