@@ -140,4 +140,17 @@ TEST(MessagesCli, WarpConvergedMeansTheResidualTestsPassedAndShowsThem) {
   EXPECT_DOUBLE_EQ(solver.at("equilibrium_tolerance").get<double>(), 30e3 * 1e-6);
 }
 
+// A sprocket of 10⁹ teeth gave R1max = NaN (1 − cos γmax cancelled), and the sweep refused it
+// blaming --plate-radius, an input the user never gave; now it runs, and what double precision
+// cannot compute (R2 of rows beyond eq. 6's reach) is an error diagnostic naming the field.
+TEST(MessagesCli, AHingeSweepOverABillionTeethBlamesNoInputItWasNotGiven) {
+  const CliRun r =
+      run("hinge sweep --pin-diameter 40 --half-thickness 8 --teeth 1000000000 --count 5 "
+          "--format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("--plate-radius"), std::string::npos) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j.at("rows").at(1).at("R1").is_number());  // R1max is finite: the grid spans it
+}
+
 }  // namespace

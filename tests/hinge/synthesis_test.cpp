@@ -75,6 +75,23 @@ TEST(HingeSynthesis, R1maxIsWhereEq6NeedsAFlatFace) {
   EXPECT_FALSE(r2_eq6(h.pin_diameter, h.half_thickness, 1.01 * rmax, gmax).has_value());
 }
 
+// Sprockets of very many teeth (γmax → 0): R1max stays finite and is still where Ψ1max = γmax,
+// and the branch for small γ meets the ordinary one (1 − cos γ had cancelled to 0 at z ~ 1e9,
+// a NaN R1max that a hinge sweep blamed on --plate-radius; issue 18).
+TEST(HingeSynthesis, R1maxStaysFiniteForTinyDesignTurns) {
+  const double d = 0.040, a = 0.008;
+  for (double gmax : {1e-2, 1e-4, 1e-6, 3.14e-9, 1e-12}) {
+    const double rmax = r1_max(d, a, gmax);
+    ASSERT_TRUE(std::isfinite(rmax)) << gmax;
+    // Ψ1max(R1max) = γmax by eq. (5) written as 1 − cos Ψ1max = (d²/4 − a²)/(2R1(R1 + a)),
+    // compared relatively (acos near 1 would lose the digits)
+    const double one_minus_cos = (0.25 * d * d - a * a) / (2.0 * rmax * (rmax + a));
+    EXPECT_NEAR(one_minus_cos / (2.0 * std::pow(std::sin(0.5 * gmax), 2)), 1.0, 1e-9) << gmax;
+  }
+  // continuity across the switch at 1e-3
+  EXPECT_NEAR(r1_max(d, a, 1e-3 * (1 - 1e-12)) / r1_max(d, a, 1e-3 * (1 + 1e-12)), 1.0, 1e-6);
+}
+
 TEST(HingeSynthesis, SectionAreasMatchQuadrature) {
   // [m²] sections of ~6e-4 m² against Gauss-Kronrod over a width with kinks: ~2e-7 relative
   constexpr double kQuadratureAreaTol = 1e-10;

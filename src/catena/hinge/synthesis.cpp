@@ -57,7 +57,12 @@ double psi1_max(double d, double a, double r1) {
 
 double r1_max(double d, double a, double gmax) {
   // 000 eq. (7) with γmax of eq. (12) in place of π/z: the root of Ψ1max(R1) = γmax.
-  return 0.5 * (-a + std::sqrt(a * a + 2.0 * (0.25 * d * d - a * a) / (1.0 - std::cos(gmax))));
+  // 1 − cos γ cancels to 0 for γ below ~1e-8 (z ~ 1e9 teeth: R1max came out NaN and a hinge
+  // sweep blamed --plate-radius, issue 18); 2 sin²(γ/2) is the same without the cancellation,
+  // used only for small γ so that every result of a sprocket with z < 3000 stays bit for bit.
+  const double one_minus_cos =
+      gmax < 1e-3 ? 2.0 * std::pow(std::sin(0.5 * gmax), 2) : 1.0 - std::cos(gmax);
+  return 0.5 * (-a + std::sqrt(a * a + 2.0 * (0.25 * d * d - a * a) / one_minus_cos));
 }
 
 std::optional<double> r2_eq6(double d, double a, double r1, double gmax) {
