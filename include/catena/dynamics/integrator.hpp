@@ -10,6 +10,11 @@
 // search on the residual; the Jacobian is the chain's block tridiagonal (cyclic for a loop)
 // matrix, solved in O(N) by BlockTridiagonalSolver.
 //
+// Sprockets: contact forces are evaluated at the θ point like the links and add 2×2 blocks to the
+// diagonal; a driver's angle is prescribed; a driven wheel's angle is one more unknown of the
+// Newton system, which borders the chain's matrix with one row and column per driven wheel: one
+// more O(N) solve per wheel and a Schur complement of the size of the number of driven wheels.
+//
 // Numerical damping (option theta > ½): the same scheme at the weighted point θ instead of the
 // midpoint (x₁ = x₀ + h ((1 − θ) v₀ + θ v₁), chord and length interpolated at θ), the θ-method.
 // Unconditionally stable, it damps the unresolved high-frequency (axial) modes — each step scales
@@ -39,6 +44,7 @@ struct StepReport {
   int iterations = 0;            ///< Newton iterations taken
   double last_correction = 0.0;  ///< [m] max |Δx| of the last Newton iteration
   int backtracks = 0;            ///< line-search halvings taken
+  double max_penetration = 0.0;  ///< [m] deepest roller–seat penetration at the step's θ point
   SolveStatus solve = SolveStatus::kSolved;
 };
 
@@ -60,9 +66,17 @@ class Integrator {
 
   IntegratorOptions options_;
   BlockTridiagonalSolver solver_;
-  std::vector<double> ux_, uy_;  // the Newton iterate x₁
-  std::vector<double> l0_;       // link lengths at the start of the step
-  std::vector<Vec2> delta_;      // Newton correction
+  std::vector<double> ux_, uy_;          // the Newton iterate x₁
+  std::vector<double> l0_;               // link lengths at the start of the step
+  std::vector<Vec2> delta_;              // Newton correction
+  std::vector<double> psi1_;             // sprocket angles at the end of the step (iterate)
+  std::vector<double> dpsi_;             // their Newton correction
+  std::vector<double> wres_, wdiag_;     // driven wheels: −R_w and ∂R_w/∂ψ₁
+  std::vector<std::size_t> driven_;      // indices of the driven wheels
+  std::vector<std::vector<Vec2>> bcol_;  // per driven wheel: the coupling column ∂R/∂ψ₁
+  std::vector<std::vector<Vec2>> wsol_;  // per driven wheel: A⁻¹ times that column
+  std::vector<double> schur_;            // the driven wheels' Schur complement
+  double max_penetration_ = 0.0;
 };
 
 }  // namespace catena::dynamics

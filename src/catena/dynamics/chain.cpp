@@ -2,7 +2,10 @@
 #include "catena/dynamics/chain.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <string>
+
+#include "catena/drive/sprocket.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -45,7 +48,123 @@ std::vector<Issue> validate(const Model& model) {
     out.push_back({"pinned", std::to_string(model.pinned.size()) + " entries",
                    "empty or one entry per node (" + std::to_string(n) + ")"});
   }
+  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+    const Sprocket& s = model.sprockets[w];
+    const std::string f = "sprocket[" + std::to_string(w) + "].";
+    check::finite(out, (f + "centre_x").c_str(), s.centre_x, "m");
+    check::finite(out, (f + "centre_y").c_str(), s.centre_y, "m");
+    if (s.teeth < 3 || s.teeth > 1000) {
+      out.push_back({f + "teeth", std::to_string(s.teeth), "an integer in [3, 1000]"});
+    }
+    check::finite_positive(out, (f + "pitch_radius").c_str(), s.pitch_radius, "m");
+    check::finite_positive(out, (f + "roller_radius").c_str(), s.roller_radius, "m");
+    if (!std::isfinite(s.seat_radius) || !(s.seat_radius >= s.roller_radius)) {
+      out.push_back(
+          {f + "seat_radius", check::format_si(s.seat_radius, "m"),
+           "a finite value >= the roller radius " + check::format_si(s.roller_radius, "m")});
+    }
+    if (!std::isfinite(s.seating_angle) || !(s.seating_angle > 0.0) ||
+        !(s.seating_angle < std::numbers::pi)) {
+      out.push_back({f + "seating_angle", check::format_si(s.seating_angle, "rad"),
+                     "an angle in (0, pi) rad"});
+    }
+    check::finite_positive(out, (f + "contact_stiffness").c_str(), s.contact_stiffness, "N/m");
+    if (!std::isfinite(s.contact_smoothing) || !(s.contact_smoothing > 0.0) ||
+        !(s.contact_smoothing <= s.roller_radius)) {
+      out.push_back({f + "contact_smoothing", check::format_si(s.contact_smoothing, "m"),
+                     "a length in (0, roller radius]"});
+    }
+    if (!std::isfinite(s.contact_damping) || s.contact_damping < 0.0) {
+      out.push_back({f + "contact_damping", check::format_si(s.contact_damping, "N*s/m"),
+                     "a finite value >= 0 N*s/m"});
+    }
+    if (s.driver) {
+      check::finite(out, (f + "speed").c_str(), s.speed, "rad/s");
+    } else {
+      check::finite_positive(out, (f + "inertia").c_str(), s.inertia, "kg*m^2");
+      check::finite(out, (f + "load_torque").c_str(), s.load_torque, "N*m");
+    }
+  }
   return out;
+}
+
+Sprocket iso606_sprocket(double pitch, double roller_diameter, double inner_width, int teeth,
+                         double centre_x, double centre_y, double contact_stiffness,
+                         double contact_damping) {
+  const drive::Sprocket iso = drive::sprocket({.pitch = pitch,
+                                               .roller_diameter = roller_diameter,
+                                               .inner_width = inner_width,
+                                               .teeth = teeth});
+  Sprocket s;
+  s.centre_x = centre_x;
+  s.centre_y = centre_y;
+  s.teeth = teeth;
+  s.pitch_radius = 0.5 * iso.pitch_diameter;
+  s.seat_radius = iso.min_gap.seating_radius;
+  s.seating_angle = iso.min_gap.seating_angle;
+  s.roller_radius = 0.5 * roller_diameter;
+  s.contact_stiffness = contact_stiffness;
+  s.contact_damping = contact_damping;
+  return s;
+}
+
+SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, double vy, double angle,
+                         double speed) {
+  SeatContact c;
+  const double rx = x - w.centre_x, ry = y - w.centre_y;
+  const double reach = w.pitch_radius + w.roller_radius;
+  if (rx * rx + ry * ry > reach * reach) return c;  // clear of the wheel
+  // The nearest seat from the roller's angle about the centre: O(1), no search.
+  const double tau = 2.0 * std::numbers::pi / w.teeth;
+  const double k = std::nearbyint((std::atan2(ry, rx) - angle) / tau);
+  const double sigma = angle + k * tau;
+  const double cs = std::cos(sigma), sn = std::sin(sigma);
+  c.seat = static_cast<int>(k);
+  c.seat_x = w.centre_x + w.pitch_radius * cs;
+  c.seat_y = w.centre_y + w.pitch_radius * sn;
+  const double ex = x - c.seat_x, ey = y - c.seat_y;
+  // The tooth gap about the seat centre C: the seating arc of radius ri over the seating angle α
+  // about the inward radial, and beyond its ends the flanks, taken as the straight lines tangent
+  // to the arc there (the ISO flank arc re is several pitches: nearly straight over a roller).
+  // γ is the angle of e = q − C from the inward radial, towards the tangent t = (−sin σ, cos σ).
+  const double e_in = -(ex * cs + ey * sn), e_t = -ex * sn + ey * cs;
+  const double gamma = std::atan2(e_t, e_in);
+  const double half = 0.5 * w.seating_angle;
+  double g = 0.0;
+  if (std::abs(gamma) <= half) {
+    const double dist = std::sqrt(ex * ex + ey * ey);
+    if (!(dist > 0.0)) return c;
+    g = dist + w.roller_radius - w.seat_radius;
+    c.nx = ex / dist;
+    c.ny = ey / dist;
+    c.curvature = 1.0 / dist;
+  } else {
+    // the flank's normal m at the arc's end: the inward radial turned by ±α/2 towards t
+    const double side = gamma > 0.0 ? 1.0 : -1.0;
+    const double ch = std::cos(half), sh = side * std::sin(half);
+    c.nx = -cs * ch - sn * sh;
+    c.ny = -sn * ch + cs * sh;
+    g = ex * c.nx + ey * c.ny + w.roller_radius - w.seat_radius;
+    c.curvature = 0.0;
+  }
+  if (!(g > 0.0)) return c;
+  // rate of penetration: the roller's velocity relative to the wheel's material point under it
+  const double rate = (vx + speed * ry) * c.nx + (vy - speed * rx) * c.ny;
+  const double eps = w.contact_smoothing, kc = w.contact_stiffness;
+  const double elastic = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
+  c.stiffness = g < eps ? kc * g / eps : kc;
+  c.energy =
+      g < eps ? kc * g * g * g / (6.0 * eps) : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
+  c.damping = w.contact_damping * std::min(1.0, g / eps);
+  c.force = std::max(0.0, elastic + c.damping * rate);
+  // ∂f/∂g: the elastic slope, and the damping's ramp over the first ε
+  if (g < eps) c.stiffness += w.contact_damping * rate / eps;
+  if (c.force <= 0.0) c.stiffness = c.damping = 0.0;
+  c.active = true;
+  c.penetration = g;
+  // the reaction +f n acts on the wheel along the line through the roller centre q
+  c.torque = c.force * (rx * c.ny - ry * c.nx);
+  return c;
 }
 
 Model uniform_chain(std::size_t nodes, bool closed, double pitch, double node_mass,
@@ -107,6 +226,15 @@ Energy energy(const Model& model, const State& state) {
     const double m = model.mass[i];
     e.kinetic += 0.5 * m * (state.vx[i] * state.vx[i] + state.vy[i] * state.vy[i]);
     e.potential -= m * (model.gravity_x * state.x[i] + model.gravity_y * state.y[i]);
+  }
+  for (std::size_t w = 0; w < model.sprockets.size() && w < state.speed.size(); ++w) {
+    const Sprocket& wheel = model.sprockets[w];
+    if (!wheel.driver) e.kinetic += 0.5 * wheel.inertia * state.speed[w] * state.speed[w];
+    for (std::size_t i = 0; i < n; ++i) {
+      const SeatContact c =
+          seat_contact(wheel, state.x[i], state.y[i], 0.0, 0.0, state.angle[w], 0.0);
+      if (c.active) e.elastic += c.energy;
+    }
   }
   for (std::size_t j = 0; j < model.links(); ++j) {
     const std::size_t b = (j + 1) % n;

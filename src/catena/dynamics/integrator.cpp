@@ -42,7 +42,23 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
       ux_(model.nodes()),
       uy_(model.nodes()),
       l0_(model.links()),
-      delta_(model.nodes()) {}
+      delta_(model.nodes()),
+      psi1_(model.sprockets.size()),
+      dpsi_(model.sprockets.size()),
+      wres_(model.sprockets.size()),
+      wdiag_(model.sprockets.size()),
+      schur_(model.sprockets.size() * model.sprockets.size()) {
+  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+    if (model.sprockets[w].driver) continue;
+    driven_.push_back(w);
+  }
+  bcol_.resize(model.sprockets.size());
+  wsol_.resize(model.sprockets.size());
+  for (std::size_t w : driven_) {
+    bcol_[w].resize(model.nodes());
+    wsol_[w].resize(model.nodes());
+  }
+}
 
 double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   const std::size_t n = model.nodes();
@@ -98,6 +114,58 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     solver_.upper[a] = {-hA.a, -hA.b, -hA.c, -hA.d};
     solver_.lower[b] = {-hA.a, -hA.b, -hA.c, -hA.d};
   }
+  max_penetration_ = 0.0;
+  double wheel_norm2 = 0.0;
+  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+    const Sprocket& wheel = model.sprockets[w];
+    const double psi = (1.0 - th) * s.angle[w] + th * psi1_[w];
+    const double omega = (psi1_[w] - s.angle[w]) / h;
+    const bool driven = !wheel.driver;
+    double torque = 0.0;
+    double wdiag = driven ? wheel.inertia / (h * th) : 0.0;
+    if (driven && jacobian) std::fill(bcol_[w].begin(), bcol_[w].end(), Vec2{});
+    for (std::size_t i = 0; i < n; ++i) {
+      if (model.is_pinned(i)) continue;
+      const double qx = (1.0 - th) * s.x[i] + th * ux_[i];
+      const double qy = (1.0 - th) * s.y[i] + th * uy_[i];
+      const double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
+      const SeatContact sc = seat_contact(wheel, qx, qy, vx, vy, psi, omega);
+      if (!sc.active) continue;
+      max_penetration_ = std::max(max_penetration_, sc.penetration);
+      torque += sc.torque;
+      solver_.rhs[i].x -= h * sc.force * sc.nx;  // the force on the roller is −f n
+      solver_.rhs[i].y -= h * sc.force * sc.ny;
+      if (!jacobian || sc.force <= 0.0) continue;  // separating: no force, no stiffness
+      // D = ∂(h f n)/∂u = normal n nᵀ + tangent (I − n nᵀ), from
+      // ∂(f n)/∂q = (∂f/∂g + c/(θh)) n nᵀ + (f/s)(I − n nᵀ), q = x_θ, ∂q/∂u = θ.
+      const double normal = h * (th * sc.stiffness + sc.damping / h);
+      const double tangent = h * th * sc.force * sc.curvature;
+      const Mat2 dc{normal * sc.nx * sc.nx + tangent * (1.0 - sc.nx * sc.nx),
+                    (normal - tangent) * sc.nx * sc.ny, (normal - tangent) * sc.nx * sc.ny,
+                    normal * sc.ny * sc.ny + tangent * (1.0 - sc.ny * sc.ny)};
+      Mat2& d = solver_.diag[i];
+      d = {d.a + dc.a, d.b + dc.b, d.c + dc.c, d.d + dc.d};
+      if (!driven) continue;
+      // Turning the wheel by dψ₁ (its θ point by θ dψ₁, its speed by dψ₁/h) is, for the
+      // contact, turning the roller the other way about the centre: with t = perp(q − c), the
+      // coupling column is ∂R_i/∂ψ₁ = −D t + h θ f perp(n), the wheel's row is the same, and the
+      // wheel's own derivative gains tᵀ D t − h θ f (q − c)·n.
+      const double cx = qx - wheel.centre_x, cy = qy - wheel.centre_y;
+      const double tx = -cy, ty = cx;
+      const Vec2 dt{dc.a * tx + dc.b * ty, dc.c * tx + dc.d * ty};
+      const double hf = h * th * sc.force;
+      bcol_[w][i] = {-dt.x - hf * sc.ny, -dt.y + hf * sc.nx};
+      wdiag += tx * dt.x + ty * dt.y - hf * (sc.nx * cx + sc.ny * cy);
+    }
+    if (driven) {
+      const double residual = wheel.inertia / (h * th) * (psi1_[w] - s.angle[w] - h * s.speed[w]) -
+                              h * (torque - wheel.load_torque);
+      wres_[w] = -residual;
+      if (jacobian) wdiag_[w] = wdiag;
+      const double force_like = residual / wheel.pitch_radius;
+      wheel_norm2 += force_like * force_like;
+    }
+  }
   if (!model.pinned.empty()) {
     for (std::size_t i = 0; i < n; ++i) {
       if (!model.is_pinned(i)) continue;
@@ -110,7 +178,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       if (model.closed || i > 0) solver_.upper[(i + n - 1) % n] = {};
     }
   }
-  double norm2 = 0.0;
+  double norm2 = wheel_norm2;
   for (std::size_t i = 0; i < n; ++i) {
     norm2 += solver_.rhs[i].x * solver_.rhs[i].x + solver_.rhs[i].y * solver_.rhs[i].y;
   }
@@ -123,16 +191,22 @@ StepReport Integrator::step(const Model& model, State& s) {
   const double th = options_.theta;
   const double tol = options_.tolerance * model.pitch;
   constexpr int kMaxBacktracks = 12;
+  const std::size_t nd = driven_.size();
 
   for (std::size_t j = 0; j < model.links(); ++j) {
     const std::size_t b = (j + 1) % n;
     const double dx = s.x[b] - s.x[j], dy = s.y[b] - s.y[j];
     l0_[j] = std::sqrt(dx * dx + dy * dy);
   }
-  // Predictor: constant velocity.
+  // Predictor: constant velocity (and constant wheel speeds).
   for (std::size_t i = 0; i < n; ++i) {
     ux_[i] = s.x[i] + h * s.vx[i];
     uy_[i] = s.y[i] + h * s.vy[i];
+  }
+  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+    const Sprocket& wheel = model.sprockets[w];
+    psi1_[w] = s.angle[w] + h * (wheel.driver ? wheel.speed : s.speed[w]);
+    dpsi_[w] = 0.0;
   }
 
   StepReport report;
@@ -141,6 +215,56 @@ StepReport Integrator::step(const Model& model, State& s) {
     report.solve = solver_.solve(delta_);
     report.iterations = iter;
     if (report.solve != SolveStatus::kSolved) return report;
+    if (nd > 0) {
+      // The driven wheels border the chain's matrix: [A B; Bᵀ d] [δu; δψ] = [r; r_w]. Solve
+      // A W = B (one more O(N) solve per wheel), then the small Schur complement
+      // (d − Bᵀ W) δψ = r_w − Bᵀ δu₀, and δu = δu₀ − W δψ.
+      for (std::size_t a = 0; a < nd; ++a) {
+        const std::size_t w = driven_[a];
+        std::copy(bcol_[w].begin(), bcol_[w].end(), solver_.rhs.begin());
+        report.solve = solver_.solve(wsol_[w]);
+        if (report.solve != SolveStatus::kSolved) return report;
+      }
+      for (std::size_t a = 0; a < nd; ++a) {
+        const std::vector<Vec2>& ba = bcol_[driven_[a]];
+        double g = wres_[driven_[a]];
+        for (std::size_t i = 0; i < n; ++i) g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
+        dpsi_[driven_[a]] = g;
+        for (std::size_t b = 0; b < nd; ++b) {
+          const std::vector<Vec2>& wb = wsol_[driven_[b]];
+          double sab = a == b ? wdiag_[driven_[a]] : 0.0;
+          for (std::size_t i = 0; i < n; ++i) sab -= ba[i].x * wb[i].x + ba[i].y * wb[i].y;
+          schur_[a * nd + b] = sab;
+        }
+      }
+      // Gaussian elimination on the nd × nd Schur complement (nd is the number of driven
+      // wheels: small), right-hand side in dpsi_.
+      for (std::size_t c = 0; c < nd; ++c) {
+        const double piv = schur_[c * nd + c];
+        if (!(std::abs(piv) > 0.0) || !std::isfinite(piv)) {
+          report.solve = SolveStatus::kSingularPivot;
+          return report;
+        }
+        for (std::size_t r = c + 1; r < nd; ++r) {
+          const double f = schur_[r * nd + c] / piv;
+          for (std::size_t k = c; k < nd; ++k) schur_[r * nd + k] -= f * schur_[c * nd + k];
+          dpsi_[driven_[r]] -= f * dpsi_[driven_[c]];
+        }
+      }
+      for (std::size_t c = nd; c-- > 0;) {
+        double v = dpsi_[driven_[c]];
+        for (std::size_t k = c + 1; k < nd; ++k) v -= schur_[c * nd + k] * dpsi_[driven_[k]];
+        dpsi_[driven_[c]] = v / schur_[c * nd + c];
+      }
+      for (std::size_t a = 0; a < nd; ++a) {
+        const std::vector<Vec2>& wa = wsol_[driven_[a]];
+        const double d = dpsi_[driven_[a]];
+        for (std::size_t i = 0; i < n; ++i) {
+          delta_[i].x -= wa[i].x * d;
+          delta_[i].y -= wa[i].y * d;
+        }
+      }
+    }
     double correction = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       if (!std::isfinite(delta_[i].x) || !std::isfinite(delta_[i].y)) {
@@ -150,6 +274,10 @@ StepReport Integrator::step(const Model& model, State& s) {
       ux_[i] += delta_[i].x;
       uy_[i] += delta_[i].y;
       correction = std::max({correction, std::abs(delta_[i].x), std::abs(delta_[i].y)});
+    }
+    for (std::size_t w : driven_) {
+      psi1_[w] += dpsi_[w];
+      correction = std::max(correction, std::abs(dpsi_[w]) * model.sprockets[w].pitch_radius);
     }
     report.last_correction = correction;
     if (correction <= tol) {
@@ -166,11 +294,13 @@ StepReport Integrator::step(const Model& model, State& s) {
         ux_[i] -= lambda * delta_[i].x;
         uy_[i] -= lambda * delta_[i].y;
       }
+      for (std::size_t w : driven_) psi1_[w] -= lambda * dpsi_[w];
       next = assemble(model, s, true);
       ++report.backtracks;
     }
     norm2 = next;
   }
+  report.max_penetration = max_penetration_;
   if (!report.converged) return report;
   for (std::size_t i = 0; i < n; ++i) {
     if (model.is_pinned(i)) continue;
@@ -181,6 +311,12 @@ StepReport Integrator::step(const Model& model, State& s) {
     s.y[i] = uy_[i];
     s.vx[i] = vx;
     s.vy[i] = vy;
+  }
+  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+    const Sprocket& wheel = model.sprockets[w];
+    s.speed[w] = wheel.driver ? wheel.speed
+                              : (psi1_[w] - s.angle[w] - h * (1.0 - th) * s.speed[w]) / (h * th);
+    s.angle[w] = psi1_[w];
   }
   s.time += h;
   return report;
