@@ -49,15 +49,23 @@ class BlockTridiagonalSolver {
   std::vector<Mat2> lower, diag, upper;  ///< the blocks, filled by the caller
   std::vector<Vec2> rhs;                 ///< the right-hand side, filled by the caller
 
-  /// Solves the system into x (size n). The blocks and rhs are left unchanged.
+  /// Solves the system into x (size n): factor() then substitute(rhs, x). The blocks and rhs
+  /// are left unchanged.
   SolveStatus solve(std::span<Vec2> x);
+
+  /// Factors the blocks (and, for a cyclic system, solves for the closure's two columns).
+  SolveStatus factor();
+  /// Solves for another right-hand side b with the last successful factor(); b may alias rhs.
+  void substitute(std::span<const Vec2> b, std::span<Vec2> x);
 
  private:
   std::size_t n_;
   bool cyclic_;
-  // workspace: C'_i = S_i⁻¹ U_i, the eliminated right-hand side, and the eliminated W
-  std::vector<Mat2> c_prime_, w_;
+  // the factors: S_i⁻¹ and C'_i = S_i⁻¹ U_i; for a cyclic system Q = T⁻¹ W, (I + Zᵀ Q)⁻¹ and
+  // G⁻¹ L_0; y_ is the substitution's workspace
+  std::vector<Mat2> s_inv_, c_prime_, w_;
   std::vector<Vec2> y_;
+  Mat2 cap_inv_, h_;
 };
 
 }  // namespace catena::dynamics

@@ -13,7 +13,8 @@
 // Sprockets: contact forces are evaluated at the θ point like the links and add 2×2 blocks to the
 // diagonal; a driver's angle is prescribed; a driven wheel's angle is one more unknown of the
 // Newton system, which borders the chain's matrix with one row and column per driven wheel: one
-// more O(N) solve per wheel and a Schur complement of the size of the number of driven wheels.
+// more O(N) substitution per wheel (same factors) and a Schur complement of the size of the number
+// of driven wheels.
 //
 // Numerical damping (option theta > ½): the same scheme at the weighted point θ instead of the
 // midpoint (x₁ = x₀ + h ((1 − θ) v₀ + θ v₁), chord and length interpolated at θ), the θ-method.

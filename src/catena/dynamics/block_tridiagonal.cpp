@@ -36,13 +36,28 @@ bool invert(const Mat2& m, Mat2& inv) {
 }  // namespace
 
 BlockTridiagonalSolver::BlockTridiagonalSolver(std::size_t n, bool cyclic)
-    : lower(n), diag(n), upper(n), rhs(n), n_(n), cyclic_(cyclic), c_prime_(n), w_(n), y_(n) {
+    : lower(n),
+      diag(n),
+      upper(n),
+      rhs(n),
+      n_(n),
+      cyclic_(cyclic),
+      s_inv_(n),
+      c_prime_(n),
+      w_(n),
+      y_(n) {
   if (cyclic && n < 3) throw std::invalid_argument("a cyclic block system needs n >= 3");
   if (n < 1) throw std::invalid_argument("a block system needs n >= 1");
 }
 
 SolveStatus BlockTridiagonalSolver::solve(std::span<Vec2> x) {
   if (x.size() != n_) throw std::invalid_argument("solution span has the wrong size");
+  const SolveStatus status = factor();
+  if (status == SolveStatus::kSolved) substitute(rhs, x);
+  return status;
+}
+
+SolveStatus BlockTridiagonalSolver::factor() {
   const std::size_t n = n_;
   const std::size_t last = n - 1;
 
@@ -52,11 +67,10 @@ SolveStatus BlockTridiagonalSolver::solve(std::span<Vec2> x) {
   // L_0. For symmetric A, W Zᵀ = −[I; −L_0ᵀ D_0⁻¹] D_0 [I, −D_0⁻¹ L_0] is negative semidefinite, so
   // T = A − W Zᵀ is positive definite whenever A is: its block LU needs no pivoting.
   Mat2 d0_inv;
-  Mat2 h;  // G⁻¹ L_0 = −D_0⁻¹ L_0
   if (cyclic_) {
     if (!invert(diag[0], d0_inv)) return SolveStatus::kSingularPivot;
     const Mat2 m = d0_inv * lower[0];
-    h = {-m.a, -m.b, -m.c, -m.d};
+    h_ = {-m.a, -m.b, -m.c, -m.d};  // G⁻¹ L_0 = −D_0⁻¹ L_0
   }
   auto t_diag = [&](std::size_t i) -> Mat2 {
     if (!cyclic_) return diag[i];
@@ -70,35 +84,36 @@ SolveStatus BlockTridiagonalSolver::solve(std::span<Vec2> x) {
     return {};
   };
 
-  // Forward elimination of T [y Q] = [b W] (n = 1 is a single block).
-  Mat2 s_inv;
-  if (!invert(t_diag(0), s_inv)) return SolveStatus::kSingularPivot;
-  if (n > 1) c_prime_[0] = s_inv * upper[0];
-  y_[0] = s_inv * rhs[0];
-  if (cyclic_) w_[0] = s_inv * w_block(0);
+  // Block LU of T; for a cyclic system the forward sweep of T Q = W rides along.
+  if (!invert(t_diag(0), s_inv_[0])) return SolveStatus::kSingularPivot;
+  if (n > 1) c_prime_[0] = s_inv_[0] * upper[0];
+  if (cyclic_) w_[0] = s_inv_[0] * w_block(0);
   for (std::size_t i = 1; i < n; ++i) {
     const Mat2 s = t_diag(i) - lower[i] * c_prime_[i - 1];
-    if (!invert(s, s_inv)) return SolveStatus::kSingularPivot;
-    if (i < last) c_prime_[i] = s_inv * upper[i];
-    y_[i] = s_inv * (rhs[i] - lower[i] * y_[i - 1]);
-    if (cyclic_) w_[i] = s_inv * (w_block(i) - lower[i] * w_[i - 1]);
+    if (!invert(s, s_inv_[i])) return SolveStatus::kSingularPivot;
+    if (i < last) c_prime_[i] = s_inv_[i] * upper[i];
+    if (cyclic_) w_[i] = s_inv_[i] * (w_block(i) - lower[i] * w_[i - 1]);
   }
-  // Back substitution.
-  for (std::size_t k = n - 1; k-- > 0;) {
-    y_[k] = y_[k] - c_prime_[k] * y_[k + 1];
-    if (cyclic_) w_[k] = w_[k] - c_prime_[k] * w_[k + 1];
-  }
+  if (!cyclic_) return SolveStatus::kSolved;
+  for (std::size_t k = n - 1; k-- > 0;) w_[k] = w_[k] - c_prime_[k] * w_[k + 1];
+  // Sherman–Morrison–Woodbury: x = y − Q (I + Zᵀ Q)⁻¹ Zᵀ y, Zᵀ v = v_0 + G⁻¹ L_0 v_{n−1}.
+  const Mat2 capacitance = Mat2{1.0, 0.0, 0.0, 1.0} + w_[0] + h_ * w_[last];
+  if (!invert(capacitance, cap_inv_)) return SolveStatus::kSingularPivot;
+  return SolveStatus::kSolved;
+}
+
+void BlockTridiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec2> x) {
+  if (x.size() != n_ || b.size() != n_) throw std::invalid_argument("span of the wrong size");
+  const std::size_t n = n_;
+  y_[0] = s_inv_[0] * b[0];
+  for (std::size_t i = 1; i < n; ++i) y_[i] = s_inv_[i] * (b[i] - lower[i] * y_[i - 1]);
+  for (std::size_t k = n - 1; k-- > 0;) y_[k] = y_[k] - c_prime_[k] * y_[k + 1];
   if (!cyclic_) {
     for (std::size_t i = 0; i < n; ++i) x[i] = y_[i];
-    return SolveStatus::kSolved;
+    return;
   }
-  // Sherman–Morrison–Woodbury: x = y − Q (I + Zᵀ Q)⁻¹ Zᵀ y, Zᵀ v = v_0 + G⁻¹ L_0 v_{n−1}.
-  const Mat2 capacitance = Mat2{1.0, 0.0, 0.0, 1.0} + w_[0] + h * w_[last];
-  Mat2 cap_inv;
-  if (!invert(capacitance, cap_inv)) return SolveStatus::kSingularPivot;
-  const Vec2 z = cap_inv * (y_[0] + h * y_[last]);
+  const Vec2 z = cap_inv_ * (y_[0] + h_ * y_[n - 1]);
   for (std::size_t i = 0; i < n; ++i) x[i] = y_[i] - w_[i] * z;
-  return SolveStatus::kSolved;
 }
 
 }  // namespace catena::dynamics

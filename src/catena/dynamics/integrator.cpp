@@ -217,13 +217,11 @@ StepReport Integrator::step(const Model& model, State& s) {
     if (report.solve != SolveStatus::kSolved) return report;
     if (nd > 0) {
       // The driven wheels border the chain's matrix: [A B; Bᵀ d] [δu; δψ] = [r; r_w]. Solve
-      // A W = B (one more O(N) solve per wheel), then the small Schur complement
-      // (d − Bᵀ W) δψ = r_w − Bᵀ δu₀, and δu = δu₀ − W δψ.
+      // A W = B (one more O(N) substitution per wheel, same factors), then the small Schur
+      // complement (d − Bᵀ W) δψ = r_w − Bᵀ δu₀, and δu = δu₀ − W δψ.
       for (std::size_t a = 0; a < nd; ++a) {
         const std::size_t w = driven_[a];
-        std::copy(bcol_[w].begin(), bcol_[w].end(), solver_.rhs.begin());
-        report.solve = solver_.solve(wsol_[w]);
-        if (report.solve != SolveStatus::kSolved) return report;
+        solver_.substitute(bcol_[w], wsol_[w]);  // the same factors as δu₀'s solve
       }
       for (std::size_t a = 0; a < nd; ++a) {
         const std::vector<Vec2>& ba = bcol_[driven_[a]];
