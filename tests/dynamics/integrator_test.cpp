@@ -171,7 +171,12 @@ TEST(DynamicsIntegrator, InvalidInputListsEveryProblem) {
   Model ok = uniform_chain(5, false, 0.02, 0.03, 1e6, 0.0, true);
   State s(4);
   EXPECT_FALSE(validate(ok, s).empty());
-  State t(5);  // all nodes at the origin: links of zero length
+  Integrator integ(ok, {});
+  EXPECT_THROW(integ.step(ok, s), InputError);  // a state of the wrong size
+  Model other = uniform_chain(6, false, 0.02, 0.03, 1e6, 0.0, true);
+  State s6(6);
+  EXPECT_THROW(integ.step(other, s6), InputError);  // another model
+  State t(5);                                       // all nodes at the origin: links of zero length
   EXPECT_FALSE(validate(ok, t).empty());
 }
 

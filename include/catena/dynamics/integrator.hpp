@@ -55,8 +55,10 @@ class Integrator {
   /// Validates model and options (throws InputError listing every problem).
   Integrator(const Model& model, IntegratorOptions options);
 
-  /// Advances `state` by one step h. The state must belong to the model the integrator was
-  /// built for (the same node count). On a failed solve the state is left unchanged.
+  /// Advances `state` by one step h. Throws InputError when the model is not the one the
+  /// integrator was built for or the state's arrays have the wrong sizes (checked every step, in
+  /// O(1)); the state's values are checked by validate(model, state), which the caller runs
+  /// once. On a failed solve the state is left unchanged and the report says why.
   StepReport step(const Model& model, State& state);
 
   const IntegratorOptions& options() const { return options_; }

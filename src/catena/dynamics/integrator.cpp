@@ -186,6 +186,18 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
 }
 
 StepReport Integrator::step(const Model& model, State& s) {
+  // O(1) guards: a model or state of another size would index out of bounds.
+  if (model.nodes() != solver_.size() || model.closed != solver_.cyclic() ||
+      model.sprockets.size() != psi1_.size()) {
+    throw InputError({{"model", std::to_string(model.nodes()) + " nodes",
+                       "the model this integrator was built for (" +
+                           std::to_string(solver_.size()) + " nodes)"}});
+  }
+  if (s.x.size() != model.nodes() || s.y.size() != model.nodes() || s.vx.size() != model.nodes() ||
+      s.vy.size() != model.nodes() || s.angle.size() != model.sprockets.size() ||
+      s.speed.size() != model.sprockets.size()) {
+    throw_if_any(validate(model, s));
+  }
   const std::size_t n = model.nodes();
   const double h = options_.step;
   const double th = options_.theta;
