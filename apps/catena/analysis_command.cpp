@@ -32,7 +32,10 @@ std::string flag_of(const std::string& key) {
 // A model's and the binder's issues name parameter keys; the user typed flags.
 std::vector<Issue> as_flags(const analysis::Analysis& a, std::vector<Issue> issues) {
   for (Issue& issue : issues) {
-    if (a.renames(issue.field)) issue.field = flag_of(issue.field);
+    const Parameter* p = a.parameter(issue.field);
+    // an optional table is a --flag FILE here (a required one is the positional FILE)
+    const bool optional_table = p && p->type == ParameterType::kTable && !p->required;
+    if (a.renames(issue.field) || optional_table) issue.field = flag_of(issue.field);
   }
   return issues;
 }
@@ -86,7 +89,11 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
       continue;
     }
     if (p.type == ParameterType::kTable) {  // a TOML file holding the table
-      cmd->add_option("FILE", state->texts[p.name], p.doc)->required();
+      if (p.required) {
+        cmd->add_option("FILE", state->texts[p.name], p.doc)->required();
+      } else {  // an optional table: --name FILE
+        cmd->add_option(names, state->texts[p.name], p.doc)->type_name("FILE");
+      }
       continue;
     }
     CLI::Option* o = cmd->add_option(names, state->texts[p.name], help_of(p));
@@ -150,9 +157,11 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
           raw.push_back({p.name, "true", io::RawInput::Type::kBoolean, {}, {}});
       } else if (p.type == ParameterType::kTable) {
         const std::string& path = state->texts[p.name];
+        if (!p.required && path.empty()) continue;  // an optional table not given
         std::ifstream in(path, std::ios::binary);
         if (!in)
-          throw InputError({{"FILE", path, "a readable TOML file with a [" + p.name + "] table"}});
+          throw InputError({{p.required ? std::string("FILE") : flag_of(p.name), path,
+                             "a readable TOML file with a [" + p.name + "] table"}});
         std::stringstream text;
         text << in.rdbuf();
         raw.push_back(io::table_input(io::parse_case(text.str(), path), p));
@@ -165,10 +174,19 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
     throw_if_any(as_flags(a, std::move(issues)));
     inputs.want_drawing(!state->svg.empty() || !state->dxf.empty());
     analysis::Record record;
-    try {
-      record = a.evaluate(inputs);
-    } catch (const InputError& error) {
-      throw InputError(as_flags(a, error.issues()));
+    {
+      // progress on a terminal, and Ctrl-C, for the run (not for the writing that follows)
+      ProgressBar bar;
+      std::string label;
+      for (const std::string& word : a.command) label += (label.empty() ? "" : " ") + word;
+      const Progress progress = listen(bar, label);
+      inputs.listen(&progress);
+      try {
+        record = a.evaluate(inputs);
+      } catch (const InputError& error) {
+        throw InputError(as_flags(a, error.issues()));
+      }
+      inputs.listen(nullptr);
     }
     std::string text;
     if (state->format == "json") {

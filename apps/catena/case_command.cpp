@@ -28,6 +28,15 @@ io::CaseFile load(const CaseFlags& f) {
   return io::read_case(f.path);
 }
 
+// Runs the case with the bar on a terminal naming the analysis that runs ("catena run ring
+// [###...]"), and Ctrl-C.
+io::CaseRun run_listening(const CaseFlags& f, const std::string& command) {
+  const io::CaseFile file = load(f);
+  ProgressBar bar;
+  const Progress progress = listen(bar, command, true);
+  return io::run_case(file, &progress);
+}
+
 }  // namespace
 
 std::function<int()> add_run(CLI::App& app) {
@@ -39,7 +48,7 @@ std::function<int()> add_run(CLI::App& app) {
   c->add_option("-o,--output", f->output, "write the JSON to FILE instead of stdout");
   return [f]() {
     write_text_output(
-        f->output, io::to_json(io::result_tree(io::run_case(load(*f)), CATENA_VERSION)), f->path);
+        f->output, io::to_json(io::result_tree(run_listening(*f, "run"), CATENA_VERSION)), f->path);
     return 0;
   };
 }
@@ -56,7 +65,7 @@ std::function<int()> add_report(CLI::App& app) {
   c->add_option("--format", f->format, "html (default) or json (the whole result tree)")
       ->check(CLI::IsMember({"html", "json"}));
   return [f]() {
-    const io::CaseRun run = io::run_case(load(*f));
+    const io::CaseRun run = run_listening(*f, "report");
     if (f->format == "json") {
       write_text_output(f->output, io::to_json(io::result_tree(run, CATENA_VERSION)), f->path);
       return 0;

@@ -10,8 +10,10 @@
 #include <vector>
 
 #include "catena/core/error.hpp"
+#include "catena/core/progress.hpp"
 #include "catena/io/atomic_file.hpp"
 #include "catena/io/case_file.hpp"
+#include "cli_support.hpp"
 #include "commands.hpp"
 
 namespace {
@@ -89,9 +91,15 @@ int run(int argc, char** argv) {
     return status == 0 ? 0 : 2;
   }
   try {
+    // Ctrl-C while a command runs stops it at the run's next poll (catena::Cancelled)
+    const catena::cli::InterruptGuard interrupt;
     for (auto& [name, action] : actions) {
       if (app.got_subcommand(name)) return action();
     }
+  } catch (const catena::Cancelled&) {
+    // 128 + SIGINT, as a shell reports a command that Ctrl-C ended
+    std::cerr << "catena: interrupted (Ctrl-C); nothing was written\n";
+    return 130;
   } catch (const catena::InputError& error) {
     std::cerr << "catena: " << error.what() << "\n";
     return 2;

@@ -3,10 +3,7 @@
 // inputs, the scalar results, the worst diagnostic. The case gives the analysis and the values
 // every point shares exactly as `catena run` binds them; the grid keys are case paths
 // (analyses.hinge.teeth) or, when the case has one analysis table, bare keys (teeth).
-#include <unistd.h>
-
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -33,39 +30,6 @@ struct GridFlag {
   std::string flag;   ///< "--grid analyses.hinge.teeth": how problems name it
   std::string table;  ///< the analysis table it names ("" for a bare key)
   SweepAxis axis;     ///< key: the parameter key
-};
-
-// A bar on stderr, drawn only when stderr is a terminal and the sweep has run for a second.
-class ProgressBar {
- public:
-  ProgressBar() : terminal_(::isatty(STDERR_FILENO) == 1), start_(Clock::now()) {}
-  void operator()(std::size_t done, std::size_t total) {
-    if (!terminal_) return;
-    const double seconds = std::chrono::duration<double>(Clock::now() - start_).count();
-    if (seconds < 1.0 && !drawn_) return;
-    constexpr int kWidth = 40;
-    const int filled = total == 0 ? kWidth : static_cast<int>(kWidth * done / total);
-    std::fprintf(stderr, "\rcatena sweep [%s%s] %zu/%zu points, %.0f s",
-                 std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                 std::string(static_cast<std::size_t>(kWidth - filled), '.').c_str(), done, total,
-                 seconds);
-    std::fflush(stderr);
-    drawn_ = true;
-  }
-  /// Ends the bar's line, so that later messages start on their own.
-  void finish() {
-    if (drawn_) std::fputs("\n", stderr);
-    drawn_ = false;
-  }
-  ~ProgressBar() { finish(); }
-  ProgressBar(const ProgressBar&) = delete;
-  ProgressBar& operator=(const ProgressBar&) = delete;
-
- private:
-  using Clock = std::chrono::steady_clock;
-  bool terminal_;
-  bool drawn_ = false;
-  Clock::time_point start_;
 };
 
 std::vector<GridFlag> read_grid(const std::vector<std::string>& texts, std::vector<Issue>& issues) {
@@ -164,7 +128,9 @@ std::function<int()> add_sweep(CLI::App& app) {
     if (inputs.analysis != nullptr) {
       request.analysis = inputs.analysis->name;
       for (const analysis::Parameter& p : inputs.analysis->parameters) {
-        if (p.type == analysis::ParameterType::kTable)
+        // an analysis whose one input is a table (loop) cannot be swept; an optional table
+        // (wear's [loop]) is not passed to the points
+        if (p.type == analysis::ParameterType::kTable && p.required)
           issues.push_back({"analyses." + table, "(table)",
                             "an analysis without a table parameter ([" + p.name +
                                 "]): a sweep passes every value as text"});
@@ -206,7 +172,12 @@ std::function<int()> add_sweep(CLI::App& app) {
     SweepOptions options;
     options.threads = f->threads;
     options.keep_records = false;
-    options.progress = [&bar](std::size_t done, std::size_t total) { bar(done, total); };
+    options.cancel = interrupt_flag();
+    if (bar.terminal()) {
+      options.progress = [&bar](std::size_t done, std::size_t total) {
+        bar.draw("sweep", done, total, "points");
+      };
+    }
     const SweepResult result = sweep(request, options);
     bar.finish();
     std::size_t failed = 0;

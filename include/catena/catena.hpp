@@ -24,8 +24,10 @@ const analysis::Analysis* find_analysis(std::string_view name);
 /// Throws InputError listing every problem at once, fields named by parameter key. Safe to call
 /// from several threads at once (sweeps do): the registry is built once and only read, analyses
 /// keep no state between runs, and UDUNITS-2 (not thread-safe) is used under one mutex in
-/// io/quantity.cpp; tests/analysis/sweep_test.cpp runs it on 8 threads.
+/// io/quantity.cpp; tests/analysis/sweep_test.cpp runs it on 8 threads. The run reports to and
+/// stops on `progress` when given (catena/core/progress.hpp): cancelled, it throws Cancelled.
 analysis::Record run(std::string_view name,
-                     const std::vector<std::pair<std::string, std::string>>& inputs);
+                     const std::vector<std::pair<std::string, std::string>>& inputs,
+                     const Progress* progress = nullptr);
 
 }  // namespace catena

@@ -6,6 +6,7 @@
 // (`catena sweep`) and the Python module are front ends of this.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <memory>
@@ -17,6 +18,7 @@
 
 #include "catena/analysis/record.hpp"
 #include "catena/core/error.hpp"
+#include "catena/core/progress.hpp"
 
 namespace catena {
 
@@ -51,6 +53,10 @@ struct SweepOptions {
   /// Called on the calling thread while the sweep runs (at most about every 50 ms, and once at
   /// the end with done == total), never from a worker.
   std::function<void(std::size_t done, std::size_t total)> progress;
+  /// When set (from any thread, or a signal handler), the workers take no new point and the
+  /// running points stop at their next poll (catena/core/progress.hpp); `sweep` then throws
+  /// Cancelled once every thread has stopped, and returns no result.
+  const std::atomic<bool>* cancel = nullptr;
   /// Keep each point's whole Record; false keeps only its scalars and worst diagnostic (what
   /// the table needs: a 10⁵-point sweep then holds megabytes, not gigabytes).
   bool keep_records = true;

@@ -6,7 +6,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <future>
 #include <memory>
 #include <string>
 #include <utility>
@@ -30,6 +33,50 @@ std::string_view plotly_js();  // embedded web/node_modules/plotly.js-dist-min/p
 namespace py = pybind11;
 
 namespace {
+
+// The ident of Python's main thread, the only one that runs signal handlers (set at import).
+unsigned long main_thread_ident = 0;
+
+// Runs `work(cancel)` with the GIL released. On Python's main thread it runs on a thread of its
+// own while this one waits, checking for signals every 50 ms (PyErr_CheckSignals): a Ctrl-C
+// (KeyboardInterrupt, or whatever a Python signal handler raised) sets `cancel`, the run stops
+// at its next poll (catena/core/progress.hpp), and the exception is raised once it has stopped:
+// no result. On another thread (a pool's worker) no signal can arrive: it runs right here.
+template <class Work>
+auto interruptible(Work work) -> decltype(work(nullptr)) {
+  if (PyThread_get_thread_ident() != main_thread_ident) {
+    py::gil_scoped_release release;
+    return work(nullptr);
+  }
+  std::atomic<bool> cancel{false};
+  auto future = std::async(std::launch::async, [&work, &cancel] { return work(&cancel); });
+  for (;;) {
+    {
+      py::gil_scoped_release release;
+      if (future.wait_for(std::chrono::milliseconds(50)) == std::future_status::ready) break;
+    }
+    if (PyErr_CheckSignals() != 0) {
+      cancel.store(true);
+      {
+        py::gil_scoped_release release;
+        future.wait();
+      }
+      try {
+        (void)future.get();  // Cancelled, or a result that came in the meantime: dropped
+      } catch (...) {
+      }
+      throw py::error_already_set();
+    }
+  }
+  return future.get();
+}
+
+// A Progress that only listens for `cancel` (nullptr: nobody listens).
+catena::Progress cancel_only(const std::atomic<bool>* cancel) {
+  catena::Progress progress;
+  progress.cancel = cancel;
+  return progress;
+}
 
 using catena::analysis::Analysis;
 using catena::analysis::Parameter;
@@ -220,6 +267,8 @@ catena::io::Report results_report(const std::vector<const Result*>& results,
 PYBIND11_MODULE(_core, m) {
   m.doc() = "Catena's C++ library (use the catena package, not this module)";
   m.attr("__version__") = CATENA_VERSION;
+  main_thread_ident =
+      py::module_::import("threading").attr("main_thread")().attr("ident").cast<unsigned long>();
 
   // InputError crosses as (issues) through this exception; python/catena/__init__.py raises
   // catena.InputError from it.
@@ -234,6 +283,8 @@ PYBIND11_MODULE(_core, m) {
       PyErr_SetObject(input_error.ptr(), error.ptr());
     } catch (const catena::io::WriteError& e) {
       PyErr_SetString(PyExc_OSError, e.what());
+    } catch (const catena::Cancelled& e) {  // interruptible() raises the signal's own error
+      PyErr_SetString(PyExc_KeyboardInterrupt, e.what());
     }
   });
 
@@ -277,10 +328,10 @@ PYBIND11_MODULE(_core, m) {
     auto r = std::make_shared<Result>();
     r->name = name;
     r->inputs = inputs;
-    {
-      py::gil_scoped_release release;
-      r->record = catena::run(name, inputs);
-    }
+    r->record = interruptible([&](const std::atomic<bool>* cancel) {
+      const catena::Progress progress = cancel_only(cancel);
+      return catena::run(name, inputs, cancel != nullptr ? &progress : nullptr);
+    });
     return r;
   });
 
@@ -295,11 +346,11 @@ PYBIND11_MODULE(_core, m) {
     catena::SweepOptions options;
     options.threads = threads;
     options.keep_records = false;
-    catena::SweepTable table;
-    {
-      py::gil_scoped_release release;
-      table = catena::sweep_table(catena::sweep(request, options));
-    }
+    const catena::SweepTable table = interruptible([&](const std::atomic<bool>* cancel) {
+      catena::SweepOptions own = options;
+      own.cancel = cancel;
+      return catena::sweep_table(catena::sweep(request, own));
+    });
     py::list columns;
     py::list units;
     for (const auto& r : table.results) {
@@ -337,8 +388,11 @@ PYBIND11_MODULE(_core, m) {
 
   m.def("run_case", [](const std::string& path) {
     auto c = std::make_shared<Case>();
-    py::gil_scoped_release release;
-    c->run = catena::io::run_case(catena::io::read_case(path));
+    c->run = interruptible([&](const std::atomic<bool>* cancel) {
+      const catena::Progress progress = cancel_only(cancel);
+      return catena::io::run_case(catena::io::read_case(path),
+                                  cancel != nullptr ? &progress : nullptr);
+    });
     return c;
   });
 

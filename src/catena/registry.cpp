@@ -51,7 +51,8 @@ const analysis::Analysis* find_analysis(std::string_view name) {
 }
 
 analysis::Record run(std::string_view name,
-                     const std::vector<std::pair<std::string, std::string>>& inputs) {
+                     const std::vector<std::pair<std::string, std::string>>& inputs,
+                     const Progress* progress) {
   const analysis::Analysis* a = find_analysis(name);
   if (a == nullptr) throw InputError({{"analysis", std::string(name), "an analysis Catena has"}});
   std::vector<io::RawInput> raw;
@@ -76,7 +77,8 @@ analysis::Record run(std::string_view name,
         {key, text, is_flag ? io::RawInput::Type::kBoolean : io::RawInput::Type::kText, {}, {}});
   }
   std::vector<Issue> bound;
-  const analysis::Inputs in = io::bind(*a, raw, bound);
+  analysis::Inputs in = io::bind(*a, raw, bound);
+  in.listen(progress);
   for (Issue& issue : bound) {  // not again as missing
     if (std::find(unread.begin(), unread.end(), issue.field) == unread.end())
       issues.push_back(std::move(issue));

@@ -70,7 +70,8 @@ InputSet merged(const InputSet& base, const InputSet& point) {
 
 void check_key(const analysis::Analysis& a, const std::vector<std::string>& known,
                const std::string& key, const std::string& text, std::vector<Issue>& issues) {
-  if (a.parameter(key) != nullptr) return;
+  // allow_large is no parameter, but every analysis reads it (the binder does)
+  if (a.parameter(key) != nullptr || key == analysis::kAllowLarge) return;
   const auto near = io::did_you_mean(key, known);
   issues.push_back({key, text,
                     "an input of '" + a.name + "'" +
@@ -82,10 +83,10 @@ void check_key(const analysis::Analysis& a, const std::vector<std::string>& know
 // `layout` is the worker's last list of scalar names: points with the same names share it, so a
 // long sweep holds its names once, not once per point.
 void run_point(const std::string& name, const InputSet& base, SweepPoint& point, bool keep,
-               std::shared_ptr<const std::vector<ScalarName>>& layout,
-               std::exception_ptr& failure) {
+               std::shared_ptr<const std::vector<ScalarName>>& layout, std::exception_ptr& failure,
+               const Progress* progress) {
   try {
-    analysis::Record record = run(name, merged(base, point.inputs));
+    analysis::Record record = run(name, merged(base, point.inputs), progress);
     point.scalars = scalars_of(record.data);
     if (layout && *layout == *point.scalars.names) {
       point.scalars.names = layout;
@@ -213,7 +214,7 @@ std::vector<InputSet> sweep_points(const SweepRequest& request) {
   std::vector<std::string> unknown;  // each unknown key of the points once
   for (const InputSet& point : request.points) {
     for (const auto& [key, text] : point) {
-      if (a->parameter(key) != nullptr ||
+      if (a->parameter(key) != nullptr || key == analysis::kAllowLarge ||
           std::find(unknown.begin(), unknown.end(), key) != unknown.end())
         continue;
       unknown.push_back(key);
@@ -306,12 +307,18 @@ SweepResult sweep(const SweepRequest& request, const SweepOptions& options) {
   std::mutex mutex;
   std::condition_variable finished;
   const bool keep = options.keep_records;
+  // each point's run polls the cancel flag too (the points report no progress of their own)
+  Progress point_progress;
+  point_progress.cancel = options.cancel;
+  const Progress* listen = options.cancel != nullptr ? &point_progress : nullptr;
   auto work = [&] {
     std::shared_ptr<const std::vector<ScalarName>> layout;
     for (;;) {
+      if (point_progress.cancelled()) break;
       const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
       if (i >= total) break;
-      run_point(request.analysis, request.base, result.points[i], keep, layout, failures[i]);
+      run_point(request.analysis, request.base, result.points[i], keep, layout, failures[i],
+                listen);
       if (done.fetch_add(1, std::memory_order_acq_rel) + 1 == total) {
         const std::lock_guard<std::mutex> lock(mutex);
         finished.notify_all();
@@ -338,11 +345,13 @@ SweepResult sweep(const SweepRequest& request, const SweepOptions& options) {
         lock.lock();
         reported = now;
       }
-      if (now == total) break;
+      if (now == total || point_progress.cancelled()) break;
       finished.wait_for(lock, std::chrono::milliseconds(50));
     }
   }
   for (std::thread& t : pool) t.join();
+  // a cancelled sweep returns nothing, though some points may have run
+  point_progress.throw_if_cancelled();
   for (const std::exception_ptr& failure : failures) {
     if (failure) std::rethrow_exception(failure);
   }

@@ -3,14 +3,15 @@
 // be self-contained), every chart rendered as a non-empty SVG, every drawing present; saves a
 // full-page screenshot.
 //
-// usage: node report_test.mjs REPORT.html SCREENSHOT.png WEB_DIR [EXPECTED_SECTIONS]
+// usage: node report_test.mjs REPORT.html SCREENSHOT.png WEB_DIR [EXPECTED_SECTIONS] [TRACES]
+// TRACES: 'section=name|name;…' — a chart of that section draws a curve of each name (legend)
 import {createRequire} from 'node:module';
 import {mkdtempSync, rmSync, statSync} from 'node:fs';
 import {tmpdir} from 'node:os';
 import path from 'node:path';
 import {pathToFileURL} from 'node:url';
 
-const [report, screenshot, webDir, expectedSections] = process.argv.slice(2);
+const [report, screenshot, webDir, expectedSections, expectedTraces] = process.argv.slice(2);
 if (!report || !screenshot || !webDir) {
   console.error('usage: node report_test.mjs REPORT.html SCREENSHOT.png WEB_DIR [SECTIONS]');
   process.exit(2);
@@ -61,6 +62,19 @@ try {
     for (const id of expectedSections.split(',')) {
       if (!sections.includes(id)) failures.push(`section '${id}' missing (have ${sections})`);
     }
+  }
+  for (const spec of (expectedTraces || '').split(';').filter((x) => x)) {
+    const [id, names] = spec.split('=');
+    // the legend entries Plotly drew in the section's charts
+    const drawn = await page.$$eval(`section[id="${id}"] div.chart`, (divs) => divs.map((d) => ({
+      traces: d.querySelectorAll('g.trace').length,
+      legend: Array.from(d.querySelectorAll('g.legend text.legendtext')).map((t) => t.textContent),
+    })));
+    const wanted = names.split('|');
+    const found = drawn.some((c) => wanted.every((n) => c.legend.includes(n)) &&
+                                   c.traces >= wanted.length);
+    if (!found)
+      failures.push(`section '${id}': no chart draws ${wanted.join(', ')} (have ${JSON.stringify(drawn)})`);
   }
   const drawings = await page.$$eval('div.drawing svg', (s) => s.map(
       (e) => e.getBoundingClientRect().width * e.getBoundingClientRect().height));

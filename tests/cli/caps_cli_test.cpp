@@ -70,8 +70,35 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"ring_capacity_harmonics",
              "ring capacity --alpha 0.42 --sum-sigma-r 0.2662 --k-max 4.173 "
              "--fibre-strength 2500MPa --load 10kN --harmonics 300000",
-             "--harmonics", "300000", "20000"}),
+             "--harmonics", "300000", "20000"},
+        // --teeth sets work too: the whole wrap seats ~z/2 rollers; a wheel of z pockets
+        // (measured: engagement 10⁹ teeth and pocketwheel 10⁶ did not finish in 30 s)
+        Case{"engagement_teeth",
+             "engagement --hinge sliding --pitch 125 --teeth 1000000000 --tension 1kN", "--teeth",
+             "1000000000", "100000"},
+        Case{"pocketwheel_teeth", "pocketwheel --pitch 64 --wire 18 --teeth 1000000 --omega 5",
+             "--teeth", "1000000", "10000"}),
     [](const testing::TestParamInfo<Case>& p) { return std::string(p.param.name); });
+
+TEST(CapsCli, TeethAtTheCapRunAndAboveNeedAllowLarge) {
+  EXPECT_EQ(run("engagement --hinge sliding --pitch 125 --teeth 100000 --tension 1kN --format "
+                "json >/dev/null")
+                .status,
+            0);
+  EXPECT_EQ(
+      run("pocketwheel --pitch 64 --wire 18 --teeth 100 --omega 5 --points 3 --format json").status,
+      0);
+  const CliRun above =
+      run("engagement --hinge sliding --pitch 125 --teeth 100001 --tension 1kN "
+          "--points 3 --format json");
+  EXPECT_EQ(above.status, 2);
+  EXPECT_NE(above.err.find("--teeth = '100001': expected at most 100000"), std::string::npos)
+      << above.err;
+  EXPECT_EQ(run("engagement --hinge sliding --pitch 125 --teeth 100001 --tension 1kN --points 3 "
+                "--allow-large --format json >/dev/null")
+                .status,
+            0);
+}
 
 TEST(CapsCli, TheEstimateGrowsWithTheValue) {
   // 10⁹ points of a pocket wheel: 65 µs and 850 B each, so about 65 000 s and 850 000 MB

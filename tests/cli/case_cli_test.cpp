@@ -50,7 +50,7 @@ TEST(CaseCli, EachExampleGivesWhatItsSubcommandGives) {
   // of [material] is not passed to a rolling hinge
   const auto direct_engagement = run_json(
       "engagement --hinge rolling --pitch 125mm --pin-diameter 40mm --half-thickness 8mm "
-      "--teeth 8 --strokes 2 --tension 29.4kN --plate-radius 15mm --flank-angle 21.65deg "
+      "--teeth 8 --strokes 2 --tension 29.4kN --plate-radius 15mm --flank-angle 21.62deg "
       "--format json");
   EXPECT_EQ(hinge["analyses"]["engagement"], direct_engagement);
   const auto direct_warp = run_json(
@@ -108,7 +108,9 @@ TEST(CaseCli, ReportIsOneSelfContainedHtmlFile) {
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   for (const char* fragment :
        {"<section id=\"hinge\" class=\"analysis\">",
-        "<section id=\"hinge_sweep\" class=\"analysis\">", "class=\"diagnostic",
+        "<section id=\"hinge_sweep\" class=\"analysis\">",
+        "<section id=\"wear\" class=\"analysis\">",
+        "Elongation of the sliding- and the rolling-hinge chain", "class=\"diagnostic",
         "<div class=\"drawing\"><svg", "Plotly.newPlot", "SHA-256"})
     EXPECT_NE(html.find(fragment), std::string::npos) << fragment;
   // nothing loaded from elsewhere (the browser test also watches the network)
@@ -195,11 +197,39 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"implied_flag",
                 "[chain]\ntype = \"sliding-hinge\"\n[analyses.engagement]\nhinge = \"rolling\"\n",
                 {"analyses.engagement.hinge", "an option of 'engagement'"}},
+        BadCase{"note_not_text",
+                "[chain]\ntype = \"rolling-hinge\"\n[analyses.hinge]\nnote = 3\n",
+                {"analyses.hinge.note", "a text: what this run shows"}},
         BadCase{"duplicate_shared",
                 "[chain]\ntype = \"round-link\"\nteeth = 8\n[sprocket]\nteeth = 9\n"
                 "[analyses.pocketwheel]\n",
                 {"sprocket.teeth", "also given as chain.teeth"}}),
     [](const ::testing::TestParamInfo<BadCase>& param) { return std::string(param.param.name); });
+
+// A case's description and a table's note are for the report's reader: shown there, left out
+// of the inputs table, and nothing in `catena run`'s JSON changes for them.
+TEST(CaseCli, DescriptionAndNotesReachTheReportOnly) {
+  const std::string body =
+      "[chain]\ntype = \"round-link\"\npitch = \"64 mm\"\nwire = \"18 mm\"\n"
+      "[sprocket]\nteeth = 8\n[analyses.pocketwheel]\nomega = \"5 1/s\"\n";
+  const std::string plain = write_case("prose_plain", body);
+  const std::string prose =
+      write_case("prose", "description = '''\nWhy this case.\n\nSecond paragraph.'''\n" + body +
+                              "note = \"the free run-on\"\n");
+  const fs::path out = fs::temp_directory_path() / "catena_prose.html";
+  const CliRun r = run("report " + prose + " -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string html = slurp(out);
+  EXPECT_NE(html.find("<section id=\"about\"><p>Why this case.</p><p>Second paragraph.</p>"),
+            std::string::npos);
+  EXPECT_NE(html.find("<div class=\"note\"><p>the free run-on</p></div>"), std::string::npos);
+  EXPECT_EQ(html.find(">description<"), std::string::npos);  // not among the inputs
+  EXPECT_EQ(html.find("analyses.pocketwheel.note"), std::string::npos);
+  EXPECT_EQ(run_json("run " + prose)["analyses"], run_json("run " + plain)["analyses"]);
+  fs::remove(out);
+  fs::remove(prose);
+  fs::remove(plain);
+}
 
 TEST(CaseCli, SharedValuesFeedEveryAnalysisThatTakesThem) {
   // chain.pitch reaches the hinge (dt/t) but the sweep, which refuses --pitch, does not get it

@@ -15,7 +15,7 @@ constexpr double kAngleTol = 1e-12;    // [rad] the last point's γ = π/2
 constexpr double kStartForceTol = 50.0;
 // [N] at γΣ = 90° F1 ⟂ F2, so |F_N| = √(F1² + F2²) up to the two rolling forces c_r·F ≈ 30 N
 constexpr double kEndBalanceTol = 100.0;
-constexpr double kForceTol = 1e-9;  // [N] the rolling resistance c_r·F1 = 29.4 N: round-off
+constexpr double kForceTol = 1e-9;  // [N] the rolling resistance c_r·F2 ≈ 29.4 N: round-off
 
 const std::string kSliding =
     "engagement --hinge sliding --pitch 125mm --teeth 8 --strokes 2 --tension 29.4kN "
@@ -54,7 +54,12 @@ TEST(EngagementCli, RollingJsonAndCsv) {
   // F2's end value is not asserted; the roller's force balance across the JSON fields is.
   const double f2_end = j["series"]["F2"][10].get<double>();
   EXPECT_NEAR(j["series"]["FN"][10].get<double>(), std::hypot(29.4e3, f2_end), kEndBalanceTol);
-  EXPECT_NEAR(j["series"]["rolling_resistance"][0].get<double>(), 29.4, kForceTol);
+  // the larger of c_r·F1 and c_r·F2: at γ = 0 F2 starts just above F1 (both resistances press
+  // the roller onto the tooth, F_N(0) > 0)
+  const double f2_start = j["series"]["F2"][0].get<double>();
+  EXPECT_GT(f2_start, 29.4e3);
+  EXPECT_GT(j["series"]["FN"][0].get<double>(), 0.0);
+  EXPECT_NEAR(j["series"]["rolling_resistance"][0].get<double>(), 1e-3 * f2_start, kForceTol);
   for (const auto& v : j["series"]["residual"]) EXPECT_LE(v.get<double>(), kResidualTol);
   EXPECT_GE(j["roller_turns"].size(), 1u);
   const CliRun c = run(kRolling + " --points 5 --format csv");
@@ -94,9 +99,10 @@ TEST(EngagementCli, InvalidInputExitsTwoWithEveryProblem) {
 }
 
 TEST(EngagementCli, LockedSlidingHingeIsADiagnosticNotAnError) {
+  // f = 1, the largest accepted since issue 18, above tan ε(γΣ) = tan(45° − 10°) = 0.70
   const CliRun r =
       run("engagement --hinge sliding --pitch 125mm --teeth 8 --strokes 2 --tension 29.4kN "
-          "--friction 2 --format json");
+          "--friction 1 --flank-angle 10deg --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_GE(j["diagnostics"].size(), 1u);

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "cli_run.hpp"
 
@@ -120,6 +122,113 @@ TEST(WearCli, CaseFilesRunTheSameAnalysis) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("Elongation of the rolling-hinge chain"), std::string::npos);
   std::filesystem::remove(html);
+}
+
+// tension_source = loop: the articulations' tensions are `catena loop`'s own numbers for the
+// same file, at the entry and exit of its sprockets (the tail sprocket, a turn given by a factor,
+// and the drive; not the bend guide, given by wrap and friction), and the wear is the wear under
+// that list of tensions given by hand, at the loop's speed and path length.
+TEST(WearCli, LoadsFromTheLoopAreTheLoopCommandsTensions) {
+  const std::string file = kExamples + "/000_wear_loop.toml";
+  const auto loop = json_of("loop " + file + " --format json");
+  const auto wear = json_of("run " + file)["analyses"]["wear"];
+  ASSERT_TRUE(wear.contains("loads")) << wear.dump().substr(0, 200);
+  const auto& loads = wear["loads"];
+  EXPECT_EQ(loads["source"], "loop");
+  // the sprockets, read from `catena loop`'s points by their names in the file
+  std::vector<double> expected;
+  std::vector<std::string> where;
+  for (const auto& p : loop["points"]) {
+    const std::string name = p["name"];
+    if (name == "tail sprocket" || name == "head drive sprocket") {
+      expected.push_back(p["tension"].get<double>());
+      where.push_back(name + (p["at"] == "start" ? " entry" : " exit"));
+    }
+  }
+  ASSERT_EQ(expected.size(), 4u);
+  ASSERT_EQ(loads["tensions"].size(), 4u);
+  ASSERT_EQ(loads["points"].size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(loads["tensions"][i].get<double>(), expected[i]) << where[i];
+    EXPECT_EQ(loads["points"][i]["name"].get<std::string>() + " " +
+                  loads["points"][i]["at"].get<std::string>(),
+              where[i]);
+  }
+  // the drive: tight side in, slack side out
+  EXPECT_EQ(loads["tensions"][2].get<double>(), loop["tight_tension"].get<double>());
+  EXPECT_EQ(loads["tensions"][3].get<double>(), loop["slack_tension"].get<double>());
+  EXPECT_EQ(loads["speed"].get<double>(), loop["speed"].get<double>());
+  EXPECT_EQ(loads["loop_length"].get<double>(), loop["length"].get<double>());
+  EXPECT_EQ(loads["speed_from"], "loop");
+  EXPECT_EQ(loads["loop_length_from"], "loop");
+  EXPECT_EQ(wear["sliding_per_pass"]["articulations"], 4);
+  // the same wear from the tensions given by hand
+  std::string list;
+  for (double t : expected) list += (list.empty() ? "" : ",") + nlohmann::json(t).dump() + "N";
+  const auto by_hand =
+      json_of("wear --hinge rolling --pitch 125mm --teeth 8 --strokes 2 --tension " + list +
+              " --speed " + nlohmann::json(loop["speed"].get<double>()).dump() + " --loop-length " +
+              nlohmann::json(loop["length"].get<double>()).dump() +
+              "m --wear-coefficient 1e-4 --contact-length 24mm --friction 0.15 --pin-diameter 40mm "
+              "--half-thickness 8mm --plate-radius 15mm --format json");
+  for (const char* key : {"1.5", "2", "3"})
+    EXPECT_NEAR(wear["life_hours"][key].get<double>(), by_hand["life_hours"][key].get<double>(),
+                1e-12 * by_hand["life_hours"][key].get<double>())
+        << key;
+  EXPECT_EQ(wear["elongation"], by_hand["elongation"]);
+  // the command line reads the same file's [loop] with --loop
+  const auto cli = json_of(
+      "wear --hinge rolling --pitch 125mm --teeth 8 --strokes 2 --tension-source loop --loop " +
+      file +
+      " --wear-coefficient 1e-4 --contact-length 24mm --friction 0.15 --pin-diameter 40mm "
+      "--half-thickness 8mm --plate-radius 15mm --format json");
+  EXPECT_EQ(cli["loads"], loads);
+  EXPECT_EQ(cli["life_hours"], wear["life_hours"]);
+}
+
+TEST(WearCli, LoadsFromTheLoopRefuseWhatContradictsIt) {
+  const std::string file = kExamples + "/000_wear_loop.toml";
+  const std::string base =
+      "wear --hinge rolling --pitch 125mm --teeth 8 --strokes 2 --tension-source loop "
+      "--wear-coefficient 1e-4 --contact-length 24mm --friction 0.15 --pin-diameter 40mm "
+      "--half-thickness 8mm --plate-radius 15mm";
+  // no loop to read
+  const CliRun none = run(base);
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.err.find("--loop = (missing)"), std::string::npos) << none.err;
+  // a file without a [loop] table, named as the flag that gave it
+  const CliRun empty = run(base + " --loop " + kExamples + "/000_wear_benches.toml");
+  EXPECT_EQ(empty.status, 2);
+  EXPECT_NE(empty.err.find("--loop = (missing)"), std::string::npos) << empty.err;
+  // two sprockets give four articulations; another speed than the loop's
+  const CliRun bad = run(base + " --loop " + file + " --articulations 6 --speed 0.5");
+  EXPECT_EQ(bad.status, 2);
+  for (const char* flag : {"--articulations", "--speed"})
+    EXPECT_NE(bad.err.find(flag), std::string::npos) << flag << "\n" << bad.err;
+  // the given mode still needs its tension, speed and loop length, each named
+  const CliRun given = run(
+      "wear --hinge rolling --pitch 125mm --teeth 8 --wear-coefficient 1e-4 --contact-length 24mm "
+      "--friction 0.15 --pin-diameter 40mm --half-thickness 8mm --plate-radius 15mm");
+  EXPECT_EQ(given.status, 2);
+  for (const char* flag : {"--tension", "--speed", "--loop-length"})
+    EXPECT_NE(given.err.find(flag), std::string::npos) << flag << "\n" << given.err;
+  // a tension given beside the loop is not used, and the output says so
+  const auto j = json_of(base + " --loop " + file + " --tension 3.5kN --format json");
+  EXPECT_NE(j["diagnostics"].dump().find("wear.tension_not_used"), std::string::npos);
+  EXPECT_EQ(j["loads"]["tensions"].size(), 4u);
+  // a case file without a [loop] table: named
+  const auto tmp = std::filesystem::temp_directory_path() / "catena_wear_noloop.toml";
+  {
+    std::ifstream in(kExamples + "/000_wear_benches.toml");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto at = text.find("wear_coefficient = 1e-4\n");
+    text.insert(at, "tension_source = \"loop\"\n");
+    std::ofstream(tmp) << text;
+  }
+  const CliRun noloop = run("run " + tmp.string());
+  EXPECT_EQ(noloop.status, 2);
+  EXPECT_NE(noloop.err.find("[loop]"), std::string::npos) << noloop.err;
+  std::filesystem::remove(tmp);
 }
 
 }  // namespace

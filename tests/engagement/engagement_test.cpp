@@ -166,11 +166,14 @@ TEST(EngagementSliding, RollerTurnsWhereCriterion25Holds) {
 }
 
 TEST(EngagementSliding, LargeFrictionIsDiagnosedNotThrown) {
-  const Result r = solve_sliding(sliding(2.0));  // f1 > tan ε(γΣ) = 1
+  // f1 = 1 (the largest valid since issue 18) > tan ε(γΣ) = tan(45° − ψ) = 0.70 with ψ = 10°
+  const Result r = solve_sliding(sliding(1.0, deg(10)));
   ASSERT_FALSE(r.diagnostics.empty());
   EXPECT_EQ(r.diagnostics[0].code, "engagement.link2_slack");
 }
 
+// The residual re-derives the senses of the rolling resistances from the contact positions (not
+// from the solver's choice): with the senses Catena used before (both along −t) it is ~4e-3.
 TEST(EngagementRolling, ResidualsOfSystem28) {
   for (double psi : {0.0, deg(10), deg(21)}) {
     for (double cr : {0.0, 1e-3, 1e-2}) {
@@ -251,12 +254,50 @@ TEST(EngagementRolling, RandomInputsNoNanAndBounded) {
   EXPECT_GT(solved, 50);
 }
 
-// The whole wrap, frictionless: the sprocket's torque from the tooth loads equals the global
-// balance of the engaged chain, (F_in − F_out)·R·cos(γΣ/2) (spans along the polygon's sides).
-// A tooth reaction that turns negative is reported with the least value reached (the rolling
-// resistances make F_N slightly negative at γ = 0 with a radial tooth).
+// At γ = 0 links 1 and 2 are in line and the tooth normal is at β1(0) = ψ − γΣ/2. With both
+// rolling resistances along the faces' tangent t = (−sin ξ, cos ξ) (the senses of (28): against
+// the contact's travel), ΣY and ΣX of the roller are, by hand,
+//   F_N cos β1 = c_r (F1 + F2) cos ξ,   F2 − F1 + F_N sin β1 − c_r (F1 + F2) sin ξ = 0,
+// so F_N(0) = c_r (F1 + F2) cos ξ / cos β1 > 0: the resistances press the roller onto the tooth.
+// The senses whose moments oppose the roller's spin (Catena before) put both along −t and gave
+// F_N(0) = −c_r (F1 + F2) cos ξ / cos β1 (−64 N on the thesis example): this test fails on them.
+TEST(EngagementRolling, ToothReactionAtEntryIsTheClosedFormOfBothResistances) {
+  for (double psi : {deg(-20), 0.0, deg(10), deg(21.62), deg(30)}) {
+    for (double cr : {1e-3, 1e-2, 5e-2}) {
+      RollingInput in = rolling(psi, cr);
+      in.points = 2;
+      const Sample s = solve_rolling(in).series.front();
+      ASSERT_EQ(s.gamma, 0.0);
+      const double f1 = in.tension, b1 = psi - deg(45);  // γΣ = 90°
+      const double fn = cr * (f1 + s.f2) * std::cos(s.xi) / std::cos(b1);
+      const double f2 = f1 - fn * std::sin(b1) + cr * (f1 + s.f2) * std::sin(s.xi);
+      EXPECT_NEAR(s.fn, fn, kRelForceTol * f1) << psi << " " << cr;
+      EXPECT_NEAR(s.f2, f2, kRelForceTol * f1) << psi << " " << cr;
+      EXPECT_GT(s.fn, 0.0) << psi << " " << cr;
+      EXPECT_GT(s.f2, f1) << psi << " " << cr;  // tan β1 < 0: F2 starts above F1
+      EXPECT_LE(s.residual, kResidualTol);
+    }
+  }
+}
+
+// Over the whole engagement of the thesis' example (and flanks around it), with the default and a
+// ten times larger c_r, the tooth only pushes: F_N > 0 at every sample and no lift-off diagnostic.
+TEST(EngagementRolling, ToothNeverPullsOverTheThesisEngagement) {
+  for (double psi : {0.0, deg(10), deg(21.62), deg(30)}) {
+    for (double cr : {1e-3, 1e-2}) {
+      const Result r = solve_rolling(rolling(psi, cr));
+      for (const Sample& s : r.series) EXPECT_GT(s.fn, 0.0) << psi << " " << cr << " " << s.gamma;
+      for (const Diagnostic& d : r.diagnostics) EXPECT_NE(d.code, "engagement.tooth_lift_off");
+    }
+  }
+}
+
+// Lift-off remains possible where the balance degenerates: a flank tilted far backwards (ψ = −40°
+// against α = 45°) with a rolling coefficient two orders above steel's makes ΣX, ΣY nearly
+// singular (det = −[cos(γΣ/2 − ψ) + c_r sin(β1 − ξ)]), F2 turns negative (link 2 would push)
+// and so does F_N. It is reported with the least reaction reached.
 TEST(EngagementRolling, ToothLiftOffReportsTheLeastReaction) {
-  const Result r = solve_rolling(rolling(0.0, 1e-3));
+  const Result r = solve_rolling(rolling(deg(-40), 0.2));
   double least = 0.0;
   for (const Sample& s : r.series) least = std::min(least, s.fn);
   ASSERT_LT(least, 0.0);
@@ -273,6 +314,8 @@ TEST(EngagementRolling, ToothLiftOffReportsTheLeastReaction) {
     EXPECT_NE(d.code, "engagement.tooth_lift_off");
 }
 
+// The whole wrap, frictionless: the sprocket's torque from the tooth loads equals the global
+// balance of the engaged chain, (F_in − F_out)·R·cos(γΣ/2) (spans along the polygon's sides).
 TEST(EngagementWrap, FrictionlessTorqueIsTheTensionDropTimesTheSideDistance) {
   for (double psi : {0.0, deg(10), deg(21.6)}) {
     const SlidingInput in = sliding(0.0, psi);

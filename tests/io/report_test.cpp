@@ -129,6 +129,27 @@ TEST(Report, InlinedDrawingsGetUniqueIds) {
   EXPECT_EQ(html.find("id=\"glyph0\""), std::string::npos);
 }
 
+// The case's prose: its description opens the report, a table's note heads its section; a blank
+// line starts a paragraph, other line breaks are spaces, and the text is escaped.
+TEST(Report, DescriptionAndNotesArePlainParagraphs) {
+  Report r = sample();
+  r.description = "The thesis as printed\nand Catena's design.\n\n  <b>Why</b> it fails. \n";
+  r.sections[0].note = "R1 = 34 mm > R1max";
+  const std::string html = to_html(r, "");
+  EXPECT_NE(html.find("<section id=\"about\"><p>The thesis as printed and Catena&#39;s design.</p>"
+                      "<p>&lt;b&gt;Why&lt;/b&gt; it fails.</p></section>"),
+            std::string::npos);
+  EXPECT_LT(html.find("id=\"about\""), html.find("id=\"summary\""));  // before the findings
+  const std::size_t hinge = html.find("<section id=\"hinge\" class=\"analysis\">");
+  const std::size_t note = html.find("<div class=\"note\"><p>R1 = 34 mm &gt; R1max</p></div>");
+  ASSERT_NE(note, std::string::npos);
+  EXPECT_LT(hinge, note);
+  EXPECT_LT(note, html.find("class=\"diagnostic error\"", hinge));  // above the findings
+  // none given: no empty box
+  EXPECT_EQ(to_html(sample(), "").find("id=\"about\""), std::string::npos);
+  EXPECT_EQ(to_html(sample(), "").find("class=\"note\""), std::string::npos);
+}
+
 TEST(Report, HtmlEscape) {
   EXPECT_EQ(html_escape("<a href='x'>&\""), "&lt;a href=&#39;x&#39;&gt;&amp;&quot;");
 }

@@ -197,3 +197,40 @@ def test_concurrent_runs_from_python_threads_give_the_serial_results():
     with ThreadPoolExecutor(4) as pool:
         threaded = list(pool.map(lambda k: catena.run("hinge", **k).to_dict(), kw * 4))
     assert threaded == serial * 4
+
+
+# The thesis ring of issue 18 by the finite-difference sweep with 10x its node cap: 25 s of work.
+LONG_RING = dict(inner_radius=4.72, outer_radius=10, thickness=1, E_r="10GPa", E_phi="40GPa",
+                 G="4GPa", nu_phi_r=0.28, gap=0.02, method="sweep", nodes=200000,
+                 allow_large=True)
+
+
+@pytest.mark.parametrize("call", [
+    lambda: catena.run("ring", **LONG_RING),
+    lambda: catena.sweep("ring", grid={"gap": [0.02, 0.021, 0.022]}, base=LONG_RING, threads=2),
+], ids=["run", "sweep"])
+def test_ctrl_c_stops_a_long_run_with_keyboard_interrupt(call):
+    """Ctrl-C (simulated: _thread.interrupt_main raises SIGINT's handler in the main thread)
+    stops the C++ run at its next poll: KeyboardInterrupt soon, no result."""
+    import _thread
+    import threading
+    import time
+
+    sent = []
+
+    def interrupt():
+        sent.append(time.monotonic())
+        _thread.interrupt_main()
+
+    timer = threading.Timer(0.3, interrupt)
+    timer.start()
+    result = None
+    with pytest.raises(KeyboardInterrupt):
+        result = call()
+    stopped = time.monotonic()
+    timer.join()
+    assert result is None
+    # stopped at a poll soon after the Ctrl-C, not after the 25 s of work
+    assert len(sent) == 1 and stopped - sent[0] < 1.5
+    # the module still runs afterwards
+    assert catena.run("ring", **{**LONG_RING, "nodes": 2000}).to_dict()["load"] > 0

@@ -69,13 +69,15 @@ TEST(EngagementPaper, F2From29_4AndFNFromZeroHoldForAnyFlankNotOnlyTheFitted) {
   // Conclusion 9's start values, which the fit did not use: at γ = 0 links 1 and 2 are in line,
   // so F2 = F1 and F_N = 0 for every ψ — exactly without rolling resistance, and within the
   // thesis' own rolling-force bound (two forces ≤ 0.05 kN) with the default c_r = 0.001
-  // (F2(0) = 29.34–29.37 kN over ψ = 0…30°). Checked at ψ = 0, the fitted ψ and 30°.
+  // (F2(0) = 29.42–29.46 kN, F_N(0) = +61…+83 N over ψ = 0…30°: the two resistances press the
+  // roller onto the tooth, so F_N starts just above zero). Checked at ψ = 0, the fitted ψ, 30°.
   constexpr double kRoundOffForceTol = 1e-6;  // [N] forces of ~3e4 N: round-off
   for (double psi : {0.0, flank_for_thesis_f2(), 30.0 * kPi / 180.0}) {
     RollingInput in = thesis(psi);
     const Result r = solve_rolling(in);
     EXPECT_NEAR(r.series.front().f2, kF1, 2.0 * kRollingMax) << psi;
     EXPECT_NEAR(r.series.front().fn, 0.0, 2.0 * kRollingMax) << psi;
+    EXPECT_GT(r.series.front().fn, 0.0) << psi;  // "rises from 0": never below it
     in.rolling_coefficient = 0.0;
     const Result exact = solve_rolling(in);
     EXPECT_NEAR(exact.series.front().f2, kF1, kRoundOffForceTol) << psi;
@@ -86,10 +88,11 @@ TEST(EngagementPaper, F2From29_4AndFNFromZeroHoldForAnyFlankNotOnlyTheFitted) {
 TEST(EngagementPaper, FNRisesOverTheEngagementWithTheFittedFlank) {
   // Conclusion 9: F_N "rises from zero" — a shape the fit (on F2 at γΣ only) did not use.
   // Frictionless, F_N = F1·sin γ / cos(γΣ/2 − ψ): monotone on [0, γΣ = 90°]. The model with its
-  // rolling resistances rises sample by sample, to F_N(γΣ) = √(F1² + F2²) ≈ 32.0 kN (not 46:
-  // FN46kNCannotBeReachedWithF2EndingAt12_7).
+  // rolling resistances starts just above zero (+64 N) and rises sample by sample, to
+  // F_N(γΣ) ≈ √(F1² + F2²) + 40 N = 32.1 kN (not 46: FN46kNCannotBeReachedWithF2EndingAt12_7).
   const double psi = flank_for_thesis_f2();
   const Result r = solve_rolling(thesis(psi));
+  EXPECT_GT(r.series.front().fn, 0.0);
   for (std::size_t i = 1; i < r.series.size(); ++i)
     EXPECT_GT(r.series[i].fn, r.series[i - 1].fn) << "sample " << i;
   for (const Sample& s : r.series) {
@@ -100,8 +103,8 @@ TEST(EngagementPaper, FNRisesOverTheEngagementWithTheFittedFlank) {
 
 TEST(EngagementPaper, FittingTheFlankToFN46InsteadMakesF2RiseTo35kN) {
   // The two end values of conclusion 9 cannot come from one flank angle: fitting ψ to
-  // F_N(γΣ) = 46 kN instead (bisection on the model over ψ in (−40°, 0)) gives ψ ≈ −5.3°
-  // (frictionless: cos(45° − ψ) = F1/46 kN), and then F2(γΣ) = F1·cot(45° + ψ) ≈ 35.4 kN — above
+  // F_N(γΣ) = 46 kN instead (bisection on the model over ψ in (−40°, 0)) gives ψ ≈ −5.2°
+  // (frictionless: cos(45° − ψ) = F1/46 kN), and then F2(γΣ) = F1·cot(45° + ψ) ≈ 35.3 kN — above
   // F1, not the thesis' 12.7 kN.
   double lo = -40.0 * kPi / 180.0, hi = 0.0;
   for (int k = 0; k < 100; ++k) {
@@ -140,11 +143,12 @@ TEST(EngagementPaper, FN46kNCannotBeReachedWithF2EndingAt12_7) {
   EXPECT_LT(kF1 + kF2End + 2 * kRollingMax, kFnEnd);
   const Result r = solve_rolling(thesis(flank_for_thesis_f2()));
   for (const Sample& s : r.series) EXPECT_LE(s.fn, kF1 + s.f2 + s.f1k + s.f2k);
-  // "from zero": reproduced to within the rolling resistance forces (F_N(0) = −64 N here)
+  // "from zero": reproduced to within the rolling resistance forces (F_N(0) = +64 N here)
   EXPECT_NEAR(r.series.front().fn, 0.0, 2.0 * kRollingMax);
-  // [N] the frictionless |F1 + F2| against the model with its rolling resistances (~30 N each)
+  // [N] the frictionless |F1 + F2| against the model with its rolling resistances (~30 N each;
+  // here F_N(γΣ) = 32.07 kN against 32.03 kN)
   constexpr double kEndReactionTol = 100.0;
-  EXPECT_NEAR(r.series.back().fn, std::hypot(kF1, kF2End), kEndReactionTol);  // ≈ 32.0 kN
+  EXPECT_NEAR(r.series.back().fn, std::hypot(kF1, kF2End), kEndReactionTol);
   EXPECT_LT(r.series.back().fn, kFnEnd);
 }
 

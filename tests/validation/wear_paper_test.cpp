@@ -5,9 +5,13 @@
 // states it where the two differ; the doc shows why).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
+#include "catena/hinge/hinge.hpp"
+#include "catena/hinge/synthesis.hpp"
 #include "catena/wear/wear.hpp"
 
 namespace catena::wear {
@@ -159,6 +163,85 @@ TEST(WearPaper, AccelerationFactorIsNotPredictedOnlyWhatItImplies) {
   b2.loop_length = b1.loop_length / (5.6 * 3500.0 / 2400.0);
   const Result r1 = run(b1), r2 = run(b2);
   EXPECT_NEAR(*r1.life_hours[2] / *r2.life_hours[2], 5.6, 5.6 * 1e-6);
+}
+
+// Bench 2's motion (§2.1.2): "continuous oscillating (back-and-forth) or rotary (also reversing)
+// motion of the axles under a smoothly varying load (from 1600 N to 3200 N)". The summary gives
+// neither the oscillation's angle nor its rate (nor the crank-rocker's dimensions, the worm
+// reducer's ratio or the motor's speed), so the stroke is the unknown here. One oscillation of the
+// links' mutual angle from 0 to Δφ and back is two articulations of Δφ — what a sprocket does to
+// a hinge entering and leaving it — on the bench-1 chain's own hinge (R2 of bench 1's sprocket,
+// fixed; no tooth: the sliding pivot never turns). With the k fitted on bench 1, the predicted
+// sliding/rolling pitch ratio as a function of the stroke Δφ ≤ 90° (the aperture of bench 1's
+// hinge; a rolling hinge cannot turn further, so "rotary" motion can only be of the sliding
+// chain's pivots or of the whole specimen): friction alone never comes down to 3.4 (its least is
+// at the largest stroke); guided, the ratio passes 3.4 at one stroke (≈ 54°) — a stroke the
+// thesis would have to state for this to be a prediction.
+struct Stroke {
+  double degrees, friction, guided;
+};
+
+std::vector<Stroke> bench_two_ratios(const std::vector<double>& tensions) {
+  hinge::Hinge h1;
+  h1.pin_diameter = 0.040;
+  h1.half_thickness = 0.008;
+  h1.plate_radius = 0.015;
+  h1.teeth = 8;
+  h1.strokes = 2;
+  const double r2 = *hinge::r2_eq6(0.040, 0.008, 0.015, hinge::gamma_max(h1));
+  std::vector<Stroke> out;
+  for (int deg = 10; deg <= 90; deg += 5) {
+    Stroke st{static_cast<double>(deg), 0.0, 0.0};
+    for (RollingLimit limit : {RollingLimit::kFriction, RollingLimit::kGuided}) {
+      Input sliding = bench1(HingeKind::kSliding);
+      Input rolling = bench1(HingeKind::kRolling, limit);
+      rolling.wear_coefficient = fitted_k(limit);
+      for (Input* in : {&sliding, &rolling}) {
+        in->teeth = 360;  // mutual turn 360°·m/z = m degrees
+        in->strokes = deg;
+        in->articulations = static_cast<int>(tensions.size());
+        in->tensions = tensions;
+        in->geometry.roller_radius = r2;
+      }
+      const Result s = run(sliding), r = run(rolling);
+      EXPECT_EQ(s.first.turned, 0.0) << deg;  // no tooth: the neck slides in one pair of bores
+      const double ratio =
+          (s.pass.roller_depth + s.pass.plate_depth) / (r.pass.roller_depth + r.pass.plate_depth);
+      (limit == RollingLimit::kGuided ? st.guided : st.friction) = ratio;
+    }
+    out.push_back(st);
+  }
+  return out;
+}
+
+TEST(WearPaper, BenchTwoStrokeIsNotGivenRatioOverTheUnknownStroke) {
+  // the load cycled smoothly 1600–3200 N over each pair of oscillations
+  const std::vector<Stroke> ratios = bench_two_ratios({1600.0, 2400.0, 3200.0, 2400.0});
+  double least_friction = 1e300, at_34 = 0.0;
+  int crossings = 0;
+  for (std::size_t i = 0; i < ratios.size(); ++i) {
+    const Stroke& s = ratios[i];
+    std::printf("bench 2 stroke %4.0f deg: pitch ratio friction %.4g, guided %.4g\n", s.degrees,
+                s.friction, s.guided);
+    least_friction = std::min(least_friction, s.friction);
+    if (i > 0 && (ratios[i - 1].guided - 3.4) * (s.guided - 3.4) <= 0.0) {
+      const Stroke& a = ratios[i - 1];
+      at_34 = a.degrees + (3.4 - a.guided) / (s.guided - a.guided) * (s.degrees - a.degrees);
+      ++crossings;
+    }
+  }
+  std::printf("friction: least ratio %.4g; guided: 3.4 at a stroke of %.3g deg\n", least_friction,
+              at_34);
+  // friction alone: 3.4 is out of reach for every stroke from 10° to the hinge's 90°; its least
+  // is at the largest stroke (a small stroke rolls within eq. (21)'s limit and hardly wears)
+  EXPECT_GT(least_friction, 3.4 * 1.2);
+  EXPECT_EQ(least_friction, ratios.back().friction);
+  // guided: 3.4 is reached at exactly one stroke of the sweep, near 54°
+  EXPECT_EQ(crossings, 1);
+  EXPECT_NEAR(at_34, 54.1, 0.5);
+  // at 90° the stroke is bench 1's articulation: the earlier cycled-load numbers
+  EXPECT_NEAR(ratios.back().friction, 4.306, kPrintTol * 4.306);
+  EXPECT_NEAR(ratios.back().guided, 5.187, kPrintTol * 5.187);
 }
 
 }  // namespace

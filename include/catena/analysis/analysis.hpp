@@ -59,7 +59,8 @@ struct Analysis {
   bool has_size_caps() const;
   /// Refuses sizes above their caps (size_issues), then run, then describe; then every result field
   /// that is not finite becomes an error diagnostic (diagnose_non_finite), so no front end shows a
-  /// silent null.
+  /// silent null. The run's loops poll `inputs.progress()` (catena/core/progress.hpp): they
+  /// report to it, and when it is cancelled the run throws Cancelled, never a partial Record.
   Record evaluate(const Inputs& inputs) const;
   const Parameter* parameter(std::string_view key) const;
   /// True when an issue's field is a parameter key or a model field ("joint F21 stiffness") that a

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "catena/core/progress.hpp"
 #include "catena/core/quantity_kind.hpp"
 
 namespace catena::analysis {
@@ -139,9 +140,14 @@ class Inputs {
   /// The user allowed size parameters beyond their caps (kAllowLarge).
   bool large_allowed() const { return allow_large_; }
   void allow_large(bool allowed = true) { allow_large_ = allowed; }
+  /// The Progress the run reports to and stops on (catena/core/progress.hpp); nullptr: nobody
+  /// listens. Not owned: it must outlive the run.
+  const Progress* progress() const { return progress_; }
+  void listen(const Progress* progress) { progress_ = progress; }
 
  private:
   const std::vector<Parameter>* parameters_ = nullptr;
+  const Progress* progress_ = nullptr;
   bool drawing_wanted_ = false;
   bool allow_large_ = false;
   std::map<std::string, InputValue, std::less<>> values_;

@@ -23,6 +23,7 @@ struct AnalysisRun {
   const analysis::Analysis* analysis = nullptr;
   std::string name;  ///< the table's name: the analysis', or "<name>-<label>"
   analysis::Record record;
+  std::string note;  ///< the table's `note`: what this run shows, for the report's reader
 };
 
 /// A case file and its runs, in the file's order of [analyses.<name>] tables.
@@ -49,8 +50,9 @@ std::vector<std::string> analysis_tables(const CaseFile& file);
 
 /// Binds every [analyses.<name>] table of `file` (with the shared tables and what chain.type
 /// implies) and runs it. Throws InputError listing every problem of the whole file at once,
-/// each named by its case-file path.
-CaseRun run_case(const CaseFile& file);
+/// each named by its case-file path. Each run reports to and stops on `progress` (when given):
+/// a cancelled case throws Cancelled (catena/core/progress.hpp) and returns no runs.
+CaseRun run_case(const CaseFile& file, const Progress* progress = nullptr);
 
 /// The JSON result tree of `catena run`: catena_version, case, case_sha256, title, analyses.
 analysis::Value result_tree(const CaseRun& run, std::string_view version);

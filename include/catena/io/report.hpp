@@ -46,6 +46,7 @@ struct ReportSection {
   std::string title;   ///< "Rolling-friction hinge (seed 000 §1.2–1.3)"
   std::string source;  ///< where the equations come from
   std::string docs;    ///< documentation page, relative to the repository ("docs/models/hinge.md")
+  std::string note;    ///< the case's words on this run (its table's `note`); may be empty
   std::vector<ReportDiagnostic> diagnostics;
   std::vector<ReportTable> tables;
   std::vector<ReportGrid> grids;
@@ -62,6 +63,7 @@ struct Report {
   std::string case_name;          ///< file name or "built-in"
   std::string case_hash;          ///< SHA-256 of the case file's bytes
   std::string version;            ///< Catena version
+  std::string description;        ///< the case's `description`: paragraphs split at blank lines
   std::vector<ReportRow> inputs;  ///< the case's values as typed, path = name
   std::vector<ReportSection> sections;
 };

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <iterator>
 
+#include "catena/core/progress.hpp"
+
 namespace catena::pocketwheel {
 
 template <class Evaluate>
@@ -28,7 +30,9 @@ RunOnResult sample_run_on(const RunOnPlan& plan, const Sampling& sampling, Evalu
     s.vy.reserve(n);
     s.ay.reserve(n);
   }
+  ProgressLoop loop(n, "points");
   for (std::size_t i = 0; i < n; ++i) {
+    loop.step(i);
     // Both ends included; the last sample is exactly 2π/z.
     const double phi = i + 1 == n
                            ? period_angle
@@ -44,6 +48,7 @@ RunOnResult sample_run_on(const RunOnPlan& plan, const Sampling& sampling, Evalu
       s.ay.push_back(omega * omega * k.d2y);
     }
   }
+  loop.step(n);
   if (sampling.strand_mass) {
     s.inertial_force.reserve(n);
     std::transform(s.ax.begin(), s.ax.end(), std::back_inserter(s.inertial_force),

@@ -20,4 +20,12 @@ struct LoopAnalysis {
 /// The analysis description (registered as "loop").
 const analysis::Analysis& loop_analysis();
 
+/// The `loop` table parameter ([loop] with [[loop.segment]]): its keys and their bare units. Other
+/// analyses that read a case's loop (wear: the tensions at the sprockets) take a copy.
+const analysis::Parameter& loop_table_parameter();
+
+/// Reads a bound [loop] table and solves it, exactly as `catena loop` does. Throws InputError
+/// naming the table's paths and lines ("loop.segment[2].length (line 27)", "loop").
+LoopAnalysis loop_from_table(const analysis::InputValue& table);
+
 }  // namespace catena::strength

@@ -343,6 +343,9 @@ bool Analysis::has_size_caps() const {
 
 Record Analysis::evaluate(const Inputs& inputs) const {
   throw_if_any(size_issues(inputs));
+  // the loops of the run poll inputs.progress(); a cancelled run throws Cancelled from one
+  const ProgressScope scope(inputs.progress(), name);
+  check_cancelled();
   Record record = describe(run(inputs), inputs);
   diagnose_non_finite(record);
   return record;

@@ -8,6 +8,8 @@
 #include <numbers>
 #include <utility>
 
+#include "catena/core/progress.hpp"
+
 namespace catena::composite {
 namespace {
 
@@ -78,6 +80,7 @@ M2 neg(const M2& p) { return {-p.a, -p.b, -p.c, -p.d}; }
 bool solve_real(std::vector<double> a, std::vector<double>& b) {
   const std::size_t n = b.size();
   for (std::size_t k = 0; k < n; ++k) {
+    check_cancelled();  // n² work a column: one poll each
     std::size_t p = k;
     for (std::size_t i = k + 1; i < n; ++i)
       if (std::abs(a[i * n + k]) > std::abs(a[p * n + k])) p = i;
@@ -440,6 +443,7 @@ Harmonic solve_sweep(const Ring& ring, int n, int m, const std::vector<double>& 
     g[0] = mul(bi, F[0]);
   }
   for (std::size_t i = 1; i <= mm; ++i) {
+    if (i % 4096 == 0) check_cancelled();  // millions of nodes with allow_large
     const M2 den = inv(add(B[i], mul(A[i], P[i - 1])));
     const V2 rhs = sub(F[i], mul(A[i], g[i - 1]));
     if (i < mm) P[i] = neg(mul(den, C[i]));
@@ -514,7 +518,9 @@ Result analyse(const Ring& ring, const Options& options) {
   std::vector<Harmonic> coarse;  // sweep with m/2 for Richardson
   int fallback_m = std::max(2 * step, default_nodes(ring, N, options.points) * 2);
   fallback_m += (2 * step - fallback_m % (2 * step)) % (2 * step);
+  ProgressLoop harmonics(static_cast<std::size_t>(N / 2 + 1), "harmonics");
   for (int n = 0; n <= N; n += 2) {
+    harmonics.step(static_cast<std::size_t>(n / 2));
     Harmonic hm = sweep ? solve_sweep(ring, n, m, rho) : solve_exact(ring, n, rho);
     if (hm.fallback) {
       hm = solve_sweep(ring, n, fallback_m, rho);
@@ -523,6 +529,7 @@ Result analyse(const Ring& ring, const Options& options) {
     }
     hs.push_back(std::move(hm));
     if (sweep) coarse.push_back(solve_sweep(ring, n, m / 2, rho));
+    harmonics.step(static_cast<std::size_t>(n / 2 + 1));
   }
   res.contact_angle = 0.5 * kPi;
   if (options.unilateral) {
@@ -584,6 +591,7 @@ Result analyse(const Ring& ring, const Options& options) {
   const int nphi = 91;
   std::vector<double> cos_n(hs.size()), sin_n(hs.size());  // per angle, not per radius
   for (int j = 0; j < nphi; ++j) {
+    check_cancelled();  // harmonics × points a row
     const double phi = 0.5 * kPi * j / (nphi - 1);
     double p = 0;
     for (std::size_t k = 0; k < hs.size(); ++k) {

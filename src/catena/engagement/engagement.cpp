@@ -6,7 +6,9 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <utility>
 
+#include "catena/core/progress.hpp"
 #include "catena/hinge/kinematics.hpp"
 #include "catena/hinge/synthesis.hpp"
 
@@ -148,7 +150,10 @@ Result solve_sliding(const SlidingInput& in) {
   const double f1 = in.tension;
   bool slack = false, lift = false;
   double min_fn = 0.0;  // [N] the most negative tooth reaction, for the lift-off diagnostic
+  const auto points = static_cast<std::size_t>(std::max(in.points, 0));
+  ProgressLoop loop(points, "points");
   for (int i = 0; i < in.points; ++i) {
+    loop.step(static_cast<std::size_t>(i));
     Sample s;
     s.gamma = sample_gamma(a.gamma_sigma, i, in.points);
     const SlidingForces fs = sliding_forces(in, a, s.gamma);
@@ -167,6 +172,7 @@ Result solve_sliding(const SlidingInput& in) {
     r.max_residual = std::max(r.max_residual, s.residual);
     r.series.push_back(s);
   }
+  loop.step(points);
   // ranges where (25) holds, ends refined by bisection on the margin of (25)
   auto margin = [&](double g) { return turn_margin(in, sliding_forces(in, a, g)); };
   auto edge = [&](double lo, double hi) {
@@ -217,6 +223,25 @@ Offset contact_offset(const hinge::Hinge& h, double r2, double theta) {
 
 namespace {
 
+// The contact points from the roller centre in the frame of figure E1 at (γ, ξ).
+struct Contacts {
+  double r1x = 0.0, r1y = 0.0, r2x = 0.0, r2y = 0.0;
+};
+
+Contacts contacts(const hinge::Hinge& h, double r2, double gamma, double xi) {
+  Contacts c;
+  // link 1: plate frame x = global x, y mirrored (the roller turns +ξ, the model turns it −θ)
+  const Offset o1 = contact_offset(h, r2, xi);
+  c.r1x = o1.x;
+  c.r1y = -o1.y;
+  // link 2: plate frame = global turned by γ + π; roller turned by γ − ξ relative to it
+  const Offset o2 = contact_offset(h, r2, gamma - xi);
+  const double cg = std::cos(gamma + kPi), sg = std::sin(gamma + kPi);
+  c.r2x = o2.x * cg - o2.y * sg;
+  c.r2y = o2.x * sg + o2.y * cg;
+  return c;
+}
+
 // The state of system (28) at (γ, ξ) with F2, F_N from ΣX = ΣY = 0; `moment` is ΣM_O.
 struct State {
   double f2 = 0.0, fn = 0.0, f1k = 0.0, f2k = 0.0, moment = 0.0;
@@ -234,22 +259,22 @@ State state(const RollingInput& in, double r2, double beta1, double gamma, doubl
   const double f1 = in.tension;
   const double c = in.rolling_coefficient;
   const double tx = -std::sin(xi), ty = std::cos(xi);  // roller faces' tangent, turned by ξ
-  // link 1: plate frame x = global x, y mirrored (the roller turns +ξ, the model turns it −θ)
-  const Offset o1 = contact_offset(in.hinge, r2, xi);
-  s.r1x = o1.x;
-  s.r1y = -o1.y;
-  // link 2: plate frame = global turned by γ + π; roller turned by γ − ξ relative to it
-  const Offset o2 = contact_offset(in.hinge, r2, gamma - xi);
-  const double cg = std::cos(gamma + kPi), sg = std::sin(gamma + kPi);
-  s.r2x = o2.x * cg - o2.y * sg;
-  s.r2y = o2.x * sg + o2.y * cg;
-  // each rolling resistance turns the roller against its rolling on that body
-  auto sense = [&](double rx, double ry, double roll) {
-    const double arm = cross(rx, ry, tx, ty);
-    return -roll * (arm >= 0.0 ? 1.0 : -1.0);
-  };
-  s.sigma1 = sense(s.r1x, s.r1y, kSense1);
-  s.sigma2 = sense(s.r2x, s.r2y, kSense2);
+  const Contacts k = contacts(in.hinge, r2, gamma, xi);
+  s.r1x = k.r1x;
+  s.r1y = k.r1y;
+  s.r2x = k.r2x;
+  s.r2y = k.r2y;
+  // 000 eq. (28): F_jk·t·sgn ẋ1j, the classical rolling-resistance force, against the travel
+  // of the contact along the face. Rolling without slip, the contact runs along the roller's
+  // face circle by the arc R2·ψ2, ψ2 = θ·R1/(R2 − R1) (eqs. 1–2; R2 > R1): towards +y of the
+  // hinge model's frame as the roller–plate turn θ grows, at the face's middle along its tangent.
+  // Link 1's frame mirrors y and link 2's turns it by π, so in figure E1 the contact travels
+  // along −t as ξ grows (kSense1) and as γ − ξ grows (−kSense2): both resistances act along +t.
+  // Their moments about the centre then turn the roller with its rolling on each plate, not
+  // against it: a tangential force at the contact cannot oppose both the travel and the spin.
+  // rolling_residual re-derives these senses from the contact positions.
+  s.sigma1 = kSense1;
+  s.sigma2 = -kSense2;
   // 000 eq. (28), ΣX and ΣY, linear in F2 and F_N (F_jk = c_r·F_j):
   //   −F1 + F2 cos γ + F_N sin β1 + σ1 c F1 tx + σ2 c F2 tx = 0
   //    F2 sin γ − F_N cos β1 + σ1 c F1 ty + σ2 c F2 ty = 0
@@ -262,7 +287,8 @@ State state(const RollingInput& in, double r2, double beta1, double gamma, doubl
   s.f1k = c * f1;
   s.f2k = c * s.f2;
   // 000 eq. (28), ΣM_O: link tensions at their contact points, the rolling resistances there,
-  // and λ1·F_N at the tooth against the roller's rolling on the tooth
+  // and the couple λ1·F_N of the tooth's shifted normal force, which opposes the roller's
+  // rolling on the tooth (not (28)'s printed sense: docs/models/engagement.md)
   s.moment = cross(s.r1x, s.r1y, -f1, 0.0) +
              cross(s.r2x, s.r2y, s.f2 * std::cos(gamma), s.f2 * std::sin(gamma)) +
              cross(s.r1x, s.r1y, s.sigma1 * s.f1k * tx, s.sigma1 * s.f1k * ty) +
@@ -271,19 +297,47 @@ State state(const RollingInput& in, double r2, double beta1, double gamma, doubl
   return s;
 }
 
-// Residual of all three equations of (28), re-evaluated from the solution's values.
-double rolling_residual(const RollingInput& in, double beta1, const State& s, double gamma,
-                        double xi) {
+// Residual of all three equations of (28), re-evaluated from the solution's F2, F_N, ξ. The
+// senses of the rolling resistances are derived here afresh, not taken from `state`: each acts
+// against the travel of its contact along the roller's face, found from the contact positions
+// with the roller turned by ±h relative to that plate in the assumed sense (below). The tooth
+// turns with link 2, so the roller rolls on it in link 2's sense; λ1·F_N opposes that.
+double rolling_residual(const RollingInput& in, double r2, double beta1, const State& s,
+                        double gamma, double xi) {
   const double f1 = in.tension;
+  const double c = in.rolling_coefficient;
+  // The contact's travel round its face's centre of curvature C (body (±(a + R2), 0)) when the
+  // roller turns by ±h relative to the plate in the assumed sense, carried to t by the face's
+  // tangent at its middle (body (±a, 0)); the resistance acts against it.
+  constexpr double kTurnStep = 1e-6;  // [rad] the contact runs ≥ R1·h: far above round-off
+  const double arm = in.hinge.half_thickness + r2;
+  auto against_travel = [&](bool link1, double sense) {
+    const double side = link1 ? 1.0 : -1.0;  // link 1 presses the +x face, link 2 the −x face
+    auto from_centre = [&](double x) {       // contact − C in figure E1 at roller turn x
+      const Contacts k = contacts(in.hinge, r2, gamma, x);
+      const double cx = side * arm * std::cos(x), cy = side * arm * std::sin(x);
+      return link1 ? std::pair{k.r1x - cx, k.r1y - cy} : std::pair{k.r2x - cx, k.r2y - cy};
+    };
+    const auto [ax, ay] = from_centre(xi - sense * kTurnStep);
+    const auto [bx, by] = from_centre(xi + sense * kTurnStep);
+    const double round_c = cross(ax, ay, bx, by);  // > 0: the contact travels anticlockwise
+    // anticlockwise round C at the face's middle, where contact − C = Rot(ξ)(−side·R2, 0)
+    const double middle_t =
+        cross(-side * std::cos(xi), -side * std::sin(xi), -std::sin(xi), std::cos(xi));
+    return (round_c > 0.0) == (middle_t > 0.0) ? -1.0 : 1.0;
+  };
+  // turning the roller by +h relative to link 1 is ξ + h; relative to link 2 (angle ξ − γ) too
+  const double sigma1 = against_travel(true, kSense1);
+  const double sigma2 = against_travel(false, kSense2);
   const double tx = -std::sin(xi), ty = std::cos(xi);
-  const double k1x = s.sigma1 * s.f1k * tx, k1y = s.sigma1 * s.f1k * ty;
-  const double k2x = s.sigma2 * s.f2k * tx, k2y = s.sigma2 * s.f2k * ty;
+  const double k1x = sigma1 * c * f1 * tx, k1y = sigma1 * c * f1 * ty;
+  const double k2x = sigma2 * c * s.f2 * tx, k2y = sigma2 * c * s.f2 * ty;
   const double f2x = s.f2 * std::cos(gamma), f2y = s.f2 * std::sin(gamma);
   const double nx = s.fn * std::sin(beta1), ny = -s.fn * std::cos(beta1);
   const double sx = -f1 + f2x + nx + k1x + k2x;
   const double sy = f2y + ny + k1y + k2y;
   const double sm = s.r1y * f1 + (s.r2x * f2y - s.r2y * f2x) + (s.r1x * k1y - s.r1y * k1x) +
-                    (s.r2x * k2y - s.r2y * k2x) + in.tooth_arm * s.fn;
+                    (s.r2x * k2y - s.r2y * k2x) - kSense2 * in.tooth_arm * s.fn;
   return std::max(
       {std::abs(sx) / f1, std::abs(sy) / f1, std::abs(sm) / (f1 * in.hinge.half_thickness)});
 }
@@ -328,7 +382,7 @@ Sample solve_rolling_at(const RollingInput& in, double r2, double gamma) {
   out.fn = s.fn;
   out.f1k = s.f1k;
   out.f2k = s.f2k;
-  out.residual = rolling_residual(in, beta1, s, gamma, xi);
+  out.residual = rolling_residual(in, r2, beta1, s, gamma, xi);
   return out;
 }
 
@@ -343,7 +397,10 @@ Result solve_rolling(const RollingInput& in) {
   bool unsolved = false, lift = false, senses = false;
   double min_fn = 0.0;  // [N] the most negative tooth reaction, for the lift-off diagnostic
   double worst_turn = 0.0, worst_psi = 0.0;
+  const auto points = static_cast<std::size_t>(std::max(in.points, 0));
+  ProgressLoop loop(points, "points");
   for (int i = 0; i < in.points; ++i) {
+    loop.step(static_cast<std::size_t>(i));
     Sample s = solve_rolling_at(in, r2, sample_gamma(gs, i, in.points));
     if (std::isnan(s.xi)) {
       unsolved = true;
@@ -362,6 +419,7 @@ Result solve_rolling(const RollingInput& in) {
     }
     r.series.push_back(s);
   }
+  loop.step(points);
   for (std::size_t i = 1; i < r.series.size(); ++i) {
     if (!(r.series[i].xi > r.series[i - 1].xi)) continue;
     Range rg{r.series[i - 1].gamma, r.series[i].gamma};

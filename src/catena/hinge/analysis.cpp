@@ -8,6 +8,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "catena/core/progress.hpp"
 #include "catena/hinge/kinematics.hpp"
 
 namespace catena::hinge {
@@ -510,7 +511,9 @@ HingeAnalysis hinge_analysis_run(const Inputs& in) {
   const std::size_t n = static_cast<std::size_t>(in.integer("points"));
   a.phi.resize(n), a.dt.resize(n), a.m1x.resize(n), a.m1y.resize(n), a.o2x.resize(n),
       a.o2y.resize(n);
+  ProgressLoop loop(n, "points");
   for (std::size_t i = 0; i < n; ++i) {
+    loop.step(i);
     a.phi[i] =
         i + 1 == n ? s.phi_max : s.phi_max * static_cast<double>(i) / static_cast<double>(n - 1);
     const Pose p = pose(a.hinge, s.r2, a.phi[i]);
@@ -521,6 +524,7 @@ HingeAnalysis hinge_analysis_run(const Inputs& in) {
     a.o2y[i] = p.centre.y;
     if (a.pitch) a.dt_over_t.push_back(a.dt[i] / *a.pitch);
   }
+  loop.step(n);
   a.max_pitch_change = max_pitch_change(a.hinge, s.r2);
   if (in.drawing_wanted())
     a.aperture = aperture(a.hinge, s.r2, ApertureOptions{in.number("clearance")});

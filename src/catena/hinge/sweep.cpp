@@ -4,6 +4,7 @@
 #include <boost/math/tools/minima.hpp>
 #include <cmath>
 
+#include "catena/core/progress.hpp"
 #include "catena/hinge/kinematics.hpp"
 
 namespace catena::hinge {
@@ -39,7 +40,9 @@ Sweep sweep(const Hinge& hinge, const Loads& loads, int count) {
   const double lo = 0.5 * (0.5 * d - a) * 1.001;  // the R1 circle must cut the d circle
   const double hi = r1_max(d, a, gamma_max(hinge)) * 0.999;
   Sweep out;
+  ProgressLoop loop(static_cast<std::size_t>(count), "values of R1");
   for (int i = 0; i < count; ++i) {
+    loop.step(static_cast<std::size_t>(i));
     Hinge h = hinge;
     h.roller_radius = 0.0;
     h.plate_radius = lo + (hi - lo) * i / (count - 1);
@@ -58,6 +61,7 @@ Sweep sweep(const Hinge& hinge, const Loads& loads, int count) {
         s.diagnostics.begin(), s.diagnostics.end(),
         [](const Diagnostic& g) { return g.severity == Diagnostic::Severity::kInfeasible; });
     out.rows.push_back(row);
+    loop.step(static_cast<std::size_t>(i) + 1);
   }
   out.criterion =
       "feasible row with the lowest Hertz contact stress (largest effective radius R* = R1R2/(R2 "

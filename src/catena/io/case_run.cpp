@@ -34,6 +34,9 @@ const std::vector<std::string> kSharedTables = {"chain", "sprocket", "loads", "m
 const std::set<std::string> kDescriptive = {"chain.type", "chain.name", "chain.description"};
 const std::map<std::string, std::string> kAliases = {{"chain.designation", "chain"}};
 // Options that choose output destinations: the case runner owns those.
+// An analysis table's `note`: the case's words on what the run shows (the report prints them
+// under the section's title); not an option of the analysis.
+constexpr std::string_view kNote = "note";
 const std::set<std::string> kOutputFlags = {"help", "format", "output", "csv",
                                             "svg",  "dxf",    "example"};
 
@@ -77,6 +80,7 @@ struct Planned {
   std::string name;
   std::vector<RawInput> raw;
   std::map<std::string, std::string> path_of;  ///< parameter key → the case-file path it came from
+  std::string note;                            ///< the table's `note`, for the report
 };
 
 // The file's structure: top-level keys and tables, chain.type. Returns the chain type ("" when
@@ -172,6 +176,11 @@ Planned plan(const Analysis& a, const std::string& name, const CaseFile& file,
     if (key == analysis::kAllowLarge) {  // lifts the caps of the size parameters
       p.raw.push_back({key, v.text, raw_type(v.type), {}, {}});
       p.path_of[key] = v.path;
+    } else if (key == kNote) {  // the case's words on this run: the report shows them
+      if (v.type == CaseValue::Type::kString)
+        p.note = v.text;
+      else
+        issues.push_back({v.path, v.text, "a text: what this run shows, for the report"});
     } else if (kOutputFlags.count(key)) {
       issues.push_back({v.path, v.text,
                         "no output option in a case file: 'catena report' and "
@@ -216,14 +225,16 @@ Planned plan(const Analysis& a, const std::string& name, const CaseFile& file,
 }
 
 // Binds and runs one planned analysis; its problems are named by the case file's paths.
-void run_planned(const Planned& p, CaseRun& out, std::vector<Issue>& issues) {
+void run_planned(const Planned& p, CaseRun& out, std::vector<Issue>& issues,
+                 const Progress* progress) {
   const std::string where = "analyses." + p.name;
   std::vector<Issue> found;
   analysis::Inputs inputs = bind(*p.analysis, p.raw, found);
   inputs.want_drawing();  // the report shows the drawing
+  inputs.listen(progress);
   if (found.empty()) {
     try {
-      out.runs.push_back({p.analysis, p.name, p.analysis->evaluate(inputs)});
+      out.runs.push_back({p.analysis, p.name, p.analysis->evaluate(inputs), p.note});
     } catch (const InputError& e) {
       found = e.issues();
     }
@@ -295,7 +306,7 @@ CaseInputs case_inputs(const CaseFile& file, const std::string& name, std::vecto
   return out;
 }
 
-CaseRun run_case(const CaseFile& file) {
+CaseRun run_case(const CaseFile& file, const Progress* progress) {
   CaseRun out{file, sha256_hex(file.text), {}};
   std::vector<Issue> issues;
   const std::string chain_type = check_structure(file, issues);
@@ -334,7 +345,7 @@ CaseRun run_case(const CaseFile& file) {
   }
   // no stop before: the analyses that could be planned run too, so that a misspelt key and a
   // wrong unit elsewhere are reported together
-  for (const Planned& p : planned) run_planned(p, out, issues);
+  for (const Planned& p : planned) run_planned(p, out, issues, progress);
   throw_if_any(issues);
   return out;
 }
@@ -359,6 +370,7 @@ std::vector<ReportSection> report_sections(const std::vector<AnalysisRun>& runs)
     if (r.name != r.analysis->name)
       section_title += " — " + r.name.substr(r.analysis->name.size() + 1);
     sections.push_back(report_section(r.record, r.name, section_title, r.analysis->docs));
+    sections.back().note = r.note;
   }
   return sections;
 }
@@ -370,8 +382,15 @@ Report build_report(const CaseRun& run, std::string_view version) {
   report.case_name = run.file.name;
   report.case_hash = run.hash;
   report.version = std::string(version);
-  for (const CaseValue& v : run.file.values)
-    report.inputs.push_back({v.path, v.text, bare_unit_at(v)});
+  if (const CaseValue* description = run.file.find("description"))
+    report.description = description->text;
+  for (const CaseValue& v : run.file.values) {
+    // the description and the notes are prose the report prints where they belong
+    const bool prose = v.path == "description" ||
+                       (v.path.rfind("analyses.", 0) == 0 && v.path.size() > kNote.size() + 1 &&
+                        v.path.ends_with("." + std::string(kNote)));
+    if (!prose) report.inputs.push_back({v.path, v.text, bare_unit_at(v)});
+  }
   report.sections = report_sections(run.runs);
   return report;
 }

@@ -96,6 +96,8 @@ td.text{max-width:640px}
 .grid td{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
 tr.best td{background:#c8e6c9;font-weight:600}
 caption{text-align:left;font-weight:600;padding:6px 0}
+#about p,.note p{margin:6px 0;font-size:15px;line-height:1.45}
+.note{background:#f2f5fa;border-radius:4px;padding:4px 12px;margin:8px 0}
 .diagnostic{border-left:4px solid;padding:6px 10px;margin:6px 0;font-size:14px}
 .diagnostic.error{border-color:#c62828;background:#fdecea}
 .diagnostic.warning{border-color:#e0a100;background:#fff6dd}
@@ -210,6 +212,39 @@ std::string html_escape(std::string_view text) {
   return out;
 }
 
+namespace {
+
+// Prose of the case (its description, a table's note) as HTML paragraphs: a blank line starts a
+// new one, other line breaks are spaces; the text is escaped, never markup.
+std::string paragraphs(std::string_view text) {
+  std::string out, paragraph;
+  auto flush = [&] {
+    const auto first = paragraph.find_first_not_of(' ');
+    if (first != std::string::npos)
+      out += "<p>" +
+             html_escape(paragraph.substr(first, paragraph.find_last_not_of(' ') - first + 1)) +
+             "</p>";
+    paragraph.clear();
+  };
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    std::string_view line = text.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (line.find_first_not_of(" \t") == std::string_view::npos) {
+      flush();
+    } else {
+      if (!paragraph.empty()) paragraph += ' ';
+      paragraph += line;
+    }
+    start = end + 1;
+  }
+  flush();
+  return out;
+}
+
+}  // namespace
+
 std::string to_html(const Report& report, std::string_view chart_script) {
   std::ostringstream html;
   auto table = [&](const std::string& caption, const std::vector<ReportRow>& rows,
@@ -262,6 +297,8 @@ std::string to_html(const Report& report, std::string_view chart_script) {
   auto count = [](int n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
   };
+  if (!report.description.empty())
+    html << "<section id=\"about\">" << paragraphs(report.description) << "</section>\n";
   html << "<section id=\"summary\"><h2>Findings</h2>";
   if (errors + warnings + notes == 0) {
     html << "<p class=\"ok\">Every check of every analysis passed.</p>";
@@ -288,6 +325,7 @@ std::string to_html(const Report& report, std::string_view chart_script) {
     if (!s.docs.empty())
       html << " · model documentation: <code>" << html_escape(s.docs) << "</code>";
     html << "</div>\n";
+    if (!s.note.empty()) html << "<div class=\"note\">" << paragraphs(s.note) << "</div>\n";
     if (!s.failure.empty()) {
       html << "<div class=\"failure\">This analysis could not run: " << html_escape(s.failure)
            << "</div></section>\n";

@@ -58,7 +58,7 @@ std::vector<Parameter> segment_fields() {
           number("loss", "drive: tension lost over the drive sprocket, as a share")};
 }
 
-const analysis::Parameter& table_parameter();
+const analysis::Parameter& table_parameter() { return loop_table_parameter(); }
 
 std::map<std::string, const Parameter*> keys_of(const std::vector<Parameter>& fields) {
   std::map<std::string, const Parameter*> keys;
@@ -323,11 +323,7 @@ std::string csv_field(const std::string& text) {
   return out + "\"";
 }
 
-LoopAnalysis run(const analysis::Inputs& in) {
-  const Parsed p = parse_loop(in.at("loop"));
-  LoopAnalysis a{p.loop, p.name, p.has_name, solve(p.loop)};
-  return a;
-}
+LoopAnalysis run(const analysis::Inputs& in) { return loop_from_table(in.at("loop")); }
 
 Record describe(const LoopAnalysis& a, const analysis::Inputs&) {
   const Loop& loop = a.loop;
@@ -497,7 +493,9 @@ Record describe(const LoopAnalysis& a, const analysis::Inputs&) {
   return rec;
 }
 
-const analysis::Parameter& table_parameter() {
+}  // namespace
+
+const analysis::Parameter& loop_table_parameter() {
   static const Parameter p = [] {
     Parameter t;
     t.name = "loop";
@@ -516,6 +514,13 @@ const analysis::Parameter& table_parameter() {
   }();
   return p;
 }
+
+LoopAnalysis loop_from_table(const analysis::InputValue& table) {
+  const Parsed p = parse_loop(table);
+  return LoopAnalysis{p.loop, p.name, p.has_name, solve(p.loop)};
+}
+
+namespace {
 
 analysis::Analysis make() {
   analysis::Analysis a;

@@ -8,6 +8,8 @@
 #include <map>
 #include <sstream>
 
+#include "catena/core/progress.hpp"
+
 namespace catena::warp {
 namespace {
 
@@ -319,8 +321,10 @@ WarpAnalysis warp_analysis_run(const analysis::Inputs& in) {
   }
   throw_if_any(issues);
   std::map<std::string, std::pair<std::size_t, double>> worst;  // code → (index, value/limit)
+  ProgressLoop loop(forces.size() * heights.size(), "points");
   for (double F : forces)
     for (double L : heights) {
+      loop.step(a.points.size());
       const Load load{F, L};
       a.points.push_back({load, solve(w, load)});
       for (const Diagnostic& d : a.points.back().result.diagnostics) {
@@ -340,6 +344,7 @@ WarpAnalysis warp_analysis_run(const analysis::Inputs& in) {
         a.findings.push_back({d, load, 1});
       }
     }
+  loop.step(a.points.size());
   return a;
 }
 

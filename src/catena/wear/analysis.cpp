@@ -7,6 +7,8 @@
 #include <numbers>
 #include <sstream>
 
+#include "catena/strength/loop_analysis.hpp"
+
 namespace catena::wear {
 namespace {
 
@@ -15,11 +17,25 @@ using analysis::Inputs;
 using analysis::Record;
 using analysis::Value;
 
-const std::vector<std::string> kCommon = {
-    "hinge",           "pitch",          "teeth",       "strokes",          "articulations",
-    "tension",         "speed",          "loop_length", "wear_coefficient", "plate_hardness",
-    "roller_hardness", "contact_length", "friction",    "limits",           "block_passes",
-    "samples"};
+const std::vector<std::string> kCommon = {"hinge",
+                                          "pitch",
+                                          "teeth",
+                                          "strokes",
+                                          "articulations",
+                                          "tension",
+                                          "speed",
+                                          "loop_length",
+                                          "wear_coefficient",
+                                          "plate_hardness",
+                                          "roller_hardness",
+                                          "contact_length",
+                                          "friction",
+                                          "limits",
+                                          "block_passes",
+                                          "samples",
+                                          "tension_source",
+                                          "loop",
+                                          "compare_wear_coefficient"};
 const std::vector<std::string> kSlidingKeys = {"journal_diameter", "tooth_diameter",
                                                "tooth_friction", "flank_angle"};
 const std::vector<std::string> kRollingKeys = {"pin_diameter",  "half_thickness", "plate_radius",
@@ -32,8 +48,16 @@ void check(const Inputs& in, std::vector<Issue>& issues) {
   std::vector<Issue> added;
   if (in.present("hinge") && hinge != "sliding" && !rolling)
     added.push_back({"hinge", hinge, "sliding or rolling"});
-  const std::vector<std::string>& refused = rolling ? kSlidingKeys : kRollingKeys;
-  const std::vector<std::string>& own = rolling ? kRollingKeys : kSlidingKeys;
+  // compare_wear_coefficient runs the other hinge too: its keys are read then
+  const bool compare = in.present("compare_wear_coefficient");
+  static const std::vector<std::string> kNone;
+  const std::vector<std::string>& refused =
+      compare ? kNone : (rolling ? kSlidingKeys : kRollingKeys);
+  std::vector<std::string> own = rolling ? kRollingKeys : kSlidingKeys;
+  if (compare) {
+    const std::vector<std::string>& other = rolling ? kSlidingKeys : kRollingKeys;
+    own.insert(own.end(), other.begin(), other.end());
+  }
   for (const std::string& key : refused) {
     if (in.given(key)) {
       added.push_back({key, in.text(key),
@@ -41,9 +65,24 @@ void check(const Inputs& in, std::vector<Issue>& issues) {
                                : "nothing: only the rolling hinge uses it"});
     }
   }
-  if (rolling) {
+  if (rolling || compare) {
     for (const char* key : {"pin_diameter", "half_thickness", "plate_radius"}) {
-      if (!in.given(key)) added.push_back({key, "(missing)", "a value"});
+      if (!in.given(key))
+        added.push_back(
+            {key, "(missing)",
+             rolling ? "a value" : "a value: compare_wear_coefficient runs the rolling hinge too"});
+    }
+  }
+  // Loads: a given tension, or the loop's tensions at the sprockets (then speed and loop length
+  // default to the loop's). Whether the [loop] table is there is its reader's to say.
+  if (in.text("tension_source") == "loop") {
+    if (!in.given("loop") || in.text("loop").empty())
+      added.push_back({"loop", "(missing)",
+                       "a [loop] table (case file) or --loop FILE: tension_source = loop takes the "
+                       "tensions from it"});
+  } else {
+    for (const char* key : {"tension", "speed", "loop_length"}) {
+      if (!in.present(key)) added.push_back({key, "(missing)", "a value"});
     }
   }
   std::vector<std::string> order = kCommon;
@@ -146,6 +185,66 @@ Value to_value(const WearAnalysis& w) {
                                       {"passes_per_hour", "1/h"},
                                       {"block_passes", "1"},
                                       {"limit", "SI"}});
+  // compare_wear_coefficient (only then): the other hinge's life beside this one's, and the
+  // sliding/rolling ratios of the new chains per pass (the thesis' ratios, docs/models/wear.md)
+  if (w.other) {
+    const Input& oi = w.other->input;
+    const Result& o = w.other->result;
+    const bool o_rolling = oi.hinge == HingeKind::kRolling;
+    std::vector<double> oh, op;
+    for (const Point& p : o.series) {
+      oh.push_back(p.hours);
+      op.push_back(100.0 * p.elongation);
+    }
+    Value olife = Value::object();
+    for (std::size_t i = 0; i < sorted.size(); ++i)
+      olife[limit_key(sorted[i])] = Value(o.life_hours[i]);
+    const Articulation& sl = rolling ? o.pass : ps;
+    const Articulation& ro = rolling ? ps : o.pass;
+    auto ratio = [](double num, double den) { return den > 0.0 ? Value(num / den) : Value(); };
+    j["compare"] =
+        Value::object({{"hinge", o_rolling ? "rolling" : "sliding"},
+                       {"model", o_rolling ? "wear.rolling_hinge" : "wear.sliding_hinge"},
+                       {"wear_coefficient", oi.wear_coefficient},
+                       {"elongation", Value::object({{"hours", oh}, {"percent", op}})},
+                       {"life_hours", std::move(olife)},
+                       {"wear_depth", Value::object({{"roller", o.at_end.roller},
+                                                     {"plate", o.at_end.plate},
+                                                     {"pin", Value()},
+                                                     {"bush", Value()}})},
+                       {"pivot_plate", o.pass.slide_pivot_plate},
+                       {"roller_depth", o.pass.roller_depth},
+                       {"plate_depth", o.pass.plate_depth},
+                       {"sliding_to_rolling",
+                        Value::object({{"pitch_extension", ratio(sl.roller_depth + sl.plate_depth,
+                                                                 ro.roller_depth + ro.plate_depth)},
+                                       {"roller", ratio(sl.roller_depth, ro.roller_depth)},
+                                       {"plate", ratio(sl.plate_depth, ro.plate_depth)}})}});
+    j["units"]["sliding_to_rolling"] = "1";
+  }
+  // tension_source = loop (only then, so that a given tension's output stays as it was): the
+  // loads of every articulation and where in the loop each came from
+  if (w.loads.from_loop) {
+    Value points = Value::array();
+    for (const LoopLoad& p : w.loads.points)
+      points.push_back(Value::object({{"segment", p.segment},
+                                      {"name", p.name},
+                                      {"at", p.entry ? "entry" : "exit"},
+                                      {"tension", p.tension}}));
+    j["loads"] =
+        Value::object({{"source", "loop"},
+                       {"tensions", in.tensions},
+                       {"points", std::move(points)},
+                       {"speed", in.speed},
+                       {"speed_from", w.loads.speed_from_loop ? "loop" : "given"},
+                       {"loop_length", in.loop_length},
+                       {"loop_length_from", w.loads.loop_length_from_loop ? "loop" : "given"}});
+    Value& units = j["units"];
+    units["tension"] = "N";
+    units["tensions"] = "N";
+    units["speed"] = "m/s";
+    units["loop_length"] = "m";
+  }
   return j;
 }
 
@@ -168,6 +267,17 @@ std::string to_table(const WearAnalysis& w) {
   out << " kN, " << in.articulations << " articulations per pass of "
       << format_g(a.mutual_turn * 180.0 / std::numbers::pi) << " deg, "
       << format_g(r.passes_per_hour) << " passes/h, k = " << format_g(in.wear_coefficient) << "\n";
+  if (w.loads.from_loop) {
+    out << "loads from the loop: ";
+    for (std::size_t i = 0; i < w.loads.points.size(); ++i) {
+      const LoopLoad& p = w.loads.points[i];
+      out << (i ? ", " : "") << (p.name.empty() ? "segment " + std::to_string(p.segment) : p.name)
+          << (p.entry ? " in " : " out ") << format_g(p.tension / 1e3) << " kN";
+    }
+    out << "; v = " << format_g(in.speed) << " m/s" << (w.loads.speed_from_loop ? " (loop)" : "")
+        << ", loop length " << format_g(in.loop_length) << " m"
+        << (w.loads.loop_length_from_loop ? " (the loop's path)" : "") << "\n";
+  }
   out << "pivot-plate sliding per pass: " << format_g(ps.slide_pivot_plate * 1e3) << " mm";
   if (rolling) {
     out << " (gross " << format_g(2.0 * ps.gross_slide * 1e3) << " mm, micro-slip "
@@ -221,15 +331,47 @@ Record describe(const WearAnalysis& w, const Inputs&) {
   rec.table = to_table(w);
   rec.columns = csv_columns(w);
   analysis::Chart c;
-  c.title = std::string("Elongation of the ") +
-            (w.input.hinge == HingeKind::kRolling ? "rolling" : "sliding") + "-hinge chain";
   c.x_label = "hours [h]";
   c.y_label = "elongation [%]";
   const Value& e = rec.data.at("elongation");
-  c.traces.push_back({w.input.hinge == HingeKind::kRolling ? "rolling" : "sliding",
-                      e.at("hours").numbers(), e.at("percent").numbers()});
+  const bool rolling = w.input.hinge == HingeKind::kRolling;
+  if (!w.other) {
+    c.title =
+        std::string("Elongation of the ") + (rolling ? "rolling" : "sliding") + "-hinge chain";
+    c.traces.push_back(
+        {rolling ? "rolling" : "sliding", e.at("hours").numbers(), e.at("percent").numbers()});
+    rec.charts.push_back(std::move(c));
+    return rec;
+  }
+  // both chains on one chart, the sliding one first, and the retirement limits across it
+  const Value& o = rec.data.at("compare").at("elongation");
+  analysis::Trace self{rolling ? "rolling" : "sliding", e.at("hours").numbers(),
+                       e.at("percent").numbers()};
+  analysis::Trace other{rolling ? "sliding" : "rolling", o.at("hours").numbers(),
+                        o.at("percent").numbers()};
+  c.title = "Elongation of the sliding- and the rolling-hinge chain";
+  c.traces.push_back(rolling ? other : self);
+  c.traces.push_back(rolling ? self : other);
+  double end = 0.0;
+  for (const analysis::Trace& t : c.traces)
+    for (double h : t.x) end = std::max(end, h);
+  std::vector<double> limits = w.input.limits;
+  std::sort(limits.begin(), limits.end());
+  for (double l : limits)
+    c.traces.push_back({"limit " + limit_key(l) + " %", {0.0, end}, {100.0 * l, 100.0 * l}});
   rec.charts.push_back(std::move(c));
   return rec;
+}
+
+// The [loop] table as `catena loop` reads it; optional here (only tension_source = loop reads it),
+// a --loop FILE on the command line.
+analysis::Parameter loop_table() {
+  analysis::Parameter p = strength::loop_table_parameter();
+  p.required = false;
+  p.doc =
+      "tension_source = loop: TOML file with a [loop] table and [[loop.segment]] tables (a case "
+      "file works); in a case file, its own [loop] table";
+  return p;
 }
 
 analysis::Analysis make() {
@@ -254,12 +396,13 @@ analysis::Analysis make() {
       integer("strokes", 1, "m, sprocket strokes; mutual turn 360deg*m/z") | Default{"1"},
       integer("articulations", 1, "articulations per pass (2 per sprocket)") | Default{"4"},
       quantity("tension", K::kForce,
-               "chain tension F at every articulation, or one per articulation of a pass") |
-          Required{} | ListOf{},
-      quantity("speed", K::kSpeed, "chain speed v") | Required{},
+               "chain tension F at every articulation, or one per articulation of a pass "
+               "(required unless tension_source = loop)") |
+          ListOf{},
+      quantity("speed", K::kSpeed, "chain speed v (tension_source = loop: the loop's by default)"),
       quantity("loop_length", K::kLength,
-               "chain length of the loop; a pass takes loop_length/speed (give its unit: 10m)") |
-          Required{},
+               "chain length of the loop; a pass takes loop_length/speed (give its unit: 10m; "
+               "tension_source = loop: the loop's path length by default)"),
       number("wear_coefficient", "Archard k of the pivot-plate pair, 0 < k < 1") | Required{},
       quantity("plate_hardness", K::kStress,
                "H of the plates (42 HRC = 412 HV = 4040 MPa: thesis concl. 10, ASTM E140)") |
@@ -287,6 +430,14 @@ analysis::Analysis make() {
           Default{"friction"},
       choice("creep", {"carter", "none"}, "rolling: micro-slip law of the rolling contact") |
           Default{"carter"},
+      choice("tension_source", {"given", "loop"},
+             "given = tension; loop = the loop's tension where the chain enters and leaves each "
+             "sprocket (the drive and every turn given by a factor)") |
+          Default{"given"},
+      loop_table(),
+      number("compare_wear_coefficient",
+             "Archard k of the other hinge's pair, 0 < k < 1: given, the other hinge type runs "
+             "too on the same chain, sprocket and loads, and the report charts both"),
   };
   a.check = check;
   a.variants = {
@@ -295,6 +446,62 @@ analysis::Analysis make() {
   };
   set_functions<WearAnalysis>(a, wear_analysis_run, describe);
   return a;
+}
+
+// tension_source = loop: the loop solved as `catena loop` solves it; each sprocket (the drive, and
+// every turn given by a factor: a wheel; a turn given by wrap and friction is a curved guide the
+// chain slides round, without a tooth's articulation) gives two articulations, entering under the
+// tension there and leaving under the tension there. Speed and loop length default to the loop's.
+void load_from_loop(const Inputs& in, WearAnalysis& w) {
+  Input& x = w.input;
+  const strength::LoopAnalysis loop = strength::loop_from_table(in.at("loop"));
+  w.loads.from_loop = true;
+  for (std::size_t i = 0; i < loop.loop.segments.size(); ++i) {
+    const strength::Segment& s = loop.loop.segments[i];
+    const bool sprocket = s.kind == strength::SegmentKind::kDrive ||
+                          (s.kind == strength::SegmentKind::kTurn && s.factor.has_value());
+    if (!sprocket) continue;
+    const strength::SegmentTension& t = loop.result.segments[i];
+    w.loads.points.push_back({i, s.name, true, t.tension_in});
+    w.loads.points.push_back({i, s.name, false, t.tension_out});
+  }
+  std::vector<Issue> issues;
+  if (w.loads.points.empty())
+    issues.push_back({"loop", "(no sprocket)",
+                      "a loop with a drive segment (tension_source = loop reads its sprockets)"});
+  for (const LoopLoad& p : w.loads.points) {
+    x.tensions.push_back(p.tension);
+    if (p.tension < 0.0) {
+      issues.push_back({"loop.segment[" + std::to_string(p.segment) + "]",
+                        format_g(p.tension) + " N " + (p.entry ? "entering" : "leaving"),
+                        "a tension >= 0 where the chain meets a sprocket (raise the take-up's "
+                        "pretension; `catena loop` shows the tensions)"});
+    }
+  }
+  throw_if_any(issues);
+  x.tension = x.tensions.front();
+  const int count = static_cast<int>(x.tensions.size());
+  if (!in.given("articulations")) {
+    x.articulations = count;
+  } else if (x.articulations != count) {
+    issues.push_back({"articulations", in.text("articulations"),
+                      std::to_string(count) + " (2 per sprocket of the [loop] table), or not "
+                                              "given: tension_source = loop"});
+  }
+  const double v = loop.loop.speed;
+  if (!in.present("speed")) {
+    x.speed = v;
+    w.loads.speed_from_loop = true;
+  } else if (std::abs(x.speed - v) > 1e-9 * v) {
+    issues.push_back(
+        {"speed", in.text("speed"),
+         "the [loop] table's speed " + format_g(v) + " m/s, or not given (tension_source = loop)"});
+  }
+  if (!in.present("loop_length")) {
+    x.loop_length = loop.result.length;
+    w.loads.loop_length_from_loop = true;
+  }
+  throw_if_any(issues);
 }
 
 }  // namespace
@@ -307,13 +514,17 @@ WearAnalysis wear_analysis_run(const analysis::Inputs& in) {
   x.teeth = in.integer("teeth");
   x.strokes = in.integer("strokes");
   x.articulations = in.integer("articulations");
-  x.tension = in.number("tension");
-  if (in.list("tension").size() > 1) {
-    x.tensions = in.list("tension");
-    if (!in.given("articulations")) x.articulations = static_cast<int>(x.tensions.size());
-  }
   x.speed = in.number("speed");
   x.loop_length = in.number("loop_length");
+  if (in.text("tension_source") == "loop") {
+    load_from_loop(in, w);
+  } else {
+    x.tension = in.number("tension");
+    if (in.list("tension").size() > 1) {
+      x.tensions = in.list("tension");
+      if (!in.given("articulations")) x.articulations = static_cast<int>(x.tensions.size());
+    }
+  }
   x.wear_coefficient = in.number("wear_coefficient");
   x.plate_hardness = in.number("plate_hardness");
   x.roller_hardness = in.number("roller_hardness");
@@ -323,21 +534,54 @@ WearAnalysis wear_analysis_run(const analysis::Inputs& in) {
   for (double l : in.list("limits")) x.limits.push_back(l / 100.0);
   x.block_passes = in.number("block_passes");
   x.samples = in.integer("samples");
-  if (x.hinge == HingeKind::kSliding) {
-    x.journal_diameter = in.number("journal_diameter");
-    x.tooth_diameter = in.number("tooth_diameter");
-    x.tooth_friction = in.optional("tooth_friction").value_or(-1.0);
-    x.flank_angle = in.number("flank_angle");
-  } else {
-    x.geometry.pin_diameter = in.number("pin_diameter");
-    x.geometry.half_thickness = in.number("half_thickness");
-    x.geometry.plate_radius = in.number("plate_radius");
-    if (const auto r2 = in.optional("roller_radius")) x.geometry.roller_radius = *r2;
-    x.limit =
+  const auto sliding_keys = [&](Input& y) {
+    y.journal_diameter = in.number("journal_diameter");
+    y.tooth_diameter = in.number("tooth_diameter");
+    y.tooth_friction = in.optional("tooth_friction").value_or(-1.0);
+    y.flank_angle = in.number("flank_angle");
+  };
+  const auto rolling_keys = [&](Input& y) {
+    y.geometry.pin_diameter = in.number("pin_diameter");
+    y.geometry.half_thickness = in.number("half_thickness");
+    y.geometry.plate_radius = in.number("plate_radius");
+    if (const auto r2 = in.optional("roller_radius")) y.geometry.roller_radius = *r2;
+    y.limit =
         in.text("rolling_limit") == "guided" ? RollingLimit::kGuided : RollingLimit::kFriction;
-    x.creep = in.text("creep") == "none" ? Creep::kNone : Creep::kCarter;
+    y.creep = in.text("creep") == "none" ? Creep::kNone : Creep::kCarter;
+  };
+  if (x.hinge == HingeKind::kSliding) {
+    sliding_keys(x);
+  } else {
+    rolling_keys(x);
   }
   w.result = run(x);
+  // compare_wear_coefficient: the other hinge on the same chain, sprocket, loads and hardness,
+  // with its own pair's k (given: nothing is fitted here)
+  if (const auto k = in.optional("compare_wear_coefficient")) {
+    Input o = x;
+    o.wear_coefficient = *k;
+    if (x.hinge == HingeKind::kSliding) {
+      o.hinge = HingeKind::kRolling;
+      rolling_keys(o);
+    } else {
+      o.hinge = HingeKind::kSliding;
+      sliding_keys(o);
+    }
+    try {
+      w.other = Other{o, run(o)};
+    } catch (const InputError& e) {
+      std::vector<Issue> issues = e.issues();
+      for (Issue& i : issues)
+        if (i.field == "wear_coefficient") i.field = "compare_wear_coefficient";
+      throw InputError(issues);
+    }
+  }
+  if (w.loads.from_loop && in.present("tension")) {
+    w.result.diagnostics.push_back(
+        {Diagnostic::Severity::kWarning, "wear.tension_not_used",
+         "tension " + in.text("tension") +
+             " is not used: tension_source = loop takes the loop's tensions at the sprockets"});
+  }
   return w;
 }
 

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <string>
 
+#include "catena/core/progress.hpp"
 #include "catena/engagement/engagement.hpp"
 #include "catena/hinge/kinematics.hpp"
 #include "catena/hinge/synthesis.hpp"
@@ -281,7 +282,11 @@ Result run(const Input& input) {
   constexpr int kMaxBlocks = 200000;
   Point p;
   int blocks = 0;
+  // progress: how far the elongation has come towards the last limit, in thousandths
+  constexpr std::size_t kPermille = 1000;
+  ProgressLoop loop(kPermille, "‰ of the last limit");
   while (p.elongation < last && blocks < kMaxBlocks) {
+    loop.step(static_cast<std::size_t>(std::clamp(p.elongation / last, 0.0, 1.0) * kPermille));
     // Re-solve the articulation on the worn geometry, then extrapolate over the block.
     const Articulation a = blocks == 0 ? res.pass : whole_pass(in, worn);
     Point next = p;
@@ -302,6 +307,7 @@ Result run(const Input& input) {
     res.series.push_back(p);
     ++blocks;
   }
+  loop.step(kPermille);
   if (blocks >= kMaxBlocks) {
     res.diagnostics.push_back({S::kWarning, "wear.block_limit",
                                "stopped after the largest number of blocks before the last "

@@ -1,0 +1,201 @@
+// Ctrl-C and progress on the command line (issue 18): a long run that gets SIGINT stops at the
+// run's next poll with exit 130 and one line on stderr, and writes nothing — no --output file,
+// no temporary beside it, nothing on stdout; the same for a case run and a sweep. On a terminal
+// (a pseudo-terminal here) a run of over a second draws the progress line on stderr.
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <pty.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+// The thesis ring of issue 18 by the finite-difference sweep with 10× its node cap: 25 s of work.
+const std::vector<std::string> kLongRing = {
+    "ring",  "--inner-radius", "4.72",   "--outer-radius", "10",    "--thickness",
+    "1",     "--E-r",          "10GPa",  "--E-phi",        "40GPa", "--G",
+    "4GPa",  "--nu-phi-r",     "0.28",   "--gap",          "0.02",  "--method",
+    "sweep", "--nodes",        "200000", "--allow-large"};
+
+struct Stopped {
+  int status = -1;       // exit status, -1 when ended by a signal
+  int signal = 0;        // the signal that ended it, if one did
+  std::string out, err;  // stdout; stderr (or what the terminal showed)
+  double seconds = 0;    // from the SIGINT to the exit
+};
+
+std::string read_all(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// A fresh, empty folder for one test's files.
+fs::path folder(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("catena_interrupt_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// Runs catena with `args`, stdout and stderr to files in `dir` (stderr to a pseudo-terminal when
+// `terminal`), sends SIGINT after `wait` (on a terminal: once the progress line shows, or after
+// `wait` at most), and waits for it to end.
+Stopped interrupt(const std::vector<std::string>& args, const fs::path& dir,
+                  std::chrono::milliseconds wait, bool terminal = false) {
+  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  int master = -1, slave = -1;
+  if (terminal && ::openpty(&master, &slave, nullptr, nullptr, nullptr) != 0) return {};
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int e = terminal ? slave : ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(o, STDOUT_FILENO);
+    ::dup2(e, STDERR_FILENO);
+    std::vector<char*> argv;
+    std::string program = CATENA_CLI;
+    argv.push_back(program.data());
+    std::vector<std::string> copy = args;
+    for (std::string& a : copy) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execv(program.c_str(), argv.data());
+    ::_exit(127);
+  }
+  if (terminal) ::close(slave);
+  std::string shown;
+  std::mutex mutex;
+  // the terminal's side: read what the run draws while it runs (the pty would fill otherwise)
+  std::thread reader;
+  if (terminal) {
+    reader = std::thread([master, &shown, &mutex] {
+      char buffer[4096];
+      for (;;) {
+        const ssize_t n = ::read(master, buffer, sizeof buffer);
+        if (n <= 0) break;  // EIO once the child has closed its side
+        const std::lock_guard<std::mutex> lock(mutex);
+        shown.append(buffer, static_cast<std::size_t>(n));
+      }
+    });
+  }
+  const auto deadline = Clock::now() + wait;
+  while (Clock::now() < deadline) {
+    if (terminal) {
+      const std::lock_guard<std::mutex> lock(mutex);
+      if (shown.find(" s") != std::string::npos) break;  // a whole progress line is drawn
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  const auto sent = Clock::now();
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  Stopped r;
+  r.seconds = std::chrono::duration<double>(Clock::now() - sent).count();
+  if (terminal) {
+    reader.join();
+    ::close(master);
+  }
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+  r.out = read_all(out);
+  r.err = terminal ? shown : read_all(err);
+  fs::remove(out);
+  fs::remove(err);
+  return r;
+}
+
+std::vector<std::string> files_in(const fs::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir))
+    names.push_back(entry.path().filename().string());
+  return names;
+}
+
+const char* kMessage = "catena: interrupted (Ctrl-C); nothing was written\n";
+
+TEST(InterruptCli, CtrlCStopsALongAnalysisWithStatus130AndWritesNoOutputNorTemporary) {
+  const fs::path dir = folder("analysis");
+  std::vector<std::string> args = kLongRing;
+  args.insert(args.end(), {"--format", "json", "--output", (dir / "ring.json").string(), "--csv",
+                           (dir / "ring.csv").string()});
+  const Stopped r = interrupt(args, dir, std::chrono::milliseconds(400));
+  EXPECT_EQ(r.signal, 0);
+  EXPECT_EQ(r.status, 130) << r.err;
+  EXPECT_EQ(r.err, kMessage);
+  EXPECT_EQ(r.out, "");
+  EXPECT_LT(r.seconds, 2.0);  // at the next poll, not after the 8 s of work
+  EXPECT_EQ(files_in(dir), std::vector<std::string>{});  // no ring.json, no temporary
+  fs::remove_all(dir);
+}
+
+TEST(InterruptCli, CtrlCStopsACaseRunAndASweepAlike) {
+  const fs::path dir = folder("case");
+  const fs::path toml = dir / "ring.toml";
+  {
+    std::ofstream case_file(toml);
+    case_file << "title = \"long ring\"\n[chain]\ntype = \"composite-link\"\n"
+                 "[analyses.ring]\ninner_radius = 4.72\nouter_radius = 10\nthickness = 1\n"
+                 "E_r = \"10GPa\"\nE_phi = \"40GPa\"\nG = \"4GPa\"\nnu_phi_r = 0.28\n"
+                 "gap = 0.02\nmethod = \"sweep\"\nnodes = 200000\nallow_large = true\n";
+  }
+  const std::string json = (dir / "out.json").string();
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"run", toml.string(), "--output", json},
+        std::vector<std::string>{"report", toml.string(), "--output", json, "--format", "json"},
+        std::vector<std::string>{"sweep", toml.string(), "--grid", "gap=0.02,0.021,0.022",
+                                 "--threads", "2", "--output", json}}) {
+    const Stopped r = interrupt(args, dir, std::chrono::milliseconds(400));
+    EXPECT_EQ(r.signal, 0) << args[0];
+    EXPECT_EQ(r.status, 130) << args[0] << ": " << r.err;
+    EXPECT_EQ(r.err, kMessage) << args[0];
+    EXPECT_EQ(r.out, "") << args[0];
+    EXPECT_LT(r.seconds, 2.0) << args[0];
+    EXPECT_EQ(files_in(dir), std::vector<std::string>{"ring.toml"}) << args[0];
+  }
+  fs::remove_all(dir);
+}
+
+TEST(InterruptCli, OnATerminalALongRunDrawsItsProgressLineOnStderr) {
+  const fs::path dir = folder("terminal");
+  std::vector<std::string> args = kLongRing;
+  args.insert(args.end(), {"--format", "json"});
+  // SIGINT once the line shows (after the run's first second), 2.8 s at most
+  const Stopped r = interrupt(args, dir, std::chrono::milliseconds(2800), true);
+  EXPECT_EQ(r.status, 130) << r.err;
+  // "\rcatena ring [#.......] 9/191 harmonics, 1 s", redrawn in place, then the message
+  const std::size_t line = r.err.find("\rcatena ring [");
+  ASSERT_NE(line, std::string::npos) << r.err;
+  const std::size_t unit = r.err.find("/191 harmonics, ", line);
+  ASSERT_NE(unit, std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" s", unit), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("catena: interrupted (Ctrl-C); nothing was written"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.out, "");  // the JSON never started
+  fs::remove_all(dir);
+}
+
+TEST(InterruptCli, OffATerminalNoProgressIsDrawn) {
+  const fs::path dir = folder("pipe");
+  std::vector<std::string> args = kLongRing;
+  const Stopped r = interrupt(args, dir, std::chrono::milliseconds(1300));
+  EXPECT_EQ(r.status, 130) << r.err;
+  EXPECT_EQ(r.err, kMessage);  // nothing but the message: no bar in a file
+  fs::remove_all(dir);
+}
+
+}  // namespace
