@@ -1,0 +1,121 @@
+// Cost of one step of the chain dynamics (issue 21; docs/performance.md): a closed roller-chain
+// loop (12B: p = 19.05 mm, 1.25 kg/m, link stiffness 5e7 N/m) running at 5 m/s under gravity,
+// step 1e-4 s, at 100 / 200 / 400 / 800 links. O(N) per step: the cost should double with N.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "catena/dynamics/integrator.hpp"
+
+namespace {
+
+using namespace catena::dynamics;
+
+constexpr double kPitch = 0.01905;    // [m]
+constexpr double kNodeMass = 0.0238;  // [kg] 1.25 kg/m × p
+constexpr double kStiffness = 5e7;    // [N/m]
+constexpr double kSpeed = 5.0;        // [m/s]
+
+void BM_DynamicsLoopStep(benchmark::State& bs) {
+  const auto n = static_cast<std::size_t>(bs.range(0));
+  Model m = uniform_chain(n, true, kPitch, kNodeMass, kStiffness, 2.0, false);
+  m.gravity_y = -9.81;
+  const double radius =
+      1.0005 * kPitch / (2.0 * std::sin(std::numbers::pi / static_cast<double>(n)));
+  State s(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n);
+    s.x[i] = radius * std::cos(a);
+    s.y[i] = radius * std::sin(a);
+    s.vx[i] = -kSpeed * std::sin(a);
+    s.vy[i] = kSpeed * std::cos(a);
+  }
+  Integrator integ(m, {.step = 1e-4});
+  long iterations = 0, steps = 0;
+  for (auto _ : bs) {
+    const StepReport r = integ.step(m, s);
+    if (!r.converged) bs.SkipWithError("step did not converge");
+    iterations += r.iterations;
+    ++steps;
+    benchmark::DoNotOptimize(s.x.data());
+  }
+  bs.counters["newton_iterations"] =
+      benchmark::Counter(static_cast<double>(iterations) / static_cast<double>(steps));
+  bs.counters["links"] = static_cast<double>(n);
+  bs.counters["real_time_factor"] =
+      benchmark::Counter(1e-4 * static_cast<double>(steps), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_DynamicsLoopStep)
+    ->Arg(100)
+    ->Arg(200)
+    ->Arg(400)
+    ->Arg(800)
+    ->Unit(benchmark::kMicrosecond);
+
+// The issue's drive: a 200-link 12B loop over two equal sprockets (z = 20, 90 pitches apart, the
+// polygons in phase), the driver at 30 rad/s (1.8 m/s), the driven wheel with J = 0.05 kg·m² and
+// a 20 N·m load, gravity in the plane, contacts k_c = 2e8 N/m, c_c = 800 N·s/m, θ = 0.6 (the
+// setting of the drive validation), h = 1e-4 s. Started with every roller seated and moving at
+// the pitch-line speed; the benchmark steps on from there.
+void BM_DynamicsTwoSprocketDrive(benchmark::State& bs) {
+  constexpr int kTeeth = 20, kSpan = 90;
+  constexpr double kOmega = 30.0;
+  const auto n = static_cast<std::size_t>(kTeeth + 2 * kSpan);
+  Model m = uniform_chain(n, true, kPitch * (1.0 - 1e-3), kNodeMass, kStiffness, 100.0, false);
+  m.gravity_y = -9.81;
+  const double centre = kSpan * kPitch;
+  Sprocket a = iso606_sprocket(kPitch, 0.01207, 0.01168, kTeeth, 0.0, 0.0, 2e8, 800.0);
+  a.driver = true;
+  a.speed = kOmega;
+  Sprocket b = iso606_sprocket(kPitch, 0.01207, 0.01168, kTeeth, centre, 0.0, 2e8, 800.0);
+  b.inertia = 0.05;
+  b.load_torque = 20.0;
+  m.sprockets = {a, b};
+  const double r = a.pitch_radius, v = kOmega * r, pi = std::numbers::pi;
+  State s(n, 2);
+  std::size_t i = 0;
+  auto put = [&](double x, double y, double vx, double vy) {
+    s.x[i] = x;
+    s.y[i] = y;
+    s.vx[i] = vx;
+    s.vy[i] = vy;
+    ++i;
+  };
+  for (int k = 0; k <= kTeeth / 2; ++k) {
+    const double t = pi / 2 + 2 * pi * k / kTeeth;
+    put(r * std::cos(t), r * std::sin(t), -v * std::sin(t), v * std::cos(t));
+  }
+  for (int j = 1; j < kSpan; ++j) put(j * kPitch, -r, v, 0.0);
+  for (int k = 0; k <= kTeeth / 2; ++k) {
+    const double t = -pi / 2 + 2 * pi * k / kTeeth;
+    put(centre + r * std::cos(t), r * std::sin(t), -v * std::sin(t), v * std::cos(t));
+  }
+  for (int j = 1; j < kSpan; ++j) put(centre - j * kPitch, r, -v, 0.0);
+  s.angle = {pi / 2, -pi / 2};
+  s.speed = {kOmega, kOmega};
+  Integrator integ(m, {.step = 1e-4, .theta = 0.6});
+  long iterations = 0, steps = 0;
+  double penetration = 0.0;
+  for (auto _ : bs) {
+    const StepReport rep = integ.step(m, s);
+    if (!rep.converged) {
+      bs.SkipWithError("step did not converge");
+      break;
+    }
+    iterations += rep.iterations;
+    penetration = std::max(penetration, rep.max_penetration);
+    ++steps;
+    benchmark::DoNotOptimize(s.x.data());
+  }
+  bs.counters["newton_iterations"] =
+      benchmark::Counter(static_cast<double>(iterations) / static_cast<double>(steps));
+  bs.counters["simulated_s"] = 1e-4 * static_cast<double>(steps);
+  bs.counters["max_penetration_um"] = 1e6 * penetration;
+  bs.counters["real_time_factor"] =
+      benchmark::Counter(1e-4 * static_cast<double>(steps), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_DynamicsTwoSprocketDrive)->Unit(benchmark::kMicrosecond)->MinTime(3.0);
+
+}  // namespace

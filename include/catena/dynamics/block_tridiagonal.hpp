@@ -1,0 +1,71 @@
+// Linear systems with the chain's structure: block tridiagonal with 2×2 blocks, cyclic for a
+// closed loop (docs/models/dynamics.md, "Solver").
+//
+// Row i of the matrix holds lower[i] (column i − 1), diag[i] (column i) and upper[i] (column
+// i + 1). A cyclic system also has the two corner blocks lower[0] (row 0, column n − 1) and
+// upper[n − 1] (row n − 1, column 0); an open one ignores them.
+//
+// Open: block Thomas (block LU without pivoting), O(n). Cyclic: the corners are split off as a
+// rank-2 update A = T + W Zᵀ chosen so that T stays symmetric positive definite when A is
+// (the block form of the cyclic tridiagonal algorithm, Press et al., Numerical Recipes §2.7), T is
+// solved by block Thomas for the right-hand side and for W's two columns at once, and the
+// Sherman–Morrison–Woodbury formula (Sherman & Morrison 1950; Woodbury 1950)
+//   A⁻¹b = y − Q (I + Zᵀ Q)⁻¹ Zᵀ y,   y = T⁻¹ b,  Q = T⁻¹ W
+// closes the loop: O(n) too. Using the structure of the chain's equations to reach linear time is
+// the idea of Baraff (1996), "Linear-time dynamics using Lagrange multipliers", SIGGRAPH '96.
+//
+// Nothing is allocated by solve(): the workspace is sized by the constructor.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace catena::dynamics {
+
+struct Vec2 {
+  double x = 0.0, y = 0.0;
+};
+
+/// A 2×2 matrix [[a, b], [c, d]].
+struct Mat2 {
+  double a = 0.0, b = 0.0, c = 0.0, d = 0.0;
+};
+
+/// Why a solve stopped.
+enum class SolveStatus {
+  kSolved,
+  kSingularPivot,  ///< a 2×2 pivot block (of T or of the closure's capacitance) was singular
+};
+
+class BlockTridiagonalSolver {
+ public:
+  /// A system of `n` block rows; cyclic needs n ≥ 3, open n ≥ 1 (throws std::invalid_argument).
+  BlockTridiagonalSolver(std::size_t n, bool cyclic);
+
+  std::size_t size() const { return n_; }
+  bool cyclic() const { return cyclic_; }
+
+  std::vector<Mat2> lower, diag, upper;  ///< the blocks, filled by the caller
+  std::vector<Vec2> rhs;                 ///< the right-hand side, filled by the caller
+
+  /// Solves the system into x (size n): factor() then substitute(rhs, x). The blocks and rhs
+  /// are left unchanged.
+  SolveStatus solve(std::span<Vec2> x);
+
+  /// Factors the blocks (and, for a cyclic system, solves for the closure's two columns).
+  SolveStatus factor();
+  /// Solves for another right-hand side b with the last successful factor(); b may alias rhs.
+  void substitute(std::span<const Vec2> b, std::span<Vec2> x);
+
+ private:
+  std::size_t n_;
+  bool cyclic_;
+  // the factors: S_i⁻¹ and C'_i = S_i⁻¹ U_i; for a cyclic system Q = T⁻¹ W, (I + Zᵀ Q)⁻¹ and
+  // G⁻¹ L_0; y_ is the substitution's workspace
+  std::vector<Mat2> s_inv_, c_prime_, w_;
+  std::vector<Vec2> y_;
+  Mat2 cap_inv_, h_;
+};
+
+}  // namespace catena::dynamics

@@ -1,0 +1,121 @@
+// A planar chain of N links as a constant Model and a mutable State (docs/models/dynamics.md).
+//
+// The chain is N nodes (the roller or pin centres) joined by axial spring–dampers of rest length
+// p, the pitch: link j joins node j to node j + 1, and in a closed loop link N − 1 joins node
+// N − 1 back to node 0. Each node carries the mass of one link. Pinned nodes stay where the state
+// puts them. State is a structure of arrays (x, y, vx, vy).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "catena/core/error.hpp"
+
+namespace catena::dynamics {
+
+/// A rigid sprocket: its rollers' seats on the ISO 606 tooth form (seat i's centre on the pitch
+/// circle at the angle ψ + 2π i/z, the seating arc of radius ri about it). Roller–seat contact is a
+/// unilateral linear penalty with damping. A driver turns at a prescribed speed; a driven wheel
+/// has inertia and a constant load torque against counter-clockwise rotation.
+struct Sprocket {
+  double centre_x = 0.0;           ///< [m]
+  double centre_y = 0.0;           ///< [m]
+  int teeth = 0;                   ///< z
+  double pitch_radius = 0.0;       ///< [m] R = p / (2 sin(π/z))
+  double seat_radius = 0.0;        ///< [m] ri, the seating arc's radius (≥ roller radius)
+  double roller_radius = 0.0;      ///< [m] d1/2
+  double seating_angle = 0.0;      ///< [rad] α, the seating arc's extent; flanks beyond it
+  double contact_stiffness = 0.0;  ///< [N/m] k_c, the penalty on the roller's penetration
+  double contact_damping = 0.0;    ///< [N·s/m] c_c, on the penetration rate (never pulls)
+  /// [m] ε: the force rises as k_c g²/2ε over the first ε of penetration, then k_c (g − ε/2),
+  /// and the damping ramps in over the same ε, so that the force is C¹ at first touch (Newton
+  /// does not cycle on a roller touching and leaving its seat within one step)
+  double contact_smoothing = 1e-6;
+  bool driver = false;       ///< prescribed speed (true) or inertia + load (false)
+  double speed = 0.0;        ///< [rad/s] a driver's speed, counter-clockwise positive
+  double inertia = 0.0;      ///< [kg·m²] a driven wheel's moment of inertia
+  double load_torque = 0.0;  ///< [N·m] on a driven wheel, against counter-clockwise turning
+};
+
+struct Model {
+  bool closed = false;               ///< closed loop (link N − 1 joins node N − 1 to node 0)
+  double pitch = 0.0;                ///< [m] p, the unstretched length of one link
+  double axial_stiffness = 0.0;      ///< [N/m] k of one link: tension = k (l − p) + c l̇
+  double axial_damping = 0.0;        ///< [N·s/m] c of one link
+  double drag = 0.0;                 ///< [1/s] α: a force −α m v on each node (to settle)
+  double gravity_x = 0.0;            ///< [m/s²] g, x component
+  double gravity_y = 0.0;            ///< [m/s²] g, y component
+  std::vector<double> mass;          ///< [kg] per node; its size is N
+  std::vector<std::uint8_t> pinned;  ///< per node, 1 = held fixed; empty = none pinned
+  std::vector<Sprocket> sprockets;   ///< rigid wheels the rollers seat on
+
+  std::size_t nodes() const { return mass.size(); }
+  /// Links: N in a closed loop, N − 1 in an open chain.
+  std::size_t links() const { return closed ? mass.size() : mass.size() - 1; }
+  bool is_pinned(std::size_t i) const { return !pinned.empty() && pinned[i] != 0; }
+};
+
+/// Every problem with the model, fields "nodes", "pitch", "axial_stiffness", "axial_damping",
+/// "drag", "gravity", "mass", "pinned", "sprocket[i].<field>".
+std::vector<Issue> validate(const Model& model);
+
+/// N nodes of equal mass; an open chain gets its two end nodes pinned when `pin_ends`.
+Model uniform_chain(std::size_t nodes, bool closed, double pitch, double node_mass,
+                    double axial_stiffness, double axial_damping, bool pin_ends);
+
+struct State {
+  double time = 0.0;           ///< [s]
+  std::vector<double> x, y;    ///< [m] node positions
+  std::vector<double> vx, vy;  ///< [m/s] node velocities
+  std::vector<double> angle;   ///< [rad] per sprocket: ψ, the angle of seat 0
+  std::vector<double> speed;   ///< [rad/s] per sprocket
+  explicit State(std::size_t nodes = 0, std::size_t sprockets = 0)
+      : x(nodes), y(nodes), vx(nodes), vy(nodes), angle(sprockets), speed(sprockets) {}
+  std::size_t nodes() const { return x.size(); }
+};
+
+/// Every problem with a state for this model (sizes, finite values, pinned nodes at rest,
+/// no link of zero length), fields "state.x", "state.v", "state.link".
+std::vector<Issue> validate(const Model& model, const State& state);
+
+struct Energy {
+  double kinetic = 0.0;    ///< [J] Σ ½ m v² + Σ ½ J ω² (driven sprockets)
+  double elastic = 0.0;    ///< [J] Σ ½ k (l − p)² + Σ ½ k_c g² (links and seat contacts)
+  double potential = 0.0;  ///< [J] −Σ m g·x
+  double total() const { return kinetic + elastic + potential; }
+};
+
+Energy energy(const Model& model, const State& state);
+
+/// A sprocket on the ISO 606 tooth form of catena::drive (pitch radius from the pitch diameter,
+/// the seating radius ri,min and seating angle α,max of the minimum tooth gap); role and contact
+/// given by the caller.
+/// Throws InputError for an invalid tooth-form input.
+Sprocket iso606_sprocket(double pitch, double roller_diameter, double inner_width, int teeth,
+                         double centre_x, double centre_y, double contact_stiffness,
+                         double contact_damping);
+
+/// One roller's contact with the nearest seat of one sprocket, found in O(1) from the roller's
+/// angle about the wheel centre. Inputs are the roller's position and velocity, the wheel's angle
+/// and speed.
+struct SeatContact {
+  bool active = false;
+  int seat = 0;              ///< the seat index k (any integer; seat k ≡ k mod z)
+  double penetration = 0.0;  ///< [m] g = |e| + r − ri > 0 when active
+  double force = 0.0;        ///< [N] f ≥ 0, pushing the roller towards the seat centre
+  double stiffness = 0.0;    ///< [N/m] ∂f/∂g (0 when f is clamped at 0)
+  double damping = 0.0;      ///< [N·s/m] the damping coefficient at this penetration
+  double energy = 0.0;       ///< [J] the elastic contact energy
+  double curvature = 0.0;  ///< [1/m] of the surface met: 1/|q − C| on the seating arc, 0 on a flank
+  double nx = 0.0, ny = 0.0;          ///< unit vector from the seat centre to the roller
+  double torque = 0.0;                ///< [N·m] on the wheel, counter-clockwise positive
+  double seat_x = 0.0, seat_y = 0.0;  ///< [m] the seat centre
+};
+SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, double vy, double angle,
+                         double speed);
+
+/// [N] the tension of each link, k (l − p) + c l̇ (size links()).
+void link_tensions(const Model& model, const State& state, std::span<double> tension);
+
+}  // namespace catena::dynamics

@@ -1,0 +1,85 @@
+// Time stepping for the chain (docs/models/dynamics.md, "Integrator").
+//
+// The energy-conserving implicit midpoint rule (the discrete energy–momentum method of Simo &
+// Tarnow 1992, ZAMP 43): x₁ = x₀ + h (v₀ + v₁)/2 and M (v₁ − v₀) = h F, with each link's force
+// taken along the midpoint chord d̄ = (d₀ + d₁)/2 with the discrete gradient of its energy,
+// k (l̄ − p) / l̄, l̄ = (l₀ + l₁)/2, so that the work done over a step equals the change of
+// elastic energy exactly; the damper's force c (l₁ − l₀)/h along the same direction dissipates
+// c (l₁ − l₀)²/h ≥ 0. Unconditionally stable: the step is set by accuracy, not by k.
+// Each step solves the nonlinear equations for x₁ by Newton's method with a backtracking line
+// search on the residual; the Jacobian is the chain's block tridiagonal (cyclic for a loop)
+// matrix, solved in O(N) by BlockTridiagonalSolver.
+//
+// Sprockets: contact forces are evaluated at the θ point like the links and add 2×2 blocks to the
+// diagonal; a driver's angle is prescribed; a driven wheel's angle is one more unknown of the
+// Newton system, which borders the chain's matrix with one row and column per driven wheel: one
+// more O(N) substitution per wheel (same factors) and a Schur complement of the size of the number
+// of driven wheels.
+//
+// Numerical damping (option theta > ½): the same scheme at the weighted point θ instead of the
+// midpoint (x₁ = x₀ + h ((1 − θ) v₀ + θ v₁), chord and length interpolated at θ), the θ-method.
+// Unconditionally stable, it damps the unresolved high-frequency (axial) modes — each step scales
+// them by about −(1 − θ)/θ — but is only first order accurate and does not conserve energy: use it
+// to settle a chain to equilibrium or to quiet stiff modes, not for the energy balance.
+#pragma once
+
+#include <vector>
+
+#include "catena/dynamics/block_tridiagonal.hpp"
+#include "catena/dynamics/chain.hpp"
+
+namespace catena::dynamics {
+
+struct IntegratorOptions {
+  double step = 1e-3;        ///< [s] h
+  int max_iterations = 25;   ///< Newton iterations per step
+  double tolerance = 1e-10;  ///< converged when max |Δx| ≤ tolerance · pitch
+  double theta = 0.5;        ///< θ in [½, 1]: ½ energy-conserving midpoint, > ½ damped
+};
+
+std::vector<Issue> validate(const IntegratorOptions& options);
+
+/// What one step did.
+struct StepReport {
+  bool converged = false;
+  int iterations = 0;            ///< Newton iterations taken
+  double last_correction = 0.0;  ///< [m] max |Δx| of the last Newton iteration
+  int backtracks = 0;            ///< line-search halvings taken
+  double max_penetration = 0.0;  ///< [m] deepest roller–seat penetration at the step's θ point
+  SolveStatus solve = SolveStatus::kSolved;
+};
+
+/// The mutable work arrays of the integrator for one model (sized once; steps allocate nothing).
+class Integrator {
+ public:
+  /// Validates model and options (throws InputError listing every problem).
+  Integrator(const Model& model, IntegratorOptions options);
+
+  /// Advances `state` by one step h. Throws InputError when the model is not the one the
+  /// integrator was built for or the state's arrays have the wrong sizes (checked every step, in
+  /// O(1)); the state's values are checked by validate(model, state), which the caller runs
+  /// once. On a failed solve the state is left unchanged and the report says why.
+  StepReport step(const Model& model, State& state);
+
+  const IntegratorOptions& options() const { return options_; }
+
+ private:
+  // Fills the solver's rhs with −R(u) (and its blocks with J(u) when `jacobian`); returns |R|².
+  double assemble(const Model& model, const State& s, bool jacobian);
+
+  IntegratorOptions options_;
+  BlockTridiagonalSolver solver_;
+  std::vector<double> ux_, uy_;          // the Newton iterate x₁
+  std::vector<double> l0_;               // link lengths at the start of the step
+  std::vector<Vec2> delta_;              // Newton correction
+  std::vector<double> psi1_;             // sprocket angles at the end of the step (iterate)
+  std::vector<double> dpsi_;             // their Newton correction
+  std::vector<double> wres_, wdiag_;     // driven wheels: −R_w and ∂R_w/∂ψ₁
+  std::vector<std::size_t> driven_;      // indices of the driven wheels
+  std::vector<std::vector<Vec2>> bcol_;  // per driven wheel: the coupling column ∂R/∂ψ₁
+  std::vector<std::vector<Vec2>> wsol_;  // per driven wheel: A⁻¹ times that column
+  std::vector<double> schur_;            // the driven wheels' Schur complement
+  double max_penetration_ = 0.0;
+};
+
+}  // namespace catena::dynamics

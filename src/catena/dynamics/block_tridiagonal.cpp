@@ -1,0 +1,119 @@
+// Block Thomas with a Sherman–Morrison–Woodbury closure (include/catena/dynamics/
+// block_tridiagonal.hpp; the derivation is in docs/models/dynamics.md, "Solver").
+#include "catena/dynamics/block_tridiagonal.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace catena::dynamics {
+namespace {
+
+Mat2 operator*(const Mat2& p, const Mat2& q) {
+  return {p.a * q.a + p.b * q.c, p.a * q.b + p.b * q.d, p.c * q.a + p.d * q.c,
+          p.c * q.b + p.d * q.d};
+}
+Vec2 operator*(const Mat2& p, Vec2 v) { return {p.a * v.x + p.b * v.y, p.c * v.x + p.d * v.y}; }
+Mat2 operator-(const Mat2& p, const Mat2& q) {
+  return {p.a - q.a, p.b - q.b, p.c - q.c, p.d - q.d};
+}
+Mat2 operator+(const Mat2& p, const Mat2& q) {
+  return {p.a + q.a, p.b + q.b, p.c + q.c, p.d + q.d};
+}
+Vec2 operator-(Vec2 p, Vec2 q) { return {p.x - q.x, p.y - q.y}; }
+Vec2 operator+(Vec2 p, Vec2 q) { return {p.x + q.x, p.y + q.y}; }
+
+// The inverse of a 2×2 block; false when it is singular relative to its own size.
+bool invert(const Mat2& m, Mat2& inv) {
+  const double det = m.a * m.d - m.b * m.c;
+  const double scale = std::max(std::abs(m.a) + std::abs(m.b), std::abs(m.c) + std::abs(m.d));
+  if (!std::isfinite(det) || !(std::abs(det) > 1e-300) || std::abs(det) <= 1e-14 * scale * scale) {
+    return false;
+  }
+  inv = {m.d / det, -m.b / det, -m.c / det, m.a / det};
+  return true;
+}
+
+}  // namespace
+
+BlockTridiagonalSolver::BlockTridiagonalSolver(std::size_t n, bool cyclic)
+    : lower(n),
+      diag(n),
+      upper(n),
+      rhs(n),
+      n_(n),
+      cyclic_(cyclic),
+      s_inv_(n),
+      c_prime_(n),
+      w_(n),
+      y_(n) {
+  if (cyclic && n < 3) throw std::invalid_argument("a cyclic block system needs n >= 3");
+  if (n < 1) throw std::invalid_argument("a block system needs n >= 1");
+}
+
+SolveStatus BlockTridiagonalSolver::solve(std::span<Vec2> x) {
+  if (x.size() != n_) throw std::invalid_argument("solution span has the wrong size");
+  const SolveStatus status = factor();
+  if (status == SolveStatus::kSolved) substitute(rhs, x);
+  return status;
+}
+
+SolveStatus BlockTridiagonalSolver::factor() {
+  const std::size_t n = n_;
+  const std::size_t last = n - 1;
+
+  // The closure, for a cyclic system: A = T + W Zᵀ with W = [G; 0; …; U_{n−1}] and
+  // Zᵀ = [I, 0, …, G⁻¹ L_0], G = −D_0. Then T differs from A only in two diagonal blocks:
+  // T_00 = D_0 − G = 2 D_0 and T_{n−1,n−1} = D_{n−1} − U_{n−1} G⁻¹ L_0 = D_{n−1} + U_{n−1} D_0⁻¹
+  // L_0. For symmetric A, W Zᵀ = −[I; −L_0ᵀ D_0⁻¹] D_0 [I, −D_0⁻¹ L_0] is negative semidefinite, so
+  // T = A − W Zᵀ is positive definite whenever A is: its block LU needs no pivoting.
+  Mat2 d0_inv;
+  if (cyclic_) {
+    if (!invert(diag[0], d0_inv)) return SolveStatus::kSingularPivot;
+    const Mat2 m = d0_inv * lower[0];
+    h_ = {-m.a, -m.b, -m.c, -m.d};  // G⁻¹ L_0 = −D_0⁻¹ L_0
+  }
+  auto t_diag = [&](std::size_t i) -> Mat2 {
+    if (!cyclic_) return diag[i];
+    if (i == 0) return diag[0] + diag[0];
+    if (i == last) return diag[last] + upper[last] * d0_inv * lower[0];
+    return diag[i];
+  };
+  auto w_block = [&](std::size_t i) -> Mat2 {
+    if (i == 0) return {-diag[0].a, -diag[0].b, -diag[0].c, -diag[0].d};
+    if (i == last) return upper[last];
+    return {};
+  };
+
+  // Block LU of T; for a cyclic system the forward sweep of T Q = W rides along.
+  if (!invert(t_diag(0), s_inv_[0])) return SolveStatus::kSingularPivot;
+  if (n > 1) c_prime_[0] = s_inv_[0] * upper[0];
+  if (cyclic_) w_[0] = s_inv_[0] * w_block(0);
+  for (std::size_t i = 1; i < n; ++i) {
+    const Mat2 s = t_diag(i) - lower[i] * c_prime_[i - 1];
+    if (!invert(s, s_inv_[i])) return SolveStatus::kSingularPivot;
+    if (i < last) c_prime_[i] = s_inv_[i] * upper[i];
+    if (cyclic_) w_[i] = s_inv_[i] * (w_block(i) - lower[i] * w_[i - 1]);
+  }
+  if (!cyclic_) return SolveStatus::kSolved;
+  for (std::size_t k = n - 1; k-- > 0;) w_[k] = w_[k] - c_prime_[k] * w_[k + 1];
+  // Sherman–Morrison–Woodbury: x = y − Q (I + Zᵀ Q)⁻¹ Zᵀ y, Zᵀ v = v_0 + G⁻¹ L_0 v_{n−1}.
+  const Mat2 capacitance = Mat2{1.0, 0.0, 0.0, 1.0} + w_[0] + h_ * w_[last];
+  if (!invert(capacitance, cap_inv_)) return SolveStatus::kSingularPivot;
+  return SolveStatus::kSolved;
+}
+
+void BlockTridiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec2> x) {
+  if (x.size() != n_ || b.size() != n_) throw std::invalid_argument("span of the wrong size");
+  const std::size_t n = n_;
+  y_[0] = s_inv_[0] * b[0];
+  for (std::size_t i = 1; i < n; ++i) y_[i] = s_inv_[i] * (b[i] - lower[i] * y_[i - 1]);
+  for (std::size_t k = n - 1; k-- > 0;) y_[k] = y_[k] - c_prime_[k] * y_[k + 1];
+  if (!cyclic_) {
+    for (std::size_t i = 0; i < n; ++i) x[i] = y_[i];
+    return;
+  }
+  const Vec2 z = cap_inv_ * (y_[0] + h_ * y_[n - 1]);
+  for (std::size_t i = 0; i < n; ++i) x[i] = y_[i] - w_[i] * z;
+}
+
+}  // namespace catena::dynamics

@@ -1,0 +1,259 @@
+// The chain model and state: validation, energy and link tensions (docs/models/dynamics.md).
+#include "catena/dynamics/chain.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "catena/drive/sprocket.hpp"
+
+namespace catena::dynamics {
+namespace {
+constexpr std::size_t kMaxNodes = 10'000'000;
+}
+
+std::vector<Issue> validate(const Model& model) {
+  std::vector<Issue> out;
+  const std::size_t n = model.nodes();
+  const std::size_t min_nodes = model.closed ? 3 : 2;
+  if (n < min_nodes || n > kMaxNodes) {
+    out.push_back({"nodes", std::to_string(n),
+                   std::string("an integer in [") + std::to_string(min_nodes) + ", " +
+                       std::to_string(kMaxNodes) + "] (" +
+                       (model.closed ? "closed loop" : "open chain") + ")"});
+  }
+  check::finite_positive(out, "pitch", model.pitch, "m");
+  check::finite_positive(out, "axial_stiffness", model.axial_stiffness, "N/m");
+  if (!std::isfinite(model.axial_damping) || model.axial_damping < 0.0) {
+    out.push_back({"axial_damping", check::format_si(model.axial_damping, "N*s/m"),
+                   "a finite value >= 0 N*s/m"});
+  }
+  if (!std::isfinite(model.drag) || model.drag < 0.0) {
+    out.push_back({"drag", check::format_si(model.drag, "1/s"), "a finite value >= 0 1/s"});
+  }
+  if (!std::isfinite(model.gravity_x) || !std::isfinite(model.gravity_y)) {
+    out.push_back(
+        {"gravity",
+         check::format_si(model.gravity_x, "") + ", " + check::format_si(model.gravity_y, "m/s^2"),
+         "finite components"});
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(model.mass[i]) || model.mass[i] <= 0.0) {
+      out.push_back({"mass[" + std::to_string(i) + "]", check::format_si(model.mass[i], "kg"),
+                     "a finite value > 0 kg"});
+      break;  // one line for a whole bad array is enough to name it
+    }
+  }
+  if (!model.pinned.empty() && model.pinned.size() != n) {
+    out.push_back({"pinned", std::to_string(model.pinned.size()) + " entries",
+                   "empty or one entry per node (" + std::to_string(n) + ")"});
+  }
+  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+    const Sprocket& s = model.sprockets[w];
+    const std::string f = "sprocket[" + std::to_string(w) + "].";
+    check::finite(out, (f + "centre_x").c_str(), s.centre_x, "m");
+    check::finite(out, (f + "centre_y").c_str(), s.centre_y, "m");
+    if (s.teeth < 3 || s.teeth > 1000) {
+      out.push_back({f + "teeth", std::to_string(s.teeth), "an integer in [3, 1000]"});
+    }
+    check::finite_positive(out, (f + "pitch_radius").c_str(), s.pitch_radius, "m");
+    check::finite_positive(out, (f + "roller_radius").c_str(), s.roller_radius, "m");
+    if (!std::isfinite(s.seat_radius) || !(s.seat_radius >= s.roller_radius)) {
+      out.push_back(
+          {f + "seat_radius", check::format_si(s.seat_radius, "m"),
+           "a finite value >= the roller radius " + check::format_si(s.roller_radius, "m")});
+    }
+    if (!std::isfinite(s.seating_angle) || !(s.seating_angle > 0.0) ||
+        !(s.seating_angle < std::numbers::pi)) {
+      out.push_back({f + "seating_angle", check::format_si(s.seating_angle, "rad"),
+                     "an angle in (0, pi) rad"});
+    }
+    check::finite_positive(out, (f + "contact_stiffness").c_str(), s.contact_stiffness, "N/m");
+    if (!std::isfinite(s.contact_smoothing) || !(s.contact_smoothing > 0.0) ||
+        !(s.contact_smoothing <= s.roller_radius)) {
+      out.push_back({f + "contact_smoothing", check::format_si(s.contact_smoothing, "m"),
+                     "a length in (0, roller radius]"});
+    }
+    if (!std::isfinite(s.contact_damping) || s.contact_damping < 0.0) {
+      out.push_back({f + "contact_damping", check::format_si(s.contact_damping, "N*s/m"),
+                     "a finite value >= 0 N*s/m"});
+    }
+    if (s.driver) {
+      check::finite(out, (f + "speed").c_str(), s.speed, "rad/s");
+    } else {
+      check::finite_positive(out, (f + "inertia").c_str(), s.inertia, "kg*m^2");
+      check::finite(out, (f + "load_torque").c_str(), s.load_torque, "N*m");
+    }
+  }
+  return out;
+}
+
+Sprocket iso606_sprocket(double pitch, double roller_diameter, double inner_width, int teeth,
+                         double centre_x, double centre_y, double contact_stiffness,
+                         double contact_damping) {
+  const drive::Sprocket iso = drive::sprocket({.pitch = pitch,
+                                               .roller_diameter = roller_diameter,
+                                               .inner_width = inner_width,
+                                               .teeth = teeth});
+  Sprocket s;
+  s.centre_x = centre_x;
+  s.centre_y = centre_y;
+  s.teeth = teeth;
+  s.pitch_radius = 0.5 * iso.pitch_diameter;
+  s.seat_radius = iso.min_gap.seating_radius;
+  s.seating_angle = iso.min_gap.seating_angle;
+  s.roller_radius = 0.5 * roller_diameter;
+  s.contact_stiffness = contact_stiffness;
+  s.contact_damping = contact_damping;
+  return s;
+}
+
+SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, double vy, double angle,
+                         double speed) {
+  SeatContact c;
+  const double rx = x - w.centre_x, ry = y - w.centre_y;
+  const double reach = w.pitch_radius + w.roller_radius;
+  if (rx * rx + ry * ry > reach * reach) return c;  // clear of the wheel
+  // The nearest seat from the roller's angle about the centre: O(1), no search.
+  const double tau = 2.0 * std::numbers::pi / w.teeth;
+  const double k = std::nearbyint((std::atan2(ry, rx) - angle) / tau);
+  const double sigma = angle + k * tau;
+  const double cs = std::cos(sigma), sn = std::sin(sigma);
+  c.seat = static_cast<int>(k);
+  c.seat_x = w.centre_x + w.pitch_radius * cs;
+  c.seat_y = w.centre_y + w.pitch_radius * sn;
+  const double ex = x - c.seat_x, ey = y - c.seat_y;
+  // The tooth gap about the seat centre C: the seating arc of radius ri over the seating angle α
+  // about the inward radial, and beyond its ends the flanks, taken as the straight lines tangent
+  // to the arc there (the ISO flank arc re is several pitches: nearly straight over a roller).
+  // γ is the angle of e = q − C from the inward radial, towards the tangent t = (−sin σ, cos σ).
+  const double e_in = -(ex * cs + ey * sn), e_t = -ex * sn + ey * cs;
+  const double gamma = std::atan2(e_t, e_in);
+  const double half = 0.5 * w.seating_angle;
+  double g = 0.0;
+  if (std::abs(gamma) <= half) {
+    const double dist = std::sqrt(ex * ex + ey * ey);
+    if (!(dist > 0.0)) return c;
+    g = dist + w.roller_radius - w.seat_radius;
+    c.nx = ex / dist;
+    c.ny = ey / dist;
+    c.curvature = 1.0 / dist;
+  } else {
+    // the flank's normal m at the arc's end: the inward radial turned by ±α/2 towards t
+    const double side = gamma > 0.0 ? 1.0 : -1.0;
+    const double ch = std::cos(half), sh = side * std::sin(half);
+    c.nx = -cs * ch - sn * sh;
+    c.ny = -sn * ch + cs * sh;
+    g = ex * c.nx + ey * c.ny + w.roller_radius - w.seat_radius;
+    c.curvature = 0.0;
+  }
+  if (!(g > 0.0)) return c;
+  // rate of penetration: the roller's velocity relative to the wheel's material point under it
+  const double rate = (vx + speed * ry) * c.nx + (vy - speed * rx) * c.ny;
+  const double eps = w.contact_smoothing, kc = w.contact_stiffness;
+  const double elastic = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
+  c.stiffness = g < eps ? kc * g / eps : kc;
+  c.energy =
+      g < eps ? kc * g * g * g / (6.0 * eps) : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
+  c.damping = w.contact_damping * std::min(1.0, g / eps);
+  c.force = std::max(0.0, elastic + c.damping * rate);
+  // ∂f/∂g: the elastic slope, and the damping's ramp over the first ε
+  if (g < eps) c.stiffness += w.contact_damping * rate / eps;
+  if (c.force <= 0.0) c.stiffness = c.damping = 0.0;
+  c.active = true;
+  c.penetration = g;
+  // the reaction +f n acts on the wheel along the line through the roller centre q
+  c.torque = c.force * (rx * c.ny - ry * c.nx);
+  return c;
+}
+
+Model uniform_chain(std::size_t nodes, bool closed, double pitch, double node_mass,
+                    double axial_stiffness, double axial_damping, bool pin_ends) {
+  Model m;
+  m.closed = closed;
+  m.pitch = pitch;
+  m.axial_stiffness = axial_stiffness;
+  m.axial_damping = axial_damping;
+  m.mass.assign(nodes, node_mass);
+  if (pin_ends && !closed && nodes >= 2) {
+    m.pinned.assign(nodes, 0);
+    m.pinned.front() = 1;
+    m.pinned.back() = 1;
+  }
+  return m;
+}
+
+std::vector<Issue> validate(const Model& model, const State& state) {
+  std::vector<Issue> out;
+  const std::size_t n = model.nodes();
+  if (state.x.size() != n || state.y.size() != n || state.vx.size() != n || state.vy.size() != n) {
+    out.push_back({"state.x", std::to_string(state.x.size()) + " nodes",
+                   "x, y, vx, vy of " + std::to_string(n) + " nodes each"});
+    return out;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(state.x[i]) || !std::isfinite(state.y[i])) {
+      out.push_back({"state.x[" + std::to_string(i) + "]", "not finite", "finite positions"});
+      break;
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(state.vx[i]) || !std::isfinite(state.vy[i])) {
+      out.push_back({"state.v[" + std::to_string(i) + "]", "not finite", "finite velocities"});
+      break;
+    }
+    if (model.is_pinned(i) && (state.vx[i] != 0.0 || state.vy[i] != 0.0)) {
+      out.push_back(
+          {"state.v[" + std::to_string(i) + "]", "moving", "zero velocity at a pinned node"});
+      break;
+    }
+  }
+  for (std::size_t j = 0; j < model.links() && n >= 2; ++j) {
+    const std::size_t b = (j + 1) % n;
+    if (!(std::hypot(state.x[b] - state.x[j], state.y[b] - state.y[j]) > 0.0)) {
+      out.push_back({"state.link[" + std::to_string(j) + "]", "length 0",
+                     "nodes of a link at distinct positions"});
+      break;
+    }
+  }
+  return out;
+}
+
+Energy energy(const Model& model, const State& state) {
+  Energy e;
+  const std::size_t n = model.nodes();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double m = model.mass[i];
+    e.kinetic += 0.5 * m * (state.vx[i] * state.vx[i] + state.vy[i] * state.vy[i]);
+    e.potential -= m * (model.gravity_x * state.x[i] + model.gravity_y * state.y[i]);
+  }
+  for (std::size_t w = 0; w < model.sprockets.size() && w < state.speed.size(); ++w) {
+    const Sprocket& wheel = model.sprockets[w];
+    if (!wheel.driver) e.kinetic += 0.5 * wheel.inertia * state.speed[w] * state.speed[w];
+    for (std::size_t i = 0; i < n; ++i) {
+      const SeatContact c =
+          seat_contact(wheel, state.x[i], state.y[i], 0.0, 0.0, state.angle[w], 0.0);
+      if (c.active) e.elastic += c.energy;
+    }
+  }
+  for (std::size_t j = 0; j < model.links(); ++j) {
+    const std::size_t b = (j + 1) % n;
+    const double stretch =
+        std::hypot(state.x[b] - state.x[j], state.y[b] - state.y[j]) - model.pitch;
+    e.elastic += 0.5 * model.axial_stiffness * stretch * stretch;
+  }
+  return e;
+}
+
+void link_tensions(const Model& model, const State& state, std::span<double> tension) {
+  const std::size_t n = model.nodes();
+  for (std::size_t j = 0; j < model.links() && j < tension.size(); ++j) {
+    const std::size_t b = (j + 1) % n;
+    const double dx = state.x[b] - state.x[j], dy = state.y[b] - state.y[j];
+    const double l = std::hypot(dx, dy);
+    const double rate = (dx * (state.vx[b] - state.vx[j]) + dy * (state.vy[b] - state.vy[j])) / l;
+    tension[j] = model.axial_stiffness * (l - model.pitch) + model.axial_damping * rate;
+  }
+}
+
+}  // namespace catena::dynamics

@@ -1,0 +1,335 @@
+// The energy-conserving implicit midpoint step with Newton's method on the chain's block
+// tridiagonal Jacobian (include/catena/dynamics/integrator.hpp; docs/models/dynamics.md).
+#include "catena/dynamics/integrator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace catena::dynamics {
+
+std::vector<Issue> validate(const IntegratorOptions& options) {
+  std::vector<Issue> out;
+  check::finite_positive(out, "step", options.step, "s");
+  if (options.max_iterations < 1 || options.max_iterations > 1000) {
+    out.push_back(
+        {"max_iterations", std::to_string(options.max_iterations), "an integer in [1, 1000]"});
+  }
+  if (!std::isfinite(options.tolerance) || !(options.tolerance >= 1e-15) ||
+      !(options.tolerance <= 1e-2)) {
+    out.push_back({"tolerance", check::format_si(options.tolerance, ""),
+                   "a number in [1e-15, 1e-2] (a fraction of the pitch)"});
+  }
+  if (!std::isfinite(options.theta) || !(options.theta >= 0.5) || !(options.theta <= 1.0)) {
+    out.push_back({"theta", check::format_si(options.theta, ""), "a number in [0.5, 1]"});
+  }
+  return out;
+}
+
+namespace {
+std::size_t checked_nodes(const Model& model, const IntegratorOptions& options) {
+  std::vector<Issue> issues = validate(model);
+  std::vector<Issue> more = validate(options);
+  issues.insert(issues.end(), more.begin(), more.end());
+  throw_if_any(issues);
+  return model.nodes();
+}
+}  // namespace
+
+Integrator::Integrator(const Model& model, IntegratorOptions options)
+    : options_(options),
+      solver_(checked_nodes(model, options), model.closed),
+      ux_(model.nodes()),
+      uy_(model.nodes()),
+      l0_(model.links()),
+      delta_(model.nodes()),
+      psi1_(model.sprockets.size()),
+      dpsi_(model.sprockets.size()),
+      wres_(model.sprockets.size()),
+      wdiag_(model.sprockets.size()),
+      schur_(model.sprockets.size() * model.sprockets.size()) {
+  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+    if (model.sprockets[w].driver) continue;
+    driven_.push_back(w);
+  }
+  bcol_.resize(model.sprockets.size());
+  wsol_.resize(model.sprockets.size());
+  for (std::size_t w : driven_) {
+    bcol_[w].resize(model.nodes());
+    wsol_[w].resize(model.nodes());
+  }
+}
+
+double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
+  const std::size_t n = model.nodes();
+  const double h = options_.step;
+  const double th = options_.theta;
+  const double k = model.axial_stiffness;
+  const double c = model.axial_damping;
+  const double p = model.pitch;
+  // Residual R(u) = (m/hθ)(u − x₀ − h v₀) + α m (u − x₀) − h (Σ f + m g) and its Jacobian
+  // J = (m/hθ + α m) I + h Σ A; the system is J δ = −R.
+  for (std::size_t i = 0; i < n; ++i) {
+    const double m = model.mass[i];
+    const double dx = ux_[i] - s.x[i], dy = uy_[i] - s.y[i];
+    const double inertia = m / (h * th);
+    if (jacobian) {
+      solver_.diag[i] = {inertia + model.drag * m, 0.0, 0.0, inertia + model.drag * m};
+      solver_.lower[i] = {};
+      solver_.upper[i] = {};
+    }
+    solver_.rhs[i] = {
+        -(inertia * (dx - h * s.vx[i]) + model.drag * m * dx - h * m * model.gravity_x),
+        -(inertia * (dy - h * s.vy[i]) + model.drag * m * dy - h * m * model.gravity_y)};
+  }
+  for (std::size_t j = 0; j < model.links(); ++j) {
+    const std::size_t a = j, b = (j + 1) % n;
+    const double d0x = s.x[b] - s.x[a], d0y = s.y[b] - s.y[a];
+    const double d1x = ux_[b] - ux_[a], d1y = uy_[b] - uy_[a];
+    const double l0 = l0_[j];
+    const double l1 = std::sqrt(
+        d1x * d1x + d1y * d1y);  // sqrt, not hypot: no overflow at chain scales, and faster
+    const double lt = (1.0 - th) * l0 + th * l1;
+    const double mx = (1.0 - th) * d0x + th * d1x, my = (1.0 - th) * d0y + th * d1y;
+    // φ = [k (l_θ − p) + c (l₁ − l₀)/h] / l_θ; the force on node a is φ d_θ, on node b −φ d_θ.
+    // At θ = ½ the work over the step is exactly the change of ½ k (l − p)² plus the damper's
+    // loss c (l₁ − l₀)²/h (Simo & Tarnow 1992).
+    const double phi = (k * (lt - p) + c * (l1 - l0) / h) / lt;
+    const double fx = h * phi * mx, fy = h * phi * my;
+    solver_.rhs[a].x += fx;
+    solver_.rhs[a].y += fy;
+    solver_.rhs[b].x -= fx;
+    solver_.rhs[b].y -= fy;
+    if (!jacobian) continue;
+    // A = ∂(φ d_θ)/∂d₁ = θ φ I + d_θ ⊗ (∂φ/∂l₁) d₁/l₁,  ∂φ/∂l₁ = [(k θ + c/h) − θ φ] / l_θ.
+    const double dphi = ((k * th + c / h) - th * phi) / lt;
+    const double gx = l1 > 0.0 ? dphi * d1x / l1 : 0.0;
+    const double gy = l1 > 0.0 ? dphi * d1y / l1 : 0.0;
+    const Mat2 hA{h * (th * phi + mx * gx), h * mx * gy, h * my * gx, h * (th * phi + my * gy)};
+    Mat2& daa = solver_.diag[a];
+    Mat2& dbb = solver_.diag[b];
+    daa = {daa.a + hA.a, daa.b + hA.b, daa.c + hA.c, daa.d + hA.d};
+    dbb = {dbb.a + hA.a, dbb.b + hA.b, dbb.c + hA.c, dbb.d + hA.d};
+    // block (a, b) is upper[a] (the corner upper[n−1] when b = 0); block (b, a) is lower[b].
+    solver_.upper[a] = {-hA.a, -hA.b, -hA.c, -hA.d};
+    solver_.lower[b] = {-hA.a, -hA.b, -hA.c, -hA.d};
+  }
+  max_penetration_ = 0.0;
+  double wheel_norm2 = 0.0;
+  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+    const Sprocket& wheel = model.sprockets[w];
+    const double psi = (1.0 - th) * s.angle[w] + th * psi1_[w];
+    const double omega = (psi1_[w] - s.angle[w]) / h;
+    const bool driven = !wheel.driver;
+    double torque = 0.0;
+    double wdiag = driven ? wheel.inertia / (h * th) : 0.0;
+    if (driven && jacobian) std::fill(bcol_[w].begin(), bcol_[w].end(), Vec2{});
+    for (std::size_t i = 0; i < n; ++i) {
+      if (model.is_pinned(i)) continue;
+      const double qx = (1.0 - th) * s.x[i] + th * ux_[i];
+      const double qy = (1.0 - th) * s.y[i] + th * uy_[i];
+      const double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
+      const SeatContact sc = seat_contact(wheel, qx, qy, vx, vy, psi, omega);
+      if (!sc.active) continue;
+      max_penetration_ = std::max(max_penetration_, sc.penetration);
+      torque += sc.torque;
+      solver_.rhs[i].x -= h * sc.force * sc.nx;  // the force on the roller is −f n
+      solver_.rhs[i].y -= h * sc.force * sc.ny;
+      if (!jacobian || sc.force <= 0.0) continue;  // separating: no force, no stiffness
+      // D = ∂(h f n)/∂u = normal n nᵀ + tangent (I − n nᵀ), from
+      // ∂(f n)/∂q = (∂f/∂g + c/(θh)) n nᵀ + (f/s)(I − n nᵀ), q = x_θ, ∂q/∂u = θ.
+      const double normal = h * (th * sc.stiffness + sc.damping / h);
+      const double tangent = h * th * sc.force * sc.curvature;
+      const Mat2 dc{normal * sc.nx * sc.nx + tangent * (1.0 - sc.nx * sc.nx),
+                    (normal - tangent) * sc.nx * sc.ny, (normal - tangent) * sc.nx * sc.ny,
+                    normal * sc.ny * sc.ny + tangent * (1.0 - sc.ny * sc.ny)};
+      Mat2& d = solver_.diag[i];
+      d = {d.a + dc.a, d.b + dc.b, d.c + dc.c, d.d + dc.d};
+      if (!driven) continue;
+      // Turning the wheel by dψ₁ (its θ point by θ dψ₁, its speed by dψ₁/h) is, for the
+      // contact, turning the roller the other way about the centre: with t = perp(q − c), the
+      // coupling column is ∂R_i/∂ψ₁ = −D t + h θ f perp(n), the wheel's row is the same, and the
+      // wheel's own derivative gains tᵀ D t − h θ f (q − c)·n.
+      const double cx = qx - wheel.centre_x, cy = qy - wheel.centre_y;
+      const double tx = -cy, ty = cx;
+      const Vec2 dt{dc.a * tx + dc.b * ty, dc.c * tx + dc.d * ty};
+      const double hf = h * th * sc.force;
+      bcol_[w][i] = {-dt.x - hf * sc.ny, -dt.y + hf * sc.nx};
+      wdiag += tx * dt.x + ty * dt.y - hf * (sc.nx * cx + sc.ny * cy);
+    }
+    if (driven) {
+      const double residual = wheel.inertia / (h * th) * (psi1_[w] - s.angle[w] - h * s.speed[w]) -
+                              h * (torque - wheel.load_torque);
+      wres_[w] = -residual;
+      if (jacobian) wdiag_[w] = wdiag;
+      const double force_like = residual / wheel.pitch_radius;
+      wheel_norm2 += force_like * force_like;
+    }
+  }
+  if (!model.pinned.empty()) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!model.is_pinned(i)) continue;
+      solver_.rhs[i] = {};
+      if (!jacobian) continue;
+      solver_.diag[i] = {1.0, 0.0, 0.0, 1.0};
+      solver_.lower[i] = {};
+      solver_.upper[i] = {};
+      if (model.closed || i + 1 < n) solver_.lower[(i + 1) % n] = {};
+      if (model.closed || i > 0) solver_.upper[(i + n - 1) % n] = {};
+    }
+  }
+  double norm2 = wheel_norm2;
+  for (std::size_t i = 0; i < n; ++i) {
+    norm2 += solver_.rhs[i].x * solver_.rhs[i].x + solver_.rhs[i].y * solver_.rhs[i].y;
+  }
+  return norm2;
+}
+
+StepReport Integrator::step(const Model& model, State& s) {
+  // O(1) guards: a model or state of another size would index out of bounds.
+  if (model.nodes() != solver_.size() || model.closed != solver_.cyclic() ||
+      model.sprockets.size() != psi1_.size()) {
+    throw InputError({{"model", std::to_string(model.nodes()) + " nodes",
+                       "the model this integrator was built for (" +
+                           std::to_string(solver_.size()) + " nodes)"}});
+  }
+  if (s.x.size() != model.nodes() || s.y.size() != model.nodes() || s.vx.size() != model.nodes() ||
+      s.vy.size() != model.nodes() || s.angle.size() != model.sprockets.size() ||
+      s.speed.size() != model.sprockets.size()) {
+    throw_if_any(validate(model, s));
+  }
+  const std::size_t n = model.nodes();
+  const double h = options_.step;
+  const double th = options_.theta;
+  const double tol = options_.tolerance * model.pitch;
+  constexpr int kMaxBacktracks = 12;
+  const std::size_t nd = driven_.size();
+
+  for (std::size_t j = 0; j < model.links(); ++j) {
+    const std::size_t b = (j + 1) % n;
+    const double dx = s.x[b] - s.x[j], dy = s.y[b] - s.y[j];
+    l0_[j] = std::sqrt(dx * dx + dy * dy);
+  }
+  // Predictor: constant velocity (and constant wheel speeds).
+  for (std::size_t i = 0; i < n; ++i) {
+    ux_[i] = s.x[i] + h * s.vx[i];
+    uy_[i] = s.y[i] + h * s.vy[i];
+  }
+  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+    const Sprocket& wheel = model.sprockets[w];
+    psi1_[w] = s.angle[w] + h * (wheel.driver ? wheel.speed : s.speed[w]);
+    dpsi_[w] = 0.0;
+  }
+
+  StepReport report;
+  double norm2 = assemble(model, s, true);
+  for (int iter = 1; iter <= options_.max_iterations; ++iter) {
+    report.solve = solver_.solve(delta_);
+    report.iterations = iter;
+    if (report.solve != SolveStatus::kSolved) return report;
+    if (nd > 0) {
+      // The driven wheels border the chain's matrix: [A B; Bᵀ d] [δu; δψ] = [r; r_w]. Solve
+      // A W = B (one more O(N) substitution per wheel, same factors), then the small Schur
+      // complement (d − Bᵀ W) δψ = r_w − Bᵀ δu₀, and δu = δu₀ − W δψ.
+      for (std::size_t a = 0; a < nd; ++a) {
+        const std::size_t w = driven_[a];
+        solver_.substitute(bcol_[w], wsol_[w]);  // the same factors as δu₀'s solve
+      }
+      for (std::size_t a = 0; a < nd; ++a) {
+        const std::vector<Vec2>& ba = bcol_[driven_[a]];
+        double g = wres_[driven_[a]];
+        for (std::size_t i = 0; i < n; ++i) g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
+        dpsi_[driven_[a]] = g;
+        for (std::size_t b = 0; b < nd; ++b) {
+          const std::vector<Vec2>& wb = wsol_[driven_[b]];
+          double sab = a == b ? wdiag_[driven_[a]] : 0.0;
+          for (std::size_t i = 0; i < n; ++i) sab -= ba[i].x * wb[i].x + ba[i].y * wb[i].y;
+          schur_[a * nd + b] = sab;
+        }
+      }
+      // Gaussian elimination on the nd × nd Schur complement (nd is the number of driven
+      // wheels: small), right-hand side in dpsi_.
+      for (std::size_t c = 0; c < nd; ++c) {
+        const double piv = schur_[c * nd + c];
+        if (!(std::abs(piv) > 0.0) || !std::isfinite(piv)) {
+          report.solve = SolveStatus::kSingularPivot;
+          return report;
+        }
+        for (std::size_t r = c + 1; r < nd; ++r) {
+          const double f = schur_[r * nd + c] / piv;
+          for (std::size_t k = c; k < nd; ++k) schur_[r * nd + k] -= f * schur_[c * nd + k];
+          dpsi_[driven_[r]] -= f * dpsi_[driven_[c]];
+        }
+      }
+      for (std::size_t c = nd; c-- > 0;) {
+        double v = dpsi_[driven_[c]];
+        for (std::size_t k = c + 1; k < nd; ++k) v -= schur_[c * nd + k] * dpsi_[driven_[k]];
+        dpsi_[driven_[c]] = v / schur_[c * nd + c];
+      }
+      for (std::size_t a = 0; a < nd; ++a) {
+        const std::vector<Vec2>& wa = wsol_[driven_[a]];
+        const double d = dpsi_[driven_[a]];
+        for (std::size_t i = 0; i < n; ++i) {
+          delta_[i].x -= wa[i].x * d;
+          delta_[i].y -= wa[i].y * d;
+        }
+      }
+    }
+    double correction = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!std::isfinite(delta_[i].x) || !std::isfinite(delta_[i].y)) {
+        report.solve = SolveStatus::kSingularPivot;
+        return report;
+      }
+      ux_[i] += delta_[i].x;
+      uy_[i] += delta_[i].y;
+      correction = std::max({correction, std::abs(delta_[i].x), std::abs(delta_[i].y)});
+    }
+    for (std::size_t w : driven_) {
+      psi1_[w] += dpsi_[w];
+      correction = std::max(correction, std::abs(dpsi_[w]) * model.sprockets[w].pitch_radius);
+    }
+    report.last_correction = correction;
+    if (correction <= tol) {
+      report.converged = true;
+      break;
+    }
+    // Backtracking: halve the step while the residual grows (far from the solution, a whip of
+    // the chain turns links by large angles within a step and the full Newton step overshoots).
+    double next = assemble(model, s, true);
+    double lambda = 1.0;
+    for (int b = 0; b < kMaxBacktracks && !(next < norm2); ++b) {
+      lambda *= 0.5;
+      for (std::size_t i = 0; i < n; ++i) {
+        ux_[i] -= lambda * delta_[i].x;
+        uy_[i] -= lambda * delta_[i].y;
+      }
+      for (std::size_t w : driven_) psi1_[w] -= lambda * dpsi_[w];
+      next = assemble(model, s, true);
+      ++report.backtracks;
+    }
+    norm2 = next;
+  }
+  report.max_penetration = max_penetration_;
+  if (!report.converged) return report;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (model.is_pinned(i)) continue;
+    // x₁ = x₀ + h ((1 − θ) v₀ + θ v₁)
+    const double vx = (ux_[i] - s.x[i] - h * (1.0 - th) * s.vx[i]) / (h * th);
+    const double vy = (uy_[i] - s.y[i] - h * (1.0 - th) * s.vy[i]) / (h * th);
+    s.x[i] = ux_[i];
+    s.y[i] = uy_[i];
+    s.vx[i] = vx;
+    s.vy[i] = vy;
+  }
+  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+    const Sprocket& wheel = model.sprockets[w];
+    s.speed[w] = wheel.driver ? wheel.speed
+                              : (psi1_[w] - s.angle[w] - h * (1.0 - th) * s.speed[w]) / (h * th);
+    s.angle[w] = psi1_[w];
+  }
+  s.time += h;
+  return report;
+}
+
+}  // namespace catena::dynamics
