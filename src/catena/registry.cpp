@@ -8,6 +8,7 @@
 #include "catena/contact/catalog_analysis.hpp"
 #include "catena/drive/analysis.hpp"
 #include "catena/drive/drive_analysis.hpp"
+#include "catena/dynamics/analysis.hpp"
 #include "catena/engagement/analysis.hpp"
 #include "catena/hinge/analysis.hpp"
 #include "catena/io/bind.hpp"
@@ -39,6 +40,7 @@ const std::vector<const analysis::Analysis*>& analyses() {
       &drive::drive_analysis(),
       &drive::drive_select_analysis(),
       &wear::wear_analysis(),
+      &dynamics::dynamics_analysis(),
   };
   return all;
 }

@@ -336,9 +336,9 @@ std::vector<Issue> Analysis::size_issues(const Inputs& inputs) const {
 }
 
 bool Analysis::has_size_caps() const {
-  return std::any_of(parameters.begin(), parameters.end(), [](const Parameter& p) {
-    return p.type == ParameterType::kInteger && p.work.cap > 0;
-  });
+  return sized_in_run || std::any_of(parameters.begin(), parameters.end(), [](const Parameter& p) {
+           return p.type == ParameterType::kInteger && p.work.cap > 0;
+         });
 }
 
 Record Analysis::evaluate(const Inputs& inputs) const {

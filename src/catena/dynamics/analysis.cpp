@@ -1,0 +1,670 @@
+// `dynamics` — a roller-chain loop over two ISO 606 sprockets in time (issue 21, Stage 3) — as an
+// analysis. Its input is the [dynamics] table with [[dynamics.sprocket]] elements, so
+// `catena dynamics case.toml` reads a case file's [dynamics] and ignores the rest.
+//
+// What it sets up is the drive the core's validation (6) runs (tests/validation/
+// dynamics_drive_test.cpp): two equal sprockets (z even) on a horizontal line, a whole number of
+// pitches apart, the chain wrapped half-way round each and straight between, every node moving at
+// the driver's pitch-line speed. The centre distance is not an input: it follows from the links,
+// (links − z)/2 pitches. Anything else (unequal wheels, idlers, a free layout) is refused, named.
+#include "catena/dynamics/analysis.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numbers>
+#include <regex>
+#include <sstream>
+
+#include "catena/contact/chain_catalog.hpp"
+#include "catena/core/progress.hpp"
+#include "catena/dynamics/integrator.hpp"
+#include "catena/io/bind.hpp"
+#include "catena/io/case_file.hpp"
+#include "catena/io/quantity.hpp"
+
+namespace catena::dynamics {
+namespace {
+
+using analysis::format_g;
+using analysis::InputValue;
+using analysis::Parameter;
+using analysis::ParameterType;
+using analysis::Record;
+using analysis::Value;
+using Entry = analysis::InputValue::Entry;
+using K = QuantityKind;
+constexpr double kPi = std::numbers::pi;
+
+// The work cap: link-steps (steps × links) a run may take unless allow_large is given. The
+// drive's step costs about 0.5 µs CPU per link with sprockets on the reference machine
+// (docs/performance.md: 100 µs a step at 200 links), so the cap is about 25 s.
+constexpr double kLinkStepCap = 5e7;
+constexpr double kSecondsPerLinkStep = 0.5e-6;
+
+std::vector<Parameter> table_fields() {
+  using analysis::number;
+  using analysis::quantity;
+  using analysis::text;
+  return {text("chain",
+               "ISO 606 designation (\"12B\"): pitch, roller, width and mass from the "
+               "catalogue"),
+          quantity("pitch", K::kLength, "pitch p (overrides the catalogue's)"),
+          quantity("mass_per_metre", K::kMassPerLength, "chain mass per metre q"),
+          quantity("roller_diameter", K::kLength, "roller diameter d1"),
+          quantity("inner_width", K::kLength, "inner width b1"),
+          number("links", "links in the closed loop, an integer; z + 2m with m >= 2"),
+          quantity("axial_stiffness", K::kForcePerLength, "axial stiffness k of one link [N/m]"),
+          number("axial_damping", "axial damping c of one link [N s/m], >= 0 (default 0)"),
+          quantity("pretension", K::kForce, "the loop's tension at rest, >= 0 (default 0)"),
+          quantity("contact_stiffness", K::kForcePerLength, "roller-seat penalty k_c [N/m]"),
+          number("contact_damping", "roller-seat damping c_c [N s/m], >= 0"),
+          quantity("duration", K::kTime, "simulated time, > 0"),
+          quantity("step", K::kTime, "time step h, > 0"),
+          quantity("output_interval", K::kTime, "sampling interval of the series (default step)"),
+          number("theta", "theta of the integrator in [0.5, 1] (default 0.6; drives need >= 0.6)")};
+}
+
+std::vector<Parameter> sprocket_fields() {
+  using analysis::number;
+  using analysis::quantity;
+  using analysis::text;
+  return {number("teeth", "number of teeth z, an even integer in [8, 150]"),
+          text("role", "driver or driven"),
+          quantity("speed", K::kAngularSpeed, "driver: speed, counter-clockwise, > 0"),
+          number("inertia", "driven: moment of inertia J [kg m^2], > 0"),
+          number("load_torque", "driven: load torque T_L [N m], >= 0")};
+}
+
+const Parameter& table_parameter() {
+  static const Parameter p = [] {
+    Parameter t;
+    t.name = "dynamics";
+    t.type = ParameterType::kTable;
+    t.doc =
+        "TOML file with a [dynamics] table and two [[dynamics.sprocket]] tables (a case file "
+        "works); in a case file, its own [dynamics] table";
+    t.required = true;
+    t.expected =
+        "a [dynamics] table (chain, links, axial_stiffness, contact_stiffness, duration, step) and "
+        "two [[dynamics.sprocket]] tables (docs/models/dynamics.md)";
+    t.fields = table_fields();
+    t.rows_name = "sprocket";
+    t.row_fields = sprocket_fields();
+    return t;
+  }();
+  return p;
+}
+
+std::string where(const Entry& v) { return v.path + " (line " + std::to_string(v.line) + ")"; }
+
+// One value as SI (a bare number takes the field's documented unit); an issue on failure.
+std::optional<double> read(const Entry& v, const Parameter& key, std::vector<Issue>& issues) {
+  if (!v.is_string && !v.is_number) {
+    issues.push_back({where(v), v.text, "a number or a string"});
+    return std::nullopt;
+  }
+  std::vector<Issue> found;
+  std::optional<double> x;
+  if (key.type == ParameterType::kNumber) {
+    x = io::parse_number(v.text, where(v), "a plain number", found);
+  } else {
+    const bool bare = v.is_number || io::is_bare_number(v.text);
+    x = io::parse_quantity(bare ? v.text + " " + io::bare_unit(key) : v.text, key.kind, where(v),
+                           found);
+    for (Issue& i : found) i.value = "'" + v.text + "'";
+  }
+  issues.insert(issues.end(), found.begin(), found.end());
+  return x;
+}
+
+struct SprocketInput {
+  int line = 0;
+  std::optional<double> teeth, speed, inertia, load_torque;
+  std::string role;
+  bool has_role = false;
+};
+
+struct Setup {
+  std::string chain;
+  double pitch = NAN, mass_per_metre = NAN, roller = NAN, width = NAN;
+  int links = 0;
+  double stiffness = NAN, damping = 0.0, pretension = 0.0;
+  double contact_stiffness = NAN, contact_damping = NAN;
+  double duration = NAN, step = NAN, interval = NAN, theta = 0.6;
+  int teeth = 0;
+  std::size_t driver = 0, driven = 1;
+  double speed = NAN, inertia = NAN, load = 0.0;
+};
+
+bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
+
+Setup parse(const analysis::Inputs& in) {
+  const InputValue& file = in.at("dynamics");
+  std::vector<Issue> issues;
+  if (std::find(file.tables.begin(), file.tables.end(), "dynamics") == file.tables.end())
+    throw InputError({{"dynamics", "(missing)", table_parameter().expected}});
+  std::map<std::string, const Parameter*> top_keys, row_keys;
+  for (const Parameter& p : table_parameter().fields) top_keys[p.name] = &p;
+  for (const Parameter& p : table_parameter().row_fields) row_keys[p.name] = &p;
+
+  std::map<std::string, double> value;  // [dynamics] key → SI value (read successfully)
+  std::map<std::string, int> line;      // [dynamics] key → its line
+  std::string chain;
+  bool has_chain = false;
+  std::vector<SprocketInput> wheels;
+  static const std::regex row(R"(^dynamics\.sprocket\[(\d+)\]\.([^.]+)$)");
+  for (const Entry& v : file.table) {
+    if (v.path.rfind("dynamics.", 0) != 0) continue;  // the rest of a case file is not ours
+    std::smatch m;
+    if (std::regex_match(v.path, m, row)) {
+      const std::size_t i = std::stoul(m[1]);
+      if (wheels.size() <= i) wheels.resize(i + 1);
+      SprocketInput& w = wheels[i];
+      if (w.line == 0) w.line = v.line;
+      const std::string key = m[2];
+      const auto k = row_keys.find(key);
+      if (k == row_keys.end()) {
+        issues.push_back(
+            {where(v), v.text, "a key of a sprocket: teeth, role, speed, inertia, load_torque"});
+        continue;
+      }
+      if (key == "role") {
+        w.role = v.text;
+        w.has_role = true;
+        if (!v.is_string || (v.text != "driver" && v.text != "driven"))
+          issues.push_back({where(v), "'" + v.text + "'", "driver or driven"});
+        continue;
+      }
+      const auto x = read(v, *k->second, issues);
+      if (!x) continue;
+      if (key == "teeth") w.teeth = *x;
+      if (key == "speed") w.speed = *x;
+      if (key == "inertia") w.inertia = *x;
+      if (key == "load_torque") w.load_torque = *x;
+      continue;
+    }
+    const std::string key = v.path.substr(9);
+    if (key.rfind("sprocket", 0) == 0) {
+      issues.push_back(
+          {where(v), v.text, "sprockets as an array of tables: [[dynamics.sprocket]]"});
+      continue;
+    }
+    const auto k = top_keys.find(key);
+    if (k == top_keys.end()) {
+      std::string list;
+      for (const auto& [name, p] : top_keys) list += (list.empty() ? "" : ", ") + name;
+      issues.push_back({where(v), v.text, "a key of [dynamics]: " + list});
+      continue;
+    }
+    line[key] = v.line;
+    if (key == "chain") {
+      chain = v.text;
+      has_chain = true;
+      continue;
+    }
+    if (const auto x = read(v, *k->second, issues)) value[key] = *x;
+  }
+  auto at = [&](const std::string& key) {
+    const auto l = line.find(key);
+    return "dynamics." + key + (l == line.end() ? "" : " (line " + std::to_string(l->second) + ")");
+  };
+  auto shown = [&](double x) { return format_g(x, 6); };
+
+  Setup s;
+  // the chain: the catalogue's values, each overridable
+  std::optional<contact::ChainDimensions> row_found;
+  if (has_chain) {
+    row_found = contact::iso606_chain(chain);
+    if (!row_found) issues.push_back({at("chain"), "'" + chain + "'", "an ISO 606 designation"});
+    s.chain = row_found ? row_found->name : chain;
+  }
+  auto chain_value = [&](const char* key, std::optional<double> from_catalogue,
+                         const char* what) -> double {
+    if (value.count(key)) return value[key];
+    if (from_catalogue) return *from_catalogue;
+    if (!line.count(key) && !(has_chain && !row_found))  // missing (not unreadable, no bad chain)
+      issues.push_back({"dynamics." + std::string(key), "(missing)",
+                        std::string(what) + " (or chain = an ISO 606 designation that has it)"});
+    return NAN;
+  };
+  s.pitch = chain_value("pitch", row_found ? std::optional(row_found->pitch) : std::nullopt,
+                        "the pitch p, e.g. \"19.05 mm\"");
+  s.mass_per_metre =
+      chain_value("mass_per_metre", row_found ? row_found->mass_per_metre : std::nullopt,
+                  "the chain's mass per metre, e.g. \"1.25 kg/m\"");
+  s.roller = chain_value("roller_diameter", row_found ? row_found->roller_diameter : std::nullopt,
+                         "the roller diameter d1, e.g. \"12.07 mm\"");
+  s.width = chain_value("inner_width", row_found ? row_found->inner_width : std::nullopt,
+                        "the inner width b1, e.g. \"11.68 mm\"");
+  for (const char* key : {"pitch", "mass_per_metre", "roller_diameter", "inner_width"}) {
+    if (value.count(key) && !(value[key] > 0.0))
+      issues.push_back({at(key), shown(value[key]), "> 0"});
+  }
+
+  auto required = [&](const char* key, const char* what) -> double {
+    if (value.count(key)) return value[key];
+    if (!line.count(key)) issues.push_back({"dynamics." + std::string(key), "(missing)", what});
+    return NAN;
+  };
+  auto optional = [&](const char* key, double fallback) -> double {
+    if (value.count(key)) return value[key];
+    return line.count(key) ? NAN : fallback;  // unreadable: already reported
+  };
+  const double links = required("links", "the number of links in the loop, an integer");
+  s.stiffness = required("axial_stiffness", "the axial stiffness k of one link, e.g. \"5e7 N/m\"");
+  s.contact_stiffness =
+      required("contact_stiffness", "the roller-seat penalty k_c, e.g. \"2e8 N/m\"");
+  s.contact_damping = required("contact_damping", "the roller-seat damping c_c [N s/m], e.g. 800");
+  s.duration = required("duration", "the simulated time, e.g. \"0.5 s\"");
+  s.step = required("step", "the time step h, e.g. \"0.1 ms\"");
+  s.damping = optional("axial_damping", 0.0);
+  s.pretension = optional("pretension", 0.0);
+  s.theta = optional("theta", 0.6);
+  // the command line's --duration and --step override the table's
+  if (in.present("duration")) s.duration = in.number("duration");
+  if (in.present("step")) s.step = in.number("step");
+  s.interval = optional("output_interval", s.step);
+
+  auto positive = [&](const char* key, double x, bool cli) {
+    if (!std::isnan(x) && !(x > 0.0 && std::isfinite(x)))
+      issues.push_back({cli && in.present(key) ? std::string(key) : at(key), shown(x), "> 0"});
+  };
+  auto non_negative = [&](const char* key, double x) {
+    if (!std::isnan(x) && !(x >= 0.0 && std::isfinite(x)))
+      issues.push_back({at(key), shown(x), ">= 0"});
+  };
+  positive("axial_stiffness", s.stiffness, false);
+  positive("contact_stiffness", s.contact_stiffness, false);
+  non_negative("contact_damping", s.contact_damping);
+  non_negative("axial_damping", s.damping);
+  non_negative("pretension", s.pretension);
+  positive("duration", s.duration, true);
+  positive("step", s.step, true);
+  if (value.count("output_interval")) positive("output_interval", s.interval, false);
+  if (!std::isnan(s.theta) && !(s.theta >= 0.5 && s.theta <= 1.0))
+    issues.push_back({at("theta"), shown(s.theta), "in [0.5, 1]"});
+  if (!std::isnan(s.pretension) && !std::isnan(s.stiffness) && s.stiffness > 0 &&
+      !std::isnan(s.pitch) && s.pretension / s.stiffness >= 0.1 * s.pitch)
+    issues.push_back({at("pretension"), shown(s.pretension),
+                      "below 0.1 k p = " + shown(0.1 * s.stiffness * s.pitch) +
+                          " N (a stretch under 10 % of the pitch)"});
+
+  // the sprockets: exactly two, one driver and one driven, equal and even teeth
+  if (wheels.size() != 2) {
+    issues.push_back({"dynamics.sprocket", std::to_string(wheels.size()) + " sprockets",
+                      "two [[dynamics.sprocket]] tables, one driver and one driven (the only "
+                      "layout built: docs/models/dynamics.md)"});
+  }
+  int drivers = 0, driven = 0;
+  std::vector<int> teeth(wheels.size(), 0);
+  for (std::size_t i = 0; i < wheels.size(); ++i) {
+    const SprocketInput& w = wheels[i];
+    const std::string base = "dynamics.sprocket[" + std::to_string(i) + "].";
+    const std::string l = w.line ? " (line " + std::to_string(w.line) + ")" : "";
+    if (!w.teeth) {
+      issues.push_back({base + "teeth" + l, "(missing)", "an even integer in [8, 150]"});
+    } else if (!is_integer(*w.teeth) || *w.teeth < 8 || *w.teeth > 150 ||
+               static_cast<long>(*w.teeth) % 2 != 0) {
+      issues.push_back({base + "teeth" + l, shown(*w.teeth), "an even integer in [8, 150]"});
+    } else {
+      teeth[i] = static_cast<int>(*w.teeth);
+    }
+    if (!w.has_role) {
+      issues.push_back({base + "role" + l, "(missing)", "driver or driven"});
+      continue;
+    }
+    if (w.role == "driver") {
+      ++drivers;
+      s.driver = i;
+      if (!w.speed) {
+        issues.push_back(
+            {base + "speed" + l, "(missing)", "the driver's speed, e.g. \"13 rad/s\""});
+      } else if (!(*w.speed > 0.0 && std::isfinite(*w.speed))) {
+        issues.push_back({base + "speed" + l, shown(*w.speed), "> 0 (counter-clockwise)"});
+      } else {
+        s.speed = *w.speed;
+      }
+      if (w.inertia || w.load_torque)
+        issues.push_back({base + "inertia" + l, "(given)",
+                          "no inertia or load_torque on a driver (its speed is prescribed)"});
+    } else if (w.role == "driven") {
+      ++driven;
+      s.driven = i;
+      if (!w.inertia) {
+        issues.push_back(
+            {base + "inertia" + l, "(missing)", "the moment of inertia J > 0 [kg m^2]"});
+      } else if (!(*w.inertia > 0.0 && std::isfinite(*w.inertia))) {
+        issues.push_back({base + "inertia" + l, shown(*w.inertia), "> 0 [kg m^2]"});
+      } else {
+        s.inertia = *w.inertia;
+      }
+      if (w.load_torque && !(*w.load_torque >= 0.0 && std::isfinite(*w.load_torque)))
+        issues.push_back({base + "load_torque" + l, shown(*w.load_torque), ">= 0 [N m]"});
+      else if (w.load_torque)
+        s.load = *w.load_torque;
+      if (w.speed)
+        issues.push_back({base + "speed" + l, shown(*w.speed),
+                          "no speed on a driven wheel (it follows from the chain)"});
+    }
+  }
+  if (wheels.size() == 2) {
+    if (drivers != 1 || driven != 1)
+      issues.push_back(
+          {"dynamics.sprocket",
+           std::to_string(drivers) + " driver(s), " + std::to_string(driven) + " driven",
+           "one driver and one driven"});
+    if (teeth[0] && teeth[1] && teeth[0] != teeth[1])
+      issues.push_back({"dynamics.sprocket[1].teeth", std::to_string(teeth[1]),
+                        "equal to sprocket[0].teeth = " + std::to_string(teeth[0]) +
+                            " (only equal wheels are built)"});
+    s.teeth = teeth[0] && teeth[0] == teeth[1] ? teeth[0] : 0;
+  }
+  if (!std::isnan(links)) {
+    if (!is_integer(links) || links < 1) {
+      issues.push_back({at("links"), shown(links), "an integer"});
+    } else {
+      s.links = static_cast<int>(links);
+      if (s.teeth && (s.links - s.teeth < 4 || (s.links - s.teeth) % 2 != 0))
+        issues.push_back({at("links"), std::to_string(s.links),
+                          "z + 2m with m >= 2 pitches between the centres: " +
+                              std::to_string(s.teeth + 4) + ", " + std::to_string(s.teeth + 6) +
+                              ", ... (z = " + std::to_string(s.teeth) + ")"});
+    }
+  }
+  // the work cap: steps × links
+  if (issues.empty()) {
+    const double work = std::ceil(s.duration / s.step) * s.links;
+    if (work > kLinkStepCap && !in.large_allowed()) {
+      issues.push_back({in.present("duration") ? std::string("duration") : at("duration"),
+                        shown(s.duration) + " s",
+                        "duration/step × links <= " + shown(kLinkStepCap) + " link-steps (here " +
+                            shown(work) + ", about " + shown(work * kSecondsPerLinkStep) +
+                            " s of CPU; allow_large (--allow-large) runs it anyway)"});
+    }
+    if (s.interval < s.step)
+      issues.push_back({at("output_interval"), shown(s.interval), ">= step = " + shown(s.step)});
+  }
+  throw_if_any(issues);
+  return s;
+}
+
+struct Series {
+  std::vector<double> angle, speed, torque;
+};
+
+struct Result {
+  Setup setup;
+  std::vector<double> time;
+  std::vector<Series> sprocket;           // 2
+  std::vector<std::vector<double>> span;  // upper, lower
+  int steps = 0;
+  double wall_time = 0.0, energy_drift = 0.0, max_penetration = 0.0;
+  std::vector<Diagnostic> diagnostics;
+};
+
+// The torque the chain puts on wheel w (counter-clockwise positive).
+double chain_torque(const Model& model, const State& s, std::size_t w) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < s.nodes(); ++i)
+    sum +=
+        seat_contact(model.sprockets[w], s.x[i], s.y[i], s.vx[i], s.vy[i], s.angle[w], s.speed[w])
+            .torque;
+  return sum;
+}
+
+Result run(const analysis::Inputs& in) {
+  Result out;
+  out.setup = parse(in);
+  const Setup& d = out.setup;
+  const int z = d.teeth, m = (d.links - z) / 2;
+  const auto n = static_cast<std::size_t>(d.links);
+  const double rest = d.pitch - d.pretension / d.stiffness;
+  Model model =
+      uniform_chain(n, true, rest, d.mass_per_metre * d.pitch, d.stiffness, d.damping, false);
+  const double centre = m * d.pitch;
+  std::vector<Sprocket> wheels;
+  for (std::size_t w = 0; w < 2; ++w) {
+    Sprocket s = iso606_sprocket(d.pitch, d.roller, d.width, z, w == 0 ? 0.0 : centre, 0.0,
+                                 d.contact_stiffness, d.contact_damping);
+    if (w == d.driver) {
+      s.driver = true;
+      s.speed = d.speed;
+    } else {
+      s.inertia = d.inertia;
+      s.load_torque = d.load;
+    }
+    wheels.push_back(s);
+  }
+  model.sprockets = wheels;
+  const double r = wheels[0].pitch_radius, v = d.speed * r;
+  // counter-clockwise round the loop: over wheel 0 from its top seat to its bottom seat, the
+  // lower span (+x), over wheel 1 from bottom to top, the upper span (−x); all at speed v
+  State s(n, 2);
+  std::size_t i = 0;
+  auto put = [&](double x, double y, double vx, double vy) {
+    s.x[i] = x;
+    s.y[i] = y;
+    s.vx[i] = vx;
+    s.vy[i] = vy;
+    ++i;
+  };
+  for (int k = 0; k <= z / 2; ++k) {
+    const double t = kPi / 2 + 2 * kPi * k / z;
+    put(r * std::cos(t), r * std::sin(t), -v * std::sin(t), v * std::cos(t));
+  }
+  for (int j = 1; j < m; ++j) put(j * d.pitch, -r, v, 0.0);
+  for (int k = 0; k <= z / 2; ++k) {
+    const double t = -kPi / 2 + 2 * kPi * k / z;
+    put(centre + r * std::cos(t), r * std::sin(t), -v * std::sin(t), v * std::cos(t));
+  }
+  for (int j = 1; j < m; ++j) put(centre - j * d.pitch, r, -v, 0.0);
+  s.angle = {kPi / 2, -kPi / 2};
+  s.speed = {d.speed, d.speed};
+  throw_if_any(validate(model, s));
+
+  Integrator integ(model, {.step = d.step, .theta = d.theta});
+  std::vector<double> tension(model.links());
+  out.sprocket.resize(2);
+  out.span.resize(2);
+  auto sample = [&] {
+    out.time.push_back(s.time);
+    for (std::size_t w = 0; w < 2; ++w) {
+      out.sprocket[w].angle.push_back(s.angle[w]);
+      out.sprocket[w].speed.push_back(s.speed[w]);
+      out.sprocket[w].torque.push_back(chain_torque(model, s, w));
+    }
+    link_tensions(model, s, tension);
+    // the links whose middles are nearest the middles of the upper and lower spans
+    std::size_t top = 0, bottom = 0;
+    double top_gap = INFINITY, bottom_gap = INFINITY;
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::size_t e = (j + 1) % n;
+      const double xm = 0.5 * (s.x[j] + s.x[e]), ym = 0.5 * (s.y[j] + s.y[e]);
+      const double gap = std::abs(xm - 0.5 * centre);
+      if (ym > 0.0 && gap < top_gap) top_gap = gap, top = j;
+      if (ym < 0.0 && gap < bottom_gap) bottom_gap = gap, bottom = j;
+    }
+    out.span[0].push_back(tension[top]);
+    out.span[1].push_back(tension[bottom]);
+  };
+  const int steps = static_cast<int>(std::lround(d.duration / d.step));
+  const int every = std::max(1, static_cast<int>(std::lround(d.interval / d.step)));
+  const double e0 = energy(model, s).total();
+  // the work the driver puts in and the load takes out, by the trapezoid rule over each step
+  double work = 0.0;
+  auto power = [&] {
+    return -chain_torque(model, s, d.driver) * s.speed[d.driver] - d.load * s.speed[d.driven];
+  };
+  double p0 = power();
+  sample();
+  const auto started = std::chrono::steady_clock::now();
+  ProgressLoop loop(static_cast<std::size_t>(steps), "steps");
+  for (int k = 0; k < steps; ++k) {
+    const StepReport rep = integ.step(model, s);
+    out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
+    if (!rep.converged) {
+      out.diagnostics.push_back(
+          {Diagnostic::Severity::kError, "dynamics.not_converged",
+           "step " + std::to_string(k + 1) + " (t = " + format_g(s.time + d.step, 6) +
+               " s) did not converge in " + std::to_string(rep.iterations) +
+               " Newton iterations; the run stopped there (try a smaller step or theta nearer 1)",
+           s.time + d.step, d.duration});
+      break;
+    }
+    ++out.steps;
+    const double p1 = power();
+    work += 0.5 * (p0 + p1) * d.step;
+    p0 = p1;
+    if ((k + 1) % every == 0) sample();
+    loop.step(static_cast<std::size_t>(k + 1));
+  }
+  out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  out.energy_drift = energy(model, s).total() - e0 - work;
+  if (d.theta < 0.6)
+    out.diagnostics.push_back(
+        {Diagnostic::Severity::kWarning, "dynamics.theta_below_0_6",
+         "theta = " + format_g(d.theta, 4) +
+             " < 0.6: drives with roller-seat contact diverged below 0.6 (docs/models/dynamics.md)",
+         d.theta, 0.6});
+  return out;
+}
+
+std::string fixed(double x, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
+}
+
+Record describe(const Result& r, const analysis::Inputs&) {
+  const Setup& d = r.setup;
+  Record rec;
+  rec.diagnostics = r.diagnostics;
+  const double simulated = r.steps * d.step;
+  const double rtf = r.wall_time > 0.0 ? simulated / r.wall_time : 0.0;
+  Value j = Value::object();
+  j["model"] = "dynamics.chain_loop";
+  j["source"] =
+      "implicit midpoint / theta-method with the discrete energy-momentum gradient (Simo & Tarnow "
+      "1992), ISO 606 sprocket seats (docs/models/dynamics.md)";
+  if (!d.chain.empty()) j["chain"] = d.chain;
+  j["pitch"] = d.pitch;
+  j["links"] = d.links;
+  j["teeth"] = d.teeth;
+  j["centre_distance"] = (d.links - d.teeth) / 2 * d.pitch;
+  j["theta"] = d.theta;
+  j["time"] = r.time;
+  Value wheels = Value::array();
+  for (std::size_t w = 0; w < 2; ++w) {
+    wheels.push_back(Value::object({{"role", w == d.driver ? "driver" : "driven"},
+                                    {"angle", r.sprocket[w].angle},
+                                    {"speed", r.sprocket[w].speed},
+                                    {"torque", r.sprocket[w].torque}}));
+  }
+  j["sprocket"] = wheels;
+  // the driver turns counter-clockwise: the driver at x = 0 pulls the upper span
+  const bool upper_tight = d.driver == 0;
+  Value spans = Value::array();
+  spans.push_back(Value::object(
+      {{"name", "upper"}, {"side", upper_tight ? "tight" : "slack"}, {"tension", r.span[0]}}));
+  spans.push_back(Value::object(
+      {{"name", "lower"}, {"side", upper_tight ? "slack" : "tight"}, {"tension", r.span[1]}}));
+  j["span"] = spans;
+  j["summary"] = Value::object({{"steps", r.steps},
+                                {"step", d.step},
+                                {"wall_time", r.wall_time},
+                                {"real_time_factor", rtf},
+                                {"energy_drift", r.energy_drift},
+                                {"max_penetration", r.max_penetration}});
+  j["diagnostics"] = analysis::diagnostics_value(r.diagnostics);
+  j["units"] = analysis::units_value({{"pitch", "m"},
+                                      {"centre_distance", "m"},
+                                      {"time", "s"},
+                                      {"angle", "rad"},
+                                      {"speed", "rad/s"},
+                                      {"torque", "N m"},
+                                      {"tension", "N"},
+                                      {"step", "s"},
+                                      {"wall_time", "s"},
+                                      {"real_time_factor", "1"},
+                                      {"energy_drift", "J"},
+                                      {"max_penetration", "m"},
+                                      {"value", "SI"},
+                                      {"limit", "SI"}});
+  rec.data = std::move(j);
+
+  std::ostringstream csv;
+  csv << "time,angle_0,speed_0,torque_0,angle_1,speed_1,torque_1,tension_upper,tension_lower\n";
+  for (std::size_t k = 0; k < r.time.size(); ++k) {
+    csv << format_g(r.time[k], 12);
+    for (std::size_t w = 0; w < 2; ++w)
+      csv << "," << format_g(r.sprocket[w].angle[k], 12) << ","
+          << format_g(r.sprocket[w].speed[k], 12) << "," << format_g(r.sprocket[w].torque[k], 12);
+    csv << "," << format_g(r.span[0][k], 12) << "," << format_g(r.span[1][k], 12) << "\n";
+  }
+  rec.csv = csv.str();
+
+  // the table: means over the last half of the run
+  auto late_mean = [&](const std::vector<double>& x) {
+    const std::size_t from = x.size() / 2;
+    double sum = 0.0;
+    for (std::size_t k = from; k < x.size(); ++k) sum += x[k];
+    return x.size() > from ? sum / static_cast<double>(x.size() - from) : NAN;
+  };
+  std::ostringstream t;
+  t << "Catena dynamics: chain loop over two sprockets in time (issue 21)\n\n"
+    << "  " << (d.chain.empty() ? "chain" : d.chain) << ", " << d.links << " links, z = " << d.teeth
+    << " / " << d.teeth << ", centre distance "
+    << format_g((d.links - d.teeth) / 2 * d.pitch * 1e3, 5) << " mm, theta " << format_g(d.theta, 3)
+    << "\n  " << r.steps << " steps of " << format_g(d.step * 1e3, 4) << " ms ("
+    << format_g(simulated, 5) << " s) in " << fixed(r.wall_time, 3)
+    << " s wall time, real-time factor " << format_g(rtf, 3) << "\n\n"
+    << "  means over the second half of the run:\n";
+  for (std::size_t w = 0; w < 2; ++w)
+    t << "    sprocket " << w << " (" << (w == d.driver ? "driver" : "driven") << ")  speed "
+      << format_g(late_mean(r.sprocket[w].speed), 6) << " rad/s, chain torque "
+      << format_g(late_mean(r.sprocket[w].torque), 5) << " N m\n";
+  t << "    upper span tension " << format_g(late_mean(r.span[0]), 5) << " N ("
+    << (upper_tight ? "tight" : "slack") << "), lower " << format_g(late_mean(r.span[1]), 5)
+    << " N\n"
+    << "  energy drift " << format_g(r.energy_drift, 4) << " J, deepest roller penetration "
+    << format_g(r.max_penetration * 1e6, 4) << " um\n";
+  for (const Diagnostic& diag : r.diagnostics)
+    t << "  " << to_string(diag.severity) << ": " << diag.message << "\n";
+  rec.table = t.str();
+  return rec;
+}
+
+analysis::Analysis make() {
+  analysis::Analysis a;
+  a.name = "dynamics";
+  a.command = {"dynamics"};
+  a.title = "Chain-loop dynamics: a roller chain over two ISO 606 sprockets in time (issue 21)";
+  a.help =
+      "A roller-chain loop over a driver and a loaded driven sprocket stepped in time: sprocket "
+      "angle, speed and torque, span tensions (issue 21, docs/models/dynamics.md)";
+  a.seed = "issue 21";
+  a.docs = "docs/models/dynamics.md";
+  a.chain_types = {"roller-iso606"};
+  a.formats = {.table = true, .csv = true, .drawing = false};
+  a.sized_in_run = true;  // duration/step × links, checked by parse()
+  using analysis::quantity;
+  a.parameters = {
+      table_parameter(),
+      quantity("duration", K::kTime, "simulated time (overrides dynamics.duration)") |
+          analysis::NotShared{},
+      quantity("step", K::kTime, "time step h (overrides dynamics.step)") | analysis::NotShared{}};
+  analysis::set_functions<Result>(a, run, describe);
+  return a;
+}
+
+}  // namespace
+
+const analysis::Analysis& dynamics_analysis() {
+  static const analysis::Analysis a = make();
+  return a;
+}
+
+}  // namespace catena::dynamics
