@@ -95,6 +95,19 @@ TEST(CaseCli, EachExampleGivesWhatItsSubcommandGives) {
   const auto loop = run_json("run " + kExamples + "/000_loop.toml");
   const auto direct_loop = run_json("loop " + kExamples + "/000_loop.toml --format json");
   EXPECT_EQ(loop["analyses"]["loop"], direct_loop);
+
+  // the chain-loop dynamics: `catena dynamics` reads the [dynamics] table of the very case file;
+  // equal but for the wall time and the real-time factor it implies (measured, never the same)
+  auto dynamics = run_json("run " + kExamples + "/dynamics_12B.toml")["analyses"]["dynamics"];
+  auto direct_dynamics = run_json("dynamics " + kExamples + "/dynamics_12B.toml --format json");
+  ASSERT_TRUE(dynamics.contains("summary"));
+  ASSERT_TRUE(direct_dynamics.contains("summary"));
+  for (auto* j : {&dynamics, &direct_dynamics}) {
+    EXPECT_GT((*j)["summary"]["wall_time"].get<double>(), 0.0);
+    (*j)["summary"].erase("wall_time");
+    (*j)["summary"].erase("real_time_factor");
+  }
+  EXPECT_EQ(dynamics, direct_dynamics);
 }
 
 TEST(CaseCli, ReportIsOneSelfContainedHtmlFile) {
