@@ -55,7 +55,7 @@ std::vector<Parameter> table_fields() {
           quantity("mass_per_metre", K::kMassPerLength, "chain mass per metre q"),
           quantity("roller_diameter", K::kLength, "roller diameter d1"),
           quantity("inner_width", K::kLength, "inner width b1"),
-          number("links", "links in the closed loop, an integer; z + 2m with m >= 2"),
+          number("links", "links in the closed loop, an integer z + 2m with m >= 2, at most 10000"),
           quantity("axial_stiffness", K::kForcePerLength, "axial stiffness k of one link [N/m]"),
           number("axial_damping", "axial damping c of one link [N s/m], >= 0 (default 0)"),
           quantity("pretension", K::kForce, "the loop's tension at rest, >= 0 (default 0)"),
@@ -364,8 +364,8 @@ Setup parse(const analysis::Inputs& in) {
     s.teeth = teeth[0] && teeth[0] == teeth[1] ? teeth[0] : 0;
   }
   if (!std::isnan(links)) {
-    if (!is_integer(links) || links < 1) {
-      issues.push_back({at("links"), shown(links), "an integer"});
+    if (!is_integer(links) || links < 1 || links > 10000) {
+      issues.push_back({at("links"), shown(links), "an integer in [z + 4, 10000]"});
     } else {
       s.links = static_cast<int>(links);
       if (s.teeth && (s.links - s.teeth < 4 || (s.links - s.teeth) % 2 != 0))
