@@ -14,6 +14,17 @@ from doc_examples import documented_examples
 EXAMPLES = sorted((SOURCE / "examples").glob("*.toml"))
 
 
+def without_timing(value):
+    """The record without what a run measures of itself (dynamics' summary.wall_time and the
+    real_time_factor it implies), which no two runs share."""
+    if isinstance(value, dict):
+        return {k: without_timing(v) for k, v in value.items()
+                if not (k in ("wall_time", "real_time_factor") and "energy_drift" in value)}
+    if isinstance(value, list):
+        return [without_timing(v) for v in value]
+    return value
+
+
 def key_of(analysis, flag):
     """The parameter key of a command-line flag (or of one of its aliases)."""
     name = flag[2:].replace("-", "_")
@@ -33,6 +44,9 @@ def documented():
     cases.append((by_name["hinge_sweep"], [(f, v) for f, v in hinge if f != "--plate-radius"]))
     # "catena loop FILE": the example case holds a [loop] table
     cases.append((by_name["loop"], [("FILE", str(SOURCE / "examples" / "000_loop.toml"))]))
+    # "catena dynamics FILE": the example case holds a [dynamics] table
+    cases.append((by_name["dynamics"],
+                  [("FILE", str(SOURCE / "examples" / "dynamics_12B.toml"))]))
     return cases
 
 
@@ -46,7 +60,7 @@ def test_every_analysis_has_a_documented_example():
 @pytest.mark.parametrize("path", EXAMPLES, ids=[p.stem for p in EXAMPLES])
 def test_example_case_equals_cli(cli, path):
     expected = cli_json(cli, "run", str(path))
-    assert catena.run_case(str(path)).to_dict() == expected
+    assert without_timing(catena.run_case(str(path)).to_dict()) == without_timing(expected)
 
 
 @pytest.mark.parametrize("analysis,flags", DOCUMENTED,
@@ -63,7 +77,9 @@ def test_documented_example_equals_cli(cli, analysis, flags):
         values[key_of(analysis, flag)] = True if value is None else value
     expected = cli_json(cli, *args, "--format", "json")
     result = catena.run(analysis["name"], **values)
-    assert result.to_dict() == expected
+    assert without_timing(result.to_dict()) == without_timing(expected)
+    if analysis["name"] == "dynamics":
+        return  # its wall time differs from run to run: no byte-for-byte comparison
     # byte for byte, too
     assert result.to_json() == run_cli(cli, *args, "--format", "json")[1]
 
