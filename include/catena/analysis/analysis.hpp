@@ -55,12 +55,8 @@ struct Analysis {
   /// `inputs.large_allowed()`), each naming the value, the estimated time and memory and the
   /// cap; named by parameter key. The binder appends them; `evaluate` throws them.
   std::vector<Issue> size_issues(const Inputs& inputs) const;
-  /// True when some parameter has a cap, or `sized_in_run` (the command line then offers
-  /// --allow-large).
+  /// True when some parameter has a cap (the command line then offers --allow-large).
   bool has_size_caps() const;
-  /// The run itself refuses work above a cap unless `inputs.large_allowed()` (a size that
-  /// follows from several values of a table: dynamics' duration/step × links).
-  bool sized_in_run = false;
   /// Refuses sizes above their caps (size_issues), then run, then describe; then every result field
   /// that is not finite becomes an error diagnostic (diagnose_non_finite), so no front end shows a
   /// silent null. The run's loops poll `inputs.progress()` (catena/core/progress.hpp): they

@@ -336,9 +336,11 @@ std::vector<Issue> Analysis::size_issues(const Inputs& inputs) const {
 }
 
 bool Analysis::has_size_caps() const {
-  return sized_in_run || std::any_of(parameters.begin(), parameters.end(), [](const Parameter& p) {
-           return p.type == ParameterType::kInteger && p.work.cap > 0;
-         });
+  // a table parameter with a cap: a size that follows from several of its values, refused by
+  // the run itself (dynamics: duration/step × links)
+  return std::any_of(parameters.begin(), parameters.end(), [](const Parameter& p) {
+    return (p.type == ParameterType::kInteger || p.type == ParameterType::kTable) && p.work.cap > 0;
+  });
 }
 
 Record Analysis::evaluate(const Inputs& inputs) const {

@@ -38,11 +38,12 @@ using Entry = analysis::InputValue::Entry;
 using K = QuantityKind;
 constexpr double kPi = std::numbers::pi;
 
-// The work cap: link-steps (steps × links) a run may take unless allow_large is given. The
-// drive's step costs about 0.5 µs CPU per link with sprockets on the reference machine
-// (docs/performance.md: 100 µs a step at 200 links), so the cap is about 25 s.
-constexpr double kLinkStepCap = 5e7;
-constexpr double kSecondsPerLinkStep = 0.5e-6;
+// The work model of the table (analysis::Work, docs/reliability.md): link-steps, steps × links,
+// refused above the cap unless allow_large is given. The drive's step costs about 0.5 µs CPU per
+// link with sprockets on the reference machine (docs/performance.md: 100 µs a step at 200
+// links), so the cap is about 25 s; memory is about 200 bytes a node, whatever the steps.
+constexpr double kMaxSamples = 200'000;  // samples of the series
+constexpr analysis::Work kWork{.cap = 50'000'000, .seconds = 0.5e-6, .bytes = 0.0};
 
 std::vector<Parameter> table_fields() {
   using analysis::number;
@@ -94,6 +95,7 @@ const Parameter& table_parameter() {
     t.fields = table_fields();
     t.rows_name = "sprocket";
     t.row_fields = sprocket_fields();
+    t.work = kWork;  // link-steps; refused by parse(), which knows steps × links
     return t;
   }();
   return p;
@@ -378,13 +380,25 @@ Setup parse(const analysis::Inputs& in) {
   // the work cap: steps × links
   if (issues.empty()) {
     const double work = std::ceil(s.duration / s.step) * s.links;
-    if (work > kLinkStepCap && !in.large_allowed()) {
+    if (work > static_cast<double>(kWork.cap) && !in.large_allowed()) {
       issues.push_back({in.present("duration") ? std::string("duration") : at("duration"),
                         shown(s.duration) + " s",
-                        "duration/step × links <= " + shown(kLinkStepCap) + " link-steps (here " +
-                            shown(work) + ", about " + shown(work * kSecondsPerLinkStep) +
+                        "duration/step × links <= " + shown(static_cast<double>(kWork.cap)) +
+                            " link-steps (here " + shown(work) + ", about " +
+                            shown(kWork.estimated_seconds(work)) +
                             " s of CPU; allow_large (--allow-large) runs it anyway)"});
     }
+  }
+  // the series are held until the end (9 numbers a sample, with the JSON's ~0.5 kB): at most
+  // kMaxSamples of them
+  if (issues.empty()) {
+    const double every = std::max(1.0, std::round(s.interval / s.step));
+    const double samples = std::floor(std::round(s.duration / s.step) / every) + 1.0;
+    if (samples > kMaxSamples)
+      issues.push_back({at("output_interval"), shown(s.interval),
+                        "at least duration / " + shown(kMaxSamples) + " = " +
+                            shown(s.duration / kMaxSamples) + " s (at most " + shown(kMaxSamples) +
+                            " samples; here " + shown(samples) + ")"});
   }
   throw_if_any(issues);
   return s;
@@ -648,7 +662,6 @@ analysis::Analysis make() {
   a.docs = "docs/models/dynamics.md";
   a.chain_types = {"roller-iso606"};
   a.formats = {.table = true, .csv = true, .drawing = false};
-  a.sized_in_run = true;  // duration/step × links, checked by parse()
   using analysis::quantity;
   a.parameters = {
       table_parameter(),
