@@ -53,9 +53,20 @@ fs::path folder(const std::string& name) {
   return dir;
 }
 
+// True once process `pid` catches SIGINT (Linux: the SigCgt mask of /proc/<pid>/status).
+bool catches_sigint(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);) {
+    if (line.rfind("SigCgt:", 0) != 0) continue;
+    const unsigned long long mask = std::stoull(line.substr(7), nullptr, 16);
+    return (mask >> (SIGINT - 1)) & 1ULL;
+  }
+  return false;
+}
+
 // Runs catena with `args`, stdout and stderr to files in `dir` (stderr to a pseudo-terminal when
-// `terminal`), sends SIGINT after `wait` (on a terminal: once the progress line shows, or after
-// `wait` at most), and waits for it to end.
+// `terminal`), sends SIGINT once it catches SIGINT and `wait` has passed (on a terminal: once the
+// progress line shows, or after `wait` at most), and waits for it to end.
 Stopped interrupt(const std::vector<std::string>& args, const fs::path& dir,
                   std::chrono::milliseconds wait, bool terminal = false) {
   const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
@@ -92,6 +103,12 @@ Stopped interrupt(const std::vector<std::string>& args, const fs::path& dir,
       }
     });
   }
+  // SIGINT only after the run has installed its handler: a slow start (a sanitizer build, a
+  // loaded machine) would otherwise take the default action and end the process by the signal.
+  // Then `wait` more, so that the signal lands in the middle of the work.
+  const auto give_up = Clock::now() + std::chrono::seconds(20);
+  while (!catches_sigint(pid) && Clock::now() < give_up)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   const auto deadline = Clock::now() + wait;
   while (Clock::now() < deadline) {
     if (terminal) {
