@@ -73,28 +73,7 @@ void BM_DynamicsTwoSprocketDrive(benchmark::State& bs) {
   b.inertia = 0.05;
   b.load_torque = 20.0;
   m.sprockets = {a, b};
-  const double r = a.pitch_radius, v = kOmega * r, pi = std::numbers::pi;
-  State s(n, 2);
-  std::size_t i = 0;
-  auto put = [&](double x, double y, double vx, double vy) {
-    s.x[i] = x;
-    s.y[i] = y;
-    s.vx[i] = vx;
-    s.vy[i] = vy;
-    ++i;
-  };
-  for (int k = 0; k <= kTeeth / 2; ++k) {
-    const double t = pi / 2 + 2 * pi * k / kTeeth;
-    put(r * std::cos(t), r * std::sin(t), -v * std::sin(t), v * std::cos(t));
-  }
-  for (int j = 1; j < kSpan; ++j) put(j * kPitch, -r, v, 0.0);
-  for (int k = 0; k <= kTeeth / 2; ++k) {
-    const double t = -pi / 2 + 2 * pi * k / kTeeth;
-    put(centre + r * std::cos(t), r * std::sin(t), -v * std::sin(t), v * std::cos(t));
-  }
-  for (int j = 1; j < kSpan; ++j) put(centre - j * kPitch, r, -v, 0.0);
-  s.angle = {pi / 2, -pi / 2};
-  s.speed = {kOmega, kOmega};
+  State s = two_sprocket_loop(kTeeth, kSpan, kPitch, a.pitch_radius, kOmega);
   Integrator integ(m, {.step = 1e-4, .theta = 0.6});
   long iterations = 0, steps = 0;
   double penetration = 0.0;

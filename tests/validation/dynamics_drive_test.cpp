@@ -54,30 +54,7 @@ DriveRun run(const Drive& d, double duration, double step) {
   b.inertia = d.inertia;
   b.load_torque = d.load;
   model.sprockets = {a, b};
-  const double r = a.pitch_radius, v = d.omega * r;
-  // Nodes counter-clockwise round the loop: over A from its top seat to its bottom seat, the
-  // bottom span (+x), over B from its bottom seat to its top seat, the top span (−x).
-  State s(n, 2);
-  std::size_t i = 0;
-  auto put = [&](double x, double y, double vx, double vy) {
-    s.x[i] = x;
-    s.y[i] = y;
-    s.vx[i] = vx;
-    s.vy[i] = vy;
-    ++i;
-  };
-  for (int k = 0; k <= z / 2; ++k) {
-    const double t = kPi / 2 + 2 * kPi * k / z;
-    put(r * std::cos(t), r * std::sin(t), -v * std::sin(t), v * std::cos(t));
-  }
-  for (int j = 1; j < m; ++j) put(j * d.pitch, -r, v, 0.0);
-  for (int k = 0; k <= z / 2; ++k) {
-    const double t = -kPi / 2 + 2 * kPi * k / z;
-    put(centre + r * std::cos(t), r * std::sin(t), -v * std::sin(t), v * std::cos(t));
-  }
-  for (int j = 1; j < m; ++j) put(centre - j * d.pitch, r, -v, 0.0);
-  s.angle = {kPi / 2, -kPi / 2};
-  s.speed = {d.omega, d.omega};
+  State s = two_sprocket_loop(z, m, d.pitch, a.pitch_radius, d.omega);
 
   // θ = 0.6: the contacts are evaluated at the θ point without a discrete gradient, and at
   // θ = ½ the stiff, unresolved roller–seat contacts gain energy and the run diverges within

@@ -96,6 +96,14 @@ Sprocket iso606_sprocket(double pitch, double roller_diameter, double inner_widt
                          double centre_x, double centre_y, double contact_stiffness,
                          double contact_damping);
 
+/// The start of a closed loop over two equal sprockets of `teeth` (even) teeth, wheel 0 at the
+/// origin and wheel 1 `span` pitches along +x: teeth + 2·span nodes, every roller seated on the
+/// pitch circle (radius `pitch_radius`) or on a straight span, all at the pitch-line speed of
+/// both wheels turning at `omega`. Counter-clockwise round the loop: over wheel 0 from its top
+/// seat to its bottom seat, the lower span (+x), over wheel 1 from bottom to top, the upper span
+/// (−x); wheel angles π/2 and −π/2 (the polygons in phase).
+State two_sprocket_loop(int teeth, int span, double pitch, double pitch_radius, double omega);
+
 /// One roller's contact with the nearest seat of one sprocket, found in O(1) from the roller's
 /// angle about the wheel centre. Inputs are the roller's position and velocity, the wheel's angle
 /// and speed.

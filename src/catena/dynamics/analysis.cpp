@@ -452,30 +452,7 @@ Result run(const analysis::Inputs& in) {
     wheels.push_back(s);
   }
   model.sprockets = wheels;
-  const double r = wheels[0].pitch_radius, v = d.speed * r;
-  // counter-clockwise round the loop: over wheel 0 from its top seat to its bottom seat, the
-  // lower span (+x), over wheel 1 from bottom to top, the upper span (−x); all at speed v
-  State s(n, 2);
-  std::size_t i = 0;
-  auto put = [&](double x, double y, double vx, double vy) {
-    s.x[i] = x;
-    s.y[i] = y;
-    s.vx[i] = vx;
-    s.vy[i] = vy;
-    ++i;
-  };
-  for (int k = 0; k <= z / 2; ++k) {
-    const double t = kPi / 2 + 2 * kPi * k / z;
-    put(r * std::cos(t), r * std::sin(t), -v * std::sin(t), v * std::cos(t));
-  }
-  for (int j = 1; j < m; ++j) put(j * d.pitch, -r, v, 0.0);
-  for (int k = 0; k <= z / 2; ++k) {
-    const double t = -kPi / 2 + 2 * kPi * k / z;
-    put(centre + r * std::cos(t), r * std::sin(t), -v * std::sin(t), v * std::cos(t));
-  }
-  for (int j = 1; j < m; ++j) put(centre - j * d.pitch, r, -v, 0.0);
-  s.angle = {kPi / 2, -kPi / 2};
-  s.speed = {d.speed, d.speed};
+  State s = two_sprocket_loop(z, m, d.pitch, wheels[0].pitch_radius, d.speed);
   throw_if_any(validate(model, s));
 
   Integrator integ(model, {.step = d.step, .theta = d.theta});

@@ -108,6 +108,34 @@ Sprocket iso606_sprocket(double pitch, double roller_diameter, double inner_widt
   return s;
 }
 
+State two_sprocket_loop(int teeth, int span, double pitch, double pitch_radius, double omega) {
+  constexpr double kPi = std::numbers::pi;
+  const int z = teeth, m = span;
+  const double r = pitch_radius, v = omega * r, centre = m * pitch;
+  State s(static_cast<std::size_t>(z + 2 * m), 2);
+  std::size_t i = 0;
+  auto put = [&](double x, double y, double vx, double vy) {
+    s.x[i] = x;
+    s.y[i] = y;
+    s.vx[i] = vx;
+    s.vy[i] = vy;
+    ++i;
+  };
+  for (int k = 0; k <= z / 2; ++k) {
+    const double t = kPi / 2 + 2 * kPi * k / z;
+    put(r * std::cos(t), r * std::sin(t), -v * std::sin(t), v * std::cos(t));
+  }
+  for (int j = 1; j < m; ++j) put(j * pitch, -r, v, 0.0);
+  for (int k = 0; k <= z / 2; ++k) {
+    const double t = -kPi / 2 + 2 * kPi * k / z;
+    put(centre + r * std::cos(t), r * std::sin(t), -v * std::sin(t), v * std::cos(t));
+  }
+  for (int j = 1; j < m; ++j) put(centre - j * pitch, r, -v, 0.0);
+  s.angle = {kPi / 2, -kPi / 2};
+  s.speed = {omega, omega};
+  return s;
+}
+
 SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, double vy, double angle,
                          double speed) {
   SeatContact c;
