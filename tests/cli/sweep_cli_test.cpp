@@ -152,7 +152,7 @@ TEST(SweepCli, EveryProblemAtOnceWithExitTwoAndNothingWritten) {
   // several analyses in the case and bare keys: which one is meant must be said
   const CliRun which = run("sweep " + kThesis + " --grid teeth=6:8");
   EXPECT_EQ(which.status, 2);
-  EXPECT_NE(which.err.find("naming one of the case's analyses (hinge, hinge_sweep"),
+  EXPECT_NE(which.err.find("naming one of the case's analyses (hinge, hinge-catena, hinge_sweep"),
             std::string::npos)
       << which.err;
 }

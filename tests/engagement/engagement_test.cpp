@@ -8,8 +8,10 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 
 #include "catena/hinge/kinematics.hpp"
+#include "catena/hinge/synthesis.hpp"
 
 namespace catena::engagement {
 namespace {
@@ -288,6 +290,54 @@ TEST(EngagementRolling, ToothNeverPullsOverTheThesisEngagement) {
       const Result r = solve_rolling(rolling(psi, cr));
       for (const Sample& s : r.series) EXPECT_GT(s.fn, 0.0) << psi << " " << cr << " " << s.gamma;
       for (const Diagnostic& d : r.diagnostics) EXPECT_NE(d.code, "engagement.tooth_lift_off");
+    }
+  }
+}
+
+// With F2 < F1 the balance of (28) gives the roller less turn on link 1 than on link 2, so at the
+// end of the engagement link 2's turn exceeds γΣ/2 = γmax: faces made by eq. (6) for γmax cannot
+// hold it, and a designer gives R2 from eq. (6) for a larger turn. The design-turn warning must
+// then compare against that turn, ψ1max·(1 − R1/R2) (eq. 6 solved for γ), not the sprocket's
+// γmax; the contact staying on the arc (ψ1 ≤ ψ1max) is the same limit seen from the plate.
+TEST(EngagementRolling, DesignTurnOfAGivenR2IsEq6SolvedForTheTurn) {
+  RollingInput in = rolling(deg(21.62));
+  in.hinge.plate_radius = 0.010;
+  const double gmax = hinge::gamma_max(in.hinge);  // 45° (z = 8, m = 2)
+  const double psi_max = hinge::psi1_max(0.040, 0.008, 0.010);
+  const auto has = [](const Result& r, const std::string& code) {
+    return std::any_of(r.diagnostics.begin(), r.diagnostics.end(),
+                       [&](const Diagnostic& d) { return d.code == code; });
+  };
+  const auto worst_turn = [](const Result& r) {
+    double w = 0.0;
+    for (const Sample& s : r.series) w = std::max({w, std::abs(s.xi), std::abs(s.gamma - s.xi)});
+    return w;
+  };
+  // faces made for 1.5·γmax = 67.5°: the roller turns past γmax but stays on the arc
+  in.hinge.roller_radius = *hinge::r2_eq6(0.040, 0.008, 0.010, 1.5 * gmax);
+  const Result wide = solve_rolling(in);
+  ASSERT_GT(worst_turn(wide), gmax);  // the sprocket's γmax is exceeded ...
+  EXPECT_LT(worst_turn(wide), 1.5 * gmax);
+  EXPECT_FALSE(has(wide, "engagement.beyond_design_turn"));  // ... but not the faces' turn
+  EXPECT_FALSE(has(wide, "engagement.contact_off_arc"));
+  // faces made for 0.5·γmax: the warning names that turn as its limit
+  in.hinge.roller_radius = *hinge::r2_eq6(0.040, 0.008, 0.010, 0.5 * gmax);
+  const Result narrow = solve_rolling(in);
+  bool found = false;
+  for (const Diagnostic& d : narrow.diagnostics) {
+    if (d.code != "engagement.beyond_design_turn") continue;
+    found = true;
+    EXPECT_NEAR(d.limit, 0.5 * gmax, kAngleTol);
+    EXPECT_NEAR(d.limit, psi_max * (1.0 - 0.010 / in.hinge.roller_radius), kAngleTol);
+    EXPECT_EQ(d.value, worst_turn(narrow));
+  }
+  EXPECT_TRUE(found);
+  EXPECT_TRUE(has(narrow, "engagement.contact_off_arc"));
+  // R2 from eq. (6) (not given): the limit stays the sprocket's γmax
+  in.hinge.roller_radius = 0.0;
+  for (const Diagnostic& d : solve_rolling(in).diagnostics) {
+    if (d.code == "engagement.beyond_design_turn") {
+      EXPECT_EQ(d.limit, gmax);
     }
   }
 }

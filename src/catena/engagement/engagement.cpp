@@ -427,7 +427,11 @@ Result solve_rolling(const RollingInput& in) {
       rg.to = r.series[++i].gamma;
     r.roller_turns.push_back(rg);
   }
-  const double design_turn = hinge::gamma_max(in.hinge);
+  // The turn the faces were designed for: eq. (6) makes R2 for gammaMax = 180 deg*m/z (eq. 12);
+  // a given R2 was made for its own turn, eq. (6) solved for it: gamma = psi1max*(1 - R1/R2).
+  const bool given_r2 = in.hinge.roller_radius > 0.0 && std::isfinite(psi_max);
+  const double design_turn =
+      given_r2 ? psi_max * (1.0 - in.hinge.plate_radius / r2) : hinge::gamma_max(in.hinge);
   if (unsolved) {
     r.diagnostics.push_back({Diagnostic::Severity::kInfeasible, "engagement.no_equilibrium",
                              "no roller turn xi balances the moments of (28) at some gamma", 0, 0});
@@ -446,10 +450,13 @@ Result solve_rolling(const RollingInput& in) {
                              0.0, 0.0});
   }
   if (worst_turn > design_turn * (1.0 + 1e-12)) {
-    r.diagnostics.push_back({Diagnostic::Severity::kWarning, "engagement.beyond_design_turn",
-                             "the roller turns relative to a plate beyond the hinge's gamma_max = "
-                             "180 deg*m/z (eq. 12) it was designed for",
-                             worst_turn, design_turn, "rad"});
+    r.diagnostics.push_back(
+        {Diagnostic::Severity::kWarning, "engagement.beyond_design_turn",
+         given_r2 ? "the roller turns relative to a plate beyond the turn psi1_max*(1 - R1/R2) "
+                    "that the given R2 was designed for (eq. 6 solved for the turn)"
+                  : "the roller turns relative to a plate beyond the hinge's gamma_max = "
+                    "180 deg*m/z (eq. 12) it was designed for",
+         worst_turn, design_turn, "rad"});
   }
   if (worst_psi > psi_max) {
     r.diagnostics.push_back({Diagnostic::Severity::kInfeasible, "engagement.contact_off_arc",
