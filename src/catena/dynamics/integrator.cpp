@@ -124,10 +124,15 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     double torque = 0.0;
     double wdiag = driven ? wheel.inertia / (h * th) : 0.0;
     if (driven && jacobian) std::fill(bcol_[w].begin(), bcol_[w].end(), Vec2{});
+    // seat_contact's own first test, inline: most rollers are clear of a wheel, and the call
+    // (its result zeroed, the velocity formed) cost more than the test.
+    const double reach = wheel.pitch_radius + wheel.roller_radius;
     for (std::size_t i = 0; i < n; ++i) {
-      if (model.is_pinned(i)) continue;
       const double qx = (1.0 - th) * s.x[i] + th * ux_[i];
       const double qy = (1.0 - th) * s.y[i] + th * uy_[i];
+      const double rx = qx - wheel.centre_x, ry = qy - wheel.centre_y;
+      if (rx * rx + ry * ry > reach * reach) continue;
+      if (model.is_pinned(i)) continue;
       const double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
       const SeatContact sc = seat_contact(wheel, qx, qy, vx, vy, psi, omega);
       if (!sc.active) continue;
