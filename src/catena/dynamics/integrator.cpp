@@ -229,16 +229,19 @@ StepReport Integrator::step(const Model& model, State& s) {
   StepReport report;
   double norm2 = assemble(model, s, true);
   for (int iter = 1; iter <= options_.max_iterations; ++iter) {
-    report.solve = solver_.solve(delta_);
+    report.solve = solver_.factor();
     report.iterations = iter;
     if (report.solve != SolveStatus::kSolved) return report;
-    if (nd > 0) {
+    if (nd == 0) {
+      solver_.substitute(solver_.rhs, delta_);
+    } else {
       // The driven wheels border the chain's matrix: [A B; Bᵀ d] [δu; δψ] = [r; r_w]. Solve
-      // A W = B (one more O(N) substitution per wheel, same factors), then the small Schur
-      // complement (d − Bᵀ W) δψ = r_w − Bᵀ δu₀, and δu = δu₀ − W δψ.
-      for (std::size_t a = 0; a < nd; ++a) {
+      // A W = B (one more O(N) substitution per wheel, same factors; the first rides along with
+      // δu₀'s), then the small Schur complement (d − Bᵀ W) δψ = r_w − Bᵀ δu₀, and δu = δu₀ − W δψ.
+      solver_.substitute(solver_.rhs, delta_, bcol_[driven_[0]], wsol_[driven_[0]]);
+      for (std::size_t a = 1; a < nd; ++a) {
         const std::size_t w = driven_[a];
-        solver_.substitute(bcol_[w], wsol_[w]);  // the same factors as δu₀'s solve
+        solver_.substitute(bcol_[w], wsol_[w]);
       }
       for (std::size_t a = 0; a < nd; ++a) {
         const std::vector<Vec2>& ba = bcol_[driven_[a]];
