@@ -57,6 +57,11 @@ class BlockTridiagonalSolver {
   SolveStatus factor();
   /// Solves for another right-hand side b with the last successful factor(); b may alias rhs.
   void substitute(std::span<const Vec2> b, std::span<Vec2> x);
+  /// Two right-hand sides in one pass over the factors: the same arithmetic as two calls of
+  /// substitute (bit for bit), but the two recurrences run side by side (each row's chain of
+  /// dependent 2×2 products is latency-bound; two independent ones fill the pipeline).
+  void substitute(std::span<const Vec2> b, std::span<Vec2> x, std::span<const Vec2> b2,
+                  std::span<Vec2> x2);
 
  private:
   std::size_t n_;
@@ -64,7 +69,7 @@ class BlockTridiagonalSolver {
   // the factors: S_i⁻¹ and C'_i = S_i⁻¹ U_i; for a cyclic system Q = T⁻¹ W, (I + Zᵀ Q)⁻¹ and
   // G⁻¹ L_0; y_ is the substitution's workspace
   std::vector<Mat2> s_inv_, c_prime_, w_;
-  std::vector<Vec2> y_;
+  std::vector<Vec2> y_, y2_;
   Mat2 cap_inv_, h_;
 };
 

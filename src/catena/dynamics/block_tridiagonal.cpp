@@ -22,8 +22,9 @@ Mat2 operator+(const Mat2& p, const Mat2& q) {
 Vec2 operator-(Vec2 p, Vec2 q) { return {p.x - q.x, p.y - q.y}; }
 Vec2 operator+(Vec2 p, Vec2 q) { return {p.x + q.x, p.y + q.y}; }
 
-// The inverse of a 2×2 block; false when it is singular relative to its own size.
-bool invert(const Mat2& m, Mat2& inv) {
+// The inverse of a 2×2 block; false when it is singular relative to its own size. Inline: it is
+// called once per block row of every factorisation, on the recurrence's critical path.
+inline bool invert(const Mat2& m, Mat2& inv) {
   const double det = m.a * m.d - m.b * m.c;
   const double scale = std::max(std::abs(m.a) + std::abs(m.b), std::abs(m.c) + std::abs(m.d));
   if (!std::isfinite(det) || !(std::abs(det) > 1e-300) || std::abs(det) <= 1e-14 * scale * scale) {
@@ -45,7 +46,8 @@ BlockTridiagonalSolver::BlockTridiagonalSolver(std::size_t n, bool cyclic)
       s_inv_(n),
       c_prime_(n),
       w_(n),
-      y_(n) {
+      y_(n),
+      y2_(n) {
   if (cyclic && n < 3) throw std::invalid_argument("a cyclic block system needs n >= 3");
   if (n < 1) throw std::invalid_argument("a block system needs n >= 1");
 }
@@ -72,29 +74,34 @@ SolveStatus BlockTridiagonalSolver::factor() {
     const Mat2 m = d0_inv * lower[0];
     h_ = {-m.a, -m.b, -m.c, -m.d};  // G⁻¹ L_0 = −D_0⁻¹ L_0
   }
-  auto t_diag = [&](std::size_t i) -> Mat2 {
-    if (!cyclic_) return diag[i];
-    if (i == 0) return diag[0] + diag[0];
-    if (i == last) return diag[last] + upper[last] * d0_inv * lower[0];
-    return diag[i];
-  };
-  auto w_block = [&](std::size_t i) -> Mat2 {
-    if (i == 0) return {-diag[0].a, -diag[0].b, -diag[0].c, -diag[0].d};
-    if (i == last) return upper[last];
-    return {};
-  };
-
-  // Block LU of T; for a cyclic system the forward sweep of T Q = W rides along.
-  if (!invert(t_diag(0), s_inv_[0])) return SolveStatus::kSingularPivot;
-  if (n > 1) c_prime_[0] = s_inv_[0] * upper[0];
-  if (cyclic_) w_[0] = s_inv_[0] * w_block(0);
-  for (std::size_t i = 1; i < n; ++i) {
-    const Mat2 s = t_diag(i) - lower[i] * c_prime_[i - 1];
-    if (!invert(s, s_inv_[i])) return SolveStatus::kSingularPivot;
-    if (i < last) c_prime_[i] = s_inv_[i] * upper[i];
-    if (cyclic_) w_[i] = s_inv_[i] * (w_block(i) - lower[i] * w_[i - 1]);
+  // Block LU of T; for a cyclic system the forward sweep of T Q = W rides along. T's diagonal is
+  // A's but for T_00 and T_{n−1,n−1}; W is −D_0 in row 0, U_{n−1} in row n−1 and zero between.
+  if (!cyclic_) {
+    if (!invert(diag[0], s_inv_[0])) return SolveStatus::kSingularPivot;
+    if (n > 1) c_prime_[0] = s_inv_[0] * upper[0];
+    for (std::size_t i = 1; i < n; ++i) {
+      if (!invert(diag[i] - lower[i] * c_prime_[i - 1], s_inv_[i])) {
+        return SolveStatus::kSingularPivot;
+      }
+      if (i < last) c_prime_[i] = s_inv_[i] * upper[i];
+    }
+    return SolveStatus::kSolved;
   }
-  if (!cyclic_) return SolveStatus::kSolved;
+  if (!invert(diag[0] + diag[0], s_inv_[0])) return SolveStatus::kSingularPivot;
+  c_prime_[0] = s_inv_[0] * upper[0];
+  w_[0] = s_inv_[0] * Mat2{-diag[0].a, -diag[0].b, -diag[0].c, -diag[0].d};
+  for (std::size_t i = 1; i < last; ++i) {
+    if (!invert(diag[i] - lower[i] * c_prime_[i - 1], s_inv_[i])) {
+      return SolveStatus::kSingularPivot;
+    }
+    c_prime_[i] = s_inv_[i] * upper[i];
+    w_[i] = s_inv_[i] * (Mat2{} - lower[i] * w_[i - 1]);
+  }
+  const Mat2 t_last = diag[last] + upper[last] * d0_inv * lower[0];
+  if (!invert(t_last - lower[last] * c_prime_[last - 1], s_inv_[last])) {
+    return SolveStatus::kSingularPivot;
+  }
+  w_[last] = s_inv_[last] * (upper[last] - lower[last] * w_[last - 1]);
   for (std::size_t k = n - 1; k-- > 0;) w_[k] = w_[k] - c_prime_[k] * w_[k + 1];
   // Sherman–Morrison–Woodbury: x = y − Q (I + Zᵀ Q)⁻¹ Zᵀ y, Zᵀ v = v_0 + G⁻¹ L_0 v_{n−1}.
   const Mat2 capacitance = Mat2{1.0, 0.0, 0.0, 1.0} + w_[0] + h_ * w_[last];
@@ -114,6 +121,37 @@ void BlockTridiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec2>
   }
   const Vec2 z = cap_inv_ * (y_[0] + h_ * y_[n - 1]);
   for (std::size_t i = 0; i < n; ++i) x[i] = y_[i] - w_[i] * z;
+}
+
+void BlockTridiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec2> x,
+                                        std::span<const Vec2> b2, std::span<Vec2> x2) {
+  if (x.size() != n_ || b.size() != n_ || x2.size() != n_ || b2.size() != n_) {
+    throw std::invalid_argument("span of the wrong size");
+  }
+  const std::size_t n = n_;
+  y_[0] = s_inv_[0] * b[0];
+  y2_[0] = s_inv_[0] * b2[0];
+  for (std::size_t i = 1; i < n; ++i) {
+    y_[i] = s_inv_[i] * (b[i] - lower[i] * y_[i - 1]);
+    y2_[i] = s_inv_[i] * (b2[i] - lower[i] * y2_[i - 1]);
+  }
+  for (std::size_t k = n - 1; k-- > 0;) {
+    y_[k] = y_[k] - c_prime_[k] * y_[k + 1];
+    y2_[k] = y2_[k] - c_prime_[k] * y2_[k + 1];
+  }
+  if (!cyclic_) {
+    for (std::size_t i = 0; i < n; ++i) {
+      x[i] = y_[i];
+      x2[i] = y2_[i];
+    }
+    return;
+  }
+  const Vec2 z = cap_inv_ * (y_[0] + h_ * y_[n - 1]);
+  const Vec2 z2 = cap_inv_ * (y2_[0] + h_ * y2_[n - 1]);
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = y_[i] - w_[i] * z;
+    x2[i] = y2_[i] - w_[i] * z2;
+  }
 }
 
 }  // namespace catena::dynamics

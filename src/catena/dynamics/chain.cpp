@@ -156,10 +156,12 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
   // to the arc there (the ISO flank arc re is several pitches: nearly straight over a roller).
   // γ is the angle of e = q − C from the inward radial, towards the tangent t = (−sin σ, cos σ).
   const double e_in = -(ex * cs + ey * sn), e_t = -ex * sn + ey * cs;
-  const double gamma = std::atan2(e_t, e_in);
   const double half = 0.5 * w.seating_angle;
+  const double ch = std::cos(half), sh_abs = std::sin(half);
   double g = 0.0;
-  if (std::abs(gamma) <= half) {
+  // |γ| ≤ α/2 with γ = atan2(e_t, e_in) and α/2 < π/2, without the atan2: e lies within α/2 of
+  // the inward radial iff |e_t| cos(α/2) ≤ e_in sin(α/2) with e_in ≥ 0 (γ = 0 at e = 0).
+  if (e_in >= 0.0 && std::abs(e_t) * ch <= e_in * sh_abs) {
     const double dist = std::sqrt(ex * ex + ey * ey);
     if (!(dist > 0.0)) return c;
     g = dist + w.roller_radius - w.seat_radius;
@@ -168,8 +170,8 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
     c.curvature = 1.0 / dist;
   } else {
     // the flank's normal m at the arc's end: the inward radial turned by ±α/2 towards t
-    const double side = gamma > 0.0 ? 1.0 : -1.0;
-    const double ch = std::cos(half), sh = side * std::sin(half);
+    const double side = e_t > 0.0 ? 1.0 : -1.0;
+    const double sh = side * sh_abs;
     c.nx = -cs * ch - sn * sh;
     c.ny = -sn * ch + cs * sh;
     g = ex * c.nx + ey * c.ny + w.roller_radius - w.seat_radius;

@@ -124,10 +124,15 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     double torque = 0.0;
     double wdiag = driven ? wheel.inertia / (h * th) : 0.0;
     if (driven && jacobian) std::fill(bcol_[w].begin(), bcol_[w].end(), Vec2{});
+    // seat_contact's own first test, inline: most rollers are clear of a wheel, and the call
+    // (its result zeroed, the velocity formed) cost more than the test.
+    const double reach = wheel.pitch_radius + wheel.roller_radius;
     for (std::size_t i = 0; i < n; ++i) {
-      if (model.is_pinned(i)) continue;
       const double qx = (1.0 - th) * s.x[i] + th * ux_[i];
       const double qy = (1.0 - th) * s.y[i] + th * uy_[i];
+      const double rx = qx - wheel.centre_x, ry = qy - wheel.centre_y;
+      if (rx * rx + ry * ry > reach * reach) continue;
+      if (model.is_pinned(i)) continue;
       const double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
       const SeatContact sc = seat_contact(wheel, qx, qy, vx, vy, psi, omega);
       if (!sc.active) continue;
@@ -224,16 +229,19 @@ StepReport Integrator::step(const Model& model, State& s) {
   StepReport report;
   double norm2 = assemble(model, s, true);
   for (int iter = 1; iter <= options_.max_iterations; ++iter) {
-    report.solve = solver_.solve(delta_);
+    report.solve = solver_.factor();
     report.iterations = iter;
     if (report.solve != SolveStatus::kSolved) return report;
-    if (nd > 0) {
+    if (nd == 0) {
+      solver_.substitute(solver_.rhs, delta_);
+    } else {
       // The driven wheels border the chain's matrix: [A B; Bᵀ d] [δu; δψ] = [r; r_w]. Solve
-      // A W = B (one more O(N) substitution per wheel, same factors), then the small Schur
-      // complement (d − Bᵀ W) δψ = r_w − Bᵀ δu₀, and δu = δu₀ − W δψ.
-      for (std::size_t a = 0; a < nd; ++a) {
+      // A W = B (one more O(N) substitution per wheel, same factors; the first rides along with
+      // δu₀'s), then the small Schur complement (d − Bᵀ W) δψ = r_w − Bᵀ δu₀, and δu = δu₀ − W δψ.
+      solver_.substitute(solver_.rhs, delta_, bcol_[driven_[0]], wsol_[driven_[0]]);
+      for (std::size_t a = 1; a < nd; ++a) {
         const std::size_t w = driven_[a];
-        solver_.substitute(bcol_[w], wsol_[w]);  // the same factors as δu₀'s solve
+        solver_.substitute(bcol_[w], wsol_[w]);
       }
       for (std::size_t a = 0; a < nd; ++a) {
         const std::vector<Vec2>& ba = bcol_[driven_[a]];

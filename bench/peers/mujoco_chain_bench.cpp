@@ -1,0 +1,243 @@
+// Peer benchmark (issue 21, docs/performance.md): the same free 200-link 12B loop as
+// BM_DynamicsLoopStep/200 (p = 19.05 mm, 0.0238 kg a pin, running at 5 m/s on a circle under
+// gravity in the plane, step 1e-4 s), stepped by Catena and by MuJoCo in the same run, CPU time
+// per step of each side by side and their ratio as counters.
+//
+// What is compared, honestly: the same masses, pitch, speed, gravity and step, but not the same
+// mechanics. Catena's links are stiff axial springs (5e7 N/m, 2 N·s/m) between point masses,
+// integrated by the implicit midpoint rule with Newton's method on the cyclic block-tridiagonal
+// Jacobian (the free loop: no sprockets, no contact). MuJoCo's chain is its natural model of one:
+// rigid links in joint coordinates, four kinematic chains of 50 links (a planar floating root and
+// 49 hinges each: MJCF cannot nest 200 bodies), the loop closed by four `connect` equality
+// constraints handled by its soft-constraint solver (Newton solver and semi-implicit Euler,
+// MuJoCo's defaults; the constraints' solref time constant 2 h, the stiffest MuJoCo advises: with
+// the default 0.02 s the closure let go by more than a pitch within 0.6 s under the loop's
+// tension). An axial spring of 5e7 N/m is not an option there: its explicit spring force at h =
+// 1e-4 s is far beyond the stability limit (ω h ≈ 9 ≫ 2). Each pin's mass sits on its hinge axis as
+// in Catena, with a small rotational inertia (1e-3 m p²) so that a chain's last hinge has a
+// joint-space mass. No contacts on either side (no geoms in MuJoCo).
+//
+// Built only when MuJoCo's headers and library are found (libmujoco-dev); not installed by
+// scripts/setup.sh.
+#include <benchmark/benchmark.h>
+#include <mujoco/mujoco.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <ctime>
+#include <memory>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "catena/dynamics/integrator.hpp"
+
+namespace {
+
+using namespace catena::dynamics;
+
+constexpr double kPitch = 0.01905;    // [m]
+constexpr double kNodeMass = 0.0238;  // [kg] 1.25 kg/m × p
+constexpr double kStiffness = 5e7;    // [N/m]
+constexpr double kSpeed = 5.0;        // [m/s]
+constexpr double kStep = 1e-4;        // [s]
+constexpr int kBatch = 50;            // steps timed together (the CPU clock is a system call)
+
+double cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// The MJCF of a closed planar loop of n rigid links of pitch p: at qpos0 the links form the
+// regular n-gon of side p through (R, 0), counter-clockwise; body i sits on pin i with its hinge
+// there and its link along its local x axis. MJCF's parser refuses elements nested more than
+// about 100 deep, so the loop is kSegments kinematic chains of n / kSegments links, each with
+// its own planar floating root, and kSegments `connect` constraints tie each chain's far end to
+// the next chain's root pin.
+constexpr int kSegments = 4;
+
+double pin_angle(int i, int n) { return 2.0 * std::numbers::pi * i / n; }
+double link_direction(int i, int n) {  // pin i → pin i + 1
+  return std::numbers::pi / 2.0 + std::numbers::pi * (2 * i + 1) / n;
+}
+
+std::string loop_mjcf(int n) {
+  const double pi = std::numbers::pi;
+  const double radius = kPitch / (2.0 * std::sin(pi / n));
+  const double inertia = 1e-3 * kNodeMass * kPitch * kPitch;
+  const int per = n / kSegments;
+  std::ostringstream x;
+  x.precision(17);
+  x << "<mujoco model=\"chain_loop\">\n"
+    << "  <compiler angle=\"radian\"/>\n"
+    << "  <option timestep=\"" << kStep << "\" gravity=\"0 -9.81 0\"/>\n"
+    << "  <worldbody>\n";
+  std::ostringstream in;
+  in.precision(17);
+  in << "<inertial pos=\"0 0 0\" mass=\"" << kNodeMass << "\" diaginertia=\"" << inertia << " "
+     << inertia << " " << inertia << "\"/>";
+  for (int sgm = 0; sgm < kSegments; ++sgm) {
+    const int r = sgm * per;
+    x << "<body name=\"b" << r << "\" pos=\"" << radius * std::cos(pin_angle(r, n)) << " "
+      << radius * std::sin(pin_angle(r, n)) << " 0\" euler=\"0 0 " << link_direction(r, n)
+      << "\"><joint type=\"slide\" axis=\"1 0 0\"/><joint type=\"slide\" axis=\"0 1 0\"/>"
+      << "<joint type=\"hinge\" axis=\"0 0 1\"/>" << in.str() << "\n";
+    for (int i = r + 1; i < r + per; ++i) {
+      x << "<body name=\"b" << i << "\" pos=\"" << kPitch << " 0 0\" euler=\"0 0 " << 2.0 * pi / n
+        << "\"><joint type=\"hinge\" axis=\"0 0 1\"/>" << in.str() << "\n";
+    }
+    for (int i = 0; i < per; ++i) x << "</body>";
+    x << "\n";
+  }
+  x << "  </worldbody>\n  <equality>\n";
+  for (int sgm = 0; sgm < kSegments; ++sgm) {
+    x << "    <connect body1=\"b" << (sgm + 1) * per - 1 << "\" body2=\"b" << ((sgm + 1) * per) % n
+      << "\" anchor=\"" << kPitch << " 0 0\" solref=\"" << 2.0 * kStep << " 1\"/>\n";
+  }
+  x << "  </equality>\n</mujoco>\n";
+  return x.str();
+}
+
+struct MjDeleter {
+  void operator()(mjModel* m) const { mj_deleteModel(m); }
+  void operator()(mjData* d) const { mj_deleteData(d); }
+};
+
+// The loop's closure: the largest gap between a chain's far end and the next chain's root [m].
+double closure_gap(const mjModel* m, mjData* d, int n) {
+  mj_kinematics(m, d);
+  const int per = n / kSegments;
+  double worst = 0.0;
+  for (int sgm = 0; sgm < kSegments; ++sgm) {
+    const int last = (sgm + 1) * per, root = ((sgm + 1) * per) % n + 1;  // body 0 is the world
+    const double* xm = d->xmat + 9 * last;
+    const double* xp = d->xpos + 3 * last;
+    const double ex = xp[0] + xm[0] * kPitch - d->xpos[3 * root];
+    const double ey = xp[1] + xm[3] * kPitch - d->xpos[3 * root + 1];
+    const double ez = xp[2] + xm[6] * kPitch - d->xpos[3 * root + 2];
+    worst = std::max(worst, std::sqrt(ex * ex + ey * ey + ez * ez));
+  }
+  return worst;
+}
+
+void BM_PeerChainLoopCatenaVsMuJoCo(benchmark::State& bs) {
+  const int n = static_cast<int>(bs.range(0));
+  if (n % kSegments != 0) {
+    bs.SkipWithError("the number of links must be a multiple of kSegments");
+    return;
+  }
+  const auto nn = static_cast<std::size_t>(n);
+  const double pi = std::numbers::pi;
+
+  // Catena: as BM_DynamicsLoopStep (links 5e-4 longer than p at the start: a little tension).
+  Model cm = uniform_chain(nn, true, kPitch, kNodeMass, kStiffness, 2.0, false);
+  cm.gravity_y = -9.81;
+  const double cr = 1.0005 * kPitch / (2.0 * std::sin(pi / n));
+  State cs(nn);
+  for (std::size_t i = 0; i < nn; ++i) {
+    const double a = 2.0 * pi * static_cast<double>(i) / n;
+    cs.x[i] = cr * std::cos(a);
+    cs.y[i] = cr * std::sin(a);
+    cs.vx[i] = -kSpeed * std::sin(a);
+    cs.vy[i] = kSpeed * std::cos(a);
+  }
+  Integrator integ(cm, {.step = kStep});
+
+  // MuJoCo: the MJCF through a one-file virtual file system.
+  const std::string xml = loop_mjcf(n);
+  auto vfs = std::make_unique<mjVFS>();
+  mj_defaultVFS(vfs.get());
+  if (mj_makeEmptyFileVFS(vfs.get(), "loop.xml", static_cast<int>(xml.size())) != 0) {
+    bs.SkipWithError("MuJoCo VFS");
+    return;
+  }
+  std::memcpy(vfs->filedata[mj_findFileVFS(vfs.get(), "loop.xml")], xml.data(), xml.size());
+  char error[1000] = "";
+  std::unique_ptr<mjModel, MjDeleter> mm(mj_loadXML("loop.xml", vfs.get(), error, sizeof error));
+  mj_deleteVFS(vfs.get());
+  if (!mm) {
+    bs.SkipWithError((std::string("MuJoCo could not load the loop: ") + error).c_str());
+    return;
+  }
+  std::unique_ptr<mjData, MjDeleter> md(mj_makeData(mm.get()));
+  // Rigid rotation at ω = v / R: each chain's root pin moves at v along the circle; its slides
+  // act along its reference axes (turned by its first link's direction), so the velocity goes in
+  // that frame; each root's hinge turns at ω, the relative hinges are still.
+  const double radius = kPitch / (2.0 * std::sin(pi / n));
+  const int per = n / kSegments;
+  for (int sgm = 0; sgm < kSegments; ++sgm) {
+    const int r = sgm * per;
+    const double a = pin_angle(r, n), phi = link_direction(r, n);
+    const double vx = -kSpeed * std::sin(a), vy = kSpeed * std::cos(a);
+    const int dof = sgm * (per + 2);  // 3 root dofs and per − 1 hinges a chain
+    md->qvel[dof] = std::cos(phi) * vx + std::sin(phi) * vy;
+    md->qvel[dof + 1] = -std::sin(phi) * vx + std::cos(phi) * vy;
+    md->qvel[dof + 2] = kSpeed / radius;
+  }
+  const double gap0 = closure_gap(mm.get(), md.get(), n);
+
+  double catena_cpu = 0.0, mujoco_cpu = 0.0;
+  long steps = 0;
+  for (auto _ : bs) {
+    const double t0 = cpu_seconds();
+    for (int k = 0; k < kBatch; ++k) {
+      if (!integ.step(cm, cs).converged) {
+        bs.SkipWithError("Catena: a step did not converge");
+        return;
+      }
+    }
+    const double t1 = cpu_seconds();
+    for (int k = 0; k < kBatch; ++k) mj_step(mm.get(), md.get());
+    const double t2 = cpu_seconds();
+    catena_cpu += t1 - t0;
+    mujoco_cpu += t2 - t1;
+    steps += kBatch;
+    benchmark::DoNotOptimize(cs.x.data());
+    benchmark::DoNotOptimize(md->qpos);
+  }
+
+  // Both stable: every coordinate finite; Catena's links within 1 % of the pitch, MuJoCo's loop
+  // closed to within 1 % of the pitch (its links are rigid by construction).
+  double strain = 0.0;
+  for (std::size_t j = 0; j < nn; ++j) {
+    const std::size_t b = (j + 1) % nn;
+    const double l = std::hypot(cs.x[b] - cs.x[j], cs.y[b] - cs.y[j]);
+    strain = std::isfinite(l) ? std::max(strain, std::abs(l / kPitch - 1.0)) : INFINITY;
+  }
+  bool mj_finite = true;
+  for (int i = 0; i < mm->nq; ++i) mj_finite = mj_finite && std::isfinite(md->qpos[i]);
+  const double gap = mj_finite ? closure_gap(mm.get(), md.get(), n) : INFINITY;
+  if (!(strain < 0.01)) bs.SkipWithError("Catena's loop is not stable (link strain > 1 %)");
+  if (!(gap < 0.01 * kPitch)) bs.SkipWithError("MuJoCo's loop is not stable (closure gap > 1 % p)");
+
+  // and both still carry the loop's motion: kinetic energy ½ Σ m v² (Catena) and ½ q̇ᵀ M q̇
+  // (MuJoCo), about 59.5 J at the start (200 × 0.0238 kg at 5 m/s)
+  double catena_kinetic = 0.0;
+  for (std::size_t i = 0; i < nn; ++i) {
+    catena_kinetic += 0.5 * kNodeMass * (cs.vx[i] * cs.vx[i] + cs.vy[i] * cs.vy[i]);
+  }
+  std::vector<mjtNum> mv(static_cast<std::size_t>(mm->nv));
+  mj_forward(mm.get(), md.get());
+  mj_mulM(mm.get(), md.get(), mv.data(), md->qvel);
+  double mujoco_kinetic = 0.0;
+  for (int i = 0; i < mm->nv; ++i)
+    mujoco_kinetic += 0.5 * md->qvel[i] * mv[static_cast<std::size_t>(i)];
+  bs.counters["catena_kinetic_J"] = catena_kinetic;
+  bs.counters["mujoco_kinetic_J"] = mujoco_kinetic;
+  const double us_per_step = 1e6 / static_cast<double>(steps);
+  bs.counters["catena_us_per_step"] = catena_cpu * us_per_step;
+  bs.counters["mujoco_us_per_step"] = mujoco_cpu * us_per_step;
+  bs.counters["mujoco_over_catena"] = mujoco_cpu / catena_cpu;
+  bs.counters["simulated_s"] = kStep * static_cast<double>(steps);
+  bs.counters["catena_max_strain"] = strain;
+  bs.counters["mujoco_gap_um"] = 1e6 * gap;
+  bs.counters["mujoco_gap0_um"] = 1e6 * gap0;
+  bs.counters["mujoco_constraint_rows"] = md->nefc;
+  bs.SetLabel(std::string("MuJoCo ") + mj_versionString());
+}
+BENCHMARK(BM_PeerChainLoopCatenaVsMuJoCo)->Arg(200)->Unit(benchmark::kMicrosecond)->MinTime(4.0);
+
+}  // namespace
