@@ -47,7 +47,8 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
       dpsi_(model.sprockets.size()),
       wres_(model.sprockets.size()),
       wdiag_(model.sprockets.size()),
-      schur_(model.sprockets.size() * model.sprockets.size()) {
+      schur_(model.sprockets.size() * model.sprockets.size()),
+      torque_(model.sprockets.size()) {
   for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
     if (model.sprockets[w].driver) continue;
     driven_.push_back(w);
@@ -157,6 +158,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       bcol_[w][i] = {-dt.x - hf * sc.ny, -dt.y + hf * sc.nx};
       wdiag += tx * dt.x + ty * dt.y - hf * (sc.nx * cx + sc.ny * cy);
     }
+    torque_[w] = torque;
     if (driven) {
       const double residual = wheel.inertia / (h * th) * (psi1_[w] - s.angle[w] - h * s.speed[w]) -
                               h * (torque - wheel.load_torque);
