@@ -83,6 +83,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
         -(inertia * (dx - h * s.vx[i]) + model.drag * m * dx - h * m * model.gravity_x),
         -(inertia * (dy - h * s.vy[i]) + model.drag * m * dy - h * m * model.gravity_y)};
   }
+  for (const NodeLoad& f : model.loads) {  // constant: no Jacobian term
+    solver_.rhs[f.node].x += h * f.fx;
+    solver_.rhs[f.node].y += h * f.fy;
+  }
   for (std::size_t j = 0; j < model.links(); ++j) {
     const std::size_t a = j, b = (j + 1) % n;
     const double d0x = s.x[b] - s.x[a], d0y = s.y[b] - s.y[a];
