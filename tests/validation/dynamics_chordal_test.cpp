@@ -1,4 +1,5 @@
-// Polygonal action (issue 21 validation (1); docs/models/dynamics.md, "Open"): a MEASUREMENT,
+// Polygonal action (issue 21 validation (1); docs/models/dynamics.md, "Polygonal action"): a
+// MEASUREMENT,
 // not a validation — it does not pass yet, so it is disabled and asserts nothing.
 //
 // One driver sprocket at constant ω winds in a straight span whose far end is held by a constant
@@ -8,7 +9,8 @@
 // maximum with a roller at the top. Run it with
 //   CHORDAL_Z=12 CHORDAL_CLEAR=1 build/ci/tests/catena_tests
 //     --gtest_filter=DynamicsChordal.* --gtest_also_run_disabled_tests
-// (CHORDAL_CLEAR=1: the ISO seat's clearance; 0: the seat radius set to the roller's; CHORDAL_V
+// (CHORDAL_CLEAR=1: the ISO seat's clearance; 0: the seat radius set to the roller's and the
+// seats spaced at the links' rest length; CHORDAL_V
 // chain speed [m/s], CHORDAL_C link damping, CHORDAL_F end force, CHORDAL_H step, CHORDAL_CC
 // contact damping, CHORDAL_TH θ, CHORDAL_D duration, CHORDAL_TRACE=1 a trace every 50 steps).
 #include <gtest/gtest.h>
@@ -55,10 +57,14 @@ struct Result {
 Result run(const Chordal& d, int bins) {
   const int z = d.teeth, m = d.span_links, wrap = z / 2;
   const auto n = static_cast<std::size_t>(m + 1 + wrap);
-  Model model = uniform_chain(n, false, d.pitch - d.force / d.stiffness, d.node_mass, d.stiffness,
-                              d.damping, false);
-  Sprocket w = iso606_sprocket(d.pitch, d.roller, d.width, z, 0.0, 0.0, d.contact_stiffness,
-                               d.contact_damping);
+  const double rest = d.pitch - d.force / d.stiffness;
+  Model model = uniform_chain(n, false, rest, d.node_mass, d.stiffness, d.damping, false);
+  // without clearance the seats are spaced at the links' rest length: the links between seated
+  // rollers carry no tension and the last seated roller takes the span's (the quasi-static
+  // theory); at the loaded pitch every wrapped link would carry the span's tension to the free
+  // end, whose roller the flank cannot hold against it
+  Sprocket w = iso606_sprocket(d.clearance ? d.pitch : rest, d.roller, d.width, z, 0.0, 0.0,
+                               d.contact_stiffness, d.contact_damping);
   if (!d.clearance) w.seat_radius = w.roller_radius;
   w.driver = true;
   const double r = w.pitch_radius, omega = d.chain_speed / r;
@@ -73,7 +79,7 @@ Result run(const Chordal& d, int bins) {
   }
   // the wrapped rollers at their links' rest length, inside their seats' clearance: no tension
   // behind the top roller at the start (the seats pass on a part of the span's tension only)
-  const double rw = r * (1.0 - d.force / (d.stiffness * d.pitch));
+  const double rw = 0.5 * rest / std::sin(kPi / z);
   for (int k = 1; k <= wrap; ++k) {
     const double t = kPi / 2 + 2 * kPi * k / z;
     const std::size_t i = static_cast<std::size_t>(m + k);
