@@ -1,6 +1,5 @@
 // Polygonal action (issue 21 validation (1); docs/models/dynamics.md, "Polygonal action"): a
-// MEASUREMENT,
-// not a validation — it does not pass yet, so it is disabled and asserts nothing.
+// MEASUREMENT, not a validation — it does not pass yet, so it is disabled and asserts nothing.
 //
 // One driver sprocket at constant ω winds in a straight span whose far end is held by a constant
 // force (Model::loads, a tension source instead of a second wheel); no gravity; a stiff chain.
@@ -9,10 +8,10 @@
 // maximum with a roller at the top. Run it with
 //   CHORDAL_Z=12 CHORDAL_CLEAR=1 build/ci/tests/catena_tests
 //     --gtest_filter=DynamicsChordal.* --gtest_also_run_disabled_tests
-// (CHORDAL_CLEAR=1: the ISO seat's clearance; 0: the seat radius set to the roller's and the
-// seats spaced at the links' rest length; CHORDAL_V
-// chain speed [m/s], CHORDAL_C link damping, CHORDAL_F end force, CHORDAL_H step, CHORDAL_CC
-// contact damping, CHORDAL_TH θ, CHORDAL_D duration, CHORDAL_TRACE=1 a trace every 50 steps).
+// CHORDAL_CLEAR=1: the ISO seat's clearance; 0: the seat radius set to the roller's and the seats
+// spaced at the links' rest length. CHORDAL_V chain speed [m/s], CHORDAL_C link damping, CHORDAL_F
+// end force, CHORDAL_H step, CHORDAL_CC contact damping, CHORDAL_TH θ, CHORDAL_D duration,
+// CHORDAL_TRACE=1 a trace every 50 steps.
 #include <gtest/gtest.h>
 
 #include <algorithm>
