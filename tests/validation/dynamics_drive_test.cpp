@@ -35,6 +35,7 @@ struct Drive {
 
 struct DriveRun {
   std::vector<double> time, tight, slack;
+  std::vector<double> driven_torque, driven_speed;  // the θ-point torque the step applied; ω₁
 };
 
 DriveRun run(const Drive& d, double duration, double step) {
@@ -90,6 +91,8 @@ DriveRun run(const Drive& d, double duration, double step) {
     out.time.push_back(s.time);
     out.tight.push_back(tension[top]);
     out.slack.push_back(tension[bottom]);
+    out.driven_torque.push_back(integ.applied_torque()[1]);
+    out.driven_speed.push_back(s.speed[1]);
   }
   return out;
 }
@@ -127,6 +130,21 @@ TEST(DynamicsDrive, MeanTightSpanTension) {
   // (+1.2 % at z = 12) shows; without it the difference is 1.2 % off.
   EXPECT_NEAR((tight - slack) / (d.load / radius * sec_mean), 1.0, 0.005);
   EXPECT_GT(std::abs((tight - slack) / (d.load / radius) - 1.0), 0.008);
+
+  // The torque the integrator applied to the driven wheel (Integrator::applied_torque, at each
+  // step's θ point) is its torque balance: over the window, mean τ = T_L + J (ω_end − ω_start)/Δt
+  // to the Newton tolerance (the contact torque is evaluated independently of the balance, from
+  // the rollers' positions), and so equals the load within the speed's change over whole periods.
+  const double torque = mean_over_periods(r, r.driven_torque, t0, period);
+  std::size_t first = 0, last = 0;
+  for (std::size_t k = 0; k < r.time.size(); ++k) {
+    if (r.time[k] <= t0) first = k;
+    if (r.time[k] <= t0 + std::floor((r.time.back() - t0) / period) * period) last = k;
+  }
+  const double balance = d.load + d.inertia * (r.driven_speed[last] - r.driven_speed[first]) /
+                                      (r.time[last] - r.time[first]);
+  EXPECT_NEAR(torque / balance, 1.0, 1e-6) << "torque " << torque << " balance " << balance;
+  EXPECT_NEAR(torque / d.load, 1.0, 0.005) << "torque " << torque;
 }
 
 }  // namespace

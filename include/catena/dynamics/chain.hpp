@@ -38,6 +38,14 @@ struct Sprocket {
   double load_torque = 0.0;  ///< [N·m] on a driven wheel, against counter-clockwise turning
 };
 
+/// A constant force on one node (a dead load, or the far end of a span held by a tension source
+/// instead of a wheel). Its potential is −f·x (in Energy::potential).
+struct NodeLoad {
+  std::size_t node = 0;  ///< index of the node it acts on
+  double fx = 0.0;       ///< [N]
+  double fy = 0.0;       ///< [N]
+};
+
 struct Model {
   bool closed = false;               ///< closed loop (link N − 1 joins node N − 1 to node 0)
   double pitch = 0.0;                ///< [m] p, the unstretched length of one link
@@ -49,6 +57,7 @@ struct Model {
   std::vector<double> mass;          ///< [kg] per node; its size is N
   std::vector<std::uint8_t> pinned;  ///< per node, 1 = held fixed; empty = none pinned
   std::vector<Sprocket> sprockets;   ///< rigid wheels the rollers seat on
+  std::vector<NodeLoad> loads;       ///< constant forces on single nodes; empty = none
 
   std::size_t nodes() const { return mass.size(); }
   /// Links: N in a closed loop, N − 1 in an open chain.
@@ -57,7 +66,7 @@ struct Model {
 };
 
 /// Every problem with the model, fields "nodes", "pitch", "axial_stiffness", "axial_damping",
-/// "drag", "gravity", "mass", "pinned", "sprocket[i].<field>".
+/// "drag", "gravity", "mass", "pinned", "sprocket[i].<field>", "load[i].node", "load[i].force".
 std::vector<Issue> validate(const Model& model);
 
 /// N nodes of equal mass; an open chain gets its two end nodes pinned when `pin_ends`.
@@ -82,7 +91,7 @@ std::vector<Issue> validate(const Model& model, const State& state);
 struct Energy {
   double kinetic = 0.0;    ///< [J] Σ ½ m v² + Σ ½ J ω² (driven sprockets)
   double elastic = 0.0;    ///< [J] Σ ½ k (l − p)² + Σ ½ k_c g² (links and seat contacts)
-  double potential = 0.0;  ///< [J] −Σ m g·x
+  double potential = 0.0;  ///< [J] −Σ m g·x − Σ f·x (gravity and node loads)
   double total() const { return kinetic + elastic + potential; }
 };
 

@@ -63,6 +63,12 @@ class Integrator {
 
   const IntegratorOptions& options() const { return options_; }
 
+  /// [N·m] per sprocket, counter-clockwise positive: the chain's contact torque on the wheel at
+  /// the θ point of the last step — the torque the step applied (a driven wheel's step is
+  /// J (ω₁ − ω₀) = h (τ − T_L)). Taken at the last assembled Newton iterate, whose distance to the
+  /// accepted one is below `tolerance`·p. Zero before the first step.
+  const std::vector<double>& applied_torque() const { return torque_; }
+
  private:
   // Fills the solver's rhs with −R(u) (and its blocks with J(u) when `jacobian`); returns |R|².
   double assemble(const Model& model, const State& s, bool jacobian);
@@ -79,6 +85,7 @@ class Integrator {
   std::vector<std::vector<Vec2>> bcol_;  // per driven wheel: the coupling column ∂R/∂ψ₁
   std::vector<std::vector<Vec2>> wsol_;  // per driven wheel: A⁻¹ times that column
   std::vector<double> schur_;            // the driven wheels' Schur complement
+  std::vector<double> torque_;           // per wheel: the θ-point contact torque (last assembly)
   double max_penetration_ = 0.0;
 };
 

@@ -10,6 +10,7 @@
 #include "catena/dynamics/analysis.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -459,12 +460,18 @@ Result run(const analysis::Inputs& in) {
   std::vector<double> tension(model.links());
   out.sprocket.resize(2);
   out.span.resize(2);
+  std::vector<double> applied(2, 0.0);  // Σ of the steps' applied torques since the last sample
+  int since = 0;                        // steps since the last sample
   auto sample = [&] {
     out.time.push_back(s.time);
     for (std::size_t w = 0; w < 2; ++w) {
       out.sprocket[w].angle.push_back(s.angle[w]);
       out.sprocket[w].speed.push_back(s.speed[w]);
-      out.sprocket[w].torque.push_back(chain_torque(model, s, w));
+      // the mean of the torque the steps since the last sample applied (at each step's θ point):
+      // over every sample the wheel's torque balance holds; at t = 0, before any step, the
+      // contact torque of the initial state
+      out.sprocket[w].torque.push_back(since == 0 ? chain_torque(model, s, w) : applied[w] / since);
+      applied[w] = 0.0;
     }
     link_tensions(model, s, tension);
     // the links whose middles are nearest the middles of the upper and lower spans
@@ -479,20 +486,19 @@ Result run(const analysis::Inputs& in) {
     }
     out.span[0].push_back(tension[top]);
     out.span[1].push_back(tension[bottom]);
+    since = 0;
   };
   const int steps = static_cast<int>(std::lround(d.duration / d.step));
   const int every = std::max(1, static_cast<int>(std::lround(d.interval / d.step)));
   const double e0 = energy(model, s).total();
-  // the work the driver puts in and the load takes out, by the trapezoid rule over each step
+  // the work the driver puts in and the load takes out over each step: the driver's applied
+  // (θ-point) torque and the load torque times the angles the wheels turned
   double work = 0.0;
-  auto power = [&] {
-    return -chain_torque(model, s, d.driver) * s.speed[d.driver] - d.load * s.speed[d.driven];
-  };
-  double p0 = power();
   sample();
   const auto started = std::chrono::steady_clock::now();
   ProgressLoop loop(static_cast<std::size_t>(steps), "steps");
   for (int k = 0; k < steps; ++k) {
+    const std::array<double, 2> angle0{s.angle[0], s.angle[1]};
     const StepReport rep = integ.step(model, s);
     out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
     if (!rep.converged) {
@@ -505,9 +511,11 @@ Result run(const analysis::Inputs& in) {
       break;
     }
     ++out.steps;
-    const double p1 = power();
-    work += 0.5 * (p0 + p1) * d.step;
-    p0 = p1;
+    const std::vector<double>& torque = integ.applied_torque();
+    work += -torque[d.driver] * (s.angle[d.driver] - angle0[d.driver]) -
+            d.load * (s.angle[d.driven] - angle0[d.driven]);
+    for (std::size_t w = 0; w < 2; ++w) applied[w] += torque[w];
+    ++since;
     if ((k + 1) % every == 0) sample();
     loop.step(static_cast<std::size_t>(k + 1));
   }

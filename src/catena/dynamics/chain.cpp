@@ -48,6 +48,18 @@ std::vector<Issue> validate(const Model& model) {
     out.push_back({"pinned", std::to_string(model.pinned.size()) + " entries",
                    "empty or one entry per node (" + std::to_string(n) + ")"});
   }
+  for (std::size_t l = 0; l < model.loads.size(); ++l) {
+    const NodeLoad& f = model.loads[l];
+    const std::string at = "load[" + std::to_string(l) + "].";
+    if (f.node >= n) {
+      out.push_back(
+          {at + "node", std::to_string(f.node), "a node index in [0, " + std::to_string(n) + ")"});
+    }
+    if (!std::isfinite(f.fx) || !std::isfinite(f.fy)) {
+      out.push_back({at + "force", check::format_si(f.fx, "") + ", " + check::format_si(f.fy, "N"),
+                     "finite components"});
+    }
+  }
   for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
     const Sprocket& s = model.sprockets[w];
     const std::string f = "sprocket[" + std::to_string(w) + "].";
@@ -256,6 +268,9 @@ Energy energy(const Model& model, const State& state) {
     const double m = model.mass[i];
     e.kinetic += 0.5 * m * (state.vx[i] * state.vx[i] + state.vy[i] * state.vy[i]);
     e.potential -= m * (model.gravity_x * state.x[i] + model.gravity_y * state.y[i]);
+  }
+  for (const NodeLoad& f : model.loads) {
+    if (f.node < n) e.potential -= f.fx * state.x[f.node] + f.fy * state.y[f.node];
   }
   for (std::size_t w = 0; w < model.sprockets.size() && w < state.speed.size(); ++w) {
     const Sprocket& wheel = model.sprockets[w];

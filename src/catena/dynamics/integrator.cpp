@@ -47,7 +47,8 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
       dpsi_(model.sprockets.size()),
       wres_(model.sprockets.size()),
       wdiag_(model.sprockets.size()),
-      schur_(model.sprockets.size() * model.sprockets.size()) {
+      schur_(model.sprockets.size() * model.sprockets.size()),
+      torque_(model.sprockets.size()) {
   for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
     if (model.sprockets[w].driver) continue;
     driven_.push_back(w);
@@ -81,6 +82,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     solver_.rhs[i] = {
         -(inertia * (dx - h * s.vx[i]) + model.drag * m * dx - h * m * model.gravity_x),
         -(inertia * (dy - h * s.vy[i]) + model.drag * m * dy - h * m * model.gravity_y)};
+  }
+  for (const NodeLoad& f : model.loads) {  // constant: no Jacobian term
+    solver_.rhs[f.node].x += h * f.fx;
+    solver_.rhs[f.node].y += h * f.fy;
   }
   for (std::size_t j = 0; j < model.links(); ++j) {
     const std::size_t a = j, b = (j + 1) % n;
@@ -162,6 +167,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       bcol_[w][i] = {-dt.x - hf * sc.ny, -dt.y + hf * sc.nx};
       wdiag += tx * dt.x + ty * dt.y - hf * (sc.nx * cx + sc.ny * cy);
     }
+    torque_[w] = torque;
     if (driven) {
       const double residual = wheel.inertia / (h * th) * (psi1_[w] - s.angle[w] - h * s.speed[w]) -
                               h * (torque - wheel.load_torque);
