@@ -1,18 +1,13 @@
-// Polygonal action (issue 21 validation (1); docs/models/dynamics.md, "Polygonal action"): a
-// MEASUREMENT (disabled, asserts nothing: it does not pass yet), and the check of the statics
-// its failure rests on (FrictionlessSeatsShareTheSpanTension, which passes).
+// Polygonal action (issue 21 validation (1); docs/models/dynamics.md, "Polygonal action"): the
+// measurement pinned as it stands (it does not reproduce the polygon's kinematics yet), and the
+// check of the statics its failure rests on (FrictionlessSeatsShareTheSpanTension, which passes).
 //
 // One driver sprocket at constant ω winds in a straight span whose far end is held by a constant
 // force (Model::loads, a tension source instead of a second wheel); no gravity; a stiff chain.
 // The far end's speed along the line to the wheel's top is averaged synchronously over the tooth
 // phase after the start; the kinematics of the polygon predict v_min/v_max = cos(π/z), the
-// maximum with a roller at the top. Run it with
-//   CHORDAL_Z=12 CHORDAL_CLEAR=1 build/ci/tests/catena_tests
-//     --gtest_filter=DynamicsChordal.* --gtest_also_run_disabled_tests
-// CHORDAL_CLEAR=1: the ISO seat's clearance; 0: the seat radius set to the roller's and the seats
-// spaced at the links' rest length. CHORDAL_V chain speed [m/s], CHORDAL_C link damping, CHORDAL_F
-// end force, CHORDAL_H step, CHORDAL_CC contact damping, CHORDAL_TH θ, CHORDAL_D duration,
-// CHORDAL_TRACE=1 a trace every 50 steps.
+// maximum with a roller at the top (`Chordal` holds the set-up; the table in the doc was measured
+// with it at the values shown there).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -103,13 +98,6 @@ Result run(const Chordal& d, int bins) {
     if (!rep.converged) {
       ADD_FAILURE() << "step " << k << " did not converge";
       break;
-    }
-    if (std::getenv("CHORDAL_TRACE") && k % 50 == 0) {
-      const double ex = s.x[0], ey = s.y[0] - r;
-      std::printf("T %.4f v %.5f tail %.6f top %.6f,%.6f it %d pen %.2e\n", s.time,
-                  -(s.vx[0] * ex + s.vy[0] * ey) / std::hypot(ex, ey) / d.chain_speed,
-                  std::hypot(s.x[n - 1], s.y[n - 1]) / r, s.x[m] / r, s.y[m] / r, rep.iterations,
-                  rep.max_penetration);
     }
     if (s.time < d.settle) continue;
     // the far end's velocity along the line from it to the wheel's top
@@ -203,29 +191,28 @@ TEST(DynamicsChordal, FrictionlessSeatsShareTheSpanTension) {
   }
 }
 
-TEST(DynamicsChordal, DISABLED_Measure) {
-  const char* env = std::getenv("CHORDAL_Z");
-  if (env == nullptr) GTEST_SKIP();
+// Validation (1) as it stands, pinned so that a change of the model shows: the kinematics of the
+// polygon are NOT reproduced (docs/models/dynamics.md, "Polygonal action"). On the ISO seat at
+// z = 17 (0.5 s, the table's run) the span's mean speed varies 4.5 % more than 1 − cos(π/z)
+// (0.01779 against 0.01703) and the far end 17 % more (0.01999): the rollers share the span's
+// tension over their flanks instead of one roller carrying it at the pitch point. If a seat that
+// holds the engaged roller is built, this test fails and should become the validation
+// |ratio − 1| ≤ 2 %.
+TEST(DynamicsChordal, PolygonalActionIsNotYetReproducedOnFrictionlessSeats) {
   Chordal d;
-  d.teeth = std::atoi(env);
-  if (const char* e = std::getenv("CHORDAL_CLEAR")) d.clearance = std::atoi(e) != 0;
-  if (const char* e = std::getenv("CHORDAL_V")) d.chain_speed = std::atof(e);
-  if (const char* e = std::getenv("CHORDAL_C")) d.damping = std::atof(e);
-  if (const char* e = std::getenv("CHORDAL_F")) d.force = std::atof(e);
-  if (const char* e = std::getenv("CHORDAL_H")) d.step = std::atof(e);
-  if (const char* e = std::getenv("CHORDAL_CC")) d.contact_damping = std::atof(e);
-  if (const char* e = std::getenv("CHORDAL_TH")) d.theta = std::atof(e);
-  if (const char* e = std::getenv("CHORDAL_D")) d.duration = std::atof(e);
+  d.teeth = 17;
+  d.clearance = true;
+  d.duration = 0.5;
   const Result r = run(d, 40);
-  const double vmax = *std::max_element(r.far.begin(), r.far.end());
-  const double vmin = *std::min_element(r.far.begin(), r.far.end());
-  const double cmax = *std::max_element(r.centre.begin(), r.centre.end());
-  const double cmin = *std::min_element(r.centre.begin(), r.centre.end());
+  const auto variation = [](const std::vector<double>& v) {
+    return 1 - *std::min_element(v.begin(), v.end()) / *std::max_element(v.begin(), v.end());
+  };
   const double pred = 1 - std::cos(kPi / d.teeth);
-  std::printf("z %d pred %.5f far %.5f (max/v %.5f) centre %.5f  raw %.5f\n", d.teeth, pred,
-              1 - vmin / vmax, vmax / d.chain_speed, 1 - cmin / cmax, 1 - r.min_far / r.max_far);
-  for (std::size_t b = 0; b < r.far.size(); ++b)
-    std::printf("%zu %.6f %.6f\n", b, r.far[b] / d.chain_speed, r.centre[b] / d.chain_speed);
+  const double span = variation(r.centre) / pred, far = variation(r.far) / pred;
+  EXPECT_GT(span, 1.02) << "the span's speed now follows the polygon: promote this to (1)";
+  EXPECT_LT(span, 1.10);
+  EXPECT_GT(far, 1.10);
+  EXPECT_LT(far, 1.25);
 }
 
 }  // namespace
