@@ -26,7 +26,7 @@ cmake --build "$prefix/build" >/dev/null
 echo "== build and test under AddressSanitizer + UndefinedBehaviorSanitizer" >&2
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j "$jobs"
-ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs" --label-exclude 'browser|python'
+ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --preset asan -j "$jobs" --label-exclude 'browser|python|slow'
 
 echo "== fuzz: libFuzzer harnesses under ASan + UBSan for a bounded time (tests/fuzz)" >&2
 cmake --preset fuzz >/dev/null

@@ -46,6 +46,51 @@ struct NodeLoad {
   double fy = 0.0;       ///< [N]
 };
 
+/// A rigid rail the chain's rollers slide on (docs/models/dynamics.md, "Guides"): one-sided — it
+/// pushes a roller out to its free side and never pulls — with a unilateral penalty contact of the
+/// sprockets' form and Coulomb friction against the roller's sliding, regularised over a small
+/// speed band. The rail is the surface the roller touches: the roller's centre rides at one roller
+/// radius from it on the free side.
+struct Guide {
+  enum class Kind { kStraight, kArc };
+  Kind kind = Kind::kStraight;
+  /// straight: the surface from (x0, y0) to (x1, y1); the free side is on the left going from the
+  /// first end to the second (a rail from left to right carries the rollers on top)
+  double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;  ///< [m]
+  /// arc: the surface is the circle of `radius` about the centre from `start_angle` to
+  /// `end_angle` counter-clockwise; the rollers ride outside it (convex) or, if `inside`, inside
+  double centre_x = 0.0, centre_y = 0.0;  ///< [m]
+  double radius = 0.0;                    ///< [m]
+  double start_angle = 0.0;               ///< [rad]
+  double end_angle = 0.0;                 ///< [rad] > start_angle, at most start_angle + 2π
+  bool inside = false;
+  double roller_radius = 0.0;       ///< [m] d1/2
+  double contact_stiffness = 0.0;   ///< [N/m] k_c on the roller's penetration into the rail
+  double contact_damping = 0.0;     ///< [N·s/m] c_c on the penetration rate (never pulls)
+  double contact_smoothing = 1e-6;  ///< [m] ε: the C¹ ramp of force and damping, as on a sprocket
+  double friction = 0.0;            ///< [-] μ, Coulomb: the sliding force is μ × normal force
+  /// [m/s] v_ε: the friction force is −μ f v_t/√(v_t² + v_ε²), within 1/(2 (v_t/v_ε)²) of the
+  /// Coulomb value when sliding faster than v_ε (1e-4 relative at 70 v_ε)
+  double friction_band = 1e-3;
+};
+
+/// One roller's contact with one guide at position q and velocity v: the force on the roller,
+/// F = f n + f_t t (n the rail's normal to the free side, t = (−n_y, n_x)), and its derivatives
+/// ∂F/∂q and ∂F/∂v (2×2, row-major [[a, b], [c, d]]) for the Newton matrix.
+struct GuideContact {
+  bool active = false;
+  double penetration = 0.0;     ///< [m] g > 0 when active
+  double normal_force = 0.0;    ///< [N] f ≥ 0
+  double friction_force = 0.0;  ///< [N] f_t along t (opposes the sliding speed)
+  double slip = 0.0;            ///< [m/s] v_t = v·t, the roller's sliding speed along the rail
+  double energy = 0.0;          ///< [J] the elastic contact energy
+  double nx = 0.0, ny = 0.0;    ///< unit normal to the free side
+  double fx = 0.0, fy = 0.0;    ///< [N] F
+  double dq[4] = {0, 0, 0, 0};  ///< [N/m] ∂F/∂q
+  double dv[4] = {0, 0, 0, 0};  ///< [N·s/m] ∂F/∂v
+};
+GuideContact guide_contact(const Guide& g, double x, double y, double vx, double vy);
+
 struct Model {
   bool closed = false;               ///< closed loop (link N − 1 joins node N − 1 to node 0)
   double pitch = 0.0;                ///< [m] p, the unstretched length of one link
@@ -58,6 +103,7 @@ struct Model {
   std::vector<std::uint8_t> pinned;  ///< per node, 1 = held fixed; empty = none pinned
   std::vector<Sprocket> sprockets;   ///< rigid wheels the rollers seat on
   std::vector<NodeLoad> loads;       ///< constant forces on single nodes; empty = none
+  std::vector<Guide> guides;         ///< rails the rollers slide on
 
   std::size_t nodes() const { return mass.size(); }
   /// Links: N in a closed loop, N − 1 in an open chain.
@@ -66,7 +112,8 @@ struct Model {
 };
 
 /// Every problem with the model, fields "nodes", "pitch", "axial_stiffness", "axial_damping",
-/// "drag", "gravity", "mass", "pinned", "sprocket[i].<field>", "load[i].node", "load[i].force".
+/// "drag", "gravity", "mass", "pinned", "sprocket[i].<field>", "guide[i].<field>",
+/// "load[i].node", "load[i].force".
 std::vector<Issue> validate(const Model& model);
 
 /// N nodes of equal mass; an open chain gets its two end nodes pinned when `pin_ends`.
@@ -79,6 +126,7 @@ struct State {
   std::vector<double> vx, vy;  ///< [m/s] node velocities
   std::vector<double> angle;   ///< [rad] per sprocket: ψ, the angle of seat 0
   std::vector<double> speed;   ///< [rad/s] per sprocket
+  double friction_work = 0.0;  ///< [J] work of the guides' friction on the chain so far (≤ 0)
   explicit State(std::size_t nodes = 0, std::size_t sprockets = 0)
       : x(nodes), y(nodes), vx(nodes), vy(nodes), angle(sprockets), speed(sprockets) {}
   std::size_t nodes() const { return x.size(); }
@@ -90,7 +138,7 @@ std::vector<Issue> validate(const Model& model, const State& state);
 
 struct Energy {
   double kinetic = 0.0;    ///< [J] Σ ½ m v² + Σ ½ J ω² (driven sprockets)
-  double elastic = 0.0;    ///< [J] Σ ½ k (l − p)² + Σ ½ k_c g² (links and seat contacts)
+  double elastic = 0.0;    ///< [J] Σ ½ k (l − p)² + the seat and guide contacts' energies
   double potential = 0.0;  ///< [J] −Σ m g·x − Σ f·x (gravity and node loads)
   double total() const { return kinetic + elastic + potential; }
 };

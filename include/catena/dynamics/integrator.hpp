@@ -46,6 +46,7 @@ struct StepReport {
   double last_correction = 0.0;  ///< [m] max |Δx| of the last Newton iteration
   int backtracks = 0;            ///< line-search halvings taken
   double max_penetration = 0.0;  ///< [m] deepest roller–seat penetration at the step's θ point
+  double friction_work = 0.0;    ///< [J] the guides' friction work over the step (≤ 0)
   SolveStatus solve = SolveStatus::kSolved;
 };
 

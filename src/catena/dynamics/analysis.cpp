@@ -50,24 +50,54 @@ std::vector<Parameter> table_fields() {
   using analysis::number;
   using analysis::quantity;
   using analysis::text;
-  return {text("chain",
-               "ISO 606 designation (\"12B\"): pitch, roller, width and mass from the "
-               "catalogue"),
-          quantity("pitch", K::kLength, "pitch p (overrides the catalogue's)"),
-          quantity("mass_per_metre", K::kMassPerLength, "chain mass per metre q"),
-          quantity("roller_diameter", K::kLength, "roller diameter d1"),
-          quantity("inner_width", K::kLength, "inner width b1"),
-          number("links", "links in the closed loop, an integer z + 2m with m >= 2, at most 10000"),
-          quantity("axial_stiffness", K::kForcePerLength, "axial stiffness k of one link [N/m]"),
-          number("axial_damping", "axial damping c of one link [N s/m], >= 0 (default 0)"),
-          quantity("pretension", K::kForce, "the loop's tension at rest, >= 0 (default 0)"),
-          quantity("contact_stiffness", K::kForcePerLength, "roller-seat penalty k_c [N/m]"),
-          number("contact_damping", "roller-seat damping c_c [N s/m], >= 0"),
-          quantity("duration", K::kTime, "simulated time, > 0"),
-          quantity("step", K::kTime, "time step h, > 0"),
-          quantity("output_interval", K::kTime,
-                   "sampling interval of the series, rounded to whole steps (default: every step)"),
-          number("theta", "theta of the integrator in [0.5, 1] (default 0.6; drives need >= 0.6)")};
+  return {
+      text("chain",
+           "ISO 606 designation (\"12B\"): pitch, roller, width and mass from the "
+           "catalogue"),
+      quantity("pitch", K::kLength, "pitch p (overrides the catalogue's)"),
+      quantity("mass_per_metre", K::kMassPerLength, "chain mass per metre q"),
+      quantity("roller_diameter", K::kLength, "roller diameter d1"),
+      quantity("inner_width", K::kLength, "inner width b1"),
+      number("links", "links in the closed loop, an integer z + 2m with m >= 2, at most 10000"),
+      quantity("axial_stiffness", K::kForcePerLength, "axial stiffness k of one link [N/m]"),
+      number("axial_damping", "axial damping c of one link [N s/m], >= 0 (default 0)"),
+      quantity("pretension", K::kForce, "the loop's tension at rest, >= 0 (default 0)"),
+      quantity("contact_stiffness", K::kForcePerLength, "roller-seat penalty k_c [N/m]"),
+      number("contact_damping", "roller-seat damping c_c [N s/m], >= 0"),
+      quantity("duration", K::kTime, "simulated time, > 0"),
+      quantity("step", K::kTime, "time step h, > 0"),
+      quantity("output_interval", K::kTime,
+               "sampling interval of the series, rounded to whole steps (default: every step)"),
+      number("theta", "theta of the integrator in [0.5, 1] (default 0.6; drives need >= 0.6)"),
+      number("gravity",
+             "true (9.80665 m/s^2), false, or g in [0, 100] m/s^2, downward (-y; default: none)")};
+}
+
+// [[dynamics.guide]]: a rail the rollers slide on (docs/models/dynamics.md, "Guides"), in the
+// layout's coordinates (the driver's centre at the origin, the other wheel on +x, y up).
+std::vector<Parameter> guide_fields() {
+  using analysis::number;
+  using analysis::quantity;
+  using analysis::text;
+  return {
+      text("kind", "straight or arc"),
+      quantity("x0", K::kLength, "straight: first end of the rail surface, x"),
+      quantity("y0", K::kLength, "straight: first end, y"),
+      quantity("x1", K::kLength, "straight: second end, x (rollers ride on the left going 0 -> 1)"),
+      quantity("y1", K::kLength, "straight: second end, y"),
+      quantity("centre_x", K::kLength, "arc: centre, x"),
+      quantity("centre_y", K::kLength, "arc: centre, y"),
+      quantity("radius", K::kLength, "arc: radius of the rail surface, > 0"),
+      quantity("start_angle", K::kAngle, "arc: start, counter-clockwise from +x"),
+      quantity("end_angle", K::kAngle, "arc: end, in (start_angle, start_angle + 360 deg]"),
+      text("inside", "arc: true if the rollers ride inside the arc (default false: outside)"),
+      number("friction", "Coulomb friction coefficient mu in [0, 1] (default 0)"),
+      quantity("friction_band", K::kSpeed,
+               "speed band of the regularised friction, in (0, 1] m/s (default 1 mm/s)"),
+      quantity("contact_stiffness", K::kForcePerLength,
+               "roller-rail penalty [N/m] (default: dynamics.contact_stiffness)"),
+      number("contact_damping",
+             "roller-rail damping [N s/m], >= 0 (default: dynamics.contact_damping)")};
 }
 
 std::vector<Parameter> sprocket_fields() {
@@ -131,6 +161,13 @@ struct SprocketInput {
   bool has_role = false;
 };
 
+struct GuideInput {
+  int line = 0;
+  std::map<std::string, double> value;      // key → SI value (read successfully)
+  std::map<std::string, std::string> text;  // kind, inside
+  std::map<std::string, int> seen;          // every key given (read or not) → its line
+};
+
 struct Setup {
   std::string chain;
   double pitch = NAN, mass_per_metre = NAN, roller = NAN, width = NAN;
@@ -141,6 +178,8 @@ struct Setup {
   int teeth = 0;
   std::size_t driver = 0, driven = 1;
   double speed = NAN, inertia = NAN, load = 0.0;
+  double gravity = 0.0;       // [m/s²] downward (−y)
+  std::vector<Guide> guides;  // [[dynamics.guide]]
 };
 
 bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
@@ -159,10 +198,50 @@ Setup parse(const analysis::Inputs& in) {
   std::string chain;
   bool has_chain = false;
   std::vector<SprocketInput> wheels;
+  std::vector<GuideInput> guides;
+  static const std::vector<Parameter> guide_keys = guide_fields();
   static const std::regex row(R"(^dynamics\.sprocket\[(\d+)\]\.([^.]+)$)");
+  static const std::regex guide_row(R"(^dynamics\.guide\[(\d+)\]\.([^.]+)$)");
+  double gravity = 0.0;  // [m/s²] downward
   for (const Entry& v : file.table) {
     if (v.path.rfind("dynamics.", 0) != 0) continue;  // the rest of a case file is not ours
     std::smatch m;
+    if (std::regex_match(v.path, m, guide_row)) {
+      const std::size_t i = std::stoul(m[1]);
+      if (i > 1000) {
+        issues.push_back({where(v), v.text, "at most 1000 [[dynamics.guide]] tables"});
+        continue;
+      }
+      if (guides.size() <= i) guides.resize(i + 1);
+      GuideInput& g = guides[i];
+      if (g.line == 0) g.line = v.line;
+      const std::string key = m[2];
+      const auto k = std::find_if(guide_keys.begin(), guide_keys.end(),
+                                  [&](const Parameter& p) { return p.name == key; });
+      if (k == guide_keys.end()) {
+        std::string list;
+        for (const Parameter& p : guide_keys) list += (list.empty() ? "" : ", ") + p.name;
+        issues.push_back({where(v), v.text, "a key of a guide: " + list});
+        continue;
+      }
+      g.seen[key] = v.line;
+      if (key == "kind") {
+        if (!v.is_string || (v.text != "straight" && v.text != "arc"))
+          issues.push_back({where(v), "'" + v.text + "'", "straight or arc"});
+        else
+          g.text[key] = v.text;
+        continue;
+      }
+      if (key == "inside") {
+        if (!v.is_boolean)
+          issues.push_back({where(v), "'" + v.text + "'", "true or false"});
+        else
+          g.text[key] = v.text;
+        continue;
+      }
+      if (const auto x = read(v, *k, issues)) g.value[key] = *x;
+      continue;
+    }
     if (std::regex_match(v.path, m, row)) {
       const std::size_t i = std::stoul(m[1]);
       if (wheels.size() <= i) wheels.resize(i + 1);
@@ -191,6 +270,28 @@ Setup parse(const analysis::Inputs& in) {
       continue;
     }
     const std::string key = v.path.substr(9);
+    if (key == "gravity") {
+      line[key] = v.line;
+      if (v.is_boolean) {
+        gravity = v.text == "true" ? 9.80665 : 0.0;  // standard gravity (CGPM 1901)
+      } else if (v.is_number) {
+        std::vector<Issue> found;
+        const std::optional<double> g = io::parse_number(v.text, where(v), "a plain number", found);
+        if (g && *g >= 0.0 && *g <= 100.0)
+          gravity = *g;
+        else if (g)
+          issues.push_back({where(v), v.text, "true, false or g in [0, 100] m/s^2 (downward)"});
+        issues.insert(issues.end(), found.begin(), found.end());
+      } else {
+        issues.push_back({where(v), "'" + v.text + "'",
+                          "true, false or g in [0, 100] m/s^2 (a plain number, downward)"});
+      }
+      continue;
+    }
+    if (key.rfind("guide", 0) == 0) {
+      issues.push_back({where(v), v.text, "guides as an array of tables: [[dynamics.guide]]"});
+      continue;
+    }
     if (key.rfind("sprocket", 0) == 0) {
       issues.push_back(
           {where(v), v.text, "sprockets as an array of tables: [[dynamics.sprocket]]"});
@@ -378,6 +479,86 @@ Setup parse(const analysis::Inputs& in) {
                               ", ... (z = " + std::to_string(s.teeth) + ")"});
     }
   }
+  s.gravity = gravity;
+  // the guides: kind and its geometry, all present; then the core's checks (named per field)
+  for (std::size_t i = 0; i < guides.size(); ++i) {
+    const GuideInput& g = guides[i];
+    const std::string base = "dynamics.guide[" + std::to_string(i) + "].";
+    const std::string l = g.line ? " (line " + std::to_string(g.line) + ")" : "";
+    auto field = [&](const std::string& key) {
+      const auto it = g.seen.find(key);
+      return base + key + (it == g.seen.end() ? l : " (line " + std::to_string(it->second) + ")");
+    };
+    const auto kind = g.text.find("kind");
+    if (kind == g.text.end()) {
+      if (!g.seen.count("kind")) issues.push_back({field("kind"), "(missing)", "straight or arc"});
+      continue;
+    }
+    const bool straight = kind->second == "straight";
+    const std::vector<std::string> mine =
+        straight ? std::vector<std::string>{"x0", "y0", "x1", "y1"}
+                 : std::vector<std::string>{"centre_x", "centre_y", "radius", "start_angle",
+                                            "end_angle"};
+    const std::vector<std::string> theirs =
+        straight ? std::vector<std::string>{"centre_x",    "centre_y",  "radius",
+                                            "start_angle", "end_angle", "inside"}
+                 : std::vector<std::string>{"x0", "y0", "x1", "y1"};
+    bool complete = true;
+    for (const std::string& key : mine) {
+      if (g.value.count(key)) continue;
+      complete = false;
+      if (!g.seen.count(key))
+        issues.push_back({field(key), "(missing)",
+                          "the " + key + " of a" + (straight ? " straight" : "n arc") + " guide"});
+    }
+    for (const std::string& key : theirs) {
+      if (g.seen.count(key))
+        issues.push_back(
+            {field(key), "(given)",
+             std::string("no ") + key + " on a" + (straight ? " straight" : "n arc") + " guide"});
+    }
+    auto get = [&](const char* key, double fallback) {
+      const auto it = g.value.find(key);
+      return it != g.value.end() ? it->second : fallback;
+    };
+    Guide guide;
+    guide.kind = straight ? Guide::Kind::kStraight : Guide::Kind::kArc;
+    guide.x0 = get("x0", 0.0);
+    guide.y0 = get("y0", 0.0);
+    guide.x1 = get("x1", 0.0);
+    guide.y1 = get("y1", 0.0);
+    guide.centre_x = get("centre_x", 0.0);
+    guide.centre_y = get("centre_y", 0.0);
+    guide.radius = get("radius", 0.0);
+    guide.start_angle = get("start_angle", 0.0);
+    guide.end_angle = get("end_angle", 0.0);
+    const auto inside = g.text.find("inside");
+    guide.inside = inside != g.text.end() && inside->second == "true";
+    guide.roller_radius = 0.5 * s.roller;
+    guide.contact_stiffness = get("contact_stiffness", s.contact_stiffness);
+    guide.contact_damping = get("contact_damping", s.contact_damping);
+    guide.friction = get("friction", 0.0);
+    guide.friction_band = get("friction_band", 1e-3);
+    bool readable = true;
+    for (const auto& [key, at_line] : g.seen)
+      if (key != "kind" && key != "inside" && !g.value.count(key)) readable = false;
+    if (!readable || !(s.roller > 0.0) || std::isnan(guide.contact_stiffness) ||
+        std::isnan(guide.contact_damping))
+      continue;  // already reported
+    // the core's checks of the values given (a missing one is reported above)
+    Model probe;
+    probe.guides = {guide};
+    for (const Issue& issue : validate(probe)) {
+      if (issue.field.rfind("guide[0].", 0) != 0) continue;
+      const std::string key = issue.field.substr(9);
+      const bool given = key == "end" ? complete : g.seen.count(key) > 0;
+      const bool derived = key == "roller_radius" || key == "contact_smoothing";
+      if (!given && !derived) continue;
+      issues.push_back({field(key == "end" ? "x1" : key), issue.value, issue.expected});
+    }
+    if (complete) s.guides.push_back(guide);
+  }
+
   // the work cap: steps × links
   if (issues.empty()) {
     const double work = std::ceil(s.duration / s.step) * s.links;
@@ -416,6 +597,7 @@ struct Result {
   std::vector<std::vector<double>> span;  // upper, lower
   int steps = 0;
   double wall_time = 0.0, energy_drift = 0.0, max_penetration = 0.0;
+  double friction_work = 0.0;
   std::vector<Diagnostic> diagnostics;
 };
 
@@ -453,7 +635,19 @@ Result run(const analysis::Inputs& in) {
     wheels.push_back(s);
   }
   model.sprockets = wheels;
+  model.guides = d.guides;
+  model.gravity_y = -d.gravity;
   State s = two_sprocket_loop(z, m, d.pitch, wheels[0].pitch_radius, d.speed);
+  // A roller that starts inside a rail is moved out along the rail's normal to touch it (the
+  // spans start straight at the wheels' pitch-line height; a guide may sit a little higher).
+  for (const Guide& g : model.guides) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const GuideContact c = guide_contact(g, s.x[i], s.y[i], 0.0, 0.0);
+      if (!c.active) continue;
+      s.x[i] += c.penetration * c.nx;
+      s.y[i] += c.penetration * c.ny;
+    }
+  }
   throw_if_any(validate(model, s));
 
   Integrator integ(model, {.step = d.step, .theta = d.theta});
@@ -520,7 +714,9 @@ Result run(const analysis::Inputs& in) {
     loop.step(static_cast<std::size_t>(k + 1));
   }
   out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  out.energy_drift = energy(model, s).total() - e0 - work;
+  // the guides' friction work is 0 without guides: the drift is then the same number as before
+  out.friction_work = s.friction_work;
+  out.energy_drift = energy(model, s).total() - e0 - work - s.friction_work;
   if (d.theta < 0.6)
     out.diagnostics.push_back(
         {Diagnostic::Severity::kWarning, "dynamics.theta_below_0_6",
@@ -576,6 +772,12 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                 {"real_time_factor", rtf},
                                 {"energy_drift", r.energy_drift},
                                 {"max_penetration", r.max_penetration}});
+  // gravity and guides add fields only when given: a run without them prints what it did before
+  if (d.gravity > 0.0) j["gravity"] = d.gravity;
+  if (!d.guides.empty()) {
+    j["guides"] = static_cast<int>(d.guides.size());
+    j["summary"]["friction_work"] = r.friction_work;
+  }
   j["diagnostics"] = analysis::diagnostics_value(r.diagnostics);
   j["units"] = analysis::units_value({{"pitch", "m"},
                                       {"centre_distance", "m"},
@@ -591,6 +793,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                       {"max_penetration", "m"},
                                       {"value", "SI"},
                                       {"limit", "SI"}});
+  if (d.gravity > 0.0) j["units"]["gravity"] = "m/s^2";
+  if (!d.guides.empty()) j["units"]["friction_work"] = "J";
   rec.data = std::move(j);
 
   std::ostringstream csv;
@@ -629,6 +833,9 @@ Record describe(const Result& r, const analysis::Inputs&) {
     << " N\n"
     << "  energy drift " << format_g(r.energy_drift, 4) << " J, deepest roller penetration "
     << format_g(r.max_penetration * 1e6, 4) << " um\n";
+  if (d.gravity > 0.0 || !d.guides.empty())
+    t << "  gravity " << format_g(d.gravity, 6) << " m/s^2, " << d.guides.size()
+      << " guide(s), friction work " << format_g(r.friction_work, 5) << " J\n";
   for (const Diagnostic& diag : r.diagnostics)
     t << "  " << to_string(diag.severity) << ": " << diag.message << "\n";
   rec.table = t.str();

@@ -97,7 +97,130 @@ std::vector<Issue> validate(const Model& model) {
       check::finite(out, (f + "load_torque").c_str(), s.load_torque, "N*m");
     }
   }
+  for (std::size_t w = 0; w < model.guides.size(); ++w) {
+    const Guide& g = model.guides[w];
+    const std::string f = "guide[" + std::to_string(w) + "].";
+    if (g.kind == Guide::Kind::kStraight) {
+      const bool ends =
+          std::isfinite(g.x0) && std::isfinite(g.y0) && std::isfinite(g.x1) && std::isfinite(g.y1);
+      if (!ends || !(std::hypot(g.x1 - g.x0, g.y1 - g.y0) > 0.0)) {
+        out.push_back({f + "end", check::format_si(std::hypot(g.x1 - g.x0, g.y1 - g.y0), "m"),
+                       "finite end points at a distance > 0 m"});
+      }
+    } else {
+      check::finite(out, (f + "centre_x").c_str(), g.centre_x, "m");
+      check::finite(out, (f + "centre_y").c_str(), g.centre_y, "m");
+      check::finite_positive(out, (f + "radius").c_str(), g.radius, "m");
+      if (g.inside && std::isfinite(g.radius) && !(g.radius > g.roller_radius)) {
+        out.push_back({f + "radius", check::format_si(g.radius, "m"),
+                       "more than the roller radius " + check::format_si(g.roller_radius, "m") +
+                           " (rollers inside the arc)"});
+      }
+      check::finite(out, (f + "start_angle").c_str(), g.start_angle, "rad");
+      const double sweep = g.end_angle - g.start_angle;
+      if (!std::isfinite(g.end_angle) || !(sweep > 0.0) || !(sweep <= 2.0 * std::numbers::pi)) {
+        out.push_back({f + "end_angle", check::format_si(g.end_angle, "rad"),
+                       "an angle in (start_angle, start_angle + 2 pi] rad"});
+      }
+    }
+    check::finite_positive(out, (f + "roller_radius").c_str(), g.roller_radius, "m");
+    check::finite_positive(out, (f + "contact_stiffness").c_str(), g.contact_stiffness, "N/m");
+    if (!std::isfinite(g.contact_damping) || g.contact_damping < 0.0) {
+      out.push_back({f + "contact_damping", check::format_si(g.contact_damping, "N*s/m"),
+                     "a finite value >= 0 N*s/m"});
+    }
+    if (!std::isfinite(g.contact_smoothing) || !(g.contact_smoothing > 0.0) ||
+        !(g.contact_smoothing <= g.roller_radius)) {
+      out.push_back({f + "contact_smoothing", check::format_si(g.contact_smoothing, "m"),
+                     "a length in (0, roller radius]"});
+    }
+    if (!std::isfinite(g.friction) || !(g.friction >= 0.0) || !(g.friction <= 1.0)) {
+      out.push_back({f + "friction", check::format_si(g.friction, ""), "a number in [0, 1]"});
+    }
+    if (!std::isfinite(g.friction_band) || !(g.friction_band > 0.0) || !(g.friction_band <= 1.0)) {
+      out.push_back(
+          {f + "friction_band", check::format_si(g.friction_band, "m/s"), "a speed in (0, 1] m/s"});
+    }
+  }
   return out;
+}
+
+GuideContact guide_contact(const Guide& gd, double x, double y, double vx, double vy) {
+  GuideContact c;
+  const double r = gd.roller_radius;
+  double g = 0.0, kappa = 0.0, nx = 0.0, ny = 0.0;
+  if (gd.kind == Guide::Kind::kStraight) {
+    const double ax = gd.x1 - gd.x0, ay = gd.y1 - gd.y0;
+    const double len = std::sqrt(ax * ax + ay * ay);
+    const double ux = ax / len, uy = ay / len;
+    nx = -uy;  // the left normal: the free side
+    ny = ux;
+    const double rx = x - gd.x0, ry = y - gd.y0;
+    const double along = rx * ux + ry * uy;
+    if (!(along >= 0.0) || !(along <= len)) return c;  // off the rail's ends
+    g = r - (rx * nx + ry * ny);
+  } else {
+    const double rx = x - gd.centre_x, ry = y - gd.centre_y;
+    const double d = std::sqrt(rx * rx + ry * ry);
+    if (!(d > 0.0)) return c;
+    constexpr double kTwoPi = 2.0 * std::numbers::pi;
+    double a = std::atan2(ry, rx) - gd.start_angle;
+    a -= kTwoPi * std::floor(a / kTwoPi);
+    if (a > gd.end_angle - gd.start_angle) return c;  // off the arc's ends
+    const double sgn = gd.inside ? -1.0 : 1.0;
+    nx = sgn * rx / d;
+    ny = sgn * ry / d;
+    g = gd.inside ? d - (gd.radius - r) : gd.radius + r - d;
+    kappa = sgn / d;  // ∂n/∂q = κ t tᵀ
+  }
+  // One-sided: a roller whose centre is past the rail's surface is on its far side, not pressed
+  // into it (so a rail does not catch the chain's other run behind it).
+  if (!(g > 0.0) || !(g < 2.0 * r)) return c;
+  const double tx = -ny, ty = nx;
+  const double vn = vx * nx + vy * ny, vt = vx * tx + vy * ty;
+  const double rate = -vn;  // ġ
+  const double eps = gd.contact_smoothing, kc = gd.contact_stiffness;
+  const double elastic = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
+  const double slope = g < eps ? kc * g / eps : kc;
+  const double cg = gd.contact_damping * std::min(1.0, g / eps);
+  const double dcg = g < eps ? gd.contact_damping / eps : 0.0;
+  c.active = true;
+  c.penetration = g;
+  c.nx = nx;
+  c.ny = ny;
+  c.slip = vt;
+  c.energy =
+      g < eps ? kc * g * g * g / (6.0 * eps) : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
+  const double f = elastic + cg * rate;
+  if (!(f > 0.0)) return c;  // separating: no force
+  // f and its gradients (∂g/∂q = −n, ∂ġ/∂q = −κ v_t tᵀ, ∂ġ/∂v = −nᵀ)
+  const double fg = slope + dcg * rate;
+  const double dfq[2] = {-fg * nx - cg * kappa * vt * tx, -fg * ny - cg * kappa * vt * ty};
+  const double dfv[2] = {-cg * nx, -cg * ny};
+  // friction −μ f φ(v_t), φ = v_t/√(v_t² + v_ε²); ∂v_t/∂q = −κ v_n tᵀ (t turns with n on an arc)
+  const double ve2 = gd.friction_band * gd.friction_band;
+  const double root = std::sqrt(vt * vt + ve2);
+  const double phi = vt / root, dphi = ve2 / (root * root * root);
+  const double mu = gd.friction;
+  const double ft = -mu * f * phi;
+  const double dftq[2] = {-mu * phi * dfq[0] + mu * f * dphi * kappa * vn * tx,
+                          -mu * phi * dfq[1] + mu * f * dphi * kappa * vn * ty};
+  const double dftv[2] = {-mu * phi * dfv[0] - mu * f * dphi * tx,
+                          -mu * phi * dfv[1] - mu * f * dphi * ty};
+  c.normal_force = f;
+  c.friction_force = ft;
+  c.fx = f * nx + ft * tx;
+  c.fy = f * ny + ft * ty;
+  // ∂F/∂q = n ⊗ ∂f/∂q + f κ t tᵀ + t ⊗ ∂f_t/∂q − f_t κ n tᵀ  (∂t/∂q = −κ n tᵀ)
+  c.dq[0] = nx * dfq[0] + f * kappa * tx * tx + tx * dftq[0] - ft * kappa * nx * tx;
+  c.dq[1] = nx * dfq[1] + f * kappa * tx * ty + tx * dftq[1] - ft * kappa * nx * ty;
+  c.dq[2] = ny * dfq[0] + f * kappa * ty * tx + ty * dftq[0] - ft * kappa * ny * tx;
+  c.dq[3] = ny * dfq[1] + f * kappa * ty * ty + ty * dftq[1] - ft * kappa * ny * ty;
+  c.dv[0] = nx * dfv[0] + tx * dftv[0];
+  c.dv[1] = nx * dfv[1] + tx * dftv[1];
+  c.dv[2] = ny * dfv[0] + ty * dftv[0];
+  c.dv[3] = ny * dfv[1] + ty * dftv[1];
+  return c;
 }
 
 Sprocket iso606_sprocket(double pitch, double roller_diameter, double inner_width, int teeth,
@@ -278,6 +401,12 @@ Energy energy(const Model& model, const State& state) {
     for (std::size_t i = 0; i < n; ++i) {
       const SeatContact c =
           seat_contact(wheel, state.x[i], state.y[i], 0.0, 0.0, state.angle[w], 0.0);
+      if (c.active) e.elastic += c.energy;
+    }
+  }
+  for (const Guide& guide : model.guides) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const GuideContact c = guide_contact(guide, state.x[i], state.y[i], 0.0, 0.0);
       if (c.active) e.elastic += c.energy;
     }
   }

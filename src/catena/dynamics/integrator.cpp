@@ -177,6 +177,25 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       wheel_norm2 += force_like * force_like;
     }
   }
+  // Guides: the force F(q, v) at the θ point with the step's velocity v = (u − x₀)/h; the
+  // diagonal block gains −∂(h F)/∂u = −(hθ ∂F/∂q + ∂F/∂v). Node by node: the O(N) solve stays.
+  for (const Guide& guide : model.guides) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (model.is_pinned(i)) continue;
+      const double qx = (1.0 - th) * s.x[i] + th * ux_[i];
+      const double qy = (1.0 - th) * s.y[i] + th * uy_[i];
+      const double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
+      const GuideContact gc = guide_contact(guide, qx, qy, vx, vy);
+      if (!gc.active) continue;
+      solver_.rhs[i].x += h * gc.fx;
+      solver_.rhs[i].y += h * gc.fy;
+      if (!jacobian) continue;
+      const double ht = h * th;
+      Mat2& d = solver_.diag[i];
+      d = {d.a - (ht * gc.dq[0] + gc.dv[0]), d.b - (ht * gc.dq[1] + gc.dv[1]),
+           d.c - (ht * gc.dq[2] + gc.dv[2]), d.d - (ht * gc.dq[3] + gc.dv[3])};
+    }
+  }
   if (!model.pinned.empty()) {
     for (std::size_t i = 0; i < n; ++i) {
       if (!model.is_pinned(i)) continue;
@@ -326,6 +345,20 @@ StepReport Integrator::step(const Model& model, State& s) {
   }
   report.max_penetration = max_penetration_;
   if (!report.converged) return report;
+  // The guides' friction work over the step: the friction force the step applied (at the θ point,
+  // with the step's velocity) times the step's displacement along the rail, h f_t v_t ≤ 0.
+  for (const Guide& guide : model.guides) {
+    if (!(guide.friction > 0.0)) continue;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (model.is_pinned(i)) continue;
+      const double qx = (1.0 - th) * s.x[i] + th * ux_[i];
+      const double qy = (1.0 - th) * s.y[i] + th * uy_[i];
+      const double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
+      const GuideContact gc = guide_contact(guide, qx, qy, vx, vy);
+      if (gc.active) report.friction_work += h * gc.friction_force * gc.slip;
+    }
+  }
+  s.friction_work += report.friction_work;
   for (std::size_t i = 0; i < n; ++i) {
     if (model.is_pinned(i)) continue;
     // x₁ = x₀ + h ((1 − θ) v₀ + θ v₁)

@@ -1,0 +1,120 @@
+// `catena dynamics` with gravity and guides: examples/dynamics_conveyor.toml, the conveyor loop of
+// the core's validation (6b) (tests/validation/dynamics_conveyor_test.cpp), through the command.
+// Between the middles of the two runs the contour method of `catena loop` puts the friction of
+// one whole run (μ q0 L, L the weight a run's guide carries: the guide and half of each
+// unsupported stretch) and the lift round the tail idler (q0 H): the mean tensions the command
+// reports must differ by that within 1 %. And every bad guide or gravity field is named at once.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "cli_run.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kPi = std::numbers::pi;
+const std::string kExample = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_conveyor.toml";
+constexpr double kTensionTol = 0.01;  // issue 21 (6b)
+
+double mean_over_periods(const std::vector<double>& time, const std::vector<double>& series,
+                         double t0, double period) {
+  const double whole = std::floor((time.back() - t0) / period) * period;
+  double sum = 0.0;
+  int count = 0;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    if (time[k] > t0 && time[k] <= t0 + whole) {
+      sum += series[k];
+      ++count;
+    }
+  }
+  EXPECT_GT(count, 0);
+  return sum / count;
+}
+
+TEST(DynamicsConveyorCli, RunTensionsDifferByTheLoopModelsResistance) {
+  const CliRun r = run("dynamics " + kExample + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["diagnostics"].empty()) << j["diagnostics"].dump();
+  EXPECT_EQ(j["guides"], 4);
+  EXPECT_DOUBLE_EQ(j["gravity"].get<double>(), 9.80665);
+  EXPECT_EQ(j["units"]["friction_work"], "J");
+  EXPECT_LT(j["summary"]["friction_work"].get<double>(), 0.0);
+  const auto time = j["time"].get<std::vector<double>>();
+  // the example: 12B (1.25 kg/m), z = 16, 60 pitches, 5 rad/s, μ = 0.3, guides from 3 to 57
+  // pitches at the height R sin(π/z)/(π/z)
+  const int z = 16;
+  const double p = 0.01905, omega = 5.0, mu = 0.3, q0 = 1.25 * 9.80665;
+  const double radius = 0.5 * p / std::sin(kPi / z);
+  const double lift = 2 * radius * std::sin(kPi / z) / (kPi / z);
+  const double carried = 54 * p + 3 * p;
+  const double period = 2 * kPi / (z * omega);
+  const double t0 = 0.4;
+  const double upper =
+      mean_over_periods(time, j["span"][0]["tension"].get<std::vector<double>>(), t0, period);
+  const double lower =
+      mean_over_periods(time, j["span"][1]["tension"].get<std::vector<double>>(), t0, period);
+  EXPECT_NEAR((upper - lower) / (mu * q0 * carried + q0 * lift), 1.0, kTensionTol)
+      << "upper " << upper << " lower " << lower;
+}
+
+TEST(DynamicsConveyorCli, EveryBadGuideFieldNamed) {
+  const fs::path dir = fs::temp_directory_path() / "catena_dynamics_conveyor_cli_test";
+  fs::create_directories(dir);
+  const fs::path path = dir / "bad_guides.toml";
+  std::ofstream(path) << R"([dynamics]
+chain = "12B"
+links = 32
+axial_stiffness = "5e7 N/m"
+contact_stiffness = "2e8 N/m"
+contact_damping = 800
+duration = "0.01 s"
+step = "0.1 ms"
+gravity = -3
+[[dynamics.sprocket]]
+teeth = 12
+role = "driver"
+speed = "13 rad/s"
+[[dynamics.sprocket]]
+teeth = 12
+role = "driven"
+inertia = 0.01
+[[dynamics.guide]]
+kind = "straight"
+x0 = 0
+y0 = 0
+x1 = 0
+y1 = 0
+friction = 1.5
+radius = "5 mm"
+[[dynamics.guide]]
+kind = "arc"
+centre_x = 0
+radius = -4
+start_angle = "10 deg"
+end_angle = "5 deg"
+friction_band = 0
+[[dynamics.guide]]
+kind = "loop"
+colour = "red"
+)";
+  const CliRun r = run("dynamics " + path.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty());
+  for (const char* field :
+       {"dynamics.gravity (line 9)", "dynamics.guide[0].x1", "dynamics.guide[0].friction (line 24)",
+        "dynamics.guide[0].radius (line 25)", "dynamics.guide[1].centre_y",
+        "dynamics.guide[1].radius (line 29)", "dynamics.guide[1].end_angle (line 31)",
+        "dynamics.guide[1].friction_band (line 32)", "dynamics.guide[2].kind (line 34)",
+        "dynamics.guide[2].colour (line 35)"})
+    EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
+  EXPECT_NE(r.err.find("a number in [0, 1]"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("straight or arc"), std::string::npos) << r.err;
+}
+
+}  // namespace
