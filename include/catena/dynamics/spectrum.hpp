@@ -30,8 +30,8 @@ struct Spectrum {
 /// w_k = ½ − ½ cos(2πk/(n − 1)) applied after removing the window-weighted mean Σw_k x_k / Σw_k,
 /// zero-padded to the power of two ≥ `padding`·n (at most kMaxSpectrumLength), and scaled by 2/Σw_k
 /// so that a sinusoid of amplitude A on a bin reads A (between bins, less by the window's
-/// scalloping: under 1 % at padding 4). A signal longer than kMaxSpectrumSamples is cut to its last
-/// kMaxSpectrumSamples samples. Fewer than 4 samples, dt ≤ 0 or non-finite, or padding 0:
+/// scalloping: about 1 % at most at padding 4). A signal longer than kMaxSpectrumSamples is cut to
+/// its last kMaxSpectrumSamples samples. Fewer than 4 samples, dt ≤ 0 or non-finite, or padding 0:
 /// std::invalid_argument.
 Spectrum amplitude_spectrum(const std::vector<double>& signal, double dt, std::size_t padding = 4);
 
