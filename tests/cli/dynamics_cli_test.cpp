@@ -1,8 +1,9 @@
 // `catena dynamics CASE.toml` as scripts call it: the JSON's fields, the drive's steady state
 // against the closed forms of the core's validation (6) (tests/validation/dynamics_drive_test.cpp),
-// CSV, the work cap, and every input problem named with exit status 2.
+// CSV, the work cap, every input problem named with exit status 2, and the report's charts.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -191,6 +192,122 @@ inertia = 0.01
       run("dynamics " + write("none.toml", "[chain]\ntype = \"roller-iso606\"\n"));
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.err.find("dynamics"), std::string::npos) << missing.err;
+}
+
+// The chart lists of a report: the plain one ("catena-charts") and the one with markers and
+// frames ("catena-charts-extra").
+nlohmann::json chart_list(const std::string& html, const std::string& id) {
+  const std::string open = "<script type=\"application/json\" id=\"" + id + "\">";
+  const std::size_t at = html.find(open);
+  if (at == std::string::npos) return nlohmann::json::array();
+  const std::size_t from = at + open.size();
+  return nlohmann::json::parse(html.substr(from, html.find("</script>", from) - from));
+}
+
+// `catena report` on the example: the time series (each curve's extremes those of the JSON),
+// the span-tension spectrum with the tooth-mesh harmonics marked and peaks at them, and the
+// animation, whose rollers sit in the drawn outlines' seats.
+TEST(DynamicsCli, ReportHasTimeSeriesSpectrumAndAnimation) {
+  const fs::path out = fs::temp_directory_path() / "catena_dynamics_cli_test" / "report.html";
+  fs::create_directories(out.parent_path());
+  const CliRun r = run("report " + kExample + " -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::stringstream ss;
+  ss << std::ifstream(out).rdbuf();
+  const std::string html = ss.str();
+  EXPECT_LT(html.size(), 2'000'000u);  // the browser test's bound: Plotly's basic bundle + data
+  const auto plain = chart_list(html, "catena-charts");
+  const auto extra = chart_list(html, "catena-charts-extra");
+  ASSERT_EQ(plain.size(), 3u);
+  ASSERT_EQ(extra.size(), 2u);
+
+  const auto j = nlohmann::json::parse(run("dynamics " + kExample + " --format json").out);
+  auto extremes = [](const std::vector<double>& v) {
+    return std::make_pair(*std::min_element(v.begin(), v.end()),
+                          *std::max_element(v.begin(), v.end()));
+  };
+  // 1. time series: speeds, torques, span tensions; at most 2000 points a curve, the extremes kept
+  const std::vector<std::pair<std::string, std::string>> series = {
+      {"Sprocket speeds", "speed"}, {"Chain torque on the sprockets", "torque"}};
+  for (std::size_t c = 0; c < 2; ++c) {
+    EXPECT_EQ(plain[c]["title"], series[c].first);
+    ASSERT_EQ(plain[c]["traces"].size(), 2u);
+    for (std::size_t w = 0; w < 2; ++w) {
+      const auto y = plain[c]["traces"][w]["y"].get<std::vector<double>>();
+      EXPECT_LE(y.size(), 2000u);
+      const auto want = extremes(j["sprocket"][w][series[c].second].get<std::vector<double>>());
+      EXPECT_NEAR(extremes(y).first, want.first, 1e-9 * std::abs(want.first) + 1e-12);
+      EXPECT_NEAR(extremes(y).second, want.second, 1e-9 * std::abs(want.second) + 1e-12);
+    }
+  }
+  EXPECT_EQ(plain[2]["traces"][0]["name"], "upper span (tight)");
+  EXPECT_EQ(plain[2]["traces"][1]["name"], "lower span (slack)");
+  for (std::size_t s = 0; s < 2; ++s) {
+    const auto want = extremes(j["span"][s]["tension"].get<std::vector<double>>());
+    const auto got = extremes(plain[2]["traces"][s]["y"].get<std::vector<double>>());
+    EXPECT_NEAR(got.first, want.first, 1e-9 * want.second);
+    EXPECT_NEAR(got.second, want.second, 1e-9 * want.second);
+  }
+
+  // 2. the spectrum: markers at k z ω / 2π, k = 1…6, and the tight span's spectrum has a peak
+  // within one frequency resolution 1/T (T = the analysed half, 0.25 s) of each: the ripple of
+  // the polygonal action at the tooth-mesh frequency and its harmonics
+  const auto& spectrum = extra[0];
+  const double mesh = 12 * 13.0 / (2 * kPi);
+  ASSERT_EQ(spectrum["markers"].size(), 6u);
+  const auto f = spectrum["traces"][0]["x"].get<std::vector<double>>();
+  const auto a = spectrum["traces"][0]["y"].get<std::vector<double>>();
+  EXPECT_GT(f.back(), 6 * mesh);
+  std::vector<double> peaks;
+  for (std::size_t m = 1; m + 1 < a.size(); ++m)
+    if (a[m] > a[m - 1] && a[m] >= a[m + 1]) peaks.push_back(f[m]);
+  for (int k = 1; k <= 6; ++k) {
+    EXPECT_NEAR(spectrum["markers"][k - 1]["x"].get<double>(), k * mesh, 1e-6);
+    double nearest = INFINITY;
+    for (double p : peaks) nearest = std::min(nearest, std::abs(p - k * mesh));
+    EXPECT_LT(nearest, 1.0 / 0.25) << "harmonic " << k;
+  }
+  EXPECT_NE(spectrum["markers"][0]["label"].get<std::string>().find("24.83 Hz"), std::string::npos);
+
+  // 3. the animation: at most 60 frames from t = 0, the two outlines and the chain's 32 nodes
+  // (closed); each roller well inside the wrap sits in a seat of the outline drawn at its frame
+  const auto& loop = extra[1];
+  EXPECT_TRUE(loop["equal"].get<bool>());
+  const auto& frames = loop["frames"];
+  ASSERT_GE(frames.size(), 50u);
+  ASSERT_LE(frames.size(), 60u);
+  EXPECT_EQ(frames[0]["name"], "t = 0 s");
+  const double radius = 0.5 * 19.05 / std::sin(kPi / 12) * 1e3;  // pitch radius [mm]
+  for (const auto& frame : frames) {
+    ASSERT_EQ(frame["traces"].size(), 3u);
+    const auto cx = frame["traces"][2]["x"].get<std::vector<double>>();
+    const auto cy = frame["traces"][2]["y"].get<std::vector<double>>();
+    ASSERT_EQ(cx.size(), 33u);
+    EXPECT_EQ(cx.front(), cx.back());
+    for (std::size_t w = 0; w < 2; ++w) {
+      const double centre = w == 0 ? 0.0 : 10 * 19.05;
+      const auto ox = frame["traces"][w]["x"].get<std::vector<double>>();
+      const auto oy = frame["traces"][w]["y"].get<std::vector<double>>();
+      // the seat bottoms: the outline's points nearest the centre
+      double bottom = INFINITY;
+      for (std::size_t i = 0; i < ox.size(); ++i)
+        bottom = std::min(bottom, std::hypot(ox[i] - centre, oy[i]));
+      std::vector<double> seats;
+      for (std::size_t i = 0; i < ox.size(); ++i)
+        if (std::hypot(ox[i] - centre, oy[i]) < bottom + 0.01)
+          seats.push_back(std::atan2(oy[i], ox[i] - centre));
+      EXPECT_GE(seats.size(), 12u);
+      for (std::size_t i = 0; i + 1 < cx.size(); ++i) {
+        // well inside the wrap (the outer half of the wheel): seated, not entering or leaving
+        const double outward = w == 0 ? centre - cx[i] : cx[i] - centre;
+        if (outward < 0.5 * radius || std::hypot(cx[i] - centre, cy[i]) > radius + 1.0) continue;
+        const double at = std::atan2(cy[i], cx[i] - centre);
+        double off = INFINITY;
+        for (double s : seats) off = std::min(off, std::abs(std::remainder(at - s, 2 * kPi)));
+        EXPECT_LT(off, 1.0 * kPi / 180) << frame["name"] << ", wheel " << w << ", node " << i;
+      }
+    }
+  }
 }
 
 }  // namespace

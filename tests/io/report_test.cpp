@@ -119,6 +119,60 @@ TEST(Report, IndexAxesAskForIntegerTicks) {
   EXPECT_NE(to_html(sample(), "").find("\"integer\":false"), std::string::npos);
 }
 
+// Markers (labelled vertical lines) and frames (an animation) go to a second chart list with
+// its own script; a report without them has neither, so that it stays as it was before them.
+TEST(Report, MarkersAndFramesGoToTheSecondListOnlyWhenPresent) {
+  const std::string plain = to_html(sample(), "");
+  EXPECT_EQ(plain.find("catena-charts-extra"), std::string::npos);
+  EXPECT_EQ(plain.find("\"markers\""), std::string::npos);
+
+  Report r = sample();
+  ReportChart spectrum;
+  spectrum.title = "Spectrum";
+  spectrum.traces.push_back({"upper", {0.0, 10.0}, {1.0, 2.0}});
+  spectrum.markers.push_back({24.83, "mesh </script>"});
+  ReportChart loop;
+  loop.title = "Loop";
+  loop.equal_axes = true;
+  loop.traces.push_back({"wheel", {0.0, 1.0}, {0.0, 1.0}});
+  loop.traces.push_back({"chain", {0.0}, {2.0}});
+  loop.frames.push_back({"t = 0 s", {{"chain", {0.0}, {2.0}}}});
+  loop.frames.push_back({"t = 1 s", {{"chain", {0.5}, {2.5}}}});
+  r.sections[0].charts.push_back(spectrum);
+  r.sections[0].charts.push_back(loop);
+  r.sections[0].charts.push_back(sample().sections[0].charts[0]);  // a plain one after them
+  const std::string html = to_html(r, "");
+  // four chart elements, numbered in page order; the animation is taller (slider, buttons)
+  EXPECT_NE(html.find("<div class=\"chart\" id=\"catena-chart-1\"></div>"), std::string::npos);
+  EXPECT_NE(html.find("<div class=\"chart\" id=\"catena-chart-2\" style=\"height:600px\">"),
+            std::string::npos);
+  EXPECT_NE(html.find("<div class=\"chart\" id=\"catena-chart-3\"></div>"), std::string::npos);
+  const std::size_t plain_list = html.find("id=\"catena-charts\">");
+  const std::size_t extra_list = html.find("id=\"catena-charts-extra\">");
+  ASSERT_NE(plain_list, std::string::npos);
+  ASSERT_NE(extra_list, std::string::npos);
+  const std::string first =
+      html.substr(plain_list, html.find("</script>", plain_list) - plain_list);
+  const std::string second =
+      html.substr(extra_list, html.find("</script>", extra_list) - extra_list);
+  EXPECT_NE(first.find("\"id\":\"catena-chart-0\""), std::string::npos);
+  EXPECT_NE(first.find("},{\"id\":\"catena-chart-3\""), std::string::npos);  // one list, a comma
+  EXPECT_EQ(first.find("catena-chart-1"), std::string::npos);
+  EXPECT_NE(second.find("[{\"id\":\"catena-chart-1\""), std::string::npos);
+  EXPECT_NE(second.find("\"markers\":[{\"x\":24.83,\"label\":\"mesh \\u003c/script\\u003e\"}]"),
+            std::string::npos)
+      << second;
+  EXPECT_NE(second.find("},{\"id\":\"catena-chart-2\""), std::string::npos);
+  EXPECT_NE(
+      second.find("\"frames\":[{\"name\":\"t = 0 s\",\"traces\":[{\"name\":\"chain\",\"x\":[0],"
+                  "\"y\":[2]}]},{\"name\":\"t = 1 s\""),
+      std::string::npos)
+      << second;
+  // the second list's script: shapes and annotations for markers, a slider and buttons
+  EXPECT_NE(html.find("layout.sliders"), std::string::npos);
+  EXPECT_NE(html.find("Plotly.addFrames"), std::string::npos);
+}
+
 TEST(Report, InlinedDrawingsGetUniqueIds) {
   const std::string html = to_html(sample(), "");
   EXPECT_EQ(html.find("<?xml"), std::string::npos);

@@ -21,12 +21,30 @@ struct Trace {
   std::vector<double> x, y;
 };
 
+/// A vertical line across a chart at x, with its label written beside it (a frequency of
+/// interest on a spectrum).
+struct Marker {
+  double x = 0.0;
+  std::string label;
+};
+
+/// One frame of an animated chart: its name (shown on the slider) and its curves, which replace
+/// the chart's last `traces.size()` curves while the frame is shown.
+struct Frame {
+  std::string name;
+  std::vector<Trace> traces;
+};
+
 /// A chart of the report.
 struct Chart {
   std::string title, x_label, y_label;
   std::vector<Trace> traces;
-  bool equal_axes = false;  ///< same scale on x and y (paths, outlines)
-  bool integer_x = false;   ///< x counts things (a roller index): ticks at whole numbers only
+  bool equal_axes = false;      ///< same scale on x and y (paths, outlines)
+  bool integer_x = false;       ///< x counts things (a roller index): ticks at whole numbers only
+  std::vector<Marker> markers;  ///< vertical lines with labels; may be empty
+  /// Frames of an animation (a slider and a play button); empty: a still chart. The chart's own
+  /// traces are what is shown before the first frame is played (normally the first frame).
+  std::vector<Frame> frames;
 };
 
 /// A table with columns (a sweep: one row per design; safety checks). Headers carry units.

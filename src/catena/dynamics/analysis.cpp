@@ -22,6 +22,7 @@
 #include "catena/contact/chain_catalog.hpp"
 #include "catena/core/progress.hpp"
 #include "catena/dynamics/integrator.hpp"
+#include "catena/dynamics/report_charts.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/io/case_file.hpp"
 #include "catena/io/quantity.hpp"
@@ -599,6 +600,10 @@ struct Result {
   double wall_time = 0.0, energy_drift = 0.0, max_penetration = 0.0;
   double friction_work = 0.0;
   std::vector<Diagnostic> diagnostics;
+  // for the report's animation only (never in the JSON or CSV): the loop at up to
+  // frame_count() instants spread over the run, and the wheels' outlines
+  std::vector<LoopFrame> frames;
+  std::vector<WheelOutline> outlines;
 };
 
 // The torque the chain puts on wheel w (counter-clockwise positive).
@@ -684,6 +689,18 @@ Result run(const analysis::Inputs& in) {
   };
   const int steps = static_cast<int>(std::lround(d.duration / d.step));
   const int every = std::max(1, static_cast<int>(std::lround(d.interval / d.step)));
+  // the report's animation: frames every `frame_every` steps (docs/models/dynamics.md, Report)
+  for (std::size_t w = 0; w < 2; ++w)
+    out.outlines.push_back(
+        {"sprocket " + std::to_string(w) + (w == d.driver ? " (driver)" : " (driven)"),
+         wheels[w].centre_x, wheels[w].centre_y,
+         sprocket_outline(d.pitch, d.roller, d.width, wheels[w].teeth)});
+  const std::size_t frames =
+      frame_count(n, out.outlines[0].outline.size() + out.outlines[1].outline.size() + 2);
+  const int frame_every = std::max(
+      1, static_cast<int>(std::ceil(static_cast<double>(steps) / static_cast<double>(frames - 1))));
+  auto snapshot = [&] { out.frames.push_back({s.time, s.x, s.y, s.angle}); };
+  snapshot();
   const double e0 = energy(model, s).total();
   // the work the driver puts in and the load takes out over each step: the driver's applied
   // (θ-point) torque and the load torque times the angles the wheels turned
@@ -711,6 +728,7 @@ Result run(const analysis::Inputs& in) {
     for (std::size_t w = 0; w < 2; ++w) applied[w] += torque[w];
     ++since;
     if ((k + 1) % every == 0) sample();
+    if ((k + 1) % frame_every == 0) snapshot();
     loop.step(static_cast<std::size_t>(k + 1));
   }
   out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -839,6 +857,19 @@ Record describe(const Result& r, const analysis::Inputs&) {
   for (const Diagnostic& diag : r.diagnostics)
     t << "  " << to_string(diag.severity) << ": " << diag.message << "\n";
   rec.table = t.str();
+
+  ReportInput report{.time = r.time, .teeth = d.teeth, .driver_speed = d.speed};
+  for (std::size_t w = 0; w < 2; ++w) {
+    const std::string name =
+        "sprocket " + std::to_string(w) + (w == d.driver ? " (driver)" : " (driven)");
+    report.speed.push_back({name, r.sprocket[w].speed});
+    report.torque.push_back({name, r.sprocket[w].torque});
+  }
+  report.span.push_back({upper_tight ? "upper span (tight)" : "upper span (slack)", r.span[0]});
+  report.span.push_back({upper_tight ? "lower span (slack)" : "lower span (tight)", r.span[1]});
+  report.wheels = r.outlines;
+  report.frames = r.frames;
+  rec.charts = report_charts(report);
   return rec;
 }
 

@@ -167,6 +167,85 @@ const char* kChartCode = R"js(
 })();
 )js";
 
+// Charts with markers (labelled vertical lines) or frames (an animation with a slider and a play
+// button). Written into a report only when it has such a chart, so that the reports without one
+// stay as they were.
+const char* kExtraChartCode = R"js(
+(function () {
+  var charts = JSON.parse(document.getElementById('catena-charts-extra').textContent);
+  charts.forEach(function (c) {
+    var colours = ['#1f77b4', '#d62728', '#2ca02c', '#ff7f0e', '#9467bd', '#8c564b'];
+    var animated = c.frames && c.frames.length > 0;
+    var traces = c.traces.map(function (t, i) {
+      // in an animation the last curve is what moves (the chain): drawn with its nodes
+      var nodes = animated && i === c.traces.length - 1;
+      return {x: t.x, y: t.y, name: t.name, type: 'scatter', connectgaps: false,
+              mode: nodes ? 'lines+markers' : 'lines',
+              line: {color: colours[i % colours.length], width: nodes ? 2 : 1.2},
+              marker: {size: 6, color: colours[i % colours.length]}};
+    });
+    var layout = {title: {text: c.title, font: {size: 15}}, margin: {l: 70, r: 20, t: 45, b: 55},
+                  xaxis: {title: {text: c.x}}, yaxis: {title: {text: c.y}},
+                  showlegend: c.traces.length > 1, legend: {orientation: 'h', y: -0.22}};
+    if (c.equal) layout.yaxis.scaleanchor = 'x';
+    if (c.markers && c.markers.length) {
+      layout.shapes = c.markers.map(function (m) {
+        return {type: 'line', xref: 'x', yref: 'paper', x0: m.x, x1: m.x, y0: 0, y1: 1,
+                line: {color: '#555', width: 1, dash: 'dot'}};
+      });
+      layout.annotations = c.markers.map(function (m) {
+        return {x: m.x, xref: 'x', y: 1, yref: 'paper', text: m.label, showarrow: false,
+                textangle: -90, xanchor: 'right', yanchor: 'top', font: {size: 11, color: '#333'}};
+      });
+    }
+    var figure = {data: traces, layout: layout};
+    if (animated) {
+      // fixed axes over every frame: the view does not jump while the animation plays
+      var lo = [Infinity, Infinity], hi = [-Infinity, -Infinity];
+      var extend = function (t) {
+        [t.x, t.y].forEach(function (v, a) {
+          v.forEach(function (q) {
+            if (q !== null) { lo[a] = Math.min(lo[a], q); hi[a] = Math.max(hi[a], q); }
+          });
+        });
+      };
+      c.traces.forEach(extend);
+      c.frames.forEach(function (f) { f.traces.forEach(extend); });
+      var pad = 0.04 * Math.max(hi[0] - lo[0], hi[1] - lo[1]);
+      layout.xaxis.range = [lo[0] - pad, hi[0] + pad];
+      layout.yaxis.range = [lo[1] - pad, hi[1] + pad];
+      layout.xaxis.autorange = false;
+      layout.yaxis.autorange = false;
+      layout.margin.b = 130;
+      layout.legend.y = -0.45;
+      var still = {mode: 'immediate', frame: {duration: 0, redraw: false}, transition: {duration: 0}};
+      layout.updatemenus = [{type: 'buttons', direction: 'left', showactive: false, x: 0, y: -0.12,
+                             xanchor: 'left', yanchor: 'top', pad: {t: 30, r: 10},
+                             buttons: [
+                               {label: 'Play', method: 'animate',
+                                args: [null, {mode: 'immediate', fromcurrent: true,
+                                              frame: {duration: 80, redraw: false},
+                                              transition: {duration: 0}}]},
+                               {label: 'Pause', method: 'animate', args: [[null], still]}]}];
+      layout.sliders = [{active: 0, x: 0.16, len: 0.84, y: -0.12, xanchor: 'left', yanchor: 'top',
+                         pad: {t: 30}, font: {size: 9}, ticklen: 3,
+                         currentvalue: {font: {size: 12}},
+                         steps: c.frames.map(function (f, k) {
+                           return {label: f.name, method: 'animate', args: [['f' + k], still]};
+                         })}];
+      var first = c.traces.length - c.frames[0].traces.length;
+      figure.frames = c.frames.map(function (f, k) {
+        return {name: 'f' + k,
+                data: f.traces.map(function (t) { return {x: t.x, y: t.y}; }),
+                traces: f.traces.map(function (t, k) { return first + k; })};
+      });
+    }
+    Plotly.newPlot(c.id, figure.data, figure.layout, {responsive: true, displaylogo: false})
+        .then(function (gd) { if (figure.frames) return Plotly.addFrames(gd, figure.frames); });
+  });
+})();
+)js";
+
 }  // namespace
 
 std::string html_escape(std::string_view text) {
@@ -317,8 +396,8 @@ std::string to_html(const Report& report, std::string_view chart_script) {
   table("", report.inputs, "path");
   html << "</details></section>\n";
 
-  std::string charts_json = "[";
-  int chart_count = 0, drawing_count = 0;
+  std::string charts_json = "[", extra_json = "[";
+  int chart_count = 0, drawing_count = 0, plain_count = 0, extra_count = 0;
   for (const ReportSection& s : report.sections) {
     html << "<section id=\"" << html_escape(s.id) << "\" class=\"analysis\"><h2>"
          << html_escape(s.title) << "</h2><div class=\"source\">Source: " << html_escape(s.source);
@@ -361,20 +440,45 @@ std::string to_html(const Report& report, std::string_view chart_script) {
       if (!g.note.empty()) html << "<p class=\"note\">" << html_escape(g.note) << "</p>\n";
     }
     for (const ReportChart& c : s.charts) {
-      const std::string id = "catena-chart-" + std::to_string(chart_count);
-      html << "<div class=\"chart\" id=\"" << id << "\"></div>\n";
-      if (chart_count++) charts_json += ",";
-      charts_json += "{\"id\":" + json_string(id) + ",\"title\":" + json_string(c.title) +
-                     ",\"x\":" + json_string(c.x_label) + ",\"y\":" + json_string(c.y_label) +
-                     ",\"equal\":" + (c.equal_axes ? "true" : "false") +
-                     ",\"integer\":" + (c.integer_x ? "true" : "false") + ",\"traces\":[";
-      for (std::size_t i = 0; i < c.traces.size(); ++i) {
-        if (i) charts_json += ",";
-        charts_json += "{\"name\":" + json_string(c.traces[i].name) +
-                       ",\"x\":" + json_numbers(c.traces[i].x) +
-                       ",\"y\":" + json_numbers(c.traces[i].y) + "}";
+      const std::string id = "catena-chart-" + std::to_string(chart_count++);
+      // a chart with markers or frames goes to the second list, drawn by kExtraChartCode
+      const bool extra = !c.markers.empty() || !c.frames.empty();
+      html << "<div class=\"chart\" id=\"" << id << "\""
+           << (c.frames.empty() ? "" : " style=\"height:600px\"") << "></div>\n";
+      std::string& json = extra ? extra_json : charts_json;
+      if ((extra ? extra_count : plain_count)++) json += ",";
+      auto traces = [&](const std::vector<ReportTrace>& curves) {
+        std::string out = "[";
+        for (std::size_t i = 0; i < curves.size(); ++i) {
+          if (i) out += ",";
+          out += "{\"name\":" + json_string(curves[i].name) +
+                 ",\"x\":" + json_numbers(curves[i].x) + ",\"y\":" + json_numbers(curves[i].y) +
+                 "}";
+        }
+        return out + "]";
+      };
+      json += "{\"id\":" + json_string(id) + ",\"title\":" + json_string(c.title) +
+              ",\"x\":" + json_string(c.x_label) + ",\"y\":" + json_string(c.y_label) +
+              ",\"equal\":" + (c.equal_axes ? "true" : "false") +
+              ",\"integer\":" + (c.integer_x ? "true" : "false") +
+              ",\"traces\":" + traces(c.traces);
+      if (!c.markers.empty()) {
+        json += ",\"markers\":[";
+        for (std::size_t i = 0; i < c.markers.size(); ++i) {
+          const std::string x = json_numbers({c.markers[i].x});  // "[x]"
+          json += std::string(i ? "," : "") + "{\"x\":" + x.substr(1, x.size() - 2) +
+                  ",\"label\":" + json_string(c.markers[i].label) + "}";
+        }
+        json += "]";
       }
-      charts_json += "]}";
+      if (!c.frames.empty()) {
+        json += ",\"frames\":[";
+        for (std::size_t i = 0; i < c.frames.size(); ++i)
+          json += std::string(i ? "," : "") + "{\"name\":" + json_string(c.frames[i].name) +
+                  ",\"traces\":" + traces(c.frames[i].traces) + "}";
+        json += "]";
+      }
+      json += "}";
     }
     for (std::size_t i = 0; i < s.drawings_svg.size(); ++i) {
       html << "<div class=\"drawing\">" << inline_svg(s.drawings_svg[i], drawing_count++);
@@ -403,7 +507,11 @@ std::string to_html(const Report& report, std::string_view chart_script) {
        << "</footer>\n</main>\n";
   html << "<script type=\"application/json\" id=\"catena-charts\">" << charts_json
        << "</script>\n<script>" << chart_script << "</script>\n<script>" << kChartCode
-       << "</script>\n</body></html>\n";
+       << "</script>\n";
+  if (extra_count)
+    html << "<script type=\"application/json\" id=\"catena-charts-extra\">" << extra_json
+         << "]</script>\n<script>" << kExtraChartCode << "</script>\n";
+  html << "</body></html>\n";
   return html.str();
 }
 
