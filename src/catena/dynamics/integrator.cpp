@@ -34,6 +34,15 @@ std::size_t checked_nodes(const Model& model, const IntegratorOptions& options) 
   throw_if_any(issues);
   return model.nodes();
 }
+// Node i's contact with a guide at the θ point of the step from x₀ (the state) to the iterate
+// u, with the step's velocity (u − x₀)/h: the force the step applies.
+GuideContact guide_contact_at_theta(const Guide& guide, const State& s,
+                                    const std::vector<double>& ux, const std::vector<double>& uy,
+                                    std::size_t i, double th, double h) {
+  const double qx = (1.0 - th) * s.x[i] + th * ux[i];
+  const double qy = (1.0 - th) * s.y[i] + th * uy[i];
+  return guide_contact(guide, qx, qy, (ux[i] - s.x[i]) / h, (uy[i] - s.y[i]) / h);
+}
 }  // namespace
 
 Integrator::Integrator(const Model& model, IntegratorOptions options)
@@ -182,10 +191,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   for (const Guide& guide : model.guides) {
     for (std::size_t i = 0; i < n; ++i) {
       if (model.is_pinned(i)) continue;
-      const double qx = (1.0 - th) * s.x[i] + th * ux_[i];
-      const double qy = (1.0 - th) * s.y[i] + th * uy_[i];
-      const double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
-      const GuideContact gc = guide_contact(guide, qx, qy, vx, vy);
+      const GuideContact gc = guide_contact_at_theta(guide, s, ux_, uy_, i, th, h);
       if (!gc.active) continue;
       solver_.rhs[i].x += h * gc.fx;
       solver_.rhs[i].y += h * gc.fy;
@@ -351,10 +357,7 @@ StepReport Integrator::step(const Model& model, State& s) {
     if (!(guide.friction > 0.0)) continue;
     for (std::size_t i = 0; i < n; ++i) {
       if (model.is_pinned(i)) continue;
-      const double qx = (1.0 - th) * s.x[i] + th * ux_[i];
-      const double qy = (1.0 - th) * s.y[i] + th * uy_[i];
-      const double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
-      const GuideContact gc = guide_contact(guide, qx, qy, vx, vy);
+      const GuideContact gc = guide_contact_at_theta(guide, s, ux_, uy_, i, th, h);
       if (gc.active) report.friction_work += h * gc.friction_force * gc.slip;
     }
   }
