@@ -11,6 +11,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "chart_list.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -192,16 +193,6 @@ inertia = 0.01
       run("dynamics " + write("none.toml", "[chain]\ntype = \"roller-iso606\"\n"));
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.err.find("dynamics"), std::string::npos) << missing.err;
-}
-
-// The chart lists of a report: the plain one ("catena-charts") and the one with markers and
-// frames ("catena-charts-extra").
-nlohmann::json chart_list(const std::string& html, const std::string& id) {
-  const std::string open = "<script type=\"application/json\" id=\"" + id + "\">";
-  const std::size_t at = html.find(open);
-  if (at == std::string::npos) return nlohmann::json::array();
-  const std::size_t from = at + open.size();
-  return nlohmann::json::parse(html.substr(from, html.find("</script>", from) - from));
 }
 
 // `catena report` on the example: the time series (each curve's extremes those of the JSON),

@@ -11,7 +11,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <sstream>
 
+#include "chart_list.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -115,6 +117,48 @@ colour = "red"
     EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
   EXPECT_NE(r.err.find("a number in [0, 1]"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("straight or arc"), std::string::npos) << r.err;
+}
+
+// The report's animation draws the guides, fixed, in every frame: four rails as the example gives
+// them (mm), and the rollers of the upper run ride one roller radius above the upper rail.
+TEST(DynamicsConveyorCli, ReportAnimationDrawsTheGuides) {
+  const fs::path out = fs::temp_directory_path() / "catena_dynamics_conveyor_cli" / "report.html";
+  fs::create_directories(out.parent_path());
+  const CliRun r = run("report " + kExample + " -o " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::stringstream ss;
+  ss << std::ifstream(out).rdbuf();
+  const auto extra = chart_list(ss.str(), "catena-charts-extra");
+  ASSERT_EQ(extra.size(), 2u);
+  const auto& frames = extra[1]["frames"];
+  ASSERT_GE(frames.size(), 2u);
+  for (const auto& frame : frames) {
+    const auto& t = frame["traces"];
+    ASSERT_EQ(t.size(), 7u);  // two wheels, four guides, the chain
+    EXPECT_EQ(t[2]["name"], "guide 1");
+    EXPECT_EQ(t[5]["name"], "guide 4");
+    EXPECT_EQ(t[2]["x"], nlohmann::json::array({57.15, 1085.85}));
+    EXPECT_EQ(t[2]["y"], nlohmann::json::array({42.475, 42.475}));
+    // the upper rail's lead-in: an arc of 50 mm about (1085.85, -7.525) mm from 30° to 90°
+    const auto ax = t[3]["x"].get<std::vector<double>>(), ay = t[3]["y"].get<std::vector<double>>();
+    ASSERT_GE(ax.size(), 3u);
+    // (the report writes 6 significant digits: 1e-3 mm at a metre)
+    for (std::size_t k = 0; k < ax.size(); ++k)
+      EXPECT_NEAR(std::hypot(ax[k] - 1085.85, ay[k] + 7.525), 50.0, 1e-3);
+    EXPECT_NEAR(std::atan2(ay.front() + 7.525, ax.front() - 1085.85), kPi / 6, 1e-4);
+    EXPECT_NEAR(std::atan2(ay.back() + 7.525, ax.back() - 1085.85), kPi / 2, 1e-4);
+  }
+  // the last frame: every roller well along the upper run sits on the rail (its centre one
+  // roller radius, 6.035 mm, above it, within the contact's few-µm penetration)
+  const auto& chain = frames.back()["traces"][6];
+  const auto cx = chain["x"].get<std::vector<double>>(), cy = chain["y"].get<std::vector<double>>();
+  int on_rail = 0;
+  for (std::size_t i = 0; i < cx.size(); ++i) {
+    if (cx[i] < 200.0 || cx[i] > 950.0 || cy[i] < 0.0) continue;
+    EXPECT_NEAR(cy[i], 42.475 + 6.035, 0.02) << "roller at x = " << cx[i] << " mm";
+    ++on_rail;
+  }
+  EXPECT_GE(on_rail, 30);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "catena/analysis/record.hpp"
+#include "catena/dynamics/chain.hpp"
 
 namespace catena::dynamics {
 
@@ -47,8 +48,14 @@ struct ReportInput {
   int teeth = 0;                                 ///< z of the driver
   double driver_speed = 0.0;                     ///< ω [rad/s]: tooth mesh at z ω / 2π
   std::vector<WheelOutline> wheels;
+  /// [m] each guide's rail surface as a polyline (guide_polyline): drawn, fixed, in every frame
+  std::vector<std::vector<std::pair<double, double>>> guides;
   std::vector<LoopFrame> frames;
 };
+
+/// A guide's rail surface as a polyline [m]: a straight rail's two ends, an arc at most 5° a
+/// segment (at least 2 segments).
+std::vector<std::pair<double, double>> guide_polyline(const Guide& g);
 
 /// The outline of an ISO 606 sprocket (minimum tooth-gap form, 3 points an arc), about its
 /// centre, seat 0 on +x: what the animation draws.

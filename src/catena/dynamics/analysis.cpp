@@ -604,6 +604,7 @@ struct Result {
   // frame_count() instants spread over the run, and the wheels' outlines
   std::vector<LoopFrame> frames;
   std::vector<WheelOutline> outlines;
+  std::vector<std::vector<std::pair<double, double>>> guides;  // rail surfaces, fixed
 };
 
 // The torque the chain puts on wheel w (counter-clockwise positive).
@@ -695,8 +696,12 @@ Result run(const analysis::Inputs& in) {
         {"sprocket " + std::to_string(w) + (w == d.driver ? " (driver)" : " (driven)"),
          wheels[w].centre_x, wheels[w].centre_y,
          sprocket_outline(d.pitch, d.roller, d.width, wheels[w].teeth)});
-  const std::size_t frames =
-      frame_count(n, out.outlines[0].outline.size() + out.outlines[1].outline.size() + 2);
+  std::size_t drawn = out.outlines[0].outline.size() + out.outlines[1].outline.size() + 2;
+  for (const Guide& g : d.guides) {
+    out.guides.push_back(guide_polyline(g));
+    drawn += out.guides.back().size();
+  }
+  const std::size_t frames = frame_count(n, drawn);
   const int frame_every = std::max(
       1, static_cast<int>(std::ceil(static_cast<double>(steps) / static_cast<double>(frames - 1))));
   auto snapshot = [&] { out.frames.push_back({s.time, s.x, s.y, s.angle}); };
@@ -868,6 +873,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
   report.span.push_back({upper_tight ? "upper span (tight)" : "upper span (slack)", r.span[0]});
   report.span.push_back({upper_tight ? "lower span (slack)" : "lower span (tight)", r.span[1]});
   report.wheels = r.outlines;
+  report.guides = r.guides;
   report.frames = r.frames;
   rec.charts = report_charts(report);
   return rec;

@@ -18,6 +18,19 @@ std::vector<std::pair<double, double>> sprocket_outline(double pitch, double rol
   return drive::tooth_outline(s, s.min_gap, 3);
 }
 
+std::vector<std::pair<double, double>> guide_polyline(const Guide& g) {
+  if (g.kind == Guide::Kind::kStraight) return {{g.x0, g.y0}, {g.x1, g.y1}};
+  const double sweep = g.end_angle - g.start_angle;
+  const int segments =
+      std::max(2, static_cast<int>(std::ceil(std::abs(sweep) / (5.0 * std::numbers::pi / 180.0))));
+  std::vector<std::pair<double, double>> line;
+  for (int k = 0; k <= segments; ++k) {
+    const double a = g.start_angle + sweep * k / segments;
+    line.emplace_back(g.centre_x + g.radius * std::cos(a), g.centre_y + g.radius * std::sin(a));
+  }
+  return line;
+}
+
 std::size_t frame_count(std::size_t nodes, std::size_t outline_points) {
   const std::size_t per_frame = nodes + 1 + outline_points;
   return std::clamp<std::size_t>(kMaxFramePoints / std::max<std::size_t>(per_frame, 1), 2,
@@ -136,6 +149,14 @@ std::vector<analysis::Chart> report_charts(const ReportInput& in) {
         if (!o.outline.empty()) {  // closed
           t.x.push_back(t.x.front());
           t.y.push_back(t.y.front());
+        }
+        traces.push_back(std::move(t));
+      }
+      for (std::size_t g = 0; g < in.guides.size(); ++g) {
+        analysis::Trace t{"guide " + std::to_string(g + 1), {}, {}};
+        for (const auto& [x, y] : in.guides[g]) {
+          t.x.push_back(mm(x));
+          t.y.push_back(mm(y));
         }
         traces.push_back(std::move(t));
       }
