@@ -195,6 +195,48 @@ inertia = 0.01
   EXPECT_NE(missing.err.find("dynamics"), std::string::npos) << missing.err;
 }
 
+// `work_balance = true` adds summary.work_balance: the run's input, friction, link and contact
+// damper works and the numerical rest, which add up to E_end − E_0 (the energy drift plus the
+// input and friction works); without it the output has no such field. A value other than true or
+// false is named with its line.
+TEST(DynamicsCli, WorkBalanceIsOptInAndAddsUp) {
+  std::stringstream text;
+  text << std::ifstream(kExample).rdbuf();
+  std::string with = text.str();
+  const std::size_t at = with.find("[dynamics]\n");
+  ASSERT_NE(at, std::string::npos);
+  with.insert(at + 11, "work_balance = true\n");
+  const CliRun r =
+      run("dynamics " + write("balance.toml", with) + " --duration 0.1s --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j["summary"].contains("work_balance")) << j["summary"].dump();
+  EXPECT_EQ(j["units"]["work_balance"], "J");
+  const auto& b = j["summary"]["work_balance"];
+  const double input = b["input"], friction = b["friction"], links = b["link_dampers"],
+               contact = b["contact_dampers"], numerical = b["numerical"];
+  EXPECT_GT(input, 0.0);     // the driver puts in more than the load takes while the dampers work
+  EXPECT_EQ(friction, 0.0);  // no guides
+  EXPECT_LT(links, 0.0);
+  EXPECT_LT(contact, 0.0);
+  EXPECT_LT(numerical, 0.0);  // θ = 0.6 dissipates
+  const double drift = j["summary"]["energy_drift"];
+  EXPECT_NEAR(links + contact + numerical, drift, 1e-12 + 1e-9 * std::abs(drift));
+  const CliRun plain = run("dynamics " + kExample + " --duration 0.1s --format json");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const auto p = nlohmann::json::parse(plain.out);
+  EXPECT_FALSE(p["summary"].contains("work_balance"));
+  EXPECT_FALSE(p["units"].contains("work_balance"));
+  EXPECT_EQ(p["summary"]["energy_drift"], j["summary"]["energy_drift"]);
+
+  std::string bad = text.str();
+  bad.insert(at + 11, "work_balance = \"yes\"\n");
+  const CliRun e = run("dynamics " + write("balance_bad.toml", bad));
+  EXPECT_EQ(e.status, 2);
+  EXPECT_NE(e.err.find("dynamics.work_balance"), std::string::npos) << e.err;
+  EXPECT_NE(e.err.find("true or false"), std::string::npos) << e.err;
+}
+
 // `catena report` on the example: the time series (each curve's extremes those of the JSON),
 // the span-tension spectrum with the tooth-mesh harmonics marked and peaks at them, and the
 // animation, whose rollers sit in the drawn outlines' seats.

@@ -84,6 +84,9 @@ struct GuideContact {
   double friction_force = 0.0;  ///< [N] f_t along t (opposes the sliding speed)
   double slip = 0.0;            ///< [m/s] v_t = v·t, the roller's sliding speed along the rail
   double energy = 0.0;          ///< [J] the elastic contact energy
+  /// [W] the power of the normal force's damping part on the roller, −(f − f_el) ġ ≤ 0 (f_el the
+  /// elastic part; with f clamped at 0 the damper cancels f_el): the contact damper's dissipation
+  double damping_power = 0.0;
   double nx = 0.0, ny = 0.0;    ///< unit normal to the free side
   double fx = 0.0, fy = 0.0;    ///< [N] F
   double dq[4] = {0, 0, 0, 0};  ///< [N/m] ∂F/∂q
@@ -127,6 +130,10 @@ struct State {
   std::vector<double> angle;   ///< [rad] per sprocket: ψ, the angle of seat 0
   std::vector<double> speed;   ///< [rad/s] per sprocket
   double friction_work = 0.0;  ///< [J] work of the guides' friction on the chain so far (≤ 0)
+  double damper_work = 0.0;    ///< [J] work of the links' dampers so far (≤ 0 at θ = ½)
+  double drag_work = 0.0;      ///< [J] work of the drag −α m v so far (≤ 0)
+  /// [J] work of the seats' and guides' contact dampers so far (≤ 0)
+  double contact_damping_work = 0.0;
   explicit State(std::size_t nodes = 0, std::size_t sprockets = 0)
       : x(nodes), y(nodes), vx(nodes), vy(nodes), angle(sprockets), speed(sprockets) {}
   std::size_t nodes() const { return x.size(); }
@@ -172,6 +179,9 @@ struct SeatContact {
   double stiffness = 0.0;    ///< [N/m] ∂f/∂g (0 when f is clamped at 0)
   double damping = 0.0;      ///< [N·s/m] the damping coefficient at this penetration
   double energy = 0.0;       ///< [J] the elastic contact energy
+  /// [W] the power of the force's damping part on roller and wheel together, −(f − f_el) ġ ≤ 0
+  /// (ġ the rate at the contact point relative to the wheel): the contact damper's dissipation
+  double damping_power = 0.0;
   double curvature = 0.0;  ///< [1/m] of the surface met: 1/|q − C| on the seating arc, 0 on a flank
   double nx = 0.0, ny = 0.0;          ///< unit vector from the seat centre to the roller
   double torque = 0.0;                ///< [N·m] on the wheel, counter-clockwise positive

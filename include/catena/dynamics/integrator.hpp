@@ -47,6 +47,12 @@ struct StepReport {
   int backtracks = 0;            ///< line-search halvings taken
   double max_penetration = 0.0;  ///< [m] deepest roller–seat penetration at the step's θ point
   double friction_work = 0.0;    ///< [J] the guides' friction work over the step (≤ 0)
+  /// [J] the links' dampers' work over the step: −Σ c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ, which is
+  /// −Σ c (l₁ − l₀)²/h at θ = ½
+  double damper_work = 0.0;
+  double drag_work = 0.0;  ///< [J] the drag's work over the step, −Σ α m |x₁ − x₀|²/h (≤ 0)
+  /// [J] the seats' and guides' contact dampers' work over the step (≤ 0)
+  double contact_damping_work = 0.0;
   SolveStatus solve = SolveStatus::kSolved;
 };
 
@@ -88,6 +94,8 @@ class Integrator {
   std::vector<double> schur_;            // the driven wheels' Schur complement
   std::vector<double> torque_;           // per wheel: the θ-point contact torque (last assembly)
   double max_penetration_ = 0.0;
+  // the dissipative works of the last assembly's iterate (StepReport's fields)
+  double damper_work_ = 0.0, drag_work_ = 0.0, contact_damping_work_ = 0.0;
 };
 
 }  // namespace catena::dynamics

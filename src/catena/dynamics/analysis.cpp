@@ -71,7 +71,10 @@ std::vector<Parameter> table_fields() {
                "sampling interval of the series, rounded to whole steps (default: every step)"),
       number("theta", "theta of the integrator in [0.5, 1] (default 0.6; drives need >= 0.6)"),
       number("gravity",
-             "true (9.80665 m/s^2), false, or g in [0, 100] m/s^2, downward (-y; default: none)")};
+             "true (9.80665 m/s^2), false, or g in [0, 100] m/s^2, downward (-y; default: none)"),
+      text("work_balance",
+           "true to add the run's work balance to the summary: input, friction, link and "
+           "contact dampers, numerical (default false)")};
 }
 
 // [[dynamics.guide]]: a rail the rollers slide on (docs/models/dynamics.md, "Guides"), in the
@@ -181,6 +184,7 @@ struct Setup {
   double speed = NAN, inertia = NAN, load = 0.0;
   double gravity = 0.0;       // [m/s²] downward (−y)
   std::vector<Guide> guides;  // [[dynamics.guide]]
+  bool work_balance = false;  // summary.work_balance in the output
 };
 
 bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
@@ -204,6 +208,7 @@ Setup parse(const analysis::Inputs& in) {
   static const std::regex row(R"(^dynamics\.sprocket\[(\d+)\]\.([^.]+)$)");
   static const std::regex guide_row(R"(^dynamics\.guide\[(\d+)\]\.([^.]+)$)");
   double gravity = 0.0;  // [m/s²] downward
+  bool work_balance = false;
   for (const Entry& v : file.table) {
     if (v.path.rfind("dynamics.", 0) != 0) continue;  // the rest of a case file is not ours
     std::smatch m;
@@ -287,6 +292,14 @@ Setup parse(const analysis::Inputs& in) {
         issues.push_back({where(v), "'" + v.text + "'",
                           "true, false or g in [0, 100] m/s^2 (a plain number, downward)"});
       }
+      continue;
+    }
+    if (key == "work_balance") {
+      line[key] = v.line;
+      if (v.is_boolean)
+        work_balance = v.text == "true";
+      else
+        issues.push_back({where(v), "'" + v.text + "'", "true or false"});
       continue;
     }
     if (key.rfind("guide", 0) == 0) {
@@ -481,6 +494,7 @@ Setup parse(const analysis::Inputs& in) {
     }
   }
   s.gravity = gravity;
+  s.work_balance = work_balance;
   // the guides: kind and its geometry, all present; then the core's checks (named per field)
   for (std::size_t i = 0; i < guides.size(); ++i) {
     const GuideInput& g = guides[i];
@@ -599,6 +613,10 @@ struct Result {
   int steps = 0;
   double wall_time = 0.0, energy_drift = 0.0, max_penetration = 0.0;
   double friction_work = 0.0;
+  // the work balance (summary.work_balance): E_end − E_0 = input + friction + link dampers +
+  // contact dampers + numerical (the command's model has no drag)
+  double input_work = 0.0, damper_work = 0.0, contact_damping_work = 0.0;
+  double numerical_work = 0.0;
   std::vector<Diagnostic> diagnostics;
   // for the report's animation only (never in the JSON or CSV): the loop at up to
   // frame_count() instants spread over the run, and the wheels' outlines
@@ -740,6 +758,12 @@ Result run(const analysis::Inputs& in) {
   // the guides' friction work is 0 without guides: the drift is then the same number as before
   out.friction_work = s.friction_work;
   out.energy_drift = energy(model, s).total() - e0 - work - s.friction_work;
+  out.input_work = work;
+  out.damper_work = s.damper_work;
+  out.contact_damping_work = s.contact_damping_work;
+  // what the model's dissipation does not account for: the θ-method and the contacts' penalty
+  // (evaluated at the θ point, not by a discrete gradient)
+  out.numerical_work = out.energy_drift - s.damper_work - s.contact_damping_work;
   if (d.theta < 0.6)
     out.diagnostics.push_back(
         {Diagnostic::Severity::kWarning, "dynamics.theta_below_0_6",
@@ -801,6 +825,14 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["guides"] = static_cast<int>(d.guides.size());
     j["summary"]["friction_work"] = r.friction_work;
   }
+  // opt-in (work_balance = true): without it the output is what it was
+  if (d.work_balance) {
+    j["summary"]["work_balance"] = Value::object({{"input", r.input_work},
+                                                  {"friction", r.friction_work},
+                                                  {"link_dampers", r.damper_work},
+                                                  {"contact_dampers", r.contact_damping_work},
+                                                  {"numerical", r.numerical_work}});
+  }
   j["diagnostics"] = analysis::diagnostics_value(r.diagnostics);
   j["units"] = analysis::units_value({{"pitch", "m"},
                                       {"centre_distance", "m"},
@@ -818,6 +850,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                       {"limit", "SI"}});
   if (d.gravity > 0.0) j["units"]["gravity"] = "m/s^2";
   if (!d.guides.empty()) j["units"]["friction_work"] = "J";
+  if (d.work_balance) j["units"]["work_balance"] = "J";
   rec.data = std::move(j);
 
   std::ostringstream csv;
@@ -859,6 +892,11 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (d.gravity > 0.0 || !d.guides.empty())
     t << "  gravity " << format_g(d.gravity, 6) << " m/s^2, " << d.guides.size()
       << " guide(s), friction work " << format_g(r.friction_work, 5) << " J\n";
+  if (d.work_balance)
+    t << "  work balance: input " << format_g(r.input_work, 5) << " J, friction "
+      << format_g(r.friction_work, 5) << " J, link dampers " << format_g(r.damper_work, 5)
+      << " J, contact dampers " << format_g(r.contact_damping_work, 5) << " J, numerical "
+      << format_g(r.numerical_work, 4) << " J\n";
   for (const Diagnostic& diag : r.diagnostics)
     t << "  " << to_string(diag.severity) << ": " << diag.message << "\n";
   rec.table = t.str();

@@ -192,7 +192,11 @@ GuideContact guide_contact(const Guide& gd, double x, double y, double vx, doubl
   c.energy =
       g < eps ? kc * g * g * g / (6.0 * eps) : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
   const double f = elastic + cg * rate;
-  if (!(f > 0.0)) return c;  // separating: no force
+  if (!(f > 0.0)) {  // separating: no force; the damper cancels the elastic part
+    c.damping_power = elastic * rate;
+    return c;
+  }
+  c.damping_power = -cg * rate * rate;
   // f and its gradients (∂g/∂q = −n, ∂ġ/∂q = −κ v_t tᵀ, ∂ġ/∂v = −nᵀ)
   const double fg = slope + dcg * rate;
   const double dfq[2] = {-fg * nx - cg * kappa * vt * tx, -fg * ny - cg * kappa * vt * ty};
@@ -325,6 +329,9 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
   // ∂f/∂g: the elastic slope, and the damping's ramp over the first ε
   if (g < eps) c.stiffness += w.contact_damping * rate / eps;
   if (c.force <= 0.0) c.stiffness = c.damping = 0.0;
+  // the contact's power on roller and wheel together is −f ġ (the torque's share included);
+  // the part of the damper, f − f_el, is the dissipation
+  c.damping_power = -(c.force - elastic) * rate;
   c.active = true;
   c.penetration = g;
   // the reaction +f n acts on the wheel along the line through the roller centre q

@@ -79,9 +79,13 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   const double p = model.pitch;
   // Residual R(u) = (m/hθ)(u − x₀ − h v₀) + α m (u − x₀) − h (Σ f + m g) and its Jacobian
   // J = (m/hθ + α m) I + h Σ A; the system is J δ = −R.
+  // The dissipative works of this iterate (the step's report takes the last assembly's): the drag
+  // impulse is −α m Δx, its work −α m |Δx|²/h; the link dampers' and contact dampers' below.
+  damper_work_ = drag_work_ = contact_damping_work_ = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const double m = model.mass[i];
     const double dx = ux_[i] - s.x[i], dy = uy_[i] - s.y[i];
+    drag_work_ -= model.drag * m * (dx * dx + dy * dy) / h;
     const double inertia = m / (h * th);
     if (jacobian) {
       solver_.diag[i] = {inertia + model.drag * m, 0.0, 0.0, inertia + model.drag * m};
@@ -110,6 +114,11 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     // loss c (l₁ − l₀)²/h (Simo & Tarnow 1992).
     const double phi = (k * (lt - p) + c * (l1 - l0) / h) / lt;
     const double fx = h * phi * mx, fy = h * phi * my;
+    // the damper's share of φ d_θ does the work −c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ on the two
+    // nodes (d_θ·(d₁ − d₀) = l̄ (l₁ − l₀) + (θ − ½)|d₁ − d₀|²: −c (l₁ − l₀)²/h at θ = ½)
+    if (c > 0.0) {
+      damper_work_ -= c * (l1 - l0) / h * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
+    }
     solver_.rhs[a].x += fx;
     solver_.rhs[a].y += fy;
     solver_.rhs[b].x -= fx;
@@ -151,6 +160,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       const SeatContact sc = seat_contact(wheel, qx, qy, vx, vy, psi, omega);
       if (!sc.active) continue;
       max_penetration_ = std::max(max_penetration_, sc.penetration);
+      contact_damping_work_ += h * sc.damping_power;
       torque += sc.torque;
       solver_.rhs[i].x -= h * sc.force * sc.nx;  // the force on the roller is −f n
       solver_.rhs[i].y -= h * sc.force * sc.ny;
@@ -353,15 +363,25 @@ StepReport Integrator::step(const Model& model, State& s) {
   if (!report.converged) return report;
   // The guides' friction work over the step: the friction force the step applied (at the θ point,
   // with the step's velocity) times the step's displacement along the rail, h f_t v_t ≤ 0.
+  // Likewise the guides' contact dampers; the links', the drag's and the seats' dissipation are
+  // those of the last assembly's iterate (within tolerance·p of the accepted one).
+  report.damper_work = damper_work_;
+  report.drag_work = drag_work_;
+  report.contact_damping_work = contact_damping_work_;
   for (const Guide& guide : model.guides) {
-    if (!(guide.friction > 0.0)) continue;
+    if (!(guide.friction > 0.0) && !(guide.contact_damping > 0.0)) continue;
     for (std::size_t i = 0; i < n; ++i) {
       if (model.is_pinned(i)) continue;
       const GuideContact gc = guide_contact_at_theta(guide, s, ux_, uy_, i, th, h);
-      if (gc.active) report.friction_work += h * gc.friction_force * gc.slip;
+      if (!gc.active) continue;
+      report.friction_work += h * gc.friction_force * gc.slip;
+      report.contact_damping_work += h * gc.damping_power;
     }
   }
   s.friction_work += report.friction_work;
+  s.damper_work += report.damper_work;
+  s.drag_work += report.drag_work;
+  s.contact_damping_work += report.contact_damping_work;
   for (std::size_t i = 0; i < n; ++i) {
     if (model.is_pinned(i)) continue;
     // x₁ = x₀ + h ((1 − θ) v₀ + θ v₁)

@@ -1,0 +1,126 @@
+// Issue 21, validation (5), second half: with friction and dampers the work balance closes.
+//
+// Over a run, E_end − E_0 = W_in + W_friction + W_link dampers + W_contact dampers + W_drag
+// + W_numerical, every term but the last reported by the integrator (StepReport, State), the last
+// what is left. Here W_in = 0 (gravity is in the energy). At θ = ½ the links' discrete gradient
+// is exact, so W_numerical is what the guides' penalty contacts (evaluated at the midpoint, not
+// by a discrete gradient) and the Newton tolerance leave; at θ = 0.6 the θ-method takes
+// −(θ − ½) Σ m |v₁ − v₀|² a step besides (docs/models/dynamics.md, "Work balance").
+//
+// The normaliser is the work the model's dissipative forces did, |W_friction + W_dampers|: the
+// balance is a statement about that work, it is of the order of the energies that moved, and
+// unlike the kinetic energy it does not depend on the frame the chain slides in.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "catena/dynamics/integrator.hpp"
+
+namespace catena::dynamics {
+namespace {
+
+constexpr double kG = 9.81;           // [m/s²]
+constexpr double kClosureTol = 1e-3;  // issue 21 (5): the balance closes to 1e-3
+constexpr double kRoller = 0.006;     // [m] roller radius
+constexpr double kPitch = 0.01905;    // [m]
+constexpr double kNodeMass = 0.024;   // [kg]
+constexpr std::size_t kNodes = 21;
+
+struct Balance {
+  double e0 = 0.0, e1 = 0.0;
+  double friction = 0.0, dampers = 0.0, contact = 0.0, drag = 0.0;
+  double kinetic_max = 0.0;
+  double dissipated() const { return friction + dampers + contact + drag; }
+  double numerical() const { return e1 - e0 - dissipated(); }
+};
+
+// A 20-link chain sliding down a rail inclined at 15° with μ = 0.2 (tan 15° > μ: it speeds up),
+// link dampers, contact damping and a little drag, released at 1 m/s with a longitudinal wave
+// along it and every other roller thrown off the rail at 0.1 m/s, so that the rollers bounce and
+// the links ring: every dissipative force works. 3 s.
+Balance slide(double theta, double step) {
+  const double incline = 15.0 * std::numbers::pi / 180.0;
+  Model model = uniform_chain(kNodes, false, kPitch, kNodeMass, 2e6, 30.0, false);
+  model.drag = 0.01;
+  model.gravity_x = -kG * std::sin(incline);  // the rail along +x, the slope down −x
+  model.gravity_y = -kG * std::cos(incline);
+  Guide rail;
+  rail.x0 = -10.0;
+  rail.x1 = 1.0;
+  rail.roller_radius = kRoller;
+  rail.contact_stiffness = 1e6;
+  rail.contact_damping = 100.0;
+  rail.friction = 0.2;
+  rail.friction_band = 1e-3;
+  model.guides = {rail};
+  State s(kNodes, 0);
+  const double sink =
+      kNodeMass * kG * std::cos(incline) / rail.contact_stiffness + 0.5 * rail.contact_smoothing;
+  for (std::size_t i = 0; i < kNodes; ++i) {
+    const double phase = 2.0 * std::numbers::pi * static_cast<double>(i) / (kNodes - 1);
+    s.x[i] = kPitch * static_cast<double>(i);
+    s.y[i] = kRoller - sink;
+    s.vx[i] = -1.0 + 0.3 * std::sin(phase);
+    s.vy[i] = i % 2 == 1 ? 0.2 : 0.0;
+  }
+  Balance b;
+  b.e0 = energy(model, s).total();
+  Integrator integ(model, {.step = step, .theta = theta});
+  const int steps = static_cast<int>(std::lround(3.0 / step));
+  for (int k = 0; k < steps; ++k) {
+    const StepReport r = integ.step(model, s);
+    if (!r.converged) {
+      ADD_FAILURE() << "step " << k << " did not converge";
+      return b;
+    }
+    b.kinetic_max = std::max(b.kinetic_max, energy(model, s).kinetic);
+  }
+  b.e1 = energy(model, s).total();
+  b.friction = s.friction_work;
+  b.dampers = s.damper_work;
+  b.contact = s.contact_damping_work;
+  b.drag = s.drag_work;
+  return b;
+}
+
+void print(const char* what, const Balance& b) {
+  std::printf(
+      "%s: dE %.6g J, friction %.6g, link dampers %.6g, contact dampers %.6g, drag %.6g, "
+      "numerical %.6g (%.3g of the dissipated work, %.3g of the largest kinetic energy %.4g)\n",
+      what, b.e1 - b.e0, b.friction, b.dampers, b.contact, b.drag, b.numerical(),
+      b.numerical() / std::abs(b.dissipated()), b.numerical() / b.kinetic_max, b.kinetic_max);
+}
+
+TEST(DynamicsWorkBalance, ClosesAtThetaHalfWithFrictionAndDampers) {
+  const Balance b = slide(0.5, 1e-4);
+  print("theta 0.5", b);
+  // every dissipative force did work, and none of it was a gain
+  EXPECT_LT(b.friction, 0.0);
+  EXPECT_LT(b.dampers, 0.0);
+  EXPECT_LT(b.contact, 0.0);
+  EXPECT_LT(b.drag, 0.0);
+  // the slide is not a trivial balance: the work moved is several times the kinetic energy
+  EXPECT_GT(std::abs(b.dissipated()), 0.5 * b.kinetic_max);
+  // each term matters: leaving any one out would break the closure below
+  for (const double w : {b.friction, b.dampers, b.contact, b.drag}) {
+    EXPECT_GT(std::abs(w), kClosureTol * std::abs(b.dissipated()));
+  }
+  EXPECT_LT(std::abs(b.numerical()), kClosureTol * std::abs(b.dissipated()));
+  EXPECT_LT(std::abs(b.numerical()), kClosureTol * b.kinetic_max);
+}
+
+TEST(DynamicsWorkBalance, ThetaMethodsDissipationIsReportedAsNumerical) {
+  const Balance b = slide(0.6, 1e-4);
+  const Balance half = slide(0.5, 1e-4);
+  print("theta 0.6", b);
+  // the θ-method takes energy beyond the model's dissipation: the numerical part is a loss, too
+  // large for the balance to close without it, and far above what is left at θ = ½
+  EXPECT_LT(b.numerical(), -kClosureTol * std::abs(b.dissipated()));
+  EXPECT_GT(std::abs(b.numerical()), 10.0 * std::abs(half.numerical()));
+  // the same slide: the physical works agree with θ = ½ where they are large
+  EXPECT_NEAR(b.friction, half.friction, 1e-2 * std::abs(half.friction));
+}
+
+}  // namespace
+}  // namespace catena::dynamics
