@@ -85,8 +85,11 @@ void check_table_path(const TableValue& t, const std::string& key, const std::st
                       std::vector<Issue>& issues) {
   const std::string parent = key.substr(0, key.rfind('.'));
   const std::string leaf = key.substr(key.rfind('.') + 1);
+  // an array of tables ("dynamics.sprocket") holds rows, not values: its rows are parents
+  const bool array = std::find(t.tables.begin(), t.tables.end(), parent + "[0]") != t.tables.end();
   const bool known_parent =
-      parent == t.key || std::find(t.tables.begin(), t.tables.end(), parent) != t.tables.end();
+      !array &&
+      (parent == t.key || std::find(t.tables.begin(), t.tables.end(), parent) != t.tables.end());
   if (known_parent && !leaf.empty() && leaf.find('[') == std::string::npos) return;
   std::string rows;  // the rows and sub-tables the file has, as the user would name them
   for (const std::string& table : t.tables) {

@@ -318,10 +318,15 @@ TEST(SweepCli, LoopAndWearWithTheLoopsTensionsSweep) {
 TEST(SweepCli, TablePathsNameWhatTheCaseHas) {
   const std::string drive = kExamples + "/dynamics_12B.toml";
   const CliRun r =
-      run("sweep " + drive + " --grid 'dynamics.sprocket[2].load_torque=5' --grid 'loop.speed=1'");
+      run("sweep " + drive + " --grid 'dynamics.sprocket[2].load_torque=5' --grid 'loop.speed=1'" +
+          " --grid dynamics.sprocket.teeth=12");
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out, "");
-  EXPECT_NE(r.err.find("2 problems"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("3 problems"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--grid dynamics.sprocket.teeth = (grid): expected a value of the "
+                       "[dynamics] table"),
+            std::string::npos)
+      << r.err;
   EXPECT_NE(r.err.find("--grid dynamics.sprocket[2].load_torque = (grid): expected a value of "
                        "the [dynamics] table: dynamics.<key> or <row>.<key> with a row of the "
                        "file (dynamics.sprocket[0], dynamics.sprocket[1])"),
