@@ -119,10 +119,6 @@ void check_key(const analysis::Analysis& a, const std::vector<std::string>& know
                         (near ? " (did you mean '" + *near + "'?)" : std::string())});
 }
 
-// Runs one point into its slot. Only InputError is the point's own: anything else is kept for
-// the caller to rethrow.
-// `layout` is the worker's last list of scalar names: points with the same names share it, so a
-// long sweep holds its names once, not once per point.
 // catena::run with the shared tables as values: the point's table paths go into its own copy of
 // them, its other inputs bind as catena::run binds them.
 analysis::Record run_with_tables(const std::string& name, const InputSet& inputs,
@@ -197,6 +193,10 @@ analysis::Record run_with_tables(const std::string& name, const InputSet& inputs
   return a->evaluate(in);
 }
 
+// Runs one point into its slot. Only InputError is the point's own: anything else is kept for
+// the caller to rethrow.
+// `layout` is the worker's last list of scalar names: points with the same names share it, so a
+// long sweep holds its names once, not once per point.
 void run_point(const SweepRequest& request, SweepPoint& point, bool keep,
                std::shared_ptr<const std::vector<ScalarName>>& layout, std::exception_ptr& failure,
                const Progress* progress) {
