@@ -1,9 +1,12 @@
 // catena sweep CASE --grid KEY=VALUES ...: one analysis of a case file over a grid of values, on
 // the library's thread pool (catena/sweep.hpp), written as CSV — one row per point: the swept
 // inputs, the scalar results, the worst diagnostic. The case gives the analysis and the values
-// every point shares exactly as `catena run` binds them; the grid keys are case paths
-// (analyses.hinge.teeth) or, when the case has one analysis table, bare keys (teeth).
+// every point shares exactly as `catena run` binds them, the tables it reads ([dynamics], [loop])
+// included; the grid keys are case paths (analyses.hinge.teeth, or a value inside the analysis'
+// table: dynamics.sprocket[1].load_torque) or, when the case has one analysis table, bare keys
+// (teeth).
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -29,7 +32,8 @@ struct SweepFlags {
 struct GridFlag {
   std::string flag;   ///< "--grid analyses.hinge.teeth": how problems name it
   std::string table;  ///< the analysis table it names ("" for a bare key)
-  SweepAxis axis;     ///< key: the parameter key
+  SweepAxis axis;     ///< key: the parameter key, or a case path inside an analysis' table
+  std::string text;   ///< the --grid text of a case path outside [analyses] (dynamics.duration)
 };
 
 std::vector<GridFlag> read_grid(const std::vector<std::string>& texts, std::vector<Issue>& issues) {
@@ -50,9 +54,7 @@ std::vector<GridFlag> read_grid(const std::vector<std::string>& texts, std::vect
       g.table = rest.substr(0, dot);
       g.axis.key = rest.substr(dot + 1);
     } else if (axis->key.find('.') != std::string::npos) {
-      issues.push_back({"--grid", "'" + text + "'",
-                        "an input of the analysis: a key (teeth) or analyses.<name>.<key>"});
-      continue;
+      g.text = text;  // a value in a table of the case (dynamics.duration), or refused below
     }
     out.push_back(std::move(g));
   }
@@ -101,7 +103,9 @@ std::function<int()> add_sweep(CLI::App& app) {
   c->add_option("--grid", f->grid,
                 "KEY=a:b (whole numbers, inclusive), KEY=a:b:step or KEY=v1,v2,... (texts with "
                 "units: 30mm,40mm); KEY is analyses.<name>.<key>, or <key> when the case has one "
-                "analysis; repeat for more axes (the first varies slowest)")
+                "analysis, or a value in the table the analysis reads "
+                "(dynamics.sprocket[1].load_torque); repeat for more axes (the first varies "
+                "slowest)")
       ->required();
   c->add_option("--threads", f->threads, "worker threads (default 0: every hardware thread)");
   c->add_option("-o,--output", f->output, "write the CSV to FILE instead of stdout");
@@ -120,21 +124,40 @@ std::function<int()> add_sweep(CLI::App& app) {
 
     SweepRequest request;
     std::map<std::string, std::string> flag_of;  // parameter key → the --grid that sweeps it
+    if (inputs.analysis != nullptr) {
+      // the analysis' tables ([dynamics], wear's [loop]) go to every point as the case has them
+      for (const io::RawInput& raw : inputs.raw) {
+        if (raw.type == io::RawInput::Type::kTable)
+          request.tables.push_back({raw.key, raw.table, raw.tables, raw.source});
+      }
+      for (const analysis::Parameter& p : inputs.analysis->parameters) {
+        const bool given = std::any_of(request.tables.begin(), request.tables.end(),
+                                       [&p](const TableValue& t) { return t.key == p.name; });
+        if (p.type == analysis::ParameterType::kTable && p.required && !given)
+          issues.push_back({p.name, "(missing)", p.expected.empty() ? "a table" : p.expected});
+      }
+    }
     for (const GridFlag& g : grid) {
       if (!g.table.empty() && g.table != table) continue;  // refused above
+      if (!g.text.empty()) {  // a case path outside [analyses]: inside one of the tables passed
+        const std::string head = g.axis.key.substr(0, g.axis.key.find('.'));
+        const bool in_table = std::any_of(request.tables.begin(), request.tables.end(),
+                                          [&head](const TableValue& t) { return t.key == head; });
+        if (!in_table) {
+          issues.push_back({"--grid", "'" + g.text + "'",
+                            request.tables.empty()
+                                ? "an input of the analysis: a key (teeth) or analyses.<name>.<key>"
+                                : "an input of the analysis: a key, analyses.<name>.<key> or a "
+                                  "value of its table (" +
+                                      request.tables.front().key + ".<key>)"});
+          continue;
+        }
+      }
       request.grid.push_back(g.axis);
       flag_of.emplace(g.axis.key, g.flag);
     }
     if (inputs.analysis != nullptr) {
       request.analysis = inputs.analysis->name;
-      for (const analysis::Parameter& p : inputs.analysis->parameters) {
-        // an analysis whose one input is a table (loop) cannot be swept; an optional table
-        // (wear's [loop]) is not passed to the points
-        if (p.type == analysis::ParameterType::kTable && p.required)
-          issues.push_back({"analyses." + table, "(table)",
-                            "an analysis without a table parameter ([" + p.name +
-                                "]): a sweep passes every value as text"});
-      }
       for (const io::RawInput& raw : inputs.raw) {
         if (raw.type == io::RawInput::Type::kTable) continue;
         // a value no point replaces must read as `catena run` reads it (its TOML type too)

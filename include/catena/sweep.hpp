@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "catena/analysis/parameter.hpp"
 #include "catena/analysis/record.hpp"
 #include "catena/core/error.hpp"
 #include "catena/core/progress.hpp"
@@ -33,6 +34,16 @@ inline constexpr unsigned kMaxSweepThreads = 1024;
 /// Inputs as `catena::run` takes them: key → text ("40 mm", "8", "true"), in order.
 using InputSet = std::vector<std::pair<std::string, std::string>>;
 
+/// A table parameter's value as a case file gives it ([dynamics] with its [[dynamics.sprocket]],
+/// [loop] with its segments): every value with its case path ("dynamics.sprocket[1].load_torque"),
+/// every table's path, the file's name. io::table_input makes one from a case file.
+struct TableValue {
+  std::string key;  ///< the table parameter ("dynamics", "loop")
+  std::vector<analysis::InputValue::Entry> entries;
+  std::vector<std::string> tables;  ///< every table's path in the file, empty ones too
+  std::string source;               ///< the file
+};
+
 /// One swept input: its key and the texts it takes, in order.
 struct SweepAxis {
   std::string key;
@@ -42,6 +53,14 @@ struct SweepAxis {
 struct SweepRequest {
   std::string analysis;  ///< registry name ("hinge", "engagement")
   InputSet base;         ///< values every point shares; a point's own value replaces the base's
+  /// Table parameters every point shares, as values (a table parameter in `base` is the path of a
+  /// file holding it, read by each point). A key of a point or an axis may then be a path inside
+  /// one of these tables ("dynamics.duration", "dynamics.sprocket[1].load_torque"): the point runs
+  /// with that value in place of the table's (or added, when the table lacks it), read as a
+  /// TOML value (true/false a boolean, a bare number a number, anything else a string). The path's
+  /// table must exist in `tables` (a row such as sprocket[1] must be in the file); a key the table
+  /// does not take is the point's error, as the analysis reports it.
+  std::vector<TableValue> tables;
   /// A grid: the Cartesian product of the axes, the first axis varying slowest. Or, when the grid
   /// is empty, `points`: each set is one point (its keys are the swept inputs). Not both.
   std::vector<SweepAxis> grid;

@@ -15,6 +15,7 @@
 #include "catena/catena.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/io/case_file.hpp"
+#include "catena/io/quantity.hpp"
 
 namespace catena {
 namespace {
@@ -68,25 +69,142 @@ InputSet merged(const InputSet& base, const InputSet& point) {
   return out;
 }
 
+// The shared table `key` is a path inside ("dynamics.duration" → [dynamics]), or nullptr.
+const TableValue* table_of_path(const std::vector<TableValue>& tables, const std::string& key) {
+  for (const TableValue& t : tables) {
+    if (key.size() > t.key.size() + 1 && key.compare(0, t.key.size(), t.key) == 0 &&
+        key[t.key.size()] == '.')
+      return &t;
+  }
+  return nullptr;
+}
+
+// A path inside a shared table names a value of a table the file has: its parent is the table
+// itself or one of its sub-tables or rows ("dynamics.sprocket[1]").
+void check_table_path(const TableValue& t, const std::string& key, const std::string& text,
+                      std::vector<Issue>& issues) {
+  const std::string parent = key.substr(0, key.rfind('.'));
+  const std::string leaf = key.substr(key.rfind('.') + 1);
+  // an array of tables ("dynamics.sprocket") holds rows, not values: its rows are parents
+  const bool array = std::find(t.tables.begin(), t.tables.end(), parent + "[0]") != t.tables.end();
+  const bool known_parent =
+      !array &&
+      (parent == t.key || std::find(t.tables.begin(), t.tables.end(), parent) != t.tables.end());
+  if (known_parent && !leaf.empty() && leaf.find('[') == std::string::npos) return;
+  std::string rows;  // the rows and sub-tables the file has, as the user would name them
+  for (const std::string& table : t.tables) {
+    if (table.rfind(t.key + ".", 0) == 0 && table.back() == ']')
+      rows += (rows.empty() ? "" : ", ") + table;
+  }
+  issues.push_back({key, text,
+                    "a value of the [" + t.key + "] table: " + t.key + ".<key>" +
+                        (rows.empty() ? std::string()
+                                      : " or <row>.<key> with a row of the file (" + rows + ")")});
+}
+
 void check_key(const analysis::Analysis& a, const std::vector<std::string>& known,
-               const std::string& key, const std::string& text, std::vector<Issue>& issues) {
+               const std::string& key, const std::string& text, std::vector<Issue>& issues,
+               const std::vector<TableValue>* tables = nullptr) {
   // allow_large is no parameter, but every analysis reads it (the binder does)
   if (a.parameter(key) != nullptr || key == analysis::kAllowLarge) return;
+  if (tables != nullptr) {
+    if (const TableValue* t = table_of_path(*tables, key)) {
+      check_table_path(*t, key, text, issues);
+      return;
+    }
+  }
   const auto near = io::did_you_mean(key, known);
   issues.push_back({key, text,
                     "an input of '" + a.name + "'" +
                         (near ? " (did you mean '" + *near + "'?)" : std::string())});
 }
 
+// catena::run with the shared tables as values: the point's table paths go into its own copy of
+// them, its other inputs bind as catena::run binds them.
+analysis::Record run_with_tables(const std::string& name, const InputSet& inputs,
+                                 const std::vector<TableValue>& tables, const Progress* progress) {
+  const analysis::Analysis* a = find_analysis(name);
+  std::vector<TableValue> own = tables;
+  InputSet plain;
+  for (const auto& [key, text] : inputs) {
+    const TableValue* shared = table_of_path(tables, key);
+    if (shared == nullptr) {
+      plain.emplace_back(key, text);
+      continue;
+    }
+    TableValue& t = own[static_cast<std::size_t>(shared - tables.data())];
+    // the value read as a TOML value typed in the file would be
+    analysis::InputValue::Entry entry{key, text, 0, false, false, false};
+    if (text == "true" || text == "false") {
+      entry.is_boolean = true;
+    } else if (io::is_bare_number(text)) {
+      entry.is_number = true;
+    } else {
+      entry.is_string = true;
+    }
+    const auto at = std::find_if(t.entries.begin(), t.entries.end(),
+                                 [&key = key](const auto& e) { return e.path == key; });
+    if (at != t.entries.end()) {
+      entry.line = at->line;
+      *at = std::move(entry);
+    } else {
+      t.entries.push_back(std::move(entry));
+    }
+  }
+  std::vector<io::RawInput> raw;
+  std::vector<Issue> issues;
+  std::vector<std::string> unread;  // table parameters whose file could not be read
+  for (const auto& [key, text] : plain) {
+    const analysis::Parameter* p = a->parameter(key);
+    if (p != nullptr && p->type == analysis::ParameterType::kTable) {  // a file, as catena::run
+      try {
+        raw.push_back(io::table_input(io::read_case(text), *p));
+      } catch (const InputError& e) {
+        unread.push_back(key);
+        for (const Issue& issue : e.issues())
+          issues.push_back({key, text,
+                            "a readable TOML file with a [" + p->name + "] table (" + issue.field +
+                                " = " + issue.value + ": " + issue.expected + ")"});
+      }
+      continue;
+    }
+    const bool is_flag = p != nullptr && p->type == analysis::ParameterType::kFlag;
+    raw.push_back(
+        {key, text, is_flag ? io::RawInput::Type::kBoolean : io::RawInput::Type::kText, {}, {}});
+  }
+  for (TableValue& t : own) {
+    io::RawInput r;
+    r.key = t.key;
+    r.type = io::RawInput::Type::kTable;
+    r.text = "[" + t.key + "]";
+    r.table = std::move(t.entries);
+    r.tables = std::move(t.tables);
+    r.source = std::move(t.source);
+    raw.push_back(std::move(r));
+  }
+  std::vector<Issue> bound;
+  analysis::Inputs in = io::bind(*a, raw, bound);
+  in.listen(progress);
+  for (Issue& issue : bound) {  // not again as missing
+    if (std::find(unread.begin(), unread.end(), issue.field) == unread.end())
+      issues.push_back(std::move(issue));
+  }
+  throw_if_any(issues);
+  return a->evaluate(in);
+}
+
 // Runs one point into its slot. Only InputError is the point's own: anything else is kept for
 // the caller to rethrow.
 // `layout` is the worker's last list of scalar names: points with the same names share it, so a
 // long sweep holds its names once, not once per point.
-void run_point(const std::string& name, const InputSet& base, SweepPoint& point, bool keep,
+void run_point(const SweepRequest& request, SweepPoint& point, bool keep,
                std::shared_ptr<const std::vector<ScalarName>>& layout, std::exception_ptr& failure,
                const Progress* progress) {
   try {
-    analysis::Record record = run(name, merged(base, point.inputs), progress);
+    const InputSet inputs = merged(request.base, point.inputs);
+    analysis::Record record = request.tables.empty() ? run(request.analysis, inputs, progress)
+                                                     : run_with_tables(request.analysis, inputs,
+                                                                       request.tables, progress);
     point.scalars = scalars_of(record.data);
     if (layout && *layout == *point.scalars.names) {
       point.scalars.names = layout;
@@ -179,6 +297,26 @@ std::vector<InputSet> sweep_points(const SweepRequest& request) {
   for (const analysis::Parameter& p : a->parameters) known.push_back(p.name);
   std::vector<Issue> issues;
   for (const auto& [key, text] : request.base) check_key(*a, known, key, text, issues);
+  for (std::size_t i = 0; i < request.tables.size(); ++i) {
+    const TableValue& t = request.tables[i];
+    const analysis::Parameter* p = a->parameter(t.key);
+    if (p == nullptr || p->type != analysis::ParameterType::kTable) {
+      std::string names;
+      for (const analysis::Parameter& each : a->parameters) {
+        if (each.type == analysis::ParameterType::kTable)
+          names += (names.empty() ? "" : ", ") + each.name;
+      }
+      issues.push_back({t.key, "(table)",
+                        names.empty() ? "no table: '" + a->name + "' takes none"
+                                      : "a table parameter of '" + a->name + "' (" + names + ")"});
+    }
+    const bool twice =
+        std::any_of(request.tables.begin(), request.tables.begin() + static_cast<std::ptrdiff_t>(i),
+                    [&t](const TableValue& o) { return o.key == t.key; }) ||
+        std::any_of(request.base.begin(), request.base.end(),
+                    [&t](const auto& kv) { return kv.first == t.key; });
+    if (twice) issues.push_back({t.key, "(table)", "one value of the table (it is given twice)"});
+  }
   if (!request.grid.empty() && !request.points.empty())
     issues.push_back({"points", "given with a grid", "a grid or a list of points, not both"});
   if (request.grid.empty() && request.points.empty())
@@ -187,7 +325,7 @@ std::vector<InputSet> sweep_points(const SweepRequest& request) {
   bool too_many = false;
   for (std::size_t i = 0; i < request.grid.size(); ++i) {
     const SweepAxis& axis = request.grid[i];
-    check_key(*a, known, axis.key, "(grid)", issues);
+    check_key(*a, known, axis.key, "(grid)", issues, &request.tables);
     for (std::size_t j = 0; j < i; ++j) {
       if (request.grid[j].key == axis.key) {
         issues.push_back({axis.key, "(grid)", "one axis per input (it is swept twice)"});
@@ -218,7 +356,7 @@ std::vector<InputSet> sweep_points(const SweepRequest& request) {
           std::find(unknown.begin(), unknown.end(), key) != unknown.end())
         continue;
       unknown.push_back(key);
-      check_key(*a, known, key, text, issues);
+      check_key(*a, known, key, text, issues, &request.tables);
     }
   }
   // A shared value that no point replaces and that does not read (a unit, a number) would fail
@@ -317,8 +455,7 @@ SweepResult sweep(const SweepRequest& request, const SweepOptions& options) {
       if (point_progress.cancelled()) break;
       const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
       if (i >= total) break;
-      run_point(request.analysis, request.base, result.points[i], keep, layout, failures[i],
-                listen);
+      run_point(request, result.points[i], keep, layout, failures[i], listen);
       if (done.fetch_add(1, std::memory_order_acq_rel) + 1 == total) {
         const std::lock_guard<std::mutex> lock(mutex);
         finished.notify_all();

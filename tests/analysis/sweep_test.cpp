@@ -4,11 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "catena/catena.hpp"
+#include "catena/io/bind.hpp"
+#include "catena/io/case_file.hpp"
 #include "catena/io/record.hpp"
 
 namespace catena {
@@ -280,6 +284,82 @@ TEST(Sweep, PointsAndThreadsAreBoundedAndNamedTogether) {
   request = hinge_grid();
   EXPECT_EQ(sweep(request, {.threads = 1024, .progress = {}, .keep_records = false}).points.size(),
             30u);
+}
+
+// A 12B drive of 3 ms (examples/dynamics_12B.toml, shortened), its driven wheel's load torque
+// given.
+std::string drive_toml(const std::string& load_torque) {
+  return "[dynamics]\nchain = \"12B\"\nlinks = 32\naxial_stiffness = \"5e7 N/m\"\n"
+         "axial_damping = 100\npretension = \"950 N\"\ncontact_stiffness = \"2e8 N/m\"\n"
+         "contact_damping = 800\nduration = \"3 ms\"\nstep = \"0.1 ms\"\ntheta = 0.6\n"
+         "[[dynamics.sprocket]]\nteeth = 12\nrole = \"driver\"\nspeed = \"13 rad/s\"\n"
+         "[[dynamics.sprocket]]\nteeth = 12\nrole = \"driven\"\ninertia = 0.01\nload_torque = " +
+         load_torque + "\n";
+}
+
+// The record as JSON without the run's wall-clock measurements (they time this run only).
+std::string without_wall_clock(analysis::Value data) {
+  data["summary"]["wall_time"] = 0.0;
+  data["summary"]["real_time_factor"] = 0.0;
+  return io::to_json(data);
+}
+
+// A table given as values reaches every point, an axis may vary a value inside it, and each point
+// is the run of a file holding that value, series and all, on 1 and 2 threads alike.
+TEST(Sweep, TablesReachEveryPointAndAnAxisMayVaryAValueInside) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "catena_sweep_tables";
+  fs::create_directories(dir);
+  const fs::path ten = dir / "ten.toml", five = dir / "five.toml";
+  std::ofstream(ten) << drive_toml("10");
+  std::ofstream(five) << drive_toml("5");
+  const analysis::Parameter& table = *find_analysis("dynamics")->parameter("dynamics");
+  const io::RawInput raw = io::table_input(io::read_case(ten.string()), table);
+  SweepRequest r;
+  r.analysis = "dynamics";
+  r.tables = {{raw.key, raw.table, raw.tables, raw.source}};
+  r.grid = {{"dynamics.sprocket[1].load_torque", {"5", "10"}}, {"step", {"0.1ms", "0.05 ms"}}};
+  SweepOptions one;
+  one.threads = 1;
+  const SweepResult a = sweep(r, one);
+  SweepOptions two;
+  two.threads = 2;
+  const SweepResult b = sweep(r, two);
+  ASSERT_EQ(a.points.size(), 4u);
+  ASSERT_EQ(b.points.size(), 4u);
+  EXPECT_EQ(a.keys, (std::vector<std::string>{"dynamics.sprocket[1].load_torque", "step"}));
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    ASSERT_TRUE(a.points[i].ok()) << a.points[i].error;
+    ASSERT_TRUE(b.points[i].ok()) << b.points[i].error;
+    const auto& in = a.points[i].inputs;
+    const fs::path& file = in[0].second == "5" ? five : ten;
+    const analysis::Record alone =
+        run("dynamics", {{"dynamics", file.string()}, {"step", in[1].second}});
+    EXPECT_EQ(without_wall_clock(a.points[i].record->data), without_wall_clock(alone.data)) << i;
+    EXPECT_EQ(without_wall_clock(b.points[i].record->data), without_wall_clock(alone.data)) << i;
+  }
+  // the torque reached the run: the driven wheel's mean torque differs
+  EXPECT_NE(io::to_json(a.points[0].record->data.at("sprocket")),
+            io::to_json(a.points[2].record->data.at("sprocket")));
+
+  // refused before anything runs: a row the table lacks, a table the analysis does not take, a
+  // table given twice
+  SweepRequest bad = r;
+  bad.grid = {{"dynamics.sprocket[2].load_torque", {"5"}}};
+  bad.tables.push_back({"loop", {}, {}, ""});
+  bad.tables.push_back(bad.tables.front());
+  try {
+    sweep_points(bad);
+    ADD_FAILURE() << "not refused";
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.issues().size(), 3u) << e.what();
+    EXPECT_EQ(e.issues()[0].field, "loop");
+    EXPECT_EQ(e.issues()[0].expected, "a table parameter of 'dynamics' (dynamics)");
+    EXPECT_EQ(e.issues()[1].field, "dynamics");
+    EXPECT_EQ(e.issues()[1].expected, "one value of the table (it is given twice)");
+    EXPECT_EQ(e.issues()[2].field, "dynamics.sprocket[2].load_torque");
+  }
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -187,6 +187,24 @@ TEST(InterruptCli, CtrlCStopsACaseRunAndASweepAlike) {
   fs::remove_all(dir);
 }
 
+// A sweep of simulations (issue 21): two 60 s runs of the 12B drive, each ~10 s of work, stop at
+// the steps' next poll like any other sweep's points.
+TEST(InterruptCli, CtrlCStopsASweepOfSimulations) {
+  const fs::path dir = folder("dynamics");
+  const std::string csv = (dir / "out.csv").string();
+  const Stopped r = interrupt({"sweep", std::string(CATENA_EXAMPLES_DIR) + "/dynamics_12B.toml",
+                               "--grid", "duration=60s,61s", "--grid",
+                               "dynamics.output_interval=1ms", "--threads", "2", "--output", csv},
+                              dir, std::chrono::milliseconds(400));
+  EXPECT_EQ(r.signal, 0);
+  EXPECT_EQ(r.status, 130) << r.err;
+  EXPECT_EQ(r.err, kMessage);
+  EXPECT_EQ(r.out, "");
+  EXPECT_LT(r.seconds, 2.0);
+  EXPECT_EQ(files_in(dir), std::vector<std::string>{});
+  fs::remove_all(dir);
+}
+
 TEST(InterruptCli, OnATerminalALongRunDrawsItsProgressLineOnStderr) {
   const fs::path dir = folder("terminal");
   std::vector<std::string> args = kLongRing;

@@ -171,3 +171,26 @@ def test_the_frame_has_the_values_of_catena_sweep(cli, tmp_path, one_thread):
                                        check_exact=True)
         compared += 1
     assert compared >= 10, "the scalar results were compared"
+
+
+@needs_sweep
+def test_a_dynamics_sweep_takes_its_table_as_a_file_and_equals_each_run():
+    """A table parameter goes in ``base`` as the path of its file (each point reads it); a short
+    run of the 12B drive per point equals catena.run of the same values (the wall clock aside),
+    and 1 and 2 threads give the same frame."""
+    from conftest import SOURCE
+    drive = str(SOURCE / "examples" / "dynamics_12B.toml")
+    grid = {"duration": ["3ms", "5ms"]}
+    base = {"dynamics": drive}
+    one = catena.sweep("dynamics", grid=grid, base=base, threads=1)
+    two = catena.sweep("dynamics", grid=grid, base=base, threads=2)
+    clock = ["summary.wall_time", "summary.real_time_factor"]
+    same(one.drop(columns=clock), two.drop(columns=clock))
+    assert list(one["error"]) == ["", ""]
+    for duration in grid["duration"]:
+        alone = catena.run("dynamics", dynamics=drive, duration=duration).to_dict()
+        frame = one.set_index("duration").loc[duration]
+        assert frame["summary.steps"] == alone["summary"]["steps"]
+        assert frame["summary.energy_drift"] == alone["summary"]["energy_drift"]
+        assert frame["summary.max_penetration"] == alone["summary"]["max_penetration"]
+    assert list(one["summary.steps"]) == [30, 50]
