@@ -57,27 +57,9 @@ analysis::Record run(std::string_view name,
                      const Progress* progress) {
   const analysis::Analysis* a = find_analysis(name);
   if (a == nullptr) throw InputError({{"analysis", std::string(name), "an analysis Catena has"}});
-  std::vector<io::RawInput> raw;
   std::vector<Issue> issues;
   std::vector<std::string> unread;  // table parameters whose file could not be read
-  for (const auto& [key, text] : inputs) {
-    const analysis::Parameter* p = a->parameter(key);
-    if (p && p->type == analysis::ParameterType::kTable) {  // the TOML file holding the table
-      try {
-        raw.push_back(io::table_input(io::read_case(text), *p));
-      } catch (const InputError& e) {
-        unread.push_back(key);
-        for (const Issue& issue : e.issues())
-          issues.push_back({key, text,
-                            "a readable TOML file with a [" + p->name + "] table (" + issue.field +
-                                " = " + issue.value + ": " + issue.expected + ")"});
-      }
-      continue;
-    }
-    const bool is_flag = p && p->type == analysis::ParameterType::kFlag;
-    raw.push_back(
-        {key, text, is_flag ? io::RawInput::Type::kBoolean : io::RawInput::Type::kText, {}, {}});
-  }
+  std::vector<io::RawInput> raw = io::raw_inputs(*a, inputs, issues, unread);
   std::vector<Issue> bound;
   analysis::Inputs in = io::bind(*a, raw, bound);
   in.listen(progress);

@@ -151,27 +151,9 @@ analysis::Record run_with_tables(const std::string& name, const InputSet& inputs
       t.entries.push_back(std::move(entry));
     }
   }
-  std::vector<io::RawInput> raw;
   std::vector<Issue> issues;
   std::vector<std::string> unread;  // table parameters whose file could not be read
-  for (const auto& [key, text] : plain) {
-    const analysis::Parameter* p = a->parameter(key);
-    if (p != nullptr && p->type == analysis::ParameterType::kTable) {  // a file, as catena::run
-      try {
-        raw.push_back(io::table_input(io::read_case(text), *p));
-      } catch (const InputError& e) {
-        unread.push_back(key);
-        for (const Issue& issue : e.issues())
-          issues.push_back({key, text,
-                            "a readable TOML file with a [" + p->name + "] table (" + issue.field +
-                                " = " + issue.value + ": " + issue.expected + ")"});
-      }
-      continue;
-    }
-    const bool is_flag = p != nullptr && p->type == analysis::ParameterType::kFlag;
-    raw.push_back(
-        {key, text, is_flag ? io::RawInput::Type::kBoolean : io::RawInput::Type::kText, {}, {}});
-  }
+  std::vector<io::RawInput> raw = io::raw_inputs(*a, plain, issues, unread);
   for (TableValue& t : own) {
     io::RawInput r;
     r.key = t.key;

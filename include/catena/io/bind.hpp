@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "catena/analysis/analysis.hpp"
@@ -44,6 +45,14 @@ std::vector<Issue> value_issues(const analysis::Parameter& parameter, const RawI
 /// The values of `file` under the table `parameter.name` ("loop." …) as the raw input of a table
 /// parameter: every leaf with its path and line, every table's path, the file's name.
 RawInput table_input(const CaseFile& file, const analysis::Parameter& parameter);
+
+/// The command-line form of an analysis' inputs (long option without dashes, text) as raw
+/// inputs, as `catena::run` and every sweep point take them: a table parameter's text is the TOML
+/// file holding the table, read here (a file that cannot be read adds an issue naming the key and
+/// the key to `unread`); a flag is a boolean; anything else is text.
+std::vector<RawInput> raw_inputs(const analysis::Analysis& analysis,
+                                 const std::vector<std::pair<std::string, std::string>>& inputs,
+                                 std::vector<Issue>& issues, std::vector<std::string>& unread);
 
 /// The unit a bare number takes for `parameter` ("mm", "1/s"; its own `bare_unit` where set; ""
 /// for plain numbers and text).

@@ -203,4 +203,28 @@ analysis::Inputs bind(const analysis::Analysis& a, const std::vector<RawInput>& 
   return in;
 }
 
+std::vector<RawInput> raw_inputs(const analysis::Analysis& analysis,
+                                 const std::vector<std::pair<std::string, std::string>>& inputs,
+                                 std::vector<Issue>& issues, std::vector<std::string>& unread) {
+  std::vector<RawInput> raw;
+  for (const auto& [key, text] : inputs) {
+    const analysis::Parameter* p = analysis.parameter(key);
+    if (p != nullptr && p->type == analysis::ParameterType::kTable) {  // the file of the table
+      try {
+        raw.push_back(table_input(read_case(text), *p));
+      } catch (const InputError& e) {
+        unread.push_back(key);
+        for (const Issue& issue : e.issues())
+          issues.push_back({key, text,
+                            "a readable TOML file with a [" + p->name + "] table (" + issue.field +
+                                " = " + issue.value + ": " + issue.expected + ")"});
+      }
+      continue;
+    }
+    const bool is_flag = p != nullptr && p->type == analysis::ParameterType::kFlag;
+    raw.push_back({key, text, is_flag ? RawInput::Type::kBoolean : RawInput::Type::kText, {}, {}});
+  }
+  return raw;
+}
+
 }  // namespace catena::io
