@@ -60,15 +60,7 @@ analysis::Record run(std::string_view name,
   std::vector<Issue> issues;
   std::vector<std::string> unread;  // table parameters whose file could not be read
   std::vector<io::RawInput> raw = io::raw_inputs(*a, inputs, issues, unread);
-  std::vector<Issue> bound;
-  analysis::Inputs in = io::bind(*a, raw, bound);
-  in.listen(progress);
-  for (Issue& issue : bound) {  // not again as missing
-    if (std::find(unread.begin(), unread.end(), issue.field) == unread.end())
-      issues.push_back(std::move(issue));
-  }
-  throw_if_any(issues);
-  return a->evaluate(in);
+  return io::bind_and_evaluate(*a, raw, std::move(issues), unread, progress);
 }
 
 }  // namespace catena

@@ -164,15 +164,7 @@ analysis::Record run_with_tables(const std::string& name, const InputSet& inputs
     r.source = std::move(t.source);
     raw.push_back(std::move(r));
   }
-  std::vector<Issue> bound;
-  analysis::Inputs in = io::bind(*a, raw, bound);
-  in.listen(progress);
-  for (Issue& issue : bound) {  // not again as missing
-    if (std::find(unread.begin(), unread.end(), issue.field) == unread.end())
-      issues.push_back(std::move(issue));
-  }
-  throw_if_any(issues);
-  return a->evaluate(in);
+  return io::bind_and_evaluate(*a, raw, std::move(issues), unread, progress);
 }
 
 // Runs one point into its slot. Only InputError is the point's own: anything else is kept for

@@ -54,6 +54,13 @@ std::vector<RawInput> raw_inputs(const analysis::Analysis& analysis,
                                  const std::vector<std::pair<std::string, std::string>>& inputs,
                                  std::vector<Issue>& issues, std::vector<std::string>& unread);
 
+/// Binds `raw` to `analysis` and evaluates it, listening to `progress`; throws InputError with
+/// `issues` and every binding problem (a key in `unread` is not reported again as missing).
+analysis::Record bind_and_evaluate(const analysis::Analysis& analysis,
+                                   const std::vector<RawInput>& raw, std::vector<Issue> issues,
+                                   const std::vector<std::string>& unread,
+                                   const Progress* progress);
+
 /// The unit a bare number takes for `parameter` ("mm", "1/s"; its own `bare_unit` where set; ""
 /// for plain numbers and text).
 std::string bare_unit(const analysis::Parameter& parameter);

@@ -1,5 +1,6 @@
 #include "catena/io/bind.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "catena/io/quantity.hpp"
@@ -225,6 +226,21 @@ std::vector<RawInput> raw_inputs(const analysis::Analysis& analysis,
     raw.push_back({key, text, is_flag ? RawInput::Type::kBoolean : RawInput::Type::kText, {}, {}});
   }
   return raw;
+}
+
+analysis::Record bind_and_evaluate(const analysis::Analysis& analysis,
+                                   const std::vector<RawInput>& raw, std::vector<Issue> issues,
+                                   const std::vector<std::string>& unread,
+                                   const Progress* progress) {
+  std::vector<Issue> bound;
+  analysis::Inputs in = bind(analysis, raw, bound);
+  in.listen(progress);
+  for (Issue& issue : bound) {  // not again as missing
+    if (std::find(unread.begin(), unread.end(), issue.field) == unread.end())
+      issues.push_back(std::move(issue));
+  }
+  throw_if_any(issues);
+  return analysis.evaluate(in);
 }
 
 }  // namespace catena::io
