@@ -11,6 +11,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "../dynamics/period_mean.hpp"
 #include "chart_list.hpp"
 #include "cli_run.hpp"
 
@@ -31,22 +32,6 @@ std::string write(const std::string& name, const std::string& text) {
   const fs::path path = dir / name;
   std::ofstream(path) << text;
   return path.string();
-}
-
-// Mean of `series` over the whole tooth periods in (t0, t_end], as the core's validation.
-double mean_over_periods(const std::vector<double>& time, const std::vector<double>& series,
-                         double t0, double period) {
-  const double whole = std::floor((time.back() - t0) / period) * period;
-  double sum = 0.0;
-  int count = 0;
-  for (std::size_t k = 0; k < time.size(); ++k) {
-    if (time[k] > t0 && time[k] <= t0 + whole) {
-      sum += series[k];
-      ++count;
-    }
-  }
-  EXPECT_GT(count, 0);
-  return sum / count;
 }
 
 TEST(DynamicsCli, ExampleDriveGivesItsClosedForms) {

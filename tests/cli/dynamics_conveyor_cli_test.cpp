@@ -13,6 +13,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "../dynamics/period_mean.hpp"
 #include "chart_list.hpp"
 #include "cli_run.hpp"
 
@@ -22,21 +23,6 @@ namespace fs = std::filesystem;
 constexpr double kPi = std::numbers::pi;
 const std::string kExample = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_conveyor.toml";
 constexpr double kTensionTol = 0.01;  // issue 21 (6b)
-
-double mean_over_periods(const std::vector<double>& time, const std::vector<double>& series,
-                         double t0, double period) {
-  const double whole = std::floor((time.back() - t0) / period) * period;
-  double sum = 0.0;
-  int count = 0;
-  for (std::size_t k = 0; k < time.size(); ++k) {
-    if (time[k] > t0 && time[k] <= t0 + whole) {
-      sum += series[k];
-      ++count;
-    }
-  }
-  EXPECT_GT(count, 0);
-  return sum / count;
-}
 
 TEST(DynamicsConveyorCli, RunTensionsDifferByTheLoopModelsResistance) {
   const CliRun r = run("dynamics " + kExample + " --format json");

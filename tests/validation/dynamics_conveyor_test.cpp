@@ -24,6 +24,7 @@
 #include <numbers>
 #include <vector>
 
+#include "../dynamics/period_mean.hpp"
 #include "catena/dynamics/integrator.hpp"
 #include "catena/strength/loop.hpp"
 
@@ -151,20 +152,6 @@ ConveyorRun run(const Conveyor& d, std::vector<Probe> probes, double duration, d
   return out;
 }
 
-double mean_over_periods(const ConveyorRun& r, const std::vector<double>& series, double t0,
-                         double period) {
-  const double whole = std::floor((r.time.back() - t0) / period) * period;
-  double sum = 0.0;
-  int count = 0;
-  for (std::size_t k = 0; k < r.time.size(); ++k) {
-    if (r.time[k] > t0 && r.time[k] <= t0 + whole) {
-      sum += series[k];
-      ++count;
-    }
-  }
-  return sum / count;
-}
-
 TEST(DynamicsConveyor, GuideFrictionTensionsMatchTheLoopModel) {
   const Conveyor d;
   const double p = d.pitch, centre = d.span_links * p;
@@ -184,7 +171,8 @@ TEST(DynamicsConveyor, GuideFrictionTensionsMatchTheLoopModel) {
   const double period = 2 * kPi / (d.teeth * d.omega);
   const double t0 = 0.4;
   std::vector<double> mean;
-  for (const Probe& pr : r.probes) mean.push_back(mean_over_periods(r, pr.tension, t0, period));
+  for (const Probe& pr : r.probes)
+    mean.push_back(mean_over_periods(r.time, pr.tension, t0, period));
 
   // catena loop: take-up at the drive's slack side (the simulated slack tension), the lower
   // run, the lift round the tail idler, the idler, the upper run, the drive. A run's friction acts

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "../dynamics/period_mean.hpp"
 #include "catena/dynamics/integrator.hpp"
 
 namespace catena::dynamics {
@@ -97,30 +98,14 @@ DriveRun run(const Drive& d, double duration, double step) {
   return out;
 }
 
-// Mean of `series` over the whole tooth periods in [t0, t_end].
-double mean_over_periods(const DriveRun& r, const std::vector<double>& series, double t0,
-                         double period) {
-  const double t_end = r.time.back();
-  const double whole = std::floor((t_end - t0) / period) * period;
-  double sum = 0.0;
-  int count = 0;
-  for (std::size_t k = 0; k < r.time.size(); ++k) {
-    if (r.time[k] > t0 && r.time[k] <= t0 + whole) {
-      sum += series[k];
-      ++count;
-    }
-  }
-  return sum / count;
-}
-
 TEST(DynamicsDrive, MeanTightSpanTension) {
   const Drive d;
   const double period = 2 * kPi / (d.teeth * d.omega);
   const DriveRun r = run(d, 0.5, 1e-4);
   ASSERT_FALSE(r.time.empty());
   const double t0 = 0.5 - 8 * period;
-  const double tight = mean_over_periods(r, r.tight, t0, period);
-  const double slack = mean_over_periods(r, r.slack, t0, period);
+  const double tight = mean_over_periods(r.time, r.tight, t0, period);
+  const double slack = mean_over_periods(r.time, r.slack, t0, period);
   const double radius = 0.5 * d.pitch / std::sin(kPi / d.teeth);
   const double phi = kPi / d.teeth;
   const double sec_mean = d.teeth / kPi * std::log(1.0 / std::cos(phi) + std::tan(phi));
@@ -135,7 +120,7 @@ TEST(DynamicsDrive, MeanTightSpanTension) {
   // step's θ point) is its torque balance: over the window, mean τ = T_L + J (ω_end − ω_start)/Δt
   // to the Newton tolerance (the contact torque is evaluated independently of the balance, from
   // the rollers' positions), and so equals the load within the speed's change over whole periods.
-  const double torque = mean_over_periods(r, r.driven_torque, t0, period);
+  const double torque = mean_over_periods(r.time, r.driven_torque, t0, period);
   std::size_t first = 0, last = 0;
   for (std::size_t k = 0; k < r.time.size(); ++k) {
     if (r.time[k] <= t0) first = k;
