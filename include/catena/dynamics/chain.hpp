@@ -36,6 +36,13 @@ struct Sprocket {
   double speed = 0.0;        ///< [rad/s] a driver's speed, counter-clockwise positive
   double inertia = 0.0;      ///< [kg·m²] a driven wheel's moment of inertia
   double load_torque = 0.0;  ///< [N·m] on a driven wheel, against counter-clockwise turning
+  /// Pocket wheel for round-link chain (seed 003; docs/models/dynamics.md, "Pocket wheel"):
+  /// instead of the tooth gaps, a pocket for each joint at the vertices of the bi-regular polygon,
+  /// ψ + 2πm/z and ψ + 2πm/z + δ1 on the pitch circle, holding the joint within its clearance
+  /// (pocket_contact). roller_radius, seat_radius and seating_angle are then unused.
+  bool pocket = false;
+  double pocket_angle = 0.0;      ///< [rad] δ1, the central angle of the p + a side
+  double pocket_clearance = 0.0;  ///< [m] c: a joint within c of its vertex is free
 };
 
 /// A constant force on one node (a dead load, or the far end of a span held by a tension source
@@ -107,11 +114,18 @@ struct Model {
   std::vector<Sprocket> sprockets;   ///< rigid wheels the rollers seat on
   std::vector<NodeLoad> loads;       ///< constant forces on single nodes; empty = none
   std::vector<Guide> guides;         ///< rails the rollers slide on
+  /// [m] a: link j's rest length is p + a for even j and p − a for odd j (round-link chain on a
+  /// pocket wheel: the joint polygon's sides t + d and t − d, a = d); 0 = every link p
+  double alternation = 0.0;
 
   std::size_t nodes() const { return mass.size(); }
   /// Links: N in a closed loop, N − 1 in an open chain.
   std::size_t links() const { return closed ? mass.size() : mass.size() - 1; }
   bool is_pinned(std::size_t i) const { return !pinned.empty() && pinned[i] != 0; }
+  /// [m] the rest length of link j: p ± a (see alternation)
+  double rest_length(std::size_t j) const {
+    return j % 2 == 0 ? pitch + alternation : pitch - alternation;
+  }
 };
 
 /// Every problem with the model, fields "nodes", "pitch", "axial_stiffness", "axial_damping",
@@ -189,6 +203,27 @@ struct SeatContact {
 };
 SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, double vy, double angle,
                          double speed);
+
+/// One joint's contact with the nearest pocket of a pocket wheel (`Sprocket::pocket`), found in
+/// O(1) from the joint's angle about the centre. The pocket holds the joint at its vertex C: with
+/// e = q − C, the penetration is g = |e| − c (c the clearance), with the seats' force law
+/// (f ≥ 0 towards C, C¹ ramp over ε, damping on ġ relative to the wheel). Active only within the
+/// pocket's mouth, |q − O| ≤ R + c/2: a joint enters from outside force-free when it comes within
+/// 60° of the radial, and leaves if pulled out along the radial. Same result fields as seat_contact
+/// (curvature 1/|e|, the normal n = e/|e|).
+SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, double vy,
+                           double angle, double speed);
+
+/// The contact of a node with a wheel of either kind, and the distance from the centre beyond
+/// which there is none.
+inline SeatContact wheel_contact(const Sprocket& w, double x, double y, double vx, double vy,
+                                 double angle, double speed) {
+  return w.pocket ? pocket_contact(w, x, y, vx, vy, angle, speed)
+                  : seat_contact(w, x, y, vx, vy, angle, speed);
+}
+inline double contact_reach(const Sprocket& w) {
+  return w.pitch_radius + (w.pocket ? 0.5 * w.pocket_clearance : w.roller_radius);
+}
 
 /// [N] the tension of each link, k (l − p) + c l̇ (size links()).
 void link_tensions(const Model& model, const State& state, std::span<double> tension);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "catena/drive/sprocket.hpp"
+#include "catena/dynamics/pocket_wheel.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -44,6 +45,15 @@ std::vector<Issue> validate(const Model& model) {
       break;  // one line for a whole bad array is enough to name it
     }
   }
+  if (!std::isfinite(model.alternation) || model.alternation < 0.0 ||
+      !(model.alternation < model.pitch)) {
+    out.push_back({"alternation", check::format_si(model.alternation, "m"),
+                   "a length in [0, pitch) m (links of p + a and p - a)"});
+  } else if (model.alternation > 0.0 && model.closed && n % 2 != 0) {
+    out.push_back({"alternation", check::format_si(model.alternation, "m"),
+                   "0 for a closed loop of an odd number of links (" + std::to_string(n) +
+                       "): p + a and p - a must alternate round the loop"});
+  }
   if (!model.pinned.empty() && model.pinned.size() != n) {
     out.push_back({"pinned", std::to_string(model.pinned.size()) + " entries",
                    "empty or one entry per node (" + std::to_string(n) + ")"});
@@ -69,22 +79,26 @@ std::vector<Issue> validate(const Model& model) {
       out.push_back({f + "teeth", std::to_string(s.teeth), "an integer in [3, 1000]"});
     }
     check::finite_positive(out, (f + "pitch_radius").c_str(), s.pitch_radius, "m");
-    check::finite_positive(out, (f + "roller_radius").c_str(), s.roller_radius, "m");
-    if (!std::isfinite(s.seat_radius) || !(s.seat_radius >= s.roller_radius)) {
-      out.push_back(
-          {f + "seat_radius", check::format_si(s.seat_radius, "m"),
-           "a finite value >= the roller radius " + check::format_si(s.roller_radius, "m")});
-    }
-    if (!std::isfinite(s.seating_angle) || !(s.seating_angle > 0.0) ||
-        !(s.seating_angle < std::numbers::pi)) {
-      out.push_back({f + "seating_angle", check::format_si(s.seating_angle, "rad"),
-                     "an angle in (0, pi) rad"});
-    }
-    check::finite_positive(out, (f + "contact_stiffness").c_str(), s.contact_stiffness, "N/m");
-    if (!std::isfinite(s.contact_smoothing) || !(s.contact_smoothing > 0.0) ||
-        !(s.contact_smoothing <= s.roller_radius)) {
-      out.push_back({f + "contact_smoothing", check::format_si(s.contact_smoothing, "m"),
-                     "a length in (0, roller radius]"});
+    if (s.pocket) {
+      pocket_issues(out, s, f);
+    } else {
+      check::finite_positive(out, (f + "roller_radius").c_str(), s.roller_radius, "m");
+      if (!std::isfinite(s.seat_radius) || !(s.seat_radius >= s.roller_radius)) {
+        out.push_back(
+            {f + "seat_radius", check::format_si(s.seat_radius, "m"),
+             "a finite value >= the roller radius " + check::format_si(s.roller_radius, "m")});
+      }
+      if (!std::isfinite(s.seating_angle) || !(s.seating_angle > 0.0) ||
+          !(s.seating_angle < std::numbers::pi)) {
+        out.push_back({f + "seating_angle", check::format_si(s.seating_angle, "rad"),
+                       "an angle in (0, pi) rad"});
+      }
+      check::finite_positive(out, (f + "contact_stiffness").c_str(), s.contact_stiffness, "N/m");
+      if (!std::isfinite(s.contact_smoothing) || !(s.contact_smoothing > 0.0) ||
+          !(s.contact_smoothing <= s.roller_radius)) {
+        out.push_back({f + "contact_smoothing", check::format_si(s.contact_smoothing, "m"),
+                       "a length in (0, roller radius]"});
+      }
     }
     if (!std::isfinite(s.contact_damping) || s.contact_damping < 0.0) {
       out.push_back({f + "contact_damping", check::format_si(s.contact_damping, "N*s/m"),
@@ -407,7 +421,7 @@ Energy energy(const Model& model, const State& state) {
     if (!wheel.driver) e.kinetic += 0.5 * wheel.inertia * state.speed[w] * state.speed[w];
     for (std::size_t i = 0; i < n; ++i) {
       const SeatContact c =
-          seat_contact(wheel, state.x[i], state.y[i], 0.0, 0.0, state.angle[w], 0.0);
+          wheel_contact(wheel, state.x[i], state.y[i], 0.0, 0.0, state.angle[w], 0.0);
       if (c.active) e.elastic += c.energy;
     }
   }
@@ -420,7 +434,7 @@ Energy energy(const Model& model, const State& state) {
   for (std::size_t j = 0; j < model.links(); ++j) {
     const std::size_t b = (j + 1) % n;
     const double stretch =
-        std::hypot(state.x[b] - state.x[j], state.y[b] - state.y[j]) - model.pitch;
+        std::hypot(state.x[b] - state.x[j], state.y[b] - state.y[j]) - model.rest_length(j);
     e.elastic += 0.5 * model.axial_stiffness * stretch * stretch;
   }
   return e;
@@ -433,7 +447,7 @@ void link_tensions(const Model& model, const State& state, std::span<double> ten
     const double dx = state.x[b] - state.x[j], dy = state.y[b] - state.y[j];
     const double l = std::hypot(dx, dy);
     const double rate = (dx * (state.vx[b] - state.vx[j]) + dy * (state.vy[b] - state.vy[j])) / l;
-    tension[j] = model.axial_stiffness * (l - model.pitch) + model.axial_damping * rate;
+    tension[j] = model.axial_stiffness * (l - model.rest_length(j)) + model.axial_damping * rate;
   }
 }
 

@@ -76,7 +76,6 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   const double th = options_.theta;
   const double k = model.axial_stiffness;
   const double c = model.axial_damping;
-  const double p = model.pitch;
   // Residual R(u) = (m/hθ)(u − x₀ − h v₀) + α m (u − x₀) − h (Σ f + m g) and its Jacobian
   // J = (m/hθ + α m) I + h Σ A; the system is J δ = −R.
   // The dissipative works of this iterate (the step's report takes the last assembly's): the drag
@@ -112,6 +111,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     // φ = [k (l_θ − p) + c (l₁ − l₀)/h] / l_θ; the force on node a is φ d_θ, on node b −φ d_θ.
     // At θ = ½ the work over the step is exactly the change of ½ k (l − p)² plus the damper's
     // loss c (l₁ − l₀)²/h (Simo & Tarnow 1992).
+    const double p = model.rest_length(j);  // p ± a (round-link chain), else p
     const double phi = (k * (lt - p) + c * (l1 - l0) / h) / lt;
     const double fx = h * phi * mx, fy = h * phi * my;
     // the damper's share of φ d_θ does the work −c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ on the two
@@ -149,7 +149,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     if (driven && jacobian) std::fill(bcol_[w].begin(), bcol_[w].end(), Vec2{});
     // seat_contact's own first test, inline: most rollers are clear of a wheel, and the call
     // (its result zeroed, the velocity formed) cost more than the test.
-    const double reach = wheel.pitch_radius + wheel.roller_radius;
+    const double reach = contact_reach(wheel);
     for (std::size_t i = 0; i < n; ++i) {
       const double qx = (1.0 - th) * s.x[i] + th * ux_[i];
       const double qy = (1.0 - th) * s.y[i] + th * uy_[i];
@@ -157,7 +157,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       if (rx * rx + ry * ry > reach * reach) continue;
       if (model.is_pinned(i)) continue;
       const double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
-      const SeatContact sc = seat_contact(wheel, qx, qy, vx, vy, psi, omega);
+      const SeatContact sc = wheel_contact(wheel, qx, qy, vx, vy, psi, omega);
       if (!sc.active) continue;
       max_penetration_ = std::max(max_penetration_, sc.penetration);
       contact_damping_work_ += h * sc.damping_power;
