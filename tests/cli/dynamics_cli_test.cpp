@@ -134,6 +134,7 @@ contact_damping = -800
 duration = 0
 step = "1 kg"
 theta = 2
+seat_friction = 1.5
 [[dynamics.sprocket]]
 teeth = 11
 role = "driver"
@@ -148,8 +149,8 @@ role = "idler"
   for (const char* field :
        {"dynamics.links (line 3)", "dynamics.axial_stiffness (line 4)",
         "dynamics.contact_damping (line 6)", "dynamics.duration (line 7)", "dynamics.step (line 8)",
-        "dynamics.theta (line 9)", "dynamics.sprocket[0].teeth", "dynamics.sprocket[0].speed",
-        "dynamics.sprocket[1].role"})
+        "dynamics.theta (line 9)", "dynamics.seat_friction (line 10)", "dynamics.sprocket[0].teeth",
+        "dynamics.sprocket[0].speed", "dynamics.sprocket[1].role"})
     EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
   EXPECT_NE(r.err.find("an even integer in [8, 150]"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("in [0.5, 1]"), std::string::npos) << r.err;
@@ -220,6 +221,36 @@ TEST(DynamicsCli, WorkBalanceIsOptInAndAddsUp) {
   EXPECT_EQ(e.status, 2);
   EXPECT_NE(e.err.find("dynamics.work_balance"), std::string::npos) << e.err;
   EXPECT_NE(e.err.find("true or false"), std::string::npos) << e.err;
+}
+
+// `seat_friction = mu` gives the seats Coulomb friction: the JSON gains seat_friction and
+// summary.seat_friction_work (< 0; with work_balance also in the balance), and the energy drift
+// is net of it, so the balance's terms still add up to it; without it none of these appear.
+TEST(DynamicsCli, SeatFrictionIsOptInAndInTheBalance) {
+  std::stringstream text;
+  text << std::ifstream(kExample).rdbuf();
+  std::string with = text.str();
+  const std::size_t at = with.find("[dynamics]\n");
+  ASSERT_NE(at, std::string::npos);
+  with.insert(at + 11, "work_balance = true\nseat_friction = 0.1\n");
+  const CliRun r = run("dynamics " + write("seat.toml", with) + " --duration 0.1s --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["seat_friction"], 0.1);
+  EXPECT_EQ(j["units"]["seat_friction_work"], "J");
+  const double seat = j["summary"]["seat_friction_work"];
+  EXPECT_LT(seat, 0.0);
+  const auto& b = j["summary"]["work_balance"];
+  EXPECT_EQ(b["seat_friction"], seat);
+  const double links = b["link_dampers"], contact = b["contact_dampers"],
+               numerical = b["numerical"], drift = j["summary"]["energy_drift"];
+  EXPECT_NEAR(links + contact + numerical, drift, 1e-12 + 1e-9 * std::abs(drift));
+  const CliRun plain = run("dynamics " + kExample + " --duration 0.1s --format json");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const auto p = nlohmann::json::parse(plain.out);
+  EXPECT_FALSE(p.contains("seat_friction"));
+  EXPECT_FALSE(p["summary"].contains("seat_friction_work"));
+  EXPECT_FALSE(p["units"].contains("seat_friction_work"));
 }
 
 // `catena report` on the example: the time series (each curve's extremes those of the JSON),

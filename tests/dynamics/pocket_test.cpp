@@ -197,12 +197,14 @@ TEST(DynamicsPocket, BadFieldsAreListedAtOnce) {
   w.pocket_clearance = -1e-4;
   w.contact_stiffness = 0.0;
   w.inertia = 1.0;
+  w.friction = 0.2;  // friction in the pockets is not built
   m.sprockets = {w};
   const std::vector<Issue> issues = validate(m);
   std::string fields;
   for (const Issue& i : issues) fields += i.field + " ";
-  for (const char* f : {"alternation", "sprocket[0].pocket_angle", "sprocket[0].pocket_clearance",
-                        "sprocket[0].contact_stiffness", "sprocket[0].contact_smoothing"}) {
+  for (const char* f :
+       {"alternation", "sprocket[0].pocket_angle", "sprocket[0].pocket_clearance",
+        "sprocket[0].contact_stiffness", "sprocket[0].contact_smoothing", "sprocket[0].friction"}) {
     EXPECT_NE(fields.find(f), std::string::npos) << f << " in " << fields;
   }
   Model a = uniform_chain(4, false, 0.064, 0.4, 1e8, 0.0, false);

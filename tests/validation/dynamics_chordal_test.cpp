@@ -1,6 +1,7 @@
 // Polygonal action (issue 21 validation (1); docs/models/dynamics.md, "Polygonal action"): the
-// measurement pinned as it stands (it does not reproduce the polygon's kinematics yet), and the
-// check of the statics its failure rests on (FrictionlessSeatsShareTheSpanTension, which passes).
+// validation on seats with friction at a quasi-static speed (PolygonalActionOnSeatsWithFriction),
+// the frictionless measurement at 0.5 m/s pinned as it stands, and the check of the statics of
+// frictionless seats (FrictionlessSeatsShareTheSpanTension).
 //
 // One driver sprocket at constant ω winds in a straight span whose far end is held by a constant
 // force (Model::loads, a tension source instead of a second wheel); no gravity; a stiff chain.
@@ -42,11 +43,15 @@ struct Chordal {
   double settle = 0.1;
   double step = 1e-4;
   double theta = 0.6;
+  double seat_friction = 0.0;  // μ of the seats
+  double span_from = 0.0;      // [m] the span's nodes are those beyond x > this (0: 2 p)
 };
 
 struct Result {
   std::vector<double> far, centre;  // synchronously averaged, per phase bin
   double min_far = 0, max_far = 0;
+  std::vector<double> phase, span;  // every sample after the settling time: tooth phase, speed
+  bool converged = true;
 };
 
 Result run(const Chordal& d, int bins) {
@@ -62,6 +67,7 @@ Result run(const Chordal& d, int bins) {
                                d.contact_stiffness, d.contact_damping);
   if (!d.clearance) w.seat_radius = w.roller_radius;
   w.driver = true;
+  w.friction = d.seat_friction;
   const double r = w.pitch_radius, omega = d.chain_speed / r;
   w.speed = omega;
   model.sprockets = {w};
@@ -97,6 +103,7 @@ Result run(const Chordal& d, int bins) {
     const StepReport rep = integ.step(model, s);
     if (!rep.converged) {
       ADD_FAILURE() << "step " << k << " did not converge";
+      out.converged = false;
       break;
     }
     if (s.time < d.settle) continue;
@@ -106,10 +113,13 @@ Result run(const Chordal& d, int bins) {
     double sum = 0.0;
     int cnt = 0;
     for (std::size_t i = 0; i < n; ++i)
-      if (s.x[i] > 2 * d.pitch && s.y[i] > 0.5 * r) sum += -s.vx[i], ++cnt;
+      if (s.x[i] > (d.span_from > 0 ? d.span_from : 2 * d.pitch) && s.y[i] > 0.5 * r)
+        sum += -s.vx[i], ++cnt;
     double ph = std::fmod(s.angle[0] - kPi / 2, tau) / tau;
     if (ph < 0) ph += 1;
     const int b = std::min(bins - 1, static_cast<int>(ph * bins));
+    out.phase.push_back(ph);
+    out.span.push_back(sum / cnt);
     far[b] += vfar;
     centre[b] += sum / cnt;
     ++count[b];
@@ -191,13 +201,96 @@ TEST(DynamicsChordal, FrictionlessSeatsShareTheSpanTension) {
   }
 }
 
-// Validation (1) as it stands, pinned so that a change of the model shows: the kinematics of the
-// polygon are NOT reproduced (docs/models/dynamics.md, "Polygonal action"). On the ISO seat at
-// z = 17 (0.5 s, the table's run) the span's mean speed varies 4.5 % more than 1 − cos(π/z)
-// (0.01779 against 0.01703) and the far end 17 % more (0.01999): the rollers share the span's
-// tension over their flanks instead of one roller carrying it at the pitch point. If a seat that
-// holds the engaged roller is built, this test fails and should become the validation
-// |ratio − 1| ≤ 2 %.
+// The mean of the polygon's speed v/ωR = cos φ over each of `bins` equal bins of the tooth phase
+// (phase 0: a seat at the top, φ = 2π phase/z; the next roller engages at phase ½, φ = −π/z) —
+// the kinematic profile as the synchronous average sees it — and its variation 1 − min/max.
+double binned_variation(int z, int bins) {
+  const double tau = 2 * kPi / z;
+  double lo = INFINITY, hi = -INFINITY;
+  for (int b = 0; b < bins; ++b) {
+    double p1 = static_cast<double>(b) / bins, p2 = static_cast<double>(b + 1) / bins;
+    if (p1 >= 0.5) p1 -= 1, p2 -= 1;  // bins never straddle ½ (even bins)
+    const double mean = (std::sin(tau * p2) - std::sin(tau * p1)) / (tau * (p2 - p1));
+    lo = std::min(lo, mean);
+    hi = std::max(hi, mean);
+  }
+  return 1 - lo / hi;
+}
+
+// The span's speed averaged over `bins` phase bins, and its variation 1 − min/max.
+double simulated_variation(const Result& r, int bins) {
+  std::vector<double> sum(bins, 0.0);
+  std::vector<int> count(bins, 0);
+  for (std::size_t k = 0; k < r.phase.size(); ++k) {
+    const int b = std::min(bins - 1, static_cast<int>(r.phase[k] * bins));
+    sum[b] += r.span[k];
+    ++count[b];
+  }
+  double lo = INFINITY, hi = -INFINITY;
+  for (int b = 0; b < bins; ++b) {
+    if (count[b] == 0) return NAN;
+    lo = std::min(lo, sum[b] / count[b]);
+    hi = std::max(hi, sum[b] / count[b]);
+  }
+  return 1 - lo / hi;
+}
+
+// Validation (1): the polygonal action, on ISO seats with friction (μ = 0.3), quasi-static.
+// A driver at constant ω winds in a 40-link span held by 500 N (the set-up above) at 0.1 m/s;
+// the span's mean speed, synchronously averaged over the tooth phase, against the polygon's
+// kinematics v = ωR cos φ averaged over the same bins. Three bin counts (20, 40, 80): the bins
+// flatten the profile's extremes by a known amount (1 − cos(π/z) = 0.01703 at z = 17; 0.0153,
+// 0.0162, 0.0166 binned), which the prediction carries too, so that no bin count is chosen to
+// fit. Measured: z = 17: 0.999, 0.994, 1.000 of the binned variation; z = 25: 1.014, 1.005,
+// 0.997. Tolerance 2 %: the spread over bin counts (±1.4 % at z = 25, where the variation is
+// 0.0075 of the speed: a residual ripple of 1e-4 of the speed moves it 1.3 %) — 1 % of the
+// variation is not reached at z = 25.
+// Why this set-up (docs/models/dynamics.md, "Polygonal action"): (a) 0.1 m/s — at 0.5 m/s the
+// span's speed varies 4–5 % more than the kinematics, at 0.25 m/s 3.7 %, at 0.05 m/s 0.2 %
+// (z = 17): each engagement reverses the span's acceleration and rings its longitudinal modes, a
+// dynamic effect the kinematic theory does not have; (b) the run stops before the chain's free
+// tail, wound round the wheel, comes back to the top (z − z/2 − 2 links of travel: before, the
+// tail reached the engaging seat within the run and was counted in the span); (c) friction —
+// on frictionless seats the free tail's last rollers slide out of their seats (a roller pulled by
+// one link only) and the tail whips round: at 0.1 m/s the frictionless runs of z = 17 and 25
+// failed within 0.2–0.3 s. μ = 0.3 was chosen after μ = 0.1 failed at z = 25 (a Newton failure
+// at 0.83 s after the tail had started to whip); at z = 17 μ = 0.1 and 0.3 give the same
+// variation to 0.03 %. Not reproduced: z = 9 (erratic on every seat and μ tried), z = 12 (a
+// step does not converge at 0.36 s: a roller entering the contact's reach with a finite
+// penetration, see "Newton failures" in the doc).
+TEST(DynamicsChordal, PolygonalActionOnSeatsWithFriction) {
+  constexpr double kTol = 0.02;
+  for (int z : {17, 25}) {
+    Chordal d;
+    d.teeth = z;
+    d.clearance = true;
+    d.seat_friction = 0.3;
+    d.chain_speed = 0.1;
+    const int wrap = z / 2;
+    d.duration = d.settle + (z - wrap - 2) * d.pitch / d.chain_speed;
+    const double radius = 0.5 * d.pitch / std::sin(kPi / z);
+    d.span_from = radius + d.pitch;  // the span's nodes clear of the wheel
+    const Result r = run(d, 40);
+    ASSERT_TRUE(r.converged) << "z " << z;
+    for (int bins : {20, 40, 80}) {
+      const double sim = simulated_variation(r, bins), kin = binned_variation(z, bins);
+      std::printf("z %d, %d bins: span %.5f, kinematics %.5f, ratio %.4f\n", z, bins, sim, kin,
+                  sim / kin);
+      EXPECT_NEAR(sim / kin, 1.0, kTol)
+          << "z " << z << ", " << bins << " bins: " << sim << " against " << kin
+          << " (1 - cos(pi/z) = " << 1 - std::cos(kPi / z) << ")";
+    }
+  }
+}
+
+// The frictionless run at 0.5 m/s, pinned as it stands so that a change of the model shows
+// (docs/models/dynamics.md, "Polygonal action"): on the ISO seat at z = 17 (0.5 s) the span's
+// mean speed varies 4.5 % more than 1 − cos(π/z) (0.01779 against 0.01703; 10 % more than the
+// 40-bin kinematics, 0.01618, which PolygonalActionOnSeatsWithFriction compares with) and the
+// far end 17 % more (0.01999). Seat friction does not remove it (μ = 0.1: the same to 0.5 %);
+// the speed does (0.25 m/s: +3.7 %, 0.05 m/s: +0.2 % of the binned kinematics, with μ = 0.3):
+// it is the span's dynamic response to the engagements, beyond the kinematic theory. (The run
+// also lets the free tail come round to the top after 0.34 s.)
 TEST(DynamicsChordal, PolygonalActionIsNotYetReproducedOnFrictionlessSeats) {
   Chordal d;
   d.teeth = 17;
@@ -209,7 +302,7 @@ TEST(DynamicsChordal, PolygonalActionIsNotYetReproducedOnFrictionlessSeats) {
   };
   const double pred = 1 - std::cos(kPi / d.teeth);
   const double span = variation(r.centre) / pred, far = variation(r.far) / pred;
-  EXPECT_GT(span, 1.02) << "the span's speed now follows the polygon: promote this to (1)";
+  EXPECT_GT(span, 1.02) << "the span's speed now follows the polygon at 0.5 m/s";
   EXPECT_LT(span, 1.10);
   EXPECT_GT(far, 1.10);
   EXPECT_LT(far, 1.25);

@@ -12,7 +12,9 @@
 // unlike the kinetic energy it does not depend on the frame the chain slides in.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "catena/dynamics/integrator.hpp"
@@ -120,6 +122,56 @@ TEST(DynamicsWorkBalance, ThetaMethodsDissipationIsReportedAsNumerical) {
   EXPECT_GT(std::abs(b.numerical()), 10.0 * std::abs(half.numerical()));
   // the same slide: the physical works agree with θ = ½ where they are large
   EXPECT_NEAR(b.friction, half.friction, 1e-2 * std::abs(half.friction));
+}
+
+// Seat friction in the balance: two linked rollers thrown sideways at 0.15 m/s in two top seats
+// of a free (driven, unloaded) z = 17 wheel, the seats widened into 3 mm bowls, under gravity;
+// θ = ½ with the contact resolved (ω_c h = 0.65). They slide in their bowls until the seats'
+// friction (μ = 0.3) stops them, turning the wheel by its reaction. 0.3 s. The balance closes
+// only with the seat friction's work (most of the energy lost): leaving it out fails.
+TEST(DynamicsWorkBalance, ClosesWithSeatFriction) {
+  constexpr double kPi = std::numbers::pi;
+  Model model = uniform_chain(2, false, kPitch, kNodeMass, 1e6, 5.0, false);
+  model.gravity_y = -kG;
+  Sprocket w = iso606_sprocket(kPitch, 2 * kRoller, 0.01168, 17, 0.0, 0.0, 1e6, 20.0);
+  w.seat_radius = kRoller + 0.003;
+  w.inertia = 0.01;
+  w.friction = 0.3;
+  model.sprockets = {w};
+  State s(2, 1);
+  const double tau = 2 * kPi / w.teeth;
+  s.angle = {kPi / 2 - tau / 2};  // seats 0 and 1 at ±τ/2 about the top
+  const double sink = kNodeMass * kG / w.contact_stiffness + 0.5 * w.contact_smoothing;
+  for (int i = 0; i < 2; ++i) {
+    const double sigma = s.angle[0] + i * tau;
+    s.x[i] = w.pitch_radius * std::cos(sigma);
+    s.y[i] = w.pitch_radius * std::sin(sigma) - (w.seat_radius - kRoller + sink);
+    s.vx[i] = 0.15;
+  }
+  const double e0 = energy(model, s).total();
+  Integrator integ(model, {.step = 1e-4, .theta = 0.5});
+  double kinetic_max = 0.0;
+  for (int k = 0; k < 3000; ++k) {
+    ASSERT_TRUE(integ.step(model, s).converged) << "step " << k;
+    kinetic_max = std::max(kinetic_max, energy(model, s).kinetic);
+  }
+  const double de = energy(model, s).total() - e0;
+  const double dissipated =
+      s.seat_friction_work + s.damper_work + s.contact_damping_work + s.drag_work;
+  const double numerical = de - dissipated;
+  std::printf(
+      "seat friction: dE %.6g J, seat friction %.6g, link dampers %.6g, contact dampers "
+      "%.6g, numerical %.3g (%.3g of the dissipated work); wheel turned %.3g rad\n",
+      de, s.seat_friction_work, s.damper_work, s.contact_damping_work, numerical,
+      numerical / std::abs(dissipated), s.angle[0] - (kPi / 2 - tau / 2));
+  EXPECT_EQ(s.friction_work, 0.0);  // no guides: the guides' friction work stays 0
+  EXPECT_LT(s.seat_friction_work, 0.0);
+  // the rollers lost most of their energy: the friction did most of that
+  EXPECT_LT(de, -0.5 * kinetic_max);
+  EXPECT_GT(std::abs(s.seat_friction_work), 0.5 * std::abs(dissipated));
+  EXPECT_LT(std::abs(numerical), kClosureTol * std::abs(dissipated));
+  // the wheel took the friction's reaction: it turned (its share is in the balance)
+  EXPECT_GT(std::abs(s.angle[0] - (kPi / 2 - tau / 2)), 1e-5);
 }
 
 }  // namespace

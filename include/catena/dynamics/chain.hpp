@@ -43,6 +43,11 @@ struct Sprocket {
   bool pocket = false;
   double pocket_angle = 0.0;      ///< [rad] δ1, the central angle of the p + a side
   double pocket_clearance = 0.0;  ///< [m] c: a joint within c of its vertex is free
+  /// [-] μ of the roller–seat contact: Coulomb friction against the roller's slip along the seat
+  /// surface relative to the wheel (0: frictionless seats, the default)
+  double friction = 0.0;
+  /// [m/s] v_ε: the seat friction is −μ f v_t/√(v_t² + v_ε²), as on a guide
+  double friction_band = 1e-3;
 };
 
 /// A constant force on one node (a dead load, or the far end of a span held by a tension source
@@ -148,6 +153,7 @@ struct State {
   double drag_work = 0.0;      ///< [J] work of the drag −α m v so far (≤ 0)
   /// [J] work of the seats' and guides' contact dampers so far (≤ 0)
   double contact_damping_work = 0.0;
+  double seat_friction_work = 0.0;  ///< [J] work of the seats' friction so far (≤ 0)
   explicit State(std::size_t nodes = 0, std::size_t sprockets = 0)
       : x(nodes), y(nodes), vx(nodes), vy(nodes), angle(sprockets), speed(sprockets) {}
   std::size_t nodes() const { return x.size(); }
@@ -224,6 +230,33 @@ inline SeatContact wheel_contact(const Sprocket& w, double x, double y, double v
 inline double contact_reach(const Sprocket& w) {
   return w.pitch_radius + (w.pocket ? 0.5 * w.pocket_clearance : w.roller_radius);
 }
+
+/// The friction of one roller's seat contact (docs/models/dynamics.md, "Seat friction"): with
+/// n the contact's normal (SeatContact::nx, ny) and t = (−n_y, n_x), the roller's slip
+/// v_t = (v − ω perp(q − c))·t relative to the wheel's material point under its centre, and the
+/// force on the roller F = f_t t, f_t = −μ f v_t/√(v_t² + v_ε²) (f the normal force); its
+/// reaction −F acts on the wheel at q. Derivatives of F and of the wheel's torque with respect
+/// to the roller's position q and velocity v and to the wheel's angle ψ and speed ω, for the
+/// Newton matrix (2×2 row-major [[∂Fx/∂qx, ∂Fx/∂qy], [∂Fy/∂qx, ∂Fy/∂qy]]).
+struct SeatFriction {
+  double friction_force = 0.0;   ///< [N] f_t along t
+  double slip = 0.0;             ///< [m/s] v_t
+  double power = 0.0;            ///< [W] f_t v_t ≤ 0: on roller and wheel together
+  double fx = 0.0, fy = 0.0;     ///< [N] F on the roller
+  double torque = 0.0;           ///< [N·m] on the wheel, (q − c) × (−F)
+  double dq[4] = {0, 0, 0, 0};   ///< [N/m] ∂F/∂q
+  double dv[4] = {0, 0, 0, 0};   ///< [N·s/m] ∂F/∂v
+  double dpsi[2] = {0, 0};       ///< [N/rad] ∂F/∂ψ
+  double domega[2] = {0, 0};     ///< [N·s/rad] ∂F/∂ω
+  double torque_dq[2] = {0, 0};  ///< [N] ∂τ/∂q
+  double torque_dv[2] = {0, 0};  ///< [N·s] ∂τ/∂v
+  double torque_dpsi = 0.0;      ///< [N·m/rad] ∂τ/∂ψ
+  double torque_domega = 0.0;    ///< [N·m·s/rad] ∂τ/∂ω
+};
+/// The friction of the contact `c` = seat_contact(w, x, y, vx, vy, angle, speed) (zero when it
+/// is inactive or carries no force, or w.friction = 0).
+SeatFriction seat_friction(const Sprocket& w, const SeatContact& c, double x, double y, double vx,
+                           double vy, double speed);
 
 /// [N] the tension of each link, k (l − p) + c l̇ (size links()).
 void link_tensions(const Model& model, const State& state, std::span<double> tension);

@@ -53,6 +53,8 @@ struct StepReport {
   double drag_work = 0.0;  ///< [J] the drag's work over the step, −Σ α m |x₁ − x₀|²/h (≤ 0)
   /// [J] the seats' and guides' contact dampers' work over the step (≤ 0)
   double contact_damping_work = 0.0;
+  /// [J] the seats' friction work over the step, Σ h f_t v_t (≤ 0; roller and wheel together)
+  double seat_friction_work = 0.0;
   SolveStatus solve = SolveStatus::kSolved;
 };
 
@@ -90,12 +92,15 @@ class Integrator {
   std::vector<double> wres_, wdiag_;     // driven wheels: −R_w and ∂R_w/∂ψ₁
   std::vector<std::size_t> driven_;      // indices of the driven wheels
   std::vector<std::vector<Vec2>> bcol_;  // per driven wheel: the coupling column ∂R/∂ψ₁
+  // per driven wheel: the wheel's row ∂R_w/∂u (the column's transpose but for seat friction)
+  std::vector<std::vector<Vec2>> brow_;
   std::vector<std::vector<Vec2>> wsol_;  // per driven wheel: A⁻¹ times that column
   std::vector<double> schur_;            // the driven wheels' Schur complement
   std::vector<double> torque_;           // per wheel: the θ-point contact torque (last assembly)
   double max_penetration_ = 0.0;
   // the dissipative works of the last assembly's iterate (StepReport's fields)
   double damper_work_ = 0.0, drag_work_ = 0.0, contact_damping_work_ = 0.0;
+  double seat_friction_work_ = 0.0;
 };
 
 }  // namespace catena::dynamics

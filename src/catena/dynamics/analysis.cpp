@@ -65,6 +65,8 @@ std::vector<Parameter> table_fields() {
       quantity("pretension", K::kForce, "the loop's tension at rest, >= 0 (default 0)"),
       quantity("contact_stiffness", K::kForcePerLength, "roller-seat penalty k_c [N/m]"),
       number("contact_damping", "roller-seat damping c_c [N s/m], >= 0"),
+      number("seat_friction",
+             "Coulomb friction coefficient mu of the roller-seat contact in [0, 1] (default 0)"),
       quantity("duration", K::kTime, "simulated time, > 0"),
       quantity("step", K::kTime, "time step h, > 0"),
       quantity("output_interval", K::kTime,
@@ -178,6 +180,7 @@ struct Setup {
   int links = 0;
   double stiffness = NAN, damping = 0.0, pretension = 0.0;
   double contact_stiffness = NAN, contact_damping = NAN;
+  double seat_friction = 0.0;  // μ of the roller-seat contact
   double duration = NAN, step = NAN, interval = NAN, theta = 0.6;
   int teeth = 0;
   std::size_t driver = 0, driven = 1;
@@ -382,6 +385,7 @@ Setup parse(const analysis::Inputs& in) {
   s.damping = optional("axial_damping", 0.0);
   s.pretension = optional("pretension", 0.0);
   s.theta = optional("theta", 0.6);
+  s.seat_friction = optional("seat_friction", 0.0);
   // the command line's --duration and --step override the table's
   if (in.present("duration")) s.duration = in.number("duration");
   if (in.present("step")) s.step = in.number("step");
@@ -405,6 +409,8 @@ Setup parse(const analysis::Inputs& in) {
   if (value.count("output_interval")) positive("output_interval", s.interval, false);
   if (!std::isnan(s.theta) && !(s.theta >= 0.5 && s.theta <= 1.0))
     issues.push_back({at("theta"), shown(s.theta), "in [0.5, 1]"});
+  if (!std::isnan(s.seat_friction) && !(s.seat_friction >= 0.0 && s.seat_friction <= 1.0))
+    issues.push_back({at("seat_friction"), shown(s.seat_friction), "in [0, 1]"});
   if (!std::isnan(s.pretension) && !std::isnan(s.stiffness) && s.stiffness > 0 &&
       !std::isnan(s.pitch) && s.pretension / s.stiffness >= 0.1 * s.pitch)
     issues.push_back({at("pretension"), shown(s.pretension),
@@ -613,6 +619,7 @@ struct Result {
   int steps = 0;
   double wall_time = 0.0, energy_drift = 0.0, max_penetration = 0.0;
   double friction_work = 0.0;
+  double seat_friction_work = 0.0;  // the seats' friction (0 unless seat_friction > 0)
   // the work balance (summary.work_balance): E_end − E_0 = input + friction + link dampers +
   // contact dampers + numerical (the command's model has no drag)
   double input_work = 0.0, damper_work = 0.0, contact_damping_work = 0.0;
@@ -649,6 +656,7 @@ Result run(const analysis::Inputs& in) {
   for (std::size_t w = 0; w < 2; ++w) {
     Sprocket s = iso606_sprocket(d.pitch, d.roller, d.width, z, w == 0 ? 0.0 : centre, 0.0,
                                  d.contact_stiffness, d.contact_damping);
+    s.friction = d.seat_friction;
     if (w == d.driver) {
       s.driver = true;
       s.speed = d.speed;
@@ -757,7 +765,8 @@ Result run(const analysis::Inputs& in) {
   out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   // the guides' friction work is 0 without guides: the drift is then the same number as before
   out.friction_work = s.friction_work;
-  out.energy_drift = energy(model, s).total() - e0 - work - s.friction_work;
+  out.seat_friction_work = s.seat_friction_work;
+  out.energy_drift = energy(model, s).total() - e0 - work - s.friction_work - s.seat_friction_work;
   out.input_work = work;
   out.damper_work = s.damper_work;
   out.contact_damping_work = s.contact_damping_work;
@@ -825,6 +834,11 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["guides"] = static_cast<int>(d.guides.size());
     j["summary"]["friction_work"] = r.friction_work;
   }
+  // seat friction likewise (opt-in: seat_friction > 0)
+  if (d.seat_friction > 0.0) {
+    j["seat_friction"] = d.seat_friction;
+    j["summary"]["seat_friction_work"] = r.seat_friction_work;
+  }
   // opt-in (work_balance = true): without it the output is what it was
   if (d.work_balance) {
     j["summary"]["work_balance"] = Value::object({{"input", r.input_work},
@@ -832,6 +846,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                                   {"link_dampers", r.damper_work},
                                                   {"contact_dampers", r.contact_damping_work},
                                                   {"numerical", r.numerical_work}});
+    if (d.seat_friction > 0.0) j["summary"]["work_balance"]["seat_friction"] = r.seat_friction_work;
   }
   j["diagnostics"] = analysis::diagnostics_value(r.diagnostics);
   j["units"] = analysis::units_value({{"pitch", "m"},
@@ -850,6 +865,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                       {"limit", "SI"}});
   if (d.gravity > 0.0) j["units"]["gravity"] = "m/s^2";
   if (!d.guides.empty()) j["units"]["friction_work"] = "J";
+  if (d.seat_friction > 0.0) j["units"]["seat_friction_work"] = "J";
   if (d.work_balance) j["units"]["work_balance"] = "J";
   rec.data = std::move(j);
 
@@ -897,6 +913,9 @@ Record describe(const Result& r, const analysis::Inputs&) {
       << format_g(r.friction_work, 5) << " J, link dampers " << format_g(r.damper_work, 5)
       << " J, contact dampers " << format_g(r.contact_damping_work, 5) << " J, numerical "
       << format_g(r.numerical_work, 4) << " J\n";
+  if (d.seat_friction > 0.0)
+    t << "  seat friction " << format_g(d.seat_friction, 4) << ", its work "
+      << format_g(r.seat_friction_work, 5) << " J\n";
   for (const Diagnostic& diag : r.diagnostics)
     t << "  " << to_string(diag.severity) << ": " << diag.message << "\n";
   rec.table = t.str();

@@ -104,6 +104,17 @@ std::vector<Issue> validate(const Model& model) {
       out.push_back({f + "contact_damping", check::format_si(s.contact_damping, "N*s/m"),
                      "a finite value >= 0 N*s/m"});
     }
+    if (s.pocket && s.friction != 0.0) {
+      // seat_friction's derivatives are tested on the ISO seat only (docs/models/dynamics.md)
+      out.push_back({f + "friction", check::format_si(s.friction, ""),
+                     "0 on a pocket wheel (friction in the pockets is not built)"});
+    } else if (!std::isfinite(s.friction) || !(s.friction >= 0.0) || !(s.friction <= 1.0)) {
+      out.push_back({f + "friction", check::format_si(s.friction, ""), "a number in [0, 1]"});
+    }
+    if (!std::isfinite(s.friction_band) || !(s.friction_band > 0.0) || !(s.friction_band <= 1.0)) {
+      out.push_back(
+          {f + "friction_band", check::format_si(s.friction_band, "m/s"), "a speed in (0, 1] m/s"});
+    }
     if (s.driver) {
       check::finite(out, (f + "speed").c_str(), s.speed, "rad/s");
     } else {
@@ -351,6 +362,68 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
   // the reaction +f n acts on the wheel along the line through the roller centre q
   c.torque = c.force * (rx * c.ny - ry * c.nx);
   return c;
+}
+
+SeatFriction seat_friction(const Sprocket& w, const SeatContact& c, double x, double y, double vx,
+                           double vy, double speed) {
+  SeatFriction out;
+  if (!c.active || !(c.force > 0.0) || !(w.friction > 0.0)) return out;
+  const double rx = x - w.centre_x, ry = y - w.centre_y;  // ρ = q − c
+  const double nx = c.nx, ny = c.ny, tx = -ny, ty = nx, kappa = c.curvature;
+  // the velocity relative to the wheel's material point at q: v − ω perp(ρ)
+  const double wx = vx + speed * ry, wy = vy - speed * rx;
+  const double vn = wx * nx + wy * ny, vt = wx * tx + wy * ty;
+  // f = f_el(g) + c(g) ġ: ∂g/∂q = nᵀ, ∂ġ/∂q = (ω + κ v_t) tᵀ, ∂ġ/∂v = nᵀ
+  // (∂n/∂q = κ t tᵀ, ∂t/∂q = −κ n tᵀ, ∂(v − ω perp ρ)/∂q = −ω perp)
+  const double f = c.force, fg = c.stiffness, cg = c.damping;
+  const double dfq[2] = {fg * nx + cg * (speed + kappa * vt) * tx,
+                         fg * ny + cg * (speed + kappa * vt) * ty};
+  const double dfv[2] = {cg * nx, cg * ny};
+  // ∂v_t/∂q = −ω nᵀ − κ v_n tᵀ, ∂v_t/∂v = tᵀ
+  const double dvtq[2] = {-speed * nx - kappa * vn * tx, -speed * ny - kappa * vn * ty};
+  const double ve2 = w.friction_band * w.friction_band;
+  const double root = std::sqrt(vt * vt + ve2);
+  const double phi = vt / root, dphi = ve2 / (root * root * root);
+  const double mu = w.friction;
+  const double ft = -mu * f * phi;
+  const double dftq[2] = {-mu * (phi * dfq[0] + f * dphi * dvtq[0]),
+                          -mu * (phi * dfq[1] + f * dphi * dvtq[1])};
+  const double dftv[2] = {-mu * (phi * dfv[0] + f * dphi * tx),
+                          -mu * (phi * dfv[1] + f * dphi * ty)};
+  out.friction_force = ft;
+  out.slip = vt;
+  out.power = ft * vt;
+  out.fx = ft * tx;
+  out.fy = ft * ty;
+  // ∂F/∂q = t ⊗ ∂f_t/∂q − f_t κ n tᵀ, ∂F/∂v = t ⊗ ∂f_t/∂v
+  out.dq[0] = tx * dftq[0] - ft * kappa * nx * tx;
+  out.dq[1] = tx * dftq[1] - ft * kappa * nx * ty;
+  out.dq[2] = ty * dftq[0] - ft * kappa * ny * tx;
+  out.dq[3] = ty * dftq[1] - ft * kappa * ny * ty;
+  out.dv[0] = tx * dftv[0];
+  out.dv[1] = tx * dftv[1];
+  out.dv[2] = ty * dftv[0];
+  out.dv[3] = ty * dftv[1];
+  // The contact turns with the wheel: F(ψ + a, q, v) = Rot(a) F(ψ, c + Rot(−a) ρ, Rot(−a) v),
+  // so ∂F/∂ψ = perp F − ∂F/∂q perp ρ − ∂F/∂v perp v; v enters only through v − ω perp ρ, so
+  // ∂F/∂ω = −∂F/∂v perp ρ. The torque (a scalar) is invariant: ∂τ/∂ψ = −∂τ/∂q perp ρ − ∂τ/∂v perp
+  // v.
+  const double px = -ry, py = rx;    // perp ρ
+  const double pvx = -vy, pvy = vx;  // perp v
+  out.domega[0] = -(out.dv[0] * px + out.dv[1] * py);
+  out.domega[1] = -(out.dv[2] * px + out.dv[3] * py);
+  out.dpsi[0] = -out.fy - (out.dq[0] * px + out.dq[1] * py) - (out.dv[0] * pvx + out.dv[1] * pvy);
+  out.dpsi[1] = out.fx - (out.dq[2] * px + out.dq[3] * py) - (out.dv[2] * pvx + out.dv[3] * pvy);
+  // τ = ρ × (−F) = ρ_y F_x − ρ_x F_y
+  out.torque = ry * out.fx - rx * out.fy;
+  out.torque_dq[0] = -out.fy + ry * out.dq[0] - rx * out.dq[2];
+  out.torque_dq[1] = out.fx + ry * out.dq[1] - rx * out.dq[3];
+  out.torque_dv[0] = ry * out.dv[0] - rx * out.dv[2];
+  out.torque_dv[1] = ry * out.dv[1] - rx * out.dv[3];
+  out.torque_domega = -(out.torque_dv[0] * px + out.torque_dv[1] * py);
+  out.torque_dpsi = -(out.torque_dq[0] * px + out.torque_dq[1] * py) -
+                    (out.torque_dv[0] * pvx + out.torque_dv[1] * pvy);
+  return out;
 }
 
 Model uniform_chain(std::size_t nodes, bool closed, double pitch, double node_mass,

@@ -63,9 +63,11 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
     driven_.push_back(w);
   }
   bcol_.resize(model.sprockets.size());
+  brow_.resize(model.sprockets.size());
   wsol_.resize(model.sprockets.size());
   for (std::size_t w : driven_) {
     bcol_[w].resize(model.nodes());
+    brow_[w].resize(model.nodes());
     wsol_[w].resize(model.nodes());
   }
 }
@@ -80,7 +82,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   // J = (m/hθ + α m) I + h Σ A; the system is J δ = −R.
   // The dissipative works of this iterate (the step's report takes the last assembly's): the drag
   // impulse is −α m Δx, its work −α m |Δx|²/h; the link dampers' and contact dampers' below.
-  damper_work_ = drag_work_ = contact_damping_work_ = 0.0;
+  damper_work_ = drag_work_ = contact_damping_work_ = seat_friction_work_ = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const double m = model.mass[i];
     const double dx = ux_[i] - s.x[i], dy = uy_[i] - s.y[i];
@@ -146,7 +148,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     const bool driven = !wheel.driver;
     double torque = 0.0;
     double wdiag = driven ? wheel.inertia / (h * th) : 0.0;
-    if (driven && jacobian) std::fill(bcol_[w].begin(), bcol_[w].end(), Vec2{});
+    if (driven && jacobian) {
+      std::fill(bcol_[w].begin(), bcol_[w].end(), Vec2{});
+      std::fill(brow_[w].begin(), brow_[w].end(), Vec2{});
+    }
     // seat_contact's own first test, inline: most rollers are clear of a wheel, and the call
     // (its result zeroed, the velocity formed) cost more than the test.
     const double reach = contact_reach(wheel);
@@ -164,6 +169,16 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       torque += sc.torque;
       solver_.rhs[i].x -= h * sc.force * sc.nx;  // the force on the roller is −f n
       solver_.rhs[i].y -= h * sc.force * sc.ny;
+      // Seat friction (docs/models/dynamics.md, "Seat friction"): F(q, v, ψ, ω) on the roller at
+      // the θ point with the step's velocities, its reaction's torque on the wheel
+      const SeatFriction sf =
+          wheel.friction > 0.0 ? seat_friction(wheel, sc, qx, qy, vx, vy, omega) : SeatFriction{};
+      if (wheel.friction > 0.0) {
+        seat_friction_work_ += h * sf.power;
+        torque += sf.torque;
+        solver_.rhs[i].x += h * sf.fx;
+        solver_.rhs[i].y += h * sf.fy;
+      }
       if (!jacobian || sc.force <= 0.0) continue;  // separating: no force, no stiffness
       // D = ∂(h f n)/∂u = normal n nᵀ + tangent (I − n nᵀ), from
       // ∂(f n)/∂q = (∂f/∂g + c/(θh)) n nᵀ + (f/s)(I − n nᵀ), q = x_θ, ∂q/∂u = θ.
@@ -174,6 +189,11 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
                     normal * sc.ny * sc.ny + tangent * (1.0 - sc.ny * sc.ny)};
       Mat2& d = solver_.diag[i];
       d = {d.a + dc.a, d.b + dc.b, d.c + dc.c, d.d + dc.d};
+      const double ht = h * th;
+      if (wheel.friction > 0.0) {  // −∂(h F)/∂u = −(hθ ∂F/∂q + ∂F/∂v), as a guide's
+        d = {d.a - (ht * sf.dq[0] + sf.dv[0]), d.b - (ht * sf.dq[1] + sf.dv[1]),
+             d.c - (ht * sf.dq[2] + sf.dv[2]), d.d - (ht * sf.dq[3] + sf.dv[3])};
+      }
       if (!driven) continue;
       // Turning the wheel by dψ₁ (its θ point by θ dψ₁, its speed by dψ₁/h) is, for the
       // contact, turning the roller the other way about the centre: with t = perp(q − c), the
@@ -184,7 +204,17 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       const Vec2 dt{dc.a * tx + dc.b * ty, dc.c * tx + dc.d * ty};
       const double hf = h * th * sc.force;
       bcol_[w][i] = {-dt.x - hf * sc.ny, -dt.y + hf * sc.nx};
+      brow_[w][i] = bcol_[w][i];
       wdiag += tx * dt.x + ty * dt.y - hf * (sc.nx * cx + sc.ny * cy);
+      if (wheel.friction > 0.0) {
+        // the friction's part is not symmetric: the column −h(θ ∂F/∂ψ + ∂F/∂ω/h), the row
+        // −h(θ ∂τ/∂q + ∂τ/∂v/h), and −h(θ ∂τ/∂ψ + ∂τ/∂ω/h) on the wheel's own entry
+        bcol_[w][i].x -= ht * sf.dpsi[0] + sf.domega[0];
+        bcol_[w][i].y -= ht * sf.dpsi[1] + sf.domega[1];
+        brow_[w][i].x -= ht * sf.torque_dq[0] + sf.torque_dv[0];
+        brow_[w][i].y -= ht * sf.torque_dq[1] + sf.torque_dv[1];
+        wdiag -= ht * sf.torque_dpsi + sf.torque_domega;
+      }
     }
     torque_[w] = torque;
     if (driven) {
@@ -285,7 +315,7 @@ StepReport Integrator::step(const Model& model, State& s) {
         solver_.substitute(bcol_[w], wsol_[w]);
       }
       for (std::size_t a = 0; a < nd; ++a) {
-        const std::vector<Vec2>& ba = bcol_[driven_[a]];
+        const std::vector<Vec2>& ba = brow_[driven_[a]];  // the wheel's row
         double g = wres_[driven_[a]];
         for (std::size_t i = 0; i < n; ++i) g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
         dpsi_[driven_[a]] = g;
@@ -368,6 +398,7 @@ StepReport Integrator::step(const Model& model, State& s) {
   report.damper_work = damper_work_;
   report.drag_work = drag_work_;
   report.contact_damping_work = contact_damping_work_;
+  report.seat_friction_work = seat_friction_work_;
   for (const Guide& guide : model.guides) {
     if (!(guide.friction > 0.0) && !(guide.contact_damping > 0.0)) continue;
     for (std::size_t i = 0; i < n; ++i) {
@@ -382,6 +413,7 @@ StepReport Integrator::step(const Model& model, State& s) {
   s.damper_work += report.damper_work;
   s.drag_work += report.drag_work;
   s.contact_damping_work += report.contact_damping_work;
+  s.seat_friction_work += report.seat_friction_work;
   for (std::size_t i = 0; i < n; ++i) {
     if (model.is_pinned(i)) continue;
     // x₁ = x₀ + h ((1 − θ) v₀ + θ v₁)

@@ -1,0 +1,235 @@
+// Seat friction (docs/models/dynamics.md, "Seat friction"): the regularised Coulomb force on a
+// roller's slip along its seat relative to the wheel, its derivatives for the Newton matrix
+// against finite differences, its Coulomb value outside the band, one-sidedness, and the power
+// identity the work balance rests on.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "catena/dynamics/chain.hpp"
+
+namespace catena::dynamics {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Sprocket wheel(double mu) {
+  Sprocket w = iso606_sprocket(0.01905, 0.01207, 0.01168, 17, 0.03, -0.02, 2e8, 800.0);
+  w.friction = mu;
+  w.friction_band = 1e-3;
+  return w;
+}
+
+struct Point {
+  double x, y, vx, vy;
+};
+
+// A roller at angle γ from seat k's inward radial, at distance d from the seat centre, with the
+// velocity relative to the wheel's material point: the penetration rate `rate` along the
+// contact's normal n and the slip `slip` along t = perp(n); the wheel at angle ψ and speed ω.
+Point place(const Sprocket& w, int k, double psi, double omega, double gamma, double d, double rate,
+            double slip) {
+  const double sigma = psi + 2.0 * kPi * k / w.teeth;
+  const double cx = w.centre_x + w.pitch_radius * std::cos(sigma);
+  const double cy = w.centre_y + w.pitch_radius * std::sin(sigma);
+  // inward radial (−cos σ, −sin σ) turned by γ towards the tangent (−sin σ, cos σ)
+  const double ex = -std::cos(sigma) * std::cos(gamma) - std::sin(sigma) * std::sin(gamma);
+  const double ey = -std::sin(sigma) * std::cos(gamma) + std::cos(sigma) * std::sin(gamma);
+  Point p{cx + d * ex, cy + d * ey, 0.0, 0.0};
+  const double rx = p.x - w.centre_x, ry = p.y - w.centre_y;
+  // the contact's normal n (on a flank not along e); velocity relative to the wheel
+  // rate·n + slip·t, plus the wheel's material velocity ω perp(ρ)
+  const SeatContact c = seat_contact(w, p.x, p.y, -omega * ry, omega * rx, psi, omega);
+  const double nx = c.active ? c.nx : ex, ny = c.active ? c.ny : ey;
+  p.vx = rate * nx - slip * ny - omega * ry;
+  p.vy = rate * ny + slip * nx + omega * rx;
+  return p;
+}
+
+SeatFriction eval(const Sprocket& w, const Point& p, double psi, double omega) {
+  const SeatContact c = seat_contact(w, p.x, p.y, p.vx, p.vy, psi, omega);
+  return seat_friction(w, c, p.x, p.y, p.vx, p.vy, omega);
+}
+
+// Central differences of F = (fx, fy) and τ against every argument, compared with the analytic
+// derivatives, at random contacts on the seating arc and on the flanks, within the C¹ ramp and
+// beyond it, sliding inside and outside the friction band.
+TEST(DynamicsSeatFriction, DerivativesMatchFiniteDifferences) {
+  const Sprocket w = wheel(0.3);
+  const double half = 0.5 * w.seating_angle;
+  std::mt19937 rng(2111);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int arc = 0, flank = 0, in_band = 0, sliding = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int k = static_cast<int>(u(rng) * 17) - 8;
+    const double psi = 2.0 * kPi * u(rng), omega = 40.0 * (u(rng) - 0.5);
+    double gamma = (half + 0.4) * (2.0 * u(rng) - 1.0);
+    if (std::abs(std::abs(gamma) - half) < 0.02) continue;   // off the arc–flank joint
+    const double g = 3e-6 * u(rng);                          // within and beyond ε = 1e-6
+    if (std::abs(g - w.contact_smoothing) < 2e-8) continue;  // off the ramp's end (damping kink)
+    const double clearance = w.seat_radius - w.roller_radius;
+    // distance giving penetration g: on the arc |e| = ri − r + g, on a flank e·m = ri − r + g
+    const double d = std::abs(gamma) <= half ? clearance + g
+                                             : (clearance + g) / std::cos(std::abs(gamma) - half);
+    const double slip = (u(rng) < 0.5 ? 3e-3 : 0.2) * (2.0 * u(rng) - 1.0);
+    const double rate = 0.01 * (u(rng) - 0.3);
+    const Point p = place(w, k, psi, omega, gamma, d, rate, slip);
+    const SeatContact c = seat_contact(w, p.x, p.y, p.vx, p.vy, psi, omega);
+    if (!c.active || !(c.force > 1.0)) continue;
+    const SeatFriction f = eval(w, p, psi, omega);
+    (c.curvature > 0.0 ? arc : flank)++;
+    (std::abs(f.slip) < 3e-3 ? in_band : sliding)++;
+    // steps: 1e-11 m (a 1e-5 part of the ramp ε), 1e-8 m/s (1e-5 of the band), and the same
+    // displacement at the pitch radius for ψ and ω
+    const double hq = 1e-11, hv = 1e-8, hpsi = hq / w.pitch_radius, hw = hv / w.pitch_radius;
+    auto diff = [&](Point a, Point b, double pa, double pb, double wa, double wb, double step,
+                    double out[3]) {
+      const SeatFriction fa = eval(w, a, pa, wa), fb = eval(w, b, pb, wb);
+      out[0] = (fb.fx - fa.fx) / (2 * step);
+      out[1] = (fb.fy - fa.fy) / (2 * step);
+      out[2] = (fb.torque - fa.torque) / (2 * step);
+    };
+    // scales: the largest analytic entry of each kind
+    const double sq =
+        std::max({std::abs(f.dq[0]), std::abs(f.dq[1]), std::abs(f.dq[2]), std::abs(f.dq[3]), 1.0});
+    const double sv = std::max(
+        {std::abs(f.dv[0]), std::abs(f.dv[1]), std::abs(f.dv[2]), std::abs(f.dv[3]), 1e-3});
+    const double tol = 2e-4;
+    for (int j = 0; j < 2; ++j) {
+      Point a = p, b = p;
+      (j == 0 ? a.x : a.y) -= hq;
+      (j == 0 ? b.x : b.y) += hq;
+      double fd[3];
+      diff(a, b, psi, psi, omega, omega, hq, fd);
+      EXPECT_NEAR(fd[0], f.dq[j], tol * sq) << "dFx/dq" << j << " trial " << trial;
+      EXPECT_NEAR(fd[1], f.dq[2 + j], tol * sq) << "dFy/dq" << j << " trial " << trial;
+      EXPECT_NEAR(fd[2], f.torque_dq[j], tol * sq * w.pitch_radius * 2) << "dtau/dq" << j;
+      a = p;
+      b = p;
+      (j == 0 ? a.vx : a.vy) -= hv;
+      (j == 0 ? b.vx : b.vy) += hv;
+      diff(a, b, psi, psi, omega, omega, hv, fd);
+      EXPECT_NEAR(fd[0], f.dv[j], tol * sv) << "dFx/dv" << j << " trial " << trial;
+      EXPECT_NEAR(fd[1], f.dv[2 + j], tol * sv) << "dFy/dv" << j << " trial " << trial;
+      EXPECT_NEAR(fd[2], f.torque_dv[j], tol * sv * w.pitch_radius * 2) << "dtau/dv" << j;
+    }
+    double fd[3];
+    diff(p, p, psi - hpsi, psi + hpsi, omega, omega, hpsi, fd);
+    const double spsi = sq * w.pitch_radius * 2;
+    EXPECT_NEAR(fd[0], f.dpsi[0], tol * spsi) << "dFx/dpsi trial " << trial;
+    EXPECT_NEAR(fd[1], f.dpsi[1], tol * spsi) << "dFy/dpsi trial " << trial;
+    EXPECT_NEAR(fd[2], f.torque_dpsi, tol * spsi * w.pitch_radius * 2) << "dtau/dpsi";
+    diff(p, p, psi, psi, omega - hw, omega + hw, hw, fd);
+    const double sw = sv * w.pitch_radius * 2;
+    EXPECT_NEAR(fd[0], f.domega[0], tol * sw) << "dFx/domega trial " << trial;
+    EXPECT_NEAR(fd[1], f.domega[1], tol * sw) << "dFy/domega trial " << trial;
+    EXPECT_NEAR(fd[2], f.torque_domega, tol * sw * w.pitch_radius * 2) << "dtau/domega";
+  }
+  EXPECT_GE(arc, 30);
+  EXPECT_GE(flank, 30);
+  EXPECT_GE(in_band, 30);
+  EXPECT_GE(sliding, 30);
+}
+
+// Outside the band the force is Coulomb's μ f against the slip, within 1/(2 (v_t/v_ε)²); it is
+// odd in the slip and 0 without slip; F lies along the seat's tangent.
+TEST(DynamicsSeatFriction, CoulombOutsideTheBandAgainstTheSlip) {
+  const Sprocket w = wheel(0.25);
+  const double half = 0.5 * w.seating_angle;
+  for (const double gamma : {0.3, -0.5, 1.4, -1.5}) {  // arc and both flanks (α/2 ≈ 1.18 rad)
+    for (const double slip : {70e-3, -70e-3, 0.5, -2.0}) {
+      const double clr = w.seat_radius - w.roller_radius, g = 4e-6;
+      const double d =
+          std::abs(gamma) <= half ? clr + g : (clr + g) / std::cos(std::abs(gamma) - half);
+      const Point p = place(w, 3, 0.7, 12.0, gamma, d, 0.0, slip);
+      const SeatContact c = seat_contact(w, p.x, p.y, p.vx, p.vy, 0.7, 12.0);
+      ASSERT_TRUE(c.active && c.force > 0.0);
+      const SeatFriction f = eval(w, p, 0.7, 12.0);
+      EXPECT_NEAR(f.slip, slip, 1e-12);
+      const double r = w.friction_band / slip;
+      EXPECT_NEAR(f.friction_force / (-w.friction * c.force * (slip > 0 ? 1 : -1)), 1.0,
+                  0.5 * r * r + 1e-12);
+      EXPECT_LT(f.friction_force * slip, 0.0);
+      EXPECT_NEAR(f.fx * c.nx + f.fy * c.ny, 0.0, 1e-12 * c.force);  // along the tangent
+      const Point q = place(w, 3, 0.7, 12.0, gamma, d, 0.0, -slip);
+      EXPECT_NEAR(eval(w, q, 0.7, 12.0).friction_force, -f.friction_force, 1e-9 * c.force);
+    }
+    const double reach = w.seat_radius - w.roller_radius + 4e-6;
+    const double d = std::abs(gamma) <= half ? reach : reach / std::cos(std::abs(gamma) - half);
+    const Point still = place(w, 3, 0.7, 12.0, gamma, d, 0.0, 0.0);
+    EXPECT_NEAR(eval(w, still, 0.7, 12.0).friction_force, 0.0, 1e-9);
+  }
+}
+
+// No normal force, no friction: a roller clear of its seat, or leaving it fast enough that the
+// damper would pull (the force clamped at 0), feels none; nor does any roller with μ = 0.
+TEST(DynamicsSeatFriction, OnlyWithANormalForce) {
+  const Sprocket w = wheel(0.3);
+  const double clr = w.seat_radius - w.roller_radius;
+  // clear of the seat: inside the clearance
+  const Point clear = place(w, 0, 0.2, 5.0, 0.1, 0.5 * clr, 0.0, 0.3);
+  EXPECT_FALSE(seat_contact(w, clear.x, clear.y, clear.vx, clear.vy, 0.2, 5.0).active);
+  EXPECT_EQ(eval(w, clear, 0.2, 5.0).friction_force, 0.0);
+  // in contact but separating: 1 µm deep, leaving at 1 m/s (the damper outweighs k_c g)
+  const Point leaving = place(w, 0, 0.2, 5.0, 0.1, clr + 1e-6, -1.0, 0.3);
+  const SeatContact c = seat_contact(w, leaving.x, leaving.y, leaving.vx, leaving.vy, 0.2, 5.0);
+  EXPECT_TRUE(c.active);
+  EXPECT_EQ(c.force, 0.0);
+  const SeatFriction f = eval(w, leaving, 0.2, 5.0);
+  EXPECT_EQ(f.friction_force, 0.0);
+  EXPECT_EQ(f.dq[0], 0.0);
+  EXPECT_EQ(f.torque, 0.0);
+  // pressed in but frictionless
+  const Point pressed = place(w, 0, 0.2, 5.0, 0.1, clr + 3e-6, 0.0, 0.3);
+  EXPECT_EQ(eval(wheel(0.0), pressed, 0.2, 5.0).friction_force, 0.0);
+  EXPECT_NE(eval(wheel(0.3), pressed, 0.2, 5.0).friction_force, 0.0);
+}
+
+// The friction's power on roller and wheel together is f_t v_t ≤ 0: F·v + τ ω, the identity the
+// integrator's seat friction work (h f_t v_t a step) rests on.
+TEST(DynamicsSeatFriction, PowerOnRollerAndWheelIsForceTimesSlip) {
+  const Sprocket w = wheel(0.3);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int checked = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const double psi = 3.0 * u(rng), omega = 30.0 * u(rng);
+    const double d = w.seat_radius - w.roller_radius + 2e-6 * (1.0 + u(rng));
+    const Point p = place(w, 2, psi, omega, 1.5 * u(rng), d, 0.0, 0.5 * u(rng));
+    const SeatFriction f = eval(w, p, psi, omega);
+    if (f.friction_force == 0.0) continue;
+    ++checked;
+    EXPECT_LE(f.power, 0.0);
+    EXPECT_NEAR(f.power, f.fx * p.vx + f.fy * p.vy + f.torque * omega,
+                1e-9 * std::abs(f.friction_force) * (std::abs(f.slip) + 1.0));
+  }
+  EXPECT_GE(checked, 100);
+}
+
+TEST(DynamicsSeatFriction, ValidationNamesTheFields) {
+  Model m = uniform_chain(4, false, 0.01905, 0.024, 1e6, 0.0, false);
+  Sprocket w = wheel(-0.1);
+  w.driver = true;
+  w.friction_band = 0.0;
+  m.sprockets = {w, wheel(NAN)};
+  m.sprockets[1].driver = true;
+  m.sprockets[1].friction_band = 2.0;
+  const std::vector<Issue> issues = validate(m);
+  int found = 0;
+  for (const Issue& i : issues) {
+    if (i.field == "sprocket[0].friction" || i.field == "sprocket[0].friction_band" ||
+        i.field == "sprocket[1].friction" || i.field == "sprocket[1].friction_band") {
+      ++found;
+    }
+  }
+  EXPECT_EQ(found, 4);
+  Sprocket ok = wheel(1.0);
+  ok.driver = true;
+  m.sprockets = {ok};
+  EXPECT_TRUE(validate(m).empty());
+}
+
+}  // namespace
+}  // namespace catena::dynamics
