@@ -374,7 +374,8 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
   for (const std::size_t i : s.path.unwrapped)
     issues.push_back({centre_field(i), centre_value(i),
                       "on the convex hull of the pitch circles, wrapped once: the chain runs "
-                      "round the wheels' hull (this wheel is inside it or only touches it)"});
+                      "round the wheels' hull (this wheel is inside it, only touches it or is met "
+                      "twice)"});
   if (!s.path.unwrapped.empty()) return;
   bool wrapped = true;
   for (const PathPiece& q : s.path.pieces) {
@@ -408,14 +409,14 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
   const int nearest = static_cast<int>(std::lround(f));
   std::string why = "a count the belt path fits: the path round the pitch circles is " +
                     mm(s.path.length) + ", " + format_g(f, 6) + " links of the pitch; ";
+  const std::string gap = format_g(clearance[0] * 1e6, 3) + " um";  // 0.005 d1 on every wheel
   if (!fitting.empty()) {
-    why += "links that fit (every wrapped roller within its seat's clearance, " +
-           format_g(clearance[0] * 1e6, 3) +
-           " um on sprocket[0]): " + std::to_string(fitting.front()) +
+    why += "links that fit (every wrapped roller within its seat's clearance ri - d1/2 = " + gap +
+           "): " + std::to_string(fitting.front()) +
            (fitting.size() > 1 ? " to " + std::to_string(fitting.back()) : "");
   } else {
-    why += "none fits within the seats' clearance (" + format_g(clearance[0] * 1e6, 3) +
-           " um on sprocket[0]): lengthen or shorten the path by about " +
+    why += "none fits within the seats' clearance ri - d1/2 = " + gap + ": " +
+           (f > nearest ? "shorten" : "lengthen") + " the path by about " +
            mm(std::abs(nearest - f) * s.pitch) + " to " + std::to_string(nearest) +
            " links (e.g. move a wheel's centre)";
   }
