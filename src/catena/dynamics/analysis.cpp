@@ -393,6 +393,12 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
   // the links: a count whose chord closes the loop with every wrapped roller within its seat's
   // clearance of the seat centre (the start then presses no roller into a tooth, as on the line)
   const double f = path_links(s.path, s.pitch);
+  if (!(f >= 3.0 && f <= 10000.0)) {
+    issues.push_back({links_given ? links_at : "dynamics.links", mm(s.path.length),
+                      "a belt path of 3 to 10000 links (here " + shown(f) +
+                          " pitches round the pitch circles; move the centres)"});
+    return;
+  }
   auto fits = [&](int count, LoopPlacement& out) {
     if (count < 3 || count > 10000) return false;
     out = place_loop(s.path, s.circles, teeth, count, s.pitch);
