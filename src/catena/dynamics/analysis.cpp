@@ -1,12 +1,14 @@
-// `dynamics` — a roller-chain loop over two ISO 606 sprockets in time (issue 21, Stage 3) — as an
+// `dynamics` — a roller-chain loop over ISO 606 sprockets in time (issue 21, Stage 3) — as an
 // analysis. Its input is the [dynamics] table with [[dynamics.sprocket]] elements, so
 // `catena dynamics case.toml` reads a case file's [dynamics] and ignores the rest.
 //
-// What it sets up is the drive the core's validation (6) runs (tests/validation/
+// Without centres it sets up the drive the core's validation (6) runs (tests/validation/
 // dynamics_drive_test.cpp): two equal sprockets (z even) on a horizontal line, a whole number of
 // pitches apart, the chain wrapped half-way round each and straight between, every node moving at
 // the driver's pitch-line speed. The centre distance is not an input: it follows from the links,
-// (links − z)/2 pitches. Anything else (unequal wheels, idlers, a free layout) is refused, named.
+// (links − z)/2 pitches. With centre_x and centre_y on every sprocket (the free layout: any
+// number of driver, driven and idler wheels), the chain starts on the belt path round the wheels'
+// pitch circles (parse_layout below, dynamics/layout.hpp).
 #include "catena/dynamics/analysis.hpp"
 
 #include <algorithm>
@@ -130,12 +132,12 @@ const Parameter& table_parameter() {
     t.name = "dynamics";
     t.type = ParameterType::kTable;
     t.doc =
-        "TOML file with a [dynamics] table and two [[dynamics.sprocket]] tables (a case file "
-        "works); in a case file, its own [dynamics] table";
+        "TOML file with a [dynamics] table and two or more [[dynamics.sprocket]] tables (a case "
+        "file works); in a case file, its own [dynamics] table";
     t.required = true;
     t.expected =
         "a [dynamics] table (chain, links, axial_stiffness, contact_stiffness, duration, step) and "
-        "two [[dynamics.sprocket]] tables (docs/models/dynamics.md)";
+        "two or more [[dynamics.sprocket]] tables (docs/models/dynamics.md)";
     t.fields = table_fields();
     t.rows_name = "sprocket";
     t.row_fields = sprocket_fields();
