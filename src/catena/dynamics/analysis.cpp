@@ -1,12 +1,14 @@
-// `dynamics` — a roller-chain loop over two ISO 606 sprockets in time (issue 21, Stage 3) — as an
+// `dynamics` — a roller-chain loop over ISO 606 sprockets in time (issue 21, Stage 3) — as an
 // analysis. Its input is the [dynamics] table with [[dynamics.sprocket]] elements, so
 // `catena dynamics case.toml` reads a case file's [dynamics] and ignores the rest.
 //
-// What it sets up is the drive the core's validation (6) runs (tests/validation/
+// Without centres it sets up the drive the core's validation (6) runs (tests/validation/
 // dynamics_drive_test.cpp): two equal sprockets (z even) on a horizontal line, a whole number of
 // pitches apart, the chain wrapped half-way round each and straight between, every node moving at
 // the driver's pitch-line speed. The centre distance is not an input: it follows from the links,
-// (links − z)/2 pitches. Anything else (unequal wheels, idlers, a free layout) is refused, named.
+// (links − z)/2 pitches. With centre_x and centre_y on every sprocket (the free layout: any
+// number of driver, driven and idler wheels), the chain starts on the belt path round the wheels'
+// pitch circles (parse_layout below, dynamics/layout.hpp).
 #include "catena/dynamics/analysis.hpp"
 
 #include <algorithm>
@@ -21,7 +23,9 @@
 
 #include "catena/contact/chain_catalog.hpp"
 #include "catena/core/progress.hpp"
+#include "catena/drive/sprocket.hpp"
 #include "catena/dynamics/integrator.hpp"
+#include "catena/dynamics/layout.hpp"
 #include "catena/dynamics/report_charts.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/io/case_file.hpp"
@@ -59,7 +63,9 @@ std::vector<Parameter> table_fields() {
       quantity("mass_per_metre", K::kMassPerLength, "chain mass per metre q"),
       quantity("roller_diameter", K::kLength, "roller diameter d1"),
       quantity("inner_width", K::kLength, "inner width b1"),
-      number("links", "links in the closed loop, an integer z + 2m with m >= 2, at most 10000"),
+      number("links",
+             "links in the closed loop, an integer z + 2m with m >= 2, at most 10000; with "
+             "centres: optional, a count the belt path fits (default: the nearest that fits)"),
       quantity("axial_stiffness", K::kForcePerLength, "axial stiffness k of one link [N/m]"),
       number("axial_damping", "axial damping c of one link [N s/m], >= 0 (default 0)"),
       quantity("pretension", K::kForce, "the loop's tension at rest, >= 0 (default 0)"),
@@ -110,11 +116,16 @@ std::vector<Parameter> sprocket_fields() {
   using analysis::number;
   using analysis::quantity;
   using analysis::text;
-  return {number("teeth", "number of teeth z, an even integer in [8, 150]"),
-          text("role", "driver or driven"),
+  return {number("teeth",
+                 "number of teeth z, an integer in [8, 150] (even for two wheels without centres)"),
+          text("role", "driver, driven or idler (idler: with centres only)"),
           quantity("speed", K::kAngularSpeed, "driver: speed, counter-clockwise, > 0"),
-          number("inertia", "driven: moment of inertia J [kg m^2], > 0"),
-          number("load_torque", "driven: load torque T_L [N m], >= 0")};
+          number("inertia", "driven or idler: moment of inertia J [kg m^2], > 0"),
+          number("load_torque", "driven: load torque T_L [N m], >= 0"),
+          quantity("centre_x", K::kLength,
+                   "the wheel's centre, x (given on every sprocket or none: without centres, two "
+                   "equal wheels on a line)"),
+          quantity("centre_y", K::kLength, "the wheel's centre, y (y up)")};
 }
 
 const Parameter& table_parameter() {
@@ -123,12 +134,12 @@ const Parameter& table_parameter() {
     t.name = "dynamics";
     t.type = ParameterType::kTable;
     t.doc =
-        "TOML file with a [dynamics] table and two [[dynamics.sprocket]] tables (a case file "
-        "works); in a case file, its own [dynamics] table";
+        "TOML file with a [dynamics] table and two or more [[dynamics.sprocket]] tables (a case "
+        "file works); in a case file, its own [dynamics] table";
     t.required = true;
     t.expected =
         "a [dynamics] table (chain, links, axial_stiffness, contact_stiffness, duration, step) and "
-        "two [[dynamics.sprocket]] tables (docs/models/dynamics.md)";
+        "two or more [[dynamics.sprocket]] tables (docs/models/dynamics.md)";
     t.fields = table_fields();
     t.rows_name = "sprocket";
     t.row_fields = sprocket_fields();
@@ -162,9 +173,18 @@ std::optional<double> read(const Entry& v, const Parameter& key, std::vector<Iss
 
 struct SprocketInput {
   int line = 0;
-  std::optional<double> teeth, speed, inertia, load_torque;
+  std::optional<double> teeth, speed, inertia, load_torque, centre_x, centre_y;
   std::string role;
   bool has_role = false;
+  std::map<std::string, int> seen;  // every key given (read or not) → its line
+};
+
+// One wheel of the free layout (every sprocket with a centre).
+struct LayoutWheel {
+  std::string role;  // driver, driven or idler
+  int teeth = 0;
+  double x = NAN, y = NAN;
+  double speed = NAN, inertia = NAN, load = 0.0;
 };
 
 struct GuideInput {
@@ -188,9 +208,250 @@ struct Setup {
   double gravity = 0.0;       // [m/s²] downward (−y)
   std::vector<Guide> guides;  // [[dynamics.guide]]
   bool work_balance = false;  // summary.work_balance in the output
+  // the free layout (docs/models/dynamics.md, "Command"): every sprocket with its centre; empty
+  // `wheels` for the two equal wheels on a line
+  std::vector<LayoutWheel> wheels;
+  std::vector<Circle> circles;  // the pitch circles
+  BeltPath path;                // the belt path round them
+  LoopPlacement placement;      // the nodes on it
+  double laid_pitch = NAN;      // [m] the links' chord as laid: the pitch on the line
+  bool layout() const { return !wheels.empty(); }
 };
 
 bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
+
+constexpr std::size_t kMaxWheels = 20;  // sprockets of the free layout
+constexpr int kMinWrapTeeth = 3;        // a wheel's wrap, in teeth (docs/models/dynamics.md)
+
+// The free layout: every [[dynamics.sprocket]] with its centre (docs/models/dynamics.md,
+// "Command"). Reports every problem of the wheels at once; the geometry (overlaps, the belt path,
+// each wheel's wrap, the links that fit) once every wheel's teeth and centre and the chain's
+// dimensions are valid. `links` is NAN when not given (or unreadable: `links_given`).
+void parse_layout(const std::vector<SprocketInput>& wheels, double links,
+                  const std::string& links_at, bool links_given, Setup& s,
+                  std::vector<Issue>& issues) {
+  auto shown = [](double x) { return format_g(x, 6); };
+  auto mm = [](double x) { return format_g(x * 1e3, 6) + " mm"; };
+  if (wheels.size() < 2 || wheels.size() > kMaxWheels)
+    issues.push_back({"dynamics.sprocket", std::to_string(wheels.size()) + " sprockets",
+                      "2 to " + std::to_string(kMaxWheels) + " [[dynamics.sprocket]] tables"});
+  bool geometry = s.pitch > 0.0 && s.roller > 0.0 && s.width > 0.0 && wheels.size() >= 2 &&
+                  wheels.size() <= kMaxWheels;
+  int drivers = 0;
+  s.wheels.assign(wheels.size(), {});
+  for (std::size_t i = 0; i < wheels.size(); ++i) {
+    const SprocketInput& w = wheels[i];
+    LayoutWheel& lw = s.wheels[i];
+    const std::string base = "dynamics.sprocket[" + std::to_string(i) + "].";
+    auto field = [&](const std::string& key) {
+      const auto it = w.seen.find(key);
+      const int l = it == w.seen.end() ? w.line : it->second;
+      return base + key + (l ? " (line " + std::to_string(l) + ")" : "");
+    };
+    if (!w.teeth) {
+      if (!w.seen.count("teeth"))
+        issues.push_back({field("teeth"), "(missing)", "an integer in [8, 150]"});
+      geometry = false;
+    } else if (!is_integer(*w.teeth) || *w.teeth < 8 || *w.teeth > 150) {
+      issues.push_back({field("teeth"), shown(*w.teeth), "an integer in [8, 150]"});
+      geometry = false;
+    } else {
+      lw.teeth = static_cast<int>(*w.teeth);
+    }
+    for (const char* key : {"centre_x", "centre_y"}) {
+      const std::optional<double>& c = std::string(key) == "centre_x" ? w.centre_x : w.centre_y;
+      if (!c) {
+        if (!w.seen.count(key))
+          issues.push_back({field(key), "(missing)",
+                            std::string("the centre's ") + (key[7] == 'x' ? "x" : "y") +
+                                ", e.g. \"0 mm\" (centres on every sprocket or on none)"});
+        geometry = false;
+      } else if (!std::isfinite(*c) || std::abs(*c) > 1000.0) {
+        issues.push_back({field(key), shown(*c), "in [-1000, 1000] m"});
+        geometry = false;
+      }
+    }
+    lw.x = w.centre_x.value_or(NAN);
+    lw.y = w.centre_y.value_or(NAN);
+    lw.role = w.role;
+    if (!w.has_role) {
+      issues.push_back({field("role"), "(missing)", "driver, driven or idler"});
+      continue;
+    }
+    if (w.role == "driver") {
+      ++drivers;
+      s.driver = i;
+      if (!w.speed) {
+        if (!w.seen.count("speed"))
+          issues.push_back({field("speed"), "(missing)", "the driver's speed, e.g. \"13 rad/s\""});
+      } else if (!(*w.speed > 0.0 && std::isfinite(*w.speed))) {
+        issues.push_back({field("speed"), shown(*w.speed), "> 0 (counter-clockwise)"});
+      } else {
+        lw.speed = *w.speed;
+        s.speed = *w.speed;
+      }
+      for (const char* key : {"inertia", "load_torque"})
+        if (w.seen.count(key))
+          issues.push_back({field(key), "(given)",
+                            "no inertia or load_torque on a driver (its speed is prescribed)"});
+      continue;
+    }
+    if (w.role != "driven" && w.role != "idler") continue;  // reported where it was read
+    const bool idler = w.role == "idler";
+    if (!w.inertia) {
+      if (!w.seen.count("inertia"))
+        issues.push_back({field("inertia"), "(missing)", "the moment of inertia J > 0 [kg m^2]"});
+    } else if (!(*w.inertia > 0.0 && std::isfinite(*w.inertia))) {
+      issues.push_back({field("inertia"), shown(*w.inertia), "> 0 [kg m^2]"});
+    } else {
+      lw.inertia = *w.inertia;
+    }
+    if (idler && w.seen.count("load_torque")) {
+      issues.push_back({field("load_torque"), w.load_torque ? shown(*w.load_torque) : "(given)",
+                        "no load_torque on an idler (a free wheel; role = \"driven\" carries a "
+                        "load)"});
+    } else if (w.load_torque && !(*w.load_torque >= 0.0 && std::isfinite(*w.load_torque))) {
+      issues.push_back({field("load_torque"), shown(*w.load_torque), ">= 0 [N m]"});
+    } else if (w.load_torque) {
+      lw.load = *w.load_torque;
+    }
+    if (w.seen.count("speed"))
+      issues.push_back({field("speed"), w.speed ? shown(*w.speed) : "(given)",
+                        std::string("no speed on a") + (idler ? "n idler" : " driven wheel") +
+                            " (it follows from the chain)"});
+  }
+  if (drivers != 1)
+    issues.push_back({"dynamics.sprocket", std::to_string(drivers) + " driver(s)",
+                      "exactly one sprocket with role = \"driver\""});
+  if (links_given && !std::isnan(links) && (!is_integer(links) || links < 3 || links > 10000)) {
+    issues.push_back({links_at, shown(links), "an integer in [3, 10000]"});
+    geometry = false;
+  }
+  if (!geometry) return;
+
+  // the wheels' pitch circles, seat clearances and tip circles (ISO 606, catena::drive)
+  const std::size_t n = wheels.size();
+  std::vector<double> tip(n), clearance(n);
+  s.circles.assign(n, {});
+  std::vector<int> teeth(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const LayoutWheel& lw = s.wheels[i];
+    try {
+      const drive::Sprocket iso = drive::sprocket({.pitch = s.pitch,
+                                                   .roller_diameter = s.roller,
+                                                   .inner_width = s.width,
+                                                   .teeth = lw.teeth});
+      s.circles[i] = {lw.x, lw.y, 0.5 * iso.pitch_diameter};
+      tip[i] = 0.5 * iso.tip_diameter_max;
+      clearance[i] = iso.min_gap.seating_radius - 0.5 * s.roller;
+      teeth[i] = lw.teeth;
+    } catch (const InputError& e) {
+      for (const Issue& issue : e.issues())
+        issues.push_back(
+            {"dynamics.sprocket[" + std::to_string(i) + "].teeth (" + issue.field + ")",
+             issue.value, issue.expected});
+      return;
+    }
+  }
+  auto centre_field = [&](std::size_t i) {
+    const auto it = wheels[i].seen.find("centre_x");
+    return "dynamics.sprocket[" + std::to_string(i) + "].centre_x" +
+           (it == wheels[i].seen.end() ? "" : " (line " + std::to_string(it->second) + ")");
+  };
+  auto centre_value = [&](std::size_t i) {
+    return "(" + mm(s.circles[i].x) + ", " + mm(s.circles[i].y) + ")";
+  };
+  bool apart = true;
+  for (std::size_t j = 1; j < n; ++j) {
+    for (std::size_t i = 0; i < j; ++i) {
+      const double d = std::hypot(s.circles[j].x - s.circles[i].x, s.circles[j].y - s.circles[i].y);
+      if (d >= tip[i] + tip[j]) continue;
+      apart = false;
+      issues.push_back(
+          {centre_field(j), centre_value(j),
+           std::string(d == 0.0 ? "a centre other than" : "clear of") + " sprocket[" +
+               std::to_string(i) + "]: at least d_a,max/2 + d_a,max/2 = " + mm(tip[i] + tip[j]) +
+               " from its centre (the tip circles must not overlap; here " + mm(d) + ")"});
+    }
+  }
+  if (!apart) return;
+  s.path = belt_path(s.circles, 0);
+  for (const std::size_t i : s.path.unwrapped)
+    issues.push_back({centre_field(i), centre_value(i),
+                      "on the convex hull of the pitch circles, wrapped once: the chain runs "
+                      "round the wheels' hull (this wheel is inside it, only touches it or is met "
+                      "twice)"});
+  if (!s.path.unwrapped.empty()) return;
+  bool wrapped = true;
+  for (const PathPiece& q : s.path.pieces) {
+    if (!q.arc) continue;
+    const double least = kMinWrapTeeth * 2.0 * kPi / teeth[q.wheel];
+    if (q.to - q.from >= least) continue;
+    wrapped = false;
+    issues.push_back({centre_field(q.wheel), centre_value(q.wheel),
+                      "a centre where the chain wraps at least " + std::to_string(kMinWrapTeeth) +
+                          " teeth of the wheel (" + shown(least * 180.0 / kPi) + " deg; here " +
+                          shown((q.to - q.from) * 180.0 / kPi) + " deg)"});
+  }
+  if (!wrapped) return;
+
+  // the links: a count whose chord closes the loop with every wrapped roller within its seat's
+  // clearance of the seat centre (the start then presses no roller into a tooth, as on the line)
+  const double f = path_links(s.path, s.pitch);
+  if (!(f >= 3.0 && f <= 10000.0)) {
+    issues.push_back({links_given ? links_at : "dynamics.links", mm(s.path.length),
+                      "a belt path of 3 to 10000 links (here " + shown(f) +
+                          " pitches round the pitch circles; move the centres)"});
+    return;
+  }
+  auto fits = [&](int count, LoopPlacement& out) {
+    if (count < 3 || count > 10000) return false;
+    out = place_loop(s.path, s.circles, teeth, count, s.pitch);
+    if (out.s.empty()) return false;
+    for (std::size_t w = 0; w < n; ++w)
+      if (!(out.wrapped[w] > 0 && out.seat_offset[w] <= clearance[w])) return false;
+    return true;
+  };
+  std::vector<int> fitting;
+  LoopPlacement trial;
+  for (int count = static_cast<int>(std::floor(f)) - 3; count <= static_cast<int>(std::ceil(f)) + 3;
+       ++count)
+    if (fits(count, trial)) fitting.push_back(count);
+  const int nearest = static_cast<int>(std::lround(f));
+  std::string why = "a count the belt path fits: the path round the pitch circles is " +
+                    mm(s.path.length) + ", " + format_g(f, 6) + " links of the pitch; ";
+  const std::string gap = format_g(clearance[0] * 1e6, 3) + " um";  // 0.005 d1 on every wheel
+  if (!fitting.empty()) {
+    why += "links that fit (every wrapped roller within its seat's clearance ri - d1/2 = " + gap +
+           "): " + std::to_string(fitting.front()) +
+           (fitting.size() > 1 ? " to " + std::to_string(fitting.back()) : "");
+  } else {
+    why += "none fits within the seats' clearance ri - d1/2 = " + gap + ": " +
+           (f > nearest ? "shorten" : "lengthen") + " the path by about " +
+           mm(std::abs(nearest - f) * s.pitch) + " to " + std::to_string(nearest) +
+           " links (e.g. move a wheel's centre)";
+  }
+  int chosen = 0;
+  if (links_given) {
+    if (std::isnan(links)) return;  // unreadable: reported
+    chosen = static_cast<int>(links);
+    if (std::find(fitting.begin(), fitting.end(), chosen) == fitting.end() &&
+        !fits(chosen, trial)) {
+      issues.push_back({links_at, std::to_string(chosen), why});
+      return;
+    }
+  } else {
+    if (fitting.empty()) {
+      issues.push_back({"dynamics.links", "(missing)", why});
+      return;
+    }
+    chosen = *std::min_element(fitting.begin(), fitting.end(),
+                               [&](int a, int b) { return std::abs(a - f) < std::abs(b - f); });
+  }
+  fits(chosen, s.placement);
+  s.links = chosen;
+  s.laid_pitch = s.placement.spacing;
+}
 
 Setup parse(const analysis::Inputs& in) {
   const InputValue& file = in.at("dynamics");
@@ -259,15 +520,17 @@ Setup parse(const analysis::Inputs& in) {
       const std::string key = m[2];
       const auto k = row_keys.find(key);
       if (k == row_keys.end()) {
-        issues.push_back(
-            {where(v), v.text, "a key of a sprocket: teeth, role, speed, inertia, load_torque"});
+        issues.push_back({where(v), v.text,
+                          "a key of a sprocket: teeth, role, speed, inertia, load_torque, "
+                          "centre_x, centre_y"});
         continue;
       }
+      w.seen[key] = v.line;
       if (key == "role") {
         w.role = v.text;
         w.has_role = true;
-        if (!v.is_string || (v.text != "driver" && v.text != "driven"))
-          issues.push_back({where(v), "'" + v.text + "'", "driver or driven"});
+        if (!v.is_string || (v.text != "driver" && v.text != "driven" && v.text != "idler"))
+          issues.push_back({where(v), "'" + v.text + "'", "driver, driven or idler"});
         continue;
       }
       const auto x = read(v, *k->second, issues);
@@ -276,6 +539,8 @@ Setup parse(const analysis::Inputs& in) {
       if (key == "speed") w.speed = *x;
       if (key == "inertia") w.inertia = *x;
       if (key == "load_torque") w.load_torque = *x;
+      if (key == "centre_x") w.centre_x = *x;
+      if (key == "centre_y") w.centre_y = *x;
       continue;
     }
     const std::string key = v.path.substr(9);
@@ -375,7 +640,13 @@ Setup parse(const analysis::Inputs& in) {
     if (value.count(key)) return value[key];
     return line.count(key) ? NAN : fallback;  // unreadable: already reported
   };
-  const double links = required("links", "the number of links in the loop, an integer");
+  // a centre on any sprocket makes the free layout, where the links are optional (the count the
+  // belt path fits)
+  const bool layout = std::any_of(wheels.begin(), wheels.end(), [](const SprocketInput& w) {
+    return w.seen.count("centre_x") || w.seen.count("centre_y");
+  });
+  const double links = layout ? optional("links", NAN)
+                              : required("links", "the number of links in the loop, an integer");
   s.stiffness = required("axial_stiffness", "the axial stiffness k of one link, e.g. \"5e7 N/m\"");
   s.contact_stiffness =
       required("contact_stiffness", "the roller-seat penalty k_c, e.g. \"2e8 N/m\"");
@@ -418,14 +689,15 @@ Setup parse(const analysis::Inputs& in) {
                           " N (a stretch under 10 % of the pitch)"});
 
   // the sprockets: exactly two, one driver and one driven, equal and even teeth
-  if (wheels.size() != 2) {
+  if (!layout && wheels.size() != 2) {
     issues.push_back({"dynamics.sprocket", std::to_string(wheels.size()) + " sprockets",
-                      "two [[dynamics.sprocket]] tables, one driver and one driven (the only "
-                      "layout built: docs/models/dynamics.md)"});
+                      "two [[dynamics.sprocket]] tables, one driver and one driven, or centre_x "
+                      "and centre_y on every sprocket for any other layout "
+                      "(docs/models/dynamics.md)"});
   }
   int drivers = 0, driven = 0;
   std::vector<int> teeth(wheels.size(), 0);
-  for (std::size_t i = 0; i < wheels.size(); ++i) {
+  for (std::size_t i = 0; !layout && i < wheels.size(); ++i) {
     const SprocketInput& w = wheels[i];
     const std::string base = "dynamics.sprocket[" + std::to_string(i) + "].";
     const std::string l = w.line ? " (line " + std::to_string(w.line) + ")" : "";
@@ -473,9 +745,14 @@ Setup parse(const analysis::Inputs& in) {
       if (w.speed)
         issues.push_back({base + "speed" + l, shown(*w.speed),
                           "no speed on a driven wheel (it follows from the chain)"});
+    } else if (w.role == "idler") {
+      issues.push_back({base + "role" + l, "'idler'",
+                        "driver or driven (an idler needs centre_x and centre_y on every "
+                        "sprocket)"});
     }
   }
-  if (wheels.size() == 2) {
+  if (layout) parse_layout(wheels, links, at("links"), line.count("links") > 0, s, issues);
+  if (!layout && wheels.size() == 2) {
     if (drivers != 1 || driven != 1)
       issues.push_back(
           {"dynamics.sprocket",
@@ -484,10 +761,10 @@ Setup parse(const analysis::Inputs& in) {
     if (teeth[0] && teeth[1] && teeth[0] != teeth[1])
       issues.push_back({"dynamics.sprocket[1].teeth", std::to_string(teeth[1]),
                         "equal to sprocket[0].teeth = " + std::to_string(teeth[0]) +
-                            " (only equal wheels are built)"});
+                            " (unequal wheels need centre_x and centre_y on every sprocket)"});
     s.teeth = teeth[0] && teeth[0] == teeth[1] ? teeth[0] : 0;
   }
-  if (!std::isnan(links)) {
+  if (!layout && !std::isnan(links)) {
     if (!is_integer(links) || links < 1 || links > 10000) {
       issues.push_back({at("links"), shown(links), "an integer in [z + 4, 10000]"});
     } else {
@@ -642,18 +919,90 @@ double chain_torque(const Model& model, const State& s, std::size_t w) {
   return sum;
 }
 
+// "driver", "driven" or "idler": sprocket w's role.
+std::string role_of(const Setup& d, std::size_t w) {
+  if (d.layout()) return d.wheels[w].role;
+  return w == d.driver ? "driver" : "driven";
+}
+
+// The free layout's wheels at their centres, and the loop's start on the belt path: every node
+// at the driver's pitch-line speed, each wheel at that speed over its pitch radius (the driver at
+// exactly its own).
+std::vector<Sprocket> layout_sprockets(const Setup& d) {
+  std::vector<Sprocket> wheels;
+  for (const LayoutWheel& w : d.wheels) {
+    Sprocket s = iso606_sprocket(d.pitch, d.roller, d.width, w.teeth, w.x, w.y, d.contact_stiffness,
+                                 d.contact_damping);
+    if (w.role == "driver") {
+      s.driver = true;
+      s.speed = w.speed;
+    } else {
+      s.inertia = w.inertia;
+      s.load_torque = w.load;
+    }
+    wheels.push_back(s);
+  }
+  return wheels;
+}
+
+State layout_state(const Setup& d) {
+  const double v = d.speed * d.circles[d.driver].radius;
+  State s = loop_state(d.path, d.circles, d.placement, v);
+  s.speed[d.driver] = d.speed;
+  return s;
+}
+
+// The free layout's straight spans in the belt path's order: span k leaves wheel `from` and
+// arrives on wheel `to`; the one arriving on the driver is tight, the one leaving it slack.
+struct LayoutSpan {
+  std::size_t index = 0, from = 0, to = 0;
+  std::string name, side;
+};
+std::vector<LayoutSpan> layout_spans(const Setup& d) {
+  std::vector<LayoutSpan> spans;
+  for (const PathPiece& q : d.path.pieces) {
+    if (q.arc) continue;
+    LayoutSpan sp;
+    sp.index = spans.size();
+    sp.from = q.wheel;
+    sp.to = q.next;
+    sp.name = "sprocket " + std::to_string(q.wheel) + " -> sprocket " + std::to_string(q.next);
+    sp.side = q.next == d.driver ? "tight" : q.wheel == d.driver ? "slack" : "intermediate";
+    spans.push_back(sp);
+  }
+  return spans;
+}
+
+// The link whose middle is nearest the middle of each straight span of the belt path.
+void nearest_span_links(const Setup& d, const State& s, std::vector<std::size_t>& link) {
+  const std::size_t n = s.nodes();
+  std::size_t k = 0;
+  for (const PathPiece& q : d.path.pieces) {
+    if (q.arc) continue;
+    const double mx = 0.5 * (q.x0 + q.x1), my = 0.5 * (q.y0 + q.y1);
+    double gap = INFINITY;
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::size_t e = (j + 1) % n;
+      const double g = std::hypot(0.5 * (s.x[j] + s.x[e]) - mx, 0.5 * (s.y[j] + s.y[e]) - my);
+      if (g < gap) gap = g, link[k] = j;
+    }
+    ++k;
+  }
+}
+
 Result run(const analysis::Inputs& in) {
   Result out;
   out.setup = parse(in);
   const Setup& d = out.setup;
   const int z = d.teeth, m = (d.links - z) / 2;
   const auto n = static_cast<std::size_t>(d.links);
-  const double rest = d.pitch - d.pretension / d.stiffness;
+  const double rest = (d.layout() ? d.laid_pitch : d.pitch) - d.pretension / d.stiffness;
   Model model =
       uniform_chain(n, true, rest, d.mass_per_metre * d.pitch, d.stiffness, d.damping, false);
   const double centre = m * d.pitch;
   std::vector<Sprocket> wheels;
-  for (std::size_t w = 0; w < 2; ++w) {
+  if (d.layout()) wheels = layout_sprockets(d);
+  for (std::size_t w = 0; !d.layout() && w < 2; ++w) {
     Sprocket s = iso606_sprocket(d.pitch, d.roller, d.width, z, w == 0 ? 0.0 : centre, 0.0,
                                  d.contact_stiffness, d.contact_damping);
     s.friction = d.seat_friction;
@@ -669,7 +1018,9 @@ Result run(const analysis::Inputs& in) {
   model.sprockets = wheels;
   model.guides = d.guides;
   model.gravity_y = -d.gravity;
-  State s = two_sprocket_loop(z, m, d.pitch, wheels[0].pitch_radius, d.speed);
+  State s = d.layout() ? layout_state(d)
+                       : two_sprocket_loop(z, m, d.pitch, wheels[0].pitch_radius, d.speed);
+  const std::size_t nw = wheels.size();
   // A roller that starts inside a rail is moved out along the rail's normal to touch it (the
   // spans start straight at the wheels' pitch-line height; a guide may sit a little higher).
   for (const Guide& g : model.guides) {
@@ -684,13 +1035,14 @@ Result run(const analysis::Inputs& in) {
 
   Integrator integ(model, {.step = d.step, .theta = d.theta});
   std::vector<double> tension(model.links());
-  out.sprocket.resize(2);
-  out.span.resize(2);
-  std::vector<double> applied(2, 0.0);  // Σ of the steps' applied torques since the last sample
-  int since = 0;                        // steps since the last sample
+  out.sprocket.resize(nw);
+  out.span.resize(d.layout() ? nw : 2);  // the layout: one per straight span of the belt path
+  std::vector<std::size_t> span_link(out.span.size(), 0);
+  std::vector<double> applied(nw, 0.0);  // Σ of the steps' applied torques since the last sample
+  int since = 0;                         // steps since the last sample
   auto sample = [&] {
     out.time.push_back(s.time);
-    for (std::size_t w = 0; w < 2; ++w) {
+    for (std::size_t w = 0; w < nw; ++w) {
       out.sprocket[w].angle.push_back(s.angle[w]);
       out.sprocket[w].speed.push_back(s.speed[w]);
       // the mean of the torque the steps since the last sample applied (at each step's θ point):
@@ -700,6 +1052,13 @@ Result run(const analysis::Inputs& in) {
       applied[w] = 0.0;
     }
     link_tensions(model, s, tension);
+    if (d.layout()) {
+      nearest_span_links(d, s, span_link);
+      for (std::size_t k = 0; k < span_link.size(); ++k)
+        out.span[k].push_back(tension[span_link[k]]);
+      since = 0;
+      return;
+    }
     // the links whose middles are nearest the middles of the upper and lower spans
     std::size_t top = 0, bottom = 0;
     double top_gap = INFINITY, bottom_gap = INFINITY;
@@ -717,12 +1076,13 @@ Result run(const analysis::Inputs& in) {
   const int steps = static_cast<int>(std::lround(d.duration / d.step));
   const int every = std::max(1, static_cast<int>(std::lround(d.interval / d.step)));
   // the report's animation: frames every `frame_every` steps (docs/models/dynamics.md, Report)
-  for (std::size_t w = 0; w < 2; ++w)
-    out.outlines.push_back(
-        {"sprocket " + std::to_string(w) + (w == d.driver ? " (driver)" : " (driven)"),
-         wheels[w].centre_x, wheels[w].centre_y,
-         sprocket_outline(d.pitch, d.roller, d.width, wheels[w].teeth)});
-  std::size_t drawn = out.outlines[0].outline.size() + out.outlines[1].outline.size() + 2;
+  std::size_t drawn = 0;
+  for (std::size_t w = 0; w < nw; ++w) {
+    out.outlines.push_back({"sprocket " + std::to_string(w) + " (" + role_of(d, w) + ")",
+                            wheels[w].centre_x, wheels[w].centre_y,
+                            sprocket_outline(d.pitch, d.roller, d.width, wheels[w].teeth)});
+    drawn += out.outlines.back().outline.size() + 1;
+  }
   for (const Guide& g : d.guides) {
     out.guides.push_back(guide_polyline(g));
     drawn += out.guides.back().size();
@@ -739,8 +1099,9 @@ Result run(const analysis::Inputs& in) {
   sample();
   const auto started = std::chrono::steady_clock::now();
   ProgressLoop loop(static_cast<std::size_t>(steps), "steps");
+  std::vector<double> angle0(nw);
   for (int k = 0; k < steps; ++k) {
-    const std::array<double, 2> angle0{s.angle[0], s.angle[1]};
+    std::copy(s.angle.begin(), s.angle.end(), angle0.begin());
     const StepReport rep = integ.step(model, s);
     out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
     if (!rep.converged) {
@@ -754,9 +1115,11 @@ Result run(const analysis::Inputs& in) {
     }
     ++out.steps;
     const std::vector<double>& torque = integ.applied_torque();
-    work += -torque[d.driver] * (s.angle[d.driver] - angle0[d.driver]) -
-            d.load * (s.angle[d.driven] - angle0[d.driven]);
-    for (std::size_t w = 0; w < 2; ++w) applied[w] += torque[w];
+    double dw = -torque[d.driver] * (s.angle[d.driver] - angle0[d.driver]);
+    for (std::size_t w = 0; w < nw; ++w)
+      if (w != d.driver) dw -= wheels[w].load_torque * (s.angle[w] - angle0[w]);
+    work += dw;
+    for (std::size_t w = 0; w < nw; ++w) applied[w] += torque[w];
     ++since;
     if ((k + 1) % every == 0) sample();
     if ((k + 1) % frame_every == 0) snapshot();
@@ -802,12 +1165,29 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (!d.chain.empty()) j["chain"] = d.chain;
   j["pitch"] = d.pitch;
   j["links"] = d.links;
-  j["teeth"] = d.teeth;
-  j["centre_distance"] = (d.links - d.teeth) / 2 * d.pitch;
+  if (d.layout()) {
+    // the free layout: the belt path's length and the links' chord as laid (no single z or
+    // centre distance)
+    j["path_length"] = d.path.length;
+    j["laid_pitch"] = d.laid_pitch;
+  } else {
+    j["teeth"] = d.teeth;
+    j["centre_distance"] = (d.links - d.teeth) / 2 * d.pitch;
+  }
   j["theta"] = d.theta;
   j["time"] = r.time;
   Value wheels = Value::array();
-  for (std::size_t w = 0; w < 2; ++w) {
+  for (std::size_t w = 0; w < r.sprocket.size(); ++w) {
+    if (d.layout()) {
+      wheels.push_back(Value::object({{"role", d.wheels[w].role},
+                                      {"teeth", d.wheels[w].teeth},
+                                      {"centre_x", d.wheels[w].x},
+                                      {"centre_y", d.wheels[w].y},
+                                      {"angle", r.sprocket[w].angle},
+                                      {"speed", r.sprocket[w].speed},
+                                      {"torque", r.sprocket[w].torque}}));
+      continue;
+    }
     wheels.push_back(Value::object({{"role", w == d.driver ? "driver" : "driven"},
                                     {"angle", r.sprocket[w].angle},
                                     {"speed", r.sprocket[w].speed},
@@ -817,10 +1197,19 @@ Record describe(const Result& r, const analysis::Inputs&) {
   // the driver turns counter-clockwise: the driver at x = 0 pulls the upper span
   const bool upper_tight = d.driver == 0;
   Value spans = Value::array();
-  spans.push_back(Value::object(
-      {{"name", "upper"}, {"side", upper_tight ? "tight" : "slack"}, {"tension", r.span[0]}}));
-  spans.push_back(Value::object(
-      {{"name", "lower"}, {"side", upper_tight ? "slack" : "tight"}, {"tension", r.span[1]}}));
+  if (d.layout()) {
+    for (const LayoutSpan& sp : layout_spans(d))
+      spans.push_back(Value::object({{"name", sp.name},
+                                     {"from", static_cast<int>(sp.from)},
+                                     {"to", static_cast<int>(sp.to)},
+                                     {"side", sp.side},
+                                     {"tension", r.span[sp.index]}}));
+  } else {
+    spans.push_back(Value::object(
+        {{"name", "upper"}, {"side", upper_tight ? "tight" : "slack"}, {"tension", r.span[0]}}));
+    spans.push_back(Value::object(
+        {{"name", "lower"}, {"side", upper_tight ? "slack" : "tight"}, {"tension", r.span[1]}}));
+  }
   j["span"] = spans;
   j["summary"] = Value::object({{"steps", r.steps},
                                 {"step", d.step},
@@ -864,14 +1253,33 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                       {"value", "SI"},
                                       {"limit", "SI"}});
   if (d.gravity > 0.0) j["units"]["gravity"] = "m/s^2";
+  if (d.layout())
+    for (const char* key : {"path_length", "laid_pitch", "centre_x", "centre_y"})
+      j["units"][key] = "m";
   if (!d.guides.empty()) j["units"]["friction_work"] = "J";
   if (d.seat_friction > 0.0) j["units"]["seat_friction_work"] = "J";
   if (d.work_balance) j["units"]["work_balance"] = "J";
   rec.data = std::move(j);
 
   std::ostringstream csv;
-  csv << "time,angle_0,speed_0,torque_0,angle_1,speed_1,torque_1,tension_upper,tension_lower\n";
-  for (std::size_t k = 0; k < r.time.size(); ++k) {
+  if (d.layout()) {
+    csv << "time";
+    for (std::size_t w = 0; w < r.sprocket.size(); ++w)
+      csv << ",angle_" << w << ",speed_" << w << ",torque_" << w;
+    for (const LayoutSpan& sp : layout_spans(d)) csv << ",tension_" << sp.from << "_" << sp.to;
+    csv << "\n";
+    for (std::size_t k = 0; k < r.time.size(); ++k) {
+      csv << format_g(r.time[k], 12);
+      for (const Series& w : r.sprocket)
+        csv << "," << format_g(w.angle[k], 12) << "," << format_g(w.speed[k], 12) << ","
+            << format_g(w.torque[k], 12);
+      for (const std::vector<double>& t : r.span) csv << "," << format_g(t[k], 12);
+      csv << "\n";
+    }
+  } else {
+    csv << "time,angle_0,speed_0,torque_0,angle_1,speed_1,torque_1,tension_upper,tension_lower\n";
+  }
+  for (std::size_t k = 0; !d.layout() && k < r.time.size(); ++k) {
     csv << format_g(r.time[k], 12);
     for (std::size_t w = 0; w < 2; ++w)
       csv << "," << format_g(r.sprocket[w].angle[k], 12) << ","
@@ -888,22 +1296,39 @@ Record describe(const Result& r, const analysis::Inputs&) {
     return x.size() > from ? sum / static_cast<double>(x.size() - from) : NAN;
   };
   std::ostringstream t;
-  t << "Catena dynamics: chain loop over two sprockets in time (issue 21)\n\n"
-    << "  " << (d.chain.empty() ? "chain" : d.chain) << ", " << d.links << " links, z = " << d.teeth
-    << " / " << d.teeth << ", centre distance "
-    << format_g((d.links - d.teeth) / 2 * d.pitch * 1e3, 5) << " mm, theta " << format_g(d.theta, 3)
-    << "\n  " << r.steps << " steps of " << format_g(d.step * 1e3, 4) << " ms ("
+  if (d.layout()) {
+    t << "Catena dynamics: chain loop over " << d.wheels.size()
+      << " sprockets in time (issue 21)\n\n"
+      << "  " << (d.chain.empty() ? "chain" : d.chain) << ", " << d.links << " links, belt path "
+      << format_g(d.path.length * 1e3, 6) << " mm (links laid at "
+      << format_g(d.laid_pitch * 1e3, 7) << " mm), theta " << format_g(d.theta, 3);
+  } else {
+    t << "Catena dynamics: chain loop over two sprockets in time (issue 21)\n\n"
+      << "  " << (d.chain.empty() ? "chain" : d.chain) << ", " << d.links
+      << " links, z = " << d.teeth << " / " << d.teeth << ", centre distance "
+      << format_g((d.links - d.teeth) / 2 * d.pitch * 1e3, 5) << " mm, theta "
+      << format_g(d.theta, 3);
+  }
+  t << "\n  " << r.steps << " steps of " << format_g(d.step * 1e3, 4) << " ms ("
     << format_g(simulated, 5) << " s) in " << fixed(r.wall_time, 3)
     << " s wall time, real-time factor " << format_g(rtf, 3) << "\n\n"
     << "  means over the second half of the run:\n";
-  for (std::size_t w = 0; w < 2; ++w)
-    t << "    sprocket " << w << " (" << (w == d.driver ? "driver" : "driven") << ")  speed "
-      << format_g(late_mean(r.sprocket[w].speed), 6) << " rad/s, chain torque "
+  for (std::size_t w = 0; w < r.sprocket.size(); ++w) {
+    t << "    sprocket " << w << " (" << role_of(d, w);
+    if (d.layout()) t << ", z = " << d.wheels[w].teeth;
+    t << ")  speed " << format_g(late_mean(r.sprocket[w].speed), 6) << " rad/s, chain torque "
       << format_g(late_mean(r.sprocket[w].torque), 5) << " N m\n";
-  t << "    upper span tension " << format_g(late_mean(r.span[0]), 5) << " N ("
-    << (upper_tight ? "tight" : "slack") << "), lower " << format_g(late_mean(r.span[1]), 5)
-    << " N\n"
-    << "  energy drift " << format_g(r.energy_drift, 4) << " J, deepest roller penetration "
+  }
+  if (d.layout()) {
+    for (const LayoutSpan& sp : layout_spans(d))
+      t << "    span " << sp.from << " -> " << sp.to << " (" << sp.side << ") tension "
+        << format_g(late_mean(r.span[sp.index]), 5) << " N\n";
+  } else {
+    t << "    upper span tension " << format_g(late_mean(r.span[0]), 5) << " N ("
+      << (upper_tight ? "tight" : "slack") << "), lower " << format_g(late_mean(r.span[1]), 5)
+      << " N\n";
+  }
+  t << "  energy drift " << format_g(r.energy_drift, 4) << " J, deepest roller penetration "
     << format_g(r.max_penetration * 1e6, 4) << " um\n";
   if (d.gravity > 0.0 || !d.guides.empty())
     t << "  gravity " << format_g(d.gravity, 6) << " m/s^2, " << d.guides.size()
@@ -920,15 +1345,23 @@ Record describe(const Result& r, const analysis::Inputs&) {
     t << "  " << to_string(diag.severity) << ": " << diag.message << "\n";
   rec.table = t.str();
 
-  ReportInput report{.time = r.time, .teeth = d.teeth, .driver_speed = d.speed};
-  for (std::size_t w = 0; w < 2; ++w) {
-    const std::string name =
-        "sprocket " + std::to_string(w) + (w == d.driver ? " (driver)" : " (driven)");
+  ReportInput report{.time = r.time,
+                     .teeth = d.layout() ? d.wheels[d.driver].teeth : d.teeth,
+                     .driver_speed = d.speed};
+  for (std::size_t w = 0; w < r.sprocket.size(); ++w) {
+    const std::string name = "sprocket " + std::to_string(w) + " (" + role_of(d, w) + ")";
     report.speed.push_back({name, r.sprocket[w].speed});
     report.torque.push_back({name, r.sprocket[w].torque});
   }
-  report.span.push_back({upper_tight ? "upper span (tight)" : "upper span (slack)", r.span[0]});
-  report.span.push_back({upper_tight ? "lower span (slack)" : "lower span (tight)", r.span[1]});
+  if (d.layout()) {
+    for (const LayoutSpan& sp : layout_spans(d))
+      report.span.push_back({"span " + std::to_string(sp.from) + " -> " + std::to_string(sp.to) +
+                                 " (" + sp.side + ")",
+                             r.span[sp.index]});
+  } else {
+    report.span.push_back({upper_tight ? "upper span (tight)" : "upper span (slack)", r.span[0]});
+    report.span.push_back({upper_tight ? "lower span (slack)" : "lower span (tight)", r.span[1]});
+  }
   report.wheels = r.outlines;
   report.guides = r.guides;
   report.frames = r.frames;

@@ -1,0 +1,82 @@
+// The start of a chain loop over any number of sprockets (docs/models/dynamics.md, "Command"): the
+// belt path round the wheels' pitch circles (the convex hull of the circles: arcs on the wheels,
+// outer common tangents between them, counter-clockwise) and N nodes placed along it at one
+// spacing so that the loop closes, each wheel turned so that its seats sit under its wrapped
+// rollers.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "catena/dynamics/chain.hpp"
+
+namespace catena::dynamics {
+
+/// A pitch circle: centre and radius [m].
+struct Circle {
+  double x = 0.0, y = 0.0, radius = 0.0;
+};
+
+/// One piece of the belt path: an arc on wheel `wheel` from the outward normal angle `from` to
+/// `to` (counter-clockwise, to > from), or a straight span from (x0, y0) to (x1, y1).
+struct PathPiece {
+  bool arc = false;
+  std::size_t wheel = 0;        ///< arc: the wheel; span: the wheel it leaves
+  std::size_t next = 0;         ///< span: the wheel it arrives on
+  double from = 0.0, to = 0.0;  ///< arc: [rad] normal angles
+  double cx = 0.0, cy = 0.0;    ///< arc: [m] the wheel's centre
+  double radius = 0.0;          ///< arc: [m] its pitch radius
+  double x0 = 0.0, y0 = 0.0;    ///< [m] start point
+  double x1 = 0.0, y1 = 0.0;    ///< [m] end point
+  double length = 0.0;          ///< [m]
+  double start = 0.0;           ///< [m] arc length along the path at its start
+};
+
+/// The belt path: pieces in order counter-clockwise, starting with the arc on wheel `first` (the
+/// point where the chain arrives on it), alternating arc, span, arc, span...
+struct BeltPath {
+  std::vector<PathPiece> pieces;
+  std::vector<std::size_t> order;  ///< the wheels in the order the chain meets them
+  double length = 0.0;             ///< [m] the path's length
+  /// wheels the hull does not wrap exactly once (inside the hull, touching it at a point, or met
+  /// twice): empty when the path is usable
+  std::vector<std::size_t> unwrapped;
+};
+
+/// The belt path round the circles (at least two; no circle may contain another), starting at the
+/// point where it arrives on circle `first`.
+BeltPath belt_path(const std::vector<Circle>& circles, std::size_t first);
+
+/// The point at arc length `s` along the path (taken modulo its length) and the unit tangent.
+struct PathPoint {
+  double x = 0.0, y = 0.0, tx = 0.0, ty = 0.0;
+  std::size_t piece = 0;
+};
+PathPoint path_point(const BeltPath& path, double s);
+
+/// The path's length in links of chord `spacing`: how many nodes at that chord fit round it (the
+/// chord walk's step count where it reaches the start again, with its fraction).
+double path_links(const BeltPath& path, double spacing);
+
+/// N nodes on the path, node 0 at its start, each the next point forward at chord `spacing` from
+/// the one before, with the spacing solved so that node N − 1 is one spacing from node 0.
+struct LoopPlacement {
+  std::vector<double> s;  ///< [m] each node's arc length along the path
+  double spacing = 0.0;   ///< [m] the chord that closes the loop
+  /// per wheel: its angle ψ (seat 0's angle) set so that the seats straddle the wrapped rollers
+  /// evenly, the wrapped rollers' count, and the largest distance of one from its seat centre
+  std::vector<double> angle;
+  std::vector<int> wrapped;
+  std::vector<double> seat_offset;  ///< [m]
+};
+/// `teeth` per wheel (for the seats' spacing 2π/z). Returns an empty placement (no nodes) if the
+/// spacing cannot be solved.
+LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circles,
+                         const std::vector<int>& teeth, int nodes, double pitch);
+
+/// The loop's start state from a placement: nodes at the placement, moving along the path at
+/// `chain_speed`; every wheel at its placement angle, turning at chain_speed / its radius.
+State loop_state(const BeltPath& path, const std::vector<Circle>& circles,
+                 const LoopPlacement& placement, double chain_speed);
+
+}  // namespace catena::dynamics

@@ -1,0 +1,283 @@
+// The belt path round a set of pitch circles and a closed loop of nodes placed on it
+// (include/catena/dynamics/layout.hpp; docs/models/dynamics.md, "Command").
+#include "catena/dynamics/layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace catena::dynamics {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// x reduced to [0, 2π), with values within `eps` below 2π taken as 0 (a tangent that coincides
+// with the current one up to rounding).
+double turn(double x, double eps = 1e-12) {
+  double r = std::fmod(x, kTwoPi);
+  if (r < 0.0) r += kTwoPi;
+  if (r > kTwoPi - eps) r -= kTwoPi;
+  return std::max(r, 0.0);
+}
+
+// The outward normal angle of the outer common tangent that leaves circle a and arrives on circle
+// b with the loop running counter-clockwise (the hull on the left of the travel): the normal n
+// with a·n + Ra = b·n + Rb, on the right of the direction from a to b.
+double tangent_normal(const Circle& a, const Circle& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double d = std::hypot(dx, dy);
+  const double c = std::clamp((a.radius - b.radius) / d, -1.0, 1.0);
+  return std::atan2(dy, dx) - std::acos(c);
+}
+
+struct Edge {
+  std::size_t from = 0, to = 0;
+  double normal = 0.0;
+};
+
+}  // namespace
+
+BeltPath belt_path(const std::vector<Circle>& circles, std::size_t first) {
+  BeltPath path;
+  const std::size_t n = circles.size();
+  if (n < 2 || first >= n) return path;
+  // Gift wrapping on circles: start at the circle whose pitch circle reaches lowest (the support
+  // in the direction −y), then repeatedly take the outer tangent that turns the normal least
+  // counter-clockwise, until the first tangent comes round again.
+  std::size_t cur = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    if (circles[i].radius - circles[i].y > circles[cur].radius - circles[cur].y + 1e-12) cur = i;
+  }
+  double normal = -kPi / 2;
+  std::vector<Edge> edges;
+  bool closed = false;
+  for (std::size_t iter = 0; iter < 2 * n + 2; ++iter) {
+    std::size_t best = n;
+    double best_turn = INFINITY, best_reach = -1.0;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == cur) continue;
+      const double t = turn(tangent_normal(circles[cur], circles[j]) - normal);
+      const double reach = std::hypot(circles[j].x - circles[cur].x, circles[j].y - circles[cur].y);
+      // on a common tangent of three circles, the far one: the middle one only touches it
+      if (t < best_turn - 1e-12 || (std::abs(t - best_turn) <= 1e-12 && reach > best_reach)) {
+        best = j;
+        best_turn = t;
+        best_reach = reach;
+      }
+    }
+    const Edge e{cur, best, normal + best_turn};
+    if (!edges.empty() && e.from == edges[0].from && e.to == edges[0].to) {
+      closed = true;
+      break;
+    }
+    edges.push_back(e);
+    cur = best;
+    normal = e.normal;
+  }
+  std::vector<int> visits(n, 0);
+  for (const Edge& e : edges) ++visits[e.from];
+  for (std::size_t i = 0; i < n; ++i)
+    if (!closed || visits[i] != 1) path.unwrapped.push_back(i);
+  if (!path.unwrapped.empty()) return path;
+  // every wheel once: put the edge that arrives on `first` last
+  const auto arrives =
+      std::find_if(edges.begin(), edges.end(), [&](const Edge& e) { return e.to == first; });
+  std::rotate(edges.begin(), arrives + 1, edges.end());
+  double along = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Edge& in = edges[(k + n - 1) % n];
+    const Edge& out = edges[k];
+    const Circle& c = circles[out.from];
+    PathPiece arc;
+    arc.arc = true;
+    arc.wheel = out.from;
+    arc.next = out.from;
+    arc.cx = c.x;
+    arc.cy = c.y;
+    arc.radius = c.radius;
+    arc.from = std::remainder(in.normal, kTwoPi);
+    const double wrap = turn(out.normal - in.normal, 1e-9);
+    if (!(wrap > 1e-9)) path.unwrapped.push_back(out.from);  // touches the path at a point
+    arc.to = arc.from + wrap;
+    arc.x0 = c.x + c.radius * std::cos(arc.from);
+    arc.y0 = c.y + c.radius * std::sin(arc.from);
+    arc.x1 = c.x + c.radius * std::cos(arc.to);
+    arc.y1 = c.y + c.radius * std::sin(arc.to);
+    arc.length = c.radius * wrap;
+    arc.start = along;
+    along += arc.length;
+    path.pieces.push_back(arc);
+    path.order.push_back(out.from);
+    const Circle& d = circles[out.to];
+    PathPiece span;
+    span.wheel = out.from;
+    span.next = out.to;
+    span.x0 = arc.x1;
+    span.y0 = arc.y1;
+    span.x1 = d.x + d.radius * std::cos(out.normal);
+    span.y1 = d.y + d.radius * std::sin(out.normal);
+    span.length = std::hypot(span.x1 - span.x0, span.y1 - span.y0);
+    span.start = along;
+    along += span.length;
+    path.pieces.push_back(span);
+  }
+  path.length = along;
+  if (!path.unwrapped.empty()) path.pieces.clear();
+  return path;
+}
+
+PathPoint path_point(const BeltPath& path, double s) {
+  PathPoint p;
+  double u = std::fmod(s, path.length);
+  if (u < 0.0) u += path.length;
+  const auto it = std::upper_bound(path.pieces.begin(), path.pieces.end(), u,
+                                   [](double x, const PathPiece& q) { return x < q.start; });
+  const std::size_t k =
+      it == path.pieces.begin() ? 0 : static_cast<std::size_t>(it - path.pieces.begin()) - 1;
+  const PathPiece& q = path.pieces[k];
+  p.piece = k;
+  const double along = std::clamp(u - q.start, 0.0, q.length);
+  if (q.arc) {
+    const double t = q.from + along / q.radius;
+    const double c = std::cos(t), sn = std::sin(t);
+    p.x = q.cx + q.radius * c;
+    p.y = q.cy + q.radius * sn;
+    p.tx = -sn;
+    p.ty = c;
+  } else {
+    const double f = q.length > 0.0 ? along / q.length : 0.0;
+    p.x = q.x0 + f * (q.x1 - q.x0);
+    p.y = q.y0 + f * (q.y1 - q.y0);
+    p.tx = q.length > 0.0 ? (q.x1 - q.x0) / q.length : 1.0;
+    p.ty = q.length > 0.0 ? (q.y1 - q.y0) / q.length : 0.0;
+  }
+  return p;
+}
+
+namespace {
+
+// The next node forward of the one at arc length s: the first point of the path at chord h from
+// it. Exact within one piece (an arc: the chord's angle 2 asin(h/2R); a span: h itself); across
+// pieces by bisection on the arc length (the chord grows monotonically over the 1.6 h searched:
+// the pitch radius is at least 1.3 p at z = 8, where an arc of 1.6 h spans a chord of 1.5 h).
+double next_node(const BeltPath& path, double s, double h) {
+  const PathPoint p = path_point(path, s);
+  const PathPiece& q = path.pieces[p.piece];
+  double u = std::fmod(s, path.length);
+  if (u < 0.0) u += path.length;
+  const double along = u - q.start;
+  if (q.arc && h < 2.0 * q.radius) {
+    const double step = 2.0 * q.radius * std::asin(h / (2.0 * q.radius));
+    if (along + step <= q.length) return s + step;
+  } else if (!q.arc && along + h <= q.length) {
+    return s + h;
+  }
+  double lo = s, hi = s + 1.6 * h;
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * path.length; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    const PathPoint m = path_point(path, mid);
+    if (std::hypot(m.x - p.x, m.y - p.y) < h)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// The arc lengths of nodes 0..N (node N where the walk would put the next one after N − 1).
+std::vector<double> walk(const BeltPath& path, double h, int nodes) {
+  std::vector<double> s(static_cast<std::size_t>(nodes) + 1, 0.0);
+  for (std::size_t k = 1; k < s.size(); ++k) s[k] = next_node(path, s[k - 1], h);
+  return s;
+}
+
+}  // namespace
+
+double path_links(const BeltPath& path, double spacing) {
+  if (path.pieces.empty() || !(spacing > 0.0)) return NAN;
+  double s = 0.0;
+  const double limit = 2.0 * path.length / spacing + 10.0;
+  for (int k = 0; k < limit; ++k) {
+    const double next = next_node(path, s, spacing);
+    if (next >= path.length) return k + (path.length - s) / (next - s);
+    s = next;
+  }
+  return NAN;
+}
+
+LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circles,
+                         const std::vector<int>& teeth, int nodes, double pitch) {
+  LoopPlacement out;
+  if (path.pieces.empty() || nodes < 3 || !(pitch > 0.0)) return out;
+  const double length = path.length;
+  auto miss = [&](double h) { return walk(path, h, nodes).back() - length; };
+  // secant on the chord: the walk's end moves with it almost in proportion
+  double h0 = pitch, g0 = miss(h0);
+  double h1 = h0 * length / (g0 + length), g1 = miss(h1);
+  for (int it = 0; it < 60 && std::abs(g1) > 1e-12 * length; ++it) {
+    if (g1 == g0) break;
+    const double h2 = h1 - g1 * (h1 - h0) / (g1 - g0);
+    h0 = h1;
+    g0 = g1;
+    h1 = h2;
+    if (!(h1 > 0.5 * pitch && h1 < 2.0 * pitch)) return out;
+    g1 = miss(h1);
+  }
+  if (!(std::abs(g1) <= 1e-9 * length)) return out;
+  out.spacing = h1;
+  out.s = walk(path, h1, nodes);
+  out.s.pop_back();
+  // each wheel: the wrapped rollers' angles along its arc; the seats (2π/z apart) placed so that
+  // the largest offset either way is the same
+  const std::size_t n = circles.size();
+  out.angle.assign(n, 0.0);
+  out.wrapped.assign(n, 0);
+  out.seat_offset.assign(n, 0.0);
+  std::vector<double> first(n, NAN), lo(n, 0.0), hi(n, 0.0);
+  for (const double s : out.s) {
+    const PathPoint p = path_point(path, s);
+    const PathPiece& q = path.pieces[p.piece];
+    if (!q.arc) continue;
+    double u = std::fmod(s, length);
+    if (u < 0.0) u += length;
+    const double theta = q.from + (u - q.start) / q.radius;
+    const std::size_t w = q.wheel;
+    const double tau = kTwoPi / teeth[w];
+    if (std::isnan(first[w])) first[w] = theta;
+    const double d = theta - first[w];
+    const double off = d - std::nearbyint(d / tau) * tau;
+    lo[w] = std::min(lo[w], off);
+    hi[w] = std::max(hi[w], off);
+    ++out.wrapped[w];
+  }
+  for (std::size_t w = 0; w < n; ++w) {
+    if (std::isnan(first[w])) {
+      out.seat_offset[w] = NAN;
+      continue;
+    }
+    out.angle[w] = first[w] + 0.5 * (lo[w] + hi[w]);
+    out.seat_offset[w] = 2.0 * circles[w].radius * std::sin(0.25 * (hi[w] - lo[w]));
+  }
+  return out;
+}
+
+State loop_state(const BeltPath& path, const std::vector<Circle>& circles,
+                 const LoopPlacement& placement, double chain_speed) {
+  State st(placement.s.size(), circles.size());
+  for (std::size_t i = 0; i < placement.s.size(); ++i) {
+    const PathPoint p = path_point(path, placement.s[i]);
+    st.x[i] = p.x;
+    st.y[i] = p.y;
+    st.vx[i] = chain_speed * p.tx;
+    st.vy[i] = chain_speed * p.ty;
+  }
+  for (std::size_t w = 0; w < circles.size(); ++w) {
+    st.angle[w] = placement.angle[w];
+    st.speed[w] = chain_speed / circles[w].radius;
+  }
+  return st;
+}
+
+}  // namespace catena::dynamics
