@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "catena/core/error.hpp"
+#include "catena/dynamics/hinge_friction.hpp"
 
 namespace catena::dynamics {
 
@@ -107,6 +108,7 @@ struct Model {
   std::vector<Sprocket> sprockets;   ///< rigid wheels the rollers seat on
   std::vector<NodeLoad> loads;       ///< constant forces on single nodes; empty = none
   std::vector<Guide> guides;         ///< rails the rollers slide on
+  HingeFriction hinge;               ///< friction in every hinge; arm 0 = frictionless
 
   std::size_t nodes() const { return mass.size(); }
   /// Links: N in a closed loop, N − 1 in an open chain.
@@ -116,7 +118,7 @@ struct Model {
 
 /// Every problem with the model, fields "nodes", "pitch", "axial_stiffness", "axial_damping",
 /// "drag", "gravity", "mass", "pinned", "sprocket[i].<field>", "guide[i].<field>",
-/// "load[i].node", "load[i].force".
+/// "load[i].node", "load[i].force", "hinge.arm", "hinge.rate_band".
 std::vector<Issue> validate(const Model& model);
 
 /// N nodes of equal mass; an open chain gets its two end nodes pinned when `pin_ends`.
@@ -134,6 +136,7 @@ struct State {
   double drag_work = 0.0;      ///< [J] work of the drag −α m v so far (≤ 0)
   /// [J] work of the seats' and guides' contact dampers so far (≤ 0)
   double contact_damping_work = 0.0;
+  double hinge_work = 0.0;  ///< [J] work of the hinges' friction so far (≤ 0)
   explicit State(std::size_t nodes = 0, std::size_t sprockets = 0)
       : x(nodes), y(nodes), vx(nodes), vy(nodes), angle(sprockets), speed(sprockets) {}
   std::size_t nodes() const { return x.size(); }

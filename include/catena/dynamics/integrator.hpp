@@ -53,6 +53,7 @@ struct StepReport {
   double drag_work = 0.0;  ///< [J] the drag's work over the step, −Σ α m |x₁ − x₀|²/h (≤ 0)
   /// [J] the seats' and guides' contact dampers' work over the step (≤ 0)
   double contact_damping_work = 0.0;
+  double hinge_work = 0.0;  ///< [J] the hinges' friction work over the step, Σ M Δβ (≤ 0)
   SolveStatus solve = SolveStatus::kSolved;
 };
 
@@ -96,6 +97,7 @@ class Integrator {
   double max_penetration_ = 0.0;
   // the dissipative works of the last assembly's iterate (StepReport's fields)
   double damper_work_ = 0.0, drag_work_ = 0.0, contact_damping_work_ = 0.0;
+  double hinge_work_ = 0.0;
 };
 
 }  // namespace catena::dynamics
