@@ -7,6 +7,7 @@
 #include <random>
 
 #include "catena/dynamics/integrator.hpp"
+#include "catena/hinge/kinematics.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -159,6 +160,23 @@ TEST(HingeFriction, RollingArmIsTheRollingCoefficientTimesTheReducedRadius) {
   EXPECT_DOUBLE_EQ(rolling_hinge_arm(0.001, 0.015, 0.06276), 0.001 * 0.015 * 0.06276 / 0.04776);
   EXPECT_DOUBLE_EQ(rolling_hinge_arm(0.001, 0.015, INFINITY), 0.001 * 0.015);
   EXPECT_NEAR(rolling_hinge_arm(0.001, 0.015, 1e6), 0.001 * 0.015, 1e-12);
+  // against the hinge model's rolling geometry (hinge::pose, eqs. 1–3 of seed 000): over a turn
+  // φ each of the two contacts runs R1 Ψ1(φ) along its plate's arc, so c_r F · 2 R1 Ψ1(φ) = e F φ
+  hinge::Hinge h{.pin_diameter = 0.040, .half_thickness = 0.008, .plate_radius = 0.015, .teeth = 8};
+  for (double phi : {0.05, 0.3, 0.7}) {
+    const hinge::Pose concave = hinge::pose(h, 0.06276, phi);
+    EXPECT_NEAR(rolling_hinge_arm(0.001, 0.015, 0.06276), 0.001 * 2 * 0.015 * concave.psi1 / phi,
+                1e-12)
+        << phi;
+    h.face = hinge::Face::kFlat;
+    h.face_half_length = 0.015;
+    h.loaded_length = 0.012;
+    const hinge::Pose flat = hinge::pose(h, INFINITY, phi);
+    EXPECT_NEAR(rolling_hinge_arm(0.001, 0.015, INFINITY), 0.001 * 2 * 0.015 * flat.psi1 / phi,
+                1e-12)
+        << phi;
+    h.face = hinge::Face::kConcave;
+  }
 }
 
 TEST(HingeFriction, InvalidLawListsEveryProblem) {
