@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "catena/dynamics/integrator.hpp"
@@ -219,6 +220,38 @@ TEST(HingeFriction, WorkBalanceClosesWithHingeFriction) {
   EXPECT_LT(s.hinge_work, -0.01 * e0);  // the hinges took a few % of the energy
   EXPECT_NEAR(e1 - e0, s.hinge_work, 1e-6 * e0);
   EXPECT_GT(std::abs(e1 - e0), 1e-3 * e0);  // so the balance without the hinge work fails
+}
+
+// An open chain of 16 links pinned at both ends, released as an inverted V under gravity: it
+// falls through and swings on its hinges, and at θ = ½ without dampers its energy (gravity's
+// included) changes by the hinges' work alone. The end hinges (next to the pinned nodes) take part;
+// an open chain has no hinge at its two end nodes.
+TEST(HingeFriction, OpenPinnedChainSwingingBalancesItsHingeWork) {
+  constexpr std::size_t n = 17;
+  constexpr double p = 0.01905;
+  Model model = uniform_chain(n, false, p, 0.0238, 5e6, 0.0, true);
+  model.gravity_y = -9.81;
+  model.hinge = {.arm = 0.1 * 0.00286, .rate_band = 5.0};
+  State s(n, 0);
+  // an inverted V of links at rest length, 30° up to the middle and down again
+  const double c30 = std::cos(M_PI / 6), s30 = std::sin(M_PI / 6);
+  for (std::size_t i = 1; i < n; ++i) {
+    const bool up = i <= n / 2;
+    s.x[i] = s.x[i - 1] + p * c30;
+    s.y[i] = s.y[i - 1] + (up ? p : -p) * s30;
+  }
+  Integrator integ(model, {.step = 1e-4, .theta = 0.5});
+  const double e0 = energy(model, s).total();
+  for (int k = 0; k < 2000; ++k) ASSERT_TRUE(integ.step(model, s).converged) << k;
+  const Energy e1 = energy(model, s);
+  EXPECT_LT(s.y[n / 2], -0.01);  // it swung down
+  EXPECT_LT(s.hinge_work, 0.0);
+  EXPECT_GT(-s.hinge_work, 1e-3 * e1.kinetic);  // not negligible against the motion
+  std::printf("hinge work %.6g J, kinetic %.6g J, balance error %.3g J\n", s.hinge_work, e1.kinetic,
+              e1.total() - e0 - s.hinge_work);
+  EXPECT_NEAR(e1.total() - e0, s.hinge_work, 1e-6 * std::abs(e0 - e1.potential) + 1e-9);
+  EXPECT_EQ(s.x[0], 0.0);  // pinned ends stay
+  EXPECT_DOUBLE_EQ(s.x[n - 1], 16 * p * c30);
 }
 
 }  // namespace
