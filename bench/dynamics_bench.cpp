@@ -18,10 +18,12 @@ constexpr double kNodeMass = 0.0238;  // [kg] 1.25 kg/m × p
 constexpr double kStiffness = 5e7;    // [N/m]
 constexpr double kSpeed = 5.0;        // [m/s]
 
-void BM_DynamicsLoopStep(benchmark::State& bs) {
+// `hinge_arm` > 0: with hinge friction of that arm (docs/models/dynamics.md, "Hinges").
+void loop_step(benchmark::State& bs, double hinge_arm) {
   const auto n = static_cast<std::size_t>(bs.range(0));
   Model m = uniform_chain(n, true, kPitch, kNodeMass, kStiffness, 2.0, false);
   m.gravity_y = -9.81;
+  m.hinge.arm = hinge_arm;
   const double radius =
       1.0005 * kPitch / (2.0 * std::sin(std::numbers::pi / static_cast<double>(n)));
   State s(n);
@@ -47,7 +49,16 @@ void BM_DynamicsLoopStep(benchmark::State& bs) {
   bs.counters["real_time_factor"] =
       benchmark::Counter(1e-4 * static_cast<double>(steps), benchmark::Counter::kIsRate);
 }
+void BM_DynamicsLoopStep(benchmark::State& bs) { loop_step(bs, 0.0); }
 BENCHMARK(BM_DynamicsLoopStep)
+    ->Arg(100)
+    ->Arg(200)
+    ->Arg(400)
+    ->Arg(800)
+    ->Unit(benchmark::kMicrosecond);
+// the same loop with sliding hinges, μ = 0.1 on the 12B pin (d2 = 5.72 mm), band 5 rad/s
+void BM_DynamicsLoopStepHingeFriction(benchmark::State& bs) { loop_step(bs, 0.1 * 5.72e-3 / 2); }
+BENCHMARK(BM_DynamicsLoopStepHingeFriction)
     ->Arg(100)
     ->Arg(200)
     ->Arg(400)
@@ -59,7 +70,8 @@ BENCHMARK(BM_DynamicsLoopStep)
 // a 20 N·m load, gravity in the plane, contacts k_c = 2e8 N/m, c_c = 800 N·s/m, θ = 0.6 (the
 // setting of the drive validation), h = 1e-4 s. Started with every roller seated and moving at
 // the pitch-line speed; the benchmark steps on from there.
-void BM_DynamicsTwoSprocketDrive(benchmark::State& bs) {
+// `hinge_arm` > 0: the same with hinge friction of that arm (docs/models/dynamics.md, "Hinges").
+void two_sprocket_drive(benchmark::State& bs, double hinge_arm) {
   constexpr int kTeeth = 20, kSpan = 90;
   constexpr double kOmega = 30.0;
   const auto n = static_cast<std::size_t>(kTeeth + 2 * kSpan);
@@ -73,6 +85,7 @@ void BM_DynamicsTwoSprocketDrive(benchmark::State& bs) {
   b.inertia = 0.05;
   b.load_torque = 20.0;
   m.sprockets = {a, b};
+  m.hinge.arm = hinge_arm;
   State s = two_sprocket_loop(kTeeth, kSpan, kPitch, a.pitch_radius, kOmega);
   Integrator integ(m, {.step = 1e-4, .theta = 0.6});
   long iterations = 0, steps = 0;
@@ -95,6 +108,12 @@ void BM_DynamicsTwoSprocketDrive(benchmark::State& bs) {
   bs.counters["real_time_factor"] =
       benchmark::Counter(1e-4 * static_cast<double>(steps), benchmark::Counter::kIsRate);
 }
+void BM_DynamicsTwoSprocketDrive(benchmark::State& bs) { two_sprocket_drive(bs, 0.0); }
 BENCHMARK(BM_DynamicsTwoSprocketDrive)->Unit(benchmark::kMicrosecond)->MinTime(3.0);
+// with sliding hinges: μ = 0.1 on the 12B pin (d2 = 5.72 mm), the default rate band 5 rad/s
+void BM_DynamicsTwoSprocketDriveHingeFriction(benchmark::State& bs) {
+  two_sprocket_drive(bs, 0.1 * 5.72e-3 / 2);
+}
+BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFriction)->Unit(benchmark::kMicrosecond)->MinTime(3.0);
 
 }  // namespace

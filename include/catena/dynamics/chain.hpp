@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "catena/core/error.hpp"
+#include "catena/dynamics/hinge_friction.hpp"
 
 namespace catena::dynamics {
 
@@ -122,6 +123,7 @@ struct Model {
   /// [m] a: link j's rest length is p + a for even j and p − a for odd j (round-link chain on a
   /// pocket wheel: the joint polygon's sides t + d and t − d, a = d); 0 = every link p
   double alternation = 0.0;
+  HingeFriction hinge;  ///< friction in every hinge; arm 0 = frictionless
 
   std::size_t nodes() const { return mass.size(); }
   /// Links: N in a closed loop, N − 1 in an open chain.
@@ -135,7 +137,7 @@ struct Model {
 
 /// Every problem with the model, fields "nodes", "pitch", "axial_stiffness", "axial_damping",
 /// "drag", "gravity", "mass", "pinned", "sprocket[i].<field>", "guide[i].<field>",
-/// "load[i].node", "load[i].force".
+/// "load[i].node", "load[i].force", "hinge.arm", "hinge.rate_band".
 std::vector<Issue> validate(const Model& model);
 
 /// N nodes of equal mass; an open chain gets its two end nodes pinned when `pin_ends`.
@@ -154,6 +156,7 @@ struct State {
   /// [J] work of the seats' and guides' contact dampers so far (≤ 0)
   double contact_damping_work = 0.0;
   double seat_friction_work = 0.0;  ///< [J] work of the seats' friction so far (≤ 0)
+  double hinge_work = 0.0;          ///< [J] work of the hinges' friction so far (≤ 0)
   explicit State(std::size_t nodes = 0, std::size_t sprockets = 0)
       : x(nodes), y(nodes), vx(nodes), vy(nodes), angle(sprockets), speed(sprockets) {}
   std::size_t nodes() const { return x.size(); }

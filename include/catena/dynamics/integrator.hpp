@@ -55,6 +55,7 @@ struct StepReport {
   double contact_damping_work = 0.0;
   /// [J] the seats' friction work over the step, Σ h f_t v_t (≤ 0; roller and wheel together)
   double seat_friction_work = 0.0;
+  double hinge_work = 0.0;  ///< [J] the hinges' friction work over the step, Σ M Δβ (≤ 0)
   SolveStatus solve = SolveStatus::kSolved;
 };
 
@@ -101,6 +102,7 @@ class Integrator {
   // the dissipative works of the last assembly's iterate (StepReport's fields)
   double damper_work_ = 0.0, drag_work_ = 0.0, contact_damping_work_ = 0.0;
   double seat_friction_work_ = 0.0;
+  double hinge_work_ = 0.0;
 };
 
 }  // namespace catena::dynamics

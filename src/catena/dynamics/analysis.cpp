@@ -82,7 +82,18 @@ std::vector<Parameter> table_fields() {
              "true (9.80665 m/s^2), false, or g in [0, 100] m/s^2, downward (-y; default: none)"),
       text("work_balance",
            "true to add the run's work balance to the summary: input, friction, link and "
-           "contact dampers, numerical (default false)")};
+           "contact dampers, numerical (default false)"),
+      // hinge friction (docs/models/dynamics.md, "Hinges")
+      text("hinge", "frictionless, sliding or rolling (default frictionless)"),
+      number("hinge_friction", "sliding: pin friction coefficient mu in [0, 1]"),
+      quantity("pin_diameter", K::kLength,
+               "sliding: pin diameter d2, > 0 and < p/2 (default: the ISO 606 catalogue's)"),
+      number("rolling_resistance", "rolling: rolling-resistance coefficient c_r in [0, 0.1]"),
+      quantity("plate_radius", K::kLength, "rolling: the plate's working arc R1, > 0"),
+      quantity("face_radius", K::kLength,
+               "rolling: the roller's concave face R2 > R1 (default: a flat face)"),
+      quantity("hinge_band", K::kAngularSpeed,
+               "rate band of the regularised hinge friction, in (0, 100] rad/s (default 5 rad/s)")};
 }
 
 // [[dynamics.guide]]: a rail the rollers slide on (docs/models/dynamics.md, "Guides"), in the
@@ -216,6 +227,8 @@ struct Setup {
   LoopPlacement placement;      // the nodes on it
   double laid_pitch = NAN;      // [m] the links' chord as laid: the pitch on the line
   bool layout() const { return !wheels.empty(); }
+  std::string hinge = "frictionless";  // frictionless, sliding or rolling
+  HingeFriction hinge_law;             // arm 0 when frictionless
 };
 
 bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
@@ -473,6 +486,8 @@ Setup parse(const analysis::Inputs& in) {
   static const std::regex guide_row(R"(^dynamics\.guide\[(\d+)\]\.([^.]+)$)");
   double gravity = 0.0;  // [m/s²] downward
   bool work_balance = false;
+  std::string hinge = "frictionless";
+  bool hinge_known = true;
   for (const Entry& v : file.table) {
     if (v.path.rfind("dynamics.", 0) != 0) continue;  // the rest of a case file is not ours
     std::smatch m;
@@ -568,6 +583,16 @@ Setup parse(const analysis::Inputs& in) {
         work_balance = v.text == "true";
       else
         issues.push_back({where(v), "'" + v.text + "'", "true or false"});
+      continue;
+    }
+    if (key == "hinge") {
+      line[key] = v.line;
+      if (v.is_string && (v.text == "frictionless" || v.text == "sliding" || v.text == "rolling")) {
+        hinge = v.text;
+      } else {
+        hinge_known = false;
+        issues.push_back({where(v), "'" + v.text + "'", "frictionless, sliding or rolling"});
+      }
       continue;
     }
     if (key.rfind("guide", 0) == 0) {
@@ -778,6 +803,72 @@ Setup parse(const analysis::Inputs& in) {
   }
   s.gravity = gravity;
   s.work_balance = work_balance;
+  // hinge friction: each kind's keys, required or defaulted, the other kinds' keys refused
+  s.hinge = hinge;
+  {
+    const std::vector<std::string> sliding_keys{"hinge_friction", "pin_diameter"};
+    const std::vector<std::string> rolling_keys{"rolling_resistance", "plate_radius",
+                                                "face_radius"};
+    auto refuse = [&](const std::vector<std::string>& keys, const char* kind) {
+      for (const std::string& key : keys)
+        if (line.count(key))
+          issues.push_back(
+              {at(key), value.count(key) ? shown(value[key]) : "(given)",
+               std::string("only with hinge = \"") + kind + "\" (here hinge = \"" + hinge + "\")"});
+    };
+    if (hinge_known && hinge != "sliding") refuse(sliding_keys, "sliding");
+    if (hinge_known && hinge != "rolling") refuse(rolling_keys, "rolling");
+    if (hinge_known && hinge == "frictionless" && line.count("hinge_band"))
+      issues.push_back({at("hinge_band"),
+                        value.count("hinge_band") ? shown(value["hinge_band"]) : "(given)",
+                        "only with hinge = \"sliding\" or \"rolling\""});
+    const double band = optional("hinge_band", 5.0);
+    if (!std::isnan(band) && !(band > 0.0 && band <= 100.0))
+      issues.push_back({at("hinge_band"), shown(band), "in (0, 100] rad/s"});
+    s.hinge_law.rate_band = band;
+    double arm = 0.0;
+    std::string arm_key;
+    if (hinge == "sliding") {
+      const double mu = required("hinge_friction", "the pin friction coefficient mu in [0, 1]");
+      if (!std::isnan(mu) && !(mu >= 0.0 && mu <= 1.0))
+        issues.push_back({at("hinge_friction"), shown(mu), "in [0, 1]"});
+      double d2 = NAN;
+      if (value.count("pin_diameter")) {
+        d2 = value["pin_diameter"];
+      } else if (row_found && row_found->pin_diameter) {
+        d2 = *row_found->pin_diameter;
+      } else if (!line.count("pin_diameter") && !(has_chain && !row_found)) {
+        issues.push_back({"dynamics.pin_diameter", "(missing)",
+                          "the pin diameter d2, e.g. \"5.72 mm\" (or chain = an ISO 606 "
+                          "designation that has it)"});
+      }
+      if (!std::isnan(d2) && !(d2 > 0.0 && std::isfinite(d2) && !(d2 >= 0.5 * s.pitch)))
+        issues.push_back({at("pin_diameter"), shown(d2),
+                          "> 0 and < p/2" + (std::isnan(s.pitch) ? std::string()
+                                                                 : " = " + shown(0.5 * s.pitch))});
+      arm = mu * d2 / 2;  // μ r
+      arm_key = "hinge_friction";
+    } else if (hinge == "rolling") {
+      const double cr = required("rolling_resistance",
+                                 "the rolling-resistance coefficient c_r in [0, 0.1], e.g. 0.001");
+      if (!std::isnan(cr) && !(cr >= 0.0 && cr <= 0.1))
+        issues.push_back({at("rolling_resistance"), shown(cr), "in [0, 0.1]"});
+      const double r1 = required("plate_radius", "the plate's working arc R1, e.g. \"15 mm\"");
+      if (!std::isnan(r1) && !(r1 > 0.0 && std::isfinite(r1)))
+        issues.push_back({at("plate_radius"), shown(r1), "> 0"});
+      const double r2 = optional("face_radius", INFINITY);
+      if (value.count("face_radius") && !std::isnan(r1) && !(r2 > r1 && std::isfinite(r2)))
+        issues.push_back({at("face_radius"), shown(r2),
+                          "> plate_radius = " + shown(r1) + " (or omitted: a flat face)"});
+      arm = rolling_hinge_arm(cr, r1, r2);  // c_r R*
+      arm_key = "rolling_resistance";
+    }
+    if (std::isfinite(arm) && std::isfinite(s.pitch) && arm >= 0.5 * s.pitch)
+      issues.push_back(
+          {at(arm_key), shown(arm),
+           "a friction arm (mu r or c_r R*) below p/2 = " + shown(0.5 * s.pitch) + " m"});
+    s.hinge_law.arm = arm;
+  }
   // the guides: kind and its geometry, all present; then the core's checks (named per field)
   for (std::size_t i = 0; i < guides.size(); ++i) {
     const GuideInput& g = guides[i];
@@ -897,6 +988,7 @@ struct Result {
   double wall_time = 0.0, energy_drift = 0.0, max_penetration = 0.0;
   double friction_work = 0.0;
   double seat_friction_work = 0.0;  // the seats' friction (0 unless seat_friction > 0)
+  double hinge_work = 0.0;          // the hinges' friction (≤ 0)
   // the work balance (summary.work_balance): E_end − E_0 = input + friction + link dampers +
   // contact dampers + numerical (the command's model has no drag)
   double input_work = 0.0, damper_work = 0.0, contact_damping_work = 0.0;
@@ -1018,6 +1110,7 @@ Result run(const analysis::Inputs& in) {
   model.sprockets = wheels;
   model.guides = d.guides;
   model.gravity_y = -d.gravity;
+  model.hinge = d.hinge_law;
   State s = d.layout() ? layout_state(d)
                        : two_sprocket_loop(z, m, d.pitch, wheels[0].pitch_radius, d.speed);
   const std::size_t nw = wheels.size();
@@ -1129,7 +1222,10 @@ Result run(const analysis::Inputs& in) {
   // the guides' friction work is 0 without guides: the drift is then the same number as before
   out.friction_work = s.friction_work;
   out.seat_friction_work = s.seat_friction_work;
-  out.energy_drift = energy(model, s).total() - e0 - work - s.friction_work - s.seat_friction_work;
+  // likewise the hinges' friction work (0 without hinge friction)
+  out.hinge_work = s.hinge_work;
+  out.energy_drift =
+      energy(model, s).total() - e0 - work - s.friction_work - s.seat_friction_work - s.hinge_work;
   out.input_work = work;
   out.damper_work = s.damper_work;
   out.contact_damping_work = s.contact_damping_work;
@@ -1229,6 +1325,14 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["summary"]["seat_friction_work"] = r.seat_friction_work;
   }
   // opt-in (work_balance = true): without it the output is what it was
+  // hinge friction adds fields only when it is on: a frictionless run prints what it did before
+  const bool hinge_on = d.hinge != "frictionless";
+  if (hinge_on) {
+    j["hinge"] = d.hinge;
+    j["hinge_arm"] = d.hinge_law.arm;
+    j["hinge_band"] = d.hinge_law.rate_band;
+    j["summary"]["hinge_friction_work"] = r.hinge_work;
+  }
   if (d.work_balance) {
     j["summary"]["work_balance"] = Value::object({{"input", r.input_work},
                                                   {"friction", r.friction_work},
@@ -1236,6 +1340,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                                   {"contact_dampers", r.contact_damping_work},
                                                   {"numerical", r.numerical_work}});
     if (d.seat_friction > 0.0) j["summary"]["work_balance"]["seat_friction"] = r.seat_friction_work;
+    if (hinge_on) j["summary"]["work_balance"]["hinge_friction"] = r.hinge_work;
   }
   j["diagnostics"] = analysis::diagnostics_value(r.diagnostics);
   j["units"] = analysis::units_value({{"pitch", "m"},
@@ -1259,6 +1364,11 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (!d.guides.empty()) j["units"]["friction_work"] = "J";
   if (d.seat_friction > 0.0) j["units"]["seat_friction_work"] = "J";
   if (d.work_balance) j["units"]["work_balance"] = "J";
+  if (hinge_on) {
+    j["units"]["hinge_arm"] = "m";
+    j["units"]["hinge_band"] = "rad/s";
+    j["units"]["hinge_friction_work"] = "J";
+  }
   rec.data = std::move(j);
 
   std::ostringstream csv;
@@ -1341,6 +1451,10 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (d.seat_friction > 0.0)
     t << "  seat friction " << format_g(d.seat_friction, 4) << ", its work "
       << format_g(r.seat_friction_work, 5) << " J\n";
+  if (hinge_on)
+    t << "  hinges " << d.hinge << ": friction arm " << format_g(d.hinge_law.arm * 1e3, 4)
+      << " mm, rate band " << format_g(d.hinge_law.rate_band, 3) << " rad/s, friction work "
+      << format_g(r.hinge_work, 5) << " J\n";
   for (const Diagnostic& diag : r.diagnostics)
     t << "  " << to_string(diag.severity) << ": " << diag.message << "\n";
   rec.table = t.str();

@@ -167,6 +167,8 @@ std::vector<Issue> validate(const Model& model) {
           {f + "friction_band", check::format_si(g.friction_band, "m/s"), "a speed in (0, 1] m/s"});
     }
   }
+  std::vector<Issue> hinge = validate(model.hinge, model.pitch);
+  out.insert(out.end(), hinge.begin(), hinge.end());
   return out;
 }
 

@@ -1,0 +1,58 @@
+// Friction in the chain's hinges (docs/models/dynamics.md, "Hinges").
+//
+// A hinge at node i is the articulation between link i − 1 (node i − 1 → node i) and link i
+// (node i → node i + 1). Its friction is a torque M = −e F s(ω) between the two links: e the
+// equivalent lever arm (μ r for a sliding pin of radius r with friction coefficient μ; c_r R* for
+// the rolling hinge of seed 000, see rolling_hinge_arm), F the pin load (the mean of the two
+// links' elastic tensions, never below 0), ω the links' relative rotation rate and
+// s(ω) = ω/√(ω² + ω_ε²) the sign regularised over a rate band ω_ε. As forces it is a couple on
+// each link: M ∂β/∂x on the three nodes, β the relative angle (link i's angle less link i − 1's).
+#pragma once
+
+#include <vector>
+
+#include "catena/core/error.hpp"
+
+namespace catena::dynamics {
+
+/// The hinges' friction (one law for every hinge of the chain). arm = 0: frictionless.
+struct HingeFriction {
+  double arm = 0.0;  ///< [m] e: the friction torque is e × the pin load (μ r, or c_r R*)
+  /// [rad/s] ω_ε: the torque is −e F ω/√(ω² + ω_ε²), within 1/(2 (ω/ω_ε)²) of Coulomb's e F
+  /// once the links turn relative to each other faster than ω_ε
+  double rate_band = 5.0;
+  bool active() const { return arm > 0.0; }
+};
+
+/// Every problem with the hinge law, fields "hinge.arm", "hinge.rate_band".
+std::vector<Issue> validate(const HingeFriction& hinge, double pitch);
+
+/// [m] the rolling hinge's equivalent lever arm (seed 000; docs/models/dynamics.md, "Hinges"):
+/// rolling without slip, a turn φ of the hinge turns the roller by φ/2 on each plate (eq. 3) and
+/// the contact runs R1 Ψ1 = φ/2 · R1 R2/(R2 − R1) along each face (eqs. 1–2); a rolling resistance
+/// c_r F on each of the two contacts along that path dissipates c_r F R* φ, R* = R1 R2/(R2 − R1),
+/// so e = c_r R*. A flat face (face_radius = ∞) gives R* = R1.
+double rolling_hinge_arm(double rolling_coefficient, double plate_radius, double face_radius);
+
+/// The friction couple of one hinge over the step from x₀ to the iterate x₁ at the θ point, for
+/// the three nodes a = i − 1, b = i, c = i + 1 (positions at the start, x0/y0, and the iterate,
+/// x1/y1, in that order). The relative rotation over the step is Δβ = Δα_c − Δα_a with
+/// Δα = (d₀ × d₁)/|d_θ|² per link (its turn to third order), ω = Δβ/h; the force on node k is
+/// M g_k with g = ∂β/∂x at the θ point, so the couple's work over the step is exactly M Δβ ≤ 0.
+struct HingeCouple {
+  double load = 0.0;                            ///< [N] F, the pin load
+  double rate = 0.0;                            ///< [rad/s] ω
+  double torque = 0.0;                          ///< [N·m] M on the second link (−M on the first)
+  double turn = 0.0;                            ///< [rad] Δβ over the step
+  double work = 0.0;                            ///< [J] M Δβ ≤ 0
+  double gx[3] = {0, 0, 0}, gy[3] = {0, 0, 0};  ///< [1/m] g = ∂β/∂x_k at the θ point
+  double fx[3] = {0, 0, 0}, fy[3] = {0, 0, 0};  ///< [N] M g_k
+  /// [N·m·s/rad] e F s'(ω) ≥ 0: −∂(h f)/∂x₁ ≈ this × g gᵀ (the rate term; the load's and the
+  /// direction's dependence on x₁ left out)
+  double rate_stiffness = 0.0;
+};
+HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, double pitch,
+                         const double x0[3], const double y0[3], const double x1[3],
+                         const double y1[3], double theta, double step);
+
+}  // namespace catena::dynamics

@@ -1,0 +1,125 @@
+// `catena dynamics` with hinge friction (docs/models/dynamics.md, "Hinges"; docs/cli.md): the
+// default is the frictionless run, byte for byte; a sliding hinge takes its pin from the ISO 606
+// catalogue or the input; a rolling hinge's arm is c_r R*; the hinge work is in the work balance;
+// every input problem is named at once.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli_run.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kExample = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_12B.toml";
+
+// The example with `extra` lines added to its [dynamics] table (after its theta line).
+std::string example_with(const std::string& name, const std::string& extra) {
+  std::ifstream in(kExample);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string s = text.str();
+  const std::size_t at = s.find("\n", s.find("theta = 0.6"));
+  s.insert(at + 1, extra);
+  const fs::path dir = fs::temp_directory_path() / "catena_dynamics_hinge_cli_test";
+  fs::create_directories(dir);
+  const fs::path path = dir / name;
+  std::ofstream(path) << s;
+  return path.string();
+}
+
+nlohmann::json run_json(const std::string& file, const std::string& flags) {
+  const CliRun r = run("dynamics " + file + " " + flags + " --format json");
+  EXPECT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  j["summary"].erase("wall_time");
+  j["summary"].erase("real_time_factor");
+  return j;
+}
+
+TEST(DynamicsHingeCli, FrictionlessIsTheDefaultByteForByte) {
+  const auto plain = run_json(kExample, "--duration 0.02s");
+  const auto named =
+      run_json(example_with("frictionless.toml", "hinge = \"frictionless\"\n"), "--duration 0.02s");
+  EXPECT_EQ(plain.dump(), named.dump());
+  EXPECT_FALSE(plain.contains("hinge"));
+  EXPECT_FALSE(plain["summary"].contains("hinge_friction_work"));
+}
+
+TEST(DynamicsHingeCli, SlidingHingeTakesTheCataloguePinAndEntersTheWorkBalance) {
+  const auto j =
+      run_json(example_with("sliding.toml",
+                            "hinge = \"sliding\"\nhinge_friction = 0.1\nwork_balance = true\n"),
+               "--duration 0.1s");
+  EXPECT_EQ(j["hinge"], "sliding");
+  EXPECT_DOUBLE_EQ(j["hinge_arm"].get<double>(), 0.1 * 5.72e-3 / 2);  // ISO 606 12B: d2 5.72 mm
+  EXPECT_DOUBLE_EQ(j["hinge_band"].get<double>(), 5.0);
+  const double hinge = j["summary"]["hinge_friction_work"].get<double>();
+  EXPECT_LT(hinge, 0.0);
+  EXPECT_EQ(j["summary"]["work_balance"]["hinge_friction"].get<double>(), hinge);
+  EXPECT_EQ(j["units"]["hinge_friction_work"], "J");
+  // 0.1 s of the drive: about 2 e ω (T_t + T_s) × 0.1 s ≈ 0.9 J (the closed form of
+  // tests/validation/dynamics_hinge_test.cpp, with the start's transient)
+  EXPECT_GT(-hinge, 0.5);
+  EXPECT_LT(-hinge, 1.5);
+  // the hinge work is taken out of the energy drift like the guides' friction: the drift of the
+  // run with hinge friction stays of the order of the frictionless run's (≪ the hinge work)
+  const auto plain = run_json(kExample, "--duration 0.1s");
+  EXPECT_LT(std::abs(j["summary"]["energy_drift"].get<double>()),
+            std::abs(plain["summary"]["energy_drift"].get<double>()) + 0.2 * std::abs(hinge));
+  // the pin diameter as an input replaces the catalogue's
+  const auto given = run_json(example_with("pin.toml",
+                                           "hinge = \"sliding\"\nhinge_friction = 0.2\n"
+                                           "pin_diameter = \"6 mm\"\nhinge_band = \"10 rad/s\"\n"),
+                              "--duration 0.01s");
+  EXPECT_DOUBLE_EQ(given["hinge_arm"].get<double>(), 0.2 * 0.006 / 2);
+  EXPECT_DOUBLE_EQ(given["hinge_band"].get<double>(), 10.0);
+}
+
+TEST(DynamicsHingeCli, RollingHingeArmIsTheRollingCoefficientTimesTheReducedRadius) {
+  const auto concave = run_json(example_with("rolling.toml",
+                                             "hinge = \"rolling\"\nrolling_resistance = 0.001\n"
+                                             "plate_radius = \"3 mm\"\nface_radius = \"4 mm\"\n"),
+                                "--duration 0.01s");
+  EXPECT_NEAR(concave["hinge_arm"].get<double>(), 0.001 * 0.003 * 0.004 / 0.001, 1e-15);
+  const auto flat = run_json(example_with("flat.toml",
+                                          "hinge = \"rolling\"\nrolling_resistance = 0.001\n"
+                                          "plate_radius = \"3 mm\"\n"),
+                             "--duration 0.01s");
+  EXPECT_NEAR(flat["hinge_arm"].get<double>(), 0.001 * 0.003, 1e-15);
+}
+
+TEST(DynamicsHingeCli, EveryHingeProblemIsNamedAtOnce) {
+  const CliRun r = run("dynamics " +
+                       example_with("bad.toml",
+                                    "hinge = \"rolling\"\nrolling_resistance = 0.2\n"
+                                    "face_radius = \"1 mm\"\nhinge_friction = 2\n"
+                                    "hinge_band = \"-1 rad/s\"\n") +
+                       " --format json");
+  EXPECT_EQ(r.status, 2);
+  for (const char* field : {"dynamics.rolling_resistance", "dynamics.plate_radius",
+                            "dynamics.hinge_friction", "dynamics.hinge_band"})
+    EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
+  EXPECT_NE(r.err.find("in [0, 0.1]"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("only with hinge = \"sliding\""), std::string::npos) << r.err;
+
+  const CliRun kind =
+      run("dynamics " + example_with("kind.toml", "hinge = \"ball\"\n") + " --format json");
+  EXPECT_EQ(kind.status, 2);
+  EXPECT_NE(kind.err.find("frictionless, sliding or rolling"), std::string::npos) << kind.err;
+
+  const CliRun pin = run("dynamics " +
+                         example_with("pin_bad.toml",
+                                      "hinge = \"sliding\"\nhinge_friction = 0.1\n"
+                                      "pin_diameter = \"15 mm\"\n") +
+                         " --format json");
+  EXPECT_EQ(pin.status, 2);
+  EXPECT_NE(pin.err.find("dynamics.pin_diameter"), std::string::npos) << pin.err;
+  EXPECT_NE(pin.err.find("< p/2"), std::string::npos) << pin.err;
+}
+
+}  // namespace

@@ -1,0 +1,258 @@
+// The hinges' friction couple (include/catena/dynamics/hinge_friction.hpp; docs/models/dynamics.md,
+// "Hinges"): its forces against finite differences of the relative angle it is defined by, the
+// couple's resultant and moment, its work, and the work balance of a chain with hinge friction.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "catena/dynamics/integrator.hpp"
+#include "catena/hinge/kinematics.hpp"
+
+namespace catena::dynamics {
+namespace {
+
+// β: the angle of link (1 → 2) less the angle of link (0 → 1), in (−π, π].
+double relative_angle(const double x[3], const double y[3]) {
+  const double ax = x[1] - x[0], ay = y[1] - y[0], bx = x[2] - x[1], by = y[2] - y[1];
+  return std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+}
+
+struct Pose {
+  double x0[3], y0[3], x1[3], y1[3];
+};
+
+// Three nodes about a pitch apart at random angles, and a small random step.
+Pose random_pose(std::mt19937& rng, double pitch, double move) {
+  std::uniform_real_distribution<double> angle(-3.0, 3.0), turn(-0.6, 0.6), stretch(0.995, 1.005),
+      d(-move, move);
+  Pose p{};
+  const double a = angle(rng), b = a + turn(rng);
+  p.x0[0] = d(rng);
+  p.y0[0] = d(rng);
+  p.x0[1] = p.x0[0] + pitch * stretch(rng) * std::cos(a);
+  p.y0[1] = p.y0[0] + pitch * stretch(rng) * std::sin(a);
+  p.x0[2] = p.x0[1] + pitch * stretch(rng) * std::cos(b);
+  p.y0[2] = p.y0[1] + pitch * stretch(rng) * std::sin(b);
+  for (int k = 0; k < 3; ++k) {
+    p.x1[k] = p.x0[k] + d(rng);
+    p.y1[k] = p.y0[k] + d(rng);
+  }
+  return p;
+}
+
+constexpr double kPitch = 0.01905, kStiffness = 5e7;
+
+TEST(HingeFriction, ForceIsTheTorqueTimesTheGradientOfTheRelativeAngle) {
+  std::mt19937 rng(21);
+  const HingeFriction hinge{.arm = 2.86e-4, .rate_band = 5.0};
+  for (int trial = 0; trial < 200; ++trial) {
+    const Pose p = random_pose(rng, kPitch, 2e-4);
+    for (double theta : {0.5, 0.6, 1.0}) {
+      const HingeCouple hc =
+          hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, theta, 1e-4);
+      // g = ∂β/∂x at the θ point, by central differences of β
+      double xt[3], yt[3];
+      for (int k = 0; k < 3; ++k) {
+        xt[k] = (1 - theta) * p.x0[k] + theta * p.x1[k];
+        yt[k] = (1 - theta) * p.y0[k] + theta * p.y1[k];
+      }
+      const double e = 1e-7;
+      for (int k = 0; k < 3; ++k) {
+        double xp[3] = {xt[0], xt[1], xt[2]}, xm[3] = {xt[0], xt[1], xt[2]};
+        xp[k] += e;
+        xm[k] -= e;
+        const double gx = (relative_angle(xp, yt) - relative_angle(xm, yt)) / (2 * e);
+        double yp[3] = {yt[0], yt[1], yt[2]}, ym[3] = {yt[0], yt[1], yt[2]};
+        yp[k] += e;
+        ym[k] -= e;
+        const double gy = (relative_angle(xt, yp) - relative_angle(xt, ym)) / (2 * e);
+        const double scale = 1.0 / kPitch;
+        EXPECT_NEAR(hc.gx[k], gx, 1e-6 * scale) << trial << " node " << k;
+        EXPECT_NEAR(hc.gy[k], gy, 1e-6 * scale) << trial << " node " << k;
+        EXPECT_DOUBLE_EQ(hc.fx[k], hc.torque * hc.gx[k]);
+        EXPECT_DOUBLE_EQ(hc.fy[k], hc.torque * hc.gy[k]);
+      }
+      // the torque: −e F s(ω), F the mean elastic tension at the θ point (≥ 0)
+      double tension = 0.0;
+      for (int j = 0; j < 2; ++j) {
+        const double l0 = std::hypot(p.x0[j + 1] - p.x0[j], p.y0[j + 1] - p.y0[j]);
+        const double l1 = std::hypot(p.x1[j + 1] - p.x1[j], p.y1[j + 1] - p.y1[j]);
+        tension += 0.5 * kStiffness * ((1 - theta) * l0 + theta * l1 - kPitch);
+      }
+      EXPECT_NEAR(hc.load, std::max(0.0, tension), 1e-9 * kStiffness * kPitch);
+      const double w = hc.rate;
+      EXPECT_NEAR(hc.torque, -hinge.arm * hc.load * w / std::sqrt(w * w + 25.0),
+                  1e-12 * hinge.arm * kStiffness * kPitch);
+    }
+  }
+}
+
+TEST(HingeFriction, CoupleHasNoResultantItsMomentIsTheTorqueAndItsWorkIsMTimesTheTurn) {
+  std::mt19937 rng(6);
+  const HingeFriction hinge{.arm = 2.86e-4, .rate_band = 5.0};
+  for (int trial = 0; trial < 200; ++trial) {
+    const Pose p = random_pose(rng, kPitch, 5e-5);  // a step: turns of up to 0.3°
+    const double theta = trial % 2 ? 0.5 : 0.6, h = 1e-4;
+    const HingeCouple hc =
+        hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, theta, h);
+    const double scale = std::abs(hc.torque) / kPitch + 1e-300;
+    EXPECT_NEAR(hc.fx[0] + hc.fx[1] + hc.fx[2], 0.0, 1e-12 * scale);
+    EXPECT_NEAR(hc.fy[0] + hc.fy[1] + hc.fy[2], 0.0, 1e-12 * scale);
+    // the moment about the origin of all three forces is zero; the second link's share (the
+    // force on node 2 and its reaction on node 1) is the torque M
+    double xt[3], yt[3];
+    for (int k = 0; k < 3; ++k) {
+      xt[k] = (1 - theta) * p.x0[k] + theta * p.x1[k];
+      yt[k] = (1 - theta) * p.y0[k] + theta * p.y1[k];
+    }
+    double moment = 0.0;
+    for (int k = 0; k < 3; ++k) moment += xt[k] * hc.fy[k] - yt[k] * hc.fx[k];
+    EXPECT_NEAR(moment, 0.0, 1e-12 * std::abs(hc.torque) + 1e-300);
+    const double second = (xt[2] - xt[1]) * hc.fy[2] - (yt[2] - yt[1]) * hc.fx[2];
+    EXPECT_NEAR(second, hc.torque, 1e-12 * std::abs(hc.torque) + 1e-300);
+    // work: the forces times the step's displacements is M Δβ ≤ 0, and Δβ is the true change of
+    // the relative angle to third order in the links' turns (and to first order in their length
+    // changes at θ ≠ ½: l₀ l₁/l_θ², within 0.1 % here)
+    double work = 0.0;
+    for (int k = 0; k < 3; ++k)
+      work += hc.fx[k] * (p.x1[k] - p.x0[k]) + hc.fy[k] * (p.y1[k] - p.y0[k]);
+    EXPECT_NEAR(work, hc.work, 1e-9 * std::abs(hc.work) + 1e-300);  // rounding: Δx ≪ x
+    EXPECT_LE(hc.work, 0.0);
+    const double turn = relative_angle(p.x1, p.y1) - relative_angle(p.x0, p.y0);
+    auto link_turn = [&](int j) {
+      const double ax = p.x0[j + 1] - p.x0[j], ay = p.y0[j + 1] - p.y0[j];
+      const double bx = p.x1[j + 1] - p.x1[j], by = p.y1[j + 1] - p.y1[j];
+      return std::abs(std::atan2(ax * by - ay * bx, ax * bx + ay * by));
+    };
+    const double tol = 2e-3 * (link_turn(0) + link_turn(1)) + 1e-15;  // each link's turn's error
+    EXPECT_NEAR(hc.turn, turn, tol) << trial;
+    EXPECT_NEAR(hc.work, hc.torque * turn, std::abs(hc.torque) * tol) << trial;
+  }
+}
+
+TEST(HingeFriction, RateStiffnessIsTheTorquesSlopeInTheRate) {
+  // −∂M/∂ω at fixed load = e F s'(ω): turn the last link about node 1 between two iterates
+  const HingeFriction hinge{.arm = 2.86e-4, .rate_band = 5.0};
+  const double h = 1e-4;
+  for (double rate : {0.0, 1.0, 5.0, 40.0}) {
+    auto at = [&](double r) {
+      const double turn = r * h;
+      Pose p{{0, kPitch, 2 * kPitch}, {0, 0, 0}, {0, kPitch, 0}, {0, 0, 0}};
+      const double l = 1.002 * kPitch;  // in tension
+      p.x0[2] = p.x0[1] + l;
+      p.x1[2] = p.x1[1] + l * std::cos(turn);
+      p.y1[2] = l * std::sin(turn);
+      p.x0[0] = p.x1[0] = p.x0[1] - l;
+      return hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, 0.5, h);
+    };
+    const double dr = 1e-4;
+    const HingeCouple mid = at(rate);
+    const double slope = -(at(rate + dr).torque - at(rate - dr).torque) / (2 * dr);
+    // the load changes with the turn only to second order; the rate is Δβ/h to third order
+    EXPECT_NEAR(mid.rate_stiffness, slope, 1e-4 * mid.rate_stiffness + 1e-9) << rate;
+    EXPECT_GT(mid.rate_stiffness, 0.0);
+  }
+}
+
+TEST(HingeFriction, RollingArmIsTheRollingCoefficientTimesTheReducedRadius) {
+  // R* = R1 R2/(R2 − R1); flat face: R1; and the flat face is the limit of large R2
+  EXPECT_DOUBLE_EQ(rolling_hinge_arm(0.001, 0.015, 0.06276), 0.001 * 0.015 * 0.06276 / 0.04776);
+  EXPECT_DOUBLE_EQ(rolling_hinge_arm(0.001, 0.015, INFINITY), 0.001 * 0.015);
+  EXPECT_NEAR(rolling_hinge_arm(0.001, 0.015, 1e6), 0.001 * 0.015, 1e-12);
+  // against the hinge model's rolling geometry (hinge::pose, eqs. 1–3 of seed 000): over a turn
+  // φ each of the two contacts runs R1 Ψ1(φ) along its plate's arc, so c_r F · 2 R1 Ψ1(φ) = e F φ
+  hinge::Hinge h{.pin_diameter = 0.040, .half_thickness = 0.008, .plate_radius = 0.015, .teeth = 8};
+  for (double phi : {0.05, 0.3, 0.7}) {
+    const hinge::Pose concave = hinge::pose(h, 0.06276, phi);
+    EXPECT_NEAR(rolling_hinge_arm(0.001, 0.015, 0.06276), 0.001 * 2 * 0.015 * concave.psi1 / phi,
+                1e-12)
+        << phi;
+    h.face = hinge::Face::kFlat;
+    h.face_half_length = 0.015;
+    h.loaded_length = 0.012;
+    const hinge::Pose flat = hinge::pose(h, INFINITY, phi);
+    EXPECT_NEAR(rolling_hinge_arm(0.001, 0.015, INFINITY), 0.001 * 2 * 0.015 * flat.psi1 / phi,
+                1e-12)
+        << phi;
+    h.face = hinge::Face::kConcave;
+  }
+}
+
+TEST(HingeFriction, InvalidLawListsEveryProblem) {
+  const std::vector<Issue> issues = validate(HingeFriction{.arm = -1.0, .rate_band = 0.0}, 0.01905);
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_EQ(issues[0].field, "hinge.arm");
+  EXPECT_EQ(issues[1].field, "hinge.rate_band");
+  EXPECT_EQ(validate(HingeFriction{.arm = 0.01, .rate_band = 5.0}, 0.01905).size(), 1u);  // ≥ p/2
+  EXPECT_TRUE(validate(HingeFriction{.arm = 2.86e-4, .rate_band = 5.0}, 0.01905).empty());
+  Model model = uniform_chain(8, true, 0.01905, 0.02, 5e7, 0.0, false);
+  model.hinge.arm = NAN;
+  bool named = false;
+  for (const Issue& i : validate(model)) named = named || i.field == "hinge.arm";
+  EXPECT_TRUE(named);
+}
+
+// A free loop of 24 links spinning and wobbling (a transverse velocity on every other node), no
+// contact, no damping, at θ = ½: the energy changes by exactly the hinges' friction work (the
+// springs' discrete gradient and the midpoint rule's kinetic energy are exact), to the Newton
+// tolerance. Leaving the hinge work out breaks the balance by that work (a few % of the energy).
+TEST(HingeFriction, WorkBalanceClosesWithHingeFriction) {
+  constexpr std::size_t n = 24;
+  constexpr double p = 0.01905, omega = 20.0;
+  Model model = uniform_chain(n, true, p * (1 - 1e-3), 0.0238, 5e7, 0.0, false);
+  model.hinge = {.arm = 0.1 * 0.00286, .rate_band = 5.0};
+  const double radius = p / (2 * std::sin(M_PI / n));
+  State s(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * static_cast<double>(i) / n;
+    s.x[i] = radius * std::cos(a);
+    s.y[i] = radius * std::sin(a);
+    const double wobble = (i % 2 ? 0.3 : -0.3);  // [m/s] radial
+    s.vx[i] = -omega * s.y[i] + wobble * std::cos(a);
+    s.vy[i] = omega * s.x[i] + wobble * std::sin(a);
+  }
+  Integrator integ(model, {.step = 1e-4, .theta = 0.5});
+  const double e0 = energy(model, s).total();
+  for (int k = 0; k < 2000; ++k) ASSERT_TRUE(integ.step(model, s).converged) << k;
+  const double e1 = energy(model, s).total();
+  EXPECT_LT(s.hinge_work, -0.01 * e0);  // the hinges took a few % of the energy
+  EXPECT_NEAR(e1 - e0, s.hinge_work, 1e-6 * e0);
+  EXPECT_GT(std::abs(e1 - e0), 1e-3 * e0);  // so the balance without the hinge work fails
+}
+
+// An open chain of 16 links pinned at both ends, released as an inverted V under gravity: it
+// falls through and swings on its hinges, and at θ = ½ without dampers its energy (gravity's
+// included) changes by the hinges' work alone. The end hinges (next to the pinned nodes) take part;
+// an open chain has no hinge at its two end nodes.
+TEST(HingeFriction, OpenPinnedChainSwingingBalancesItsHingeWork) {
+  constexpr std::size_t n = 17;
+  constexpr double p = 0.01905;
+  Model model = uniform_chain(n, false, p, 0.0238, 5e6, 0.0, true);
+  model.gravity_y = -9.81;
+  model.hinge = {.arm = 0.1 * 0.00286, .rate_band = 5.0};
+  State s(n, 0);
+  // an inverted V of links at rest length, 30° up to the middle and down again
+  const double c30 = std::cos(M_PI / 6), s30 = std::sin(M_PI / 6);
+  for (std::size_t i = 1; i < n; ++i) {
+    const bool up = i <= n / 2;
+    s.x[i] = s.x[i - 1] + p * c30;
+    s.y[i] = s.y[i - 1] + (up ? p : -p) * s30;
+  }
+  Integrator integ(model, {.step = 1e-4, .theta = 0.5});
+  const double e0 = energy(model, s).total();
+  for (int k = 0; k < 2000; ++k) ASSERT_TRUE(integ.step(model, s).converged) << k;
+  const Energy e1 = energy(model, s);
+  EXPECT_LT(s.y[n / 2], -0.01);  // it swung down
+  EXPECT_LT(s.hinge_work, 0.0);
+  EXPECT_GT(-s.hinge_work, 1e-3 * e1.kinetic);  // not negligible against the motion
+  std::printf("hinge work %.6g J, kinetic %.6g J, balance error %.3g J\n", s.hinge_work, e1.kinetic,
+              e1.total() - e0 - s.hinge_work);
+  EXPECT_NEAR(e1.total() - e0, s.hinge_work, 1e-6 * std::abs(e0 - e1.potential) + 1e-9);
+  EXPECT_EQ(s.x[0], 0.0);  // pinned ends stay
+  EXPECT_DOUBLE_EQ(s.x[n - 1], 16 * p * c30);
+}
+
+}  // namespace
+}  // namespace catena::dynamics
