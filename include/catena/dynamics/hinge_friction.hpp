@@ -51,8 +51,17 @@ struct HingeCouple {
   /// direction's dependence on x₁ left out)
   double rate_stiffness = 0.0;
 };
-HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, double pitch,
+/// `rest` holds the two links' rest lengths (they differ on an alternating round-link chain,
+/// Model::alternation); the pin load is the mean of their elastic tensions k (l_θ − rest).
+HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
                          const double y1[3], double theta, double step);
+/// Both links of rest length `pitch`.
+inline HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, double pitch,
+                                const double x0[3], const double y0[3], const double x1[3],
+                                const double y1[3], double theta, double step) {
+  const double rest[2] = {pitch, pitch};
+  return hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step);
+}
 
 }  // namespace catena::dynamics

@@ -29,7 +29,7 @@ double rolling_hinge_arm(double rolling_coefficient, double plate_radius, double
   return rolling_coefficient * reduced;
 }
 
-HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, double pitch,
+HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
                          const double y1[3], double theta, double step) {
   HingeCouple hc;
@@ -46,7 +46,7 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, dou
     // the elastic tension at the θ point, with the integrator's interpolated length
     const double lt =
         (1.0 - theta) * std::sqrt(d0x * d0x + d0y * d0y) + theta * std::sqrt(d1x * d1x + d1y * d1y);
-    tension_sum += axial_stiffness * (lt - pitch);
+    tension_sum += axial_stiffness * (lt - rest[j]);
   }
   hc.load = std::max(0.0, 0.5 * tension_sum);
   hc.turn = turn[1] - turn[0];

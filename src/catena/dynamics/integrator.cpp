@@ -156,7 +156,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       const std::size_t ha = (i + n - 1) % n, hb = (i + 1) % n;
       const double x0[3] = {s.x[ha], s.x[i], s.x[hb]}, y0[3] = {s.y[ha], s.y[i], s.y[hb]};
       const double x1[3] = {ux_[ha], ux_[i], ux_[hb]}, y1[3] = {uy_[ha], uy_[i], uy_[hb]};
-      const HingeCouple hc = hinge_couple(model.hinge, k, p, x0, y0, x1, y1, th, h);
+      const double rest[2] = {model.rest_length(ha), model.rest_length(i)};
+      const HingeCouple hc = hinge_couple(model.hinge, k, rest, x0, y0, x1, y1, th, h);
       hinge_work_ += hc.work;
       const std::size_t node[3] = {ha, i, hb};
       for (int q = 0; q < 3; ++q) {
