@@ -98,6 +98,72 @@ TEST(DynamicsCli, ExampleDriveGivesItsClosedForms) {
   EXPECT_LT(driver, 1.05 * load);
 }
 
+// summary.sprocket_<i> and summary.span_<j>: the means (and a span's least and greatest
+// tension) over the stated window, recomputed here from the JSON's own series: on the example
+// the whole tooth periods after half the run (mean_over_periods from t_end/2, the validations'
+// mean), on a run shorter than two tooth periods the whole second half.
+TEST(DynamicsCli, SummaryMeansAreTheSeriesOverTheWindow) {
+  const double period = 2 * kPi / (12 * 13.0);  // the driver's tooth period, z = 12 at 13 rad/s
+  for (const char* duration : {"0.5s", "6ms"}) {
+    const CliRun r = run("dynamics " + kExample + " --duration " + duration + " --format json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const auto time = j["time"].get<std::vector<double>>();
+    const auto& summary = j["summary"];
+    const double t0 = 0.5 * time.back();
+    const int periods = static_cast<int>(std::floor((time.back() - t0) / period));
+    const double end = periods > 0 ? t0 + periods * period : time.back();
+    EXPECT_EQ(summary["window_start"].get<double>(), t0) << duration;
+    EXPECT_EQ(summary["window_end"].get<double>(), end) << duration;
+    EXPECT_EQ(summary["window_periods"].get<int>(), periods) << duration;
+    EXPECT_EQ(periods, std::string(duration) == "0.5s" ? 6 : 0);  // 0.25 s / 40.3 ms
+    int samples = 0;
+    for (double t : time) samples += t > t0 && t <= end;
+    EXPECT_EQ(summary["window_samples"].get<int>(), samples);
+    EXPECT_GT(samples, 10);
+    // a plain mean over the window's samples, and the validations' whole-period mean
+    auto window_mean = [&](const std::vector<double>& x) {
+      double sum = 0.0;
+      for (std::size_t k = 0; k < time.size(); ++k)
+        if (time[k] > t0 && time[k] <= end) sum += x[k];
+      return sum / samples;
+    };
+    auto near = [](double got, double want) {
+      EXPECT_NEAR(got, want, 1e-12 * std::abs(want) + 1e-12);
+    };
+    for (std::size_t w = 0; w < 2; ++w) {
+      const auto& s = summary["sprocket_" + std::to_string(w)];
+      for (const char* key : {"speed", "torque"}) {
+        const auto x = j["sprocket"][w][key].get<std::vector<double>>();
+        near(s[std::string("mean_") + key].get<double>(), window_mean(x));
+        if (periods > 0)
+          near(s[std::string("mean_") + key].get<double>(), mean_over_periods(time, x, t0, period));
+      }
+    }
+    EXPECT_EQ(summary["sprocket_0"]["mean_speed"].get<double>(), 13.0);  // prescribed
+    for (std::size_t k = 0; k < 2; ++k) {
+      const auto& s = summary["span_" + std::to_string(k)];
+      const auto x = j["span"][k]["tension"].get<std::vector<double>>();
+      near(s["mean_tension"].get<double>(), window_mean(x));
+      double least = INFINITY, most = -INFINITY;
+      for (std::size_t i = 0; i < time.size(); ++i) {
+        if (!(time[i] > t0 && time[i] <= end)) continue;
+        least = std::min(least, x[i]);
+        most = std::max(most, x[i]);
+      }
+      EXPECT_EQ(s["min_tension"].get<double>(), least);
+      EXPECT_EQ(s["max_tension"].get<double>(), most);
+      EXPECT_LT(least, s["mean_tension"].get<double>());
+      EXPECT_GT(most, s["mean_tension"].get<double>());
+    }
+    for (const char* key : {"mean_tension", "min_tension", "max_tension"})
+      EXPECT_EQ(j["units"][key], "N");
+    EXPECT_EQ(j["units"]["mean_torque"], "N m");
+    EXPECT_EQ(j["units"]["mean_speed"], "rad/s");
+    EXPECT_EQ(j["units"]["window_start"], "s");
+  }
+}
+
 TEST(DynamicsCli, CsvTableAndOverrides) {
   const CliRun csv = run("dynamics " + kExample + " --duration 2ms --step 0.5ms --format csv");
   ASSERT_EQ(csv.status, 0) << csv.err;

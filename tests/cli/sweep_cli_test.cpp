@@ -1,6 +1,7 @@
 // `catena sweep`: one analysis of a case file over a grid, as CSV.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -268,10 +269,17 @@ TEST(SweepCli, ADynamicsSweepTakesTheCasesTableAndVariesAValueInIt) {
     const std::string& file = rows[r][0] == "5" ? light.string() : drive;
     const CliRun alone = run("dynamics " + file + " --duration " + rows[r][1] + " --format json");
     ASSERT_EQ(alone.status, 0) << alone.err;
-    EXPECT_EQ(expect_row_equals(rows[0], rows[r], 2, nlohmann::json::parse(alone.out)), 9u) << r;
+    // 9 of the run's scalars, then the summary's window (4) and its means and extremes: 2
+    // sprockets × 2, 2 spans × 3
+    EXPECT_EQ(expect_row_equals(rows[0], rows[r], 2, nlohmann::json::parse(alone.out)), 23u) << r;
     drift.push_back(std::strtod(rows[r][2 + 9].c_str(), nullptr));
   }
   EXPECT_EQ(rows[0][2 + 9], "summary.energy_drift [J]");
+  for (const char* column :
+       {"summary.window_start [s]", "summary.sprocket_1.mean_speed [rad/s]",
+        "summary.sprocket_1.mean_torque [N m]", "summary.span_0.mean_tension [N]",
+        "summary.span_0.max_tension [N]", "summary.span_1.min_tension [N]"})
+    EXPECT_NE(std::find(rows[0].begin(), rows[0].end(), column), rows[0].end()) << column;
   EXPECT_NE(drift[0], drift[2]);    // the load torque changed the run
   EXPECT_EQ(rows[1][2 + 5], "40");  // summary.steps: 4 ms of 0.1 ms steps
   EXPECT_EQ(rows[2][2 + 5], "60");

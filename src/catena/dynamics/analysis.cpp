@@ -779,6 +779,56 @@ std::string fixed(double x, int digits) {
   return buf;
 }
 
+// The summary's window (docs/models/dynamics.md, "Summary"): the whole tooth periods of the
+// driver, T = 2π/(z ω), after half the run, (t_end/2, t_end/2 + n T] with n = ⌊(t_end/2)/T⌋ —
+// the second half is taken as past the start-up transient (as the table's means and the
+// spectrum take it), and whole periods keep the polygonal action's ripple out of the means.
+// A second half shorter than one period gives the whole second half, (t_end/2, t_end]; a run
+// with no sample after t = 0 gives its one sample.
+struct Window {
+  double start = 0.0, end = 0.0;
+  int periods = 0;                  // n, 0 when the second half holds no whole period
+  std::size_t first = 0, last = 0;  // the samples in the window: [first, last)
+};
+
+Window summary_window(const std::vector<double>& time, double period) {
+  Window w;
+  const double t_end = time.back();
+  w.start = 0.5 * t_end;
+  const double n = std::floor((t_end - w.start) / period);
+  w.periods = n >= 1.0 && n < 1e9 ? static_cast<int>(n) : 0;
+  w.end = w.periods > 0 ? w.start + n * period : t_end;
+  w.first = time.size();
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    if (time[k] > w.start && time[k] <= w.end) {
+      w.first = std::min(w.first, k);
+      w.last = k + 1;
+    }
+  }
+  if (w.first >= w.last) {  // only the t = 0 sample
+    w.first = time.size() - 1;
+    w.last = time.size();
+    w.start = w.end = t_end;
+  }
+  return w;
+}
+
+struct Stats {
+  double mean = 0.0, min = INFINITY, max = -INFINITY;
+};
+
+Stats window_stats(const std::vector<double>& x, const Window& w) {
+  Stats s;
+  double sum = 0.0;
+  for (std::size_t k = w.first; k < w.last; ++k) {
+    sum += x[k];
+    s.min = std::min(s.min, x[k]);
+    s.max = std::max(s.max, x[k]);
+  }
+  s.mean = sum / static_cast<double>(w.last - w.first);
+  return s;
+}
+
 Record describe(const Result& r, const analysis::Inputs&) {
   const Setup& d = r.setup;
   Record rec;
@@ -833,6 +883,24 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                                   {"contact_dampers", r.contact_damping_work},
                                                   {"numerical", r.numerical_work}});
   }
+  // the scalar summaries a sweep takes as columns (objects, not arrays: arrays are series to a
+  // sweep): each sprocket's mean speed and torque, each span's mean, least and greatest tension,
+  // over the window of summary_window(), all added after the fields above
+  const Window win = summary_window(r.time, 2 * kPi / (d.teeth * d.speed));
+  j["summary"]["window_start"] = win.start;
+  j["summary"]["window_end"] = win.end;
+  j["summary"]["window_periods"] = win.periods;
+  j["summary"]["window_samples"] = static_cast<long long>(win.last - win.first);
+  for (std::size_t w = 0; w < r.sprocket.size(); ++w) {
+    j["summary"]["sprocket_" + std::to_string(w)] =
+        Value::object({{"mean_speed", window_stats(r.sprocket[w].speed, win).mean},
+                       {"mean_torque", window_stats(r.sprocket[w].torque, win).mean}});
+  }
+  for (std::size_t k = 0; k < r.span.size(); ++k) {
+    const Stats t = window_stats(r.span[k], win);
+    j["summary"]["span_" + std::to_string(k)] =
+        Value::object({{"mean_tension", t.mean}, {"min_tension", t.min}, {"max_tension", t.max}});
+  }
   j["diagnostics"] = analysis::diagnostics_value(r.diagnostics);
   j["units"] = analysis::units_value({{"pitch", "m"},
                                       {"centre_distance", "m"},
@@ -851,6 +919,10 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (d.gravity > 0.0) j["units"]["gravity"] = "m/s^2";
   if (!d.guides.empty()) j["units"]["friction_work"] = "J";
   if (d.work_balance) j["units"]["work_balance"] = "J";
+  for (const char* key : {"window_start", "window_end"}) j["units"][key] = "s";
+  j["units"]["mean_speed"] = "rad/s";
+  j["units"]["mean_torque"] = "N m";
+  for (const char* key : {"mean_tension", "min_tension", "max_tension"}) j["units"][key] = "N";
   rec.data = std::move(j);
 
   std::ostringstream csv;
