@@ -289,6 +289,28 @@ TEST(SweepCli, ADynamicsSweepTakesTheCasesTableAndVariesAValueInIt) {
   fs::remove(light);
 }
 
+// A dynamics sweep whose points add up to more than the total work cap (2e9 link-steps) is
+// refused with exit 2 before anything runs, nothing written, naming the limit and the estimate;
+// a sweep under it runs (the test above).
+TEST(SweepCli, ADynamicsSweepOverTheTotalWorkCapIsRefused) {
+  const std::string drive = kExamples + "/dynamics_12B.toml";
+  const fs::path out = fs::temp_directory_path() / "catena_sweep_total_work.csv";
+  fs::remove(out);
+  const CliRun r = run("sweep " + drive +
+                       " --grid 'dynamics.sprocket[1].load_torque=1:42' --grid duration=150s" +
+                       " --grid dynamics.output_interval=1ms -o " + out.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_NE(r.err.find("--grid = 42 points, 2.016e+09 link-steps in all: expected at most 2e+09 "
+                       "link-steps in one sweep (40 runs at the per-run cap of 5e+07"),
+            std::string::npos)
+      << r.err;
+  const CliRun under = run("sweep " + drive + " --grid duration=2ms,3ms");
+  EXPECT_EQ(under.status, 0) << under.err;
+  EXPECT_EQ(cells(under.out).size(), 3u);
+}
+
 // The loop analysis (its one input is the [loop] table) and wear with tension_source = "loop"
 // (which reads [loop] beside its own table) sweep too: the row of the case's own values equals
 // `catena run`, the others differ.

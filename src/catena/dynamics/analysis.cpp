@@ -989,6 +989,17 @@ Record describe(const Result& r, const analysis::Inputs&) {
   return rec;
 }
 
+// A run's work without running it (Analysis::work_of, for a sweep's total): steps × links, the
+// measure of the per-run cap; 0 for inputs parse() refuses (over the cap included).
+double estimated_work(const analysis::Inputs& in) {
+  try {
+    const Setup s = parse(in);
+    return std::ceil(s.duration / s.step) * s.links;
+  } catch (const InputError&) {
+    return 0.0;
+  }
+}
+
 analysis::Analysis make() {
   analysis::Analysis a;
   a.name = "dynamics";
@@ -1008,6 +1019,8 @@ analysis::Analysis make() {
           analysis::NotShared{},
       quantity("step", K::kTime, "time step h (overrides dynamics.step)") | analysis::NotShared{}};
   analysis::set_functions<Result>(a, run, describe);
+  a.work_of = estimated_work;
+  a.work_unit = "link-steps";
   return a;
 }
 
