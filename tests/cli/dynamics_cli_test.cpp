@@ -288,6 +288,89 @@ TEST(DynamicsCli, WorkBalanceIsOptInAndAddsUp) {
   EXPECT_NE(e.err.find("true or false"), std::string::npos) << e.err;
 }
 
+// `positions = true` adds every node's x and y at each output sample: each link's length is the
+// pitch within its stretch (the tension over k, < 0.2 %), and the report's animation frames (its
+// own copy of the positions, drawn in mm to 1 µm) show the same nodes at the same times.
+// Without it there is no such field; the size is capped, and a value other than true or false
+// is named with its line.
+TEST(DynamicsCli, PositionsAreOptInAndMatchTheAnimation) {
+  std::stringstream text;
+  text << std::ifstream(kExample).rdbuf();
+  std::string with = text.str();
+  const std::size_t at = with.find("[dynamics]\n");
+  ASSERT_NE(at, std::string::npos);
+  with.insert(at + 11, "positions = true\n");
+  const std::string file = write("positions.toml", with);
+  const CliRun r = run("dynamics " + file + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("positions"));
+  EXPECT_EQ(j["units"]["x"], "m");
+  EXPECT_EQ(j["units"]["y"], "m");
+  const auto time = j["time"].get<std::vector<double>>();
+  const auto x = j["positions"]["x"].get<std::vector<std::vector<double>>>();
+  const auto y = j["positions"]["y"].get<std::vector<std::vector<double>>>();
+  ASSERT_EQ(x.size(), time.size());
+  ASSERT_EQ(y.size(), time.size());
+  const double pitch = 0.01905;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    ASSERT_EQ(x[k].size(), 32u);
+    ASSERT_EQ(y[k].size(), 32u);
+    for (std::size_t i = 0; i < 32; ++i) {
+      const std::size_t e = (i + 1) % 32;
+      worst =
+          std::max(worst, std::abs(std::hypot(x[k][e] - x[k][i], y[k][e] - y[k][i]) / pitch - 1));
+    }
+  }
+  EXPECT_LT(worst, 2e-3);
+  EXPECT_GT(worst, 0.0);  // the links stretch: these are the model's positions, not a drawing
+
+  const fs::path html = fs::temp_directory_path() / "catena_dynamics_cli_test" / "positions.html";
+  const CliRun report = run("report " + file + " -o " + html.string());
+  ASSERT_EQ(report.status, 0) << report.err;
+  std::stringstream page;
+  page << std::ifstream(html).rdbuf();
+  const auto extra = chart_list(page.str(), "catena-charts-extra");
+  ASSERT_EQ(extra.size(), 2u);
+  const auto& frames = extra[1]["frames"];
+  ASSERT_GE(frames.size(), 50u);
+  for (const auto& frame : frames) {
+    // "t = 0.1234 s": the sample nearest that time (the frames fall on steps; a sample every step)
+    const double t = std::stod(frame["name"].get<std::string>().substr(4));
+    std::size_t k = 0;
+    for (std::size_t m = 0; m < time.size(); ++m)
+      if (std::abs(time[m] - t) < std::abs(time[k] - t)) k = m;
+    const auto cx = frame["traces"][2]["x"].get<std::vector<double>>();
+    const auto cy = frame["traces"][2]["y"].get<std::vector<double>>();
+    ASSERT_EQ(cx.size(), 33u);
+    for (std::size_t i = 0; i < 33; ++i) {
+      EXPECT_NEAR(cx[i], x[k][i % 32] * 1e3, 1e-3) << frame["name"] << " node " << i;
+      EXPECT_NEAR(cy[i], y[k][i % 32] * 1e3, 1e-3) << frame["name"] << " node " << i;
+    }
+  }
+
+  const CliRun plain = run("dynamics " + kExample + " --duration 1ms --format json");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const auto p = nlohmann::json::parse(plain.out);
+  EXPECT_FALSE(p.contains("positions"));
+  EXPECT_FALSE(p["units"].contains("x"));
+
+  // 20 001 samples × 32 nodes = 640 032 node-samples, over the 500 000 cap
+  const CliRun big = run("dynamics " + file + " --duration 20s --step 1ms");
+  EXPECT_EQ(big.status, 2);
+  EXPECT_NE(big.err.find("dynamics.positions (line 13)"), std::string::npos) << big.err;
+  EXPECT_NE(big.err.find("at most 500000 node-samples"), std::string::npos) << big.err;
+  EXPECT_NE(big.err.find("here 640032"), std::string::npos) << big.err;
+
+  std::string bad = text.str();
+  bad.insert(at + 11, "positions = 1\n");
+  const CliRun e = run("dynamics " + write("positions_bad.toml", bad));
+  EXPECT_EQ(e.status, 2);
+  EXPECT_NE(e.err.find("dynamics.positions"), std::string::npos) << e.err;
+  EXPECT_NE(e.err.find("true or false"), std::string::npos) << e.err;
+}
+
 // `catena report` on the example: the time series (each curve's extremes those of the JSON),
 // the span-tension spectrum with the tooth-mesh harmonics marked and peaks at them, and the
 // animation, whose rollers sit in the drawn outlines' seats.

@@ -45,6 +45,8 @@ constexpr double kPi = std::numbers::pi;
 // link with sprockets on the reference machine (docs/performance.md: 100 µs a step at 200
 // links), so the cap is about 25 s; memory is about 200 bytes a node, whatever the steps.
 constexpr double kMaxSamples = 200'000;  // samples of the series
+// node-samples (links × samples) of the opt-in positions: 10⁶ coordinates, about 20 MB of JSON
+constexpr double kMaxPositions = 500'000;
 constexpr analysis::Work kWork{.cap = 50'000'000, .seconds = 0.5e-6, .bytes = 0.0};
 
 std::vector<Parameter> table_fields() {
@@ -74,7 +76,10 @@ std::vector<Parameter> table_fields() {
              "true (9.80665 m/s^2), false, or g in [0, 100] m/s^2, downward (-y; default: none)"),
       text("work_balance",
            "true to add the run's work balance to the summary: input, friction, link and "
-           "contact dampers, numerical (default false)")};
+           "contact dampers, numerical (default false)"),
+      text("positions",
+           "true to add every node's x and y at each output sample to the JSON (default false; "
+           "at most 500000 node-samples)")};
 }
 
 // [[dynamics.guide]]: a rail the rollers slide on (docs/models/dynamics.md, "Guides"), in the
@@ -185,6 +190,7 @@ struct Setup {
   double gravity = 0.0;       // [m/s²] downward (−y)
   std::vector<Guide> guides;  // [[dynamics.guide]]
   bool work_balance = false;  // summary.work_balance in the output
+  bool positions = false;     // positions {x, y} in the output
 };
 
 bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
@@ -209,6 +215,7 @@ Setup parse(const analysis::Inputs& in) {
   static const std::regex guide_row(R"(^dynamics\.guide\[(\d+)\]\.([^.]+)$)");
   double gravity = 0.0;  // [m/s²] downward
   bool work_balance = false;
+  bool positions = false;
   for (const Entry& v : file.table) {
     if (v.path.rfind("dynamics.", 0) != 0) continue;  // the rest of a case file is not ours
     std::smatch m;
@@ -298,6 +305,14 @@ Setup parse(const analysis::Inputs& in) {
       line[key] = v.line;
       if (v.is_boolean)
         work_balance = v.text == "true";
+      else
+        issues.push_back({where(v), "'" + v.text + "'", "true or false"});
+      continue;
+    }
+    if (key == "positions") {
+      line[key] = v.line;
+      if (v.is_boolean)
+        positions = v.text == "true";
       else
         issues.push_back({where(v), "'" + v.text + "'", "true or false"});
       continue;
@@ -495,6 +510,7 @@ Setup parse(const analysis::Inputs& in) {
   }
   s.gravity = gravity;
   s.work_balance = work_balance;
+  s.positions = positions;
   // the guides: kind and its geometry, all present; then the core's checks (named per field)
   for (std::size_t i = 0; i < guides.size(); ++i) {
     const GuideInput& g = guides[i];
@@ -596,6 +612,12 @@ Setup parse(const analysis::Inputs& in) {
                         "at least duration / " + shown(kMaxSamples) + " = " +
                             shown(s.duration / kMaxSamples) + " s (at most " + shown(kMaxSamples) +
                             " samples; here " + shown(samples) + ")"});
+    // the opt-in positions: links × samples node positions, held until the end
+    if (s.positions && samples * s.links > kMaxPositions)
+      issues.push_back({at("positions"), "true",
+                        "at most " + shown(kMaxPositions) +
+                            " node-samples (links x samples; here " + shown(samples * s.links) +
+                            "): raise output_interval, shorten the run, or positions = false"});
   }
   throw_if_any(issues);
   return s;
@@ -610,6 +632,8 @@ struct Result {
   std::vector<double> time;
   std::vector<Series> sprocket;           // 2
   std::vector<std::vector<double>> span;  // upper, lower
+  // positions = true: every node's x and y at each sample, [sample][node]
+  std::vector<std::vector<double>> node_x, node_y;
   int steps = 0;
   double wall_time = 0.0, energy_drift = 0.0, max_penetration = 0.0;
   double friction_work = 0.0;
@@ -704,6 +728,10 @@ Result run(const analysis::Inputs& in) {
     }
     out.span[0].push_back(tension[top]);
     out.span[1].push_back(tension[bottom]);
+    if (d.positions) {
+      out.node_x.push_back(s.x);
+      out.node_y.push_back(s.y);
+    }
     since = 0;
   };
   const int steps = static_cast<int>(std::lround(d.duration / d.step));
@@ -901,6 +929,15 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["summary"]["span_" + std::to_string(k)] =
         Value::object({{"mean_tension", t.mean}, {"min_tension", t.min}, {"max_tension", t.max}});
   }
+  // opt-in (positions = true): positions.x[k][i], positions.y[k][i], node i at time[k]
+  if (d.positions) {
+    Value x = Value::array(), y = Value::array();
+    for (std::size_t k = 0; k < r.node_x.size(); ++k) {
+      x.push_back(Value(r.node_x[k]));
+      y.push_back(Value(r.node_y[k]));
+    }
+    j["positions"] = Value::object({{"x", std::move(x)}, {"y", std::move(y)}});
+  }
   j["diagnostics"] = analysis::diagnostics_value(r.diagnostics);
   j["units"] = analysis::units_value({{"pitch", "m"},
                                       {"centre_distance", "m"},
@@ -920,6 +957,10 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (!d.guides.empty()) j["units"]["friction_work"] = "J";
   if (d.work_balance) j["units"]["work_balance"] = "J";
   for (const char* key : {"window_start", "window_end"}) j["units"][key] = "s";
+  if (d.positions) {
+    j["units"]["x"] = "m";
+    j["units"]["y"] = "m";
+  }
   j["units"]["mean_speed"] = "rad/s";
   j["units"]["mean_torque"] = "N m";
   for (const char* key : {"mean_tension", "min_tension", "max_tension"}) j["units"][key] = "N";
