@@ -371,6 +371,59 @@ TEST(DynamicsCli, PositionsAreOptInAndMatchTheAnimation) {
   EXPECT_NE(e.err.find("true or false"), std::string::npos) << e.err;
 }
 
+// contact_stiffness omitted: the Hertz default, the secant Q0/δ(Q0) of the plane-strain line
+// contact (Johnson 1985, eq. 5.36 form) of the 12B roller (d1 = 12.07 mm) in the ISO 606
+// minimum seating arc (ri = 0.505 d1) over the inner width b1 = 11.68 mm, steel on steel, at
+// the expected seat load Q0 = T_L/R + pretension — recomputed here from those formulas, not
+// through the library. The JSON then names it (contact_stiffness, contact_load); a case that
+// gives it has no such fields; no load and no pretension leave nothing to linearise at.
+TEST(DynamicsCli, ContactStiffnessDefaultsToTheHertzLineContact) {
+  std::stringstream text;
+  text << std::ifstream(kExample).rdbuf();
+  std::string without = text.str();
+  const std::size_t at = without.find("contact_stiffness = ");
+  ASSERT_NE(at, std::string::npos);
+  without.erase(at, without.find('\n', at) + 1 - at);
+  const std::string file = write("hertz.toml", without);
+  const CliRun r = run("dynamics " + file + " --duration 20ms --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["diagnostics"].empty()) << j["diagnostics"].dump();
+  const double d1 = 12.07e-3, b1 = 11.68e-3, pitch = 0.01905, modulus = 210e9, nu = 0.3;
+  const double radius = 0.5 * pitch / std::sin(kPi / 12);
+  const double load = 10.0 / radius + 950.0;
+  const double q = load / b1;
+  const double ri = 0.505 * d1;
+  const double rho = d1 * ri / (2 * (ri - 0.5 * d1));  // roller in the concave seat
+  const double e_star = modulus / (2 * (1 - nu * nu));
+  const double half_width = std::sqrt(4 * q * rho / (kPi * e_star));
+  const double approach =
+      q / kPi * 2 * (1 - nu * nu) / modulus * (2 * std::log(4 * 0.5 * d1 / half_width) - 1);
+  EXPECT_NEAR(j["contact_load"].get<double>(), load, 1e-9 * load);
+  EXPECT_NEAR(j["contact_stiffness"].get<double>(), load / approach, 1e-9 * load / approach);
+  EXPECT_EQ(j["units"]["contact_stiffness"], "N/m");
+  // the approach at the load is what the linear penalty reproduces: a few µm
+  EXPECT_GT(approach, 1e-6);
+  EXPECT_LT(approach, 3e-6);
+  EXPECT_LT(j["summary"]["max_penetration"].get<double>(), 10 * approach);
+
+  const auto given =
+      nlohmann::json::parse(run("dynamics " + kExample + " --duration 1ms --format json").out);
+  EXPECT_FALSE(given.contains("contact_stiffness"));
+  EXPECT_FALSE(given["units"].contains("contact_stiffness"));
+
+  std::string unloaded = without;
+  for (const std::string key : {"pretension = ", "load_torque = "}) {
+    const std::size_t k = unloaded.find(key);
+    ASSERT_NE(k, std::string::npos);
+    unloaded.erase(k, unloaded.find('\n', k) + 1 - k);
+  }
+  const CliRun none = run("dynamics " + write("hertz_unloaded.toml", unloaded));
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.err.find("dynamics.contact_stiffness = (missing)"), std::string::npos) << none.err;
+  EXPECT_NE(none.err.find("expected seat load"), std::string::npos) << none.err;
+}
+
 // `catena report` on the example: the time series (each curve's extremes those of the JSON),
 // the span-tension spectrum with the tooth-mesh harmonics marked and peaks at them, and the
 // animation, whose rollers sit in the drawn outlines' seats.

@@ -20,6 +20,7 @@
 #include <sstream>
 
 #include "catena/contact/chain_catalog.hpp"
+#include "catena/contact/roller_tooth.hpp"
 #include "catena/core/progress.hpp"
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/report_charts.hpp"
@@ -65,7 +66,9 @@ std::vector<Parameter> table_fields() {
       quantity("axial_stiffness", K::kForcePerLength, "axial stiffness k of one link [N/m]"),
       number("axial_damping", "axial damping c of one link [N s/m], >= 0 (default 0)"),
       quantity("pretension", K::kForce, "the loop's tension at rest, >= 0 (default 0)"),
-      quantity("contact_stiffness", K::kForcePerLength, "roller-seat penalty k_c [N/m]"),
+      quantity("contact_stiffness", K::kForcePerLength,
+               "roller-seat penalty k_c [N/m] (default: the Hertz line contact's secant "
+               "stiffness at the expected load)"),
       number("contact_damping", "roller-seat damping c_c [N s/m], >= 0"),
       quantity("duration", K::kTime, "simulated time, > 0"),
       quantity("step", K::kTime, "time step h, > 0"),
@@ -191,7 +194,32 @@ struct Setup {
   std::vector<Guide> guides;  // [[dynamics.guide]]
   bool work_balance = false;  // summary.work_balance in the output
   bool positions = false;     // positions {x, y} in the output
+  // contact_stiffness omitted: the Hertz default (hertz_seat_stiffness) at this load [N]
+  bool hertz_stiffness = false;
+  double expected_load = NAN;
 };
+
+// The default roller-seat penalty when contact_stiffness is omitted (docs/models/dynamics.md,
+// "Contact stiffness default"): the roller of diameter d1 in the ISO 606 seating arc (radius
+// ri of the minimum tooth gap, the form the model's seats have), a plane-strain Hertz line
+// contact over the inner width b1, steel on steel (E = 210 GPa, ν = 0.3), with the approach
+// δ(q) of contact::slice_approach (Johnson 1985, eq. 5.36 form); linearised as the secant
+// k = Q0/δ(Q0/b1) at the expected seat load Q0, so that the linear penalty gives the Hertz
+// approach at that load. NaN when the geometry or the approach law has no value.
+double hertz_seat_stiffness(double pitch, double roller, double width, int teeth, double load) {
+  try {
+    const Sprocket probe = iso606_sprocket(pitch, roller, width, teeth, 0.0, 0.0, 1.0, 0.0);
+    contact::RollerTooth c;
+    c.roller_diameter = roller;
+    c.roller_length = width;
+    c.tooth_radius = probe.seat_radius;
+    c.profile = contact::Profile::kConcave;
+    const double delta = contact::slice_approach(c, load / width);
+    return delta > 0.0 && std::isfinite(delta) ? load / delta : NAN;
+  } catch (const InputError&) {
+    return NAN;
+  }
+}
 
 bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
 
@@ -389,8 +417,8 @@ Setup parse(const analysis::Inputs& in) {
   };
   const double links = required("links", "the number of links in the loop, an integer");
   s.stiffness = required("axial_stiffness", "the axial stiffness k of one link, e.g. \"5e7 N/m\"");
-  s.contact_stiffness =
-      required("contact_stiffness", "the roller-seat penalty k_c, e.g. \"2e8 N/m\"");
+  s.contact_stiffness = optional("contact_stiffness", NAN);  // omitted: the Hertz default below
+  s.hertz_stiffness = !line.count("contact_stiffness");
   s.contact_damping = required("contact_damping", "the roller-seat damping c_c [N s/m], e.g. 800");
   s.duration = required("duration", "the simulated time, e.g. \"0.5 s\"");
   s.step = required("step", "the time step h, e.g. \"0.1 ms\"");
@@ -507,6 +535,22 @@ Setup parse(const analysis::Inputs& in) {
                               std::to_string(s.teeth + 4) + ", " + std::to_string(s.teeth + 6) +
                               ", ... (z = " + std::to_string(s.teeth) + ")"});
     }
+  }
+  // contact_stiffness omitted: the Hertz default at the expected seat load, the tight span's
+  // tension T_L/R + pretension (the roller entering the driver takes it)
+  if (s.hertz_stiffness && s.teeth && s.pitch > 0.0 && s.roller > 0.0 && s.width > 0.0 &&
+      s.pretension >= 0.0 && s.load >= 0.0) {
+    const double radius = 0.5 * s.pitch / std::sin(kPi / s.teeth);
+    s.expected_load = s.load / radius + s.pretension;
+    s.contact_stiffness = s.expected_load > 0.0 ? hertz_seat_stiffness(s.pitch, s.roller, s.width,
+                                                                       s.teeth, s.expected_load)
+                                                : NAN;
+    if (std::isnan(s.contact_stiffness))
+      issues.push_back({"dynamics.contact_stiffness", "(missing)",
+                        "the roller-seat penalty k_c, e.g. \"2e8 N/m\" (the Hertz default needs "
+                        "an expected seat load load_torque/R + pretension > 0 that the line "
+                        "contact's approach law covers; here " +
+                            shown(s.expected_load) + " N)"});
   }
   s.gravity = gravity;
   s.work_balance = work_balance;
@@ -899,6 +943,11 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                 {"max_penetration", r.max_penetration}});
   // gravity and guides add fields only when given: a run without them prints what it did before
   if (d.gravity > 0.0) j["gravity"] = d.gravity;
+  // contact_stiffness omitted: the Hertz default used and its linearisation load
+  if (d.hertz_stiffness) {
+    j["contact_stiffness"] = d.contact_stiffness;
+    j["contact_load"] = d.expected_load;
+  }
   if (!d.guides.empty()) {
     j["guides"] = static_cast<int>(d.guides.size());
     j["summary"]["friction_work"] = r.friction_work;
@@ -954,6 +1003,10 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                       {"value", "SI"},
                                       {"limit", "SI"}});
   if (d.gravity > 0.0) j["units"]["gravity"] = "m/s^2";
+  if (d.hertz_stiffness) {
+    j["units"]["contact_stiffness"] = "N/m";
+    j["units"]["contact_load"] = "N";
+  }
   if (!d.guides.empty()) j["units"]["friction_work"] = "J";
   if (d.work_balance) j["units"]["work_balance"] = "J";
   for (const char* key : {"window_start", "window_end"}) j["units"][key] = "s";
