@@ -27,6 +27,11 @@ namespace catena {
 /// with its CSV row: 10⁵ hinge points took 267 MB resident through `catena sweep`), so 10⁶
 /// points are ~2.7 GB. Split a bigger study into several sweeps (or Dask chunks).
 inline constexpr std::size_t kMaxSweepPoints = 1'000'000;
+/// The total work of one sweep of an analysis that estimates its runs' work
+/// (analysis::Analysis::work_of: dynamics), in per-run caps: at most 40 runs' worth at the cap
+/// (dynamics: 40 × 5·10⁷ = 2·10⁹ link-steps, about 1000 s of CPU). Above it the sweep is
+/// refused before anything runs unless every point allows large (allow_large = true).
+inline constexpr double kSweepWorkCaps = 40.0;
 /// Threads of one sweep: more than any machine's cores, few enough that creating them cannot
 /// fail for want of resources.
 inline constexpr unsigned kMaxSweepThreads = 1024;
@@ -123,6 +128,8 @@ struct SweepResult {
 /// of it (with did-you-mean), a shared value that no point replaces and that does not read on
 /// its own (a wrong unit: every point would fail), an empty or repeated axis, both a grid and
 /// points, or none. A swept value that does not read is its point's error, not the request's.
+/// For an analysis that estimates its work (Analysis::work_of), also a total over kSweepWorkCaps
+/// per-run caps (named "grid", with the limit and the estimate) unless every point allows large.
 std::vector<InputSet> sweep_points(const SweepRequest& request);
 
 /// Runs every point (sweep_points, then `catena::run` with `base` overlaid by the point) on

@@ -119,11 +119,11 @@ void check_key(const analysis::Analysis& a, const std::vector<std::string>& know
                         (near ? " (did you mean '" + *near + "'?)" : std::string())});
 }
 
-// catena::run with the shared tables as values: the point's table paths go into its own copy of
-// them, its other inputs bind as catena::run binds them.
-analysis::Record run_with_tables(const std::string& name, const InputSet& inputs,
-                                 const std::vector<TableValue>& tables, const Progress* progress) {
-  const analysis::Analysis* a = find_analysis(name);
+// The point's raw inputs with the shared tables as values: the point's table paths go into its
+// own copy of them, its other inputs read as catena::run reads them.
+std::vector<io::RawInput> point_raw(const analysis::Analysis& a, const InputSet& inputs,
+                                    const std::vector<TableValue>& tables,
+                                    std::vector<Issue>& issues, std::vector<std::string>& unread) {
   std::vector<TableValue> own = tables;
   InputSet plain;
   for (const auto& [key, text] : inputs) {
@@ -151,9 +151,7 @@ analysis::Record run_with_tables(const std::string& name, const InputSet& inputs
       t.entries.push_back(std::move(entry));
     }
   }
-  std::vector<Issue> issues;
-  std::vector<std::string> unread;  // table parameters whose file could not be read
-  std::vector<io::RawInput> raw = io::raw_inputs(*a, plain, issues, unread);
+  std::vector<io::RawInput> raw = io::raw_inputs(a, plain, issues, unread);
   for (TableValue& t : own) {
     io::RawInput r;
     r.key = t.key;
@@ -164,7 +162,59 @@ analysis::Record run_with_tables(const std::string& name, const InputSet& inputs
     r.source = std::move(t.source);
     raw.push_back(std::move(r));
   }
+  return raw;
+}
+
+// catena::run with the shared tables as values (point_raw), bound as catena::run binds.
+analysis::Record run_with_tables(const std::string& name, const InputSet& inputs,
+                                 const std::vector<TableValue>& tables, const Progress* progress) {
+  const analysis::Analysis* a = find_analysis(name);
+  std::vector<Issue> issues;
+  std::vector<std::string> unread;  // table parameters whose file could not be read
+  const std::vector<io::RawInput> raw = point_raw(*a, inputs, tables, issues, unread);
   return io::bind_and_evaluate(*a, raw, std::move(issues), unread, progress);
+}
+
+// A point's estimated work (Analysis::work_of) and whether it allows large; no work for a point
+// whose inputs do not bind (it fails on its own, before any work).
+std::pair<double, bool> point_work(const analysis::Analysis& a, const SweepRequest& request,
+                                   const InputSet& point) {
+  std::vector<Issue> issues;
+  std::vector<std::string> unread;
+  const std::vector<io::RawInput> raw =
+      point_raw(a, merged(request.base, point), request.tables, issues, unread);
+  std::vector<Issue> bound;
+  const analysis::Inputs in = io::bind(a, raw, bound);
+  if (!issues.empty() || !bound.empty()) return {0.0, false};
+  return {a.work_of(in), in.large_allowed()};
+}
+
+// The request's total work against kSweepWorkCaps per-run caps: an issue naming the limit and
+// the estimate, unless every point that works allows large.
+void check_total_work(const analysis::Analysis& a, const SweepRequest& request,
+                      const std::vector<InputSet>& points, std::vector<Issue>& issues) {
+  const analysis::Parameter* capped = nullptr;
+  for (const analysis::Parameter& p : a.parameters)
+    if (p.work.cap > 0) capped = &p;
+  if (!a.work_of || capped == nullptr) return;
+  double total = 0.0;
+  bool allowed = true;
+  for (const InputSet& point : points) {
+    const auto [work, large] = point_work(a, request, point);
+    total += work;
+    if (work > 0.0) allowed = allowed && large;
+  }
+  const double cap = kSweepWorkCaps * static_cast<double>(capped->work.cap);
+  if (total <= cap || allowed) return;
+  const auto g = [](double x) { return analysis::format_g(x, 4); };
+  issues.push_back(
+      {"grid",
+       std::to_string(points.size()) + " points, " + g(total) + " " + a.work_unit + " in all",
+       "at most " + g(cap) + " " + a.work_unit + " in one sweep (" + g(kSweepWorkCaps) +
+           " runs at the per-run cap of " + g(static_cast<double>(capped->work.cap)) + ", about " +
+           g(capped->work.estimated_seconds(cap)) + " s of CPU; this one about " +
+           g(capped->work.estimated_seconds(total)) + " s); allow_large = true in [analyses." +
+           a.name + "] (or on every point) runs it anyway, or split the sweep"});
 }
 
 // Runs one point into its slot. Only InputError is the point's own: anything else is kept for
@@ -356,7 +406,11 @@ std::vector<InputSet> sweep_points(const SweepRequest& request) {
   }
   throw_if_any(issues);
 
-  if (request.grid.empty()) return request.points;
+  if (request.grid.empty()) {
+    check_total_work(*a, request, request.points, issues);
+    throw_if_any(issues);
+    return request.points;
+  }
   std::vector<InputSet> out;
   out.reserve(total);
   std::vector<std::size_t> index(request.grid.size(), 0);
@@ -372,6 +426,8 @@ std::vector<InputSet> sweep_points(const SweepRequest& request) {
       index[k] = 0;
     }
   }
+  check_total_work(*a, request, out, issues);
+  throw_if_any(issues);
   return out;
 }
 

@@ -362,5 +362,54 @@ TEST(Sweep, TablesReachEveryPointAndAnAxisMayVaryAValueInside) {
   fs::remove_all(dir);
 }
 
+// A sweep's total work (steps × links summed over its points, Analysis::work_of) is capped at
+// kSweepWorkCaps per-run caps, 2e9 link-steps for dynamics, before anything runs: 42 points of
+// 150 s on 32 links (4.8e7 link-steps each, under the per-run cap of 5e7) are 2.016e9, over it;
+// 41 are 1.968e9, under it. A point over the per-run cap (1000 s) is its own error and adds no
+// work; allow_large on every point lifts the total cap as it lifts each point's.
+TEST(Sweep, ADynamicsSweepsTotalWorkIsCappedBeforeAnythingRuns) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "catena_sweep_work";
+  fs::create_directories(dir);
+  const fs::path file = dir / "drive.toml";
+  std::ofstream(file) << drive_toml("10");
+  const analysis::Parameter& table = *find_analysis("dynamics")->parameter("dynamics");
+  const io::RawInput raw = io::table_input(io::read_case(file.string()), table);
+  auto request = [&](int points) {
+    SweepRequest r;
+    r.analysis = "dynamics";
+    r.tables = {{raw.key, raw.table, raw.tables, raw.source}};
+    std::vector<std::string> torques;
+    for (int i = 1; i <= points; ++i) torques.push_back(std::to_string(i));
+    // (the output interval keeps the series under the 200 000 samples a run may hold)
+    r.grid = {{"dynamics.sprocket[1].load_torque", torques},
+              {"duration", {"150s", "1000s"}},
+              {"dynamics.output_interval", {"1 ms"}}};
+    return r;
+  };
+  try {
+    sweep_points(request(42));
+    ADD_FAILURE() << "not refused";
+  } catch (const InputError& e) {
+    ASSERT_EQ(e.issues().size(), 1u) << e.what();
+    EXPECT_EQ(e.issues()[0].field, "grid");
+    EXPECT_EQ(e.issues()[0].value, "84 points, 2.016e+09 link-steps in all");
+    EXPECT_NE(e.issues()[0].expected.find("at most 2e+09 link-steps in one sweep"),
+              std::string::npos)
+        << e.what();
+    EXPECT_NE(e.issues()[0].expected.find("allow_large = true in [analyses.dynamics]"),
+              std::string::npos)
+        << e.what();
+  }
+  // sweep() refuses it too, before any point runs (a run would take minutes)
+  EXPECT_THROW(sweep(request(42), {.threads = 1, .progress = {}, .keep_records = false}),
+               InputError);
+  EXPECT_EQ(sweep_points(request(41)).size(), 82u);
+  SweepRequest large = request(42);
+  large.base.emplace_back(std::string(analysis::kAllowLarge), "true");
+  EXPECT_EQ(sweep_points(large).size(), 84u);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace catena

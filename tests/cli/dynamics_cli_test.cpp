@@ -98,6 +98,72 @@ TEST(DynamicsCli, ExampleDriveGivesItsClosedForms) {
   EXPECT_LT(driver, 1.05 * load);
 }
 
+// summary.sprocket_<i> and summary.span_<j>: the means (and a span's least and greatest
+// tension) over the stated window, recomputed here from the JSON's own series: on the example
+// the whole tooth periods after half the run (mean_over_periods from t_end/2, the validations'
+// mean), on a run shorter than two tooth periods the whole second half.
+TEST(DynamicsCli, SummaryMeansAreTheSeriesOverTheWindow) {
+  const double period = 2 * kPi / (12 * 13.0);  // the driver's tooth period, z = 12 at 13 rad/s
+  for (const char* duration : {"0.5s", "6ms"}) {
+    const CliRun r = run("dynamics " + kExample + " --duration " + duration + " --format json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const auto time = j["time"].get<std::vector<double>>();
+    const auto& summary = j["summary"];
+    const double t0 = 0.5 * time.back();
+    const int periods = static_cast<int>(std::floor((time.back() - t0) / period));
+    const double end = periods > 0 ? t0 + periods * period : time.back();
+    EXPECT_EQ(summary["window_start"].get<double>(), t0) << duration;
+    EXPECT_EQ(summary["window_end"].get<double>(), end) << duration;
+    EXPECT_EQ(summary["window_periods"].get<int>(), periods) << duration;
+    EXPECT_EQ(periods, std::string(duration) == "0.5s" ? 6 : 0);  // 0.25 s / 40.3 ms
+    int samples = 0;
+    for (double t : time) samples += t > t0 && t <= end;
+    EXPECT_EQ(summary["window_samples"].get<int>(), samples);
+    EXPECT_GT(samples, 10);
+    // a plain mean over the window's samples, and the validations' whole-period mean
+    auto window_mean = [&](const std::vector<double>& x) {
+      double sum = 0.0;
+      for (std::size_t k = 0; k < time.size(); ++k)
+        if (time[k] > t0 && time[k] <= end) sum += x[k];
+      return sum / samples;
+    };
+    auto near = [](double got, double want) {
+      EXPECT_NEAR(got, want, 1e-12 * std::abs(want) + 1e-12);
+    };
+    for (std::size_t w = 0; w < 2; ++w) {
+      const auto& s = summary["sprocket_" + std::to_string(w)];
+      for (const char* key : {"speed", "torque"}) {
+        const auto x = j["sprocket"][w][key].get<std::vector<double>>();
+        near(s[std::string("mean_") + key].get<double>(), window_mean(x));
+        if (periods > 0)
+          near(s[std::string("mean_") + key].get<double>(), mean_over_periods(time, x, t0, period));
+      }
+    }
+    EXPECT_EQ(summary["sprocket_0"]["mean_speed"].get<double>(), 13.0);  // prescribed
+    for (std::size_t k = 0; k < 2; ++k) {
+      const auto& s = summary["span_" + std::to_string(k)];
+      const auto x = j["span"][k]["tension"].get<std::vector<double>>();
+      near(s["mean_tension"].get<double>(), window_mean(x));
+      double least = INFINITY, most = -INFINITY;
+      for (std::size_t i = 0; i < time.size(); ++i) {
+        if (!(time[i] > t0 && time[i] <= end)) continue;
+        least = std::min(least, x[i]);
+        most = std::max(most, x[i]);
+      }
+      EXPECT_EQ(s["min_tension"].get<double>(), least);
+      EXPECT_EQ(s["max_tension"].get<double>(), most);
+      EXPECT_LT(least, s["mean_tension"].get<double>());
+      EXPECT_GT(most, s["mean_tension"].get<double>());
+    }
+    for (const char* key : {"mean_tension", "min_tension", "max_tension"})
+      EXPECT_EQ(j["units"][key], "N");
+    EXPECT_EQ(j["units"]["mean_torque"], "N m");
+    EXPECT_EQ(j["units"]["mean_speed"], "rad/s");
+    EXPECT_EQ(j["units"]["window_start"], "s");
+  }
+}
+
 TEST(DynamicsCli, CsvTableAndOverrides) {
   const CliRun csv = run("dynamics " + kExample + " --duration 2ms --step 0.5ms --format csv");
   ASSERT_EQ(csv.status, 0) << csv.err;
@@ -251,6 +317,163 @@ TEST(DynamicsCli, SeatFrictionIsOptInAndInTheBalance) {
   EXPECT_FALSE(p.contains("seat_friction"));
   EXPECT_FALSE(p["summary"].contains("seat_friction_work"));
   EXPECT_FALSE(p["units"].contains("seat_friction_work"));
+}
+
+// `positions = true` adds every node's x and y at each output sample: each link's length is the
+// pitch within its stretch (the tension over k, < 0.2 %), and the report's animation frames (its
+// own copy of the positions, drawn in mm to 1 µm) show the same nodes at the same times.
+// Without it there is no such field; the size is capped, and a value other than true or false
+// is named with its line.
+TEST(DynamicsCli, PositionsAreOptInAndMatchTheAnimation) {
+  std::stringstream text;
+  text << std::ifstream(kExample).rdbuf();
+  std::string with = text.str();
+  const std::size_t at = with.find("[dynamics]\n");
+  ASSERT_NE(at, std::string::npos);
+  with.insert(at + 11, "positions = true\n");
+  const std::string file = write("positions.toml", with);
+  const CliRun r = run("dynamics " + file + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("positions"));
+  EXPECT_EQ(j["units"]["x"], "m");
+  EXPECT_EQ(j["units"]["y"], "m");
+  const auto time = j["time"].get<std::vector<double>>();
+  const auto x = j["positions"]["x"].get<std::vector<std::vector<double>>>();
+  const auto y = j["positions"]["y"].get<std::vector<std::vector<double>>>();
+  ASSERT_EQ(x.size(), time.size());
+  ASSERT_EQ(y.size(), time.size());
+  const double pitch = 0.01905;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    ASSERT_EQ(x[k].size(), 32u);
+    ASSERT_EQ(y[k].size(), 32u);
+    for (std::size_t i = 0; i < 32; ++i) {
+      const std::size_t e = (i + 1) % 32;
+      worst =
+          std::max(worst, std::abs(std::hypot(x[k][e] - x[k][i], y[k][e] - y[k][i]) / pitch - 1));
+    }
+  }
+  EXPECT_LT(worst, 2e-3);
+  EXPECT_GT(worst, 0.0);  // the links stretch: these are the model's positions, not a drawing
+
+  const fs::path html = fs::temp_directory_path() / "catena_dynamics_cli_test" / "positions.html";
+  const CliRun report = run("report " + file + " -o " + html.string());
+  ASSERT_EQ(report.status, 0) << report.err;
+  std::stringstream page;
+  page << std::ifstream(html).rdbuf();
+  const auto extra = chart_list(page.str(), "catena-charts-extra");
+  ASSERT_EQ(extra.size(), 2u);
+  const auto& frames = extra[1]["frames"];
+  ASSERT_GE(frames.size(), 50u);
+  for (const auto& frame : frames) {
+    // "t = 0.1234 s": the sample nearest that time (the frames fall on steps; a sample every step)
+    const double t = std::stod(frame["name"].get<std::string>().substr(4));
+    std::size_t k = 0;
+    for (std::size_t m = 0; m < time.size(); ++m)
+      if (std::abs(time[m] - t) < std::abs(time[k] - t)) k = m;
+    const auto cx = frame["traces"][2]["x"].get<std::vector<double>>();
+    const auto cy = frame["traces"][2]["y"].get<std::vector<double>>();
+    ASSERT_EQ(cx.size(), 33u);
+    for (std::size_t i = 0; i < 33; ++i) {
+      EXPECT_NEAR(cx[i], x[k][i % 32] * 1e3, 1e-3) << frame["name"] << " node " << i;
+      EXPECT_NEAR(cy[i], y[k][i % 32] * 1e3, 1e-3) << frame["name"] << " node " << i;
+    }
+  }
+
+  const CliRun plain = run("dynamics " + kExample + " --duration 1ms --format json");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const auto p = nlohmann::json::parse(plain.out);
+  EXPECT_FALSE(p.contains("positions"));
+  EXPECT_FALSE(p["units"].contains("x"));
+
+  // 20 001 samples × 32 nodes = 640 032 node-samples, over the 500 000 cap
+  const CliRun big = run("dynamics " + file + " --duration 20s --step 1ms");
+  EXPECT_EQ(big.status, 2);
+  EXPECT_NE(big.err.find("dynamics.positions (line 13)"), std::string::npos) << big.err;
+  EXPECT_NE(big.err.find("at most 500000 node-samples"), std::string::npos) << big.err;
+  EXPECT_NE(big.err.find("here 640032"), std::string::npos) << big.err;
+
+  std::string bad = text.str();
+  bad.insert(at + 11, "positions = 1\n");
+  const CliRun e = run("dynamics " + write("positions_bad.toml", bad));
+  EXPECT_EQ(e.status, 2);
+  EXPECT_NE(e.err.find("dynamics.positions"), std::string::npos) << e.err;
+  EXPECT_NE(e.err.find("true or false"), std::string::npos) << e.err;
+}
+
+// contact_stiffness omitted: the Hertz default, the secant Q0/δ(Q0) of the plane-strain line
+// contact (Johnson 1985, eq. 5.36 form) of the 12B roller (d1 = 12.07 mm) in the ISO 606
+// minimum seating arc (ri = 0.505 d1) over the inner width b1 = 11.68 mm, steel on steel, at
+// the expected seat load Q0 = T_L/R + pretension — recomputed here from those formulas, not
+// through the library. The JSON then names it (contact_stiffness, contact_load); a case that
+// gives it has no such fields; no load and no pretension leave nothing to linearise at.
+TEST(DynamicsCli, ContactStiffnessDefaultsToTheHertzLineContact) {
+  std::stringstream text;
+  text << std::ifstream(kExample).rdbuf();
+  std::string without = text.str();
+  const std::size_t at = without.find("contact_stiffness = ");
+  ASSERT_NE(at, std::string::npos);
+  without.erase(at, without.find('\n', at) + 1 - at);
+  const std::string file = write("hertz.toml", without);
+  const CliRun r = run("dynamics " + file + " --duration 20ms --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["diagnostics"].empty()) << j["diagnostics"].dump();
+  const double d1 = 12.07e-3, b1 = 11.68e-3, pitch = 0.01905, modulus = 210e9, nu = 0.3;
+  const double radius = 0.5 * pitch / std::sin(kPi / 12);
+  const double load = 10.0 / radius + 950.0;
+  const double q = load / b1;
+  const double ri = 0.505 * d1;
+  const double rho = d1 * ri / (2 * (ri - 0.5 * d1));  // roller in the concave seat
+  const double e_star = modulus / (2 * (1 - nu * nu));
+  const double half_width = std::sqrt(4 * q * rho / (kPi * e_star));
+  const double approach =
+      q / kPi * 2 * (1 - nu * nu) / modulus * (2 * std::log(4 * 0.5 * d1 / half_width) - 1);
+  EXPECT_NEAR(j["contact_load"].get<double>(), load, 1e-9 * load);
+  EXPECT_NEAR(j["contact_stiffness"].get<double>(), load / approach, 1e-9 * load / approach);
+  EXPECT_EQ(j["units"]["contact_stiffness"], "N/m");
+  // the approach at the load is what the linear penalty reproduces: a few µm
+  EXPECT_GT(approach, 1e-6);
+  EXPECT_LT(approach, 3e-6);
+  EXPECT_LT(j["summary"]["max_penetration"].get<double>(), 10 * approach);
+
+  const auto given =
+      nlohmann::json::parse(run("dynamics " + kExample + " --duration 1ms --format json").out);
+  EXPECT_FALSE(given.contains("contact_stiffness"));
+  EXPECT_FALSE(given["units"].contains("contact_stiffness"));
+
+  std::string unloaded = without;
+  for (const std::string key : {"pretension = ", "load_torque = "}) {
+    const std::size_t k = unloaded.find(key);
+    ASSERT_NE(k, std::string::npos);
+    unloaded.erase(k, unloaded.find('\n', k) + 1 - k);
+  }
+  const CliRun none = run("dynamics " + write("hertz_unloaded.toml", unloaded));
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.err.find("dynamics.contact_stiffness = (missing)"), std::string::npos) << none.err;
+  EXPECT_NE(none.err.find("expected seat load"), std::string::npos) << none.err;
+
+  // the free layout (examples/dynamics_three_wheels.toml): the expected load is the pretension
+  // plus each driven wheel's T_L/R (one driven z = 18 wheel with 10 N m here), and the same law
+  std::stringstream three_text;
+  three_text
+      << std::ifstream(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_three_wheels.toml").rdbuf();
+  std::string three = three_text.str();
+  const std::size_t k3 = three.find("contact_stiffness = ");
+  ASSERT_NE(k3, std::string::npos);
+  three.erase(k3, three.find('\n', k3) + 1 - k3);
+  const CliRun r3 =
+      run("dynamics " + write("hertz_three.toml", three) + " --duration 5ms --format json");
+  ASSERT_EQ(r3.status, 0) << r3.err;
+  const auto j3 = nlohmann::json::parse(r3.out);
+  const double load3 = 10.0 / (0.5 * pitch / std::sin(kPi / 18)) + 950.0;
+  EXPECT_NEAR(j3["contact_load"].get<double>(), load3, 1e-9 * load3);
+  const double q3 = load3 / b1;
+  const double hw3 = std::sqrt(4 * q3 * rho / (kPi * e_star));
+  const double approach3 =
+      q3 / kPi * 2 * (1 - nu * nu) / modulus * (2 * std::log(4 * 0.5 * d1 / hw3) - 1);
+  EXPECT_NEAR(j3["contact_stiffness"].get<double>(), load3 / approach3, 1e-9 * load3 / approach3);
 }
 
 // `catena report` on the example: the time series (each curve's extremes those of the JSON),

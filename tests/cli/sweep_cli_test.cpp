@@ -1,6 +1,7 @@
 // `catena sweep`: one analysis of a case file over a grid, as CSV.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -268,10 +269,17 @@ TEST(SweepCli, ADynamicsSweepTakesTheCasesTableAndVariesAValueInIt) {
     const std::string& file = rows[r][0] == "5" ? light.string() : drive;
     const CliRun alone = run("dynamics " + file + " --duration " + rows[r][1] + " --format json");
     ASSERT_EQ(alone.status, 0) << alone.err;
-    EXPECT_EQ(expect_row_equals(rows[0], rows[r], 2, nlohmann::json::parse(alone.out)), 9u) << r;
+    // 9 of the run's scalars, then the summary's window (4) and its means and extremes: 2
+    // sprockets × 2, 2 spans × 3
+    EXPECT_EQ(expect_row_equals(rows[0], rows[r], 2, nlohmann::json::parse(alone.out)), 23u) << r;
     drift.push_back(std::strtod(rows[r][2 + 9].c_str(), nullptr));
   }
   EXPECT_EQ(rows[0][2 + 9], "summary.energy_drift [J]");
+  for (const char* column :
+       {"summary.window_start [s]", "summary.sprocket_1.mean_speed [rad/s]",
+        "summary.sprocket_1.mean_torque [N m]", "summary.span_0.mean_tension [N]",
+        "summary.span_0.max_tension [N]", "summary.span_1.min_tension [N]"})
+    EXPECT_NE(std::find(rows[0].begin(), rows[0].end(), column), rows[0].end()) << column;
   EXPECT_NE(drift[0], drift[2]);    // the load torque changed the run
   EXPECT_EQ(rows[1][2 + 5], "40");  // summary.steps: 4 ms of 0.1 ms steps
   EXPECT_EQ(rows[2][2 + 5], "60");
@@ -279,6 +287,28 @@ TEST(SweepCli, ADynamicsSweepTakesTheCasesTableAndVariesAValueInIt) {
   ASSERT_EQ(two.status, 0) << two.err;
   EXPECT_EQ(without_wall_clock(two.out), without_wall_clock(one.out));
   fs::remove(light);
+}
+
+// A dynamics sweep whose points add up to more than the total work cap (2e9 link-steps) is
+// refused with exit 2 before anything runs, nothing written, naming the limit and the estimate;
+// a sweep under it runs (the test above).
+TEST(SweepCli, ADynamicsSweepOverTheTotalWorkCapIsRefused) {
+  const std::string drive = kExamples + "/dynamics_12B.toml";
+  const fs::path out = fs::temp_directory_path() / "catena_sweep_total_work.csv";
+  fs::remove(out);
+  const CliRun r = run("sweep " + drive +
+                       " --grid 'dynamics.sprocket[1].load_torque=1:42' --grid duration=150s" +
+                       " --grid dynamics.output_interval=1ms -o " + out.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_NE(r.err.find("--grid = 42 points, 2.016e+09 link-steps in all: expected at most 2e+09 "
+                       "link-steps in one sweep (40 runs at the per-run cap of 5e+07"),
+            std::string::npos)
+      << r.err;
+  const CliRun under = run("sweep " + drive + " --grid duration=2ms,3ms");
+  EXPECT_EQ(under.status, 0) << under.err;
+  EXPECT_EQ(cells(under.out).size(), 3u);
 }
 
 // The loop analysis (its one input is the [loop] table) and wear with tension_source = "loop"

@@ -50,6 +50,13 @@ struct Analysis {
     std::vector<std::string> not_shared;
   };
   std::vector<std::pair<std::string, Variant>> variants;
+  /// The work of one run from its bound inputs, without running it, in `work_unit`s — the
+  /// measure of its table parameter's `work` cap (dynamics: link-steps, duration/step × links);
+  /// 0 for inputs the run refuses (it does no work). Set by an analysis whose size follows from
+  /// several values; a sweep sums it over its points and refuses a total over
+  /// kSweepWorkCaps × the per-run cap (catena/sweep.hpp) unless every point allows large.
+  std::function<double(const Inputs&)> work_of;
+  std::string work_unit;  ///< "link-steps"
 
   /// The problems of the size parameters of `inputs` whose value is above its cap (unless
   /// `inputs.large_allowed()`), each naming the value, the estimated time and memory and the

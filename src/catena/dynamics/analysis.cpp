@@ -22,6 +22,7 @@
 #include <sstream>
 
 #include "catena/contact/chain_catalog.hpp"
+#include "catena/contact/roller_tooth.hpp"
 #include "catena/core/progress.hpp"
 #include "catena/drive/sprocket.hpp"
 #include "catena/dynamics/integrator.hpp"
@@ -49,6 +50,8 @@ constexpr double kPi = std::numbers::pi;
 // link with sprockets on the reference machine (docs/performance.md: 100 µs a step at 200
 // links), so the cap is about 25 s; memory is about 200 bytes a node, whatever the steps.
 constexpr double kMaxSamples = 200'000;  // samples of the series
+// node-samples (links × samples) of the opt-in positions: 10⁶ coordinates, about 20 MB of JSON
+constexpr double kMaxPositions = 500'000;
 constexpr analysis::Work kWork{.cap = 50'000'000, .seconds = 0.5e-6, .bytes = 0.0};
 
 std::vector<Parameter> table_fields() {
@@ -69,7 +72,9 @@ std::vector<Parameter> table_fields() {
       quantity("axial_stiffness", K::kForcePerLength, "axial stiffness k of one link [N/m]"),
       number("axial_damping", "axial damping c of one link [N s/m], >= 0 (default 0)"),
       quantity("pretension", K::kForce, "the loop's tension at rest, >= 0 (default 0)"),
-      quantity("contact_stiffness", K::kForcePerLength, "roller-seat penalty k_c [N/m]"),
+      quantity("contact_stiffness", K::kForcePerLength,
+               "roller-seat penalty k_c [N/m] (default: the Hertz line contact's secant "
+               "stiffness at the expected load)"),
       number("contact_damping", "roller-seat damping c_c [N s/m], >= 0"),
       number("seat_friction",
              "Coulomb friction coefficient mu of the roller-seat contact in [0, 1] (default 0)"),
@@ -93,7 +98,10 @@ std::vector<Parameter> table_fields() {
       quantity("face_radius", K::kLength,
                "rolling: the roller's concave face R2 > R1 (default: a flat face)"),
       quantity("hinge_band", K::kAngularSpeed,
-               "rate band of the regularised hinge friction, in (0, 100] rad/s (default 5 rad/s)")};
+               "rate band of the regularised hinge friction, in (0, 100] rad/s (default 5 rad/s)"),
+      text("positions",
+           "true to add every node's x and y at each output sample to the JSON (default false; "
+           "at most 500000 node-samples)")};
 }
 
 // [[dynamics.guide]]: a rail the rollers slide on (docs/models/dynamics.md, "Guides"), in the
@@ -229,7 +237,33 @@ struct Setup {
   bool layout() const { return !wheels.empty(); }
   std::string hinge = "frictionless";  // frictionless, sliding or rolling
   HingeFriction hinge_law;             // arm 0 when frictionless
+  bool positions = false;              // positions {x, y} in the output
+  // contact_stiffness omitted: the Hertz default (hertz_seat_stiffness) at this load [N]
+  bool hertz_stiffness = false;
+  double expected_load = NAN;
 };
+
+// The default roller-seat penalty when contact_stiffness is omitted (docs/models/dynamics.md,
+// "Contact stiffness default"): the roller of diameter d1 in the ISO 606 seating arc (radius
+// ri of the minimum tooth gap, the form the model's seats have), a plane-strain Hertz line
+// contact over the inner width b1, steel on steel (E = 210 GPa, ν = 0.3), with the approach
+// δ(q) of contact::slice_approach (Johnson 1985, eq. 5.36 form); linearised as the secant
+// k = Q0/δ(Q0/b1) at the expected seat load Q0, so that the linear penalty gives the Hertz
+// approach at that load. NaN when the geometry or the approach law has no value.
+double hertz_seat_stiffness(double pitch, double roller, double width, int teeth, double load) {
+  try {
+    const Sprocket probe = iso606_sprocket(pitch, roller, width, teeth, 0.0, 0.0, 1.0, 0.0);
+    contact::RollerTooth c;
+    c.roller_diameter = roller;
+    c.roller_length = width;
+    c.tooth_radius = probe.seat_radius;
+    c.profile = contact::Profile::kConcave;
+    const double delta = contact::slice_approach(c, load / width);
+    return delta > 0.0 && std::isfinite(delta) ? load / delta : NAN;
+  } catch (const InputError&) {
+    return NAN;
+  }
+}
 
 bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
 
@@ -488,6 +522,7 @@ Setup parse(const analysis::Inputs& in) {
   bool work_balance = false;
   std::string hinge = "frictionless";
   bool hinge_known = true;
+  bool positions = false;
   for (const Entry& v : file.table) {
     if (v.path.rfind("dynamics.", 0) != 0) continue;  // the rest of a case file is not ours
     std::smatch m;
@@ -595,6 +630,14 @@ Setup parse(const analysis::Inputs& in) {
       }
       continue;
     }
+    if (key == "positions") {
+      line[key] = v.line;
+      if (v.is_boolean)
+        positions = v.text == "true";
+      else
+        issues.push_back({where(v), "'" + v.text + "'", "true or false"});
+      continue;
+    }
     if (key.rfind("guide", 0) == 0) {
       issues.push_back({where(v), v.text, "guides as an array of tables: [[dynamics.guide]]"});
       continue;
@@ -673,8 +716,8 @@ Setup parse(const analysis::Inputs& in) {
   const double links = layout ? optional("links", NAN)
                               : required("links", "the number of links in the loop, an integer");
   s.stiffness = required("axial_stiffness", "the axial stiffness k of one link, e.g. \"5e7 N/m\"");
-  s.contact_stiffness =
-      required("contact_stiffness", "the roller-seat penalty k_c, e.g. \"2e8 N/m\"");
+  s.contact_stiffness = optional("contact_stiffness", NAN);  // omitted: the Hertz default below
+  s.hertz_stiffness = !line.count("contact_stiffness");
   s.contact_damping = required("contact_damping", "the roller-seat damping c_c [N s/m], e.g. 800");
   s.duration = required("duration", "the simulated time, e.g. \"0.5 s\"");
   s.step = required("step", "the time step h, e.g. \"0.1 ms\"");
@@ -801,6 +844,35 @@ Setup parse(const analysis::Inputs& in) {
                               ", ... (z = " + std::to_string(s.teeth) + ")"});
     }
   }
+  // contact_stiffness omitted: the Hertz default at the expected seat load, the tight span's
+  // tension T_L/R + pretension (the roller entering the driver takes it)
+  // (in the free layout: the pretension plus every driven wheel's load over its pitch radius;
+  // the seat's form, and so the stiffness, does not depend on the teeth)
+  int probe_teeth = s.layout() ? 0 : s.teeth;
+  double driven_pull = 0.0;  // [N] Σ T_L/R
+  if (s.layout()) {
+    probe_teeth = s.wheels.empty() ? 0 : s.wheels.front().teeth;
+    for (const LayoutWheel& w : s.wheels) {
+      if (w.teeth < 3) probe_teeth = 0;  // already reported
+      if (w.role == "driven" && w.teeth >= 3)
+        driven_pull += w.load / (0.5 * s.pitch / std::sin(kPi / w.teeth));
+    }
+  } else if (s.teeth) {
+    driven_pull = s.load / (0.5 * s.pitch / std::sin(kPi / s.teeth));
+  }
+  if (s.hertz_stiffness && probe_teeth && s.pitch > 0.0 && s.roller > 0.0 && s.width > 0.0 &&
+      s.pretension >= 0.0 && s.load >= 0.0) {
+    s.expected_load = driven_pull + s.pretension;
+    s.contact_stiffness = s.expected_load > 0.0 ? hertz_seat_stiffness(s.pitch, s.roller, s.width,
+                                                                       probe_teeth, s.expected_load)
+                                                : NAN;
+    if (std::isnan(s.contact_stiffness))
+      issues.push_back({"dynamics.contact_stiffness", "(missing)",
+                        "the roller-seat penalty k_c, e.g. \"2e8 N/m\" (the Hertz default needs "
+                        "an expected seat load load_torque/R + pretension > 0 that the line "
+                        "contact's approach law covers; here " +
+                            shown(s.expected_load) + " N)"});
+  }
   s.gravity = gravity;
   s.work_balance = work_balance;
   // hinge friction: each kind's keys, required or defaulted, the other kinds' keys refused
@@ -869,6 +941,7 @@ Setup parse(const analysis::Inputs& in) {
            "a friction arm (mu r or c_r R*) below p/2 = " + shown(0.5 * s.pitch) + " m"});
     s.hinge_law.arm = arm;
   }
+  s.positions = positions;
   // the guides: kind and its geometry, all present; then the core's checks (named per field)
   for (std::size_t i = 0; i < guides.size(); ++i) {
     const GuideInput& g = guides[i];
@@ -970,6 +1043,12 @@ Setup parse(const analysis::Inputs& in) {
                         "at least duration / " + shown(kMaxSamples) + " = " +
                             shown(s.duration / kMaxSamples) + " s (at most " + shown(kMaxSamples) +
                             " samples; here " + shown(samples) + ")"});
+    // the opt-in positions: links × samples node positions, held until the end
+    if (s.positions && samples * s.links > kMaxPositions)
+      issues.push_back({at("positions"), "true",
+                        "at most " + shown(kMaxPositions) +
+                            " node-samples (links x samples; here " + shown(samples * s.links) +
+                            "): raise output_interval, shorten the run, or positions = false"});
   }
   throw_if_any(issues);
   return s;
@@ -984,6 +1063,8 @@ struct Result {
   std::vector<double> time;
   std::vector<Series> sprocket;           // 2
   std::vector<std::vector<double>> span;  // upper, lower
+  // positions = true: every node's x and y at each sample, [sample][node]
+  std::vector<std::vector<double>> node_x, node_y;
   int steps = 0;
   double wall_time = 0.0, energy_drift = 0.0, max_penetration = 0.0;
   double friction_work = 0.0;
@@ -1164,6 +1245,10 @@ Result run(const analysis::Inputs& in) {
     }
     out.span[0].push_back(tension[top]);
     out.span[1].push_back(tension[bottom]);
+    if (d.positions) {
+      out.node_x.push_back(s.x);
+      out.node_y.push_back(s.y);
+    }
     since = 0;
   };
   const int steps = static_cast<int>(std::lround(d.duration / d.step));
@@ -1247,6 +1332,56 @@ std::string fixed(double x, int digits) {
   return buf;
 }
 
+// The summary's window (docs/models/dynamics.md, "Summary"): the whole tooth periods of the
+// driver, T = 2π/(z ω), after half the run, (t_end/2, t_end/2 + n T] with n = ⌊(t_end/2)/T⌋ —
+// the second half is taken as past the start-up transient (as the table's means and the
+// spectrum take it), and whole periods keep the polygonal action's ripple out of the means.
+// A second half shorter than one period gives the whole second half, (t_end/2, t_end]; a run
+// with no sample after t = 0 gives its one sample.
+struct Window {
+  double start = 0.0, end = 0.0;
+  int periods = 0;                  // n, 0 when the second half holds no whole period
+  std::size_t first = 0, last = 0;  // the samples in the window: [first, last)
+};
+
+Window summary_window(const std::vector<double>& time, double period) {
+  Window w;
+  const double t_end = time.back();
+  w.start = 0.5 * t_end;
+  const double n = std::floor((t_end - w.start) / period);
+  w.periods = n >= 1.0 && n < 1e9 ? static_cast<int>(n) : 0;
+  w.end = w.periods > 0 ? w.start + n * period : t_end;
+  w.first = time.size();
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    if (time[k] > w.start && time[k] <= w.end) {
+      w.first = std::min(w.first, k);
+      w.last = k + 1;
+    }
+  }
+  if (w.first >= w.last) {  // only the t = 0 sample
+    w.first = time.size() - 1;
+    w.last = time.size();
+    w.start = w.end = t_end;
+  }
+  return w;
+}
+
+struct Stats {
+  double mean = 0.0, min = INFINITY, max = -INFINITY;
+};
+
+Stats window_stats(const std::vector<double>& x, const Window& w) {
+  Stats s;
+  double sum = 0.0;
+  for (std::size_t k = w.first; k < w.last; ++k) {
+    sum += x[k];
+    s.min = std::min(s.min, x[k]);
+    s.max = std::max(s.max, x[k]);
+  }
+  s.mean = sum / static_cast<double>(w.last - w.first);
+  return s;
+}
+
 Record describe(const Result& r, const analysis::Inputs&) {
   const Setup& d = r.setup;
   Record rec;
@@ -1315,6 +1450,11 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                 {"max_penetration", r.max_penetration}});
   // gravity and guides add fields only when given: a run without them prints what it did before
   if (d.gravity > 0.0) j["gravity"] = d.gravity;
+  // contact_stiffness omitted: the Hertz default used and its linearisation load
+  if (d.hertz_stiffness) {
+    j["contact_stiffness"] = d.contact_stiffness;
+    j["contact_load"] = d.expected_load;
+  }
   if (!d.guides.empty()) {
     j["guides"] = static_cast<int>(d.guides.size());
     j["summary"]["friction_work"] = r.friction_work;
@@ -1342,6 +1482,33 @@ Record describe(const Result& r, const analysis::Inputs&) {
     if (d.seat_friction > 0.0) j["summary"]["work_balance"]["seat_friction"] = r.seat_friction_work;
     if (hinge_on) j["summary"]["work_balance"]["hinge_friction"] = r.hinge_work;
   }
+  // the scalar summaries a sweep takes as columns (objects, not arrays: arrays are series to a
+  // sweep): each sprocket's mean speed and torque, each span's mean, least and greatest tension,
+  // over the window of summary_window(), all added after the fields above
+  const Window win = summary_window(r.time, 2 * kPi / (d.teeth * d.speed));
+  j["summary"]["window_start"] = win.start;
+  j["summary"]["window_end"] = win.end;
+  j["summary"]["window_periods"] = win.periods;
+  j["summary"]["window_samples"] = static_cast<long long>(win.last - win.first);
+  for (std::size_t w = 0; w < r.sprocket.size(); ++w) {
+    j["summary"]["sprocket_" + std::to_string(w)] =
+        Value::object({{"mean_speed", window_stats(r.sprocket[w].speed, win).mean},
+                       {"mean_torque", window_stats(r.sprocket[w].torque, win).mean}});
+  }
+  for (std::size_t k = 0; k < r.span.size(); ++k) {
+    const Stats t = window_stats(r.span[k], win);
+    j["summary"]["span_" + std::to_string(k)] =
+        Value::object({{"mean_tension", t.mean}, {"min_tension", t.min}, {"max_tension", t.max}});
+  }
+  // opt-in (positions = true): positions.x[k][i], positions.y[k][i], node i at time[k]
+  if (d.positions) {
+    Value x = Value::array(), y = Value::array();
+    for (std::size_t k = 0; k < r.node_x.size(); ++k) {
+      x.push_back(Value(r.node_x[k]));
+      y.push_back(Value(r.node_y[k]));
+    }
+    j["positions"] = Value::object({{"x", std::move(x)}, {"y", std::move(y)}});
+  }
   j["diagnostics"] = analysis::diagnostics_value(r.diagnostics);
   j["units"] = analysis::units_value({{"pitch", "m"},
                                       {"centre_distance", "m"},
@@ -1361,6 +1528,10 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (d.layout())
     for (const char* key : {"path_length", "laid_pitch", "centre_x", "centre_y"})
       j["units"][key] = "m";
+  if (d.hertz_stiffness) {
+    j["units"]["contact_stiffness"] = "N/m";
+    j["units"]["contact_load"] = "N";
+  }
   if (!d.guides.empty()) j["units"]["friction_work"] = "J";
   if (d.seat_friction > 0.0) j["units"]["seat_friction_work"] = "J";
   if (d.work_balance) j["units"]["work_balance"] = "J";
@@ -1369,6 +1540,14 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["units"]["hinge_band"] = "rad/s";
     j["units"]["hinge_friction_work"] = "J";
   }
+  for (const char* key : {"window_start", "window_end"}) j["units"][key] = "s";
+  if (d.positions) {
+    j["units"]["x"] = "m";
+    j["units"]["y"] = "m";
+  }
+  j["units"]["mean_speed"] = "rad/s";
+  j["units"]["mean_torque"] = "N m";
+  for (const char* key : {"mean_tension", "min_tension", "max_tension"}) j["units"][key] = "N";
   rec.data = std::move(j);
 
   std::ostringstream csv;
@@ -1483,6 +1662,17 @@ Record describe(const Result& r, const analysis::Inputs&) {
   return rec;
 }
 
+// A run's work without running it (Analysis::work_of, for a sweep's total): steps × links, the
+// measure of the per-run cap; 0 for inputs parse() refuses (over the cap included).
+double estimated_work(const analysis::Inputs& in) {
+  try {
+    const Setup s = parse(in);
+    return std::ceil(s.duration / s.step) * s.links;
+  } catch (const InputError&) {
+    return 0.0;
+  }
+}
+
 analysis::Analysis make() {
   analysis::Analysis a;
   a.name = "dynamics";
@@ -1502,6 +1692,8 @@ analysis::Analysis make() {
           analysis::NotShared{},
       quantity("step", K::kTime, "time step h (overrides dynamics.step)") | analysis::NotShared{}};
   analysis::set_functions<Result>(a, run, describe);
+  a.work_of = estimated_work;
+  a.work_unit = "link-steps";
   return a;
 }
 
