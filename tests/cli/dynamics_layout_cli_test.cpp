@@ -88,6 +88,14 @@ TEST(DynamicsLayoutCli, ThreeWheelLoopGivesItsClosedForms) {
   EXPECT_NEAR(arriving / slack, 1.0, 0.01) << arriving << " " << slack;
   // the driven wheel's applied torque carries the load (its speed settles: 0.5 %)
   EXPECT_NEAR(mean(j["sprocket"][1]["torque"]) / load, 1.0, 0.005);
+  // the summary's window is whole tooth periods of the driver (z1) after half the run
+  const auto& sum = j["summary"];
+  const int periods = sum["window_periods"];
+  EXPECT_EQ(periods, static_cast<int>(std::floor(0.5 * time.back() / period)));
+  EXPECT_NEAR(sum["window_end"].get<double>() - sum["window_start"].get<double>(), periods * period,
+              1e-12);
+  EXPECT_NEAR(sum["sprocket_2"]["mean_speed"].get<double>() / (omega * z1 / zi), 1.0, 0.002);
+  ASSERT_TRUE(sum.contains("span_2"));
 
   const CliRun csv = run("dynamics " + kExample + " --duration 1ms --format csv");
   ASSERT_EQ(csv.status, 0) << csv.err;

@@ -1485,7 +1485,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
   // the scalar summaries a sweep takes as columns (objects, not arrays: arrays are series to a
   // sweep): each sprocket's mean speed and torque, each span's mean, least and greatest tension,
   // over the window of summary_window(), all added after the fields above
-  const Window win = summary_window(r.time, 2 * kPi / (d.teeth * d.speed));
+  const int driver_teeth = d.layout() ? d.wheels[d.driver].teeth : d.teeth;
+  const Window win = summary_window(r.time, 2 * kPi / (driver_teeth * d.speed));
   j["summary"]["window_start"] = win.start;
   j["summary"]["window_end"] = win.end;
   j["summary"]["window_periods"] = win.periods;
