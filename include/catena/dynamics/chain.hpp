@@ -212,6 +212,14 @@ struct SeatContact {
 };
 SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, double vy, double angle,
                          double speed);
+/// The seats' force law (docs/models/dynamics.md, "Sprockets"), shared by the ISO seat and the
+/// pocket: on a contact `c` whose normal (c.nx, c.ny) is set, at penetration g > 0, with
+/// r = q − centre and the roller's velocity v, sets force, stiffness ∂f/∂g, damping, energy,
+/// damping power, torque, penetration and `active` — f = k_c (g − ε/2) with the C¹ ramp
+/// k_c g²/2ε over the first ε, damping c_c ġ ramped in over ε (ġ relative to the wheel), never
+/// pulling.
+void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx, double vy,
+                    double speed, SeatContact& c);
 
 /// One joint's contact with the nearest pocket of a pocket wheel (`Sprocket::pocket`), found in
 /// O(1) from the joint's angle about the centre. The pocket holds the joint at its vertex C: with

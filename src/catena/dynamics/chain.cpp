@@ -302,6 +302,29 @@ State two_sprocket_loop(int teeth, int span, double pitch, double pitch_radius, 
   return s;
 }
 
+void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx, double vy,
+                    double speed, SeatContact& c) {
+  // rate of penetration: the roller's velocity relative to the wheel's material point under it
+  const double rate = (vx + speed * ry) * c.nx + (vy - speed * rx) * c.ny;
+  const double eps = w.contact_smoothing, kc = w.contact_stiffness;
+  const double elastic = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
+  c.stiffness = g < eps ? kc * g / eps : kc;
+  c.energy =
+      g < eps ? kc * g * g * g / (6.0 * eps) : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
+  c.damping = w.contact_damping * std::min(1.0, g / eps);
+  c.force = std::max(0.0, elastic + c.damping * rate);
+  // ∂f/∂g: the elastic slope, and the damping's ramp over the first ε
+  if (g < eps) c.stiffness += w.contact_damping * rate / eps;
+  if (c.force <= 0.0) c.stiffness = c.damping = 0.0;
+  // the contact's power on roller and wheel together is −f ġ (the torque's share included);
+  // the part of the damper, f − f_el, is the dissipation
+  c.damping_power = -(c.force - elastic) * rate;
+  c.active = true;
+  c.penetration = g;
+  // the reaction +f n acts on the wheel along the line through the roller centre q
+  c.torque = c.force * (rx * c.ny - ry * c.nx);
+}
+
 SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, double vy, double angle,
                          double speed) {
   SeatContact c;
@@ -344,25 +367,7 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
     c.curvature = 0.0;
   }
   if (!(g > 0.0)) return c;
-  // rate of penetration: the roller's velocity relative to the wheel's material point under it
-  const double rate = (vx + speed * ry) * c.nx + (vy - speed * rx) * c.ny;
-  const double eps = w.contact_smoothing, kc = w.contact_stiffness;
-  const double elastic = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
-  c.stiffness = g < eps ? kc * g / eps : kc;
-  c.energy =
-      g < eps ? kc * g * g * g / (6.0 * eps) : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
-  c.damping = w.contact_damping * std::min(1.0, g / eps);
-  c.force = std::max(0.0, elastic + c.damping * rate);
-  // ∂f/∂g: the elastic slope, and the damping's ramp over the first ε
-  if (g < eps) c.stiffness += w.contact_damping * rate / eps;
-  if (c.force <= 0.0) c.stiffness = c.damping = 0.0;
-  // the contact's power on roller and wheel together is −f ġ (the torque's share included);
-  // the part of the damper, f − f_el, is the dissipation
-  c.damping_power = -(c.force - elastic) * rate;
-  c.active = true;
-  c.penetration = g;
-  // the reaction +f n acts on the wheel along the line through the roller centre q
-  c.torque = c.force * (rx * c.ny - ry * c.nx);
+  apply_seat_law(w, g, rx, ry, vx, vy, speed, c);
   return c;
 }
 

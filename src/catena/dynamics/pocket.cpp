@@ -57,22 +57,7 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
   c.nx = ex / dist;
   c.ny = ey / dist;
   c.curvature = 1.0 / dist;
-  // The seats' force law (seat_contact): f = k_c (g − ε/2) with the C¹ ramp k_c g²/2ε over the
-  // first ε, damping c_c ġ ramped in over ε, never pulling; ġ relative to the wheel.
-  const double rate = (vx + speed * ry) * c.nx + (vy - speed * rx) * c.ny;
-  const double eps = w.contact_smoothing, kc = w.contact_stiffness;
-  const double elastic = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
-  c.stiffness = g < eps ? kc * g / eps : kc;
-  c.energy =
-      g < eps ? kc * g * g * g / (6.0 * eps) : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
-  c.damping = w.contact_damping * std::min(1.0, g / eps);
-  c.force = std::max(0.0, elastic + c.damping * rate);
-  if (g < eps) c.stiffness += w.contact_damping * rate / eps;
-  if (c.force <= 0.0) c.stiffness = c.damping = 0.0;
-  c.damping_power = -(c.force - elastic) * rate;
-  c.active = true;
-  c.penetration = g;
-  c.torque = c.force * (rx * c.ny - ry * c.nx);
+  apply_seat_law(w, g, rx, ry, vx, vy, speed, c);  // the seats' force law
   return c;
 }
 
