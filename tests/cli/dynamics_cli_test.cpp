@@ -402,6 +402,27 @@ TEST(DynamicsCli, PositionsAreOptInAndMatchTheAnimation) {
   EXPECT_NE(e.err.find("true or false"), std::string::npos) << e.err;
 }
 
+// Samples too sparse for the summary's window (one at t = 0 and one at the end): the summary is
+// the last sample alone, and says so — no whole periods, one sample.
+TEST(DynamicsCli, SummaryOfTooSparseSamplesIsTheLastSample) {
+  std::stringstream text;
+  text << std::ifstream(kExample).rdbuf();
+  std::string sparse = text.str();
+  const std::size_t at = sparse.find("output_interval = ");
+  ASSERT_NE(at, std::string::npos);
+  sparse.replace(at, sparse.find('\n', at) - at, "output_interval = \"0.2 s\"");
+  const CliRun r =
+      run("dynamics " + write("sparse.toml", sparse) + " --duration 0.2s --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["time"].size(), 2u);
+  const auto& s = j["summary"];
+  EXPECT_EQ(s["window_periods"], 0);
+  EXPECT_EQ(s["window_samples"], 1);
+  EXPECT_EQ(s["window_start"], s["window_end"]);
+  EXPECT_EQ(s["span_0"]["mean_tension"], j["span"][0]["tension"][1]);
+}
+
 // contact_stiffness omitted: the Hertz default, the secant Q0/δ(Q0) of the plane-strain line
 // contact (Johnson 1985, eq. 5.36 form) of the 12B roller (d1 = 12.07 mm) in the ISO 606
 // minimum seating arc (ri = 0.505 d1) over the inner width b1 = 11.68 mm, steel on steel, at

@@ -104,6 +104,42 @@ TEST(DynamicsLayoutCli, ThreeWheelLoopGivesItsClosedForms) {
             "tension_0_2,tension_2_1,tension_1_0");
 }
 
+// The [dynamics] options act in the free layout as on the two-wheel line: seat friction on every
+// wheel (its work < 0, and in the balance), positions every sample (each link a laid pitch
+// within its stretch, 0.2 %).
+TEST(DynamicsLayoutCli, SeatFrictionAndPositionsApplyToTheFreeLayout) {
+  std::stringstream text;
+  text << std::ifstream(kExample).rdbuf();
+  std::string with = text.str();
+  const std::size_t at = with.find("[dynamics]\n");
+  ASSERT_NE(at, std::string::npos);
+  with.insert(at + 11, "seat_friction = 0.05\npositions = true\nwork_balance = true\n");
+  const CliRun r =
+      run("dynamics " + write("options.toml", with) + " --duration 20ms --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const double seat = j["summary"]["seat_friction_work"];
+  EXPECT_LT(seat, 0.0);
+  EXPECT_EQ(j["summary"]["work_balance"]["seat_friction"], seat);
+  const auto time = j["time"].get<std::vector<double>>();
+  const auto x = j["positions"]["x"].get<std::vector<std::vector<double>>>();
+  const auto y = j["positions"]["y"].get<std::vector<std::vector<double>>>();
+  ASSERT_EQ(x.size(), time.size());
+  ASSERT_EQ(y.size(), time.size());
+  const std::size_t n = j["links"];
+  const double laid = j["laid_pitch"];
+  double worst = 0.0;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    ASSERT_EQ(x[k].size(), n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t e = (i + 1) % n;
+      worst =
+          std::max(worst, std::abs(std::hypot(x[k][e] - x[k][i], y[k][e] - y[k][i]) / laid - 1));
+    }
+  }
+  EXPECT_LT(worst, 2e-3);
+}
+
 // The layout's start: two equal wheels given by their centres a whole number of pitches apart
 // start as the two-wheel line does (the first sample equal: wheel angles modulo one seat, both
 // spans at the pretension).

@@ -44,6 +44,32 @@ Pose random_pose(std::mt19937& rng, double pitch, double move) {
 
 constexpr double kPitch = 0.01905, kStiffness = 5e7;
 
+// The pin load is the mean of the two links' elastic tensions, each from its own rest length
+// (an alternating round-link chain has links of p + a and p − a): links of 82 and 46 mm at rest
+// on rest lengths 82 and 46 mm carry nothing; on 80 and 45 mm, k (2 mm + 1 mm)/2; on one pitch
+// of 64 mm for both, the stretch of one and the shortening of the other cancel.
+TEST(HingeFriction, PinLoadTakesEachLinksOwnRestLength) {
+  const HingeFriction hinge{.arm = 2.86e-4, .rate_band = 5.0};
+  const double a = 0.3, b = 0.9;  // the links' directions
+  Pose p{};
+  p.x0[1] = 0.082 * std::cos(a);
+  p.y0[1] = 0.082 * std::sin(a);
+  p.x0[2] = p.x0[1] + 0.046 * std::cos(b);
+  p.y0[2] = p.y0[1] + 0.046 * std::sin(b);
+  for (int k = 0; k < 3; ++k) p.x1[k] = p.x0[k], p.y1[k] = p.y0[k];
+  p.x1[2] += 1e-6;  // the hinge turns a little over the step
+  const double own[2] = {0.082, 0.046}, shorter[2] = {0.080, 0.045};
+  auto load = [&](const double rest[2]) {
+    return hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4).load;
+  };
+  EXPECT_NEAR(load(own), 0.0, 1e-6);
+  EXPECT_NEAR(load(shorter), 0.5 * kStiffness * (0.002 + 0.001), 1e-6 * kStiffness * 0.003);
+  EXPECT_NEAR(hinge_couple(hinge, kStiffness, 0.064, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4).load, 0.0,
+              1e-6);
+  EXPECT_NE(hinge_couple(hinge, kStiffness, shorter, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4).torque,
+            0.0);
+}
+
 TEST(HingeFriction, ForceIsTheTorqueTimesTheGradientOfTheRelativeAngle) {
   std::mt19937 rng(21);
   const HingeFriction hinge{.arm = 2.86e-4, .rate_band = 5.0};

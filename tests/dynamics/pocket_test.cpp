@@ -214,6 +214,18 @@ TEST(DynamicsPocket, BadFieldsAreListedAtOnce) {
   EXPECT_TRUE(validate(a).empty());
   EXPECT_DOUBLE_EQ(a.rest_length(0), 0.082);
   EXPECT_DOUBLE_EQ(a.rest_length(1), 0.046);
+  // a pocket wheel needs the chain's alternating links: its polygon's sides are t + d and t − d
+  Sprocket driver = wheel();
+  driver.driver = true;
+  driver.speed = 1.0;
+  a.sprockets = {driver};
+  EXPECT_TRUE(validate(a).empty());
+  a.alternation = 0.0;  // equal links on the bi-regular polygon
+  const std::vector<Issue> equal = validate(a);
+  ASSERT_EQ(equal.size(), 1u);
+  EXPECT_EQ(equal[0].field, "sprocket[0].pocket_angle");
+  a.alternation = 0.016;  // a thinner wire than the wheel's 18 mm
+  EXPECT_EQ(validate(a).size(), 1u);
   // the wheel's constructor: the chain's problems at once (t ≤ d, z < 3)
   try {
     (void)pocket_wheel(0.01, 0.02, 2, 0.0, 0.0, 1e-4, 1e8, 0.0);

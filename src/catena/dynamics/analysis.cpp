@@ -1106,6 +1106,7 @@ std::vector<Sprocket> layout_sprockets(const Setup& d) {
   for (const LayoutWheel& w : d.wheels) {
     Sprocket s = iso606_sprocket(d.pitch, d.roller, d.width, w.teeth, w.x, w.y, d.contact_stiffness,
                                  d.contact_damping);
+    s.friction = d.seat_friction;
     if (w.role == "driver") {
       s.driver = true;
       s.speed = w.speed;
@@ -1226,6 +1227,10 @@ Result run(const analysis::Inputs& in) {
       applied[w] = 0.0;
     }
     link_tensions(model, s, tension);
+    if (d.positions) {
+      out.node_x.push_back(s.x);
+      out.node_y.push_back(s.y);
+    }
     if (d.layout()) {
       nearest_span_links(d, s, span_link);
       for (std::size_t k = 0; k < span_link.size(); ++k)
@@ -1245,10 +1250,6 @@ Result run(const analysis::Inputs& in) {
     }
     out.span[0].push_back(tension[top]);
     out.span[1].push_back(tension[bottom]);
-    if (d.positions) {
-      out.node_x.push_back(s.x);
-      out.node_y.push_back(s.y);
-    }
     since = 0;
   };
   const int steps = static_cast<int>(std::lround(d.duration / d.step));
@@ -1358,10 +1359,11 @@ Window summary_window(const std::vector<double>& time, double period) {
       w.last = k + 1;
     }
   }
-  if (w.first >= w.last) {  // only the t = 0 sample
+  if (w.first >= w.last) {  // no sample in the window (only t = 0, or samples too sparse)
     w.first = time.size() - 1;
     w.last = time.size();
     w.start = w.end = t_end;
+    w.periods = 0;  // the last sample alone, not a mean over periods
   }
   return w;
 }

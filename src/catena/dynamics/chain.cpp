@@ -80,7 +80,23 @@ std::vector<Issue> validate(const Model& model) {
     }
     check::finite_positive(out, (f + "pitch_radius").c_str(), s.pitch_radius, "m");
     if (s.pocket) {
+      const std::size_t before = out.size();
       pocket_issues(out, s, f);
+      // the polygon's sides must be the chain's links, p + a on the δ1 side and p − a on the δ2
+      // side: a pocket wheel with equal links (alternation 0) or another wire strains every link
+      const double tau = 2.0 * std::numbers::pi / s.teeth;
+      const double side1 = 2.0 * s.pitch_radius * std::sin(0.5 * s.pocket_angle);
+      const double side2 = 2.0 * s.pitch_radius * std::sin(0.5 * (tau - s.pocket_angle));
+      const double p = model.pitch, a = model.alternation;
+      if (out.size() == before && p > 0.0 && std::isfinite(a) &&
+          !(std::abs(side1 - (p + a)) <= 0.01 * p && std::abs(side2 - (p - a)) <= 0.01 * p)) {
+        out.push_back({f + "pocket_angle", check::format_si(s.pocket_angle, "rad"),
+                       "a polygon whose sides (" + check::format_si(side1, "m") + ", " +
+                           check::format_si(side2, "m") +
+                           ") are the chain's links p + a and p - a (" +
+                           check::format_si(p + a, "m") + ", " + check::format_si(p - a, "m") +
+                           ") within 1 % of p: set the model's alternation to the wire diameter"});
+      }
     } else {
       check::finite_positive(out, (f + "roller_radius").c_str(), s.roller_radius, "m");
       if (!std::isfinite(s.seat_radius) || !(s.seat_radius >= s.roller_radius)) {
