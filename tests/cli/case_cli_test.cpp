@@ -253,6 +253,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"analysis_name",
                 "[chain]\ntype = \"rolling-hinge\"\n[analyses.hinje]\n",
                 {"analyses.hinje", "did you mean 'hinge'"}},
+        // a shared table's name as a top-level value (found by the fuzzer: it crashed)
+        BadCase{"shared_table_as_value",
+                "chain = \"12B\"\n[analyses.pocketwheel-tangential]\nguide = \"tangential\"\n",
+                {"chain = 12B", "a [chain] table, not a value"}},
         BadCase{"shared_key",
                 "[chain]\ntype = \"round-link\"\npich = \"64 mm\"\n[analyses.pocketwheel]\n",
                 {"chain.pich", "did you mean 'pitch'"}},

@@ -135,6 +135,10 @@ std::map<std::string, const CaseValue*> shared_values(const CaseFile& file,
     if (std::find(kSharedTables.begin(), kSharedTables.end(), head) == kSharedTables.end())
       continue;
     if (kDescriptive.count(v.path)) continue;
+    if (v.path.size() == head.size()) {  // `chain = ...` at the top: a value, not the table
+      issues.push_back({v.path, v.text, "a [" + head + "] table, not a value"});
+      continue;
+    }
     const std::string rest = v.path.substr(head.size() + 1);
     if (rest.find('.') != std::string::npos) {
       issues.push_back({v.path, v.text, "a value directly in [" + head + "]"});
