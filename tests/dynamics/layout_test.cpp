@@ -242,5 +242,23 @@ TEST(DynamicsLayout, PlacementClosesTheLoopAndSeatsTheWrappedRollers) {
   EXPECT_GT(placed, 20);
 }
 
+// The spans' sampled links on two_sprocket_loop's start: with an odd number of pitches between
+// the centres, exactly one link of each span has its middle at the spans' middle x = C/2 (the
+// span's nodes sit at whole pitches from a wheel's centre), at the pitch radius above and below.
+TEST(DynamicsLayout, SpanMiddleLinksOfTheTwoSprocketStart) {
+  for (const auto& [z, m] : {std::pair{12, 11}, std::pair{17, 31}, std::pair{9, 3}}) {
+    const double r = pitch_radius(z);
+    const State s = two_sprocket_loop(z, m, kPitch, r, 5.0);
+    const std::size_t n = s.nodes();
+    const auto [upper, lower] = span_middle_links(s, m * kPitch);
+    for (const auto& [j, side] : {std::pair{upper, 1.0}, std::pair{lower, -1.0}}) {
+      const std::size_t e = (j + 1) % n;
+      EXPECT_NEAR(0.5 * (s.x[j] + s.x[e]), 0.5 * m * kPitch, 1e-12) << z << " " << m;
+      EXPECT_NEAR(s.y[j], side * r, 1e-12) << z << " " << m;
+      EXPECT_NEAR(s.y[e], side * r, 1e-12) << z << " " << m;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace catena::dynamics

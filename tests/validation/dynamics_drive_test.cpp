@@ -74,21 +74,7 @@ DriveRun run(const Drive& d, double duration, double step) {
     }
     link_tensions(model, s, tension);
     // the links whose middles are nearest the middles of the top (tight) and bottom spans
-    std::size_t top = 0, bottom = 0;
-    double top_gap = INFINITY, bottom_gap = INFINITY;
-    for (std::size_t j = 0; j < n; ++j) {
-      const std::size_t e = (j + 1) % n;
-      const double xm = 0.5 * (s.x[j] + s.x[e]), ym = 0.5 * (s.y[j] + s.y[e]);
-      const double gap = std::abs(xm - 0.5 * centre);
-      if (ym > 0.0 && gap < top_gap) {
-        top_gap = gap;
-        top = j;
-      }
-      if (ym < 0.0 && gap < bottom_gap) {
-        bottom_gap = gap;
-        bottom = j;
-      }
-    }
+    const auto [top, bottom] = span_middle_links(s, centre);
     out.time.push_back(s.time);
     out.tight.push_back(tension[top]);
     out.slack.push_back(tension[bottom]);

@@ -6,6 +6,7 @@
 // puts them. State is a structure of arrays (x, y, vx, vy).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -190,6 +191,12 @@ Sprocket iso606_sprocket(double pitch, double roller_diameter, double inner_widt
 /// seat to its bottom seat, the lower span (+x), over wheel 1 from bottom to top, the upper span
 /// (−x); wheel angles π/2 and −π/2 (the polygons in phase).
 State two_sprocket_loop(int teeth, int span, double pitch, double pitch_radius, double omega);
+
+/// The links of a two-sprocket loop (wheel centres on y = 0 at x = 0 and x = `centre_distance`,
+/// as `two_sprocket_loop` lays them) whose middles are nearest the middle of the upper (y > 0) and
+/// of the lower (y < 0) span, measured along x: {upper, lower}. O(N). Where the spans' tensions
+/// are sampled (`catena dynamics`, the drive validations).
+std::array<std::size_t, 2> span_middle_links(const State& state, double centre_distance);
 
 /// One roller's contact with the nearest seat of one sprocket, found in O(1) from the roller's
 /// angle about the wheel centre. Inputs are the roller's position and velocity, the wheel's angle

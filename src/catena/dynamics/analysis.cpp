@@ -1238,16 +1238,7 @@ Result run(const analysis::Inputs& in) {
       since = 0;
       return;
     }
-    // the links whose middles are nearest the middles of the upper and lower spans
-    std::size_t top = 0, bottom = 0;
-    double top_gap = INFINITY, bottom_gap = INFINITY;
-    for (std::size_t j = 0; j < n; ++j) {
-      const std::size_t e = (j + 1) % n;
-      const double xm = 0.5 * (s.x[j] + s.x[e]), ym = 0.5 * (s.y[j] + s.y[e]);
-      const double gap = std::abs(xm - 0.5 * centre);
-      if (ym > 0.0 && gap < top_gap) top_gap = gap, top = j;
-      if (ym < 0.0 && gap < bottom_gap) bottom_gap = gap, bottom = j;
-    }
+    const auto [top, bottom] = span_middle_links(s, centre);
     out.span[0].push_back(tension[top]);
     out.span[1].push_back(tension[bottom]);
     since = 0;

@@ -318,6 +318,21 @@ State two_sprocket_loop(int teeth, int span, double pitch, double pitch_radius, 
   return s;
 }
 
+std::array<std::size_t, 2> span_middle_links(const State& state, double centre_distance) {
+  const std::size_t n = state.nodes();
+  std::array<std::size_t, 2> link{0, 0};
+  std::array<double, 2> gap{INFINITY, INFINITY};
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t e = (j + 1) % n;
+    const double xm = 0.5 * (state.x[j] + state.x[e]), ym = 0.5 * (state.y[j] + state.y[e]);
+    const double g = std::abs(xm - 0.5 * centre_distance);
+    if (ym == 0.0) continue;
+    const std::size_t k = ym > 0.0 ? 0 : 1;
+    if (g < gap[k]) gap[k] = g, link[k] = j;
+  }
+  return link;
+}
+
 void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx, double vy,
                     double speed, SeatContact& c) {
   // rate of penetration: the roller's velocity relative to the wheel's material point under it
