@@ -132,6 +132,15 @@ struct SweepResult {
 /// per-run caps (named "grid", with the limit and the estimate) unless every point allows large.
 std::vector<InputSet> sweep_points(const SweepRequest& request);
 
+/// For a request of explicit points whose table parameter is given as the path of its file (a
+/// point's "dynamics" = "drive.toml", as Python's catena.sweep gives it): when a point or the base
+/// also names a value inside that table ("dynamics.sprocket[1].load_torque"), the file is read
+/// once into `tables` and its key dropped from the base and the points, so that each point runs
+/// with its value in place of the file's, as `catena sweep` does for a case file. Every point must
+/// then name the same file (an issue names the key otherwise, and a file that does not read is
+/// one); a table no point looks inside is left as it is. Appends its problems to `issues`.
+void share_table_files(SweepRequest& request, std::vector<Issue>& issues);
+
 /// Runs every point (sweep_points, then `catena::run` with `base` overlaid by the point) on
 /// `options.threads` threads. Throws InputError for the problems of sweep_points and a thread
 /// count over 1024, all at once; a point's own

@@ -343,6 +343,11 @@ PYBIND11_MODULE(_core, m) {
     catena::SweepRequest request;
     request.analysis = name;
     request.points = sets;
+    // a point naming a value inside its table (dynamics.sprocket[1].load_torque): the table's
+    // file read once, each point's value put in place of the file's
+    std::vector<catena::Issue> issues;
+    catena::share_table_files(request, issues);
+    catena::throw_if_any(issues);
     catena::SweepOptions options;
     options.threads = threads;
     options.keep_records = false;

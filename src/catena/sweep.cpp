@@ -10,6 +10,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "catena/catena.hpp"
@@ -305,6 +306,73 @@ std::optional<Diagnostic> worst_diagnostic(const std::vector<Diagnostic>& diagno
   }
   if (worst == nullptr) return std::nullopt;
   return *worst;
+}
+
+void share_table_files(SweepRequest& request, std::vector<Issue>& issues) {
+  const analysis::Analysis* a = find_analysis(request.analysis);
+  if (a == nullptr) return;  // sweep_points names it
+  for (const analysis::Parameter& p : a->parameters) {
+    if (p.type != analysis::ParameterType::kTable) continue;
+    const std::string inside = p.name + ".";
+    const auto names_inside = [&inside](const InputSet& set) {
+      return std::any_of(set.begin(), set.end(),
+                         [&inside](const auto& kv) { return kv.first.rfind(inside, 0) == 0; });
+    };
+    const bool looked_into =
+        names_inside(request.base) ||
+        std::any_of(request.points.begin(), request.points.end(), names_inside) ||
+        std::any_of(request.grid.begin(), request.grid.end(),
+                    [&inside](const SweepAxis& axis) { return axis.key.rfind(inside, 0) == 0; });
+    const bool shared = std::any_of(request.tables.begin(), request.tables.end(),
+                                    [&p](const TableValue& t) { return t.key == p.name; });
+    if (!looked_into || shared) continue;
+    const auto file_of = [&p](const InputSet& set) -> const std::string* {
+      for (const auto& [key, text] : set)
+        if (key == p.name) return &text;
+      return nullptr;
+    };
+    const std::string* base_file = file_of(request.base);
+    std::optional<std::string> file;
+    bool one_file = true, everywhere = true;
+    const auto take = [&](const std::string* text) {
+      if (text == nullptr) {
+        everywhere = false;
+      } else if (!file) {
+        file = *text;
+      } else if (*file != *text) {
+        one_file = false;
+      }
+    };
+    if (request.points.empty()) take(base_file);
+    for (const InputSet& point : request.points) {
+      const std::string* own = file_of(point);
+      take(own != nullptr ? own : base_file);
+    }
+    const std::string expected = "the path of one TOML file with a [" + p.name +
+                                 "] table, the same for every point (a point names " + inside +
+                                 "<key>); sweep each file on its own";
+    if (!everywhere || !one_file) {
+      issues.push_back(
+          {p.name, !everywhere ? "(missing)" : "a different file in some points", expected});
+      continue;
+    }
+    try {
+      io::RawInput raw = io::table_input(io::read_case(*file), p);
+      request.tables.push_back(
+          {p.name, std::move(raw.table), std::move(raw.tables), std::move(raw.source)});
+    } catch (const InputError& e) {
+      for (const Issue& issue : e.issues())
+        issues.push_back({p.name, *file,
+                          "a readable TOML file with a [" + p.name + "] table (" + issue.field +
+                              " = " + issue.value + ": " + issue.expected + ")"});
+      continue;
+    }
+    const auto drop = [&p](InputSet& set) {
+      std::erase_if(set, [&p](const auto& kv) { return kv.first == p.name; });
+    };
+    drop(request.base);
+    for (InputSet& point : request.points) drop(point);
+  }
 }
 
 std::vector<InputSet> sweep_points(const SweepRequest& request) {

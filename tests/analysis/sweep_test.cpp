@@ -362,6 +362,69 @@ TEST(Sweep, TablesReachEveryPointAndAnAxisMayVaryAValueInside) {
   fs::remove_all(dir);
 }
 
+// Explicit points that give the table as its file and name a value inside it (what Python's
+// catena.sweep sends): share_table_files reads the file once and each point runs as the file
+// holding its value; points naming different files, or one without the file, are refused, and
+// a request that never looks inside the table is left alone.
+TEST(Sweep, PointsNamingAValueInsideTheirTablesFileShareIt) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "catena_sweep_share";
+  fs::create_directories(dir);
+  const fs::path ten = dir / "ten.toml", five = dir / "five.toml";
+  std::ofstream(ten) << drive_toml("10");
+  std::ofstream(five) << drive_toml("5");
+  SweepRequest r;
+  r.analysis = "dynamics";
+  r.base = {{"dynamics", ten.string()}};
+  r.points = {{{"dynamics.sprocket[1].load_torque", "5"}},
+              {{"dynamics.sprocket[1].load_torque", "10"}, {"dynamics", ten.string()}}};
+  std::vector<Issue> issues;
+  share_table_files(r, issues);
+  ASSERT_TRUE(issues.empty()) << issues.front().expected;
+  ASSERT_EQ(r.tables.size(), 1u);
+  EXPECT_EQ(r.tables[0].key, "dynamics");
+  EXPECT_TRUE(r.base.empty());
+  ASSERT_EQ(r.points[1].size(), 1u);
+  const SweepResult got = sweep(r, {.threads = 1});
+  ASSERT_EQ(got.points.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    ASSERT_TRUE(got.points[i].ok()) << got.points[i].error;
+    const analysis::Record alone = run("dynamics", {{"dynamics", (i == 0 ? five : ten).string()}});
+    EXPECT_EQ(without_wall_clock(got.points[i].record->data), without_wall_clock(alone.data)) << i;
+  }
+
+  // two files, and a point without any: refused, naming the table's key
+  for (const InputSet& second : {InputSet{{"dynamics", five.string()}}, InputSet{}}) {
+    SweepRequest two;
+    two.analysis = "dynamics";
+    two.points = {{{"dynamics", ten.string()}, {"dynamics.duration", "2ms"}}, second};
+    std::vector<Issue> found;
+    share_table_files(two, found);
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].field, "dynamics");
+    EXPECT_EQ(found[0].value, second.empty() ? "(missing)" : "a different file in some points");
+    EXPECT_TRUE(two.tables.empty());
+  }
+  // a file that does not read
+  SweepRequest missing;
+  missing.analysis = "dynamics";
+  missing.points = {{{"dynamics", (dir / "none.toml").string()}, {"dynamics.duration", "2ms"}}};
+  std::vector<Issue> unread;
+  share_table_files(missing, unread);
+  ASSERT_FALSE(unread.empty());
+  EXPECT_EQ(unread[0].field, "dynamics");
+  // nothing inside the table: the file stays a point's value
+  SweepRequest plain;
+  plain.analysis = "dynamics";
+  plain.points = {{{"dynamics", ten.string()}, {"duration", "2ms"}}};
+  std::vector<Issue> none;
+  share_table_files(plain, none);
+  EXPECT_TRUE(none.empty());
+  EXPECT_TRUE(plain.tables.empty());
+  EXPECT_EQ(plain.points[0].size(), 2u);
+  fs::remove_all(dir);
+}
+
 // A sweep's total work (steps × links summed over its points, Analysis::work_of) is capped at
 // kSweepWorkCaps per-run caps, 2e9 link-steps for dynamics, before anything runs: 42 points of
 // 150 s on 32 links (4.8e7 link-steps each, under the per-run cap of 5e7) are 2.016e9, over it;

@@ -194,3 +194,36 @@ def test_a_dynamics_sweep_takes_its_table_as_a_file_and_equals_each_run():
         assert frame["summary.energy_drift"] == alone["summary"]["energy_drift"]
         assert frame["summary.max_penetration"] == alone["summary"]["max_penetration"]
     assert list(one["summary.steps"]) == [30, 50]
+
+
+@needs_sweep
+def test_a_grid_may_vary_a_value_inside_the_table_file(tmp_path):
+    """A key inside the table (``dynamics.sprocket[1].load_torque``) as on the command line: each
+    point runs as a copy of the file holding its value would (the wall clock aside); a point
+    naming another file is refused before anything runs, naming the table."""
+    from conftest import SOURCE
+    drive = SOURCE / "examples" / "dynamics_12B.toml"
+    text = drive.read_text()
+    assert text.count("load_torque = 10 ") == 1  # the driven wheel's, replaced below
+    files = {}
+    for torque in (5, 20):
+        files[torque] = tmp_path / f"drive_{torque}.toml"
+        files[torque].write_text(text.replace("load_torque = 10 ", f"load_torque = {torque} "))
+    grid = {"dynamics.sprocket[1].load_torque": [5, 20]}
+    base = {"dynamics": str(drive), "duration": "4ms"}
+    frame = catena.sweep("dynamics", grid=grid, base=base, threads=1)
+    clock = ["summary.wall_time", "summary.real_time_factor"]
+    assert list(frame["error"]) == ["", ""]
+    for torque, path in files.items():
+        alone = catena.sweep("dynamics", grid={"dynamics": [str(path)]},
+                             base={"duration": "4ms"}, threads=1)
+        row = frame[frame["dynamics.sprocket[1].load_torque"] == torque]
+        results = [c for c in alone.columns if c not in ("dynamics", "duration", *clock)]
+        assert len(results) > 10
+        same(row[results].reset_index(drop=True), alone[results].reset_index(drop=True))
+    assert frame["summary.sprocket_1.mean_torque"].nunique() == 2
+    with pytest.raises(catena.InputError) as refused:
+        catena.sweep("dynamics", points=[{"dynamics": str(drive)},
+                                         {"dynamics": str(files[5])}],
+                     base={"dynamics.duration": "4ms"})
+    assert "dynamics" in [issue["field"] for issue in refused.value.issues]
