@@ -54,7 +54,19 @@ def sweep_chunk(name: str, points: Sequence[Mapping[str, Any]], threads: int = 0
     """Runs ``points`` (parameter sets, values as for catena.run) of analysis ``name`` on the
     library's thread pool (``threads`` = 0: all cores) and returns their rows as a DataFrame, in
     the order of ``points``. This is what each Dask task runs."""
-    from . import InputError, _analysis, _issues_from, _texts
+    from . import InputError, _issues_from
+    sets = _point_texts(name, points)
+    try:
+        columns, units, rows = _core.sweep(name, sets, int(threads))
+    except _core._InputError as error:
+        raise InputError(_issues_from(error.issues), str(error)) from None
+    return _frame(points, columns, units, rows)
+
+
+def _point_texts(name: str, points: Sequence[Mapping[str, Any]]) -> list:
+    """Each point's (key, text) pairs for the library; raises InputError with every problem only
+    Python can see (a list where one value is required), named by point."""
+    from . import InputError, _analysis, _texts
     analysis = _analysis(name)
     sets = []
     issues = []
@@ -79,11 +91,7 @@ def sweep_chunk(name: str, points: Sequence[Mapping[str, Any]], threads: int = 0
         sets.append(texts)
     if issues:
         raise InputError(issues)
-    try:
-        columns, units, rows = _core.sweep(name, sets, int(threads))
-    except _core._InputError as error:
-        raise InputError(_issues_from(error.issues), str(error)) from None
-    return _frame(points, columns, units, rows)
+    return sets
 
 
 def sweep(name: str, grid: Mapping[str, Sequence[Any]] | None = None,
@@ -106,6 +114,13 @@ def sweep(name: str, grid: Mapping[str, Sequence[Any]] | None = None,
     if client is None:
         return run_chunk(name, sets, threads)
     import pandas as pd
+    # the whole sweep's problems (keys, a table's file, the total work of a dynamics sweep) before
+    # any chunk goes out: each chunk checks only its own points
+    from . import InputError, _issues_from
+    try:
+        _core.check_sweep(name, _point_texts(name, sets))
+    except _core._InputError as error:
+        raise InputError(_issues_from(error.issues), str(error)) from None
     if chunk_size is None:
         workers = max(1, len(client.scheduler_info().get("workers", {})))
         chunk_size = max(1, -(-len(sets) // (4 * workers)))

@@ -339,6 +339,18 @@ PYBIND11_MODULE(_core, m) {
   // library's thread pool with the GIL released. Returns (columns, units, rows): the scalar
   // results, then the worst diagnostic's severity and code, then the input error ("" when the
   // point ran); NaN where a point lacks a result. The inputs' columns are the package's.
+  // A whole sweep's problems before it is split into chunks (Dask): its keys, a table's file,
+  // the total work over every point (catena::sweep_points); nothing runs.
+  m.def("check_sweep", [](const std::string& name, const std::vector<Texts>& sets) {
+    catena::SweepRequest request;
+    request.analysis = name;
+    request.points = sets;
+    std::vector<catena::Issue> issues;
+    catena::share_table_files(request, issues);
+    catena::throw_if_any(issues);
+    catena::sweep_points(request);
+  });
+
   m.def("sweep", [](const std::string& name, const std::vector<Texts>& sets, unsigned threads) {
     catena::SweepRequest request;
     request.analysis = name;

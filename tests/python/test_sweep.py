@@ -227,3 +227,53 @@ def test_a_grid_may_vary_a_value_inside_the_table_file(tmp_path):
                                          {"dynamics": str(files[5])}],
                      base={"dynamics.duration": "4ms"})
     assert "dynamics" in [issue["field"] for issue in refused.value.issues]
+
+
+DRIVE = """[dynamics]
+chain = "12B"
+links = 32
+axial_stiffness = "5e7 N/m"
+axial_damping = 100
+pretension = "950 N"
+contact_stiffness = "2e8 N/m"
+contact_damping = 800
+duration = "150 s"
+step = "0.1 ms"
+output_interval = "1 ms"
+theta = 0.6
+[[dynamics.sprocket]]
+teeth = 12
+role = "driver"
+speed = "13 rad/s"
+[[dynamics.sprocket]]
+teeth = 12
+role = "driven"
+inertia = 0.01
+load_torque = 10
+"""
+
+
+@needs_sweep
+def test_a_dask_sweeps_total_work_is_capped_over_all_its_chunks(tmp_path):
+    """42 runs of 150 s on 32 links (4.8e7 link-steps each, under the per-run cap) are 2.016e9
+    link-steps, over the sweep's 2e9: refused before any chunk goes out, although each chunk of
+    21 points (1.008e9) is under the cap on its own."""
+    path = tmp_path / "drive.toml"
+    path.write_text(DRIVE)
+    grid = {"dynamics.sprocket[1].load_torque": list(range(1, 43))}
+    base = {"dynamics": str(path)}
+
+    class NoCluster:  # a chunk sent out would be a failure
+        def scheduler_info(self):
+            return {"workers": {"a": {}, "b": {}}}
+
+        def submit(self, *args, **kwargs):
+            raise AssertionError("a chunk went out")
+
+    with pytest.raises(catena.InputError) as refused:
+        catena.sweep("dynamics", grid=grid, base=base, client=NoCluster(), chunk_size=21)
+    assert [i["field"] for i in refused.value.issues] == ["grid"]
+    assert "2.016e+09 link-steps" in refused.value.issues[0]["value"]
+    half = catena.sweep_points({"dynamics.sprocket[1].load_torque": list(range(1, 22))}, base)
+    catena._core.check_sweep("dynamics", [[(k, catena._text(v)) for k, v in p.items()]
+                                          for p in half])  # one chunk alone: not refused
