@@ -544,10 +544,25 @@ TEST(DynamicsCli, ReportHasTimeSeriesSpectrumAndAnimation) {
 
   // 2. the spectrum: markers at k z ω / 2π, k = 1…6, and the tight span's spectrum has a peak
   // within one frequency resolution 1/T (T = the analysed half, 0.25 s) of each: the ripple of
-  // the polygonal action at the tooth-mesh frequency and its harmonics
+  // the polygonal action at the tooth-mesh frequency and its harmonics; then each span's first
+  // transverse frequency and twice it, as the JSON's summary has them (the longitudinal ones,
+  // 2.3 kHz, are above the chart's 161 Hz)
   const auto& spectrum = extra[0];
   const double mesh = 12 * 13.0 / (2 * kPi);
-  ASSERT_EQ(spectrum["markers"].size(), 6u);
+  ASSERT_EQ(spectrum["markers"].size(), 10u);
+  {
+    const CliRun json = run("dynamics " + kExample + " --format json");
+    ASSERT_EQ(json.status, 0) << json.err;
+    const auto summary = nlohmann::json::parse(json.out)["summary"];
+    for (int span = 0; span < 2; ++span) {
+      const double f1 =
+          summary["span_" + std::to_string(span)]["transverse_frequency"].get<double>();
+      EXPECT_NEAR(spectrum["markers"][6 + 2 * span]["x"].get<double>(), f1, 1e-9 * f1);
+      EXPECT_NEAR(spectrum["markers"][7 + 2 * span]["x"].get<double>(), 2 * f1, 1e-9 * f1);
+      EXPECT_NE(spectrum["markers"][6 + 2 * span]["label"].get<std::string>().find("transverse"),
+                std::string::npos);
+    }
+  }
   const auto f = spectrum["traces"][0]["x"].get<std::vector<double>>();
   const auto a = spectrum["traces"][0]["y"].get<std::vector<double>>();
   EXPECT_GT(f.back(), 6 * mesh);

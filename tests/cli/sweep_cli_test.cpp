@@ -270,15 +270,16 @@ TEST(SweepCli, ADynamicsSweepTakesTheCasesTableAndVariesAValueInIt) {
     const CliRun alone = run("dynamics " + file + " --duration " + rows[r][1] + " --format json");
     ASSERT_EQ(alone.status, 0) << alone.err;
     // 9 of the run's scalars, then the summary's window (4) and its means and extremes: 2
-    // sprockets × 2, 2 spans × 3
-    EXPECT_EQ(expect_row_equals(rows[0], rows[r], 2, nlohmann::json::parse(alone.out)), 23u) << r;
+    // sprockets × 2, 2 spans × 3 (+ 2 natural frequencies)
+    EXPECT_EQ(expect_row_equals(rows[0], rows[r], 2, nlohmann::json::parse(alone.out)), 27u) << r;
     drift.push_back(std::strtod(rows[r][2 + 9].c_str(), nullptr));
   }
   EXPECT_EQ(rows[0][2 + 9], "summary.energy_drift [J]");
   for (const char* column :
        {"summary.window_start [s]", "summary.sprocket_1.mean_speed [rad/s]",
         "summary.sprocket_1.mean_torque [N m]", "summary.span_0.mean_tension [N]",
-        "summary.span_0.max_tension [N]", "summary.span_1.min_tension [N]"})
+        "summary.span_0.max_tension [N]", "summary.span_1.min_tension [N]",
+        "summary.span_1.transverse_frequency [Hz]", "summary.span_0.longitudinal_frequency [Hz]"})
     EXPECT_NE(std::find(rows[0].begin(), rows[0].end(), column), rows[0].end()) << column;
   EXPECT_NE(drift[0], drift[2]);    // the load torque changed the run
   EXPECT_EQ(rows[1][2 + 5], "40");  // summary.steps: 4 ms of 0.1 ms steps

@@ -47,6 +47,9 @@ struct ReportInput {
   std::vector<ChartSeries> speed, torque, span;  ///< [rad/s], [N m], [N]
   int teeth = 0;                                 ///< z of the driver
   double driver_speed = 0.0;                     ///< ω [rad/s]: tooth mesh at z ω / 2π
+  /// more labelled frequencies for the spectrum (the spans' natural frequencies), drawn after
+  /// the mesh harmonics when below the spectrum's top frequency
+  std::vector<analysis::Marker> span_markers;
   std::vector<WheelOutline> wheels;
   /// [m] each guide's rail surface as a polyline (guide_polyline): drawn, fixed, in every frame
   std::vector<std::vector<std::pair<double, double>>> guides;

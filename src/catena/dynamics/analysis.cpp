@@ -28,6 +28,7 @@
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/layout.hpp"
 #include "catena/dynamics/report_charts.hpp"
+#include "catena/dynamics/span_modes.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/io/case_file.hpp"
 #include "catena/io/quantity.hpp"
@@ -1489,10 +1490,48 @@ Record describe(const Result& r, const analysis::Inputs&) {
         Value::object({{"mean_speed", window_stats(r.sprocket[w].speed, win).mean},
                        {"mean_torque", window_stats(r.sprocket[w].torque, win).mean}});
   }
+  // each span's first natural frequencies at its mean tension and the chain's mean speed
+  // (span_modes.hpp): the two-wheel loop's spans are the centre distance long, a free layout's
+  // its belt path's straight pieces (in the order of its spans)
+  std::vector<double> span_length;
+  if (d.layout()) {
+    for (const PathPiece& q : d.path.pieces)
+      if (!q.arc) span_length.push_back(std::hypot(q.x1 - q.x0, q.y1 - q.y0));
+  } else {
+    span_length.assign(r.span.size(), (d.links - d.teeth) / 2 * d.pitch);
+  }
+  const double chain_speed = driver_teeth * d.pitch / (2 * kPi) *
+                             std::abs(window_stats(r.sprocket[d.driver].speed, win).mean);
+  std::vector<SpanFrequencies> span_f;  // also marked on the report's spectrum
   for (std::size_t k = 0; k < r.span.size(); ++k) {
     const Stats t = window_stats(r.span[k], win);
-    j["summary"]["span_" + std::to_string(k)] =
+    const SpanFrequencies f = span_frequencies(span_length[k], t.mean, d.mass_per_metre,
+                                               chain_speed, d.stiffness, d.pitch);
+    Value& summary = j["summary"]["span_" + std::to_string(k)];
+    summary =
         Value::object({{"mean_tension", t.mean}, {"min_tension", t.min}, {"max_tension", t.max}});
+    // a span on guides is not free: its frequencies are not these
+    if (!d.guides.empty()) continue;
+    summary["transverse_frequency"] = f.transverse;
+    summary["longitudinal_frequency"] = f.longitudinal;
+    span_f.push_back(f);
+    const double qv2 = d.mass_per_metre * chain_speed * chain_speed;
+    if (!std::isfinite(f.transverse) || !std::isfinite(f.longitudinal))
+      rec.diagnostics.push_back(
+          {Diagnostic::Severity::kWarning, "dynamics.span_frequencies_undefined",
+           "span " + std::to_string(k) + " (" + format_g(span_length[k], 4) + " m, mean tension " +
+               format_g(t.mean, 4) +
+               " N): no natural frequencies (they need a span of at least one pitch, " +
+               format_g(d.pitch, 4) + " m, in tension)",
+           t.mean, 0.0});
+    else if (f.transverse == 0.0)
+      rec.diagnostics.push_back(
+          {Diagnostic::Severity::kWarning, "dynamics.span_without_transverse_stiffness",
+           "span " + std::to_string(k) + ": its mean tension " + format_g(t.mean, 4) +
+               " N is not above q v^2 = " + format_g(qv2, 4) +
+               " N at the chain's speed: the span has no transverse natural frequency (it runs "
+               "at or above the speed of its transverse waves)",
+           t.mean, qv2});
   }
   // opt-in (positions = true): positions.x[k][i], positions.y[k][i], node i at time[k]
   if (d.positions) {
@@ -1503,7 +1542,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
     }
     j["positions"] = Value::object({{"x", std::move(x)}, {"y", std::move(y)}});
   }
-  j["diagnostics"] = analysis::diagnostics_value(r.diagnostics);
+  j["diagnostics"] = analysis::diagnostics_value(rec.diagnostics);
   j["units"] = analysis::units_value({{"pitch", "m"},
                                       {"centre_distance", "m"},
                                       {"time", "s"},
@@ -1542,6 +1581,9 @@ Record describe(const Result& r, const analysis::Inputs&) {
   j["units"]["mean_speed"] = "rad/s";
   j["units"]["mean_torque"] = "N m";
   for (const char* key : {"mean_tension", "min_tension", "max_tension"}) j["units"][key] = "N";
+  if (d.guides.empty())
+    for (const char* key : {"transverse_frequency", "longitudinal_frequency"})
+      j["units"][key] = "Hz";
   rec.data = std::move(j);
 
   std::ostringstream csv;
@@ -1628,7 +1670,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
     t << "  hinges " << d.hinge << ": friction arm " << format_g(d.hinge_law.arm * 1e3, 4)
       << " mm, rate band " << format_g(d.hinge_law.rate_band, 3) << " rad/s, friction work "
       << format_g(r.hinge_work, 5) << " J\n";
-  for (const Diagnostic& diag : r.diagnostics)
+  for (const Diagnostic& diag : rec.diagnostics)
     t << "  " << to_string(diag.severity) << ": " << diag.message << "\n";
   rec.table = t.str();
 
@@ -1648,6 +1690,23 @@ Record describe(const Result& r, const analysis::Inputs&) {
   } else {
     report.span.push_back({upper_tight ? "upper span (tight)" : "upper span (slack)", r.span[0]});
     report.span.push_back({upper_tight ? "lower span (slack)" : "lower span (tight)", r.span[1]});
+  }
+  // each span's first transverse frequency and twice it (a transverse vibration stretches the
+  // span twice a cycle), and its first longitudinal one, where the spectrum reaches them
+  for (std::size_t k = 0; k < span_f.size(); ++k) {
+    const std::string& name = report.span[k].name;
+    char text[160];
+    if (span_f[k].transverse > 0.0) {
+      std::snprintf(text, sizeof text, "%s: transverse f1 = %.4g Hz", name.c_str(),
+                    span_f[k].transverse);
+      report.span_markers.push_back({span_f[k].transverse, text});
+      std::snprintf(text, sizeof text, "%s: 2 f1 = %.4g Hz", name.c_str(),
+                    2 * span_f[k].transverse);
+      report.span_markers.push_back({2 * span_f[k].transverse, text});
+    }
+    std::snprintf(text, sizeof text, "%s: longitudinal f1 = %.4g Hz", name.c_str(),
+                  span_f[k].longitudinal);
+    report.span_markers.push_back({span_f[k].longitudinal, text});
   }
   report.wheels = r.outlines;
   report.guides = r.guides;

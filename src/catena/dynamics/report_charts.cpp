@@ -130,6 +130,8 @@ std::vector<analysis::Chart> report_charts(const ReportInput& in) {
       c.traces.push_back(decimated(t.name, t.x, t.y));
     }
     c.markers = mesh_markers(in.teeth, in.driver_speed, f_max);
+    for (const analysis::Marker& m : in.span_markers)
+      if (m.x > 0.0 && m.x <= f_max) c.markers.push_back(m);
     charts.push_back(std::move(c));
   }
 
