@@ -1831,8 +1831,9 @@ Record describe(const Result& r, const analysis::Inputs&) {
       << (upper_tight ? "tight" : "slack") << "), lower " << format_g(late_mean(r.span[1]), 5)
       << " N\n";
   }
-  t << "  energy drift " << format_g(r.energy_drift, 4) << " J, deepest roller penetration "
-    << format_g(r.max_penetration * 1e6, 4) << " um\n";
+  t << "  energy drift " << format_g(r.energy_drift, 4) << " J, deepest "
+    << (d.pocket ? "joint" : "roller") << " penetration " << format_g(r.max_penetration * 1e6, 4)
+    << " um\n";
   if (d.gravity > 0.0 || !d.guides.empty())
     t << "  gravity " << format_g(d.gravity, 6) << " m/s^2, " << d.guides.size()
       << " guide(s), friction work " << format_g(r.friction_work, 5) << " J\n";
