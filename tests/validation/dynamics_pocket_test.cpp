@@ -1,4 +1,4 @@
-// Round-link chain on a pocket wheel, free run-on (issue 21 validation (1), second half;
+// Round-link chain on a pocket wheel, free and forced run-on (issue 21 validation (1), second half;
 // docs/models/dynamics.md, "Pocket wheel"): the strand's speed simulated by the chain dynamics
 // against the free run-on kinematics of seed 003 (catena::pocketwheel::run_on, the library behind
 // `catena pocketwheel`).
@@ -215,6 +215,179 @@ TEST(DynamicsPocketWheel, SoftOrSlackStrandsMissTheOnePercentForAReason) {
   PocketRun taut = slack;
   taut.force = 1000.0;
   EXPECT_GT(c_slack.tilt, 1.3 * compare(taut).tilt);
+}
+
+// Forced (guided) run-on, seed 003 §3 (docs/models/dynamics.md, "Pocket wheel: forced run-on"):
+// the strand runs in a straight guide at height H whose end is at x = −l (the paper's l =
+// 256 mm), between two rails that hold its joints on the line y = H, and leaves it for the
+// wheel as a free span. Compared with catena pocketwheel's forced run-on (plan_run_on with the
+// chordal or tangential guide: the slider span, the paper's, and the pivot span over the edge).
+// The state at t = 0 is the kinematics' φ = 0: the crank where y = H meets the pitch circle
+// (θ0 = δ1/2 chordal, 0 tangential), the link that seats first (plan.first_link) upstream of it,
+// the strand straight along the guide line and moving at ω dx/dφ(0).
+struct Forced {
+  double worst = 0.0;        // max over the bins of |v_sim − v_slider| / ωR
+  double worst_pivot = 0.0;  // the same against the pivot span
+  double max_penetration = 0.0;
+  double rail_gap = 0.0;  // [m] the largest |y − H| of a guided joint
+  bool converged = true;
+};
+
+Forced forced_run_on(const PocketRun& d, pocketwheel::GuideKind kind, double end_distance) {
+  constexpr int kBins = 40;
+  const pocketwheel::PocketWheel pw{.pitch = d.pitch, .wire = d.wire, .teeth = d.teeth};
+  const pocketwheel::RunOnPlan plan =
+      pocketwheel::plan_run_on(pw, {.kind = kind, .end_distance = end_distance});
+  const pocketwheel::RunOnPlan pivot = pocketwheel::plan_run_on(
+      pw,
+      {.kind = kind, .end_distance = end_distance, .span_model = pocketwheel::SpanModel::kPivot});
+  Sprocket w = pocket_wheel(d.pitch, d.wire, d.teeth, 0.0, 0.0, d.clearance, d.contact_stiffness,
+                            d.contact_damping);
+  w.driver = true;
+  w.speed = -d.omega;
+  const double r = w.pitch_radius, d1 = w.pocket_angle;
+  const double tau = 2 * kPi / d.teeth, d2 = tau - d1;
+  const double h = plan.guide_height, l = end_distance;
+  const double th0 = plan.phases.front().crank_angle0;
+  const bool long_first = plan.first_link > d.pitch;  // t + d seats first
+  // link c − 1 (upstream of the crank c) is t + d for c − 1 even
+  const int c = d.strand_links + ((d.strand_links % 2 == 1) == long_first ? 0 : 1);
+  const auto n = static_cast<std::size_t>(c + 1 + d.wrapped);
+  Model model = uniform_chain(n, false, d.pitch, d.node_mass, d.stiffness, d.damping, false);
+  model.alternation = d.wire;
+  model.sprockets = {w};
+  model.loads = {{.node = 0, .fx = -d.force, .fy = 0.0}};
+  // two rails holding the joints on y = H up to the guide's end: the lower carries them on top,
+  // the upper (run from its end back) holds them from above; the joints ride a rail's roller
+  // radius from its surface
+  const double rr = 0.5 * d.wire, far = -l - 2.0 * d.strand_links * d.pitch;
+  Guide lower{.x0 = far, .y0 = h - rr, .x1 = -l, .y1 = h - rr};
+  Guide upper{.x0 = -l, .y0 = h + rr, .x1 = far, .y1 = h + rr};
+  for (Guide* g : {&lower, &upper}) {
+    g->roller_radius = rr;
+    g->contact_stiffness = d.contact_stiffness;
+    g->contact_damping = d.contact_damping;
+  }
+  model.guides = {lower, upper};
+  State s(n, 1);
+  const double polar_c = kPi / 2 + th0;
+  // vertex 2m at ψ + mτ, 2m + 1 at ψ + mτ + δ1: the crank is odd when its upstream link is t − d
+  s.angle = {long_first ? polar_c : polar_c - d1};
+  s.speed = {-d.omega};
+  const double cx = -r * std::sin(th0), cy = r * std::cos(th0);
+  const double v0 = d.omega * pocketwheel::evaluate(plan, 0.0).dx;
+  double x = cx;
+  for (int i = c; i >= 0; --i) {
+    s.x[i] = x;
+    s.y[i] = cy;  // = H
+    s.vx[i] = i == c ? d.omega * r * std::cos(th0) : v0;
+    s.vy[i] = i == c ? d.omega * r * std::sin(th0) : 0.0;
+    if (i > 0) x -= model.rest_length(static_cast<std::size_t>(i - 1)) + d.force / d.stiffness;
+  }
+  double polar = polar_c;
+  for (int k = 1; k <= d.wrapped; ++k) {
+    const auto i = static_cast<std::size_t>(c + k);
+    // link c + k − 1 downstream: t + d (δ1) when its index is even
+    polar -= (c + k - 1) % 2 == 0 ? d1 : d2;
+    s.x[i] = r * std::cos(polar);
+    s.y[i] = r * std::sin(polar);
+    s.vx[i] = d.omega * r * std::sin(polar);
+    s.vy[i] = -d.omega * r * std::cos(polar);
+  }
+  EXPECT_NEAR(cy, h, 1e-12);
+  // the strand's nodes that stay in the guide over the run (2 links leave it a period)
+  std::vector<int> guided;
+  for (int i = 2; i < c; ++i)
+    if (s.x[i] < -l - (2.0 * d.periods + 2.0) * d.pitch) guided.push_back(i);
+  EXPECT_GT(guided.size(), 10u);
+  Integrator integ(model, {.step = d.step, .theta = d.theta});
+  std::vector<double> sum(kBins, 0.0);
+  std::vector<int> count(kBins, 0);
+  const double period = tau / d.omega;
+  const int steps = static_cast<int>(std::lround(d.periods * period / d.step));
+  Forced out;
+  for (int k = 0; k < steps; ++k) {
+    const StepReport rep = integ.step(model, s);
+    if (!rep.converged) {
+      out.converged = false;
+      break;
+    }
+    out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
+    if (s.time < d.skip_periods * period) continue;
+    double v = 0.0;
+    for (int i : guided) {
+      v += s.vx[i];
+      out.rail_gap = std::max(out.rail_gap, std::abs(s.y[i] - h));
+    }
+    const double phase = std::fmod(d.omega * s.time, tau) / tau;
+    const int b = std::min(kBins - 1, static_cast<int>(phase * kBins));
+    sum[b] += v / static_cast<double>(guided.size());
+    ++count[b];
+  }
+  const double vr = d.omega * r;
+  for (int b = 0; b < kBins; ++b) {
+    const double phi = (b + 0.5) / kBins * tau;
+    const double sim = count[b] ? sum[b] / count[b] : NAN;
+    out.worst =
+        std::max(out.worst, std::abs(sim - d.omega * pocketwheel::evaluate(plan, phi).dx) / vr);
+    out.worst_pivot = std::max(out.worst_pivot,
+                               std::abs(sim - d.omega * pocketwheel::evaluate(pivot, phi).dx) / vr);
+  }
+  std::printf("%s l %.3f k %.2g F %.0f: worst %.4f (pivot %.4f), rail gap %.1f um, pen %.1f um\n",
+              pocketwheel::to_string(kind), l, d.stiffness, d.force, out.worst, out.worst_pivot,
+              out.rail_gap * 1e6, out.max_penetration * 1e6);
+  return out;
+}
+
+// The strand in the guide against catena pocketwheel's forced run-on (the paper's slider span;
+// the pivot span differs from it by < 0.12 % of ωR in speed), the paper's l = 256 mm, on the stiff
+// strand of the free run-on's passing case (k = 1.6e9 N/m), 10 tooth periods, the first 2
+// skipped (the synchronous average over 8).
+Forced forced(pocketwheel::GuideKind kind, double force) {
+  PocketRun d;
+  d.stiffness = 1.6e9;
+  d.force = force;
+  d.periods = 10;
+  d.skip_periods = 2;
+  d.strand_links = 70;  // 2 links leave the guide a period: 20 in all, the rest stays in it
+  const Forced f = forced_run_on(d, kind, 0.256);
+  EXPECT_TRUE(f.converged);
+  // every joint held in its pocket (clearance 0.1 mm; F/k_c = 50 µm at 5 kN)
+  EXPECT_LT(f.max_penetration, d.clearance);
+  // the rails hold the guided joints on the guide line
+  EXPECT_LT(f.rail_gap, 1e-5);
+  return f;
+}
+
+// Within 1 % of ωR (the issue's tolerance, as for the free run-on): the tangential guide at 1, 2
+// and 5 kN (measured 0.52 %, 0.45 %, 0.51 %; against the pivot span 0.55 %, 0.36 %, 0.45 %) and
+// the chordal guide at 5 kN (0.84 %).
+//
+// Pinned as measured: the chordal guide at low tension misses the 1 % (1.90 % at 1 kN; 0.98 % at
+// 2 kN, at the edge and not asserted). The simulated speed follows the kinematics' profile with a
+// ripple of about 3.8° of φ (75 Hz) that starts at the seating on φ = 0 (the first bin, 0.955
+// against 0.971 ωR) and comes back every period, so the synchronous average keeps it (over 18
+// periods: 1.64 % at 1 kN); it falls as the tension rises — as the free run-on's slack strand.
+// The tangential guide, whose seatings fall inside the period (15.9° and 37.6°), passes at 1 kN.
+// Which mode rings is not identified (docs/models/dynamics.md, "Pocket wheel: forced run-on").
+TEST(DynamicsPocketWheel, ForcedRunOnStrandSpeedAgainstPocketwheel) {
+  using pocketwheel::GuideKind;
+  for (double force : {1000.0, 2000.0, 5000.0}) {
+    const Forced f = forced(GuideKind::kTangential, force);
+    EXPECT_LT(f.worst, 0.01) << "tangential F " << force;
+    // the 1 % alone does not tell a guided strand from a free one: the same run without the
+    // rails deviates 0.73 %, 0.92 %, 0.86 % (measured). The free run-on's stiff strands level off
+    // at 0.5-0.6 %; 0.65 % holds the guided run and fails the unguided one.
+    EXPECT_LT(f.worst, 0.0065) << "tangential F " << force;
+    EXPECT_LT(f.worst_pivot, 0.01) << "tangential F " << force;
+  }
+  const Forced high = forced(GuideKind::kChordal, 5000.0);
+  EXPECT_LT(high.worst, 0.01);
+  EXPECT_LT(high.worst_pivot, 0.01);
+  const Forced low = forced(GuideKind::kChordal, 1000.0);
+  EXPECT_GT(low.worst, 0.01);
+  EXPECT_LT(low.worst, 0.025);
+  EXPECT_GT(low.worst, 1.5 * high.worst);  // the deviation falls with the tension
 }
 
 }  // namespace

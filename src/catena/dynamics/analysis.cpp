@@ -27,11 +27,13 @@
 #include "catena/drive/sprocket.hpp"
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/layout.hpp"
+#include "catena/dynamics/pocket_wheel.hpp"
 #include "catena/dynamics/report_charts.hpp"
 #include "catena/dynamics/span_modes.hpp"
 #include "catena/io/bind.hpp"
 #include "catena/io/case_file.hpp"
 #include "catena/io/quantity.hpp"
+#include "catena/pocketwheel/geometry.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -102,7 +104,17 @@ std::vector<Parameter> table_fields() {
                "rate band of the regularised hinge friction, in (0, 100] rad/s (default 5 rad/s)"),
       text("positions",
            "true to add every node's x and y at each output sample to the JSON (default false; "
-           "at most 500000 node-samples)")};
+           "at most 500000 node-samples)"),
+      // the round-link chain on pocket wheels (docs/models/dynamics.md, "Pocket wheel")
+      text("wheel",
+           "iso606 (roller chain on ISO 606 sprockets, the default) or pocket (round-link chain "
+           "on pocket wheels, seed 003: pitch = the link's inner length t, wire_diameter d, "
+           "teeth = pockets z)"),
+      quantity("wire_diameter", K::kLength,
+               "pocket: the links' wire diameter d, in (0, pitch) (as catena pocketwheel's wire)"),
+      quantity("pocket_clearance", K::kLength,
+               "pocket: a joint's free play about its pocket's vertex, in (0, 0.1 pitch] "
+               "(default 0.1 mm)")};
 }
 
 // [[dynamics.guide]]: a rail the rollers slide on (docs/models/dynamics.md, "Guides"), in the
@@ -221,6 +233,10 @@ struct Setup {
   double stiffness = NAN, damping = 0.0, pretension = 0.0;
   double contact_stiffness = NAN, contact_damping = NAN;
   double seat_friction = 0.0;  // μ of the roller-seat contact
+  // wheel = "pocket": a round-link chain (pitch t, wire d) on two equal pocket wheels
+  bool pocket = false;
+  double wire = NAN, clearance = NAN;
+  double pocket_radius = NAN, pocket_angle = NAN;  // R and δ1 of seed 003
   double duration = NAN, step = NAN, interval = NAN, theta = 0.6;
   int teeth = 0;
   std::size_t driver = 0, driven = 1;
@@ -524,6 +540,7 @@ Setup parse(const analysis::Inputs& in) {
   std::string hinge = "frictionless";
   bool hinge_known = true;
   bool positions = false;
+  std::string wheel = "iso606";
   for (const Entry& v : file.table) {
     if (v.path.rfind("dynamics.", 0) != 0) continue;  // the rest of a case file is not ours
     std::smatch m;
@@ -631,6 +648,14 @@ Setup parse(const analysis::Inputs& in) {
       }
       continue;
     }
+    if (key == "wheel") {
+      line[key] = v.line;
+      if (v.is_string && (v.text == "iso606" || v.text == "pocket"))
+        wheel = v.text;
+      else
+        issues.push_back({where(v), "'" + v.text + "'", "iso606 or pocket"});
+      continue;
+    }
     if (key == "positions") {
       line[key] = v.line;
       if (v.is_boolean)
@@ -670,6 +695,36 @@ Setup parse(const analysis::Inputs& in) {
   auto shown = [&](double x) { return format_g(x, 6); };
 
   Setup s;
+  s.pocket = wheel == "pocket";
+  // a round-link chain on pocket wheels: no catalogue, no roller; the keys of the roller chain
+  // and the parts not built for a pocket are refused, each by name
+  if (s.pocket) {
+    const std::string why = " with wheel = \"pocket\"";
+    for (const char* key : {"chain", "roller_diameter", "inner_width"})
+      if (line.count(key))
+        issues.push_back({at(key), key == std::string("chain") ? "'" + chain + "'" : "(given)",
+                          std::string("no ") + key + why +
+                              " (a round-link chain: pitch = t, wire_diameter = d)"});
+    if (line.count("seat_friction") &&
+        !(value.count("seat_friction") && value["seat_friction"] == 0))
+      issues.push_back({at("seat_friction"),
+                        value.count("seat_friction") ? shown(value["seat_friction"]) : "(given)",
+                        "0 or omitted" + why + " (friction in the pockets is not built)"});
+    if (line.count("hinge") && hinge != "frictionless")
+      issues.push_back({at("hinge"), "'" + hinge + "'",
+                        "frictionless" + why + " (the round links' joint friction is not built)"});
+    hinge = "frictionless";  // a sliding or rolling one is reported: its keys are not asked for
+    if (!guides.empty())
+      issues.push_back({"dynamics.guide", std::to_string(guides.size()) + " guide(s)",
+                        "no [[dynamics.guide]]" + why +
+                            " (where a rail carries a round link's joints is not built)"});
+    has_chain = false;  // reported; the catalogue is not consulted
+  } else {
+    for (const char* key : {"wire_diameter", "pocket_clearance"})
+      if (line.count(key))
+        issues.push_back({at(key), value.count(key) ? shown(value[key]) : "(given)",
+                          std::string("only with wheel = \"pocket\"")});
+  }
   // the chain: the catalogue's values, each overridable
   std::optional<contact::ChainDimensions> row_found;
   if (has_chain) {
@@ -686,18 +741,42 @@ Setup parse(const analysis::Inputs& in) {
                         std::string(what) + " (or chain = an ISO 606 designation that has it)"});
     return NAN;
   };
-  s.pitch = chain_value("pitch", row_found ? std::optional(row_found->pitch) : std::nullopt,
-                        "the pitch p, e.g. \"19.05 mm\"");
+  s.pitch = chain_value(
+      "pitch", row_found ? std::optional(row_found->pitch) : std::nullopt,
+      s.pocket ? "the link's inner length t, e.g. \"64 mm\"" : "the pitch p, e.g. \"19.05 mm\"");
   s.mass_per_metre =
       chain_value("mass_per_metre", row_found ? row_found->mass_per_metre : std::nullopt,
                   "the chain's mass per metre, e.g. \"1.25 kg/m\"");
-  s.roller = chain_value("roller_diameter", row_found ? row_found->roller_diameter : std::nullopt,
-                         "the roller diameter d1, e.g. \"12.07 mm\"");
-  s.width = chain_value("inner_width", row_found ? row_found->inner_width : std::nullopt,
-                        "the inner width b1, e.g. \"11.68 mm\"");
+  if (!s.pocket) {
+    s.roller = chain_value("roller_diameter", row_found ? row_found->roller_diameter : std::nullopt,
+                           "the roller diameter d1, e.g. \"12.07 mm\"");
+    s.width = chain_value("inner_width", row_found ? row_found->inner_width : std::nullopt,
+                          "the inner width b1, e.g. \"11.68 mm\"");
+  }
   for (const char* key : {"pitch", "mass_per_metre", "roller_diameter", "inner_width"}) {
-    if (value.count(key) && !(value[key] > 0.0))
+    if (value.count(key) && !(value[key] > 0.0) && (!s.pocket || key[0] == 'p' || key[0] == 'm'))
       issues.push_back({at(key), shown(value[key]), "> 0"});
+  }
+  if (s.pocket) {
+    if (value.count("wire_diameter")) {
+      s.wire = value["wire_diameter"];
+      if (!(s.wire > 0.0 && std::isfinite(s.wire) && !(s.wire >= s.pitch)))
+        issues.push_back({at("wire_diameter"), shown(s.wire),
+                          "in (0, pitch)" + (s.pitch > 0.0 ? " = (0, " + shown(s.pitch) + ") m"
+                                                           : std::string())});
+    } else if (!line.count("wire_diameter")) {
+      issues.push_back({"dynamics.wire_diameter", "(missing)",
+                        "the links' wire diameter d with wheel = \"pocket\", e.g. \"18 mm\""});
+    }
+    s.clearance = value.count("pocket_clearance")  ? value["pocket_clearance"]
+                  : line.count("pocket_clearance") ? NAN
+                                                   : 1e-4;
+    if (value.count("pocket_clearance") && !(s.clearance > 0.0 && std::isfinite(s.clearance) &&
+                                             !(s.pitch > 0.0 && s.clearance > 0.1 * s.pitch)))
+      issues.push_back(
+          {at("pocket_clearance"), shown(s.clearance),
+           "in (0, 0.1 pitch]" +
+               (s.pitch > 0.0 ? " = (0, " + shown(0.1 * s.pitch) + "] m" : std::string())});
   }
 
   auto required = [&](const char* key, const char* what) -> double {
@@ -711,14 +790,29 @@ Setup parse(const analysis::Inputs& in) {
   };
   // a centre on any sprocket makes the free layout, where the links are optional (the count the
   // belt path fits)
-  const bool layout = std::any_of(wheels.begin(), wheels.end(), [](const SprocketInput& w) {
-    return w.seen.count("centre_x") || w.seen.count("centre_y");
-  });
+  const bool layout =
+      !s.pocket && std::any_of(wheels.begin(), wheels.end(), [](const SprocketInput& w) {
+        return w.seen.count("centre_x") || w.seen.count("centre_y");
+      });
+  for (std::size_t i = 0; s.pocket && i < wheels.size(); ++i) {
+    for (const char* key : {"centre_x", "centre_y"}) {
+      const auto it = wheels[i].seen.find(key);
+      if (it != wheels[i].seen.end())
+        issues.push_back({"dynamics.sprocket[" + std::to_string(i) + "]." + key + " (line " +
+                              std::to_string(it->second) + ")",
+                          "(given)",
+                          "no centres with wheel = \"pocket\" (two equal pocket wheels on a "
+                          "line; the free layout of pocket wheels is not built)"});
+    }
+  }
   const double links = layout ? optional("links", NAN)
                               : required("links", "the number of links in the loop, an integer");
   s.stiffness = required("axial_stiffness", "the axial stiffness k of one link, e.g. \"5e7 N/m\"");
-  s.contact_stiffness = optional("contact_stiffness", NAN);  // omitted: the Hertz default below
-  s.hertz_stiffness = !line.count("contact_stiffness");
+  s.contact_stiffness = s.pocket ? required("contact_stiffness",
+                                            "the joint-pocket penalty k_c with wheel = \"pocket\" "
+                                            "(no Hertz default), e.g. \"1e8 N/m\"")
+                                 : optional("contact_stiffness", NAN);  // omitted: Hertz below
+  s.hertz_stiffness = !s.pocket && !line.count("contact_stiffness");
   s.contact_damping = required("contact_damping", "the roller-seat damping c_c [N s/m], e.g. 800");
   s.duration = required("duration", "the simulated time, e.g. \"0.5 s\"");
   s.step = required("step", "the time step h, e.g. \"0.1 ms\"");
@@ -770,11 +864,15 @@ Setup parse(const analysis::Inputs& in) {
     const SprocketInput& w = wheels[i];
     const std::string base = "dynamics.sprocket[" + std::to_string(i) + "].";
     const std::string l = w.line ? " (line " + std::to_string(w.line) + ")" : "";
+    // a pocket wheel: z pockets of lying links (2z joints a turn); z even so that half a turn
+    // takes a vertex to a vertex
+    const int lowest = s.pocket ? 4 : 8;
+    const std::string range = "an even integer in [" + std::to_string(lowest) + ", 150]";
     if (!w.teeth) {
-      issues.push_back({base + "teeth" + l, "(missing)", "an even integer in [8, 150]"});
-    } else if (!is_integer(*w.teeth) || *w.teeth < 8 || *w.teeth > 150 ||
+      issues.push_back({base + "teeth" + l, "(missing)", range});
+    } else if (!is_integer(*w.teeth) || *w.teeth < lowest || *w.teeth > 150 ||
                static_cast<long>(*w.teeth) % 2 != 0) {
-      issues.push_back({base + "teeth" + l, shown(*w.teeth), "an even integer in [8, 150]"});
+      issues.push_back({base + "teeth" + l, shown(*w.teeth), range});
     } else {
       teeth[i] = static_cast<int>(*w.teeth);
     }
@@ -833,7 +931,34 @@ Setup parse(const analysis::Inputs& in) {
                             " (unequal wheels need centre_x and centre_y on every sprocket)"});
     s.teeth = teeth[0] && teeth[0] == teeth[1] ? teeth[0] : 0;
   }
-  if (!layout && !std::isnan(links)) {
+  // the pocket wheel's geometry (seed 003 eqs. (6)-(7)) once t, d and z are valid; delta1 below
+  // 60 deg for the pocket's mouth to hold the crank (docs/models/dynamics.md, "Pocket wheel")
+  if (s.pocket && s.teeth && s.pitch > 0.0 && s.wire > 0.0 && s.wire < s.pitch) {
+    const pocketwheel::WheelGeometry g =
+        pocketwheel::wheel_geometry({.pitch = s.pitch, .wire = s.wire, .teeth = s.teeth});
+    s.pocket_radius = g.pitch_radius;
+    s.pocket_angle = g.delta1;
+    if (!(g.delta1 < kPi / 3.0))
+      issues.push_back({"dynamics.sprocket[0].teeth", std::to_string(s.teeth),
+                        "an even z whose pocket angle delta1 < 60 deg (here " +
+                            format_g(g.delta1 * 180.0 / kPi, 4) +
+                            " deg: more pockets, or a thinner wire)"});
+  }
+  if (s.pocket && !std::isnan(links)) {
+    // z links round each half-wrapped wheel, 2m on each straight span (2m t between centres)
+    if (!is_integer(links) || links < 1 || links > 10000) {
+      issues.push_back({at("links"), shown(links), "an integer 2z + 4m in [2z + 4, 10000]"});
+    } else {
+      s.links = static_cast<int>(links);
+      if (s.teeth && (s.links - 2 * s.teeth < 4 || (s.links - 2 * s.teeth) % 4 != 0))
+        issues.push_back({at("links"), std::to_string(s.links),
+                          "2z + 4m with m >= 1 (2m links, 2m t between the centres): " +
+                              std::to_string(2 * s.teeth + 4) + ", " +
+                              std::to_string(2 * s.teeth + 8) +
+                              ", ... (z = " + std::to_string(s.teeth) + ")"});
+    }
+  }
+  if (!s.pocket && !layout && !std::isnan(links)) {
     if (!is_integer(links) || links < 1 || links > 10000) {
       issues.push_back({at("links"), shown(links), "an integer in [z + 4, 10000]"});
     } else {
@@ -1165,21 +1290,82 @@ void nearest_span_links(const Setup& d, const State& s, std::vector<std::size_t>
   }
 }
 
+// The round-link loop on two equal pocket wheels of z pockets (docs/models/dynamics.md,
+// "Command"): wheel 0 at the origin, wheel 1 at (2m t, 0); the joints on the wheels at the
+// vertices of seed 003's polygon (sides t + d and t - d from a vertex at the top or bottom),
+// z links round each half-wrapped wheel, 2m on each straight span at y = +-R, every node at the
+// wheels' pitch-line speed (counter-clockwise). Node 0 is at wheel 0's top vertex and link 0 is
+// a t + d link (Model::alternation).
+State pocket_loop(const Setup& d, int m) {
+  const int z = d.teeth;
+  const double r = d.pocket_radius, d1 = d.pocket_angle, d2 = 2 * kPi / z - d1;
+  const double v = d.speed * r, centre = 2 * m * d.pitch;
+  State s(static_cast<std::size_t>(2 * z + 4 * m), 2);
+  std::size_t i = 0;
+  auto put = [&](double x, double y, double vx, double vy) {
+    s.x[i] = x;
+    s.y[i] = y;
+    s.vx[i] = vx;
+    s.vy[i] = vy;
+    ++i;
+  };
+  auto wrap = [&](double cx, double start) {  // z + 1 joints, the last one shared with the span
+    double polar = start;
+    for (int k = 0; k <= z; ++k) {
+      put(cx + r * std::cos(polar), r * std::sin(polar), -v * std::sin(polar), v * std::cos(polar));
+      polar += k % 2 == 0 ? d1 : d2;
+    }
+  };
+  auto span = [&](double x0, double y, double dir) {  // the 2m - 1 inner joints of a span
+    double x = x0;
+    for (int j = 1; j < 2 * m; ++j) {
+      x += dir * (j % 2 == 1 ? d.pitch + d.wire : d.pitch - d.wire);
+      put(x, y, dir * v, 0.0);
+    }
+  };
+  wrap(0.0, kPi / 2);
+  span(0.0, -r, 1.0);
+  wrap(centre, -kPi / 2);
+  span(centre, r, -1.0);
+  s.angle = {kPi / 2, -kPi / 2};
+  s.speed = {d.speed, d.speed};
+  return s;
+}
+
+// A pocket wheel's outline for the animation: its joint polygon on the pitch circle (vertex 0
+// on +x at angle 0, as the sprockets' seat 0), closed.
+std::vector<std::pair<double, double>> pocket_outline(const Setup& d) {
+  std::vector<std::pair<double, double>> line;
+  const double tau = 2 * kPi / d.teeth;
+  for (int k = 0; k <= d.teeth; ++k) {
+    for (double a : {k * tau, k * tau + d.pocket_angle}) {
+      line.emplace_back(d.pocket_radius * std::cos(a), d.pocket_radius * std::sin(a));
+      if (k == d.teeth) break;
+    }
+  }
+  return line;
+}
+
 Result run(const analysis::Inputs& in) {
   Result out;
   out.setup = parse(in);
   const Setup& d = out.setup;
-  const int z = d.teeth, m = (d.links - z) / 2;
+  const int z = d.teeth;
+  // the span's pitches (ISO) or its pairs of links (pocket: 2m links between the wheels)
+  const int m = d.pocket ? (d.links - 2 * z) / 4 : (d.links - z) / 2;
   const auto n = static_cast<std::size_t>(d.links);
   const double rest = (d.layout() ? d.laid_pitch : d.pitch) - d.pretension / d.stiffness;
   Model model =
       uniform_chain(n, true, rest, d.mass_per_metre * d.pitch, d.stiffness, d.damping, false);
-  const double centre = m * d.pitch;
+  if (d.pocket) model.alternation = d.wire;
+  const double centre = (d.pocket ? 2 * m : m) * d.pitch;
   std::vector<Sprocket> wheels;
   if (d.layout()) wheels = layout_sprockets(d);
   for (std::size_t w = 0; !d.layout() && w < 2; ++w) {
-    Sprocket s = iso606_sprocket(d.pitch, d.roller, d.width, z, w == 0 ? 0.0 : centre, 0.0,
-                                 d.contact_stiffness, d.contact_damping);
+    Sprocket s = d.pocket ? pocket_wheel(d.pitch, d.wire, z, w == 0 ? 0.0 : centre, 0.0,
+                                         d.clearance, d.contact_stiffness, d.contact_damping)
+                          : iso606_sprocket(d.pitch, d.roller, d.width, z, w == 0 ? 0.0 : centre,
+                                            0.0, d.contact_stiffness, d.contact_damping);
     s.friction = d.seat_friction;
     if (w == d.driver) {
       s.driver = true;
@@ -1195,6 +1381,7 @@ Result run(const analysis::Inputs& in) {
   model.gravity_y = -d.gravity;
   model.hinge = d.hinge_law;
   State s = d.layout() ? layout_state(d)
+            : d.pocket ? pocket_loop(d, m)
                        : two_sprocket_loop(z, m, d.pitch, wheels[0].pitch_radius, d.speed);
   const std::size_t nw = wheels.size();
   // A roller that starts inside a rail is moved out along the rail's normal to touch it (the
@@ -1251,7 +1438,9 @@ Result run(const analysis::Inputs& in) {
   for (std::size_t w = 0; w < nw; ++w) {
     out.outlines.push_back({"sprocket " + std::to_string(w) + " (" + role_of(d, w) + ")",
                             wheels[w].centre_x, wheels[w].centre_y,
-                            sprocket_outline(d.pitch, d.roller, d.width, wheels[w].teeth)});
+                            d.pocket
+                                ? pocket_outline(d)
+                                : sprocket_outline(d.pitch, d.roller, d.width, wheels[w].teeth)});
     drawn += out.outlines.back().outline.size() + 1;
   }
   for (const Guide& g : d.guides) {
@@ -1384,9 +1573,12 @@ Record describe(const Result& r, const analysis::Inputs&) {
   const double rtf = r.wall_time > 0.0 ? simulated / r.wall_time : 0.0;
   Value j = Value::object();
   j["model"] = "dynamics.chain_loop";
-  j["source"] =
-      "implicit midpoint / theta-method with the discrete energy-momentum gradient (Simo & Tarnow "
-      "1992), ISO 606 sprocket seats (docs/models/dynamics.md)";
+  j["source"] = std::string(
+                    "implicit midpoint / theta-method with the discrete energy-momentum gradient "
+                    "(Simo & Tarnow ") +
+                (d.pocket ? "1992), round-link chain on pocket wheels at seed 003's joint polygon "
+                            "(docs/models/dynamics.md)"
+                          : "1992), ISO 606 sprocket seats (docs/models/dynamics.md)");
   if (!d.chain.empty()) j["chain"] = d.chain;
   j["pitch"] = d.pitch;
   j["links"] = d.links;
@@ -1397,7 +1589,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["laid_pitch"] = d.laid_pitch;
   } else {
     j["teeth"] = d.teeth;
-    j["centre_distance"] = (d.links - d.teeth) / 2 * d.pitch;
+    j["centre_distance"] =
+        d.pocket ? (d.links - 2 * d.teeth) / 4 * 2 * d.pitch : (d.links - d.teeth) / 2 * d.pitch;
   }
   j["theta"] = d.theta;
   j["time"] = r.time;
@@ -1444,6 +1637,14 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                 {"max_penetration", r.max_penetration}});
   // gravity and guides add fields only when given: a run without them prints what it did before
   if (d.gravity > 0.0) j["gravity"] = d.gravity;
+  // a round-link chain on pocket wheels (wheel = "pocket"): its wheel and chain
+  if (d.pocket) {
+    j["wheel"] = "pocket";
+    j["wire_diameter"] = d.wire;
+    j["pocket_clearance"] = d.clearance;
+    j["pitch_radius"] = d.pocket_radius;
+    j["pocket_angle"] = d.pocket_angle;
+  }
   // contact_stiffness omitted: the Hertz default used and its linearisation load
   if (d.hertz_stiffness) {
     j["contact_stiffness"] = d.contact_stiffness;
@@ -1558,6 +1759,9 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                       {"value", "SI"},
                                       {"limit", "SI"}});
   if (d.gravity > 0.0) j["units"]["gravity"] = "m/s^2";
+  if (d.pocket)
+    for (const char* key : {"wire_diameter", "pocket_clearance", "pitch_radius", "pocket_angle"})
+      j["units"][key] = key == std::string("pocket_angle") ? "rad" : "m";
   if (d.layout())
     for (const char* key : {"path_length", "laid_pitch", "centre_x", "centre_y"})
       j["units"][key] = "m";
@@ -1631,8 +1835,15 @@ Record describe(const Result& r, const analysis::Inputs&) {
     t << "Catena dynamics: chain loop over two sprockets in time (issue 21)\n\n"
       << "  " << (d.chain.empty() ? "chain" : d.chain) << ", " << d.links
       << " links, z = " << d.teeth << " / " << d.teeth << ", centre distance "
-      << format_g((d.links - d.teeth) / 2 * d.pitch * 1e3, 5) << " mm, theta "
-      << format_g(d.theta, 3);
+      << format_g(
+             (d.pocket ? (d.links - 2 * d.teeth) / 4 * 2 : (d.links - d.teeth) / 2) * d.pitch * 1e3,
+             5)
+      << " mm, theta " << format_g(d.theta, 3);
+    if (d.pocket)
+      t << "\n  round-link chain " << format_g(d.wire * 1e3, 4) << " x "
+        << format_g(d.pitch * 1e3, 4) << " mm on pocket wheels (seed 003): R "
+        << format_g(d.pocket_radius * 1e3, 6) << " mm, delta1 "
+        << format_g(d.pocket_angle * 180.0 / kPi, 5) << " deg";
   }
   t << "\n  " << r.steps << " steps of " << format_g(d.step * 1e3, 4) << " ms ("
     << format_g(simulated, 5) << " s) in " << fixed(r.wall_time, 3)
@@ -1653,8 +1864,9 @@ Record describe(const Result& r, const analysis::Inputs&) {
       << (upper_tight ? "tight" : "slack") << "), lower " << format_g(late_mean(r.span[1]), 5)
       << " N\n";
   }
-  t << "  energy drift " << format_g(r.energy_drift, 4) << " J, deepest roller penetration "
-    << format_g(r.max_penetration * 1e6, 4) << " um\n";
+  t << "  energy drift " << format_g(r.energy_drift, 4) << " J, deepest "
+    << (d.pocket ? "joint" : "roller") << " penetration " << format_g(r.max_penetration * 1e6, 4)
+    << " um\n";
   if (d.gravity > 0.0 || !d.guides.empty())
     t << "  gravity " << format_g(d.gravity, 6) << " m/s^2, " << d.guides.size()
       << " guide(s), friction work " << format_g(r.friction_work, 5) << " J\n";
@@ -1736,7 +1948,7 @@ analysis::Analysis make() {
       "angle, speed and torque, span tensions (issue 21, docs/models/dynamics.md)";
   a.seed = "issue 21";
   a.docs = "docs/models/dynamics.md";
-  a.chain_types = {"roller-iso606"};
+  a.chain_types = {"roller-iso606", "round-link"};  // round-link: wheel = "pocket"
   a.formats = {.table = true, .csv = true, .drawing = false};
   using analysis::quantity;
   a.parameters = {
