@@ -116,4 +116,87 @@ void BM_DynamicsTwoSprocketDriveHingeFriction(benchmark::State& bs) {
 }
 BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFriction)->Unit(benchmark::kMicrosecond)->MinTime(3.0);
 
+// Guides (docs/models/dynamics.md, "Guides"): the conveyor loop of examples/dynamics_conveyor.toml
+// (validation (6b)): 136 links of 12B (pretension 20 N, 5e7 N/m, 100 N·s/m) over two z = 16
+// wheels 60 pitches apart, the driver at 5 rad/s, a tail idler (J = 0.002 kg·m²), gravity; both
+// runs on level rails with μ = 0.3 (1e7 N/m, 100 N·s/m) from 3 pitches after one wheel to 3 before
+// the other, each with a 50 mm lead-in arc at its entry end; θ = 0.6, h = 1e-4 s. Every guide is
+// tried against every node in each Newton iteration, O(N·G) a step: the argument cuts each straight
+// rail into that many collinear pieces end to end (1: the example's 4 guides; 4: 10; 16: 34 —
+// the same rails, a roller on a joint between two pieces touches both for an instant), and 0
+// runs the loop without guides (it sags under gravity: the cost of the rest of the step).
+void BM_DynamicsConveyorGuides(benchmark::State& bs) {
+  constexpr double kPi = std::numbers::pi;
+  constexpr int kTeeth = 16, kSpan = 60, kGap = 3;
+  constexpr double kOmega = 5.0, kRoller = 0.01207;
+  const int pieces = static_cast<int>(bs.range(0));
+  const auto n = static_cast<std::size_t>(kTeeth + 2 * kSpan);
+  Model m = uniform_chain(n, true, kPitch - 20.0 / kStiffness, kNodeMass, kStiffness, 100.0, false);
+  m.gravity_y = -9.81;
+  const double centre = kSpan * kPitch;
+  Sprocket a = iso606_sprocket(kPitch, kRoller, 0.01168, kTeeth, 0.0, 0.0, 2e8, 800.0);
+  a.driver = true;
+  a.speed = kOmega;
+  Sprocket b = iso606_sprocket(kPitch, kRoller, 0.01168, kTeeth, centre, 0.0, 2e8, 800.0);
+  b.inertia = 0.002;
+  m.sprockets = {a, b};
+  const double r = 0.5 * kRoller, level = a.pitch_radius * std::sin(kPi / kTeeth) / (kPi / kTeeth);
+  const double x_lo = kGap * kPitch, x_hi = (kSpan - kGap) * kPitch;
+  if (pieces > 0) {
+    for (const double y : {level, -level}) {
+      for (int k = 0; k < pieces; ++k) {
+        Guide g;  // left to right: the rollers on top
+        g.x0 = x_lo + (x_hi - x_lo) * k / pieces;
+        g.x1 = x_lo + (x_hi - x_lo) * (k + 1) / pieces;
+        g.y0 = g.y1 = y - r;
+        g.roller_radius = r;
+        g.contact_stiffness = 1e7;
+        g.contact_damping = 100.0;
+        g.friction = 0.3;
+        m.guides.push_back(g);
+      }
+    }
+    for (const bool upper : {true, false}) {  // the lead-ins at the entry ends
+      Guide nose = m.guides.front();
+      nose.kind = Guide::Kind::kArc;
+      nose.radius = 0.05;
+      nose.centre_x = upper ? x_hi : x_lo;
+      nose.centre_y = (upper ? level : -level) - r - 0.05;
+      nose.start_angle = upper ? kPi / 6 : kPi / 2;
+      nose.end_angle = upper ? kPi / 2 : 5 * kPi / 6;
+      m.guides.push_back(nose);
+    }
+  }
+  State s = two_sprocket_loop(kTeeth, kSpan, kPitch, a.pitch_radius, kOmega);
+  for (std::size_t i = 0; i < n; ++i) {  // the straight runs start on the guides' level
+    if (s.x[i] > 0.5 * kPitch && s.x[i] < centre - 0.5 * kPitch)
+      s.y[i] = s.y[i] > 0 ? level : -level;
+  }
+  Integrator integ(m, {.step = 1e-4, .theta = 0.6});
+  long iterations = 0, steps = 0;
+  for (auto _ : bs) {
+    const StepReport rep = integ.step(m, s);
+    if (!rep.converged) {
+      bs.SkipWithError("step did not converge");
+      break;
+    }
+    iterations += rep.iterations;
+    ++steps;
+    benchmark::DoNotOptimize(s.x.data());
+  }
+  bs.counters["guides"] = static_cast<double>(m.guides.size());
+  bs.counters["newton_iterations"] =
+      benchmark::Counter(static_cast<double>(iterations) / static_cast<double>(steps));
+  bs.counters["simulated_s"] = 1e-4 * static_cast<double>(steps);
+  bs.counters["real_time_factor"] =
+      benchmark::Counter(1e-4 * static_cast<double>(steps), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_DynamicsConveyorGuides)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(4)
+    ->Arg(16)
+    ->Unit(benchmark::kMicrosecond)
+    ->MinTime(2.0);
+
 }  // namespace
