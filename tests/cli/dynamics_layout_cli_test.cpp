@@ -379,13 +379,13 @@ TEST(DynamicsLayoutCli, EveryBadTakeupFieldNamedAtOnce) {
   EXPECT_EQ(r.status, 2);
   EXPECT_TRUE(r.out.empty());
   for (const char* text :
-       {"dynamics.sprocket[0].takeup_force (line 12) = (given): expected a take-up only on an "
+       {"dynamics.sprocket[0].takeup_force (line 14) = (given): expected a take-up only on an "
         "idler",
-        "dynamics.sprocket[2].takeup_direction (line 27) = (missing)",
-        "dynamics.sprocket[2].takeup_force (line 32) = -5: expected in (0, 1e6] N",
-        "dynamics.sprocket[2].takeup_stiffness (line 33) = -1: expected in [0, 1e9] N/m",
-        "dynamics.sprocket[2].takeup_damping (line 34) = -2: expected in [0, 1e6] N s/m",
-        "dynamics.sprocket[2].takeup_mass (line 35) = 0: expected in (0, 1000] kg"})
+        "dynamics.sprocket[2].takeup_direction (line 22) = (missing)",
+        "dynamics.sprocket[2].takeup_force (line 27) = -5: expected in (0, 1e6] N",
+        "dynamics.sprocket[2].takeup_stiffness (line 28) = -1: expected in [0, 1e9] N/m",
+        "dynamics.sprocket[2].takeup_damping (line 29) = -2: expected in [0, 1e6] N s/m",
+        "dynamics.sprocket[2].takeup_mass (line 30) = 0: expected in (0, 1000] kg"})
     EXPECT_NE(r.err.find(text), std::string::npos) << text << "\n" << r.err;
   // without centres (the two wheels on a line) a take-up is refused as well
   const CliRun line = run(
