@@ -302,3 +302,97 @@ TEST(DynamicsLayoutCli, EveryBadGeometryNamed) {
 }
 
 }  // namespace
+
+namespace {
+
+// The outward normal angle of the outer common tangent leaving circle a for circle b, the loop
+// counter-clockwise (written out here, independent of dynamics/layout.cpp): n with
+// a·n + Ra = b·n + Rb, on the right of the direction from a to b.
+double tangent_normal(double ax, double ay, double ra, double bx, double by, double rb) {
+  const double dx = bx - ax, dy = by - ay;
+  return std::atan2(dy, dx) - std::acos((ra - rb) / std::hypot(dx, dy));
+}
+
+}  // namespace
+
+// examples/dynamics_takeup.toml: the idler on a slide straight down, pushed by 600 N. In the
+// steady state (the last half's whole tooth periods) the spans either side of the idler carry
+// the force balance's tension: the chain arrives along d_in and leaves along d_out (the outer
+// tangents through the idler's mean settled centre), T e·(d_out − d_in) = −F along e = −y, plus
+// the centrifugal q v² the wrapped chain does not press on the wheel with — within 1 %.
+TEST(DynamicsLayoutCli, TakeupSetsTheSlackTensionByItsForceBalance) {
+  const CliRun r =
+      run("dynamics " + std::string(CATENA_EXAMPLES_DIR) + "/dynamics_takeup.toml --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["diagnostics"].empty()) << j["diagnostics"].dump();
+  ASSERT_EQ(j["takeup"].size(), 1u);
+  const auto& tu = j["takeup"][0];
+  EXPECT_EQ(tu["sprocket"], 2);
+  EXPECT_EQ(j["units"]["position"], "m");
+  const auto position = tu["position"].get<std::vector<double>>();
+  const auto force = tu["force"].get<std::vector<double>>();
+  ASSERT_EQ(position.size(), j["time"].size());
+  const double start = j["summary"]["window_start"].get<double>();
+  const auto time = j["time"].get<std::vector<double>>();
+  double slide = 0.0, pushed = 0.0;
+  int count = 0;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    if (time[k] < start) continue;
+    slide += position[k];
+    pushed += force[k];
+    ++count;
+  }
+  slide /= count;
+  pushed /= count;
+  EXPECT_GT(slide, 0.0);                      // the idler moved down into the chain
+  EXPECT_NEAR(pushed, 600.0, 0.005 * 600.0);  // the damper's share averages out
+  const double r0 = radius(12), r1 = radius(18), r2 = radius(15);
+  const double iy = -0.175 - slide;
+  const double n_in = tangent_normal(0.0, 0.0, r0, 0.15, iy, r2);
+  const double n_out = tangent_normal(0.15, iy, r2, 0.3, 0.0, r1);
+  // travel directions perp(n) = (−sin n, cos n); e·(d_out − d_in) with e = −y
+  const double along = -(std::cos(n_out) - std::cos(n_in));
+  const double v = 13.0 * r0;
+  const double closed = -600.0 / along + 1.25 * v * v;  // 12B: q = 1.25 kg/m
+  for (const char* span : {"span_0", "span_1"}) {
+    const double mean = j["summary"][span]["mean_tension"].get<double>();
+    EXPECT_NEAR(mean, closed, 0.01 * closed) << span;
+  }
+  // the work balance closes with the take-up damper's share
+  const auto& wb = j["summary"]["work_balance"];
+  EXPECT_LT(wb["takeup_dampers"].get<double>(), 0.0);
+}
+
+TEST(DynamicsLayoutCli, EveryBadTakeupFieldNamedAtOnce) {
+  const std::string path =
+      write("takeup.toml",
+            head("") +
+                wheel("teeth = 12\nrole = \"driver\"\nspeed = \"13 rad/s\"\ncentre_x = 0\n"
+                      "centre_y = 0\ntakeup_force = 100\n") +
+                wheel("teeth = 18\nrole = \"driven\"\ninertia = 0.02\ncentre_x = \"300 mm\"\n"
+                      "centre_y = 0\n") +
+                wheel("teeth = 15\nrole = \"idler\"\ninertia = 0.002\ncentre_x = \"150 mm\"\n"
+                      "centre_y = \"-175 mm\"\ntakeup_force = -5\ntakeup_stiffness = \"-1 N/m\"\n"
+                      "takeup_damping = -2\ntakeup_mass = 0\n"));
+  const CliRun r = run("dynamics " + path);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty());
+  for (const char* text :
+       {"dynamics.sprocket[0].takeup_force (line 14) = (given): expected a take-up only on an "
+        "idler",
+        "dynamics.sprocket[2].takeup_direction (line 22) = (missing)",
+        "dynamics.sprocket[2].takeup_force (line 27) = -5: expected in (0, 1e6] N",
+        "dynamics.sprocket[2].takeup_stiffness (line 28) = -1: expected in [0, 1e9] N/m",
+        "dynamics.sprocket[2].takeup_damping (line 29) = -2: expected in [0, 1e6] N s/m",
+        "dynamics.sprocket[2].takeup_mass (line 30) = 0: expected in (0, 1000] kg"})
+    EXPECT_NE(r.err.find(text), std::string::npos) << text << "\n" << r.err;
+  // without centres (the two wheels on a line) a take-up is refused as well
+  const CliRun line = run(
+      "dynamics " +
+      write("takeup_line.toml",
+            head("links = 40\n") + wheel("teeth = 12\nrole = \"driver\"\nspeed = \"13 rad/s\"\n") +
+                wheel("teeth = 12\nrole = \"driven\"\ninertia = 0.02\ntakeup_force = 10\n")));
+  EXPECT_EQ(line.status, 2);
+  EXPECT_NE(line.err.find("dynamics.sprocket[1].takeup_force"), std::string::npos) << line.err;
+}

@@ -50,7 +50,29 @@ struct Sprocket {
   double friction = 0.0;
   /// [m/s] v_ε: the seat friction is −μ f v_t/√(v_t² + v_ε²), as on a guide
   double friction_band = 1e-3;
+  /// Take-up (docs/models/dynamics.md, "Take-up"): the wheel's centre slides along the unit
+  /// direction e = (takeup_dx, takeup_dy) from (centre_x, centre_y), at the displacement s
+  /// (State::slide), pushed by F(s, ṡ) = takeup_force − takeup_stiffness s − takeup_damping ṡ
+  /// along e (a constant force: stiffness 0; a spring: its preload at s = 0). The slide carries
+  /// takeup_mass (the idler and its carriage). Only on a wheel that is not a driver.
+  bool takeup = false;
+  double takeup_dx = 0.0, takeup_dy = 0.0;  ///< [-] e, a unit vector
+  double takeup_force = 0.0;                ///< [N] F₀, along e at s = 0
+  double takeup_stiffness = 0.0;            ///< [N/m] k_t ≥ 0
+  double takeup_damping = 0.0;              ///< [N·s/m] c_t ≥ 0
+  double takeup_mass = 0.0;                 ///< [kg] m_t > 0, the sliding mass
 };
+
+/// The wheel `w` with its centre where the slide puts it: moved by `slide` along the take-up's
+/// direction (the wheel itself when it has no take-up).
+inline Sprocket at_slide(const Sprocket& w, double slide) {
+  Sprocket moved = w;
+  if (w.takeup) {
+    moved.centre_x += slide * w.takeup_dx;
+    moved.centre_y += slide * w.takeup_dy;
+  }
+  return moved;
+}
 
 /// A constant force on one node (a dead load, or the far end of a span held by a tension source
 /// instead of a wheel). Its potential is −f·x (in Energy::potential).
@@ -158,8 +180,19 @@ struct State {
   double contact_damping_work = 0.0;
   double seat_friction_work = 0.0;  ///< [J] work of the seats' friction so far (≤ 0)
   double hinge_work = 0.0;          ///< [J] work of the hinges' friction so far (≤ 0)
+  /// [m] per sprocket: a take-up's slide displacement s along its direction (0 without one)
+  std::vector<double> slide;
+  std::vector<double> slide_speed;  ///< [m/s] per sprocket: ṡ
+  double takeup_damper_work = 0.0;  ///< [J] work of the take-ups' dampers so far (≤ 0)
   explicit State(std::size_t nodes = 0, std::size_t sprockets = 0)
-      : x(nodes), y(nodes), vx(nodes), vy(nodes), angle(sprockets), speed(sprockets) {}
+      : x(nodes),
+        y(nodes),
+        vx(nodes),
+        vy(nodes),
+        angle(sprockets),
+        speed(sprockets),
+        slide(sprockets),
+        slide_speed(sprockets) {}
   std::size_t nodes() const { return x.size(); }
 };
 
@@ -168,9 +201,12 @@ struct State {
 std::vector<Issue> validate(const Model& model, const State& state);
 
 struct Energy {
-  double kinetic = 0.0;    ///< [J] Σ ½ m v² + Σ ½ J ω² (driven sprockets)
-  double elastic = 0.0;    ///< [J] Σ ½ k (l − p)² + the seat and guide contacts' energies
-  double potential = 0.0;  ///< [J] −Σ m g·x − Σ f·x (gravity and node loads)
+  /// [J] Σ ½ m v² + Σ ½ J ω² (driven sprockets) + Σ ½ m_t ṡ² (take-ups)
+  double kinetic = 0.0;
+  /// [J] Σ ½ k (l − p)² + the seat and guide contacts' energies + Σ ½ k_t s² (take-ups)
+  double elastic = 0.0;
+  /// [J] −Σ m g·x − Σ f·x (gravity and node loads) − Σ (F₀ + m_t g·e) s (take-ups)
+  double potential = 0.0;
   double total() const { return kinetic + elastic + potential; }
 };
 

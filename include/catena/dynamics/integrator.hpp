@@ -23,6 +23,7 @@
 // to settle a chain to equilibrium or to quiet stiff modes, not for the energy balance.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "catena/dynamics/block_tridiagonal.hpp"
@@ -56,6 +57,8 @@ struct StepReport {
   /// [J] the seats' friction work over the step, Σ h f_t v_t (≤ 0; roller and wheel together)
   double seat_friction_work = 0.0;
   double hinge_work = 0.0;  ///< [J] the hinges' friction work over the step, Σ M Δβ (≤ 0)
+  /// [J] the take-ups' dampers' work over the step, −Σ c_t (s₁ − s₀)²/h (≤ 0)
+  double takeup_damper_work = 0.0;
   SolveStatus solve = SolveStatus::kSolved;
 };
 
@@ -79,30 +82,56 @@ class Integrator {
   /// accepted one is below `tolerance`·p. Zero before the first step.
   const std::vector<double>& applied_torque() const { return torque_; }
 
+  /// [N] per sprocket: the chain's force on a take-up's wheel along its slide, e·Σ(f n − F_t),
+  /// at the θ point of the last step (0 on a wheel without a take-up).
+  const std::vector<double>& applied_slide_force() const { return slide_force_; }
+
+  /// The Newton system's size: 2N (the nodes' x₁, y₁) + one per driven wheel (its ψ₁) + one per
+  /// take-up (its s₁).
+  std::size_t unknowns() const { return 2 * ux_.size() + extra_.size(); }
+  /// For verification only (O(N²) memory): the step's residual R at the iterate `unknowns` —
+  /// the nodes' (x₁, y₁) interleaved, then the driven wheels' ψ₁ in wheel order, then the
+  /// take-ups' s₁ in wheel order — and, when `jacobian` is given, the Jacobian the step's Newton
+  /// iteration uses there, dense and row-major, assembled from its blocks and borders. Pinned
+  /// nodes and hinge friction are not supported here.
+  void newton_system(const Model& model, const State& state, std::span<const double> unknowns,
+                     std::vector<double>& residual, std::vector<double>* jacobian);
+
  private:
   // Fills the solver's rhs with −R(u) (and its blocks with J(u) when `jacobian`); returns |R|².
   double assemble(const Model& model, const State& s, bool jacobian);
 
   IntegratorOptions options_;
   BlockTridiagonalSolver solver_;
-  std::vector<double> ux_, uy_;          // the Newton iterate x₁
-  std::vector<double> l0_;               // link lengths at the start of the step
-  std::vector<Vec2> delta_;              // Newton correction
-  std::vector<double> psi1_;             // sprocket angles at the end of the step (iterate)
-  std::vector<double> dpsi_;             // their Newton correction
-  std::vector<double> wres_, wdiag_;     // driven wheels: −R_w and ∂R_w/∂ψ₁
-  std::vector<std::size_t> driven_;      // indices of the driven wheels
-  std::vector<std::vector<Vec2>> bcol_;  // per driven wheel: the coupling column ∂R/∂ψ₁
-  // per driven wheel: the wheel's row ∂R_w/∂u (the column's transpose but for seat friction)
+  std::vector<double> ux_, uy_;  // the Newton iterate x₁
+  std::vector<double> l0_;       // link lengths at the start of the step
+  std::vector<Vec2> delta_;      // Newton correction
+  std::vector<double> psi1_;     // sprocket angles at the end of the step (iterate)
+  std::vector<double> slide1_;   // take-ups' slides at the end of the step (iterate), per wheel
+  // The unknowns that border the chain's matrix: the driven wheels' angles in wheel order, then
+  // the take-ups' slides in wheel order (docs/models/dynamics.md, "Take-up").
+  struct Extra {
+    std::size_t wheel = 0;
+    bool slide = false;
+  };
+  std::vector<Extra> extra_;
+  std::vector<std::size_t> angle_of_, slide_of_;  // per wheel: its extras' index, or npos
+  std::vector<double> xres_;                      // per extra: −R
+  std::vector<double> xjac_;                      // m × m: ∂R_a/∂x_b among the extras
+  std::vector<double> dx_;                        // per extra: the Newton correction
+  std::vector<std::vector<Vec2>> bcol_;           // per extra: the coupling column ∂R/∂x_a
+  // per extra: its row ∂R_a/∂u (the column's transpose but for seat friction)
   std::vector<std::vector<Vec2>> brow_;
-  std::vector<std::vector<Vec2>> wsol_;  // per driven wheel: A⁻¹ times that column
-  std::vector<double> schur_;            // the driven wheels' Schur complement
+  std::vector<std::vector<Vec2>> wsol_;  // per extra: A⁻¹ times that column
+  std::vector<double> schur_;            // the extras' Schur complement
+  std::vector<double> slide_force_;      // per wheel: the chain's force along the slide
   std::vector<double> torque_;           // per wheel: the θ-point contact torque (last assembly)
   double max_penetration_ = 0.0;
   // the dissipative works of the last assembly's iterate (StepReport's fields)
   double damper_work_ = 0.0, drag_work_ = 0.0, contact_damping_work_ = 0.0;
   double seat_friction_work_ = 0.0;
   double hinge_work_ = 0.0;
+  double takeup_damper_work_ = 0.0;
 };
 
 }  // namespace catena::dynamics

@@ -157,7 +157,21 @@ std::vector<Parameter> sprocket_fields() {
           quantity("centre_x", K::kLength,
                    "the wheel's centre, x (given on every sprocket or none: without centres, two "
                    "equal wheels on a line)"),
-          quantity("centre_y", K::kLength, "the wheel's centre, y (y up)")};
+          quantity("centre_y", K::kLength, "the wheel's centre, y (y up)"),
+          // the take-up (docs/models/dynamics.md, "Take-up"): an idler's centre on a slide
+          quantity("takeup_force", K::kForce,
+                   "idler: the take-up's force along its slide, in [0, 1e6] N (with "
+                   "takeup_stiffness: the spring's preload at the start; > 0 without it)"),
+          quantity("takeup_direction", K::kAngle,
+                   "idler: the slide's direction the force pushes along, counter-clockwise from "
+                   "+x, in [-360, 360] deg"),
+          quantity("takeup_stiffness", K::kForcePerLength,
+                   "idler: the take-up spring's stiffness, in [0, 1e9] N/m (default 0: a "
+                   "constant force)"),
+          number("takeup_damping", "idler: the slide's damper [N s/m], in [0, 1e6] (default 0)"),
+          number("takeup_mass",
+                 "idler: the sliding mass [kg], in (0, 1000] (default 2 J / R^2, the idler as a "
+                 "disc of its pitch radius)")};
 }
 
 const Parameter& table_parameter() {
@@ -206,6 +220,8 @@ std::optional<double> read(const Entry& v, const Parameter& key, std::vector<Iss
 struct SprocketInput {
   int line = 0;
   std::optional<double> teeth, speed, inertia, load_torque, centre_x, centre_y;
+  std::optional<double> takeup_force, takeup_direction, takeup_stiffness, takeup_damping,
+      takeup_mass;
   std::string role;
   bool has_role = false;
   std::map<std::string, int> seen;  // every key given (read or not) → its line
@@ -217,6 +233,10 @@ struct LayoutWheel {
   int teeth = 0;
   double x = NAN, y = NAN;
   double speed = NAN, inertia = NAN, load = 0.0;
+  // an idler's take-up (docs/models/dynamics.md, "Take-up"); mass NAN: the default 2 J / R²
+  bool takeup = false;
+  double takeup_force = 0.0, takeup_direction = 0.0, takeup_stiffness = 0.0;
+  double takeup_damping = 0.0, takeup_mass = NAN;
 };
 
 struct GuideInput {
@@ -287,6 +307,57 @@ bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
 constexpr std::size_t kMaxWheels = 20;  // sprockets of the free layout
 constexpr int kMinWrapTeeth = 3;        // a wheel's wrap, in teeth (docs/models/dynamics.md)
 
+constexpr const char* kTakeupKeys[] = {"takeup_force", "takeup_direction", "takeup_stiffness",
+                                       "takeup_damping", "takeup_mass"};
+
+// A take-up's keys on a wheel that is not an idler (or without centres): refused, each.
+template <class Field>
+void refuse_takeup(const SprocketInput& w, const Field& field, std::vector<Issue>& issues) {
+  for (const char* key : kTakeupKeys)
+    if (w.seen.count(key))
+      issues.push_back({field(key), "(given)",
+                        "a take-up only on an idler of the free layout (role = \"idler\", "
+                        "centres on every sprocket)"});
+}
+
+// An idler's take-up (docs/models/dynamics.md, "Take-up"): none when no takeup_* key is given;
+// else takeup_direction and takeup_force required, every value in its range.
+template <class Field>
+void parse_takeup(const SprocketInput& w, const Field& field, LayoutWheel& lw,
+                  std::vector<Issue>& issues) {
+  bool any = false;
+  for (const char* key : kTakeupKeys) any = any || w.seen.count(key) > 0;
+  if (!any) return;
+  auto shown = [](double x) { return format_g(x, 6); };
+  bool ok = true;
+  auto ranged = [&](const char* key, const std::optional<double>& v, double lo, double hi,
+                    bool open_lo, const std::string& range, bool required, double& out) {
+    if (!v) {
+      if (required && !w.seen.count(key)) issues.push_back({field(key), "(missing)", range});
+      if (required || w.seen.count(key)) ok = false;  // missing, or given but unreadable
+      return;
+    }
+    if (!std::isfinite(*v) || (open_lo ? !(*v > lo) : !(*v >= lo)) || !(*v <= hi)) {
+      issues.push_back({field(key), shown(*v), range});
+      ok = false;
+      return;
+    }
+    out = *v;
+  };
+  ranged("takeup_direction", w.takeup_direction, -2.0 * kPi, 2.0 * kPi, false,
+         "the slide's direction, in [-360, 360] deg", true, lw.takeup_direction);
+  ranged("takeup_stiffness", w.takeup_stiffness, 0.0, 1e9, false, "in [0, 1e9] N/m", false,
+         lw.takeup_stiffness);
+  const bool spring = lw.takeup_stiffness > 0.0;
+  ranged("takeup_force", w.takeup_force, 0.0, 1e6, !spring,
+         spring ? "the spring's preload, in [0, 1e6] N" : "in (0, 1e6] N (a constant force)", true,
+         lw.takeup_force);
+  ranged("takeup_damping", w.takeup_damping, 0.0, 1e6, false, "in [0, 1e6] N s/m", false,
+         lw.takeup_damping);
+  ranged("takeup_mass", w.takeup_mass, 0.0, 1000.0, true, "in (0, 1000] kg", false, lw.takeup_mass);
+  lw.takeup = ok;
+}
+
 // The free layout: every [[dynamics.sprocket]] with its centre (docs/models/dynamics.md,
 // "Command"). Reports every problem of the wheels at once; the geometry (overlaps, the belt path,
 // each wheel's wrap, the links that fit) once every wheel's teeth and centre and the chain's
@@ -342,6 +413,7 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
       issues.push_back({field("role"), "(missing)", "driver, driven or idler"});
       continue;
     }
+    if (w.role != "idler") refuse_takeup(w, field, issues);
     if (w.role == "driver") {
       ++drivers;
       s.driver = i;
@@ -383,6 +455,7 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
       issues.push_back({field("speed"), w.speed ? shown(*w.speed) : "(given)",
                         std::string("no speed on a") + (idler ? "n idler" : " driven wheel") +
                             " (it follows from the chain)"});
+    if (idler) parse_takeup(w, field, lw, issues);
   }
   if (drivers != 1)
     issues.push_back({"dynamics.sprocket", std::to_string(drivers) + " driver(s)",
@@ -590,7 +663,8 @@ Setup parse(const analysis::Inputs& in) {
       if (k == row_keys.end()) {
         issues.push_back({where(v), v.text,
                           "a key of a sprocket: teeth, role, speed, inertia, load_torque, "
-                          "centre_x, centre_y"});
+                          "centre_x, centre_y, takeup_force, takeup_direction, "
+                          "takeup_stiffness, takeup_damping, takeup_mass"});
         continue;
       }
       w.seen[key] = v.line;
@@ -609,6 +683,11 @@ Setup parse(const analysis::Inputs& in) {
       if (key == "load_torque") w.load_torque = *x;
       if (key == "centre_x") w.centre_x = *x;
       if (key == "centre_y") w.centre_y = *x;
+      if (key == "takeup_force") w.takeup_force = *x;
+      if (key == "takeup_direction") w.takeup_direction = *x;
+      if (key == "takeup_stiffness") w.takeup_stiffness = *x;
+      if (key == "takeup_damping") w.takeup_damping = *x;
+      if (key == "takeup_mass") w.takeup_mass = *x;
       continue;
     }
     const std::string key = v.path.substr(9);
@@ -868,6 +947,8 @@ Setup parse(const analysis::Inputs& in) {
     // takes a vertex to a vertex
     const int lowest = s.pocket ? 4 : 8;
     const std::string range = "an even integer in [" + std::to_string(lowest) + ", 150]";
+    refuse_takeup(
+        w, [&](const std::string& key) { return base + key + l; }, issues);
     if (!w.teeth) {
       issues.push_back({base + "teeth" + l, "(missing)", range});
     } else if (!is_integer(*w.teeth) || *w.teeth < lowest || *w.teeth > 150 ||
@@ -1184,8 +1265,17 @@ struct Series {
   std::vector<double> angle, speed, torque;
 };
 
+// One take-up's series (docs/models/dynamics.md, "Take-up"): the slide's displacement s along
+// its direction, its speed, and the take-up's force F₀ − k_t s − c_t ṡ on the slide.
+struct TakeupSeries {
+  std::size_t wheel = 0;
+  std::vector<double> position, speed, force;
+};
+
 struct Result {
   Setup setup;
+  std::vector<TakeupSeries> takeup;  // one per take-up, in wheel order
+  double takeup_damper_work = 0.0;   // the take-ups' dampers (≤ 0; 0 without take-ups)
   std::vector<double> time;
   std::vector<Series> sprocket;           // 2
   std::vector<std::vector<double>> span;  // upper, lower
@@ -1210,11 +1300,12 @@ struct Result {
 
 // The torque the chain puts on wheel w (counter-clockwise positive).
 double chain_torque(const Model& model, const State& s, std::size_t w) {
+  const Sprocket wheel = at_slide(model.sprockets[w], s.slide[w]);  // a take-up's where it is
   double sum = 0.0;
   for (std::size_t i = 0; i < s.nodes(); ++i)
-    sum +=
-        seat_contact(model.sprockets[w], s.x[i], s.y[i], s.vx[i], s.vy[i], s.angle[w], s.speed[w])
-            .torque;
+    sum += seat_contact(wheel, s.x[i], s.y[i], s.vx[i] - s.slide_speed[w] * wheel.takeup_dx,
+                        s.vy[i] - s.slide_speed[w] * wheel.takeup_dy, s.angle[w], s.speed[w])
+               .torque;
   return sum;
 }
 
@@ -1239,6 +1330,18 @@ std::vector<Sprocket> layout_sprockets(const Setup& d) {
     } else {
       s.inertia = w.inertia;
       s.load_torque = w.load;
+    }
+    if (w.takeup) {
+      s.takeup = true;
+      s.takeup_dx = std::cos(w.takeup_direction);
+      s.takeup_dy = std::sin(w.takeup_direction);
+      s.takeup_force = w.takeup_force;
+      s.takeup_stiffness = w.takeup_stiffness;
+      s.takeup_damping = w.takeup_damping;
+      // the idler as a uniform disc of its pitch radius: J = m R²/2
+      s.takeup_mass = std::isnan(w.takeup_mass)
+                          ? 2.0 * w.inertia / (s.pitch_radius * s.pitch_radius)
+                          : w.takeup_mass;
     }
     wheels.push_back(s);
   }
@@ -1401,6 +1504,8 @@ Result run(const analysis::Inputs& in) {
   out.sprocket.resize(nw);
   out.span.resize(d.layout() ? nw : 2);  // the layout: one per straight span of the belt path
   std::vector<std::size_t> span_link(out.span.size(), 0);
+  for (std::size_t w = 0; w < nw; ++w)
+    if (wheels[w].takeup) out.takeup.push_back({.wheel = w});
   std::vector<double> applied(nw, 0.0);  // Σ of the steps' applied torques since the last sample
   int since = 0;                         // steps since the last sample
   auto sample = [&] {
@@ -1413,6 +1518,13 @@ Result run(const analysis::Inputs& in) {
       // contact torque of the initial state
       out.sprocket[w].torque.push_back(since == 0 ? chain_torque(model, s, w) : applied[w] / since);
       applied[w] = 0.0;
+    }
+    for (TakeupSeries& tu : out.takeup) {
+      const Sprocket& wh = model.sprockets[tu.wheel];
+      const double sl = s.slide[tu.wheel], v = s.slide_speed[tu.wheel];
+      tu.position.push_back(sl);
+      tu.speed.push_back(v);
+      tu.force.push_back(wh.takeup_force - wh.takeup_stiffness * sl - wh.takeup_damping * v);
     }
     link_tensions(model, s, tension);
     if (d.positions) {
@@ -1499,6 +1611,10 @@ Result run(const analysis::Inputs& in) {
   // what the model's dissipation does not account for: the θ-method and the contacts' penalty
   // (evaluated at the θ point, not by a discrete gradient)
   out.numerical_work = out.energy_drift - s.damper_work - s.contact_damping_work;
+  if (!out.takeup.empty()) {  // the take-ups' dampers (a run without one computes as before)
+    out.takeup_damper_work = s.takeup_damper_work;
+    out.numerical_work -= s.takeup_damper_work;
+  }
   if (d.theta < 0.6)
     out.diagnostics.push_back(
         {Diagnostic::Severity::kWarning, "dynamics.theta_below_0_6",
@@ -1676,6 +1792,23 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                                   {"numerical", r.numerical_work}});
     if (d.seat_friction > 0.0) j["summary"]["work_balance"]["seat_friction"] = r.seat_friction_work;
     if (hinge_on) j["summary"]["work_balance"]["hinge_friction"] = r.hinge_work;
+    if (!r.takeup.empty()) j["summary"]["work_balance"]["takeup_dampers"] = r.takeup_damper_work;
+  }
+  // take-ups add fields only when given: takeup[k] {sprocket, position, slide_speed, force}
+  if (!r.takeup.empty()) {
+    Value tus = Value::array();
+    for (const TakeupSeries& tu : r.takeup) {
+      const LayoutWheel& lw = d.wheels[tu.wheel];
+      tus.push_back(Value::object({{"sprocket", static_cast<int>(tu.wheel)},
+                                   {"direction", lw.takeup_direction},
+                                   {"preload", lw.takeup_force},
+                                   {"stiffness", lw.takeup_stiffness},
+                                   {"damping", lw.takeup_damping},
+                                   {"position", tu.position},
+                                   {"slide_speed", tu.speed},
+                                   {"force", tu.force}}));
+    }
+    j["takeup"] = tus;
   }
   // the scalar summaries a sweep takes as columns (objects, not arrays: arrays are series to a
   // sweep): each sprocket's mean speed and torque, each span's mean, least and greatest tension,
@@ -1699,9 +1832,12 @@ Record describe(const Result& r, const analysis::Inputs&) {
     for (const PathPiece& q : d.path.pieces)
       if (!q.arc) span_length.push_back(std::hypot(q.x1 - q.x0, q.y1 - q.y0));
   } else {
-    span_length.assign(r.span.size(), (d.links - d.teeth) / 2 * d.pitch);
+    span_length.assign(r.span.size(), d.pocket ? (d.links - 2 * d.teeth) / 4 * 2 * d.pitch
+                                               : (d.links - d.teeth) / 2 * d.pitch);
   }
-  const double chain_speed = driver_teeth * d.pitch / (2 * kPi) *
+  // the links a turn of the driver draws: z (a pocket wheel: 2z, two joints a pocket)
+  const int links_a_turn = d.pocket ? 2 * driver_teeth : driver_teeth;
+  const double chain_speed = links_a_turn * d.pitch / (2 * kPi) *
                              std::abs(window_stats(r.sprocket[d.driver].speed, win).mean);
   std::vector<SpanFrequencies> span_f;  // also marked on the report's spectrum
   for (std::size_t k = 0; k < r.span.size(); ++k) {
@@ -1772,6 +1908,15 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (!d.guides.empty()) j["units"]["friction_work"] = "J";
   if (d.seat_friction > 0.0) j["units"]["seat_friction_work"] = "J";
   if (d.work_balance) j["units"]["work_balance"] = "J";
+  if (!r.takeup.empty()) {
+    j["units"]["direction"] = "rad";
+    j["units"]["preload"] = "N";
+    j["units"]["stiffness"] = "N/m";
+    j["units"]["damping"] = "N s/m";
+    j["units"]["position"] = "m";
+    j["units"]["slide_speed"] = "m/s";
+    j["units"]["force"] = "N";
+  }
   if (hinge_on) {
     j["units"]["hinge_arm"] = "m";
     j["units"]["hinge_band"] = "rad/s";

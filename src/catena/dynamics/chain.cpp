@@ -120,6 +120,24 @@ std::vector<Issue> validate(const Model& model) {
       out.push_back({f + "contact_damping", check::format_si(s.contact_damping, "N*s/m"),
                      "a finite value >= 0 N*s/m"});
     }
+    if (s.takeup) {
+      if (s.driver)
+        out.push_back({f + "takeup", "on a driver", "a take-up on a driven wheel or an idler"});
+      if (!std::isfinite(s.takeup_dx) || !std::isfinite(s.takeup_dy) ||
+          !(std::abs(std::hypot(s.takeup_dx, s.takeup_dy) - 1.0) <= 1e-9))
+        out.push_back({f + "takeup_direction",
+                       "(" + check::format_si(s.takeup_dx, "") + ", " +
+                           check::format_si(s.takeup_dy, "") + ")",
+                       "a unit vector"});
+      check::finite(out, (f + "takeup_force").c_str(), s.takeup_force, "N");
+      if (!std::isfinite(s.takeup_stiffness) || !(s.takeup_stiffness >= 0.0))
+        out.push_back({f + "takeup_stiffness", check::format_si(s.takeup_stiffness, "N/m"),
+                       "a finite value >= 0 N/m"});
+      if (!std::isfinite(s.takeup_damping) || !(s.takeup_damping >= 0.0))
+        out.push_back({f + "takeup_damping", check::format_si(s.takeup_damping, "N*s/m"),
+                       "a finite value >= 0 N*s/m"});
+      check::finite_positive(out, (f + "takeup_mass").c_str(), s.takeup_mass, "kg");
+    }
     if (s.pocket && s.friction != 0.0) {
       // seat_friction's derivatives are tested on the ISO seat only (docs/models/dynamics.md)
       out.push_back({f + "friction", check::format_si(s.friction, ""),
@@ -505,6 +523,21 @@ std::vector<Issue> validate(const Model& model, const State& state) {
       break;
     }
   }
+  if (state.slide.size() != model.sprockets.size() ||
+      state.slide_speed.size() != model.sprockets.size()) {
+    out.push_back(
+        {"state.slide", std::to_string(state.slide.size()) + " values",
+         "slide and slide_speed of " + std::to_string(model.sprockets.size()) + " sprockets each"});
+  } else {
+    for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+      if (!std::isfinite(state.slide[w]) || !std::isfinite(state.slide_speed[w]) ||
+          (!model.sprockets[w].takeup && (state.slide[w] != 0.0 || state.slide_speed[w] != 0.0))) {
+        out.push_back({"state.slide[" + std::to_string(w) + "]", "not finite or not 0",
+                       "finite, and 0 on a wheel without a take-up"});
+        break;
+      }
+    }
+  }
   for (std::size_t j = 0; j < model.links() && n >= 2; ++j) {
     const std::size_t b = (j + 1) % n;
     if (!(std::hypot(state.x[b] - state.x[j], state.y[b] - state.y[j]) > 0.0)) {
@@ -528,8 +561,17 @@ Energy energy(const Model& model, const State& state) {
     if (f.node < n) e.potential -= f.fx * state.x[f.node] + f.fy * state.y[f.node];
   }
   for (std::size_t w = 0; w < model.sprockets.size() && w < state.speed.size(); ++w) {
-    const Sprocket& wheel = model.sprockets[w];
+    const bool slides =
+        model.sprockets[w].takeup && w < state.slide.size() && w < state.slide_speed.size();
+    const Sprocket wheel = at_slide(model.sprockets[w], slides ? state.slide[w] : 0.0);
     if (!wheel.driver) e.kinetic += 0.5 * wheel.inertia * state.speed[w] * state.speed[w];
+    if (slides) {
+      const double sl = state.slide[w], v = state.slide_speed[w];
+      e.kinetic += 0.5 * wheel.takeup_mass * v * v;
+      e.elastic += 0.5 * wheel.takeup_stiffness * sl * sl;
+      const double g_along = model.gravity_x * wheel.takeup_dx + model.gravity_y * wheel.takeup_dy;
+      e.potential -= (wheel.takeup_force + wheel.takeup_mass * g_along) * sl;
+    }
     for (std::size_t i = 0; i < n; ++i) {
       const SeatContact c =
           wheel_contact(wheel, state.x[i], state.y[i], 0.0, 0.0, state.angle[w], 0.0);

@@ -53,23 +53,29 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
       l0_(model.links()),
       delta_(model.nodes()),
       psi1_(model.sprockets.size()),
-      dpsi_(model.sprockets.size()),
-      wres_(model.sprockets.size()),
-      wdiag_(model.sprockets.size()),
-      schur_(model.sprockets.size() * model.sprockets.size()),
+      slide1_(model.sprockets.size()),
+      angle_of_(model.sprockets.size(), static_cast<std::size_t>(-1)),
+      slide_of_(model.sprockets.size(), static_cast<std::size_t>(-1)),
+      slide_force_(model.sprockets.size()),
       torque_(model.sprockets.size()) {
   for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
     if (model.sprockets[w].driver) continue;
-    driven_.push_back(w);
+    angle_of_[w] = extra_.size();
+    extra_.push_back({w, false});
   }
-  bcol_.resize(model.sprockets.size());
-  brow_.resize(model.sprockets.size());
-  wsol_.resize(model.sprockets.size());
-  for (std::size_t w : driven_) {
-    bcol_[w].resize(model.nodes());
-    brow_[w].resize(model.nodes());
-    wsol_[w].resize(model.nodes());
+  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+    if (!model.sprockets[w].takeup) continue;
+    slide_of_[w] = extra_.size();
+    extra_.push_back({w, true});
   }
+  const std::size_t m = extra_.size();
+  xres_.assign(m, 0.0);
+  xjac_.assign(m * m, 0.0);
+  dx_.assign(m, 0.0);
+  schur_.assign(m * m, 0.0);
+  bcol_.assign(m, std::vector<Vec2>(model.nodes()));
+  brow_.assign(m, std::vector<Vec2>(model.nodes()));
+  wsol_.assign(m, std::vector<Vec2>(model.nodes()));
 }
 
 double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
@@ -181,17 +187,40 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     }
   }
   max_penetration_ = 0.0;
+  takeup_damper_work_ = 0.0;
   double wheel_norm2 = 0.0;
+  const std::size_t nx = extra_.size();
+  if (jacobian) std::fill(xjac_.begin(), xjac_.end(), 0.0);
   for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
-    const Sprocket& wheel = model.sprockets[w];
+    const Sprocket& fixed = model.sprockets[w];
     const double psi = (1.0 - th) * s.angle[w] + th * psi1_[w];
     const double omega = (psi1_[w] - s.angle[w]) / h;
-    const bool driven = !wheel.driver;
+    const bool driven = !fixed.driver;
+    const std::size_t ia = angle_of_[w];
+    // A take-up's wheel sits at its slide's θ point and moves at the step's slide speed: the
+    // contacts see the roller relative to it (docs/models/dynamics.md, "Take-up")
+    const bool slides = fixed.takeup;
+    const std::size_t is = slide_of_[w];
+    const double ex = fixed.takeup_dx, ey = fixed.takeup_dy;
+    double slide_th = 0.0, slide_rate = 0.0;
+    Sprocket moved;
+    if (slides) {
+      slide_th = (1.0 - th) * s.slide[w] + th * slide1_[w];
+      slide_rate = (slide1_[w] - s.slide[w]) / h;
+      moved = at_slide(fixed, slide_th);
+    }
+    const Sprocket& wheel = slides ? moved : fixed;
     double torque = 0.0;
     double wdiag = driven ? wheel.inertia / (h * th) : 0.0;
+    double sdiag = 0.0, cross_ws = 0.0, cross_sw = 0.0;  // ∂R_s/∂s, ∂R_ψ/∂s, ∂R_s/∂ψ
+    double pull_x = 0.0, pull_y = 0.0;  // Σ (f n − F_t): the chain's force on the wheel
     if (driven && jacobian) {
-      std::fill(bcol_[w].begin(), bcol_[w].end(), Vec2{});
-      std::fill(brow_[w].begin(), brow_[w].end(), Vec2{});
+      std::fill(bcol_[ia].begin(), bcol_[ia].end(), Vec2{});
+      std::fill(brow_[ia].begin(), brow_[ia].end(), Vec2{});
+    }
+    if (slides && jacobian) {
+      std::fill(bcol_[is].begin(), bcol_[is].end(), Vec2{});
+      std::fill(brow_[is].begin(), brow_[is].end(), Vec2{});
     }
     // seat_contact's own first test, inline: most rollers are clear of a wheel, and the call
     // (its result zeroed, the velocity formed) cost more than the test.
@@ -202,7 +231,11 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       const double rx = qx - wheel.centre_x, ry = qy - wheel.centre_y;
       if (rx * rx + ry * ry > reach * reach) continue;
       if (model.is_pinned(i)) continue;
-      const double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
+      double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
+      if (slides) {  // relative to the sliding centre
+        vx -= slide_rate * ex;
+        vy -= slide_rate * ey;
+      }
       const SeatContact sc = wheel_contact(wheel, qx, qy, vx, vy, psi, omega);
       if (!sc.active) continue;
       max_penetration_ = std::max(max_penetration_, sc.penetration);
@@ -219,6 +252,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
         torque += sf.torque;
         solver_.rhs[i].x += h * sf.fx;
         solver_.rhs[i].y += h * sf.fy;
+      }
+      if (slides) {
+        pull_x += sc.force * sc.nx - sf.fx;
+        pull_y += sc.force * sc.ny - sf.fy;
       }
       if (!jacobian || sc.force <= 0.0) continue;  // separating: no force, no stiffness
       // D = ∂(h f n)/∂u = normal n nᵀ + tangent (I − n nᵀ), from
@@ -244,27 +281,62 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       const double tx = -cy, ty = cx;
       const Vec2 dt{dc.a * tx + dc.b * ty, dc.c * tx + dc.d * ty};
       const double hf = h * th * sc.force;
-      bcol_[w][i] = {-dt.x - hf * sc.ny, -dt.y + hf * sc.nx};
-      brow_[w][i] = bcol_[w][i];
+      bcol_[ia][i] = {-dt.x - hf * sc.ny, -dt.y + hf * sc.nx};
+      brow_[ia][i] = bcol_[ia][i];
       wdiag += tx * dt.x + ty * dt.y - hf * (sc.nx * cx + sc.ny * cy);
       if (wheel.friction > 0.0) {
         // the friction's part is not symmetric: the column −h(θ ∂F/∂ψ + ∂F/∂ω/h), the row
         // −h(θ ∂τ/∂q + ∂τ/∂v/h), and −h(θ ∂τ/∂ψ + ∂τ/∂ω/h) on the wheel's own entry
-        bcol_[w][i].x -= ht * sf.dpsi[0] + sf.domega[0];
-        bcol_[w][i].y -= ht * sf.dpsi[1] + sf.domega[1];
-        brow_[w][i].x -= ht * sf.torque_dq[0] + sf.torque_dv[0];
-        brow_[w][i].y -= ht * sf.torque_dq[1] + sf.torque_dv[1];
+        bcol_[ia][i].x -= ht * sf.dpsi[0] + sf.domega[0];
+        bcol_[ia][i].y -= ht * sf.dpsi[1] + sf.domega[1];
+        brow_[ia][i].x -= ht * sf.torque_dq[0] + sf.torque_dv[0];
+        brow_[ia][i].y -= ht * sf.torque_dq[1] + sf.torque_dv[1];
         wdiag -= ht * sf.torque_dpsi + sf.torque_domega;
       }
+      if (!slides) continue;
+      // Sliding the centre by ds₁ (its θ point by θ ds₁, its speed by ds₁/h) is, for every
+      // contact, moving the roller by −e ds₁: with D_i the contact's whole block ∂R_i/∂u_i
+      // (normal, tangent and friction), the column is −D_i e, the slide's row −D_iᵀ e, its own
+      // entry gains eᵀ D_i e, and the wheel's angle couples by −(∂R_ψ/∂u_i)·e and −e·∂R_i/∂ψ₁.
+      Mat2 dall = dc;
+      if (wheel.friction > 0.0) {
+        dall = {dc.a - (ht * sf.dq[0] + sf.dv[0]), dc.b - (ht * sf.dq[1] + sf.dv[1]),
+                dc.c - (ht * sf.dq[2] + sf.dv[2]), dc.d - (ht * sf.dq[3] + sf.dv[3])};
+      }
+      const Vec2 de{dall.a * ex + dall.b * ey, dall.c * ex + dall.d * ey};
+      bcol_[is][i] = {-de.x, -de.y};
+      brow_[is][i] = {-(dall.a * ex + dall.c * ey), -(dall.b * ex + dall.d * ey)};
+      sdiag += ex * de.x + ey * de.y;
+      cross_ws -= brow_[ia][i].x * ex + brow_[ia][i].y * ey;
+      cross_sw -= ex * bcol_[ia][i].x + ey * bcol_[ia][i].y;
     }
     torque_[w] = torque;
     if (driven) {
       const double residual = wheel.inertia / (h * th) * (psi1_[w] - s.angle[w] - h * s.speed[w]) -
                               h * (torque - wheel.load_torque);
-      wres_[w] = -residual;
-      if (jacobian) wdiag_[w] = wdiag;
+      xres_[ia] = -residual;
+      if (jacobian) xjac_[ia * nx + ia] = wdiag;
       const double force_like = residual / wheel.pitch_radius;
       wheel_norm2 += force_like * force_like;
+    }
+    slide_force_[w] = slides ? pull_x * ex + pull_y * ey : 0.0;
+    if (slides) {
+      // m_t (s₁ − s₀ − h ṡ₀)/(hθ) = h [F₀ − k_t s_θ − c_t ṡ + m_t g·e + e·Σ(f n − F_t)]
+      const double mt = wheel.takeup_mass;
+      const double g_along = model.gravity_x * ex + model.gravity_y * ey;
+      const double push = wheel.takeup_force - wheel.takeup_stiffness * slide_th -
+                          wheel.takeup_damping * slide_rate + mt * g_along;
+      const double residual = mt / (h * th) * (slide1_[w] - s.slide[w] - h * s.slide_speed[w]) -
+                              h * (push + slide_force_[w]);
+      xres_[is] = -residual;
+      takeup_damper_work_ -= h * wheel.takeup_damping * slide_rate * slide_rate;
+      wheel_norm2 += residual * residual;
+      if (jacobian) {
+        xjac_[is * nx + is] =
+            mt / (h * th) + h * th * wheel.takeup_stiffness + wheel.takeup_damping + sdiag;
+        xjac_[ia * nx + is] = cross_ws;
+        xjac_[is * nx + ia] = cross_sw;
+      }
     }
   }
   // Guides: the force F(q, v) at the θ point with the step's velocity v = (u − x₀)/h; the
@@ -312,7 +384,8 @@ StepReport Integrator::step(const Model& model, State& s) {
   }
   if (s.x.size() != model.nodes() || s.y.size() != model.nodes() || s.vx.size() != model.nodes() ||
       s.vy.size() != model.nodes() || s.angle.size() != model.sprockets.size() ||
-      s.speed.size() != model.sprockets.size()) {
+      s.speed.size() != model.sprockets.size() || s.slide.size() != model.sprockets.size() ||
+      s.slide_speed.size() != model.sprockets.size()) {
     throw_if_any(validate(model, s));
   }
   const std::size_t n = model.nodes();
@@ -320,7 +393,7 @@ StepReport Integrator::step(const Model& model, State& s) {
   const double th = options_.theta;
   const double tol = options_.tolerance * model.pitch;
   constexpr int kMaxBacktracks = 12;
-  const std::size_t nd = driven_.size();
+  const std::size_t nd = extra_.size();
 
   for (std::size_t j = 0; j < model.links(); ++j) {
     const std::size_t b = (j + 1) % n;
@@ -335,8 +408,9 @@ StepReport Integrator::step(const Model& model, State& s) {
   for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
     const Sprocket& wheel = model.sprockets[w];
     psi1_[w] = s.angle[w] + h * (wheel.driver ? wheel.speed : s.speed[w]);
-    dpsi_[w] = 0.0;
+    slide1_[w] = wheel.takeup ? s.slide[w] + h * s.slide_speed[w] : 0.0;
   }
+  std::fill(dx_.begin(), dx_.end(), 0.0);
 
   StepReport report;
   double norm2 = assemble(model, s, true);
@@ -347,28 +421,26 @@ StepReport Integrator::step(const Model& model, State& s) {
     if (nd == 0) {
       solver_.substitute(solver_.rhs, delta_);
     } else {
-      // The driven wheels border the chain's matrix: [A B; Bᵀ d] [δu; δψ] = [r; r_w]. Solve
-      // A W = B (one more O(N) substitution per wheel, same factors; the first rides along with
-      // δu₀'s), then the small Schur complement (d − Bᵀ W) δψ = r_w − Bᵀ δu₀, and δu = δu₀ − W δψ.
-      solver_.substitute(solver_.rhs, delta_, bcol_[driven_[0]], wsol_[driven_[0]]);
-      for (std::size_t a = 1; a < nd; ++a) {
-        const std::size_t w = driven_[a];
-        solver_.substitute(bcol_[w], wsol_[w]);
-      }
+      // The driven wheels' angles and the take-ups' slides border the chain's matrix:
+      // [A B; Cᵀ D] [δu; δx] = [r; r_x]. Solve A W = B (one more O(N) substitution per extra
+      // unknown, same factors; the first rides along with δu₀'s), then the small Schur
+      // complement (D − Cᵀ W) δx = r_x − Cᵀ δu₀, and δu = δu₀ − W δx.
+      solver_.substitute(solver_.rhs, delta_, bcol_[0], wsol_[0]);
+      for (std::size_t a = 1; a < nd; ++a) solver_.substitute(bcol_[a], wsol_[a]);
       for (std::size_t a = 0; a < nd; ++a) {
-        const std::vector<Vec2>& ba = brow_[driven_[a]];  // the wheel's row
-        double g = wres_[driven_[a]];
+        const std::vector<Vec2>& ba = brow_[a];  // the unknown's row
+        double g = xres_[a];
         for (std::size_t i = 0; i < n; ++i) g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
-        dpsi_[driven_[a]] = g;
+        dx_[a] = g;
         for (std::size_t b = 0; b < nd; ++b) {
-          const std::vector<Vec2>& wb = wsol_[driven_[b]];
-          double sab = a == b ? wdiag_[driven_[a]] : 0.0;
+          const std::vector<Vec2>& wb = wsol_[b];
+          double sab = xjac_[a * nd + b];
           for (std::size_t i = 0; i < n; ++i) sab -= ba[i].x * wb[i].x + ba[i].y * wb[i].y;
           schur_[a * nd + b] = sab;
         }
       }
       // Gaussian elimination on the nd × nd Schur complement (nd is the number of driven
-      // wheels: small), right-hand side in dpsi_.
+      // wheels and take-ups: small), right-hand side in dx_.
       for (std::size_t c = 0; c < nd; ++c) {
         const double piv = schur_[c * nd + c];
         if (!(std::abs(piv) > 0.0) || !std::isfinite(piv)) {
@@ -378,17 +450,17 @@ StepReport Integrator::step(const Model& model, State& s) {
         for (std::size_t r = c + 1; r < nd; ++r) {
           const double f = schur_[r * nd + c] / piv;
           for (std::size_t k = c; k < nd; ++k) schur_[r * nd + k] -= f * schur_[c * nd + k];
-          dpsi_[driven_[r]] -= f * dpsi_[driven_[c]];
+          dx_[r] -= f * dx_[c];
         }
       }
       for (std::size_t c = nd; c-- > 0;) {
-        double v = dpsi_[driven_[c]];
-        for (std::size_t k = c + 1; k < nd; ++k) v -= schur_[c * nd + k] * dpsi_[driven_[k]];
-        dpsi_[driven_[c]] = v / schur_[c * nd + c];
+        double v = dx_[c];
+        for (std::size_t k = c + 1; k < nd; ++k) v -= schur_[c * nd + k] * dx_[k];
+        dx_[c] = v / schur_[c * nd + c];
       }
       for (std::size_t a = 0; a < nd; ++a) {
-        const std::vector<Vec2>& wa = wsol_[driven_[a]];
-        const double d = dpsi_[driven_[a]];
+        const std::vector<Vec2>& wa = wsol_[a];
+        const double d = dx_[a];
         for (std::size_t i = 0; i < n; ++i) {
           delta_[i].x -= wa[i].x * d;
           delta_[i].y -= wa[i].y * d;
@@ -405,9 +477,15 @@ StepReport Integrator::step(const Model& model, State& s) {
       uy_[i] += delta_[i].y;
       correction = std::max({correction, std::abs(delta_[i].x), std::abs(delta_[i].y)});
     }
-    for (std::size_t w : driven_) {
-      psi1_[w] += dpsi_[w];
-      correction = std::max(correction, std::abs(dpsi_[w]) * model.sprockets[w].pitch_radius);
+    for (std::size_t a = 0; a < nd; ++a) {
+      const Extra& x = extra_[a];
+      if (x.slide) {
+        slide1_[x.wheel] += dx_[a];
+        correction = std::max(correction, std::abs(dx_[a]));
+      } else {
+        psi1_[x.wheel] += dx_[a];
+        correction = std::max(correction, std::abs(dx_[a]) * model.sprockets[x.wheel].pitch_radius);
+      }
     }
     report.last_correction = correction;
     if (correction <= tol) {
@@ -424,7 +502,8 @@ StepReport Integrator::step(const Model& model, State& s) {
         ux_[i] -= lambda * delta_[i].x;
         uy_[i] -= lambda * delta_[i].y;
       }
-      for (std::size_t w : driven_) psi1_[w] -= lambda * dpsi_[w];
+      for (std::size_t a = 0; a < nd; ++a)
+        (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] -= lambda * dx_[a];
       next = assemble(model, s, true);
       ++report.backtracks;
     }
@@ -441,6 +520,7 @@ StepReport Integrator::step(const Model& model, State& s) {
   report.contact_damping_work = contact_damping_work_;
   report.seat_friction_work = seat_friction_work_;
   report.hinge_work = hinge_work_;
+  report.takeup_damper_work = takeup_damper_work_;
   for (const Guide& guide : model.guides) {
     if (!(guide.friction > 0.0) && !(guide.contact_damping > 0.0)) continue;
     for (std::size_t i = 0; i < n; ++i) {
@@ -457,6 +537,7 @@ StepReport Integrator::step(const Model& model, State& s) {
   s.contact_damping_work += report.contact_damping_work;
   s.seat_friction_work += report.seat_friction_work;
   s.hinge_work += report.hinge_work;
+  s.takeup_damper_work += report.takeup_damper_work;
   for (std::size_t i = 0; i < n; ++i) {
     if (model.is_pinned(i)) continue;
     // x₁ = x₀ + h ((1 − θ) v₀ + θ v₁)
@@ -472,9 +553,73 @@ StepReport Integrator::step(const Model& model, State& s) {
     s.speed[w] = wheel.driver ? wheel.speed
                               : (psi1_[w] - s.angle[w] - h * (1.0 - th) * s.speed[w]) / (h * th);
     s.angle[w] = psi1_[w];
+    if (wheel.takeup) {
+      s.slide_speed[w] = (slide1_[w] - s.slide[w] - h * (1.0 - th) * s.slide_speed[w]) / (h * th);
+      s.slide[w] = slide1_[w];
+    }
   }
   s.time += h;
   return report;
+}
+
+void Integrator::newton_system(const Model& model, const State& s, std::span<const double> unknowns,
+                               std::vector<double>& residual, std::vector<double>* jacobian) {
+  const std::size_t n = model.nodes(), m = extra_.size(), size = 2 * n + m;
+  if (unknowns.size() != size || model.nodes() != solver_.size() ||
+      model.sprockets.size() != psi1_.size()) {
+    throw InputError({{"unknowns", std::to_string(unknowns.size()),
+                       std::to_string(size) + " values for this integrator's model"}});
+  }
+  throw_if_any(validate(model, s));
+  const double h = options_.step;
+  for (std::size_t j = 0; j < model.links(); ++j) {
+    const std::size_t b = (j + 1) % n;
+    l0_[j] = std::hypot(s.x[b] - s.x[j], s.y[b] - s.y[j]);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    ux_[i] = unknowns[2 * i];
+    uy_[i] = unknowns[2 * i + 1];
+  }
+  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+    psi1_[w] = s.angle[w] + h * model.sprockets[w].speed;  // a driver's; the others set below
+    slide1_[w] = 0.0;
+  }
+  for (std::size_t a = 0; a < m; ++a)
+    (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] = unknowns[2 * n + a];
+  assemble(model, s, jacobian != nullptr);
+  residual.assign(size, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    residual[2 * i] = -solver_.rhs[i].x;
+    residual[2 * i + 1] = -solver_.rhs[i].y;
+  }
+  for (std::size_t a = 0; a < m; ++a) residual[2 * n + a] = -xres_[a];
+  if (jacobian == nullptr) return;
+  std::vector<double>& J = *jacobian;
+  J.assign(size * size, 0.0);
+  auto put = [&](std::size_t r, std::size_t c, const Mat2& b) {
+    J[(2 * r) * size + 2 * c] += b.a;
+    J[(2 * r) * size + 2 * c + 1] += b.b;
+    J[(2 * r + 1) * size + 2 * c] += b.c;
+    J[(2 * r + 1) * size + 2 * c + 1] += b.d;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    put(i, i, solver_.diag[i]);
+    if (i > 0) put(i, i - 1, solver_.lower[i]);
+    if (i + 1 < n) put(i, i + 1, solver_.upper[i]);
+  }
+  if (model.closed) {
+    put(0, n - 1, solver_.lower[0]);
+    put(n - 1, 0, solver_.upper[n - 1]);
+  }
+  for (std::size_t a = 0; a < m; ++a) {
+    for (std::size_t i = 0; i < n; ++i) {
+      J[(2 * i) * size + 2 * n + a] = bcol_[a][i].x;
+      J[(2 * i + 1) * size + 2 * n + a] = bcol_[a][i].y;
+      J[(2 * n + a) * size + 2 * i] = brow_[a][i].x;
+      J[(2 * n + a) * size + 2 * i + 1] = brow_[a][i].y;
+    }
+    for (std::size_t b = 0; b < m; ++b) J[(2 * n + a) * size + 2 * n + b] = xjac_[a * m + b];
+  }
 }
 
 }  // namespace catena::dynamics
