@@ -109,6 +109,11 @@ std::vector<Issue> validate(const Model& model) {
         out.push_back({f + "seating_angle", check::format_si(s.seating_angle, "rad"),
                        "an angle in (0, pi) rad"});
       }
+      if (!std::isfinite(s.tip_radius) || !(s.tip_radius == 0.0 || s.tip_radius > s.pitch_radius)) {
+        out.push_back({f + "tip_radius", check::format_si(s.tip_radius, "m"),
+                       "0 (no tip) or a finite value > the pitch radius " +
+                           check::format_si(s.pitch_radius, "m")});
+      }
       check::finite_positive(out, (f + "contact_stiffness").c_str(), s.contact_stiffness, "N/m");
       if (!std::isfinite(s.contact_smoothing) || !(s.contact_smoothing > 0.0) ||
           !(s.contact_smoothing <= s.roller_radius)) {
@@ -284,6 +289,7 @@ Sprocket iso606_sprocket(double pitch, double roller_diameter, double inner_widt
   s.pitch_radius = 0.5 * iso.pitch_diameter;
   s.seat_radius = iso.min_gap.seating_radius;
   s.seating_angle = iso.min_gap.seating_angle;
+  s.tip_radius = 0.5 * iso.min_gap.outline_tip_diameter;
   s.roller_radius = 0.5 * roller_diameter;
   s.contact_stiffness = contact_stiffness;
   s.contact_damping = contact_damping;
@@ -345,7 +351,7 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
                          double speed) {
   SeatContact c;
   const double rx = x - w.centre_x, ry = y - w.centre_y;
-  const double reach = w.pitch_radius + w.roller_radius;
+  const double reach = contact_reach(w);
   if (rx * rx + ry * ry > reach * reach) return c;  // clear of the wheel
   // The nearest seat from the roller's angle about the centre: O(1), no search.
   const double tau = 2.0 * std::numbers::pi / w.teeth;
@@ -363,24 +369,98 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
   const double e_in = -(ex * cs + ey * sn), e_t = -ex * sn + ey * cs;
   const double half = 0.5 * w.seating_angle;
   const double ch = std::cos(half), sh_abs = std::sin(half);
+  const double r = w.roller_radius, ri = w.seat_radius;
   double g = 0.0;
   // |γ| ≤ α/2 with γ = atan2(e_t, e_in) and α/2 < π/2, without the atan2: e lies within α/2 of
   // the inward radial iff |e_t| cos(α/2) ≤ e_in sin(α/2) with e_in ≥ 0 (γ = 0 at e = 0).
   if (e_in >= 0.0 && std::abs(e_t) * ch <= e_in * sh_abs) {
     const double dist = std::sqrt(ex * ex + ey * ey);
     if (!(dist > 0.0)) return c;
-    g = dist + w.roller_radius - w.seat_radius;
+    g = dist + r - ri;
     c.nx = ex / dist;
     c.ny = ey / dist;
     c.curvature = 1.0 / dist;
+    c.surface = 0;
   } else {
-    // the flank's normal m at the arc's end: the inward radial turned by ±α/2 towards t
+    // The tooth on the roller's side (side = ±1 towards ±t). In the seat's frame mirrored to
+    // side +1 — coordinates a along the inward radial, b = side·e_t — the flank's normal is
+    // m = (cos α/2, sin α/2) (into the tooth) and its direction up the tooth u = (−sin α/2,
+    // cos α/2), from the arc's end E = ri m; the wheel's centre O is at (R, 0).
     const double side = e_t > 0.0 ? 1.0 : -1.0;
-    const double sh = side * sh_abs;
-    c.nx = -cs * ch - sn * sh;
-    c.ny = -sn * ch + cs * sh;
-    g = ex * c.nx + ey * c.ny + w.roller_radius - w.seat_radius;
-    c.curvature = 0.0;
+    const double a = e_in, b = side * e_t;
+    // a vector (va, vb) of the mirrored frame in world axes: va (−cos σ, −sin σ) +
+    // side vb (−sin σ, cos σ)
+    auto world = [&](double va, double vb, double& wx, double& wy) {
+      wx = -cs * va - side * sn * vb;
+      wy = -sn * va + side * cs * vb;
+    };
+    const double depth_flank = a * ch + b * sh_abs - ri;  // (q − C)·m − ri: > 0 inside the tooth
+    const double lambda = -a * sh_abs + b * ch;           // (q − C)·u, ≥ 0 here
+    const double R = w.pitch_radius, Ra = w.tip_radius;
+    // The flank ends at the tooth's corner K = E + λ_K u: where it meets the tip circle
+    // |K − O| = Ra, λ² + 2 R sin(α/2) λ + R² + ri² − 2 R ri cos(α/2) − Ra² = 0, or, if the two
+    // flanks of the tooth meet below the tip circle, at their apex on the tooth's centre line
+    // (at τ/2 from the seat's radial): λ_A = (R sin(τ/2) − ri sin(α/2 + τ/2)) / cos(α/2 + τ/2).
+    bool has_corner = false, tip_arc = false;
+    double lk = 0.0;
+    if (Ra > 0.0) {
+      const double cq = R * R + ri * ri - 2.0 * R * ri * ch - Ra * Ra;
+      const double disc = R * R * sh_abs * sh_abs - cq;
+      if (disc >= 0.0) {
+        lk = -R * sh_abs + std::sqrt(disc);
+        has_corner = tip_arc = lk > 0.0;
+      }
+      const double th2 = 0.5 * tau;
+      const double cos_apex = std::cos(half + th2);
+      if (cos_apex > 0.0) {
+        const double la = (R * std::sin(th2) - ri * std::sin(half + th2)) / cos_apex;
+        if (la > 0.0 && (!has_corner || la <= lk)) {
+          lk = la;
+          has_corner = true;
+          tip_arc = false;
+        }
+      }
+    }
+    const double ka = ri * ch - lk * sh_abs, kb = ri * sh_abs + lk * ch;  // K in (a, b)
+    // q − O in (a, b), its distance from the centre
+    const double oa = a - R, ob = b;
+    const double rho = std::sqrt(oa * oa + ob * ob);
+    const double depth_tip = Ra - rho;  // > 0 inside the tip circle
+    // Beyond K's radial towards the tooth's centre line: (K − O) × (q − O) ≤ 0 in (a, b).
+    const bool beyond_k = (ka - R) * ob - kb * oa <= 0.0;
+    enum { kFlank, kCorner, kTip } where = kFlank;
+    if (has_corner) {
+      if (depth_flank >= 0.0 && (!tip_arc || depth_tip >= 0.0)) {
+        // inside the tooth (a roller centre past its surface): the nearer of flank and tip
+        where = tip_arc && depth_tip < depth_flank ? kTip : kFlank;
+      } else if (depth_flank < 0.0 && lambda <= lk) {
+        where = kFlank;
+      } else if (tip_arc && depth_tip < 0.0 && beyond_k) {
+        where = kTip;
+      } else {
+        where = kCorner;
+      }
+    }
+    if (where == kFlank) {
+      world(ch, sh_abs, c.nx, c.ny);
+      g = ex * c.nx + ey * c.ny + r - ri;  // depth_flank + r, as the form without a tip wrote it
+      c.curvature = 0.0;
+      c.surface = 1;
+    } else if (where == kTip) {
+      if (!(rho > 0.0)) return c;
+      world(-oa / rho, -ob / rho, c.nx, c.ny);  // n = −(q − O)/|q − O|
+      g = r + depth_tip;
+      c.curvature = -1.0 / rho;
+      c.surface = 3;
+    } else {
+      const double da = ka - a, db = kb - b;  // K − q
+      const double dist = std::sqrt(da * da + db * db);
+      if (!(dist > 0.0)) return c;
+      world(da / dist, db / dist, c.nx, c.ny);
+      g = r - dist;
+      c.curvature = -1.0 / dist;
+      c.surface = 2;
+    }
   }
   if (!(g > 0.0)) return c;
   apply_seat_law(w, g, rx, ry, vx, vy, speed, c);
