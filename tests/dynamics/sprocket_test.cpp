@@ -108,7 +108,8 @@ TEST(DynamicsSprocket, TorqueIsTheDerivativeOfTheContactEnergy) {
   EXPECT_GT(checked, 100);
 }
 
-// The tooth tip (docs/models/dynamics.md, "Tooth tip"): the penetration is r minus the roller
+// The tooth tip (docs/models/dynamics.md, "Tooth tip"), on the ISO arc flank and on the straight
+// one: the penetration is r minus the roller
 // centre's signed distance from the tooth, so it is continuous and 1-Lipschitz in the roller's
 // position everywhere near the wheel — across the arc, the flanks, the flank/tip corner, the tip's
 // arc, the tooth's centre line (where the nearest seat changes) and the reach, where the form
@@ -117,33 +118,36 @@ TEST(DynamicsSprocket, TipPenetrationIsContinuousAndLipschitz) {
   std::mt19937 rng(21);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int z : {6, 9, 12, 17, 25}) {
-    const Sprocket w = wheel(z);
-    ASSERT_GT(w.tip_radius, w.pitch_radius) << "z " << z;
-    int surfaces[4] = {0, 0, 0, 0};
-    for (int trial = 0; trial < 20000; ++trial) {
-      const double psi = 6.0 * u(rng);
-      const double rho = w.pitch_radius - w.roller_radius +
-                         (w.tip_radius - w.pitch_radius + 2.5 * w.roller_radius) * u(rng);
-      const double a = 2.0 * kPi * u(rng);
-      const double x = w.centre_x + rho * std::cos(a), y = w.centre_y + rho * std::sin(a);
-      const double step = 2e-4 * u(rng), dir = 2.0 * kPi * u(rng);
-      const double x2 = x + step * std::cos(dir), y2 = y + step * std::sin(dir);
-      const SeatContact c1 = seat_contact(w, x, y, 0.0, 0.0, psi, 0.0);
-      const SeatContact c2 = seat_contact(w, x2, y2, 0.0, 0.0, psi, 0.0);
-      const double g1 = c1.active ? c1.penetration : 0.0, g2 = c2.active ? c2.penetration : 0.0;
-      // both clamped at 0 outside contact: |max(0, g)| is 1-Lipschitz as g is
-      EXPECT_LE(std::abs(g2 - g1), step * (1.0 + 1e-9) + 1e-15)
-          << "z " << z << " surfaces " << c1.surface << " " << c2.surface;
-      if (c1.active) ++surfaces[c1.surface];
-      // clear of the wheel beyond the tip circle's offset
-      if (rho > w.tip_radius + w.roller_radius) {
-        EXPECT_FALSE(c1.active);
+    for (const bool straight : {false, true}) {
+      Sprocket w = wheel(z);
+      if (straight) w.flank_radius = 0.0;  // the straight flank with the tip
+      ASSERT_GT(w.tip_radius, w.pitch_radius) << "z " << z;
+      int surfaces[4] = {0, 0, 0, 0};
+      for (int trial = 0; trial < 20000; ++trial) {
+        const double psi = 6.0 * u(rng);
+        const double rho = w.pitch_radius - w.roller_radius +
+                           (w.tip_radius - w.pitch_radius + 2.5 * w.roller_radius) * u(rng);
+        const double a = 2.0 * kPi * u(rng);
+        const double x = w.centre_x + rho * std::cos(a), y = w.centre_y + rho * std::sin(a);
+        const double step = 2e-4 * u(rng), dir = 2.0 * kPi * u(rng);
+        const double x2 = x + step * std::cos(dir), y2 = y + step * std::sin(dir);
+        const SeatContact c1 = seat_contact(w, x, y, 0.0, 0.0, psi, 0.0);
+        const SeatContact c2 = seat_contact(w, x2, y2, 0.0, 0.0, psi, 0.0);
+        const double g1 = c1.active ? c1.penetration : 0.0, g2 = c2.active ? c2.penetration : 0.0;
+        // both clamped at 0 outside contact: |max(0, g)| is 1-Lipschitz as g is
+        EXPECT_LE(std::abs(g2 - g1), step * (1.0 + 1e-9) + 1e-15)
+            << "z " << z << " surfaces " << c1.surface << " " << c2.surface;
+        if (c1.active) ++surfaces[c1.surface];
+        // clear of the wheel beyond the tip circle's offset
+        if (rho > w.tip_radius + w.roller_radius) {
+          EXPECT_FALSE(c1.active);
+        }
       }
-    }
-    EXPECT_GT(surfaces[1], 100) << "z " << z;  // flank
-    EXPECT_GT(surfaces[2], 100) << "z " << z;  // corner
-    if (z >= 9) {                              // the tip's arc (z = 6: an apex)
-      EXPECT_GT(surfaces[3], 100) << "z " << z;
+      EXPECT_GT(surfaces[1], 100) << "z " << z;  // flank
+      EXPECT_GT(surfaces[2], 100) << "z " << z;  // corner
+      if (z >= 9) {                              // the tip's arc (z = 6: an apex)
+        EXPECT_GT(surfaces[3], 100) << "z " << z;
+      }
     }
   }
 }
@@ -156,52 +160,60 @@ TEST(DynamicsSprocket, TipCornerAndArcGeometry) {
   std::mt19937 rng(22);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int z : {6, 9, 12, 17, 25}) {
-    const Sprocket w = wheel(z);
-    const double tau = 2.0 * kPi / z;
-    int corners = 0, tips = 0;
-    for (int trial = 0; trial < 4000; ++trial) {
-      const double psi = 6.0 * u(rng);
-      const double rho =
-          w.pitch_radius + (w.tip_radius - w.pitch_radius + w.roller_radius) * u(rng);
-      const double a = 2.0 * kPi * u(rng);
-      const double x = w.centre_x + rho * std::cos(a), y = w.centre_y + rho * std::sin(a);
-      const SeatContact c = seat_contact(w, x, y, 0.0, 0.0, psi, 0.0);
-      if (!c.active || c.surface < 2) continue;
-      const double kx = x + (w.roller_radius - c.penetration) * c.nx;
-      const double ky = y + (w.roller_radius - c.penetration) * c.ny;
-      const double ox = kx - w.centre_x, oy = ky - w.centre_y;
-      const double off = std::remainder(std::atan2(oy, ox) - psi, tau);  // from the seat radial
-      if (c.surface == 3) {
-        ++tips;
-        EXPECT_NEAR(std::hypot(ox, oy), w.tip_radius, 1e-12);
-        EXPECT_NEAR(c.curvature, -1.0 / std::hypot(x - w.centre_x, y - w.centre_y), 1e-9);
-      } else {
-        ++corners;
-        const bool on_tip = std::abs(std::hypot(ox, oy) - w.tip_radius) < 1e-12;
-        const bool on_centre_line = std::abs(std::abs(off) - 0.5 * tau) < 1e-9;
-        EXPECT_TRUE(on_tip || on_centre_line) << "z " << z << " off " << off;
-        // K is the flank's end: on the flank's line, (K − C)·m = ri with m the flank's normal,
-        // which a roller held against that flank reports as its normal
-        const double sigma = psi + c.seat * tau;
-        const double cx = w.centre_x + w.pitch_radius * std::cos(sigma);
-        const double cy = w.centre_y + w.pitch_radius * std::sin(sigma);
-        const double side = off > 0.0 ? 1.0 : -1.0, half = 0.5 * w.seating_angle;
-        const double mx =
-            -std::cos(sigma) * std::cos(half) - std::sin(sigma) * side * std::sin(half);
-        const double my =
-            -std::sin(sigma) * std::cos(half) + std::cos(sigma) * side * std::sin(half);
-        EXPECT_NEAR((kx - cx) * mx + (ky - cy) * my, w.seat_radius, 1e-12) << "z " << z;
-      }
-      for (const double s : {-3e-7, 2e-7}) {
-        const SeatContact d = seat_contact(w, x + s * c.nx, y + s * c.ny, 0.0, 0.0, psi, 0.0);
-        if (d.active && d.surface == c.surface) {
-          EXPECT_NEAR(d.penetration, c.penetration + s, 1e-12);
+    for (const bool straight : {false, true}) {
+      Sprocket w = wheel(z);
+      if (straight) w.flank_radius = 0.0;  // the straight flank with the tip
+      const double tau = 2.0 * kPi / z;
+      int corners = 0, tips = 0;
+      for (int trial = 0; trial < 4000; ++trial) {
+        const double psi = 6.0 * u(rng);
+        const double rho =
+            w.pitch_radius + (w.tip_radius - w.pitch_radius + w.roller_radius) * u(rng);
+        const double a = 2.0 * kPi * u(rng);
+        const double x = w.centre_x + rho * std::cos(a), y = w.centre_y + rho * std::sin(a);
+        const SeatContact c = seat_contact(w, x, y, 0.0, 0.0, psi, 0.0);
+        if (!c.active || c.surface < 2) continue;
+        const double kx = x + (w.roller_radius - c.penetration) * c.nx;
+        const double ky = y + (w.roller_radius - c.penetration) * c.ny;
+        const double ox = kx - w.centre_x, oy = ky - w.centre_y;
+        const double off = std::remainder(std::atan2(oy, ox) - psi, tau);  // from the seat radial
+        if (c.surface == 3) {
+          ++tips;
+          EXPECT_NEAR(std::hypot(ox, oy), w.tip_radius, 1e-12);
+          EXPECT_NEAR(c.curvature, -1.0 / std::hypot(x - w.centre_x, y - w.centre_y), 1e-9);
+        } else {
+          ++corners;
+          const bool on_tip = std::abs(std::hypot(ox, oy) - w.tip_radius) < 1e-12;
+          const bool on_centre_line = std::abs(std::abs(off) - 0.5 * tau) < 1e-9;
+          EXPECT_TRUE(on_tip || on_centre_line) << "z " << z << " off " << off;
+          // K is the flank's end: on the flank (m the normal at the seating arc's end)
+          const double sigma = psi + c.seat * tau;
+          const double cx = w.centre_x + w.pitch_radius * std::cos(sigma);
+          const double cy = w.centre_y + w.pitch_radius * std::sin(sigma);
+          const double side = off > 0.0 ? 1.0 : -1.0, half = 0.5 * w.seating_angle;
+          const double mx =
+              -std::cos(sigma) * std::cos(half) - std::sin(sigma) * side * std::sin(half);
+          const double my =
+              -std::sin(sigma) * std::cos(half) + std::cos(sigma) * side * std::sin(half);
+          if (w.flank_radius > 0.0) {  // on the ISO flank's circle about F = C + (ri + re) m
+            const double fx = cx + (w.seat_radius + w.flank_radius) * mx;
+            const double fy = cy + (w.seat_radius + w.flank_radius) * my;
+            EXPECT_NEAR(std::hypot(kx - fx, ky - fy), w.flank_radius, 1e-12) << "z " << z;
+          } else {  // on the straight flank
+            EXPECT_NEAR((kx - cx) * mx + (ky - cy) * my, w.seat_radius, 1e-12) << "z " << z;
+          }
+        }
+        for (const double s : {-3e-7, 2e-7}) {
+          const SeatContact d = seat_contact(w, x + s * c.nx, y + s * c.ny, 0.0, 0.0, psi, 0.0);
+          if (d.active && d.surface == c.surface) {
+            EXPECT_NEAR(d.penetration, c.penetration + s, 1e-12);
+          }
         }
       }
-    }
-    EXPECT_GT(corners, 20) << "z " << z;
-    if (z >= 9) {
-      EXPECT_GT(tips, 20) << "z " << z;
+      EXPECT_GT(corners, 20) << "z " << z;
+      if (z >= 9) {
+        EXPECT_GT(tips, 20) << "z " << z;
+      }
     }
   }
 }

@@ -33,6 +33,10 @@ struct Sprocket {
   /// "Tooth tip"). 0: no tip — the flanks run on to the reach R + r (the form before the tip,
   /// whose reach cuts the flanks with a jump of the force); iso606_sprocket sets the ISO tip.
   double tip_radius = 0.0;
+  /// [m] re, the flank: the ISO arc of this radius tangent to the seating arc at its end, convex
+  /// (centred on the tooth's side at ri + re from the seat centre); 0: the straight line tangent
+  /// there (the form before the tip). iso606_sprocket sets the minimum gap's re,max.
+  double flank_radius = 0.0;
   double contact_stiffness = 0.0;  ///< [N/m] k_c, the penalty on the roller's penetration
   double contact_damping = 0.0;    ///< [N·s/m] c_c, on the penetration rate (never pulls)
   /// [m] ε: the force rises as k_c g²/2ε over the first ε of penetration, then k_c (g − ε/2),
