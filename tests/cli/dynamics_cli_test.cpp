@@ -319,6 +319,62 @@ TEST(DynamicsCli, SeatFrictionIsOptInAndInTheBalance) {
   EXPECT_FALSE(p["units"].contains("seat_friction_work"));
 }
 
+// `seat_friction` on a [[dynamics.sprocket]] overrides the [dynamics] one for that wheel: each
+// wheel's μ is then in its sprocket entry; the same μ given per wheel runs the same as given once;
+// a different one on one wheel changes the run; a value outside [0, 1] is refused naming the
+// wheel's field and line, every one at once.
+TEST(DynamicsCli, SeatFrictionPerWheel) {
+  std::stringstream text;
+  text << std::ifstream(kExample).rdbuf();
+  const std::string base = text.str();
+  auto with = [&](const std::string& dynamics, const std::string& driver,
+                  const std::string& driven) {
+    std::string t = base;
+    const std::size_t at = t.find("load_torque = 10");
+    EXPECT_NE(at, std::string::npos);
+    t.insert(t.find('\n', at) + 1, driven);
+    const std::size_t sp = t.find("speed = \"13 rad/s\"");
+    EXPECT_NE(sp, std::string::npos);
+    t.insert(t.find('\n', sp) + 1, driver);
+    t.insert(t.find("[dynamics]\n") + 11, dynamics);
+    return t;
+  };
+  const std::string flags = " --duration 0.02s --format json";
+  const CliRun once =
+      run("dynamics " + write("mu_once.toml", with("seat_friction = 0.1\n", "", "")) + flags);
+  const CliRun each = run(
+      "dynamics " +
+      write("mu_each.toml", with("", "seat_friction = 0.1\n", "seat_friction = 0.1\n")) + flags);
+  const CliRun one =
+      run("dynamics " +
+          write("mu_one.toml", with("seat_friction = 0.1\n", "", "seat_friction = 0.3\n")) + flags);
+  ASSERT_EQ(once.status, 0) << once.err;
+  ASSERT_EQ(each.status, 0) << each.err;
+  ASSERT_EQ(one.status, 0) << one.err;
+  const auto a = nlohmann::json::parse(once.out), b = nlohmann::json::parse(each.out),
+             c = nlohmann::json::parse(one.out);
+  EXPECT_FALSE(a["sprocket"][0].contains("seat_friction"));  // none given per wheel
+  EXPECT_EQ(b["sprocket"][0]["seat_friction"], 0.1);
+  EXPECT_EQ(b["sprocket"][1]["seat_friction"], 0.1);
+  EXPECT_EQ(b["seat_friction"], 0.0);  // the [dynamics] default, under the wheels' own
+  EXPECT_EQ(a["span"][0]["tension"], b["span"][0]["tension"]);
+  EXPECT_EQ(a["sprocket"][1]["speed"], b["sprocket"][1]["speed"]);
+  EXPECT_EQ(a["summary"]["seat_friction_work"], b["summary"]["seat_friction_work"]);
+  EXPECT_EQ(c["sprocket"][0]["seat_friction"], 0.1);
+  EXPECT_EQ(c["sprocket"][1]["seat_friction"], 0.3);
+  EXPECT_NE(a["span"][0]["tension"], c["span"][0]["tension"]);
+  EXPECT_LT(c["summary"]["seat_friction_work"].get<double>(), 0.0);
+
+  const std::string bad = with("", "seat_friction = -0.1\n", "seat_friction = 1.5\n");
+  const CliRun e = run("dynamics " + write("mu_bad.toml", bad));
+  EXPECT_EQ(e.status, 2);
+  EXPECT_TRUE(e.out.empty());
+  for (const char* field :
+       {"dynamics.sprocket[0].seat_friction (line ", "dynamics.sprocket[1].seat_friction (line "})
+    EXPECT_NE(e.err.find(field), std::string::npos) << field << "\n" << e.err;
+  EXPECT_NE(e.err.find("in [0, 1]"), std::string::npos) << e.err;
+}
+
 // `positions = true` adds every node's x and y at each output sample: each link's length is the
 // pitch within its stretch (the tension over k, < 0.2 %), and the report's animation frames (its
 // own copy of the positions, drawn in mm to 1 µm) show the same nodes at the same times.

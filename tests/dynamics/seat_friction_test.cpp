@@ -133,6 +133,116 @@ TEST(DynamicsSeatFriction, DerivativesMatchFiniteDifferences) {
   EXPECT_GE(sliding, 30);
 }
 
+// The same derivatives at contacts on the tooth's top (docs/models/dynamics.md, "Tooth tip"),
+// with the ISO arc flank (convex: κ < 0) and the straight one: on the flank near its end, at the
+// flank/tip corner and on the tip's arc (convex: the normal's turning κ < 0), for the wheels of
+// validation (1), z = 9, 12 (a tip arc) and 6 (an apex). Each point is moved along its normal to a
+// penetration of 0.2–3 µm, within and beyond the ramp.
+TEST(DynamicsSeatFriction, DerivativesMatchFiniteDifferencesOnTheTip) {
+  std::mt19937 rng(2112);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int z : {6, 9, 12}) {
+    for (const bool straight : {false, true}) {
+      Sprocket w = iso606_sprocket(0.01905, 0.01207, 0.01168, z, 0.03, -0.02, 2e8, 800.0);
+      if (straight) w.flank_radius = 0.0;
+      w.friction = 0.3;
+      const double tau = 2.0 * kPi / z;
+      int count[4] = {0, 0, 0, 0};
+      for (int trial = 0; trial < 3000; ++trial) {
+        const double psi = 2.0 * kPi * u(rng), omega = 40.0 * (u(rng) - 0.5);
+        // a point round a tooth's top: between the pitch circle and the tip's offset circle
+        const double rho =
+            w.pitch_radius + (w.tip_radius + w.roller_radius - w.pitch_radius) * u(rng);
+        const double a = psi + tau * (0.5 + (u(rng) - 0.5));
+        double x = w.centre_x + rho * std::cos(a), y = w.centre_y + rho * std::sin(a);
+        SeatContact c = seat_contact(w, x, y, 0.0, 0.0, psi, 0.0);
+        if (!c.active || c.surface == 0) continue;
+        const double target = 2e-7 + 2.8e-6 * u(rng);
+        if (std::abs(target - w.contact_smoothing) < 2e-8) continue;
+        x -= (c.penetration - target) * c.nx;
+        y -= (c.penetration - target) * c.ny;
+        const int surface = c.surface;
+        c = seat_contact(w, x, y, 0.0, 0.0, psi, 0.0);
+        if (!c.active || c.surface != surface) continue;
+        // off the joints between surfaces, where the curvature jumps: the same surface 1e-8 m
+        // either way along both axes
+        bool interior = true;
+        for (const double dx : {-1e-8, 1e-8}) {
+          interior = interior &&
+                     seat_contact(w, x + dx, y, 0.0, 0.0, psi, 0.0).surface == surface &&
+                     seat_contact(w, x, y + dx, 0.0, 0.0, psi, 0.0).surface == surface;
+        }
+        if (!interior) continue;
+        const double rx = x - w.centre_x, ry = y - w.centre_y;
+        const double slip = (u(rng) < 0.5 ? 3e-3 : 0.2) * (2.0 * u(rng) - 1.0);
+        const double rate = 0.01 * (u(rng) - 0.3);
+        const Point p{x, y, rate * c.nx - slip * c.ny - omega * ry,
+                      rate * c.ny + slip * c.nx + omega * rx};
+        const SeatContact cv = seat_contact(w, p.x, p.y, p.vx, p.vy, psi, omega);
+        if (!(cv.force > 1.0)) continue;
+        ++count[surface];
+        const SeatFriction f = eval(w, p, psi, omega);
+        const double hq = 1e-11, hv = 1e-8, hpsi = hq / w.pitch_radius, hw = hv / w.pitch_radius;
+        const double sq = std::max(
+            {std::abs(f.dq[0]), std::abs(f.dq[1]), std::abs(f.dq[2]), std::abs(f.dq[3]), 1.0});
+        const double sv = std::max(
+            {std::abs(f.dv[0]), std::abs(f.dv[1]), std::abs(f.dv[2]), std::abs(f.dv[3]), 1e-3});
+        const double tol = 2e-4;
+        auto fd = [&](Point lo, Point hi, double pl, double ph, double wl, double wh, double step,
+                      double out[3]) {
+          const SeatFriction a0 = eval(w, lo, pl, wl), a1 = eval(w, hi, ph, wh);
+          out[0] = (a1.fx - a0.fx) / (2 * step);
+          out[1] = (a1.fy - a0.fy) / (2 * step);
+          out[2] = (a1.torque - a0.torque) / (2 * step);
+        };
+        double d[3];
+        for (int j = 0; j < 2; ++j) {
+          Point lo = p, hi = p;
+          (j == 0 ? lo.x : lo.y) -= hq;
+          (j == 0 ? hi.x : hi.y) += hq;
+          fd(lo, hi, psi, psi, omega, omega, hq, d);
+          EXPECT_NEAR(d[0], f.dq[j], tol * sq) << "z " << z << " surface " << surface;
+          EXPECT_NEAR(d[1], f.dq[2 + j], tol * sq) << "z " << z << " surface " << surface;
+          EXPECT_NEAR(d[2], f.torque_dq[j], tol * sq * w.pitch_radius * 2) << "z " << z;
+          lo = p;
+          hi = p;
+          (j == 0 ? lo.vx : lo.vy) -= hv;
+          (j == 0 ? hi.vx : hi.vy) += hv;
+          fd(lo, hi, psi, psi, omega, omega, hv, d);
+          EXPECT_NEAR(d[0], f.dv[j], tol * sv) << "z " << z << " surface " << surface;
+          EXPECT_NEAR(d[1], f.dv[2 + j], tol * sv) << "z " << z << " surface " << surface;
+        }
+        fd(p, p, psi - hpsi, psi + hpsi, omega, omega, hpsi, d);
+        const double spsi = sq * w.pitch_radius * 2;
+        EXPECT_NEAR(d[0], f.dpsi[0], tol * spsi) << "z " << z << " surface " << surface;
+        EXPECT_NEAR(d[1], f.dpsi[1], tol * spsi) << "z " << z << " surface " << surface;
+        EXPECT_NEAR(d[2], f.torque_dpsi, tol * spsi * w.pitch_radius * 2) << "z " << z;
+        fd(p, p, psi, psi, omega - hw, omega + hw, hw, d);
+        const double sw = sv * w.pitch_radius * 2;
+        EXPECT_NEAR(d[0], f.domega[0], tol * sw) << "z " << z << " surface " << surface;
+        EXPECT_NEAR(d[1], f.domega[1], tol * sw) << "z " << z << " surface " << surface;
+        // the normal force's own gradient (the integrator's block: stiffness along n, f κ across)
+        const double hn = 1e-11;
+        const SeatContact lo = seat_contact(w, p.x - hn, p.y, p.vx, p.vy, psi, omega);
+        const SeatContact hi = seat_contact(w, p.x + hn, p.y, p.vx, p.vy, psi, omega);
+        const double dfnx = (hi.force * hi.nx - lo.force * lo.nx) / (2 * hn);
+        const double tx = -cv.ny, ty = cv.nx;
+        const double analytic = cv.stiffness * cv.nx * cv.nx + cv.force * cv.curvature * tx * tx;
+        // the damping's q-dependence through ġ adds c (ω + κ v_t) n tᵀ: included for the check
+        const double vt = (p.vx + omega * ry) * tx + (p.vy - omega * rx) * ty;
+        const double damp = cv.damping * (omega + cv.curvature * vt) * tx * cv.nx;
+        EXPECT_NEAR(dfnx, analytic + damp, tol * std::max(std::abs(cv.stiffness), 1.0))
+            << "z " << z << " surface " << surface;
+      }
+      EXPECT_GT(count[1], 20) << "z " << z;
+      EXPECT_GT(count[2], 20) << "z " << z;
+      if (z >= 9) {
+        EXPECT_GT(count[3], 20) << "z " << z;
+      }
+    }
+  }
+}
+
 // Outside the band the force is Coulomb's μ f against the slip, within 1/(2 (v_t/v_ε)²); it is
 // odd in the slip and 0 without slip; F lies along the seat's tangent.
 TEST(DynamicsSeatFriction, CoulombOutsideTheBandAgainstTheSlip) {

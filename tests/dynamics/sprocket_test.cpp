@@ -108,5 +108,160 @@ TEST(DynamicsSprocket, TorqueIsTheDerivativeOfTheContactEnergy) {
   EXPECT_GT(checked, 100);
 }
 
+// The tooth tip (docs/models/dynamics.md, "Tooth tip"), on the ISO arc flank and on the straight
+// one: the penetration is r minus the roller
+// centre's signed distance from the tooth, so it is continuous and 1-Lipschitz in the roller's
+// position everywhere near the wheel — across the arc, the flanks, the flank/tip corner, the tip's
+// arc, the tooth's centre line (where the nearest seat changes) and the reach, where the form
+// without a tip jumped. Random pairs of nearby points round the whole wheel out to beyond the tip.
+TEST(DynamicsSprocket, TipPenetrationIsContinuousAndLipschitz) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int z : {6, 9, 12, 17, 25}) {
+    for (const bool straight : {false, true}) {
+      Sprocket w = wheel(z);
+      if (straight) w.flank_radius = 0.0;  // the straight flank with the tip
+      ASSERT_GT(w.tip_radius, w.pitch_radius) << "z " << z;
+      int surfaces[4] = {0, 0, 0, 0};
+      for (int trial = 0; trial < 20000; ++trial) {
+        const double psi = 6.0 * u(rng);
+        const double rho = w.pitch_radius - w.roller_radius +
+                           (w.tip_radius - w.pitch_radius + 2.5 * w.roller_radius) * u(rng);
+        const double a = 2.0 * kPi * u(rng);
+        const double x = w.centre_x + rho * std::cos(a), y = w.centre_y + rho * std::sin(a);
+        const double step = 2e-4 * u(rng), dir = 2.0 * kPi * u(rng);
+        const double x2 = x + step * std::cos(dir), y2 = y + step * std::sin(dir);
+        const SeatContact c1 = seat_contact(w, x, y, 0.0, 0.0, psi, 0.0);
+        const SeatContact c2 = seat_contact(w, x2, y2, 0.0, 0.0, psi, 0.0);
+        const double g1 = c1.active ? c1.penetration : 0.0, g2 = c2.active ? c2.penetration : 0.0;
+        // both clamped at 0 outside contact: |max(0, g)| is 1-Lipschitz as g is
+        EXPECT_LE(std::abs(g2 - g1), step * (1.0 + 1e-9) + 1e-15)
+            << "z " << z << " surfaces " << c1.surface << " " << c2.surface;
+        if (c1.active) ++surfaces[c1.surface];
+        // clear of the wheel beyond the tip circle's offset
+        if (rho > w.tip_radius + w.roller_radius) {
+          EXPECT_FALSE(c1.active);
+        }
+      }
+      EXPECT_GT(surfaces[1], 100) << "z " << z;  // flank
+      EXPECT_GT(surfaces[2], 100) << "z " << z;  // corner
+      if (z >= 9) {                              // the tip's arc (z = 6: an apex)
+        EXPECT_GT(surfaces[3], 100) << "z " << z;
+      }
+    }
+  }
+}
+
+// Where the contact is on the tip: its normal points from the roller to the wheel's centre side
+// (the force −f n pushes the roller out), the corner K = q + (r − g) n lies on the tip circle
+// (or on the tooth's centre line at an apex) and on the flank's line, and the depth along n is
+// the penetration's gradient (g(q + s n) = g + s).
+TEST(DynamicsSprocket, TipCornerAndArcGeometry) {
+  std::mt19937 rng(22);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int z : {6, 9, 12, 17, 25}) {
+    for (const bool straight : {false, true}) {
+      Sprocket w = wheel(z);
+      if (straight) w.flank_radius = 0.0;  // the straight flank with the tip
+      const double tau = 2.0 * kPi / z;
+      int corners = 0, tips = 0;
+      for (int trial = 0; trial < 4000; ++trial) {
+        const double psi = 6.0 * u(rng);
+        const double rho =
+            w.pitch_radius + (w.tip_radius - w.pitch_radius + w.roller_radius) * u(rng);
+        const double a = 2.0 * kPi * u(rng);
+        const double x = w.centre_x + rho * std::cos(a), y = w.centre_y + rho * std::sin(a);
+        const SeatContact c = seat_contact(w, x, y, 0.0, 0.0, psi, 0.0);
+        if (!c.active || c.surface < 2) continue;
+        const double kx = x + (w.roller_radius - c.penetration) * c.nx;
+        const double ky = y + (w.roller_radius - c.penetration) * c.ny;
+        const double ox = kx - w.centre_x, oy = ky - w.centre_y;
+        const double off = std::remainder(std::atan2(oy, ox) - psi, tau);  // from the seat radial
+        if (c.surface == 3) {
+          ++tips;
+          EXPECT_NEAR(std::hypot(ox, oy), w.tip_radius, 1e-12);
+          EXPECT_NEAR(c.curvature, -1.0 / std::hypot(x - w.centre_x, y - w.centre_y), 1e-9);
+        } else {
+          ++corners;
+          const bool on_tip = std::abs(std::hypot(ox, oy) - w.tip_radius) < 1e-12;
+          const bool on_centre_line = std::abs(std::abs(off) - 0.5 * tau) < 1e-9;
+          EXPECT_TRUE(on_tip || on_centre_line) << "z " << z << " off " << off;
+          // K is the flank's end: on the flank (m the normal at the seating arc's end)
+          const double sigma = psi + c.seat * tau;
+          const double cx = w.centre_x + w.pitch_radius * std::cos(sigma);
+          const double cy = w.centre_y + w.pitch_radius * std::sin(sigma);
+          const double side = off > 0.0 ? 1.0 : -1.0, half = 0.5 * w.seating_angle;
+          const double mx =
+              -std::cos(sigma) * std::cos(half) - std::sin(sigma) * side * std::sin(half);
+          const double my =
+              -std::sin(sigma) * std::cos(half) + std::cos(sigma) * side * std::sin(half);
+          if (w.flank_radius > 0.0) {  // on the ISO flank's circle about F = C + (ri + re) m
+            const double fx = cx + (w.seat_radius + w.flank_radius) * mx;
+            const double fy = cy + (w.seat_radius + w.flank_radius) * my;
+            EXPECT_NEAR(std::hypot(kx - fx, ky - fy), w.flank_radius, 1e-12) << "z " << z;
+          } else {  // on the straight flank
+            EXPECT_NEAR((kx - cx) * mx + (ky - cy) * my, w.seat_radius, 1e-12) << "z " << z;
+          }
+        }
+        for (const double s : {-3e-7, 2e-7}) {
+          const SeatContact d = seat_contact(w, x + s * c.nx, y + s * c.ny, 0.0, 0.0, psi, 0.0);
+          if (d.active && d.surface == c.surface) {
+            EXPECT_NEAR(d.penetration, c.penetration + s, 1e-12);
+          }
+        }
+      }
+      EXPECT_GT(corners, 20) << "z " << z;
+      if (z >= 9) {
+        EXPECT_GT(tips, 20) << "z " << z;
+      }
+    }
+  }
+}
+
+// The form without a tip (tip_radius 0) keeps its reach R + r and flanks that run on to it.
+TEST(DynamicsSprocket, WithoutATipTheFlanksRunToTheReach) {
+  Sprocket w = wheel(12);
+  w.tip_radius = 0.0;
+  EXPECT_DOUBLE_EQ(contact_reach(w), w.pitch_radius + w.roller_radius);
+  Sprocket t = wheel(12);
+  EXPECT_DOUBLE_EQ(contact_reach(t), t.tip_radius + t.roller_radius);
+  // just inside the reach, a tooth's width off the seat: the flank's finite penetration at once
+  const double rho = w.pitch_radius + w.roller_radius - 1e-9, a = 0.3 + 0.45 * 2.0 * kPi / 12;
+  const SeatContact c = seat_contact(w, w.centre_x + rho * std::cos(a),
+                                     w.centre_y + rho * std::sin(a), 0.0, 0.0, 0.3, 0.0);
+  ASSERT_TRUE(c.active);
+  EXPECT_GT(c.penetration, 1e-3);
+  EXPECT_EQ(c.surface, 1);
+  // with the tip the same roller meets the tooth's top continuously
+  const SeatContact d = seat_contact(t, t.centre_x + rho * std::cos(a),
+                                     t.centre_y + rho * std::sin(a), 0.0, 0.0, 0.3, 0.0);
+  const double rho2 = rho + 1e-6;
+  const SeatContact e = seat_contact(t, t.centre_x + rho2 * std::cos(a),
+                                     t.centre_y + rho2 * std::sin(a), 0.0, 0.0, 0.3, 0.0);
+  EXPECT_LE(std::abs((d.active ? d.penetration : 0.0) - (e.active ? e.penetration : 0.0)),
+            1.0000001e-6);
+}
+
+TEST(DynamicsSprocket, TipRadiusIsValidated) {
+  Model m = uniform_chain(4, false, 0.01905, 0.02, 1e7, 0.0, true);
+  m.sprockets.push_back(wheel(12));
+  const std::size_t base = validate(m).size();  // whatever else the bare model lacks
+  auto names_tip = [&] {
+    for (const Issue& i : validate(m)) {
+      if (i.field == "sprocket[0].tip_radius") return true;
+    }
+    return false;
+  };
+  EXPECT_FALSE(names_tip());
+  for (const double bad :
+       {0.5 * m.sprockets[0].pitch_radius, -1e-3, double(NAN), double(INFINITY)}) {
+    m.sprockets[0].tip_radius = bad;
+    EXPECT_TRUE(names_tip()) << bad;
+    EXPECT_EQ(validate(m).size(), base + 1) << bad;
+  }
+  m.sprockets[0].tip_radius = 0.0;
+  EXPECT_FALSE(names_tip());
+}
+
 }  // namespace
 }  // namespace catena::dynamics

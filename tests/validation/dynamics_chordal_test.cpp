@@ -190,8 +190,7 @@ TEST(DynamicsChordal, FrictionlessSeatsShareTheSpanTension) {
     for (int k = m + 1; k + 1 < m + wrap && tension[k + 1] > 0.005 * d.force; ++k) {
       const SeatContact c =
           seat_contact(w, s.x[k + 1], s.y[k + 1], s.vx[k + 1], s.vy[k + 1], s.angle[0], 0.0);
-      EXPECT_TRUE(c.active && c.curvature == 0.0)
-          << "z " << z << " roller " << k + 1 << " on a flank";
+      EXPECT_TRUE(c.active && c.surface == 1) << "z " << z << " roller " << k + 1 << " on a flank";
       EXPECT_NEAR(tension[k + 1] / tension[k] / ratio, 1.0, kTol)
           << "z " << z << " link " << k << ": " << tension[k] << " -> " << tension[k + 1]
           << ", ratio " << ratio;
@@ -255,22 +254,25 @@ double simulated_variation(const Result& r, int bins) {
 // one link only) and the tail whips round: at 0.1 m/s the frictionless runs of z = 17 and 25
 // failed within 0.2–0.3 s. μ = 0.3 was chosen after μ = 0.1 failed at z = 25 (a Newton failure
 // at 0.83 s after the tail had started to whip); at z = 17 μ = 0.1 and 0.3 give the same
-// variation to 0.03 %. Not reproduced: z = 9 (erratic on every seat and μ tried), z = 12 (a
-// step does not converge at 0.36 s: a roller entering the contact's reach with a finite
-// penetration, see "Newton failures" in the doc).
+// variation to 0.03 %; with the tooth tip (ISO arc flanks to the tip circle) the same to 1e-3.
+// z = 12 and 9 run through since the tip, but are not within 2 %: pinned below.
+Chordal quasi_static(int z) {
+  Chordal d;
+  d.teeth = z;
+  d.clearance = true;
+  d.seat_friction = 0.3;
+  d.chain_speed = 0.1;
+  const int wrap = z / 2;
+  d.duration = d.settle + (z - wrap - 2) * d.pitch / d.chain_speed;
+  const double radius = 0.5 * d.pitch / std::sin(kPi / z);
+  d.span_from = radius + d.pitch;  // the span's nodes clear of the wheel
+  return d;
+}
+
 TEST(DynamicsChordal, PolygonalActionOnSeatsWithFriction) {
   constexpr double kTol = 0.02;
   for (int z : {17, 25}) {
-    Chordal d;
-    d.teeth = z;
-    d.clearance = true;
-    d.seat_friction = 0.3;
-    d.chain_speed = 0.1;
-    const int wrap = z / 2;
-    d.duration = d.settle + (z - wrap - 2) * d.pitch / d.chain_speed;
-    const double radius = 0.5 * d.pitch / std::sin(kPi / z);
-    d.span_from = radius + d.pitch;  // the span's nodes clear of the wheel
-    const Result r = run(d, 40);
+    const Result r = run(quasi_static(z), 40);
     ASSERT_TRUE(r.converged) << "z " << z;
     for (int bins : {20, 40, 80}) {
       const double sim = simulated_variation(r, bins), kin = binned_variation(z, bins);
@@ -280,6 +282,36 @@ TEST(DynamicsChordal, PolygonalActionOnSeatsWithFriction) {
           << "z " << z << ", " << bins << " bins: " << sim << " against " << kin
           << " (1 - cos(pi/z) = " << 1 - std::cos(kPi / z) << ")";
     }
+  }
+}
+
+// Validation (1) at z = 12 and 9, the same set-up and method as at z = 17 and 25 — pinned as it
+// stands, not passed (docs/models/dynamics.md, "Polygonal action"). With the tooth tip the runs
+// go through (before it z = 12 stopped at 0.36 s on a step that did not converge, the roller
+// entering the reach with a finite penetration; z = 9 was erratic, 10–25 times the variation).
+// Measured, span's variation over the binned kinematics at 20, 40, 80 bins: z = 12 1.0085,
+// 1.0242, 1.0243 (2.4 % over at 40 and 80 bins: outside the 2 % of z = 17 and 25); z = 9 1.690,
+// 1.828, 1.820 (the roller ratio per seat, 0.12 on a frictionless flank at z = 9, leaves the span
+// on about one roller and its transfers are sudden). The bands pin those numbers: a change of the
+// model that moves them shows here.
+TEST(DynamicsChordal, PolygonalActionAtTwelveAndNineTeethIsPinned) {
+  struct Band {
+    int z;
+    double lo, hi;
+  };
+  for (const Band b : {Band{12, 1.0, 1.035}, Band{9, 1.6, 1.9}}) {
+    const Result r = run(quasi_static(b.z), 40);
+    ASSERT_TRUE(r.converged) << "z " << b.z;
+    double worst = 0.0;
+    for (int bins : {20, 40, 80}) {
+      const double ratio = simulated_variation(r, bins) / binned_variation(b.z, bins);
+      std::printf("z %d, %d bins: ratio %.4f\n", b.z, bins, ratio);
+      EXPECT_GT(ratio, b.lo) << "z " << b.z << ", " << bins << " bins";
+      EXPECT_LT(ratio, b.hi) << "z " << b.z << ", " << bins << " bins";
+      worst = std::max(worst, std::abs(ratio - 1.0));
+    }
+    // not yet the validation's 2 %: if this fails, z = b.z passes — move it to the test above
+    EXPECT_GT(worst, 0.02) << "z " << b.z << " now within 2 % at every bin count";
   }
 }
 

@@ -21,13 +21,23 @@ namespace catena::dynamics {
 /// unilateral linear penalty with damping. A driver turns at a prescribed speed; a driven wheel
 /// has inertia and a constant load torque against counter-clockwise rotation.
 struct Sprocket {
-  double centre_x = 0.0;           ///< [m]
-  double centre_y = 0.0;           ///< [m]
-  int teeth = 0;                   ///< z
-  double pitch_radius = 0.0;       ///< [m] R = p / (2 sin(π/z))
-  double seat_radius = 0.0;        ///< [m] ri, the seating arc's radius (≥ roller radius)
-  double roller_radius = 0.0;      ///< [m] d1/2
-  double seating_angle = 0.0;      ///< [rad] α, the seating arc's extent; flanks beyond it
+  double centre_x = 0.0;       ///< [m]
+  double centre_y = 0.0;       ///< [m]
+  int teeth = 0;               ///< z
+  double pitch_radius = 0.0;   ///< [m] R = p / (2 sin(π/z))
+  double seat_radius = 0.0;    ///< [m] ri, the seating arc's radius (≥ roller radius)
+  double roller_radius = 0.0;  ///< [m] d1/2
+  double seating_angle = 0.0;  ///< [rad] α, the seating arc's extent; flanks beyond it
+  /// [m] Ra, the tooth tip: each tooth is bounded by its two straight flanks and the tip circle
+  /// of radius Ra about the centre (or, where the flanks meet below it, by their apex), and a
+  /// roller meets the tip's arc and the flank/tip corner as a disc (docs/models/dynamics.md,
+  /// "Tooth tip"). 0: no tip — the flanks run on to the reach R + r (the form before the tip,
+  /// whose reach cuts the flanks with a jump of the force); iso606_sprocket sets the ISO tip.
+  double tip_radius = 0.0;
+  /// [m] re, the flank: the ISO arc of this radius tangent to the seating arc at its end, convex
+  /// (centred on the tooth's side at ri + re from the seat centre); 0: the straight line tangent
+  /// there (the form before the tip). iso606_sprocket sets the minimum gap's re,max.
+  double flank_radius = 0.0;
   double contact_stiffness = 0.0;  ///< [N/m] k_c, the penalty on the roller's penetration
   double contact_damping = 0.0;    ///< [N·s/m] c_c, on the penetration rate (never pulls)
   /// [m] ε: the force rises as k_c g²/2ε over the first ε of penetration, then k_c (g − ε/2),
@@ -248,7 +258,12 @@ struct SeatContact {
   /// [W] the power of the force's damping part on roller and wheel together, −(f − f_el) ġ ≤ 0
   /// (ġ the rate at the contact point relative to the wheel): the contact damper's dissipation
   double damping_power = 0.0;
-  double curvature = 0.0;  ///< [1/m] of the surface met: 1/|q − C| on the seating arc, 0 on a flank
+  /// [1/m] ∂n/∂q = κ t tᵀ (t = (−n_y, n_x)): 1/|q − C| on the seating arc, 0 on a flank,
+  /// −1/|q − O| on the tip's arc and −1/|q − K| at a tooth's corner K (convex: negative)
+  double curvature = 0.0;
+  /// where the roller touches: 0 the seating arc, 1 a flank, 2 a tooth's corner (the flank/tip
+  /// junction, or the flanks' apex), 3 the tip's arc
+  int surface = 0;
   double nx = 0.0, ny = 0.0;          ///< unit vector from the seat centre to the roller
   double torque = 0.0;                ///< [N·m] on the wheel, counter-clockwise positive
   double seat_x = 0.0, seat_y = 0.0;  ///< [m] the seat centre
@@ -282,7 +297,8 @@ inline SeatContact wheel_contact(const Sprocket& w, double x, double y, double v
                   : seat_contact(w, x, y, vx, vy, angle, speed);
 }
 inline double contact_reach(const Sprocket& w) {
-  return w.pitch_radius + (w.pocket ? 0.5 * w.pocket_clearance : w.roller_radius);
+  if (w.pocket) return w.pitch_radius + 0.5 * w.pocket_clearance;
+  return (w.tip_radius > 0.0 ? w.tip_radius : w.pitch_radius) + w.roller_radius;
 }
 
 /// The friction of one roller's seat contact (docs/models/dynamics.md, "Seat friction"): with

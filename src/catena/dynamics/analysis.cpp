@@ -171,7 +171,10 @@ std::vector<Parameter> sprocket_fields() {
           number("takeup_damping", "idler: the slide's damper [N s/m], in [0, 1e6] (default 0)"),
           number("takeup_mass",
                  "idler: the sliding mass [kg], in (0, 1000] (default 2 J / R^2, the idler as a "
-                 "disc of its pitch radius)")};
+                 "disc of its pitch radius)"),
+          number("seat_friction",
+                 "Coulomb mu of this wheel's roller-seat contact in [0, 1] (default: "
+                 "dynamics.seat_friction)")};
 }
 
 const Parameter& table_parameter() {
@@ -222,6 +225,7 @@ struct SprocketInput {
   std::optional<double> teeth, speed, inertia, load_torque, centre_x, centre_y;
   std::optional<double> takeup_force, takeup_direction, takeup_stiffness, takeup_damping,
       takeup_mass;
+  std::optional<double> seat_friction;  // this wheel's μ, overriding dynamics.seat_friction
   std::string role;
   bool has_role = false;
   std::map<std::string, int> seen;  // every key given (read or not) → its line
@@ -257,6 +261,8 @@ struct Setup {
   bool pocket = false;
   double wire = NAN, clearance = NAN;
   double pocket_radius = NAN, pocket_angle = NAN;  // R and δ1 of seed 003
+  // per sprocket (in the input's order, the model's): its own μ, NaN = seat_friction
+  std::vector<double> wheel_friction;
   double duration = NAN, step = NAN, interval = NAN, theta = 0.6;
   int teeth = 0;
   std::size_t driver = 0, driven = 1;
@@ -664,7 +670,7 @@ Setup parse(const analysis::Inputs& in) {
         issues.push_back({where(v), v.text,
                           "a key of a sprocket: teeth, role, speed, inertia, load_torque, "
                           "centre_x, centre_y, takeup_force, takeup_direction, "
-                          "takeup_stiffness, takeup_damping, takeup_mass"});
+                          "takeup_stiffness, takeup_damping, takeup_mass, seat_friction"});
         continue;
       }
       w.seen[key] = v.line;
@@ -688,6 +694,7 @@ Setup parse(const analysis::Inputs& in) {
       if (key == "takeup_stiffness") w.takeup_stiffness = *x;
       if (key == "takeup_damping") w.takeup_damping = *x;
       if (key == "takeup_mass") w.takeup_mass = *x;
+      if (key == "seat_friction") w.seat_friction = *x;
       continue;
     }
     const std::string key = v.path.substr(9);
@@ -883,6 +890,12 @@ Setup parse(const analysis::Inputs& in) {
                           "no centres with wheel = \"pocket\" (two equal pocket wheels on a "
                           "line; the free layout of pocket wheels is not built)"});
     }
+    const auto mu = wheels[i].seen.find("seat_friction");
+    if (mu != wheels[i].seen.end() && wheels[i].seat_friction && *wheels[i].seat_friction != 0.0)
+      issues.push_back({"dynamics.sprocket[" + std::to_string(i) + "].seat_friction (line " +
+                            std::to_string(mu->second) + ")",
+                        shown(*wheels[i].seat_friction),
+                        "0 with wheel = \"pocket\" (friction in the pockets is not built)"});
   }
   const double links = layout ? optional("links", NAN)
                               : required("links", "the number of links in the loop, an integer");
@@ -924,6 +937,21 @@ Setup parse(const analysis::Inputs& in) {
     issues.push_back({at("theta"), shown(s.theta), "in [0.5, 1]"});
   if (!std::isnan(s.seat_friction) && !(s.seat_friction >= 0.0 && s.seat_friction <= 1.0))
     issues.push_back({at("seat_friction"), shown(s.seat_friction), "in [0, 1]"});
+  s.wheel_friction.assign(wheels.size(), NAN);
+  for (std::size_t i = 0; i < wheels.size(); ++i) {
+    const SprocketInput& w = wheels[i];
+    if (!w.seat_friction) continue;
+    if (*w.seat_friction >= 0.0 && *w.seat_friction <= 1.0) {
+      s.wheel_friction[i] = *w.seat_friction;
+      continue;
+    }
+    const auto it = w.seen.find("seat_friction");
+    const int l = it == w.seen.end() ? w.line : it->second;
+    issues.push_back({"dynamics.sprocket[" + std::to_string(i) + "].seat_friction" +
+                          (l ? " (line " + std::to_string(l) + ")" : ""),
+                      shown(*w.seat_friction),
+                      "in [0, 1] (this wheel's, overriding dynamics.seat_friction)"});
+  }
   if (!std::isnan(s.pretension) && !std::isnan(s.stiffness) && s.stiffness > 0 &&
       !std::isnan(s.pitch) && s.pretension / s.stiffness >= 0.1 * s.pitch)
     issues.push_back({at("pretension"), shown(s.pretension),
@@ -1315,6 +1343,24 @@ std::string role_of(const Setup& d, std::size_t w) {
   return w == d.driver ? "driver" : "driven";
 }
 
+// Sprocket w's seat friction: its own `seat_friction`, or the [dynamics] one.
+double wheel_mu(const Setup& d, std::size_t w) {
+  return w < d.wheel_friction.size() && !std::isnan(d.wheel_friction[w]) ? d.wheel_friction[w]
+                                                                         : d.seat_friction;
+}
+// Some sprocket given its own seat_friction.
+bool per_wheel_friction(const Setup& d) {
+  for (const double mu : d.wheel_friction)
+    if (!std::isnan(mu)) return true;
+  return false;
+}
+// Some wheel with seat friction: the outputs then carry its work.
+bool any_seat_friction(const Setup& d) {
+  for (std::size_t w = 0; w < d.wheel_friction.size(); ++w)
+    if (wheel_mu(d, w) > 0.0) return true;
+  return d.seat_friction > 0.0;
+}
+
 // The free layout's wheels at their centres, and the loop's start on the belt path: every node
 // at the driver's pitch-line speed, each wheel at that speed over its pitch radius (the driver at
 // exactly its own).
@@ -1323,7 +1369,7 @@ std::vector<Sprocket> layout_sprockets(const Setup& d) {
   for (const LayoutWheel& w : d.wheels) {
     Sprocket s = iso606_sprocket(d.pitch, d.roller, d.width, w.teeth, w.x, w.y, d.contact_stiffness,
                                  d.contact_damping);
-    s.friction = d.seat_friction;
+    s.friction = wheel_mu(d, wheels.size());
     if (w.role == "driver") {
       s.driver = true;
       s.speed = w.speed;
@@ -1469,7 +1515,7 @@ Result run(const analysis::Inputs& in) {
                                          d.clearance, d.contact_stiffness, d.contact_damping)
                           : iso606_sprocket(d.pitch, d.roller, d.width, z, w == 0 ? 0.0 : centre,
                                             0.0, d.contact_stiffness, d.contact_damping);
-    s.friction = d.seat_friction;
+    s.friction = wheel_mu(d, w);
     if (w == d.driver) {
       s.driver = true;
       s.speed = d.speed;
@@ -1712,20 +1758,20 @@ Record describe(const Result& r, const analysis::Inputs&) {
   j["time"] = r.time;
   Value wheels = Value::array();
   for (std::size_t w = 0; w < r.sprocket.size(); ++w) {
-    if (d.layout()) {
-      wheels.push_back(Value::object({{"role", d.wheels[w].role},
-                                      {"teeth", d.wheels[w].teeth},
-                                      {"centre_x", d.wheels[w].x},
-                                      {"centre_y", d.wheels[w].y},
-                                      {"angle", r.sprocket[w].angle},
-                                      {"speed", r.sprocket[w].speed},
-                                      {"torque", r.sprocket[w].torque}}));
-      continue;
-    }
-    wheels.push_back(Value::object({{"role", w == d.driver ? "driver" : "driven"},
-                                    {"angle", r.sprocket[w].angle},
-                                    {"speed", r.sprocket[w].speed},
-                                    {"torque", r.sprocket[w].torque}}));
+    Value wheel = d.layout() ? Value::object({{"role", d.wheels[w].role},
+                                              {"teeth", d.wheels[w].teeth},
+                                              {"centre_x", d.wheels[w].x},
+                                              {"centre_y", d.wheels[w].y},
+                                              {"angle", r.sprocket[w].angle},
+                                              {"speed", r.sprocket[w].speed},
+                                              {"torque", r.sprocket[w].torque}})
+                             : Value::object({{"role", w == d.driver ? "driver" : "driven"},
+                                              {"angle", r.sprocket[w].angle},
+                                              {"speed", r.sprocket[w].speed},
+                                              {"torque", r.sprocket[w].torque}});
+    // a wheel's own seat friction, only when some wheel was given one
+    if (per_wheel_friction(d)) wheel["seat_friction"] = wheel_mu(d, w);
+    wheels.push_back(std::move(wheel));
   }
   j["sprocket"] = wheels;
   // the driver turns counter-clockwise: the driver at x = 0 pulls the upper span
@@ -1770,8 +1816,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["guides"] = static_cast<int>(d.guides.size());
     j["summary"]["friction_work"] = r.friction_work;
   }
-  // seat friction likewise (opt-in: seat_friction > 0)
-  if (d.seat_friction > 0.0) {
+  // seat friction likewise (opt-in: seat_friction > 0 on some wheel)
+  if (any_seat_friction(d)) {
     j["seat_friction"] = d.seat_friction;
     j["summary"]["seat_friction_work"] = r.seat_friction_work;
   }
@@ -1790,7 +1836,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                                   {"link_dampers", r.damper_work},
                                                   {"contact_dampers", r.contact_damping_work},
                                                   {"numerical", r.numerical_work}});
-    if (d.seat_friction > 0.0) j["summary"]["work_balance"]["seat_friction"] = r.seat_friction_work;
+    if (any_seat_friction(d)) j["summary"]["work_balance"]["seat_friction"] = r.seat_friction_work;
     if (hinge_on) j["summary"]["work_balance"]["hinge_friction"] = r.hinge_work;
     if (!r.takeup.empty()) j["summary"]["work_balance"]["takeup_dampers"] = r.takeup_damper_work;
   }
@@ -1906,7 +1952,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["units"]["contact_load"] = "N";
   }
   if (!d.guides.empty()) j["units"]["friction_work"] = "J";
-  if (d.seat_friction > 0.0) j["units"]["seat_friction_work"] = "J";
+  if (any_seat_friction(d)) j["units"]["seat_friction_work"] = "J";
   if (d.work_balance) j["units"]["work_balance"] = "J";
   if (!r.takeup.empty()) {
     j["units"]["direction"] = "rad";
@@ -2020,9 +2066,17 @@ Record describe(const Result& r, const analysis::Inputs&) {
       << format_g(r.friction_work, 5) << " J, link dampers " << format_g(r.damper_work, 5)
       << " J, contact dampers " << format_g(r.contact_damping_work, 5) << " J, numerical "
       << format_g(r.numerical_work, 4) << " J\n";
-  if (d.seat_friction > 0.0)
-    t << "  seat friction " << format_g(d.seat_friction, 4) << ", its work "
-      << format_g(r.seat_friction_work, 5) << " J\n";
+  if (any_seat_friction(d)) {
+    t << "  seat friction ";
+    if (per_wheel_friction(d)) {
+      t << "per wheel";
+      for (std::size_t w = 0; w < d.wheel_friction.size(); ++w)
+        t << " " << format_g(wheel_mu(d, w), 4);
+    } else {
+      t << format_g(d.seat_friction, 4);
+    }
+    t << ", its work " << format_g(r.seat_friction_work, 5) << " J\n";
+  }
   if (hinge_on)
     t << "  hinges " << d.hinge << ": friction arm " << format_g(d.hinge_law.arm * 1e3, 4)
       << " mm, rate band " << format_g(d.hinge_law.rate_band, 3) << " rad/s, friction work "

@@ -109,6 +109,15 @@ std::vector<Issue> validate(const Model& model) {
         out.push_back({f + "seating_angle", check::format_si(s.seating_angle, "rad"),
                        "an angle in (0, pi) rad"});
       }
+      if (!std::isfinite(s.flank_radius) || !(s.flank_radius >= 0.0)) {
+        out.push_back({f + "flank_radius", check::format_si(s.flank_radius, "m"),
+                       "0 (straight flanks) or a finite value > 0"});
+      }
+      if (!std::isfinite(s.tip_radius) || !(s.tip_radius == 0.0 || s.tip_radius > s.pitch_radius)) {
+        out.push_back({f + "tip_radius", check::format_si(s.tip_radius, "m"),
+                       "0 (no tip) or a finite value > the pitch radius " +
+                           check::format_si(s.pitch_radius, "m")});
+      }
       check::finite_positive(out, (f + "contact_stiffness").c_str(), s.contact_stiffness, "N/m");
       if (!std::isfinite(s.contact_smoothing) || !(s.contact_smoothing > 0.0) ||
           !(s.contact_smoothing <= s.roller_radius)) {
@@ -302,6 +311,8 @@ Sprocket iso606_sprocket(double pitch, double roller_diameter, double inner_widt
   s.pitch_radius = 0.5 * iso.pitch_diameter;
   s.seat_radius = iso.min_gap.seating_radius;
   s.seating_angle = iso.min_gap.seating_angle;
+  s.tip_radius = 0.5 * iso.tip_diameter_max;
+  s.flank_radius = iso.min_gap.flank_radius;
   s.roller_radius = 0.5 * roller_diameter;
   s.contact_stiffness = contact_stiffness;
   s.contact_damping = contact_damping;
@@ -378,7 +389,7 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
                          double speed) {
   SeatContact c;
   const double rx = x - w.centre_x, ry = y - w.centre_y;
-  const double reach = w.pitch_radius + w.roller_radius;
+  const double reach = contact_reach(w);
   if (rx * rx + ry * ry > reach * reach) return c;  // clear of the wheel
   // The nearest seat from the roller's angle about the centre: O(1), no search.
   const double tau = 2.0 * std::numbers::pi / w.teeth;
@@ -396,24 +407,166 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
   const double e_in = -(ex * cs + ey * sn), e_t = -ex * sn + ey * cs;
   const double half = 0.5 * w.seating_angle;
   const double ch = std::cos(half), sh_abs = std::sin(half);
+  const double r = w.roller_radius, ri = w.seat_radius;
   double g = 0.0;
   // |γ| ≤ α/2 with γ = atan2(e_t, e_in) and α/2 < π/2, without the atan2: e lies within α/2 of
   // the inward radial iff |e_t| cos(α/2) ≤ e_in sin(α/2) with e_in ≥ 0 (γ = 0 at e = 0).
   if (e_in >= 0.0 && std::abs(e_t) * ch <= e_in * sh_abs) {
     const double dist = std::sqrt(ex * ex + ey * ey);
     if (!(dist > 0.0)) return c;
-    g = dist + w.roller_radius - w.seat_radius;
+    g = dist + r - ri;
     c.nx = ex / dist;
     c.ny = ey / dist;
     c.curvature = 1.0 / dist;
+    c.surface = 0;
   } else {
-    // the flank's normal m at the arc's end: the inward radial turned by ±α/2 towards t
+    // The tooth on the roller's side (side = ±1 towards ±t). In the seat's frame mirrored to
+    // side +1 — coordinates a along the inward radial, b = side·e_t — the flank leaves the arc's
+    // end J = ri m, m = (cos α/2, sin α/2) (into the tooth); the wheel's centre O is at (R, 0).
+    // The flank is the ISO arc of radius re, convex, centred at F = (ri + re) m (the tooth lies
+    // inside that circle), or with re = 0 the straight line tangent to the arc at J.
     const double side = e_t > 0.0 ? 1.0 : -1.0;
-    const double sh = side * sh_abs;
-    c.nx = -cs * ch - sn * sh;
-    c.ny = -sn * ch + cs * sh;
-    g = ex * c.nx + ey * c.ny + w.roller_radius - w.seat_radius;
-    c.curvature = 0.0;
+    const double a = e_in, b = side * e_t;
+    // a vector (va, vb) of the mirrored frame in world axes: va (−cos σ, −sin σ) +
+    // side vb (−sin σ, cos σ)
+    auto world = [&](double va, double vb, double& wx, double& wy) {
+      wx = -cs * va - side * sn * vb;
+      wy = -sn * va + side * cs * vb;
+    };
+    const double R = w.pitch_radius, Ra = w.tip_radius, re = w.flank_radius;
+    const double fa = (ri + re) * ch, fb = (ri + re) * sh_abs;  // F (re > 0)
+    // depth of q inside the flank's surface (> 0 inside the tooth)
+    double depth_flank = 0.0, fdist = 0.0;
+    if (re > 0.0) {
+      fdist = std::hypot(a - fa, b - fb);
+      depth_flank = re - fdist;
+    } else {
+      depth_flank = a * ch + b * sh_abs - ri;  // (q − C)·m − ri
+    }
+    // The flank ends at the tooth's corner K: where it meets the tip circle |K − O| = Ra, or,
+    // if the tooth's two flanks meet below the tip circle, at their apex A on the tooth's centre
+    // line (at τ/2 from the seat's radial, direction (−cos τ/2, sin τ/2) from O).
+    bool has_corner = false, tip_arc = false;
+    double ka = 0.0, kb = 0.0;
+    if (Ra > 0.0) {
+      const double th2 = 0.5 * tau, da = -std::cos(th2), db = std::sin(th2);
+      if (re > 0.0) {
+        // apex: |O + μ d − F| = re, the outer root
+        const double wa = R - fa, wb = -fb;
+        const double wd = wa * da + wb * db;
+        const double disc = wd * wd - (wa * wa + wb * wb) + re * re;
+        if (disc >= 0.0) {
+          const double mu = -wd + std::sqrt(disc);
+          if (mu > 0.0 && mu <= Ra) {
+            ka = R + mu * da;
+            kb = mu * db;
+            has_corner = true;
+          }
+        }
+        if (!has_corner) {
+          // the flank circle's crossings of the tip circle; K the first from J along the flank
+          // (clockwise about F in (a, b))
+          const double ua = fa - R, ub = fb, dd = std::hypot(ua, ub);
+          const double x0 = (Ra * Ra - re * re + dd * dd) / (2.0 * dd);
+          const double h2 = Ra * Ra - x0 * x0;
+          if (h2 >= 0.0 && dd > 0.0) {
+            const double hh = std::sqrt(h2);
+            double best = INFINITY;
+            for (const double sgn : {-1.0, 1.0}) {
+              const double pa = R + (x0 * ua - sgn * hh * ub) / dd;
+              const double pb = (x0 * ub + sgn * hh * ua) / dd;
+              // angle about F from J (direction −m) clockwise
+              const double ja = -ch, jb = -sh_abs, qa = pa - fa, qb = pb - fb;
+              double phi = std::atan2(-(ja * qb - jb * qa), ja * qa + jb * qb);
+              if (phi < 0.0) phi += 2.0 * std::numbers::pi;
+              if (phi < best) {
+                best = phi;
+                ka = pa;
+                kb = pb;
+              }
+            }
+            has_corner = tip_arc = true;
+          }
+        }
+      } else {
+        // straight flank J + λ u, u = (−sin α/2, cos α/2): |J + λ u − O| = Ra gives
+        // λ² + 2 R sin(α/2) λ + R² + ri² − 2 R ri cos(α/2) − Ra² = 0; the apex
+        // λ_A = (R sin(τ/2) − ri sin(α/2 + τ/2)) / cos(α/2 + τ/2)
+        double lk = 0.0;
+        const double cq = R * R + ri * ri - 2.0 * R * ri * ch - Ra * Ra;
+        const double disc = R * R * sh_abs * sh_abs - cq;
+        if (disc >= 0.0) {
+          lk = -R * sh_abs + std::sqrt(disc);
+          has_corner = tip_arc = lk > 0.0;
+        }
+        const double cos_apex = std::cos(half + th2);
+        if (cos_apex > 0.0) {
+          const double la = (R * std::sin(th2) - ri * std::sin(half + th2)) / cos_apex;
+          if (la > 0.0 && (!has_corner || la <= lk)) {
+            lk = la;
+            has_corner = true;
+            tip_arc = false;
+          }
+        }
+        ka = ri * ch - lk * sh_abs;
+        kb = ri * sh_abs + lk * ch;
+      }
+    }
+    // q beyond K along the flank: for the arc, turned clockwise about F past K; for the line,
+    // past K along u
+    bool past_k = false;
+    if (has_corner) {
+      if (re > 0.0) {
+        past_k = (ka - fa) * (b - fb) - (kb - fb) * (a - fa) < 0.0;
+      } else {
+        past_k = (a - ka) * -sh_abs + (b - kb) * ch > 0.0;
+      }
+    }
+    // q − O in (a, b), its distance from the centre
+    const double oa = a - R, ob = b;
+    const double rho = std::sqrt(oa * oa + ob * ob);
+    const double depth_tip = Ra - rho;  // > 0 inside the tip circle
+    // Beyond K's radial towards the tooth's centre line: (K − O) × (q − O) ≤ 0 in (a, b).
+    const bool beyond_k = (ka - R) * ob - kb * oa <= 0.0;
+    enum { kFlank, kCorner, kTip } where = kFlank;
+    if (has_corner) {
+      if (depth_flank >= 0.0 && (!tip_arc || depth_tip >= 0.0)) {
+        // inside the tooth (a roller centre past its surface): the nearer of flank and tip
+        where = tip_arc && depth_tip < depth_flank ? kTip : kFlank;
+      } else if (depth_flank < 0.0 && !past_k) {
+        where = kFlank;
+      } else if (tip_arc && depth_tip < 0.0 && beyond_k) {
+        where = kTip;
+      } else {
+        where = kCorner;
+      }
+    }
+    if (where == kFlank && re > 0.0) {
+      if (!(fdist > 0.0)) return c;
+      world((fa - a) / fdist, (fb - b) / fdist, c.nx, c.ny);  // n = (F − q)/|F − q|
+      g = r + depth_flank;
+      c.curvature = -1.0 / fdist;
+      c.surface = 1;
+    } else if (where == kFlank) {
+      world(ch, sh_abs, c.nx, c.ny);
+      g = ex * c.nx + ey * c.ny + r - ri;  // depth_flank + r, as the form without a tip wrote it
+      c.curvature = 0.0;
+      c.surface = 1;
+    } else if (where == kTip) {
+      if (!(rho > 0.0)) return c;
+      world(-oa / rho, -ob / rho, c.nx, c.ny);  // n = −(q − O)/|q − O|
+      g = r + depth_tip;
+      c.curvature = -1.0 / rho;
+      c.surface = 3;
+    } else {
+      const double da = ka - a, db = kb - b;  // K − q
+      const double dist = std::sqrt(da * da + db * db);
+      if (!(dist > 0.0)) return c;
+      world(da / dist, db / dist, c.nx, c.ny);
+      g = r - dist;
+      c.curvature = -1.0 / dist;
+      c.surface = 2;
+    }
   }
   if (!(g > 0.0)) return c;
   apply_seat_law(w, g, rx, ry, vx, vy, speed, c);
