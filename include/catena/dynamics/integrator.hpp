@@ -25,6 +25,7 @@
 
 #include <vector>
 
+#include "catena/dynamics/block_pentadiagonal.hpp"
 #include "catena/dynamics/block_tridiagonal.hpp"
 #include "catena/dynamics/chain.hpp"
 
@@ -83,16 +84,27 @@ class Integrator {
   // Fills the solver's rhs with −R(u) (and its blocks with J(u) when `jacobian`); returns |R|².
   double assemble(const Model& model, const State& s, bool jacobian);
 
+  // The Newton matrix's factorisation and substitutions: block tridiagonal without hinge
+  // friction; with it, the exact block-pentadiagonal matrix (the tridiagonal arrays plus the
+  // hinges' blocks two nodes apart, far_lower_/far_upper_) in penta_.
+  SolveStatus factor();
+  void substitute(std::span<const Vec2> b, std::span<Vec2> x);
+  void substitute(std::span<const Vec2> b, std::span<Vec2> x, std::span<const Vec2> b2,
+                  std::span<Vec2> x2);
+
   IntegratorOptions options_;
   BlockTridiagonalSolver solver_;
-  std::vector<double> ux_, uy_;          // the Newton iterate x₁
-  std::vector<double> l0_;               // link lengths at the start of the step
-  std::vector<Vec2> delta_;              // Newton correction
-  std::vector<double> psi1_;             // sprocket angles at the end of the step (iterate)
-  std::vector<double> dpsi_;             // their Newton correction
-  std::vector<double> wres_, wdiag_;     // driven wheels: −R_w and ∂R_w/∂ψ₁
-  std::vector<std::size_t> driven_;      // indices of the driven wheels
-  std::vector<std::vector<Vec2>> bcol_;  // per driven wheel: the coupling column ∂R/∂ψ₁
+  bool pentadiagonal_;                       // hinge friction on: the exact pentadiagonal solve
+  BlockPentadiagonalSolver penta_;           // sized 1 when not used
+  std::vector<Mat2> far_lower_, far_upper_;  // blocks (i, i − 2) and (i, i + 2) (hinge friction)
+  std::vector<double> ux_, uy_;              // the Newton iterate x₁
+  std::vector<double> l0_;                   // link lengths at the start of the step
+  std::vector<Vec2> delta_;                  // Newton correction
+  std::vector<double> psi1_;                 // sprocket angles at the end of the step (iterate)
+  std::vector<double> dpsi_;                 // their Newton correction
+  std::vector<double> wres_, wdiag_;         // driven wheels: −R_w and ∂R_w/∂ψ₁
+  std::vector<std::size_t> driven_;          // indices of the driven wheels
+  std::vector<std::vector<Vec2>> bcol_;      // per driven wheel: the coupling column ∂R/∂ψ₁
   // per driven wheel: the wheel's row ∂R_w/∂u (the column's transpose but for seat friction)
   std::vector<std::vector<Vec2>> brow_;
   std::vector<std::vector<Vec2>> wsol_;  // per driven wheel: A⁻¹ times that column
