@@ -42,23 +42,23 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
     const double d0x = x0[j + 1] - x0[j], d0y = y0[j + 1] - y0[j];
     const double d1x = x1[j + 1] - x1[j], d1y = y1[j + 1] - y1[j];
     const double mx = (1.0 - theta) * d0x + theta * d1x, my = (1.0 - theta) * d0y + theta * d1y;
-    const double m2 = mx * mx + my * my;
-    turn[j] = (d0x * d1y - d0y * d1x) / m2;  // d_θ × (d₁ − d₀) = d₀ × d₁
-    px[j] = -my / m2;
-    py[j] = mx / m2;
+    const double m2 = mx * mx + my * my, im2 = 1.0 / m2;
+    turn[j] = (d0x * d1y - d0y * d1x) * im2;  // d_θ × (d₁ − d₀) = d₀ × d₁
+    px[j] = -my * im2;
+    py[j] = mx * im2;
     // the elastic tension at the θ point, with the integrator's interpolated length
     const double l1 = std::sqrt(d1x * d1x + d1y * d1y);
     const double lt = (1.0 - theta) * std::sqrt(d0x * d0x + d0y * d0y) + theta * l1;
     tension_sum += axial_stiffness * (lt - rest[j]);
     // ∂turn/∂d₁ = perp(d₀)/|d_θ|² − turn 2θ d_θ/|d_θ|²
-    tx[j] = (-d0y - 2.0 * theta * turn[j] * mx) / m2;
-    ty[j] = (d0x - 2.0 * theta * turn[j] * my) / m2;
+    tx[j] = (-d0y - 2.0 * theta * turn[j] * mx) * im2;
+    ty[j] = (d0x - 2.0 * theta * turn[j] * my) * im2;
     // ∂(½ k l_θ)/∂d₁ = ½ k θ d₁/l₁
     const double e = l1 > 0.0 ? 0.5 * axial_stiffness * theta / l1 : 0.0;
     ex[j] = e * d1x;
     ey[j] = e * d1y;
     // ∂(perp(m)/|m|²)/∂d₁ = θ (R/|m|² − 2 perp(m) mᵀ/|m|⁴), R = [[0, −1], [1, 0]]
-    const double s2 = theta / m2, s4 = 2.0 * theta / (m2 * m2);
+    const double s2 = theta * im2, s4 = 2.0 * s2 * im2;
     dp[j][0] = s4 * my * mx;
     dp[j][1] = -s2 + s4 * my * my;
     dp[j][2] = s2 - s4 * mx * mx;
