@@ -8,7 +8,9 @@
 // c (l₁ − l₀)²/h ≥ 0. Unconditionally stable: the step is set by accuracy, not by k.
 // Each step solves the nonlinear equations for x₁ by Newton's method with a backtracking line
 // search on the residual; the Jacobian is the chain's block tridiagonal (cyclic for a loop)
-// matrix, solved in O(N) by BlockTridiagonalSolver.
+// matrix, solved in O(N) by BlockTridiagonalSolver; with hinge friction the exact Jacobian is
+// block pentadiagonal (a hinge couples nodes i − 1 and i + 1), solved in O(N) by
+// BlockPentadiagonalSolver.
 //
 // Sprockets: contact forces are evaluated at the θ point like the links and add 2×2 blocks to the
 // diagonal; a driver's angle is prescribed; a driven wheel's angle is one more unknown of the
