@@ -182,6 +182,59 @@ TEST(HingeFriction, RateStiffnessIsTheTorquesSlopeInTheRate) {
   }
 }
 
+TEST(HingeFriction, JacobianIsTheForcesDerivativeByTheEndOfStepPositions) {
+  // central differences of f = M g in each of the six end-of-step coordinates, on random poses
+  // in tension, at rates inside and beyond the band, at θ = ½ and 0.6; the exact Jacobian is
+  // not symmetric, and the rate term alone (rate_stiffness × g gᵀ / h) misses part of it
+  std::mt19937 rng(2105);
+  const double h = 1e-4;
+  int asymmetric = 0, beyond_rate_term = 0, poses = 0;
+  for (double band : {2.0, 5.0}) {
+    const HingeFriction hinge{.arm = 2.86e-4, .rate_band = band};
+    for (double theta : {0.5, 0.6}) {
+      for (int trial = 0; trial < 40; ++trial) {
+        Pose p = random_pose(rng, kPitch, (trial % 2 == 0 ? 2e-6 : 2e-4));
+        for (int k = 0; k < 3; ++k) p.x0[k] *= 1.002, p.x1[k] *= 1.002;  // stretch: loaded
+        const HingeCouple hc =
+            hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, theta, h);
+        if (!(hc.load > 0.0)) continue;
+        ++poses;
+        double scale = 0.0;
+        for (const auto& row : hc.jacobian) {
+          for (double v : row) scale = std::max(scale, std::abs(v));
+        }
+        double worst = 0.0, asym = 0.0, miss = 0.0;
+        for (int q = 0; q < 6; ++q) {
+          const double du = 1e-10;
+          Pose plus = p, minus = p;
+          (q % 2 == 0 ? plus.x1 : plus.y1)[q / 2] += du;
+          (q % 2 == 0 ? minus.x1 : minus.y1)[q / 2] -= du;
+          const HingeCouple a =
+              hinge_couple(hinge, kStiffness, kPitch, plus.x0, plus.y0, plus.x1, plus.y1, theta, h);
+          const HingeCouple b = hinge_couple(hinge, kStiffness, kPitch, minus.x0, minus.y0,
+                                             minus.x1, minus.y1, theta, h);
+          for (int r = 0; r < 6; ++r) {
+            const double fa = r % 2 == 0 ? a.fx[r / 2] : a.fy[r / 2];
+            const double fb = r % 2 == 0 ? b.fx[r / 2] : b.fy[r / 2];
+            const double fd = (fa - fb) / (2 * du);
+            worst = std::max(worst, std::abs(hc.jacobian[r][q] - fd));
+            const double gr = r % 2 == 0 ? hc.gx[r / 2] : hc.gy[r / 2];
+            const double gq = q % 2 == 0 ? hc.gx[q / 2] : hc.gy[q / 2];
+            miss = std::max(miss, std::abs(fd + hc.rate_stiffness * gr * gq / h));
+            asym = std::max(asym, std::abs(hc.jacobian[r][q] - hc.jacobian[q][r]));
+          }
+        }
+        EXPECT_LT(worst, 1e-5 * scale) << "band " << band << " theta " << theta << " " << trial;
+        if (asym > 1e-3 * scale) ++asymmetric;
+        if (miss > 1e-3 * scale) ++beyond_rate_term;
+      }
+    }
+  }
+  EXPECT_GT(poses, 100);
+  EXPECT_GT(asymmetric, poses / 2);
+  EXPECT_GT(beyond_rate_term, poses / 2);
+}
+
 TEST(HingeFriction, RollingArmIsTheRollingCoefficientTimesTheReducedRadius) {
   // R* = R1 R2/(R2 − R1); flat face: R1; and the flat face is the limit of large R2
   EXPECT_DOUBLE_EQ(rolling_hinge_arm(0.001, 0.015, 0.06276), 0.001 * 0.015 * 0.06276 / 0.04776);
@@ -246,6 +299,49 @@ TEST(HingeFriction, WorkBalanceClosesWithHingeFriction) {
   EXPECT_LT(s.hinge_work, -0.01 * e0);  // the hinges took a few % of the energy
   EXPECT_NEAR(e1 - e0, s.hinge_work, 1e-6 * e0);
   EXPECT_GT(std::abs(e1 - e0), 1e-3 * e0);  // so the balance without the hinge work fails
+}
+
+// Newton on the exact hinge Jacobian converges quadratically: the spinning, wobbling loop of the
+// test above (no contacts: every term of its Jacobian is exact), one step after 5 ms repeated
+// with a cap of 1, 2, 3, … iterations; |δ_(k+1)| ≤ C |δ_k|² down to round-off, at the default
+// rate band and at 2 rad/s (most hinges of the loop turn slower than that: in the stick band).
+TEST(HingeFriction, NewtonConvergesQuadraticallyOnTheExactJacobian) {
+  constexpr std::size_t n = 24;
+  constexpr double p = 0.01905, omega = 20.0;
+  for (double band : {5.0, 2.0}) {
+    Model model = uniform_chain(n, true, p * (1 - 1e-3), 0.0238, 5e7, 0.0, false);
+    model.hinge = {.arm = 0.1 * 0.00286, .rate_band = band};
+    const double radius = p / (2 * std::sin(M_PI / n));
+    State s(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double a = 2 * M_PI * static_cast<double>(i) / n;
+      s.x[i] = radius * std::cos(a);
+      s.y[i] = radius * std::sin(a);
+      const double wobble = (i % 2 ? 0.3 : -0.3);
+      s.vx[i] = -omega * s.y[i] + wobble * std::cos(a);
+      s.vy[i] = omega * s.x[i] + wobble * std::sin(a);
+    }
+    Integrator run(model, {.step = 1e-4, .theta = 0.5});
+    for (int k = 0; k < 50; ++k) ASSERT_TRUE(run.step(model, s).converged);
+    std::vector<double> c;  // |δ_k| / p
+    for (int cap = 1; cap <= 10; ++cap) {
+      Integrator probe(model, {.step = 1e-4, .max_iterations = cap, .tolerance = 1e-15});
+      State copy = s;
+      const StepReport rep = probe.step(model, copy);
+      ASSERT_EQ(rep.solve, SolveStatus::kSolved);
+      c.push_back(rep.last_correction / p);
+      if (rep.converged || c.back() < 1e-13) break;
+    }
+    std::printf("band %.0f rad/s: |dx|/p per iteration:", band);
+    for (double v : c) std::printf(" %.2e", v);
+    std::printf("\n");
+    int quadratic = 0;
+    for (std::size_t k = 0; k + 1 < c.size() && c[k] > 1e-10; ++k) {
+      EXPECT_LT(c[k + 1], 100.0 * c[k] * c[k]) << band << " " << k;
+      ++quadratic;
+    }
+    EXPECT_GE(quadratic, 2) << band;
+  }
 }
 
 // An open chain of 16 links pinned at both ends, released as an inverted V under gravity: it

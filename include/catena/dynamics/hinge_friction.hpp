@@ -47,9 +47,15 @@ struct HingeCouple {
   double work = 0.0;                            ///< [J] M Δβ ≤ 0
   double gx[3] = {0, 0, 0}, gy[3] = {0, 0, 0};  ///< [1/m] g = ∂β/∂x_k at the θ point
   double fx[3] = {0, 0, 0}, fy[3] = {0, 0, 0};  ///< [N] M g_k
-  /// [N·m·s/rad] e F s'(ω) ≥ 0: −∂(h f)/∂x₁ ≈ this × g gᵀ (the rate term; the load's and the
-  /// direction's dependence on x₁ left out)
+  /// [N·m·s/rad] e F s'(ω) ≥ 0: −∂(h f)/∂x₁ ≈ this × g gᵀ (the rate term alone)
   double rate_stiffness = 0.0;
+  /// [N/m] the exact ∂f/∂x₁ (f = M g on the three nodes, x₁ the end-of-step positions): row
+  /// 2k + r is f_k's component r (x, y), column 2q + c is x₁ of node q, component c. Three terms:
+  /// g ⊗ ∂M/∂x₁ with ∂M/∂x₁ = −e s(ω) ∂F/∂x₁ − e F s'(ω) ∂Δβ/∂x₁ / h (the rate through the
+  /// exact turn Δβ = Δα_c − Δα_a, the load through the links' θ-point lengths) and M ∂g/∂x₁ (the
+  /// direction). Not symmetric: g ≠ ∂Δβ/∂x₁ off the midpoint geometry, and the load's and the
+  /// direction's terms are not.
+  double jacobian[6][6] = {};
 };
 /// `rest` holds the two links' rest lengths (they differ on an alternating round-link chain,
 /// Model::alternation); the pin load is the mean of their elastic tensions k (l_θ − rest).

@@ -8,7 +8,9 @@
 // c (l₁ − l₀)²/h ≥ 0. Unconditionally stable: the step is set by accuracy, not by k.
 // Each step solves the nonlinear equations for x₁ by Newton's method with a backtracking line
 // search on the residual; the Jacobian is the chain's block tridiagonal (cyclic for a loop)
-// matrix, solved in O(N) by BlockTridiagonalSolver.
+// matrix, solved in O(N) by BlockTridiagonalSolver; with hinge friction the exact Jacobian is
+// block pentadiagonal (a hinge couples nodes i − 1 and i + 1), solved in O(N) by
+// BlockPentadiagonalSolver.
 //
 // Sprockets: contact forces are evaluated at the θ point like the links and add 2×2 blocks to the
 // diagonal; a driver's angle is prescribed; a driven wheel's angle is one more unknown of the
@@ -26,6 +28,7 @@
 #include <span>
 #include <vector>
 
+#include "catena/dynamics/block_pentadiagonal.hpp"
 #include "catena/dynamics/block_tridiagonal.hpp"
 #include "catena/dynamics/chain.hpp"
 
@@ -101,13 +104,24 @@ class Integrator {
   // Fills the solver's rhs with −R(u) (and its blocks with J(u) when `jacobian`); returns |R|².
   double assemble(const Model& model, const State& s, bool jacobian);
 
+  // The Newton matrix's factorisation and substitutions: block tridiagonal without hinge
+  // friction; with it, the exact block-pentadiagonal matrix (the tridiagonal arrays plus the
+  // hinges' blocks two nodes apart, far_lower_/far_upper_) in penta_.
+  SolveStatus factor();
+  void substitute(std::span<const Vec2> b, std::span<Vec2> x);
+  void substitute(std::span<const Vec2> b, std::span<Vec2> x, std::span<const Vec2> b2,
+                  std::span<Vec2> x2);
+
   IntegratorOptions options_;
   BlockTridiagonalSolver solver_;
-  std::vector<double> ux_, uy_;  // the Newton iterate x₁
-  std::vector<double> l0_;       // link lengths at the start of the step
-  std::vector<Vec2> delta_;      // Newton correction
-  std::vector<double> psi1_;     // sprocket angles at the end of the step (iterate)
-  std::vector<double> slide1_;   // take-ups' slides at the end of the step (iterate), per wheel
+  bool pentadiagonal_;                       // hinge friction on: the exact pentadiagonal solve
+  BlockPentadiagonalSolver penta_;           // sized 1 when not used
+  std::vector<Mat2> far_lower_, far_upper_;  // blocks (i, i − 2) and (i, i + 2) (hinge friction)
+  std::vector<double> ux_, uy_;              // the Newton iterate x₁
+  std::vector<double> l0_;                   // link lengths at the start of the step
+  std::vector<Vec2> delta_;                  // Newton correction
+  std::vector<double> psi1_;                 // sprocket angles at the end of the step (iterate)
+  std::vector<double> slide1_;  // take-ups' slides at the end of the step (iterate), per wheel
   // The unknowns that border the chain's matrix: the driven wheels' angles in wheel order, then
   // the take-ups' slides in wheel order (docs/models/dynamics.md, "Take-up").
   struct Extra {

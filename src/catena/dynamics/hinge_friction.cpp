@@ -35,18 +35,34 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
   HingeCouple hc;
   double turn[2], tension_sum = 0.0;
   double px[2], py[2];  // perp(d_θ)/|d_θ|² per link
+  // per link, the derivatives by its end-of-step chord d₁: of its turn (tx, ty), of its share of
+  // the pin load (ex, ey) and of perp(d_θ)/|d_θ|² (dp, row-major 2×2)
+  double tx[2], ty[2], ex[2], ey[2], dp[2][4];
   for (int j = 0; j < 2; ++j) {
     const double d0x = x0[j + 1] - x0[j], d0y = y0[j + 1] - y0[j];
     const double d1x = x1[j + 1] - x1[j], d1y = y1[j + 1] - y1[j];
     const double mx = (1.0 - theta) * d0x + theta * d1x, my = (1.0 - theta) * d0y + theta * d1y;
-    const double m2 = mx * mx + my * my;
-    turn[j] = (d0x * d1y - d0y * d1x) / m2;  // d_θ × (d₁ − d₀) = d₀ × d₁
-    px[j] = -my / m2;
-    py[j] = mx / m2;
+    const double m2 = mx * mx + my * my, im2 = 1.0 / m2;
+    turn[j] = (d0x * d1y - d0y * d1x) * im2;  // d_θ × (d₁ − d₀) = d₀ × d₁
+    px[j] = -my * im2;
+    py[j] = mx * im2;
     // the elastic tension at the θ point, with the integrator's interpolated length
-    const double lt =
-        (1.0 - theta) * std::sqrt(d0x * d0x + d0y * d0y) + theta * std::sqrt(d1x * d1x + d1y * d1y);
+    const double l1 = std::sqrt(d1x * d1x + d1y * d1y);
+    const double lt = (1.0 - theta) * std::sqrt(d0x * d0x + d0y * d0y) + theta * l1;
     tension_sum += axial_stiffness * (lt - rest[j]);
+    // ∂turn/∂d₁ = perp(d₀)/|d_θ|² − turn 2θ d_θ/|d_θ|²
+    tx[j] = (-d0y - 2.0 * theta * turn[j] * mx) * im2;
+    ty[j] = (d0x - 2.0 * theta * turn[j] * my) * im2;
+    // ∂(½ k l_θ)/∂d₁ = ½ k θ d₁/l₁
+    const double e = l1 > 0.0 ? 0.5 * axial_stiffness * theta / l1 : 0.0;
+    ex[j] = e * d1x;
+    ey[j] = e * d1y;
+    // ∂(perp(m)/|m|²)/∂d₁ = θ (R/|m|² − 2 perp(m) mᵀ/|m|⁴), R = [[0, −1], [1, 0]]
+    const double s2 = theta * im2, s4 = 2.0 * s2 * im2;
+    dp[j][0] = s4 * my * mx;
+    dp[j][1] = -s2 + s4 * my * my;
+    dp[j][2] = s2 - s4 * mx * mx;
+    dp[j][3] = -s4 * mx * my;
   }
   hc.load = std::max(0.0, 0.5 * tension_sum);
   hc.turn = turn[1] - turn[0];
@@ -68,6 +84,35 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
     hc.fy[k] = hc.torque * hc.gy[k];
   }
   hc.rate_stiffness = limit * band * band / (root * root * root);
+  // The exact ∂f/∂x₁. Node gradients of a per-link quantity q(d₁) of links 0 (a → b) and 1
+  // (b → c): the turn Δβ = turn₁ − turn₀ gives (T₀, −T₀ − T₁, T₁) (as g); the load F = Σ ½ k
+  // (l_θ − rest) gives (−E₀, E₀ − E₁, E₁) (zero where the load is clamped at 0).
+  const double loaded = 0.5 * tension_sum > 0.0 ? 1.0 : 0.0;
+  const double load_factor = -hinge.arm * (hc.rate / root) * loaded;  // ∂M/∂F = −e s(ω)
+  const double rate_factor = -hc.rate_stiffness / step;               // ∂M/∂Δβ = −e F s'/h
+  const double nturn_x[3] = {tx[0], -tx[0] - tx[1], tx[1]};
+  const double nturn_y[3] = {ty[0], -ty[0] - ty[1], ty[1]};
+  const double nload_x[3] = {-ex[0], ex[0] - ex[1], ex[1]};
+  const double nload_y[3] = {-ey[0], ey[0] - ey[1], ey[1]};
+  double dmx[3], dmy[3];  // ∂M/∂x₁ per node
+  for (int q = 0; q < 3; ++q) {
+    dmx[q] = load_factor * nload_x[q] + rate_factor * nturn_x[q];
+    dmy[q] = load_factor * nload_y[q] + rate_factor * nturn_y[q];
+  }
+  // ∂g_k/∂x_q: g = (P₀, −P₀ − P₁, P₁), ∂P_j/∂x of its link's end node = DP_j, of its start −DP_j
+  const double sgn0[3][3] = {{-1, 1, 0}, {1, -1, 0}, {0, 0, 0}};  // ∂g_k/∂x_q's share of DP₀
+  const double sgn1[3][3] = {{0, 0, 0}, {0, 1, -1}, {0, -1, 1}};  // and of DP₁
+  for (int k = 0; k < 3; ++k) {
+    for (int q = 0; q < 3; ++q) {
+      for (int r = 0; r < 2; ++r) {
+        const double gk = r == 0 ? hc.gx[k] : hc.gy[k];
+        for (int c = 0; c < 2; ++c) {
+          const double dg = sgn0[k][q] * dp[0][2 * r + c] + sgn1[k][q] * dp[1][2 * r + c];
+          hc.jacobian[2 * k + r][2 * q + c] = gk * (c == 0 ? dmx[q] : dmy[q]) + hc.torque * dg;
+        }
+      }
+    }
+  }
   return hc;
 }
 

@@ -48,6 +48,10 @@ GuideContact guide_contact_at_theta(const Guide& guide, const State& s,
 Integrator::Integrator(const Model& model, IntegratorOptions options)
     : options_(options),
       solver_(checked_nodes(model, options), model.closed),
+      pentadiagonal_(model.hinge.active() && model.nodes() >= 3),
+      penta_(pentadiagonal_ ? model.nodes() : 1, pentadiagonal_ && model.closed),
+      far_lower_(pentadiagonal_ ? model.nodes() : 0),
+      far_upper_(pentadiagonal_ ? model.nodes() : 0),
       ux_(model.nodes()),
       uy_(model.nodes()),
       l0_(model.links()),
@@ -98,6 +102,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       solver_.diag[i] = {inertia + model.drag * m, 0.0, 0.0, inertia + model.drag * m};
       solver_.lower[i] = {};
       solver_.upper[i] = {};
+      if (pentadiagonal_) far_lower_[i] = far_upper_[i] = {};
     }
     solver_.rhs[i] = {
         -(inertia * (dx - h * s.vx[i]) + model.drag * m * dx - h * m * model.gravity_x),
@@ -146,14 +151,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     solver_.lower[b] = {-hA.a, -hA.b, -hA.c, -hA.d};
   }
   // Hinge friction (docs/models/dynamics.md, "Hinges"): the couple M g on nodes i − 1, i, i + 1.
-  // The residual is exact; the Jacobian keeps the rate term c g gᵀ (c = e F s'(ω) ≥ 0) but not its
-  // blocks (i − 1, i + 1) and (i + 1, i − 1), which lie outside the block-tridiagonal band: they
-  // are lumped onto the diagonal as c (P₀, 0, −P₁)(P₀, 0, −P₁)ᵀ added to c g gᵀ (which cancels
-  // them), so the matrix stays symmetric and is never below the exact one: positive definite
-  // whenever the exact one is, and the O(N) solve needs no pivoting. Newton then converges
-  // linearly where the hinges are in their stick band (measured in docs/models/dynamics.md: 11.5
-  // iterations a step on the 12B drive at ω_ε = 5 rad/s against 3.8 without hinge friction; a
-  // narrower band needs an exact solve of the block-pentadiagonal matrix, not built).
+  // The residual and the Jacobian are exact: −h ∂(M g)/∂u (rate, load and direction terms; not
+  // symmetric) on the 3 × 3 node blocks, the blocks (i − 1, i + 1) and (i + 1, i − 1) in the
+  // pentadiagonal band (far_upper_, far_lower_), solved by BlockPentadiagonalSolver.
   hinge_work_ = 0.0;
   if (model.hinge.active() && n >= 3) {
     const std::size_t first = model.closed ? 0 : 1;
@@ -170,20 +170,20 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
         solver_.rhs[node[q]].x += h * hc.fx[q];
         solver_.rhs[node[q]].y += h * hc.fy[q];
       }
-      if (!jacobian || !(hc.rate_stiffness > 0.0)) continue;
-      const double cs = hc.rate_stiffness;
-      auto outer = [&](int r, int q, double f) {
-        return Mat2{f * cs * hc.gx[r] * hc.gx[q], f * cs * hc.gx[r] * hc.gy[q],
-                    f * cs * hc.gy[r] * hc.gx[q], f * cs * hc.gy[r] * hc.gy[q]};
-      };
-      auto add = [](Mat2& m, const Mat2& d) { m = {m.a + d.a, m.b + d.b, m.c + d.c, m.d + d.d}; };
-      add(solver_.diag[ha], outer(0, 0, 2.0));  // g₀g₀ᵀ and the lumped P₀P₀ᵀ
-      add(solver_.diag[i], outer(1, 1, 1.0));
-      add(solver_.diag[hb], outer(2, 2, 2.0));   // g₂g₂ᵀ and the lumped P₁P₁ᵀ
-      add(solver_.upper[ha], outer(0, 1, 1.0));  // block (i − 1, i)
-      add(solver_.lower[i], outer(1, 0, 1.0));   // block (i, i − 1)
-      add(solver_.upper[i], outer(1, 2, 1.0));   // block (i, i + 1)
-      add(solver_.lower[hb], outer(2, 1, 1.0));  // block (i + 1, i)
+      if (!jacobian) continue;
+      // block (r, q) of the three nodes: −h ∂f_r/∂u_q; node offsets q − r in −2..2
+      Mat2* slot[3][3] = {{&solver_.diag[ha], &solver_.upper[ha], &far_upper_[ha]},
+                          {&solver_.lower[i], &solver_.diag[i], &solver_.upper[i]},
+                          {&far_lower_[hb], &solver_.lower[hb], &solver_.diag[hb]}};
+      for (int r = 0; r < 3; ++r) {
+        for (int q = 0; q < 3; ++q) {
+          Mat2& m = *slot[r][q];
+          const auto& jr0 = hc.jacobian[2 * r];
+          const auto& jr1 = hc.jacobian[2 * r + 1];
+          m = {m.a - h * jr0[2 * q], m.b - h * jr0[2 * q + 1], m.c - h * jr1[2 * q],
+               m.d - h * jr1[2 * q + 1]};
+        }
+      }
     }
   }
   max_penetration_ = 0.0;
@@ -365,6 +365,11 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       solver_.upper[i] = {};
       if (model.closed || i + 1 < n) solver_.lower[(i + 1) % n] = {};
       if (model.closed || i > 0) solver_.upper[(i + n - 1) % n] = {};
+      if (pentadiagonal_) {
+        far_lower_[i] = far_upper_[i] = {};
+        if (model.closed || i + 2 < n) far_lower_[(i + 2) % n] = {};
+        if (model.closed || i >= 2) far_upper_[(i + n - 2) % n] = {};
+      }
     }
   }
   double norm2 = wheel_norm2;
@@ -372,6 +377,35 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     norm2 += solver_.rhs[i].x * solver_.rhs[i].x + solver_.rhs[i].y * solver_.rhs[i].y;
   }
   return norm2;
+}
+
+SolveStatus Integrator::factor() {
+  if (!pentadiagonal_) return solver_.factor();
+  // the tridiagonal arrays' cyclic convention (lower[0] is block (0, n − 1), upper[n − 1] block
+  // (n − 1, 0)) is the pentadiagonal bands' (column i + o modulo n)
+  penta_.band[0] = far_lower_;
+  penta_.band[1] = solver_.lower;
+  penta_.band[2] = solver_.diag;
+  penta_.band[3] = solver_.upper;
+  penta_.band[4] = far_upper_;
+  return penta_.factor();
+}
+
+void Integrator::substitute(std::span<const Vec2> b, std::span<Vec2> x) {
+  if (pentadiagonal_) {
+    penta_.substitute(b, x);
+  } else {
+    solver_.substitute(b, x);
+  }
+}
+
+void Integrator::substitute(std::span<const Vec2> b, std::span<Vec2> x, std::span<const Vec2> b2,
+                            std::span<Vec2> x2) {
+  if (pentadiagonal_) {
+    penta_.substitute(b, x, b2, x2);
+  } else {
+    solver_.substitute(b, x, b2, x2);
+  }
 }
 
 StepReport Integrator::step(const Model& model, State& s) {
@@ -415,18 +449,18 @@ StepReport Integrator::step(const Model& model, State& s) {
   StepReport report;
   double norm2 = assemble(model, s, true);
   for (int iter = 1; iter <= options_.max_iterations; ++iter) {
-    report.solve = solver_.factor();
+    report.solve = factor();
     report.iterations = iter;
     if (report.solve != SolveStatus::kSolved) return report;
     if (nd == 0) {
-      solver_.substitute(solver_.rhs, delta_);
+      substitute(solver_.rhs, delta_);
     } else {
       // The driven wheels' angles and the take-ups' slides border the chain's matrix:
       // [A B; Cᵀ D] [δu; δx] = [r; r_x]. Solve A W = B (one more O(N) substitution per extra
       // unknown, same factors; the first rides along with δu₀'s), then the small Schur
       // complement (D − Cᵀ W) δx = r_x − Cᵀ δu₀, and δu = δu₀ − W δx.
-      solver_.substitute(solver_.rhs, delta_, bcol_[0], wsol_[0]);
-      for (std::size_t a = 1; a < nd; ++a) solver_.substitute(bcol_[a], wsol_[a]);
+      substitute(solver_.rhs, delta_, bcol_[0], wsol_[0]);
+      for (std::size_t a = 1; a < nd; ++a) substitute(bcol_[a], wsol_[a]);
       for (std::size_t a = 0; a < nd; ++a) {
         const std::vector<Vec2>& ba = brow_[a];  // the unknown's row
         double g = xres_[a];

@@ -1,0 +1,363 @@
+// Band LU with partial pivoting and a rank-4 Sherman–Morrison–Woodbury closure
+// (include/catena/dynamics/block_pentadiagonal.hpp; docs/models/dynamics.md, "Solver").
+#include "catena/dynamics/block_pentadiagonal.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace catena::dynamics {
+namespace {
+
+Mat2 operator*(const Mat2& p, const Mat2& q) {
+  return {p.a * q.a + p.b * q.c, p.a * q.b + p.b * q.d, p.c * q.a + p.d * q.c,
+          p.c * q.b + p.d * q.d};
+}
+Vec2 operator*(const Mat2& p, Vec2 v) { return {p.a * v.x + p.b * v.y, p.c * v.x + p.d * v.y}; }
+Mat2 operator-(const Mat2& p, const Mat2& q) {
+  return {p.a - q.a, p.b - q.b, p.c - q.c, p.d - q.d};
+}
+
+bool usable_pivot(double p) { return std::isfinite(p) && std::abs(p) > 1e-300; }
+
+// In-place LU with partial pivoting of a 4×4 matrix; false when a pivot is zero.
+bool lu4(double a[4][4], int piv[4]) {
+  for (int k = 0; k < 4; ++k) {
+    int p = k;
+    for (int r = k + 1; r < 4; ++r) {
+      if (std::abs(a[r][k]) > std::abs(a[p][k])) p = r;
+    }
+    piv[k] = p;
+    if (!usable_pivot(a[p][k])) return false;
+    if (p != k) {
+      for (int c = 0; c < 4; ++c) std::swap(a[k][c], a[p][c]);
+    }
+    for (int r = k + 1; r < 4; ++r) {
+      a[r][k] /= a[k][k];
+      for (int c = k + 1; c < 4; ++c) a[r][c] -= a[r][k] * a[k][c];
+    }
+  }
+  return true;
+}
+
+// v ← A⁻¹ v with lu4's factors.
+void lu4_solve(const double a[4][4], const int piv[4], double v[4]) {
+  for (int k = 0; k < 4; ++k) std::swap(v[k], v[piv[k]]);
+  for (int r = 1; r < 4; ++r) {
+    for (int c = 0; c < r; ++c) v[r] -= a[r][c] * v[c];
+  }
+  for (int r = 3; r >= 0; --r) {
+    for (int c = r + 1; c < 4; ++c) v[r] -= a[r][c] * v[c];
+    v[r] /= a[r][r];
+  }
+}
+
+}  // namespace
+
+BlockPentadiagonalSolver::BlockPentadiagonalSolver(std::size_t n, bool cyclic)
+    : rhs(n),
+      n_(n),
+      m_(2 * n),
+      cyclic_(cyclic),
+      closure_(cyclic && n >= 4),  // at n = 3 every pair of nodes lies within the band
+      lu_(2 * n * kWidth),
+      inv_diag_(2 * n),
+      piv_(2 * n),
+      q_(cyclic && n >= 4 ? 2 * n * 4 : 0),
+      y_(2 * n),
+      y2_(2 * n) {
+  if (cyclic && n < 3) throw std::invalid_argument("a cyclic block system needs n >= 3");
+  if (n < 1) throw std::invalid_argument("a block system needs n >= 1");
+  for (auto& b : band) b.resize(n);
+  for (auto& b : t_) b.resize(n);
+  for (auto& b : f_) b.resize(n);
+}
+
+SolveStatus BlockPentadiagonalSolver::solve(std::span<Vec2> x) {
+  if (x.size() != n_) throw std::invalid_argument("solution span has the wrong size");
+  const SolveStatus status = factor();
+  if (status == SolveStatus::kSolved) substitute(rhs, x);
+  return status;
+}
+
+SolveStatus BlockPentadiagonalSolver::factor() {
+  const std::size_t n = n_, m = m_;
+  for (auto& b : t_) std::fill(b.begin(), b.end(), Mat2{});
+  for (auto& row : ctr_) std::fill(row, row + 4, 0.0);
+  for (auto& row : cbl_) std::fill(row, row + 4, 0.0);
+  // Gather the blocks: within the band (|i − j| ≤ 2 as plain indices) into T's bands t_, else (a
+  // closed loop's wrap-around) into the corners.
+  for (int o = -2; o <= 2; ++o) {
+    const std::vector<Mat2>& blocks = band[static_cast<std::size_t>(o + 2)];
+    for (std::size_t i = 0; i < n; ++i) {
+      const long jl = static_cast<long>(i) + o;
+      if (!cyclic_ && (jl < 0 || jl >= static_cast<long>(n))) continue;
+      const long nl = static_cast<long>(n);
+      const std::size_t j = static_cast<std::size_t>((jl + nl) % nl);
+      const Mat2& b = blocks[i];
+      const long gap = static_cast<long>(j) - static_cast<long>(i);
+      if (gap >= -2 && gap <= 2) {
+        Mat2& t = t_[static_cast<std::size_t>(gap + 2)][i];
+        t = {t.a + b.a, t.b + b.b, t.c + b.c, t.d + b.d};
+        continue;
+      }
+      const double v[2][2] = {{b.a, b.b}, {b.c, b.d}};
+      for (std::size_t r = 0; r < 2; ++r) {
+        for (std::size_t c = 0; c < 2; ++c) {
+          const std::size_t row = 2 * i + r, col = 2 * j + c;
+          if (i < j) {  // rows of nodes 0, 1; columns of nodes n − 2, n − 1
+            ctr_[row][col - (m - 4)] += v[r][c];
+          } else {
+            cbl_[row - (m - 4)][col] += v[r][c];
+          }
+        }
+      }
+    }
+  }
+  double a_tl[4][4], a_top[4][4];  // A_tl's LU, and A_tl itself (G = −A_tl is W's top)
+  int a_tl_piv[4];
+  if (closure_) {
+    // T = A − W Zᵀ: T_tl = A_tl − G = 2 A_tl, T_br = A_br − C_bl G⁻¹ C_tr = A_br + C_bl A_tl⁻¹
+    // C_tr; H = G⁻¹ C_tr = −A_tl⁻¹ C_tr.
+    for (std::size_t r = 0; r < 4; ++r) {
+      for (std::size_t c = 0; c < 4; ++c) a_tl[r][c] = a_top[r][c] = element(r, c);
+    }
+    if (!lu4(a_tl, a_tl_piv)) return SolveStatus::kSingularPivot;
+    for (int c = 0; c < 4; ++c) {
+      double col[4] = {ctr_[0][c], ctr_[1][c], ctr_[2][c], ctr_[3][c]};
+      lu4_solve(a_tl, a_tl_piv, col);
+      for (int r = 0; r < 4; ++r) h_[r][c] = -col[r];
+    }
+    for (std::size_t r = 0; r < 4; ++r) {
+      for (std::size_t c = 0; c < 4; ++c) element(r, c) += a_top[r][c];
+    }
+    for (std::size_t r = 0; r < 4; ++r) {
+      for (std::size_t c = 0; c < 4; ++c) {
+        double s = 0.0;  // (C_bl A_tl⁻¹ C_tr)_rc = −(C_bl H)_rc
+        for (int k = 0; k < 4; ++k) s -= cbl_[r][k] * h_[k][c];
+        element(m - 4 + r, m - 4 + c) += s;
+      }
+    }
+  }
+  // T's factors: block LU without pivoting when every 2×2 pivot block is well conditioned (as
+  // for the chain's matrices, whose symmetric part is positive definite: mass, links in tension,
+  // the rate term c g gᵀ; Golub & Van Loan §4.2 on LU without pivoting of such systems), else
+  // the scalar band elimination with partial pivoting.
+  blocked_ = block_factor();
+  if (!blocked_) {
+    const SolveStatus status = pivoted_factor();
+    if (status != SolveStatus::kSolved) return status;
+  }
+  if (!closure_) return SolveStatus::kSolved;
+  // Q = T⁻¹ W, W = [G; 0; C_bl], G = −A_tl
+  std::fill(q_.begin(), q_.end(), 0.0);
+  for (std::size_t r = 0; r < 4; ++r) {
+    for (std::size_t c = 0; c < 4; ++c) {
+      q_[4 * r + c] = -a_top[r][c];
+      q_[4 * (m - 4 + r) + c] += cbl_[r][c];
+    }
+  }
+  if (blocked_) {
+    block_solve4(q_.data());  // the four columns side by side
+  } else {
+    for (std::size_t c = 0; c < 4; ++c) {
+      for (std::size_t r = 0; r < m; ++r) y_[r] = q_[4 * r + c];
+      band_solve(y_.data());
+      for (std::size_t r = 0; r < m; ++r) q_[4 * r + c] = y_[r];
+    }
+  }
+  // capacitance I + Zᵀ Q, Zᵀ v = v_top + H v_bottom
+  for (std::size_t r = 0; r < 4; ++r) {
+    for (std::size_t c = 0; c < 4; ++c) {
+      double s = (r == c ? 1.0 : 0.0) + q_[4 * r + c];
+      for (std::size_t k = 0; k < 4; ++k) s += h_[r][k] * q_[4 * (m - 4 + k) + c];
+      cap_[r][c] = s;
+    }
+  }
+  if (!lu4(cap_, cap_piv_)) return SolveStatus::kSingularPivot;
+  return SolveStatus::kSolved;
+}
+
+double& BlockPentadiagonalSolver::element(std::size_t r, std::size_t c) {
+  Mat2& b = t_[c / 2 + 2 - r / 2][r / 2];
+  return r % 2 == 0 ? (c % 2 == 0 ? b.a : b.b) : (c % 2 == 0 ? b.c : b.d);
+}
+
+bool BlockPentadiagonalSolver::block_factor() {
+  // f_[o + 2][i]: U's blocks (i, i + o), o = 0..2 (the diagonal ones inverted), and L's
+  // multipliers (i, i + o), o = −2, −1
+  const std::size_t n = n_;
+  for (std::size_t o = 0; o < 5; ++o) f_[o] = t_[o];
+  double scale = 0.0;
+  for (const Mat2& d : t_[2]) {
+    scale = std::max({scale, std::abs(d.a) + std::abs(d.b), std::abs(d.c) + std::abs(d.d)});
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const Mat2 d = f_[2][k];
+    const double det = d.a * d.d - d.b * d.c;
+    const double size = std::max(std::abs(d.a) + std::abs(d.b), std::abs(d.c) + std::abs(d.d));
+    // a pivot block small against the matrix or ill conditioned in itself: pivot instead
+    if (!std::isfinite(det) || !(size > 1e-8 * scale) || !(std::abs(det) > 1e-8 * size * size)) {
+      return false;
+    }
+    const Mat2 inv{d.d / det, -d.b / det, -d.c / det, d.a / det};
+    f_[2][k] = inv;
+    for (std::size_t r = k + 1; r <= std::min(n - 1, k + 2); ++r) {
+      Mat2& l = f_[k + 2 - r][r];  // block (r, k), offset k − r
+      l = l * inv;
+      for (std::size_t c = k + 1; c <= std::min(n - 1, k + 2); ++c) {
+        Mat2& t = f_[c + 2 - r][r];  // block (r, c)
+        t = t - l * f_[c + 2 - k][k];
+      }
+    }
+  }
+  return true;
+}
+
+SolveStatus BlockPentadiagonalSolver::pivoted_factor() {
+  const std::size_t n = n_, m = m_;
+  std::fill(lu_.begin(), lu_.end(), 0.0);
+  for (std::size_t o = 0; o < 5; ++o) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i + o < 2 || i + o - 2 >= n) continue;
+      const std::size_t j = i + o - 2;
+      const Mat2& b = t_[o][i];
+      at(2 * i, 2 * j) = b.a;
+      at(2 * i, 2 * j + 1) = b.b;
+      at(2 * i + 1, 2 * j) = b.c;
+      at(2 * i + 1, 2 * j + 1) = b.d;
+    }
+  }
+  // Band elimination with partial pivoting, column by column.
+  for (std::size_t k = 0; k < m; ++k) {
+    const std::size_t rmax = std::min(m - 1, k + kLower);
+    const std::size_t cmax = std::min(m - 1, k + kLower + kUpper);
+    std::size_t p = k;
+    for (std::size_t r = k + 1; r <= rmax; ++r) {
+      if (std::abs(at(r, k)) > std::abs(at(p, k))) p = r;
+    }
+    piv_[k] = p;
+    if (!usable_pivot(at(p, k))) return SolveStatus::kSingularPivot;
+    if (p != k) {
+      for (std::size_t c = k; c <= cmax; ++c) std::swap(at(k, c), at(p, c));
+    }
+    const double inv = 1.0 / at(k, k);
+    inv_diag_[k] = inv;
+    const double* pivot_row = &at(k, k);
+    for (std::size_t r = k + 1; r <= rmax; ++r) {
+      double* row = &at(r, k);
+      const double l = row[0] * inv;
+      row[0] = l;
+      if (l == 0.0) continue;
+      for (std::size_t c = 1; c <= cmax - k; ++c) row[c] -= l * pivot_row[c];
+    }
+  }
+  return SolveStatus::kSolved;
+}
+
+void BlockPentadiagonalSolver::block_solve4(double* q) const {
+  // q is 2n × 4, row-major: node k's rows are q[8k..8k+3] (x) and q[8k+4..8k+7] (y)
+  const std::size_t n = n_;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double* qk = q + 8 * k;
+    for (std::size_t r = k + 1; r <= std::min(n - 1, k + 2); ++r) {
+      const Mat2& l = f_[k + 2 - r][r];
+      double* qr = q + 8 * r;
+      for (std::size_t c = 0; c < 4; ++c) {
+        qr[c] -= l.a * qk[c] + l.b * qk[4 + c];
+        qr[4 + c] -= l.c * qk[c] + l.d * qk[4 + c];
+      }
+    }
+  }
+  for (std::size_t k = n; k-- > 0;) {
+    double* qk = q + 8 * k;
+    for (std::size_t c2 = k + 1; c2 <= std::min(n - 1, k + 2); ++c2) {
+      const Mat2& u = f_[c2 + 2 - k][k];
+      const double* qc = q + 8 * c2;
+      for (std::size_t c = 0; c < 4; ++c) {
+        qk[c] -= u.a * qc[c] + u.b * qc[4 + c];
+        qk[4 + c] -= u.c * qc[c] + u.d * qc[4 + c];
+      }
+    }
+    const Mat2& d = f_[2][k];
+    for (std::size_t c = 0; c < 4; ++c) {
+      const double x = qk[c], y = qk[4 + c];
+      qk[c] = d.a * x + d.b * y;
+      qk[4 + c] = d.c * x + d.d * y;
+    }
+  }
+}
+
+void BlockPentadiagonalSolver::band_solve(double* y) const {
+  if (blocked_) {
+    const std::size_t n = n_;
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec2 yk{y[2 * k], y[2 * k + 1]};
+      for (std::size_t r = k + 1; r <= std::min(n - 1, k + 2); ++r) {
+        const Vec2 d = f_[k + 2 - r][r] * yk;
+        y[2 * r] -= d.x;
+        y[2 * r + 1] -= d.y;
+      }
+    }
+    for (std::size_t k = n; k-- > 0;) {
+      Vec2 s{y[2 * k], y[2 * k + 1]};
+      for (std::size_t c = k + 1; c <= std::min(n - 1, k + 2); ++c) {
+        const Vec2 d = f_[c + 2 - k][k] * Vec2{y[2 * c], y[2 * c + 1]};
+        s = {s.x - d.x, s.y - d.y};
+      }
+      const Vec2 x = f_[2][k] * s;
+      y[2 * k] = x.x;
+      y[2 * k + 1] = x.y;
+    }
+    return;
+  }
+  const std::size_t m = m_;
+  for (std::size_t k = 0; k < m; ++k) {
+    const std::size_t p = piv_[k];
+    if (p != k) std::swap(y[k], y[p]);
+    const double yk = y[k];
+    if (yk == 0.0) continue;
+    const std::size_t rmax = std::min(m - 1, k + kLower);
+    for (std::size_t r = k + 1; r <= rmax; ++r) y[r] -= lu_[r * kWidth + (k + kLower - r)] * yk;
+  }
+  for (std::size_t k = m; k-- > 0;) {
+    const std::size_t cmax = std::min(m - 1, k + kLower + kUpper);
+    const double* row = &lu_[k * kWidth + kLower];  // row[c − k] = U(k, c)
+    double s = y[k];
+    for (std::size_t c = k + 1; c <= cmax; ++c) s -= row[c - k] * y[c];
+    y[k] = s * inv_diag_[k];
+  }
+}
+
+void BlockPentadiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec2> x) {
+  if (x.size() != n_ || b.size() != n_) throw std::invalid_argument("span of the wrong size");
+  const std::size_t n = n_, m = m_;
+  for (std::size_t i = 0; i < n; ++i) {
+    y_[2 * i] = b[i].x;
+    y_[2 * i + 1] = b[i].y;
+  }
+  band_solve(y_.data());
+  if (closure_) {
+    double z[4];
+    for (std::size_t r = 0; r < 4; ++r) {
+      double s = y_[r];
+      for (std::size_t k = 0; k < 4; ++k) s += h_[r][k] * y_[m - 4 + k];
+      z[r] = s;
+    }
+    lu4_solve(cap_, cap_piv_, z);
+    for (std::size_t r = 0; r < m; ++r) {
+      const double* q = &q_[4 * r];
+      y_[r] -= q[0] * z[0] + q[1] * z[1] + q[2] * z[2] + q[3] * z[3];
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) x[i] = {y_[2 * i], y_[2 * i + 1]};
+}
+
+void BlockPentadiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec2> x,
+                                          std::span<const Vec2> b2, std::span<Vec2> x2) {
+  substitute(b, x);
+  substitute(b2, x2);
+}
+
+}  // namespace catena::dynamics
