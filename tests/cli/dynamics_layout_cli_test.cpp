@@ -395,4 +395,22 @@ TEST(DynamicsLayoutCli, EveryBadTakeupFieldNamedAtOnce) {
                 wheel("teeth = 12\nrole = \"driven\"\ninertia = 0.02\ntakeup_force = 10\n")));
   EXPECT_EQ(line.status, 2);
   EXPECT_NE(line.err.find("dynamics.sprocket[1].takeup_force"), std::string::npos) << line.err;
+  // a slide pointing into the loop (+y, for the idler below the line whose wrap faces −y) would
+  // push the idler off the chain: refused with the wrap's outward bisector; −y runs
+  for (const auto& [direction, refused] : {std::pair{"90", true}, std::pair{"-90", false}}) {
+    const CliRun dir =
+        run("dynamics " +
+            write("takeup_dir.toml",
+                  head("") +
+                      wheel("teeth = 12\nrole = \"driver\"\nspeed = \"13 rad/s\"\ncentre_x = 0\n"
+                            "centre_y = 0\n") +
+                      wheel("teeth = 18\nrole = \"driven\"\ninertia = 0.02\ncentre_x = \"300 mm\"\n"
+                            "centre_y = 0\n") +
+                      wheel("teeth = 15\nrole = \"idler\"\ninertia = 0.002\ncentre_x = \"150 mm\"\n"
+                            "centre_y = \"-175 mm\"\ntakeup_force = 600\ntakeup_direction = " +
+                            std::string(direction) + "\n")));
+    EXPECT_EQ(dir.status, refused ? 2 : 0) << direction << "\n" << dir.err;
+    EXPECT_EQ(dir.err.find("dynamics.sprocket[2].takeup_direction") != std::string::npos, refused)
+        << dir.err;
+  }
 }

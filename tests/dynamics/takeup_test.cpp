@@ -180,6 +180,49 @@ void span_tensions(const Loop& l, const State& s, double& left, double& right) {
   right = count[1] ? sum[1] / count[1] : NAN;
 }
 
+// With hinge friction the Newton matrix is block-pentadiagonal: the dense verification matrix
+// (newton_system) holds its far blocks too, every node column against central differences of the
+// residual, the take-up's borders included.
+TEST(DynamicsTakeup, JacobianWithHingeFrictionMatchesFiniteDifferences) {
+  Loop l = three_wheels(13.0, 10.0, 600.0, 2e4, 50.0);
+  l.model.hinge.arm = 0.003;  // sliding hinges, 12B's pin (μ 0.1 × ~6 mm diameter is ~0.3 mm)
+  l.model.hinge.rate_band = 5.0;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-2e-5, 2e-5);
+  const double h = 1e-4;
+  Integrator integ(l.model, {.step = h, .theta = 0.6});
+  const std::size_t n = l.model.nodes(), size = integ.unknowns();
+  std::vector<double> u(size);
+  for (std::size_t i = 0; i < n; ++i) {
+    u[2 * i] = l.state.x[i] + h * l.state.vx[i] + jitter(rng);
+    u[2 * i + 1] = l.state.y[i] + h * l.state.vy[i] + jitter(rng);
+  }
+  u[2 * n] = l.state.angle[1] + h * l.state.speed[1];
+  u[2 * n + 1] = l.state.angle[2] + h * l.state.speed[2];
+  u[2 * n + 2] = l.state.slide[2] + 1e-4;
+  std::vector<double> r0, jac, rp, rm;
+  integ.newton_system(l.model, l.state, u, r0, &jac);
+  double far = 0.0;  // the far blocks are there: node 2's rows in node 0's columns
+  for (std::size_t a = 0; a < 2; ++a)
+    for (std::size_t b = 0; b < 2; ++b) far += std::abs(jac[(4 + a) * size + b]);
+  ASSERT_GT(far, 0.0);
+  for (std::size_t c = 0; c < 2 * n; ++c) {
+    std::vector<double> v = u;
+    v[c] += 1e-9;
+    integ.newton_system(l.model, l.state, v, rp, nullptr);
+    v[c] -= 2e-9;
+    integ.newton_system(l.model, l.state, v, rm, nullptr);
+    double scale = 0.0;
+    std::vector<double> fd(size);
+    for (std::size_t r = 0; r < size; ++r) {
+      fd[r] = (rp[r] - rm[r]) / 2e-9;
+      scale = std::max(scale, std::abs(fd[r]));
+    }
+    for (std::size_t r = 0; r < size; ++r)
+      EXPECT_NEAR(jac[r * size + c], fd[r], 1e-5 * scale) << "row " << r << " column " << c;
+  }
+}
+
 // Statics: the driver held, no load, the idler pushed down by a constant force (then by a
 // spring with a preload) settles where the span tensions balance it.
 TEST(DynamicsTakeup, StaticTensionBalancesTheTakeupForce) {

@@ -95,8 +95,8 @@ class Integrator {
   /// For verification only (O(N²) memory): the step's residual R at the iterate `unknowns` —
   /// the nodes' (x₁, y₁) interleaved, then the driven wheels' ψ₁ in wheel order, then the
   /// take-ups' s₁ in wheel order — and, when `jacobian` is given, the Jacobian the step's Newton
-  /// iteration uses there, dense and row-major, assembled from its blocks and borders. Pinned
-  /// nodes and hinge friction are not supported here.
+  /// iteration uses there, dense and row-major, assembled from its blocks (hinge friction's far
+  /// blocks too) and borders. Pinned nodes are not supported here.
   void newton_system(const Model& model, const State& state, std::span<const double> unknowns,
                      std::vector<double>& residual, std::vector<double>* jacobian);
 

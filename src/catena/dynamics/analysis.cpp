@@ -537,6 +537,23 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
                           shown((q.to - q.from) * 180.0 / kPi) + " deg)"});
   }
   if (!wrapped) return;
+  // a take-up pushes its idler against the chain: its slide must point out of the loop, along
+  // the wrap's outward bisector (the chain's resultant on the idler points the other way); one
+  // pointing into the loop would push the idler off the chain, nothing holding it
+  for (const PathPiece& q : s.path.pieces) {
+    if (!q.arc || !s.wheels[q.wheel].takeup) continue;
+    const double mid = 0.5 * (q.from + q.to), e = s.wheels[q.wheel].takeup_direction;
+    const double along = std::cos(e - mid);
+    if (along > 0.0) continue;
+    const auto it = wheels[q.wheel].seen.find("takeup_direction");
+    issues.push_back(
+        {"dynamics.sprocket[" + std::to_string(q.wheel) + "].takeup_direction" +
+             (it == wheels[q.wheel].seen.end() ? "" : " (line " + std::to_string(it->second) + ")"),
+         shown(e * 180.0 / kPi) + " deg",
+         "a slide that pushes the idler into the chain: within 90 deg of the wrap's outward "
+         "bisector, " +
+             shown(std::remainder(mid, 2.0 * kPi) * 180.0 / kPi) + " deg"});
+  }
 
   // the links: a count whose chord closes the loop with every wrapped roller within its seat's
   // clearance of the seat centre (the start then presses no roller into a tooth, as on the line)
@@ -891,7 +908,8 @@ Setup parse(const analysis::Inputs& in) {
                           "line; the free layout of pocket wheels is not built)"});
     }
     const auto mu = wheels[i].seen.find("seat_friction");
-    if (mu != wheels[i].seen.end() && wheels[i].seat_friction && *wheels[i].seat_friction != 0.0)
+    if (mu != wheels[i].seen.end() && wheels[i].seat_friction && *wheels[i].seat_friction > 0.0 &&
+        *wheels[i].seat_friction <= 1.0)  // (outside [0, 1] it is reported as such)
       issues.push_back({"dynamics.sprocket[" + std::to_string(i) + "].seat_friction (line " +
                             std::to_string(mu->second) + ")",
                         shown(*wheels[i].seat_friction),
@@ -1331,9 +1349,9 @@ double chain_torque(const Model& model, const State& s, std::size_t w) {
   const Sprocket wheel = at_slide(model.sprockets[w], s.slide[w]);  // a take-up's where it is
   double sum = 0.0;
   for (std::size_t i = 0; i < s.nodes(); ++i)
-    sum += seat_contact(wheel, s.x[i], s.y[i], s.vx[i] - s.slide_speed[w] * wheel.takeup_dx,
-                        s.vy[i] - s.slide_speed[w] * wheel.takeup_dy, s.angle[w], s.speed[w])
-               .torque;
+    sum += wheel_contact(wheel, s.x[i], s.y[i], s.vx[i] - s.slide_speed[w] * wheel.takeup_dx,
+                         s.vy[i] - s.slide_speed[w] * wheel.takeup_dy, s.angle[w], s.speed[w])
+               .torque;  // the ISO seat or the pocket
   return sum;
 }
 
@@ -2064,8 +2082,10 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (d.work_balance)
     t << "  work balance: input " << format_g(r.input_work, 5) << " J, friction "
       << format_g(r.friction_work, 5) << " J, link dampers " << format_g(r.damper_work, 5)
-      << " J, contact dampers " << format_g(r.contact_damping_work, 5) << " J, numerical "
-      << format_g(r.numerical_work, 4) << " J\n";
+      << " J, contact dampers " << format_g(r.contact_damping_work, 5) << " J, "
+      << (r.takeup.empty() ? std::string()
+                           : "take-up dampers " + format_g(r.takeup_damper_work, 5) + " J, ")
+      << "numerical " << format_g(r.numerical_work, 4) << " J\n";
   if (any_seat_friction(d)) {
     t << "  seat friction ";
     if (per_wheel_friction(d)) {

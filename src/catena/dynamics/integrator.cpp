@@ -645,6 +645,12 @@ void Integrator::newton_system(const Model& model, const State& s, std::span<con
     put(0, n - 1, solver_.lower[0]);
     put(n - 1, 0, solver_.upper[n - 1]);
   }
+  // hinge friction: the blocks (i, i − 2) and (i, i + 2), modulo n on a loop (where two offsets
+  // name one column, at n = 3 or 4, they add up, as BlockPentadiagonalSolver takes them)
+  for (std::size_t i = 0; pentadiagonal_ && i < n; ++i) {
+    if (model.closed || i >= 2) put(i, (i + n - 2) % n, far_lower_[i]);
+    if (model.closed || i + 2 < n) put(i, (i + 2) % n, far_upper_[i]);
+  }
   for (std::size_t a = 0; a < m; ++a) {
     for (std::size_t i = 0; i < n; ++i) {
       J[(2 * i) * size + 2 * n + a] = bcol_[a][i].x;
