@@ -828,6 +828,21 @@ Setup parse(const analysis::Inputs& in) {
         issues.push_back({at(key), value.count(key) ? shown(value[key]) : "(given)",
                           std::string("only with wheel = \"pocket\"")});
   }
+  // the case file's chain.type (or --chain-type) and the wheel agree: a round-link chain runs on
+  // pocket wheels, a roller chain on ISO 606 sprockets; neither is implied
+  // (docs/models/dynamics.md)
+  if (in.present("chain_type")) {
+    const std::string type = in.at("chain_type").text;
+    const std::string given = line.count("wheel") ? "'" + wheel + "'" : "(missing)";
+    if (type == "round-link" && !s.pocket)
+      issues.push_back({at("wheel"), given,
+                        "\"pocket\" with chain.type = \"round-link\" (a round-link chain runs "
+                        "on pocket wheels: wheel = \"pocket\", pitch = t, wire_diameter = d)"});
+    if (type == "roller-iso606" && s.pocket)
+      issues.push_back({at("wheel"), given,
+                        "\"iso606\" or omitted with chain.type = \"roller-iso606\" (pocket "
+                        "wheels carry a round-link chain: chain.type = \"round-link\")"});
+  }
   // the chain: the catalogue's values, each overridable
   std::optional<contact::ChainDimensions> row_found;
   if (has_chain) {
@@ -2170,11 +2185,20 @@ analysis::Analysis make() {
   a.chain_types = {"roller-iso606", "round-link"};  // round-link: wheel = "pocket"
   a.formats = {.table = true, .csv = true, .drawing = false};
   using analysis::quantity;
+  Parameter chain_type = analysis::choice(
+      "chain_type", {"roller-iso606", "round-link"},
+      "the chain's type, which dynamics.wheel must agree with: round-link needs wheel = pocket, "
+      "roller-iso606 refuses it (case files: from chain.type)");
+  chain_type.cli_only = true;  // a case file's chain.type chooses it (the variants below)
   a.parameters = {
       table_parameter(),
       quantity("duration", K::kTime, "simulated time (overrides dynamics.duration)") |
           analysis::NotShared{},
-      quantity("step", K::kTime, "time step h (overrides dynamics.step)") | analysis::NotShared{}};
+      quantity("step", K::kTime, "time step h (overrides dynamics.step)") | analysis::NotShared{},
+      chain_type};
+  // a case file's chain.type sets it (the variants): the wheel must agree with it
+  a.variants = {{"roller-iso606", {{{"chain_type", "roller-iso606"}}, {}}},
+                {"round-link", {{{"chain_type", "round-link"}}, {}}}};
   analysis::set_functions<Result>(a, run, describe);
   a.work_of = estimated_work;
   a.work_unit = "link-steps";
