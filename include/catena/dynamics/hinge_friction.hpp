@@ -62,6 +62,14 @@ struct HingeCouple {
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
                          const double y1[3], double theta, double step);
+/// The same with the two links' chord lengths given: `length0` at the start of the step
+/// (|d₀|), `length1` at the end (|d₁|), as the integrator has them from its links (each link
+/// serves two hinges; the square roots are taken once). They must be the square roots of the
+/// chords' squared lengths for the result to equal the overload above.
+HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
+                         const double x0[3], const double y0[3], const double x1[3],
+                         const double y1[3], double theta, double step, const double length0[2],
+                         const double length1[2]);
 /// Both links of rest length `pitch`.
 inline HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, double pitch,
                                 const double x0[3], const double y0[3], const double x1[3],

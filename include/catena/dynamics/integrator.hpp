@@ -119,6 +119,7 @@ class Integrator {
   std::vector<Mat2> far_lower_, far_upper_;  // blocks (i, i − 2) and (i, i + 2) (hinge friction)
   std::vector<double> ux_, uy_;              // the Newton iterate x₁
   std::vector<double> l0_;                   // link lengths at the start of the step
+  std::vector<double> l1_;                   // link lengths at the iterate (assemble's)
   std::vector<Vec2> delta_;                  // Newton correction
   std::vector<double> psi1_;                 // sprocket angles at the end of the step (iterate)
   std::vector<double> slide1_;  // take-ups' slides at the end of the step (iterate), per wheel

@@ -356,8 +356,73 @@ void BlockPentadiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec
 
 void BlockPentadiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec2> x,
                                           std::span<const Vec2> b2, std::span<Vec2> x2) {
-  substitute(b, x);
-  substitute(b2, x2);
+  if (!blocked_) {  // the pivoted band solve: one right-hand side at a time
+    substitute(b, x);
+    substitute(b2, x2);
+    return;
+  }
+  if (x.size() != n_ || b.size() != n_ || x2.size() != n_ || b2.size() != n_) {
+    throw std::invalid_argument("span of the wrong size");
+  }
+  // Both right-hand sides in one pass over the block factors; per column the same operations in
+  // the same order as substitute(b, x), so the results are bit-identical to two calls.
+  const std::size_t n = n_, m = m_;
+  double* y = y_.data();
+  double* w = y2_.data();
+  for (std::size_t i = 0; i < n; ++i) {
+    y[2 * i] = b[i].x;
+    y[2 * i + 1] = b[i].y;
+    w[2 * i] = b2[i].x;
+    w[2 * i + 1] = b2[i].y;
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2 yk{y[2 * k], y[2 * k + 1]}, wk{w[2 * k], w[2 * k + 1]};
+    for (std::size_t r = k + 1; r <= std::min(n - 1, k + 2); ++r) {
+      const Mat2& l = f_[k + 2 - r][r];
+      const Vec2 d = l * yk, e = l * wk;
+      y[2 * r] -= d.x;
+      y[2 * r + 1] -= d.y;
+      w[2 * r] -= e.x;
+      w[2 * r + 1] -= e.y;
+    }
+  }
+  for (std::size_t k = n; k-- > 0;) {
+    Vec2 s{y[2 * k], y[2 * k + 1]}, t{w[2 * k], w[2 * k + 1]};
+    for (std::size_t c = k + 1; c <= std::min(n - 1, k + 2); ++c) {
+      const Mat2& u = f_[c + 2 - k][k];
+      const Vec2 d = u * Vec2{y[2 * c], y[2 * c + 1]}, e = u * Vec2{w[2 * c], w[2 * c + 1]};
+      s = {s.x - d.x, s.y - d.y};
+      t = {t.x - e.x, t.y - e.y};
+    }
+    const Vec2 xs = f_[2][k] * s, xt = f_[2][k] * t;
+    y[2 * k] = xs.x;
+    y[2 * k + 1] = xs.y;
+    w[2 * k] = xt.x;
+    w[2 * k + 1] = xt.y;
+  }
+  if (closure_) {
+    double z[4], z2[4];
+    for (std::size_t r = 0; r < 4; ++r) {
+      double s = y[r], t = w[r];
+      for (std::size_t k = 0; k < 4; ++k) {
+        s += h_[r][k] * y[m - 4 + k];
+        t += h_[r][k] * w[m - 4 + k];
+      }
+      z[r] = s;
+      z2[r] = t;
+    }
+    lu4_solve(cap_, cap_piv_, z);
+    lu4_solve(cap_, cap_piv_, z2);
+    for (std::size_t r = 0; r < m; ++r) {
+      const double* q = &q_[4 * r];
+      y[r] -= q[0] * z[0] + q[1] * z[1] + q[2] * z[2] + q[3] * z[3];
+      w[r] -= q[0] * z2[0] + q[1] * z2[1] + q[2] * z2[2] + q[3] * z2[3];
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = {y[2 * i], y[2 * i + 1]};
+    x2[i] = {w[2 * i], w[2 * i + 1]};
+  }
 }
 
 }  // namespace catena::dynamics

@@ -32,6 +32,20 @@ double rolling_hinge_arm(double rolling_coefficient, double plate_radius, double
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
                          const double y1[3], double theta, double step) {
+  double length0[2], length1[2];
+  for (int j = 0; j < 2; ++j) {
+    const double d0x = x0[j + 1] - x0[j], d0y = y0[j + 1] - y0[j];
+    const double d1x = x1[j + 1] - x1[j], d1y = y1[j + 1] - y1[j];
+    length0[j] = std::sqrt(d0x * d0x + d0y * d0y);
+    length1[j] = std::sqrt(d1x * d1x + d1y * d1y);
+  }
+  return hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step, length0, length1);
+}
+
+HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
+                         const double x0[3], const double y0[3], const double x1[3],
+                         const double y1[3], double theta, double step, const double length0[2],
+                         const double length1[2]) {
   HingeCouple hc;
   double turn[2], tension_sum = 0.0;
   double px[2], py[2];  // perp(d_θ)/|d_θ|² per link
@@ -47,8 +61,8 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
     px[j] = -my * im2;
     py[j] = mx * im2;
     // the elastic tension at the θ point, with the integrator's interpolated length
-    const double l1 = std::sqrt(d1x * d1x + d1y * d1y);
-    const double lt = (1.0 - theta) * std::sqrt(d0x * d0x + d0y * d0y) + theta * l1;
+    const double l1 = length1[j];
+    const double lt = (1.0 - theta) * length0[j] + theta * l1;
     tension_sum += axial_stiffness * (lt - rest[j]);
     // ∂turn/∂d₁ = perp(d₀)/|d_θ|² − turn 2θ d_θ/|d_θ|²
     tx[j] = (-d0y - 2.0 * theta * turn[j] * mx) * im2;

@@ -55,6 +55,7 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
       ux_(model.nodes()),
       uy_(model.nodes()),
       l0_(model.links()),
+      l1_(model.links()),
       delta_(model.nodes()),
       psi1_(model.sprockets.size()),
       slide1_(model.sprockets.size()),
@@ -119,6 +120,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     const double l0 = l0_[j];
     const double l1 = std::sqrt(
         d1x * d1x + d1y * d1y);  // sqrt, not hypot: no overflow at chain scales, and faster
+    l1_[j] = l1;
     const double lt = (1.0 - th) * l0 + th * l1;
     const double mx = (1.0 - th) * d0x + th * d1x, my = (1.0 - th) * d0y + th * d1y;
     // φ = [k (l_θ − p) + c (l₁ − l₀)/h] / l_θ; the force on node a is φ d_θ, on node b −φ d_θ.
@@ -163,7 +165,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       const double x0[3] = {s.x[ha], s.x[i], s.x[hb]}, y0[3] = {s.y[ha], s.y[i], s.y[hb]};
       const double x1[3] = {ux_[ha], ux_[i], ux_[hb]}, y1[3] = {uy_[ha], uy_[i], uy_[hb]};
       const double rest[2] = {model.rest_length(ha), model.rest_length(i)};
-      const HingeCouple hc = hinge_couple(model.hinge, k, rest, x0, y0, x1, y1, th, h);
+      // links ha (ha → i) and i (i → hb): their lengths from the links' loop above
+      const double length0[2] = {l0_[ha], l0_[i]}, length1[2] = {l1_[ha], l1_[i]};
+      const HingeCouple hc =
+          hinge_couple(model.hinge, k, rest, x0, y0, x1, y1, th, h, length0, length1);
       hinge_work_ += hc.work;
       const std::size_t node[3] = {ha, i, hb};
       for (int q = 0; q < 3; ++q) {
