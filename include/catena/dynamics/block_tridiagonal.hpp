@@ -32,6 +32,23 @@ struct Mat2 {
   double a = 0.0, b = 0.0, c = 0.0, d = 0.0;
 };
 
+// The block solvers' 2×2 arithmetic (block_tridiagonal.cpp, block_pentadiagonal.cpp).
+inline Mat2 operator*(const Mat2& p, const Mat2& q) {
+  return {p.a * q.a + p.b * q.c, p.a * q.b + p.b * q.d, p.c * q.a + p.d * q.c,
+          p.c * q.b + p.d * q.d};
+}
+inline Vec2 operator*(const Mat2& p, Vec2 v) {
+  return {p.a * v.x + p.b * v.y, p.c * v.x + p.d * v.y};
+}
+inline Mat2 operator-(const Mat2& p, const Mat2& q) {
+  return {p.a - q.a, p.b - q.b, p.c - q.c, p.d - q.d};
+}
+inline Mat2 operator+(const Mat2& p, const Mat2& q) {
+  return {p.a + q.a, p.b + q.b, p.c + q.c, p.d + q.d};
+}
+inline Vec2 operator-(Vec2 p, Vec2 q) { return {p.x - q.x, p.y - q.y}; }
+inline Vec2 operator+(Vec2 p, Vec2 q) { return {p.x + q.x, p.y + q.y}; }
+
 /// Why a solve stopped.
 enum class SolveStatus {
   kSolved,

@@ -10,15 +10,6 @@
 namespace catena::dynamics {
 namespace {
 
-Mat2 operator*(const Mat2& p, const Mat2& q) {
-  return {p.a * q.a + p.b * q.c, p.a * q.b + p.b * q.d, p.c * q.a + p.d * q.c,
-          p.c * q.b + p.d * q.d};
-}
-Vec2 operator*(const Mat2& p, Vec2 v) { return {p.a * v.x + p.b * v.y, p.c * v.x + p.d * v.y}; }
-Mat2 operator-(const Mat2& p, const Mat2& q) {
-  return {p.a - q.a, p.b - q.b, p.c - q.c, p.d - q.d};
-}
-
 bool usable_pivot(double p) { return std::isfinite(p) && std::abs(p) > 1e-300; }
 
 // In-place LU with partial pivoting of a 4×4 matrix; false when a pivot is zero.

@@ -8,20 +8,6 @@
 namespace catena::dynamics {
 namespace {
 
-Mat2 operator*(const Mat2& p, const Mat2& q) {
-  return {p.a * q.a + p.b * q.c, p.a * q.b + p.b * q.d, p.c * q.a + p.d * q.c,
-          p.c * q.b + p.d * q.d};
-}
-Vec2 operator*(const Mat2& p, Vec2 v) { return {p.a * v.x + p.b * v.y, p.c * v.x + p.d * v.y}; }
-Mat2 operator-(const Mat2& p, const Mat2& q) {
-  return {p.a - q.a, p.b - q.b, p.c - q.c, p.d - q.d};
-}
-Mat2 operator+(const Mat2& p, const Mat2& q) {
-  return {p.a + q.a, p.b + q.b, p.c + q.c, p.d + q.d};
-}
-Vec2 operator-(Vec2 p, Vec2 q) { return {p.x - q.x, p.y - q.y}; }
-Vec2 operator+(Vec2 p, Vec2 q) { return {p.x + q.x, p.y + q.y}; }
-
 // The inverse of a 2×2 block; false when it is singular relative to its own size. Inline: it is
 // called once per block row of every factorisation, on the recurrence's critical path.
 inline bool invert(const Mat2& m, Mat2& inv) {
