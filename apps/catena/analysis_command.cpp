@@ -6,6 +6,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 #include "catena/catena.hpp"
@@ -64,6 +65,40 @@ struct State {
   std::string format, output, csv, svg, dxf;
   bool allow_large = false;
 };
+
+// The case file's chain.type, when it has one.
+std::optional<io::CaseValue> chain_type_of(const io::CaseFile& file) {
+  const io::CaseValue* v = file.find("chain.type");
+  if (v == nullptr) return std::nullopt;
+  return *v;
+}
+
+// Adds the values the case file's chain type implies for the analysis (its Variant's `set`),
+// except those given as flags; a chain type the analysis does not take is an issue.
+void apply_variant(const analysis::Analysis& a, const State& state, const io::CaseValue& type,
+                   std::vector<io::RawInput>& raw, std::vector<Issue>& issues) {
+  if (a.variants.empty()) return;
+  const std::string where = type.path + " (line " + std::to_string(type.line) + ")";
+  const analysis::Analysis::Variant* variant = nullptr;
+  std::string types;
+  for (const auto& [name, v] : a.variants) {
+    if (name == type.text && type.type == io::CaseValue::Type::kString) variant = &v;
+    types += (types.empty() ? "" : ", ") + name;
+  }
+  if (variant == nullptr) {
+    issues.push_back(
+        {where, "'" + type.text + "'", "a chain type '" + a.name + "' takes: " + types});
+    return;
+  }
+  for (const auto& [key, value] : variant->set) {
+    const auto given = state.texts.find(key);
+    if (given != state.texts.end() && !given->second.empty()) continue;  // the flag wins
+    const Parameter* param = a.parameter(key);
+    const bool is_flag = param && param->type == ParameterType::kFlag;
+    raw.push_back(
+        {key, value, is_flag ? io::RawInput::Type::kBoolean : io::RawInput::Type::kText, {}, {}});
+  }
+}
 
 }  // namespace
 
@@ -148,6 +183,7 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
     }
     if (const CLI::Option* o = from_parent("--allow-large")) state->allow_large = o->count() > 0;
     std::vector<io::RawInput> raw;
+    std::optional<io::CaseValue> case_type;  // the positional case file's chain.type
     if (state->allow_large)
       raw.push_back(
           {std::string(analysis::kAllowLarge), "true", io::RawInput::Type::kBoolean, {}, {}});
@@ -164,12 +200,17 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
                              "a readable TOML file with a [" + p.name + "] table"}});
         std::stringstream text;
         text << in.rdbuf();
-        raw.push_back(io::table_input(io::parse_case(text.str(), path), p));
+        const io::CaseFile file = io::parse_case(text.str(), path);
+        if (p.required) case_type = chain_type_of(file);
+        raw.push_back(io::table_input(file, p));
       } else if (!state->texts[p.name].empty()) {
         raw.push_back({p.name, state->texts[p.name], io::RawInput::Type::kText, {}, {}});
       }
     }
     std::vector<Issue> issues;
+    // the case file's chain.type chooses the analysis' variant, as `catena run` does, unless a
+    // flag of the variant's (--chain-type) was given
+    if (case_type) apply_variant(a, *state, *case_type, raw, issues);
     analysis::Inputs inputs = io::bind(a, raw, issues);
     throw_if_any(as_flags(a, std::move(issues)));
     inputs.want_drawing(!state->svg.empty() || !state->dxf.empty());

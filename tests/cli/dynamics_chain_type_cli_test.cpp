@@ -2,7 +2,8 @@
 // dynamics.md, "Chain type and wheel"; docs/cli.md). A round-link chain without wheel = "pocket"
 // and a roller chain with it are refused, naming dynamics.wheel and what it must be; the accepted
 // combinations run; `catena dynamics FILE` on a file with only a [dynamics] table is unchanged,
-// and --chain-type applies the same check on the command line.
+// and --chain-type applies the same check on the command line; a whole case file's chain.type
+// is checked by `catena dynamics` too.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -123,6 +124,30 @@ TEST(DynamicsChainTypeCli, CommandLineReadsOnlyTheDynamicsTableUnlessTold) {
   EXPECT_EQ(agrees.out.substr(agrees.out.find("\"energy_drift\"")), plain.out.substr(from));
   EXPECT_EQ(agrees.out.substr(0, agrees.out.find("\"wall_time\"")),
             plain.out.substr(0, plain.out.find("\"wall_time\"")));
+}
+
+TEST(DynamicsChainTypeCli, CommandLineReadsTheCaseFilesChainType) {
+  // a whole case file: its chain.type is checked as `catena run` checks it
+  const std::string roller_on_pocket =
+      edited(kPocket, "roller_on_pocket.toml", {{"type = ", "type = \"roller-iso606\""}});
+  const CliRun refused = run("dynamics " + roller_on_pocket);
+  EXPECT_EQ(refused.status, 2) << refused.err;
+  EXPECT_TRUE(has(refused, "dynamics.wheel (line 15) = 'pocket': expected \"iso606\" or omitted"))
+      << refused.err;
+  EXPECT_EQ(refused.status, run("run " + roller_on_pocket).status);
+  // a type the command does not take names chain.type and the types it takes
+  const CliRun unknown = run(
+      "dynamics " + edited(kPocket, "hinge_type.toml", {{"type = ", "type = \"rolling-hinge\""}}));
+  EXPECT_EQ(unknown.status, 2) << unknown.err;
+  EXPECT_TRUE(has(unknown,
+                  "chain.type (line 10) = 'rolling-hinge': expected a chain type "
+                  "'dynamics' takes: roller-iso606, round-link"))
+      << unknown.err;
+  // the flag wins over the file's type
+  const CliRun flag = run("dynamics " + roller_on_pocket + " --chain-type round-link");
+  EXPECT_EQ(flag.status, 0) << flag.err;
+  // the example itself (round-link on pocket wheels) runs
+  EXPECT_EQ(run("dynamics " + edited(kPocket, "agrees.toml", {})).status, 0);
 }
 
 }  // namespace
