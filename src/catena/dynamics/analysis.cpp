@@ -1344,7 +1344,8 @@ Setup parse(const analysis::Inputs& in) {
                             "): raise output_interval, shorten the run, or positions = false"});
   }
   // the report's spectrum window (docs/models/dynamics.md, "Report"): at least 16 samples
-  if (issues.empty() && value.count("spectrum_start")) {
+  if (value.count("spectrum_start") && s.duration > 0.0 && std::isfinite(s.duration) &&
+      s.step > 0.0 && std::isfinite(s.step) && s.interval > 0.0 && std::isfinite(s.interval)) {
     const double every = std::max(1.0, std::round(s.interval / s.step));
     const double last = std::round(s.duration / s.step) * s.step;  // the last sample's time
     const double latest = last - 15.0 * every * s.step;
