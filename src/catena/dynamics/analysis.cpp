@@ -162,7 +162,8 @@ std::vector<Parameter> sprocket_fields() {
                "the wheel's centre, x (given on every sprocket or none: without centres, two "
                "equal wheels on a line)"),
       quantity("centre_y", K::kLength, "the wheel's centre, y (y up)"),
-      // the take-up (docs/models/dynamics.md, "Take-up"): an idler's centre on a slide
+      // the take-up (docs/models/dynamics.md, "Take-up"): an idler's or a driven wheel's centre
+      // on a slide
       quantity("takeup_force", K::kForce,
                "idler or driven: the take-up's force along its slide, in [0, 1e6] N (with "
                "takeup_stiffness: the spring's preload at the start; > 0 without it)"),
