@@ -333,5 +333,100 @@ TEST(DynamicsTakeup, BadFieldsAreRefusedTogether) {
   EXPECT_TRUE(slide_issue);
 }
 
+// The end stop's law (slide_stop) against its own definition: the force is minus the derivative
+// of its energy (central differences, with the damper off), its stiffness and damping the
+// derivatives of the force, it pushes toward the travel from either end and never pulls, and it
+// is zero within the travel.
+TEST(DynamicsTakeup, EndStopLawIsConsistent) {
+  Sprocket w = three_wheels(13.0, 0.0, 600.0, 0.0, 0.0).model.sprockets[2];
+  w.takeup_travel_min = -2e-3;
+  w.takeup_travel_max = 1e-3;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> depth(0.0, 4.0 * w.contact_smoothing);
+  std::uniform_real_distribution<double> speed(-0.05, 0.05);
+  for (int trial = 0; trial < 200; ++trial) {
+    const bool far = trial % 2 == 0;  // past travel_max (else before travel_min)
+    const double g = depth(rng), v = speed(rng);
+    const double s = far ? w.takeup_travel_max + g : w.takeup_travel_min - g;
+    w.contact_damping = 0.0;
+    const SlideStop elastic = slide_stop(w, s, 0.0);
+    EXPECT_NEAR(elastic.penetration, g, 1e-15);
+    const double eps = 1e-10;
+    const double dE =
+        (slide_stop(w, s + eps, 0.0).energy - slide_stop(w, s - eps, 0.0).energy) / (2 * eps);
+    EXPECT_NEAR(elastic.force, -dE, 1e-5 * std::max(1.0, std::abs(elastic.force))) << g;
+    EXPECT_EQ(elastic.force > 0.0, !far);  // toward the travel
+    w.contact_damping = 800.0;
+    const SlideStop st = slide_stop(w, s, v);
+    if (st.force == 0.0) {  // separating fast enough: no pull
+      EXPECT_EQ(st.stiffness, 0.0);
+      continue;
+    }
+    EXPECT_EQ(st.force > 0.0, !far);
+    const double ks =
+        -(slide_stop(w, s + eps, v).force - slide_stop(w, s - eps, v).force) / (2 * eps);
+    const double cs = -(slide_stop(w, s, v + 1e-7).force - slide_stop(w, s, v - 1e-7).force) / 2e-7;
+    EXPECT_NEAR(st.stiffness, ks, 1e-5 * std::abs(ks) + 1e-3) << g << " " << v;
+    EXPECT_NEAR(st.damping, cs, 1e-6 * std::abs(cs) + 1e-9) << g << " " << v;
+    EXPECT_LE(st.damping_power, 0.0);
+  }
+  // within the travel: nothing
+  for (const double s : {-2e-3, -1e-3, 0.0, 1e-3}) {
+    const SlideStop st = slide_stop(w, s, 0.3);
+    EXPECT_EQ(st.force, 0.0);
+    EXPECT_EQ(st.energy, 0.0);
+    EXPECT_EQ(st.penetration, 0.0);
+  }
+}
+
+// The Newton matrix's slide entries with an end stop pressed (either end, the damper on) against
+// central differences of the residual: the stop's stiffness hθk and damping c join the slide's
+// own entry, nothing else.
+TEST(DynamicsTakeup, EndStopJacobianMatchesFiniteDifferences) {
+  for (const double past : {1.0, -1.0}) {
+    Loop l = three_wheels(13.0, 10.0, 600.0, 0.0, 50.0);
+    Sprocket& idler = l.model.sprockets[2];
+    idler.contact_damping = 800.0;
+    idler.takeup_travel_max = 1e-4;
+    idler.takeup_travel_min = -1e-4;
+    l.state.slide[2] = 0.9e-4 * past;
+    l.state.slide_speed[2] = 0.01 * past;
+    const double h = 1e-4;
+    Integrator integ(l.model, {.step = h, .theta = 0.6});
+    const std::size_t n = l.model.nodes(), size = integ.unknowns();
+    std::vector<double> u(size);
+    for (std::size_t i = 0; i < n; ++i) {
+      u[2 * i] = l.state.x[i] + h * l.state.vx[i];
+      u[2 * i + 1] = l.state.y[i] + h * l.state.vy[i];
+    }
+    u[2 * n] = l.state.angle[1] + h * l.state.speed[1];
+    u[2 * n + 1] = l.state.angle[2] + h * l.state.speed[2];
+    const std::size_t rs = 2 * n + 2;
+    u[rs] = past * 1.3e-4;  // its θ point 2.2e-5 past the end: beyond the smoothing ε
+    std::vector<double> r0, jac, rp, rm;
+    integ.newton_system(l.model, l.state, u, r0, &jac);
+    std::vector<double> v = u;
+    const double eps = 1e-10;
+    v[rs] += eps;
+    integ.newton_system(l.model, l.state, v, rp, nullptr);
+    v[rs] -= 2 * eps;
+    integ.newton_system(l.model, l.state, v, rm, nullptr);
+    const double fd = (rp[rs] - rm[rs]) / (2 * eps);
+    EXPECT_NEAR(jac[rs * size + rs], fd, 1e-6 * std::abs(fd)) << past;
+    // the stop is what dominates the entry: h θ k_c + c_c against the slide's m/(hθ) + c_t
+    EXPECT_GT(jac[rs * size + rs], 0.5 * h * 0.6 * idler.contact_stiffness) << past;
+    // and the stop pushes the slide back: R_s = −h F_stop + … is positive past travel_max
+    Loop free = l;
+    free.model.sprockets[2].takeup_travel_max = INFINITY;
+    free.model.sprockets[2].takeup_travel_min = -INFINITY;
+    Integrator integ_free(free.model, {.step = h, .theta = 0.6});
+    std::vector<double> r_free;
+    integ_free.newton_system(free.model, free.state, u, r_free, nullptr);
+    const double th_point = 0.4 * l.state.slide[2] + 0.6 * u[rs];
+    const SlideStop st = slide_stop(idler, th_point, (u[rs] - l.state.slide[2]) / h);
+    EXPECT_NEAR(r0[rs] - r_free[rs], -h * st.force, 1e-9 * std::abs(h * st.force)) << past;
+  }
+}
+
 }  // namespace
 }  // namespace catena::dynamics

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -71,7 +72,55 @@ struct Sprocket {
   double takeup_stiffness = 0.0;            ///< [N/m] k_t ≥ 0
   double takeup_damping = 0.0;              ///< [N·s/m] c_t ≥ 0
   double takeup_mass = 0.0;                 ///< [kg] m_t > 0, the sliding mass
+  /// [m] the slide's travel, s_min ≤ 0 ≤ s_max (±∞: unbounded): beyond either end an end stop
+  /// pushes back, unilateral, with the wheel's own contact law (contact_stiffness,
+  /// contact_damping, contact_smoothing: slide_stop)
+  double takeup_travel_min = -std::numeric_limits<double>::infinity();
+  double takeup_travel_max = std::numeric_limits<double>::infinity();
 };
+
+/// A take-up's end stop at the slide's displacement s and speed ṡ (docs/models/dynamics.md,
+/// "Take-up"): past an end by g it pushes back along the slide like a seat on its roller —
+/// k_c g²/2ε over the first ε, then k_c (g − ε/2), plus the damping c_c ṡ ramped in over ε,
+/// never pulling.
+struct SlideStop {
+  double penetration = 0.0;    ///< [m] g ≥ 0, past the nearer end (0 within the travel)
+  double force = 0.0;          ///< [N] along e (toward the travel)
+  double stiffness = 0.0;      ///< [N/m] −∂force/∂s
+  double damping = 0.0;        ///< [N·s/m] −∂force/∂ṡ
+  double energy = 0.0;         ///< [J] the stop's elastic energy at g
+  double damping_power = 0.0;  ///< [W] the stop's damper's power on the slide (≤ 0)
+};
+
+inline SlideStop slide_stop(const Sprocket& w, double s, double rate) {
+  SlideStop out;
+  if (!w.takeup) return out;
+  double dir = 0.0;  // the stop's push along e
+  if (s > w.takeup_travel_max) {
+    out.penetration = s - w.takeup_travel_max;
+    dir = -1.0;
+  } else if (s < w.takeup_travel_min) {
+    out.penetration = w.takeup_travel_min - s;
+    dir = 1.0;
+  } else {
+    return out;
+  }
+  const double g = out.penetration, eps = w.contact_smoothing, k = w.contact_stiffness;
+  const double c = w.contact_damping, gdot = -dir * rate;  // the penetration's rate
+  const bool ramp = g < eps;
+  const double elastic = ramp ? k * g * g / (2.0 * eps) : k * (g - 0.5 * eps);
+  const double kel = ramp ? k * g / eps : k;
+  const double r = ramp ? g / eps : 1.0, dr = ramp ? 1.0 / eps : 0.0;
+  out.energy =
+      ramp ? k * g * g * g / (6.0 * eps) : k * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
+  const double f = elastic + c * r * gdot;
+  if (!(f > 0.0)) return out;  // separating faster than the spring pushes: no force
+  out.force = dir * f;
+  out.stiffness = kel + c * dr * gdot;
+  out.damping = c * r;
+  out.damping_power = -c * r * gdot * gdot;
+  return out;
+}
 
 /// The wheel `w` with its centre where the slide puts it: moved by `slide` along the take-up's
 /// direction (the wheel itself when it has no take-up).

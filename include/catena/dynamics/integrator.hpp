@@ -88,6 +88,10 @@ class Integrator {
   /// [N] per sprocket: the chain's force on a take-up's wheel along its slide, e·Σ(f n − F_t),
   /// at the θ point of the last step (0 on a wheel without a take-up).
   const std::vector<double>& applied_slide_force() const { return slide_force_; }
+  /// [N] per sprocket: the magnitude of the chain's whole force on a take-up's wheel,
+  /// |Σ(f n − F_t)|, at the θ point of the last step (0 when no roller touches it, and on a wheel
+  /// without a take-up).
+  const std::vector<double>& applied_wheel_force() const { return wheel_force_; }
 
   /// The Newton system's size: 2N (the nodes' x₁, y₁) + one per driven wheel (its ψ₁) + one per
   /// take-up (its s₁).
@@ -140,6 +144,7 @@ class Integrator {
   std::vector<std::vector<Vec2>> wsol_;  // per extra: A⁻¹ times that column
   std::vector<double> schur_;            // the extras' Schur complement
   std::vector<double> slide_force_;      // per wheel: the chain's force along the slide
+  std::vector<double> wheel_force_;      // per wheel: |the chain's force| on a take-up's wheel
   std::vector<double> torque_;           // per wheel: the θ-point contact torque (last assembly)
   double max_penetration_ = 0.0;
   // the dissipative works of the last assembly's iterate (StepReport's fields)

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,10 +30,12 @@ struct ChartSeries {
   std::vector<double> values;
 };
 
-/// The loop at one instant: node positions [m] and each wheel's angle [rad].
+/// The loop at one instant: node positions [m], each wheel's angle [rad] and, when given, each
+/// wheel's centre [m] (a take-up's moves with its slide; empty: the outline's own centre).
 struct LoopFrame {
   double time = 0.0;
   std::vector<double> x, y, angle;
+  std::vector<double> centre_x, centre_y;
 };
 
 /// A sprocket's outline about its centre at angle 0 [m] (drive::tooth_outline), and its centre.
@@ -47,6 +50,9 @@ struct ReportInput {
   std::vector<ChartSeries> speed, torque, span;  ///< [rad/s], [N m], [N]
   int teeth = 0;                                 ///< z of the driver
   double driver_speed = 0.0;                     ///< ω [rad/s]: tooth mesh at z ω / 2π
+  /// [s] the spectrum's window starts at the first sample at or after this time (NaN: the
+  /// second half of the run, from sample n/2)
+  double spectrum_start = std::numeric_limits<double>::quiet_NaN();
   /// more labelled frequencies for the spectrum (the spans' natural frequencies), drawn after
   /// the mesh harmonics when below the spectrum's top frequency
   std::vector<analysis::Marker> span_markers;
@@ -79,8 +85,8 @@ analysis::Trace decimated(const std::string& name, const std::vector<double>& t,
 std::vector<analysis::Marker> mesh_markers(int teeth, double omega, double f_max);
 
 /// The charts: speeds, torques and span tensions versus time; the span-tension spectrum over
-/// the second half of the run (the first half is taken as the start-up transient); the
-/// animation, when there are frames.
+/// the second half of the run (the first half is taken as the start-up transient) or from
+/// `spectrum_start`; the animation, when there are frames.
 std::vector<analysis::Chart> report_charts(const ReportInput& in);
 
 }  // namespace catena::dynamics

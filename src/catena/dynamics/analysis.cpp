@@ -86,6 +86,9 @@ std::vector<Parameter> table_fields() {
       quantity("output_interval", K::kTime,
                "sampling interval of the series, rounded to whole steps (default: every step)"),
       number("theta", "theta of the integrator in [0.5, 1] (default 0.6; drives need >= 0.6)"),
+      quantity("spectrum_start", K::kTime,
+               "the report's span-tension spectrum from this time to the end, in [0, duration - "
+               "15 output intervals] (at least 16 samples; default: half the duration)"),
       number("gravity",
              "true (9.80665 m/s^2), false, or g in [0, 100] m/s^2, downward (-y; default: none)"),
       text("work_balance",
@@ -148,33 +151,43 @@ std::vector<Parameter> sprocket_fields() {
   using analysis::number;
   using analysis::quantity;
   using analysis::text;
-  return {number("teeth",
-                 "number of teeth z, an integer in [8, 150] (even for two wheels without centres)"),
-          text("role", "driver, driven or idler (idler: with centres only)"),
-          quantity("speed", K::kAngularSpeed, "driver: speed, counter-clockwise, > 0"),
-          number("inertia", "driven or idler: moment of inertia J [kg m^2], > 0"),
-          number("load_torque", "driven: load torque T_L [N m], >= 0"),
-          quantity("centre_x", K::kLength,
-                   "the wheel's centre, x (given on every sprocket or none: without centres, two "
-                   "equal wheels on a line)"),
-          quantity("centre_y", K::kLength, "the wheel's centre, y (y up)"),
-          // the take-up (docs/models/dynamics.md, "Take-up"): an idler's centre on a slide
-          quantity("takeup_force", K::kForce,
-                   "idler: the take-up's force along its slide, in [0, 1e6] N (with "
-                   "takeup_stiffness: the spring's preload at the start; > 0 without it)"),
-          quantity("takeup_direction", K::kAngle,
-                   "idler: the slide's direction the force pushes along, counter-clockwise from "
-                   "+x, in [-360, 360] deg"),
-          quantity("takeup_stiffness", K::kForcePerLength,
-                   "idler: the take-up spring's stiffness, in [0, 1e9] N/m (default 0: a "
-                   "constant force)"),
-          number("takeup_damping", "idler: the slide's damper [N s/m], in [0, 1e6] (default 0)"),
-          number("takeup_mass",
-                 "idler: the sliding mass [kg], in (0, 1000] (default 2 J / R^2, the idler as a "
-                 "disc of its pitch radius)"),
-          number("seat_friction",
-                 "Coulomb mu of this wheel's roller-seat contact in [0, 1] (default: "
-                 "dynamics.seat_friction)")};
+  return {
+      number("teeth",
+             "number of teeth z, an integer in [8, 150] (even for two wheels without centres)"),
+      text("role", "driver, driven or idler (idler: with centres only)"),
+      quantity("speed", K::kAngularSpeed, "driver: speed, counter-clockwise, > 0"),
+      number("inertia", "driven or idler: moment of inertia J [kg m^2], > 0"),
+      number("load_torque", "driven: load torque T_L [N m], >= 0"),
+      quantity("centre_x", K::kLength,
+               "the wheel's centre, x (given on every sprocket or none: without centres, two "
+               "equal wheels on a line)"),
+      quantity("centre_y", K::kLength, "the wheel's centre, y (y up)"),
+      // the take-up (docs/models/dynamics.md, "Take-up"): an idler's or a driven wheel's centre
+      // on a slide
+      quantity("takeup_force", K::kForce,
+               "idler or driven: the take-up's force along its slide, in [0, 1e6] N (with "
+               "takeup_stiffness: the spring's preload at the start; > 0 without it)"),
+      quantity(
+          "takeup_direction", K::kAngle,
+          "idler or driven: the slide's direction the force pushes along, counter-clockwise from "
+          "+x, in [-360, 360] deg"),
+      quantity("takeup_stiffness", K::kForcePerLength,
+               "idler or driven: the take-up spring's stiffness, in [0, 1e9] N/m (default 0: a "
+               "constant force)"),
+      number("takeup_damping",
+             "idler or driven: the slide's damper [N s/m], in [0, 1e6] (default 0)"),
+      number(
+          "takeup_mass",
+          "idler or driven: the sliding mass [kg], in (0, 1000] (default 2 J / R^2, the idler as a "
+          "disc of its pitch radius)"),
+      quantity("takeup_travel_min", K::kLength,
+               "take-up: the slide's end stop behind the start, in [-10, 0] m (default: none)"),
+      quantity("takeup_travel_max", K::kLength,
+               "take-up: the slide's end stop ahead of the start, along takeup_direction, in "
+               "[0, 10] m (default: none)"),
+      number("seat_friction",
+             "Coulomb mu of this wheel's roller-seat contact in [0, 1] (default: "
+             "dynamics.seat_friction)")};
 }
 
 const Parameter& table_parameter() {
@@ -224,7 +237,7 @@ struct SprocketInput {
   int line = 0;
   std::optional<double> teeth, speed, inertia, load_torque, centre_x, centre_y;
   std::optional<double> takeup_force, takeup_direction, takeup_stiffness, takeup_damping,
-      takeup_mass;
+      takeup_mass, takeup_travel_min, takeup_travel_max;
   std::optional<double> seat_friction;  // this wheel's μ, overriding dynamics.seat_friction
   std::string role;
   bool has_role = false;
@@ -241,6 +254,8 @@ struct LayoutWheel {
   bool takeup = false;
   double takeup_force = 0.0, takeup_direction = 0.0, takeup_stiffness = 0.0;
   double takeup_damping = 0.0, takeup_mass = NAN;
+  // the slide's end stops [m] (±infinity: none)
+  double takeup_travel_min = -INFINITY, takeup_travel_max = INFINITY;
 };
 
 struct GuideInput {
@@ -264,6 +279,7 @@ struct Setup {
   // per sprocket (in the input's order, the model's): its own μ, NaN = seat_friction
   std::vector<double> wheel_friction;
   double duration = NAN, step = NAN, interval = NAN, theta = 0.6;
+  double spectrum_start = NAN;  // [s] the report's spectrum window's start (NAN: the half)
   int teeth = 0;
   std::size_t driver = 0, driven = 1;
   double speed = NAN, inertia = NAN, load = 0.0;
@@ -313,20 +329,22 @@ bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
 constexpr std::size_t kMaxWheels = 20;  // sprockets of the free layout
 constexpr int kMinWrapTeeth = 3;        // a wheel's wrap, in teeth (docs/models/dynamics.md)
 
-constexpr const char* kTakeupKeys[] = {"takeup_force", "takeup_direction", "takeup_stiffness",
-                                       "takeup_damping", "takeup_mass"};
+constexpr const char* kTakeupKeys[] = {"takeup_force",     "takeup_direction", "takeup_stiffness",
+                                       "takeup_damping",   "takeup_mass",      "takeup_travel_min",
+                                       "takeup_travel_max"};
 
-// A take-up's keys on a wheel that is not an idler (or without centres): refused, each.
+// A take-up's keys on a driver (or without centres): refused, each.
 template <class Field>
 void refuse_takeup(const SprocketInput& w, const Field& field, std::vector<Issue>& issues) {
   for (const char* key : kTakeupKeys)
     if (w.seen.count(key))
       issues.push_back({field(key), "(given)",
-                        "a take-up only on an idler of the free layout (role = \"idler\", "
-                        "centres on every sprocket)"});
+                        "a take-up only on an idler or a driven wheel of the free layout (role = "
+                        "\"idler\" or \"driven\", centres on every sprocket)"});
 }
 
-// An idler's take-up (docs/models/dynamics.md, "Take-up"): none when no takeup_* key is given;
+// A take-up on an idler or a driven wheel (docs/models/dynamics.md, "Take-up"): none when no
+// takeup_* key is given;
 // else takeup_direction and takeup_force required, every value in its range.
 template <class Field>
 void parse_takeup(const SprocketInput& w, const Field& field, LayoutWheel& lw,
@@ -361,6 +379,10 @@ void parse_takeup(const SprocketInput& w, const Field& field, LayoutWheel& lw,
   ranged("takeup_damping", w.takeup_damping, 0.0, 1e6, false, "in [0, 1e6] N s/m", false,
          lw.takeup_damping);
   ranged("takeup_mass", w.takeup_mass, 0.0, 1000.0, true, "in (0, 1000] kg", false, lw.takeup_mass);
+  ranged("takeup_travel_min", w.takeup_travel_min, -10.0, 0.0, false,
+         "the end stop behind the start, in [-10, 0] m", false, lw.takeup_travel_min);
+  ranged("takeup_travel_max", w.takeup_travel_max, 0.0, 10.0, false,
+         "the end stop ahead of the start, in [0, 10] m", false, lw.takeup_travel_max);
   lw.takeup = ok;
 }
 
@@ -419,7 +441,7 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
       issues.push_back({field("role"), "(missing)", "driver, driven or idler"});
       continue;
     }
-    if (w.role != "idler") refuse_takeup(w, field, issues);
+    if (w.role == "driver") refuse_takeup(w, field, issues);
     if (w.role == "driver") {
       ++drivers;
       s.driver = i;
@@ -461,7 +483,7 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
       issues.push_back({field("speed"), w.speed ? shown(*w.speed) : "(given)",
                         std::string("no speed on a") + (idler ? "n idler" : " driven wheel") +
                             " (it follows from the chain)"});
-    if (idler) parse_takeup(w, field, lw, issues);
+    parse_takeup(w, field, lw, issues);  // an idler's or a driven wheel's
   }
   if (drivers != 1)
     issues.push_back({"dynamics.sprocket", std::to_string(drivers) + " driver(s)",
@@ -687,7 +709,8 @@ Setup parse(const analysis::Inputs& in) {
         issues.push_back({where(v), v.text,
                           "a key of a sprocket: teeth, role, speed, inertia, load_torque, "
                           "centre_x, centre_y, takeup_force, takeup_direction, "
-                          "takeup_stiffness, takeup_damping, takeup_mass, seat_friction"});
+                          "takeup_stiffness, takeup_damping, takeup_mass, takeup_travel_min, "
+                          "takeup_travel_max, seat_friction"});
         continue;
       }
       w.seen[key] = v.line;
@@ -711,6 +734,8 @@ Setup parse(const analysis::Inputs& in) {
       if (key == "takeup_stiffness") w.takeup_stiffness = *x;
       if (key == "takeup_damping") w.takeup_damping = *x;
       if (key == "takeup_mass") w.takeup_mass = *x;
+      if (key == "takeup_travel_min") w.takeup_travel_min = *x;
+      if (key == "takeup_travel_max") w.takeup_travel_max = *x;
       if (key == "seat_friction") w.seat_friction = *x;
       continue;
     }
@@ -949,6 +974,7 @@ Setup parse(const analysis::Inputs& in) {
   if (in.present("duration")) s.duration = in.number("duration");
   if (in.present("step")) s.step = in.number("step");
   s.interval = optional("output_interval", s.step);
+  s.spectrum_start = optional("spectrum_start", NAN);
 
   auto positive = [&](const char* key, double x, bool cli) {
     if (!std::isnan(x) && !(x > 0.0 && std::isfinite(x)))
@@ -1318,6 +1344,20 @@ Setup parse(const analysis::Inputs& in) {
                             " node-samples (links x samples; here " + shown(samples * s.links) +
                             "): raise output_interval, shorten the run, or positions = false"});
   }
+  // the report's spectrum window (docs/models/dynamics.md, "Report"): at least 16 samples
+  if (value.count("spectrum_start") && s.duration > 0.0 && std::isfinite(s.duration) &&
+      s.step > 0.0 && std::isfinite(s.step) && s.interval > 0.0 && std::isfinite(s.interval)) {
+    const double every = std::max(1.0, std::round(s.interval / s.step));
+    const double last = std::round(s.duration / s.step) * s.step;  // the last sample's time
+    const double latest = last - 15.0 * every * s.step;
+    if (!(s.spectrum_start >= 0.0 && s.spectrum_start <= latest + 1e-9 * s.step))
+      issues.push_back({at("spectrum_start"), shown(s.spectrum_start),
+                        latest >= 0.0 ? "in [0, " + shown(latest) +
+                                            "] s (the window needs at least 16 samples: the "
+                                            "duration less 15 output intervals)"
+                                      : "none: the run has fewer than 16 samples, no spectrum "
+                                        "(lengthen the run or shorten output_interval)"});
+  }
   throw_if_any(issues);
   return s;
 }
@@ -1331,7 +1371,22 @@ struct Series {
 struct TakeupSeries {
   std::size_t wheel = 0;
   std::vector<double> position, speed, force;
+  // the end stops (index 0: travel_min, 1: travel_max): the first time the slide was past the
+  // end (NAN: never), the steps it spent there and its greatest penetration
+  double stop_first[2] = {NAN, NAN};
+  int stop_steps[2] = {0, 0};
+  double stop_depth[2] = {0.0, 0.0};
+  // the chain lost (its force on the wheel at most lost_force): since when (NAN: in contact),
+  // and every stretch longer than kTakeupLossTime as {start, length}
+  double lost_since = NAN;
+  std::vector<std::pair<double, double>> lost;
 };
+
+// How long the chain's force on a take-up's wheel must stay at "zero" for the run to say the
+// wheel lost the chain, and what counts as zero: at most 1 % of the take-up's preload F₀, and at
+// most 1 N (exactly 0, no roller touching, when F₀ = 0). docs/models/dynamics.md, "Take-up".
+constexpr double kTakeupLossTime = 0.010;  // [s]
+double takeup_lost_force(const Sprocket& w) { return std::min(1.0, 0.01 * w.takeup_force); }
 
 struct Result {
   Setup setup;
@@ -1417,6 +1472,8 @@ std::vector<Sprocket> layout_sprockets(const Setup& d) {
       s.takeup_force = w.takeup_force;
       s.takeup_stiffness = w.takeup_stiffness;
       s.takeup_damping = w.takeup_damping;
+      s.takeup_travel_min = w.takeup_travel_min;
+      s.takeup_travel_max = w.takeup_travel_max;
       // the idler as a uniform disc of its pitch radius: J = m R²/2
       s.takeup_mass = std::isnan(w.takeup_mass)
                           ? 2.0 * w.inertia / (s.pitch_radius * s.pitch_radius)
@@ -1641,7 +1698,38 @@ Result run(const analysis::Inputs& in) {
   const std::size_t frames = frame_count(n, drawn);
   const int frame_every = std::max(
       1, static_cast<int>(std::ceil(static_cast<double>(steps) / static_cast<double>(frames - 1))));
-  auto snapshot = [&] { out.frames.push_back({s.time, s.x, s.y, s.angle}); };
+  // each frame with the wheels' centres where they are (a take-up's moves with its slide)
+  auto snapshot = [&] {
+    LoopFrame f{s.time, s.x, s.y, s.angle, {}, {}};
+    for (std::size_t w = 0; w < nw; ++w) {
+      const Sprocket at = at_slide(wheels[w], s.slide[w]);
+      f.centre_x.push_back(at.centre_x);
+      f.centre_y.push_back(at.centre_y);
+    }
+    out.frames.push_back(std::move(f));
+  };
+  // after each step: a take-up's slide past an end of its travel, and its wheel without the
+  // chain's force (docs/models/dynamics.md, "Take-up"), for the diagnostics after the run
+  auto watch_takeups = [&](const std::vector<double>& wheel_force) {
+    for (TakeupSeries& tu : out.takeup) {
+      const Sprocket& wh = wheels[tu.wheel];
+      const double sl = s.slide[tu.wheel];
+      const double past[2] = {wh.takeup_travel_min - sl, sl - wh.takeup_travel_max};
+      for (int e = 0; e < 2; ++e) {
+        if (!(past[e] > 0.0)) continue;
+        if (std::isnan(tu.stop_first[e])) tu.stop_first[e] = s.time;
+        ++tu.stop_steps[e];
+        tu.stop_depth[e] = std::max(tu.stop_depth[e], past[e]);
+      }
+      const bool lost = wheel_force[tu.wheel] <= takeup_lost_force(wh);
+      if (lost && std::isnan(tu.lost_since)) tu.lost_since = s.time - d.step;
+      if (!lost && !std::isnan(tu.lost_since)) {
+        if (s.time - d.step - tu.lost_since > kTakeupLossTime)
+          tu.lost.push_back({tu.lost_since, s.time - d.step - tu.lost_since});
+        tu.lost_since = NAN;
+      }
+    }
+  };
   snapshot();
   const double e0 = energy(model, s).total();
   // the work the driver puts in and the load takes out over each step: the driver's applied
@@ -1671,6 +1759,7 @@ Result run(const analysis::Inputs& in) {
       if (w != d.driver) dw -= wheels[w].load_torque * (s.angle[w] - angle0[w]);
     work += dw;
     for (std::size_t w = 0; w < nw; ++w) applied[w] += torque[w];
+    watch_takeups(integ.applied_wheel_force());
     ++since;
     if ((k + 1) % every == 0) sample();
     if ((k + 1) % frame_every == 0) snapshot();
@@ -1693,6 +1782,38 @@ Result run(const analysis::Inputs& in) {
   if (!out.takeup.empty()) {  // the take-ups' dampers (a run without one computes as before)
     out.takeup_damper_work = s.takeup_damper_work;
     out.numerical_work -= s.takeup_damper_work;
+  }
+  for (TakeupSeries& tu : out.takeup) {
+    const Sprocket& wh = wheels[tu.wheel];
+    const std::string who = "the take-up of sprocket " + std::to_string(tu.wheel);
+    if (!std::isnan(tu.lost_since) && s.time - tu.lost_since > kTakeupLossTime)
+      tu.lost.push_back({tu.lost_since, s.time - tu.lost_since});  // lost to the run's end
+    for (int e = 0; e < 2; ++e) {
+      if (std::isnan(tu.stop_first[e])) continue;
+      const double bound = e == 0 ? wh.takeup_travel_min : wh.takeup_travel_max;
+      out.diagnostics.push_back(
+          {Diagnostic::Severity::kWarning, "dynamics.takeup_at_travel_end",
+           who + " reached its " + (e == 0 ? "takeup_travel_min" : "takeup_travel_max") + " = " +
+               format_g(bound, 6) + " m at t = " + format_g(tu.stop_first[e], 6) +
+               " s: the end stop held the slide for " + format_g(tu.stop_steps[e] * d.step, 6) +
+               " s in all, at most " + format_g(tu.stop_depth[e], 3) +
+               " m past the end; the take-up's force does not set the chain's tension there",
+           tu.stop_first[e], bound});
+    }
+    if (!tu.lost.empty()) {
+      double longest = 0.0;
+      for (const auto& [from, length] : tu.lost) longest = std::max(longest, length);
+      out.diagnostics.push_back(
+          {Diagnostic::Severity::kWarning, "dynamics.takeup_lost_chain",
+           "sprocket " + std::to_string(tu.wheel) +
+               " lost the chain on its take-up (the chain's force on the wheel at most " +
+               format_g(takeup_lost_force(wh), 4) + " N) for longer than " +
+               format_g(kTakeupLossTime * 1e3, 3) + " ms " + std::to_string(tu.lost.size()) +
+               " time(s), first at t = " + format_g(tu.lost.front().first, 6) + " s for " +
+               format_g(tu.lost.front().second, 4) + " s, the longest " + format_g(longest, 4) +
+               " s",
+           tu.lost.front().first, kTakeupLossTime});
+    }
   }
   if (d.theta < 0.6)
     out.diagnostics.push_back(
@@ -1878,14 +1999,18 @@ Record describe(const Result& r, const analysis::Inputs&) {
     Value tus = Value::array();
     for (const TakeupSeries& tu : r.takeup) {
       const LayoutWheel& lw = d.wheels[tu.wheel];
-      tus.push_back(Value::object({{"sprocket", static_cast<int>(tu.wheel)},
-                                   {"direction", lw.takeup_direction},
-                                   {"preload", lw.takeup_force},
-                                   {"stiffness", lw.takeup_stiffness},
-                                   {"damping", lw.takeup_damping},
-                                   {"position", tu.position},
-                                   {"slide_speed", tu.speed},
-                                   {"force", tu.force}}));
+      Value o = Value::object({{"sprocket", static_cast<int>(tu.wheel)},
+                               {"direction", lw.takeup_direction},
+                               {"preload", lw.takeup_force},
+                               {"stiffness", lw.takeup_stiffness},
+                               {"damping", lw.takeup_damping},
+                               {"position", tu.position},
+                               {"slide_speed", tu.speed},
+                               {"force", tu.force}});
+      // the end stops, when given (a case without them prints what it did before)
+      if (std::isfinite(lw.takeup_travel_min)) o["travel_min"] = lw.takeup_travel_min;
+      if (std::isfinite(lw.takeup_travel_max)) o["travel_max"] = lw.takeup_travel_max;
+      tus.push_back(std::move(o));
     }
     j["takeup"] = tus;
   }
@@ -1918,6 +2043,23 @@ Record describe(const Result& r, const analysis::Inputs&) {
   const int links_a_turn = d.pocket ? 2 * driver_teeth : driver_teeth;
   const double chain_speed = links_a_turn * d.pitch / (2 * kPi) *
                              std::abs(window_stats(r.sprocket[d.driver].speed, win).mean);
+  // With take-ups, the spans also at the settled layout (docs/models/dynamics.md, "Span
+  // frequencies"): each take-up's wheel at its slide's mean over the window, the belt path
+  // round the circles there (empty: not the same path, its spans are not these)
+  std::vector<double> settled_length;
+  if (d.layout() && !r.takeup.empty()) {
+    std::vector<Circle> circles = d.circles;
+    for (const TakeupSeries& tu : r.takeup) {
+      const double mean = window_stats(tu.position, win).mean;
+      circles[tu.wheel].x += mean * std::cos(d.wheels[tu.wheel].takeup_direction);
+      circles[tu.wheel].y += mean * std::sin(d.wheels[tu.wheel].takeup_direction);
+    }
+    const BeltPath settled = belt_path(circles, 0);
+    for (const PathPiece& q : settled.pieces)
+      if (!q.arc) settled_length.push_back(std::hypot(q.x1 - q.x0, q.y1 - q.y0));
+    if (!settled.unwrapped.empty() || settled_length.size() != span_length.size())
+      settled_length.clear();
+  }
   std::vector<SpanFrequencies> span_f;  // also marked on the report's spectrum
   for (std::size_t k = 0; k < r.span.size(); ++k) {
     const Stats t = window_stats(r.span[k], win);
@@ -1930,6 +2072,13 @@ Record describe(const Result& r, const analysis::Inputs&) {
     if (!d.guides.empty()) continue;
     summary["transverse_frequency"] = f.transverse;
     summary["longitudinal_frequency"] = f.longitudinal;
+    if (!settled_length.empty()) {  // new fields beside the start layout's (a take-up only)
+      const SpanFrequencies fs = span_frequencies(settled_length[k], t.mean, d.mass_per_metre,
+                                                  chain_speed, d.stiffness, d.pitch);
+      summary["settled_length"] = settled_length[k];
+      summary["settled_transverse_frequency"] = fs.transverse;
+      summary["settled_longitudinal_frequency"] = fs.longitudinal;
+    }
     span_f.push_back(f);
     const double qv2 = d.mass_per_metre * chain_speed * chain_speed;
     if (!std::isfinite(f.transverse) || !std::isfinite(f.longitudinal))
@@ -1995,6 +2144,10 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["units"]["position"] = "m";
     j["units"]["slide_speed"] = "m/s";
     j["units"]["force"] = "N";
+    for (const TakeupSeries& tu : r.takeup) {
+      if (std::isfinite(d.wheels[tu.wheel].takeup_travel_min)) j["units"]["travel_min"] = "m";
+      if (std::isfinite(d.wheels[tu.wheel].takeup_travel_max)) j["units"]["travel_max"] = "m";
+    }
   }
   if (hinge_on) {
     j["units"]["hinge_arm"] = "m";
@@ -2012,6 +2165,11 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (d.guides.empty())
     for (const char* key : {"transverse_frequency", "longitudinal_frequency"})
       j["units"][key] = "Hz";
+  if (d.guides.empty() && !settled_length.empty()) {
+    j["units"]["settled_length"] = "m";
+    for (const char* key : {"settled_transverse_frequency", "settled_longitudinal_frequency"})
+      j["units"][key] = "Hz";
+  }
   rec.data = std::move(j);
 
   std::ostringstream csv;
@@ -2020,6 +2178,9 @@ Record describe(const Result& r, const analysis::Inputs&) {
     for (std::size_t w = 0; w < r.sprocket.size(); ++w)
       csv << ",angle_" << w << ",speed_" << w << ",torque_" << w;
     for (const LayoutSpan& sp : layout_spans(d)) csv << ",tension_" << sp.from << "_" << sp.to;
+    // a take-up's series after the spans, named as in the JSON's takeup[k] with its wheel
+    for (const TakeupSeries& tu : r.takeup)
+      csv << ",position_" << tu.wheel << ",slide_speed_" << tu.wheel << ",force_" << tu.wheel;
     csv << "\n";
     for (std::size_t k = 0; k < r.time.size(); ++k) {
       csv << format_g(r.time[k], 12);
@@ -2027,6 +2188,9 @@ Record describe(const Result& r, const analysis::Inputs&) {
         csv << "," << format_g(w.angle[k], 12) << "," << format_g(w.speed[k], 12) << ","
             << format_g(w.torque[k], 12);
       for (const std::vector<double>& t : r.span) csv << "," << format_g(t[k], 12);
+      for (const TakeupSeries& tu : r.takeup)
+        csv << "," << format_g(tu.position[k], 12) << "," << format_g(tu.speed[k], 12) << ","
+            << format_g(tu.force[k], 12);
       csv << "\n";
     }
   } else {
@@ -2122,7 +2286,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
 
   ReportInput report{.time = r.time,
                      .teeth = d.layout() ? d.wheels[d.driver].teeth : d.teeth,
-                     .driver_speed = d.speed};
+                     .driver_speed = d.speed,
+                     .spectrum_start = d.spectrum_start};
   for (std::size_t w = 0; w < r.sprocket.size(); ++w) {
     const std::string name = "sprocket " + std::to_string(w) + " (" + role_of(d, w) + ")";
     report.speed.push_back({name, r.sprocket[w].speed});

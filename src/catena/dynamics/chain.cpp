@@ -146,6 +146,13 @@ std::vector<Issue> validate(const Model& model) {
         out.push_back({f + "takeup_damping", check::format_si(s.takeup_damping, "N*s/m"),
                        "a finite value >= 0 N*s/m"});
       check::finite_positive(out, (f + "takeup_mass").c_str(), s.takeup_mass, "kg");
+      // the travel holds the start (s = 0); an end may be infinite (no stop there)
+      if (std::isnan(s.takeup_travel_min) || !(s.takeup_travel_min <= 0.0))
+        out.push_back({f + "takeup_travel_min", check::format_si(s.takeup_travel_min, "m"),
+                       "<= 0 m (the start, s = 0, within the travel), or -infinity"});
+      if (std::isnan(s.takeup_travel_max) || !(s.takeup_travel_max >= 0.0))
+        out.push_back({f + "takeup_travel_max", check::format_si(s.takeup_travel_max, "m"),
+                       ">= 0 m (the start, s = 0, within the travel), or +infinity"});
     }
     if (s.pocket && s.friction != 0.0) {
       // seat_friction's derivatives are tested on the ISO seat only (docs/models/dynamics.md)
@@ -724,6 +731,7 @@ Energy energy(const Model& model, const State& state) {
       e.elastic += 0.5 * wheel.takeup_stiffness * sl * sl;
       const double g_along = model.gravity_x * wheel.takeup_dx + model.gravity_y * wheel.takeup_dy;
       e.potential -= (wheel.takeup_force + wheel.takeup_mass * g_along) * sl;
+      e.elastic += slide_stop(model.sprockets[w], sl, 0.0).energy;  // an end stop pressed
     }
     for (std::size_t i = 0; i < n; ++i) {
       const SeatContact c =

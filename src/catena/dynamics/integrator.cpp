@@ -62,6 +62,7 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
       angle_of_(model.sprockets.size(), static_cast<std::size_t>(-1)),
       slide_of_(model.sprockets.size(), static_cast<std::size_t>(-1)),
       slide_force_(model.sprockets.size()),
+      wheel_force_(model.sprockets.size()),
       torque_(model.sprockets.size()) {
   for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
     if (model.sprockets[w].driver) continue;
@@ -325,20 +326,25 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       wheel_norm2 += force_like * force_like;
     }
     slide_force_[w] = slides ? pull_x * ex + pull_y * ey : 0.0;
+    wheel_force_[w] = slides ? std::hypot(pull_x, pull_y) : 0.0;
     if (slides) {
       // m_t (s₁ − s₀ − h ṡ₀)/(hθ) = h [F₀ − k_t s_θ − c_t ṡ + m_t g·e + e·Σ(f n − F_t)]
       const double mt = wheel.takeup_mass;
       const double g_along = model.gravity_x * ex + model.gravity_y * ey;
+      // the end stops (without a travel bound never active): their force at the θ point with
+      // the step's slide speed, as a seat's on its roller
+      const SlideStop stop = slide_stop(wheel, slide_th, slide_rate);
+      contact_damping_work_ += h * stop.damping_power;
       const double push = wheel.takeup_force - wheel.takeup_stiffness * slide_th -
-                          wheel.takeup_damping * slide_rate + mt * g_along;
+                          wheel.takeup_damping * slide_rate + mt * g_along + stop.force;
       const double residual = mt / (h * th) * (slide1_[w] - s.slide[w] - h * s.slide_speed[w]) -
                               h * (push + slide_force_[w]);
       xres_[is] = -residual;
       takeup_damper_work_ -= h * wheel.takeup_damping * slide_rate * slide_rate;
       wheel_norm2 += residual * residual;
       if (jacobian) {
-        xjac_[is * nx + is] =
-            mt / (h * th) + h * th * wheel.takeup_stiffness + wheel.takeup_damping + sdiag;
+        xjac_[is * nx + is] = mt / (h * th) + h * th * wheel.takeup_stiffness +
+                              wheel.takeup_damping + sdiag + h * th * stop.stiffness + stop.damping;
         xjac_[ia * nx + is] = cross_ws;
         xjac_[is * nx + ia] = cross_sw;
       }

@@ -101,10 +101,16 @@ std::vector<analysis::Chart> report_charts(const ReportInput& in) {
   charts.push_back(series("Span tensions (the link nearest each span's middle)", "tension [N]",
                           in.time, in.span));
 
-  // the spectrum of the second half of the run
+  // the spectrum of the second half of the run, or from spectrum_start (at least 16 samples)
   const std::size_t n = in.time.size();
-  if (n >= 16) {
-    const std::size_t from = n / 2;
+  std::size_t from = n / 2;
+  if (!std::isnan(in.spectrum_start)) {
+    from = 0;
+    // (a sample's time is a sum of steps: within rounding of the start counts as at it)
+    const double tol = 1e-9 * std::abs(in.spectrum_start) + 1e-12;
+    while (from < n && in.time[from] < in.spectrum_start - tol) ++from;
+  }
+  if (n >= 16 && (std::isnan(in.spectrum_start) || from + 16 <= n)) {
     const double dt = (in.time[n - 1] - in.time[from]) / static_cast<double>(n - 1 - from);
     const double f_mesh = in.teeth * in.driver_speed / (2.0 * std::numbers::pi);
     const double nyquist = 0.5 / dt;
@@ -143,10 +149,12 @@ std::vector<analysis::Chart> report_charts(const ReportInput& in) {
         const WheelOutline& o = in.wheels[w];
         const double a = w < f.angle.size() ? f.angle[w] : 0.0;
         const double c = std::cos(a), s = std::sin(a);
+        const double ox = w < f.centre_x.size() ? f.centre_x[w] : o.centre_x;
+        const double oy = w < f.centre_y.size() ? f.centre_y[w] : o.centre_y;
         analysis::Trace t{o.name, {}, {}};
         for (const auto& [x, y] : o.outline) {
-          t.x.push_back(mm(o.centre_x + c * x - s * y));
-          t.y.push_back(mm(o.centre_y + s * x + c * y));
+          t.x.push_back(mm(ox + c * x - s * y));
+          t.y.push_back(mm(oy + s * x + c * y));
         }
         if (!o.outline.empty()) {  // closed
           t.x.push_back(t.x.front());
