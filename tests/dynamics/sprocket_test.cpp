@@ -1,6 +1,8 @@
 // Roller–seat contact on a sprocket: the O(1) nearest seat against a search over every seat, the
 // penetration of a displaced roller, and the torque on the wheel against the derivative of the
 // contact energy.
+#include "catena/drive/sprocket.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -261,6 +263,74 @@ TEST(DynamicsSprocket, TipRadiusIsValidated) {
   }
   m.sprockets[0].tip_radius = 0.0;
   EXPECT_FALSE(names_tip());
+}
+
+// The tip against the chain's articulation (docs/models/dynamics.md, "Tooth tip"): a roller
+// winding on swings about its seated neighbour's seat centre at the chord 2R sin(π/z). Checked
+// here by its own sampling — random points of that quarter turn with the wheel at random angles
+// (the whole figure turned) — not by articulation_interference: with iso606_sprocket's tip no
+// point of the path is inside a tooth. Where ISO's da,max already clears (z ≥ 11 for 08B, 12B,
+// 16B) the tip is da,max/2 exactly; where it does not (z = 7…10) the tip is lowered, and only as
+// far as needed (2 µm higher cuts the path: the limit less its 1 µm margin), and for z ≥ 8 stays
+// within ISO's range [da,min/2, da,max/2]. At z = 6 even a tip at the pitch circle does not clear
+// (the flanks themselves cut the path): the tip is left at da,max/2 and the case stays as it was.
+TEST(DynamicsSprocket, TipClearsTheRollerArticulation) {
+  struct Chain {
+    const char* name;
+    double p, d1, b1;
+  };
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (const Chain c :
+       {Chain{"08B", 0.0127, 0.00851, 0.00775}, Chain{"12B", 0.01905, 0.01207, 0.01168},
+        Chain{"16B", 0.0254, 0.01588, 0.01702}}) {
+    for (int z = 6; z <= 40; ++z) {
+      const Sprocket w = iso606_sprocket(c.p, c.d1, c.b1, z, 0.1, -0.2, 2e8, 0.0);
+      const drive::Sprocket iso =
+          drive::sprocket({.pitch = c.p, .roller_diameter = c.d1, .inner_width = c.b1, .teeth = z});
+      const double da_max = 0.5 * iso.tip_diameter_max, da_min = 0.5 * iso.tip_diameter_min;
+      Sprocket full = w;
+      full.tip_radius = da_max;
+      const bool cut = articulation_interference(full) > 0.0;
+      EXPECT_EQ(cut, z <= 10) << c.name << " z " << z;
+      if (z == 6) {
+        EXPECT_EQ(w.tip_radius, da_max) << c.name;  // no cure: left as it was
+        continue;
+      }
+      if (!cut) {
+        EXPECT_EQ(w.tip_radius, da_max) << c.name << " z " << z;
+      } else {
+        EXPECT_LT(w.tip_radius, da_max) << c.name << " z " << z;
+        Sprocket higher = w;
+        higher.tip_radius += 2e-6;
+        EXPECT_GT(articulation_interference(higher), 0.0) << c.name << " z " << z;
+        if (z >= 8) {
+          EXPECT_GE(w.tip_radius, da_min) << c.name << " z " << z;
+        }
+      }
+      const double R = w.pitch_radius, step = kPi / z, chord = 2 * R * std::sin(step);
+      double worst = 0.0;
+      for (int k = 0; k < 4000; ++k) {
+        const double psi = 2 * kPi * u(rng), beta = -step + 0.5 * kPi * u(rng);
+        // seat 0 at angle ψ: its centre C0, the roller at the chord from it, turned with ψ
+        const double c0x = w.centre_x + R * std::cos(psi), c0y = w.centre_y + R * std::sin(psi);
+        const double turn = psi - 0.5 * kPi;
+        const double qx = c0x + chord * std::cos(beta + turn);
+        const double qy = c0y + chord * std::sin(beta + turn);
+        const SeatContact sc = seat_contact(w, qx, qy, 0.0, 0.0, psi, 0.0);
+        if (sc.active) worst = std::max(worst, sc.penetration);
+      }
+      EXPECT_LE(worst, 1e-9) << c.name << " z " << z;
+    }
+  }
+  // 12B, the validation's wheels (DynamicsChordal): da,max/2 = 33.720 mm cuts the path by
+  // 0.225 mm at z = 9 (0.037 mm at z = 10); the tips become 32.449 and 36.499 mm
+  const Sprocket w9 = wheel(9), w10 = wheel(10);
+  EXPECT_NEAR(w9.tip_radius, 0.032449, 2e-6);
+  EXPECT_NEAR(w10.tip_radius, 0.036499, 2e-6);
+  Sprocket full9 = w9;
+  full9.tip_radius = 0.5 * (w9.pitch_radius * 2 + 1.25 * 0.01905 - 0.01207);
+  EXPECT_NEAR(articulation_interference(full9), 0.000225, 1e-6);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
@@ -240,14 +241,16 @@ double simulated_variation(const Result& r, int bins) {
 // kinematics v = ωR cos φ averaged over the same bins. Three bin counts (20, 40, 80): the bins
 // flatten the profile's extremes by a known amount (1 − cos(π/z) = 0.01703 at z = 17; 0.0153,
 // 0.0162, 0.0166 binned), which the prediction carries too, so that no bin count is chosen to
-// fit. Measured: z = 17: 0.999, 0.994, 1.000 of the binned variation; z = 25: 1.014, 1.005,
-// 0.997. Tolerance 2 %: the spread over bin counts (±1.4 % at z = 25, where the variation is
+// fit. Measured: z = 9 1.005, 1.007, 1.005; z = 10 1.003, 1.009, 1.012; z = 17: 0.999, 0.994,
+// 1.000; z = 25: 1.014, 1.005, 0.997; z = 12 (at 0.05 m/s, below) 1.004, 1.006, 1.007.
+// Tolerance 2 %: the spread over bin counts (±1.4 % at z = 25, where the variation is
 // 0.0075 of the speed: a residual ripple of 1e-4 of the speed moves it 1.3 %) — 1 % of the
 // variation is not reached at z = 25.
 // Why this set-up (docs/models/dynamics.md, "Polygonal action"): (a) 0.1 m/s — at 0.5 m/s the
 // span's speed varies 4–5 % more than the kinematics, at 0.25 m/s 3.7 %, at 0.05 m/s 0.2 %
 // (z = 17): each engagement reverses the span's acceleration and rings its longitudinal modes, a
-// dynamic effect the kinematic theory does not have; (b) the run stops before the chain's free
+// dynamic effect the kinematic theory does not have (PolygonalActionAtSpeedAgainstTheElasticSpan);
+// (b) the run stops before the chain's free
 // tail, wound round the wheel, comes back to the top (z − z/2 − 2 links of travel: before, the
 // tail reached the engaging seat within the run and was counted in the span); (c) friction —
 // on frictionless seats the free tail's last rollers slide out of their seats (a roller pulled by
@@ -255,13 +258,17 @@ double simulated_variation(const Result& r, int bins) {
 // failed within 0.2–0.3 s. μ = 0.3 was chosen after μ = 0.1 failed at z = 25 (a Newton failure
 // at 0.83 s after the tail had started to whip); at z = 17 μ = 0.1 and 0.3 give the same
 // variation to 0.03 %; with the tooth tip (ISO arc flanks to the tip circle) the same to 1e-3.
-// z = 12 and 9 run through since the tip, but are not within 2 %: pinned below.
-Chordal quasi_static(int z) {
+// z = 9 and 10 pass since the tip is lowered to clear the articulation (iso606_sprocket,
+// articulation_tip_radius): on the ISO da,max tip the entering roller's path about its seated
+// neighbour cut the tooth's corner by 0.225 mm at z = 9 (0.037 mm at z = 10; the seat's
+// clearance ri − r1 is 0.06 mm), the roller stuck on the corner, 38.7 mm from the centre instead
+// of 27.8, and the span's speed varied 1.69–1.83 times the kinematics.
+Chordal quasi_static(int z, double chain_speed = 0.1) {
   Chordal d;
   d.teeth = z;
   d.clearance = true;
   d.seat_friction = 0.3;
-  d.chain_speed = 0.1;
+  d.chain_speed = chain_speed;
   const int wrap = z / 2;
   d.duration = d.settle + (z - wrap - 2) * d.pitch / d.chain_speed;
   const double radius = 0.5 * d.pitch / std::sin(kPi / z);
@@ -271,8 +278,13 @@ Chordal quasi_static(int z) {
 
 TEST(DynamicsChordal, PolygonalActionOnSeatsWithFriction) {
   constexpr double kTol = 0.02;
-  for (int z : {17, 25}) {
-    const Result r = run(quasi_static(z), 40);
+  struct Case {
+    int z;
+    double speed;
+  };
+  for (const Case c : {Case{9, 0.1}, Case{10, 0.1}, Case{12, 0.05}, Case{17, 0.1}, Case{25, 0.1}}) {
+    const int z = c.z;
+    const Result r = run(quasi_static(z, c.speed), 40);
     ASSERT_TRUE(r.converged) << "z " << z;
     for (int bins : {20, 40, 80}) {
       const double sim = simulated_variation(r, bins), kin = binned_variation(z, bins);
@@ -285,34 +297,165 @@ TEST(DynamicsChordal, PolygonalActionOnSeatsWithFriction) {
   }
 }
 
-// Validation (1) at z = 12 and 9, the same set-up and method as at z = 17 and 25 — pinned as it
-// stands, not passed (docs/models/dynamics.md, "Polygonal action"). With the tooth tip the runs
-// go through (before it z = 12 stopped at 0.36 s on a step that did not converge, the roller
-// entering the reach with a finite penetration; z = 9 was erratic, 10–25 times the variation).
-// Measured, span's variation over the binned kinematics at 20, 40, 80 bins: z = 12 1.0085,
-// 1.0242, 1.0243 (2.4 % over at 40 and 80 bins: outside the 2 % of z = 17 and 25); z = 9 1.690,
-// 1.828, 1.820 (the roller ratio per seat, 0.12 on a frictionless flank at z = 9, leaves the span
-// on about one roller and its transfers are sudden). Each is pinned to 0.5 % of its measured
-// value: a change of the model that moves them shows here.
-TEST(DynamicsChordal, PolygonalActionAtTwelveAndNineTeethIsPinned) {
-  struct Pin {
-    int z;
-    double measured[3];  // at 20, 40, 80 bins
-  };
-  for (const Pin p : {Pin{12, {1.0085, 1.0242, 1.0243}}, Pin{9, {1.690, 1.828, 1.820}}}) {
-    const Result r = run(quasi_static(p.z), 40);
-    ASSERT_TRUE(r.converged) << "z " << p.z;
-    double worst = 0.0;
-    const int bins[3] = {20, 40, 80};
-    for (int k = 0; k < 3; ++k) {
-      const double ratio = simulated_variation(r, bins[k]) / binned_variation(p.z, bins[k]);
-      std::printf("z %d, %d bins: ratio %.4f\n", p.z, bins[k], ratio);
-      // pinned to 0.5 % of the measured ratio
-      EXPECT_NEAR(ratio / p.measured[k], 1.0, 0.005) << "z " << p.z << ", " << bins[k] << " bins";
-      worst = std::max(worst, std::abs(ratio - 1.0));
+// z = 12 at 0.1 m/s, the set-up of the test above — pinned as it stands, not passed
+// (docs/models/dynamics.md, "Polygonal action"). Measured, the span's variation over the binned
+// kinematics at 20, 40, 80 bins: 1.0085, 1.0242, 1.0243 (2.4 % over at 40 and 80 bins); at
+// 0.05 m/s 1.004, 1.006, 1.007 (passes, above) and at 0.025 m/s 1.004, 1.001, 0.999: an excess
+// that grows as v², dynamic, not of the polygon's kinematics — and not the span's longitudinal
+// response either: the elastic span (span_speed_profile below) gives 1.0008, 1.0035, 1.0049 at
+// 0.1 m/s. What it is was not found: a ripple of about ±0.1 % of the speed in the bins. Pinned to
+// 0.5 % of its measured value: a change of the model that moves it shows here.
+TEST(DynamicsChordal, PolygonalActionAtTwelveTeethIsPinned) {
+  const double measured[3] = {1.0085, 1.0242, 1.0243};  // at 20, 40, 80 bins
+  const Result r = run(quasi_static(12), 40);
+  ASSERT_TRUE(r.converged);
+  double worst = 0.0;
+  const int bins[3] = {20, 40, 80};
+  for (int k = 0; k < 3; ++k) {
+    const double ratio = simulated_variation(r, bins[k]) / binned_variation(12, bins[k]);
+    std::printf("z 12, %d bins: ratio %.4f\n", bins[k], ratio);
+    EXPECT_NEAR(ratio / measured[k], 1.0, 0.005) << bins[k] << " bins";
+    worst = std::max(worst, std::abs(ratio - 1.0));
+  }
+  // not yet the validation's 2 %: if this fails, z = 12 passes at 0.1 m/s — move it up
+  EXPECT_GT(worst, 0.02) << "z 12 now within 2 % at every bin count";
+}
+
+// The second model for speeds where the span's dynamics count: the span as the linear
+// spring–mass chain it is (n links of stiffness k and damping c between node masses m, the far
+// end free — its constant force only sets the static stretch), its wheel end driven with the
+// kinematic speed of the polygon, v = ωR cos φ (φ = 2π·phase/z over the phase in [−½, ½)), in
+// the periodic steady state: harmonic h of the tooth frequency f = v/p solved exactly,
+// [−(hΩ)² m + (k + ihΩc) L] X = (k + ihΩc) V_h e₁ with L the span's tridiagonal stiffness
+// pattern (2 inside, 1 at the free end) — a complex tridiagonal solve per harmonic. The span's
+// mean speed over nodes `from`..n, at `samples` phases, summed over `harmonics`; the kinematics
+// is its limit k → ∞. Independent of the integrator and of the seats: it has only the span.
+std::vector<double> span_speed_profile(int z, double v, int n, int from, const Chordal& d,
+                                       int samples, int harmonics) {
+  using C = std::complex<double>;
+  const double radius = 0.5 * d.pitch / std::sin(kPi / z), omega = v / radius;
+  const double big_omega = 2 * kPi * v / d.pitch;
+  std::vector<double> kin(samples), out(samples);
+  double mean = 0.0;
+  for (int s = 0; s < samples; ++s) {
+    double ph = (s + 0.5) / samples;
+    if (ph >= 0.5) ph -= 1;
+    kin[s] = omega * radius * std::cos(2 * kPi * ph / z);
+    mean += kin[s] / samples;
+  }
+  std::fill(out.begin(), out.end(), mean);
+  std::vector<C> cp(n + 1), dp(n + 1), x(n + 1);
+  for (int h = 1; h <= harmonics; ++h) {
+    C vh = 0.0;
+    for (int s = 0; s < samples; ++s)
+      vh += kin[s] * std::polar(1.0, -2 * kPi * h * (s + 0.5) / samples) / double(samples);
+    const double w = h * big_omega;
+    const C kk(d.stiffness, w * d.damping);
+    for (int j = 1; j <= n; ++j) {  // Thomas: a x_{j−1} + b x_j + c x_{j+1} = r
+      const C a = j > 1 ? -kk : C(0.0), b = -w * w * d.node_mass + (j < n ? 2.0 : 1.0) * kk;
+      const C c = j < n ? -kk : C(0.0), rhs = j == 1 ? kk * vh : C(0.0);
+      const C den = b - (j > 1 ? a * cp[j - 1] : C(0.0));
+      cp[j] = c / den;
+      dp[j] = (rhs - (j > 1 ? a * dp[j - 1] : C(0.0))) / den;
     }
-    // not yet the validation's 2 %: if this fails, z = p.z passes — move it to the test above
-    EXPECT_GT(worst, 0.02) << "z " << p.z << " now within 2 % at every bin count";
+    x[n] = dp[n];
+    for (int j = n - 1; j >= 1; --j) x[j] = dp[j] - cp[j] * x[j + 1];
+    C m = 0.0;
+    for (int j = from; j <= n; ++j) m += x[j] / double(n - from + 1);
+    for (int s = 0; s < samples; ++s)
+      out[s] += 2 * std::real(m * std::polar(1.0, 2 * kPi * h * (s + 0.5) / samples));
+  }
+  return out;
+}
+
+// A profile's variation over `bins` equal phase bins, 1 − min/max of the bin means.
+double profile_variation(const std::vector<double>& v, int bins) {
+  std::vector<double> sum(bins, 0.0);
+  std::vector<int> count(bins, 0);
+  const auto samples = static_cast<int>(v.size());
+  for (int s = 0; s < samples; ++s) {
+    const int b = std::min(bins - 1, static_cast<int>((s + 0.5) / samples * bins));
+    sum[b] += v[s];
+    ++count[b];
+  }
+  double lo = INFINITY, hi = -INFINITY;
+  for (int b = 0; b < bins; ++b) {
+    lo = std::min(lo, sum[b] / count[b]);
+    hi = std::max(hi, sum[b] / count[b]);
+  }
+  return 1 - lo / hi;
+}
+
+// The elastic span's profile for the run `d`: the span shortens by a link per tooth period as
+// the wheel winds it in (40 links at the start), so the steady profiles of the spans the
+// measured window sees are averaged; the nodes measured are those beyond R + p from the wheel.
+std::vector<double> elastic_reference(const Chordal& d) {
+  const int z = d.teeth;
+  const double radius = 0.5 * d.pitch / std::sin(kPi / z);
+  const int from = static_cast<int>(std::ceil((radius + d.pitch) / d.pitch));
+  const auto first =
+      static_cast<int>(std::lround(d.span_links - d.chain_speed * d.settle / d.pitch));
+  const auto last =
+      static_cast<int>(std::lround(d.span_links - d.chain_speed * d.duration / d.pitch));
+  constexpr int kSamples = 2000;
+  std::vector<double> sum(kSamples, 0.0);
+  for (int n = first; n >= last; --n) {
+    const std::vector<double> p = span_speed_profile(z, d.chain_speed, n, from, d, kSamples, 300);
+    for (int s = 0; s < kSamples; ++s) sum[s] += p[s] / (first - last + 1);
+  }
+  return sum;
+}
+
+// The reference against known limits: with a rigid span (k → ∞) it is the polygon's kinematics
+// binned (binned_variation, computed independently), and at a quasi-static speed (0.1 m/s, the
+// tooth frequency 5.25 Hz against the span's first longitudinal mode c/4L ≈ 290 Hz) it is within
+// 0.5 % of it at every bin count — the margin the quasi-static test above relies on.
+TEST(DynamicsChordal, ElasticSpanReferenceHasTheKinematicLimit) {
+  for (int z : {9, 12, 17, 25}) {
+    Chordal rigid = quasi_static(z);
+    rigid.stiffness = 1e15;
+    rigid.damping = 0.0;
+    const std::vector<double> r = elastic_reference(rigid), e = elastic_reference(quasi_static(z));
+    for (int bins : {20, 40, 80}) {
+      const double kin = binned_variation(z, bins);
+      EXPECT_NEAR(profile_variation(r, bins) / kin, 1.0, 1e-6) << "z " << z << ", " << bins;
+      EXPECT_NEAR(profile_variation(e, bins) / kin, 1.0, 0.006) << "z " << z << ", " << bins;
+    }
+  }
+}
+
+// Validation (1) at speeds where the span's dynamics count: 0.25 and 0.5 m/s (tooth frequency
+// 13 and 26 Hz, within 11–22 times of the span's first longitudinal mode, 290–400 Hz as it
+// shortens; the kinematic profile's kink at each engagement has harmonics up to it, and they
+// ring it), z = 17 and 25, the quasi-static test's set-up otherwise. The span's variation against
+// the elastic span's (elastic_reference). Measured, simulation over reference at 20, 40, 80 bins:
+// z = 17 0.25 m/s 1.022, 1.013, 0.996; 0.5 m/s 1.062, 1.016, 1.026; z = 25 0.25 m/s 1.026,
+// 1.026, 1.010; 0.5 m/s 1.024, 1.013, 1.008 — against the kinematics the same runs are 2.8–10.5 %
+// over. Tolerance 3 % at 40 and 80 bins; at 20 bins (a bin is then wider than half the period
+// of the ringing mode, which the bins alias) only that the reference is nearer than the
+// kinematics. Bin by bin the profiles differ by up to 18 % of the variation at 0.5 m/s
+// (a wave of two periods per tooth that the reference has not: docs, "Polygonal action").
+TEST(DynamicsChordal, PolygonalActionAtSpeedAgainstTheElasticSpan) {
+  for (int z : {17, 25}) {
+    for (double v : {0.25, 0.5}) {
+      const Chordal d = quasi_static(z, v);
+      const Result r = run(d, 40);
+      ASSERT_TRUE(r.converged) << "z " << z << ", " << v << " m/s";
+      const std::vector<double> ref = elastic_reference(d);
+      for (int bins : {20, 40, 80}) {
+        const double sim = simulated_variation(r, bins), el = profile_variation(ref, bins);
+        const double kin = binned_variation(z, bins);
+        std::printf(
+            "z %d, %.2f m/s, %d bins: span %.5f, elastic span %.5f (%.4f), kinematics %.5f "
+            "(%.4f)\n",
+            z, v, bins, sim, el, sim / el, kin, sim / kin);
+        EXPECT_LT(std::abs(sim - el), std::abs(sim - kin))
+            << "z " << z << ", " << v << ", " << bins;
+        if (bins > 20) {
+          EXPECT_NEAR(sim / el, 1.0, 0.03) << "z " << z << ", " << v << ", " << bins;
+        }
+      }
+    }
   }
 }
 

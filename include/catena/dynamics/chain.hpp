@@ -273,7 +273,10 @@ Energy energy(const Model& model, const State& state);
 
 /// A sprocket on the ISO 606 tooth form of catena::drive (pitch radius from the pitch diameter,
 /// the seating radius ri,min and seating angle α,max of the minimum tooth gap); role and contact
-/// given by the caller.
+/// given by the caller. The tip is da,max/2 unless the tooth's corner would then stand in the
+/// way of a roller articulating onto (or off) the wheel about its seated neighbour, as at
+/// z ≤ 10 for 12B: then it is lowered to articulation_tip_radius (docs/models/dynamics.md,
+/// "Tooth tip").
 /// Throws InputError for an invalid tooth-form input.
 Sprocket iso606_sprocket(double pitch, double roller_diameter, double inner_width, int teeth,
                          double centre_x, double centre_y, double contact_stiffness,
@@ -285,6 +288,18 @@ Sprocket iso606_sprocket(double pitch, double roller_diameter, double inner_widt
 /// both wheels turning at `omega`. Counter-clockwise round the loop: over wheel 0 from its top
 /// seat to its bottom seat, the lower span (+x), over wheel 1 from bottom to top, the upper span
 /// (−x); wheel angles π/2 and −π/2 (the polygons in phase).
+/// The deepest penetration [m] of a roller into the teeth along its articulation path: the
+/// roller's centre swung about its neighbour's seat centre at the seats' chord 2R sin(π/z),
+/// from its own seat outwards through a quarter turn — the path the chain's next roller takes
+/// relative to the wheel as it winds on (and, mirrored, off). ≤ 0: the path clears the tooth.
+double articulation_interference(const Sprocket& w);
+
+/// The largest tip radius in (R, w.tip_radius] at which articulation_interference is ≤ 0
+/// (bisection to 1e-9 m), less 1 µm (the path is sampled: between samples the corner may stand
+/// proud by nanometres); w.tip_radius itself when it already clears, when the wheel has no tip
+/// (0), or when even a tip at the pitch circle does not clear (the flanks cut the path).
+double articulation_tip_radius(const Sprocket& w);
+
 State two_sprocket_loop(int teeth, int span, double pitch, double pitch_radius, double omega);
 
 /// The links of a two-sprocket loop (wheel centres on y = 0 at x = 0 and x = `centre_distance`,

@@ -1,6 +1,7 @@
 // The chain model and state: validation, energy and link tensions (docs/models/dynamics.md).
 #include "catena/dynamics/chain.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -323,7 +324,42 @@ Sprocket iso606_sprocket(double pitch, double roller_diameter, double inner_widt
   s.roller_radius = 0.5 * roller_diameter;
   s.contact_stiffness = contact_stiffness;
   s.contact_damping = contact_damping;
+  s.tip_radius = articulation_tip_radius(s);
   return s;
+}
+
+double articulation_interference(const Sprocket& w) {
+  constexpr double kPi = std::numbers::pi;
+  constexpr int kSamples = 2000;
+  // the wheel at angle π/2 about the origin: seat 0 at the top, C0 = (0, R); its clockwise
+  // neighbour's centre lies at the chord from C0, at −π/z from +x
+  const double R = w.pitch_radius, step = kPi / w.teeth, chord = 2.0 * R * std::sin(step);
+  double worst = 0.0;
+  for (int k = 0; k <= kSamples; ++k) {
+    const double beta = -step + 0.5 * kPi * k / kSamples;
+    Sprocket probe = w;
+    probe.centre_x = 0.0;
+    probe.centre_y = 0.0;
+    const SeatContact c = seat_contact(probe, chord * std::cos(beta), R + chord * std::sin(beta),
+                                       0.0, 0.0, 0.5 * kPi, 0.0);
+    worst = std::max(worst, c.active ? c.penetration : 0.0);
+  }
+  return worst;
+}
+
+double articulation_tip_radius(const Sprocket& w) {
+  if (w.tip_radius <= 0.0 || articulation_interference(w) <= 0.0) return w.tip_radius;
+  Sprocket probe = w;
+  double lo = w.pitch_radius, hi = w.tip_radius;
+  probe.tip_radius = lo;  // a tooth cut at the pitch circle; if even it is in the way, no cure
+  if (articulation_interference(probe) > 0.0) return w.tip_radius;
+  while (hi - lo > 1e-9) {
+    probe.tip_radius = 0.5 * (lo + hi);
+    (articulation_interference(probe) <= 0.0 ? lo : hi) = probe.tip_radius;
+  }
+  // 1 µm below the sampled limit: between the path's samples the corner may stand proud by
+  // nanometres
+  return lo - 1e-6;
 }
 
 State two_sprocket_loop(int teeth, int span, double pitch, double pitch_radius, double omega) {
