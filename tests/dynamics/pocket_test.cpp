@@ -10,6 +10,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/pocket_wheel.hpp"
@@ -410,6 +411,91 @@ TEST(DynamicsPocket, JointEnteringOffItsVertexKeepsTheEnergyWithTheRamp) {
       EXPECT_GT(sharp.drift, 0.05 * sharp.kinetic);
       EXPECT_LT(ramp.drift, 1e-3 * ramp.kinetic);
     }
+  }
+}
+
+// Unwinding (the slack side, docs/models/dynamics.md, "Pocket wheel: unwinding"): a strand comes
+// in over the top of a driver (1 kN at its far end), wraps half a turn and leaves at the bottom
+// towards −x (F_s at its far end). The leaving joints go out over the mouth: with the sharp
+// mouth each loses, in one step, the force that held it, of the order of the slack tension —
+// pinned as measured (233 N at F_s = 200 N, 954 N at 1 kN; energy under 5 mJ an exit).
+struct Unwinding {
+  int exits = 0;             // joints leaving over the mouth below the centre
+  double last_force = 0.0;   // [N] the largest force at a leaving joint's last held step
+  double last_energy = 0.0;  // [J] the largest contact energy lost there
+  bool converged = true;
+};
+Unwinding unwind(double slack) {
+  const double t = 0.064, d = 0.018, k = 1e8, ft = 1000.0;
+  Sprocket w = pocket_wheel(t, d, 8, 0.0, 0.0, 1e-4, 1e8, 2000.0);
+  w.driver = true;
+  w.speed = -5.0;  // clockwise: the top runs along +x
+  const double r = w.pitch_radius, d1 = w.pocket_angle, d2 = 2 * kPi / 8 - d1;
+  const int c = 21, wrap = 8, bottom = 20;  // node c at the top vertex; link c is t − d (odd)
+  const auto n = static_cast<std::size_t>(c + wrap + bottom + 1);
+  Model m = uniform_chain(n, false, t, 0.42, k, 2000.0, false);
+  m.alternation = d;
+  m.sprockets = {w};
+  m.loads = {{.node = 0, .fx = -ft, .fy = 0.0}, {.node = n - 1, .fx = -slack, .fy = 0.0}};
+  State s(n, 1);
+  s.angle = {kPi / 2};  // vertex 0 at the top
+  s.speed = {-5.0};
+  double x = 0.0;
+  for (int i = c; i >= 0; --i) {  // the tight strand, level through the top vertex
+    s.x[i] = x;
+    s.y[i] = r;
+    s.vx[i] = 5 * r;
+    if (i > 0) x -= m.rest_length(static_cast<std::size_t>(i - 1)) + ft / k;
+  }
+  double polar = kPi / 2;
+  for (int j = 1; j <= wrap; ++j) {  // half a turn: δ2, δ1, … down to the bottom vertex
+    polar -= (j % 2 == 1) ? d2 : d1;
+    const auto i = static_cast<std::size_t>(c + j);
+    s.x[i] = r * std::cos(polar);
+    s.y[i] = r * std::sin(polar);
+    s.vx[i] = 5 * s.y[i];
+    s.vy[i] = -5 * s.x[i];
+  }
+  x = s.x[c + wrap];
+  for (std::size_t i = c + wrap + 1; i < n; ++i) {  // the slack strand, level towards −x
+    x -= m.rest_length(i - 1) + slack / k;
+    s.x[i] = x;
+    s.y[i] = -r;
+    s.vx[i] = -5 * r;
+  }
+  Integrator integ(m, {.step = 1e-4, .theta = 0.6});
+  std::vector<SeatContact> prev(n);
+  Unwinding out;
+  for (int step = 0; step < 4000; ++step) {
+    if (!integ.step(m, s).converged) {
+      out.converged = false;
+      break;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const SeatContact sc =
+          pocket_contact(w, s.x[i], s.y[i], s.vx[i], s.vy[i], s.angle[0], s.speed[0]);
+      const bool over_mouth = std::hypot(s.x[i], s.y[i]) > r + 0.5 * w.pocket_clearance;
+      if (prev[i].active && !sc.active && over_mouth && s.y[i] < 0.0 && s.time > 0.05) {
+        ++out.exits;
+        out.last_force = std::max(out.last_force, prev[i].force);
+        out.last_energy = std::max(out.last_energy, prev[i].energy);
+      }
+      prev[i] = sc;
+    }
+  }
+  std::printf("unwinding, slack %.0f N: %d exits, largest last held force %.1f N, energy %.3g J\n",
+              slack, out.exits, out.last_force, out.last_energy);
+  return out;
+}
+
+TEST(DynamicsPocket, UnwindingJointsLoseTheirForceAtOnceWithTheSharpMouth) {
+  for (double slack : {200.0, 1000.0}) {
+    const Unwinding u = unwind(slack);
+    ASSERT_TRUE(u.converged);
+    EXPECT_GE(u.exits, 3) << slack;  // the leaving side is modelled: joints go out over the mouth
+    EXPECT_GT(u.last_force, 0.5 * slack) << slack;  // a jump of the order of the slack tension
+    EXPECT_LT(u.last_force, 2.0 * slack) << slack;
+    EXPECT_LT(u.last_energy, 5e-3) << slack;
   }
 }
 
