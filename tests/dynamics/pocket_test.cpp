@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/pocket_wheel.hpp"
@@ -22,6 +24,39 @@ constexpr double kPi = std::numbers::pi;
 // Ø18×64 on z = 8 (seed 003's example), centre off the origin, clearance 0.1 mm
 Sprocket wheel(int z = 8, double damping = 0.0) {
   return pocket_wheel(0.064, 0.018, z, 0.3, -0.2, 1e-4, 1e8, damping);
+}
+
+// The contact's force on the joint, −f n (n = ∇m/|∇m|, f the force along it).
+void total_force(const Sprocket& w, const SeatContact& c, double x, double y, double out[2]) {
+  (void)w, (void)x, (void)y;
+  out[0] = c.active ? -c.force * c.nx : 0.0;
+  out[1] = c.active ? -c.force * c.ny : 0.0;
+}
+
+// Its ∂/∂q (row-major) from the contact's fields: −[n ⊗ ∂f/∂q + f κ (I − n nᵀ)] with
+// ∂f/∂q = (∂f/∂g) nᵀ + c ∂ġ/∂q, ∂ġ/∂q = κ (I − n nᵀ) v_rel + ω (−n_y, n_x), plus the rim's
+// dq_extra (exact for the elastic part; the damping's part is exact in the pocket proper and
+// over the rim, not where the two blend).
+void total_dq(const Sprocket& w, const SeatContact& c, double x, double y, double vx, double vy,
+              double omega, double dq[4]) {
+  const double nx = c.nx, ny = c.ny, kt = c.force * c.curvature;
+  const double rx = x - w.centre_x, ry = y - w.centre_y;
+  const double wx = vx + omega * ry, wy = vy - omega * rx;  // v_rel = v − ω ẑ × r
+  const double vn = wx * nx + wy * ny;
+  const double dgq[2] = {(wx - vn * nx) * c.curvature - omega * ny,
+                         (wy - vn * ny) * c.curvature + omega * nx};
+  const double dfq[2] = {c.stiffness * nx + c.damping * dgq[0],
+                         c.stiffness * ny + c.damping * dgq[1]};
+  dq[0] = -(nx * dfq[0] + kt * (1 - nx * nx)) + c.dq_extra[0];
+  dq[1] = -(nx * dfq[1] - kt * nx * ny) + c.dq_extra[1];
+  dq[2] = -(ny * dfq[0] - kt * nx * ny) + c.dq_extra[2];
+  dq[3] = -(ny * dfq[1] + kt * (1 - ny * ny)) + c.dq_extra[3];
+}
+
+bool blends(const SeatContact& c) {
+  const double big = 1e-9 * std::max(1.0, std::abs(c.stiffness));
+  return std::abs(c.dq_extra[0]) > big || std::abs(c.dq_extra[1]) > big ||
+         std::abs(c.dq_extra[2]) > big || std::abs(c.dq_extra[3]) > big;
 }
 
 TEST(DynamicsPocket, GeometryFromSeed003) {
@@ -83,7 +118,9 @@ TEST(DynamicsPocket, ForceIsMinusTheGradientOfTheEnergyAndTorqueMinusItsAngleDer
       const SeatContact e = pocket_contact(w, qx, qy, 0.0, 0.0, ps, 0.0);
       return e.active ? e.energy : 0.0;
     };
-    const double fx = -c.force * c.nx, fy = -c.force * c.ny;
+    double ft[2];
+    total_force(w, c, x, y, ft);
+    const double fx = ft[0], fy = ft[1];
     const double gx = -(energy(x + hq, y, psi) - energy(x - hq, y, psi)) / (2 * hq);
     const double gy = -(energy(x, y + hq, psi) - energy(x, y - hq, psi)) / (2 * hq);
     const double scale = std::max(1.0, c.force);
@@ -119,25 +156,17 @@ TEST(DynamicsPocket, ForceDerivativesMatchFiniteDifferences) {
       const double vx = moving ? 0.05 * u(rng) : 0.0, vy = moving ? 0.05 * u(rng) : 0.0;
       const SeatContact c = pocket_contact(w, x, y, vx, vy, psi, omega);
       if (!c.active || !(c.force > 0.0)) continue;
+      if (blends(c)) continue;  // the rim's blend: in MouthRampIsContinuousWithItsDerivative
       // stay clear of the ramp's end, where the derivative jumps
       if (std::abs(c.penetration - w.contact_smoothing) < 1e-8) continue;
       ++checked;
       auto force = [&](double qx, double qy, double ux, double uy, double out[2]) {
-        const SeatContact e = pocket_contact(w, qx, qy, ux, uy, psi, omega);
-        out[0] = e.active ? -e.force * e.nx : 0.0;
-        out[1] = e.active ? -e.force * e.ny : 0.0;
+        total_force(w, pocket_contact(w, qx, qy, ux, uy, psi, omega), qx, qy, out);
       };
+      double dq[4];
+      total_dq(w, c, x, y, vx, vy, omega, dq);
       const double nx = c.nx, ny = c.ny, kt = c.force * c.curvature;
-      const double rx = x - w.centre_x, ry = y - w.centre_y;
-      const double wx = vx + omega * ry, wy = vy - omega * rx;  // v_rel = v − ω ẑ × r
-      const double vn = wx * nx + wy * ny;
-      const double dgq[2] = {(wx - vn * nx) * c.curvature - omega * ny,
-                             (wy - vn * ny) * c.curvature + omega * nx};
-      const double dfq[2] = {c.stiffness * nx + c.damping * dgq[0],
-                             c.stiffness * ny + c.damping * dgq[1]};
-      const double dq[4] = {-(nx * dfq[0] + kt * (1 - nx * nx)), -(nx * dfq[1] - kt * nx * ny),
-                            -(ny * dfq[0] - kt * nx * ny), -(ny * dfq[1] + kt * (1 - ny * ny))};
-      if (!moving) {  // the integrator's block (its stiffness part)
+      if (!moving) {  // the integrator's block
         const double kn = c.stiffness;
         EXPECT_NEAR(dq[0], -(kn * nx * nx + kt * (1 - nx * nx)), 1e-6 * kn);
         EXPECT_NEAR(dq[1], -(kn - kt) * nx * ny, 1e-6 * kn);
@@ -145,7 +174,8 @@ TEST(DynamicsPocket, ForceDerivativesMatchFiniteDifferences) {
       const double dv[4] = {-c.damping * nx * nx, -c.damping * nx * ny, -c.damping * nx * ny,
                             -c.damping * ny * ny};
       const double hq = 1e-11, hv = 1e-7;
-      const double tol_q = 2e-3 * std::max(1e6, std::abs(c.stiffness));
+      const double tol_q =
+          2e-3 * std::max({1e6, std::abs(c.stiffness), std::abs(c.force * c.curvature)});
       double p[2], q[2];
       force(x + hq, y, vx, vy, p), force(x - hq, y, vx, vy, q);
       EXPECT_NEAR(dq[0], (p[0] - q[0]) / (2 * hq), tol_q) << trial;
@@ -175,8 +205,38 @@ TEST(DynamicsPocket, MouthAndClearance) {
   EXPECT_FALSE(at(r - 0.9 * c, psi).active);  // within the clearance: free
   EXPECT_TRUE(at(r - 1.5 * c, psi).active);   // pressed towards the vertex
   EXPECT_NEAR(at(r - 1.5 * c, psi).penetration, 0.5 * c, 1e-12);
-  EXPECT_TRUE(at(r + 0.49 * c, psi + 1.2 * c / r).active);   // in the mouth, off the vertex
+  EXPECT_TRUE(at(r + 0.49 * c, psi + 1.2 * c / r).active);  // in the mouth, off the vertex
+  EXPECT_FALSE(blends(at(r + 0.49 * c, psi + 1.2 * c / r)));
+  EXPECT_EQ(w.pocket_mouth, 0.0);                            // the sharp mouth by default
   EXPECT_FALSE(at(r + 0.51 * c, psi + 1.2 * c / r).active);  // above the mouth R + c/2
+  // with the ramp (w = c/2): part of the contact above the mouth, with an outward push
+  Sprocket ramped = w;
+  ramped.pocket_mouth = 0.5 * c;
+  const double b = psi + 1.2 * c / r;
+  auto ramp_at = [&](double radius) {
+    return pocket_contact(ramped, ramped.centre_x + radius * std::cos(b),
+                          ramped.centre_y + radius * std::sin(b), 0.0, 0.0, psi, 0.0);
+  };
+  const SeatContact full = ramp_at(r + 0.49 * c), part = ramp_at(r + 0.75 * c);
+  EXPECT_TRUE(part.active);
+  {  // halfway up the ramp: s = ½ of the unramped energy at this penetration (W = 1, g < c)
+    const double g = part.penetration, eps = w.contact_smoothing, kc = w.contact_stiffness;
+    EXPECT_LT(g, c);
+    EXPECT_NEAR(part.energy, 0.5 * kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0),
+                1e-9 * part.energy);
+  }
+  EXPECT_GT(full.energy, 0.0);
+  EXPECT_GT(part.energy, 0.0);
+  const double ux = std::cos(b), uy = std::sin(b);  // F = −f n: its outward part grows
+  EXPECT_LT(part.nx * ux + part.ny * uy, full.nx * ux + full.ny * uy);
+  EXPECT_FALSE(ramp_at(r + 1.01 * c).active);  // above the ramp R + c
+  Sprocket sharp =
+      w;  // explicitly                                // the sharp mouth: nothing beyond R + c/2
+  sharp.pocket_mouth = 0.0;
+  const double q = r + 0.51 * c;
+  EXPECT_FALSE(pocket_contact(sharp, sharp.centre_x + q * std::cos(b),
+                              sharp.centre_y + q * std::sin(b), 0.0, 0.0, psi, 0.0)
+                   .active);
   // a joint entering along the radial tilted by up to 60° is free when it crosses the mouth
   for (double tilt : {0.0, 0.5, 1.0}) {
     const double ex = 0.5 * c * std::tan(tilt);  // tangential offset at height c/2
@@ -189,6 +249,256 @@ TEST(DynamicsPocket, MouthAndClearance) {
   }
 }
 
+// The mouth without a jump: a joint off its vertex by more than the clearance (so g > 0 where it
+// crosses the mouth) meets the force continuously, and the force's derivative is continuous too,
+// at both ends of the ramp R + c/2 and R + c/2 + w; inside the ramp ∂F/∂q from the contact's
+// fields matches central differences. Random vertices, wheel angles, offsets and damping-free
+// and damped joints moving with the wheel turning. The sharp mouth (w = 0) fails the continuity
+// check, so the check can fail.
+TEST(DynamicsPocket, MouthRampIsContinuousWithItsDerivative) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Sprocket ramped = wheel(8, 0.0);  // elastic: the ramp's ∂F/∂q is exact
+  ramped.pocket_mouth = 0.5 * ramped.pocket_clearance;
+  Sprocket sharp = ramped;
+  sharp.pocket_mouth = 0.0;
+  const double c = ramped.pocket_clearance, r = ramped.pitch_radius, w = ramped.pocket_mouth;
+  double worst_jump = 0.0, worst_djump = 0.0, sharp_jump = INFINITY, sharp_djump = INFINITY;
+  int inside = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const double psi = 6.0 * (u(rng) - 0.5), omega = 10.0 * (u(rng) - 0.5);
+    const int m = trial % 16;
+    const double a = psi + (m / 2) * 2 * kPi / 8 + (m % 2 ? ramped.pocket_angle : 0.0);
+    const double side = u(rng) < 0.5 ? -1.0 : 1.0;
+    // tangential offset 1.05c…1.7c: g at the mouth 0.17c…0.77c, held over the ramp (W = 1 up
+    // to g = c)
+    const double beta = side * (1.05 + 0.65 * u(rng)) * c / r;
+    // the joint moving with the wheel's material point, give or take 5 mm/s
+    const double vx = -omega * r * std::sin(a) + 0.01 * (u(rng) - 0.5);
+    const double vy = omega * r * std::cos(a) + 0.01 * (u(rng) - 0.5);
+    auto eval = [&](const Sprocket& s, double rho, double out[2], double dq[4]) {
+      const double x = s.centre_x + rho * std::cos(a + beta);
+      const double y = s.centre_y + rho * std::sin(a + beta);
+      const SeatContact k = pocket_contact(s, x, y, vx, vy, psi, omega);
+      total_force(s, k, x, y, out);
+      for (int i = 0; i < 4; ++i) dq[i] = 0.0;
+      if (k.active && k.force > 0.0) total_dq(s, k, x, y, vx, vy, omega, dq);
+      return k;
+    };
+    auto norm = [](const double d[4]) {
+      return std::max({std::abs(d[0]), std::abs(d[1]), std::abs(d[2]), std::abs(d[3])});
+    };
+    // the scales: the unscaled contact's force and stiffness where the joint crosses the mouth
+    const double delta = 1e-10;
+    double f0[2], d0[4];
+    eval(sharp, r + 0.5 * c - delta, f0, d0);
+    const double fs = std::hypot(f0[0], f0[1]);
+    if (!(fs > 1.0)) continue;  // clamped by the damping
+    const double ks = std::max(norm(d0), 1e6);
+    for (double edge : {r + 0.5 * c, r + 0.5 * c + w}) {  // the old mouth, the rim
+      double fa[2], fb[2], da[4], db[4];
+      eval(ramped, edge - delta, fa, da);
+      eval(ramped, edge + delta, fb, db);
+      // a smooth force changes by about 2δ |∂F/∂q| over the step across the edge
+      const double slope = 2 * delta * std::max(norm(da), norm(db));
+      const double jump = std::hypot(fa[0] - fb[0], fa[1] - fb[1]);
+      worst_jump = std::max(worst_jump, std::max(0.0, jump - 2 * slope) / fs);
+      // the derivative across a narrower step (it varies on the ramp's scale w, steeply: its
+      // smooth change over 2·1e-10 m is up to about 1e-4 of ks)
+      eval(ramped, edge - 1e-12, fa, da);
+      eval(ramped, edge + 1e-12, fb, db);
+      double dj = 0.0;
+      for (int i = 0; i < 4; ++i) dj = std::max(dj, std::abs(da[i] - db[i]));
+      worst_djump = std::max(worst_djump, dj / ks);
+    }
+    {  // the sharp mouth jumps by the full force and stiffness
+      double fa[2], fb[2], da[4], db[4];
+      eval(sharp, r + 0.5 * c - delta, fa, da);
+      eval(sharp, r + 0.5 * c + delta, fb, db);
+      sharp_jump = std::min(sharp_jump, std::hypot(fa[0] - fb[0], fa[1] - fb[1]) / fs);
+      double dj = 0.0;
+      for (int i = 0; i < 4; ++i) dj = std::max(dj, std::abs(da[i] - db[i]));
+      sharp_djump = std::min(sharp_djump, dj / ks);
+    }
+    // inside the ramp: ∂F/∂q against central differences
+    const double rho = r + 0.5 * c + w * (0.02 + 0.96 * u(rng));
+    double f[2], dq[4];
+    const SeatContact k = eval(ramped, rho, f, dq);
+    if (!k.active || !(k.force > 0.0)) continue;
+    if (std::abs(k.penetration - ramped.contact_smoothing) < 1e-8) continue;
+    ++inside;
+    const double x = ramped.centre_x + rho * std::cos(a + beta);
+    const double y = ramped.centre_y + rho * std::sin(a + beta);
+    auto force_at = [&](double qx, double qy, double out[2]) {
+      total_force(ramped, pocket_contact(ramped, qx, qy, vx, vy, psi, omega), qx, qy, out);
+    };
+    const double hq = 1e-11;
+    const double tol =
+        2e-3 * std::max({1e6, std::abs(k.stiffness), std::abs(k.force * k.curvature)});
+    double p[2], q[2];
+    force_at(x + hq, y, p), force_at(x - hq, y, q);
+    EXPECT_NEAR(dq[0], (p[0] - q[0]) / (2 * hq), tol) << trial;
+    EXPECT_NEAR(dq[2], (p[1] - q[1]) / (2 * hq), tol) << trial;
+    force_at(x, y + hq, p), force_at(x, y - hq, q);
+    EXPECT_NEAR(dq[1], (p[0] - q[0]) / (2 * hq), tol) << trial;
+    EXPECT_NEAR(dq[3], (p[1] - q[1]) / (2 * hq), tol) << trial;
+  }
+  std::printf("ramp: force jump %.2e, derivative jump %.2e; sharp: %.3f, %.3f (the least)\n",
+              worst_jump, worst_djump, sharp_jump, sharp_djump);
+  EXPECT_GT(inside, 150);
+  EXPECT_LT(worst_jump, 1e-9);   // of the force, in units of the force at the mouth
+  EXPECT_LT(worst_djump, 1e-4);  // of ∂F/∂q, in units of the contact's stiffness there
+  EXPECT_GT(sharp_jump, 0.999);  // the sharp mouth: the whole force at once
+  EXPECT_GT(sharp_djump, 0.5);   // and its stiffness
+}
+
+// A joint entering its pocket off the vertex by more than the clearance, in the integrator: a
+// link of two joints moving radially inward onto a wheel at rest, the leading joint offset
+// tangentially from vertex 0; frictionless and undamped, θ = ½. With the sharp mouth the joint
+// meets the full contact energy at once where it crosses R + c/2 (the total energy jumps by it);
+// with the ramp the total energy is kept to the integrator's accuracy.
+struct MouthEntry {
+  double drift = 0.0;    // [J] max |E(t) − E(0)|
+  double kinetic = 0.0;  // [J] E(0), all kinetic
+  double contact = 0.0;  // [J] the largest contact energy met
+  bool converged = true;
+};
+MouthEntry mouth_entry(double mouth, double speed, double offset) {
+  Model m = uniform_chain(2, false, 0.064, 0.42, 1e8, 0.0, false);
+  m.alternation = 0.018;
+  Sprocket w = pocket_wheel(0.064, 0.018, 8, 0.0, 0.0, 1e-4, 1e8, 0.0);
+  w.pocket_mouth = mouth;
+  w.driver = true;  // held at rest
+  w.speed = 0.0;
+  m.sprockets = {w};
+  State s(2, 1);
+  s.angle = {0.0};  // vertex 0 at polar angle 0
+  s.speed = {0.0};
+  const double c = w.pocket_clearance, beta = offset / w.pitch_radius;
+  const double start = w.pitch_radius + 0.5 * c + 0.5 * c + 2e-5;  // just outside the ramp
+  for (int i = 0; i < 2; ++i) {
+    const double rho = start + i * m.rest_length(0);
+    s.x[i] = rho * std::cos(beta);
+    s.y[i] = rho * std::sin(beta);
+    s.vx[i] = -speed * std::cos(beta);
+    s.vy[i] = -speed * std::sin(beta);
+  }
+  MouthEntry out;
+  const double e0 = energy(m, s).total();
+  out.kinetic = energy(m, s).kinetic;
+  Integrator integ(m, {.step = 1e-6, .theta = 0.5});
+  for (int k = 0; k < 3000; ++k) {
+    out.converged = out.converged && integ.step(m, s).converged;
+    const Energy e = energy(m, s);
+    out.drift = std::max(out.drift, std::abs(e.total() - e0));
+    const SeatContact sc = pocket_contact(w, s.x[0], s.y[0], 0.0, 0.0, 0.0, 0.0);
+    if (sc.active) out.contact = std::max(out.contact, sc.energy);
+  }
+  return out;
+}
+
+TEST(DynamicsPocket, JointEnteringOffItsVertexKeepsTheEnergyWithTheRamp) {
+  for (double speed : {0.2, 0.5}) {
+    for (double offset : {1.2e-4, 1.5e-4}) {
+      const MouthEntry sharp = mouth_entry(0.0, speed, offset);
+      const MouthEntry ramp = mouth_entry(0.5e-4, speed, offset);
+      ASSERT_TRUE(sharp.converged && ramp.converged);
+      std::printf(
+          "v %.1f offset %.0f um: E0 %.3e J, sharp drift %.3e J, ramp drift %.3e J, "
+          "contact energy met %.3e J\n",
+          speed, offset * 1e6, ramp.kinetic, sharp.drift, ramp.drift, ramp.contact);
+      EXPECT_GT(ramp.contact, 1e-3 * ramp.kinetic);  // the joint did meet the contact
+      EXPECT_GT(sharp.drift, 0.05 * sharp.kinetic);
+      EXPECT_LT(ramp.drift, 1e-3 * ramp.kinetic);
+    }
+  }
+}
+
+// Unwinding (the slack side, docs/models/dynamics.md, "Pocket wheel: unwinding"): a strand comes
+// in over the top of a driver (1 kN at its far end), wraps half a turn and leaves at the bottom
+// towards −x (F_s at its far end). The leaving joints go out over the mouth: with the sharp
+// mouth each loses, in one step, the force that held it, of the order of the slack tension —
+// pinned as measured (233 N at F_s = 200 N, 954 N at 1 kN; energy under 5 mJ an exit).
+struct Unwinding {
+  int exits = 0;             // joints leaving over the mouth below the centre
+  double last_force = 0.0;   // [N] the largest force at a leaving joint's last held step
+  double last_energy = 0.0;  // [J] the largest contact energy lost there
+  bool converged = true;
+};
+Unwinding unwind(double slack) {
+  const double t = 0.064, d = 0.018, k = 1e8, ft = 1000.0;
+  Sprocket w = pocket_wheel(t, d, 8, 0.0, 0.0, 1e-4, 1e8, 2000.0);
+  w.driver = true;
+  w.speed = -5.0;  // clockwise: the top runs along +x
+  const double r = w.pitch_radius, d1 = w.pocket_angle, d2 = 2 * kPi / 8 - d1;
+  const int c = 21, wrap = 8, bottom = 20;  // node c at the top vertex; link c is t − d (odd)
+  const auto n = static_cast<std::size_t>(c + wrap + bottom + 1);
+  Model m = uniform_chain(n, false, t, 0.42, k, 2000.0, false);
+  m.alternation = d;
+  m.sprockets = {w};
+  m.loads = {{.node = 0, .fx = -ft, .fy = 0.0}, {.node = n - 1, .fx = -slack, .fy = 0.0}};
+  State s(n, 1);
+  s.angle = {kPi / 2};  // vertex 0 at the top
+  s.speed = {-5.0};
+  double x = 0.0;
+  for (int i = c; i >= 0; --i) {  // the tight strand, level through the top vertex
+    s.x[i] = x;
+    s.y[i] = r;
+    s.vx[i] = 5 * r;
+    if (i > 0) x -= m.rest_length(static_cast<std::size_t>(i - 1)) + ft / k;
+  }
+  double polar = kPi / 2;
+  for (int j = 1; j <= wrap; ++j) {  // half a turn: δ2, δ1, … down to the bottom vertex
+    polar -= (j % 2 == 1) ? d2 : d1;
+    const auto i = static_cast<std::size_t>(c + j);
+    s.x[i] = r * std::cos(polar);
+    s.y[i] = r * std::sin(polar);
+    s.vx[i] = 5 * s.y[i];
+    s.vy[i] = -5 * s.x[i];
+  }
+  x = s.x[c + wrap];
+  for (std::size_t i = c + wrap + 1; i < n; ++i) {  // the slack strand, level towards −x
+    x -= m.rest_length(i - 1) + slack / k;
+    s.x[i] = x;
+    s.y[i] = -r;
+    s.vx[i] = -5 * r;
+  }
+  Integrator integ(m, {.step = 1e-4, .theta = 0.6});
+  std::vector<SeatContact> prev(n);
+  Unwinding out;
+  for (int step = 0; step < 4000; ++step) {
+    if (!integ.step(m, s).converged) {
+      out.converged = false;
+      break;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const SeatContact sc =
+          pocket_contact(w, s.x[i], s.y[i], s.vx[i], s.vy[i], s.angle[0], s.speed[0]);
+      const bool over_mouth = std::hypot(s.x[i], s.y[i]) > r + 0.5 * w.pocket_clearance;
+      if (prev[i].active && !sc.active && over_mouth && s.y[i] < 0.0 && s.time > 0.05) {
+        ++out.exits;
+        out.last_force = std::max(out.last_force, prev[i].force);
+        out.last_energy = std::max(out.last_energy, prev[i].energy);
+      }
+      prev[i] = sc;
+    }
+  }
+  std::printf("unwinding, slack %.0f N: %d exits, largest last held force %.1f N, energy %.3g J\n",
+              slack, out.exits, out.last_force, out.last_energy);
+  return out;
+}
+
+TEST(DynamicsPocket, UnwindingJointsLoseTheirForceAtOnceWithTheSharpMouth) {
+  for (double slack : {200.0, 1000.0}) {
+    const Unwinding u = unwind(slack);
+    ASSERT_TRUE(u.converged);
+    EXPECT_GE(u.exits, 3) << slack;  // the leaving side is modelled: joints go out over the mouth
+    EXPECT_GT(u.last_force, 0.5 * slack) << slack;  // a jump of the order of the slack tension
+    EXPECT_LT(u.last_force, 2.0 * slack) << slack;
+    EXPECT_LT(u.last_energy, 5e-3) << slack;
+  }
+}
+
 TEST(DynamicsPocket, BadFieldsAreListedAtOnce) {
   Model m = uniform_chain(5, true, 0.064, 0.4, 1e8, 0.0, false);
   m.alternation = 0.018;  // a closed loop of 5 links cannot alternate
@@ -196,15 +506,16 @@ TEST(DynamicsPocket, BadFieldsAreListedAtOnce) {
   w.pocket_angle = 1.2;  // > 2π/8
   w.pocket_clearance = -1e-4;
   w.contact_stiffness = 0.0;
+  w.pocket_mouth = -1e-5;
   w.inertia = 1.0;
   w.friction = 0.2;  // friction in the pockets is not built
   m.sprockets = {w};
   const std::vector<Issue> issues = validate(m);
   std::string fields;
   for (const Issue& i : issues) fields += i.field + " ";
-  for (const char* f :
-       {"alternation", "sprocket[0].pocket_angle", "sprocket[0].pocket_clearance",
-        "sprocket[0].contact_stiffness", "sprocket[0].contact_smoothing", "sprocket[0].friction"}) {
+  for (const char* f : {"alternation", "sprocket[0].pocket_angle", "sprocket[0].pocket_clearance",
+                        "sprocket[0].contact_stiffness", "sprocket[0].contact_smoothing",
+                        "sprocket[0].pocket_mouth", "sprocket[0].friction"}) {
     EXPECT_NE(fields.find(f), std::string::npos) << f << " in " << fields;
   }
   Model a = uniform_chain(4, false, 0.064, 0.4, 1e8, 0.0, false);

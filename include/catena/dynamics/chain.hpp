@@ -56,6 +56,13 @@ struct Sprocket {
   bool pocket = false;
   double pocket_angle = 0.0;      ///< [rad] δ1, the central angle of the p + a side
   double pocket_clearance = 0.0;  ///< [m] c: a joint within c of its vertex is free
+  /// [m] w: the pocket's mouth ramp (docs/models/dynamics.md, "Pocket wheel: the mouth"). 0 (the
+  /// default) is the sharp mouth: the contact acts within |q − O| ≤ R + c/2 and is cut there.
+  /// w > 0 adds a ramp over R + c/2 < |q − O| < R + c/2 + w in which the contact's energy is
+  /// E₀(g) W(g) s(h): s a C² step in the depth h = R + c/2 + w − |q − O|, W a C² step from 1 at
+  /// g ≤ c to 0 at g ≥ 2c; a joint within 2c of its vertex then meets the force and its
+  /// derivative continuously where it crosses the mouth. Not the default: see the docs.
+  double pocket_mouth = 0.0;
   /// [-] μ of the roller–seat contact: Coulomb friction against the roller's slip along the seat
   /// surface relative to the wheel (0: frictionless seats, the default)
   double friction = 0.0;
@@ -328,7 +335,10 @@ struct SeatContact {
   /// where the roller touches: 0 the seating arc, 1 a flank, 2 a tooth's corner (the flank/tip
   /// junction, or the flanks' apex), 3 the tip's arc
   int surface = 0;
-  double nx = 0.0, ny = 0.0;          ///< unit vector from the seat centre to the roller
+  double nx = 0.0, ny = 0.0;  ///< unit vector from the seat centre to the roller
+  /// The pocket's mouth ramp (pocket_contact; zero elsewhere): the part of the exact elastic
+  /// ∂F/∂q (row-major) that the fields above do not give, −[(∂f/∂g) n nᵀ + f κ (I − n nᵀ)].
+  double dq_extra[4] = {0.0, 0.0, 0.0, 0.0};
   double torque = 0.0;                ///< [N·m] on the wheel, counter-clockwise positive
   double seat_x = 0.0, seat_y = 0.0;  ///< [m] the seat centre
 };
@@ -348,8 +358,10 @@ void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx
 /// e = q − C, the penetration is g = |e| − c (c the clearance), with the seats' force law
 /// (f ≥ 0 towards C, C¹ ramp over ε, damping on ġ relative to the wheel). Active only within the
 /// pocket's mouth, |q − O| ≤ R + c/2: a joint enters from outside force-free when it comes within
-/// 60° of the radial, and leaves if pulled out along the radial. Same result fields as seat_contact
-/// (curvature 1/|e|, the normal n = e/|e|).
+/// 60° of the radial, and leaves if pulled out along the radial. With `pocket_mouth` w > 0, the
+/// ramp above the mouth (Sprocket::pocket_mouth): there the force −∇(E₀ W s) has a radial part,
+/// and the result's n is the force's direction, its force the magnitude, dq_extra the rest of
+/// the elastic ∂F/∂q. Same result fields as seat_contact (curvature 1/|e|, the normal n = e/|e|).
 SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, double vy,
                            double angle, double speed);
 
@@ -361,7 +373,7 @@ inline SeatContact wheel_contact(const Sprocket& w, double x, double y, double v
                   : seat_contact(w, x, y, vx, vy, angle, speed);
 }
 inline double contact_reach(const Sprocket& w) {
-  if (w.pocket) return w.pitch_radius + 0.5 * w.pocket_clearance;
+  if (w.pocket) return w.pitch_radius + 0.5 * w.pocket_clearance + w.pocket_mouth;
   return (w.tip_radius > 0.0 ? w.tip_radius : w.pitch_radius) + w.roller_radius;
 }
 

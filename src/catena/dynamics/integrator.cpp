@@ -249,6 +249,17 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       torque += sc.torque;
       solver_.rhs[i].x -= h * sc.force * sc.nx;  // the force on the roller is −f n
       solver_.rhs[i].y -= h * sc.force * sc.ny;
+      if (wheel.pocket && jacobian) {
+        // the pocket's mouth ramp: the rest of the elastic ∂F/∂q on the diagonal block (its
+        // coupling to the wheel's angle and the damping's are left out: quasi-Newton, the residual
+        // is exact)
+        const double* e = sc.dq_extra;
+        if (e[0] != 0.0 || e[1] != 0.0 || e[2] != 0.0 || e[3] != 0.0) {
+          const double hq = h * th;
+          Mat2& d = solver_.diag[i];
+          d = {d.a - hq * e[0], d.b - hq * e[1], d.c - hq * e[2], d.d - hq * e[3]};
+        }
+      }
       // Seat friction (docs/models/dynamics.md, "Seat friction"): F(q, v, ψ, ω) on the roller at
       // the θ point with the step's velocities, its reaction's torque on the wheel
       const SeatFriction sf =

@@ -40,12 +40,26 @@ PocketVertex nearest_pocket(const Sprocket& w, double polar, double angle) {
   return {k + 2, angle + (m + 1.0) * tau};
 }
 
+namespace {
+// The C² step s = x³(10 − 15x + 6x²), x = (t − a)/(b − a) clamped to [0, 1], with its
+// derivatives in t.
+struct Step {
+  double s = 0.0, ds = 0.0, dds = 0.0;
+};
+Step smooth_step(double t, double a, double b) {
+  const double l = b - a, x = std::clamp((t - a) / l, 0.0, 1.0);
+  return {x * x * x * (10.0 - 15.0 * x + 6.0 * x * x), 30.0 * x * x * (1.0 - x) * (1.0 - x) / l,
+          60.0 * x * (1.0 - x) * (1.0 - 2.0 * x) / (l * l)};
+}
+}  // namespace
+
 SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, double vy,
                            double angle, double speed) {
   SeatContact c;
   const double rx = x - w.centre_x, ry = y - w.centre_y;
-  const double reach = contact_reach(w);  // the mouth: R + c/2
-  if (rx * rx + ry * ry > reach * reach) return c;
+  const double reach = contact_reach(w);  // the mouth R + c/2, or its ramp's top
+  const double rho2 = rx * rx + ry * ry;
+  if (rho2 > reach * reach) return c;
   const PocketVertex v = nearest_pocket(w, std::atan2(ry, rx), angle);
   c.seat = v.index;
   c.seat_x = w.centre_x + w.pitch_radius * std::cos(v.angle);
@@ -54,10 +68,67 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
   const double dist = std::sqrt(ex * ex + ey * ey);
   const double g = dist - w.pocket_clearance;
   if (!(g > 0.0)) return c;
-  c.nx = ex / dist;
-  c.ny = ey / dist;
+  const double nx = ex / dist, ny = ey / dist;
+  c.nx = nx;
+  c.ny = ny;
   c.curvature = 1.0 / dist;
-  apply_seat_law(w, g, rx, ry, vx, vy, speed, c);  // the seats' force law
+  const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance;
+  const double rho = std::sqrt(rho2);
+  if (!(w.pocket_mouth > 0.0) || rho <= mouth) {     // within the mouth: the pocket as it was
+    apply_seat_law(w, g, rx, ry, vx, vy, speed, c);  // the seats' force law
+    return c;
+  }
+  // The mouth's ramp, R + c/2 < ρ < R + c/2 + w: the energy E₀(g) W(g) s(h), h = R + c/2 + w − ρ,
+  // s the C² step from 0 at the ramp's top to 1 at the mouth, W the C² step from 1 at g ≤ c to 0
+  // at g ≥ 2c (a joint more than 3c from its vertex is not held over the mouth: bounded forces).
+  // With Φ = E₀ W (Φ' = f_el W + E₀ W'), ∇g = n, ∇h = −r̂: F = −[s (Φ' + damping)] n + Φ s' r̂.
+  const double cl = w.pocket_clearance;
+  const Step ws = smooth_step(g, cl, 2.0 * cl);
+  const double wg = 1.0 - ws.s, dwg = -ws.ds, ddwg = -ws.dds;
+  if (!(wg > 0.0)) return c;
+  const Step ss = smooth_step(contact_reach(w) - rho, 0.0, w.pocket_mouth);
+  if (!(ss.s > 0.0)) return c;
+  apply_seat_law(w, g, rx, ry, vx, vy, speed, c);  // f₀ = f_el + c ġ ≥ 0, E₀, …
+  const double eps = w.contact_smoothing, kc = w.contact_stiffness;
+  const double fel = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
+  const double kel = g < eps ? kc * g / eps : kc;
+  const double e0 = c.energy, f0 = c.force;
+  const double phi = e0 * wg, dphi = fel * wg + e0 * dwg;
+  const double ddphi = kel * wg + 2.0 * fel * dwg + e0 * ddwg;
+  const double along = ss.s * (wg * f0 + e0 * dwg);  // A: the force −A n
+  const double radial = phi * ss.ds;                 // B: the force +B r̂
+  const double ux = rx / rho, uy = ry / rho;
+  const double vxn = along * nx - radial * ux, vyn = along * ny - radial * uy;  // F = −V
+  const double len = std::hypot(vxn, vyn);
+  c.energy = phi * ss.s;
+  c.damping_power *= ss.s * wg;
+  c.torque = along * (rx * ny - ry * nx);  // the radial part has no moment
+  c.damping *= ss.s * wg;
+  c.stiffness *= ss.s * wg;
+  if (!(len > 0.0)) {
+    c.force = 0.0;
+    c.stiffness = c.damping = 0.0;
+    return c;
+  }
+  c.nx = vxn / len;
+  c.ny = vyn / len;
+  c.force = len;
+  // the exact elastic ∂F/∂q = −Φ'' s n nᵀ + Φ' s' (n r̂ᵀ + r̂ nᵀ) − Φ' s P_n/|e| − Φ s'' r̂ r̂ᵀ
+  // + Φ s' P_r/ρ, less the block the fields give
+  const double s0 = ss.s, s1 = ss.ds, s2 = ss.dds, pe = dphi * s0 / dist, pr = phi * s1 / rho;
+  const double n[2] = {nx, ny}, u[2] = {ux, uy};
+  double exact[4];
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const double id = i == j ? 1.0 : 0.0;
+      exact[2 * i + j] = -ddphi * s0 * n[i] * n[j] + dphi * s1 * (n[i] * u[j] + u[i] * n[j]) -
+                         pe * (id - n[i] * n[j]) - phi * s2 * u[i] * u[j] + pr * (id - u[i] * u[j]);
+    }
+  }
+  const double ft = c.force * c.curvature, kn = c.stiffness, mx = c.nx, my = c.ny;
+  const double fields[4] = {-(kn * mx * mx + ft * (1 - mx * mx)), -(kn - ft) * mx * my,
+                            -(kn - ft) * mx * my, -(kn * my * my + ft * (1 - my * my))};
+  for (int i = 0; i < 4; ++i) c.dq_extra[i] = exact[i] - fields[i];
   return c;
 }
 
@@ -75,6 +146,11 @@ void pocket_issues(std::vector<Issue>& out, const Sprocket& w, const std::string
       !(std::isfinite(r) && w.pocket_clearance <= 0.1 * r)) {
     out.push_back({f + "pocket_clearance", check::format_si(w.pocket_clearance, "m"),
                    "a length in (0, R/10] (R the pitch radius)"});
+  }
+  if (!std::isfinite(w.pocket_mouth) || !(w.pocket_mouth >= 0.0) ||
+      !(w.pocket_mouth <= w.pocket_clearance)) {
+    out.push_back({f + "pocket_mouth", check::format_si(w.pocket_mouth, "m"),
+                   "a length in [0, pocket clearance] (the mouth's ramp; 0 a sharp mouth)"});
   }
   check::finite_positive(out, (f + "contact_stiffness").c_str(), w.contact_stiffness, "N/m");
   if (!std::isfinite(w.contact_smoothing) || !(w.contact_smoothing > 0.0) ||
