@@ -1,29 +1,35 @@
 // The start of a chain loop over any number of sprockets (docs/models/dynamics.md, "Command"): the
 // belt path round the wheels' pitch circles (the convex hull of the circles: arcs on the wheels,
-// outer common tangents between them, counter-clockwise) and N nodes placed along it at one
-// spacing so that the loop closes, each wheel turned so that its seats sit under its wrapped
-// rollers.
+// outer common tangents between them, counter-clockwise; or, with wheels on the back of the chain,
+// a serpentine path through the wheels in their given order, crossed tangents between a wheel
+// inside the loop and one outside it) and N nodes placed along it at one spacing so that the loop
+// closes, each wheel turned so that its seats sit under its wrapped rollers.
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "catena/dynamics/chain.hpp"
 
 namespace catena::dynamics {
 
-/// A pitch circle: centre and radius [m].
+/// A pitch circle: centre and radius [m]; `back`: the wheel is on the back of the chain (outside
+/// the loop, the chain wrapping it clockwise while the loop runs counter-clockwise).
 struct Circle {
   double x = 0.0, y = 0.0, radius = 0.0;
+  bool back = false;
 };
 
-/// One piece of the belt path: an arc on wheel `wheel` from the outward normal angle `from` to
-/// `to` (counter-clockwise, to > from), or a straight span from (x0, y0) to (x1, y1).
+/// One piece of the belt path: an arc on wheel `wheel` from the angle `from` to `to` of the chain's
+/// point about the wheel's centre (counter-clockwise, to > from, on a wheel inside the loop;
+/// clockwise, to < from, on a wheel on its back), or a straight span from (x0, y0) to (x1, y1).
 struct PathPiece {
   bool arc = false;
   std::size_t wheel = 0;        ///< arc: the wheel; span: the wheel it leaves
   std::size_t next = 0;         ///< span: the wheel it arrives on
-  double from = 0.0, to = 0.0;  ///< arc: [rad] normal angles
+  double from = 0.0, to = 0.0;  ///< arc: [rad] the chain's angles about the centre
+  double sense = 1.0;           ///< arc: +1 wrapped counter-clockwise, −1 on the back (clockwise)
   double cx = 0.0, cy = 0.0;    ///< arc: [m] the wheel's centre
   double radius = 0.0;          ///< arc: [m] its pitch radius
   double x0 = 0.0, y0 = 0.0;    ///< [m] start point
@@ -41,10 +47,21 @@ struct BeltPath {
   /// wheels the hull does not wrap exactly once (inside the hull, touching it at a point, or met
   /// twice): empty when the path is usable
   std::vector<std::size_t> unwrapped;
+  /// a serpentine path's faults (wheel: the one named, or the count of circles for the path as a
+  /// whole; why: what is wrong); empty when the path is usable
+  struct Fault {
+    std::size_t wheel = 0;
+    std::string why;
+  };
+  std::vector<Fault> faults;
 };
 
 /// The belt path round the circles (at least two; no circle may contain another), starting at the
-/// point where it arrives on circle `first`.
+/// point where it arrives on circle `first`. Without a circle on the back: the hull of the circles
+/// (gift wrapping). With one: the serpentine path through the circles in their given order,
+/// counter-clockwise round the loop, each wheel on the side `back` says — its faults (a wheel not
+/// wrapped, a span crossing another or running through a wheel, the loop not turning once
+/// counter-clockwise) in `faults`, with no pieces.
 BeltPath belt_path(const std::vector<Circle>& circles, std::size_t first);
 
 /// The point at arc length `s` along the path (taken modulo its length) and the unit tangent.

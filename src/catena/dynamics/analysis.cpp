@@ -151,6 +151,10 @@ std::vector<Parameter> sprocket_fields() {
   return {number("teeth",
                  "number of teeth z, an integer in [8, 150] (even for two wheels without centres)"),
           text("role", "driver, driven or idler (idler: with centres only)"),
+          text("side",
+               "the side of the chain the wheel runs on: inside (default; the loop wraps it) or "
+               "outside (on the back of the chain, a serpentine path; an idler of the free "
+               "layout only, the rows then listed counter-clockwise round the loop)"),
           quantity("speed", K::kAngularSpeed, "driver: speed, counter-clockwise, > 0"),
           number("inertia", "driven or idler: moment of inertia J [kg m^2], > 0"),
           number("load_torque", "driven: load torque T_L [N m], >= 0"),
@@ -228,12 +232,14 @@ struct SprocketInput {
   std::optional<double> seat_friction;  // this wheel's μ, overriding dynamics.seat_friction
   std::string role;
   bool has_role = false;
+  std::string side = "inside";      // inside or outside (the back of the chain)
   std::map<std::string, int> seen;  // every key given (read or not) → its line
 };
 
 // One wheel of the free layout (every sprocket with a centre).
 struct LayoutWheel {
-  std::string role;  // driver, driven or idler
+  std::string role;   // driver, driven or idler
+  bool back = false;  // side = "outside": on the back of the chain
   int teeth = 0;
   double x = NAN, y = NAN;
   double speed = NAN, inertia = NAN, load = 0.0;
@@ -315,6 +321,16 @@ constexpr int kMinWrapTeeth = 3;        // a wheel's wrap, in teeth (docs/models
 
 constexpr const char* kTakeupKeys[] = {"takeup_force", "takeup_direction", "takeup_stiffness",
                                        "takeup_damping", "takeup_mass"};
+
+// `side` on a wheel that cannot be on the back of the chain (without centres, a driver or a driven
+// wheel): "outside" refused; "inside" (the default) is accepted anywhere.
+template <class Field>
+void refuse_back(const SprocketInput& w, const Field& field, std::vector<Issue>& issues) {
+  if (w.seen.count("side") && w.side == "outside")
+    issues.push_back({field("side"), "'outside'",
+                      "inside: only an idler of the free layout (role = \"idler\", centres on "
+                      "every sprocket) runs on the back of the chain"});
+}
 
 // A take-up's keys on a wheel that is not an idler (or without centres): refused, each.
 template <class Field>
@@ -419,7 +435,11 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
       issues.push_back({field("role"), "(missing)", "driver, driven or idler"});
       continue;
     }
-    if (w.role != "idler") refuse_takeup(w, field, issues);
+    if (w.role != "idler") {
+      refuse_takeup(w, field, issues);
+      refuse_back(w, field, issues);
+    }
+    lw.back = w.role == "idler" && w.side == "outside";
     if (w.role == "driver") {
       ++drivers;
       s.driver = i;
@@ -484,7 +504,7 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
                                                    .roller_diameter = s.roller,
                                                    .inner_width = s.width,
                                                    .teeth = lw.teeth});
-      s.circles[i] = {lw.x, lw.y, 0.5 * iso.pitch_diameter};
+      s.circles[i] = {lw.x, lw.y, 0.5 * iso.pitch_diameter, lw.back};
       tip[i] = 0.5 * iso.tip_diameter_max;
       clearance[i] = iso.min_gap.seating_radius - 0.5 * s.roller;
       teeth[i] = lw.teeth;
@@ -524,17 +544,45 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
                       "on the convex hull of the pitch circles, wrapped once: the chain runs "
                       "round the wheels' hull (this wheel is inside it, only touches it or is met "
                       "twice)"});
-  if (!s.path.unwrapped.empty()) return;
+  for (const BeltPath::Fault& f : s.path.faults)
+    issues.push_back(f.wheel < n
+                         ? Issue{centre_field(f.wheel), centre_value(f.wheel), f.why}
+                         : Issue{"dynamics.sprocket", std::to_string(n) + " sprockets", f.why});
+  if (!s.path.unwrapped.empty() || !s.path.faults.empty()) return;
+  // a serpentine path's spans pass wheels other than their two on either side: each must clear
+  // their teeth by the roller (the hull's spans have every other wheel on their inside)
+  if (std::any_of(s.wheels.begin(), s.wheels.end(), [](const LayoutWheel& w) { return w.back; })) {
+    bool clear = true;
+    for (const PathPiece& q : s.path.pieces) {
+      if (q.arc) continue;
+      for (std::size_t w = 0; w < n; ++w) {
+        if (w == q.wheel || w == q.next) continue;
+        const double ux = q.x1 - q.x0, uy = q.y1 - q.y0, cx = s.circles[w].x - q.x0,
+                     cy = s.circles[w].y - q.y0;
+        const double t = std::clamp((cx * ux + cy * uy) / (ux * ux + uy * uy), 0.0, 1.0);
+        const double gap = std::hypot(cx - t * ux, cy - t * uy);
+        const double least = tip[w] + 0.5 * s.roller;
+        if (gap >= least) continue;
+        clear = false;
+        issues.push_back(
+            {centre_field(w), centre_value(w),
+             "a centre clear of the span sprocket[" + std::to_string(q.wheel) + "] -> sprocket[" +
+                 std::to_string(q.next) + "]: at least d_a,max/2 + d1/2 = " + mm(least) +
+                 " from its line (the span's rollers must pass the teeth; here " + mm(gap) + ")"});
+      }
+    }
+    if (!clear) return;
+  }
   bool wrapped = true;
   for (const PathPiece& q : s.path.pieces) {
     if (!q.arc) continue;
     const double least = kMinWrapTeeth * 2.0 * kPi / teeth[q.wheel];
-    if (q.to - q.from >= least) continue;
+    if (std::abs(q.to - q.from) >= least) continue;
     wrapped = false;
     issues.push_back({centre_field(q.wheel), centre_value(q.wheel),
                       "a centre where the chain wraps at least " + std::to_string(kMinWrapTeeth) +
                           " teeth of the wheel (" + shown(least * 180.0 / kPi) + " deg; here " +
-                          shown((q.to - q.from) * 180.0 / kPi) + " deg)"});
+                          shown(std::abs(q.to - q.from) * 180.0 / kPi) + " deg)"});
   }
   if (!wrapped) return;
   // a take-up pushes its idler against the chain: its slide must point out of the loop, along
@@ -685,12 +733,18 @@ Setup parse(const analysis::Inputs& in) {
       const auto k = row_keys.find(key);
       if (k == row_keys.end()) {
         issues.push_back({where(v), v.text,
-                          "a key of a sprocket: teeth, role, speed, inertia, load_torque, "
+                          "a key of a sprocket: teeth, role, side, speed, inertia, load_torque, "
                           "centre_x, centre_y, takeup_force, takeup_direction, "
                           "takeup_stiffness, takeup_damping, takeup_mass, seat_friction"});
         continue;
       }
       w.seen[key] = v.line;
+      if (key == "side") {
+        w.side = v.text;
+        if (!v.is_string || (v.text != "inside" && v.text != "outside"))
+          issues.push_back({where(v), "'" + v.text + "'", "inside or outside"});
+        continue;
+      }
       if (key == "role") {
         w.role = v.text;
         w.has_role = true;
@@ -1009,6 +1063,8 @@ Setup parse(const analysis::Inputs& in) {
     const int lowest = s.pocket ? 4 : 8;
     const std::string range = "an even integer in [" + std::to_string(lowest) + ", 150]";
     refuse_takeup(
+        w, [&](const std::string& key) { return base + key + l; }, issues);
+    refuse_back(
         w, [&](const std::string& key) { return base + key + l; }, issues);
     if (!w.teeth) {
       issues.push_back({base + "teeth" + l, "(missing)", range});
@@ -1804,6 +1860,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                               {"torque", r.sprocket[w].torque}});
     // a wheel's own seat friction, only when some wheel was given one
     if (per_wheel_friction(d)) wheel["seat_friction"] = wheel_mu(d, w);
+    // the side, only on a wheel on the back of the chain (a serpentine path)
+    if (d.layout() && d.wheels[w].back) wheel["side"] = "outside";
     wheels.push_back(std::move(wheel));
   }
   j["sprocket"] = wheels;
@@ -2076,6 +2134,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
   for (std::size_t w = 0; w < r.sprocket.size(); ++w) {
     t << "    sprocket " << w << " (" << role_of(d, w);
     if (d.layout()) t << ", z = " << d.wheels[w].teeth;
+    if (d.layout() && d.wheels[w].back) t << ", on the back of the chain";
     t << ")  speed " << format_g(late_mean(r.sprocket[w].speed), 6) << " rad/s, chain torque "
       << format_g(late_mean(r.sprocket[w].torque), 5) << " N m\n";
   }
