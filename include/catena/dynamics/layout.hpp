@@ -30,12 +30,16 @@ struct PathPiece {
   std::size_t next = 0;         ///< span: the wheel it arrives on
   double from = 0.0, to = 0.0;  ///< arc: [rad] the chain's angles about the centre
   double sense = 1.0;           ///< arc: +1 wrapped counter-clockwise, −1 on the back (clockwise)
-  double cx = 0.0, cy = 0.0;    ///< arc: [m] the wheel's centre
-  double radius = 0.0;          ///< arc: [m] its pitch radius
-  double x0 = 0.0, y0 = 0.0;    ///< [m] start point
-  double x1 = 0.0, y1 = 0.0;    ///< [m] end point
-  double length = 0.0;          ///< [m]
-  double start = 0.0;           ///< [m] arc length along the path at its start
+  /// a span laid sagging (the start with slack, `sag_span`): not straight but a circular arc from
+  /// (x0, y0) to (x1, y1) about (cx, cy) of `radius`, from the angle `from` (`sense` +1); still a
+  /// span (arc false)
+  bool sag = false;
+  double cx = 0.0, cy = 0.0;  ///< arc: [m] the wheel's centre
+  double radius = 0.0;        ///< arc: [m] its pitch radius
+  double x0 = 0.0, y0 = 0.0;  ///< [m] start point
+  double x1 = 0.0, y1 = 0.0;  ///< [m] end point
+  double length = 0.0;        ///< [m]
+  double start = 0.0;         ///< [m] arc length along the path at its start
 };
 
 /// The belt path: pieces in order counter-clockwise, starting with the arc on wheel `first` (the
@@ -90,6 +94,24 @@ struct LoopPlacement {
 /// spacing cannot be solved.
 LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circles,
                          const std::vector<int>& teeth, int nodes, double pitch);
+
+/// The span of the path a slack chain sags in: the straight piece whose outward normal (the
+/// right of the travel) points most nearly down (−y); the path's piece count if it has none.
+std::size_t slack_span(const BeltPath& path);
+
+/// The path with span `piece` laid as a circular arc of its chord plus `extra` (> 0), bulging
+/// outward (to the right of the travel), between the same tangent points; the other pieces and the
+/// wheels unchanged. Empty (no pieces) if `piece` is not a span or the arc would exceed a half
+/// circle.
+BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra);
+
+/// A start with slack: N nodes at chord exactly `pitch` (so the chain is N·pitch long) on the path
+/// with its slack span (`slack_span`) sagging by the extra length that closes the loop (solved by
+/// secant). `laid` gets that path. Empty placement if N·pitch does not exceed the path's length or
+/// the sag cannot be solved.
+LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
+                               const std::vector<int>& teeth, int nodes, double pitch,
+                               BeltPath& laid);
 
 /// The loop's start state from a placement: nodes at the placement, moving along the path at
 /// `chain_speed`; every wheel at its placement angle, turning at chain_speed / its radius.

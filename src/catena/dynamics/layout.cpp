@@ -275,7 +275,7 @@ PathPoint path_point(const BeltPath& path, double s) {
   const PathPiece& q = path.pieces[k];
   p.piece = k;
   const double along = std::clamp(u - q.start, 0.0, q.length);
-  if (q.arc) {
+  if (q.arc || q.sag) {
     const double t = q.from + q.sense * along / q.radius;
     const double c = std::cos(t), sn = std::sin(t);
     p.x = q.cx + q.radius * c;
@@ -304,7 +304,7 @@ double next_node(const BeltPath& path, double s, double h) {
   double u = std::fmod(s, path.length);
   if (u < 0.0) u += path.length;
   const double along = u - q.start;
-  if (q.arc && h < 2.0 * q.radius) {
+  if ((q.arc || q.sag) && h < 2.0 * q.radius) {
     const double step = 2.0 * q.radius * std::asin(h / (2.0 * q.radius));
     if (along + step <= q.length) return s + step;
   } else if (!q.arc && along + h <= q.length) {
@@ -396,6 +396,100 @@ LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circle
     out.angle[w] = first[w] + 0.5 * (lo[w] + hi[w]);
     out.seat_offset[w] = 2.0 * circles[w].radius * std::sin(0.25 * (hi[w] - lo[w]));
   }
+  return out;
+}
+
+std::size_t slack_span(const BeltPath& path) {
+  std::size_t best = path.pieces.size();
+  double lowest = INFINITY;
+  for (std::size_t k = 0; k < path.pieces.size(); ++k) {
+    const PathPiece& q = path.pieces[k];
+    if (q.arc || !(q.length > 0.0)) continue;
+    const double ny = -(q.x1 - q.x0) / q.length;  // the right-hand normal's y
+    if (ny < lowest - 1e-12) {
+      lowest = ny;
+      best = k;
+    }
+  }
+  return best;
+}
+
+BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra) {
+  BeltPath out = path;
+  if (piece >= path.pieces.size() || path.pieces[piece].arc || !(extra > 0.0)) {
+    out.pieces.clear();
+    return out;
+  }
+  PathPiece& q = out.pieces[piece];
+  const double c = std::hypot(q.x1 - q.x0, q.y1 - q.y0), arc = c + extra;
+  // the half angle φ of the arc: sin φ / φ = c / arc (decreasing on (0, π]), by bisection
+  const double ratio = c / arc;
+  if (!(ratio > 2.0 / kPi)) {  // beyond a half circle
+    out.pieces.clear();
+    return out;
+  }
+  double lo = 1e-12, hi = 0.5 * kPi;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (std::sin(mid) / mid > ratio ? lo : hi) = mid;
+  }
+  const double phi = 0.5 * (lo + hi);
+  const double rho = 0.5 * c / std::sin(phi);
+  // the bulge to the right of the travel; the centre on the left of the chord's middle, so the
+  // chain runs counter-clockwise about it
+  const double ux = (q.x1 - q.x0) / c, uy = (q.y1 - q.y0) / c;
+  const double mx = 0.5 * (q.x0 + q.x1), my = 0.5 * (q.y0 + q.y1);
+  q.sag = true;
+  q.sense = 1.0;
+  q.radius = rho;
+  q.cx = mx - uy * rho * std::cos(phi);
+  q.cy = my + ux * rho * std::cos(phi);
+  q.from = std::atan2(q.y0 - q.cy, q.x0 - q.cx);
+  q.to = q.from + 2.0 * phi;
+  q.length = 2.0 * rho * phi;
+  double along = 0.0;
+  for (PathPiece& r : out.pieces) {
+    r.start = along;
+    along += r.length;
+  }
+  out.length = along;
+  return out;
+}
+
+LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
+                               const std::vector<int>& teeth, int nodes, double pitch,
+                               BeltPath& laid) {
+  LoopPlacement out;
+  laid = BeltPath{};
+  const std::size_t span = slack_span(path);
+  const double chain = nodes * pitch;
+  if (path.pieces.empty() || nodes < 3 || !(pitch > 0.0) || span >= path.pieces.size() ||
+      !(chain > path.length))
+    return out;
+  // the walk's miss at chord `pitch` with the span sagging by `extra`: the end of node N's walk
+  // against the laid path's length
+  auto miss = [&](double extra, BeltPath& p) -> double {
+    p = sag_span(path, span, extra);
+    if (p.pieces.empty()) return NAN;
+    return walk(p, pitch, nodes).back() - p.length;
+  };
+  BeltPath p0, p1;
+  double e0 = chain - path.length, g0 = miss(e0, p0);
+  double e1 = 1.001 * e0, g1 = miss(e1, p1);
+  for (int it = 0; it < 60 && std::isfinite(g1) && std::abs(g1) > 1e-13 * chain; ++it) {
+    if (g1 == g0 || !std::isfinite(g0)) break;
+    const double e2 = e1 - g1 * (e1 - e0) / (g1 - g0);
+    e0 = e1;
+    g0 = g1;
+    e1 = e2;
+    if (!(e1 > 0.0)) return out;
+    g1 = miss(e1, p1);
+  }
+  if (!(std::abs(g1) <= 1e-11 * chain)) return out;
+  // the wheels' seats as on a taut path: place_loop's chord solve lands on `pitch` itself here
+  out = place_loop(p1, circles, teeth, nodes, pitch);
+  if (out.s.empty()) return out;
+  laid = p1;
   return out;
 }
 
