@@ -517,3 +517,44 @@ TEST(DynamicsLayoutCli, EveryBadSideNamed) {
             std::string::npos)
       << near.err;
 }
+
+// A start with slack through the command: examples/dynamics_three_wheels.toml (55 links fit its
+// path) given 56 links and gravity starts with the extra 17 mm sagging in the span facing down
+// (idler -> driven), every link one pitch: `laid_pitch` the pitch, `slack` = 56 p − the path's
+// length; it runs (0.05 s). 57 links (3.4 % over) are refused, naming the field and the 3 % limit.
+TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
+  std::stringstream example;
+  example << std::ifstream(kExample).rdbuf();
+  std::string text = example.str();
+  const std::string key = "duration = \"1 s\"";
+  const std::size_t at = text.find(key);
+  ASSERT_NE(at, std::string::npos);
+  auto with_links = [&](int links) {
+    std::string t = text;
+    t.replace(at, key.size(),
+              "duration = \"0.05 s\"\nlinks = " + std::to_string(links) + "\ngravity = true");
+    return write("slack" + std::to_string(links) + ".toml", t);
+  };
+  const CliRun r = run("dynamics " + with_links(56) + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["diagnostics"].empty()) << j["diagnostics"].dump();
+  EXPECT_EQ(j["links"], 56);
+  EXPECT_NEAR(j["laid_pitch"].get<double>(), kPitch, 1e-12 * kPitch);
+  const double path = j["path_length"].get<double>();
+  EXPECT_NEAR(j["slack"].get<double>(), 56 * kPitch - path, 1e-12);
+  EXPECT_EQ(j["units"]["slack"], "m");
+  EXPECT_LT(j["summary"]["max_penetration"].get<double>(), 20e-6);
+  const CliRun table = run("dynamics " + with_links(56));
+  EXPECT_NE(table.out.find("mm of slack sagging in the span sprocket 2 -> sprocket 1"),
+            std::string::npos)
+      << table.out;
+
+  const CliRun refused = run("dynamics " + with_links(57));
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("dynamics.links (line "), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find(") = 57: expected"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("or a chain longer than the path by at most 3 % of its length"),
+            std::string::npos)
+      << refused.err;
+}

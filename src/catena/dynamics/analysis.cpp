@@ -283,6 +283,8 @@ struct Setup {
   BeltPath path;                // the belt path round them
   LoopPlacement placement;      // the nodes on it
   double laid_pitch = NAN;      // [m] the links' chord as laid: the pitch on the line
+  BeltPath laid;                // a start with slack: the path with its slack span sagging
+  double slack = 0.0;           // [m] the chain's length beyond the path's (a start with slack)
   bool layout() const { return !wheels.empty(); }
   std::string hinge = "frictionless";  // frictionless, sliding or rolling
   HingeFriction hinge_law;             // arm 0 when frictionless
@@ -318,6 +320,7 @@ bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
 
 constexpr std::size_t kMaxWheels = 20;  // sprockets of the free layout
 constexpr int kMinWrapTeeth = 3;        // a wheel's wrap, in teeth (docs/models/dynamics.md)
+constexpr double kMaxSlack = 0.03;      // a start with slack: at most 3 % longer than the path
 
 constexpr const char* kTakeupKeys[] = {"takeup_force", "takeup_direction", "takeup_stiffness",
                                        "takeup_damping", "takeup_mass"};
@@ -645,6 +648,30 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
     chosen = static_cast<int>(links);
     if (std::find(fitting.begin(), fitting.end(), chosen) == fitting.end() &&
         !fits(chosen, trial)) {
+      // longer than the path: a start with slack, its slack span sagging (every link one pitch),
+      // up to kMaxSlack of the path's length
+      const double over = chosen * s.pitch - s.path.length;
+      if (over > 0.0 && over <= kMaxSlack * s.path.length) {
+        BeltPath laid;
+        const LoopPlacement sagging =
+            place_slack_loop(s.path, s.circles, teeth, chosen, s.pitch, laid);
+        bool seated = !sagging.s.empty();
+        for (std::size_t w = 0; seated && w < n; ++w)
+          seated = sagging.wrapped[w] > 0 && sagging.seat_offset[w] <= clearance[w];
+        if (seated) {
+          s.placement = sagging;
+          s.laid = laid;
+          s.links = chosen;
+          s.laid_pitch = sagging.spacing;
+          s.slack = over;
+          return;
+        }
+      }
+      if (over > 0.0)
+        why += "; or a chain longer than the path by at most " + shown(kMaxSlack * 100.0) +
+               " % of its length (" + mm(kMaxSlack * s.path.length) +
+               "), which starts with its slack span sagging (here " + mm(over) + ", " +
+               shown(over / s.path.length * 100.0) + " %)";
       issues.push_back({links_at, std::to_string(chosen), why});
       return;
     }
@@ -1485,7 +1512,7 @@ std::vector<Sprocket> layout_sprockets(const Setup& d) {
 
 State layout_state(const Setup& d) {
   const double v = d.speed * d.circles[d.driver].radius;
-  State s = loop_state(d.path, d.circles, d.placement, v);
+  State s = loop_state(d.slack > 0.0 ? d.laid : d.path, d.circles, d.placement, v);
   s.speed[d.driver] = d.speed;
   return s;
 }
@@ -1838,6 +1865,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
     // centre distance)
     j["path_length"] = d.path.length;
     j["laid_pitch"] = d.laid_pitch;
+    if (d.slack > 0.0) j["slack"] = d.slack;  // a start with slack only
   } else {
     j["teeth"] = d.teeth;
     j["centre_distance"] =
@@ -2038,6 +2066,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (d.layout())
     for (const char* key : {"path_length", "laid_pitch", "centre_x", "centre_y"})
       j["units"][key] = "m";
+  if (d.slack > 0.0) j["units"]["slack"] = "m";
   if (d.hertz_stiffness) {
     j["units"]["contact_stiffness"] = "N/m";
     j["units"]["contact_load"] = "N";
@@ -2112,7 +2141,12 @@ Record describe(const Result& r, const analysis::Inputs&) {
       << " sprockets in time (issue 21)\n\n"
       << "  " << (d.chain.empty() ? "chain" : d.chain) << ", " << d.links << " links, belt path "
       << format_g(d.path.length * 1e3, 6) << " mm (links laid at "
-      << format_g(d.laid_pitch * 1e3, 7) << " mm), theta " << format_g(d.theta, 3);
+      << format_g(d.laid_pitch * 1e3, 7) << " mm";
+    if (d.slack > 0.0)
+      t << ", " << format_g(d.slack * 1e3, 6) << " mm of slack sagging in the span sprocket "
+        << d.path.pieces[slack_span(d.path)].wheel << " -> sprocket "
+        << d.path.pieces[slack_span(d.path)].next;
+    t << "), theta " << format_g(d.theta, 3);
   } else {
     t << "Catena dynamics: chain loop over two sprockets in time (issue 21)\n\n"
       << "  " << (d.chain.empty() ? "chain" : d.chain) << ", " << d.links
