@@ -760,9 +760,9 @@ Setup parse(const analysis::Inputs& in) {
       const auto k = row_keys.find(key);
       if (k == row_keys.end()) {
         issues.push_back({where(v), v.text,
-                          "a key of a sprocket: teeth, role, side, speed, inertia, load_torque, "
+                          "a key of a sprocket: teeth, role, speed, inertia, load_torque, "
                           "centre_x, centre_y, takeup_force, takeup_direction, "
-                          "takeup_stiffness, takeup_damping, takeup_mass, seat_friction"});
+                          "takeup_stiffness, takeup_damping, takeup_mass, seat_friction, side"});
         continue;
       }
       w.seen[key] = v.line;
