@@ -414,3 +414,147 @@ TEST(DynamicsLayoutCli, EveryBadTakeupFieldNamedAtOnce) {
         << dir.err;
   }
 }
+
+// examples/dynamics_serpentine.toml: the idler on the back of the slack span (side = "outside"),
+// on a take-up pushing it up into the chain. The rows are the loop's order, counter-clockwise:
+// driver -> idler -> driven. The idler turns clockwise with the chain tooth by tooth
+// (−ω z_driver / z_idler, 0.2 %); the spans either side of it, free, carry one tension (1 %); the
+// tight span is that plus T_L / R mean(sec φ) of the driven wheel (1 %, issue 21 (6)); the side
+// is reported on the back-side wheel only; the run is stable (no roller deeper than 20 µm).
+TEST(DynamicsLayoutCli, SerpentineRunsWithTheIdlerOnTheBackOfTheChain) {
+  // run past the take-up's settling: the means below are over the last 12 tooth periods (0.48 s)
+  const CliRun r = run("dynamics " + std::string(CATENA_EXAMPLES_DIR) +
+                       "/dynamics_serpentine.toml --duration 0.8s --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["diagnostics"].empty()) << j["diagnostics"].dump();
+  ASSERT_EQ(j["sprocket"].size(), 3u);
+  EXPECT_EQ(j["sprocket"][1]["role"], "idler");
+  EXPECT_EQ(j["sprocket"][1]["side"], "outside");
+  EXPECT_FALSE(j["sprocket"][0].contains("side"));
+  EXPECT_FALSE(j["sprocket"][2].contains("side"));
+  ASSERT_EQ(j["span"].size(), 3u);
+  EXPECT_EQ(j["span"][0]["name"], "sprocket 0 -> sprocket 1");
+  EXPECT_EQ(j["span"][0]["side"], "slack");
+  EXPECT_EQ(j["span"][1]["name"], "sprocket 1 -> sprocket 2");
+  EXPECT_EQ(j["span"][2]["name"], "sprocket 2 -> sprocket 0");
+  EXPECT_EQ(j["span"][2]["side"], "tight");
+  EXPECT_LT(j["summary"]["max_penetration"].get<double>(), 20e-6);
+
+  const auto time = j["time"].get<std::vector<double>>();
+  const int z1 = 12, z2 = 18, zi = 18;
+  const double omega = 13.0, load = 10.0;
+  const double period = 2 * kPi / (z1 * omega);
+  const double t0 = time.back() - 12 * period;
+  auto mean = [&](const nlohmann::json& series) {
+    return mean_over_periods(time, series.get<std::vector<double>>(), t0, period);
+  };
+  EXPECT_NEAR(mean(j["sprocket"][1]["speed"]) / (-omega * z1 / zi), 1.0, 0.002);
+  EXPECT_NEAR(mean(j["sprocket"][2]["speed"]) / (omega * z1 / z2), 1.0, 0.002);
+  const double slack = mean(j["span"][0]["tension"]), after = mean(j["span"][1]["tension"]);
+  const double tight = mean(j["span"][2]["tension"]);
+  EXPECT_NEAR(after, slack, 0.01 * slack);
+  // mean(sec φ) over ±π/z2: (z/π) ∫ sec = (z/π) 2 atanh(tan(π/2z))
+  const double sec = z2 / kPi * 2 * std::atanh(std::tan(kPi / (2 * z2)));
+  const double closed = load / radius(z2) * sec + after;
+  EXPECT_NEAR(tight, closed, 0.01 * closed);
+}
+
+// The side of a wheel: a value other than inside/outside, "outside" on a driver, a driven wheel
+// or the line of two wheels without centres; and the serpentine path's faults, each naming the
+// wheel: an idler whose spans cross (pushed through the tight span), wheels listed clockwise, an
+// idler too near the tight span's rollers.
+TEST(DynamicsLayoutCli, EveryBadSideNamed) {
+  const std::string driver = "teeth = 12\nrole = \"driver\"\nspeed = \"13 rad/s\"\n";
+  const std::string driven = "teeth = 18\nrole = \"driven\"\ninertia = 0.02\n";
+  const std::string idler = "teeth = 18\nrole = \"idler\"\ninertia = 0.002\n";
+  const CliRun bad =
+      run("dynamics " +
+          write("side.toml",
+                head("") + wheel(driver + "side = \"outside\"\ncentre_x = 0\ncentre_y = 0\n") +
+                    wheel(idler + "side = \"back\"\ncentre_x = 275\ncentre_y = -27\n") +
+                    wheel(driven + "side = \"outside\"\ncentre_x = 400\ncentre_y = 0\n")));
+  EXPECT_EQ(bad.status, 2);
+  for (const char* want :
+       {"dynamics.sprocket[0].side (line 12) = 'outside': expected inside: only an idler",
+        "dynamics.sprocket[1].side (line 19) = 'back': expected inside or outside",
+        "dynamics.sprocket[2].side (line 26) = 'outside': expected inside: only an idler"})
+    EXPECT_NE(bad.err.find(want), std::string::npos) << want << "\n" << bad.err;
+
+  const CliRun line =
+      run("dynamics " + write("side_line.toml", head("links = 40\n") + wheel(driver) +
+                                                    wheel(driven + "side = \"outside\"\n")));
+  EXPECT_EQ(line.status, 2);
+  EXPECT_NE(line.err.find("dynamics.sprocket[1].side (line 14) = 'outside'"), std::string::npos)
+      << line.err;
+
+  auto layout = [&](const std::string& name, const std::string& a, const std::string& b,
+                    const std::string& c) {
+    return run("dynamics " + write(name, head("") + wheel(a) + wheel(b) + wheel(c)));
+  };
+  const std::string back = idler + "side = \"outside\"\n";
+  // the idler above the tight span: its spans run through the driven wheel / cross the others
+  const CliRun through =
+      layout("side_through.toml", driver + "centre_x = 0\ncentre_y = 0\n",
+             back + "centre_x = 275\ncentre_y = 150\n", driven + "centre_x = 400\ncentre_y = 0\n");
+  EXPECT_EQ(through.status, 2);
+  EXPECT_TRUE(through.err.find("the path must not cross") != std::string::npos) << through.err;
+  // listed clockwise: driver, driven, idler
+  const CliRun clockwise =
+      layout("side_clockwise.toml", driver + "centre_x = 0\ncentre_y = 0\n",
+             driven + "centre_x = 400\ncentre_y = 0\n", back + "centre_x = 275\ncentre_y = -27\n");
+  EXPECT_EQ(clockwise.status, 2);
+  EXPECT_TRUE(clockwise.err.find("counter-clockwise") != std::string::npos ||
+              clockwise.err.find("the path must not cross") != std::string::npos)
+      << clockwise.err;
+  // the idler pushed so far up that its teeth reach the tight span's rollers
+  const CliRun near =
+      layout("side_near.toml", driver + "centre_x = 0\ncentre_y = 0\n",
+             back + "centre_x = 275\ncentre_y = -12\n", driven + "centre_x = 400\ncentre_y = 0\n");
+  EXPECT_EQ(near.status, 2);
+  EXPECT_NE(near.err.find("dynamics.sprocket[1].centre_x (line 19) = (275 mm, -12 mm): expected a "
+                          "centre clear of the span sprocket[2] -> sprocket[0]"),
+            std::string::npos)
+      << near.err;
+}
+
+// A start with slack through the command: examples/dynamics_three_wheels.toml (55 links fit its
+// path) given 56 links and gravity starts with the extra 17 mm sagging in the span facing down
+// (idler -> driven), every link one pitch: `laid_pitch` the pitch, `slack` = 56 p − the path's
+// length; it runs (0.05 s). 57 links (3.4 % over) are refused, naming the field and the 3 % limit.
+TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
+  std::stringstream example;
+  example << std::ifstream(kExample).rdbuf();
+  std::string text = example.str();
+  const std::string key = "duration = \"1 s\"";
+  const std::size_t at = text.find(key);
+  ASSERT_NE(at, std::string::npos);
+  auto with_links = [&](int links) {
+    std::string t = text;
+    t.replace(at, key.size(),
+              "duration = \"0.05 s\"\nlinks = " + std::to_string(links) + "\ngravity = true");
+    return write("slack" + std::to_string(links) + ".toml", t);
+  };
+  const CliRun r = run("dynamics " + with_links(56) + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["diagnostics"].empty()) << j["diagnostics"].dump();
+  EXPECT_EQ(j["links"], 56);
+  EXPECT_NEAR(j["laid_pitch"].get<double>(), kPitch, 1e-12 * kPitch);
+  const double path = j["path_length"].get<double>();
+  EXPECT_NEAR(j["slack"].get<double>(), 56 * kPitch - path, 1e-12);
+  EXPECT_EQ(j["units"]["slack"], "m");
+  EXPECT_LT(j["summary"]["max_penetration"].get<double>(), 20e-6);
+  const CliRun table = run("dynamics " + with_links(56));
+  EXPECT_NE(table.out.find("mm of slack sagging in the span sprocket 2 -> sprocket 1"),
+            std::string::npos)
+      << table.out;
+
+  const CliRun refused = run("dynamics " + with_links(57));
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("dynamics.links (line "), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find(") = 57: expected"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("or a chain longer than the path by at most 3 % of its length"),
+            std::string::npos)
+      << refused.err;
+}

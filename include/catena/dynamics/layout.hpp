@@ -1,35 +1,45 @@
 // The start of a chain loop over any number of sprockets (docs/models/dynamics.md, "Command"): the
 // belt path round the wheels' pitch circles (the convex hull of the circles: arcs on the wheels,
-// outer common tangents between them, counter-clockwise) and N nodes placed along it at one
-// spacing so that the loop closes, each wheel turned so that its seats sit under its wrapped
-// rollers.
+// outer common tangents between them, counter-clockwise; or, with wheels on the back of the chain,
+// a serpentine path through the wheels in their given order, crossed tangents between a wheel
+// inside the loop and one outside it) and N nodes placed along it at one spacing so that the loop
+// closes, each wheel turned so that its seats sit under its wrapped rollers.
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "catena/dynamics/chain.hpp"
 
 namespace catena::dynamics {
 
-/// A pitch circle: centre and radius [m].
+/// A pitch circle: centre and radius [m]; `back`: the wheel is on the back of the chain (outside
+/// the loop, the chain wrapping it clockwise while the loop runs counter-clockwise).
 struct Circle {
   double x = 0.0, y = 0.0, radius = 0.0;
+  bool back = false;
 };
 
-/// One piece of the belt path: an arc on wheel `wheel` from the outward normal angle `from` to
-/// `to` (counter-clockwise, to > from), or a straight span from (x0, y0) to (x1, y1).
+/// One piece of the belt path: an arc on wheel `wheel` from the angle `from` to `to` of the chain's
+/// point about the wheel's centre (counter-clockwise, to > from, on a wheel inside the loop;
+/// clockwise, to < from, on a wheel on its back), or a straight span from (x0, y0) to (x1, y1).
 struct PathPiece {
   bool arc = false;
   std::size_t wheel = 0;        ///< arc: the wheel; span: the wheel it leaves
   std::size_t next = 0;         ///< span: the wheel it arrives on
-  double from = 0.0, to = 0.0;  ///< arc: [rad] normal angles
-  double cx = 0.0, cy = 0.0;    ///< arc: [m] the wheel's centre
-  double radius = 0.0;          ///< arc: [m] its pitch radius
-  double x0 = 0.0, y0 = 0.0;    ///< [m] start point
-  double x1 = 0.0, y1 = 0.0;    ///< [m] end point
-  double length = 0.0;          ///< [m]
-  double start = 0.0;           ///< [m] arc length along the path at its start
+  double from = 0.0, to = 0.0;  ///< arc: [rad] the chain's angles about the centre
+  double sense = 1.0;           ///< arc: +1 wrapped counter-clockwise, −1 on the back (clockwise)
+  /// a span laid sagging (the start with slack, `sag_span`): not straight but a circular arc from
+  /// (x0, y0) to (x1, y1) about (cx, cy) of `radius`, from the angle `from` (`sense` +1); still a
+  /// span (arc false)
+  bool sag = false;
+  double cx = 0.0, cy = 0.0;  ///< arc: [m] the wheel's centre
+  double radius = 0.0;        ///< arc: [m] its pitch radius
+  double x0 = 0.0, y0 = 0.0;  ///< [m] start point
+  double x1 = 0.0, y1 = 0.0;  ///< [m] end point
+  double length = 0.0;        ///< [m]
+  double start = 0.0;         ///< [m] arc length along the path at its start
 };
 
 /// The belt path: pieces in order counter-clockwise, starting with the arc on wheel `first` (the
@@ -41,10 +51,21 @@ struct BeltPath {
   /// wheels the hull does not wrap exactly once (inside the hull, touching it at a point, or met
   /// twice): empty when the path is usable
   std::vector<std::size_t> unwrapped;
+  /// a serpentine path's faults (wheel: the one named, or the count of circles for the path as a
+  /// whole; why: what is wrong); empty when the path is usable
+  struct Fault {
+    std::size_t wheel = 0;
+    std::string why;
+  };
+  std::vector<Fault> faults;
 };
 
 /// The belt path round the circles (at least two; no circle may contain another), starting at the
-/// point where it arrives on circle `first`.
+/// point where it arrives on circle `first`. Without a circle on the back: the hull of the circles
+/// (gift wrapping). With one: the serpentine path through the circles in their given order,
+/// counter-clockwise round the loop, each wheel on the side `back` says — its faults (a wheel not
+/// wrapped, a span crossing another or running through a wheel, the loop not turning once
+/// counter-clockwise) in `faults`, with no pieces.
 BeltPath belt_path(const std::vector<Circle>& circles, std::size_t first);
 
 /// The point at arc length `s` along the path (taken modulo its length) and the unit tangent.
@@ -73,6 +94,24 @@ struct LoopPlacement {
 /// spacing cannot be solved.
 LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circles,
                          const std::vector<int>& teeth, int nodes, double pitch);
+
+/// The span of the path a slack chain sags in: the straight piece whose outward normal (the
+/// right of the travel) points most nearly down (−y); the path's piece count if it has none.
+std::size_t slack_span(const BeltPath& path);
+
+/// The path with span `piece` laid as a circular arc of its chord plus `extra` (> 0), bulging
+/// outward (to the right of the travel), between the same tangent points; the other pieces and the
+/// wheels unchanged. Empty (no pieces) if `piece` is not a span or the arc would exceed a half
+/// circle.
+BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra);
+
+/// A start with slack: N nodes at chord exactly `pitch` (so the chain is N·pitch long) on the path
+/// with its slack span (`slack_span`) sagging by the extra length that closes the loop (solved by
+/// secant). `laid` gets that path. Empty placement if N·pitch does not exceed the path's length or
+/// the sag cannot be solved.
+LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
+                               const std::vector<int>& teeth, int nodes, double pitch,
+                               BeltPath& laid);
 
 /// The loop's start state from a placement: nodes at the placement, moving along the path at
 /// `chain_speed`; every wheel at its placement angle, turning at chain_speed / its radius.

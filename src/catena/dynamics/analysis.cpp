@@ -155,6 +155,10 @@ std::vector<Parameter> sprocket_fields() {
       number("teeth",
              "number of teeth z, an integer in [8, 150] (even for two wheels without centres)"),
       text("role", "driver, driven or idler (idler: with centres only)"),
+      text("side",
+           "the side of the chain the wheel runs on: inside (default; the loop wraps it) or "
+           "outside (on the back of the chain, a serpentine path; an idler of the free "
+           "layout only, the rows then listed counter-clockwise round the loop)"),
       quantity("speed", K::kAngularSpeed, "driver: speed, counter-clockwise, > 0"),
       number("inertia", "driven or idler: moment of inertia J [kg m^2], > 0"),
       number("load_torque", "driven: load torque T_L [N m], >= 0"),
@@ -241,12 +245,14 @@ struct SprocketInput {
   std::optional<double> seat_friction;  // this wheel's μ, overriding dynamics.seat_friction
   std::string role;
   bool has_role = false;
+  std::string side = "inside";      // inside or outside (the back of the chain)
   std::map<std::string, int> seen;  // every key given (read or not) → its line
 };
 
 // One wheel of the free layout (every sprocket with a centre).
 struct LayoutWheel {
-  std::string role;  // driver, driven or idler
+  std::string role;   // driver, driven or idler
+  bool back = false;  // side = "outside": on the back of the chain
   int teeth = 0;
   double x = NAN, y = NAN;
   double speed = NAN, inertia = NAN, load = 0.0;
@@ -293,6 +299,8 @@ struct Setup {
   BeltPath path;                // the belt path round them
   LoopPlacement placement;      // the nodes on it
   double laid_pitch = NAN;      // [m] the links' chord as laid: the pitch on the line
+  BeltPath laid;                // a start with slack: the path with its slack span sagging
+  double slack = 0.0;           // [m] the chain's length beyond the path's (a start with slack)
   bool layout() const { return !wheels.empty(); }
   std::string hinge = "frictionless";  // frictionless, sliding or rolling
   HingeFriction hinge_law;             // arm 0 when frictionless
@@ -328,10 +336,21 @@ bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
 
 constexpr std::size_t kMaxWheels = 20;  // sprockets of the free layout
 constexpr int kMinWrapTeeth = 3;        // a wheel's wrap, in teeth (docs/models/dynamics.md)
+constexpr double kMaxSlack = 0.03;      // a start with slack: at most 3 % longer than the path
 
 constexpr const char* kTakeupKeys[] = {"takeup_force",     "takeup_direction", "takeup_stiffness",
                                        "takeup_damping",   "takeup_mass",      "takeup_travel_min",
                                        "takeup_travel_max"};
+
+// `side` on a wheel that cannot be on the back of the chain (without centres, a driver or a driven
+// wheel): "outside" refused; "inside" (the default) is accepted anywhere.
+template <class Field>
+void refuse_back(const SprocketInput& w, const Field& field, std::vector<Issue>& issues) {
+  if (w.seen.count("side") && w.side == "outside")
+    issues.push_back({field("side"), "'outside'",
+                      "inside: only an idler of the free layout (role = \"idler\", centres on "
+                      "every sprocket) runs on the back of the chain"});
+}
 
 // A take-up's keys on a driver (or without centres): refused, each.
 template <class Field>
@@ -442,6 +461,8 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
       continue;
     }
     if (w.role == "driver") refuse_takeup(w, field, issues);
+    if (w.role != "idler") refuse_back(w, field, issues);
+    lw.back = w.role == "idler" && w.side == "outside";
     if (w.role == "driver") {
       ++drivers;
       s.driver = i;
@@ -506,7 +527,7 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
                                                    .roller_diameter = s.roller,
                                                    .inner_width = s.width,
                                                    .teeth = lw.teeth});
-      s.circles[i] = {lw.x, lw.y, 0.5 * iso.pitch_diameter};
+      s.circles[i] = {lw.x, lw.y, 0.5 * iso.pitch_diameter, lw.back};
       tip[i] = 0.5 * iso.tip_diameter_max;
       clearance[i] = iso.min_gap.seating_radius - 0.5 * s.roller;
       teeth[i] = lw.teeth;
@@ -546,17 +567,45 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
                       "on the convex hull of the pitch circles, wrapped once: the chain runs "
                       "round the wheels' hull (this wheel is inside it, only touches it or is met "
                       "twice)"});
-  if (!s.path.unwrapped.empty()) return;
+  for (const BeltPath::Fault& f : s.path.faults)
+    issues.push_back(f.wheel < n
+                         ? Issue{centre_field(f.wheel), centre_value(f.wheel), f.why}
+                         : Issue{"dynamics.sprocket", std::to_string(n) + " sprockets", f.why});
+  if (!s.path.unwrapped.empty() || !s.path.faults.empty()) return;
+  // a serpentine path's spans pass wheels other than their two on either side: each must clear
+  // their teeth by the roller (the hull's spans have every other wheel on their inside)
+  if (std::any_of(s.wheels.begin(), s.wheels.end(), [](const LayoutWheel& w) { return w.back; })) {
+    bool clear = true;
+    for (const PathPiece& q : s.path.pieces) {
+      if (q.arc) continue;
+      for (std::size_t w = 0; w < n; ++w) {
+        if (w == q.wheel || w == q.next) continue;
+        const double ux = q.x1 - q.x0, uy = q.y1 - q.y0, cx = s.circles[w].x - q.x0,
+                     cy = s.circles[w].y - q.y0;
+        const double t = std::clamp((cx * ux + cy * uy) / (ux * ux + uy * uy), 0.0, 1.0);
+        const double gap = std::hypot(cx - t * ux, cy - t * uy);
+        const double least = tip[w] + 0.5 * s.roller;
+        if (gap >= least) continue;
+        clear = false;
+        issues.push_back(
+            {centre_field(w), centre_value(w),
+             "a centre clear of the span sprocket[" + std::to_string(q.wheel) + "] -> sprocket[" +
+                 std::to_string(q.next) + "]: at least d_a,max/2 + d1/2 = " + mm(least) +
+                 " from its line (the span's rollers must pass the teeth; here " + mm(gap) + ")"});
+      }
+    }
+    if (!clear) return;
+  }
   bool wrapped = true;
   for (const PathPiece& q : s.path.pieces) {
     if (!q.arc) continue;
     const double least = kMinWrapTeeth * 2.0 * kPi / teeth[q.wheel];
-    if (q.to - q.from >= least) continue;
+    if (std::abs(q.to - q.from) >= least) continue;
     wrapped = false;
     issues.push_back({centre_field(q.wheel), centre_value(q.wheel),
                       "a centre where the chain wraps at least " + std::to_string(kMinWrapTeeth) +
                           " teeth of the wheel (" + shown(least * 180.0 / kPi) + " deg; here " +
-                          shown((q.to - q.from) * 180.0 / kPi) + " deg)"});
+                          shown(std::abs(q.to - q.from) * 180.0 / kPi) + " deg)"});
   }
   if (!wrapped) return;
   // a take-up pushes its idler against the chain: its slide must point out of the loop, along
@@ -619,6 +668,30 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
     chosen = static_cast<int>(links);
     if (std::find(fitting.begin(), fitting.end(), chosen) == fitting.end() &&
         !fits(chosen, trial)) {
+      // longer than the path: a start with slack, its slack span sagging (every link one pitch),
+      // up to kMaxSlack of the path's length
+      const double over = chosen * s.pitch - s.path.length;
+      if (over > 0.0 && over <= kMaxSlack * s.path.length) {
+        BeltPath laid;
+        const LoopPlacement sagging =
+            place_slack_loop(s.path, s.circles, teeth, chosen, s.pitch, laid);
+        bool seated = !sagging.s.empty();
+        for (std::size_t w = 0; seated && w < n; ++w)
+          seated = sagging.wrapped[w] > 0 && sagging.seat_offset[w] <= clearance[w];
+        if (seated) {
+          s.placement = sagging;
+          s.laid = laid;
+          s.links = chosen;
+          s.laid_pitch = sagging.spacing;
+          s.slack = over;
+          return;
+        }
+      }
+      if (over > 0.0)
+        why += "; or a chain longer than the path by at most " + shown(kMaxSlack * 100.0) +
+               " % of its length (" + mm(kMaxSlack * s.path.length) +
+               "), which starts with its slack span sagging (here " + mm(over) + ", " +
+               shown(over / s.path.length * 100.0) + " %)";
       issues.push_back({links_at, std::to_string(chosen), why});
       return;
     }
@@ -710,10 +783,16 @@ Setup parse(const analysis::Inputs& in) {
                           "a key of a sprocket: teeth, role, speed, inertia, load_torque, "
                           "centre_x, centre_y, takeup_force, takeup_direction, "
                           "takeup_stiffness, takeup_damping, takeup_mass, takeup_travel_min, "
-                          "takeup_travel_max, seat_friction"});
+                          "takeup_travel_max, seat_friction, side"});
         continue;
       }
       w.seen[key] = v.line;
+      if (key == "side") {
+        w.side = v.text;
+        if (!v.is_string || (v.text != "inside" && v.text != "outside"))
+          issues.push_back({where(v), "'" + v.text + "'", "inside or outside"});
+        continue;
+      }
       if (key == "role") {
         w.role = v.text;
         w.has_role = true;
@@ -1035,6 +1114,8 @@ Setup parse(const analysis::Inputs& in) {
     const int lowest = s.pocket ? 4 : 8;
     const std::string range = "an even integer in [" + std::to_string(lowest) + ", 150]";
     refuse_takeup(
+        w, [&](const std::string& key) { return base + key + l; }, issues);
+    refuse_back(
         w, [&](const std::string& key) { return base + key + l; }, issues);
     if (!w.teeth) {
       issues.push_back({base + "teeth" + l, "(missing)", range});
@@ -1486,7 +1567,7 @@ std::vector<Sprocket> layout_sprockets(const Setup& d) {
 
 State layout_state(const Setup& d) {
   const double v = d.speed * d.circles[d.driver].radius;
-  State s = loop_state(d.path, d.circles, d.placement, v);
+  State s = loop_state(d.slack > 0.0 ? d.laid : d.path, d.circles, d.placement, v);
   s.speed[d.driver] = d.speed;
   return s;
 }
@@ -1903,6 +1984,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
     // centre distance)
     j["path_length"] = d.path.length;
     j["laid_pitch"] = d.laid_pitch;
+    if (d.slack > 0.0) j["slack"] = d.slack;  // a start with slack only
   } else {
     j["teeth"] = d.teeth;
     j["centre_distance"] =
@@ -1925,6 +2007,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
                                               {"torque", r.sprocket[w].torque}});
     // a wheel's own seat friction, only when some wheel was given one
     if (per_wheel_friction(d)) wheel["seat_friction"] = wheel_mu(d, w);
+    // the side, only on a wheel on the back of the chain (a serpentine path)
+    if (d.layout() && d.wheels[w].back) wheel["side"] = "outside";
     wheels.push_back(std::move(wheel));
   }
   j["sprocket"] = wheels;
@@ -2129,6 +2213,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (d.layout())
     for (const char* key : {"path_length", "laid_pitch", "centre_x", "centre_y"})
       j["units"][key] = "m";
+  if (d.slack > 0.0) j["units"]["slack"] = "m";
   if (d.hertz_stiffness) {
     j["units"]["contact_stiffness"] = "N/m";
     j["units"]["contact_load"] = "N";
@@ -2218,7 +2303,12 @@ Record describe(const Result& r, const analysis::Inputs&) {
       << " sprockets in time (issue 21)\n\n"
       << "  " << (d.chain.empty() ? "chain" : d.chain) << ", " << d.links << " links, belt path "
       << format_g(d.path.length * 1e3, 6) << " mm (links laid at "
-      << format_g(d.laid_pitch * 1e3, 7) << " mm), theta " << format_g(d.theta, 3);
+      << format_g(d.laid_pitch * 1e3, 7) << " mm";
+    if (d.slack > 0.0)
+      t << ", " << format_g(d.slack * 1e3, 6) << " mm of slack sagging in the span sprocket "
+        << d.path.pieces[slack_span(d.path)].wheel << " -> sprocket "
+        << d.path.pieces[slack_span(d.path)].next;
+    t << "), theta " << format_g(d.theta, 3);
   } else {
     t << "Catena dynamics: chain loop over two sprockets in time (issue 21)\n\n"
       << "  " << (d.chain.empty() ? "chain" : d.chain) << ", " << d.links
@@ -2240,6 +2330,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
   for (std::size_t w = 0; w < r.sprocket.size(); ++w) {
     t << "    sprocket " << w << " (" << role_of(d, w);
     if (d.layout()) t << ", z = " << d.wheels[w].teeth;
+    if (d.layout() && d.wheels[w].back) t << ", on the back of the chain";
     t << ")  speed " << format_g(late_mean(r.sprocket[w].speed), 6) << " rad/s, chain torque "
       << format_g(late_mean(r.sprocket[w].torque), 5) << " N m\n";
   }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
 
 namespace catena::dynamics {
 namespace {
@@ -37,12 +38,147 @@ struct Edge {
   double normal = 0.0;
 };
 
+// The signed radius: the chain's point on a wheel is c + ρ n, n the right-hand normal of the
+// travel; ρ = R inside the loop (the wheel on the travel's left), −R on its back (on its right).
+double signed_radius(const Circle& c) { return c.back ? -c.radius : c.radius; }
+
+// The right-hand normal's angle of the common tangent that leaves circle a and arrives on circle b
+// with each on its own side: a·n + ρa = b·n + ρb (an outer tangent between two wheels on one side,
+// a crossed one between wheels on opposite sides).
+double signed_tangent_normal(const Circle& a, const Circle& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double d = std::hypot(dx, dy);
+  const double c = std::clamp((signed_radius(a) - signed_radius(b)) / d, -1.0, 1.0);
+  return std::atan2(dy, dx) - std::acos(c);
+}
+
+// Whether the segments p0p1 and q0q1 cross (a proper crossing or a touch).
+bool segments_cross(double px0, double py0, double px1, double py1, double qx0, double qy0,
+                    double qx1, double qy1) {
+  auto side = [](double ax, double ay, double bx, double by, double cx, double cy) {
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  };
+  const double d1 = side(qx0, qy0, qx1, qy1, px0, py0), d2 = side(qx0, qy0, qx1, qy1, px1, py1);
+  const double d3 = side(px0, py0, px1, py1, qx0, qy0), d4 = side(px0, py0, px1, py1, qx1, qy1);
+  return d1 * d2 <= 0.0 && d3 * d4 <= 0.0;
+}
+
+// The distance from (x, y) to the segment from (x0, y0) to (x1, y1).
+double segment_distance(double x, double y, double x0, double y0, double x1, double y1) {
+  const double ux = x1 - x0, uy = y1 - y0, l2 = ux * ux + uy * uy;
+  const double t = l2 > 0.0 ? std::clamp(((x - x0) * ux + (y - y0) * uy) / l2, 0.0, 1.0) : 0.0;
+  return std::hypot(x - x0 - t * ux, y - y0 - t * uy);
+}
+
+std::string wheel_name(std::size_t i) { return "sprocket[" + std::to_string(i) + "]"; }
+
+// The serpentine path: the wheels in their given order (from `first`), tangent k leaving wheel
+// order[k] for order[k + 1] on the sides the wheels are on, each wheel's arc from the tangent
+// arriving to the one leaving, turned the way its side wraps it.
+BeltPath serpentine_path(const std::vector<Circle>& circles, std::size_t first) {
+  BeltPath path;
+  const std::size_t n = circles.size();
+  std::vector<Edge> edges(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t a = (first + k) % n, b = (first + k + 1) % n;
+    edges[k] = {a, b, signed_tangent_normal(circles[a], circles[b])};
+    // two wheels on opposite sides need a crossed tangent: their pitch circles must be apart
+    const double d = std::hypot(circles[b].x - circles[a].x, circles[b].y - circles[a].y);
+    if (!(std::abs(signed_radius(circles[a]) - signed_radius(circles[b])) < d))
+      path.faults.push_back({b, "no tangent from " + wheel_name(a) + " to " + wheel_name(b) +
+                                    ": their pitch circles overlap"});
+  }
+  if (!path.faults.empty()) return path;
+  double along = 0.0, turning = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Edge& in = edges[(k + n - 1) % n];
+    const Edge& out = edges[k];
+    const Circle& c = circles[out.from];
+    const double sense = c.back ? -1.0 : 1.0;
+    PathPiece arc;
+    arc.arc = true;
+    arc.wheel = out.from;
+    arc.next = out.from;
+    arc.sense = sense;
+    arc.cx = c.x;
+    arc.cy = c.y;
+    arc.radius = c.radius;
+    // the chain's point is at c + ρ n: at the normal's angle inside, opposite it on the back
+    arc.from = std::remainder(in.normal + (c.back ? kPi : 0.0), kTwoPi);
+    const double wrap = turn(sense * (out.normal - in.normal), 1e-9);
+    if (!(wrap > 1e-9))
+      path.faults.push_back({out.from, "the chain only touches " + wheel_name(out.from) +
+                                           " (its wrap is 0): move it into the chain's path"});
+    arc.to = arc.from + sense * wrap;
+    arc.x0 = c.x + c.radius * std::cos(arc.from);
+    arc.y0 = c.y + c.radius * std::sin(arc.from);
+    arc.x1 = c.x + c.radius * std::cos(arc.to);
+    arc.y1 = c.y + c.radius * std::sin(arc.to);
+    arc.length = c.radius * wrap;
+    arc.start = along;
+    along += arc.length;
+    turning += sense * wrap;
+    path.pieces.push_back(arc);
+    path.order.push_back(out.from);
+    const Circle& d = circles[out.to];
+    const double rd = signed_radius(d);
+    PathPiece span;
+    span.wheel = out.from;
+    span.next = out.to;
+    span.x0 = arc.x1;
+    span.y0 = arc.y1;
+    span.x1 = d.x + rd * std::cos(out.normal);
+    span.y1 = d.y + rd * std::sin(out.normal);
+    span.length = std::hypot(span.x1 - span.x0, span.y1 - span.y0);
+    span.start = along;
+    along += span.length;
+    path.pieces.push_back(span);
+  }
+  path.length = along;
+  // a simple loop run counter-clockwise turns its tangent once round, +2π
+  if (path.faults.empty() && std::abs(turning - kTwoPi) > 1e-6)
+    path.faults.push_back(
+        {n,
+         "the wheels in the order given (a row per wheel, counter-clockwise round the loop) "
+         "make a path that turns " +
+             std::to_string(static_cast<long>(std::lround(turning * 180.0 / kPi))) +
+             " deg, not once round counter-clockwise (360 deg): list the wheels "
+             "counter-clockwise and put each on the side of the chain it runs on"});
+  // spans crossing one another or running through a wheel other than their two
+  std::vector<const PathPiece*> spans;
+  for (const PathPiece& q : path.pieces)
+    if (!q.arc) spans.push_back(&q);
+  for (std::size_t i = 0; i < spans.size(); ++i) {
+    const PathPiece& a = *spans[i];
+    for (std::size_t j = i + 1; j < spans.size(); ++j) {
+      const PathPiece& b = *spans[j];
+      if (segments_cross(a.x0, a.y0, a.x1, a.y1, b.x0, b.y0, b.x1, b.y1))
+        path.faults.push_back({a.wheel, "the span " + wheel_name(a.wheel) + " -> " +
+                                            wheel_name(a.next) + " crosses the span " +
+                                            wheel_name(b.wheel) + " -> " + wheel_name(b.next) +
+                                            ": the path must not cross itself"});
+    }
+    for (std::size_t w = 0; w < n; ++w) {
+      if (w == a.wheel || w == a.next) continue;
+      const Circle& c = circles[w];
+      if (segment_distance(c.x, c.y, a.x0, a.y0, a.x1, a.y1) < c.radius)
+        path.faults.push_back({w, "the span " + wheel_name(a.wheel) + " -> " + wheel_name(a.next) +
+                                      " runs through " + wheel_name(w) +
+                                      "'s pitch circle: the path must not cross a wheel"});
+    }
+  }
+  if (!path.faults.empty()) path.pieces.clear();
+  return path;
+}
+
 }  // namespace
 
 BeltPath belt_path(const std::vector<Circle>& circles, std::size_t first) {
   BeltPath path;
   const std::size_t n = circles.size();
   if (n < 2 || first >= n) return path;
+  if (std::any_of(circles.begin(), circles.end(), [](const Circle& c) { return c.back; }))
+    return serpentine_path(circles, first);
   // Gift wrapping on circles: start at the circle whose pitch circle reaches lowest (the support
   // in the direction −y), then repeatedly take the outer tangent that turns the normal least
   // counter-clockwise, until the first tangent comes round again.
@@ -139,13 +275,13 @@ PathPoint path_point(const BeltPath& path, double s) {
   const PathPiece& q = path.pieces[k];
   p.piece = k;
   const double along = std::clamp(u - q.start, 0.0, q.length);
-  if (q.arc) {
-    const double t = q.from + along / q.radius;
+  if (q.arc || q.sag) {
+    const double t = q.from + q.sense * along / q.radius;
     const double c = std::cos(t), sn = std::sin(t);
     p.x = q.cx + q.radius * c;
     p.y = q.cy + q.radius * sn;
-    p.tx = -sn;
-    p.ty = c;
+    p.tx = -q.sense * sn;
+    p.ty = q.sense * c;
   } else {
     const double f = q.length > 0.0 ? along / q.length : 0.0;
     p.x = q.x0 + f * (q.x1 - q.x0);
@@ -168,7 +304,7 @@ double next_node(const BeltPath& path, double s, double h) {
   double u = std::fmod(s, path.length);
   if (u < 0.0) u += path.length;
   const double along = u - q.start;
-  if (q.arc && h < 2.0 * q.radius) {
+  if ((q.arc || q.sag) && h < 2.0 * q.radius) {
     const double step = 2.0 * q.radius * std::asin(h / (2.0 * q.radius));
     if (along + step <= q.length) return s + step;
   } else if (!q.arc && along + h <= q.length) {
@@ -242,7 +378,7 @@ LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circle
     if (!q.arc) continue;
     double u = std::fmod(s, length);
     if (u < 0.0) u += length;
-    const double theta = q.from + (u - q.start) / q.radius;
+    const double theta = q.from + q.sense * (u - q.start) / q.radius;
     const std::size_t w = q.wheel;
     const double tau = kTwoPi / teeth[w];
     if (std::isnan(first[w])) first[w] = theta;
@@ -263,6 +399,100 @@ LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circle
   return out;
 }
 
+std::size_t slack_span(const BeltPath& path) {
+  std::size_t best = path.pieces.size();
+  double lowest = INFINITY;
+  for (std::size_t k = 0; k < path.pieces.size(); ++k) {
+    const PathPiece& q = path.pieces[k];
+    if (q.arc || !(q.length > 0.0)) continue;
+    const double ny = -(q.x1 - q.x0) / q.length;  // the right-hand normal's y
+    if (ny < lowest - 1e-12) {
+      lowest = ny;
+      best = k;
+    }
+  }
+  return best;
+}
+
+BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra) {
+  BeltPath out = path;
+  if (piece >= path.pieces.size() || path.pieces[piece].arc || !(extra > 0.0)) {
+    out.pieces.clear();
+    return out;
+  }
+  PathPiece& q = out.pieces[piece];
+  const double c = std::hypot(q.x1 - q.x0, q.y1 - q.y0), arc = c + extra;
+  // the half angle φ of the arc: sin φ / φ = c / arc (decreasing on (0, π]), by bisection
+  const double ratio = c / arc;
+  if (!(ratio > 2.0 / kPi)) {  // beyond a half circle
+    out.pieces.clear();
+    return out;
+  }
+  double lo = 1e-12, hi = 0.5 * kPi;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (std::sin(mid) / mid > ratio ? lo : hi) = mid;
+  }
+  const double phi = 0.5 * (lo + hi);
+  const double rho = 0.5 * c / std::sin(phi);
+  // the bulge to the right of the travel; the centre on the left of the chord's middle, so the
+  // chain runs counter-clockwise about it
+  const double ux = (q.x1 - q.x0) / c, uy = (q.y1 - q.y0) / c;
+  const double mx = 0.5 * (q.x0 + q.x1), my = 0.5 * (q.y0 + q.y1);
+  q.sag = true;
+  q.sense = 1.0;
+  q.radius = rho;
+  q.cx = mx - uy * rho * std::cos(phi);
+  q.cy = my + ux * rho * std::cos(phi);
+  q.from = std::atan2(q.y0 - q.cy, q.x0 - q.cx);
+  q.to = q.from + 2.0 * phi;
+  q.length = 2.0 * rho * phi;
+  double along = 0.0;
+  for (PathPiece& r : out.pieces) {
+    r.start = along;
+    along += r.length;
+  }
+  out.length = along;
+  return out;
+}
+
+LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
+                               const std::vector<int>& teeth, int nodes, double pitch,
+                               BeltPath& laid) {
+  LoopPlacement out;
+  laid = BeltPath{};
+  const std::size_t span = slack_span(path);
+  const double chain = nodes * pitch;
+  if (path.pieces.empty() || nodes < 3 || !(pitch > 0.0) || span >= path.pieces.size() ||
+      !(chain > path.length))
+    return out;
+  // the walk's miss at chord `pitch` with the span sagging by `extra`: the end of node N's walk
+  // against the laid path's length
+  auto miss = [&](double extra, BeltPath& p) -> double {
+    p = sag_span(path, span, extra);
+    if (p.pieces.empty()) return NAN;
+    return walk(p, pitch, nodes).back() - p.length;
+  };
+  BeltPath p0, p1;
+  double e0 = chain - path.length, g0 = miss(e0, p0);
+  double e1 = 1.001 * e0, g1 = miss(e1, p1);
+  for (int it = 0; it < 60 && std::isfinite(g1) && std::abs(g1) > 1e-13 * chain; ++it) {
+    if (g1 == g0 || !std::isfinite(g0)) break;
+    const double e2 = e1 - g1 * (e1 - e0) / (g1 - g0);
+    e0 = e1;
+    g0 = g1;
+    e1 = e2;
+    if (!(e1 > 0.0)) return out;
+    g1 = miss(e1, p1);
+  }
+  if (!(std::abs(g1) <= 1e-11 * chain)) return out;
+  // the wheels' seats as on a taut path: place_loop's chord solve lands on `pitch` itself here
+  out = place_loop(p1, circles, teeth, nodes, pitch);
+  if (out.s.empty()) return out;
+  laid = p1;
+  return out;
+}
+
 State loop_state(const BeltPath& path, const std::vector<Circle>& circles,
                  const LoopPlacement& placement, double chain_speed) {
   State st(placement.s.size(), circles.size());
@@ -275,7 +505,8 @@ State loop_state(const BeltPath& path, const std::vector<Circle>& circles,
   }
   for (std::size_t w = 0; w < circles.size(); ++w) {
     st.angle[w] = placement.angle[w];
-    st.speed[w] = chain_speed / circles[w].radius;
+    // a wheel on the back of the chain turns the other way (clockwise)
+    st.speed[w] = (circles[w].back ? -chain_speed : chain_speed) / circles[w].radius;
   }
   return st;
 }

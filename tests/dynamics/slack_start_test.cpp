@@ -1,0 +1,158 @@
+// The start with slack (dynamics/layout.hpp, place_slack_loop): a chain longer than the belt path
+// laid with its slack span sagging as a circular arc. Tested: every link of the start exactly one
+// pitch (the chain's length N p to 1e-9), the sag in the span that faces down, and the loop
+// settled under gravity against the catenary through the span's settled ends (the closed form of
+// validation (2), tests/validation/dynamics_validation_test.cpp, with ends at unequal heights).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <vector>
+
+#include "catena/dynamics/chain.hpp"
+#include "catena/dynamics/integrator.hpp"
+#include "catena/dynamics/layout.hpp"
+
+namespace catena::dynamics {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// 12B (ISO 606): pitch, roller diameter, inner width, mass per metre
+constexpr double kPitch = 0.01905, kRoller = 0.01207, kWidth = 0.01168, kMass = 1.25;
+constexpr double kG = 9.81;
+
+double pitch_radius(int z) { return 0.5 * kPitch / std::sin(kPi / z); }
+
+// Two wheels z = 17 on a horizontal line 0.6 m apart; the chain `extra` links longer than the
+// taut path (rounded up to whole links).
+struct Slack {
+  std::vector<Circle> circles{{0.0, 0.0, pitch_radius(17)}, {0.6, 0.0, pitch_radius(17)}};
+  std::vector<int> teeth{17, 17};
+  BeltPath path, laid;
+  LoopPlacement place;
+  int links = 0;
+};
+Slack slack_loop(double fraction) {
+  Slack s;
+  s.path = belt_path(s.circles, 0);
+  s.links = static_cast<int>(std::ceil(s.path.length * (1 + fraction) / kPitch));
+  s.place = place_slack_loop(s.path, s.circles, s.teeth, s.links, kPitch, s.laid);
+  return s;
+}
+
+TEST(DynamicsSlackStart, EveryLinkIsOnePitchAndTheLowerSpanSags) {
+  for (const double fraction : {0.001, 0.01, 0.03}) {
+    const Slack s = slack_loop(fraction);
+    ASSERT_EQ(s.place.s.size(), static_cast<std::size_t>(s.links)) << fraction;
+    EXPECT_NEAR(s.place.spacing, kPitch, 1e-12 * kPitch);
+    const State st = loop_state(s.laid, s.circles, s.place, 0.0);
+    double length = 0.0, lowest = 0.0;
+    for (std::size_t i = 0; i < st.nodes(); ++i) {
+      const std::size_t j = (i + 1) % st.nodes();
+      const double l = std::hypot(st.x[j] - st.x[i], st.y[j] - st.y[i]);
+      EXPECT_NEAR(l, kPitch, 1e-11 * kPitch) << fraction << " link " << i;
+      length += l;
+      lowest = std::min(lowest, st.y[i]);
+    }
+    EXPECT_NEAR(length, s.links * kPitch, 1e-9 * s.links * kPitch);
+    // the sag is in the lower span (its outward normal points down): the circular arc of the
+    // chord c and length c + e between the tangent points, sagitta ρ (1 − cos φ)
+    const std::size_t k = slack_span(s.path);
+    ASSERT_LT(k, s.path.pieces.size());
+    const PathPiece& taut = s.path.pieces[k];
+    EXPECT_LT(taut.y0, 0.0);
+    const PathPiece& sag = s.laid.pieces[k];
+    EXPECT_TRUE(sag.sag);
+    EXPECT_NEAR(s.laid.length - s.path.length, sag.length - taut.length, 1e-12);
+    const double phi = 0.5 * std::abs(sag.to - sag.from);
+    EXPECT_NEAR(2 * sag.radius * std::sin(phi), taut.length, 1e-12);
+    const double sagitta = sag.radius * (1 - std::cos(phi));
+    // the lowest node is within a pitch's sagitta of the arc's lowest point
+    EXPECT_NEAR(-lowest, pitch_radius(17) + sagitta, 0.01 * sagitta + 1e-4) << fraction;
+    // the extra length is what the links need: about N p − the taut path (the chords of the arcs)
+    EXPECT_GT(s.laid.length, s.path.length);
+  }
+  // no slack: nothing to sag
+  Slack s;
+  s.path = belt_path(s.circles, 0);
+  const int taut = static_cast<int>(std::floor(s.path.length / kPitch));
+  EXPECT_TRUE(place_slack_loop(s.path, s.circles, s.teeth, taut, kPitch, s.laid).s.empty());
+}
+
+// The slack loop at rest under gravity: the driver held, the driven wheel free, drag settling the
+// chain. The lower span between the last roller seated on each wheel hangs as the catenary of its
+// links' length through those two points: y = a cosh((x − x0)/a) + c with √(s² − h²) =
+// 2a sinh(d/2a), x0 = (xA + xB)/2 − a atanh(h/s). Every free node within 1 % of the sag, the sag
+// within 0.5 % (validation (2)); measured +0.15 %.
+TEST(DynamicsSlackStart, SettledSlackSpanIsTheCatenary) {
+  Slack s = slack_loop(0.02);
+  ASSERT_FALSE(s.place.s.empty());
+  Model m = uniform_chain(s.place.s.size(), true, kPitch, kMass * kPitch, 5e6, 20.0, false);
+  for (std::size_t w = 0; w < 2; ++w)
+    m.sprockets.push_back(
+        iso606_sprocket(kPitch, kRoller, kWidth, 17, s.circles[w].x, s.circles[w].y, 2e8, 800.0));
+  m.sprockets[0].driver = true;
+  m.sprockets[0].speed = 0.0;
+  m.sprockets[1].inertia = 0.02;
+  m.gravity_y = -kG;
+  m.drag = 20.0;
+  State st = loop_state(s.laid, s.circles, s.place, 0.0);
+  Integrator integ(m, {.step = 2e-4, .theta = 0.6});
+  for (int k = 0; k < 10000; ++k) ASSERT_TRUE(integ.step(m, st).converged) << k;
+  // settled: the kinetic energy below 1e-6 of the chain's weight over 0.1 m (what is left is the
+  // free wheel's slow creep under the drag on the nodes)
+  EXPECT_LT(energy(m, st).kinetic,
+            1e-6 * kMass * kPitch * static_cast<double>(st.nodes()) * kG * 0.1);
+  // the seated nodes (on a pitch circle within 0.2 mm) below the centres' line; the span's ends:
+  // the driver's seated node farthest round (largest x), the driven wheel's smallest x
+  const std::size_t n = st.nodes();
+  auto seated = [&](std::size_t i, std::size_t w) {
+    return std::abs(std::hypot(st.x[i] - s.circles[w].x, st.y[i] - s.circles[w].y) -
+                    s.circles[w].radius) < 2e-4;
+  };
+  std::size_t a = n, b = n;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (st.y[i] >= 0.0) continue;
+    if (seated(i, 0) && (a == n || st.x[i] > st.x[a])) a = i;
+    if (seated(i, 1) && (b == n || st.x[i] < st.x[b])) b = i;
+  }
+  ASSERT_LT(a, n);
+  ASSERT_LT(b, n);
+  // the links from a forward to b (the loop runs from the driver's bottom to the driven wheel)
+  const std::size_t count = (b + n - a) % n;
+  ASSERT_GT(count, 20u);
+  ASSERT_LT(count, n / 2);
+  const double sl = static_cast<double>(count) * kPitch;  // the links' rest length; stretch < 1e-6
+  const double xa = st.x[a], ya = st.y[a], xb = st.x[b], yb = st.y[b];
+  const double d = xb - xa, h = yb - ya;
+  double lo = 1e-4, hi = 100.0;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (2.0 * mid * std::sinh(d / (2.0 * mid)) > std::sqrt(sl * sl - h * h) ? lo : hi) = mid;
+  }
+  const double ca = 0.5 * (lo + hi);
+  const double x0 = 0.5 * (xa + xb) - ca * std::atanh(h / sl);
+  auto catenary = [&](double x) {
+    return ya + ca * (std::cosh((x - x0) / ca) - std::cosh((xa - x0) / ca));
+  };
+  double sag = 0.0;
+  for (std::size_t k = 1; k < count; ++k) {
+    const std::size_t i = (a + k) % n;
+    sag = std::max(sag, ya + (st.x[i] - xa) * h / d - catenary(st.x[i]));
+  }
+  ASSERT_GT(sag, 0.02);  // a real sag: tens of millimetres
+  double sim_sag = 0.0;
+  for (std::size_t k = 1; k < count; ++k) {
+    const std::size_t i = (a + k) % n;
+    EXPECT_NEAR(st.y[i], catenary(st.x[i]), 0.01 * sag) << "node " << k << " of the span";
+    sim_sag = std::max(sim_sag, ya + (st.x[i] - xa) * h / d - st.y[i]);
+  }
+  EXPECT_NEAR(sim_sag / sag, 1.0, 0.005) << sim_sag << " vs " << sag;
+  std::printf("slack span: %zu links, sag %.6f m (catenary %.6f m, ratio %.5f)\n", count, sim_sag,
+              sag, sim_sag / sag);
+}
+
+}  // namespace
+}  // namespace catena::dynamics
