@@ -115,6 +115,52 @@ TEST(HingeFriction, ForceIsTheTorqueTimesTheGradientOfTheRelativeAngle) {
   }
 }
 
+// The integrator's chord iterations take the couple without its Jacobian, into one HingeCouple
+// kept across hinges: every other field must be the full evaluation's, bit for bit, and the
+// Jacobian must be left as it was (here: a marker), or written in full when asked for.
+TEST(HingeFriction, CoupleWithoutJacobianIsTheFullOnesBitForBitAndLeavesTheJacobian) {
+  std::mt19937 rng(11);
+  const HingeFriction hinge{.arm = 2.86e-4, .rate_band = 5.0};
+  for (int trial = 0; trial < 200; ++trial) {
+    const Pose p = random_pose(rng, kPitch, 5e-5);
+    const double theta = trial % 2 ? 0.5 : 0.6, h = 1e-4;
+    const double rest[2] = {kPitch, kPitch * (1.0 + 1e-3)};
+    double l0[2], l1[2];
+    for (int j = 0; j < 2; ++j) {
+      l0[j] = std::sqrt((p.x0[j + 1] - p.x0[j]) * (p.x0[j + 1] - p.x0[j]) +
+                        (p.y0[j + 1] - p.y0[j]) * (p.y0[j + 1] - p.y0[j]));
+      l1[j] = std::sqrt((p.x1[j + 1] - p.x1[j]) * (p.x1[j + 1] - p.x1[j]) +
+                        (p.y1[j + 1] - p.y1[j]) * (p.y1[j + 1] - p.y1[j]));
+    }
+    const HingeCouple full =
+        hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1);
+    HingeCouple lean;
+    for (auto& row : lean.jacobian) {
+      for (double& v : row) v = 12345.0;
+    }
+    hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1, lean, false);
+    EXPECT_EQ(lean.load, full.load);
+    EXPECT_EQ(lean.rate, full.rate);
+    EXPECT_EQ(lean.torque, full.torque);
+    EXPECT_EQ(lean.turn, full.turn);
+    EXPECT_EQ(lean.work, full.work);
+    EXPECT_EQ(lean.rate_stiffness, full.rate_stiffness);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(lean.gx[k], full.gx[k]);
+      EXPECT_EQ(lean.gy[k], full.gy[k]);
+      EXPECT_EQ(lean.fx[k], full.fx[k]);
+      EXPECT_EQ(lean.fy[k], full.fy[k]);
+    }
+    for (const auto& row : lean.jacobian) {
+      for (const double v : row) EXPECT_EQ(v, 12345.0);
+    }
+    hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1, lean, true);
+    for (int r = 0; r < 6; ++r) {
+      for (int c = 0; c < 6; ++c) EXPECT_EQ(lean.jacobian[r][c], full.jacobian[r][c]);
+    }
+  }
+}
+
 TEST(HingeFriction, CoupleHasNoResultantItsMomentIsTheTorqueAndItsWorkIsMTimesTheTurn) {
   std::mt19937 rng(6);
   const HingeFriction hinge{.arm = 2.86e-4, .rate_band = 5.0};

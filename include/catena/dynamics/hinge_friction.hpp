@@ -65,11 +65,20 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
 /// The same with the two links' chord lengths given: `length0` at the start of the step
 /// (|d₀|), `length1` at the end (|d₁|), as the integrator has them from its links (each link
 /// serves two hinges; the square roots are taken once). They must be the square roots of the
-/// chords' squared lengths for the result to equal the overload above.
+/// chords' squared lengths for the result to equal the overload above. `jacobian` false: the
+/// couple alone (`jacobian` left zero; every other field the same, bit for bit), for a Newton
+/// iteration that reuses an earlier factorisation.
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
                          const double y1[3], double theta, double step, const double length0[2],
-                         const double length1[2]);
+                         const double length1[2], bool jacobian = true);
+/// The same into `out`: every field is written but `jacobian`, which is written only when
+/// `jacobian` is true (else left as it was). For the integrator's hinge loop, which keeps one
+/// HingeCouple for all hinges rather than zeroing a fresh one (its 36-entry Jacobian) per hinge.
+void hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
+                  const double x0[3], const double y0[3], const double x1[3], const double y1[3],
+                  double theta, double step, const double length0[2], const double length1[2],
+                  HingeCouple& out, bool jacobian);
 /// Both links of rest length `pitch`.
 inline HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, double pitch,
                                 const double x0[3], const double y0[3], const double x1[3],

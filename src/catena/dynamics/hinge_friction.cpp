@@ -45,8 +45,17 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
                          const double y1[3], double theta, double step, const double length0[2],
-                         const double length1[2]) {
+                         const double length1[2], bool jacobian) {
   HingeCouple hc;
+  hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step, length0, length1, hc,
+               jacobian);
+  return hc;
+}
+
+void hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
+                  const double x0[3], const double y0[3], const double x1[3], const double y1[3],
+                  double theta, double step, const double length0[2], const double length1[2],
+                  HingeCouple& hc, bool jacobian) {
   double turn[2], tension_sum = 0.0;
   double px[2], py[2];  // perp(d_θ)/|d_θ|² per link
   // per link, the derivatives by its end-of-step chord d₁: of its turn (tx, ty), of its share of
@@ -98,6 +107,7 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
     hc.fy[k] = hc.torque * hc.gy[k];
   }
   hc.rate_stiffness = limit * band * band / (root * root * root);
+  if (!jacobian) return;
   // The exact ∂f/∂x₁. Node gradients of a per-link quantity q(d₁) of links 0 (a → b) and 1
   // (b → c): the turn Δβ = turn₁ − turn₀ gives (T₀, −T₀ − T₁, T₁) (as g); the load F = Σ ½ k
   // (l_θ − rest) gives (−E₀, E₀ − E₁, E₁) (zero where the load is clamped at 0).
@@ -127,7 +137,6 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
       }
     }
   }
-  return hc;
 }
 
 }  // namespace catena::dynamics

@@ -161,6 +161,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   if (model.hinge.active() && n >= 3) {
     const std::size_t first = model.closed ? 0 : 1;
     const std::size_t last = model.closed ? n : n - 1;
+    HingeCouple hc;  // one for every hinge: each call writes every field read below
     for (std::size_t i = first; i < last; ++i) {
       const std::size_t ha = (i + n - 1) % n, hb = (i + 1) % n;
       const double x0[3] = {s.x[ha], s.x[i], s.x[hb]}, y0[3] = {s.y[ha], s.y[i], s.y[hb]};
@@ -168,8 +169,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       const double rest[2] = {model.rest_length(ha), model.rest_length(i)};
       // links ha (ha → i) and i (i → hb): their lengths from the links' loop above
       const double length0[2] = {l0_[ha], l0_[i]}, length1[2] = {l1_[ha], l1_[i]};
-      const HingeCouple hc =
-          hinge_couple(model.hinge, k, rest, x0, y0, x1, y1, th, h, length0, length1);
+      hinge_couple(model.hinge, k, rest, x0, y0, x1, y1, th, h, length0, length1, hc, jacobian);
       hinge_work_ += hc.work;
       const std::size_t node[3] = {ha, i, hb};
       for (int q = 0; q < 3; ++q) {
@@ -469,14 +469,30 @@ StepReport Integrator::step(const Model& model, State& s) {
   std::fill(dx_.begin(), dx_.end(), 0.0);
 
   StepReport report;
+  // With hinge friction the Newton matrix is the exact pentadiagonal one, whose assembly (the 6×6
+  // couple Jacobians) and factorisation (with the loop closure's four columns) are most of a
+  // step: there, once a fresh Newton iteration has cut the correction to kNewtonContraction of
+  // the one before, the next ones reuse its factors (the chord, or modified, Newton method;
+  // Kelley, Iterative Methods for Linear and Nonlinear Equations, §5.4) and assemble the residual
+  // alone, as long as each correction is at most kChordContraction of the one before and the
+  // residual falls; otherwise the next iteration assembles and factors afresh (and a chord step
+  // that raised the residual is undone first).
+  // The convergence test is the same. Without hinge friction every iteration is a fresh Newton
+  // iteration, as before.
+  const bool chord = pentadiagonal_;
+  constexpr double kNewtonContraction = 0.05, kChordContraction = 0.25;
+  bool fresh = true;  // this iteration's factors are of the Jacobian at the current iterate
+  double previous_correction = 0.0;
   double norm2 = assemble(model, s, true);
   for (int iter = 1; iter <= options_.max_iterations; ++iter) {
-    report.solve = factor();
     report.iterations = iter;
-    if (report.solve != SolveStatus::kSolved) return report;
+    if (fresh) {
+      report.solve = factor();
+      if (report.solve != SolveStatus::kSolved) return report;
+    }
     if (nd == 0) {
       substitute(solver_.rhs, delta_);
-    } else {
+    } else if (fresh) {
       // The driven wheels' angles and the take-ups' slides border the chain's matrix:
       // [A B; Cᵀ D] [δu; δx] = [r; r_x]. Solve A W = B (one more O(N) substitution per extra
       // unknown, same factors; the first rides along with δu₀'s), then the small Schur
@@ -496,7 +512,8 @@ StepReport Integrator::step(const Model& model, State& s) {
         }
       }
       // Gaussian elimination on the nd × nd Schur complement (nd is the number of driven
-      // wheels and take-ups: small), right-hand side in dx_.
+      // wheels and take-ups: small), right-hand side in dx_; the multipliers are kept below the
+      // diagonal for the chord iterations (they are not read again here).
       for (std::size_t c = 0; c < nd; ++c) {
         const double piv = schur_[c * nd + c];
         if (!(std::abs(piv) > 0.0) || !std::isfinite(piv)) {
@@ -506,8 +523,35 @@ StepReport Integrator::step(const Model& model, State& s) {
         for (std::size_t r = c + 1; r < nd; ++r) {
           const double f = schur_[r * nd + c] / piv;
           for (std::size_t k = c; k < nd; ++k) schur_[r * nd + k] -= f * schur_[c * nd + k];
+          schur_[r * nd + c] = f;
           dx_[r] -= f * dx_[c];
         }
+      }
+      for (std::size_t c = nd; c-- > 0;) {
+        double v = dx_[c];
+        for (std::size_t k = c + 1; k < nd; ++k) v -= schur_[c * nd + k] * dx_[k];
+        dx_[c] = v / schur_[c * nd + c];
+      }
+      for (std::size_t a = 0; a < nd; ++a) {
+        const std::vector<Vec2>& wa = wsol_[a];
+        const double d = dx_[a];
+        for (std::size_t i = 0; i < n; ++i) {
+          delta_[i].x -= wa[i].x * d;
+          delta_[i].y -= wa[i].y * d;
+        }
+      }
+    } else {
+      // a chord iteration: the same bordered solve with the kept W = A⁻¹ B and the Schur
+      // complement's factors, for the new right-hand sides
+      substitute(solver_.rhs, delta_);
+      for (std::size_t a = 0; a < nd; ++a) {
+        const std::vector<Vec2>& ba = brow_[a];
+        double g = xres_[a];
+        for (std::size_t i = 0; i < n; ++i) g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
+        dx_[a] = g;
+      }
+      for (std::size_t c = 0; c < nd; ++c) {
+        for (std::size_t r = c + 1; r < nd; ++r) dx_[r] -= schur_[r * nd + c] * dx_[c];
       }
       for (std::size_t c = nd; c-- > 0;) {
         double v = dx_[c];
@@ -548,10 +592,70 @@ StepReport Integrator::step(const Model& model, State& s) {
       report.converged = true;
       break;
     }
-    // Backtracking: halve the step while the residual grows (far from the solution, a whip of
-    // the chain turns links by large angles within a step and the full Newton step overshoots).
-    double next = assemble(model, s, true);
+    if (!chord) {
+      // Backtracking: halve the step while the residual grows (far from the solution, a whip of
+      // the chain turns links by large angles within a step and the full Newton step overshoots).
+      double next = assemble(model, s, true);
+      double lambda = 1.0;
+      for (int b = 0; b < kMaxBacktracks && !(next < norm2); ++b) {
+        lambda *= 0.5;
+        for (std::size_t i = 0; i < n; ++i) {
+          ux_[i] -= lambda * delta_[i].x;
+          uy_[i] -= lambda * delta_[i].y;
+        }
+        for (std::size_t a = 0; a < nd; ++a)
+          (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] -= lambda * dx_[a];
+        next = assemble(model, s, true);
+        ++report.backtracks;
+      }
+      norm2 = next;
+      continue;
+    }
+    // Hinge friction. A chord iteration with the factors of the Jacobian at x_k contracts the
+    // error by about K |x_k − x*| (K the Jacobian's relative rate of change), which is what the
+    // fresh Newton step from x_k contracted it by: the factors are kept once a fresh step has
+    // contracted the correction by kNewtonContraction, and as long as each chord step contracts
+    // it by kChordContraction.
+    const bool reuse = fresh ? correction <= kNewtonContraction * previous_correction
+                             : correction <= kChordContraction * previous_correction;
+    previous_correction = correction;
+    if (!reuse) {
+      double next = assemble(model, s, true);
+      double lambda = 1.0;
+      for (int b = 0; b < kMaxBacktracks && !(next < norm2); ++b) {
+        lambda *= 0.5;
+        for (std::size_t i = 0; i < n; ++i) {
+          ux_[i] -= lambda * delta_[i].x;
+          uy_[i] -= lambda * delta_[i].y;
+        }
+        for (std::size_t a = 0; a < nd; ++a)
+          (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] -= lambda * dx_[a];
+        next = assemble(model, s, true);
+        ++report.backtracks;
+      }
+      norm2 = next;
+      fresh = true;
+      continue;
+    }
+    // The residual alone at the new iterate (the couple Jacobians are not needed for a chord
+    // step, nor at the line search's rejected points).
+    double next = assemble(model, s, false);
+    if (!fresh && !(next < norm2)) {
+      // a chord step that raised the residual: back to the iterate before it, a fresh iteration
+      for (std::size_t i = 0; i < n; ++i) {
+        ux_[i] -= delta_[i].x;
+        uy_[i] -= delta_[i].y;
+      }
+      for (std::size_t a = 0; a < nd; ++a)
+        (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] -= dx_[a];
+      norm2 = assemble(model, s, true);
+      fresh = true;
+      previous_correction = 0.0;
+      continue;
+    }
+    // after a fresh (Newton) step: backtrack as above, on the residual alone
     double lambda = 1.0;
+    bool backtracked = false;
     for (int b = 0; b < kMaxBacktracks && !(next < norm2); ++b) {
       lambda *= 0.5;
       for (std::size_t i = 0; i < n; ++i) {
@@ -560,10 +664,20 @@ StepReport Integrator::step(const Model& model, State& s) {
       }
       for (std::size_t a = 0; a < nd; ++a)
         (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] -= lambda * dx_[a];
-      next = assemble(model, s, true);
+      next = assemble(model, s, false);
       ++report.backtracks;
+      backtracked = true;
     }
     norm2 = next;
+    // a damped step is far from the solution: the next iteration is a fresh Newton one, with the
+    // Jacobian at the accepted point (the residual is the same)
+    if (backtracked) {
+      norm2 = assemble(model, s, true);
+      fresh = true;
+      previous_correction = 0.0;
+    } else {
+      fresh = false;
+    }
   }
   report.max_penetration = max_penetration_;
   if (!report.converged) return report;
