@@ -74,10 +74,20 @@ std::optional<io::CaseValue> chain_type_of(const io::CaseFile& file) {
 }
 
 // Adds the values the case file's chain type implies for the analysis (its Variant's `set`),
-// except those given as flags; a chain type the analysis does not take is an issue.
+// unless one of them was given as a flag (the command line wins: the file's type is not read);
+// a chain type the analysis does not take is an issue.
 void apply_variant(const analysis::Analysis& a, const State& state, const io::CaseValue& type,
                    std::vector<io::RawInput>& raw, std::vector<Issue>& issues) {
   if (a.variants.empty()) return;
+  // a flag of the variant's given on the command line wins: the file's type is not read
+  for (const auto& [name, v] : a.variants) {
+    for (const auto& [key, value] : v.set) {
+      const auto given = state.texts.find(key);
+      if (given != state.texts.end() && !given->second.empty()) return;
+      const auto flag = state.flags.find(key);
+      if (flag != state.flags.end() && flag->second) return;
+    }
+  }
   const std::string where = type.path + " (line " + std::to_string(type.line) + ")";
   const analysis::Analysis::Variant* variant = nullptr;
   std::string types;
@@ -91,8 +101,6 @@ void apply_variant(const analysis::Analysis& a, const State& state, const io::Ca
     return;
   }
   for (const auto& [key, value] : variant->set) {
-    const auto given = state.texts.find(key);
-    if (given != state.texts.end() && !given->second.empty()) continue;  // the flag wins
     const Parameter* param = a.parameter(key);
     const bool is_flag = param && param->type == ParameterType::kFlag;
     raw.push_back(

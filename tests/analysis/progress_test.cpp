@@ -156,7 +156,10 @@ TEST(Progress, ASweepCancelledFromAnotherThreadThrowsCancelledAfterItsThreadsSto
   };
   Clock::time_point sent;
   std::thread stopper([&cancel, &sent, &started] {
-    while (!started.load()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    // (bounded: a sweep that failed before its first report must not hang the test)
+    const auto give_up = Clock::now() + std::chrono::seconds(60);
+    while (!started.load() && Clock::now() < give_up)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
     sent = Clock::now();
     cancel.store(true);

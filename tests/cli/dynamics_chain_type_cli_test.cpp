@@ -143,9 +143,14 @@ TEST(DynamicsChainTypeCli, CommandLineReadsTheCaseFilesChainType) {
                   "chain.type (line 10) = 'rolling-hinge': expected a chain type "
                   "'dynamics' takes: roller-iso606, round-link"))
       << unknown.err;
-  // the flag wins over the file's type
+  // the flag wins over the file's type (the file's is then not read, even one not taken)
   const CliRun flag = run("dynamics " + roller_on_pocket + " --chain-type round-link");
   EXPECT_EQ(flag.status, 0) << flag.err;
+  const CliRun over_unknown =
+      run("dynamics " +
+          edited(kPocket, "hinge_type_told.toml", {{"type = ", "type = \"rolling-hinge\""}}) +
+          " --chain-type round-link");
+  EXPECT_EQ(over_unknown.status, 0) << over_unknown.err;
   // the example itself (round-link on pocket wheels) runs
   EXPECT_EQ(run("dynamics " + edited(kPocket, "agrees.toml", {})).status, 0);
 }

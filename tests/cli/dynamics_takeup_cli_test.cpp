@@ -362,6 +362,17 @@ TEST(DynamicsTakeupCli, BadWindowAndTravelNamed) {
   EXPECT_NE(negative.err.find("dynamics.spectrum_start (line 17) = -1: expected in [0, 0.985] s"),
             std::string::npos)
       << negative.err;
+  // an output interval that does not divide the run: the last sample is at 0.9999 s (3333 samples
+  // of 0.3 ms), not at the duration, so the window's latest start is 0.9999 - 15 x 0.3 ms
+  const std::string odd =
+      replaced(example_text(), "output_interval", "output_interval = \"0.3 ms\"");
+  const CliRun late = run("dynamics " + write("late.toml", in_dynamics(odd,
+                                                                       "spectrum_start = "
+                                                                       "\"0.9955 s\"\n")));
+  EXPECT_EQ(late.status, 2);
+  EXPECT_NE(late.err.find("dynamics.spectrum_start (line 17) = 0.9955: expected in [0, 0.9954] s"),
+            std::string::npos)
+      << late.err;
   // a travel key alone does not make a take-up: its direction and force are asked for
   std::string alone = example_text();
   for (const char* key : {"takeup_force", "takeup_direction", "takeup_damping", "takeup_mass"})

@@ -96,7 +96,9 @@ LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circle
                          const std::vector<int>& teeth, int nodes, double pitch);
 
 /// The span of the path a slack chain sags in: the straight piece whose outward normal (the
-/// right of the travel) points most nearly down (−y); the path's piece count if it has none.
+/// right of the travel) points most nearly down (−y), among the spans between two wheels wrapped
+/// on their outside (a span touching a wheel on the back of the chain would sag into it); the
+/// path's piece count if it has none.
 std::size_t slack_span(const BeltPath& path);
 
 /// The path with span `piece` laid as a circular arc of its chord plus `extra` (> 0), bulging

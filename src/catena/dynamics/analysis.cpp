@@ -671,6 +671,7 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
       // longer than the path: a start with slack, its slack span sagging (every link one pitch),
       // up to kMaxSlack of the path's length
       const double over = chosen * s.pitch - s.path.length;
+      std::string blocked;  // a wheel the sagging span would run into
       if (over > 0.0 && over <= kMaxSlack * s.path.length) {
         BeltPath laid;
         const LoopPlacement sagging =
@@ -678,6 +679,25 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
         bool seated = !sagging.s.empty();
         for (std::size_t w = 0; seated && w < n; ++w)
           seated = sagging.wrapped[w] > 0 && sagging.seat_offset[w] <= clearance[w];
+        // the sagging arc must pass every other wheel's teeth by the roller, as a span must
+        const std::size_t k = slack_span(s.path);
+        if (seated && k < laid.pieces.size()) {
+          const PathPiece& q = laid.pieces[k];
+          constexpr int kSamples = 512;
+          for (std::size_t w = 0; w < n && blocked.empty(); ++w) {
+            if (w == q.wheel || w == q.next) continue;
+            for (int j = 0; j <= kSamples; ++j) {
+              const double a = q.from + (q.to - q.from) * j / kSamples;
+              const double reach = std::hypot(q.cx + q.radius * std::cos(a) - s.circles[w].x,
+                                              q.cy + q.radius * std::sin(a) - s.circles[w].y);
+              if (reach < tip[w] + 0.5 * s.roller) {
+                blocked = "sprocket[" + std::to_string(w) + "]";
+                break;
+              }
+            }
+          }
+          seated = blocked.empty();
+        }
         if (seated) {
           s.placement = sagging;
           s.laid = laid;
@@ -688,10 +708,16 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
         }
       }
       if (over > 0.0)
-        why += "; or a chain longer than the path by at most " + shown(kMaxSlack * 100.0) +
-               " % of its length (" + mm(kMaxSlack * s.path.length) +
-               "), which starts with its slack span sagging (here " + mm(over) + ", " +
-               shown(over / s.path.length * 100.0) + " %)";
+        why +=
+            "; or a chain longer than the path by at most " + shown(kMaxSlack * 100.0) +
+            " % of its length (" + mm(kMaxSlack * s.path.length) +
+            "), which starts with its slack span sagging (here " + mm(over) + ", " +
+            shown(over / s.path.length * 100.0) + " %" +
+            (slack_span(s.path) >= s.path.pieces.size()
+                 ? "; but no span sags: every span touches a wheel on the back of the chain"
+             : blocked.empty() ? ""
+                               : "; but the sagging span would run into " + blocked + "'s teeth") +
+            ")";
       issues.push_back({links_at, std::to_string(chosen), why});
       return;
     }
@@ -1429,7 +1455,8 @@ Setup parse(const analysis::Inputs& in) {
   if (value.count("spectrum_start") && s.duration > 0.0 && std::isfinite(s.duration) &&
       s.step > 0.0 && std::isfinite(s.step) && s.interval > 0.0 && std::isfinite(s.interval)) {
     const double every = std::max(1.0, std::round(s.interval / s.step));
-    const double last = std::round(s.duration / s.step) * s.step;  // the last sample's time
+    // the last sample's time: the run samples every `every` steps of its round(T/h)
+    const double last = std::floor(std::round(s.duration / s.step) / every) * every * s.step;
     const double latest = last - 15.0 * every * s.step;
     if (!(s.spectrum_start >= 0.0 && s.spectrum_start <= latest + 1e-9 * s.step))
       issues.push_back({at("spectrum_start"), shown(s.spectrum_start),
@@ -2141,7 +2168,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
     const BeltPath settled = belt_path(circles, 0);
     for (const PathPiece& q : settled.pieces)
       if (!q.arc) settled_length.push_back(std::hypot(q.x1 - q.x0, q.y1 - q.y0));
-    if (!settled.unwrapped.empty() || settled_length.size() != span_length.size())
+    if (!settled.unwrapped.empty() || !settled.faults.empty() || settled.order != d.path.order ||
+        settled_length.size() != span_length.size())
       settled_length.clear();
   }
   std::vector<SpanFrequencies> span_f;  // also marked on the report's spectrum

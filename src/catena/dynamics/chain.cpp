@@ -358,8 +358,8 @@ double articulation_tip_radius(const Sprocket& w) {
     (articulation_interference(probe) <= 0.0 ? lo : hi) = probe.tip_radius;
   }
   // 1 µm below the sampled limit: between the path's samples the corner may stand proud by
-  // nanometres
-  return lo - 1e-6;
+  // nanometres (never below the pitch circle, which was found clear)
+  return std::max(lo - 1e-6, w.pitch_radius);
 }
 
 State two_sprocket_loop(int teeth, int span, double pitch, double pitch_radius, double omega) {

@@ -400,11 +400,19 @@ LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circle
 }
 
 std::size_t slack_span(const BeltPath& path) {
+  // a wheel on the back of the chain (wrapped clockwise) has the span's outward side, where the
+  // sag bulges, towards it: a span touching one does not sag
+  std::vector<std::size_t> back;
+  for (const PathPiece& q : path.pieces)
+    if (q.arc && q.sense < 0.0) back.push_back(q.wheel);
+  auto on_back = [&back](std::size_t w) {
+    return std::find(back.begin(), back.end(), w) != back.end();
+  };
   std::size_t best = path.pieces.size();
   double lowest = INFINITY;
   for (std::size_t k = 0; k < path.pieces.size(); ++k) {
     const PathPiece& q = path.pieces[k];
-    if (q.arc || !(q.length > 0.0)) continue;
+    if (q.arc || !(q.length > 0.0) || on_back(q.wheel) || on_back(q.next)) continue;
     const double ny = -(q.x1 - q.x0) / q.length;  // the right-hand normal's y
     if (ny < lowest - 1e-12) {
       lowest = ny;
