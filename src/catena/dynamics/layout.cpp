@@ -72,6 +72,48 @@ double segment_distance(double x, double y, double x0, double y0, double x1, dou
 
 std::string wheel_name(std::size_t i) { return "sprocket[" + std::to_string(i) + "]"; }
 
+// Appends to `path` the arc on wheel `w` from the chain's angle `from` turning by `wrap` in
+// `sense` (+1 counter-clockwise, −1 on the back), then the span from its end to wheel `to` at the
+// tangent's normal angle `normal` (the point at the signed radius there), each placed at `along`
+// on the path, which advances past both.
+void append_arc_and_span(BeltPath& path, const std::vector<Circle>& circles, std::size_t w,
+                         std::size_t to, double from, double wrap, double sense, double normal,
+                         double& along) {
+  const Circle& c = circles[w];
+  PathPiece arc;
+  arc.arc = true;
+  arc.wheel = w;
+  arc.next = w;
+  arc.sense = sense;
+  arc.cx = c.x;
+  arc.cy = c.y;
+  arc.radius = c.radius;
+  arc.from = from;
+  arc.to = from + sense * wrap;
+  arc.x0 = c.x + c.radius * std::cos(arc.from);
+  arc.y0 = c.y + c.radius * std::sin(arc.from);
+  arc.x1 = c.x + c.radius * std::cos(arc.to);
+  arc.y1 = c.y + c.radius * std::sin(arc.to);
+  arc.length = c.radius * wrap;
+  arc.start = along;
+  along += arc.length;
+  path.pieces.push_back(arc);
+  path.order.push_back(w);
+  const Circle& d = circles[to];
+  const double rd = signed_radius(d);
+  PathPiece span;
+  span.wheel = w;
+  span.next = to;
+  span.x0 = arc.x1;
+  span.y0 = arc.y1;
+  span.x1 = d.x + rd * std::cos(normal);
+  span.y1 = d.y + rd * std::sin(normal);
+  span.length = std::hypot(span.x1 - span.x0, span.y1 - span.y0);
+  span.start = along;
+  along += span.length;
+  path.pieces.push_back(span);
+}
+
 // The serpentine path: the wheels in their given order (from `first`), tangent k leaving wheel
 // order[k] for order[k + 1] on the sides the wheels are on, each wheel's arc from the tangent
 // arriving to the one leaving, turned the way its side wraps it.
@@ -95,44 +137,15 @@ BeltPath serpentine_path(const std::vector<Circle>& circles, std::size_t first) 
     const Edge& out = edges[k];
     const Circle& c = circles[out.from];
     const double sense = c.back ? -1.0 : 1.0;
-    PathPiece arc;
-    arc.arc = true;
-    arc.wheel = out.from;
-    arc.next = out.from;
-    arc.sense = sense;
-    arc.cx = c.x;
-    arc.cy = c.y;
-    arc.radius = c.radius;
     // the chain's point is at c + ρ n: at the normal's angle inside, opposite it on the back
-    arc.from = std::remainder(in.normal + (c.back ? kPi : 0.0), kTwoPi);
     const double wrap = turn(sense * (out.normal - in.normal), 1e-9);
     if (!(wrap > 1e-9))
       path.faults.push_back({out.from, "the chain only touches " + wheel_name(out.from) +
                                            " (its wrap is 0): move it into the chain's path"});
-    arc.to = arc.from + sense * wrap;
-    arc.x0 = c.x + c.radius * std::cos(arc.from);
-    arc.y0 = c.y + c.radius * std::sin(arc.from);
-    arc.x1 = c.x + c.radius * std::cos(arc.to);
-    arc.y1 = c.y + c.radius * std::sin(arc.to);
-    arc.length = c.radius * wrap;
-    arc.start = along;
-    along += arc.length;
     turning += sense * wrap;
-    path.pieces.push_back(arc);
-    path.order.push_back(out.from);
-    const Circle& d = circles[out.to];
-    const double rd = signed_radius(d);
-    PathPiece span;
-    span.wheel = out.from;
-    span.next = out.to;
-    span.x0 = arc.x1;
-    span.y0 = arc.y1;
-    span.x1 = d.x + rd * std::cos(out.normal);
-    span.y1 = d.y + rd * std::sin(out.normal);
-    span.length = std::hypot(span.x1 - span.x0, span.y1 - span.y0);
-    span.start = along;
-    along += span.length;
-    path.pieces.push_back(span);
+    append_arc_and_span(path, circles, out.from, out.to,
+                        std::remainder(in.normal + (c.back ? kPi : 0.0), kTwoPi), wrap, sense,
+                        out.normal, along);
   }
   path.length = along;
   // a simple loop run counter-clockwise turns its tangent once round, +2π
@@ -225,39 +238,10 @@ BeltPath belt_path(const std::vector<Circle>& circles, std::size_t first) {
   for (std::size_t k = 0; k < n; ++k) {
     const Edge& in = edges[(k + n - 1) % n];
     const Edge& out = edges[k];
-    const Circle& c = circles[out.from];
-    PathPiece arc;
-    arc.arc = true;
-    arc.wheel = out.from;
-    arc.next = out.from;
-    arc.cx = c.x;
-    arc.cy = c.y;
-    arc.radius = c.radius;
-    arc.from = std::remainder(in.normal, kTwoPi);
     const double wrap = turn(out.normal - in.normal, 1e-9);
     if (!(wrap > 1e-9)) path.unwrapped.push_back(out.from);  // touches the path at a point
-    arc.to = arc.from + wrap;
-    arc.x0 = c.x + c.radius * std::cos(arc.from);
-    arc.y0 = c.y + c.radius * std::sin(arc.from);
-    arc.x1 = c.x + c.radius * std::cos(arc.to);
-    arc.y1 = c.y + c.radius * std::sin(arc.to);
-    arc.length = c.radius * wrap;
-    arc.start = along;
-    along += arc.length;
-    path.pieces.push_back(arc);
-    path.order.push_back(out.from);
-    const Circle& d = circles[out.to];
-    PathPiece span;
-    span.wheel = out.from;
-    span.next = out.to;
-    span.x0 = arc.x1;
-    span.y0 = arc.y1;
-    span.x1 = d.x + d.radius * std::cos(out.normal);
-    span.y1 = d.y + d.radius * std::sin(out.normal);
-    span.length = std::hypot(span.x1 - span.x0, span.y1 - span.y0);
-    span.start = along;
-    along += span.length;
-    path.pieces.push_back(span);
+    append_arc_and_span(path, circles, out.from, out.to, std::remainder(in.normal, kTwoPi), wrap,
+                        1.0, out.normal, along);
   }
   path.length = along;
   if (!path.unwrapped.empty()) path.pieces.clear();
