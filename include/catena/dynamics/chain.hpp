@@ -195,6 +195,17 @@ struct GuideContact {
   double dv[4] = {0, 0, 0, 0};  ///< [N·s/m] ∂F/∂v
 };
 GuideContact guide_contact(const Guide& g, double x, double y, double vx, double vy);
+/// An axis-aligned box that holds every roller centre a guide can touch: guide_contact(g, x, y,
+/// …) is active only if guide_touch_possible(guide_bounds(g), x, y). A straight rail's segment
+/// widened by the roller radius, an arc's whole circle of radius + roller radius, each padded by
+/// 1e-9 of its size against rounding: a cheap, exact cull before guide_contact.
+struct GuideBounds {
+  double x_lo = 0.0, x_hi = 0.0, y_lo = 0.0, y_hi = 0.0;  ///< [m]
+};
+GuideBounds guide_bounds(const Guide& g);
+inline bool guide_touch_possible(const GuideBounds& b, double x, double y) {
+  return x >= b.x_lo && x <= b.x_hi && y >= b.y_lo && y <= b.y_hi;
+}
 
 struct Model {
   bool closed = false;               ///< closed loop (link N − 1 joins node N − 1 to node 0)

@@ -25,6 +25,7 @@
 // to settle a chain to equilibrium or to quiet stiff modes, not for the energy balance.
 #pragma once
 
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -146,6 +147,11 @@ class Integrator {
   std::vector<double> slide_force_;      // per wheel: the chain's force along the slide
   std::vector<double> wheel_force_;      // per wheel: |the chain's force| on a take-up's wheel
   std::vector<double> torque_;           // per wheel: the θ-point contact torque (last assembly)
+  // The predictor's history: the last accepted step's change of each node's velocity and each
+  // wheel's speed and slide speed, and the time it ended at (NaN: none; a state at another time
+  // starts from the constant-velocity predictor).
+  std::vector<double> dvx_, dvy_, dspeed_, dslide_speed_;
+  double history_time_ = NAN;
   double max_penetration_ = 0.0;
   // the dissipative works of the last assembly's iterate (StepReport's fields)
   double damper_work_ = 0.0, drag_work_ = 0.0, contact_damping_work_ = 0.0;

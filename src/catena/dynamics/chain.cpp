@@ -223,6 +223,33 @@ std::vector<Issue> validate(const Model& model) {
   return out;
 }
 
+GuideBounds guide_bounds(const Guide& g) {
+  // guide_contact is active only at 0 < g < 2r: within r of the straight segment's line between
+  // its ends (so within r of the segment in each axis), or at a distance in (R − r, R + r) from
+  // the arc's centre, inside or outside.
+  const double r = std::abs(g.roller_radius);
+  double x_lo = 0.0, x_hi = 0.0, y_lo = 0.0, y_hi = 0.0;
+  if (g.kind == Guide::Kind::kStraight) {
+    x_lo = std::min(g.x0, g.x1) - r;
+    x_hi = std::max(g.x0, g.x1) + r;
+    y_lo = std::min(g.y0, g.y1) - r;
+    y_hi = std::max(g.y0, g.y1) + r;
+  } else {
+    const double reach = std::abs(g.radius) + r;
+    x_lo = g.centre_x - reach;
+    x_hi = g.centre_x + reach;
+    y_lo = g.centre_y - reach;
+    y_hi = g.centre_y + reach;
+  }
+  // a non-finite input (std::min and std::max pass a NaN over): no cull, guide_contact decides
+  const double sum = g.kind == Guide::Kind::kStraight ? g.x0 + g.x1 + g.y0 + g.y1 + r
+                                                      : g.centre_x + g.centre_y + g.radius + r;
+  if (!std::isfinite(sum)) return {-INFINITY, INFINITY, -INFINITY, INFINITY};
+  const double pad =
+      1e-9 * (std::max({std::abs(x_lo), std::abs(x_hi), std::abs(y_lo), std::abs(y_hi)}) + r);
+  return {x_lo - pad, x_hi + pad, y_lo - pad, y_hi + pad};
+}
+
 GuideContact guide_contact(const Guide& gd, double x, double y, double vx, double vy) {
   GuideContact c;
   const double r = gd.roller_radius;
