@@ -485,6 +485,28 @@ StepReport Integrator::step(const Model& model, State& s) {
   // this integrator's last step ended at this state's time); with ht = 0, constant velocity. Only
   // Newton's starting point: the converged step is the same to the tolerance either way.
   bool estimated = false;  // converged on the error estimate, not on |Δ| ≤ tolerance
+  // x ← x − λ Δ: the chain's nodes and the extra unknowns back along the last correction
+  auto retreat = [&](double lambda) {
+    for (std::size_t i = 0; i < n; ++i) {
+      ux_[i] -= lambda * delta_[i].x;
+      uy_[i] -= lambda * delta_[i].y;
+    }
+    for (std::size_t a = 0; a < nd; ++a)
+      (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] -= lambda * dx_[a];
+  };
+  // Backtracking: from the full step (its residual `next`), halve the step while the residual
+  // grows past `norm2`, assembling the residual (and with `jacobian` the Newton matrix) at each
+  // point; returns the accepted point's residual.
+  auto backtrack = [&](double next, double norm2, bool jacobian, StepReport& report) {
+    double lambda = 1.0;
+    for (int b = 0; b < kMaxBacktracks && !(next < norm2); ++b) {
+      lambda *= 0.5;
+      retreat(lambda);
+      next = assemble(model, s, jacobian);
+      ++report.backtracks;
+    }
+    return next;
+  };
   auto newton = [&](double ht) {
     for (std::size_t i = 0; i < n; ++i) {
       ux_[i] = s.x[i] + h * s.vx[i] + ht * dvx_[i];
@@ -639,20 +661,7 @@ StepReport Integrator::step(const Model& model, State& s) {
         // Backtracking: halve the step while the residual grows (far from the solution, a whip
         // of the chain turns links by large angles within a step and the full Newton step
         // overshoots).
-        double next = assemble(model, s, true);
-        double lambda = 1.0;
-        for (int b = 0; b < kMaxBacktracks && !(next < norm2); ++b) {
-          lambda *= 0.5;
-          for (std::size_t i = 0; i < n; ++i) {
-            ux_[i] -= lambda * delta_[i].x;
-            uy_[i] -= lambda * delta_[i].y;
-          }
-          for (std::size_t a = 0; a < nd; ++a)
-            (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] -= lambda * dx_[a];
-          next = assemble(model, s, true);
-          ++report.backtracks;
-        }
-        norm2 = next;
+        norm2 = backtrack(assemble(model, s, true), norm2, true, report);
         continue;
       }
       // Hinge friction. A chord iteration with the factors of the Jacobian at x_k contracts the
@@ -664,20 +673,7 @@ StepReport Integrator::step(const Model& model, State& s) {
                                : correction <= kChordContraction * previous_correction;
       previous_correction = correction;
       if (!reuse) {
-        double next = assemble(model, s, true);
-        double lambda = 1.0;
-        for (int b = 0; b < kMaxBacktracks && !(next < norm2); ++b) {
-          lambda *= 0.5;
-          for (std::size_t i = 0; i < n; ++i) {
-            ux_[i] -= lambda * delta_[i].x;
-            uy_[i] -= lambda * delta_[i].y;
-          }
-          for (std::size_t a = 0; a < nd; ++a)
-            (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] -= lambda * dx_[a];
-          next = assemble(model, s, true);
-          ++report.backtracks;
-        }
-        norm2 = next;
+        norm2 = backtrack(assemble(model, s, true), norm2, true, report);
         fresh = true;
         continue;
       }
@@ -688,12 +684,7 @@ StepReport Integrator::step(const Model& model, State& s) {
         // a chord step that raised the residual: back to the iterate before it, a fresh
         // iteration; its correction is not a contraction of this sequence, so the estimate
         // compares the next one with the correction that led to that iterate
-        for (std::size_t i = 0; i < n; ++i) {
-          ux_[i] -= delta_[i].x;
-          uy_[i] -= delta_[i].y;
-        }
-        for (std::size_t a = 0; a < nd; ++a)
-          (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] -= dx_[a];
+        retreat(1.0);
         norm2 = assemble(model, s, true);
         fresh = true;
         previous_correction = 0.0;
@@ -701,21 +692,9 @@ StepReport Integrator::step(const Model& model, State& s) {
         continue;
       }
       // after a fresh (Newton) step: backtrack as above, on the residual alone
-      double lambda = 1.0;
-      bool backtracked = false;
-      for (int b = 0; b < kMaxBacktracks && !(next < norm2); ++b) {
-        lambda *= 0.5;
-        for (std::size_t i = 0; i < n; ++i) {
-          ux_[i] -= lambda * delta_[i].x;
-          uy_[i] -= lambda * delta_[i].y;
-        }
-        for (std::size_t a = 0; a < nd; ++a)
-          (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] -= lambda * dx_[a];
-        next = assemble(model, s, false);
-        ++report.backtracks;
-        backtracked = true;
-      }
-      norm2 = next;
+      const int backtracks = report.backtracks;
+      norm2 = backtrack(next, norm2, false, report);
+      const bool backtracked = report.backtracks > backtracks;
       // a damped step is far from the solution: the next iteration is a fresh Newton one, with
       // the Jacobian at the accepted point (the residual is the same)
       if (backtracked) {
