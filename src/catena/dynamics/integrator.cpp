@@ -507,6 +507,23 @@ StepReport Integrator::step(const Model& model, State& s) {
     }
     return next;
   };
+  // The bordered solve's end: back substitution on the Schur complement's upper factor (its
+  // right-hand side in dx_, already forward-eliminated), then δu = δu₀ − W δx.
+  auto finish_bordered = [&] {
+    for (std::size_t c = nd; c-- > 0;) {
+      double v = dx_[c];
+      for (std::size_t k = c + 1; k < nd; ++k) v -= schur_[c * nd + k] * dx_[k];
+      dx_[c] = v / schur_[c * nd + c];
+    }
+    for (std::size_t a = 0; a < nd; ++a) {
+      const std::vector<Vec2>& wa = wsol_[a];
+      const double d = dx_[a];
+      for (std::size_t i = 0; i < n; ++i) {
+        delta_[i].x -= wa[i].x * d;
+        delta_[i].y -= wa[i].y * d;
+      }
+    }
+  };
   auto newton = [&](double ht) {
     for (std::size_t i = 0; i < n; ++i) {
       ux_[i] = s.x[i] + h * s.vx[i] + ht * dvx_[i];
@@ -580,19 +597,7 @@ StepReport Integrator::step(const Model& model, State& s) {
             dx_[r] -= f * dx_[c];
           }
         }
-        for (std::size_t c = nd; c-- > 0;) {
-          double v = dx_[c];
-          for (std::size_t k = c + 1; k < nd; ++k) v -= schur_[c * nd + k] * dx_[k];
-          dx_[c] = v / schur_[c * nd + c];
-        }
-        for (std::size_t a = 0; a < nd; ++a) {
-          const std::vector<Vec2>& wa = wsol_[a];
-          const double d = dx_[a];
-          for (std::size_t i = 0; i < n; ++i) {
-            delta_[i].x -= wa[i].x * d;
-            delta_[i].y -= wa[i].y * d;
-          }
-        }
+        finish_bordered();
       } else {
         // a chord iteration: the same bordered solve with the kept W = A⁻¹ B and the Schur
         // complement's factors, for the new right-hand sides
@@ -606,19 +611,7 @@ StepReport Integrator::step(const Model& model, State& s) {
         for (std::size_t c = 0; c < nd; ++c) {
           for (std::size_t r = c + 1; r < nd; ++r) dx_[r] -= schur_[r * nd + c] * dx_[c];
         }
-        for (std::size_t c = nd; c-- > 0;) {
-          double v = dx_[c];
-          for (std::size_t k = c + 1; k < nd; ++k) v -= schur_[c * nd + k] * dx_[k];
-          dx_[c] = v / schur_[c * nd + c];
-        }
-        for (std::size_t a = 0; a < nd; ++a) {
-          const std::vector<Vec2>& wa = wsol_[a];
-          const double d = dx_[a];
-          for (std::size_t i = 0; i < n; ++i) {
-            delta_[i].x -= wa[i].x * d;
-            delta_[i].y -= wa[i].y * d;
-          }
-        }
+        finish_bordered();
       }
       double correction = 0.0;
       for (std::size_t i = 0; i < n; ++i) {
