@@ -640,7 +640,8 @@ StepReport Integrator::step(const Model& model, State& s) {
       // Solving ODEs II, §IV.8), is: near the solution Newton's error falls quadratically and the
       // correction that would only confirm it is skipped. Not with guides (as the predictor):
       // the conveyor's tension means (validation (6b)) moved by 1-2 % with it, beyond their 1 %.
-      // No estimate before two corrections of one sequence (previous is infinite until then).
+      // No estimate before two corrections of one sequence (previous is infinite until then, and
+      // again after a backtracked step).
       const double rate = correction / previous;
       const double before = previous;  // restored if this step is undone
       previous = correction;
@@ -653,8 +654,11 @@ StepReport Integrator::step(const Model& model, State& s) {
       if (!chord) {
         // Backtracking: halve the step while the residual grows (far from the solution, a whip
         // of the chain turns links by large angles within a step and the full Newton step
-        // overshoots).
+        // overshoots). A damped step's correction is not Newton's contraction: no estimate
+        // until two more full corrections.
+        const int backtracks = report.backtracks;
         norm2 = backtrack(assemble(model, s, true), norm2, true, report);
+        if (report.backtracks > backtracks) previous = INFINITY;
         continue;
       }
       // Hinge friction. A chord iteration with the factors of the Jacobian at x_k contracts the
@@ -666,7 +670,9 @@ StepReport Integrator::step(const Model& model, State& s) {
                                : correction <= kChordContraction * previous_correction;
       previous_correction = correction;
       if (!reuse) {
+        const int backtracks = report.backtracks;
         norm2 = backtrack(assemble(model, s, true), norm2, true, report);
+        if (report.backtracks > backtracks) previous = INFINITY;
         fresh = true;
         continue;
       }
@@ -694,6 +700,7 @@ StepReport Integrator::step(const Model& model, State& s) {
         norm2 = assemble(model, s, true);
         fresh = true;
         previous_correction = 0.0;
+        previous = INFINITY;
       } else {
         fresh = false;
       }
