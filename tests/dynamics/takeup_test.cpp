@@ -73,6 +73,38 @@ Loop three_wheels(double omega, double load, double force, double stiffness, dou
   return l;
 }
 
+// A Newton iterate near the step's constant-velocity predictor (step h): every node coordinate
+// moved by a seeded uniform jitter within ±2e-5 m, the driven wheel's and the idler's angles and
+// the slide by the given offsets.
+std::vector<double> perturbed_iterate(const Loop& l, double h, unsigned seed, double driven,
+                                      double idler, double slide) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-2e-5, 2e-5);
+  const std::size_t n = l.model.nodes();
+  std::vector<double> u(2 * n + 3);
+  for (std::size_t i = 0; i < n; ++i) {
+    u[2 * i] = l.state.x[i] + h * l.state.vx[i] + jitter(rng);
+    u[2 * i + 1] = l.state.y[i] + h * l.state.vy[i] + jitter(rng);
+  }
+  u[2 * n] = l.state.angle[1] + h * l.state.speed[1] + driven;
+  u[2 * n + 1] = l.state.angle[2] + h * l.state.speed[2] + idler;
+  u[2 * n + 2] = l.state.slide[2] + slide;
+  return u;
+}
+
+// The central difference of the Newton residual in unknown c (step eps) at u.
+std::vector<double> fd_column(Integrator& integ, const Loop& l, const std::vector<double>& u,
+                              std::size_t c, double eps) {
+  std::vector<double> rp, rm, v = u;
+  v[c] += eps;
+  integ.newton_system(l.model, l.state, v, rp, nullptr);
+  v[c] -= 2 * eps;
+  integ.newton_system(l.model, l.state, v, rm, nullptr);
+  std::vector<double> fd(u.size());
+  for (std::size_t r = 0; r < u.size(); ++r) fd[r] = (rp[r] - rm[r]) / (2 * eps);
+  return fd;
+}
+
 // The Newton matrix's entries in the take-up's row and column (and the idler's angle's, which
 // now couple to it) against central differences of the residual, at a perturbed iterate with the
 // idler part-way along its slide and moving, rollers in and out of their seats.
@@ -82,37 +114,19 @@ TEST(DynamicsTakeup, JacobianMatchesFiniteDifferences) {
     for (Sprocket& w : l.model.sprockets) w.friction = mu;
     l.state.slide[2] = 2e-5;
     l.state.slide_speed[2] = -0.01;
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> jitter(-2e-5, 2e-5);
     const double h = 1e-4;
     Integrator integ(l.model, {.step = h, .theta = 0.6});
     const std::size_t n = l.model.nodes(), size = integ.unknowns();
     ASSERT_EQ(size, 2 * n + 3);  // two driven angles (driven, idler) and one slide
-    std::vector<double> u(size);
-    for (std::size_t i = 0; i < n; ++i) {
-      u[2 * i] = l.state.x[i] + h * l.state.vx[i] + jitter(rng);
-      u[2 * i + 1] = l.state.y[i] + h * l.state.vy[i] + jitter(rng);
-    }
-    u[2 * n] = l.state.angle[1] + h * l.state.speed[1] + 1e-4;
-    u[2 * n + 1] = l.state.angle[2] + h * l.state.speed[2] - 1e-4;
-    u[2 * n + 2] = l.state.slide[2] + 3e-4;  // pressing the wrapped rollers into their seats
+    // the slide pressing the wrapped rollers into their seats
+    const std::vector<double> u = perturbed_iterate(l, h, 7, 1e-4, -1e-4, 3e-4);
     std::vector<double> r0, jac;
     integ.newton_system(l.model, l.state, u, r0, &jac);
     // the idler is in contact: the slide's row and column are not empty
     double coupling = 0.0;
     for (std::size_t i = 0; i < 2 * n; ++i) coupling += std::abs(jac[i * size + 2 * n + 2]);
     ASSERT_GT(coupling, 0.0);
-    std::vector<double> rp, rm;
-    auto column = [&](std::size_t c, double eps) {
-      std::vector<double> v = u;
-      v[c] += eps;
-      integ.newton_system(l.model, l.state, v, rp, nullptr);
-      v[c] -= 2 * eps;
-      integ.newton_system(l.model, l.state, v, rm, nullptr);
-      std::vector<double> fd(size);
-      for (std::size_t r = 0; r < size; ++r) fd[r] = (rp[r] - rm[r]) / (2 * eps);
-      return fd;
-    };
+    auto column = [&](std::size_t c, double eps) { return fd_column(integ, l, u, c, eps); };
     // the extras' columns: the slide's (new) and the two angles' (which gained the slide's row)
     for (std::size_t c = 2 * n; c < size; ++c) {
       const std::vector<double> fd = column(c, c == 2 * n + 2 ? 1e-9 : 1e-8);
@@ -148,36 +162,19 @@ TEST(DynamicsTakeup, JacobianWithSeatDampingMatchesFiniteDifferences) {
     for (Sprocket& w : l.model.sprockets) w.friction = mu;
     l.state.slide[2] = 2e-5;
     l.state.slide_speed[2] = -0.01;
-    std::mt19937 rng(11);
-    std::uniform_real_distribution<double> jitter(-2e-5, 2e-5);
     const double h = 1e-4;
     Integrator integ(l.model, {.step = h, .theta = 0.6});
     const std::size_t n = l.model.nodes(), size = integ.unknowns();
     ASSERT_EQ(size, 2 * n + 3);
-    std::vector<double> u(size);
-    for (std::size_t i = 0; i < n; ++i) {
-      u[2 * i] = l.state.x[i] + h * l.state.vx[i] + jitter(rng);
-      u[2 * i + 1] = l.state.y[i] + h * l.state.vy[i] + jitter(rng);
-    }
-    u[2 * n] = l.state.angle[1] + h * l.state.speed[1] + 1e-4;
-    u[2 * n + 1] = l.state.angle[2] + h * l.state.speed[2] - 1e-4;
-    u[2 * n + 2] = l.state.slide[2] + 3e-4;
-    std::vector<double> r0, jac, rp, rm;
+    const std::vector<double> u = perturbed_iterate(l, h, 11, 1e-4, -1e-4, 3e-4);
+    std::vector<double> r0, jac;
     integ.newton_system(l.model, l.state, u, r0, &jac);
     double worst = 0.0;
     for (std::size_t c = 0; c < size; ++c) {
       const double eps = c >= 2 * n && c < 2 * n + 2 ? 1e-8 : 1e-9;
-      std::vector<double> v = u;
-      v[c] += eps;
-      integ.newton_system(l.model, l.state, v, rp, nullptr);
-      v[c] -= 2 * eps;
-      integ.newton_system(l.model, l.state, v, rm, nullptr);
+      const std::vector<double> fd = fd_column(integ, l, u, c, eps);
       double scale = 0.0;
-      std::vector<double> fd(size);
-      for (std::size_t r = 0; r < size; ++r) {
-        fd[r] = (rp[r] - rm[r]) / (2 * eps);
-        scale = std::max(scale, std::abs(fd[r]));
-      }
+      for (std::size_t r = 0; r < size; ++r) scale = std::max(scale, std::abs(fd[r]));
       for (std::size_t r = 0; r < size; ++r) {
         worst = std::max(worst, std::abs(jac[r * size + c] - fd[r]) / scale);
         EXPECT_NEAR(jac[r * size + c], fd[r], 1e-5 * scale)
@@ -240,37 +237,20 @@ TEST(DynamicsTakeup, JacobianWithHingeFrictionMatchesFiniteDifferences) {
   Loop l = three_wheels(13.0, 10.0, 600.0, 2e4, 50.0);
   l.model.hinge.arm = 0.003;  // sliding hinges, 12B's pin (μ 0.1 × ~6 mm diameter is ~0.3 mm)
   l.model.hinge.rate_band = 5.0;
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> jitter(-2e-5, 2e-5);
   const double h = 1e-4;
   Integrator integ(l.model, {.step = h, .theta = 0.6});
   const std::size_t n = l.model.nodes(), size = integ.unknowns();
-  std::vector<double> u(size);
-  for (std::size_t i = 0; i < n; ++i) {
-    u[2 * i] = l.state.x[i] + h * l.state.vx[i] + jitter(rng);
-    u[2 * i + 1] = l.state.y[i] + h * l.state.vy[i] + jitter(rng);
-  }
-  u[2 * n] = l.state.angle[1] + h * l.state.speed[1];
-  u[2 * n + 1] = l.state.angle[2] + h * l.state.speed[2];
-  u[2 * n + 2] = l.state.slide[2] + 1e-4;
-  std::vector<double> r0, jac, rp, rm;
+  const std::vector<double> u = perturbed_iterate(l, h, 11, 0.0, 0.0, 1e-4);
+  std::vector<double> r0, jac;
   integ.newton_system(l.model, l.state, u, r0, &jac);
   double far = 0.0;  // the far blocks are there: node 2's rows in node 0's columns
   for (std::size_t a = 0; a < 2; ++a)
     for (std::size_t b = 0; b < 2; ++b) far += std::abs(jac[(4 + a) * size + b]);
   ASSERT_GT(far, 0.0);
   for (std::size_t c = 0; c < 2 * n; ++c) {
-    std::vector<double> v = u;
-    v[c] += 1e-9;
-    integ.newton_system(l.model, l.state, v, rp, nullptr);
-    v[c] -= 2e-9;
-    integ.newton_system(l.model, l.state, v, rm, nullptr);
+    const std::vector<double> fd = fd_column(integ, l, u, c, 1e-9);
     double scale = 0.0;
-    std::vector<double> fd(size);
-    for (std::size_t r = 0; r < size; ++r) {
-      fd[r] = (rp[r] - rm[r]) / 2e-9;
-      scale = std::max(scale, std::abs(fd[r]));
-    }
+    for (std::size_t r = 0; r < size; ++r) scale = std::max(scale, std::abs(fd[r]));
     for (std::size_t r = 0; r < size; ++r)
       EXPECT_NEAR(jac[r * size + c], fd[r], 1e-5 * scale) << "row " << r << " column " << c;
   }
