@@ -580,6 +580,28 @@ TEST(DynamicsChordal, PolygonalActionAtTwelveTeethIsTheSpansTransverseSwing) {
   EXPECT_NEAR(moved[0] / (2 * f1_tight), 1.0, 0.08);
 }
 
+// Validation (1) at 0.1 m/s for every tooth count with the span held in its quasi-static
+// transverse state (the kinematics' own assumption; above): within the validation's 2 % of the
+// binned kinematics at 20, 40, 80 bins. Measured: z = 9 1.001, 1.003, 1.005; z = 10 0.998, 1.003,
+// 1.007; z = 12 0.998, 1.002, 1.007; z = 17 1.001, 1.003, 1.009; z = 25 1.018, 1.017, 1.017 —
+// z = 25 is farther from the kinematics held than free (1.014, 1.005, 0.997): its variation is
+// only 0.0079 of the speed, and the hold itself disturbs the engagement (it switches to the newly
+// seated roller when that comes within 0.3 mm of the pitch circle; at 0.5 m/s the held profile has
+// a one-bin spike of 1.6e-3 of the speed there) — likely the cause, not shown.
+TEST(DynamicsChordal, PolygonalActionWithTheSpanHeldTransversely) {
+  for (int z : {9, 10, 12, 17, 25}) {
+    Chordal d = quasi_static(z);
+    d.hold_transverse = true;
+    const Result r = run(d, 40);
+    ASSERT_TRUE(r.converged) << "z " << z;
+    for (int bins : {20, 40, 80}) {
+      const double ratio = simulated_variation(r, bins) / binned_variation(z, bins);
+      std::printf("z %d held, %d bins: ratio %.4f\n", z, bins, ratio);
+      EXPECT_NEAR(ratio, 1.0, 0.02) << "z " << z << ", " << bins << " bins";
+    }
+  }
+}
+
 // At speed the same swing is the profile's wave (the "wave of two periods per tooth" of
 // PolygonalActionAtSpeedAgainstTheElasticSpan). The profile's largest deviation from the elastic
 // span over the half period before the engagement (phase 0 … ½; the engagement and the ring after
