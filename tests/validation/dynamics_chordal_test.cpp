@@ -613,8 +613,8 @@ TEST(DynamicsChordal, PolygonalActionWithTheSpanHeldTransversely) {
 // the variation before the engagement, free it is not. What is left is at the engagement: held,
 // the variation at 0.5 m/s is 0.94–0.98 of the elastic span's (1.005–1.023 of the kinematics): the
 // simulated engagement rings the span about half as much as the reference's kink, a bin later —
-// the engaging roller takes its load over a fraction of a millisecond, not at once — and the free
-// span's agreement with the elastic span within 3 % (the test above) holds partly because the
+// presumably the engaging roller taking its load gradually, not at once (not measured) — and the
+// free span's agreement with the elastic span within 3 % (the test above) holds partly because the
 // swing's wave makes up the difference. Pinned: held over elastic below 0.97 at 40 bins.
 double deviation_before_engagement(const Result& r, const std::vector<double>& ref, double v,
                                    int bins) {
