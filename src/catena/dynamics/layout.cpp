@@ -52,7 +52,9 @@ double signed_tangent_normal(const Circle& a, const Circle& b) {
   return std::atan2(dy, dx) - std::acos(c);
 }
 
-// Whether the segments p0p1 and q0q1 cross (a proper crossing or a touch).
+// Whether the segments p0p1 and q0q1 cross (a proper crossing or a touch). Two segments on one
+// line (every end within 1e-12 of the longer one's length of the other's line, where the side
+// tests' signs are rounding) cross only if they overlap along it.
 bool segments_cross(double px0, double py0, double px1, double py1, double qx0, double qy0,
                     double qx1, double qy1) {
   auto side = [](double ax, double ay, double bx, double by, double cx, double cy) {
@@ -60,6 +62,16 @@ bool segments_cross(double px0, double py0, double px1, double py1, double qx0, 
   };
   const double d1 = side(qx0, qy0, qx1, qy1, px0, py0), d2 = side(qx0, qy0, qx1, qy1, px1, py1);
   const double d3 = side(px0, py0, px1, py1, qx0, qy0), d4 = side(px0, py0, px1, py1, qx1, qy1);
+  const double lp = std::hypot(px1 - px0, py1 - py0), lq = std::hypot(qx1 - qx0, qy1 - qy0);
+  const double eps = 1e-12 * std::max(lp, lq);
+  // |side| is the distance from the line times the segment's length
+  if (lp > 0.0 && lq > 0.0 && std::abs(d1) <= eps * lq && std::abs(d2) <= eps * lq &&
+      std::abs(d3) <= eps * lp && std::abs(d4) <= eps * lp) {
+    // collinear: project q's ends on p's direction and compare the intervals
+    const double ux = (px1 - px0) / lp, uy = (py1 - py0) / lp;
+    const double a = (qx0 - px0) * ux + (qy0 - py0) * uy, b = (qx1 - px0) * ux + (qy1 - py0) * uy;
+    return std::max(a, b) >= -eps && std::min(a, b) <= lp + eps;
+  }
   return d1 * d2 <= 0.0 && d3 * d4 <= 0.0;
 }
 
