@@ -50,6 +50,13 @@ TEST(DynamicsLayoutCli, ThreeWheelLoopGivesItsClosedForms) {
   EXPECT_FALSE(j.contains("centre_distance"));
   EXPECT_NEAR(j["laid_pitch"].get<double>() / kPitch, 1.0, 2e-4);
   EXPECT_EQ(j["units"]["path_length"], "m");
+  // not given: the count taken and the slack it implies, N p − the path's length (the nearest
+  // fitting count: within half a pitch; here the path is 54.9995 pitches)
+  EXPECT_EQ(j["links_chosen"], 55);
+  const double implied = 55 * kPitch - j["path_length"].get<double>();
+  EXPECT_NEAR(j["links_slack"].get<double>(), implied, 1e-15);
+  EXPECT_LT(std::abs(implied), 0.5 * kPitch);
+  EXPECT_EQ(j["units"]["links_slack"], "m");
   ASSERT_EQ(j["sprocket"].size(), 3u);
   EXPECT_EQ(j["sprocket"][0]["role"], "driver");
   EXPECT_EQ(j["sprocket"][1]["role"], "driven");
@@ -546,7 +553,11 @@ TEST(DynamicsLayoutCli, EveryBadSideNamed) {
 // A start with slack through the command: examples/dynamics_three_wheels.toml (55 links fit its
 // path) given 56 links and gravity starts with the extra 17 mm sagging in the span facing down
 // (idler -> driven), every link one pitch: `laid_pitch` the pitch, `slack` = 56 p − the path's
-// length; it runs (0.05 s). 57 links (3.4 % over) are refused, naming the field and the 3 % limit.
+// length; it runs (0.05 s), and so does 60 (93 mm, 8.9 %: beyond the 3 % the start once took).
+// 65 links (188 mm) are more than the span's half circle (131 mm) and are refused, naming the
+// field and the limit; `links_chosen` is reported only when `links` is omitted. A rail 30 mm
+// outside the span's middle is clear of the taut chain but inside the 60-link sag: refused,
+// naming the guide.
 TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
   std::stringstream example;
   example << std::ifstream(kExample).rdbuf();
@@ -574,12 +585,45 @@ TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
   EXPECT_NE(table.out.find("mm of slack sagging in the span sprocket 2 -> sprocket 1"),
             std::string::npos)
       << table.out;
+  EXPECT_FALSE(j.contains("links_chosen"));
+  EXPECT_FALSE(j.contains("links_slack"));
 
-  const CliRun refused = run("dynamics " + with_links(57));
+  const CliRun longer = run("dynamics " + with_links(60) + " --format json");
+  ASSERT_EQ(longer.status, 0) << longer.err;
+  const auto l = nlohmann::json::parse(longer.out);
+  EXPECT_NEAR(l["slack"].get<double>(), 60 * kPitch - path, 1e-12);
+  EXPECT_GT(l["slack"].get<double>(), 0.08 * path);
+  EXPECT_LT(l["summary"]["max_penetration"].get<double>(), 20e-6);
+
+  const CliRun refused = run("dynamics " + with_links(65));
   EXPECT_EQ(refused.status, 2);
   EXPECT_NE(refused.err.find("dynamics.links (line "), std::string::npos) << refused.err;
-  EXPECT_NE(refused.err.find(") = 57: expected"), std::string::npos) << refused.err;
-  EXPECT_NE(refused.err.find("or a chain longer than the path by at most 3 % of its length"),
+  EXPECT_NE(refused.err.find(") = 65: expected"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("or a chain longer than the path by at most about 131.4"),
             std::string::npos)
       << refused.err;
+  EXPECT_NE(refused.err.find("sprocket[2] -> sprocket[1] can sag by as a circular arc of at most "
+                             "a half circle"),
+            std::string::npos)
+      << refused.err;
+
+  // the rail: 30 mm outside the taut span's middle, 40 mm long along it
+  const std::string rail =
+      "\n[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"273 mm\"\ny0 = \"-155 mm\"\n"
+      "x1 = \"299 mm\"\ny1 = \"-125 mm\"\n";
+  auto with_rail = [&](int links) {
+    std::ifstream in(with_links(links));
+    std::stringstream t;
+    t << in.rdbuf();
+    return write("rail" + std::to_string(links) + ".toml", t.str() + rail);
+  };
+  const CliRun taut = run("dynamics " + with_rail(55) + " --duration 1ms --format json");
+  EXPECT_EQ(taut.status, 0) << taut.err;
+  const CliRun blocked = run("dynamics " + with_rail(60) + " --duration 1ms");
+  EXPECT_EQ(blocked.status, 2);
+  EXPECT_NE(blocked.err.find(") = 60: expected a chain longer than the path by at most about "),
+            std::string::npos)
+      << blocked.err;
+  EXPECT_NE(blocked.err.find("the sagging span would run into guide[0]"), std::string::npos)
+      << blocked.err;
 }

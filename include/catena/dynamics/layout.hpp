@@ -101,6 +101,26 @@ LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circle
 /// path's piece count if it has none.
 std::size_t slack_span(const BeltPath& path);
 
+/// What the sagging piece `piece` of `laid` (a path from `sag_span`) runs into, as a name; empty
+/// when it is clear. Sampled along the arc (at least 512 samples, at most half a roller radius
+/// apart): a wheel other than its two closer than `tip[w]` + `roller`/2 (its teeth), a guide
+/// closer than `roller`/2 (its surface: the rollers would start through the rail), another
+/// straight span closer than `roller` (two rollers side by side), the points within one `pitch`
+/// of the arc's ends left out of the last (they sit on the end wheels by the spans leaving them);
+/// and any of those inside the circular segment the sag sweeps between its chord and its arc (a
+/// wheel's centre, 257 points of a guide, 255 of a span), where the chain would enclose it.
+std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
+                         const std::vector<Circle>& circles, const std::vector<double>& tip,
+                         const std::vector<Guide>& guides, double roller, double pitch);
+
+/// The largest extra length [m] span `piece` of the taut `path` can sag by (`sag_span`) with no
+/// obstacle (`sag_obstacle`): the half circle's (π/2 − 1) c at most (c the span's length), less
+/// where an obstacle is met, found by bisection to 1e-6 of c (taking the clear extras as an
+/// interval from 0). 0 if the span cannot sag at all.
+double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circle>& circles,
+                 const std::vector<double>& tip, const std::vector<Guide>& guides, double roller,
+                 double pitch);
+
 /// The path with span `piece` laid as a circular arc of its chord plus `extra` (> 0), bulging
 /// outward (to the right of the travel), between the same tangent points; the other pieces and the
 /// wheels unchanged. Empty (no pieces) if `piece` is not a span or the arc would exceed a half

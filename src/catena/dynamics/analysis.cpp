@@ -301,6 +301,13 @@ struct Setup {
   double laid_pitch = NAN;      // [m] the links' chord as laid: the pitch on the line
   BeltPath laid;                // a start with slack: the path with its slack span sagging
   double slack = 0.0;           // [m] the chain's length beyond the path's (a start with slack)
+  // `links` omitted: the count taken (the fitting count nearest the path's length in pitches)
+  // and the slack it implies, N p − L [m] (negative: the chain is shorter than the path and laid
+  // at a chord below the pitch)
+  bool links_fitted = false;
+  double fitted_slack = 0.0;
+  std::size_t slack_piece = 0;  // a start with slack: the sagging piece of `laid`
+  std::vector<double> tip;      // a start with slack: each wheel's tip radius d_a,max/2 [m]
   bool layout() const { return !wheels.empty(); }
   std::string hinge = "frictionless";  // frictionless, sliding or rolling
   HingeFriction hinge_law;             // arm 0 when frictionless
@@ -336,7 +343,6 @@ bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
 
 constexpr std::size_t kMaxWheels = 20;  // sprockets of the free layout
 constexpr int kMinWrapTeeth = 3;        // a wheel's wrap, in teeth (docs/models/dynamics.md)
-constexpr double kMaxSlack = 0.03;      // a start with slack: at most 3 % longer than the path
 
 constexpr const char* kTakeupKeys[] = {"takeup_force",     "takeup_direction", "takeup_stiffness",
                                        "takeup_damping",   "takeup_mass",      "takeup_travel_min",
@@ -668,34 +674,22 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
     chosen = static_cast<int>(links);
     if (std::find(fitting.begin(), fitting.end(), chosen) == fitting.end() &&
         !fits(chosen, trial)) {
-      // longer than the path: a start with slack, its slack span sagging (every link one pitch),
-      // up to kMaxSlack of the path's length
+      // longer than the path: a start with slack, its slack span sagging (every link one pitch)
+      // as a circular arc of at most a half circle, clear of every other wheel's teeth and of
+      // the other spans (of the guides: checked once they are read, `check_sag_guides`)
       const double over = chosen * s.pitch - s.path.length;
-      std::string blocked;  // a wheel the sagging span would run into
-      if (over > 0.0 && over <= kMaxSlack * s.path.length) {
+      const std::size_t k = slack_span(s.path);
+      std::string blocked;  // what the sagging span would run into
+      bool seated = false;
+      if (over > 0.0 && k < s.path.pieces.size()) {
         BeltPath laid;
         const LoopPlacement sagging =
             place_slack_loop(s.path, s.circles, teeth, chosen, s.pitch, laid);
-        bool seated = !sagging.s.empty();
+        seated = !sagging.s.empty();
         for (std::size_t w = 0; seated && w < n; ++w)
           seated = sagging.wrapped[w] > 0 && sagging.seat_offset[w] <= clearance[w];
-        // the sagging arc must pass every other wheel's teeth by the roller, as a span must
-        const std::size_t k = slack_span(s.path);
-        if (seated && k < laid.pieces.size()) {
-          const PathPiece& q = laid.pieces[k];
-          constexpr int kSamples = 512;
-          for (std::size_t w = 0; w < n && blocked.empty(); ++w) {
-            if (w == q.wheel || w == q.next) continue;
-            for (int j = 0; j <= kSamples; ++j) {
-              const double a = q.from + (q.to - q.from) * j / kSamples;
-              const double reach = std::hypot(q.cx + q.radius * std::cos(a) - s.circles[w].x,
-                                              q.cy + q.radius * std::sin(a) - s.circles[w].y);
-              if (reach < tip[w] + 0.5 * s.roller) {
-                blocked = "sprocket[" + std::to_string(w) + "]";
-                break;
-              }
-            }
-          }
+        if (seated) {
+          blocked = sag_obstacle(laid, k, s.circles, tip, {}, s.roller, s.pitch);
           seated = blocked.empty();
         }
         if (seated) {
@@ -704,20 +698,31 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
           s.links = chosen;
           s.laid_pitch = sagging.spacing;
           s.slack = over;
+          s.slack_piece = k;
+          s.tip = tip;
           return;
         }
       }
-      if (over > 0.0)
-        why +=
-            "; or a chain longer than the path by at most " + shown(kMaxSlack * 100.0) +
-            " % of its length (" + mm(kMaxSlack * s.path.length) +
-            "), which starts with its slack span sagging (here " + mm(over) + ", " +
-            shown(over / s.path.length * 100.0) + " %" +
-            (slack_span(s.path) >= s.path.pieces.size()
-                 ? "; but no span sags: every span touches a wheel on the back of the chain"
-             : blocked.empty() ? ""
-                               : "; but the sagging span would run into " + blocked + "'s teeth") +
-            ")";
+      if (over > 0.0) {
+        if (k >= s.path.pieces.size()) {
+          why +=
+              "; or a chain longer than the path, which starts with its slack sagging in a span "
+              "(here " +
+              mm(over) +
+              "; but no span sags: every span touches a wheel on the back of the "
+              "chain)";
+        } else {
+          const double most = sag_limit(s.path, k, s.circles, tip, {}, s.roller, s.pitch);
+          why += "; or a chain longer than the path by at most about " + mm(most) + " (" +
+                 shown(most / s.path.length * 100.0) + " % of the path), the most its slack span " +
+                 "sprocket[" + std::to_string(s.path.pieces[k].wheel) + "] -> sprocket[" +
+                 std::to_string(s.path.pieces[k].next) +
+                 "] can sag by as a circular arc of at most a half circle clear of every other "
+                 "wheel's teeth and the other spans (here " +
+                 mm(over) + ", " + shown(over / s.path.length * 100.0) + " %" +
+                 (blocked.empty() ? "" : "; the sagging span would run into " + blocked) + ")";
+        }
+      }
       issues.push_back({links_at, std::to_string(chosen), why});
       return;
     }
@@ -732,6 +737,10 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
   fits(chosen, s.placement);
   s.links = chosen;
   s.laid_pitch = s.placement.spacing;
+  if (!links_given) {
+    s.links_fitted = true;
+    s.fitted_slack = chosen * s.pitch - s.path.length;
+  }
 }
 
 Setup parse(const analysis::Inputs& in) {
@@ -1421,6 +1430,26 @@ Setup parse(const analysis::Inputs& in) {
     }
     if (complete) s.guides.push_back(guide);
   }
+  // a start with slack: the sagging span must clear the guides too (docs/models/dynamics.md,
+  // "A start with slack")
+  if (s.slack > 0.0 && !s.guides.empty()) {
+    const std::string blocked =
+        sag_obstacle(s.laid, s.slack_piece, s.circles, s.tip, s.guides, s.roller, s.pitch);
+    if (!blocked.empty()) {
+      const double most =
+          sag_limit(s.path, s.slack_piece, s.circles, s.tip, s.guides, s.roller, s.pitch);
+      const PathPiece& q = s.path.pieces[s.slack_piece];
+      issues.push_back(
+          {at("links"), std::to_string(s.links),
+           "a chain longer than the path by at most about " + format_g(most * 1e3, 6) +
+               " mm, the most its slack span sprocket[" + std::to_string(q.wheel) +
+               "] -> sprocket[" + std::to_string(q.next) +
+               "] can sag by as a circular arc clear of every other wheel's teeth, the other "
+               "spans and the guides (here " +
+               format_g(s.slack * 1e3, 6) + " mm; the sagging span would run into " + blocked +
+               ")"});
+    }
+  }
 
   // the work cap: steps × links
   if (issues.empty()) {
@@ -2012,6 +2041,11 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["path_length"] = d.path.length;
     j["laid_pitch"] = d.laid_pitch;
     if (d.slack > 0.0) j["slack"] = d.slack;  // a start with slack only
+    if (d.links_fitted) {
+      // `links` omitted: the count the command took and the slack it implies
+      j["links_chosen"] = d.links;
+      j["links_slack"] = d.fitted_slack;
+    }
   } else {
     j["teeth"] = d.teeth;
     j["centre_distance"] =
@@ -2242,6 +2276,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
     for (const char* key : {"path_length", "laid_pitch", "centre_x", "centre_y"})
       j["units"][key] = "m";
   if (d.slack > 0.0) j["units"]["slack"] = "m";
+  if (d.links_fitted) j["units"]["links_slack"] = "m";
   if (d.hertz_stiffness) {
     j["units"]["contact_stiffness"] = "N/m";
     j["units"]["contact_load"] = "N";

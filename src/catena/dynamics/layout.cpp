@@ -460,6 +460,98 @@ BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra) {
   return out;
 }
 
+std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
+                         const std::vector<Circle>& circles, const std::vector<double>& tip,
+                         const std::vector<Guide>& guides, double roller, double pitch) {
+  if (piece >= laid.pieces.size() || !laid.pieces[piece].sag) return "the sagging span";
+  const PathPiece& q = laid.pieces[piece];
+  const auto samples = static_cast<int>(std::max(512.0, std::ceil(q.length / (0.25 * roller))));
+  // the distance from (x, y) to a guide's surface
+  auto to_guide = [](const Guide& g, double x, double y) {
+    if (g.kind == Guide::Kind::kStraight) return segment_distance(x, y, g.x0, g.y0, g.x1, g.y1);
+    const double a = std::atan2(y - g.centre_y, x - g.centre_x) - g.start_angle;
+    const double along = a - kTwoPi * std::floor(a / kTwoPi);
+    if (along <= g.end_angle - g.start_angle)
+      return std::abs(std::hypot(x - g.centre_x, y - g.centre_y) - g.radius);
+    double best = INFINITY;
+    for (const double e : {g.start_angle, g.end_angle})
+      best = std::min(best, std::hypot(x - g.centre_x - g.radius * std::cos(e),
+                                       y - g.centre_y - g.radius * std::sin(e)));
+    return best;
+  };
+  // inside the circular segment the sag sweeps (between the chord and the arc): the segments of
+  // a growing sag are nested, so an obstacle once inside stays inside
+  const double ux = q.x1 - q.x0, uy = q.y1 - q.y0, chord = std::hypot(ux, uy);
+  auto swept = [&](double x, double y) {
+    const double out = ((x - q.x0) * uy - (y - q.y0) * ux) / chord;  // to the right of the travel
+    return out > 0.0 && std::hypot(x - q.cx, y - q.cy) < q.radius;
+  };
+  for (std::size_t w = 0; w < circles.size(); ++w)
+    if (w != q.wheel && w != q.next && swept(circles[w].x, circles[w].y))
+      return wheel_name(w) + "'s teeth";
+  for (std::size_t g = 0; g < guides.size(); ++g) {
+    const Guide& gd = guides[g];
+    for (int j = 0; j <= 256; ++j) {
+      const double f = j / 256.0;
+      const double a = gd.start_angle + f * (gd.end_angle - gd.start_angle);
+      const bool straight = gd.kind == Guide::Kind::kStraight;
+      const double x =
+          straight ? gd.x0 + f * (gd.x1 - gd.x0) : gd.centre_x + gd.radius * std::cos(a);
+      const double y =
+          straight ? gd.y0 + f * (gd.y1 - gd.y0) : gd.centre_y + gd.radius * std::sin(a);
+      if (swept(x, y)) return "guide[" + std::to_string(g) + "]";
+    }
+  }
+  for (std::size_t k = 0; k < laid.pieces.size(); ++k) {
+    const PathPiece& r = laid.pieces[k];
+    if (k == piece || r.arc || r.sag) continue;
+    for (int j = 1; j < 256; ++j)
+      if (swept(r.x0 + (r.x1 - r.x0) * j / 256.0, r.y0 + (r.y1 - r.y0) * j / 256.0))
+        return "the span " + wheel_name(r.wheel) + " -> " + wheel_name(r.next);
+  }
+  for (int j = 0; j <= samples; ++j) {
+    const double a = q.from + (q.to - q.from) * j / samples;
+    const double x = q.cx + q.radius * std::cos(a), y = q.cy + q.radius * std::sin(a);
+    for (std::size_t w = 0; w < circles.size(); ++w) {
+      if (w == q.wheel || w == q.next) continue;
+      if (std::hypot(x - circles[w].x, y - circles[w].y) < tip[w] + 0.5 * roller)
+        return wheel_name(w) + "'s teeth";
+    }
+    for (std::size_t g = 0; g < guides.size(); ++g)
+      if (to_guide(guides[g], x, y) < 0.5 * roller) return "guide[" + std::to_string(g) + "]";
+    const double along = q.length * j / samples;
+    if (along < pitch || along > q.length - pitch) continue;
+    for (std::size_t k = 0; k < laid.pieces.size(); ++k) {
+      const PathPiece& r = laid.pieces[k];
+      if (k == piece || r.arc || r.sag) continue;
+      if (segment_distance(x, y, r.x0, r.y0, r.x1, r.y1) < roller)
+        return "the span " + wheel_name(r.wheel) + " -> " + wheel_name(r.next);
+    }
+  }
+  return {};
+}
+
+double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circle>& circles,
+                 const std::vector<double>& tip, const std::vector<Guide>& guides, double roller,
+                 double pitch) {
+  if (piece >= path.pieces.size() || path.pieces[piece].arc) return 0.0;
+  const double c = path.pieces[piece].length;
+  auto clear = [&](double extra) {
+    const BeltPath laid = sag_span(path, piece, extra);
+    return !laid.pieces.empty() &&
+           sag_obstacle(laid, piece, circles, tip, guides, roller, pitch).empty();
+  };
+  // the half circle's extra, a hair inside (sag_span refuses beyond it)
+  const double most = (0.5 * kPi - 1.0) * c * (1.0 - 1e-9);
+  if (clear(most)) return most;
+  double lo = 0.0, hi = most;
+  while (hi - lo > 1e-6 * c) {
+    const double mid = 0.5 * (lo + hi);
+    (clear(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid) {
