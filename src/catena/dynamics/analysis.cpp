@@ -157,8 +157,9 @@ std::vector<Parameter> sprocket_fields() {
       text("role", "driver, driven or idler (idler: with centres only)"),
       text("side",
            "the side of the chain the wheel runs on: inside (default; the loop wraps it) or "
-           "outside (on the back of the chain, a serpentine path; an idler of the free "
-           "layout only, the rows then listed counter-clockwise round the loop)"),
+           "outside (on the back of the chain, a serpentine path, the wheel turning clockwise; "
+           "any wheel of the free layout, the rows then listed counter-clockwise round the "
+           "loop)"),
       quantity("speed", K::kAngularSpeed, "driver: speed, counter-clockwise, > 0"),
       number("inertia", "driven or idler: moment of inertia J [kg m^2], > 0"),
       number("load_torque", "driven: load torque T_L [N m], >= 0"),
@@ -348,14 +349,14 @@ constexpr const char* kTakeupKeys[] = {"takeup_force",     "takeup_direction", "
                                        "takeup_damping",   "takeup_mass",      "takeup_travel_min",
                                        "takeup_travel_max"};
 
-// `side` on a wheel that cannot be on the back of the chain (without centres, a driver or a driven
-// wheel): "outside" refused; "inside" (the default) is accepted anywhere.
+// `side` on a wheel that cannot be on the back of the chain (without centres: the two-wheel line):
+// "outside" refused; "inside" (the default) is accepted anywhere.
 template <class Field>
 void refuse_back(const SprocketInput& w, const Field& field, std::vector<Issue>& issues) {
   if (w.seen.count("side") && w.side == "outside")
     issues.push_back({field("side"), "'outside'",
-                      "inside: only an idler of the free layout (role = \"idler\", centres on "
-                      "every sprocket) runs on the back of the chain"});
+                      "inside: only a wheel of the free layout (centres on every sprocket) runs "
+                      "on the back of the chain"});
 }
 
 // A take-up's keys on a driver (or without centres): refused, each.
@@ -467,8 +468,8 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
       continue;
     }
     if (w.role == "driver") refuse_takeup(w, field, issues);
-    if (w.role != "idler") refuse_back(w, field, issues);
-    lw.back = w.role == "idler" && w.side == "outside";
+    // any wheel of the free layout may run on the back of the chain (turning clockwise)
+    lw.back = w.side == "outside";
     if (w.role == "driver") {
       ++drivers;
       s.driver = i;
@@ -1595,12 +1596,15 @@ std::vector<Sprocket> layout_sprockets(const Setup& d) {
     Sprocket s = iso606_sprocket(d.pitch, d.roller, d.width, w.teeth, w.x, w.y, d.contact_stiffness,
                                  d.contact_damping);
     s.friction = wheel_mu(d, wheels.size());
+    // a wheel on the back of the chain turns clockwise: the driver's speed and the driven
+    // wheel's load (against its turning) change sign
+    const double sense = w.back ? -1.0 : 1.0;
     if (w.role == "driver") {
       s.driver = true;
-      s.speed = w.speed;
+      s.speed = sense * w.speed;
     } else {
       s.inertia = w.inertia;
-      s.load_torque = w.load;
+      s.load_torque = sense * w.load;
     }
     if (w.takeup) {
       s.takeup = true;
@@ -1624,7 +1628,7 @@ std::vector<Sprocket> layout_sprockets(const Setup& d) {
 State layout_state(const Setup& d) {
   const double v = d.speed * d.circles[d.driver].radius;
   State s = loop_state(d.slack > 0.0 ? d.laid : d.path, d.circles, d.placement, v);
-  s.speed[d.driver] = d.speed;
+  s.speed[d.driver] = d.wheels[d.driver].back ? -d.speed : d.speed;
   return s;
 }
 
