@@ -287,9 +287,10 @@ TEST(DynamicsLayoutCli, EveryBadGeometryNamed) {
   EXPECT_NE(range.err.find("dynamics.links (line 3) = 2.5: expected an integer in [3, 10000]"),
             std::string::npos)
       << range.err;
-  const CliRun off = run("dynamics " + write("off.toml", head("links = 57\n") + three));
+  // (shorter than the path: no slack to sag; a longer chain starts with slack, tested below)
+  const CliRun off = run("dynamics " + write("off.toml", head("links = 50\n") + three));
   EXPECT_EQ(off.status, 2);
-  EXPECT_NE(off.err.find("dynamics.links (line 3) = 57: expected a count the belt path fits"),
+  EXPECT_NE(off.err.find("dynamics.links (line 3) = 50: expected a count the belt path fits"),
             std::string::npos)
       << off.err;
   EXPECT_NE(off.err.find("links that fit"), std::string::npos) << off.err;
@@ -681,10 +682,30 @@ TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
   EXPECT_NE(refused.err.find("or a chain longer than the path by at most about 131.4"),
             std::string::npos)
       << refused.err;
-  EXPECT_NE(refused.err.find("sprocket[2] -> sprocket[1] can sag by as a circular arc of at most "
+  EXPECT_NE(refused.err.find("sprocket[2] -> sprocket[1] can sag by as circular arcs of at most "
                              "a half circle"),
             std::string::npos)
       << refused.err;
+
+  // slack_spans = "all": the 93 mm shared by the three spans (each between two wheels inside)
+  auto with_key = [&](int links, const std::string& value) {
+    std::ifstream in(with_links(links));
+    std::stringstream t;
+    t << in.rdbuf();
+    std::string body = t.str();
+    body.insert(body.find("gravity = true"), "slack_spans = \"" + value + "\"\n");
+    return write("spans" + value + ".toml", body);
+  };
+  const CliRun all = run("dynamics " + with_key(60, "all") + " --duration 1ms");
+  ASSERT_EQ(all.status, 0) << all.err;
+  EXPECT_NE(all.out.find("mm of slack sagging in the spans sprocket 0 -> sprocket 2, sprocket 2 -> "
+                         "sprocket 1, sprocket 1 -> sprocket 0"),
+            std::string::npos)
+      << all.out;
+  const CliRun some = run("dynamics " + with_key(60, "some"));
+  EXPECT_EQ(some.status, 2);
+  EXPECT_NE(some.err.find("dynamics.slack_spans (line "), std::string::npos) << some.err;
+  EXPECT_NE(some.err.find(") = 'some': expected lowest or all"), std::string::npos) << some.err;
 
   // the rail: 30 mm outside the taut span's middle, 40 mm long along it
   const std::string rail =

@@ -127,6 +127,37 @@ TEST(DynamicsSlackStart, LargeSlackSagsUpToAHalfCircleWithEveryLinkOnePitch) {
               (kPi / 2 - 1) * 0.6, 1e-6);
 }
 
+// The slack shared by every span that can sag (`sagging_spans`, `sag_spans`): on the two wheels
+// both spans, of equal length, sag by equal extras (1e-12), each a circular arc of its chord;
+// every link one pitch (1e-11) and the chain N p long (1e-9 relative), 2 and 20 % of the path.
+TEST(DynamicsSlackStart, SlackSharedByEverySpanInProportionToItsLength) {
+  for (const double fraction : {0.02, 0.2}) {
+    Slack s;
+    s.path = belt_path(s.circles, 0);
+    s.links = static_cast<int>(std::ceil(s.path.length * (1 + fraction) / kPitch));
+    const std::vector<std::size_t> spans = sagging_spans(s.path);
+    ASSERT_EQ(spans.size(), 2u);
+    s.place = place_slack_loop(s.path, s.circles, s.teeth, s.links, kPitch, s.laid, spans);
+    ASSERT_EQ(s.place.s.size(), static_cast<std::size_t>(s.links)) << fraction;
+    const PathPiece &a = s.laid.pieces[spans[0]], &b = s.laid.pieces[spans[1]];
+    EXPECT_TRUE(a.sag && b.sag);
+    const double ea = a.length - s.path.pieces[spans[0]].length;
+    const double eb = b.length - s.path.pieces[spans[1]].length;
+    EXPECT_GT(ea, 0.0);
+    EXPECT_NEAR(ea, eb, 1e-12) << fraction;
+    EXPECT_NEAR(s.laid.length - s.path.length, ea + eb, 1e-12);
+    const State st = loop_state(s.laid, s.circles, s.place, 0.0);
+    double length = 0.0;
+    for (std::size_t i = 0; i < st.nodes(); ++i) {
+      const std::size_t j = (i + 1) % st.nodes();
+      const double l = std::hypot(st.x[j] - st.x[i], st.y[j] - st.y[i]);
+      EXPECT_NEAR(l, kPitch, 1e-11 * kPitch) << fraction << " link " << i;
+      length += l;
+    }
+    EXPECT_NEAR(length, s.links * kPitch, 1e-9 * s.links * kPitch);
+  }
+}
+
 // A guide under the lower span: a rail 100 mm below it from x = 0.1 to 0.5 m (the rollers on
 // top). A chain one link longer than the taut path sags less than that and passes it, every node
 // more than a roller radius from the rail; the half circle would pass below the whole rail,

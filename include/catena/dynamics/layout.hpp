@@ -135,6 +135,20 @@ LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& 
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid);
 
+/// Every span a slack chain may sag in (between two wheels wrapped on their outside), in the
+/// path's order.
+std::vector<std::size_t> sagging_spans(const BeltPath& path);
+
+/// The path with each span of `pieces` sagging (`sag_span`) by its share of `extra`, in
+/// proportion to its length. Empty if any cannot (not a span, beyond a half circle).
+BeltPath sag_spans(const BeltPath& path, const std::vector<std::size_t>& pieces, double extra);
+
+/// A start with slack shared by the spans `pieces` in proportion to their lengths
+/// (`sag_spans`), solved as `place_slack_loop` solves one span's.
+LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
+                               const std::vector<int>& teeth, int nodes, double pitch,
+                               BeltPath& laid, const std::vector<std::size_t>& pieces);
+
 /// The loop's start state from a placement: nodes at the placement, moving along the path at
 /// `chain_speed`; every wheel at its placement angle, turning at chain_speed / its radius.
 State loop_state(const BeltPath& path, const std::vector<Circle>& circles,

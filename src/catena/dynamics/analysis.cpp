@@ -96,6 +96,10 @@ std::vector<Parameter> table_fields() {
            "contact dampers, numerical (default false)"),
       // hinge friction (docs/models/dynamics.md, "Hinges")
       text("hinge", "frictionless, sliding or rolling (default frictionless)"),
+      text("slack_spans",
+           "with centres, a chain longer than the belt path: lowest (default; the slack sags in "
+           "the span facing down) or all (shared by every span between two wheels inside the "
+           "loop, in proportion to their lengths)"),
       number("hinge_friction", "sliding: pin friction coefficient mu in [0, 1]"),
       quantity("pin_diameter", K::kLength,
                "sliding: pin diameter d2, > 0 and < p/2 (default: the ISO 606 catalogue's)"),
@@ -307,8 +311,9 @@ struct Setup {
   // at a chord below the pitch)
   bool links_fitted = false;
   double fitted_slack = 0.0;
-  std::size_t slack_piece = 0;  // a start with slack: the sagging piece of `laid`
-  std::vector<double> tip;      // a start with slack: each wheel's tip radius d_a,max/2 [m]
+  bool slack_all = false;  // slack_spans = "all": the slack shared by every span that sags
+  std::vector<std::size_t> slack_pieces;  // a start with slack: the sagging pieces of `laid`
+  std::vector<double> tip;  // a start with slack: each wheel's tip radius d_a,max/2 [m]
   bool layout() const { return !wheels.empty(); }
   std::string hinge = "frictionless";  // frictionless, sliding or rolling
   HingeFriction hinge_law;             // arm 0 when frictionless
@@ -410,6 +415,28 @@ void parse_takeup(const SprocketInput& w, const Field& field, LayoutWheel& lw,
   ranged("takeup_travel_max", w.takeup_travel_max, 0.0, 10.0, false,
          "the end stop ahead of the start, in [0, 10] m", false, lw.takeup_travel_max);
   lw.takeup = ok;
+}
+
+// "slack span sprocket[a] -> sprocket[b]" or "slack spans ..., ..." for the sagging pieces.
+std::string span_names(const BeltPath& path, const std::vector<std::size_t>& pieces) {
+  std::string out = pieces.size() == 1 ? "slack span " : "slack spans ";
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    out += (i ? ", sprocket[" : "sprocket[") + std::to_string(path.pieces[pieces[i]].wheel) +
+           "] -> sprocket[" + std::to_string(path.pieces[pieces[i]].next) + "]";
+  return out;
+}
+
+// The most slack the spans `pieces` can share (in proportion to their lengths) before the first
+// meets its own limit (`sag_limit`).
+double slack_limit(const Setup& s, const std::vector<std::size_t>& pieces,
+                   const std::vector<double>& tip, const std::vector<Guide>& guides) {
+  double total = 0.0, most = INFINITY;
+  for (const std::size_t k : pieces) total += s.path.pieces[k].length;
+  for (const std::size_t k : pieces) {
+    const double own = sag_limit(s.path, k, s.circles, tip, guides, s.roller, s.pitch);
+    most = std::min(most, pieces.size() == 1 ? own : own * total / s.path.pieces[k].length);
+  }
+  return pieces.empty() ? 0.0 : most;
 }
 
 // The free layout: every [[dynamics.sprocket]] with its centre (docs/models/dynamics.md,
@@ -680,17 +707,20 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
       // the other spans (of the guides: checked once they are read, `check_sag_guides`)
       const double over = chosen * s.pitch - s.path.length;
       const std::size_t k = slack_span(s.path);
+      const std::vector<std::size_t> pieces = k >= s.path.pieces.size() ? std::vector<std::size_t>{}
+                                              : s.slack_all             ? sagging_spans(s.path)
+                                                            : std::vector<std::size_t>{k};
       std::string blocked;  // what the sagging span would run into
       bool seated = false;
-      if (over > 0.0 && k < s.path.pieces.size()) {
+      if (over > 0.0 && !pieces.empty()) {
         BeltPath laid;
         const LoopPlacement sagging =
-            place_slack_loop(s.path, s.circles, teeth, chosen, s.pitch, laid);
+            place_slack_loop(s.path, s.circles, teeth, chosen, s.pitch, laid, pieces);
         seated = !sagging.s.empty();
         for (std::size_t w = 0; seated && w < n; ++w)
           seated = sagging.wrapped[w] > 0 && sagging.seat_offset[w] <= clearance[w];
-        if (seated) {
-          blocked = sag_obstacle(laid, k, s.circles, tip, {}, s.roller, s.pitch);
+        for (std::size_t i = 0; seated && i < pieces.size(); ++i) {
+          blocked = sag_obstacle(laid, pieces[i], s.circles, tip, {}, s.roller, s.pitch);
           seated = blocked.empty();
         }
         if (seated) {
@@ -699,7 +729,7 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
           s.links = chosen;
           s.laid_pitch = sagging.spacing;
           s.slack = over;
-          s.slack_piece = k;
+          s.slack_pieces = pieces;
           s.tip = tip;
           return;
         }
@@ -713,12 +743,11 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
               "; but no span sags: every span touches a wheel on the back of the "
               "chain)";
         } else {
-          const double most = sag_limit(s.path, k, s.circles, tip, {}, s.roller, s.pitch);
+          const double most = slack_limit(s, pieces, tip, {});
           why += "; or a chain longer than the path by at most about " + mm(most) + " (" +
-                 shown(most / s.path.length * 100.0) + " % of the path), the most its slack span " +
-                 "sprocket[" + std::to_string(s.path.pieces[k].wheel) + "] -> sprocket[" +
-                 std::to_string(s.path.pieces[k].next) +
-                 "] can sag by as a circular arc of at most a half circle clear of every other "
+                 shown(most / s.path.length * 100.0) + " % of the path), the most its " +
+                 span_names(s.path, pieces) +
+                 " can sag by as circular arcs of at most a half circle clear of every other "
                  "wheel's teeth and the other spans (here " +
                  mm(over) + ", " + shown(over / s.path.length * 100.0) + " %" +
                  (blocked.empty() ? "" : "; the sagging span would run into " + blocked) + ")";
@@ -766,6 +795,7 @@ Setup parse(const analysis::Inputs& in) {
   bool work_balance = false;
   std::string hinge = "frictionless";
   bool hinge_known = true;
+  bool slack_all = false;  // slack_spans = "all"
   bool positions = false;
   std::string wheel = "iso606";
   for (const Entry& v : file.table) {
@@ -879,6 +909,14 @@ Setup parse(const analysis::Inputs& in) {
         work_balance = v.text == "true";
       else
         issues.push_back({where(v), "'" + v.text + "'", "true or false"});
+      continue;
+    }
+    if (key == "slack_spans") {
+      line[key] = v.line;
+      if (v.is_string && (v.text == "lowest" || v.text == "all"))
+        slack_all = v.text == "all";
+      else
+        issues.push_back({where(v), "'" + v.text + "'", "lowest or all"});
       continue;
     }
     if (key == "hinge") {
@@ -1203,6 +1241,10 @@ Setup parse(const analysis::Inputs& in) {
                         "sprocket)"});
     }
   }
+  s.slack_all = slack_all;
+  if (!layout && line.count("slack_spans"))
+    issues.push_back({at("slack_spans"), slack_all ? "'all'" : "'lowest'",
+                      "no slack_spans without centres (the two-wheel line starts taut)"});
   if (layout) parse_layout(wheels, links, at("links"), line.count("links") > 0, s, issues);
   if (!layout && wheels.size() == 2) {
     if (drivers != 1 || driven != 1)
@@ -1434,18 +1476,17 @@ Setup parse(const analysis::Inputs& in) {
   // a start with slack: the sagging span must clear the guides too (docs/models/dynamics.md,
   // "A start with slack")
   if (s.slack > 0.0 && !s.guides.empty()) {
-    const std::string blocked =
-        sag_obstacle(s.laid, s.slack_piece, s.circles, s.tip, s.guides, s.roller, s.pitch);
+    std::string blocked;
+    for (std::size_t i = 0; blocked.empty() && i < s.slack_pieces.size(); ++i)
+      blocked =
+          sag_obstacle(s.laid, s.slack_pieces[i], s.circles, s.tip, s.guides, s.roller, s.pitch);
     if (!blocked.empty()) {
-      const double most =
-          sag_limit(s.path, s.slack_piece, s.circles, s.tip, s.guides, s.roller, s.pitch);
-      const PathPiece& q = s.path.pieces[s.slack_piece];
+      const double most = slack_limit(s, s.slack_pieces, s.tip, s.guides);
       issues.push_back(
           {at("links"), std::to_string(s.links),
            "a chain longer than the path by at most about " + format_g(most * 1e3, 6) +
-               " mm, the most its slack span sprocket[" + std::to_string(q.wheel) +
-               "] -> sprocket[" + std::to_string(q.next) +
-               "] can sag by as a circular arc clear of every other wheel's teeth, the other "
+               " mm, the most its " + span_names(s.path, s.slack_pieces) +
+               " can sag by as circular arcs clear of every other wheel's teeth, the other "
                "spans and the guides (here " +
                format_g(s.slack * 1e3, 6) + " mm; the sagging span would run into " + blocked +
                ")"});
@@ -2371,10 +2412,13 @@ Record describe(const Result& r, const analysis::Inputs&) {
       << "  " << (d.chain.empty() ? "chain" : d.chain) << ", " << d.links << " links, belt path "
       << format_g(d.path.length * 1e3, 6) << " mm (links laid at "
       << format_g(d.laid_pitch * 1e3, 7) << " mm";
-    if (d.slack > 0.0)
-      t << ", " << format_g(d.slack * 1e3, 6) << " mm of slack sagging in the span sprocket "
-        << d.path.pieces[slack_span(d.path)].wheel << " -> sprocket "
-        << d.path.pieces[slack_span(d.path)].next;
+    if (d.slack > 0.0) {
+      t << ", " << format_g(d.slack * 1e3, 6) << " mm of slack sagging in the span"
+        << (d.slack_pieces.size() > 1 ? "s" : "");
+      for (std::size_t i = 0; i < d.slack_pieces.size(); ++i)
+        t << (i ? ", sprocket " : " sprocket ") << d.path.pieces[d.slack_pieces[i]].wheel
+          << " -> sprocket " << d.path.pieces[d.slack_pieces[i]].next;
+    }
     t << "), theta " << format_g(d.theta, 3);
   } else {
     t << "Catena dynamics: chain loop over two sprockets in time (issue 21)\n\n"

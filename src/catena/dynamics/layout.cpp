@@ -552,20 +552,63 @@ double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circ
   return lo;
 }
 
+std::vector<std::size_t> sagging_spans(const BeltPath& path) {
+  std::vector<std::size_t> back, out;
+  for (const PathPiece& q : path.pieces)
+    if (q.arc && q.sense < 0.0) back.push_back(q.wheel);
+  auto on_back = [&back](std::size_t w) {
+    return std::find(back.begin(), back.end(), w) != back.end();
+  };
+  for (std::size_t k = 0; k < path.pieces.size(); ++k) {
+    const PathPiece& q = path.pieces[k];
+    if (!q.arc && q.length > 0.0 && !on_back(q.wheel) && !on_back(q.next)) out.push_back(k);
+  }
+  return out;
+}
+
+BeltPath sag_spans(const BeltPath& path, const std::vector<std::size_t>& pieces, double extra) {
+  double total = 0.0;
+  for (const std::size_t k : pieces) {
+    if (k >= path.pieces.size() || path.pieces[k].arc) return BeltPath{};
+    total += path.pieces[k].length;
+  }
+  BeltPath out = path;
+  if (pieces.empty() || !(total > 0.0)) {
+    out.pieces.clear();
+    return out;
+  }
+  for (const std::size_t k : pieces) {
+    // one span: the whole extra, exactly
+    out = sag_span(out, k, pieces.size() == 1 ? extra : extra * path.pieces[k].length / total);
+    if (out.pieces.empty()) return out;
+  }
+  return out;
+}
+
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid) {
+  const std::size_t span = slack_span(path);
+  if (span >= path.pieces.size()) {
+    laid = BeltPath{};
+    return {};
+  }
+  return place_slack_loop(path, circles, teeth, nodes, pitch, laid, {span});
+}
+
+LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
+                               const std::vector<int>& teeth, int nodes, double pitch,
+                               BeltPath& laid, const std::vector<std::size_t>& pieces) {
   LoopPlacement out;
   laid = BeltPath{};
-  const std::size_t span = slack_span(path);
   const double chain = nodes * pitch;
-  if (path.pieces.empty() || nodes < 3 || !(pitch > 0.0) || span >= path.pieces.size() ||
+  if (path.pieces.empty() || nodes < 3 || !(pitch > 0.0) || pieces.empty() ||
       !(chain > path.length))
     return out;
-  // the walk's miss at chord `pitch` with the span sagging by `extra`: the end of node N's walk
+  // the walk's miss at chord `pitch` with the spans sagging by `extra`: the end of node N's walk
   // against the laid path's length
   auto miss = [&](double extra, BeltPath& p) -> double {
-    p = sag_span(path, span, extra);
+    p = sag_spans(path, pieces, extra);
     if (p.pieces.empty()) return NAN;
     return walk(p, pitch, nodes).back() - p.length;
   };
