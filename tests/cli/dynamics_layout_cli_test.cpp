@@ -50,12 +50,14 @@ TEST(DynamicsLayoutCli, ThreeWheelLoopGivesItsClosedForms) {
   EXPECT_FALSE(j.contains("centre_distance"));
   EXPECT_NEAR(j["laid_pitch"].get<double>() / kPitch, 1.0, 2e-4);
   EXPECT_EQ(j["units"]["path_length"], "m");
-  // not given: the count taken and the slack it implies, N p − the path's length (the nearest
-  // fitting count: within half a pitch; here the path is 54.9995 pitches)
+  // not given: the count taken and the slack it implies, N (p − h) with h the chord the taut
+  // loop is laid at (the nearest fitting count: within half a pitch; here 55 links laid at
+  // 19.0498 mm, 11 µm)
   EXPECT_EQ(j["links_chosen"], 55);
-  const double implied = 55 * kPitch - j["path_length"].get<double>();
+  const double implied = 55 * (kPitch - j["laid_pitch"].get<double>());
   EXPECT_NEAR(j["links_slack"].get<double>(), implied, 1e-15);
-  EXPECT_LT(std::abs(implied), 0.5 * kPitch);
+  EXPECT_GT(implied, 0.0);
+  EXPECT_LT(implied, 0.5 * kPitch);
   EXPECT_EQ(j["units"]["links_slack"], "m");
   ASSERT_EQ(j["sprocket"].size(), 3u);
   EXPECT_EQ(j["sprocket"][0]["role"], "driver");

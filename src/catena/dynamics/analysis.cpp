@@ -307,8 +307,8 @@ struct Setup {
   BeltPath laid;                // a start with slack: the path with its slack span sagging
   double slack = 0.0;           // [m] the chain's length beyond the path's (a start with slack)
   // `links` omitted: the count taken (the fitting count nearest the path's length in pitches)
-  // and the slack it implies, N p − L [m] (negative: the chain is shorter than the path and laid
-  // at a chord below the pitch)
+  // and the slack it implies, N (p − h) [m] with h the chord the taut loop is laid at (negative:
+  // the chain is shorter than the loop and laid stretched, h > p)
   bool links_fitted = false;
   double fitted_slack = 0.0;
   bool slack_all = false;  // slack_spans = "all": the slack shared by every span that sags
@@ -769,7 +769,8 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
   s.laid_pitch = s.placement.spacing;
   if (!links_given) {
     s.links_fitted = true;
-    s.fitted_slack = chosen * s.pitch - s.path.length;
+    // the chain's length beyond the taut loop's: N links of the pitch against N chords h
+    s.fitted_slack = chosen * (s.pitch - s.placement.spacing);
   }
 }
 
