@@ -51,8 +51,7 @@ TEST(DynamicsLayoutCli, ThreeWheelLoopGivesItsClosedForms) {
   EXPECT_NEAR(j["laid_pitch"].get<double>() / kPitch, 1.0, 2e-4);
   EXPECT_EQ(j["units"]["path_length"], "m");
   // not given: the count taken and the slack it implies, N (p − h) with h the chord the taut
-  // loop is laid at (the nearest fitting count: within half a pitch; here 55 links laid at
-  // 19.0498 mm, 11 µm)
+  // loop is laid at (the nearest fitting count: within half a pitch; here 55 links, 9.1 µm)
   EXPECT_EQ(j["links_chosen"], 55);
   const double implied = 55 * (kPitch - j["laid_pitch"].get<double>());
   EXPECT_NEAR(j["links_slack"].get<double>(), implied, 1e-15);
