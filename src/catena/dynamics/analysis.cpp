@@ -704,7 +704,7 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
         !fits(chosen, trial)) {
       // longer than the path: a start with slack, its slack span sagging (every link one pitch)
       // as a circular arc of at most a half circle, clear of every other wheel's teeth and of
-      // the other spans (of the guides: checked once they are read, `check_sag_guides`)
+      // the other spans (of the guides: checked in parse() once they are read)
       const double over = chosen * s.pitch - s.path.length;
       const std::size_t k = slack_span(s.path);
       const std::vector<std::size_t> pieces = k >= s.path.pieces.size() ? std::vector<std::size_t>{}
