@@ -242,6 +242,38 @@ TEST(DynamicsSerpentine, FaultsNameTheWheelAndSayWhy) {
   }
 }
 
+// Two spans on one line that do not overlap do not cross (on a common line the side tests are all
+// zero, which the crossing test took for a touch): a loop whose lower run is broken by a notch up
+// over a back-side wheel, the runs either side of the notch both exactly on y = −R. The path is
+// accepted (it was refused as crossing itself), its two collinear spans apart along the line.
+TEST(DynamicsSerpentine, CollinearSpansThatDoNotOverlapDoNotCross) {
+  const double r = pitch_radius(18);
+  // counter-clockwise: A, B (the notch's left), E (on the back, the notch's top), C (its right),
+  // D, F, G
+  const std::vector<Circle> circles = {{0.0, 0.0, r},  {0.15, 0.0, r}, {0.3, 0.3, r, true},
+                                       {0.45, 0.0, r}, {0.8, 0.0, r},  {0.8, 0.6, r},
+                                       {0.0, 0.6, r}};
+  const BeltPath p = belt_path(circles, 0);
+  for (const BeltPath::Fault& f : p.faults) ADD_FAILURE() << f.wheel << ": " << f.why;
+  ASSERT_FALSE(p.pieces.empty());
+  std::vector<const PathPiece*> low;  // the spans on y = −R
+  for (const PathPiece& q : p.pieces)
+    if (!q.arc && q.y0 == -r && q.y1 == -r) low.push_back(&q);
+  ASSERT_EQ(low.size(), 2u);  // A -> B and C -> D, exactly on one line
+  EXPECT_EQ(low[0]->wheel, 0u);
+  EXPECT_EQ(low[1]->wheel, 3u);
+  EXPECT_LT(std::max(low[0]->x0, low[0]->x1), std::min(low[1]->x0, low[1]->x1));
+  // the path turns once round and has the notch: its polygon winds 1 round every inside wheel
+  std::vector<double> px, py;
+  for (int k = 0; k < 20000; ++k) {
+    const PathPoint q = path_point(p, p.length * k / 20000.0);
+    px.push_back(q.x);
+    py.push_back(q.y);
+  }
+  for (std::size_t w = 0; w < circles.size(); ++w)
+    EXPECT_EQ(winding(px, py, circles[w].x, circles[w].y), circles[w].back ? 0 : 1) << w;
+}
+
 // The start on the example's serpentine loop presses no roller into a tooth: every roller within
 // reach of a wheel is clear of its tooth surfaces (the seats straddle the wrapped rollers) — the
 // contact is the same on a back-side wheel (the roller pressed towards its centre by the chain).

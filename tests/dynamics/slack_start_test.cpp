@@ -81,6 +81,122 @@ TEST(DynamicsSlackStart, EveryLinkIsOnePitchAndTheLowerSpanSags) {
   EXPECT_TRUE(place_slack_loop(s.path, s.circles, s.teeth, taut, kPitch, s.laid).s.empty());
 }
 
+// Slack beyond the 3 % the start once took, up to the half circle the sagging arc can make:
+// 5, 10 and 20 % of the path on the two wheels (the lower span's chord c = 0.6 m takes at most
+// (π/2 − 1) c = 342 mm, 22 % of the 1.53 m path). Every link one pitch (1e-11), the chain's length
+// N p (1e-9 relative), no link inside a wheel's pitch circle but the chords of its own wrap, the
+// sagging arc clear (`sag_obstacle`); 25 % is more than a half circle: no placement, and
+// `sag_limit` is the half circle's extra.
+TEST(DynamicsSlackStart, LargeSlackSagsUpToAHalfCircleWithEveryLinkOnePitch) {
+  const double r1 = pitch_radius(17);
+  for (const double fraction : {0.05, 0.1, 0.2}) {
+    const Slack s = slack_loop(fraction);
+    ASSERT_EQ(s.place.s.size(), static_cast<std::size_t>(s.links)) << fraction;
+    const State st = loop_state(s.laid, s.circles, s.place, 0.0);
+    const std::size_t n = st.nodes();
+    double length = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t j = (i + 1) % n;
+      const double l = std::hypot(st.x[j] - st.x[i], st.y[j] - st.y[i]);
+      EXPECT_NEAR(l, kPitch, 1e-11 * kPitch) << fraction << " link " << i;
+      length += l;
+      for (const Circle& c : s.circles) {
+        const double di = std::hypot(st.x[i] - c.x, st.y[i] - c.y);
+        const double dj = std::hypot(st.x[j] - c.x, st.y[j] - c.y);
+        EXPECT_GT(di, c.radius - 1e-12) << fraction << " node " << i;
+        // a link with a node on the circle: wrapped, or articulating off the wheel (its chord
+        // cuts the circle as a wrapped one does)
+        if (std::abs(di - c.radius) < 1e-9 || std::abs(dj - c.radius) < 1e-9) continue;
+        // the link's nearest point to the centre
+        const double ux = st.x[j] - st.x[i], uy = st.y[j] - st.y[i];
+        const double t =
+            std::clamp(((c.x - st.x[i]) * ux + (c.y - st.y[i]) * uy) / (l * l), 0.0, 1.0);
+        EXPECT_GT(std::hypot(st.x[i] + t * ux - c.x, st.y[i] + t * uy - c.y), c.radius - 1e-9)
+            << fraction << " link " << i;
+      }
+    }
+    EXPECT_NEAR(length, s.links * kPitch, 1e-9 * s.links * kPitch) << fraction;
+    EXPECT_EQ(sag_obstacle(s.laid, slack_span(s.path), s.circles, {r1 + 0.01, r1 + 0.01}, {},
+                           kRoller, kPitch),
+              "");
+  }
+  const Slack over = slack_loop(0.25);
+  EXPECT_TRUE(over.place.s.empty());
+  const std::size_t k = slack_span(over.path);
+  EXPECT_NEAR(sag_limit(over.path, k, over.circles, {r1 + 0.01, r1 + 0.01}, {}, kRoller, kPitch),
+              (kPi / 2 - 1) * 0.6, 1e-6);
+}
+
+// The slack shared by every span that can sag (`sagging_spans`, `sag_spans`): on the two wheels
+// both spans, of equal length, sag by equal extras (1e-12), each a circular arc of its chord;
+// every link one pitch (1e-11) and the chain N p long (1e-9 relative), 2 and 20 % of the path.
+TEST(DynamicsSlackStart, SlackSharedByEverySpanInProportionToItsLength) {
+  for (const double fraction : {0.02, 0.2}) {
+    Slack s;
+    s.path = belt_path(s.circles, 0);
+    s.links = static_cast<int>(std::ceil(s.path.length * (1 + fraction) / kPitch));
+    const std::vector<std::size_t> spans = sagging_spans(s.path);
+    ASSERT_EQ(spans.size(), 2u);
+    s.place = place_slack_loop(s.path, s.circles, s.teeth, s.links, kPitch, s.laid, spans);
+    ASSERT_EQ(s.place.s.size(), static_cast<std::size_t>(s.links)) << fraction;
+    const PathPiece &a = s.laid.pieces[spans[0]], &b = s.laid.pieces[spans[1]];
+    EXPECT_TRUE(a.sag && b.sag);
+    const double ea = a.length - s.path.pieces[spans[0]].length;
+    const double eb = b.length - s.path.pieces[spans[1]].length;
+    EXPECT_GT(ea, 0.0);
+    EXPECT_NEAR(ea, eb, 1e-12) << fraction;
+    EXPECT_NEAR(s.laid.length - s.path.length, ea + eb, 1e-12);
+    const State st = loop_state(s.laid, s.circles, s.place, 0.0);
+    double length = 0.0;
+    for (std::size_t i = 0; i < st.nodes(); ++i) {
+      const std::size_t j = (i + 1) % st.nodes();
+      const double l = std::hypot(st.x[j] - st.x[i], st.y[j] - st.y[i]);
+      EXPECT_NEAR(l, kPitch, 1e-11 * kPitch) << fraction << " link " << i;
+      length += l;
+    }
+    EXPECT_NEAR(length, s.links * kPitch, 1e-9 * s.links * kPitch);
+  }
+}
+
+// A guide under the lower span: a rail 100 mm below it from x = 0.1 to 0.5 m (the rollers on
+// top). A chain one link longer than the taut path sags less than that and passes it, every node
+// more than a roller radius from the rail; the half circle would pass below the whole rail,
+// enclosing it between the chain's runs, and is named; the limit `sag_limit` is the sag whose
+// lowest point (at x = 0.3 m, over the rail) is a roller radius above the rail: ρ (1 − cos φ) =
+// 100 mm − d1/2, within 1e-5 m.
+TEST(DynamicsSlackStart, SagIsCheckedAgainstTheGuides) {
+  const double r1 = pitch_radius(17), depth = 0.1;
+  Guide rail;
+  rail.x0 = 0.1;
+  rail.x1 = 0.5;
+  rail.y0 = rail.y1 = -r1 - depth;
+  rail.roller_radius = 0.5 * kRoller;
+  const std::vector<double> tip{r1 + 0.01, r1 + 0.01};
+  auto sagitta = [](const PathPiece& q) {
+    return q.radius * (1 - std::cos(0.5 * std::abs(q.to - q.from)));
+  };
+  const Slack small = slack_loop(0.0);
+  ASSERT_FALSE(small.place.s.empty());
+  const std::size_t k = slack_span(small.path);
+  ASSERT_LT(sagitta(small.laid.pieces[k]), depth - 0.5 * kRoller);
+  EXPECT_EQ(sag_obstacle(small.laid, k, small.circles, tip, {rail}, kRoller, kPitch), "");
+  const State st = loop_state(small.laid, small.circles, small.place, 0.0);
+  for (std::size_t i = 0; i < st.nodes(); ++i) {
+    const double gap = st.x[i] < rail.x0   ? std::hypot(st.x[i] - rail.x0, st.y[i] - rail.y0)
+                       : st.x[i] > rail.x1 ? std::hypot(st.x[i] - rail.x1, st.y[i] - rail.y0)
+                                           : std::abs(st.y[i] - rail.y0);
+    EXPECT_GT(gap, 0.5 * kRoller) << i;
+  }
+  const BeltPath half = sag_span(small.path, k, (kPi / 2 - 1) * 0.6 * (1 - 1e-6));
+  ASSERT_FALSE(half.pieces.empty());
+  EXPECT_EQ(sag_obstacle(half, k, small.circles, tip, {rail}, kRoller, kPitch), "guide[0]");
+  EXPECT_EQ(sag_obstacle(half, k, small.circles, tip, {}, kRoller, kPitch), "");
+  const double most = sag_limit(small.path, k, small.circles, tip, {rail}, kRoller, kPitch);
+  const BeltPath limit = sag_span(small.path, k, most);
+  ASSERT_FALSE(limit.pieces.empty());
+  EXPECT_NEAR(sagitta(limit.pieces[k]), depth - 0.5 * kRoller, 1e-5);
+}
+
 // The slack loop at rest under gravity: the driver held, the driven wheel free, drag settling the
 // chain. The lower span between the last roller seated on each wheel hangs as the catenary of its
 // links' length through those two points: y = a cosh((x − x0)/a) + c with √(s² − h²) =

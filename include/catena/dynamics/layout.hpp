@@ -101,6 +101,26 @@ LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circle
 /// path's piece count if it has none.
 std::size_t slack_span(const BeltPath& path);
 
+/// What the sagging piece `piece` of `laid` (a path from `sag_span`) runs into, as a name; empty
+/// when it is clear. Sampled along the arc (at least 512 samples, at most half a roller radius
+/// apart): a wheel other than its two closer than `tip[w]` + `roller`/2 (its teeth), a guide
+/// closer than `roller`/2 (its surface: the rollers would start through the rail), another
+/// straight span closer than `roller` (two rollers side by side), the points within one `pitch`
+/// of the arc's ends left out of the last (they sit on the end wheels by the spans leaving them);
+/// and any of those inside the circular segment the sag sweeps between its chord and its arc (a
+/// wheel's centre, 257 points of a guide, 255 of a span), where the chain would enclose it.
+std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
+                         const std::vector<Circle>& circles, const std::vector<double>& tip,
+                         const std::vector<Guide>& guides, double roller, double pitch);
+
+/// The largest extra length [m] span `piece` of the taut `path` can sag by (`sag_span`) with no
+/// obstacle (`sag_obstacle`): the half circle's (π/2 − 1) c at most (c the span's length), less
+/// where an obstacle is met, found by bisection to 1e-6 of c (taking the clear extras as an
+/// interval from 0). 0 if the span cannot sag at all.
+double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circle>& circles,
+                 const std::vector<double>& tip, const std::vector<Guide>& guides, double roller,
+                 double pitch);
+
 /// The path with span `piece` laid as a circular arc of its chord plus `extra` (> 0), bulging
 /// outward (to the right of the travel), between the same tangent points; the other pieces and the
 /// wheels unchanged. Empty (no pieces) if `piece` is not a span or the arc would exceed a half
@@ -114,6 +134,20 @@ BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra);
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid);
+
+/// Every span a slack chain may sag in (between two wheels wrapped on their outside), in the
+/// path's order.
+std::vector<std::size_t> sagging_spans(const BeltPath& path);
+
+/// The path with each span of `pieces` sagging (`sag_span`) by its share of `extra`, in
+/// proportion to its length. Empty if any cannot (not a span, beyond a half circle).
+BeltPath sag_spans(const BeltPath& path, const std::vector<std::size_t>& pieces, double extra);
+
+/// A start with slack shared by the spans `pieces` in proportion to their lengths
+/// (`sag_spans`), solved as `place_slack_loop` solves one span's.
+LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
+                               const std::vector<int>& teeth, int nodes, double pitch,
+                               BeltPath& laid, const std::vector<std::size_t>& pieces);
 
 /// The loop's start state from a placement: nodes at the placement, moving along the path at
 /// `chain_speed`; every wheel at its placement angle, turning at chain_speed / its radius.

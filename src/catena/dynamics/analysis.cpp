@@ -96,6 +96,10 @@ std::vector<Parameter> table_fields() {
            "contact dampers, numerical (default false)"),
       // hinge friction (docs/models/dynamics.md, "Hinges")
       text("hinge", "frictionless, sliding or rolling (default frictionless)"),
+      text("slack_spans",
+           "with centres, a chain longer than the belt path: lowest (default; the slack sags in "
+           "the span facing down) or all (shared by every span between two wheels inside the "
+           "loop, in proportion to their lengths)"),
       number("hinge_friction", "sliding: pin friction coefficient mu in [0, 1]"),
       quantity("pin_diameter", K::kLength,
                "sliding: pin diameter d2, > 0 and < p/2 (default: the ISO 606 catalogue's)"),
@@ -157,8 +161,9 @@ std::vector<Parameter> sprocket_fields() {
       text("role", "driver, driven or idler (idler: with centres only)"),
       text("side",
            "the side of the chain the wheel runs on: inside (default; the loop wraps it) or "
-           "outside (on the back of the chain, a serpentine path; an idler of the free "
-           "layout only, the rows then listed counter-clockwise round the loop)"),
+           "outside (on the back of the chain, a serpentine path, the wheel turning clockwise; "
+           "any wheel of the free layout, the rows then listed counter-clockwise round the "
+           "loop)"),
       quantity("speed", K::kAngularSpeed, "driver: speed, counter-clockwise, > 0"),
       number("inertia", "driven or idler: moment of inertia J [kg m^2], > 0"),
       number("load_torque", "driven: load torque T_L [N m], >= 0"),
@@ -301,6 +306,14 @@ struct Setup {
   double laid_pitch = NAN;      // [m] the links' chord as laid: the pitch on the line
   BeltPath laid;                // a start with slack: the path with its slack span sagging
   double slack = 0.0;           // [m] the chain's length beyond the path's (a start with slack)
+  // `links` omitted: the count taken (the fitting count nearest the path's length in pitches)
+  // and the slack it implies, N (p − h) [m] with h the chord the taut loop is laid at (negative:
+  // the chain is shorter than the loop and laid stretched, h > p)
+  bool links_fitted = false;
+  double fitted_slack = 0.0;
+  bool slack_all = false;  // slack_spans = "all": the slack shared by every span that sags
+  std::vector<std::size_t> slack_pieces;  // a start with slack: the sagging pieces of `laid`
+  std::vector<double> tip;  // a start with slack: each wheel's tip radius d_a,max/2 [m]
   bool layout() const { return !wheels.empty(); }
   std::string hinge = "frictionless";  // frictionless, sliding or rolling
   HingeFriction hinge_law;             // arm 0 when frictionless
@@ -336,20 +349,19 @@ bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
 
 constexpr std::size_t kMaxWheels = 20;  // sprockets of the free layout
 constexpr int kMinWrapTeeth = 3;        // a wheel's wrap, in teeth (docs/models/dynamics.md)
-constexpr double kMaxSlack = 0.03;      // a start with slack: at most 3 % longer than the path
 
 constexpr const char* kTakeupKeys[] = {"takeup_force",     "takeup_direction", "takeup_stiffness",
                                        "takeup_damping",   "takeup_mass",      "takeup_travel_min",
                                        "takeup_travel_max"};
 
-// `side` on a wheel that cannot be on the back of the chain (without centres, a driver or a driven
-// wheel): "outside" refused; "inside" (the default) is accepted anywhere.
+// `side` on a wheel that cannot be on the back of the chain (without centres: the two-wheel line):
+// "outside" refused; "inside" (the default) is accepted anywhere.
 template <class Field>
 void refuse_back(const SprocketInput& w, const Field& field, std::vector<Issue>& issues) {
   if (w.seen.count("side") && w.side == "outside")
     issues.push_back({field("side"), "'outside'",
-                      "inside: only an idler of the free layout (role = \"idler\", centres on "
-                      "every sprocket) runs on the back of the chain"});
+                      "inside: only a wheel of the free layout (centres on every sprocket) runs "
+                      "on the back of the chain"});
 }
 
 // A take-up's keys on a driver (or without centres): refused, each.
@@ -403,6 +415,28 @@ void parse_takeup(const SprocketInput& w, const Field& field, LayoutWheel& lw,
   ranged("takeup_travel_max", w.takeup_travel_max, 0.0, 10.0, false,
          "the end stop ahead of the start, in [0, 10] m", false, lw.takeup_travel_max);
   lw.takeup = ok;
+}
+
+// "slack span sprocket[a] -> sprocket[b]" or "slack spans ..., ..." for the sagging pieces.
+std::string span_names(const BeltPath& path, const std::vector<std::size_t>& pieces) {
+  std::string out = pieces.size() == 1 ? "slack span " : "slack spans ";
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    out += (i ? ", sprocket[" : "sprocket[") + std::to_string(path.pieces[pieces[i]].wheel) +
+           "] -> sprocket[" + std::to_string(path.pieces[pieces[i]].next) + "]";
+  return out;
+}
+
+// The most slack the spans `pieces` can share (in proportion to their lengths) before the first
+// meets its own limit (`sag_limit`).
+double slack_limit(const Setup& s, const std::vector<std::size_t>& pieces,
+                   const std::vector<double>& tip, const std::vector<Guide>& guides) {
+  double total = 0.0, most = INFINITY;
+  for (const std::size_t k : pieces) total += s.path.pieces[k].length;
+  for (const std::size_t k : pieces) {
+    const double own = sag_limit(s.path, k, s.circles, tip, guides, s.roller, s.pitch);
+    most = std::min(most, pieces.size() == 1 ? own : own * total / s.path.pieces[k].length);
+  }
+  return pieces.empty() ? 0.0 : most;
 }
 
 // The free layout: every [[dynamics.sprocket]] with its centre (docs/models/dynamics.md,
@@ -461,8 +495,8 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
       continue;
     }
     if (w.role == "driver") refuse_takeup(w, field, issues);
-    if (w.role != "idler") refuse_back(w, field, issues);
-    lw.back = w.role == "idler" && w.side == "outside";
+    // any wheel of the free layout may run on the back of the chain (turning clockwise)
+    lw.back = w.side == "outside";
     if (w.role == "driver") {
       ++drivers;
       s.driver = i;
@@ -668,34 +702,25 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
     chosen = static_cast<int>(links);
     if (std::find(fitting.begin(), fitting.end(), chosen) == fitting.end() &&
         !fits(chosen, trial)) {
-      // longer than the path: a start with slack, its slack span sagging (every link one pitch),
-      // up to kMaxSlack of the path's length
+      // longer than the path: a start with slack, its slack span sagging (every link one pitch)
+      // as a circular arc of at most a half circle, clear of every other wheel's teeth and of
+      // the other spans (of the guides: checked in parse() once they are read)
       const double over = chosen * s.pitch - s.path.length;
-      std::string blocked;  // a wheel the sagging span would run into
-      if (over > 0.0 && over <= kMaxSlack * s.path.length) {
+      const std::size_t k = slack_span(s.path);
+      const std::vector<std::size_t> pieces = k >= s.path.pieces.size() ? std::vector<std::size_t>{}
+                                              : s.slack_all             ? sagging_spans(s.path)
+                                                            : std::vector<std::size_t>{k};
+      std::string blocked;  // what the sagging span would run into
+      bool seated = false;
+      if (over > 0.0 && !pieces.empty()) {
         BeltPath laid;
         const LoopPlacement sagging =
-            place_slack_loop(s.path, s.circles, teeth, chosen, s.pitch, laid);
-        bool seated = !sagging.s.empty();
+            place_slack_loop(s.path, s.circles, teeth, chosen, s.pitch, laid, pieces);
+        seated = !sagging.s.empty();
         for (std::size_t w = 0; seated && w < n; ++w)
           seated = sagging.wrapped[w] > 0 && sagging.seat_offset[w] <= clearance[w];
-        // the sagging arc must pass every other wheel's teeth by the roller, as a span must
-        const std::size_t k = slack_span(s.path);
-        if (seated && k < laid.pieces.size()) {
-          const PathPiece& q = laid.pieces[k];
-          constexpr int kSamples = 512;
-          for (std::size_t w = 0; w < n && blocked.empty(); ++w) {
-            if (w == q.wheel || w == q.next) continue;
-            for (int j = 0; j <= kSamples; ++j) {
-              const double a = q.from + (q.to - q.from) * j / kSamples;
-              const double reach = std::hypot(q.cx + q.radius * std::cos(a) - s.circles[w].x,
-                                              q.cy + q.radius * std::sin(a) - s.circles[w].y);
-              if (reach < tip[w] + 0.5 * s.roller) {
-                blocked = "sprocket[" + std::to_string(w) + "]";
-                break;
-              }
-            }
-          }
+        for (std::size_t i = 0; seated && i < pieces.size(); ++i) {
+          blocked = sag_obstacle(laid, pieces[i], s.circles, tip, {}, s.roller, s.pitch);
           seated = blocked.empty();
         }
         if (seated) {
@@ -704,20 +729,30 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
           s.links = chosen;
           s.laid_pitch = sagging.spacing;
           s.slack = over;
+          s.slack_pieces = pieces;
+          s.tip = tip;
           return;
         }
       }
-      if (over > 0.0)
-        why +=
-            "; or a chain longer than the path by at most " + shown(kMaxSlack * 100.0) +
-            " % of its length (" + mm(kMaxSlack * s.path.length) +
-            "), which starts with its slack span sagging (here " + mm(over) + ", " +
-            shown(over / s.path.length * 100.0) + " %" +
-            (slack_span(s.path) >= s.path.pieces.size()
-                 ? "; but no span sags: every span touches a wheel on the back of the chain"
-             : blocked.empty() ? ""
-                               : "; but the sagging span would run into " + blocked + "'s teeth") +
-            ")";
+      if (over > 0.0) {
+        if (k >= s.path.pieces.size()) {
+          why +=
+              "; or a chain longer than the path, which starts with its slack sagging in a span "
+              "(here " +
+              mm(over) +
+              "; but no span sags: every span touches a wheel on the back of the "
+              "chain)";
+        } else {
+          const double most = slack_limit(s, pieces, tip, {});
+          why += "; or a chain longer than the path by at most about " + mm(most) + " (" +
+                 shown(most / s.path.length * 100.0) + " % of the path), the most its " +
+                 span_names(s.path, pieces) +
+                 " can sag by as circular arcs of at most a half circle clear of every other "
+                 "wheel's teeth and the other spans (here " +
+                 mm(over) + ", " + shown(over / s.path.length * 100.0) + " %" +
+                 (blocked.empty() ? "" : "; the sagging span would run into " + blocked) + ")";
+        }
+      }
       issues.push_back({links_at, std::to_string(chosen), why});
       return;
     }
@@ -732,6 +767,11 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
   fits(chosen, s.placement);
   s.links = chosen;
   s.laid_pitch = s.placement.spacing;
+  if (!links_given) {
+    s.links_fitted = true;
+    // the chain's length beyond the taut loop's: N links of the pitch against N chords h
+    s.fitted_slack = chosen * (s.pitch - s.placement.spacing);
+  }
 }
 
 Setup parse(const analysis::Inputs& in) {
@@ -756,6 +796,7 @@ Setup parse(const analysis::Inputs& in) {
   bool work_balance = false;
   std::string hinge = "frictionless";
   bool hinge_known = true;
+  bool slack_all = false;  // slack_spans = "all"
   bool positions = false;
   std::string wheel = "iso606";
   for (const Entry& v : file.table) {
@@ -869,6 +910,14 @@ Setup parse(const analysis::Inputs& in) {
         work_balance = v.text == "true";
       else
         issues.push_back({where(v), "'" + v.text + "'", "true or false"});
+      continue;
+    }
+    if (key == "slack_spans") {
+      line[key] = v.line;
+      if (v.is_string && (v.text == "lowest" || v.text == "all"))
+        slack_all = v.text == "all";
+      else
+        issues.push_back({where(v), "'" + v.text + "'", "lowest or all"});
       continue;
     }
     if (key == "hinge") {
@@ -1193,6 +1242,10 @@ Setup parse(const analysis::Inputs& in) {
                         "sprocket)"});
     }
   }
+  s.slack_all = slack_all;
+  if (!layout && line.count("slack_spans"))
+    issues.push_back({at("slack_spans"), slack_all ? "'all'" : "'lowest'",
+                      "no slack_spans without centres (the two-wheel line starts taut)"});
   if (layout) parse_layout(wheels, links, at("links"), line.count("links") > 0, s, issues);
   if (!layout && wheels.size() == 2) {
     if (drivers != 1 || driven != 1)
@@ -1421,6 +1474,25 @@ Setup parse(const analysis::Inputs& in) {
     }
     if (complete) s.guides.push_back(guide);
   }
+  // a start with slack: the sagging span must clear the guides too (docs/models/dynamics.md,
+  // "A start with slack")
+  if (s.slack > 0.0 && !s.guides.empty()) {
+    std::string blocked;
+    for (std::size_t i = 0; blocked.empty() && i < s.slack_pieces.size(); ++i)
+      blocked =
+          sag_obstacle(s.laid, s.slack_pieces[i], s.circles, s.tip, s.guides, s.roller, s.pitch);
+    if (!blocked.empty()) {
+      const double most = slack_limit(s, s.slack_pieces, s.tip, s.guides);
+      issues.push_back(
+          {at("links"), std::to_string(s.links),
+           "a chain longer than the path by at most about " + format_g(most * 1e3, 6) +
+               " mm, the most its " + span_names(s.path, s.slack_pieces) +
+               " can sag by as circular arcs clear of every other wheel's teeth, the other "
+               "spans and the guides (here " +
+               format_g(s.slack * 1e3, 6) + " mm; the sagging span would run into " + blocked +
+               ")"});
+    }
+  }
 
   // the work cap: steps × links
   if (issues.empty()) {
@@ -1566,12 +1638,15 @@ std::vector<Sprocket> layout_sprockets(const Setup& d) {
     Sprocket s = iso606_sprocket(d.pitch, d.roller, d.width, w.teeth, w.x, w.y, d.contact_stiffness,
                                  d.contact_damping);
     s.friction = wheel_mu(d, wheels.size());
+    // a wheel on the back of the chain turns clockwise: the driver's speed and the driven
+    // wheel's load (against its turning) change sign
+    const double sense = w.back ? -1.0 : 1.0;
     if (w.role == "driver") {
       s.driver = true;
-      s.speed = w.speed;
+      s.speed = sense * w.speed;
     } else {
       s.inertia = w.inertia;
-      s.load_torque = w.load;
+      s.load_torque = sense * w.load;
     }
     if (w.takeup) {
       s.takeup = true;
@@ -1595,7 +1670,7 @@ std::vector<Sprocket> layout_sprockets(const Setup& d) {
 State layout_state(const Setup& d) {
   const double v = d.speed * d.circles[d.driver].radius;
   State s = loop_state(d.slack > 0.0 ? d.laid : d.path, d.circles, d.placement, v);
-  s.speed[d.driver] = d.speed;
+  s.speed[d.driver] = d.wheels[d.driver].back ? -d.speed : d.speed;
   return s;
 }
 
@@ -2012,6 +2087,11 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["path_length"] = d.path.length;
     j["laid_pitch"] = d.laid_pitch;
     if (d.slack > 0.0) j["slack"] = d.slack;  // a start with slack only
+    if (d.links_fitted) {
+      // `links` omitted: the count the command took and the slack it implies
+      j["links_chosen"] = d.links;
+      j["links_slack"] = d.fitted_slack;
+    }
   } else {
     j["teeth"] = d.teeth;
     j["centre_distance"] =
@@ -2242,6 +2322,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
     for (const char* key : {"path_length", "laid_pitch", "centre_x", "centre_y"})
       j["units"][key] = "m";
   if (d.slack > 0.0) j["units"]["slack"] = "m";
+  if (d.links_fitted) j["units"]["links_slack"] = "m";
   if (d.hertz_stiffness) {
     j["units"]["contact_stiffness"] = "N/m";
     j["units"]["contact_load"] = "N";
@@ -2332,10 +2413,13 @@ Record describe(const Result& r, const analysis::Inputs&) {
       << "  " << (d.chain.empty() ? "chain" : d.chain) << ", " << d.links << " links, belt path "
       << format_g(d.path.length * 1e3, 6) << " mm (links laid at "
       << format_g(d.laid_pitch * 1e3, 7) << " mm";
-    if (d.slack > 0.0)
-      t << ", " << format_g(d.slack * 1e3, 6) << " mm of slack sagging in the span sprocket "
-        << d.path.pieces[slack_span(d.path)].wheel << " -> sprocket "
-        << d.path.pieces[slack_span(d.path)].next;
+    if (d.slack > 0.0) {
+      t << ", " << format_g(d.slack * 1e3, 6) << " mm of slack sagging in the span"
+        << (d.slack_pieces.size() > 1 ? "s" : "");
+      for (std::size_t i = 0; i < d.slack_pieces.size(); ++i)
+        t << (i ? ", sprocket " : " sprocket ") << d.path.pieces[d.slack_pieces[i]].wheel
+          << " -> sprocket " << d.path.pieces[d.slack_pieces[i]].next;
+    }
     t << "), theta " << format_g(d.theta, 3);
   } else {
     t << "Catena dynamics: chain loop over two sprockets in time (issue 21)\n\n"

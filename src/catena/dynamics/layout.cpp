@@ -52,7 +52,9 @@ double signed_tangent_normal(const Circle& a, const Circle& b) {
   return std::atan2(dy, dx) - std::acos(c);
 }
 
-// Whether the segments p0p1 and q0q1 cross (a proper crossing or a touch).
+// Whether the segments p0p1 and q0q1 cross (a proper crossing or a touch). Two segments on one
+// line (every end within 1e-12 of the longer one's length of the other's line, where the side
+// tests' signs are rounding) cross only if they overlap along it.
 bool segments_cross(double px0, double py0, double px1, double py1, double qx0, double qy0,
                     double qx1, double qy1) {
   auto side = [](double ax, double ay, double bx, double by, double cx, double cy) {
@@ -60,6 +62,16 @@ bool segments_cross(double px0, double py0, double px1, double py1, double qx0, 
   };
   const double d1 = side(qx0, qy0, qx1, qy1, px0, py0), d2 = side(qx0, qy0, qx1, qy1, px1, py1);
   const double d3 = side(px0, py0, px1, py1, qx0, qy0), d4 = side(px0, py0, px1, py1, qx1, qy1);
+  const double lp = std::hypot(px1 - px0, py1 - py0), lq = std::hypot(qx1 - qx0, qy1 - qy0);
+  const double eps = 1e-12 * std::max(lp, lq);
+  // |side| is the distance from the line times the segment's length
+  if (lp > 0.0 && lq > 0.0 && std::abs(d1) <= eps * lq && std::abs(d2) <= eps * lq &&
+      std::abs(d3) <= eps * lp && std::abs(d4) <= eps * lp) {
+    // collinear: project q's ends on p's direction and compare the intervals
+    const double ux = (px1 - px0) / lp, uy = (py1 - py0) / lp;
+    const double a = (qx0 - px0) * ux + (qy0 - py0) * uy, b = (qx1 - px0) * ux + (qy1 - py0) * uy;
+    return std::max(a, b) >= -eps && std::min(a, b) <= lp + eps;
+  }
   return d1 * d2 <= 0.0 && d3 * d4 <= 0.0;
 }
 
@@ -448,20 +460,155 @@ BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra) {
   return out;
 }
 
+std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
+                         const std::vector<Circle>& circles, const std::vector<double>& tip,
+                         const std::vector<Guide>& guides, double roller, double pitch) {
+  if (piece >= laid.pieces.size() || !laid.pieces[piece].sag) return "the sagging span";
+  const PathPiece& q = laid.pieces[piece];
+  const auto samples = static_cast<int>(std::max(512.0, std::ceil(q.length / (0.25 * roller))));
+  // the distance from (x, y) to a guide's surface
+  auto to_guide = [](const Guide& g, double x, double y) {
+    if (g.kind == Guide::Kind::kStraight) return segment_distance(x, y, g.x0, g.y0, g.x1, g.y1);
+    const double a = std::atan2(y - g.centre_y, x - g.centre_x) - g.start_angle;
+    const double along = a - kTwoPi * std::floor(a / kTwoPi);
+    if (along <= g.end_angle - g.start_angle)
+      return std::abs(std::hypot(x - g.centre_x, y - g.centre_y) - g.radius);
+    double best = INFINITY;
+    for (const double e : {g.start_angle, g.end_angle})
+      best = std::min(best, std::hypot(x - g.centre_x - g.radius * std::cos(e),
+                                       y - g.centre_y - g.radius * std::sin(e)));
+    return best;
+  };
+  // inside the circular segment the sag sweeps (between the chord and the arc): the segments of
+  // a growing sag are nested, so an obstacle once inside stays inside
+  const double ux = q.x1 - q.x0, uy = q.y1 - q.y0, chord = std::hypot(ux, uy);
+  auto swept = [&](double x, double y) {
+    const double out = ((x - q.x0) * uy - (y - q.y0) * ux) / chord;  // to the right of the travel
+    return out > 0.0 && std::hypot(x - q.cx, y - q.cy) < q.radius;
+  };
+  for (std::size_t w = 0; w < circles.size(); ++w)
+    if (w != q.wheel && w != q.next && swept(circles[w].x, circles[w].y))
+      return wheel_name(w) + "'s teeth";
+  for (std::size_t g = 0; g < guides.size(); ++g) {
+    const Guide& gd = guides[g];
+    for (int j = 0; j <= 256; ++j) {
+      const double f = j / 256.0;
+      const double a = gd.start_angle + f * (gd.end_angle - gd.start_angle);
+      const bool straight = gd.kind == Guide::Kind::kStraight;
+      const double x =
+          straight ? gd.x0 + f * (gd.x1 - gd.x0) : gd.centre_x + gd.radius * std::cos(a);
+      const double y =
+          straight ? gd.y0 + f * (gd.y1 - gd.y0) : gd.centre_y + gd.radius * std::sin(a);
+      if (swept(x, y)) return "guide[" + std::to_string(g) + "]";
+    }
+  }
+  for (std::size_t k = 0; k < laid.pieces.size(); ++k) {
+    const PathPiece& r = laid.pieces[k];
+    if (k == piece || r.arc || r.sag) continue;
+    for (int j = 1; j < 256; ++j)
+      if (swept(r.x0 + (r.x1 - r.x0) * j / 256.0, r.y0 + (r.y1 - r.y0) * j / 256.0))
+        return "the span " + wheel_name(r.wheel) + " -> " + wheel_name(r.next);
+  }
+  for (int j = 0; j <= samples; ++j) {
+    const double a = q.from + (q.to - q.from) * j / samples;
+    const double x = q.cx + q.radius * std::cos(a), y = q.cy + q.radius * std::sin(a);
+    for (std::size_t w = 0; w < circles.size(); ++w) {
+      if (w == q.wheel || w == q.next) continue;
+      if (std::hypot(x - circles[w].x, y - circles[w].y) < tip[w] + 0.5 * roller)
+        return wheel_name(w) + "'s teeth";
+    }
+    for (std::size_t g = 0; g < guides.size(); ++g)
+      if (to_guide(guides[g], x, y) < 0.5 * roller) return "guide[" + std::to_string(g) + "]";
+    const double along = q.length * j / samples;
+    if (along < pitch || along > q.length - pitch) continue;
+    for (std::size_t k = 0; k < laid.pieces.size(); ++k) {
+      const PathPiece& r = laid.pieces[k];
+      if (k == piece || r.arc || r.sag) continue;
+      if (segment_distance(x, y, r.x0, r.y0, r.x1, r.y1) < roller)
+        return "the span " + wheel_name(r.wheel) + " -> " + wheel_name(r.next);
+    }
+  }
+  return {};
+}
+
+double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circle>& circles,
+                 const std::vector<double>& tip, const std::vector<Guide>& guides, double roller,
+                 double pitch) {
+  if (piece >= path.pieces.size() || path.pieces[piece].arc) return 0.0;
+  const double c = path.pieces[piece].length;
+  auto clear = [&](double extra) {
+    const BeltPath laid = sag_span(path, piece, extra);
+    return !laid.pieces.empty() &&
+           sag_obstacle(laid, piece, circles, tip, guides, roller, pitch).empty();
+  };
+  // the half circle's extra, a hair inside (sag_span refuses beyond it)
+  const double most = (0.5 * kPi - 1.0) * c * (1.0 - 1e-9);
+  if (clear(most)) return most;
+  double lo = 0.0, hi = most;
+  while (hi - lo > 1e-6 * c) {
+    const double mid = 0.5 * (lo + hi);
+    (clear(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+std::vector<std::size_t> sagging_spans(const BeltPath& path) {
+  std::vector<std::size_t> back, out;
+  for (const PathPiece& q : path.pieces)
+    if (q.arc && q.sense < 0.0) back.push_back(q.wheel);
+  auto on_back = [&back](std::size_t w) {
+    return std::find(back.begin(), back.end(), w) != back.end();
+  };
+  for (std::size_t k = 0; k < path.pieces.size(); ++k) {
+    const PathPiece& q = path.pieces[k];
+    if (!q.arc && q.length > 0.0 && !on_back(q.wheel) && !on_back(q.next)) out.push_back(k);
+  }
+  return out;
+}
+
+BeltPath sag_spans(const BeltPath& path, const std::vector<std::size_t>& pieces, double extra) {
+  double total = 0.0;
+  for (const std::size_t k : pieces) {
+    if (k >= path.pieces.size() || path.pieces[k].arc) return BeltPath{};
+    total += path.pieces[k].length;
+  }
+  BeltPath out = path;
+  if (pieces.empty() || !(total > 0.0)) {
+    out.pieces.clear();
+    return out;
+  }
+  for (const std::size_t k : pieces) {
+    // one span: the whole extra, exactly
+    out = sag_span(out, k, pieces.size() == 1 ? extra : extra * path.pieces[k].length / total);
+    if (out.pieces.empty()) return out;
+  }
+  return out;
+}
+
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid) {
+  const std::size_t span = slack_span(path);
+  if (span >= path.pieces.size()) {
+    laid = BeltPath{};
+    return {};
+  }
+  return place_slack_loop(path, circles, teeth, nodes, pitch, laid, {span});
+}
+
+LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
+                               const std::vector<int>& teeth, int nodes, double pitch,
+                               BeltPath& laid, const std::vector<std::size_t>& pieces) {
   LoopPlacement out;
   laid = BeltPath{};
-  const std::size_t span = slack_span(path);
   const double chain = nodes * pitch;
-  if (path.pieces.empty() || nodes < 3 || !(pitch > 0.0) || span >= path.pieces.size() ||
+  if (path.pieces.empty() || nodes < 3 || !(pitch > 0.0) || pieces.empty() ||
       !(chain > path.length))
     return out;
-  // the walk's miss at chord `pitch` with the span sagging by `extra`: the end of node N's walk
+  // the walk's miss at chord `pitch` with the spans sagging by `extra`: the end of node N's walk
   // against the laid path's length
   auto miss = [&](double extra, BeltPath& p) -> double {
-    p = sag_span(path, span, extra);
+    p = sag_spans(path, pieces, extra);
     if (p.pieces.empty()) return NAN;
     return walk(p, pitch, nodes).back() - p.length;
   };
