@@ -397,6 +397,50 @@ MouthEntry mouth_entry(double mouth, double speed, double offset) {
   return out;
 }
 
+// On the mouth's ramp the reported depth (SeatContact::depth, max_penetration) is the seats'
+// law's depth for the elastic force the ramp actually gives, not g (up to 2c there, at almost no
+// force near the ramp's top; more than the unramped force where its radial push is steep);
+// within the mouth it is g.
+TEST(DynamicsPocket, RampReportsTheForceEquivalentDepth) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Sprocket ramped = wheel(8, 2000.0);
+  ramped.pocket_mouth = 0.5 * ramped.pocket_clearance;
+  const double c = ramped.pocket_clearance, r = ramped.pitch_radius, w = ramped.pocket_mouth;
+  const double eps = ramped.contact_smoothing, kc = ramped.contact_stiffness;
+  auto law = [&](double g) { return g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps); };
+  int on_ramp = 0, in_mouth = 0;
+  // the smallest and largest depth/g on the ramp (above 1 where the ramp's radial push, E₀ W s′,
+  // exceeds the unramped force)
+  double shallowest = 1.0, deepest = 0.0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const double psi = 6.0 * (u(rng) - 0.5);
+    const int m = trial % 16;
+    const double a = psi + (m / 2) * 2 * kPi / 8 + (m % 2 ? ramped.pocket_angle : 0.0);
+    const double beta = (u(rng) < 0.5 ? -1.0 : 1.0) * (1.05 + 1.5 * u(rng)) * c / r;
+    const double rho = r + 0.5 * c + (1.2 * u(rng) - 0.2) * w;
+    const double x = ramped.centre_x + rho * std::cos(a + beta);
+    const double y = ramped.centre_y + rho * std::sin(a + beta);
+    // at rest relative to the wheel (ω = 0): the force is the elastic one
+    const SeatContact k = pocket_contact(ramped, x, y, 0.0, 0.0, psi, 0.0);
+    if (!k.active || !(k.force > 0.0)) continue;
+    EXPECT_NEAR(law(k.depth), k.force, 1e-9 * k.force + 1e-9);
+    if (rho <= r + 0.5 * c) {
+      ++in_mouth;
+      EXPECT_EQ(k.depth, k.penetration);
+    } else {
+      ++on_ramp;
+      shallowest = std::min(shallowest, k.depth / k.penetration);
+      deepest = std::max(deepest, k.depth / k.penetration);
+    }
+  }
+  std::printf("ramp depth: %d on the ramp, %d in the mouth, depth/g %.3g to %.3g\n", on_ramp,
+              in_mouth, shallowest, deepest);
+  EXPECT_GT(on_ramp, 50);
+  EXPECT_GT(in_mouth, 20);
+  EXPECT_LT(shallowest, 0.2);  // near the ramp's top the force-equivalent depth is far below g
+}
+
 TEST(DynamicsPocket, JointEnteringOffItsVertexKeepsTheEnergyWithTheRamp) {
   for (double speed : {0.2, 0.5}) {
     for (double offset : {1.2e-4, 1.5e-4}) {

@@ -333,10 +333,13 @@ struct SeatContact {
   bool active = false;
   int seat = 0;              ///< the seat index k (any integer; seat k ≡ k mod z)
   double penetration = 0.0;  ///< [m] g = |e| + r − ri > 0 when active
-  double force = 0.0;        ///< [N] f ≥ 0, pushing the roller towards the seat centre
-  double stiffness = 0.0;    ///< [N/m] ∂f/∂g (0 when f is clamped at 0)
-  double damping = 0.0;      ///< [N·s/m] the damping coefficient at this penetration
-  double energy = 0.0;       ///< [J] the elastic contact energy
+  /// [m] the depth reported in max_penetration: g, except on a pocket's mouth ramp, where it is
+  /// the seats' law's depth for the ramp's elastic force (g there reaches 2c at almost no force)
+  double depth = 0.0;
+  double force = 0.0;      ///< [N] f ≥ 0, pushing the roller towards the seat centre
+  double stiffness = 0.0;  ///< [N/m] ∂f/∂g (0 when f is clamped at 0)
+  double damping = 0.0;    ///< [N·s/m] the damping coefficient at this penetration
+  double energy = 0.0;     ///< [J] the elastic contact energy
   /// [W] the power of the force's damping part on roller and wheel together, −(f − f_el) ġ ≤ 0
   /// (ġ the rate at the contact point relative to the wheel): the contact damper's dissipation
   double damping_power = 0.0;

@@ -450,7 +450,7 @@ void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx
   // the part of the damper, f − f_el, is the dissipation
   c.damping_power = -(c.force - elastic) * rate;
   c.active = true;
-  c.penetration = g;
+  c.penetration = c.depth = g;
   // the reaction +f n acts on the wheel along the line through the roller centre q
   c.torque = c.force * (rx * c.ny - ry * c.nx);
 }

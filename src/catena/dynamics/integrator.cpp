@@ -251,7 +251,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       }
       const SeatContact sc = wheel_contact(wheel, qx, qy, vx, vy, psi, omega);
       if (!sc.active) continue;
-      max_penetration_ = std::max(max_penetration_, sc.penetration);
+      max_penetration_ = std::max(max_penetration_, sc.depth);
       contact_damping_work_ += h * sc.damping_power;
       torque += sc.torque;
       solver_.rhs[i].x -= h * sc.force * sc.nx;  // the force on the roller is −f n

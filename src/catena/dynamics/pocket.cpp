@@ -106,13 +106,19 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
   c.damping *= ss.s * wg;
   c.stiffness *= ss.s * wg;
   if (!(len > 0.0)) {
-    c.force = 0.0;
+    c.force = c.depth = 0.0;
     c.stiffness = c.damping = 0.0;
     return c;
   }
   c.nx = vxn / len;
   c.ny = vyn / len;
   c.force = len;
+  // the depth reported (max_penetration): the seats' law's depth for the ramp's elastic force
+  // |F_el| (the same vector with the damping left out) — g reaches 2c over the ramp, where the
+  // force is nearly 0
+  const double ael = ss.s * (wg * fel + e0 * dwg);
+  const double fe = std::hypot(ael * nx - radial * ux, ael * ny - radial * uy);
+  c.depth = fe < 0.5 * kc * eps ? std::sqrt(2.0 * eps * fe / kc) : fe / kc + 0.5 * eps;
   // the exact elastic ∂F/∂q = −Φ'' s n nᵀ + Φ' s' (n r̂ᵀ + r̂ nᵀ) − Φ' s P_n/|e| − Φ s'' r̂ r̂ᵀ
   // + Φ s' P_r/ρ, less the block the fields give
   const double s0 = ss.s, s1 = ss.ds, s2 = ss.dds, pe = dphi * s0 / dist, pr = phi * s1 / rho;
