@@ -797,8 +797,8 @@ Energy energy(const Model& model, const State& state) {
       e.elastic += slide_stop(model.sprockets[w], sl, 0.0).energy;  // an end stop pressed
     }
     for (std::size_t i = 0; i < n; ++i) {
-      const SeatContact c =
-          wheel_contact(wheel, state.x[i], state.y[i], 0.0, 0.0, state.angle[w], 0.0);
+      const SeatContact c = wheel_contact(wheel, state.x[i], state.y[i], 0.0, 0.0, state.angle[w],
+                                          0.0, held_pocket(state, i, w));
       if (c.active) e.elastic += c.energy;
     }
   }
