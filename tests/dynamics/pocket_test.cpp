@@ -21,7 +21,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// Ø18×64 on z = 8 (seed 003's example), centre off the origin, clearance 0.1 mm
+// Ø18×64 on z = 8 (seed 003's example), centre off the origin, clearance 0.1 mm; the sharp
+// mouth's law (the default; the release, an option, has its own tests below)
 Sprocket wheel(int z = 8, double damping = 0.0) {
   return pocket_wheel(0.064, 0.018, z, 0.3, -0.2, 1e-4, 1e8, damping);
 }
@@ -397,6 +398,119 @@ MouthEntry mouth_entry(double mouth, double speed, double offset) {
   return out;
 }
 
+// On the mouth's ramp the reported depth (SeatContact::depth, max_penetration) is the seats'
+// law's depth for the elastic force the ramp actually gives, not g (up to 2c there, at almost no
+// force near the ramp's top; more than the unramped force where its radial push is steep);
+// within the mouth it is g.
+TEST(DynamicsPocket, RampReportsTheForceEquivalentDepth) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Sprocket ramped = wheel(8, 2000.0);
+  ramped.pocket_mouth = 0.5 * ramped.pocket_clearance;
+  const double c = ramped.pocket_clearance, r = ramped.pitch_radius, w = ramped.pocket_mouth;
+  const double eps = ramped.contact_smoothing, kc = ramped.contact_stiffness;
+  auto law = [&](double g) { return g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps); };
+  int on_ramp = 0, in_mouth = 0;
+  // the smallest and largest depth/g on the ramp (above 1 where the ramp's radial push, E₀ W s′,
+  // exceeds the unramped force)
+  double shallowest = 1.0, deepest = 0.0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const double psi = 6.0 * (u(rng) - 0.5);
+    const int m = trial % 16;
+    const double a = psi + (m / 2) * 2 * kPi / 8 + (m % 2 ? ramped.pocket_angle : 0.0);
+    const double beta = (u(rng) < 0.5 ? -1.0 : 1.0) * (1.05 + 1.5 * u(rng)) * c / r;
+    const double rho = r + 0.5 * c + (1.2 * u(rng) - 0.2) * w;
+    const double x = ramped.centre_x + rho * std::cos(a + beta);
+    const double y = ramped.centre_y + rho * std::sin(a + beta);
+    // at rest relative to the wheel (ω = 0): the force is the elastic one
+    const SeatContact k = pocket_contact(ramped, x, y, 0.0, 0.0, psi, 0.0);
+    if (!k.active || !(k.force > 0.0)) continue;
+    EXPECT_NEAR(law(k.depth), k.force, 1e-9 * k.force + 1e-9);
+    if (rho <= r + 0.5 * c) {
+      ++in_mouth;
+      EXPECT_EQ(k.depth, k.penetration);
+    } else {
+      ++on_ramp;
+      shallowest = std::min(shallowest, k.depth / k.penetration);
+      deepest = std::max(deepest, k.depth / k.penetration);
+    }
+  }
+  std::printf("ramp depth: %d on the ramp, %d in the mouth, depth/g %.3g to %.3g\n", on_ramp,
+              in_mouth, shallowest, deepest);
+  EXPECT_GT(on_ramp, 50);
+  EXPECT_GT(in_mouth, 20);
+  EXPECT_LT(shallowest, 0.2);  // near the ramp's top the force-equivalent depth is far below g
+}
+
+// The release (Sprocket::pocket_release, an option): energy E₀(g) S(u), a held
+// joint keeps its pocket beyond the mouth. Over random joints near random vertices, inside and
+// beyond the mouth, held or not, across the release band: F = −∇E, torque = −∂E/∂ψ, and the
+// integrator's ∂F/∂q (the fields' block + dq_extra) against central differences of F; the
+// force and ∂F/∂q continuous across the band's ends (the step is C²).
+TEST(DynamicsPocket, ReleaseIsTheGradientOfItsEnergyWithExactDerivatives) {
+  Sprocket w = pocket_wheel(0.064, 0.018, 8, 0.3, -0.2, 1e-4, 1e8, 0.0);
+  EXPECT_FALSE(w.pocket_release);  // an option
+  w.pocket_release = true;
+  const ReleaseBand band = release_band(w);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const double c = w.pocket_clearance, r = w.pitch_radius;
+  int checked = 0, beyond = 0, in_band = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const double psi = 6.0 * (u01(rng) - 0.5);
+    const int m = trial % 16;
+    const double a = psi + (m / 2) * 2 * kPi / 8 + (m % 2 ? w.pocket_angle : 0.0);
+    // e at a random angle from the outward radial, |e| in (c, 4c)
+    const double beta = kPi * (2.0 * u01(rng) - 1.0), len = c * (1.0 + 3.0 * u01(rng));
+    const double cx = w.centre_x + r * std::cos(a), cy = w.centre_y + r * std::sin(a);
+    const double x = cx + len * std::cos(a + beta), y = cy + len * std::sin(a + beta);
+    const int held = m;  // vertex m is the one at angle a
+    const SeatContact k = pocket_contact(w, x, y, 0.0, 0.0, psi, 0.0, held);
+    const bool out = std::hypot(x - w.centre_x, y - w.centre_y) > r + 0.5 * c;
+    if (out) {  // not held: nothing beyond the mouth
+      EXPECT_FALSE(pocket_contact(w, x, y, 0.0, 0.0, psi, 0.0).active);
+    }
+    if (!k.active || !(k.force > 1.0)) continue;
+    const double ue = std::cos(beta);
+    // stay clear of the seats' law's ε kink (g = ε) for the differences
+    if (std::abs(len - c - w.contact_smoothing) < 2e-8) continue;
+    ++checked;
+    beyond += out ? 1 : 0;
+    in_band += ue > band.full && ue < band.none ? 1 : 0;
+    auto energy = [&](double qx, double qy, double ps) {
+      const SeatContact e = pocket_contact(w, qx, qy, 0.0, 0.0, ps, 0.0, held);
+      return e.active ? e.energy : 0.0;
+    };
+    auto force = [&](double qx, double qy, double f[2]) {
+      total_force(w, pocket_contact(w, qx, qy, 0.0, 0.0, psi, 0.0, held), qx, qy, f);
+    };
+    const double hq = 1e-10, scale = std::max(1.0, k.force);
+    double f[2];
+    total_force(w, k, x, y, f);
+    EXPECT_NEAR(f[0], -(energy(x + hq, y, psi) - energy(x - hq, y, psi)) / (2 * hq), 1e-4 * scale);
+    EXPECT_NEAR(f[1], -(energy(x, y + hq, psi) - energy(x, y - hq, psi)) / (2 * hq), 1e-4 * scale);
+    EXPECT_NEAR(k.torque, -(energy(x, y, psi + hq) - energy(x, y, psi - hq)) / (2 * hq),
+                1e-4 * scale * r);
+    double dq[4];
+    total_dq(w, k, x, y, 0.0, 0.0, 0.0, dq);
+    const double hd = 1e-11;
+    double fa[2], fb[2], fc[2], fd[2];
+    force(x + hd, y, fa);
+    force(x - hd, y, fb);
+    force(x, y + hd, fc);
+    force(x, y - hd, fd);
+    const double fdq[4] = {(fa[0] - fb[0]) / (2 * hd), (fc[0] - fd[0]) / (2 * hd),
+                           (fa[1] - fb[1]) / (2 * hd), (fc[1] - fd[1]) / (2 * hd)};
+    const double ks = w.contact_stiffness;
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(dq[i], fdq[i], 2e-3 * ks) << trial << " " << i;
+  }
+  std::printf("release: %d checked, %d beyond the mouth, %d in the band\n", checked, beyond,
+              in_band);
+  EXPECT_GT(checked, 500);
+  EXPECT_GT(beyond, 100);
+  EXPECT_GT(in_band, 100);
+}
+
 TEST(DynamicsPocket, JointEnteringOffItsVertexKeepsTheEnergyWithTheRamp) {
   for (double speed : {0.2, 0.5}) {
     for (double offset : {1.2e-4, 1.5e-4}) {
@@ -420,14 +534,16 @@ TEST(DynamicsPocket, JointEnteringOffItsVertexKeepsTheEnergyWithTheRamp) {
 // mouth each loses, in one step, the force that held it, of the order of the slack tension —
 // pinned as measured (233 N at F_s = 200 N, 954 N at 1 kN; energy under 5 mJ an exit).
 struct Unwinding {
-  int exits = 0;             // joints leaving over the mouth below the centre
-  double last_force = 0.0;   // [N] the largest force at a leaving joint's last held step
-  double last_energy = 0.0;  // [J] the largest contact energy lost there
+  int exits = 0;              // joints leaving over the mouth below the centre
+  double last_force = 0.0;    // [N] the largest force at a leaving joint's last held step
+  double last_energy = 0.0;   // [J] the largest contact energy lost there
+  double largest_drop = 0.0;  // [N] the largest fall of a leaving joint's force in one step
   bool converged = true;
 };
-Unwinding unwind(double slack) {
+Unwinding unwind(double slack, bool release = false, double damping = 2000.0) {
   const double t = 0.064, d = 0.018, k = 1e8, ft = 1000.0;
-  Sprocket w = pocket_wheel(t, d, 8, 0.0, 0.0, 1e-4, 1e8, 2000.0);
+  Sprocket w = pocket_wheel(t, d, 8, 0.0, 0.0, 1e-4, 1e8, damping);
+  w.pocket_release = release;
   w.driver = true;
   w.speed = -5.0;  // clockwise: the top runs along +x
   const double r = w.pitch_radius, d1 = w.pocket_angle, d2 = 2 * kPi / 8 - d1;
@@ -467,13 +583,18 @@ Unwinding unwind(double slack) {
   std::vector<SeatContact> prev(n);
   Unwinding out;
   for (int step = 0; step < 4000; ++step) {
-    if (!integ.step(m, s).converged) {
+    const StepReport rep = integ.step(m, s);
+    if (!rep.converged) {
+      std::printf("unwinding: Newton stopped at step %d\n", step);
       out.converged = false;
       break;
     }
     for (std::size_t i = 0; i < n; ++i) {
-      const SeatContact sc =
-          pocket_contact(w, s.x[i], s.y[i], s.vx[i], s.vy[i], s.angle[0], s.speed[0]);
+      const SeatContact sc = pocket_contact(w, s.x[i], s.y[i], s.vx[i], s.vy[i], s.angle[0],
+                                            s.speed[0], held_pocket(s, i, 0));
+      // the largest fall of a joint's force in one step on the leaving quarter
+      if (prev[i].active && s.y[i] < 0.0 && s.x[i] < 0.0 && s.time > 0.05)
+        out.largest_drop = std::max(out.largest_drop, prev[i].force - (sc.active ? sc.force : 0.0));
       const bool over_mouth = std::hypot(s.x[i], s.y[i]) > r + 0.5 * w.pocket_clearance;
       if (prev[i].active && !sc.active && over_mouth && s.y[i] < 0.0 && s.time > 0.05) {
         ++out.exits;
@@ -483,8 +604,11 @@ Unwinding unwind(double slack) {
       prev[i] = sc;
     }
   }
-  std::printf("unwinding, slack %.0f N: %d exits, largest last held force %.1f N, energy %.3g J\n",
-              slack, out.exits, out.last_force, out.last_energy);
+  std::printf(
+      "unwinding, slack %.0f N, %s, c_c %.0f: %d exits, largest last held force %.1f N, energy "
+      "%.3g J, largest fall in a step %.1f N\n",
+      slack, release ? "release" : "sharp mouth", damping, out.exits, out.last_force,
+      out.last_energy, out.largest_drop);
   return out;
 }
 
@@ -497,6 +621,21 @@ TEST(DynamicsPocket, UnwindingJointsLoseTheirForceAtOnceWithTheSharpMouth) {
     EXPECT_LT(u.last_force, 2.0 * slack) << slack;
     EXPECT_LT(u.last_energy, 5e-3) << slack;
   }
+}
+
+// The release (pocket_release) on the same unwinding, undamped contact (with c_c = 2000 N·s/m
+// Newton stalls: docs/models/dynamics.md, "Pocket wheel: unwinding"): a leaving joint's force
+// falls over several steps instead of in one — pinned as measured against the sharp mouth on the
+// same run.
+TEST(DynamicsPocket, UnwindingWithTheReleaseSpreadsTheFallOverSteps) {
+  for (double slack : {200.0, 1000.0}) {
+    const Unwinding sharp = unwind(slack, false, 0.0), soft = unwind(slack, true, 0.0);
+    ASSERT_TRUE(sharp.converged && soft.converged) << slack;
+    EXPECT_GE(soft.exits, 3) << slack;
+    EXPECT_GT(sharp.largest_drop, 0.5 * slack) << slack;
+    EXPECT_LT(soft.largest_drop, 0.6 * sharp.largest_drop) << slack;
+  }
+  EXPECT_FALSE(unwind(1000.0, true, 2000.0).converged);  // the open problem, pinned
 }
 
 TEST(DynamicsPocket, BadFieldsAreListedAtOnce) {

@@ -63,6 +63,14 @@ struct Sprocket {
   /// g ≤ c to 0 at g ≥ 2c; a joint within 2c of its vertex then meets the force and its
   /// derivative continuously where it crosses the mouth. Not the default: see the docs.
   double pocket_mouth = 0.0;
+  /// The pocket's release (docs/models/dynamics.md, "Pocket wheel: unwinding"): the contact's
+  /// energy is E₀(g) S(u), u = cos of the angle between e = q − C and the outward radial, S a C²
+  /// step from 1 at u ≤ u₁ = sin(δ1/2 + 5°) to 0 at u ≥ u₀ = sin(δ1/2 + 35°); a joint that has
+  /// been within the mouth (State::held_*) stays held by its pocket beyond the mouth until S or
+  /// g reaches 0, so a leaving joint's force falls to zero continuously in its position. An
+  /// option (false, the default, is the sharp mouth's release; false is required with
+  /// pocket_mouth > 0): with the contact's damping Newton stalls (docs, "Pocket wheel: unwinding").
+  bool pocket_release = false;
   /// [-] μ of the roller–seat contact: Coulomb friction against the roller's slip along the seat
   /// surface relative to the wheel (0: frictionless seats, the default)
   double friction = 0.0;
@@ -261,6 +269,10 @@ struct State {
   std::vector<double> slide;
   std::vector<double> slide_speed;  ///< [m/s] per sprocket: ṡ
   double takeup_damper_work = 0.0;  ///< [J] work of the take-ups' dampers so far (≤ 0)
+  /// per node: the pocket wheel (−1: none) and pocket vertex that hold the joint beyond the mouth
+  /// (Sprocket::pocket_release), set at the end of each step in which the joint was within a
+  /// mouth, cleared when its released contact's force is 0
+  std::vector<int> held_wheel, held_pocket;
   explicit State(std::size_t nodes = 0, std::size_t sprockets = 0)
       : x(nodes),
         y(nodes),
@@ -269,7 +281,9 @@ struct State {
         angle(sprockets),
         speed(sprockets),
         slide(sprockets),
-        slide_speed(sprockets) {}
+        slide_speed(sprockets),
+        held_wheel(nodes, -1),
+        held_pocket(nodes, 0) {}
   std::size_t nodes() const { return x.size(); }
 };
 
@@ -333,10 +347,13 @@ struct SeatContact {
   bool active = false;
   int seat = 0;              ///< the seat index k (any integer; seat k ≡ k mod z)
   double penetration = 0.0;  ///< [m] g = |e| + r − ri > 0 when active
-  double force = 0.0;        ///< [N] f ≥ 0, pushing the roller towards the seat centre
-  double stiffness = 0.0;    ///< [N/m] ∂f/∂g (0 when f is clamped at 0)
-  double damping = 0.0;      ///< [N·s/m] the damping coefficient at this penetration
-  double energy = 0.0;       ///< [J] the elastic contact energy
+  /// [m] the depth reported in max_penetration: g, except on a pocket's mouth ramp, where it is
+  /// the seats' law's depth for the ramp's elastic force (g there reaches 2c at almost no force)
+  double depth = 0.0;
+  double force = 0.0;      ///< [N] f ≥ 0, pushing the roller towards the seat centre
+  double stiffness = 0.0;  ///< [N/m] ∂f/∂g (0 when f is clamped at 0)
+  double damping = 0.0;    ///< [N·s/m] the damping coefficient at this penetration
+  double energy = 0.0;     ///< [J] the elastic contact energy
   /// [W] the power of the force's damping part on roller and wheel together, −(f − f_el) ġ ≤ 0
   /// (ġ the rate at the contact point relative to the wheel): the contact damper's dissipation
   double damping_power = 0.0;
@@ -373,14 +390,33 @@ void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx
 /// ramp above the mouth (Sprocket::pocket_mouth): there the force −∇(E₀ W s) has a radial part,
 /// and the result's n is the force's direction, its force the magnitude, dq_extra the rest of
 /// the elastic ∂F/∂q. Same result fields as seat_contact (curvature 1/|e|, the normal n = e/|e|).
+/// The release band of Sprocket::pocket_release: S = 1 for u ≤ full, 0 for u ≥ none.
+struct ReleaseBand {
+  double full = 0.0, none = 0.0;
+};
+ReleaseBand release_band(const Sprocket& w);
+/// `held`: the vertex index of the pocket that holds the joint (State::held_pocket) with
+/// pocket_release, kNoPocket otherwise; beyond the mouth a held joint keeps that pocket's contact.
+inline constexpr int kNoPocket = -2147483647 - 1;
 SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, double vy,
-                           double angle, double speed);
+                           double angle, double speed, int held = kNoPocket);
+/// After a step (Integrator::step): a joint within a pocket wheel's mouth (with pocket_release)
+/// is held by its nearest pocket; a held joint beyond the mouth is let go when its contact's
+/// force is 0 (S(u) = 0 or g ≤ 0). Sizes the state's held arrays if they do not fit.
+void update_held(const Model& model, State& s);
+/// The pocket a state holds node i in on wheel w (kNoPocket: none).
+inline int held_pocket(const State& s, std::size_t i, std::size_t w) {
+  return i < s.held_wheel.size() && i < s.held_pocket.size() &&
+                 s.held_wheel[i] == static_cast<int>(w)
+             ? s.held_pocket[i]
+             : kNoPocket;
+}
 
 /// The contact of a node with a wheel of either kind, and the distance from the centre beyond
 /// which there is none.
 inline SeatContact wheel_contact(const Sprocket& w, double x, double y, double vx, double vy,
-                                 double angle, double speed) {
-  return w.pocket ? pocket_contact(w, x, y, vx, vy, angle, speed)
+                                 double angle, double speed, int held = kNoPocket) {
+  return w.pocket ? pocket_contact(w, x, y, vx, vy, angle, speed, held)
                   : seat_contact(w, x, y, vx, vy, angle, speed);
 }
 inline double contact_reach(const Sprocket& w) {

@@ -1600,7 +1600,8 @@ double chain_torque(const Model& model, const State& s, std::size_t w) {
   double sum = 0.0;
   for (std::size_t i = 0; i < s.nodes(); ++i)
     sum += wheel_contact(wheel, s.x[i], s.y[i], s.vx[i] - s.slide_speed[w] * wheel.takeup_dx,
-                         s.vy[i] - s.slide_speed[w] * wheel.takeup_dy, s.angle[w], s.speed[w])
+                         s.vy[i] - s.slide_speed[w] * wheel.takeup_dy, s.angle[w], s.speed[w],
+                         held_pocket(s, i, w))
                .torque;  // the ISO seat or the pocket
   return sum;
 }

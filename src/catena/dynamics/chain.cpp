@@ -450,7 +450,7 @@ void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx
   // the part of the damper, f − f_el, is the dissipation
   c.damping_power = -(c.force - elastic) * rate;
   c.active = true;
-  c.penetration = g;
+  c.penetration = c.depth = g;
   // the reaction +f n acts on the wheel along the line through the roller centre q
   c.torque = c.force * (rx * c.ny - ry * c.nx);
 }
@@ -797,8 +797,8 @@ Energy energy(const Model& model, const State& state) {
       e.elastic += slide_stop(model.sprockets[w], sl, 0.0).energy;  // an end stop pressed
     }
     for (std::size_t i = 0; i < n; ++i) {
-      const SeatContact c =
-          wheel_contact(wheel, state.x[i], state.y[i], 0.0, 0.0, state.angle[w], 0.0);
+      const SeatContact c = wheel_contact(wheel, state.x[i], state.y[i], 0.0, 0.0, state.angle[w],
+                                          0.0, held_pocket(state, i, w));
       if (c.active) e.elastic += c.energy;
     }
   }

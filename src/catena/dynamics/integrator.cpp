@@ -242,16 +242,17 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       const double qx = (1.0 - th) * s.x[i] + th * ux_[i];
       const double qy = (1.0 - th) * s.y[i] + th * uy_[i];
       const double rx = qx - wheel.centre_x, ry = qy - wheel.centre_y;
-      if (rx * rx + ry * ry > reach * reach) continue;
+      const int held = held_pocket(s, i, w);
+      if (rx * rx + ry * ry > reach * reach && held == kNoPocket) continue;
       if (model.is_pinned(i)) continue;
       double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
       if (slides) {  // relative to the sliding centre
         vx -= slide_rate * ex;
         vy -= slide_rate * ey;
       }
-      const SeatContact sc = wheel_contact(wheel, qx, qy, vx, vy, psi, omega);
+      const SeatContact sc = wheel_contact(wheel, qx, qy, vx, vy, psi, omega, held);
       if (!sc.active) continue;
-      max_penetration_ = std::max(max_penetration_, sc.penetration);
+      max_penetration_ = std::max(max_penetration_, sc.depth);
       contact_damping_work_ += h * sc.damping_power;
       torque += sc.torque;
       solver_.rhs[i].x -= h * sc.force * sc.nx;  // the force on the roller is −f n
@@ -779,6 +780,7 @@ StepReport Integrator::step(const Model& model, State& s) {
       s.slide[w] = slide1_[w];
     }
   }
+  update_held(model, s);
   s.time += h;
   history_time_ = s.time;
   return report;

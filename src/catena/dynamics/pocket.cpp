@@ -53,14 +53,102 @@ Step smooth_step(double t, double a, double b) {
 }
 }  // namespace
 
+namespace {
+// The angle of pocket vertex k (even k: ψ + (k/2) τ; odd: ψ + ((k − 1)/2) τ + δ1).
+double vertex_angle(const Sprocket& w, int k, double angle) {
+  const double tau = 2.0 * std::numbers::pi / w.teeth;
+  const int m = k >= 0 ? k / 2 : -((1 - k) / 2);  // floor(k/2)
+  return angle + m * tau + (k - 2 * m == 1 ? w.pocket_angle : 0.0);
+}
+
+// The release law (Sprocket::pocket_release) on a contact whose seat, normal n = e/|e| and
+// curvature are set: energy E₀(g) S(u), u = e·r̂/|e|, S falling from 1 at u₁ to 0 at u₀.
+// F = −S f₀ n − E₀ S′ ∇u, ∇u = (r̂ − u n)/|e| + (n − u r̂)/ρ. The torque is −∂E/∂ψ through the
+// vertex C(ψ) only.
+void apply_release(const Sprocket& w, double g, double dist, double rx, double ry, double vx,
+                   double vy, double speed, SeatContact& c) {
+  const double rho = std::hypot(rx, ry);
+  const double nx = c.nx, ny = c.ny, ux = rx / rho, uy = ry / rho;
+  const double u = nx * ux + ny * uy;
+  const ReleaseBand band = release_band(w);
+  const Step st = smooth_step(u, band.full, band.none);
+  const double sv = 1.0 - st.s, s1 = -st.ds, s2 = -st.dds;
+  if (!(sv > 0.0)) return;  // inactive
+  apply_seat_law(w, g, rx, ry, vx, vy, speed, c);
+  const double eps = w.contact_smoothing, kc = w.contact_stiffness;
+  const double fel = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
+  const double kel = g < eps ? kc * g / eps : kc;
+  const double e0 = c.energy, f0 = c.force;
+  const double gu[2] = {(ux - u * nx) / dist + (nx - u * ux) / rho,
+                        (uy - u * ny) / dist + (ny - u * uy) / rho};
+  const double ge[2] = {(ux - u * nx) / dist, (uy - u * ny) / dist};  // through e only
+  const double a = sv * f0, b = e0 * s1;                              // F = −a n − b ∇u
+  const double fx = -a * nx - b * gu[0], fy = -a * ny - b * gu[1];
+  const double len = std::hypot(fx, fy);
+  c.energy = e0 * sv;
+  c.damping_power *= sv;
+  c.damping *= sv;
+  c.stiffness *= sv;
+  // −∂E/∂ψ = −F_e·∂C/∂ψ, F_e = −a n − b ∇_e u, ∂C/∂ψ = ẑ × (C − O)
+  const double fex = -a * nx - b * ge[0], fey = -a * ny - b * ge[1];
+  const double cx = c.seat_x - w.centre_x, cy = c.seat_y - w.centre_y;
+  c.torque = -(fex * -cy + fey * cx);
+  if (!(len > 0.0)) {
+    c.force = c.depth = 0.0;
+    c.stiffness = c.damping = 0.0;
+    return;
+  }
+  c.nx = -fx / len;
+  c.ny = -fy / len;
+  c.force = len;
+  {  // the depth reported: the seats' law's depth for the elastic force
+    const double ae = sv * fel;
+    const double fe = std::hypot(ae * nx + b * gu[0], ae * ny + b * gu[1]);
+    c.depth = fe < 0.5 * kc * eps ? std::sqrt(2.0 * eps * fe / kc) : fe / kc + 0.5 * eps;
+  }
+  // The exact elastic ∂F/∂q (the Hessian of −E), less the block the fields give (dq_extra):
+  // F = −A n − B ∇u, A = S f_el, B = E₀ S′; ∇A = S k_el n + f_el S′ ∇u, ∇B = f_el S′ n + E₀ S″ ∇u;
+  // ∂n/∂q = P_n/|e|, ∂r̂/∂q = P_r/ρ, ∂|e|/∂q = nᵀ, ∂ρ/∂q = r̂ᵀ.
+  const double A = sv * fel, B = e0 * s1;
+  const double n[2] = {nx, ny}, r[2] = {ux, uy};
+  const double dA[2] = {sv * kel * nx + fel * s1 * gu[0], sv * kel * ny + fel * s1 * gu[1]};
+  const double dB[2] = {fel * s1 * nx + e0 * s2 * gu[0], fel * s1 * ny + e0 * s2 * gu[1]};
+  const double t1[2] = {ux - u * nx, uy - u * ny}, t2[2] = {nx - u * ux, ny - u * uy};
+  double exact[4];
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const double id = i == j ? 1.0 : 0.0;
+      const double pn = id - n[i] * n[j], pr = id - r[i] * r[j];
+      // ∂(∇u)_i/∂q_j
+      const double dgu =
+          (pr / rho - n[i] * gu[j] - u * pn / dist) / dist - t1[i] * n[j] / (dist * dist) +
+          (pn / dist - r[i] * gu[j] - u * pr / rho) / rho - t2[i] * r[j] / (rho * rho);
+      exact[2 * i + j] = -n[i] * dA[j] - A * pn / dist - gu[i] * dB[j] - B * dgu;
+    }
+  }
+  const double ft = c.force * c.curvature, kn = c.stiffness, mx = c.nx, my = c.ny;
+  const double fields[4] = {-(kn * mx * mx + ft * (1 - mx * mx)), -(kn - ft) * mx * my,
+                            -(kn - ft) * mx * my, -(kn * my * my + ft * (1 - my * my))};
+  for (int i = 0; i < 4; ++i) c.dq_extra[i] = exact[i] - fields[i];
+}
+}  // namespace
+
+ReleaseBand release_band(const Sprocket& w) {
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  return {std::sin(0.5 * w.pocket_angle + 5.0 * kDeg),
+          std::sin(0.5 * w.pocket_angle + 35.0 * kDeg)};
+}
+
 SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, double vy,
-                           double angle, double speed) {
+                           double angle, double speed, int held) {
   SeatContact c;
   const double rx = x - w.centre_x, ry = y - w.centre_y;
   const double reach = contact_reach(w);  // the mouth R + c/2, or its ramp's top
   const double rho2 = rx * rx + ry * ry;
-  if (rho2 > reach * reach) return c;
-  const PocketVertex v = nearest_pocket(w, std::atan2(ry, rx), angle);
+  const bool beyond = rho2 > reach * reach;
+  if (beyond && !(w.pocket_release && held != kNoPocket)) return c;
+  const PocketVertex v = beyond ? PocketVertex{held, vertex_angle(w, held, angle)}
+                                : nearest_pocket(w, std::atan2(ry, rx), angle);
   c.seat = v.index;
   c.seat_x = w.centre_x + w.pitch_radius * std::cos(v.angle);
   c.seat_y = w.centre_y + w.pitch_radius * std::sin(v.angle);
@@ -72,6 +160,10 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
   c.nx = nx;
   c.ny = ny;
   c.curvature = 1.0 / dist;
+  if (w.pocket_release) {
+    apply_release(w, g, dist, rx, ry, vx, vy, speed, c);
+    return c;
+  }
   const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance;
   const double rho = std::sqrt(rho2);
   if (!(w.pocket_mouth > 0.0) || rho <= mouth) {     // within the mouth: the pocket as it was
@@ -106,13 +198,19 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
   c.damping *= ss.s * wg;
   c.stiffness *= ss.s * wg;
   if (!(len > 0.0)) {
-    c.force = 0.0;
+    c.force = c.depth = 0.0;
     c.stiffness = c.damping = 0.0;
     return c;
   }
   c.nx = vxn / len;
   c.ny = vyn / len;
   c.force = len;
+  // the depth reported (max_penetration): the seats' law's depth for the ramp's elastic force
+  // |F_el| (the same vector with the damping left out) — g reaches 2c over the ramp, where the
+  // force is nearly 0
+  const double ael = ss.s * (wg * fel + e0 * dwg);
+  const double fe = std::hypot(ael * nx - radial * ux, ael * ny - radial * uy);
+  c.depth = fe < 0.5 * kc * eps ? std::sqrt(2.0 * eps * fe / kc) : fe / kc + 0.5 * eps;
   // the exact elastic ∂F/∂q = −Φ'' s n nᵀ + Φ' s' (n r̂ᵀ + r̂ nᵀ) − Φ' s P_n/|e| − Φ s'' r̂ r̂ᵀ
   // + Φ s' P_r/ρ, less the block the fields give
   const double s0 = ss.s, s1 = ss.ds, s2 = ss.dds, pe = dphi * s0 / dist, pr = phi * s1 / rho;
@@ -130,6 +228,32 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
                             -(kn - ft) * mx * my, -(kn * my * my + ft * (1 - my * my))};
   for (int i = 0; i < 4; ++i) c.dq_extra[i] = exact[i] - fields[i];
   return c;
+}
+
+void update_held(const Model& model, State& s) {
+  const std::size_t n = s.nodes();
+  if (s.held_wheel.size() != n || s.held_pocket.size() != n) {
+    s.held_wheel.assign(n, -1);
+    s.held_pocket.assign(n, 0);
+  }
+  for (std::size_t w = 0; w < model.sprockets.size() && w < s.angle.size(); ++w) {
+    if (!model.sprockets[w].pocket || !model.sprockets[w].pocket_release) continue;
+    const Sprocket wheel = at_slide(
+        model.sprockets[w], model.sprockets[w].takeup && w < s.slide.size() ? s.slide[w] : 0.0);
+    const double mouth = wheel.pitch_radius + 0.5 * wheel.pocket_clearance;
+    const int wi = static_cast<int>(w);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double rx = s.x[i] - wheel.centre_x, ry = s.y[i] - wheel.centre_y;
+      if (rx * rx + ry * ry <= mouth * mouth) {
+        s.held_wheel[i] = wi;
+        s.held_pocket[i] = nearest_pocket(wheel, std::atan2(ry, rx), s.angle[w]).index;
+      } else if (s.held_wheel[i] == wi &&
+                 !pocket_contact(wheel, s.x[i], s.y[i], 0.0, 0.0, s.angle[w], 0.0, s.held_pocket[i])
+                      .active) {
+        s.held_wheel[i] = -1;
+      }
+    }
+  }
 }
 
 void pocket_issues(std::vector<Issue>& out, const Sprocket& w, const std::string& f) {
@@ -151,6 +275,10 @@ void pocket_issues(std::vector<Issue>& out, const Sprocket& w, const std::string
       !(w.pocket_mouth <= w.pocket_clearance)) {
     out.push_back({f + "pocket_mouth", check::format_si(w.pocket_mouth, "m"),
                    "a length in [0, pocket clearance] (the mouth's ramp; 0 a sharp mouth)"});
+  } else if (w.pocket_mouth > 0.0 && w.pocket_release) {
+    out.push_back({f + "pocket_mouth", check::format_si(w.pocket_mouth, "m"),
+                   "0 with the pocket's release (pocket_release): the ramp is the sharp "
+                   "mouth's option"});
   }
   check::finite_positive(out, (f + "contact_stiffness").c_str(), w.contact_stiffness, "N/m");
   if (!std::isfinite(w.contact_smoothing) || !(w.contact_smoothing > 0.0) ||
