@@ -160,6 +160,7 @@ class Integrator {
   std::vector<double> dvx_, dvy_, dspeed_, dslide_speed_;
   double history_time_ = NAN;
   double max_penetration_ = 0.0;
+  std::vector<GuideFrame> guide_frame_;   // per guide: guide_frame, refreshed with the hint
   GuideHint guide_hint_;                  // per guide: the nodes near it
   std::vector<std::uint32_t> all_nodes_;  // 0 … N − 1 (the guide loops without the hint)
   std::vector<double> qx_, qy_;           // per node: the θ point the hint was last checked at

@@ -38,13 +38,14 @@ std::size_t checked_nodes(const Model& model, const IntegratorOptions& options) 
 // u, with the step's velocity (u − x₀)/h: the force the step applies. The guide's bounds cull
 // first (exact: a roller outside them cannot touch it; guide_bounds), so that a node far from a
 // rail costs a few comparisons.
-GuideContact guide_contact_at_theta(const Guide& guide, const GuideBounds& bounds, const State& s,
+GuideContact guide_contact_at_theta(const Guide& guide, const GuideFrame& frame,
+                                    const GuideBounds& bounds, const State& s,
                                     const std::vector<double>& ux, const std::vector<double>& uy,
                                     std::size_t i, double th, double h) {
   const double qx = (1.0 - th) * s.x[i] + th * ux[i];
   const double qy = (1.0 - th) * s.y[i] + th * uy[i];
   if (!guide_touch_possible(bounds, qx, qy)) return {};
-  return guide_contact(guide, qx, qy, (ux[i] - s.x[i]) / h, (uy[i] - s.y[i]) / h);
+  return guide_contact(guide, frame, qx, qy, (ux[i] - s.x[i]) / h, (uy[i] - s.y[i]) / h);
 }
 }  // namespace
 
@@ -99,6 +100,11 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
 }
 
 void Integrator::refresh_guide_hint(const Model& model, const State& s, double th) {
+  // the rails' frames, O(G): recomputed here so that a model whose guides changed since the last
+  // step is still right
+  guide_frame_.resize(model.guides.size());
+  for (std::size_t g = 0; g < model.guides.size(); ++g)
+    guide_frame_[g] = guide_frame(model.guides[g]);
   if (model.guides.empty() || !options_.guide_hint) return;
   for (std::size_t i = 0; i < qx_.size(); ++i) {
     qx_[i] = (1.0 - th) * s.x[i] + th * ux_[i];
@@ -411,7 +417,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     for (const std::uint32_t i :
          options_.guide_hint ? guide_hint_.nodes(g) : std::span<const std::uint32_t>(all_nodes_)) {
       if (model.is_pinned(i)) continue;
-      const GuideContact gc = guide_contact_at_theta(guide, bounds, s, ux_, uy_, i, th, h);
+      const GuideContact gc =
+          guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_, i, th, h);
       if (!gc.active) continue;
       solver_.rhs[i].x += h * gc.fx;
       solver_.rhs[i].y += h * gc.fy;
@@ -763,7 +770,8 @@ StepReport Integrator::step(const Model& model, State& s) {
     for (const std::uint32_t i :
          options_.guide_hint ? guide_hint_.nodes(g) : std::span<const std::uint32_t>(all_nodes_)) {
       if (model.is_pinned(i)) continue;
-      const GuideContact gc = guide_contact_at_theta(guide, bounds, s, ux_, uy_, i, th, h);
+      const GuideContact gc =
+          guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_, i, th, h);
       if (!gc.active) continue;
       report.friction_work += h * gc.friction_force * gc.slip;
       report.contact_damping_work += h * gc.damping_power;
