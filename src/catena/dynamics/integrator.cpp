@@ -667,7 +667,9 @@ StepReport Integrator::step(const Model& model, State& s) {
       // estimated from the contraction ϑ = |Δ_k|/|Δ_{k−1}| as ϑ/(1 − ϑ)·|Δ_k| (Hairer & Wanner,
       // Solving ODEs II, §IV.8), is: near the solution Newton's error falls quadratically and the
       // correction that would only confirm it is skipped. Not with guides (as the predictor):
-      // the conveyor's tension means (validation (6b)) moved by 1-2 % with it, beyond their 1 %.
+      // with both, the conveyor's tension means (validation (6b)) came out 1.04 % off, beyond
+      // their 1 % — the scatter of its window means under picometre changes of the steps (±0.3 %,
+      // docs/models/dynamics.md, "The predictor and the estimate with guides"), not a bias.
       // No estimate before two corrections of one sequence (previous is infinite until then, and
       // again after a backtracked step).
       const double rate = correction / previous;
@@ -735,8 +737,8 @@ StepReport Integrator::step(const Model& model, State& s) {
     }
     return report;
   };
-  // not with guides: their regularised friction makes the velocity's change from step to step
-  // a poor guess (more iterations on the conveyor, and its tension means off by 1-2 %)
+  // not with guides: with it and the estimate the conveyor's validation (6b) missed its 1 % by
+  // its own scatter (above; docs/models/dynamics.md, "The predictor and the estimate with guides")
   const double extrapolate = s.time == history_time_ && model.guides.empty() ? h * th : 0.0;
   StepReport report = newton(extrapolate);
   if (!report.converged && extrapolate > 0.0) {
