@@ -120,12 +120,12 @@ BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFriction)->Unit(benchmark::kMicrosecon
 // (validation (6b)): 136 links of 12B (pretension 20 N, 5e7 N/m, 100 N·s/m) over two z = 16
 // wheels 60 pitches apart, the driver at 5 rad/s, a tail idler (J = 0.002 kg·m²), gravity; both
 // runs on level rails with μ = 0.3 (1e7 N/m, 100 N·s/m) from 3 pitches after one wheel to 3 before
-// the other, each with a 50 mm lead-in arc at its entry end; θ = 0.6, h = 1e-4 s. Every guide is
-// tried against every node in each Newton iteration, O(N·G) a step: the argument cuts each straight
-// rail into that many collinear pieces end to end (1: the example's 4 guides; 4: 10; 16: 34 —
+// the other, each with a 50 mm lead-in arc at its entry end; θ = 0.6, h = 1e-4 s. The argument
+// cuts each straight rail into that many collinear pieces end to end (1: the example's 4 guides;
+// 4: 10; 16: 34; 25: 52 —
 // the same rails, a roller on a joint between two pieces touches both for an instant), and 0
 // runs the loop without guides (it sags under gravity: the cost of the rest of the step).
-void BM_DynamicsConveyorGuides(benchmark::State& bs) {
+void conveyor_guides(benchmark::State& bs, bool hint) {
   constexpr double kPi = std::numbers::pi;
   constexpr int kTeeth = 16, kSpan = 60, kGap = 3;
   constexpr double kOmega = 5.0, kRoller = 0.01207;
@@ -172,7 +172,7 @@ void BM_DynamicsConveyorGuides(benchmark::State& bs) {
     if (s.x[i] > 0.5 * kPitch && s.x[i] < centre - 0.5 * kPitch)
       s.y[i] = s.y[i] > 0 ? level : -level;
   }
-  Integrator integ(m, {.step = 1e-4, .theta = 0.6});
+  Integrator integ(m, {.step = 1e-4, .theta = 0.6, .guide_hint = hint});
   long iterations = 0, steps = 0;
   for (auto _ : bs) {
     const StepReport rep = integ.step(m, s);
@@ -191,11 +191,24 @@ void BM_DynamicsConveyorGuides(benchmark::State& bs) {
   bs.counters["real_time_factor"] =
       benchmark::Counter(1e-4 * static_cast<double>(steps), benchmark::Counter::kIsRate);
 }
+// The guides tried through the per-node hint (GuideHint: O(N + G + pairs) a step), and, for the
+// comparison, every node against every guide (O(N·G); the results are bit-identical). 25 pieces:
+// 52 guides.
+void BM_DynamicsConveyorGuides(benchmark::State& bs) { conveyor_guides(bs, true); }
 BENCHMARK(BM_DynamicsConveyorGuides)
     ->Arg(0)
     ->Arg(1)
     ->Arg(4)
     ->Arg(16)
+    ->Arg(25)
+    ->Unit(benchmark::kMicrosecond)
+    ->MinTime(2.0);
+void BM_DynamicsConveyorGuidesEveryNode(benchmark::State& bs) { conveyor_guides(bs, false); }
+BENCHMARK(BM_DynamicsConveyorGuidesEveryNode)
+    ->Arg(1)
+    ->Arg(4)
+    ->Arg(16)
+    ->Arg(25)
     ->Unit(benchmark::kMicrosecond)
     ->MinTime(2.0);
 

@@ -203,6 +203,17 @@ struct GuideContact {
   double dv[4] = {0, 0, 0, 0};  ///< [N·s/m] ∂F/∂v
 };
 GuideContact guide_contact(const Guide& g, double x, double y, double vx, double vy);
+/// A straight rail's unit direction from its first end to its second and its length (zeros for
+/// an arc): what guide_contact computes from the ends on each call, computed once.
+struct GuideFrame {
+  double ux = 0.0, uy = 0.0;  ///< unit direction
+  double length = 0.0;        ///< [m]
+};
+GuideFrame guide_frame(const Guide& g);
+/// guide_contact with the rail's frame given (frame = guide_frame(g)): the same result, bit for
+/// bit.
+GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
+                           double vy);
 /// An axis-aligned box that holds every roller centre a guide can touch: guide_contact(g, x, y,
 /// …) is active only if guide_touch_possible(guide_bounds(g), x, y). A straight rail's segment
 /// widened by the roller radius, an arc's whole circle of radius + roller radius, each padded by

@@ -32,6 +32,7 @@
 #include "catena/dynamics/block_pentadiagonal.hpp"
 #include "catena/dynamics/block_tridiagonal.hpp"
 #include "catena/dynamics/chain.hpp"
+#include "catena/dynamics/guide_hint.hpp"
 
 namespace catena::dynamics {
 
@@ -40,6 +41,9 @@ struct IntegratorOptions {
   int max_iterations = 25;   ///< Newton iterations per step
   double tolerance = 1e-10;  ///< converged when max |Δx| ≤ tolerance · pitch
   double theta = 0.5;        ///< θ in [½, 1]: ½ energy-conserving midpoint, > ½ damped
+  /// Try each guide only against the nodes GuideHint lists near it (O(N + G + pairs) a step);
+  /// false: every node against every guide (O(N·G)), for verification. Bit-identical results.
+  bool guide_hint = true;
 };
 
 std::vector<Issue> validate(const IntegratorOptions& options);
@@ -113,6 +117,9 @@ class Integrator {
   // friction; with it, the exact block-pentadiagonal matrix (the tridiagonal arrays plus the
   // hinges' blocks two nodes apart, far_lower_/far_upper_) in penta_.
   SolveStatus factor();
+  // Brings the guide hint up to date with the θ points of the iterate ux_, uy_ (O(N) + a rebuild
+  // when a node has moved more than its margin).
+  void refresh_guide_hint(const Model& model, const State& s, double th);
   void substitute(std::span<const Vec2> b, std::span<Vec2> x);
   void substitute(std::span<const Vec2> b, std::span<Vec2> x, std::span<const Vec2> b2,
                   std::span<Vec2> x2);
@@ -153,6 +160,10 @@ class Integrator {
   std::vector<double> dvx_, dvy_, dspeed_, dslide_speed_;
   double history_time_ = NAN;
   double max_penetration_ = 0.0;
+  std::vector<GuideFrame> guide_frame_;   // per guide: guide_frame, refreshed with the hint
+  GuideHint guide_hint_;                  // per guide: the nodes near it
+  std::vector<std::uint32_t> all_nodes_;  // 0 … N − 1 (the guide loops without the hint)
+  std::vector<double> qx_, qy_;           // per node: the θ point the hint was last checked at
   // the dissipative works of the last assembly's iterate (StepReport's fields)
   double damper_work_ = 0.0, drag_work_ = 0.0, contact_damping_work_ = 0.0;
   double seat_friction_work_ = 0.0;

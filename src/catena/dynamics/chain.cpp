@@ -250,14 +250,25 @@ GuideBounds guide_bounds(const Guide& g) {
   return {x_lo - pad, x_hi + pad, y_lo - pad, y_hi + pad};
 }
 
+GuideFrame guide_frame(const Guide& g) {
+  if (g.kind != Guide::Kind::kStraight) return {};
+  const double ax = g.x1 - g.x0, ay = g.y1 - g.y0;
+  const double len = std::sqrt(ax * ax + ay * ay);
+  return {ax / len, ay / len, len};
+}
+
 GuideContact guide_contact(const Guide& gd, double x, double y, double vx, double vy) {
+  return guide_contact(gd, guide_frame(gd), x, y, vx, vy);
+}
+
+GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, double y, double vx,
+                           double vy) {
   GuideContact c;
   const double r = gd.roller_radius;
   double g = 0.0, kappa = 0.0, nx = 0.0, ny = 0.0;
   if (gd.kind == Guide::Kind::kStraight) {
-    const double ax = gd.x1 - gd.x0, ay = gd.y1 - gd.y0;
-    const double len = std::sqrt(ax * ax + ay * ay);
-    const double ux = ax / len, uy = ay / len;
+    const double len = frame.length;
+    const double ux = frame.ux, uy = frame.uy;
     nx = -uy;  // the left normal: the free side
     ny = ux;
     const double rx = x - gd.x0, ry = y - gd.y0;

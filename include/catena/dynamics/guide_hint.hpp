@@ -1,0 +1,69 @@
+// The guides' node hint (docs/models/dynamics.md, "Guides: O(N) a step").
+//
+// Per guide, the nodes that may be inside its bounding box (guide_bounds): the nodes whose
+// positions, when the hint was last built, lay within the box widened by a margin. While no node
+// has moved more than the margin (in x or in y) from where it was then, every node inside a
+// guide's box is on that guide's list, so the integrator tries only the listed nodes against each
+// guide instead of every node against every guide. A node that moves further triggers a rebuild,
+// which bins the nodes on a uniform grid laid over the guides' widened boxes: O(N + G + pairs).
+// Checking the positions is O(N) and comparing the guides' boxes with the ones the hint was built
+// for is O(G), so a step costs O(N + G + listed pairs) instead of O(N·G).
+//
+// Each guide's list is in increasing node order, so that a loop over a guide's listed nodes visits
+// the pairs in the same order as a loop over all nodes: results are bit-identical.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "catena/dynamics/chain.hpp"
+
+namespace catena::dynamics {
+
+class GuideHint {
+ public:
+  /// `margin` [m] > 0: how far a node may move before the lists are rebuilt (larger: fewer
+  /// rebuilds, longer lists).
+  explicit GuideHint(double margin = 0.0) : margin_(margin >= 0.0 ? margin : 0.0) {}
+
+  /// Makes the lists hold every node i with guide_touch_possible(guide_bounds(guides[g]), x[i],
+  /// y[i]) for every g (and possibly more), rebuilding them when a node has moved more than the
+  /// margin since the last build, when the guides' boxes changed, or when the node count changed.
+  /// Returns true when it rebuilt. x and y have one entry per node.
+  bool update(std::span<const Guide> guides, std::span<const double> x, std::span<const double> y);
+
+  /// Guide g's listed nodes, increasing. Valid after update.
+  std::span<const std::uint32_t> nodes(std::size_t g) const {
+    return {nodes_.data() + start_[g], nodes_.data() + start_[g + 1]};
+  }
+  /// The guides' boxes as of the last update (guide_bounds of each).
+  std::span<const GuideBounds> bounds() const { return bounds_; }
+  double margin() const { return margin_; }
+  std::size_t rebuilds() const { return rebuilds_; }
+
+ private:
+  void rebuild_grid();
+  std::size_t cell_index(double v, double origin, std::size_t side) const;
+  void rebuild_lists(std::span<const double> x, std::span<const double> y);
+
+  double margin_;
+  std::vector<GuideBounds> bounds_;       // per guide: guide_bounds
+  std::vector<GuideBounds> wide_;         // per guide: the box widened by the list's reach
+  std::vector<std::uint8_t> everywhere_;  // per guide: a non-finite box, every node listed
+  // the grid over the finite widened boxes: cell (cx, cy) lists the guides whose widened box
+  // overlaps it, in cell_guides_[cell_start_[c] .. cell_start_[c + 1])
+  double grid_x0_ = 0.0, grid_y0_ = 0.0, cell_ = 1.0;
+  std::size_t grid_nx_ = 0, grid_ny_ = 0;
+  std::vector<std::size_t> cell_start_;
+  std::vector<std::uint32_t> cell_guides_;
+  std::vector<double> hint_x_, hint_y_;  // per node: where it was at the last build
+  std::vector<std::size_t> start_;       // per guide + 1: its list in nodes_
+  std::vector<std::uint32_t> nodes_;
+  std::vector<std::size_t> fill_;  // scratch: per guide, the next free slot
+  bool built_ = false;
+  std::size_t rebuilds_ = 0;
+};
+
+}  // namespace catena::dynamics

@@ -1,0 +1,258 @@
+// The guides' node hint (docs/models/dynamics.md, "Guides: O(N) a step"): on random guides and
+// random node motions (small moves that keep the lists, large ones that rebuild them, jumps, guides
+// replaced), every node inside a guide's bounding box is on that guide's list, the lists are in
+// increasing node order and hold only nodes near the box; and the integrator gives bit-identical
+// states and works with the hint and with every node tried against every guide, on a conveyor loop
+// with 26 guides run far enough for the lists to be rebuilt many times.
+#include "catena/dynamics/guide_hint.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "catena/dynamics/integrator.hpp"
+
+namespace catena::dynamics {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Guide random_guide(std::mt19937_64& rng, int kind) {
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  auto uni = [&](double a, double b) { return a + (b - a) * u01(rng); };
+  Guide g;
+  g.roller_radius = uni(2e-3, 1.5e-2);
+  g.contact_stiffness = 1e7;
+  g.contact_damping = 100.0;
+  g.friction = 0.3;
+  const double cx = uni(-2.0, 2.0), cy = uni(-2.0, 2.0);
+  if (kind % 2 == 0) {
+    const double len = uni(1e-3, 1.5), dir = uni(-kPi, kPi);
+    g.x0 = cx;
+    g.y0 = cy;
+    g.x1 = cx + len * std::cos(dir);
+    g.y1 = cy + len * std::sin(dir);
+  } else {
+    g.kind = Guide::Kind::kArc;
+    g.centre_x = cx;
+    g.centre_y = cy;
+    g.radius = uni(0.02, 0.6);
+    g.start_angle = uni(-kPi, kPi);
+    g.end_angle = g.start_angle + uni(0.1, 2.0 * kPi);
+    g.inside = kind % 4 == 1;
+  }
+  return g;
+}
+
+// A point on or near a guide's surface (within ±2 roller radii of it), near an edge of a guide's
+// box (where a node crosses into it), or anywhere at random.
+void place(std::mt19937_64& rng, const std::vector<Guide>& guides, double margin, double& x,
+           double& y) {
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  auto uni = [&](double a, double b) { return a + (b - a) * u01(rng); };
+  const double pick = u01(rng);
+  if (pick < 0.2) {
+    x = uni(-2.5, 2.5);
+    y = uni(-2.5, 2.5);
+    return;
+  }
+  if (pick < 0.5) {  // near an edge of a guide's box, within ±1.5 margins of it
+    const GuideBounds b = guide_bounds(
+        guides[std::min(guides.size() - 1,
+                        static_cast<std::size_t>(u01(rng) * static_cast<double>(guides.size())))]);
+    const double off = uni(-1.5, 1.5) * margin;
+    const int edge = static_cast<int>(4.0 * u01(rng));
+    x = edge == 0 ? b.x_lo + off : edge == 1 ? b.x_hi + off : uni(b.x_lo, b.x_hi);
+    y = edge == 2 ? b.y_lo + off : edge == 3 ? b.y_hi + off : uni(b.y_lo, b.y_hi);
+    return;
+  }
+  const Guide& g = guides[std::min(
+      guides.size() - 1, static_cast<std::size_t>(u01(rng) * static_cast<double>(guides.size())))];
+  const double off = uni(-2.0, 2.0) * g.roller_radius;
+  if (g.kind == Guide::Kind::kStraight) {
+    const double ax = g.x1 - g.x0, ay = g.y1 - g.y0, len = std::hypot(ax, ay);
+    const double s = uni(-0.05, 1.05) * len;
+    x = g.x0 + ax / len * s - ay / len * off;
+    y = g.y0 + ay / len * s + ax / len * off;
+  } else {
+    const double a = g.start_angle + uni(-0.05, 1.05) * (g.end_angle - g.start_angle);
+    x = g.centre_x + (g.radius + off) * std::cos(a);
+    y = g.centre_y + (g.radius + off) * std::sin(a);
+  }
+}
+
+TEST(DynamicsGuideHint, ListsEveryNodeInsideAGuidesBoxOnRandomMotions) {
+  std::mt19937_64 rng(2611);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  constexpr double kMargin = 0.005;
+  constexpr std::size_t kGuides = 50, kNodes = 600;
+  std::vector<Guide> guides;
+  for (std::size_t g = 0; g < kGuides; ++g)
+    guides.push_back(random_guide(rng, static_cast<int>(g)));
+  std::vector<double> x(kNodes), y(kNodes);
+  for (std::size_t i = 0; i < kNodes; ++i) place(rng, guides, kMargin, x[i], y[i]);
+  std::vector<double> vx(kNodes), vy(kNodes);
+  for (std::size_t i = 0; i < kNodes; ++i) {
+    const double a = 2.0 * kPi * u01(rng), speed = 0.2 * kMargin * u01(rng);
+    vx[i] = speed * std::cos(a);
+    vy[i] = speed * std::sin(a);
+  }
+  GuideHint hint(kMargin);
+  long inside = 0, listed = 0, kept = 0;
+  std::vector<std::uint8_t> on_list(kNodes);
+  for (int round = 0; round < 400; ++round) {
+    if (round > 0) {
+      const double mode = u01(rng);
+      if (mode < 0.05) {  // a guide replaced: its box changes
+        guides[static_cast<std::size_t>(u01(rng) * kGuides) % kGuides] = random_guide(rng, round);
+      } else if (mode < 0.1) {  // a few nodes jump far
+        for (int k = 0; k < 5; ++k) {
+          const auto i = static_cast<std::size_t>(u01(rng) * kNodes) % kNodes;
+          place(rng, guides, kMargin, x[i], y[i]);
+        }
+      } else if (mode < 0.3) {  // every node moves by up to 10^[-6, -1.7] m, in any direction
+        const double size = std::pow(10.0, -6.0 + 4.3 * u01(rng) * u01(rng));
+        for (std::size_t i = 0; i < kNodes; ++i) {
+          const double a = 2.0 * kPi * u01(rng), r = size * u01(rng);
+          x[i] += r * std::cos(a);
+          y[i] += r * std::sin(a);
+        }
+      } else {  // every node drifts on at its own velocity (up to a fifth of a margin a round)
+        const double dt = u01(rng);
+        for (std::size_t i = 0; i < kNodes; ++i) {
+          x[i] += dt * vx[i];
+          y[i] += dt * vy[i];
+        }
+      }
+    }
+    if (!hint.update(guides, x, y)) ++kept;
+    ASSERT_EQ(hint.bounds().size(), kGuides);
+    for (std::size_t g = 0; g < kGuides; ++g) {
+      const GuideBounds b = guide_bounds(guides[g]);
+      ASSERT_EQ(hint.bounds()[g].x_lo, b.x_lo);
+      ASSERT_EQ(hint.bounds()[g].y_hi, b.y_hi);
+      const auto nodes = hint.nodes(g);
+      std::fill(on_list.begin(), on_list.end(), 0);
+      for (std::size_t k = 0; k < nodes.size(); ++k) {
+        if (k > 0) {
+          ASSERT_LT(nodes[k - 1], nodes[k]) << "guide " << g << " round " << round;
+        }
+        const std::uint32_t i = nodes[k];
+        ASSERT_LT(i, kNodes);
+        on_list[i] = 1;
+        // listed at the build within 1.25 margins of the box, moved at most a margin since
+        const double reach = 2.25 * kMargin + 1e-12;
+        ASSERT_TRUE(x[i] >= b.x_lo - reach && x[i] <= b.x_hi + reach && y[i] >= b.y_lo - reach &&
+                    y[i] <= b.y_hi + reach)
+            << "guide " << g << " node " << i << " round " << round;
+      }
+      listed += static_cast<long>(nodes.size());
+      for (std::size_t i = 0; i < kNodes; ++i) {
+        if (!guide_touch_possible(b, x[i], y[i])) continue;
+        ++inside;
+        ASSERT_EQ(on_list[i], 1) << "guide " << g << " node " << i << " round " << round;
+      }
+    }
+  }
+  // both paths taken often: lists kept, lists rebuilt; many pairs inside boxes; the lists short
+  EXPECT_GT(kept, 100);
+  EXPECT_GT(hint.rebuilds(), 30U);
+  EXPECT_GT(inside, 100000);
+  EXPECT_LT(listed, static_cast<long>(kGuides * kNodes * 400) / 4);
+}
+
+// A guide with a non-finite coordinate (its box the whole plane) lists every node; a node at a
+// non-finite position is on no finite guide's list and forces a rebuild at every update.
+TEST(DynamicsGuideHint, NonFiniteGuidesAndNodes) {
+  std::mt19937_64 rng(7);
+  std::vector<Guide> guides{random_guide(rng, 0), random_guide(rng, 1)};
+  guides[1].centre_x = NAN;
+  std::vector<double> x{guides[0].x0, 0.3, NAN}, y{guides[0].y0, -0.2, 1.0};
+  GuideHint hint(0.01);
+  EXPECT_TRUE(hint.update(guides, x, y));
+  ASSERT_EQ(hint.nodes(1).size(), 3U);
+  for (const std::uint32_t i : hint.nodes(0)) EXPECT_NE(i, 2U);
+  EXPECT_EQ(hint.nodes(0).size(), 1U);  // the node on the rail's first end
+  EXPECT_TRUE(hint.update(guides, x, y));
+  x[2] = 5.0;
+  EXPECT_TRUE(hint.update(guides, x, y));
+  EXPECT_FALSE(hint.update(guides, x, y));
+}
+
+// The conveyor of validation (6b) with each level rail cut into 12 pieces (26 guides), 0.1 s of
+// motion (the chain moves 24 mm, five of the hint's margins): states and works bit-identical.
+TEST(DynamicsGuideHint, IntegratorResultsBitIdenticalWithAndWithoutTheHint) {
+  constexpr int kTeeth = 16, kSpan = 60, kGap = 3, kPieces = 12;
+  constexpr double kPitch = 0.01905, kRoller = 0.01207, kOmega = 5.0, kStiffness = 5e7;
+  const auto n = static_cast<std::size_t>(kTeeth + 2 * kSpan);
+  Model m =
+      uniform_chain(n, true, kPitch - 20.0 / kStiffness, 1.25 * kPitch, kStiffness, 100.0, false);
+  m.gravity_y = -9.81;
+  const double centre = kSpan * kPitch;
+  Sprocket a = iso606_sprocket(kPitch, kRoller, 0.01168, kTeeth, 0.0, 0.0, 2e8, 800.0);
+  a.driver = true;
+  a.speed = kOmega;
+  Sprocket b = iso606_sprocket(kPitch, kRoller, 0.01168, kTeeth, centre, 0.0, 2e8, 800.0);
+  b.inertia = 0.002;
+  m.sprockets = {a, b};
+  const double r = 0.5 * kRoller, level = a.pitch_radius * std::sin(kPi / kTeeth) / (kPi / kTeeth);
+  const double x_lo = kGap * kPitch, x_hi = (kSpan - kGap) * kPitch;
+  for (const double yl : {level, -level}) {
+    for (int k = 0; k < kPieces; ++k) {
+      Guide g;
+      g.x0 = x_lo + (x_hi - x_lo) * k / kPieces;
+      g.x1 = x_lo + (x_hi - x_lo) * (k + 1) / kPieces;
+      g.y0 = g.y1 = yl - r;  // left to right: the rollers on top, on both runs
+      g.roller_radius = r;
+      g.contact_stiffness = 1e7;
+      g.contact_damping = 100.0;
+      g.friction = 0.3;
+      m.guides.push_back(g);
+    }
+  }
+  for (const bool upper : {true, false}) {  // lead-in arcs at the entry ends
+    Guide nose = m.guides.front();
+    nose.kind = Guide::Kind::kArc;
+    nose.radius = 0.05;
+    nose.centre_x = upper ? x_hi : x_lo;
+    nose.centre_y = (upper ? level : -level) - r - 0.05;
+    nose.start_angle = upper ? kPi / 6 : kPi / 2;
+    nose.end_angle = upper ? kPi / 2 : 5 * kPi / 6;
+    m.guides.push_back(nose);
+  }
+  State s0 = two_sprocket_loop(kTeeth, kSpan, kPitch, a.pitch_radius, kOmega);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (s0.x[i] > 0.5 * kPitch && s0.x[i] < centre - 0.5 * kPitch)
+      s0.y[i] = s0.y[i] > 0 ? level : -level;
+  }
+  State with = s0, without = s0;
+  Integrator hinted(m, {.step = 1e-4, .theta = 0.6});
+  Integrator every(m, {.step = 1e-4, .theta = 0.6, .guide_hint = false});
+  const auto same = [](const std::vector<double>& p, const std::vector<double>& q) {
+    return p.size() == q.size() && std::memcmp(p.data(), q.data(), p.size() * sizeof(double)) == 0;
+  };
+  double friction = 0.0;
+  for (int step = 0; step < 1000; ++step) {
+    const StepReport ra = hinted.step(m, with);
+    const StepReport rb = every.step(m, without);
+    ASSERT_TRUE(ra.converged && rb.converged) << "step " << step;
+    ASSERT_EQ(ra.iterations, rb.iterations) << "step " << step;
+    ASSERT_TRUE(same(with.x, without.x) && same(with.y, without.y) && same(with.vx, without.vx) &&
+                same(with.vy, without.vy) && same(with.angle, without.angle) &&
+                same(with.speed, without.speed))
+        << "step " << step;
+    ASSERT_EQ(std::memcmp(&ra.friction_work, &rb.friction_work, sizeof(double)), 0);
+    ASSERT_EQ(std::memcmp(&ra.contact_damping_work, &rb.contact_damping_work, sizeof(double)), 0);
+    friction += ra.friction_work;
+  }
+  EXPECT_LT(friction, -1e-3);  // the rails carried the chain and rubbed it
+  EXPECT_GT(std::abs(with.angle[0] - s0.angle[0]) * a.pitch_radius, 4.0 * 0.25 * kPitch);
+}
+
+}  // namespace
+}  // namespace catena::dynamics
