@@ -125,6 +125,7 @@ class Integrator {
   std::vector<double> ux_, uy_;              // the Newton iterate x₁
   std::vector<double> l0_;                   // link lengths at the start of the step
   std::vector<double> l1_;                   // link lengths at the iterate (assemble's)
+  std::vector<HingeLink> hinge_links_;       // each link's share of its hinges' couples
   std::vector<Vec2> delta_;                  // Newton correction
   std::vector<double> psi1_;                 // sprocket angles at the end of the step (iterate)
   std::vector<double> slide1_;  // take-ups' slides at the end of the step (iterate), per wheel

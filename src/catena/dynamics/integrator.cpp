@@ -59,6 +59,7 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
       uy_(model.nodes()),
       l0_(model.links()),
       l1_(model.links()),
+      hinge_links_(model.hinge.active() ? model.links() : 0),
       delta_(model.nodes()),
       psi1_(model.sprockets.size()),
       slide1_(model.sprockets.size()),
@@ -146,6 +147,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     solver_.rhs[a].y += fy;
     solver_.rhs[b].x -= fx;
     solver_.rhs[b].y -= fy;
+    // the link's share of the couples of the hinges at its two ends (the hinge loop below)
+    if (!hinge_links_.empty()) hinge_link(d0x, d0y, d1x, d1y, l0, l1, p, k, th, hinge_links_[j]);
     if (!jacobian) continue;
     // A = ∂(φ d_θ)/∂d₁ = θ φ I + d_θ ⊗ (∂φ/∂l₁) d₁/l₁,  ∂φ/∂l₁ = [(k θ + c/h) − θ φ] / l_θ.
     const double dphi = ((k * th + c / h) - th * phi) / lt;
@@ -171,12 +174,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     HingeCouple hc;  // one for every hinge: each call writes every field read below
     for (std::size_t i = first; i < last; ++i) {
       const std::size_t ha = (i + n - 1) % n, hb = (i + 1) % n;
-      const double x0[3] = {s.x[ha], s.x[i], s.x[hb]}, y0[3] = {s.y[ha], s.y[i], s.y[hb]};
-      const double x1[3] = {ux_[ha], ux_[i], ux_[hb]}, y1[3] = {uy_[ha], uy_[i], uy_[hb]};
-      const double rest[2] = {model.rest_length(ha), model.rest_length(i)};
-      // links ha (ha → i) and i (i → hb): their lengths from the links' loop above
-      const double length0[2] = {l0_[ha], l0_[i]}, length1[2] = {l1_[ha], l1_[i]};
-      hinge_couple(model.hinge, k, rest, x0, y0, x1, y1, th, h, length0, length1, hc, jacobian);
+      // links ha (ha → i) and i (i → hb), their terms from the links' loop above
+      hinge_couple(model.hinge, hinge_links_[ha], hinge_links_[i], h, hc, jacobian);
       hinge_work_ += hc.work;
       const std::size_t node[3] = {ha, i, hb};
       for (int q = 0; q < 3; ++q) {
