@@ -27,6 +27,7 @@
 
 #include <cmath>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "catena/dynamics/block_pentadiagonal.hpp"
@@ -47,7 +48,11 @@ std::vector<Issue> validate(const IntegratorOptions& options);
 /// What one step did.
 struct StepReport {
   bool converged = false;
-  int iterations = 0;            ///< Newton iterations taken
+  int iterations = 0;  ///< Newton iterations taken (over every start)
+  /// Newton runs from a starting point: 2 when the first (the predictor that extrapolates the
+  /// velocities, or the last step's factors with hinge friction) did not converge and Newton ran
+  /// again from constant velocity with fresh factors; each run takes at most max_iterations
+  int starts = 1;
   double last_correction = 0.0;  ///< [m] max |Δx| of the last Newton iteration
   int backtracks = 0;            ///< line-search halvings taken
   double max_penetration = 0.0;  ///< [m] deepest roller–seat penetration at the step's θ point
@@ -65,6 +70,11 @@ struct StepReport {
   double takeup_damper_work = 0.0;
   SolveStatus solve = SolveStatus::kSolved;
 };
+
+/// "N Newton iterations" for a step's report, saying what N counts when Newton ran from two
+/// starting points ("50 Newton iterations in all, from 2 starting points with at most 25 from
+/// each"): for the message of a step that did not converge.
+std::string newton_iterations_text(const StepReport& report, int max_iterations);
 
 /// The mutable work arrays of the integrator for one model (sized once; steps allocate nothing).
 class Integrator {
@@ -153,6 +163,10 @@ class Integrator {
   // starts from the constant-velocity predictor).
   std::vector<double> dvx_, dvy_, dspeed_, dslide_speed_;
   double history_time_ = NAN;
+  // the factors in penta_ (and the bordered solve's W and Schur factors) are those of a Newton
+  // matrix of the step that ended at history_time_ (hinge friction: the next step's first
+  // iterations may reuse them)
+  bool factors_kept_ = false;
   double max_penetration_ = 0.0;
   // the dissipative works of the last assembly's iterate (StepReport's fields)
   double damper_work_ = 0.0, drag_work_ = 0.0, contact_damping_work_ = 0.0;
