@@ -83,6 +83,8 @@ void hinge_couple(const HingeFriction& hinge, double axial_stiffness, const doub
 /// hinges: the integrator computes these once per link and iteration, then combines them per
 /// hinge with the hinge_couple overload below). From the link's chord at the start of the step
 /// d₀ and at the iterate d₁, their lengths l₀ = |d₀|, l₁ = |d₁|, its rest length, k and θ.
+/// `jacobian` false: turn, P and tension only (the derivatives left as they were), for
+/// hinge_couple(…, jacobian = false).
 struct HingeLink {
   double turn = 0.0;  ///< [rad] Δα = (d₀ × d₁)/|d_θ|², the link's turn over the step
   double px = 0.0, py = 0.0;    ///< [1/m] P = perp(d_θ)/|d_θ|²
@@ -94,7 +96,7 @@ struct HingeLink {
 
 inline void hinge_link(double d0x, double d0y, double d1x, double d1y, double length0,
                        double length1, double rest, double axial_stiffness, double theta,
-                       HingeLink& out) {
+                       HingeLink& out, bool jacobian = true) {
   const double mx = (1.0 - theta) * d0x + theta * d1x, my = (1.0 - theta) * d0y + theta * d1y;
   const double m2 = mx * mx + my * my, im2 = 1.0 / m2;
   const double turn = (d0x * d1y - d0y * d1x) * im2;  // d_θ × (d₁ − d₀) = d₀ × d₁
@@ -104,6 +106,7 @@ inline void hinge_link(double d0x, double d0y, double d1x, double d1y, double le
   // the elastic tension at the θ point, with the integrator's interpolated length
   const double lt = (1.0 - theta) * length0 + theta * length1;
   out.tension = axial_stiffness * (lt - rest);
+  if (!jacobian) return;  // the derivatives below are the couple Jacobian's alone
   // ∂turn/∂d₁ = perp(d₀)/|d_θ|² − turn 2θ d_θ/|d_θ|²
   out.tx = (-d0y - 2.0 * theta * turn * mx) * im2;
   out.ty = (d0x - 2.0 * theta * turn * my) * im2;

@@ -53,6 +53,7 @@ struct StepReport {
   /// velocities, or the last step's factors with hinge friction) did not converge and Newton ran
   /// again from constant velocity with fresh factors; each run takes at most max_iterations
   int starts = 1;
+  int factorizations = 0;        ///< fresh Newton matrices factored (over every start)
   double last_correction = 0.0;  ///< [m] max |Δx| of the last Newton iteration
   int backtracks = 0;            ///< line-search halvings taken
   double max_penetration = 0.0;  ///< [m] deepest roller–seat penetration at the step's θ point

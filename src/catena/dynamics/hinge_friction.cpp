@@ -59,7 +59,7 @@ void hinge_couple(const HingeFriction& hinge, double axial_stiffness, const doub
   HingeLink link[2];
   for (int j = 0; j < 2; ++j) {
     hinge_link(x0[j + 1] - x0[j], y0[j + 1] - y0[j], x1[j + 1] - x1[j], y1[j + 1] - y1[j],
-               length0[j], length1[j], rest[j], axial_stiffness, theta, link[j]);
+               length0[j], length1[j], rest[j], axial_stiffness, theta, link[j], jacobian);
   }
   hinge_couple(hinge, link[0], link[1], step, hc, jacobian);
 }

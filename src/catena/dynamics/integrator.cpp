@@ -148,7 +148,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     solver_.rhs[b].x -= fx;
     solver_.rhs[b].y -= fy;
     // the link's share of the couples of the hinges at its two ends (the hinge loop below)
-    if (!hinge_links_.empty()) hinge_link(d0x, d0y, d1x, d1y, l0, l1, p, k, th, hinge_links_[j]);
+    if (!hinge_links_.empty())
+      hinge_link(d0x, d0y, d1x, d1y, l0, l1, p, k, th, hinge_links_[j], jacobian);
     if (!jacobian) continue;
     // A = ∂(φ d_θ)/∂d₁ = θ φ I + d_θ ⊗ (∂φ/∂l₁) d₁/l₁,  ∂φ/∂l₁ = [(k θ + c/h) − θ φ] / l_θ.
     const double dphi = ((k * th + c / h) - th * phi) / lt;
@@ -572,6 +573,7 @@ StepReport Integrator::step(const Model& model, State& s) {
       if (fresh) {
         stale_seq = false;
         factors_kept_ = false;
+        ++report.factorizations;
         report.solve = factor();
         if (report.solve != SolveStatus::kSolved) return report;
       }
@@ -702,8 +704,20 @@ StepReport Integrator::step(const Model& model, State& s) {
                                                    previous_correction;
       previous_correction = correction;
       if (!reuse) {
+        const double next = assemble(model, s, true);
+        if (!fresh && !(next < norm2)) {
+          // a chord step that raised the residual: back to the iterate before it (whose
+          // residual fell) and a fresh iteration there, rather than halving along a correction
+          // of stale factors
+          retreat(1.0);
+          norm2 = assemble(model, s, true);
+          fresh = true;
+          previous_correction = 0.0;
+          previous = before;
+          continue;
+        }
         const int backtracks = report.backtracks;
-        norm2 = backtrack(assemble(model, s, true), norm2, true, report);
+        norm2 = backtrack(next, norm2, true, report);
         if (report.backtracks > backtracks) previous = INFINITY;
         fresh = true;
         continue;
@@ -751,6 +765,7 @@ StepReport Integrator::step(const Model& model, State& s) {
     report = newton(0.0, false);
     report.iterations += first.iterations;
     report.starts = 2;
+    report.factorizations += first.factorizations;
     report.backtracks += first.backtracks;
   }
   // Converged on the estimate, the last assembly is one correction (≤ √tolerance·p or so) off the
