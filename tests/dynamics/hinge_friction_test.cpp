@@ -422,5 +422,53 @@ TEST(HingeFriction, OpenPinnedChainSwingingBalancesItsHingeWork) {
   EXPECT_DOUBLE_EQ(s.x[n - 1], 16 * p * c30);
 }
 
+// A step that does not converge from the first starting point (the predictor, with hinge
+// friction the last step's factors) runs Newton again from constant velocity with fresh factors:
+// its report counts the iterations of both runs and says so (starts = 2), and the message's text
+// names the count for what it is rather than as iterations of one run past max_iterations.
+TEST(HingeFriction, StepThatFailsTwiceCountsBothStartsAndSaysSo) {
+  constexpr std::size_t n = 24;
+  constexpr double p = 0.01905, omega = 20.0;
+  constexpr int cap = 3;
+  Model model = uniform_chain(n, true, p * (1 - 1e-3), 0.0238, 5e7, 0.0, false);
+  model.hinge = {.arm = 0.1 * 0.00286, .rate_band = 5.0};
+  const double radius = p / (2 * std::sin(M_PI / n));
+  State s(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * static_cast<double>(i) / n;
+    s.x[i] = radius * std::cos(a);
+    s.y[i] = radius * std::sin(a);
+    s.vx[i] = -omega * s.y[i];
+    s.vy[i] = omega * s.x[i];
+  }
+  Integrator run(model, {.step = 1e-4, .max_iterations = cap, .theta = 0.5});
+  for (int k = 0; k < 3; ++k) {
+    const StepReport rep = run.step(model, s);
+    ASSERT_TRUE(rep.converged) << k;
+    EXPECT_EQ(rep.starts, 1) << k;
+    EXPECT_LE(rep.iterations, cap) << k;
+  }
+  // a blow: every other node moved out by half a pitch and kicked outward at 3000 m/s, the
+  // state's time unchanged
+  for (std::size_t i = 0; i < n; i += 2) {
+    const double ux = s.x[i] / radius, uy = s.y[i] / radius;
+    s.x[i] += 0.5 * p * ux;
+    s.y[i] += 0.5 * p * uy;
+    s.vx[i] += 3000.0 * ux;
+    s.vy[i] += 3000.0 * uy;
+  }
+  const StepReport rep = run.step(model, s);
+  ASSERT_FALSE(rep.converged);
+  EXPECT_EQ(rep.starts, 2);
+  EXPECT_GT(rep.iterations, cap);
+  EXPECT_LE(rep.iterations, 2 * cap);
+  EXPECT_EQ(newton_iterations_text(rep, cap),
+            std::to_string(rep.iterations) +
+                " Newton iterations in all, from 2 starting points with at most 3 from each");
+  StepReport once;
+  once.iterations = 5;
+  EXPECT_EQ(newton_iterations_text(once, cap), "5 Newton iterations");
+}
+
 }  // namespace
 }  // namespace catena::dynamics

@@ -79,6 +79,54 @@ void hinge_couple(const HingeFriction& hinge, double axial_stiffness, const doub
                   const double x0[3], const double y0[3], const double x1[3], const double y1[3],
                   double theta, double step, const double length0[2], const double length1[2],
                   HingeCouple& out, bool jacobian);
+/// What one link contributes to the couples of the two hinges at its ends (each link serves two
+/// hinges: the integrator computes these once per link and iteration, then combines them per
+/// hinge with the hinge_couple overload below). From the link's chord at the start of the step
+/// d₀ and at the iterate d₁, their lengths l₀ = |d₀|, l₁ = |d₁|, its rest length, k and θ.
+/// `jacobian` false: turn, P and tension only (the derivatives left as they were), for
+/// hinge_couple(…, jacobian = false).
+struct HingeLink {
+  double turn = 0.0;  ///< [rad] Δα = (d₀ × d₁)/|d_θ|², the link's turn over the step
+  double px = 0.0, py = 0.0;    ///< [1/m] P = perp(d_θ)/|d_θ|²
+  double tension = 0.0;         ///< [N] k (l_θ − rest), the elastic tension at the θ point
+  double tx = 0.0, ty = 0.0;    ///< [1/m] ∂Δα/∂d₁
+  double ex = 0.0, ey = 0.0;    ///< [N/m] ∂(½ k l_θ)/∂d₁
+  double dp[4] = {0, 0, 0, 0};  ///< [1/m²] ∂P/∂d₁, row-major 2×2
+};
+
+inline void hinge_link(double d0x, double d0y, double d1x, double d1y, double length0,
+                       double length1, double rest, double axial_stiffness, double theta,
+                       HingeLink& out, bool jacobian = true) {
+  const double mx = (1.0 - theta) * d0x + theta * d1x, my = (1.0 - theta) * d0y + theta * d1y;
+  const double m2 = mx * mx + my * my, im2 = 1.0 / m2;
+  const double turn = (d0x * d1y - d0y * d1x) * im2;  // d_θ × (d₁ − d₀) = d₀ × d₁
+  out.turn = turn;
+  out.px = -my * im2;
+  out.py = mx * im2;
+  // the elastic tension at the θ point, with the integrator's interpolated length
+  const double lt = (1.0 - theta) * length0 + theta * length1;
+  out.tension = axial_stiffness * (lt - rest);
+  if (!jacobian) return;  // the derivatives below are the couple Jacobian's alone
+  // ∂turn/∂d₁ = perp(d₀)/|d_θ|² − turn 2θ d_θ/|d_θ|²
+  out.tx = (-d0y - 2.0 * theta * turn * mx) * im2;
+  out.ty = (d0x - 2.0 * theta * turn * my) * im2;
+  // ∂(½ k l_θ)/∂d₁ = ½ k θ d₁/l₁
+  const double e = length1 > 0.0 ? 0.5 * axial_stiffness * theta / length1 : 0.0;
+  out.ex = e * d1x;
+  out.ey = e * d1y;
+  // ∂(perp(m)/|m|²)/∂d₁ = θ (R/|m|² − 2 perp(m) mᵀ/|m|⁴), R = [[0, −1], [1, 0]]
+  const double s2 = theta * im2, s4 = 2.0 * s2 * im2;
+  out.dp[0] = s4 * my * mx;
+  out.dp[1] = -s2 + s4 * my * my;
+  out.dp[2] = s2 - s4 * mx * mx;
+  out.dp[3] = -s4 * mx * my;
+}
+
+/// The couple of the hinge between links `l0` (a → b) and `l1` (b → c) from their HingeLink
+/// terms, into `out` as above: bit for bit what the overloads above give.
+void hinge_couple(const HingeFriction& hinge, const HingeLink& l0, const HingeLink& l1, double step,
+                  HingeCouple& out, bool jacobian);
+
 /// Both links of rest length `pitch`.
 inline HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, double pitch,
                                 const double x0[3], const double y0[3], const double x1[3],

@@ -27,6 +27,7 @@
 
 #include <cmath>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "catena/dynamics/block_pentadiagonal.hpp"
@@ -51,7 +52,12 @@ std::vector<Issue> validate(const IntegratorOptions& options);
 /// What one step did.
 struct StepReport {
   bool converged = false;
-  int iterations = 0;            ///< Newton iterations taken
+  int iterations = 0;  ///< Newton iterations taken (over every start)
+  /// Newton runs from a starting point: 2 when the first (the predictor that extrapolates the
+  /// velocities, or the last step's factors with hinge friction) did not converge and Newton ran
+  /// again from constant velocity with fresh factors; each run takes at most max_iterations
+  int starts = 1;
+  int factorizations = 0;        ///< fresh Newton matrices factored (over every start)
   double last_correction = 0.0;  ///< [m] max |Δx| of the last Newton iteration
   int backtracks = 0;            ///< line-search halvings taken
   double max_penetration = 0.0;  ///< [m] deepest roller–seat penetration at the step's θ point
@@ -69,6 +75,11 @@ struct StepReport {
   double takeup_damper_work = 0.0;
   SolveStatus solve = SolveStatus::kSolved;
 };
+
+/// "N Newton iterations" for a step's report, saying what N counts when Newton ran from two
+/// starting points ("50 Newton iterations in all, from 2 starting points with at most 25 from
+/// each"): for the message of a step that did not converge.
+std::string newton_iterations_text(const StepReport& report, int max_iterations);
 
 /// The mutable work arrays of the integrator for one model (sized once; steps allocate nothing).
 class Integrator {
@@ -132,6 +143,7 @@ class Integrator {
   std::vector<double> ux_, uy_;              // the Newton iterate x₁
   std::vector<double> l0_;                   // link lengths at the start of the step
   std::vector<double> l1_;                   // link lengths at the iterate (assemble's)
+  std::vector<HingeLink> hinge_links_;       // each link's share of its hinges' couples
   std::vector<Vec2> delta_;                  // Newton correction
   std::vector<double> psi1_;                 // sprocket angles at the end of the step (iterate)
   std::vector<double> slide1_;  // take-ups' slides at the end of the step (iterate), per wheel
@@ -159,6 +171,10 @@ class Integrator {
   // starts from the constant-velocity predictor).
   std::vector<double> dvx_, dvy_, dspeed_, dslide_speed_;
   double history_time_ = NAN;
+  // the factors in penta_ (and the bordered solve's W and Schur factors) are those of a Newton
+  // matrix of the step that ended at history_time_ (hinge friction: the next step's first
+  // iterations may reuse them)
+  bool factors_kept_ = false;
   double max_penetration_ = 0.0;
   std::vector<GuideFrame> guide_frame_;   // per guide: guide_frame, refreshed with the hint
   GuideHint guide_hint_;                  // per guide: the nodes near it

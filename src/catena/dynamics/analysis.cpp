@@ -1931,8 +1931,9 @@ Result run(const analysis::Inputs& in) {
       out.diagnostics.push_back(
           {Diagnostic::Severity::kError, "dynamics.not_converged",
            "step " + std::to_string(k + 1) + " (t = " + format_g(s.time + d.step, 6) +
-               " s) did not converge in " + std::to_string(rep.iterations) +
-               " Newton iterations; the run stopped there (try a smaller step or theta nearer 1)",
+               " s) did not converge in " +
+               newton_iterations_text(rep, integ.options().max_iterations) +
+               "; the run stopped there (try a smaller step or theta nearer 1)",
            s.time + d.step, d.duration});
       break;
     }

@@ -56,47 +56,27 @@ void hinge_couple(const HingeFriction& hinge, double axial_stiffness, const doub
                   const double x0[3], const double y0[3], const double x1[3], const double y1[3],
                   double theta, double step, const double length0[2], const double length1[2],
                   HingeCouple& hc, bool jacobian) {
-  double turn[2], tension_sum = 0.0;
-  double px[2], py[2];  // perp(d_θ)/|d_θ|² per link
-  // per link, the derivatives by its end-of-step chord d₁: of its turn (tx, ty), of its share of
-  // the pin load (ex, ey) and of perp(d_θ)/|d_θ|² (dp, row-major 2×2)
-  double tx[2], ty[2], ex[2], ey[2], dp[2][4];
+  HingeLink link[2];
   for (int j = 0; j < 2; ++j) {
-    const double d0x = x0[j + 1] - x0[j], d0y = y0[j + 1] - y0[j];
-    const double d1x = x1[j + 1] - x1[j], d1y = y1[j + 1] - y1[j];
-    const double mx = (1.0 - theta) * d0x + theta * d1x, my = (1.0 - theta) * d0y + theta * d1y;
-    const double m2 = mx * mx + my * my, im2 = 1.0 / m2;
-    turn[j] = (d0x * d1y - d0y * d1x) * im2;  // d_θ × (d₁ − d₀) = d₀ × d₁
-    px[j] = -my * im2;
-    py[j] = mx * im2;
-    // the elastic tension at the θ point, with the integrator's interpolated length
-    const double l1 = length1[j];
-    const double lt = (1.0 - theta) * length0[j] + theta * l1;
-    tension_sum += axial_stiffness * (lt - rest[j]);
-    // ∂turn/∂d₁ = perp(d₀)/|d_θ|² − turn 2θ d_θ/|d_θ|²
-    tx[j] = (-d0y - 2.0 * theta * turn[j] * mx) * im2;
-    ty[j] = (d0x - 2.0 * theta * turn[j] * my) * im2;
-    // ∂(½ k l_θ)/∂d₁ = ½ k θ d₁/l₁
-    const double e = l1 > 0.0 ? 0.5 * axial_stiffness * theta / l1 : 0.0;
-    ex[j] = e * d1x;
-    ey[j] = e * d1y;
-    // ∂(perp(m)/|m|²)/∂d₁ = θ (R/|m|² − 2 perp(m) mᵀ/|m|⁴), R = [[0, −1], [1, 0]]
-    const double s2 = theta * im2, s4 = 2.0 * s2 * im2;
-    dp[j][0] = s4 * my * mx;
-    dp[j][1] = -s2 + s4 * my * my;
-    dp[j][2] = s2 - s4 * mx * mx;
-    dp[j][3] = -s4 * mx * my;
+    hinge_link(x0[j + 1] - x0[j], y0[j + 1] - y0[j], x1[j + 1] - x1[j], y1[j + 1] - y1[j],
+               length0[j], length1[j], rest[j], axial_stiffness, theta, link[j], jacobian);
   }
+  hinge_couple(hinge, link[0], link[1], step, hc, jacobian);
+}
+
+void hinge_couple(const HingeFriction& hinge, const HingeLink& l0, const HingeLink& l1, double step,
+                  HingeCouple& hc, bool jacobian) {
+  const double tension_sum = l0.tension + l1.tension;
   hc.load = std::max(0.0, 0.5 * tension_sum);
-  hc.turn = turn[1] - turn[0];
+  hc.turn = l1.turn - l0.turn;
   hc.rate = hc.turn / step;
   // g = ∂β/∂x: (+P₀, −P₀ − P₁, +P₁), P = perp(d_θ)/|d_θ|²
-  hc.gx[0] = px[0];
-  hc.gy[0] = py[0];
-  hc.gx[1] = -px[0] - px[1];
-  hc.gy[1] = -py[0] - py[1];
-  hc.gx[2] = px[1];
-  hc.gy[2] = py[1];
+  hc.gx[0] = l0.px;
+  hc.gy[0] = l0.py;
+  hc.gx[1] = -l0.px - l1.px;
+  hc.gy[1] = -l0.py - l1.py;
+  hc.gx[2] = l1.px;
+  hc.gy[2] = l1.py;
   const double band = hinge.rate_band;
   const double root = std::sqrt(hc.rate * hc.rate + band * band);
   const double limit = hinge.arm * hc.load;  // e F
@@ -114,28 +94,38 @@ void hinge_couple(const HingeFriction& hinge, double axial_stiffness, const doub
   const double loaded = 0.5 * tension_sum > 0.0 ? 1.0 : 0.0;
   const double load_factor = -hinge.arm * (hc.rate / root) * loaded;  // ∂M/∂F = −e s(ω)
   const double rate_factor = -hc.rate_stiffness / step;               // ∂M/∂Δβ = −e F s'/h
-  const double nturn_x[3] = {tx[0], -tx[0] - tx[1], tx[1]};
-  const double nturn_y[3] = {ty[0], -ty[0] - ty[1], ty[1]};
-  const double nload_x[3] = {-ex[0], ex[0] - ex[1], ex[1]};
-  const double nload_y[3] = {-ey[0], ey[0] - ey[1], ey[1]};
+  const double nturn_x[3] = {l0.tx, -l0.tx - l1.tx, l1.tx};
+  const double nturn_y[3] = {l0.ty, -l0.ty - l1.ty, l1.ty};
+  const double nload_x[3] = {-l0.ex, l0.ex - l1.ex, l1.ex};
+  const double nload_y[3] = {-l0.ey, l0.ey - l1.ey, l1.ey};
   double dmx[3], dmy[3];  // ∂M/∂x₁ per node
   for (int q = 0; q < 3; ++q) {
     dmx[q] = load_factor * nload_x[q] + rate_factor * nturn_x[q];
     dmy[q] = load_factor * nload_y[q] + rate_factor * nturn_y[q];
   }
-  // ∂g_k/∂x_q: g = (P₀, −P₀ − P₁, P₁), ∂P_j/∂x of its link's end node = DP_j, of its start −DP_j
-  const double sgn0[3][3] = {{-1, 1, 0}, {1, -1, 0}, {0, 0, 0}};  // ∂g_k/∂x_q's share of DP₀
-  const double sgn1[3][3] = {{0, 0, 0}, {0, 1, -1}, {0, -1, 1}};  // and of DP₁
+  // The load and rate terms: g_k ⊗ ∂M/∂x_q on every block.
   for (int k = 0; k < 3; ++k) {
     for (int q = 0; q < 3; ++q) {
-      for (int r = 0; r < 2; ++r) {
-        const double gk = r == 0 ? hc.gx[k] : hc.gy[k];
-        for (int c = 0; c < 2; ++c) {
-          const double dg = sgn0[k][q] * dp[0][2 * r + c] + sgn1[k][q] * dp[1][2 * r + c];
-          hc.jacobian[2 * k + r][2 * q + c] = gk * (c == 0 ? dmx[q] : dmy[q]) + hc.torque * dg;
-        }
-      }
+      hc.jacobian[2 * k][2 * q] = hc.gx[k] * dmx[q];
+      hc.jacobian[2 * k][2 * q + 1] = hc.gx[k] * dmy[q];
+      hc.jacobian[2 * k + 1][2 * q] = hc.gy[k] * dmx[q];
+      hc.jacobian[2 * k + 1][2 * q + 1] = hc.gy[k] * dmy[q];
     }
+  }
+  // The direction term M ∂g_k/∂x_q: g = (P₀, −P₀ − P₁, P₁), ∂P_j/∂x of its link's end node is
+  // DP_j, of its start node −DP_j, so (blocks k, q) −DP₀ +DP₀ 0 / +DP₀ −DP₀+DP₁ −DP₁ / 0 −DP₁ +DP₁
+  // (the blocks (0, 2) and (2, 0) have no direction term).
+  const double m = hc.torque;
+  for (int e = 0; e < 4; ++e) {
+    const int r = e / 2, c = e % 2;
+    const double p0 = m * l0.dp[e], p1 = m * l1.dp[e], p01 = m * (-l0.dp[e] + l1.dp[e]);
+    hc.jacobian[r][c] -= p0;
+    hc.jacobian[r][2 + c] += p0;
+    hc.jacobian[2 + r][c] += p0;
+    hc.jacobian[2 + r][2 + c] += p01;
+    hc.jacobian[2 + r][4 + c] -= p1;
+    hc.jacobian[4 + r][2 + c] -= p1;
+    hc.jacobian[4 + r][4 + c] += p1;
   }
 }
 

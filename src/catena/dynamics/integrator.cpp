@@ -60,6 +60,7 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
       uy_(model.nodes()),
       l0_(model.links()),
       l1_(model.links()),
+      hinge_links_(model.hinge.active() ? model.links() : 0),
       delta_(model.nodes()),
       psi1_(model.sprockets.size()),
       slide1_(model.sprockets.size()),
@@ -168,6 +169,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     solver_.rhs[a].y += fy;
     solver_.rhs[b].x -= fx;
     solver_.rhs[b].y -= fy;
+    // the link's share of the couples of the hinges at its two ends (the hinge loop below)
+    if (!hinge_links_.empty())
+      hinge_link(d0x, d0y, d1x, d1y, l0, l1, p, k, th, hinge_links_[j], jacobian);
     if (!jacobian) continue;
     // A = ∂(φ d_θ)/∂d₁ = θ φ I + d_θ ⊗ (∂φ/∂l₁) d₁/l₁,  ∂φ/∂l₁ = [(k θ + c/h) − θ φ] / l_θ.
     const double dphi = ((k * th + c / h) - th * phi) / lt;
@@ -193,12 +197,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     HingeCouple hc;  // one for every hinge: each call writes every field read below
     for (std::size_t i = first; i < last; ++i) {
       const std::size_t ha = (i + n - 1) % n, hb = (i + 1) % n;
-      const double x0[3] = {s.x[ha], s.x[i], s.x[hb]}, y0[3] = {s.y[ha], s.y[i], s.y[hb]};
-      const double x1[3] = {ux_[ha], ux_[i], ux_[hb]}, y1[3] = {uy_[ha], uy_[i], uy_[hb]};
-      const double rest[2] = {model.rest_length(ha), model.rest_length(i)};
-      // links ha (ha → i) and i (i → hb): their lengths from the links' loop above
-      const double length0[2] = {l0_[ha], l0_[i]}, length1[2] = {l1_[ha], l1_[i]};
-      hinge_couple(model.hinge, k, rest, x0, y0, x1, y1, th, h, length0, length1, hc, jacobian);
+      // links ha (ha → i) and i (i → hb), their terms from the links' loop above
+      hinge_couple(model.hinge, hinge_links_[ha], hinge_links_[i], h, hc, jacobian);
       hinge_work_ += hc.work;
       const std::size_t node[3] = {ha, i, hb};
       for (int q = 0; q < 3; ++q) {
@@ -483,6 +483,15 @@ void Integrator::substitute(std::span<const Vec2> b, std::span<Vec2> x, std::spa
   }
 }
 
+std::string newton_iterations_text(const StepReport& report, int max_iterations) {
+  std::string text = std::to_string(report.iterations) + " Newton iterations";
+  if (report.starts > 1) {
+    text += " in all, from " + std::to_string(report.starts) + " starting points with at most " +
+            std::to_string(max_iterations) + " from each";
+  }
+  return text;
+}
+
 StepReport Integrator::step(const Model& model, State& s) {
   // O(1) guards: a model or state of another size would index out of bounds.
   if (model.nodes() != solver_.size() || model.closed != solver_.cyclic() ||
@@ -514,6 +523,7 @@ StepReport Integrator::step(const Model& model, State& s) {
   // this integrator's last step ended at this state's time); with ht = 0, constant velocity. Only
   // Newton's starting point: the converged step is the same to the tolerance either way.
   bool estimated = false;  // converged on the error estimate, not on |Δ| ≤ tolerance
+  bool checked = false;    // the residual was assembled at the accepted iterate
   // x ← x − λ Δ: the chain's nodes and the extra unknowns back along the last correction
   auto retreat = [&](double lambda) {
     for (std::size_t i = 0; i < n; ++i) {
@@ -553,7 +563,7 @@ StepReport Integrator::step(const Model& model, State& s) {
       }
     }
   };
-  auto newton = [&](double ht) {
+  auto newton = [&](double ht, bool stale) {
     for (std::size_t i = 0; i < n; ++i) {
       ux_[i] = s.x[i] + h * s.vx[i] + ht * dvx_[i];
       uy_[i] = s.y[i] + h * s.vy[i] + ht * dvy_[i];
@@ -577,15 +587,22 @@ StepReport Integrator::step(const Model& model, State& s) {
     // correction, and the error estimate, which Hairer & Wanner derive for simplified Newton)
     // are the same. Without hinge friction every iteration is a fresh Newton iteration.
     const bool chord = pentadiagonal_;
-    constexpr double kNewtonContraction = 0.05, kChordContraction = 0.25;
-    bool fresh = true;  // this iteration's factors are of the Jacobian at the current iterate
-    double previous_correction = 0.0;  // the chord's test (0: no reuse after the next step)
+    constexpr double kNewtonContraction = 0.05, kChordContraction = 0.25, kStaleContraction = 0.1;
+    bool fresh = !stale;  // this iteration's factors are of the Jacobian at the current iterate
+    // the chord's test (0: no reuse after the next step; infinite: the first iteration with the
+    // last step's factors is followed by a chord iteration, which tests its contraction)
+    double previous_correction = stale ? INFINITY : 0.0;
+    bool stale_seq = stale;
     estimated = false;
+    checked = false;
     double previous = INFINITY;  // the last correction (Newton's contraction)
-    double norm2 = assemble(model, s, true);
+    double norm2 = assemble(model, s, !stale);
     for (int iter = 1; iter <= options_.max_iterations; ++iter) {
       report.iterations = iter;
       if (fresh) {
+        stale_seq = false;
+        factors_kept_ = false;
+        ++report.factorizations;
         report.solve = factor();
         if (report.solve != SolveStatus::kSolved) return report;
       }
@@ -678,6 +695,22 @@ StepReport Integrator::step(const Model& model, State& s) {
       previous = correction;
       if (correction <= tol || (model.guides.empty() && std::isfinite(before) && rate < 0.5 &&
                                 rate / (1.0 - rate) * correction <= tol)) {
+        if (chord && !fresh && correction > tol) {
+          // A chord step accepted on the estimate: the estimate assumes the chord iteration
+          // contracts, which a chord step that raised the residual did not. Its residual (which
+          // the step's works are taken from anyway) first; if it rose, back to the iterate
+          // before it and a fresh iteration, as below.
+          const double next = assemble(model, s, false);
+          if (!(next < norm2)) {
+            retreat(1.0);
+            norm2 = assemble(model, s, true);
+            fresh = true;
+            previous_correction = 0.0;
+            previous = before;
+            continue;
+          }
+          checked = true;
+        }
         report.converged = true;
         estimated = correction > tol;
         break;
@@ -698,11 +731,24 @@ StepReport Integrator::step(const Model& model, State& s) {
       // contracted the correction by kNewtonContraction, and as long as each chord step
       // contracts it by kChordContraction.
       const bool reuse = fresh ? correction <= kNewtonContraction * previous_correction
-                               : correction <= kChordContraction * previous_correction;
+                               : correction <= (stale_seq ? kStaleContraction : kChordContraction) *
+                                                   previous_correction;
       previous_correction = correction;
       if (!reuse) {
+        const double next = assemble(model, s, true);
+        if (!fresh && !(next < norm2)) {
+          // a chord step that raised the residual: back to the iterate before it (whose
+          // residual fell) and a fresh iteration there, rather than halving along a correction
+          // of stale factors
+          retreat(1.0);
+          norm2 = assemble(model, s, true);
+          fresh = true;
+          previous_correction = 0.0;
+          previous = before;
+          continue;
+        }
         const int backtracks = report.backtracks;
-        norm2 = backtrack(assemble(model, s, true), norm2, true, report);
+        norm2 = backtrack(next, norm2, true, report);
         if (report.backtracks > backtracks) previous = INFINITY;
         fresh = true;
         continue;
@@ -741,18 +787,21 @@ StepReport Integrator::step(const Model& model, State& s) {
   // not with guides: with it and the estimate the conveyor's validation (6b) missed its 1 % by
   // its own scatter (above; docs/models/dynamics.md, "The predictor and the estimate with guides")
   const double extrapolate = s.time == history_time_ && model.guides.empty() ? h * th : 0.0;
-  StepReport report = newton(extrapolate);
-  if (!report.converged && extrapolate > 0.0) {
+  const bool stale = pentadiagonal_ && factors_kept_ && s.time == history_time_;
+  StepReport report = newton(extrapolate, stale);
+  if (!report.converged && (extrapolate > 0.0 || stale)) {
     // the extrapolation can start Newton worse off than constant velocity (a large step, a
     // whip): again from there, the iterations and backtracks of both counted
     const StepReport first = report;
-    report = newton(0.0);
+    report = newton(0.0, false);
     report.iterations += first.iterations;
+    report.starts = 2;
+    report.factorizations += first.factorizations;
     report.backtracks += first.backtracks;
   }
   // Converged on the estimate, the last assembly is one correction (≤ √tolerance·p or so) off the
   // accepted iterate: the step's works and torques are taken there again (residual only).
-  if (report.converged && estimated) assemble(model, s, false);
+  if (report.converged && estimated && !checked) assemble(model, s, false);
   report.max_penetration = max_penetration_;
   if (!report.converged) return report;
   // The guides' friction work over the step: the friction force the step applied (at the θ point,
@@ -817,6 +866,7 @@ StepReport Integrator::step(const Model& model, State& s) {
   update_held(model, s);
   s.time += h;
   history_time_ = s.time;
+  factors_kept_ = pentadiagonal_;
   return report;
 }
 
