@@ -147,6 +147,19 @@ class Integrator {
   std::vector<double> slide_force_;      // per wheel: the chain's force along the slide
   std::vector<double> wheel_force_;      // per wheel: |the chain's force| on a take-up's wheel
   std::vector<double> torque_;           // per wheel: the θ-point contact torque (last assembly)
+  // The seat contacts' step constants (docs/models/dynamics.md, "Solver"): each ISO wheel's tooth
+  // geometry (seat_geometry, set at the start of a step), and the directions (cos σ, sin σ) of its
+  // seats σ = ψ_θ + k τ at the θ-point angle ψ_θ they were taken at — a driver's ψ_θ is the same
+  // in every Newton iteration of a step, so its seats' sines and cosines are taken once a step.
+  struct SeatDirection {
+    double k = NAN;  // the seat index it is for (NaN: none)
+    double cs = 0.0, sn = 0.0;
+  };
+  void prepare_seats(const Model& model);
+  std::vector<SeatGeometry> seat_geometry_;
+  std::vector<double> seat_psi_;  // per wheel: the angle of its directions
+  std::vector<std::vector<SeatDirection>> seat_direction_;  // per wheel: by k mod z
+  std::vector<double> qx_, qy_;  // the nodes' θ points x_θ of the iterate (assemble's)
   // The predictor's history: the last accepted step's change of each node's velocity and each
   // wheel's speed and slide speed, and the time it ended at (NaN: none; a state at another time
   // starts from the constant-velocity predictor).

@@ -455,17 +455,118 @@ void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx
   c.torque = c.force * (rx * c.ny - ry * c.nx);
 }
 
+double nearest_seat(double rx, double ry, double angle, double tau) {
+  return std::nearbyint((std::atan2(ry, rx) - angle) / tau);
+}
+
+SeatGeometry seat_geometry(const Sprocket& w) {
+  SeatGeometry t;
+  t.reach = contact_reach(w);
+  const double tau = 2.0 * std::numbers::pi / w.teeth;
+  t.tau = tau;
+  const double half = 0.5 * w.seating_angle;
+  const double ch = std::cos(half), sh_abs = std::sin(half);
+  t.ch = ch;
+  t.sh = sh_abs;
+  const double R = w.pitch_radius, Ra = w.tip_radius, re = w.flank_radius, ri = w.seat_radius;
+  const double fa = (ri + re) * ch, fb = (ri + re) * sh_abs;  // F (re > 0)
+  t.fa = fa;
+  t.fb = fb;
+  // The flank ends at the tooth's corner K: where it meets the tip circle |K − O| = Ra, or,
+  // if the tooth's two flanks meet below the tip circle, at their apex A on the tooth's centre
+  // line (at τ/2 from the seat's radial, direction (−cos τ/2, sin τ/2) from O).
+  bool has_corner = false, tip_arc = false;
+  double ka = 0.0, kb = 0.0;
+  if (Ra > 0.0) {
+    const double th2 = 0.5 * tau, da = -std::cos(th2), db = std::sin(th2);
+    if (re > 0.0) {
+      // apex: |O + μ d − F| = re, the outer root
+      const double wa = R - fa, wb = -fb;
+      const double wd = wa * da + wb * db;
+      const double disc = wd * wd - (wa * wa + wb * wb) + re * re;
+      if (disc >= 0.0) {
+        const double mu = -wd + std::sqrt(disc);
+        if (mu > 0.0 && mu <= Ra) {
+          ka = R + mu * da;
+          kb = mu * db;
+          has_corner = true;
+        }
+      }
+      if (!has_corner) {
+        // the flank circle's crossings of the tip circle; K the first from J along the flank
+        // (clockwise about F in (a, b))
+        const double ua = fa - R, ub = fb, dd = std::hypot(ua, ub);
+        const double x0 = (Ra * Ra - re * re + dd * dd) / (2.0 * dd);
+        const double h2 = Ra * Ra - x0 * x0;
+        if (h2 >= 0.0 && dd > 0.0) {
+          const double hh = std::sqrt(h2);
+          double best = INFINITY;
+          for (const double sgn : {-1.0, 1.0}) {
+            const double pa = R + (x0 * ua - sgn * hh * ub) / dd;
+            const double pb = (x0 * ub + sgn * hh * ua) / dd;
+            // angle about F from J (direction −m) clockwise
+            const double ja = -ch, jb = -sh_abs, qa = pa - fa, qb = pb - fb;
+            double phi = std::atan2(-(ja * qb - jb * qa), ja * qa + jb * qb);
+            if (phi < 0.0) phi += 2.0 * std::numbers::pi;
+            if (phi < best) {
+              best = phi;
+              ka = pa;
+              kb = pb;
+            }
+          }
+          has_corner = tip_arc = true;
+        }
+      }
+    } else {
+      // straight flank J + λ u, u = (−sin α/2, cos α/2): |J + λ u − O| = Ra gives
+      // λ² + 2 R sin(α/2) λ + R² + ri² − 2 R ri cos(α/2) − Ra² = 0; the apex
+      // λ_A = (R sin(τ/2) − ri sin(α/2 + τ/2)) / cos(α/2 + τ/2)
+      double lk = 0.0;
+      const double cq = R * R + ri * ri - 2.0 * R * ri * ch - Ra * Ra;
+      const double disc = R * R * sh_abs * sh_abs - cq;
+      if (disc >= 0.0) {
+        lk = -R * sh_abs + std::sqrt(disc);
+        has_corner = tip_arc = lk > 0.0;
+      }
+      const double cos_apex = std::cos(half + th2);
+      if (cos_apex > 0.0) {
+        const double la = (R * std::sin(th2) - ri * std::sin(half + th2)) / cos_apex;
+        if (la > 0.0 && (!has_corner || la <= lk)) {
+          lk = la;
+          has_corner = true;
+          tip_arc = false;
+        }
+      }
+      ka = ri * ch - lk * sh_abs;
+      kb = ri * sh_abs + lk * ch;
+    }
+  }
+  t.has_corner = has_corner;
+  t.tip_arc = tip_arc;
+  t.ka = ka;
+  t.kb = kb;
+  return t;
+}
+
 SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, double vy, double angle,
                          double speed) {
+  return seat_contact(w, seat_geometry(w), x, y, vx, vy, angle, speed);
+}
+
+SeatContact seat_contact(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
+                         double vy, double angle, double speed) {
+  const double rx = x - w.centre_x, ry = y - w.centre_y;
+  if (rx * rx + ry * ry > t.reach * t.reach) return {};  // clear of the wheel
+  // The nearest seat from the roller's angle about the centre: O(1), no search.
+  const double k = nearest_seat(rx, ry, angle, t.tau);
+  const double sigma = angle + k * t.tau;
+  return seat_contact_at(w, t, x, y, vx, vy, speed, k, std::cos(sigma), std::sin(sigma));
+}
+
+SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
+                            double vy, double speed, double k, double cs, double sn) {
   SeatContact c;
   const double rx = x - w.centre_x, ry = y - w.centre_y;
-  const double reach = contact_reach(w);
-  if (rx * rx + ry * ry > reach * reach) return c;  // clear of the wheel
-  // The nearest seat from the roller's angle about the centre: O(1), no search.
-  const double tau = 2.0 * std::numbers::pi / w.teeth;
-  const double k = std::nearbyint((std::atan2(ry, rx) - angle) / tau);
-  const double sigma = angle + k * tau;
-  const double cs = std::cos(sigma), sn = std::sin(sigma);
   c.seat = static_cast<int>(k);
   c.seat_x = w.centre_x + w.pitch_radius * cs;
   c.seat_y = w.centre_y + w.pitch_radius * sn;
@@ -475,8 +576,7 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
   // to the arc there (the ISO flank arc re is several pitches: nearly straight over a roller).
   // γ is the angle of e = q − C from the inward radial, towards the tangent t = (−sin σ, cos σ).
   const double e_in = -(ex * cs + ey * sn), e_t = -ex * sn + ey * cs;
-  const double half = 0.5 * w.seating_angle;
-  const double ch = std::cos(half), sh_abs = std::sin(half);
+  const double ch = t.ch, sh_abs = t.sh;
   const double r = w.roller_radius, ri = w.seat_radius;
   double g = 0.0;
   // |γ| ≤ α/2 with γ = atan2(e_t, e_in) and α/2 < π/2, without the atan2: e lies within α/2 of
@@ -504,7 +604,7 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
       wy = -sn * va + side * cs * vb;
     };
     const double R = w.pitch_radius, Ra = w.tip_radius, re = w.flank_radius;
-    const double fa = (ri + re) * ch, fb = (ri + re) * sh_abs;  // F (re > 0)
+    const double fa = t.fa, fb = t.fb;  // F (re > 0)
     // depth of q inside the flank's surface (> 0 inside the tooth)
     double depth_flank = 0.0, fdist = 0.0;
     if (re > 0.0) {
@@ -513,75 +613,10 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
     } else {
       depth_flank = a * ch + b * sh_abs - ri;  // (q − C)·m − ri
     }
-    // The flank ends at the tooth's corner K: where it meets the tip circle |K − O| = Ra, or,
-    // if the tooth's two flanks meet below the tip circle, at their apex A on the tooth's centre
-    // line (at τ/2 from the seat's radial, direction (−cos τ/2, sin τ/2) from O).
-    bool has_corner = false, tip_arc = false;
-    double ka = 0.0, kb = 0.0;
-    if (Ra > 0.0) {
-      const double th2 = 0.5 * tau, da = -std::cos(th2), db = std::sin(th2);
-      if (re > 0.0) {
-        // apex: |O + μ d − F| = re, the outer root
-        const double wa = R - fa, wb = -fb;
-        const double wd = wa * da + wb * db;
-        const double disc = wd * wd - (wa * wa + wb * wb) + re * re;
-        if (disc >= 0.0) {
-          const double mu = -wd + std::sqrt(disc);
-          if (mu > 0.0 && mu <= Ra) {
-            ka = R + mu * da;
-            kb = mu * db;
-            has_corner = true;
-          }
-        }
-        if (!has_corner) {
-          // the flank circle's crossings of the tip circle; K the first from J along the flank
-          // (clockwise about F in (a, b))
-          const double ua = fa - R, ub = fb, dd = std::hypot(ua, ub);
-          const double x0 = (Ra * Ra - re * re + dd * dd) / (2.0 * dd);
-          const double h2 = Ra * Ra - x0 * x0;
-          if (h2 >= 0.0 && dd > 0.0) {
-            const double hh = std::sqrt(h2);
-            double best = INFINITY;
-            for (const double sgn : {-1.0, 1.0}) {
-              const double pa = R + (x0 * ua - sgn * hh * ub) / dd;
-              const double pb = (x0 * ub + sgn * hh * ua) / dd;
-              // angle about F from J (direction −m) clockwise
-              const double ja = -ch, jb = -sh_abs, qa = pa - fa, qb = pb - fb;
-              double phi = std::atan2(-(ja * qb - jb * qa), ja * qa + jb * qb);
-              if (phi < 0.0) phi += 2.0 * std::numbers::pi;
-              if (phi < best) {
-                best = phi;
-                ka = pa;
-                kb = pb;
-              }
-            }
-            has_corner = tip_arc = true;
-          }
-        }
-      } else {
-        // straight flank J + λ u, u = (−sin α/2, cos α/2): |J + λ u − O| = Ra gives
-        // λ² + 2 R sin(α/2) λ + R² + ri² − 2 R ri cos(α/2) − Ra² = 0; the apex
-        // λ_A = (R sin(τ/2) − ri sin(α/2 + τ/2)) / cos(α/2 + τ/2)
-        double lk = 0.0;
-        const double cq = R * R + ri * ri - 2.0 * R * ri * ch - Ra * Ra;
-        const double disc = R * R * sh_abs * sh_abs - cq;
-        if (disc >= 0.0) {
-          lk = -R * sh_abs + std::sqrt(disc);
-          has_corner = tip_arc = lk > 0.0;
-        }
-        const double cos_apex = std::cos(half + th2);
-        if (cos_apex > 0.0) {
-          const double la = (R * std::sin(th2) - ri * std::sin(half + th2)) / cos_apex;
-          if (la > 0.0 && (!has_corner || la <= lk)) {
-            lk = la;
-            has_corner = true;
-            tip_arc = false;
-          }
-        }
-        ka = ri * ch - lk * sh_abs;
-        kb = ri * sh_abs + lk * ch;
-      }
-    }
+    // The flank ends at the tooth's corner K (seat_geometry): where it meets the tip circle, or
+    // at the two flanks' apex below it.
+    const bool has_corner = t.has_corner, tip_arc = t.tip_arc;
+    const double ka = t.ka, kb = t.kb;
     // q beyond K along the flank: for the arc, turned clockwise about F past K; for the line,
     // past K along u
     bool past_k = false;

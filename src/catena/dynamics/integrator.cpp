@@ -71,6 +71,8 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
       dvy_(model.nodes()),
       dspeed_(model.sprockets.size()),
       dslide_speed_(model.sprockets.size()) {
+  qx_.resize(model.nodes());
+  qy_.resize(model.nodes());
   for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
     if (model.sprockets[w].driver) continue;
     angle_of_[w] = extra_.size();
@@ -91,6 +93,19 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
   wsol_.assign(m, std::vector<Vec2>(model.nodes()));
 }
 
+void Integrator::prepare_seats(const Model& model) {
+  const std::size_t wheels = model.sprockets.size();
+  seat_geometry_.resize(wheels);
+  seat_psi_.assign(wheels, NAN);
+  seat_direction_.resize(wheels);
+  for (std::size_t w = 0; w < wheels; ++w) {
+    const Sprocket& wheel = model.sprockets[w];
+    if (wheel.pocket) continue;
+    seat_geometry_[w] = seat_geometry(wheel);
+    seat_direction_[w].assign(static_cast<std::size_t>(std::max(wheel.teeth, 1)), SeatDirection{});
+  }
+}
+
 double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   const std::size_t n = model.nodes();
   const double h = options_.step;
@@ -105,7 +120,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   for (std::size_t i = 0; i < n; ++i) {
     const double m = model.mass[i];
     const double dx = ux_[i] - s.x[i], dy = uy_[i] - s.y[i];
-    drag_work_ -= model.drag * m * (dx * dx + dy * dy) / h;
+    // (α = 0, the usual case: the term is +0 and the sum stays +0 without the division)
+    if (model.drag != 0.0) drag_work_ -= model.drag * m * (dx * dx + dy * dy) / h;
     const double inertia = m / (h * th);
     if (jacobian) {
       solver_.diag[i] = {inertia + model.drag * m, 0.0, 0.0, inertia + model.drag * m};
@@ -199,6 +215,19 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       }
     }
   }
+  // The nodes' θ points, once for all wheels (each wheel's reach test reads every node)
+  if (!model.sprockets.empty()) {
+    const double* x0 = s.x.data();
+    const double* y0 = s.y.data();
+    const double* x1 = ux_.data();
+    const double* y1 = uy_.data();
+    double* qx = qx_.data();
+    double* qy = qy_.data();
+    for (std::size_t i = 0; i < n; ++i) {
+      qx[i] = (1.0 - th) * x0[i] + th * x1[i];
+      qy[i] = (1.0 - th) * y0[i] + th * y1[i];
+    }
+  }
   max_penetration_ = 0.0;
   takeup_damper_work_ = 0.0;
   double wheel_norm2 = 0.0;
@@ -238,18 +267,45 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     // seat_contact's own first test, inline: most rollers are clear of a wheel, and the call
     // (its result zeroed, the velocity formed) cost more than the test.
     const double reach = contact_reach(wheel);
+    // An ISO wheel's seat directions: kept while its θ-point angle is the same (a driver's, for
+    // the whole step), else taken afresh as seat_contact takes them
+    const SeatGeometry& geometry = seat_geometry_[w];
+    std::vector<SeatDirection>& directions = seat_direction_[w];
+    if (!wheel.pocket && !(seat_psi_[w] == psi)) {
+      for (SeatDirection& d : directions) d.k = NAN;
+      seat_psi_[w] = psi;
+    }
+    const double cx0 = wheel.centre_x, cy0 = wheel.centre_y, reach2 = reach * reach;
     for (std::size_t i = 0; i < n; ++i) {
-      const double qx = (1.0 - th) * s.x[i] + th * ux_[i];
-      const double qy = (1.0 - th) * s.y[i] + th * uy_[i];
-      const double rx = qx - wheel.centre_x, ry = qy - wheel.centre_y;
-      if (rx * rx + ry * ry > reach * reach) continue;
+      const double qx = qx_[i], qy = qy_[i];
+      const double rx = qx - cx0, ry = qy - cy0;
+      if (rx * rx + ry * ry > reach2) continue;
       if (model.is_pinned(i)) continue;
       double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
       if (slides) {  // relative to the sliding centre
         vx -= slide_rate * ex;
         vy -= slide_rate * ey;
       }
-      const SeatContact sc = wheel_contact(wheel, qx, qy, vx, vy, psi, omega);
+      SeatContact sc;
+      if (wheel.pocket) {
+        sc = pocket_contact(wheel, qx, qy, vx, vy, psi, omega);
+      } else {
+        // seat_contact, its seat's direction from the step's table when there
+        const double kseat = nearest_seat(rx, ry, psi, geometry.tau);
+        const double teeth = static_cast<double>(directions.size());
+        const double slot = kseat - teeth * std::floor(kseat / teeth);  // k mod z, in [0, z)
+        if (std::isfinite(slot)) {
+          SeatDirection& d =
+              directions[std::min(static_cast<std::size_t>(slot), directions.size() - 1)];
+          if (!(d.k == kseat)) {
+            const double sigma = psi + kseat * geometry.tau;
+            d = {kseat, std::cos(sigma), std::sin(sigma)};
+          }
+          sc = seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn);
+        } else {  // a non-finite iterate: as seat_contact (no table slot)
+          sc = seat_contact(wheel, geometry, qx, qy, vx, vy, psi, omega);
+        }
+      }
       if (!sc.active) continue;
       max_penetration_ = std::max(max_penetration_, sc.penetration);
       contact_damping_work_ += h * sc.damping_power;
@@ -480,6 +536,7 @@ StepReport Integrator::step(const Model& model, State& s) {
     const double dx = s.x[b] - s.x[j], dy = s.y[b] - s.y[j];
     l0_[j] = std::sqrt(dx * dx + dy * dy);
   }
+  prepare_seats(model);
   // Newton from the predictor x₁ = x₀ + h v₀ + ht Δv: with ht = hθ, the velocities (and wheel
   // speeds) change over this step as over the last one (Δv the last accepted step's change, when
   // this integrator's last step ended at this state's time); with ht = 0, constant velocity. Only
@@ -798,6 +855,7 @@ void Integrator::newton_system(const Model& model, const State& s, std::span<con
     const std::size_t b = (j + 1) % n;
     l0_[j] = std::hypot(s.x[b] - s.x[j], s.y[b] - s.y[j]);
   }
+  prepare_seats(model);
   for (std::size_t i = 0; i < n; ++i) {
     ux_[i] = unknowns[2 * i];
     uy_[i] = unknowns[2 * i + 1];
