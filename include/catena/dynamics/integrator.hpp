@@ -160,6 +160,16 @@ class Integrator {
   std::vector<double> seat_psi_;  // per wheel: the angle of its directions
   std::vector<std::vector<SeatDirection>> seat_direction_;  // per wheel: by k mod z
   std::vector<double> qx_, qy_;  // the nodes' θ points x_θ of the iterate (assemble's)
+  // Each wheel's candidates: the nodes within (1 + kCandidateMargin) · reach of its centre at
+  // the θ points listed_x_, listed_y_ where the lists were made (in node order; the reach test
+  // then runs on these alone), and the wheel's centre and reach then. Kept while no θ point has
+  // moved far enough since to come within reach from outside the list (update_candidates).
+  // Not used for a take-up's wheel (its centre moves within the step).
+  static constexpr double kCandidateMargin = 0.1;
+  bool update_candidates(const Model& model, double moved);
+  std::vector<std::vector<std::size_t>> candidates_;
+  std::vector<double> listed_x_, listed_y_;
+  std::vector<double> listed_wheel_;  // per wheel: centre x, y and reach at the lists' making
   // The predictor's history: the last accepted step's change of each node's velocity and each
   // wheel's speed and slide speed, and the time it ended at (NaN: none; a state at another time
   // starts from the constant-velocity predictor).
