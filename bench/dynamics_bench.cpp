@@ -110,6 +110,10 @@ void two_sprocket_drive(benchmark::State& bs, double hinge_arm) {
 }
 void BM_DynamicsTwoSprocketDrive(benchmark::State& bs) { two_sprocket_drive(bs, 0.0); }
 BENCHMARK(BM_DynamicsTwoSprocketDrive)->Unit(benchmark::kMicrosecond)->MinTime(3.0);
+// The same drive for a fixed 1000 steps from the seated start: the same work in every run, for
+// instruction counts that do not depend on the machine's load (valgrind --tool=callgrind,
+// docs/performance.md, "The drive's seat contacts")
+BENCHMARK(BM_DynamicsTwoSprocketDrive)->Unit(benchmark::kMicrosecond)->Iterations(1000);
 // with sliding hinges: μ = 0.1 on the 12B pin (d2 = 5.72 mm), the default rate band 5 rad/s
 void BM_DynamicsTwoSprocketDriveHingeFriction(benchmark::State& bs) {
   two_sprocket_drive(bs, 0.1 * 5.72e-3 / 2);

@@ -383,6 +383,29 @@ struct SeatContact {
 };
 SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, double vy, double angle,
                          double speed);
+/// The constants of one ISO 606 wheel's tooth gap that seat_contact uses, from the wheel's fields
+/// alone (not its centre): computed once per wheel and step by the integrator instead of once per
+/// roller in reach (two sine/cosine pairs, an arctangent and two hypotenuses on a flank).
+struct SeatGeometry {
+  double reach = 0.0;         ///< [m] contact_reach(w)
+  double tau = 0.0;           ///< [rad] the seat spacing 2π/z
+  double ch = 0.0, sh = 0.0;  ///< cos and sin of half the seating angle α/2
+  double fa = 0.0, fb = 0.0;  ///< [m] the flank arc's centre F in the seat's mirrored frame
+  bool has_corner = false;    ///< the flank ends at a corner K (the tip circle or the apex)
+  bool tip_arc = false;       ///< K is on the tip circle (else the flanks' apex)
+  double ka = 0.0, kb = 0.0;  ///< [m] K in the seat's mirrored frame
+};
+SeatGeometry seat_geometry(const Sprocket& w);
+/// The nearest seat's index k = nearbyint((atan2(ry, rx) − angle)/τ) of a roller at r = q − centre.
+double nearest_seat(double rx, double ry, double angle, double tau);
+/// seat_contact with the wheel's geometry `t` = seat_geometry(w) given (the same result).
+SeatContact seat_contact(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
+                         double vy, double angle, double speed);
+/// seat_contact's work after the seat is chosen: the contact with seat k, whose direction
+/// (cs, sn) = (cos σ, sin σ), σ = angle + k τ, is given (the caller may keep it for the step: a
+/// driver's angle is the same in every Newton iteration). No reach test: the caller's.
+SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
+                            double vy, double speed, double k, double cs, double sn);
 /// The seats' force law (docs/models/dynamics.md, "Sprockets"), shared by the ISO seat and the
 /// pocket: on a contact `c` whose normal (c.nx, c.ny) is set, at penetration g > 0, with
 /// r = q − centre and the roller's velocity v, sets force, stiffness ∂f/∂g, damping, energy,

@@ -166,6 +166,29 @@ class Integrator {
   std::vector<double> slide_force_;      // per wheel: the chain's force along the slide
   std::vector<double> wheel_force_;      // per wheel: |the chain's force| on a take-up's wheel
   std::vector<double> torque_;           // per wheel: the θ-point contact torque (last assembly)
+  // The seat contacts' step constants (docs/models/dynamics.md, "Solver"): each ISO wheel's tooth
+  // geometry (seat_geometry, set at the start of a step), and the directions (cos σ, sin σ) of its
+  // seats σ = ψ_θ + k τ at the θ-point angle ψ_θ they were taken at — a driver's ψ_θ is the same
+  // in every Newton iteration of a step, so its seats' sines and cosines are taken once a step.
+  struct SeatDirection {
+    double k = NAN;  // the seat index it is for (NaN: none)
+    double cs = 0.0, sn = 0.0;
+  };
+  void prepare_seats(const Model& model);
+  std::vector<SeatGeometry> seat_geometry_;
+  std::vector<double> seat_psi_;  // per wheel: the angle of its directions
+  std::vector<std::vector<SeatDirection>> seat_direction_;  // per wheel: by k mod z
+  std::vector<double> qx_, qy_;  // the nodes' θ points x_θ of the iterate (assemble's)
+  // Each wheel's candidates: the nodes within (1 + kCandidateMargin) · reach of its centre at
+  // the θ points listed_x_, listed_y_ where the lists were made (in node order; the reach test
+  // then runs on these alone), and the wheel's centre and reach then. Kept while no θ point has
+  // moved far enough since to come within reach from outside the list (update_candidates).
+  // Not used for a take-up's wheel (its centre moves within the step).
+  static constexpr double kCandidateMargin = 0.1;
+  bool update_candidates(const Model& model, double moved);
+  std::vector<std::vector<std::size_t>> candidates_;
+  std::vector<double> listed_x_, listed_y_;
+  std::vector<double> listed_wheel_;  // per wheel: centre x, y and reach at the lists' making
   // The predictor's history: the last accepted step's change of each node's velocity and each
   // wheel's speed and slide speed, and the time it ended at (NaN: none; a state at another time
   // starts from the constant-velocity predictor).
@@ -176,10 +199,10 @@ class Integrator {
   // iterations may reuse them)
   bool factors_kept_ = false;
   double max_penetration_ = 0.0;
-  std::vector<GuideFrame> guide_frame_;   // per guide: guide_frame, refreshed with the hint
-  GuideHint guide_hint_;                  // per guide: the nodes near it
-  std::vector<std::uint32_t> all_nodes_;  // 0 … N − 1 (the guide loops without the hint)
-  std::vector<double> qx_, qy_;           // per node: the θ point the hint was last checked at
+  std::vector<GuideFrame> guide_frame_;      // per guide: guide_frame, refreshed with the hint
+  GuideHint guide_hint_;                     // per guide: the nodes near it
+  std::vector<std::uint32_t> all_nodes_;     // 0 … N − 1 (the guide loops without the hint)
+  std::vector<double> guide_qx_, guide_qy_;  // per node: the θ point the hint was last checked at
   // the dissipative works of the last assembly's iterate (StepReport's fields)
   double damper_work_ = 0.0, drag_work_ = 0.0, contact_damping_work_ = 0.0;
   double seat_friction_work_ = 0.0;

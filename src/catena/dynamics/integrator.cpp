@@ -73,6 +73,12 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
       dvy_(model.nodes()),
       dspeed_(model.sprockets.size()),
       dslide_speed_(model.sprockets.size()) {
+  qx_.resize(model.nodes());
+  qy_.resize(model.nodes());
+  listed_x_.assign(model.nodes(), NAN);  // no lists yet: made at the first assembly
+  listed_y_.assign(model.nodes(), NAN);
+  candidates_.resize(model.sprockets.size());
+  for (std::vector<std::size_t>& list : candidates_) list.reserve(model.nodes());
   for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
     if (model.sprockets[w].driver) continue;
     angle_of_[w] = extra_.size();
@@ -94,8 +100,8 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
   // A quarter pitch: at a chain speed v a node crosses it in p/(4 v h) steps (over a hundred at
   // 1 m/s and h = 1e-4 s for 12B), while a rail's list grows by half a pitch's width of nodes.
   guide_hint_ = GuideHint(0.25 * model.pitch);
-  qx_.assign(model.nodes(), 0.0);
-  qy_.assign(model.nodes(), 0.0);
+  guide_qx_.assign(model.nodes(), 0.0);
+  guide_qy_.assign(model.nodes(), 0.0);
   all_nodes_.resize(model.nodes());
   for (std::size_t i = 0; i < model.nodes(); ++i) all_nodes_[i] = static_cast<std::uint32_t>(i);
 }
@@ -107,11 +113,69 @@ void Integrator::refresh_guide_hint(const Model& model, const State& s, double t
   for (std::size_t g = 0; g < model.guides.size(); ++g)
     guide_frame_[g] = guide_frame(model.guides[g]);
   if (model.guides.empty() || !options_.guide_hint) return;
-  for (std::size_t i = 0; i < qx_.size(); ++i) {
-    qx_[i] = (1.0 - th) * s.x[i] + th * ux_[i];
-    qy_[i] = (1.0 - th) * s.y[i] + th * uy_[i];
+  for (std::size_t i = 0; i < guide_qx_.size(); ++i) {
+    guide_qx_[i] = (1.0 - th) * s.x[i] + th * ux_[i];
+    guide_qy_[i] = (1.0 - th) * s.y[i] + th * uy_[i];
   }
-  guide_hint_.update(model.guides, qx_, qy_);
+  guide_hint_.update(model.guides, guide_qx_, guide_qy_);
+}
+
+void Integrator::prepare_seats(const Model& model) {
+  const std::size_t wheels = model.sprockets.size();
+  seat_geometry_.resize(wheels);
+  seat_psi_.assign(wheels, NAN);
+  seat_direction_.resize(wheels);
+  for (std::size_t w = 0; w < wheels; ++w) {
+    const Sprocket& wheel = model.sprockets[w];
+    if (wheel.pocket) continue;
+    seat_geometry_[w] = seat_geometry(wheel);
+    seat_direction_[w].assign(static_cast<std::size_t>(std::max(wheel.teeth, 1)), SeatDirection{});
+  }
+}
+
+bool Integrator::update_candidates(const Model& model, double moved) {
+  // A node off a wheel's list was farther than reach + margin from its centre where the list was
+  // made; it has moved by at most √2 · moved since (its θ point's ∞-norm distance), so it is
+  // still beyond reach while √2 · moved ≤ margin/2 (half: room for the reach test's roundings).
+  const std::size_t n = model.nodes(), wheels = model.sprockets.size();
+  candidates_.resize(wheels);
+  listed_wheel_.resize(3 * wheels, NAN);
+  bool valid = true;
+  for (std::size_t w = 0; w < wheels && valid; ++w) {
+    const Sprocket& wheel = model.sprockets[w];
+    const double reach = contact_reach(wheel);
+    valid = std::sqrt(2.0) * moved <= 0.5 * kCandidateMargin * reach &&
+            listed_wheel_[3 * w] == wheel.centre_x && listed_wheel_[3 * w + 1] == wheel.centre_y &&
+            listed_wheel_[3 * w + 2] == reach;
+  }
+  if (valid) return true;
+  // made afresh at these θ points: every node that is not beyond reach + margin; none while a
+  // θ point is not finite (every node is tested then, as the reach test lets NaN through)
+  const double* qx = qx_.data();
+  const double* qy = qy_.data();
+  double check = 0.0;
+  for (std::size_t i = 0; i < n; ++i) check += std::abs(qx[i]) + std::abs(qy[i]);
+  if (!std::isfinite(check)) {
+    std::fill(listed_x_.begin(), listed_x_.end(), NAN);
+    return false;
+  }
+  for (std::size_t w = 0; w < wheels; ++w) {
+    const Sprocket& wheel = model.sprockets[w];
+    const double reach = contact_reach(wheel);
+    const double wide = (1.0 + kCandidateMargin) * reach, wide2 = wide * wide;
+    std::vector<std::size_t>& list = candidates_[w];
+    list.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double rx = qx[i] - wheel.centre_x, ry = qy[i] - wheel.centre_y;
+      if (!(rx * rx + ry * ry > wide2)) list.push_back(i);
+    }
+    listed_wheel_[3 * w] = wheel.centre_x;
+    listed_wheel_[3 * w + 1] = wheel.centre_y;
+    listed_wheel_[3 * w + 2] = reach;
+  }
+  listed_x_ = qx_;
+  listed_y_ = qy_;
+  return true;
 }
 
 double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
@@ -125,33 +189,53 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   // The dissipative works of this iterate (the step's report takes the last assembly's): the drag
   // impulse is −α m Δx, its work −α m |Δx|²/h; the link dampers' and contact dampers' below.
   damper_work_ = drag_work_ = contact_damping_work_ = seat_friction_work_ = 0.0;
+  // The node and link loops read through local pointers: the stores into the solver's arrays
+  // would otherwise make the compiler reload every vector's data pointer in every iteration.
+  const double* sx = s.x.data();
+  const double* sy = s.y.data();
+  const double* svx = s.vx.data();
+  const double* svy = s.vy.data();
+  const double* ux = ux_.data();
+  const double* uy = uy_.data();
+  const double* mass = model.mass.data();
+  Vec2* rhs = solver_.rhs.data();
+  Mat2* diag = solver_.diag.data();
+  const double drag = model.drag, grav_x = model.gravity_x, grav_y = model.gravity_y;
+  double drag_work = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double m = model.mass[i];
-    const double dx = ux_[i] - s.x[i], dy = uy_[i] - s.y[i];
-    drag_work_ -= model.drag * m * (dx * dx + dy * dy) / h;
+    const double m = mass[i];
+    const double dx = ux[i] - sx[i], dy = uy[i] - sy[i];
+    // (α = 0, the usual case: the term is +0 and the sum stays +0 without the division)
+    if (drag != 0.0) drag_work -= drag * m * (dx * dx + dy * dy) / h;
     const double inertia = m / (h * th);
     if (jacobian) {
-      solver_.diag[i] = {inertia + model.drag * m, 0.0, 0.0, inertia + model.drag * m};
+      diag[i] = {inertia + drag * m, 0.0, 0.0, inertia + drag * m};
       solver_.lower[i] = {};
       solver_.upper[i] = {};
       if (pentadiagonal_) far_lower_[i] = far_upper_[i] = {};
     }
-    solver_.rhs[i] = {
-        -(inertia * (dx - h * s.vx[i]) + model.drag * m * dx - h * m * model.gravity_x),
-        -(inertia * (dy - h * s.vy[i]) + model.drag * m * dy - h * m * model.gravity_y)};
+    rhs[i] = {-(inertia * (dx - h * svx[i]) + drag * m * dx - h * m * grav_x),
+              -(inertia * (dy - h * svy[i]) + drag * m * dy - h * m * grav_y)};
   }
+  drag_work_ = drag_work;
   for (const NodeLoad& f : model.loads) {  // constant: no Jacobian term
     solver_.rhs[f.node].x += h * f.fx;
     solver_.rhs[f.node].y += h * f.fy;
   }
-  for (std::size_t j = 0; j < model.links(); ++j) {
-    const std::size_t a = j, b = (j + 1) % n;
-    const double d0x = s.x[b] - s.x[a], d0y = s.y[b] - s.y[a];
-    const double d1x = ux_[b] - ux_[a], d1y = uy_[b] - uy_[a];
-    const double l0 = l0_[j];
+  const std::size_t links = model.links();
+  const double* len0 = l0_.data();
+  double* len1 = l1_.data();
+  Mat2* upper = solver_.upper.data();
+  Mat2* lower = solver_.lower.data();
+  double damper_work = 0.0;
+  for (std::size_t j = 0; j < links; ++j) {
+    const std::size_t a = j, b = j + 1 == n ? 0 : j + 1;
+    const double d0x = sx[b] - sx[a], d0y = sy[b] - sy[a];
+    const double d1x = ux[b] - ux[a], d1y = uy[b] - uy[a];
+    const double l0 = len0[j];
     const double l1 = std::sqrt(
         d1x * d1x + d1y * d1y);  // sqrt, not hypot: no overflow at chain scales, and faster
-    l1_[j] = l1;
+    len1[j] = l1;
     const double lt = (1.0 - th) * l0 + th * l1;
     const double mx = (1.0 - th) * d0x + th * d1x, my = (1.0 - th) * d0y + th * d1y;
     // φ = [k (l_θ − p) + c (l₁ − l₀)/h] / l_θ; the force on node a is φ d_θ, on node b −φ d_θ.
@@ -163,12 +247,12 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     // the damper's share of φ d_θ does the work −c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ on the two
     // nodes (d_θ·(d₁ − d₀) = l̄ (l₁ − l₀) + (θ − ½)|d₁ − d₀|²: −c (l₁ − l₀)²/h at θ = ½)
     if (c > 0.0) {
-      damper_work_ -= c * (l1 - l0) / h * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
+      damper_work -= c * (l1 - l0) / h * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
     }
-    solver_.rhs[a].x += fx;
-    solver_.rhs[a].y += fy;
-    solver_.rhs[b].x -= fx;
-    solver_.rhs[b].y -= fy;
+    rhs[a].x += fx;
+    rhs[a].y += fy;
+    rhs[b].x -= fx;
+    rhs[b].y -= fy;
     // the link's share of the couples of the hinges at its two ends (the hinge loop below)
     if (!hinge_links_.empty())
       hinge_link(d0x, d0y, d1x, d1y, l0, l1, p, k, th, hinge_links_[j], jacobian);
@@ -178,14 +262,15 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     const double gx = l1 > 0.0 ? dphi * d1x / l1 : 0.0;
     const double gy = l1 > 0.0 ? dphi * d1y / l1 : 0.0;
     const Mat2 hA{h * (th * phi + mx * gx), h * mx * gy, h * my * gx, h * (th * phi + my * gy)};
-    Mat2& daa = solver_.diag[a];
-    Mat2& dbb = solver_.diag[b];
+    Mat2& daa = diag[a];
+    Mat2& dbb = diag[b];
     daa = {daa.a + hA.a, daa.b + hA.b, daa.c + hA.c, daa.d + hA.d};
     dbb = {dbb.a + hA.a, dbb.b + hA.b, dbb.c + hA.c, dbb.d + hA.d};
     // block (a, b) is upper[a] (the corner upper[n−1] when b = 0); block (b, a) is lower[b].
-    solver_.upper[a] = {-hA.a, -hA.b, -hA.c, -hA.d};
-    solver_.lower[b] = {-hA.a, -hA.b, -hA.c, -hA.d};
+    upper[a] = {-hA.a, -hA.b, -hA.c, -hA.d};
+    lower[b] = {-hA.a, -hA.b, -hA.c, -hA.d};
   }
+  damper_work_ = damper_work;
   // Hinge friction (docs/models/dynamics.md, "Hinges"): the couple M g on nodes i − 1, i, i + 1.
   // The residual and the Jacobian are exact: −h ∂(M g)/∂u (rate, load and direction terms; not
   // symmetric) on the 3 × 3 node blocks, the blocks (i − 1, i + 1) and (i + 1, i − 1) in the
@@ -220,6 +305,24 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
         }
       }
     }
+  }
+  // The nodes' θ points, once for all wheels, and how far they are from where the wheels'
+  // candidate lists were made (∞-norm; NaN when a point is not finite)
+  bool listed = false;  // the candidate lists hold every node within reach of its wheel
+  if (!model.sprockets.empty()) {
+    double* qx = qx_.data();
+    double* qy = qy_.data();
+    const double* bx = listed_x_.data();
+    const double* by = listed_y_.data();
+    double moved = 0.0, check = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      qx[i] = (1.0 - th) * sx[i] + th * ux[i];
+      qy[i] = (1.0 - th) * sy[i] + th * uy[i];
+      const double mx = std::abs(qx[i] - bx[i]), my = std::abs(qy[i] - by[i]);
+      moved = std::max(moved, std::max(mx, my));
+      check += mx + my;  // NaN if any is
+    }
+    listed = update_candidates(model, std::isfinite(check) ? moved : INFINITY);
   }
   max_penetration_ = 0.0;
   takeup_damper_work_ = 0.0;
@@ -260,19 +363,54 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     // seat_contact's own first test, inline: most rollers are clear of a wheel, and the call
     // (its result zeroed, the velocity formed) cost more than the test.
     const double reach = contact_reach(wheel);
-    for (std::size_t i = 0; i < n; ++i) {
-      const double qx = (1.0 - th) * s.x[i] + th * ux_[i];
-      const double qy = (1.0 - th) * s.y[i] + th * uy_[i];
-      const double rx = qx - wheel.centre_x, ry = qy - wheel.centre_y;
-      const int held = held_pocket(s, i, w);
-      if (rx * rx + ry * ry > reach * reach && held == kNoPocket) continue;
+    // An ISO wheel's seat directions: kept while its θ-point angle is the same (a driver's, for
+    // the whole step), else taken afresh as seat_contact takes them
+    const SeatGeometry& geometry = seat_geometry_[w];
+    std::vector<SeatDirection>& directions = seat_direction_[w];
+    if (!wheel.pocket && !(seat_psi_[w] == psi)) {
+      for (SeatDirection& d : directions) d.k = NAN;
+      seat_psi_[w] = psi;
+    }
+    const double cx0 = wheel.centre_x, cy0 = wheel.centre_y, reach2 = reach * reach;
+    const double* thx = qx_.data();
+    const double* thy = qy_.data();
+    // every node, or only the wheel's candidates (the same nodes pass the test, in the same
+    // order); a pocket wheel's held joints may be beyond its reach, so it tries every node
+    const bool short_list = listed && !slides && !wheel.pocket;
+    const std::size_t count = short_list ? candidates_[w].size() : n;
+    const std::size_t* list = candidates_[w].data();
+    for (std::size_t slot_i = 0; slot_i < count; ++slot_i) {
+      const std::size_t i = short_list ? list[slot_i] : slot_i;
+      const double qx = thx[i], qy = thy[i];
+      const double rx = qx - cx0, ry = qy - cy0;
+      const int held = wheel.pocket ? held_pocket(s, i, w) : kNoPocket;
+      if (rx * rx + ry * ry > reach2 && held == kNoPocket) continue;
       if (model.is_pinned(i)) continue;
       double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
       if (slides) {  // relative to the sliding centre
         vx -= slide_rate * ex;
         vy -= slide_rate * ey;
       }
-      const SeatContact sc = wheel_contact(wheel, qx, qy, vx, vy, psi, omega, held);
+      SeatContact sc;
+      if (wheel.pocket) {
+        sc = pocket_contact(wheel, qx, qy, vx, vy, psi, omega, held);
+      } else {
+        // seat_contact, its seat's direction from the step's table when there
+        const double kseat = nearest_seat(rx, ry, psi, geometry.tau);
+        const double teeth = static_cast<double>(directions.size());
+        const double slot = kseat - teeth * std::floor(kseat / teeth);  // k mod z, in [0, z)
+        if (std::isfinite(slot)) {
+          SeatDirection& d =
+              directions[std::min(static_cast<std::size_t>(slot), directions.size() - 1)];
+          if (!(d.k == kseat)) {
+            const double sigma = psi + kseat * geometry.tau;
+            d = {kseat, std::cos(sigma), std::sin(sigma)};
+          }
+          sc = seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn);
+        } else {  // a non-finite iterate: as seat_contact (no table slot)
+          sc = seat_contact(wheel, geometry, qx, qy, vx, vy, psi, omega);
+        }
+      }
       if (!sc.active) continue;
       max_penetration_ = std::max(max_penetration_, sc.depth);
       contact_damping_work_ += h * sc.damping_power;
@@ -448,9 +586,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     }
   }
   double norm2 = wheel_norm2;
-  for (std::size_t i = 0; i < n; ++i) {
-    norm2 += solver_.rhs[i].x * solver_.rhs[i].x + solver_.rhs[i].y * solver_.rhs[i].y;
-  }
+  for (std::size_t i = 0; i < n; ++i) norm2 += rhs[i].x * rhs[i].x + rhs[i].y * rhs[i].y;
   return norm2;
 }
 
@@ -518,6 +654,7 @@ StepReport Integrator::step(const Model& model, State& s) {
     const double dx = s.x[b] - s.x[j], dy = s.y[b] - s.y[j];
     l0_[j] = std::sqrt(dx * dx + dy * dy);
   }
+  prepare_seats(model);
   // Newton from the predictor x₁ = x₀ + h v₀ + ht Δv: with ht = hθ, the velocities (and wheel
   // speeds) change over this step as over the last one (Δv the last accepted step's change, when
   // this integrator's last step ended at this state's time); with ht = 0, constant velocity. Only
@@ -884,6 +1021,7 @@ void Integrator::newton_system(const Model& model, const State& s, std::span<con
     const std::size_t b = (j + 1) % n;
     l0_[j] = std::hypot(s.x[b] - s.x[j], s.y[b] - s.y[j]);
   }
+  prepare_seats(model);
   for (std::size_t i = 0; i < n; ++i) {
     ux_[i] = unknowns[2 * i];
     uy_[i] = unknowns[2 * i + 1];
