@@ -707,6 +707,16 @@ TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
   EXPECT_EQ(some.status, 2);
   EXPECT_NE(some.err.find("dynamics.slack_spans (line "), std::string::npos) << some.err;
   EXPECT_NE(some.err.find(") = 'some': expected lowest or all"), std::string::npos) << some.err;
+  // on the two-wheel line (no centres) a refused value is named once, not quoted again as 'lowest'
+  std::stringstream line_case;
+  line_case << std::ifstream(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_12B.toml").rdbuf();
+  std::string line_body = line_case.str();
+  line_body.insert(line_body.find("duration ="), "slack_spans = \"some\"\n");
+  const CliRun line_some = run("dynamics " + write("line_some.toml", line_body));
+  EXPECT_EQ(line_some.status, 2);
+  EXPECT_NE(line_some.err.find(") = 'some': expected lowest or all"), std::string::npos)
+      << line_some.err;
+  EXPECT_EQ(line_some.err.find("'lowest'"), std::string::npos) << line_some.err;
 
   // the rail: 30 mm outside the taut span's middle, 40 mm long along it
   const std::string rail =

@@ -268,7 +268,20 @@ TEST(DynamicsIntegrator, InvalidInputListsEveryProblem) {
   Model other = uniform_chain(6, false, 0.02, 0.03, 1e6, 0.0, true);
   State s6(6);
   EXPECT_THROW(integ.step(other, s6), InputError);  // another model
-  State t(5);                                       // all nodes at the origin: links of zero length
+  // hinge friction switched on after the build (its arrays were not made): refused, both ways
+  Model hinged = ok;
+  hinged.hinge = {.arm = 1e-4, .rate_band = 5.0};
+  State s5 = horizontal(ok);
+  try {
+    integ.step(hinged, s5);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    ASSERT_FALSE(e.issues().empty());
+    EXPECT_EQ(e.issues()[0].field, "model.hinge");
+  }
+  Integrator with_hinges(hinged, {});
+  EXPECT_THROW(with_hinges.step(ok, s5), InputError);
+  State t(5);  // all nodes at the origin: links of zero length
   EXPECT_FALSE(validate(ok, t).empty());
 }
 

@@ -164,7 +164,8 @@ std::vector<Parameter> sprocket_fields() {
            "outside (on the back of the chain, a serpentine path, the wheel turning clockwise; "
            "any wheel of the free layout, the rows then listed counter-clockwise round the "
            "loop)"),
-      quantity("speed", K::kAngularSpeed, "driver: speed, counter-clockwise, > 0"),
+      quantity("speed", K::kAngularSpeed,
+               "driver: speed, > 0 (counter-clockwise; clockwise on side = \"outside\")"),
       number("inertia", "driven or idler: moment of inertia J [kg m^2], > 0"),
       number("load_torque", "driven: load torque T_L [N m], >= 0"),
       quantity("centre_x", K::kLength,
@@ -504,7 +505,9 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
         if (!w.seen.count("speed"))
           issues.push_back({field("speed"), "(missing)", "the driver's speed, e.g. \"13 rad/s\""});
       } else if (!(*w.speed > 0.0 && std::isfinite(*w.speed))) {
-        issues.push_back({field("speed"), shown(*w.speed), "> 0 (counter-clockwise)"});
+        issues.push_back({field("speed"), shown(*w.speed),
+                          w.side == "outside" ? "> 0 (its magnitude: the wheel turns clockwise)"
+                                              : "> 0 (counter-clockwise)"});
       } else {
         lw.speed = *w.speed;
         s.speed = *w.speed;
@@ -796,7 +799,8 @@ Setup parse(const analysis::Inputs& in) {
   bool work_balance = false;
   std::string hinge = "frictionless";
   bool hinge_known = true;
-  bool slack_all = false;  // slack_spans = "all"
+  bool slack_all = false;        // slack_spans = "all"
+  bool slack_spans_bad = false;  // a slack_spans value refused (not quoted again below)
   bool positions = false;
   std::string wheel = "iso606";
   for (const Entry& v : file.table) {
@@ -916,8 +920,10 @@ Setup parse(const analysis::Inputs& in) {
       line[key] = v.line;
       if (v.is_string && (v.text == "lowest" || v.text == "all"))
         slack_all = v.text == "all";
-      else
+      else {
         issues.push_back({where(v), "'" + v.text + "'", "lowest or all"});
+        slack_spans_bad = true;
+      }
       continue;
     }
     if (key == "hinge") {
@@ -1243,7 +1249,7 @@ Setup parse(const analysis::Inputs& in) {
     }
   }
   s.slack_all = slack_all;
-  if (!layout && line.count("slack_spans"))
+  if (!layout && line.count("slack_spans") && !slack_spans_bad)
     issues.push_back({at("slack_spans"), slack_all ? "'all'" : "'lowest'",
                       "no slack_spans without centres (the two-wheel line starts taut)"});
   if (layout) parse_layout(wheels, links, at("links"), line.count("links") > 0, s, issues);

@@ -399,7 +399,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
         const double kseat = nearest_seat(rx, ry, psi, geometry.tau);
         const double teeth = static_cast<double>(directions.size());
         const double slot = kseat - teeth * std::floor(kseat / teeth);  // k mod z, in [0, z)
-        if (std::isfinite(slot)) {
+        // (beyond 2⁵³ the subtraction may round outside [0, z): then seat_contact, no table slot)
+        if (slot >= 0.0 && slot < teeth) {
           SeatDirection& d =
               directions[std::min(static_cast<std::size_t>(slot), directions.size() - 1)];
           if (!(d.k == kseat)) {
@@ -635,6 +636,13 @@ StepReport Integrator::step(const Model& model, State& s) {
     throw InputError({{"model", std::to_string(model.nodes()) + " nodes",
                        "the model this integrator was built for (" +
                            std::to_string(solver_.size()) + " nodes)"}});
+  }
+  // hinge friction switched on or off since the build: its couples' arrays and the band's far
+  // blocks are sized (or not) by the model the integrator was built for
+  if ((model.hinge.active() && model.nodes() >= 3) != pentadiagonal_) {
+    throw InputError({{"model.hinge", model.hinge.active() ? "active" : "inactive",
+                       std::string("the model this integrator was built for (hinge friction ") +
+                           (pentadiagonal_ ? "active" : "inactive") + ")"}});
   }
   if (s.x.size() != model.nodes() || s.y.size() != model.nodes() || s.vx.size() != model.nodes() ||
       s.vy.size() != model.nodes() || s.angle.size() != model.sprockets.size() ||
@@ -924,7 +932,10 @@ StepReport Integrator::step(const Model& model, State& s) {
   // not with guides: with it and the estimate the conveyor's validation (6b) missed its 1 % by
   // its own scatter (above; docs/models/dynamics.md, "The predictor and the estimate with guides")
   const double extrapolate = s.time == history_time_ && model.guides.empty() ? h * th : 0.0;
-  const bool stale = pentadiagonal_ && factors_kept_ && s.time == history_time_;
+  // the last step's factors: hinge friction only, and not with guides (the same caution as the
+  // predictor's)
+  const bool stale =
+      pentadiagonal_ && factors_kept_ && s.time == history_time_ && model.guides.empty();
   StepReport report = newton(extrapolate, stale);
   if (!report.converged && (extrapolate > 0.0 || stale)) {
     // the extrapolation can start Newton worse off than constant velocity (a large step, a
@@ -1011,11 +1022,14 @@ void Integrator::newton_system(const Model& model, const State& s, std::span<con
                                std::vector<double>& residual, std::vector<double>* jacobian) {
   const std::size_t n = model.nodes(), m = extra_.size(), size = 2 * n + m;
   if (unknowns.size() != size || model.nodes() != solver_.size() ||
-      model.sprockets.size() != psi1_.size()) {
+      model.sprockets.size() != psi1_.size() ||
+      (model.hinge.active() && model.nodes() >= 3) != pentadiagonal_) {
     throw InputError({{"unknowns", std::to_string(unknowns.size()),
                        std::to_string(size) + " values for this integrator's model"}});
   }
   throw_if_any(validate(model, s));
+  // this assembly overwrites the bordered solve's rows and columns: the next step factors afresh
+  factors_kept_ = false;
   const double h = options_.step;
   for (std::size_t j = 0; j < model.links(); ++j) {
     const std::size_t b = (j + 1) % n;

@@ -460,12 +460,19 @@ BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra) {
   return out;
 }
 
+// the most points the sag check samples along one arc (bounded work: sag_limit bisects over it)
+constexpr double kMaxSagSamples = 1e6;
+
 std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
                          const std::vector<Circle>& circles, const std::vector<double>& tip,
                          const std::vector<Guide>& guides, double roller, double pitch) {
   if (piece >= laid.pieces.size() || !laid.pieces[piece].sag) return "the sagging span";
   const PathPiece& q = laid.pieces[piece];
-  const auto samples = static_cast<int>(std::max(512.0, std::ceil(q.length / (0.25 * roller))));
+  // a quarter roller apart, at least 512 and at most kMaxSagSamples (a span longer than
+  // 2.5e5 rollers — a roller under 0.24 mm on a 60 m span — is sampled more coarsely)
+  const double want = std::ceil(q.length / (0.25 * roller));
+  const auto samples =
+      static_cast<int>(want > 512.0 ? (want < kMaxSagSamples ? want : kMaxSagSamples) : 512.0);
   // the distance from (x, y) to a guide's surface
   auto to_guide = [](const Guide& g, double x, double y) {
     if (g.kind == Guide::Kind::kStraight) return segment_distance(x, y, g.x0, g.y0, g.x1, g.y1);
