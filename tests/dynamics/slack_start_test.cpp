@@ -158,6 +158,56 @@ TEST(DynamicsSlackStart, SlackSharedByEverySpanInProportionToItsLength) {
   }
 }
 
+// The same on spans of clearly different lengths: three wheels of different sizes (z = 17, 25, 12)
+// at the corners of a triangle (0, 0), (0.6, 0), (0.2, 0.35) m — the hull's three spans are about
+// 0.60, 0.51 and 0.39 m long, all sagging. The claim of `sag_spans`: each span's extra over its
+// chord (the straight span's length) in proportion to that length, e_i / L_i the same for every
+// span (1e-6 relative); the extras sum to the laid path's extra (1e-12); every link one pitch
+// (1e-11) and the chain N p long (1e-9 relative); 2 and 10 % of the path.
+TEST(DynamicsSlackStart, SlackSharedByUnequalSpansInProportionToTheirLengths) {
+  const std::vector<Circle> circles{
+      {0.0, 0.0, pitch_radius(17)}, {0.6, 0.0, pitch_radius(25)}, {0.2, 0.35, pitch_radius(12)}};
+  const std::vector<int> teeth{17, 25, 12};
+  const BeltPath path = belt_path(circles, 0);
+  ASSERT_FALSE(path.pieces.empty());
+  const std::vector<std::size_t> spans = sagging_spans(path);
+  ASSERT_EQ(spans.size(), 3u);
+  double shortest = INFINITY, longest = 0.0;
+  for (const std::size_t k : spans) {
+    shortest = std::min(shortest, path.pieces[k].length);
+    longest = std::max(longest, path.pieces[k].length);
+  }
+  ASSERT_GT(longest, 1.3 * shortest);  // the spans' lengths clearly differ
+  for (const double fraction : {0.02, 0.1}) {
+    const int links = static_cast<int>(std::ceil(path.length * (1 + fraction) / kPitch));
+    BeltPath laid;
+    const LoopPlacement place = place_slack_loop(path, circles, teeth, links, kPitch, laid, spans);
+    ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links)) << fraction;
+    double total = 0.0;
+    const double share0 = (laid.pieces[spans[0]].length - path.pieces[spans[0]].length) /
+                          path.pieces[spans[0]].length;
+    EXPECT_GT(share0, 0.0);
+    for (const std::size_t k : spans) {
+      EXPECT_TRUE(laid.pieces[k].sag) << fraction << " span " << k;
+      const double extra = laid.pieces[k].length - path.pieces[k].length;
+      std::printf("%.2f: span %zu, length %.5f m, extra %.6f m, extra / length %.8f\n", fraction, k,
+                  path.pieces[k].length, extra, extra / path.pieces[k].length);
+      EXPECT_NEAR(extra / path.pieces[k].length / share0, 1.0, 1e-6) << fraction << " span " << k;
+      total += extra;
+    }
+    EXPECT_NEAR(laid.length - path.length, total, 1e-12) << fraction;
+    const State st = loop_state(laid, circles, place, 0.0);
+    double length = 0.0;
+    for (std::size_t i = 0; i < st.nodes(); ++i) {
+      const std::size_t j = (i + 1) % st.nodes();
+      const double l = std::hypot(st.x[j] - st.x[i], st.y[j] - st.y[i]);
+      EXPECT_NEAR(l, kPitch, 1e-11 * kPitch) << fraction << " link " << i;
+      length += l;
+    }
+    EXPECT_NEAR(length, links * kPitch, 1e-9 * links * kPitch) << fraction;
+  }
+}
+
 // A guide under the lower span: a rail 100 mm below it from x = 0.1 to 0.5 m (the rollers on
 // top). A chain one link longer than the taut path sags less than that and passes it, every node
 // more than a roller radius from the rail; the half circle would pass below the whole rail,
