@@ -554,6 +554,9 @@ SweepResult sweep(const SweepRequest& request, const SweepOptions& options) {
       const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
       if (i >= total) break;
       run_point(request, result.points[i], keep, layout, failures[i], listen);
+      // a point the cancel stopped is not done (its run threw Cancelled into its slot): it is
+      // neither counted nor reported
+      if (point_progress.cancelled()) break;
       if (done.fetch_add(1, std::memory_order_acq_rel) + 1 == total) {
         const std::lock_guard<std::mutex> lock(mutex);
         finished.notify_all();
@@ -573,6 +576,7 @@ SweepResult sweep(const SweepRequest& request, const SweepOptions& options) {
     std::unique_lock<std::mutex> lock(mutex);
     std::size_t reported = std::numeric_limits<std::size_t>::max();
     for (;;) {
+      if (point_progress.cancelled()) break;  // no report after the cancel
       const std::size_t now = done.load(std::memory_order_acquire);
       if (options.progress && now != reported) {
         lock.unlock();
