@@ -838,6 +838,17 @@ StepReport Integrator::step(const Model& model, State& s) {
       const double rate = correction / previous;
       const double before = previous;  // restored if this step is undone
       previous = correction;
+      // Undoes a chord step that raised the residual: back to the iterate before it (whose
+      // residual fell) and a fresh iteration there, rather than halving along a correction of
+      // stale factors; that iteration's correction is not a contraction of this sequence, so the
+      // estimate compares the next one with the correction that led to the iterate.
+      auto undo_chord_step = [&] {
+        retreat(1.0);
+        norm2 = assemble(model, s, true);
+        fresh = true;
+        previous_correction = 0.0;
+        previous = before;
+      };
       if (correction <= tol || (model.guides.empty() && std::isfinite(before) && rate < 0.5 &&
                                 rate / (1.0 - rate) * correction <= tol)) {
         if (chord && !fresh && correction > tol) {
@@ -847,11 +858,7 @@ StepReport Integrator::step(const Model& model, State& s) {
           // before it and a fresh iteration, as below.
           const double next = assemble(model, s, false);
           if (!(next < norm2)) {
-            retreat(1.0);
-            norm2 = assemble(model, s, true);
-            fresh = true;
-            previous_correction = 0.0;
-            previous = before;
+            undo_chord_step();
             continue;
           }
           checked = true;
@@ -882,14 +889,7 @@ StepReport Integrator::step(const Model& model, State& s) {
       if (!reuse) {
         const double next = assemble(model, s, true);
         if (!fresh && !(next < norm2)) {
-          // a chord step that raised the residual: back to the iterate before it (whose
-          // residual fell) and a fresh iteration there, rather than halving along a correction
-          // of stale factors
-          retreat(1.0);
-          norm2 = assemble(model, s, true);
-          fresh = true;
-          previous_correction = 0.0;
-          previous = before;
+          undo_chord_step();
           continue;
         }
         const int backtracks = report.backtracks;
@@ -902,14 +902,7 @@ StepReport Integrator::step(const Model& model, State& s) {
       // step, nor at the line search's rejected points).
       double next = assemble(model, s, false);
       if (!fresh && !(next < norm2)) {
-        // a chord step that raised the residual: back to the iterate before it, a fresh
-        // iteration; its correction is not a contraction of this sequence, so the estimate
-        // compares the next one with the correction that led to that iterate
-        retreat(1.0);
-        norm2 = assemble(model, s, true);
-        fresh = true;
-        previous_correction = 0.0;
-        previous = before;
+        undo_chord_step();
         continue;
       }
       // after a fresh (Newton) step: backtrack as above, on the residual alone
