@@ -13,6 +13,22 @@
 namespace catena::dynamics {
 namespace {
 
+// A closed loop of n nodes a pitch p apart on its polygon's circle, spinning at omega, each node
+// with a radial speed of ±wobble alternately (0: a rigid spin).
+State spinning_ring(std::size_t n, double p, double omega, double wobble) {
+  const double radius = p / (2 * std::sin(M_PI / static_cast<double>(n)));
+  State s(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    s.x[i] = radius * std::cos(a);
+    s.y[i] = radius * std::sin(a);
+    const double radial = (i % 2 ? wobble : -wobble);  // [m/s]
+    s.vx[i] = -omega * s.y[i] + radial * std::cos(a);
+    s.vy[i] = omega * s.x[i] + radial * std::sin(a);
+  }
+  return s;
+}
+
 // β: the angle of link (1 → 2) less the angle of link (0 → 1), in (−π, π].
 double relative_angle(const double x[3], const double y[3]) {
   const double ax = x[1] - x[0], ay = y[1] - y[0], bx = x[2] - x[1], by = y[2] - y[1];
@@ -328,16 +344,7 @@ TEST(HingeFriction, WorkBalanceClosesWithHingeFriction) {
   constexpr double p = 0.01905, omega = 20.0;
   Model model = uniform_chain(n, true, p * (1 - 1e-3), 0.0238, 5e7, 0.0, false);
   model.hinge = {.arm = 0.1 * 0.00286, .rate_band = 5.0};
-  const double radius = p / (2 * std::sin(M_PI / n));
-  State s(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * static_cast<double>(i) / n;
-    s.x[i] = radius * std::cos(a);
-    s.y[i] = radius * std::sin(a);
-    const double wobble = (i % 2 ? 0.3 : -0.3);  // [m/s] radial
-    s.vx[i] = -omega * s.y[i] + wobble * std::cos(a);
-    s.vy[i] = omega * s.x[i] + wobble * std::sin(a);
-  }
+  State s = spinning_ring(n, p, omega, 0.3);
   Integrator integ(model, {.step = 1e-4, .theta = 0.5});
   const double e0 = energy(model, s).total();
   for (int k = 0; k < 2000; ++k) ASSERT_TRUE(integ.step(model, s).converged) << k;
@@ -357,16 +364,7 @@ TEST(HingeFriction, NewtonConvergesQuadraticallyOnTheExactJacobian) {
   for (double band : {5.0, 2.0}) {
     Model model = uniform_chain(n, true, p * (1 - 1e-3), 0.0238, 5e7, 0.0, false);
     model.hinge = {.arm = 0.1 * 0.00286, .rate_band = band};
-    const double radius = p / (2 * std::sin(M_PI / n));
-    State s(n, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-      const double a = 2 * M_PI * static_cast<double>(i) / n;
-      s.x[i] = radius * std::cos(a);
-      s.y[i] = radius * std::sin(a);
-      const double wobble = (i % 2 ? 0.3 : -0.3);
-      s.vx[i] = -omega * s.y[i] + wobble * std::cos(a);
-      s.vy[i] = omega * s.x[i] + wobble * std::sin(a);
-    }
+    State s = spinning_ring(n, p, omega, 0.3);
     Integrator run(model, {.step = 1e-4, .theta = 0.5});
     for (int k = 0; k < 50; ++k) ASSERT_TRUE(run.step(model, s).converged);
     std::vector<double> c;  // |δ_k| / p
@@ -432,15 +430,8 @@ TEST(HingeFriction, StepThatFailsTwiceCountsBothStartsAndSaysSo) {
   constexpr int cap = 3;
   Model model = uniform_chain(n, true, p * (1 - 1e-3), 0.0238, 5e7, 0.0, false);
   model.hinge = {.arm = 0.1 * 0.00286, .rate_band = 5.0};
-  const double radius = p / (2 * std::sin(M_PI / n));
-  State s(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * static_cast<double>(i) / n;
-    s.x[i] = radius * std::cos(a);
-    s.y[i] = radius * std::sin(a);
-    s.vx[i] = -omega * s.y[i];
-    s.vy[i] = omega * s.x[i];
-  }
+  State s = spinning_ring(n, p, omega, 0.0);
+  const double radius = p / (2 * std::sin(M_PI / n));  // the ring's, for the blow below
   Integrator run(model, {.step = 1e-4, .max_iterations = cap, .theta = 0.5});
   for (int k = 0; k < 3; ++k) {
     const StepReport rep = run.step(model, s);
