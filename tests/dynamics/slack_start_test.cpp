@@ -247,6 +247,76 @@ TEST(DynamicsSlackStart, SagIsCheckedAgainstTheGuides) {
   EXPECT_NEAR(sagitta(limit.pieces[k]), depth - 0.5 * kRoller, 1e-5);
 }
 
+// Two sagging spans facing each other (as the two walls of a notch in a serpentine path would,
+// each bulging into it): the sag of one is checked against the other's arc, not only against the
+// straight spans (`sag_obstacle`). Two vertical spans 0.3 m long, `gap` apart, travelling down
+// and up, so each bulges towards the other. Apart by 0.2 m their half circles (0.15 m each) would
+// cross: the joint limit (`sag_spans_limit`) is where the arcs come within a roller diameter, the
+// sagittae (gap − d1)/2 each, and a little more runs into the other span, named. Apart by 0.5 m
+// the half circles pass (0.2 m between them): the limit is the half circle's.
+BeltPath facing_spans(double gap) {
+  BeltPath path;
+  PathPiece down;  // from wheel 0 to wheel 1, down x = gap/2: bulges to −x
+  down.wheel = 0;
+  down.next = 1;
+  down.x0 = down.x1 = 0.5 * gap;
+  down.y0 = 0.3;
+  down.y1 = 0.0;
+  down.length = 0.3;
+  PathPiece up = down;  // from wheel 2 to wheel 3, up x = −gap/2: bulges to +x
+  up.wheel = 2;
+  up.next = 3;
+  up.x0 = up.x1 = -0.5 * gap;
+  up.y0 = 0.0;
+  up.y1 = 0.3;
+  up.start = 0.3;
+  path.pieces = {down, up};
+  path.length = 0.6;
+  return path;
+}
+
+// the sagitta of a sagging piece: its arc's farthest point from the chord
+double sagitta(const PathPiece& q) {
+  const double phi = 0.5 * (q.to - q.from);
+  return q.radius * (1.0 - std::cos(phi));
+}
+
+TEST(DynamicsSlackStart, TwoSaggingSpansAreCheckedAgainstEachOther) {
+  const std::vector<std::size_t> both{0, 1};
+  const BeltPath near = facing_spans(0.2);
+  // a half circle each would cross the other: refused, naming the other span
+  const BeltPath crossing = sag_spans(near, both, (0.5 * kPi - 1.0) * 0.6 * (1 - 1e-6));
+  ASSERT_EQ(crossing.pieces.size(), 2u);
+  EXPECT_EQ(sag_obstacle(crossing, 0, {}, {}, {}, kRoller, kPitch),
+            "the span sprocket[2] -> sprocket[3]");
+  EXPECT_EQ(sag_obstacle(crossing, 1, {}, {}, {}, kRoller, kPitch),
+            "the span sprocket[0] -> sprocket[1]");
+  // each alone (the other straight) is clear up to its half circle: the crossing is the arcs'
+  const double alone = sag_limit(near, 0, {}, {}, {}, kRoller, kPitch);
+  EXPECT_NEAR(alone, (0.5 * kPi - 1.0) * 0.3, 1e-6 * 0.3);
+  const double most = sag_spans_limit(near, both, {}, {}, {}, kRoller, kPitch);
+  const BeltPath limit = sag_spans(near, both, most);
+  ASSERT_EQ(limit.pieces.size(), 2u);
+  // both sag alike; the arcs' gap at the limit is a roller diameter (the bisection's 1e-6 of the
+  // spans' 0.6 m in extra length moves the sagittae by less than 1 um here)
+  EXPECT_NEAR(sagitta(limit.pieces[0]), 0.5 * (0.2 - kRoller), 2e-6);
+  EXPECT_NEAR(sagitta(limit.pieces[1]), 0.5 * (0.2 - kRoller), 2e-6);
+  EXPECT_EQ(sag_obstacle(limit, 0, {}, {}, {}, kRoller, kPitch), "");
+  const BeltPath beyond = sag_spans(near, both, most + 1e-4);
+  EXPECT_EQ(sag_obstacle(beyond, 0, {}, {}, {}, kRoller, kPitch),
+            "the span sprocket[2] -> sprocket[3]");
+
+  // apart by 0.5 m: the half circles pass each other, the limit is theirs
+  const BeltPath far = facing_spans(0.5);
+  const double half = sag_spans_limit(far, both, {}, {}, {}, kRoller, kPitch);
+  EXPECT_NEAR(half, (0.5 * kPi - 1.0) * 0.6, 1e-8);
+  const BeltPath passing = sag_spans(far, both, half);
+  ASSERT_EQ(passing.pieces.size(), 2u);
+  EXPECT_NEAR(sagitta(passing.pieces[0]), 0.15, 1e-6);
+  EXPECT_EQ(sag_obstacle(passing, 0, {}, {}, {}, kRoller, kPitch), "");
+  EXPECT_EQ(sag_obstacle(passing, 1, {}, {}, {}, kRoller, kPitch), "");
+}
+
 // The slack loop at rest under gravity: the driver held, the driven wheel free, drag settling the
 // chain. The lower span between the last roller seated on each wheel hangs as the catenary of its
 // links' length through those two points: y = a cosh((x − x0)/a) + c with √(s² − h²) =

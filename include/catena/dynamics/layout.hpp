@@ -107,8 +107,10 @@ std::size_t slack_span(const BeltPath& path);
 /// closer than `roller`/2 (its surface: the rollers would start through the rail), another
 /// straight span closer than `roller` (two rollers side by side), the points within one `pitch`
 /// of the arc's ends left out of the last (they sit on the end wheels by the spans leaving them);
+/// another sagging span's arc (but for a pitch at either of its ends) closer than `roller` too;
 /// and any of those inside the circular segment the sag sweeps between its chord and its arc (a
-/// wheel's centre, 257 points of a guide, 255 of a span), where the chain would enclose it.
+/// wheel's centre, 257 points of a guide, 255 of a span or of another sag's arc), where the chain
+/// would enclose it.
 std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
                          const std::vector<Circle>& circles, const std::vector<double>& tip,
                          const std::vector<Guide>& guides, double roller, double pitch);
@@ -120,6 +122,15 @@ std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
 double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circle>& circles,
                  const std::vector<double>& tip, const std::vector<Guide>& guides, double roller,
                  double pitch);
+
+/// The largest total extra length [m] the spans `pieces` of the taut `path` can share in
+/// proportion to their lengths (`sag_spans`) with no obstacle (`sag_obstacle`) for any of them,
+/// the other sagging spans included: `sag_limit` for one span; for more, by bisection on the total
+/// to 1e-6 of the spans' length, at most (π/2 − 1) of it (every share a half circle). 0 if none
+/// can sag.
+double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pieces,
+                       const std::vector<Circle>& circles, const std::vector<double>& tip,
+                       const std::vector<Guide>& guides, double roller, double pitch);
 
 /// The path with span `piece` laid as a circular arc of its chord plus `extra` (> 0), bulging
 /// outward (to the right of the travel), between the same tangent points; the other pieces and the

@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <regex>
 #include <sstream>
 
@@ -314,7 +315,20 @@ struct Setup {
   double fitted_slack = 0.0;
   bool slack_all = false;  // slack_spans = "all": the slack shared by every span that sags
   std::vector<std::size_t> slack_pieces;  // a start with slack: the sagging pieces of `laid`
-  std::vector<double> tip;  // a start with slack: each wheel's tip radius d_a,max/2 [m]
+  std::vector<double> tip;             // a start with slack: each wheel's tip radius d_a,max/2 [m]
+  std::vector<int> layout_teeth;       // the free layout: each wheel's teeth
+  std::vector<double> seat_clearance;  // the free layout: each wheel's seat clearance ri − d1/2 [m]
+  // a given `links` refused as too long for the slack to sag: the issue (its text rebuilt with
+  // the limit over the guides once they are read) and what it was built from
+  struct SlackRefusal {
+    std::size_t issue = 0;
+    std::string why;  // the counts that fit
+    int chosen = 0;
+    double over = 0.0;
+    std::vector<std::size_t> pieces;
+    std::string blocked;
+  };
+  std::optional<SlackRefusal> slack_refusal;
   bool layout() const { return !wheels.empty(); }
   std::string hinge = "frictionless";  // frictionless, sliding or rolling
   HingeFriction hinge_law;             // arm 0 when frictionless
@@ -427,17 +441,77 @@ std::string span_names(const BeltPath& path, const std::vector<std::size_t>& pie
   return out;
 }
 
-// The most slack the spans `pieces` can share (in proportion to their lengths) before the first
-// meets its own limit (`sag_limit`).
+// The most slack the spans `pieces` can share (in proportion to their lengths), every sag clear
+// of everything, the other sags and `guides` included (`sag_spans_limit`).
 double slack_limit(const Setup& s, const std::vector<std::size_t>& pieces,
                    const std::vector<double>& tip, const std::vector<Guide>& guides) {
-  double total = 0.0, most = INFINITY;
-  for (const std::size_t k : pieces) total += s.path.pieces[k].length;
+  return sag_spans_limit(s.path, pieces, s.circles, tip, guides, s.roller, s.pitch);
+}
+
+// Whether `links` links start with their slack sagging in `pieces`: laid (every link one pitch),
+// every wrapped roller within its seat's clearance, every sag clear of everything (`guides`
+// too). `laid` and `blocked` (what a sag runs into) are set on the way.
+bool slack_starts(const Setup& s, const std::vector<std::size_t>& pieces, int links,
+                  const std::vector<double>& tip, const std::vector<Guide>& guides,
+                  LoopPlacement& placement, BeltPath& laid, std::string& blocked) {
+  blocked.clear();
+  placement = place_slack_loop(s.path, s.circles, s.layout_teeth, links, s.pitch, laid, pieces);
+  if (placement.s.empty()) return false;
+  for (std::size_t w = 0; w < s.circles.size(); ++w)
+    if (!(placement.wrapped[w] > 0 && placement.seat_offset[w] <= s.seat_clearance[w]))
+      return false;
   for (const std::size_t k : pieces) {
-    const double own = sag_limit(s.path, k, s.circles, tip, guides, s.roller, s.pitch);
-    most = std::min(most, pieces.size() == 1 ? own : own * total / s.path.pieces[k].length);
+    blocked = sag_obstacle(laid, k, s.circles, tip, guides, s.roller, s.pitch);
+    if (!blocked.empty()) return false;
   }
-  return pieces.empty() ? 0.0 : most;
+  return true;
+}
+
+// The most links that start with their slack sagging in `pieces` (`slack_starts`, the guides
+// included), 0 if none: by bisection between the path's length and `most` (the slack limit)
+// beyond it — a start at N links sags by more than N p less the path's length, and the sags of
+// growing slack are nested, so the counts that start run from the first beyond the path up.
+int longest_slack_links(const Setup& s, const std::vector<std::size_t>& pieces, double most,
+                        const std::vector<double>& tip, const std::vector<Guide>& guides) {
+  LoopPlacement placement;
+  BeltPath laid;
+  std::string blocked;
+  auto starts = [&](int n) {
+    return n >= 3 && n <= 10000 &&
+           slack_starts(s, pieces, n, tip, guides, placement, laid, blocked);
+  };
+  int lo = static_cast<int>(std::floor(s.path.length / s.pitch)) + 1;
+  if (lo * s.pitch <= s.path.length) ++lo;
+  if (!starts(lo)) return 0;
+  int hi = std::min(10000, static_cast<int>(std::floor((s.path.length + most) / s.pitch)) + 1);
+  if (hi <= lo) return lo;
+  if (starts(hi)) return hi;
+  while (hi - lo > 1) {  // lo starts, hi does not
+    const int mid = lo + (hi - lo) / 2;
+    (starts(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+// The refusal of a count too long for its slack to sag (`dynamics.links`'s expected text after
+// the counts that fit): the most slack the spans take, with `guides` (none before they are read),
+// the most links that start so, and what the sag of the count given runs into.
+std::string slack_refusal_text(const Setup& s, const Setup::SlackRefusal& r,
+                               const std::vector<Guide>& guides) {
+  auto shown = [](double x) { return format_g(x, 6); };
+  auto mm = [](double x) { return format_g(x * 1e3, 6) + " mm"; };
+  const double most = slack_limit(s, r.pieces, s.tip, guides);
+  const int longest = longest_slack_links(s, r.pieces, most, s.tip, guides);
+  return r.why + "; or a chain longer than the path by at most about " + mm(most) + " (" +
+         shown(most / s.path.length * 100.0) + " % of the path), the most its " +
+         span_names(s.path, r.pieces) +
+         " can sag by as circular arcs of at most a half circle clear of every other wheel's "
+         "teeth and the other spans" +
+         (guides.empty() ? "" : " and the guides") + " (here " + mm(r.over) + ", " +
+         shown(r.over / s.path.length * 100.0) + " %" +
+         (r.blocked.empty() ? "" : "; the sagging span would run into " + r.blocked) + "): " +
+         (longest > 0 ? "at most " + std::to_string(longest) + " links start so"
+                      : "no count starts so");
 }
 
 // The free layout: every [[dynamics.sprocket]] with its centre (docs/models/dynamics.md,
@@ -714,47 +788,34 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
                                               : s.slack_all             ? sagging_spans(s.path)
                                                             : std::vector<std::size_t>{k};
       std::string blocked;  // what the sagging span would run into
-      bool seated = false;
+      s.tip = tip;
+      s.layout_teeth = teeth;
+      s.seat_clearance = clearance;
       if (over > 0.0 && !pieces.empty()) {
         BeltPath laid;
-        const LoopPlacement sagging =
-            place_slack_loop(s.path, s.circles, teeth, chosen, s.pitch, laid, pieces);
-        seated = !sagging.s.empty();
-        for (std::size_t w = 0; seated && w < n; ++w)
-          seated = sagging.wrapped[w] > 0 && sagging.seat_offset[w] <= clearance[w];
-        for (std::size_t i = 0; seated && i < pieces.size(); ++i) {
-          blocked = sag_obstacle(laid, pieces[i], s.circles, tip, {}, s.roller, s.pitch);
-          seated = blocked.empty();
-        }
-        if (seated) {
+        LoopPlacement sagging;
+        if (slack_starts(s, pieces, chosen, tip, {}, sagging, laid, blocked)) {
           s.placement = sagging;
           s.laid = laid;
           s.links = chosen;
           s.laid_pitch = sagging.spacing;
           s.slack = over;
           s.slack_pieces = pieces;
-          s.tip = tip;
           return;
         }
       }
-      if (over > 0.0) {
-        if (k >= s.path.pieces.size()) {
-          why +=
-              "; or a chain longer than the path, which starts with its slack sagging in a span "
-              "(here " +
-              mm(over) +
-              "; but no span sags: every span touches a wheel on the back of the "
-              "chain)";
-        } else {
-          const double most = slack_limit(s, pieces, tip, {});
-          why += "; or a chain longer than the path by at most about " + mm(most) + " (" +
-                 shown(most / s.path.length * 100.0) + " % of the path), the most its " +
-                 span_names(s.path, pieces) +
-                 " can sag by as circular arcs of at most a half circle clear of every other "
-                 "wheel's teeth and the other spans (here " +
-                 mm(over) + ", " + shown(over / s.path.length * 100.0) + " %" +
-                 (blocked.empty() ? "" : "; the sagging span would run into " + blocked) + ")";
-        }
+      if (over > 0.0 && k >= s.path.pieces.size()) {
+        why +=
+            "; or a chain longer than the path, which starts with its slack sagging in a span "
+            "(here " +
+            mm(over) +
+            "; but no span sags: every span touches a wheel on the back of the "
+            "chain)";
+      } else if (over > 0.0) {
+        // the limit without the guides for now: parse() names it again once they are read
+        const Setup::SlackRefusal refusal{issues.size(), why, chosen, over, pieces, blocked};
+        s.slack_refusal = refusal;
+        why = slack_refusal_text(s, refusal, {});
       }
       issues.push_back({links_at, std::to_string(chosen), why});
       return;
@@ -1489,6 +1550,7 @@ Setup parse(const analysis::Inputs& in) {
           sag_obstacle(s.laid, s.slack_pieces[i], s.circles, s.tip, s.guides, s.roller, s.pitch);
     if (!blocked.empty()) {
       const double most = slack_limit(s, s.slack_pieces, s.tip, s.guides);
+      const int longest = longest_slack_links(s, s.slack_pieces, most, s.tip, s.guides);
       issues.push_back(
           {at("links"), std::to_string(s.links),
            "a chain longer than the path by at most about " + format_g(most * 1e3, 6) +
@@ -1496,8 +1558,24 @@ Setup parse(const analysis::Inputs& in) {
                " can sag by as circular arcs clear of every other wheel's teeth, the other "
                "spans and the guides (here " +
                format_g(s.slack * 1e3, 6) + " mm; the sagging span would run into " + blocked +
-               ")"});
+               "): " +
+               (longest > 0 ? "at most " + std::to_string(longest) + " links start so"
+                            : "no count starts so")});
     }
+  }
+  // a count refused in parse_layout as too long for its slack: its limit named again with the
+  // guides, so that the count it names starts (the first text left them out)
+  if (s.slack_refusal && !s.guides.empty() && s.slack_refusal->issue < issues.size()) {
+    Setup::SlackRefusal& r = *s.slack_refusal;
+    if (r.blocked.empty()) {
+      // what the count given runs into, the guides included, where its sag can be laid
+      LoopPlacement sagging;
+      BeltPath laid;
+      std::string blocked;
+      slack_starts(s, r.pieces, r.chosen, s.tip, s.guides, sagging, laid, blocked);
+      r.blocked = blocked;
+    }
+    issues[r.issue].expected = slack_refusal_text(s, r, s.guides);
   }
 
   // the work cap: steps × links
@@ -2418,8 +2496,12 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (d.layout()) {
     t << "Catena dynamics: chain loop over " << d.wheels.size()
       << " sprockets in time (issue 21)\n\n"
-      << "  " << (d.chain.empty() ? "chain" : d.chain) << ", " << d.links << " links, belt path "
-      << format_g(d.path.length * 1e3, 6) << " mm (links laid at "
+      << "  " << (d.chain.empty() ? "chain" : d.chain) << ", " << d.links << " links";
+    // `links` omitted: the JSON's links_chosen and links_slack, named as the JSON names them
+    if (d.links_fitted)
+      t << " (links_chosen " << d.links << ", the count the path fits; links_slack "
+        << format_g(d.fitted_slack * 1e3, 4) << " mm)";
+    t << ", belt path " << format_g(d.path.length * 1e3, 6) << " mm (links laid at "
       << format_g(d.laid_pitch * 1e3, 7) << " mm";
     if (d.slack > 0.0) {
       t << ", " << format_g(d.slack * 1e3, 6) << " mm of slack sagging in the span"

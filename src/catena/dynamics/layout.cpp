@@ -84,6 +84,17 @@ double segment_distance(double x, double y, double x0, double y0, double x1, dou
 
 std::string wheel_name(std::size_t i) { return "sprocket[" + std::to_string(i) + "]"; }
 
+// The distance from (x, y) to the counter-clockwise arc about (cx, cy) of `radius` from angle a0
+// to a1 (a0 < a1 < a0 + 2π): to the circle where the point's angle is within the arc, else to
+// the nearer end.
+double arc_distance(double x, double y, double cx, double cy, double radius, double a0, double a1) {
+  const double a = std::atan2(y - cy, x - cx) - a0;
+  const double along = a - kTwoPi * std::floor(a / kTwoPi);
+  if (along <= a1 - a0) return std::abs(std::hypot(x - cx, y - cy) - radius);
+  return std::min(std::hypot(x - cx - radius * std::cos(a0), y - cy - radius * std::sin(a0)),
+                  std::hypot(x - cx - radius * std::cos(a1), y - cy - radius * std::sin(a1)));
+}
+
 // Appends to `path` the arc on wheel `w` from the chain's angle `from` turning by `wrap` in
 // `sense` (+1 counter-clockwise, −1 on the back), then the span from its end to wheel `to` at the
 // tangent's normal angle `normal` (the point at the signed radius there), each placed at `along`
@@ -511,10 +522,15 @@ std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
   }
   for (std::size_t k = 0; k < laid.pieces.size(); ++k) {
     const PathPiece& r = laid.pieces[k];
-    if (k == piece || r.arc || r.sag) continue;
-    for (int j = 1; j < 256; ++j)
-      if (swept(r.x0 + (r.x1 - r.x0) * j / 256.0, r.y0 + (r.y1 - r.y0) * j / 256.0))
-        return "the span " + wheel_name(r.wheel) + " -> " + wheel_name(r.next);
+    if (k == piece || r.arc) continue;
+    for (int j = 1; j < 256; ++j) {
+      // a straight span's points, or another sagging span's along its arc (two sags may face
+      // each other across a notch of a serpentine path)
+      const double a = r.from + (r.to - r.from) * j / 256.0;
+      const double x = r.sag ? r.cx + r.radius * std::cos(a) : r.x0 + (r.x1 - r.x0) * j / 256.0;
+      const double y = r.sag ? r.cy + r.radius * std::sin(a) : r.y0 + (r.y1 - r.y0) * j / 256.0;
+      if (swept(x, y)) return "the span " + wheel_name(r.wheel) + " -> " + wheel_name(r.next);
+    }
   }
   for (int j = 0; j <= samples; ++j) {
     const double a = q.from + (q.to - q.from) * j / samples;
@@ -530,9 +546,13 @@ std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
     if (along < pitch || along > q.length - pitch) continue;
     for (std::size_t k = 0; k < laid.pieces.size(); ++k) {
       const PathPiece& r = laid.pieces[k];
-      if (k == piece || r.arc || r.sag) continue;
-      if (segment_distance(x, y, r.x0, r.y0, r.x1, r.y1) < roller)
-        return "the span " + wheel_name(r.wheel) + " -> " + wheel_name(r.next);
+      if (k == piece || r.arc) continue;
+      // another sagging span: its arc but for a pitch at either end (on its wheels)
+      const double end = r.sag ? pitch / r.radius : 0.0;
+      if (r.sag && !(r.to - r.from > 2.0 * end)) continue;
+      const double gap = r.sag ? arc_distance(x, y, r.cx, r.cy, r.radius, r.from + end, r.to - end)
+                               : segment_distance(x, y, r.x0, r.y0, r.x1, r.y1);
+      if (gap < roller) return "the span " + wheel_name(r.wheel) + " -> " + wheel_name(r.next);
     }
   }
   return {};
@@ -553,6 +573,35 @@ double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circ
   if (clear(most)) return most;
   double lo = 0.0, hi = most;
   while (hi - lo > 1e-6 * c) {
+    const double mid = 0.5 * (lo + hi);
+    (clear(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pieces,
+                       const std::vector<Circle>& circles, const std::vector<double>& tip,
+                       const std::vector<Guide>& guides, double roller, double pitch) {
+  if (pieces.size() == 1) return sag_limit(path, pieces[0], circles, tip, guides, roller, pitch);
+  double total = 0.0;
+  for (const std::size_t k : pieces) {
+    if (k >= path.pieces.size() || path.pieces[k].arc) return 0.0;
+    total += path.pieces[k].length;
+  }
+  if (pieces.empty() || !(total > 0.0)) return 0.0;
+  // every span laid with its share, each checked against everything, the other sags included
+  auto clear = [&](double extra) {
+    const BeltPath laid = sag_spans(path, pieces, extra);
+    if (laid.pieces.empty()) return false;
+    for (const std::size_t k : pieces)
+      if (!sag_obstacle(laid, k, circles, tip, guides, roller, pitch).empty()) return false;
+    return true;
+  };
+  // every share reaches its half circle together: (π/2 − 1) of the total, a hair inside
+  const double most = (0.5 * kPi - 1.0) * total * (1.0 - 1e-9);
+  if (clear(most)) return most;
+  double lo = 0.0, hi = most;
+  while (hi - lo > 1e-6 * total) {
     const double mid = 0.5 * (lo + hi);
     (clear(mid) ? lo : hi) = mid;
   }
@@ -619,12 +668,21 @@ LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& 
     if (p.pieces.empty()) return NAN;
     return walk(p, pitch, nodes).back() - p.length;
   };
+  // the most extra the spans take, every share a half circle (sag_span refuses beyond): a secant
+  // step past it is pulled back half-way from the last iterate, so that a sag near its half
+  // circle is still solved (a step into the refused range stopped the solve before)
+  double spans = 0.0;
+  for (const std::size_t k : pieces)
+    if (k < path.pieces.size()) spans += path.pieces[k].length;
+  const double most = (0.5 * kPi - 1.0) * spans * (1.0 - 1e-9);
   BeltPath p0, p1;
   double e0 = chain - path.length, g0 = miss(e0, p0);
-  double e1 = 1.001 * e0, g1 = miss(e1, p1);
+  double e1 = 1.001 * e0 > most && e0 < most ? 0.5 * (e0 + most) : 1.001 * e0;
+  double g1 = miss(e1, p1);
   for (int it = 0; it < 60 && std::isfinite(g1) && std::abs(g1) > 1e-13 * chain; ++it) {
     if (g1 == g0 || !std::isfinite(g0)) break;
-    const double e2 = e1 - g1 * (e1 - e0) / (g1 - g0);
+    double e2 = e1 - g1 * (e1 - e0) / (g1 - g0);
+    if (e2 > most && e1 < most) e2 = 0.5 * (e1 + most);
     e0 = e1;
     g0 = g1;
     e1 = e2;
