@@ -838,3 +838,58 @@ TEST(DynamicsLayoutCli, TableNamesTheLinksChosenAsTheJsonDoes) {
   EXPECT_NE(given.out.find(", 55 links, belt path "), std::string::npos) << given.out;
   EXPECT_EQ(given.out.find("links_chosen"), std::string::npos) << given.out;
 }
+
+// Two sagging spans that would meet (issue 21): a loop round four corner wheels (z 20 at
+// (±500, −300) and (±500, 600) mm) with a notch from the top — its mouth wheels z 20 at (±250,
+// 600), inside wheels z 30 at (±141.2, 350) that kink its walls, a back-side wheel z 34 at (0, 150)
+// at its bottom. With `slack_spans = "all"` the walls sprocket 3 -> 4 and 6 -> 7 (between two
+// wheels inside) sag too, bulging into the notch towards each other. Before this check 365 links
+// (1766 mm of slack) started with the walls' nearest rollers 11.98 mm apart centre to centre (a
+// 12B roller is 12.07 mm: they overlap), and 371 links with 4.7 mm; now 365 is refused naming the
+// other wall and the most links that start, 363, which start with every span sagging (the walls
+// a roller diameter apart or more), as do 345.
+TEST(DynamicsLayoutCli, TwoSaggingWallsOfANotchAreCheckedAgainstEachOther) {
+  auto wheel_at = [](int teeth, const std::string& role, double x, double y,
+                     const std::string& extra) {
+    std::ostringstream o;
+    o << "\n[[dynamics.sprocket]]\nteeth = " << teeth << "\nrole = \"" << role << "\"\n"
+      << extra << "centre_x = \"" << x << " mm\"\ncentre_y = \"" << y << " mm\"\n";
+    return o.str();
+  };
+  auto notch = [&](int links) {
+    const std::string idler = "inertia = 0.002\n";
+    std::string t =
+        "[dynamics]\nchain = \"12B\"\naxial_stiffness = \"5e7 N/m\"\naxial_damping = 100\n"
+        "pretension = \"500 N\"\ncontact_stiffness = \"2e8 N/m\"\ncontact_damping = 800\n"
+        "duration = \"1 ms\"\nstep = \"0.1 ms\"\ntheta = 0.6\nslack_spans = \"all\"\nlinks = " +
+        std::to_string(links) + "\n";
+    t += wheel_at(20, "driver", -500, -300, "speed = \"5 rad/s\"\n");
+    t += wheel_at(20, "idler", 500, -300, idler);
+    t += wheel_at(20, "idler", 500, 600, idler);
+    t += wheel_at(20, "idler", 250, 600, idler);
+    t += wheel_at(30, "idler", 141.2, 350, idler);
+    t += wheel_at(34, "idler", 0, 150, idler + "side = \"outside\"\n");
+    t += wheel_at(30, "idler", -141.2, 350, idler);
+    t += wheel_at(20, "idler", -250, 600, idler);
+    t += wheel_at(20, "idler", -500, 600, idler);
+    return write("notch" + std::to_string(links) + ".toml", t + "\n[analyses.dynamics]\n");
+  };
+  const CliRun crossing = run("dynamics " + notch(365));
+  ASSERT_EQ(crossing.status, 2) << crossing.out;
+  EXPECT_NE(crossing.err.find("dynamics.links (line "), std::string::npos) << crossing.err;
+  EXPECT_NE(crossing.err.find("the sagging span would run into the span sprocket[6] -> "
+                              "sprocket[7]"),
+            std::string::npos)
+      << crossing.err;
+  EXPECT_NE(crossing.err.find("sprocket[3] -> sprocket[4]"), std::string::npos) << crossing.err;
+  EXPECT_EQ(named_count(crossing.err), 363) << crossing.err;
+  for (const int links : {345, 363}) {
+    const CliRun r = run("dynamics " + notch(links));
+    ASSERT_EQ(r.status, 0) << links << ": " << r.err;
+    EXPECT_NE(r.out.find("slack sagging in the spans sprocket 0 -> sprocket 1, sprocket 1 -> "
+                         "sprocket 2, sprocket 2 -> sprocket 3, sprocket 3 -> sprocket 4, "
+                         "sprocket 6 -> sprocket 7"),
+              std::string::npos)
+        << r.out;
+  }
+}

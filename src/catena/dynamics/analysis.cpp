@@ -468,11 +468,15 @@ bool slack_starts(const Setup& s, const std::vector<std::size_t>& pieces, int li
 }
 
 // The most links that start with their slack sagging in `pieces` (`slack_starts`, the guides
-// included), 0 if none: by bisection between the path's length and `most` (the slack limit)
-// beyond it — a start at N links sags by more than N p less the path's length, and the sags of
-// growing slack are nested, so the counts that start run from the first beyond the path up.
+// included), 0 if none. A start at N links sags by more than N p less the path's length, so no
+// count beyond the path's length plus `most` (the slack limit) starts; the counts below it are
+// tried downwards, the first that starts taken. Not by bisection: the counts that start are not
+// an interval (the slack solve finds no exact-pitch walk for some counts among others that start:
+// 344 and 360 on a notched serpentine path of 272 pitches, where 343 and 345-355 start). After
+// kScanned counts without a start the rest is bisected, as if they were (bounded work).
 int longest_slack_links(const Setup& s, const std::vector<std::size_t>& pieces, double most,
                         const std::vector<double>& tip, const std::vector<Guide>& guides) {
+  constexpr int kScanned = 100;
   LoopPlacement placement;
   BeltPath laid;
   std::string blocked;
@@ -480,17 +484,24 @@ int longest_slack_links(const Setup& s, const std::vector<std::size_t>& pieces, 
     return n >= 3 && n <= 10000 &&
            slack_starts(s, pieces, n, tip, guides, placement, laid, blocked);
   };
-  int lo = static_cast<int>(std::floor(s.path.length / s.pitch)) + 1;
-  if (lo * s.pitch <= s.path.length) ++lo;
-  if (!starts(lo)) return 0;
+  int lo = static_cast<int>(std::floor(s.path.length / s.pitch));
+  if (lo * s.pitch > s.path.length) --lo;  // lo: the last count not beyond the path
   int hi = std::min(10000, static_cast<int>(std::floor((s.path.length + most) / s.pitch)) + 1);
-  if (hi <= lo) return lo;
-  if (starts(hi)) return hi;
-  while (hi - lo > 1) {  // lo starts, hi does not
-    const int mid = lo + (hi - lo) / 2;
-    (starts(mid) ? lo : hi) = mid;
+  for (int n = hi; n > lo; --n) {
+    if (starts(n)) return n;
+    if (hi - n + 1 >= kScanned) {
+      // the rest by bisection: lo + 1 .. n - 1
+      hi = n;
+      if (!starts(lo + 1)) return 0;
+      ++lo;
+      while (hi - lo > 1) {  // lo starts, hi does not
+        const int mid = lo + (hi - lo) / 2;
+        (starts(mid) ? lo : hi) = mid;
+      }
+      return lo;
+    }
   }
-  return lo;
+  return 0;
 }
 
 // The refusal of a count too long for its slack to sag (`dynamics.links`'s expected text after
