@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "../tests/dynamics/two_wheel_loops.hpp"
 #include "catena/dynamics/integrator.hpp"
 
 namespace {
@@ -72,21 +73,9 @@ BENCHMARK(BM_DynamicsLoopStepHingeFriction)
 // the pitch-line speed; the benchmark steps on from there.
 // `hinge_arm` > 0: the same with hinge friction of that arm (docs/models/dynamics.md, "Hinges").
 void two_sprocket_drive(benchmark::State& bs, double hinge_arm) {
-  constexpr int kTeeth = 20, kSpan = 90;
-  constexpr double kOmega = 30.0;
-  const auto n = static_cast<std::size_t>(kTeeth + 2 * kSpan);
-  Model m = uniform_chain(n, true, kPitch * (1.0 - 1e-3), kNodeMass, kStiffness, 100.0, false);
-  m.gravity_y = -9.81;
-  const double centre = kSpan * kPitch;
-  Sprocket a = iso606_sprocket(kPitch, 0.01207, 0.01168, kTeeth, 0.0, 0.0, 2e8, 800.0);
-  a.driver = true;
-  a.speed = kOmega;
-  Sprocket b = iso606_sprocket(kPitch, 0.01207, 0.01168, kTeeth, centre, 0.0, 2e8, 800.0);
-  b.inertia = 0.05;
-  b.load_torque = 20.0;
-  m.sprockets = {a, b};
-  m.hinge.arm = hinge_arm;
-  State s = two_sprocket_loop(kTeeth, kSpan, kPitch, a.pitch_radius, kOmega);
+  testing::Loop drive = testing::benchmark_drive(hinge_arm);
+  const Model& m = drive.model;
+  State& s = drive.state;
   Integrator integ(m, {.step = 1e-4, .theta = 0.6});
   long iterations = 0, steps = 0;
   double penetration = 0.0;
@@ -130,52 +119,12 @@ BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFriction)->Unit(benchmark::kMicrosecon
 // the same rails, a roller on a joint between two pieces touches both for an instant), and 0
 // runs the loop without guides (it sags under gravity: the cost of the rest of the step).
 void conveyor_guides(benchmark::State& bs, bool hint) {
-  constexpr double kPi = std::numbers::pi;
-  constexpr int kTeeth = 16, kSpan = 60, kGap = 3;
-  constexpr double kOmega = 5.0, kRoller = 0.01207;
-  const int pieces = static_cast<int>(bs.range(0));
-  const auto n = static_cast<std::size_t>(kTeeth + 2 * kSpan);
-  Model m = uniform_chain(n, true, kPitch - 20.0 / kStiffness, kNodeMass, kStiffness, 100.0, false);
-  m.gravity_y = -9.81;
-  const double centre = kSpan * kPitch;
-  Sprocket a = iso606_sprocket(kPitch, kRoller, 0.01168, kTeeth, 0.0, 0.0, 2e8, 800.0);
-  a.driver = true;
-  a.speed = kOmega;
-  Sprocket b = iso606_sprocket(kPitch, kRoller, 0.01168, kTeeth, centre, 0.0, 2e8, 800.0);
-  b.inertia = 0.002;
-  m.sprockets = {a, b};
-  const double r = 0.5 * kRoller, level = a.pitch_radius * std::sin(kPi / kTeeth) / (kPi / kTeeth);
-  const double x_lo = kGap * kPitch, x_hi = (kSpan - kGap) * kPitch;
-  if (pieces > 0) {
-    for (const double y : {level, -level}) {
-      for (int k = 0; k < pieces; ++k) {
-        Guide g;  // left to right: the rollers on top
-        g.x0 = x_lo + (x_hi - x_lo) * k / pieces;
-        g.x1 = x_lo + (x_hi - x_lo) * (k + 1) / pieces;
-        g.y0 = g.y1 = y - r;
-        g.roller_radius = r;
-        g.contact_stiffness = 1e7;
-        g.contact_damping = 100.0;
-        g.friction = 0.3;
-        m.guides.push_back(g);
-      }
-    }
-    for (const bool upper : {true, false}) {  // the lead-ins at the entry ends
-      Guide nose = m.guides.front();
-      nose.kind = Guide::Kind::kArc;
-      nose.radius = 0.05;
-      nose.centre_x = upper ? x_hi : x_lo;
-      nose.centre_y = (upper ? level : -level) - r - 0.05;
-      nose.start_angle = upper ? kPi / 6 : kPi / 2;
-      nose.end_angle = upper ? kPi / 2 : 5 * kPi / 6;
-      m.guides.push_back(nose);
-    }
-  }
-  State s = two_sprocket_loop(kTeeth, kSpan, kPitch, a.pitch_radius, kOmega);
-  for (std::size_t i = 0; i < n; ++i) {  // the straight runs start on the guides' level
-    if (s.x[i] > 0.5 * kPitch && s.x[i] < centre - 0.5 * kPitch)
-      s.y[i] = s.y[i] > 0 ? level : -level;
-  }
+  testing::Conveyor conveyor;  // validation (6b)'s loop, as the tests build it
+  conveyor.pieces = static_cast<int>(bs.range(0));
+  conveyor.node_mass = kNodeMass;
+  testing::Loop loop = testing::conveyor_loop(conveyor);
+  const Model& m = loop.model;
+  State& s = loop.state;
   Integrator integ(m, {.step = 1e-4, .theta = 0.6, .guide_hint = hint});
   long iterations = 0, steps = 0;
   for (auto _ : bs) {

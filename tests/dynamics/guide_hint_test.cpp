@@ -16,37 +16,27 @@
 #include <vector>
 
 #include "catena/dynamics/integrator.hpp"
+#include "random_guides.hpp"
+#include "two_wheel_loops.hpp"
 
 namespace catena::dynamics {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+// Guides within ±2 m of the origin, rollers of 2–15 mm, rails up to 1.5 m, arcs of 0.02–0.6 m
+// radius spanning 0.1 rad to a whole turn (tests/dynamics/random_guides.hpp).
 Guide random_guide(std::mt19937_64& rng, int kind) {
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
-  auto uni = [&](double a, double b) { return a + (b - a) * u01(rng); };
-  Guide g;
-  g.roller_radius = uni(2e-3, 1.5e-2);
-  g.contact_stiffness = 1e7;
-  g.contact_damping = 100.0;
-  g.friction = 0.3;
-  const double cx = uni(-2.0, 2.0), cy = uni(-2.0, 2.0);
-  if (kind % 2 == 0) {
-    const double len = uni(1e-3, 1.5), dir = uni(-kPi, kPi);
-    g.x0 = cx;
-    g.y0 = cy;
-    g.x1 = cx + len * std::cos(dir);
-    g.y1 = cy + len * std::sin(dir);
-  } else {
-    g.kind = Guide::Kind::kArc;
-    g.centre_x = cx;
-    g.centre_y = cy;
-    g.radius = uni(0.02, 0.6);
-    g.start_angle = uni(-kPi, kPi);
-    g.end_angle = g.start_angle + uni(0.1, 2.0 * kPi);
-    g.inside = kind % 4 == 1;
-  }
-  return g;
+  const testing::GuideRanges ranges{.roller_lo = 2e-3,
+                                    .roller_hi = 1.5e-2,
+                                    .centre = 2.0,
+                                    .length_lo = 1e-3,
+                                    .length_hi = 1.5,
+                                    .radius_lo = 0.02,
+                                    .radius_over_roller = 0.0,
+                                    .radius_hi = 0.6,
+                                    .span_lo = 0.1};
+  return testing::random_guide(rng, kind, ranges);
 }
 
 // A point on or near a guide's surface (within ±2 roller radii of it), near an edge of a guide's
@@ -74,16 +64,8 @@ void place(std::mt19937_64& rng, const std::vector<Guide>& guides, double margin
   const Guide& g = guides[std::min(
       guides.size() - 1, static_cast<std::size_t>(u01(rng) * static_cast<double>(guides.size())))];
   const double off = uni(-2.0, 2.0) * g.roller_radius;
-  if (g.kind == Guide::Kind::kStraight) {
-    const double ax = g.x1 - g.x0, ay = g.y1 - g.y0, len = std::hypot(ax, ay);
-    const double s = uni(-0.05, 1.05) * len;
-    x = g.x0 + ax / len * s - ay / len * off;
-    y = g.y0 + ay / len * s + ax / len * off;
-  } else {
-    const double a = g.start_angle + uni(-0.05, 1.05) * (g.end_angle - g.start_angle);
-    x = g.centre_x + (g.radius + off) * std::cos(a);
-    y = g.centre_y + (g.radius + off) * std::sin(a);
-  }
+  const double along = uni(-0.05, 1.05);
+  testing::point_near(g, along, off, x, y);
 }
 
 TEST(DynamicsGuideHint, ListsEveryNodeInsideAGuidesBoxOnRandomMotions) {
@@ -187,49 +169,14 @@ TEST(DynamicsGuideHint, NonFiniteGuidesAndNodes) {
 // The conveyor of validation (6b) with each level rail cut into 12 pieces (26 guides), 0.1 s of
 // motion (the chain moves 24 mm, five of the hint's margins): states and works bit-identical.
 TEST(DynamicsGuideHint, IntegratorResultsBitIdenticalWithAndWithoutTheHint) {
-  constexpr int kTeeth = 16, kSpan = 60, kGap = 3, kPieces = 12;
-  constexpr double kPitch = 0.01905, kRoller = 0.01207, kOmega = 5.0, kStiffness = 5e7;
-  const auto n = static_cast<std::size_t>(kTeeth + 2 * kSpan);
-  Model m =
-      uniform_chain(n, true, kPitch - 20.0 / kStiffness, 1.25 * kPitch, kStiffness, 100.0, false);
-  m.gravity_y = -9.81;
-  const double centre = kSpan * kPitch;
-  Sprocket a = iso606_sprocket(kPitch, kRoller, 0.01168, kTeeth, 0.0, 0.0, 2e8, 800.0);
-  a.driver = true;
-  a.speed = kOmega;
-  Sprocket b = iso606_sprocket(kPitch, kRoller, 0.01168, kTeeth, centre, 0.0, 2e8, 800.0);
-  b.inertia = 0.002;
-  m.sprockets = {a, b};
-  const double r = 0.5 * kRoller, level = a.pitch_radius * std::sin(kPi / kTeeth) / (kPi / kTeeth);
-  const double x_lo = kGap * kPitch, x_hi = (kSpan - kGap) * kPitch;
-  for (const double yl : {level, -level}) {
-    for (int k = 0; k < kPieces; ++k) {
-      Guide g;
-      g.x0 = x_lo + (x_hi - x_lo) * k / kPieces;
-      g.x1 = x_lo + (x_hi - x_lo) * (k + 1) / kPieces;
-      g.y0 = g.y1 = yl - r;  // left to right: the rollers on top, on both runs
-      g.roller_radius = r;
-      g.contact_stiffness = 1e7;
-      g.contact_damping = 100.0;
-      g.friction = 0.3;
-      m.guides.push_back(g);
-    }
-  }
-  for (const bool upper : {true, false}) {  // lead-in arcs at the entry ends
-    Guide nose = m.guides.front();
-    nose.kind = Guide::Kind::kArc;
-    nose.radius = 0.05;
-    nose.centre_x = upper ? x_hi : x_lo;
-    nose.centre_y = (upper ? level : -level) - r - 0.05;
-    nose.start_angle = upper ? kPi / 6 : kPi / 2;
-    nose.end_angle = upper ? kPi / 2 : 5 * kPi / 6;
-    m.guides.push_back(nose);
-  }
-  State s0 = two_sprocket_loop(kTeeth, kSpan, kPitch, a.pitch_radius, kOmega);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (s0.x[i] > 0.5 * kPitch && s0.x[i] < centre - 0.5 * kPitch)
-      s0.y[i] = s0.y[i] > 0 ? level : -level;
-  }
+  constexpr double kPitch = 0.01905;
+  testing::Conveyor conveyor;  // validation (6b)'s loop and guides
+  conveyor.pieces = 12;
+  const testing::Loop loop = testing::conveyor_loop(conveyor);
+  const Model& m = loop.model;
+  const State& s0 = loop.state;
+  ASSERT_EQ(m.guides.size(), 26U);
+  const Sprocket& a = m.sprockets[0];
   State with = s0, without = s0;
   Integrator hinted(m, {.step = 1e-4, .theta = 0.6});
   Integrator every(m, {.step = 1e-4, .theta = 0.6, .guide_hint = false});

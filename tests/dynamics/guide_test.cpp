@@ -11,6 +11,7 @@
 #include <string>
 
 #include "catena/dynamics/integrator.hpp"
+#include "random_guides.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -239,46 +240,18 @@ TEST(Guide, BoundsNeverCullAPossibleContact) {
   auto uni = [&](double a, double b) { return a + (b - a) * u01(rng); };
   long active = 0, culled = 0, near_edge = 0;
   for (int trial = 0; trial < 400; ++trial) {
-    Guide g;
-    g.roller_radius = uni(1e-3, 2e-2);
-    g.contact_stiffness = 1e7;
-    g.contact_damping = 100.0;
-    g.friction = 0.3;
+    // rollers of 1–20 mm, within ±5 m of the origin, rails up to 2 m, arcs from just over the
+    // roller's radius to 1 m spanning 1 mrad to a whole turn
+    const Guide g = testing::random_guide(rng, trial, testing::GuideRanges{});
     const double r = g.roller_radius;
-    const double cx = uni(-5.0, 5.0), cy = uni(-5.0, 5.0);
-    if (trial % 2 == 0) {
-      g.kind = Guide::Kind::kStraight;
-      const double len = uni(1e-3, 2.0), dir = uni(-kPi, kPi);
-      g.x0 = cx;
-      g.y0 = cy;
-      g.x1 = cx + len * std::cos(dir);
-      g.y1 = cy + len * std::sin(dir);
-    } else {
-      g.kind = Guide::Kind::kArc;
-      g.centre_x = cx;
-      g.centre_y = cy;
-      g.radius = uni(r * 1.01, 1.0);
-      g.start_angle = uni(-kPi, kPi);
-      g.end_angle = g.start_angle + uni(1e-3, 2.0 * kPi);
-      g.inside = trial % 4 == 1;
-    }
     const GuideBounds b = guide_bounds(g);
     for (int k = 0; k < 2000; ++k) {
       double x = 0.0, y = 0.0;
       // a point at a random place along the surface (a little past its ends too), at a normal
       // offset within ±1.5 r of the contact band's middle
       const double off = uni(-1.5, 1.5) * r;
-      if (g.kind == Guide::Kind::kStraight) {
-        const double ax = g.x1 - g.x0, ay = g.y1 - g.y0, len = std::hypot(ax, ay);
-        const double s = uni(-0.1, 1.1) * len;
-        x = g.x0 + ax / len * s - ay / len * off;
-        y = g.y0 + ay / len * s + ax / len * off;
-      } else {
-        const double a = g.start_angle + uni(-0.1, 1.1) * (g.end_angle - g.start_angle);
-        const double d = g.radius + off;
-        x = g.centre_x + d * std::cos(a);
-        y = g.centre_y + d * std::sin(a);
-      }
+      const double along = uni(-0.1, 1.1);
+      testing::point_near(g, along, off, x, y);
       const GuideContact c = guide_contact(g, x, y, uni(-2.0, 2.0), uni(-2.0, 2.0));
       const bool possible = guide_touch_possible(b, x, y);
       if (c.active) {

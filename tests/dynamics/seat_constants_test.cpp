@@ -13,6 +13,7 @@
 #include "catena/drive/sprocket.hpp"
 #include "catena/dynamics/chain.hpp"
 #include "catena/dynamics/integrator.hpp"
+#include "two_wheel_loops.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -355,27 +356,10 @@ TEST(DynamicsSeatConstants, SeatContactWithTheWheelsConstantsIsSeatContact) {
   for (int s = 0; s < 4; ++s) EXPECT_GT(surfaces[s], 0) << "surface " << s << " never touched";
 }
 
-// The benchmark's drive (200 links of 12B over two z = 20 wheels, the driven one J = 0.05 kg·m²)
-struct Drive {
-  Model model;
-  State state;
-};
-Drive drive() {
-  constexpr double kPitch = 0.01905;
-  const auto n = static_cast<std::size_t>(20 + 2 * 90);
-  Drive d;
-  d.model = uniform_chain(n, true, kPitch * (1.0 - 1e-3), 0.0238, 5e7, 100.0, false);
-  d.model.gravity_y = -9.81;
-  Sprocket a = iso606_sprocket(kPitch, 0.01207, 0.01168, 20, 0.0, 0.0, 2e8, 800.0);
-  a.driver = true;
-  a.speed = 30.0;
-  Sprocket b = iso606_sprocket(kPitch, 0.01207, 0.01168, 20, 90 * kPitch, 0.0, 2e8, 800.0);
-  b.inertia = 0.05;
-  b.load_torque = 20.0;
-  d.model.sprockets = {a, b};
-  d.state = two_sprocket_loop(20, 90, kPitch, a.pitch_radius, 30.0);
-  return d;
-}
+// The benchmark's drive (200 links of 12B over two z = 20 wheels, the driven one J = 0.05 kg·m²;
+// tests/dynamics/two_wheel_loops.hpp)
+using Drive = testing::Loop;
+Drive drive() { return testing::benchmark_drive(); }
 
 // Unknowns with every node moved `shift` places along the loop (and a small jitter): nodes that
 // were far from a wheel are on it now.

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "catena/dynamics/chain.hpp"
@@ -42,21 +43,28 @@ Slack slack_loop(double fraction) {
   return s;
 }
 
+// Every link of the start `st` one pitch (1e-11) and the chain N p long, N = `links` (1e-9
+// relative); `what` names the case in a failure.
+void expect_every_link_one_pitch(const State& st, int links, const std::string& what) {
+  double length = 0.0;
+  for (std::size_t i = 0; i < st.nodes(); ++i) {
+    const std::size_t j = (i + 1) % st.nodes();
+    const double l = std::hypot(st.x[j] - st.x[i], st.y[j] - st.y[i]);
+    EXPECT_NEAR(l, kPitch, 1e-11 * kPitch) << what << " link " << i;
+    length += l;
+  }
+  EXPECT_NEAR(length, links * kPitch, 1e-9 * links * kPitch) << what;
+}
+
 TEST(DynamicsSlackStart, EveryLinkIsOnePitchAndTheLowerSpanSags) {
   for (const double fraction : {0.001, 0.01, 0.03}) {
     const Slack s = slack_loop(fraction);
     ASSERT_EQ(s.place.s.size(), static_cast<std::size_t>(s.links)) << fraction;
     EXPECT_NEAR(s.place.spacing, kPitch, 1e-12 * kPitch);
     const State st = loop_state(s.laid, s.circles, s.place, 0.0);
-    double length = 0.0, lowest = 0.0;
-    for (std::size_t i = 0; i < st.nodes(); ++i) {
-      const std::size_t j = (i + 1) % st.nodes();
-      const double l = std::hypot(st.x[j] - st.x[i], st.y[j] - st.y[i]);
-      EXPECT_NEAR(l, kPitch, 1e-11 * kPitch) << fraction << " link " << i;
-      length += l;
-      lowest = std::min(lowest, st.y[i]);
-    }
-    EXPECT_NEAR(length, s.links * kPitch, 1e-9 * s.links * kPitch);
+    expect_every_link_one_pitch(st, s.links, std::to_string(fraction));
+    double lowest = 0.0;
+    for (std::size_t i = 0; i < st.nodes(); ++i) lowest = std::min(lowest, st.y[i]);
     // the sag is in the lower span (its outward normal points down): the circular arc of the
     // chord c and length c + e between the tangent points, sagitta ρ (1 − cos φ)
     const std::size_t k = slack_span(s.path);
@@ -93,13 +101,11 @@ TEST(DynamicsSlackStart, LargeSlackSagsUpToAHalfCircleWithEveryLinkOnePitch) {
     const Slack s = slack_loop(fraction);
     ASSERT_EQ(s.place.s.size(), static_cast<std::size_t>(s.links)) << fraction;
     const State st = loop_state(s.laid, s.circles, s.place, 0.0);
+    expect_every_link_one_pitch(st, s.links, std::to_string(fraction));
     const std::size_t n = st.nodes();
-    double length = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       const std::size_t j = (i + 1) % n;
       const double l = std::hypot(st.x[j] - st.x[i], st.y[j] - st.y[i]);
-      EXPECT_NEAR(l, kPitch, 1e-11 * kPitch) << fraction << " link " << i;
-      length += l;
       for (const Circle& c : s.circles) {
         const double di = std::hypot(st.x[i] - c.x, st.y[i] - c.y);
         const double dj = std::hypot(st.x[j] - c.x, st.y[j] - c.y);
@@ -115,7 +121,6 @@ TEST(DynamicsSlackStart, LargeSlackSagsUpToAHalfCircleWithEveryLinkOnePitch) {
             << fraction << " link " << i;
       }
     }
-    EXPECT_NEAR(length, s.links * kPitch, 1e-9 * s.links * kPitch) << fraction;
     EXPECT_EQ(sag_obstacle(s.laid, slack_span(s.path), s.circles, {r1 + 0.01, r1 + 0.01}, {},
                            kRoller, kPitch),
               "");
@@ -147,14 +152,7 @@ TEST(DynamicsSlackStart, SlackSharedByEverySpanInProportionToItsLength) {
     EXPECT_NEAR(ea, eb, 1e-12) << fraction;
     EXPECT_NEAR(s.laid.length - s.path.length, ea + eb, 1e-12);
     const State st = loop_state(s.laid, s.circles, s.place, 0.0);
-    double length = 0.0;
-    for (std::size_t i = 0; i < st.nodes(); ++i) {
-      const std::size_t j = (i + 1) % st.nodes();
-      const double l = std::hypot(st.x[j] - st.x[i], st.y[j] - st.y[i]);
-      EXPECT_NEAR(l, kPitch, 1e-11 * kPitch) << fraction << " link " << i;
-      length += l;
-    }
-    EXPECT_NEAR(length, s.links * kPitch, 1e-9 * s.links * kPitch);
+    expect_every_link_one_pitch(st, s.links, std::to_string(fraction));
   }
 }
 
@@ -197,14 +195,7 @@ TEST(DynamicsSlackStart, SlackSharedByUnequalSpansInProportionToTheirLengths) {
     }
     EXPECT_NEAR(laid.length - path.length, total, 1e-12) << fraction;
     const State st = loop_state(laid, circles, place, 0.0);
-    double length = 0.0;
-    for (std::size_t i = 0; i < st.nodes(); ++i) {
-      const std::size_t j = (i + 1) % st.nodes();
-      const double l = std::hypot(st.x[j] - st.x[i], st.y[j] - st.y[i]);
-      EXPECT_NEAR(l, kPitch, 1e-11 * kPitch) << fraction << " link " << i;
-      length += l;
-    }
-    EXPECT_NEAR(length, links * kPitch, 1e-9 * links * kPitch) << fraction;
+    expect_every_link_one_pitch(st, links, std::to_string(fraction));
   }
 }
 

@@ -245,8 +245,9 @@ double binned_variation(int z, int bins) {
   return 1 - lo / hi;
 }
 
-// The span's speed averaged over `bins` phase bins, and its variation 1 − min/max.
-double simulated_variation(const Result& r, int bins) {
+// The span's speed averaged over `bins` equal bins of the tooth phase (NaN in a bin no sample
+// fell in).
+std::vector<double> simulated_profile(const Result& r, int bins) {
   std::vector<double> sum(bins, 0.0);
   std::vector<int> count(bins, 0);
   for (std::size_t k = 0; k < r.phase.size(); ++k) {
@@ -254,13 +255,24 @@ double simulated_variation(const Result& r, int bins) {
     sum[b] += r.span[k];
     ++count[b];
   }
+  for (int b = 0; b < bins; ++b) sum[b] = count[b] == 0 ? NAN : sum[b] / count[b];
+  return sum;
+}
+
+// The variation 1 − min/max of bin means (NaN if a bin is empty).
+double variation_of(const std::vector<double>& means) {
   double lo = INFINITY, hi = -INFINITY;
-  for (int b = 0; b < bins; ++b) {
-    if (count[b] == 0) return NAN;
-    lo = std::min(lo, sum[b] / count[b]);
-    hi = std::max(hi, sum[b] / count[b]);
+  for (const double m : means) {
+    if (std::isnan(m)) return NAN;
+    lo = std::min(lo, m);
+    hi = std::max(hi, m);
   }
   return 1 - lo / hi;
+}
+
+// The span's speed averaged over `bins` phase bins, and its variation 1 − min/max.
+double simulated_variation(const Result& r, int bins) {
+  return variation_of(simulated_profile(r, bins));
 }
 
 // Validation (1): the polygonal action, on ISO seats with friction (μ = 0.3), quasi-static.
@@ -399,8 +411,9 @@ std::vector<double> span_speed_profile(int z, double v, int n, int from, const C
   return out;
 }
 
-// A profile's variation over `bins` equal phase bins, 1 − min/max of the bin means.
-double profile_variation(const std::vector<double>& v, int bins) {
+// A profile sampled at equally spaced phases (the sample s at phase (s + ½)/samples) averaged
+// over `bins` equal phase bins.
+std::vector<double> binned_profile(const std::vector<double>& v, int bins) {
   std::vector<double> sum(bins, 0.0);
   std::vector<int> count(bins, 0);
   const auto samples = static_cast<int>(v.size());
@@ -409,12 +422,13 @@ double profile_variation(const std::vector<double>& v, int bins) {
     sum[b] += v[s];
     ++count[b];
   }
-  double lo = INFINITY, hi = -INFINITY;
-  for (int b = 0; b < bins; ++b) {
-    lo = std::min(lo, sum[b] / count[b]);
-    hi = std::max(hi, sum[b] / count[b]);
-  }
-  return 1 - lo / hi;
+  for (int b = 0; b < bins; ++b) sum[b] = count[b] == 0 ? NAN : sum[b] / count[b];
+  return sum;
+}
+
+// A profile's variation over `bins` equal phase bins, 1 − min/max of the bin means.
+double profile_variation(const std::vector<double>& v, int bins) {
+  return variation_of(binned_profile(v, bins));
 }
 
 // The elastic span's profile for the run `d`: the span shortens by a link per tooth period as
@@ -529,13 +543,24 @@ double mean_of(const std::vector<double>& v) {
 // the strongest peak is elsewhere (12.7, 53.0, 10.4, 10.4 Hz). 900 and 1400 N are the two of
 // the sweep where it is more than a bin from every harmonic (chosen for that, after the sweep).
 // Tolerances: 8 % for the peaks that carry f1 (the sweep and the pull), 3 % for the others.
-TEST(DynamicsChordal, PolygonalActionAtTwelveTeethIsTheSpansTransverseSwing) {
-  const Chordal free_span = quasi_static(12);
+// The run `free_span` free and with its span held in its quasi-static transverse state
+// (Chordal::hold_transverse), both over 40 bins, and the elastic span's profile for it.
+struct FreeAndHeld {
+  Result free, held;
+  std::vector<double> reference;
+};
+FreeAndHeld free_and_held(const Chordal& free_span) {
   Chordal held = free_span;
   held.hold_transverse = true;
-  const Result f = run(free_span, 40), h = run(held, 40);
+  return {run(free_span, 40), run(held, 40), elastic_reference(free_span)};
+}
+
+TEST(DynamicsChordal, PolygonalActionAtTwelveTeethIsTheSpansTransverseSwing) {
+  const Chordal free_span = quasi_static(12);
+  const FreeAndHeld runs = free_and_held(free_span);
+  const Result &f = runs.free, &h = runs.held;
   ASSERT_TRUE(f.converged && h.converged);
-  const std::vector<double> ref = elastic_reference(free_span);
+  const std::vector<double>& ref = runs.reference;
   for (int bins : {20, 40, 80}) {
     const double kin = binned_variation(12, bins), el = profile_variation(ref, bins);
     const double held_ratio = simulated_variation(h, bins) / kin;
@@ -632,34 +657,19 @@ TEST(DynamicsChordal, PolygonalActionWithTheSpanHeldTransversely) {
 // variation.
 double deviation_before_engagement(const Result& r, const std::vector<double>& ref, double v,
                                    int bins) {
-  std::vector<double> sim(bins, 0.0), el(bins, 0.0);
-  std::vector<int> ns(bins, 0), ne(bins, 0);
-  for (std::size_t k = 0; k < r.phase.size(); ++k) {
-    const int b = std::min(bins - 1, static_cast<int>(r.phase[k] * bins));
-    sim[b] += r.span[k];
-    ++ns[b];
-  }
-  const auto samples = static_cast<int>(ref.size());
-  for (int s = 0; s < samples; ++s) {
-    const int b = std::min(bins - 1, static_cast<int>((s + 0.5) / samples * bins));
-    el[b] += ref[s];
-    ++ne[b];
-  }
+  const std::vector<double> sim = simulated_profile(r, bins), el = binned_profile(ref, bins);
   double worst = 0.0;
-  for (int b = 0; b < bins / 2; ++b)
-    worst = std::max(worst, std::abs(sim[b] / ns[b] - el[b] / ne[b]));
+  for (int b = 0; b < bins / 2; ++b) worst = std::max(worst, std::abs(sim[b] - el[b]));
   return worst / (v * profile_variation(ref, bins));
 }
 
 TEST(DynamicsChordal, PolygonalActionAtSpeedTheProfilesWaveIsTheTransverseSwing) {
   for (int z : {17, 25}) {
     for (double v : {0.25, 0.5}) {
-      const Chordal free_span = quasi_static(z, v);
-      Chordal held = free_span;
-      held.hold_transverse = true;
-      const Result f = run(free_span, 40), h = run(held, 40);
+      const FreeAndHeld runs = free_and_held(quasi_static(z, v));
+      const Result &f = runs.free, &h = runs.held;
       ASSERT_TRUE(f.converged && h.converged);
-      const std::vector<double> ref = elastic_reference(free_span);
+      const std::vector<double>& ref = runs.reference;
       for (int bins : {20, 40, 80}) {
         const double df = deviation_before_engagement(f, ref, v, bins);
         const double dh = deviation_before_engagement(h, ref, v, bins);

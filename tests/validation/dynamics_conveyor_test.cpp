@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "../dynamics/period_mean.hpp"
+#include "../dynamics/two_wheel_loops.hpp"
 #include "catena/dynamics/integrator.hpp"
 #include "catena/strength/loop.hpp"
 
@@ -35,21 +36,9 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kTensionTol = 0.01;  // issue 21 (6b): 1 %
 constexpr double kCarriedTol = 0.02;  // the rise and the friction power (below)
 
-struct Conveyor {
-  int teeth = 16;
-  int span_links = 60;
-  int guide_gap = 3;             // pitches from each wheel's tangent point to the guide's end
-  double pitch = 0.01905;        // [m] 12B
-  double roller = 0.01207;       // [m] d1
-  double width = 0.01168;        // [m] b1
-  double mass_per_metre = 1.25;  // [kg/m]
-  double stiffness = 5e7;        // [N/m] per link
-  double pretension = 20.0;      // [N]
-  double omega = 5.0;            // [rad/s] driver
-  double inertia = 0.002;        // [kg·m²] tail idler
-  double friction = 0.3;         // μ on both guides
-  double gravity = 9.81;         // [m/s²]
-};
+// The loop, its wheels and guides (tests/dynamics/two_wheel_loops.hpp): validation (6b)'s
+// defaults, one rail a run.
+using testing::Conveyor;
 
 // The probes: time series of the tension of the link whose middle is nearest each probe's x on
 // the upper (y > 0) or lower run.
@@ -66,60 +55,10 @@ struct ConveyorRun {
 };
 
 ConveyorRun run(const Conveyor& d, std::vector<Probe> probes, double duration, double step) {
-  const int z = d.teeth, m = d.span_links;
-  const auto n = static_cast<std::size_t>(z + 2 * m);
-  const double node_mass = d.mass_per_metre * d.pitch;
-  Model model = uniform_chain(n, true, d.pitch - d.pretension / d.stiffness, node_mass, d.stiffness,
-                              100.0, false);
-  model.gravity_y = -d.gravity;
-  const double centre = m * d.pitch;
-  constexpr double kContactStiffness = 2e8;  // [N/m] as in validation (6)
-  constexpr double kContactDamping = 800.0;  // [N·s/m]
-  Sprocket a =
-      iso606_sprocket(d.pitch, d.roller, d.width, z, 0.0, 0.0, kContactStiffness, kContactDamping);
-  a.driver = true;
-  a.speed = d.omega;
-  Sprocket b = iso606_sprocket(d.pitch, d.roller, d.width, z, centre, 0.0, kContactStiffness,
-                               kContactDamping);
-  b.inertia = d.inertia;
-  b.load_torque = 0.0;
-  model.sprockets = {a, b};
-  // The guides carry the runs at the mean height of the polygon's tangent point, R sin(π/z)/(π/z)
-  // (the seat at the top swings through ±π/z): the chain runs level onto the wheels on average.
-  const double r = 0.5 * d.roller, radius = a.pitch_radius;
-  const double level = radius * std::sin(kPi / z) / (kPi / z);
-  const double x_lo = d.guide_gap * d.pitch, x_hi = (m - d.guide_gap) * d.pitch;
-  for (const double y : {level, -level}) {
-    Guide g;  // left to right: the free side (rollers) on top
-    g.x0 = x_lo;
-    g.x1 = x_hi;
-    g.y0 = g.y1 = y - r;
-    g.roller_radius = r;
-    g.contact_stiffness = 1e7;
-    g.contact_damping = 100.0;
-    g.friction = d.friction;
-    model.guides.push_back(g);
-  }
-  // Each guide's entry end is a rounded nose — a convex arc of radius 50 mm tangent to the rail,
-  // falling away over 60° — as real guides have a lead-in: a roller arriving a little low (the
-  // polygon swings the free span up and down) rides up it instead of striking the rail's end.
-  constexpr double kNose = 0.05;  // [m]
-  for (const bool upper : {true, false}) {
-    const Guide& rail = model.guides[upper ? 0 : 1];
-    Guide nose = rail;
-    nose.kind = Guide::Kind::kArc;
-    nose.radius = kNose;
-    nose.centre_x = upper ? x_hi : x_lo;  // the upper run travels −x and enters at x_hi
-    nose.centre_y = rail.y0 - kNose;
-    nose.start_angle = upper ? kPi / 6 : kPi / 2;
-    nose.end_angle = upper ? kPi / 2 : 5 * kPi / 6;
-    model.guides.push_back(nose);
-  }
-  State s = two_sprocket_loop(z, m, d.pitch, radius, d.omega);
-  for (std::size_t i = 0; i < n; ++i) {  // the straight runs start on the guides' level
-    if (s.x[i] > 0.5 * d.pitch && s.x[i] < centre - 0.5 * d.pitch)
-      s.y[i] = s.y[i] > 0 ? level : -level;
-  }
+  const auto n = static_cast<std::size_t>(d.teeth + 2 * d.span_links);
+  testing::Loop loop = testing::conveyor_loop(d);
+  const Model& model = loop.model;
+  State& s = loop.state;
   Integrator integ(model, {.step = step, .theta = 0.6});
   std::vector<double> tension(model.links());
   ConveyorRun out;

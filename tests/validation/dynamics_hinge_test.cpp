@@ -221,8 +221,8 @@ TEST(DynamicsHinge, ToothTipDriveArticulatesAsTheClosedFormUnderALowerPinLoad) {
   ASSERT_TRUE(old.converged);
   const HingeFactors t = hinge_factors(tip, arm, 0.5 * duration, period);
   const HingeFactors o = hinge_factors(old, arm, 0.5 * duration, period);
-  // the identity (a check of the bookkeeping, not of the model)
-  EXPECT_NEAR(t.articulation * t.load * t.band, t.engaging / t.expected, 1e-9);
+  // (K L B = P_engaging / P_closed holds by the factors' definitions, whatever the run: it is not
+  // asserted; the bounds below on each factor are)
   // the closed form's kinematics hold with the tip: each point turns its hinges at ω (within the
   // 5 % the closed form was held to on the old form)
   EXPECT_NEAR(t.turn_per_point / kOmega, 1.0, 0.05);

@@ -1,0 +1,142 @@
+// Test and benchmark helper: the two 12B loops over two equal wheels that tests and benchmarks
+// step — the conveyor of validation (6b) on its guides and the benchmarks' two-sprocket drive —
+// built in one place so that a test and the benchmark it stands for run the same model from the
+// same start. Header-only: tests/ includes it as "two_wheel_loops.hpp", bench/ as
+// "../tests/dynamics/two_wheel_loops.hpp".
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+
+#include "catena/dynamics/integrator.hpp"
+
+namespace catena::dynamics::testing {
+
+// The conveyor loop of validation (6b) (examples/dynamics_conveyor.toml): a closed 12B chain over
+// two z-tooth wheels `span_links` pitches apart, the driver at `omega`, a free tail idler,
+// gravity; both runs carried by level rails (the rollers on top, with Coulomb friction) from
+// `guide_gap` pitches after one wheel to as many before the other, at the mean height of the
+// polygon's tangent point, R sin(π/z)/(π/z), each with a lead-in arc at its entry end. Each rail
+// is cut into `pieces` collinear pieces end to end (1: the example's one rail a run; 0: no
+// guides at all — the loop sags under gravity).
+struct Conveyor {
+  int teeth = 16;
+  int span_links = 60;
+  int guide_gap = 3;             // pitches from each wheel's tangent point to the guide's end
+  int pieces = 1;                // collinear pieces each rail is cut into (0: no guides)
+  double pitch = 0.01905;        // [m] 12B
+  double roller = 0.01207;       // [m] d1
+  double width = 0.01168;        // [m] b1
+  double mass_per_metre = 1.25;  // [kg/m]
+  double node_mass = 0.0;        // [kg] 0: mass_per_metre × pitch (the benchmarks give 0.0238)
+  double stiffness = 5e7;        // [N/m] per link
+  double pretension = 20.0;      // [N]
+  double omega = 5.0;            // [rad/s] driver
+  double inertia = 0.002;        // [kg·m²] tail idler
+  double friction = 0.3;         // μ on the guides
+  double gravity = 9.81;         // [m/s²]
+};
+
+struct Loop {
+  Model model;
+  State state;
+  double level = 0.0;  // [m] the height of the runs' roller centres on the rails (±level)
+};
+
+// The model and its start: every roller seated on the wheels at the pitch-line speed, the
+// straight runs lifted onto the rails' level. Guides in the order upper run's pieces (left to
+// right), lower run's pieces, upper lead-in, lower lead-in.
+inline Loop conveyor_loop(const Conveyor& d) {
+  constexpr double kPi = std::numbers::pi;
+  constexpr double kContactStiffness = 2e8;  // [N/m] the seats, as in validation (6)
+  constexpr double kContactDamping = 800.0;  // [N·s/m]
+  constexpr double kNose = 0.05;             // [m] the lead-in arc's radius
+  const int z = d.teeth, m = d.span_links;
+  const auto n = static_cast<std::size_t>(z + 2 * m);
+  Loop out;
+  Model& model = out.model;
+  const double node_mass = d.node_mass > 0.0 ? d.node_mass : d.mass_per_metre * d.pitch;
+  model = uniform_chain(n, true, d.pitch - d.pretension / d.stiffness, node_mass, d.stiffness,
+                        100.0, false);
+  model.gravity_y = -d.gravity;
+  const double centre = m * d.pitch;
+  Sprocket a =
+      iso606_sprocket(d.pitch, d.roller, d.width, z, 0.0, 0.0, kContactStiffness, kContactDamping);
+  a.driver = true;
+  a.speed = d.omega;
+  Sprocket b = iso606_sprocket(d.pitch, d.roller, d.width, z, centre, 0.0, kContactStiffness,
+                               kContactDamping);
+  b.inertia = d.inertia;
+  model.sprockets = {a, b};
+  // the guides carry the runs at the mean height of the polygon's tangent point (the seat at the
+  // top swings through ±π/z): the chain runs level onto the wheels on average
+  const double r = 0.5 * d.roller, radius = a.pitch_radius;
+  const double level = radius * std::sin(kPi / z) / (kPi / z);
+  out.level = level;
+  const double x_lo = d.guide_gap * d.pitch, x_hi = (m - d.guide_gap) * d.pitch;
+  if (d.pieces > 0) {
+    for (const double y : {level, -level}) {
+      for (int k = 0; k < d.pieces; ++k) {
+        Guide g;  // left to right: the free side (rollers) on top, on both runs
+        g.x0 = x_lo + (x_hi - x_lo) * k / d.pieces;
+        g.x1 = x_lo + (x_hi - x_lo) * (k + 1) / d.pieces;
+        g.y0 = g.y1 = y - r;
+        g.roller_radius = r;
+        g.contact_stiffness = 1e7;
+        g.contact_damping = 100.0;
+        g.friction = d.friction;
+        model.guides.push_back(g);
+      }
+    }
+    // Each run's entry end is a rounded nose — a convex arc of radius 50 mm tangent to the rail,
+    // falling away over 60° — as real guides have a lead-in: a roller arriving a little low (the
+    // polygon swings the free span up and down) rides up it instead of striking the rail's end.
+    for (const bool upper : {true, false}) {
+      const Guide& rail = model.guides[upper ? 0 : static_cast<std::size_t>(d.pieces)];
+      Guide nose = rail;
+      nose.kind = Guide::Kind::kArc;
+      nose.radius = kNose;
+      nose.centre_x = upper ? x_hi : x_lo;  // the upper run travels −x and enters at x_hi
+      nose.centre_y = rail.y0 - kNose;
+      nose.start_angle = upper ? kPi / 6 : kPi / 2;
+      nose.end_angle = upper ? kPi / 2 : 5 * kPi / 6;
+      model.guides.push_back(nose);
+    }
+  }
+  out.state = two_sprocket_loop(z, m, d.pitch, radius, d.omega);
+  State& s = out.state;
+  for (std::size_t i = 0; i < n; ++i) {  // the straight runs start on the guides' level
+    if (s.x[i] > 0.5 * d.pitch && s.x[i] < centre - 0.5 * d.pitch)
+      s.y[i] = s.y[i] > 0 ? level : -level;
+  }
+  return out;
+}
+
+// The benchmarks' drive (bench/dynamics_bench.cpp, BM_DynamicsTwoSprocketDrive): a 200-link 12B
+// loop over two equal sprockets (z = 20, 90 pitches apart, the polygons in phase), the driver at
+// 30 rad/s (1.8 m/s), the driven wheel with J = 0.05 kg·m² and a 20 N·m load, gravity in the
+// plane, links 5e7 N/m and 100 N·s/m stretched 1e-3 at the start, contacts k_c = 2e8 N/m,
+// c_c = 800 N·s/m; started with every roller seated and moving at the pitch-line speed.
+// `hinge_arm` > 0: with hinge friction of that arm (docs/models/dynamics.md, "Hinges").
+inline Loop benchmark_drive(double hinge_arm = 0.0) {
+  constexpr int kTeeth = 20, kSpan = 90;
+  constexpr double kPitch = 0.01905, kOmega = 30.0;
+  const auto n = static_cast<std::size_t>(kTeeth + 2 * kSpan);
+  Loop out;
+  Model& m = out.model;
+  m = uniform_chain(n, true, kPitch * (1.0 - 1e-3), 0.0238, 5e7, 100.0, false);
+  m.gravity_y = -9.81;
+  Sprocket a = iso606_sprocket(kPitch, 0.01207, 0.01168, kTeeth, 0.0, 0.0, 2e8, 800.0);
+  a.driver = true;
+  a.speed = kOmega;
+  Sprocket b = iso606_sprocket(kPitch, 0.01207, 0.01168, kTeeth, kSpan * kPitch, 0.0, 2e8, 800.0);
+  b.inertia = 0.05;
+  b.load_torque = 20.0;
+  m.sprockets = {a, b};
+  m.hinge.arm = hinge_arm;
+  out.state = two_sprocket_loop(kTeeth, kSpan, kPitch, a.pitch_radius, kOmega);
+  return out;
+}
+
+}  // namespace catena::dynamics::testing
