@@ -1814,15 +1814,10 @@ Result run(const analysis::Inputs& in) {
                        : two_sprocket_loop(z, m, d.pitch, wheels[0].pitch_radius, d.speed);
   const std::size_t nw = wheels.size();
   // A roller that starts inside a rail is moved out along the rail's normal to touch it (the
-  // spans start straight at the wheels' pitch-line height; a guide may sit a little higher).
-  for (const Guide& g : model.guides) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const GuideContact c = guide_contact(g, s.x[i], s.y[i], 0.0, 0.0);
-      if (!c.active) continue;
-      s.x[i] += c.penetration * c.nx;
-      s.y[i] += c.penetration * c.ny;
-    }
-  }
+  // spans start straight at the wheels' pitch-line height; a guide may sit a little higher): the
+  // guides in order, each node against the guides near it, O(N + G + pairs)
+  lift_onto_guides(model.guides, std::span<double>(s.x.data(), n),
+                   std::span<double>(s.y.data(), n));
   throw_if_any(validate(model, s));
 
   Integrator integ(model, {.step = d.step, .theta = d.theta});
