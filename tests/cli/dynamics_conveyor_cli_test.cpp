@@ -105,6 +105,90 @@ colour = "red"
   EXPECT_NE(r.err.find("straight or arc"), std::string::npos) << r.err;
 }
 
+// The lead-in keys of a straight guide: every bad value named at once, with its line and range
+// (a radius not > 0, a sweep past 90 deg, an unknown end, lead-in keys on an arc, a sweep without
+// a radius); and a good lead-in runs, its arcs counted among the guides.
+TEST(DynamicsConveyorCli, LeadInKeysCheckedAndRun) {
+  const fs::path dir = fs::temp_directory_path() / "catena_dynamics_conveyor_cli_test";
+  fs::create_directories(dir);
+  const std::string head = R"([dynamics]
+chain = "12B"
+links = 32
+axial_stiffness = "5e7 N/m"
+contact_stiffness = "2e8 N/m"
+contact_damping = 800
+duration = "0.002 s"
+step = "0.1 ms"
+gravity = true
+[[dynamics.sprocket]]
+teeth = 12
+role = "driver"
+speed = "13 rad/s"
+[[dynamics.sprocket]]
+teeth = 12
+role = "driven"
+inertia = 0.01
+)";
+  const fs::path bad = dir / "bad_lead_ins.toml";
+  std::ofstream(bad) << head << R"([[dynamics.guide]]
+kind = "straight"
+x0 = "30 mm"
+y0 = "30 mm"
+x1 = "150 mm"
+y1 = "30 mm"
+lead_in_radius = "-5 mm"
+lead_in_angle = "120 deg"
+lead_in_end = "middle"
+[[dynamics.guide]]
+kind = "arc"
+centre_x = 0
+centre_y = 0
+radius = "50 mm"
+start_angle = "10 deg"
+end_angle = "50 deg"
+lead_in_radius = "50 mm"
+[[dynamics.guide]]
+kind = "straight"
+x0 = "30 mm"
+y0 = "-30 mm"
+x1 = "150 mm"
+y1 = "-30 mm"
+lead_in_angle = "20 deg"
+)";
+  const CliRun r = run("dynamics " + bad.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty());
+  for (const char* field :
+       {"dynamics.guide[0].lead_in_radius (line 24)", "dynamics.guide[0].lead_in_angle (line 25)",
+        "dynamics.guide[0].lead_in_end (line 26)", "dynamics.guide[1].lead_in_radius (line 34)",
+        "dynamics.guide[2].lead_in_radius"})
+    EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
+  for (const char* range : {"(0, 90] deg", "start, end or both", "no lead_in_radius on an arc"})
+    EXPECT_NE(r.err.find(range), std::string::npos) << range << "\n" << r.err;
+
+  const fs::path good = dir / "lead_ins.toml";
+  std::ofstream(good) << head << R"([[dynamics.guide]]
+kind = "straight"
+x0 = "30 mm"
+y0 = "30 mm"
+x1 = "150 mm"
+y1 = "30 mm"
+lead_in_radius = "40 mm"
+lead_in_end = "end"
+[[dynamics.guide]]
+kind = "straight"
+x0 = "30 mm"
+y0 = "-60 mm"
+x1 = "150 mm"
+y1 = "-60 mm"
+lead_in_radius = "40 mm"
+lead_in_angle = "45 deg"
+)";
+  const CliRun ok = run("dynamics " + good.string() + " --format json");
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  EXPECT_EQ(nlohmann::json::parse(ok.out)["guides"], 5);  // two rails, one arc, two arcs
+}
+
 // The report's animation draws the guides, fixed, in every frame: four rails as the example gives
 // them (mm), and the rollers of the upper run ride one roller radius above the upper rail.
 TEST(DynamicsConveyorCli, ReportAnimationDrawsTheGuides) {

@@ -201,5 +201,122 @@ TEST(DynamicsGuideHint, IntegratorResultsBitIdenticalWithAndWithoutTheHint) {
   EXPECT_GT(std::abs(with.angle[0] - s0.angle[0]) * a.pitch_radius, 4.0 * 0.25 * kPitch);
 }
 
+// The every-pair loops kept as the oracles of lift_onto_guides and of energy()'s guide term.
+void lift_every_pair(const std::vector<Guide>& guides, std::vector<double>& x,
+                     std::vector<double>& y) {
+  for (const Guide& g : guides) {
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const GuideContact c = guide_contact(g, x[i], y[i], 0.0, 0.0);
+      if (!c.active) continue;
+      x[i] += c.penetration * c.nx;
+      y[i] += c.penetration * c.ny;
+    }
+  }
+}
+
+bool same_bits(const std::vector<double>& p, const std::vector<double>& q) {
+  return p.size() == q.size() && std::memcmp(p.data(), q.data(), p.size() * sizeof(double)) == 0;
+}
+
+// Random guides laid over each other (a node lifted by one rail into the next one's box), nodes
+// on and near them, jumps and non-finite guides and nodes: the positions bit-identical to the loop
+// over every guide and every node, and many nodes lifted, some more than once.
+TEST(DynamicsGuideHint, LiftOntoGuidesBitIdenticalToEveryPair) {
+  std::mt19937_64 rng(2126);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  long lifted = 0, twice = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const std::size_t count = 1 + static_cast<std::size_t>(60.0 * u01(rng));
+    std::vector<Guide> guides;
+    for (std::size_t g = 0; g < count; ++g) {
+      guides.push_back(random_guide(rng, static_cast<int>(g + trial)));
+      if (g > 0 && u01(rng) < 0.3) {  // a copy of the last one, shifted by under a roller radius
+        Guide copy = guides[g - 1];
+        const double dx = (u01(rng) - 0.5) * copy.roller_radius;
+        const double dy = (u01(rng) - 0.5) * copy.roller_radius;
+        copy.x0 += dx;
+        copy.x1 += dx;
+        copy.centre_x += dx;
+        copy.y0 += dy;
+        copy.y1 += dy;
+        copy.centre_y += dy;
+        guides.back() = copy;
+      }
+    }
+    if (trial % 10 == 9) guides[count / 2].x0 = NAN;  // no finite box: tried against every node
+    const std::size_t n = 500;
+    std::vector<double> x(n), y(n);
+    for (std::size_t i = 0; i < n; ++i) place(rng, guides, 0.005, x[i], y[i]);
+    if (trial % 7 == 3) {
+      x[3] = NAN;
+      y[4] = INFINITY;
+    }
+    std::vector<double> ex = x, ey = y;
+    lift_every_pair(guides, ex, ey);
+    std::vector<double> hx = x, hy = y;
+    lift_onto_guides(guides, hx, hy);
+    ASSERT_TRUE(same_bits(hx, ex) && same_bits(hy, ey)) << "trial " << trial;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!(x[i] == ex[i] && y[i] == ey[i]) && !std::isnan(x[i]) && !std::isnan(y[i])) ++lifted;
+      int moves = 0;
+      double px = x[i], py = y[i];
+      for (const Guide& g : guides) {
+        const GuideContact c = guide_contact(g, px, py, 0.0, 0.0);
+        if (!c.active) continue;
+        px += c.penetration * c.nx;
+        py += c.penetration * c.ny;
+        ++moves;
+      }
+      if (moves > 1) ++twice;
+    }
+  }
+  EXPECT_GT(lifted, 2000);
+  EXPECT_GT(twice, 100);
+}
+
+// The many-guide conveyor's start, its spans laid a third of a roller radius into the rails, and
+// energy() at it and after lifting: the rails' elastic energy is the every-pair sum (summed in the
+// same order, then the links', as energy() sums them), bit for bit.
+TEST(DynamicsGuideHint, StartAndEnergyBitIdenticalToEveryPairOnAManyGuideConveyor) {
+  testing::Conveyor conveyor;  // validation (6b)'s loop and guides
+  conveyor.pieces = 12;
+  const testing::Loop c = testing::conveyor_loop(conveyor);
+  Model m = c.model;
+  ASSERT_EQ(m.guides.size(), 26U);
+  m.sprockets.clear();  // energy()'s elastic sum is then the guides' and the links' alone
+  State s = c.state;
+  const double r = m.guides.front().roller_radius;
+  for (std::size_t i = 0; i < s.x.size(); ++i) s.y[i] -= (s.y[i] > 0.0 ? 1.0 : -1.0) * r / 3.0;
+  const auto oracle = [&](const State& st) {
+    double e = 0.0;
+    for (const Guide& g : m.guides) {
+      for (std::size_t i = 0; i < m.nodes(); ++i) {
+        const GuideContact gc = guide_contact(g, st.x[i], st.y[i], 0.0, 0.0);
+        if (gc.active) e += gc.energy;
+      }
+    }
+    for (std::size_t j = 0; j < m.links(); ++j) {
+      const std::size_t b = (j + 1) % m.nodes();
+      const double stretch = std::hypot(st.x[b] - st.x[j], st.y[b] - st.y[j]) - m.rest_length(j);
+      e += 0.5 * m.axial_stiffness * stretch * stretch;
+    }
+    return e;
+  };
+  const double before = energy(m, s).elastic, want_before = oracle(s);
+  EXPECT_EQ(std::memcmp(&before, &want_before, sizeof(double)), 0);
+  double rails = 0.0;
+  for (const Guide& g : m.guides)
+    for (std::size_t i = 0; i < m.nodes(); ++i)
+      rails += guide_contact(g, s.x[i], s.y[i], 0.0, 0.0).energy;
+  EXPECT_GT(rails, 0.0);  // the rollers are pressed into the rails: the guide term is not empty
+  State every = s;
+  lift_every_pair(m.guides, every.x, every.y);
+  lift_onto_guides(m.guides, s.x, s.y);
+  ASSERT_TRUE(same_bits(s.x, every.x) && same_bits(s.y, every.y));
+  EXPECT_NE(std::memcmp(s.y.data(), c.state.y.data(), s.y.size() * sizeof(double)), 0);
+  const double after = energy(m, s).elastic, want_after = oracle(s);
+  EXPECT_EQ(std::memcmp(&after, &want_after, sizeof(double)), 0);
+}
+
 }  // namespace
 }  // namespace catena::dynamics

@@ -226,6 +226,25 @@ inline bool guide_touch_possible(const GuideBounds& b, double x, double y) {
   return x >= b.x_lo && x <= b.x_hi && y >= b.y_lo && y <= b.y_hi;
 }
 
+/// A lead-in at the ends of a straight guide (docs/models/dynamics.md, "Lead-ins"): an arc rail of
+/// surface radius R and sweep α tangent to the rail at its end, bending away from the free side, so
+/// that a roller arriving a little below the rail's surface meets the arc's gentle slope instead of
+/// the rail's square end. At the joint the arc's surface point, its normal and so the contact's
+/// penetration and force are those of the rail (the contact's stiffness jumps by f/R across it,
+/// the curvature's share); the arc ends R (1 − cos α) below the surface, R sin α past the end.
+struct LeadIn {
+  double radius = 0.0;   ///< [m] R > 0: the arc's surface radius
+  double angle = 0.0;    ///< [rad] α in (0, π/2]: the arc's sweep
+  bool at_start = true;  ///< at (x0, y0)
+  bool at_end = true;    ///< at (x1, y1)
+};
+/// The lead-in's values out of range, named "lead_in_radius" and "lead_in_angle".
+std::vector<Issue> validate(const LeadIn& lead);
+/// The arc guides of the lead-in on a straight rail (first the start's, then the end's, as asked),
+/// with the rail's contact law, roller radius and friction. None for an arc or a lead-in that does
+/// not validate.
+std::vector<Guide> lead_in_arcs(const Guide& rail, const LeadIn& lead);
+
 struct Model {
   bool closed = false;               ///< closed loop (link N − 1 joins node N − 1 to node 0)
   double pitch = 0.0;                ///< [m] p, the unstretched length of one link

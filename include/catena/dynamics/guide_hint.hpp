@@ -38,6 +38,11 @@ class GuideHint {
   std::span<const std::uint32_t> nodes(std::size_t g) const {
     return {nodes_.data() + start_[g], nodes_.data() + start_[g + 1]};
   }
+  /// Into `out`, increasing: the guides whose widened box may hold the point (x, y), from the grid
+  /// of the last update (every g with guide_touch_possible(bounds()[g], x, y) is there, and
+  /// possibly more). O(guides listed in the point's cell). Valid after update; the point may be
+  /// anywhere (a non-finite one gets the guides without a finite box only).
+  void guides_near(double x, double y, std::vector<std::uint32_t>& out) const;
   /// The guides' boxes as of the last update (guide_bounds of each).
   std::span<const GuideBounds> bounds() const { return bounds_; }
   double margin() const { return margin_; }
@@ -49,9 +54,10 @@ class GuideHint {
   void rebuild_lists(std::span<const double> x, std::span<const double> y);
 
   double margin_;
-  std::vector<GuideBounds> bounds_;       // per guide: guide_bounds
-  std::vector<GuideBounds> wide_;         // per guide: the box widened by the list's reach
-  std::vector<std::uint8_t> everywhere_;  // per guide: a non-finite box, every node listed
+  std::vector<GuideBounds> bounds_;             // per guide: guide_bounds
+  std::vector<GuideBounds> wide_;               // per guide: the box widened by the list's reach
+  std::vector<std::uint8_t> everywhere_;        // per guide: a non-finite box, every node listed
+  std::vector<std::uint32_t> everywhere_list_;  // those guides, increasing
   // the grid over the finite widened boxes: cell (cx, cy) lists the guides whose widened box
   // overlaps it, in cell_guides_[cell_start_[c] .. cell_start_[c + 1])
   double grid_x0_ = 0.0, grid_y0_ = 0.0, cell_ = 1.0;
@@ -65,5 +71,13 @@ class GuideHint {
   bool built_ = false;
   std::size_t rebuilds_ = 0;
 };
+
+/// Moves every node that starts inside a guide out along the rail's normal to touch it: for each
+/// guide in order, each node it is active on (guide_contact at rest) moves by penetration · n. The
+/// result is bit-identical to that loop over every guide and every node, in O(N + G + pairs): a
+/// node's moves depend only on its own position and the guides in order, so each node is taken
+/// through the guides near it (GuideHint's grid, asked again after each move). x and y have one
+/// entry per node.
+void lift_onto_guides(std::span<const Guide> guides, std::span<double> x, std::span<double> y);
 
 }  // namespace catena::dynamics

@@ -128,9 +128,9 @@ class Integrator {
   // friction; with it, the exact block-pentadiagonal matrix (the tridiagonal arrays plus the
   // hinges' blocks two nodes apart, far_lower_/far_upper_) in penta_.
   SolveStatus factor();
-  // Brings the guide hint up to date with the θ points of the iterate ux_, uy_ (O(N) + a rebuild
-  // when a node has moved more than its margin).
-  void refresh_guide_hint(const Model& model, const State& s, double th);
+  // Brings the guide hint up to date with the θ points qx_, qy_ (those of the iterate ux_, uy_:
+  // the caller has filled them), O(N) + a rebuild when a node has moved more than its margin.
+  void refresh_guide_hint(const Model& model);
   void substitute(std::span<const Vec2> b, std::span<Vec2> x);
   void substitute(std::span<const Vec2> b, std::span<Vec2> x, std::span<const Vec2> b2,
                   std::span<Vec2> x2);
@@ -178,7 +178,8 @@ class Integrator {
   std::vector<SeatGeometry> seat_geometry_;
   std::vector<double> seat_psi_;  // per wheel: the angle of its directions
   std::vector<std::vector<SeatDirection>> seat_direction_;  // per wheel: by k mod z
-  std::vector<double> qx_, qy_;  // the nodes' θ points x_θ of the iterate (assemble's)
+  // the nodes' θ points x_θ of the iterate (assemble's; the wheels' and the guides' one set)
+  std::vector<double> qx_, qy_;
   // Each wheel's candidates: the nodes within (1 + kCandidateMargin) · reach of its centre at
   // the θ points listed_x_, listed_y_ where the lists were made (in node order; the reach test
   // then runs on these alone), and the wheel's centre and reach then. Kept while no θ point has
@@ -199,10 +200,9 @@ class Integrator {
   // iterations may reuse them)
   bool factors_kept_ = false;
   double max_penetration_ = 0.0;
-  std::vector<GuideFrame> guide_frame_;      // per guide: guide_frame, refreshed with the hint
-  GuideHint guide_hint_;                     // per guide: the nodes near it
-  std::vector<std::uint32_t> all_nodes_;     // 0 … N − 1 (the guide loops without the hint)
-  std::vector<double> guide_qx_, guide_qy_;  // per node: the θ point the hint was last checked at
+  std::vector<GuideFrame> guide_frame_;   // per guide: guide_frame, refreshed with the hint
+  GuideHint guide_hint_;                  // per guide: the nodes near it
+  std::vector<std::uint32_t> all_nodes_;  // 0 … N − 1 (the guide loops without the hint)
   // the dissipative works of the last assembly's iterate (StepReport's fields)
   double damper_work_ = 0.0, drag_work_ = 0.0, contact_damping_work_ = 0.0;
   double seat_friction_work_ = 0.0;

@@ -149,7 +149,16 @@ std::vector<Parameter> guide_fields() {
       quantity("contact_stiffness", K::kForcePerLength,
                "roller-rail penalty [N/m] (default: dynamics.contact_stiffness)"),
       number("contact_damping",
-             "roller-rail damping [N s/m], >= 0 (default: dynamics.contact_damping)")};
+             "roller-rail damping [N s/m], >= 0 (default: dynamics.contact_damping)"),
+      quantity("lead_in_radius", K::kLength,
+               "straight: a lead-in, the surface radius of an arc tangent to the rail at its end "
+               "and bending away from the rollers, > 0 (default: none, the rail's end is square)"),
+      quantity("lead_in_angle", K::kAngle,
+               "straight: the lead-in arc's sweep, in (0, 90] deg (default 30 deg; with "
+               "lead_in_radius)"),
+      text("lead_in_end",
+           "straight: where the lead-ins go: start (at x0, y0), end (at x1, y1) or both "
+           "(default both; with lead_in_radius)")};
 }
 
 std::vector<Parameter> sprocket_fields() {
@@ -904,6 +913,13 @@ Setup parse(const analysis::Inputs& in) {
           g.text[key] = v.text;
         continue;
       }
+      if (key == "lead_in_end") {
+        if (!v.is_string || (v.text != "start" && v.text != "end" && v.text != "both"))
+          issues.push_back({where(v), "'" + v.text + "'", "start, end or both"});
+        else
+          g.text[key] = v.text;
+        continue;
+      }
       if (key == "inside") {
         if (!v.is_boolean)
           issues.push_back({where(v), "'" + v.text + "'", "true or false"});
@@ -1475,6 +1491,7 @@ Setup parse(const analysis::Inputs& in) {
   }
   s.positions = positions;
   // the guides: kind and its geometry, all present; then the core's checks (named per field)
+  std::vector<Guide> lead_arcs;
   for (std::size_t i = 0; i < guides.size(); ++i) {
     const GuideInput& g = guides[i];
     const std::string base = "dynamics.guide[" + std::to_string(i) + "].";
@@ -1496,7 +1513,8 @@ Setup parse(const analysis::Inputs& in) {
     const std::vector<std::string> theirs =
         straight ? std::vector<std::string>{"centre_x",    "centre_y",  "radius",
                                             "start_angle", "end_angle", "inside"}
-                 : std::vector<std::string>{"x0", "y0", "x1", "y1"};
+                 : std::vector<std::string>{
+                       "x0", "y0", "x1", "y1", "lead_in_radius", "lead_in_angle", "lead_in_end"};
     bool complete = true;
     for (const std::string& key : mine) {
       if (g.value.count(key)) continue;
@@ -1535,7 +1553,31 @@ Setup parse(const analysis::Inputs& in) {
     guide.friction_band = get("friction_band", 1e-3);
     bool readable = true;
     for (const auto& [key, at_line] : g.seen)
-      if (key != "kind" && key != "inside" && !g.value.count(key)) readable = false;
+      if (key != "kind" && key != "inside" && key != "lead_in_end" && !g.value.count(key))
+        readable = false;
+    // a lead-in (straight rails only; an arc's lead-in keys are refused above): its values'
+    // checks, named per field, with the rail's
+    std::vector<Guide> lead_ins;
+    if (straight && (g.seen.count("lead_in_angle") || g.seen.count("lead_in_end")) &&
+        !g.seen.count("lead_in_radius")) {
+      issues.push_back({field("lead_in_radius"), "(missing)",
+                        "a lead-in's radius, > 0 m (lead_in_angle and lead_in_end set a lead-in's "
+                        "sweep and ends)"});
+    }
+    if (straight && g.seen.count("lead_in_radius")) {
+      LeadIn lead;
+      lead.radius = get("lead_in_radius", NAN);
+      lead.angle = get("lead_in_angle", 30.0 * std::numbers::pi / 180.0);
+      const auto ends = g.text.find("lead_in_end");
+      const std::string which = ends == g.text.end() ? "both" : ends->second;
+      lead.at_start = which != "end";
+      lead.at_end = which != "start";
+      for (const Issue& issue : validate(lead)) {
+        if (!g.value.count(issue.field)) continue;  // not read: reported already
+        issues.push_back({field(issue.field), issue.value, issue.expected});
+      }
+      lead_ins = lead_in_arcs(guide, lead);
+    }
     if (!readable || !(s.roller > 0.0) || std::isnan(guide.contact_stiffness) ||
         std::isnan(guide.contact_damping))
       continue;  // already reported
@@ -1550,8 +1592,13 @@ Setup parse(const analysis::Inputs& in) {
       if (!given && !derived) continue;
       issues.push_back({field(key == "end" ? "x1" : key), issue.value, issue.expected});
     }
-    if (complete) s.guides.push_back(guide);
+    if (complete) {
+      s.guides.push_back(guide);
+      lead_arcs.insert(lead_arcs.end(), lead_ins.begin(), lead_ins.end());
+    }
   }
+  // the lead-in arcs after the guides as given (which keep their numbers)
+  s.guides.insert(s.guides.end(), lead_arcs.begin(), lead_arcs.end());
   // a start with slack: the sagging span must clear the guides too (docs/models/dynamics.md,
   // "A start with slack")
   if (s.slack > 0.0 && !s.guides.empty()) {
@@ -1903,15 +1950,10 @@ Result run(const analysis::Inputs& in) {
                        : two_sprocket_loop(z, m, d.pitch, wheels[0].pitch_radius, d.speed);
   const std::size_t nw = wheels.size();
   // A roller that starts inside a rail is moved out along the rail's normal to touch it (the
-  // spans start straight at the wheels' pitch-line height; a guide may sit a little higher).
-  for (const Guide& g : model.guides) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const GuideContact c = guide_contact(g, s.x[i], s.y[i], 0.0, 0.0);
-      if (!c.active) continue;
-      s.x[i] += c.penetration * c.nx;
-      s.y[i] += c.penetration * c.ny;
-    }
-  }
+  // spans start straight at the wheels' pitch-line height; a guide may sit a little higher): the
+  // guides in order, each node against the guides near it, O(N + G + pairs)
+  lift_onto_guides(model.guides, std::span<double>(s.x.data(), n),
+                   std::span<double>(s.y.data(), n));
   throw_if_any(validate(model, s));
 
   Integrator integ(model, {.step = d.step, .theta = d.theta});

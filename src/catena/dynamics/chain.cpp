@@ -8,6 +8,7 @@
 #include <string>
 
 #include "catena/drive/sprocket.hpp"
+#include "catena/dynamics/guide_hint.hpp"
 #include "catena/dynamics/pocket_wheel.hpp"
 
 namespace catena::dynamics {
@@ -249,6 +250,42 @@ GuideBounds guide_bounds(const Guide& g) {
   const double pad =
       1e-9 * (std::max({std::abs(x_lo), std::abs(x_hi), std::abs(y_lo), std::abs(y_hi)}) + r);
   return {x_lo - pad, x_hi + pad, y_lo - pad, y_hi + pad};
+}
+
+std::vector<Issue> validate(const LeadIn& lead) {
+  std::vector<Issue> out;
+  check::finite_positive(out, "lead_in_radius", lead.radius, "m");
+  if (!std::isfinite(lead.angle) || !(lead.angle > 0.0) || !(lead.angle <= 0.5 * std::numbers::pi))
+    out.push_back({"lead_in_angle", check::format_si(lead.angle * 180.0 / std::numbers::pi, "deg"),
+                   "an angle in (0, 90] deg"});
+  return out;
+}
+
+std::vector<Guide> lead_in_arcs(const Guide& rail, const LeadIn& lead) {
+  std::vector<Guide> out;
+  if (rail.kind != Guide::Kind::kStraight || !validate(lead).empty()) return out;
+  const GuideFrame f = guide_frame(rail);
+  if (!(f.length > 0.0) || !std::isfinite(f.length)) return out;
+  // the free side's normal n = perp(u); the arc's centre R below the rail's end along −n, its
+  // surface point at the end's angle atan2(n); going on along the rail turns from n toward u
+  // (clockwise) at the second end, toward −u (counter-clockwise) at the first
+  const double nx = -f.uy, ny = f.ux;
+  const double up = std::atan2(ny, nx);
+  auto arc = [&](double ex, double ey, double from, double to) {
+    Guide g = rail;
+    g.kind = Guide::Kind::kArc;
+    g.x0 = g.y0 = g.x1 = g.y1 = 0.0;
+    g.centre_x = ex - lead.radius * nx;
+    g.centre_y = ey - lead.radius * ny;
+    g.radius = lead.radius;
+    g.start_angle = from;
+    g.end_angle = to;
+    g.inside = false;
+    out.push_back(g);
+  };
+  if (lead.at_start) arc(rail.x0, rail.y0, up, up + lead.angle);
+  if (lead.at_end) arc(rail.x1, rail.y1, up - lead.angle, up);
+  return out;
 }
 
 GuideFrame guide_frame(const Guide& g) {
@@ -890,10 +927,19 @@ Energy energy(const Model& model, const State& state) {
       if (c.active) e.elastic += c.energy;
     }
   }
-  for (const Guide& guide : model.guides) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const GuideContact c = guide_contact(guide, state.x[i], state.y[i], 0.0, 0.0);
-      if (c.active) e.elastic += c.energy;
+  // the guides' contacts: each guide against the nodes GuideHint lists inside its box, in node
+  // order (the active pairs and their order are the loop over every node's: bit-identical), in
+  // O(N + G + pairs)
+  if (!model.guides.empty()) {
+    GuideHint hint(0.0);
+    hint.update(model.guides, std::span<const double>(state.x.data(), n),
+                std::span<const double>(state.y.data(), n));
+    for (std::size_t g = 0; g < model.guides.size(); ++g) {
+      const Guide& guide = model.guides[g];
+      for (const std::uint32_t i : hint.nodes(g)) {
+        const GuideContact c = guide_contact(guide, state.x[i], state.y[i], 0.0, 0.0);
+        if (c.active) e.elastic += c.energy;
+      }
     }
   }
   for (std::size_t j = 0; j < model.links(); ++j) {

@@ -57,6 +57,7 @@ void GuideHint::rebuild_grid() {
   const double reach = margin_ >= 0.0 ? 1.25 * margin_ : 0.0;
   wide_.resize(count);
   everywhere_.assign(count, 0);
+  everywhere_list_.clear();
   double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
   for (std::size_t g = 0; g < count; ++g) {
     const GuideBounds& b = bounds_[g];
@@ -65,6 +66,7 @@ void GuideHint::rebuild_grid() {
     if (!std::isfinite(w.x_lo) || !std::isfinite(w.x_hi) || !std::isfinite(w.y_lo) ||
         !std::isfinite(w.y_hi)) {
       everywhere_[g] = 1;  // no finite box (a non-finite guide): every node is listed
+      everywhere_list_.push_back(static_cast<std::uint32_t>(g));
       continue;
     }
     lo_x = std::min(lo_x, w.x_lo);
@@ -158,6 +160,50 @@ void GuideHint::rebuild_lists(std::span<const double> x, std::span<const double>
   }
   built_ = true;
   ++rebuilds_;
+}
+
+void GuideHint::guides_near(double x, double y, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  // a non-finite point is inside no finite box (and cannot be binned)
+  if (grid_nx_ > 0 && std::isfinite(x) && std::isfinite(y)) {
+    const std::size_t c =
+        cell_index(y, grid_y0_, grid_ny_) * grid_nx_ + cell_index(x, grid_x0_, grid_nx_);
+    out.assign(cell_guides_.begin() + static_cast<std::ptrdiff_t>(cell_start_[c]),
+               cell_guides_.begin() + static_cast<std::ptrdiff_t>(cell_start_[c + 1]));
+  }
+  if (everywhere_list_.empty()) return;
+  const std::size_t mid = out.size();
+  out.insert(out.end(), everywhere_list_.begin(), everywhere_list_.end());
+  // both parts increasing (the cell's guides were binned in guide order), and disjoint
+  std::inplace_merge(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(mid), out.end());
+}
+
+void lift_onto_guides(std::span<const Guide> guides, std::span<double> x, std::span<double> y) {
+  if (guides.empty()) return;
+  GuideHint hint(0.0);  // the boxes themselves: nothing moves while the grid is in use
+  hint.update(guides, x, y);
+  std::vector<std::uint32_t> near;
+  near.reserve(guides.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    // the guides before `next` are done with this node; of the others, the first active one at
+    // the node's current position moves it (the guides between were not active there, as in the
+    // loop over every guide), and the guides near its new position are asked again
+    std::size_t next = 0;
+    for (bool moved = true; moved;) {
+      moved = false;
+      hint.guides_near(x[i], y[i], near);
+      for (const std::uint32_t g : near) {
+        if (g < next) continue;
+        const GuideContact c = guide_contact(guides[g], x[i], y[i], 0.0, 0.0);
+        if (!c.active) continue;
+        x[i] += c.penetration * c.nx;
+        y[i] += c.penetration * c.ny;
+        next = static_cast<std::size_t>(g) + 1;
+        moved = true;
+        break;
+      }
+    }
+  }
 }
 
 }  // namespace catena::dynamics

@@ -34,16 +34,14 @@ std::size_t checked_nodes(const Model& model, const IntegratorOptions& options) 
   throw_if_any(issues);
   return model.nodes();
 }
-// Node i's contact with a guide at the θ point of the step from x₀ (the state) to the iterate
-// u, with the step's velocity (u − x₀)/h: the force the step applies. The guide's bounds cull
-// first (exact: a roller outside them cannot touch it; guide_bounds), so that a node far from a
-// rail costs a few comparisons.
+// Node i's contact with a guide at its θ point (qx, qy) of the step from x₀ (the state) to the
+// iterate u, with the step's velocity (u − x₀)/h: the force the step applies. The guide's bounds
+// cull first (exact: a roller outside them cannot touch it; guide_bounds), so that a node far
+// from a rail costs a few comparisons.
 GuideContact guide_contact_at_theta(const Guide& guide, const GuideFrame& frame,
                                     const GuideBounds& bounds, const State& s,
                                     const std::vector<double>& ux, const std::vector<double>& uy,
-                                    std::size_t i, double th, double h) {
-  const double qx = (1.0 - th) * s.x[i] + th * ux[i];
-  const double qy = (1.0 - th) * s.y[i] + th * uy[i];
+                                    std::size_t i, double qx, double qy, double h) {
   if (!guide_touch_possible(bounds, qx, qy)) return {};
   return guide_contact(guide, frame, qx, qy, (ux[i] - s.x[i]) / h, (uy[i] - s.y[i]) / h);
 }
@@ -100,24 +98,18 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
   // A quarter pitch: at a chain speed v a node crosses it in p/(4 v h) steps (over a hundred at
   // 1 m/s and h = 1e-4 s for 12B), while a rail's list grows by half a pitch's width of nodes.
   guide_hint_ = GuideHint(0.25 * model.pitch);
-  guide_qx_.assign(model.nodes(), 0.0);
-  guide_qy_.assign(model.nodes(), 0.0);
   all_nodes_.resize(model.nodes());
   for (std::size_t i = 0; i < model.nodes(); ++i) all_nodes_[i] = static_cast<std::uint32_t>(i);
 }
 
-void Integrator::refresh_guide_hint(const Model& model, const State& s, double th) {
+void Integrator::refresh_guide_hint(const Model& model) {
   // the rails' frames, O(G): recomputed here so that a model whose guides changed since the last
   // step is still right
   guide_frame_.resize(model.guides.size());
   for (std::size_t g = 0; g < model.guides.size(); ++g)
     guide_frame_[g] = guide_frame(model.guides[g]);
   if (model.guides.empty() || !options_.guide_hint) return;
-  for (std::size_t i = 0; i < guide_qx_.size(); ++i) {
-    guide_qx_[i] = (1.0 - th) * s.x[i] + th * ux_[i];
-    guide_qy_[i] = (1.0 - th) * s.y[i] + th * uy_[i];
-  }
-  guide_hint_.update(model.guides, guide_qx_, guide_qy_);
+  guide_hint_.update(model.guides, qx_, qy_);
 }
 
 void Integrator::prepare_seats(const Model& model) {
@@ -306,9 +298,17 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       }
     }
   }
-  // The nodes' θ points, once for all wheels, and how far they are from where the wheels'
-  // candidate lists were made (∞-norm; NaN when a point is not finite)
+  // The nodes' θ points, once for all wheels and guides, and how far they are from where the
+  // wheels' candidate lists were made (∞-norm; NaN when a point is not finite)
   bool listed = false;  // the candidate lists hold every node within reach of its wheel
+  if (model.sprockets.empty() && !model.guides.empty()) {
+    double* qx = qx_.data();
+    double* qy = qy_.data();
+    for (std::size_t i = 0; i < n; ++i) {
+      qx[i] = (1.0 - th) * sx[i] + th * ux[i];
+      qy[i] = (1.0 - th) * sy[i] + th * uy[i];
+    }
+  }
   if (!model.sprockets.empty()) {
     double* qx = qx_.data();
     double* qy = qy_.data();
@@ -550,7 +550,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   // diagonal block gains −∂(h F)/∂u = −(hθ ∂F/∂q + ∂F/∂v). Node by node: the O(N) solve stays.
   // Each guide is tried against the nodes the hint lists near it, in node order (the pairs and
   // their order are those of the loop over every node: bit-identical; "Guides: O(N) a step").
-  refresh_guide_hint(model, s, th);
+  refresh_guide_hint(model);
   for (std::size_t g = 0; g < model.guides.size(); ++g) {
     const Guide& guide = model.guides[g];
     const GuideBounds bounds = options_.guide_hint ? guide_hint_.bounds()[g] : guide_bounds(guide);
@@ -558,7 +558,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
          options_.guide_hint ? guide_hint_.nodes(g) : std::span<const std::uint32_t>(all_nodes_)) {
       if (model.is_pinned(i)) continue;
       const GuideContact gc =
-          guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_, i, th, h);
+          guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_, i, qx_[i], qy_[i], h);
       if (!gc.active) continue;
       solver_.rhs[i].x += h * gc.fx;
       solver_.rhs[i].y += h * gc.fy;
@@ -955,7 +955,15 @@ StepReport Integrator::step(const Model& model, State& s) {
   report.seat_friction_work = seat_friction_work_;
   report.hinge_work = hinge_work_;
   report.takeup_damper_work = takeup_damper_work_;
-  refresh_guide_hint(model, s, th);
+  // the θ points of the accepted iterate (the last assembly's may be one correction before it;
+  // the next assembly makes them afresh)
+  if (!model.guides.empty()) {
+    for (std::size_t i = 0; i < n; ++i) {
+      qx_[i] = (1.0 - th) * s.x[i] + th * ux_[i];
+      qy_[i] = (1.0 - th) * s.y[i] + th * uy_[i];
+    }
+  }
+  refresh_guide_hint(model);
   for (std::size_t g = 0; g < model.guides.size(); ++g) {
     const Guide& guide = model.guides[g];
     if (!(guide.friction > 0.0) && !(guide.contact_damping > 0.0)) continue;
@@ -964,7 +972,7 @@ StepReport Integrator::step(const Model& model, State& s) {
          options_.guide_hint ? guide_hint_.nodes(g) : std::span<const std::uint32_t>(all_nodes_)) {
       if (model.is_pinned(i)) continue;
       const GuideContact gc =
-          guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_, i, th, h);
+          guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_, i, qx_[i], qy_[i], h);
       if (!gc.active) continue;
       report.friction_work += h * gc.friction_force * gc.slip;
       report.contact_damping_work += h * gc.damping_power;
