@@ -741,6 +741,68 @@ TEST(DynamicsPocket, ReleaseNewtonBlocksIncludeTheDamper) {
   EXPECT_GT(off_axis, 100);
 }
 
+// The same on the integrator: on the damped unwinding with the release (the run Newton stalled
+// on), at steps where joints are being released, the step's Newton matrix
+// (Integrator::newton_system) against central differences of its residual on the diagonal
+// blocks of the joints in contact with the wheel — they carry the release's dq_extra and
+// dv_extra. (Before the fix the stalled joint's block was off by a third.)
+TEST(DynamicsPocket, ReleaseNewtonMatrixMatchesTheResidualsDifferences) {
+  UnwindingSetup setup = unwinding_setup(1000.0, true, 2000.0);
+  const Model& m = setup.model;
+  State& s = setup.state;
+  const Sprocket& w = setup.wheel;
+  Integrator integ(m, {.step = 1e-4, .theta = 0.6});
+  const std::size_t n = s.nodes(), nu = integ.unknowns();
+  ASSERT_EQ(nu, 2 * n);                   // a driver: no angle unknown
+  const double scale = 1e-4 * 0.6 * 1e8;  // the contact's h θ k_c
+  int rows = 0, off_axis = 0;
+  double worst = 0.0;
+  std::vector<double> r, jac, rp, rm;
+  for (int step = 0; step < 1200; ++step) {
+    ASSERT_TRUE(integ.step(m, s).converged) << step;
+    // every 100th step, and every step where a joint's force is off e/|e| (in the release band)
+    bool banded = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      const SeatContact k = pocket_contact(w, s.x[i], s.y[i], s.vx[i], s.vy[i], s.angle[0],
+                                           s.speed[0], held_pocket(s, i, 0));
+      banded = banded || (k.active && std::abs(k.dv_extra[0]) + std::abs(k.dv_extra[3]) > 2e-3);
+    }
+    if (step % 100 != 7 && !banded) continue;
+    std::vector<double> u(nu);  // the predictor x₀ + h v₀, where Newton starts
+    for (std::size_t i = 0; i < n; ++i) {
+      u[2 * i] = s.x[i] + 1e-4 * s.vx[i];
+      u[2 * i + 1] = s.y[i] + 1e-4 * s.vy[i];
+    }
+    integ.newton_system(m, s, u, r, &jac);
+    for (std::size_t i = 0; i < n; ++i) {
+      const SeatContact k = pocket_contact(w, s.x[i], s.y[i], s.vx[i], s.vy[i], s.angle[0],
+                                           s.speed[0], held_pocket(s, i, 0));
+      if (!k.active || !(k.force > 1.0)) continue;
+      ++rows;
+      off_axis += std::abs(k.dv_extra[0]) + std::abs(k.dv_extra[3]) > 2e-3 ? 1 : 0;
+      for (std::size_t j = 2 * i; j < 2 * i + 2; ++j) {
+        const double hd = 1e-10;
+        std::vector<double> up = u, um = u;
+        up[j] += hd;
+        um[j] -= hd;
+        integ.newton_system(m, s, up, rp, nullptr);
+        integ.newton_system(m, s, um, rm, nullptr);
+        for (std::size_t a = 2 * i; a < 2 * i + 2; ++a) {
+          const double fd = (rp[a] - rm[a]) / (2 * hd);
+          worst = std::max(worst, std::abs(fd - jac[a * nu + j]) / scale);
+          EXPECT_NEAR(jac[a * nu + j], fd, 2e-3 * scale) << step << " " << a << " " << j;
+        }
+      }
+    }
+  }
+  std::printf(
+      "release's Newton matrix: %d joints' blocks, %d with the force off e/|e|, largest misfit "
+      "%.2e of h theta k_c\n",
+      rows, off_axis, worst);
+  EXPECT_GT(rows, 50);
+  EXPECT_GT(off_axis, 5);
+}
+
 // The release's held flags are those of the state a step starts from: a joint within the mouth
 // at t = 0 that leaves it in the first step is held by its pocket over that step (before, the
 // flags were set only at a step's end, so such a joint met the sharp mouth: its force lost at
