@@ -541,7 +541,12 @@ struct Unwinding {
   double largest_drop = 0.0;  // [N] the largest fall of a leaving joint's force in one step
   bool converged = true;
 };
-Unwinding unwind(double slack, bool release = false, double damping = 2000.0) {
+struct UnwindingSetup {
+  Sprocket wheel;
+  Model model;
+  State state;
+};
+UnwindingSetup unwinding_setup(double slack, bool release, double damping) {
   const double t = 0.064, d = 0.018, k = 1e8, ft = 1000.0;
   Sprocket w = pocket_wheel(t, d, 8, 0.0, 0.0, 1e-4, 1e8, damping);
   w.pocket_release = release;
@@ -580,6 +585,16 @@ Unwinding unwind(double slack, bool release = false, double damping = 2000.0) {
     s.y[i] = -r;
     s.vx[i] = -5 * r;
   }
+  return {w, m, s};
+}
+
+Unwinding unwind(double slack, bool release = false, double damping = 2000.0) {
+  UnwindingSetup setup = unwinding_setup(slack, release, damping);
+  const Sprocket& w = setup.wheel;
+  const Model& m = setup.model;
+  State& s = setup.state;
+  const std::size_t n = s.nodes();
+  const double r = w.pitch_radius;
   Integrator integ(m, {.step = 1e-4, .theta = 0.6});
   std::vector<SeatContact> prev(n);
   Unwinding out;
@@ -624,19 +639,217 @@ TEST(DynamicsPocket, UnwindingJointsLoseTheirForceAtOnceWithTheSharpMouth) {
   }
 }
 
-// The release (pocket_release) on the same unwinding, undamped contact (with c_c = 2000 N·s/m
-// Newton stalls: docs/models/dynamics.md, "Pocket wheel: unwinding"): a leaving joint's force
-// falls over several steps instead of in one — pinned as measured against the sharp mouth on the
-// same run.
+// The release (pocket_release) on the same unwinding, undamped and with the contact's damper
+// (c_c = 2000 N·s/m, the example's; Newton stalled there at step 8 until the release's Newton
+// blocks took the damper's share: docs/models/dynamics.md, "Pocket wheel: unwinding"): a leaving
+// joint's force falls over several steps instead of in one — pinned as measured against the
+// sharp mouth on the same run.
 TEST(DynamicsPocket, UnwindingWithTheReleaseSpreadsTheFallOverSteps) {
-  for (double slack : {200.0, 1000.0}) {
-    const Unwinding sharp = unwind(slack, false, 0.0), soft = unwind(slack, true, 0.0);
-    ASSERT_TRUE(sharp.converged && soft.converged) << slack;
-    EXPECT_GE(soft.exits, 3) << slack;
-    EXPECT_GT(sharp.largest_drop, 0.5 * slack) << slack;
-    EXPECT_LT(soft.largest_drop, 0.6 * sharp.largest_drop) << slack;
+  for (double damping : {0.0, 2000.0}) {
+    for (double slack : {200.0, 1000.0}) {
+      const Unwinding sharp = unwind(slack, false, damping), soft = unwind(slack, true, damping);
+      ASSERT_TRUE(sharp.converged && soft.converged) << slack << " " << damping;
+      EXPECT_GE(soft.exits, 3) << slack << " " << damping;
+      EXPECT_GT(sharp.largest_drop, 0.5 * slack) << slack << " " << damping;
+      EXPECT_LT(soft.largest_drop, 0.6 * sharp.largest_drop) << slack << " " << damping;
+    }
   }
-  EXPECT_FALSE(unwind(1000.0, true, 2000.0).converged);  // the open problem, pinned
+}
+
+// The release with the contact's damper (c_c = 2000 N·s/m, the example's), the joint moving and
+// the wheel turning: the integrator's blocks — ∂F/∂q = −[(∂f/∂g) m mᵀ + f κ (I − m mᵀ)] +
+// dq_extra and ∂F/∂v = −c m mᵀ + dv_extra (m the force's direction; no turning terms: the pocket's
+// block has none) — against central differences of the force in q and in v. Before, dq_extra
+// held only the elastic part (it removed the damper's share the fields gave) and ∂F/∂v was taken
+// along m instead of e/|e|: Newton stalled on the damped unwinding (the test below).
+TEST(DynamicsPocket, ReleaseNewtonBlocksIncludeTheDamper) {
+  Sprocket w = pocket_wheel(0.064, 0.018, 8, 0.3, -0.2, 1e-4, 1e8, 2000.0);
+  w.pocket_release = true;
+  const ReleaseBand band = release_band(w);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  const double c = w.pocket_clearance, r = w.pitch_radius, eps = w.contact_smoothing;
+  int checked = 0, in_band = 0, damped = 0, off_axis = 0;
+  double worst_q = 0.0, worst_v = 0.0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const double psi = 6.0 * (u01(rng) - 0.5), omega = 10.0 * (u01(rng) - 0.5);
+    const int m = trial % 16;
+    const double a = psi + (m / 2) * 2 * kPi / 8 + (m % 2 ? w.pocket_angle : 0.0);
+    const double beta = kPi * (2.0 * u01(rng) - 1.0), len = c * (1.0 + 2.0 * u01(rng));
+    const double x = w.centre_x + r * std::cos(a) + len * std::cos(a + beta);
+    const double y = w.centre_y + r * std::sin(a) + len * std::sin(a + beta);
+    const double vx = 0.6 * (u01(rng) - 0.5), vy = 0.6 * (u01(rng) - 0.5);
+    auto at = [&](double qx, double qy, double px, double py) {
+      return pocket_contact(w, qx, qy, px, py, psi, omega, m);
+    };
+    const SeatContact k = at(x, y, vx, vy);
+    if (!k.active || !(k.force > 1.0)) continue;
+    // stay clear of the kinks: g = ε, and the damper's clamp f₀ = 0
+    if (std::abs(len - c - eps) < 1e-8) continue;
+    const SeatContact el = at(x, y, 0.0, 0.0);
+    const double g = len - c;
+    const double fel = g < eps ? 0.5 * 1e8 * g * g / eps : 1e8 * (g - 0.5 * eps);
+    const double rate = (vx + omega * (y - w.centre_y)) * std::cos(a + beta) +
+                        (vy - omega * (x - w.centre_x)) * std::sin(a + beta);
+    const double cg = 2000.0 * std::min(1.0, g / eps);
+    if (std::abs(fel + cg * rate) < 0.05 * fel + 1.0) continue;
+    (void)el;
+    ++checked;
+    const double ue = std::cos(beta);
+    in_band += ue > band.full && ue < band.none ? 1 : 0;
+    damped += fel + cg * rate > 0.0 && std::abs(cg * rate) > 0.05 * fel ? 1 : 0;
+    off_axis += std::abs(k.nx * std::cos(a + beta) + k.ny * std::sin(a + beta)) < 0.999 ? 1 : 0;
+    auto force = [&](const SeatContact& e, double f[2]) {
+      f[0] = e.active ? -e.force * e.nx : 0.0;
+      f[1] = e.active ? -e.force * e.ny : 0.0;
+    };
+    const double kn = k.stiffness, ft = k.force * k.curvature, mx = k.nx, my = k.ny;
+    const double bq[4] = {
+        -(kn * mx * mx + ft * (1 - mx * mx)) + k.dq_extra[0], -(kn - ft) * mx * my + k.dq_extra[1],
+        -(kn - ft) * mx * my + k.dq_extra[2], -(kn * my * my + ft * (1 - my * my)) + k.dq_extra[3]};
+    const double cd = k.damping;
+    const double bv[4] = {-cd * mx * mx + k.dv_extra[0], -cd * mx * my + k.dv_extra[1],
+                          -cd * mx * my + k.dv_extra[2], -cd * my * my + k.dv_extra[3]};
+    const double hq = 1e-11, hv = 1e-7;
+    double fa[2], fb[2], fc[2], fd[2];
+    force(at(x + hq, y, vx, vy), fa);
+    force(at(x - hq, y, vx, vy), fb);
+    force(at(x, y + hq, vx, vy), fc);
+    force(at(x, y - hq, vx, vy), fd);
+    const double nq[4] = {(fa[0] - fb[0]) / (2 * hq), (fc[0] - fd[0]) / (2 * hq),
+                          (fa[1] - fb[1]) / (2 * hq), (fc[1] - fd[1]) / (2 * hq)};
+    force(at(x, y, vx + hv, vy), fa);
+    force(at(x, y, vx - hv, vy), fb);
+    force(at(x, y, vx, vy + hv), fc);
+    force(at(x, y, vx, vy - hv), fd);
+    const double nv[4] = {(fa[0] - fb[0]) / (2 * hv), (fc[0] - fd[0]) / (2 * hv),
+                          (fa[1] - fb[1]) / (2 * hv), (fc[1] - fd[1]) / (2 * hv)};
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_NEAR(bq[i], nq[i], 2e-3 * 1e8) << trial << " q " << i;
+      EXPECT_NEAR(bv[i], nv[i], 1e-4 * 2000.0) << trial << " v " << i;
+      worst_q = std::max(worst_q, std::abs(bq[i] - nq[i]) / 1e8);
+      worst_v = std::max(worst_v, std::abs(bv[i] - nv[i]) / 2000.0);
+    }
+  }
+  std::printf(
+      "release with damping: %d checked, %d in the band, %d damped, %d with the force off e; "
+      "largest misfit %.2e k_c (q), %.2e c_c (v)\n",
+      checked, in_band, damped, off_axis, worst_q, worst_v);
+  EXPECT_GT(checked, 500);
+  EXPECT_GT(in_band, 100);
+  EXPECT_GT(damped, 300);
+  EXPECT_GT(off_axis, 100);
+}
+
+// The same on the integrator: on the damped unwinding with the release (the run Newton stalled
+// on), at steps where joints are being released, the step's Newton matrix
+// (Integrator::newton_system) against central differences of its residual on the diagonal
+// blocks of the joints in contact with the wheel — they carry the release's dq_extra and
+// dv_extra. (Before the fix the stalled joint's block was off by a third.)
+TEST(DynamicsPocket, ReleaseNewtonMatrixMatchesTheResidualsDifferences) {
+  UnwindingSetup setup = unwinding_setup(1000.0, true, 2000.0);
+  const Model& m = setup.model;
+  State& s = setup.state;
+  const Sprocket& w = setup.wheel;
+  Integrator integ(m, {.step = 1e-4, .theta = 0.6});
+  const std::size_t n = s.nodes(), nu = integ.unknowns();
+  ASSERT_EQ(nu, 2 * n);                   // a driver: no angle unknown
+  const double scale = 1e-4 * 0.6 * 1e8;  // the contact's h θ k_c
+  int rows = 0, off_axis = 0;
+  double worst = 0.0;
+  std::vector<double> r, jac, rp, rm;
+  for (int step = 0; step < 1200; ++step) {
+    ASSERT_TRUE(integ.step(m, s).converged) << step;
+    // every 100th step, and every step where a joint's force is off e/|e| (in the release band)
+    bool banded = false;
+    for (std::size_t i = 0; i < n; ++i) {
+      const SeatContact k = pocket_contact(w, s.x[i], s.y[i], s.vx[i], s.vy[i], s.angle[0],
+                                           s.speed[0], held_pocket(s, i, 0));
+      banded = banded || (k.active && std::abs(k.dv_extra[0]) + std::abs(k.dv_extra[3]) > 2e-3);
+    }
+    if (step % 100 != 7 && !banded) continue;
+    std::vector<double> u(nu);  // the predictor x₀ + h v₀, where Newton starts
+    for (std::size_t i = 0; i < n; ++i) {
+      u[2 * i] = s.x[i] + 1e-4 * s.vx[i];
+      u[2 * i + 1] = s.y[i] + 1e-4 * s.vy[i];
+    }
+    integ.newton_system(m, s, u, r, &jac);
+    for (std::size_t i = 0; i < n; ++i) {
+      const SeatContact k = pocket_contact(w, s.x[i], s.y[i], s.vx[i], s.vy[i], s.angle[0],
+                                           s.speed[0], held_pocket(s, i, 0));
+      if (!k.active || !(k.force > 1.0)) continue;
+      ++rows;
+      off_axis += std::abs(k.dv_extra[0]) + std::abs(k.dv_extra[3]) > 2e-3 ? 1 : 0;
+      for (std::size_t j = 2 * i; j < 2 * i + 2; ++j) {
+        const double hd = 1e-10;
+        std::vector<double> up = u, um = u;
+        up[j] += hd;
+        um[j] -= hd;
+        integ.newton_system(m, s, up, rp, nullptr);
+        integ.newton_system(m, s, um, rm, nullptr);
+        for (std::size_t a = 2 * i; a < 2 * i + 2; ++a) {
+          const double fd = (rp[a] - rm[a]) / (2 * hd);
+          worst = std::max(worst, std::abs(fd - jac[a * nu + j]) / scale);
+          EXPECT_NEAR(jac[a * nu + j], fd, 2e-3 * scale) << step << " " << a << " " << j;
+        }
+      }
+    }
+  }
+  std::printf(
+      "release's Newton matrix: %d joints' blocks, %d with the force off e/|e|, largest misfit "
+      "%.2e of h theta k_c\n",
+      rows, off_axis, worst);
+  EXPECT_GT(rows, 50);
+  EXPECT_GT(off_axis, 5);
+}
+
+// The release's held flags are those of the state a step starts from: a joint within the mouth
+// at t = 0 that leaves it in the first step is held by its pocket over that step (before, the
+// flags were set only at a step's end, so such a joint met the sharp mouth: its force lost at
+// once). A step from a fresh state and one whose flags were set first (update_held) agree bit
+// for bit.
+TEST(DynamicsPocket, ReleaseHoldsAJointLeavingTheMouthInTheFirstStep) {
+  Model m = uniform_chain(2, false, 0.064, 2.0, 1e8, 0.0, false);
+  m.alternation = 0.018;
+  Sprocket w = pocket_wheel(0.064, 0.018, 8, 0.0, 0.0, 1e-4, 1e8, 0.0);
+  w.pocket_release = true;
+  w.driver = true;
+  w.speed = 0.0;
+  m.sprockets = {w};
+  const double r = w.pitch_radius, c = w.pocket_clearance, mouth = r + 0.5 * c;
+  State fresh(2, 1);
+  fresh.angle = {0.0};  // vertex 0 at (R, 0)
+  fresh.speed = {0.0};
+  const double beta = 75.0 * kPi / 180.0, len = 1.3 * c;  // e 75° off the outward radial
+  fresh.x[0] = r + len * std::cos(beta);
+  fresh.y[0] = len * std::sin(beta);
+  fresh.x[1] = fresh.x[0];
+  fresh.y[1] = fresh.y[0] + m.rest_length(0);
+  fresh.vx[0] = 0.5;                                     // outward along the radial
+  ASSERT_LT(std::hypot(fresh.x[0], fresh.y[0]), mouth);  // within the mouth at t = 0
+  ASSERT_TRUE(pocket_contact(w, fresh.x[0], fresh.y[0], 0.5, 0.0, 0.0, 0.0).active);
+  State flagged = fresh;
+  update_held(m, flagged);
+  ASSERT_EQ(flagged.held_wheel[0], 0);
+  ASSERT_EQ(fresh.held_wheel[0], -1);  // a fresh state's flags: none held
+  Integrator a(m, {.step = 1e-4, .theta = 0.6}), b(m, {.step = 1e-4, .theta = 0.6});
+  ASSERT_TRUE(a.step(m, fresh).converged);
+  ASSERT_TRUE(b.step(m, flagged).converged);
+  // the joint left the mouth in the step and is still held by its pocket, its contact active
+  const double rho = std::hypot(flagged.x[0], flagged.y[0]);
+  std::printf("first step: rho - R %.1f um (mouth %.1f um), held %d / %d\n", (rho - r) * 1e6,
+              0.5 * c * 1e6, flagged.held_wheel[0], fresh.held_wheel[0]);
+  EXPECT_GT(rho, mouth);
+  EXPECT_EQ(flagged.held_wheel[0], 0);
+  EXPECT_TRUE(pocket_contact(w, flagged.x[0], flagged.y[0], flagged.vx[0], flagged.vy[0], 0.0, 0.0,
+                             flagged.held_pocket[0])
+                  .active);
+  // the fresh state's step is the same step
+  EXPECT_EQ(fresh.held_wheel[0], flagged.held_wheel[0]);
+  EXPECT_EQ(fresh.x[0], flagged.x[0]);
+  EXPECT_EQ(fresh.y[0], flagged.y[0]);
+  EXPECT_EQ(fresh.vx[0], flagged.vx[0]);
+  EXPECT_EQ(fresh.vy[0], flagged.vy[0]);
 }
 
 TEST(DynamicsPocket, BadFieldsAreListedAtOnce) {

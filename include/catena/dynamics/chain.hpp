@@ -300,8 +300,8 @@ struct State {
   std::vector<double> slide_speed;  ///< [m/s] per sprocket: ṡ
   double takeup_damper_work = 0.0;  ///< [J] work of the take-ups' dampers so far (≤ 0)
   /// per node: the pocket wheel (−1: none) and pocket vertex that hold the joint beyond the mouth
-  /// (Sprocket::pocket_release), set at the end of each step in which the joint was within a
-  /// mouth, cleared when its released contact's force is 0
+  /// (Sprocket::pocket_release), set at the start and end of each step where the joint is within
+  /// a mouth (update_held), cleared when its released contact's force is 0
   std::vector<int> held_wheel, held_pocket;
   explicit State(std::size_t nodes = 0, std::size_t sprockets = 0)
       : x(nodes),
@@ -397,6 +397,11 @@ struct SeatContact {
   /// The pocket's mouth ramp (pocket_contact; zero elsewhere): the part of the exact elastic
   /// ∂F/∂q (row-major) that the fields above do not give, −[(∂f/∂g) n nᵀ + f κ (I − n nᵀ)].
   double dq_extra[4] = {0.0, 0.0, 0.0, 0.0};
+  /// The pocket's release (pocket_release; zero elsewhere): dq_extra is there the rest of the
+  /// whole exact ∂F/∂q, the damper's share included, and this the rest of the exact ∂F/∂v
+  /// (row-major) beyond the fields' −c n nᵀ: the damper acts along e/|e|, the fields' n is the
+  /// force's direction.
+  double dv_extra[4] = {0.0, 0.0, 0.0, 0.0};
   double torque = 0.0;                ///< [N·m] on the wheel, counter-clockwise positive
   double seat_x = 0.0, seat_y = 0.0;  ///< [m] the seat centre
 };
@@ -453,7 +458,9 @@ ReleaseBand release_band(const Sprocket& w);
 inline constexpr int kNoPocket = -2147483647 - 1;
 SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, double vy,
                            double angle, double speed, int held = kNoPocket);
-/// After a step (Integrator::step): a joint within a pocket wheel's mouth (with pocket_release)
+/// At the start and the end of a step (Integrator::step; the same flags for the same state, so
+/// the start's call changes nothing after a step, but sets them on a state no step has ended
+/// in): a joint within a pocket wheel's mouth (with pocket_release)
 /// is held by its nearest pocket; a held joint beyond the mouth is let go when its contact's
 /// force is 0 (S(u) = 0 or g ≤ 0). Sizes the state's held arrays if they do not fit.
 void update_held(const Model& model, State& s);

@@ -90,7 +90,9 @@ class Integrator {
   /// Advances `state` by one step h. Throws InputError when the model is not the one the
   /// integrator was built for or the state's arrays have the wrong sizes (checked every step, in
   /// O(1)); the state's values are checked by validate(model, state), which the caller runs
-  /// once. On a failed solve the state is left unchanged and the report says why.
+  /// once. On a failed solve the state is left unchanged (but for the release's held flags,
+  /// which are first brought up to date with the start state: update_held, a function of it) and
+  /// the report says why.
   StepReport step(const Model& model, State& state);
 
   const IntegratorOptions& options() const { return options_; }

@@ -428,6 +428,12 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
           Mat2& d = solver_.diag[i];
           d = {d.a - hq * e[0], d.b - hq * e[1], d.c - hq * e[2], d.d - hq * e[3]};
         }
+        // the release's: the rest of ∂F/∂v too (−∂(h F)/∂u gains −∂F/∂v, v = (u − x₀)/h)
+        const double* ev = sc.dv_extra;
+        if (ev[0] != 0.0 || ev[1] != 0.0 || ev[2] != 0.0 || ev[3] != 0.0) {
+          Mat2& d = solver_.diag[i];
+          d = {d.a - ev[0], d.b - ev[1], d.c - ev[2], d.d - ev[3]};
+        }
       }
       // Seat friction (docs/models/dynamics.md, "Seat friction"): F(q, v, ψ, ω) on the roller at
       // the θ point with the step's velocities, its reaction's torque on the wheel
@@ -650,6 +656,11 @@ StepReport Integrator::step(const Model& model, State& s) {
       s.slide_speed.size() != model.sprockets.size()) {
     throw_if_any(validate(model, s));
   }
+  // The release's held flags (Sprocket::pocket_release) of the state the step starts from: a
+  // function of that state, so after a step (which sets them at its end) this changes nothing,
+  // but a state that no step has ended in (t = 0, or one set by hand) gets them too — else a
+  // joint within a mouth there that leaves it in this step would meet the sharp mouth.
+  update_held(model, s);
   const std::size_t n = model.nodes();
   const double h = options_.step;
   const double th = options_.theta;

@@ -77,8 +77,8 @@ void apply_release(const Sprocket& w, double g, double dist, double rx, double r
   apply_seat_law(w, g, rx, ry, vx, vy, speed, c);
   const double eps = w.contact_smoothing, kc = w.contact_stiffness;
   const double fel = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
-  const double kel = g < eps ? kc * g / eps : kc;
-  const double e0 = c.energy, f0 = c.force;
+  // the seats' law's f₀ = max(0, f_el + c(g) ġ), ∂f₀/∂g and c(g) (all 0 where f₀ is clamped)
+  const double e0 = c.energy, f0 = c.force, kf = c.stiffness, cf = c.damping;
   const double gu[2] = {(ux - u * nx) / dist + (nx - u * ux) / rho,
                         (uy - u * ny) / dist + (ny - u * uy) / rho};
   const double ge[2] = {(ux - u * nx) / dist, (uy - u * ny) / dist};  // through e only
@@ -106,12 +106,21 @@ void apply_release(const Sprocket& w, double g, double dist, double rx, double r
     const double fe = std::hypot(ae * nx + b * gu[0], ae * ny + b * gu[1]);
     c.depth = fe < 0.5 * kc * eps ? std::sqrt(2.0 * eps * fe / kc) : fe / kc + 0.5 * eps;
   }
-  // The exact elastic ∂F/∂q (the Hessian of −E), less the block the fields give (dq_extra):
-  // F = −A n − B ∇u, A = S f_el, B = E₀ S′; ∇A = S k_el n + f_el S′ ∇u, ∇B = f_el S′ n + E₀ S″ ∇u;
-  // ∂n/∂q = P_n/|e|, ∂r̂/∂q = P_r/ρ, ∂|e|/∂q = nᵀ, ∂ρ/∂q = r̂ᵀ.
-  const double A = sv * fel, B = e0 * s1;
+  // The exact ∂F/∂q and ∂F/∂v, the damper's share included, less the blocks the fields give
+  // (dq_extra, dv_extra): F = −A n − B ∇u, A = S f₀, B = E₀ S′, with f₀ = f_el + c(g) ġ unclamped
+  // (else A = 0 and its derivatives 0, which kf = cf = f₀ = 0 give);
+  // ∇A = S (∂f₀/∂g n + c ∇ġ) + f₀ S′ ∇u, ∂A/∂v = S c n, ∇ġ = P_n v_rel/|e| + ω (−n_y, n_x)
+  // (v_rel = v − ω ẑ × r); ∇B = f_el S′ n + E₀ S″ ∇u; ∂n/∂q = P_n/|e|, ∂r̂/∂q = P_r/ρ,
+  // ∂|e|/∂q = nᵀ, ∂ρ/∂q = r̂ᵀ. (Without the damper's share the Newton matrix was wrong by
+  // c ∂ġ/∂g-type terms wherever ġ ≠ 0 and Newton stalled: docs/models/dynamics.md, "Pocket
+  // wheel: unwinding".)
+  const double A = sv * f0, B = e0 * s1;
   const double n[2] = {nx, ny}, r[2] = {ux, uy};
-  const double dA[2] = {sv * kel * nx + fel * s1 * gu[0], sv * kel * ny + fel * s1 * gu[1]};
+  const double wx = vx + speed * ry, wy = vy - speed * rx;  // v_rel
+  const double wn = wx * nx + wy * ny;
+  const double dgq[2] = {(wx - wn * nx) / dist - speed * ny, (wy - wn * ny) / dist + speed * nx};
+  const double dA[2] = {sv * (kf * nx + cf * dgq[0]) + f0 * s1 * gu[0],
+                        sv * (kf * ny + cf * dgq[1]) + f0 * s1 * gu[1]};
   const double dB[2] = {fel * s1 * nx + e0 * s2 * gu[0], fel * s1 * ny + e0 * s2 * gu[1]};
   const double t1[2] = {ux - u * nx, uy - u * ny}, t2[2] = {nx - u * ux, ny - u * uy};
   double exact[4];
@@ -130,6 +139,11 @@ void apply_release(const Sprocket& w, double g, double dist, double rx, double r
   const double fields[4] = {-(kn * mx * mx + ft * (1 - mx * mx)), -(kn - ft) * mx * my,
                             -(kn - ft) * mx * my, -(kn * my * my + ft * (1 - my * my))};
   for (int i = 0; i < 4; ++i) c.dq_extra[i] = exact[i] - fields[i];
+  // ∂F/∂v = −S c n nᵀ; the fields give −(S c) m mᵀ, m the force's direction
+  const double cn = sv * cf;
+  const double m[2] = {mx, my};
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) c.dv_extra[2 * i + j] = -cn * (n[i] * n[j] - m[i] * m[j]);
 }
 }  // namespace
 
