@@ -125,7 +125,7 @@ void BM_DynamicsTwoSprocketDriveHingeFriction(benchmark::State& bs) {
 }
 BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFriction)->Unit(benchmark::kMicrosecond)->MinTime(3.0);
 // the same for a fixed 3000 steps from the seated start (instruction counts, as above;
-// docs/performance.md, "Hinge friction: the line search at round-off")
+// docs/performance.md, "Hinge friction: the couple's Jacobian straight into the band")
 BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFriction)
     ->Unit(benchmark::kMicrosecond)
     ->Iterations(3000);
