@@ -77,7 +77,7 @@ void two_sprocket_drive(benchmark::State& bs, double hinge_arm) {
   const Model& m = drive.model;
   State& s = drive.state;
   Integrator integ(m, {.step = 1e-4, .theta = 0.6});
-  long iterations = 0, steps = 0;
+  long iterations = 0, steps = 0, factorizations = 0, backtracks = 0;
   double penetration = 0.0;
   for (auto _ : bs) {
     const StepReport rep = integ.step(m, s);
@@ -86,12 +86,17 @@ void two_sprocket_drive(benchmark::State& bs, double hinge_arm) {
       break;
     }
     iterations += rep.iterations;
+    factorizations += rep.factorizations;
+    backtracks += rep.backtracks;
     penetration = std::max(penetration, rep.max_penetration);
     ++steps;
     benchmark::DoNotOptimize(s.x.data());
   }
   bs.counters["newton_iterations"] =
       benchmark::Counter(static_cast<double>(iterations) / static_cast<double>(steps));
+  bs.counters["factorizations"] =
+      benchmark::Counter(static_cast<double>(factorizations) / static_cast<double>(steps));
+  bs.counters["backtracks"] = static_cast<double>(backtracks);
   bs.counters["simulated_s"] = 1e-4 * static_cast<double>(steps);
   bs.counters["max_penetration_um"] = 1e6 * penetration;
   bs.counters["real_time_factor"] =
@@ -108,6 +113,11 @@ void BM_DynamicsTwoSprocketDriveHingeFriction(benchmark::State& bs) {
   two_sprocket_drive(bs, 0.1 * 5.72e-3 / 2);
 }
 BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFriction)->Unit(benchmark::kMicrosecond)->MinTime(3.0);
+// the same for a fixed 3000 steps from the seated start (instruction counts, as above;
+// docs/performance.md, "Hinge friction: the couple's Jacobian straight into the band")
+BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFriction)
+    ->Unit(benchmark::kMicrosecond)
+    ->Iterations(3000);
 
 // Guides (docs/models/dynamics.md, "Guides"): the conveyor loop of examples/dynamics_conveyor.toml
 // (validation (6b)): 136 links of 12B (pretension 20 N, 5e7 N/m, 100 N·s/m) over two z = 16

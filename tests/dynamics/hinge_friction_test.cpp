@@ -180,6 +180,57 @@ TEST(HingeFriction, CoupleWithoutJacobianIsTheFullOnesBitForBitAndLeavesTheJacob
   }
 }
 
+// The integrator's hinge loop takes the couple's Jacobian block by block (hinge_couple_blocks),
+// adding −h × each block into its band: the nine blocks, each once, in row-major order, each the
+// stored Jacobian's bit for bit (both links' terms from hinge_link, as the integrator has them);
+// none without the Jacobian, the other fields the same either way.
+TEST(HingeFriction, CoupleBlocksAreTheStoredJacobiansNineBlocksInOrderBitForBit) {
+  std::mt19937 rng(13);
+  const HingeFriction hinge{.arm = 2.86e-4, .rate_band = 5.0};
+  for (int trial = 0; trial < 200; ++trial) {
+    const Pose p = random_pose(rng, kPitch, 5e-5);
+    const double theta = trial % 2 ? 0.5 : 0.6, h = 1e-4;
+    const double rest[2] = {kPitch, kPitch * (1.0 - 1e-3)};
+    HingeLink link[2];
+    for (int j = 0; j < 2; ++j) {
+      const double d0x = p.x0[j + 1] - p.x0[j], d0y = p.y0[j + 1] - p.y0[j];
+      const double d1x = p.x1[j + 1] - p.x1[j], d1y = p.y1[j + 1] - p.y1[j];
+      hinge_link(d0x, d0y, d1x, d1y, std::sqrt(d0x * d0x + d0y * d0y),
+                 std::sqrt(d1x * d1x + d1y * d1y), rest[j], kStiffness, theta, link[j]);
+    }
+    HingeCouple stored;
+    hinge_couple(hinge, link[0], link[1], h, stored, true);
+    HingeCouple blocks;
+    int calls = 0;
+    hinge_couple_blocks(hinge, link[0], link[1], h, blocks, true,
+                        [&](int k, int q, double a, double b, double c, double d) {
+                          EXPECT_EQ(3 * k + q, calls);
+                          ++calls;
+                          EXPECT_EQ(a, stored.jacobian[2 * k][2 * q]);
+                          EXPECT_EQ(b, stored.jacobian[2 * k][2 * q + 1]);
+                          EXPECT_EQ(c, stored.jacobian[2 * k + 1][2 * q]);
+                          EXPECT_EQ(d, stored.jacobian[2 * k + 1][2 * q + 1]);
+                        });
+    EXPECT_EQ(calls, 9);
+    HingeCouple lean;
+    hinge_couple_blocks(hinge, link[0], link[1], h, lean, false,
+                        [&](int, int, double, double, double, double) { ++calls; });
+    EXPECT_EQ(calls, 9);
+    for (const HingeCouple* hc : {&blocks, &lean}) {
+      EXPECT_EQ(hc->torque, stored.torque);
+      EXPECT_EQ(hc->work, stored.work);
+      EXPECT_EQ(hc->rate_stiffness, stored.rate_stiffness);
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(hc->fx[k], stored.fx[k]);
+        EXPECT_EQ(hc->fy[k], stored.fy[k]);
+      }
+      for (const auto& row : hc->jacobian) {
+        for (const double v : row) EXPECT_EQ(v, 0.0);  // not written
+      }
+    }
+  }
+}
+
 TEST(HingeFriction, CoupleHasNoResultantItsMomentIsTheTorqueAndItsWorkIsMTimesTheTurn) {
   std::mt19937 rng(6);
   const HingeFriction hinge{.arm = 2.86e-4, .rate_band = 5.0};

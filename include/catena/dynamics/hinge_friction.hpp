@@ -9,6 +9,8 @@
 // each link: M ∂β/∂x on the three nodes, β the relative angle (link i's angle less link i − 1's).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "catena/core/error.hpp"
@@ -123,9 +125,99 @@ inline void hinge_link(double d0x, double d0y, double d1x, double d1y, double le
 }
 
 /// The couple of the hinge between links `l0` (a → b) and `l1` (b → c) from their HingeLink
+/// terms, as hinge_couple below, with the Jacobian handed out block by block rather than stored:
+/// with `jacobian`, `block(k, q, a, b, c, d)` is called for each of the nine 2×2 blocks (k, q)
+/// of ∂f/∂x₁ (rows of node k, columns of node q; a b / c d row-major), in the order (0, 0),
+/// (0, 1), …, (2, 2). `out.jacobian` is not touched. For the integrator's hinge loop, which adds
+/// −h × each block into its band without the 6×6 array in between (the same arithmetic).
+template <class Block>
+inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
+                                const HingeLink& l1, double step, HingeCouple& hc, bool jacobian,
+                                Block&& block) {
+  const double tension_sum = l0.tension + l1.tension;
+  hc.load = std::max(0.0, 0.5 * tension_sum);
+  hc.turn = l1.turn - l0.turn;
+  hc.rate = hc.turn / step;
+  // g = ∂β/∂x: (+P₀, −P₀ − P₁, +P₁), P = perp(d_θ)/|d_θ|²
+  hc.gx[0] = l0.px;
+  hc.gy[0] = l0.py;
+  hc.gx[1] = -l0.px - l1.px;
+  hc.gy[1] = -l0.py - l1.py;
+  hc.gx[2] = l1.px;
+  hc.gy[2] = l1.py;
+  const double band = hinge.rate_band;
+  const double root = std::sqrt(hc.rate * hc.rate + band * band);
+  const double limit = hinge.arm * hc.load;  // e F
+  hc.torque = -limit * hc.rate / root;
+  hc.work = hc.torque * hc.turn;
+  for (int k = 0; k < 3; ++k) {
+    hc.fx[k] = hc.torque * hc.gx[k];
+    hc.fy[k] = hc.torque * hc.gy[k];
+  }
+  hc.rate_stiffness = limit * band * band / (root * root * root);
+  if (!jacobian) return;
+  // The exact ∂f/∂x₁. Node gradients of a per-link quantity q(d₁) of links 0 (a → b) and 1
+  // (b → c): the turn Δβ = turn₁ − turn₀ gives (T₀, −T₀ − T₁, T₁) (as g); the load F = Σ ½ k
+  // (l_θ − rest) gives (−E₀, E₀ − E₁, E₁) (zero where the load is clamped at 0).
+  const double loaded = 0.5 * tension_sum > 0.0 ? 1.0 : 0.0;
+  const double load_factor = -hinge.arm * (hc.rate / root) * loaded;  // ∂M/∂F = −e s(ω)
+  const double rate_factor = -hc.rate_stiffness / step;               // ∂M/∂Δβ = −e F s'/h
+  const double nturn_x[3] = {l0.tx, -l0.tx - l1.tx, l1.tx};
+  const double nturn_y[3] = {l0.ty, -l0.ty - l1.ty, l1.ty};
+  const double nload_x[3] = {-l0.ex, l0.ex - l1.ex, l1.ex};
+  const double nload_y[3] = {-l0.ey, l0.ey - l1.ey, l1.ey};
+  double dmx[3], dmy[3];  // ∂M/∂x₁ per node
+  for (int q = 0; q < 3; ++q) {
+    dmx[q] = load_factor * nload_x[q] + rate_factor * nturn_x[q];
+    dmy[q] = load_factor * nload_y[q] + rate_factor * nturn_y[q];
+  }
+  // The load and rate terms g_k ⊗ ∂M/∂x_q on every block, plus the direction term M ∂g_k/∂x_q:
+  // g = (P₀, −P₀ − P₁, P₁), ∂P_j/∂x of its link's end node is DP_j, of its start node −DP_j, so
+  // (blocks k, q) −DP₀ +DP₀ 0 / +DP₀ −DP₀+DP₁ −DP₁ / 0 −DP₁ +DP₁ (the blocks (0, 2) and (2, 0)
+  // have no direction term).
+  const double m = hc.torque;
+  double p0[4], p1[4], p01[4];
+  for (int e = 0; e < 4; ++e) {
+    p0[e] = m * l0.dp[e];
+    p1[e] = m * l1.dp[e];
+    p01[e] = m * (-l0.dp[e] + l1.dp[e]);
+  }
+  const double* gx = hc.gx;
+  const double* gy = hc.gy;
+  // sign: +1 adds the direction block d, −1 subtracts it, 0 none
+  const auto emit = [&](int k, int q, int sign, const double* d) {
+    const double a = gx[k] * dmx[q], b = gx[k] * dmy[q], c = gy[k] * dmx[q], e = gy[k] * dmy[q];
+    if (sign > 0) {
+      block(k, q, a + d[0], b + d[1], c + d[2], e + d[3]);
+    } else if (sign < 0) {
+      block(k, q, a - d[0], b - d[1], c - d[2], e - d[3]);
+    } else {
+      block(k, q, a, b, c, e);
+    }
+  };
+  emit(0, 0, -1, p0);
+  emit(0, 1, +1, p0);
+  emit(0, 2, 0, p0);
+  emit(1, 0, +1, p0);
+  emit(1, 1, +1, p01);
+  emit(1, 2, -1, p1);
+  emit(2, 0, 0, p1);
+  emit(2, 1, -1, p1);
+  emit(2, 2, +1, p1);
+}
+
+/// The couple of the hinge between links `l0` (a → b) and `l1` (b → c) from their HingeLink
 /// terms, into `out` as above: bit for bit what the overloads above give.
-void hinge_couple(const HingeFriction& hinge, const HingeLink& l0, const HingeLink& l1, double step,
-                  HingeCouple& out, bool jacobian);
+inline void hinge_couple(const HingeFriction& hinge, const HingeLink& l0, const HingeLink& l1,
+                         double step, HingeCouple& hc, bool jacobian) {
+  hinge_couple_blocks(hinge, l0, l1, step, hc, jacobian,
+                      [&hc](int k, int q, double a, double b, double c, double d) {
+                        hc.jacobian[2 * k][2 * q] = a;
+                        hc.jacobian[2 * k][2 * q + 1] = b;
+                        hc.jacobian[2 * k + 1][2 * q] = c;
+                        hc.jacobian[2 * k + 1][2 * q + 1] = d;
+                      });
+}
 
 /// Both links of rest length `pitch`.
 inline HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, double pitch,

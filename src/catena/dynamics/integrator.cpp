@@ -271,32 +271,33 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   if (model.hinge.active() && n >= 3) {
     const std::size_t first = model.closed ? 0 : 1;
     const std::size_t last = model.closed ? n : n - 1;
+    const HingeLink* hinge_link_of = hinge_links_.data();
+    Mat2* far_lower = far_lower_.data();
+    Mat2* far_upper = far_upper_.data();
+    double hinge_work = 0.0;
     HingeCouple hc;  // one for every hinge: each call writes every field read below
     for (std::size_t i = first; i < last; ++i) {
-      const std::size_t ha = (i + n - 1) % n, hb = (i + 1) % n;
-      // links ha (ha → i) and i (i → hb), their terms from the links' loop above
-      hinge_couple(model.hinge, hinge_links_[ha], hinge_links_[i], h, hc, jacobian);
-      hinge_work_ += hc.work;
-      const std::size_t node[3] = {ha, i, hb};
-      for (int q = 0; q < 3; ++q) {
-        solver_.rhs[node[q]].x += h * hc.fx[q];
-        solver_.rhs[node[q]].y += h * hc.fy[q];
-      }
-      if (!jacobian) continue;
-      // block (r, q) of the three nodes: −h ∂f_r/∂u_q; node offsets q − r in −2..2
-      Mat2* slot[3][3] = {{&solver_.diag[ha], &solver_.upper[ha], &far_upper_[ha]},
-                          {&solver_.lower[i], &solver_.diag[i], &solver_.upper[i]},
-                          {&far_lower_[hb], &solver_.lower[hb], &solver_.diag[hb]}};
-      for (int r = 0; r < 3; ++r) {
-        for (int q = 0; q < 3; ++q) {
-          Mat2& m = *slot[r][q];
-          const auto& jr0 = hc.jacobian[2 * r];
-          const auto& jr1 = hc.jacobian[2 * r + 1];
-          m = {m.a - h * jr0[2 * q], m.b - h * jr0[2 * q + 1], m.c - h * jr1[2 * q],
-               m.d - h * jr1[2 * q + 1]};
-        }
-      }
+      const std::size_t ha = i == 0 ? n - 1 : i - 1, hb = i + 1 == n ? 0 : i + 1;
+      // links ha (ha → i) and i (i → hb), their terms from the links' loop above; −h × the
+      // couple's Jacobian block (r, q) of the three nodes ha, i, hb into the band (node offsets
+      // q − r in −2..2)
+      Mat2* const slot[3][3] = {{&diag[ha], &upper[ha], &far_upper[ha]},
+                                {&lower[i], &diag[i], &upper[i]},
+                                {&far_lower[hb], &lower[hb], &diag[hb]}};
+      hinge_couple_blocks(model.hinge, hinge_link_of[ha], hinge_link_of[i], h, hc, jacobian,
+                          [&](int r, int q, double ja, double jb, double jc, double jd) {
+                            Mat2& m = *slot[r][q];
+                            m = {m.a - h * ja, m.b - h * jb, m.c - h * jc, m.d - h * jd};
+                          });
+      hinge_work += hc.work;
+      rhs[ha].x += h * hc.fx[0];
+      rhs[ha].y += h * hc.fy[0];
+      rhs[i].x += h * hc.fx[1];
+      rhs[i].y += h * hc.fy[1];
+      rhs[hb].x += h * hc.fx[2];
+      rhs[hb].y += h * hc.fy[2];
     }
+    hinge_work_ = hinge_work;
   }
   // The nodes' θ points, once for all wheels and guides, and how far they are from where the
   // wheels' candidate lists were made (∞-norm; NaN when a point is not finite)
@@ -903,9 +904,14 @@ StepReport Integrator::step(const Model& model, State& s) {
           undo_chord_step();
           continue;
         }
+        // the line search's points on the residual alone, and the Jacobian once at the point it
+        // accepts (the residual is the same either way, bit for bit)
         const int backtracks = report.backtracks;
-        norm2 = backtrack(next, norm2, true, report);
-        if (report.backtracks > backtracks) previous = INFINITY;
+        norm2 = backtrack(next, norm2, false, report);
+        if (report.backtracks > backtracks) {
+          previous = INFINITY;
+          assemble(model, s, true);
+        }
         fresh = true;
         continue;
       }
