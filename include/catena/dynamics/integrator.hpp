@@ -122,7 +122,10 @@ class Integrator {
 
  private:
   // Fills the solver's rhs with −R(u) (and its blocks with J(u) when `jacobian`); returns |R|².
-  double assemble(const Model& model, const State& s, bool jacobian);
+  // `report_only`: only what a step reports of its iterate (the works, the wheels' torques and
+  // forces, the deepest penetration), by the same arithmetic; the rhs is left unusable and 0
+  // returned (the assembly at an iterate accepted on the error estimate).
+  double assemble(const Model& model, const State& s, bool jacobian, bool report_only = false);
 
   // The Newton matrix's factorisation and substitutions: block tridiagonal without hinge
   // friction; with it, the exact block-pentadiagonal matrix (the tridiagonal arrays plus the

@@ -178,7 +178,7 @@ bool Integrator::update_candidates(const Model& model, double moved) {
   return true;
 }
 
-double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
+double Integrator::assemble(const Model& model, const State& s, bool jacobian, bool report_only) {
   const std::size_t n = model.nodes();
   const double h = options_.step;
   const double th = options_.theta;
@@ -202,7 +202,13 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   Mat2* diag = solver_.diag.data();
   const double drag = model.drag, grav_x = model.gravity_x, grav_y = model.gravity_y;
   double drag_work = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
+  // report only: the drag's work alone (the same sum; +0 without drag)
+  for (std::size_t i = 0; report_only && drag != 0.0 && i < n; ++i) {
+    const double m = mass[i];
+    const double dx = ux[i] - sx[i], dy = uy[i] - sy[i];
+    drag_work -= drag * m * (dx * dx + dy * dy) / h;
+  }
+  for (std::size_t i = 0; !report_only && i < n; ++i) {
     const double m = mass[i];
     const double dx = ux[i] - sx[i], dy = uy[i] - sy[i];
     // (α = 0, the usual case: the term is +0 and the sum stays +0 without the division)
@@ -219,6 +225,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   }
   drag_work_ = drag_work;
   for (const NodeLoad& f : model.loads) {  // constant: no Jacobian term
+    if (report_only) break;
     solver_.rhs[f.node].x += h * f.fx;
     solver_.rhs[f.node].y += h * f.fy;
   }
@@ -238,17 +245,19 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     len1[j] = l1;
     const double lt = (1.0 - th) * l0 + th * l1;
     const double mx = (1.0 - th) * d0x + th * d1x, my = (1.0 - th) * d0y + th * d1y;
+    // the damper's share of φ d_θ does the work −c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ on the two
+    // nodes (d_θ·(d₁ − d₀) = l̄ (l₁ − l₀) + (θ − ½)|d₁ − d₀|²: −c (l₁ − l₀)²/h at θ = ½)
+    if (c > 0.0) {
+      damper_work -= c * (l1 - l0) / h * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
+    }
+    // report only: the force is not needed (but for the hinges' couples, which take it)
+    if (report_only && hinge_links_.empty()) continue;
     // φ = [k (l_θ − p) + c (l₁ − l₀)/h] / l_θ; the force on node a is φ d_θ, on node b −φ d_θ.
     // At θ = ½ the work over the step is exactly the change of ½ k (l − p)² plus the damper's
     // loss c (l₁ − l₀)²/h (Simo & Tarnow 1992).
     const double p = model.rest_length(j);  // p ± a (round-link chain), else p
     const double phi = (k * (lt - p) + c * (l1 - l0) / h) / lt;
     const double fx = h * phi * mx, fy = h * phi * my;
-    // the damper's share of φ d_θ does the work −c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ on the two
-    // nodes (d_θ·(d₁ − d₀) = l̄ (l₁ − l₀) + (θ − ½)|d₁ − d₀|²: −c (l₁ − l₀)²/h at θ = ½)
-    if (c > 0.0) {
-      damper_work -= c * (l1 - l0) / h * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
-    }
     rhs[a].x += fx;
     rhs[a].y += fy;
     rhs[b].x -= fx;
@@ -551,6 +560,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   // Each guide is tried against the nodes the hint lists near it, in node order (the pairs and
   // their order are those of the loop over every node: bit-identical; "Guides: O(N) a step").
   refresh_guide_hint(model, s, th);
+  // report only: the guides' works are taken after the step, and the residual is not wanted
+  if (report_only) return 0.0;
   for (std::size_t g = 0; g < model.guides.size(); ++g) {
     const Guide& guide = model.guides[g];
     const GuideBounds bounds = options_.guide_hint ? guide_hint_.bounds()[g] : guide_bounds(guide);
@@ -942,7 +953,7 @@ StepReport Integrator::step(const Model& model, State& s) {
   }
   // Converged on the estimate, the last assembly is one correction (≤ √tolerance·p or so) off the
   // accepted iterate: the step's works and torques are taken there again (residual only).
-  if (report.converged && estimated && !checked) assemble(model, s, false);
+  if (report.converged && estimated && !checked) assemble(model, s, false, true);
   report.max_penetration = max_penetration_;
   if (!report.converged) return report;
   // The guides' friction work over the step: the friction force the step applied (at the θ point,
