@@ -165,10 +165,13 @@ class Integrator {
   // per extra: its row ∂R_a/∂u (the column's transpose but for seat friction)
   std::vector<std::vector<Vec2>> brow_;
   std::vector<std::vector<Vec2>> wsol_;  // per extra: A⁻¹ times that column
-  std::vector<double> schur_;            // the extras' Schur complement
-  std::vector<double> slide_force_;      // per wheel: the chain's force along the slide
-  std::vector<double> wheel_force_;      // per wheel: |the chain's force| on a take-up's wheel
-  std::vector<double> torque_;           // per wheel: the θ-point contact torque (last assembly)
+  // per extra: the rows of bcol_ and brow_ the last Jacobian assembly set, ascending (the others
+  // are zero)
+  std::vector<std::vector<std::size_t>> border_rows_;
+  std::vector<double> schur_;        // the extras' Schur complement
+  std::vector<double> slide_force_;  // per wheel: the chain's force along the slide
+  std::vector<double> wheel_force_;  // per wheel: |the chain's force| on a take-up's wheel
+  std::vector<double> torque_;       // per wheel: the θ-point contact torque (last assembly)
   // The seat contacts' step constants (docs/models/dynamics.md, "Solver"): each ISO wheel's tooth
   // geometry (seat_geometry, set at the start of a step), and the directions (cos σ, sin σ) of its
   // seats σ = ψ_θ + k τ at the θ-point angle ψ_θ they were taken at — a driver's ψ_θ is the same

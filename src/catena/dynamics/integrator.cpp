@@ -97,6 +97,8 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
   bcol_.assign(m, std::vector<Vec2>(model.nodes()));
   brow_.assign(m, std::vector<Vec2>(model.nodes()));
   wsol_.assign(m, std::vector<Vec2>(model.nodes()));
+  border_rows_.assign(m, {});
+  for (std::vector<std::size_t>& rows : border_rows_) rows.reserve(model.nodes());
   // A quarter pitch: at a chain speed v a node crosses it in p/(4 v h) steps (over a hundred at
   // 1 m/s and h = 1e-4 s for 12B), while a rail's list grows by half a pitch's width of nodes.
   guide_hint_ = GuideHint(0.25 * model.pitch);
@@ -202,6 +204,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   Mat2* diag = solver_.diag.data();
   const double drag = model.drag, grav_x = model.gravity_x, grav_y = model.gravity_y;
   double drag_work = 0.0;
+  const bool open_chain = model.links() < n;
   // report only: the drag's work alone (the same sum; +0 without drag)
   for (std::size_t i = 0; report_only && drag != 0.0 && i < n; ++i) {
     const double m = mass[i];
@@ -216,8 +219,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     const double inertia = m / (h * th);
     if (jacobian) {
       diag[i] = {inertia + drag * m, 0.0, 0.0, inertia + drag * m};
-      solver_.lower[i] = {};
-      solver_.upper[i] = {};
+      // a closed loop's links set every lower and upper block below (an open chain's leave the
+      // corners lower[0] and upper[n − 1])
+      if (open_chain) solver_.lower[i] = solver_.upper[i] = {};
       if (pentadiagonal_) far_lower_[i] = far_upper_[i] = {};
     }
     rhs[i] = {-(inertia * (dx - h * svx[i]) + drag * m * dx - h * m * grav_x),
@@ -361,14 +365,13 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     double wdiag = driven ? wheel.inertia / (h * th) : 0.0;
     double sdiag = 0.0, cross_ws = 0.0, cross_sw = 0.0;  // ∂R_s/∂s, ∂R_ψ/∂s, ∂R_s/∂ψ
     double pull_x = 0.0, pull_y = 0.0;  // Σ (f n − F_t): the chain's force on the wheel
-    if (driven && jacobian) {
-      std::fill(bcol_[ia].begin(), bcol_[ia].end(), Vec2{});
-      std::fill(brow_[ia].begin(), brow_[ia].end(), Vec2{});
-    }
-    if (slides && jacobian) {
-      std::fill(bcol_[is].begin(), bcol_[is].end(), Vec2{});
-      std::fill(brow_[is].begin(), brow_[is].end(), Vec2{});
-    }
+    // the border's column and row: zero but in the rows the last Jacobian assembly set
+    auto clear_border = [&](std::size_t x) {
+      for (const std::size_t i : border_rows_[x]) bcol_[x][i] = brow_[x][i] = Vec2{};
+      border_rows_[x].clear();
+    };
+    if (driven && jacobian) clear_border(ia);
+    if (slides && jacobian) clear_border(is);
     // seat_contact's own first test, inline: most rollers are clear of a wheel, and the call
     // (its result zeroed, the velocity formed) cost more than the test.
     const double reach = contact_reach(wheel);
@@ -491,6 +494,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       const double hf = h * th * sc.force;
       const double spin =  // h θ c n·perp(v)
           wheel.pocket ? 0.0 : h * th * sc.damping * (sc.ny * vx - sc.nx * vy);
+      border_rows_[ia].push_back(i);
       bcol_[ia][i] = {-dt.x - hf * sc.ny - spin * sc.nx, -dt.y + hf * sc.nx - spin * sc.ny};
       brow_[ia][i] = {-dtt.x - hf * sc.ny, -dtt.y + hf * sc.nx};
       wdiag +=
@@ -515,6 +519,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
                 dc.c - (ht * sf.dq[2] + sf.dv[2]), dc.d - (ht * sf.dq[3] + sf.dv[3])};
       }
       const Vec2 de{dall.a * ex + dall.b * ey, dall.c * ex + dall.d * ey};
+      border_rows_[is].push_back(i);
       bcol_[is][i] = {-de.x, -de.y};
       brow_[is][i] = {-(dall.a * ex + dall.c * ey), -(dall.b * ex + dall.d * ey)};
       sdiag += ex * de.x + ey * de.y;
@@ -772,14 +777,17 @@ StepReport Integrator::step(const Model& model, State& s) {
         substitute(solver_.rhs, delta_, bcol_[0], wsol_[0]);
         for (std::size_t a = 1; a < nd; ++a) substitute(bcol_[a], wsol_[a]);
         for (std::size_t a = 0; a < nd; ++a) {
-          const std::vector<Vec2>& ba = brow_[a];  // the unknown's row
+          // the unknown's row, over the rows where it is not zero (in the same order: the same
+          // sums, the zero terms left out)
+          const std::vector<Vec2>& ba = brow_[a];
+          const std::vector<std::size_t>& rows = border_rows_[a];
           double g = xres_[a];
-          for (std::size_t i = 0; i < n; ++i) g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
+          for (const std::size_t i : rows) g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
           dx_[a] = g;
           for (std::size_t b = 0; b < nd; ++b) {
             const std::vector<Vec2>& wb = wsol_[b];
             double sab = xjac_[a * nd + b];
-            for (std::size_t i = 0; i < n; ++i) sab -= ba[i].x * wb[i].x + ba[i].y * wb[i].y;
+            for (const std::size_t i : rows) sab -= ba[i].x * wb[i].x + ba[i].y * wb[i].y;
             schur_[a * nd + b] = sab;
           }
         }
