@@ -165,6 +165,9 @@ class Integrator {
   // per extra: its row ∂R_a/∂u (the column's transpose but for seat friction)
   std::vector<std::vector<Vec2>> brow_;
   std::vector<std::vector<Vec2>> wsol_;  // per extra: A⁻¹ times that column
+  // the solver's forward sweep of the residual (and bcol_[0]) was done by the last factor() and
+  // the next substitution of them only finishes it
+  bool forward_pending_ = false;
   // per extra: the rows of bcol_ and brow_ the last Jacobian assembly set, ascending (the others
   // are zero)
   std::vector<std::vector<std::size_t>> border_rows_;

@@ -181,6 +181,7 @@ bool Integrator::update_candidates(const Model& model, double moved) {
 }
 
 double Integrator::assemble(const Model& model, const State& s, bool jacobian, bool report_only) {
+  forward_pending_ = false;  // the residual changes: a forward sweep of the old one is stale
   const std::size_t n = model.nodes();
   const double h = options_.step;
   const double th = options_.theta;
@@ -608,7 +609,16 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
 }
 
 SolveStatus Integrator::factor() {
-  if (!pentadiagonal_) return solver_.factor();
+  if (!pentadiagonal_) {
+    // A fresh iteration's first substitution is always of the residual (and, with a border, of
+    // the first extra's column, beside it): its forward sweep rides along with the factorisation
+    // and the substitution below only finishes it (the same arithmetic, one pass fewer).
+    const std::span<const Vec2> second =
+        extra_.empty() ? std::span<const Vec2>() : std::span<const Vec2>(bcol_[0]);
+    const SolveStatus status = solver_.factor_forward(solver_.rhs, second);
+    forward_pending_ = status == SolveStatus::kSolved;
+    return status;
+  }
   // the tridiagonal arrays' cyclic convention (lower[0] is block (0, n − 1), upper[n − 1] block
   // (n − 1, 0)) is the pentadiagonal bands' (column i + o modulo n)
   penta_.band[0] = far_lower_;
@@ -620,8 +630,12 @@ SolveStatus Integrator::factor() {
 }
 
 void Integrator::substitute(std::span<const Vec2> b, std::span<Vec2> x) {
+  const bool pending = forward_pending_;
+  forward_pending_ = false;
   if (pentadiagonal_) {
     penta_.substitute(b, x);
+  } else if (pending && extra_.empty() && b.data() == solver_.rhs.data()) {
+    solver_.finish(x, {});
   } else {
     solver_.substitute(b, x);
   }
@@ -629,8 +643,13 @@ void Integrator::substitute(std::span<const Vec2> b, std::span<Vec2> x) {
 
 void Integrator::substitute(std::span<const Vec2> b, std::span<Vec2> x, std::span<const Vec2> b2,
                             std::span<Vec2> x2) {
+  const bool pending = forward_pending_;
+  forward_pending_ = false;
   if (pentadiagonal_) {
     penta_.substitute(b, x, b2, x2);
+  } else if (pending && !extra_.empty() && b.data() == solver_.rhs.data() &&
+             b2.data() == bcol_[0].data()) {
+    solver_.finish(x, x2);
   } else {
     solver_.substitute(b, x, b2, x2);
   }
