@@ -206,8 +206,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   const double drag = model.drag, grav_x = model.gravity_x, grav_y = model.gravity_y;
   double drag_work = 0.0;
   const bool open_chain = model.links() < n;
-  // report only: the drag's work alone (the same sum; +0 without drag)
-  for (std::size_t i = 0; report_only && drag != 0.0 && i < n; ++i) {
+  // the drag's work, in a loop of its own (α = 0, the usual case: the sum stays +0 without it)
+  for (std::size_t i = 0; drag != 0.0 && i < n; ++i) {
     const double m = mass[i];
     const double dx = ux[i] - sx[i], dy = uy[i] - sy[i];
     drag_work -= drag * m * (dx * dx + dy * dy) / h;
@@ -215,8 +215,6 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   for (std::size_t i = 0; !report_only && i < n; ++i) {
     const double m = mass[i];
     const double dx = ux[i] - sx[i], dy = uy[i] - sy[i];
-    // (α = 0, the usual case: the term is +0 and the sum stays +0 without the division)
-    if (drag != 0.0) drag_work -= drag * m * (dx * dx + dy * dy) / h;
     const double inertia = m / (h * th);
     if (jacobian) {
       diag[i] = {inertia + drag * m, 0.0, 0.0, inertia + drag * m};
@@ -240,6 +238,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   Mat2* upper = solver_.upper.data();
   Mat2* lower = solver_.lower.data();
   double damper_work = 0.0;
+  const bool hinges = !hinge_links_.empty();  // (read once: the stores below may alias it)
   for (std::size_t j = 0; j < links; ++j) {
     const std::size_t a = j, b = j + 1 == n ? 0 : j + 1;
     const double d0x = sx[b] - sx[a], d0y = sy[b] - sy[a];
@@ -256,7 +255,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       damper_work -= c * (l1 - l0) / h * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
     }
     // report only: the force is not needed (but for the hinges' couples, which take it)
-    if (report_only && hinge_links_.empty()) continue;
+    if (report_only && !hinges) continue;
     // φ = [k (l_θ − p) + c (l₁ − l₀)/h] / l_θ; the force on node a is φ d_θ, on node b −φ d_θ.
     // At θ = ½ the work over the step is exactly the change of ½ k (l − p)² plus the damper's
     // loss c (l₁ − l₀)²/h (Simo & Tarnow 1992).
@@ -268,8 +267,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     rhs[b].x -= fx;
     rhs[b].y -= fy;
     // the link's share of the couples of the hinges at its two ends (the hinge loop below)
-    if (!hinge_links_.empty())
-      hinge_link(d0x, d0y, d1x, d1y, l0, l1, p, k, th, hinge_links_[j], jacobian);
+    if (hinges) hinge_link(d0x, d0y, d1x, d1y, l0, l1, p, k, th, hinge_links_[j], jacobian);
     if (!jacobian) continue;
     // A = ∂(φ d_θ)/∂d₁ = θ φ I + d_θ ⊗ (∂φ/∂l₁) d₁/l₁,  ∂φ/∂l₁ = [(k θ + c/h) − θ φ] / l_θ.
     const double dphi = ((k * th + c / h) - th * phi) / lt;
@@ -404,10 +402,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
         vx -= slide_rate * ex;
         vy -= slide_rate * ey;
       }
-      SeatContact sc;
-      if (wheel.pocket) {
-        sc = pocket_contact(wheel, qx, qy, vx, vy, psi, omega, held);
-      } else {
+      // (assigned once: a default-constructed contact overwritten cost its zeroing per roller)
+      const SeatContact sc = [&] {
+        if (wheel.pocket) return pocket_contact(wheel, qx, qy, vx, vy, psi, omega, held);
         // seat_contact, its seat's direction from the step's table when there
         const double kseat = nearest_seat(rx, ry, psi, geometry.tau);
         const double teeth = static_cast<double>(directions.size());
@@ -420,11 +417,11 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
             const double sigma = psi + kseat * geometry.tau;
             d = {kseat, std::cos(sigma), std::sin(sigma)};
           }
-          sc = seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn);
-        } else {  // a non-finite iterate: as seat_contact (no table slot)
-          sc = seat_contact(wheel, geometry, qx, qy, vx, vy, psi, omega);
+          return seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn);
         }
-      }
+        // a non-finite iterate: as seat_contact (no table slot)
+        return seat_contact(wheel, geometry, qx, qy, vx, vy, psi, omega);
+      }();
       if (!sc.active) continue;
       max_penetration_ = std::max(max_penetration_, sc.depth);
       contact_damping_work_ += h * sc.damping_power;
