@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace catena::dynamics {
@@ -197,6 +198,60 @@ TEST(BlockTridiagonal, PairedSubstitutionEqualsTwoSingleOnes) {
       EXPECT_LT(relative_error(s, p2), kRelativeTol) << "n " << n << " cyclic " << cyclic;
     }
   }
+}
+
+// factor_forward + finish is factor + substitute, bit for bit (one and two right-hand sides, open
+// and cyclic, SPD and nonsymmetric), and the factors it leaves serve substitute() as factor()'s do.
+TEST(BlockTridiagonal, FusedFactorAndForwardSweepEqualsFactorThenSubstitute) {
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto expect_same = [](const std::vector<Vec2>& p, const std::vector<Vec2>& q,
+                        const std::string& what) {
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      EXPECT_EQ(p[i].x, q[i].x) << what << " row " << i;
+      EXPECT_EQ(p[i].y, q[i].y) << what << " row " << i;
+    }
+  };
+  for (bool cyclic : {false, true}) {
+    for (bool spd : {false, true}) {
+      for (std::size_t n : {1u, 2u, 3u, 4u, 31u, 200u}) {
+        if (cyclic && n < 3) continue;
+        const std::string what = "n " + std::to_string(n) + " cyclic " + std::to_string(cyclic) +
+                                 " spd " + std::to_string(spd);
+        BlockTridiagonalSolver s(n, cyclic), f(n, cyclic);
+        if (spd) {
+          fill_spd(s, rng, 0.01);
+        } else {
+          fill_general(s, rng);
+        }
+        f.lower = s.lower;
+        f.diag = s.diag;
+        f.upper = s.upper;
+        f.rhs = s.rhs;
+        std::vector<Vec2> b2(n), b3(n), x1(n), x2(n), x3(n), p1(n), p2(n), q1(n), q3(n);
+        for (Vec2& v : b2) v = {u(rng), u(rng)};
+        for (Vec2& v : b3) v = {u(rng), u(rng)};
+        ASSERT_EQ(s.factor(), SolveStatus::kSolved) << what;
+        s.substitute(s.rhs, x1, b2, x2);
+        s.substitute(b3, x3);
+        ASSERT_EQ(f.factor_forward(f.rhs, b2), SolveStatus::kSolved) << what;
+        f.finish(p1, p2);
+        expect_same(p1, x1, what + " first");
+        expect_same(p2, x2, what + " second");
+        f.substitute(b3, q3);  // the factors left behind
+        expect_same(q3, x3, what + " factors");
+        ASSERT_EQ(f.factor_forward(b3, {}), SolveStatus::kSolved) << what;
+        f.finish(q1, {});
+        expect_same(q1, x3, what + " one right-hand side");
+        EXPECT_LT(relative_error(f, p1), kRelativeTol) << what;
+      }
+    }
+  }
+  BlockTridiagonalSolver z(5, true);  // all blocks zero: reported, as by factor()
+  EXPECT_EQ(z.factor_forward(z.rhs, {}), SolveStatus::kSingularPivot);
+  std::vector<Vec2> wrong(4);
+  EXPECT_THROW(z.factor_forward(wrong, {}), std::invalid_argument);
+  EXPECT_THROW(z.factor_forward(z.rhs, wrong), std::invalid_argument);
 }
 
 // The corner blocks matter: a cyclic solve differs from the open solve of the same blocks.

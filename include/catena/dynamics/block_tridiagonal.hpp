@@ -80,7 +80,20 @@ class BlockTridiagonalSolver {
   void substitute(std::span<const Vec2> b, std::span<Vec2> x, std::span<const Vec2> b2,
                   std::span<Vec2> x2);
 
+  /// factor() with the forward sweeps (and, for a cyclic system, the closure's back sweep) of
+  /// the substitution for b, and for b2 unless it is empty, in the same passes over the blocks;
+  /// finish() then completes the solve. The same arithmetic as factor() followed by
+  /// substitute(b, x) or substitute(b, x, b2, x2), bit for bit, with one pass over the factors
+  /// fewer in each direction. Leaves the factors for substitute() as factor() does.
+  SolveStatus factor_forward(std::span<const Vec2> b, std::span<const Vec2> b2);
+  /// The rest of the solve begun by the last successful factor_forward(): x (and x2 when that
+  /// call had a second right-hand side; x2 is ignored otherwise).
+  void finish(std::span<Vec2> x, std::span<Vec2> x2);
+
  private:
+  template <bool kTwo>
+  SolveStatus factor_forward(const Vec2* b, const Vec2* b2);
+
   std::size_t n_;
   bool cyclic_;
   // the factors: S_i⁻¹ and C'_i = S_i⁻¹ U_i; for a cyclic system Q = T⁻¹ W, (I + Zᵀ Q)⁻¹ and
@@ -88,6 +101,7 @@ class BlockTridiagonalSolver {
   std::vector<Mat2> s_inv_, c_prime_, w_;
   std::vector<Vec2> y_, y2_;
   Mat2 cap_inv_, h_;
+  bool two_ = false;  // the last factor_forward() had a second right-hand side
 };
 
 }  // namespace catena::dynamics

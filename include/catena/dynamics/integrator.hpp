@@ -124,7 +124,10 @@ class Integrator {
 
  private:
   // Fills the solver's rhs with −R(u) (and its blocks with J(u) when `jacobian`); returns |R|².
-  double assemble(const Model& model, const State& s, bool jacobian);
+  // `report_only`: only what a step reports of its iterate (the works, the wheels' torques and
+  // forces, the deepest penetration), by the same arithmetic; the rhs is left unusable and 0
+  // returned (the assembly at an iterate accepted on the error estimate).
+  double assemble(const Model& model, const State& s, bool jacobian, bool report_only = false);
 
   // The Newton matrix's factorisation and substitutions: block tridiagonal without hinge
   // friction; with it, the exact block-pentadiagonal matrix (the tridiagonal arrays plus the
@@ -164,10 +167,16 @@ class Integrator {
   // per extra: its row ∂R_a/∂u (the column's transpose but for seat friction)
   std::vector<std::vector<Vec2>> brow_;
   std::vector<std::vector<Vec2>> wsol_;  // per extra: A⁻¹ times that column
-  std::vector<double> schur_;            // the extras' Schur complement
-  std::vector<double> slide_force_;      // per wheel: the chain's force along the slide
-  std::vector<double> wheel_force_;      // per wheel: |the chain's force| on a take-up's wheel
-  std::vector<double> torque_;           // per wheel: the θ-point contact torque (last assembly)
+  // the solver's forward sweep of the residual (and bcol_[0]) was done by the last factor() and
+  // the next substitution of them only finishes it
+  bool forward_pending_ = false;
+  // per extra: the rows of bcol_ and brow_ the last Jacobian assembly set, ascending (the others
+  // are zero)
+  std::vector<std::vector<std::size_t>> border_rows_;
+  std::vector<double> schur_;        // the extras' Schur complement
+  std::vector<double> slide_force_;  // per wheel: the chain's force along the slide
+  std::vector<double> wheel_force_;  // per wheel: |the chain's force| on a take-up's wheel
+  std::vector<double> torque_;       // per wheel: the θ-point contact torque (last assembly)
   // The seat contacts' step constants (docs/models/dynamics.md, "Solver"): each ISO wheel's tooth
   // geometry (seat_geometry, set at the start of a step), and the directions (cos σ, sin σ) of its
   // seats σ = ψ_θ + k τ at the θ-point angle ψ_θ they were taken at — a driver's ψ_θ is the same

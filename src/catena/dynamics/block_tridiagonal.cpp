@@ -141,3 +141,107 @@ void BlockTridiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec2>
 }
 
 }  // namespace catena::dynamics
+
+namespace catena::dynamics {
+
+// factor() and substitute() interleaved: each row's forward substitution y_i = S_i⁻¹ (b_i − L_i
+// y_{i−1}) as soon as S_i⁻¹ is known, and the back sweeps of y and of the closure's columns Q in
+// one pass (the statements, and so the roundings, of the two functions).
+template <bool kTwo>
+SolveStatus BlockTridiagonalSolver::factor_forward(const Vec2* b, const Vec2* b2) {
+  const std::size_t n = n_;
+  const std::size_t last = n - 1;
+  const Mat2* lo = lower.data();
+  const Mat2* di = diag.data();
+  const Mat2* up = upper.data();
+  Mat2* s_inv = s_inv_.data();
+  Mat2* c_prime = c_prime_.data();
+  Mat2* w = w_.data();
+  Vec2* y = y_.data();
+  Vec2* y2 = y2_.data();
+  two_ = kTwo;
+  if (!cyclic_) {
+    if (!invert(di[0], s_inv[0])) return SolveStatus::kSingularPivot;
+    if (n > 1) c_prime[0] = s_inv[0] * up[0];
+    y[0] = s_inv[0] * b[0];
+    if constexpr (kTwo) y2[0] = s_inv[0] * b2[0];
+    for (std::size_t i = 1; i < n; ++i) {
+      if (!invert(di[i] - lo[i] * c_prime[i - 1], s_inv[i])) return SolveStatus::kSingularPivot;
+      if (i < last) c_prime[i] = s_inv[i] * up[i];
+      y[i] = s_inv[i] * (b[i] - lo[i] * y[i - 1]);
+      if constexpr (kTwo) y2[i] = s_inv[i] * (b2[i] - lo[i] * y2[i - 1]);
+    }
+    for (std::size_t k = n - 1; k-- > 0;) {
+      y[k] = y[k] - c_prime[k] * y[k + 1];
+      if constexpr (kTwo) y2[k] = y2[k] - c_prime[k] * y2[k + 1];
+    }
+    return SolveStatus::kSolved;
+  }
+  Mat2 d0_inv;
+  if (!invert(di[0], d0_inv)) return SolveStatus::kSingularPivot;
+  const Mat2 m = d0_inv * lo[0];
+  h_ = {-m.a, -m.b, -m.c, -m.d};
+  if (!invert(di[0] + di[0], s_inv[0])) return SolveStatus::kSingularPivot;
+  c_prime[0] = s_inv[0] * up[0];
+  w[0] = s_inv[0] * Mat2{-di[0].a, -di[0].b, -di[0].c, -di[0].d};
+  y[0] = s_inv[0] * b[0];
+  if constexpr (kTwo) y2[0] = s_inv[0] * b2[0];
+  for (std::size_t i = 1; i < last; ++i) {
+    if (!invert(di[i] - lo[i] * c_prime[i - 1], s_inv[i])) return SolveStatus::kSingularPivot;
+    c_prime[i] = s_inv[i] * up[i];
+    w[i] = s_inv[i] * (Mat2{} - lo[i] * w[i - 1]);
+    y[i] = s_inv[i] * (b[i] - lo[i] * y[i - 1]);
+    if constexpr (kTwo) y2[i] = s_inv[i] * (b2[i] - lo[i] * y2[i - 1]);
+  }
+  const Mat2 t_last = di[last] + up[last] * d0_inv * lo[0];
+  if (!invert(t_last - lo[last] * c_prime[last - 1], s_inv[last])) {
+    return SolveStatus::kSingularPivot;
+  }
+  w[last] = s_inv[last] * (up[last] - lo[last] * w[last - 1]);
+  y[last] = s_inv[last] * (b[last] - lo[last] * y[last - 1]);
+  if constexpr (kTwo) y2[last] = s_inv[last] * (b2[last] - lo[last] * y2[last - 1]);
+  for (std::size_t k = n - 1; k-- > 0;) {
+    const Mat2 c = c_prime[k];
+    w[k] = w[k] - c * w[k + 1];
+    y[k] = y[k] - c * y[k + 1];
+    if constexpr (kTwo) y2[k] = y2[k] - c * y2[k + 1];
+  }
+  const Mat2 capacitance = Mat2{1.0, 0.0, 0.0, 1.0} + w[0] + h_ * w[last];
+  if (!invert(capacitance, cap_inv_)) return SolveStatus::kSingularPivot;
+  return SolveStatus::kSolved;
+}
+
+SolveStatus BlockTridiagonalSolver::factor_forward(std::span<const Vec2> b,
+                                                   std::span<const Vec2> b2) {
+  if (b.size() != n_ || (!b2.empty() && b2.size() != n_)) {
+    throw std::invalid_argument("span of the wrong size");
+  }
+  return b2.empty() ? factor_forward<false>(b.data(), nullptr)
+                    : factor_forward<true>(b.data(), b2.data());
+}
+
+void BlockTridiagonalSolver::finish(std::span<Vec2> x, std::span<Vec2> x2) {
+  if (x.size() != n_ || (two_ && x2.size() != n_)) {
+    throw std::invalid_argument("span of the wrong size");
+  }
+  const std::size_t n = n_;
+  if (!cyclic_) {
+    for (std::size_t i = 0; i < n; ++i) x[i] = y_[i];
+    if (two_) {
+      for (std::size_t i = 0; i < n; ++i) x2[i] = y2_[i];
+    }
+    return;
+  }
+  const Vec2 z = cap_inv_ * (y_[0] + h_ * y_[n - 1]);
+  if (!two_) {
+    for (std::size_t i = 0; i < n; ++i) x[i] = y_[i] - w_[i] * z;
+    return;
+  }
+  const Vec2 z2 = cap_inv_ * (y2_[0] + h_ * y2_[n - 1]);
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = y_[i] - w_[i] * z;
+    x2[i] = y2_[i] - w_[i] * z2;
+  }
+}
+
+}  // namespace catena::dynamics

@@ -95,6 +95,8 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
   bcol_.assign(m, std::vector<Vec2>(model.nodes()));
   brow_.assign(m, std::vector<Vec2>(model.nodes()));
   wsol_.assign(m, std::vector<Vec2>(model.nodes()));
+  border_rows_.assign(m, {});
+  for (std::vector<std::size_t>& rows : border_rows_) rows.reserve(model.nodes());
   // A quarter pitch: at a chain speed v a node crosses it in p/(4 v h) steps (over a hundred at
   // 1 m/s and h = 1e-4 s for 12B), while a rail's list grows by half a pitch's width of nodes.
   guide_hint_ = GuideHint(0.25 * model.pitch);
@@ -170,7 +172,8 @@ bool Integrator::update_candidates(const Model& model, double moved) {
   return true;
 }
 
-double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
+double Integrator::assemble(const Model& model, const State& s, bool jacobian, bool report_only) {
+  forward_pending_ = false;  // the residual changes: a forward sweep of the old one is stale
   const std::size_t n = model.nodes();
   const double h = options_.step;
   const double th = options_.theta;
@@ -194,16 +197,22 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   Mat2* diag = solver_.diag.data();
   const double drag = model.drag, grav_x = model.gravity_x, grav_y = model.gravity_y;
   double drag_work = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
+  const bool open_chain = model.links() < n;
+  // the drag's work, in a loop of its own (α = 0, the usual case: the sum stays +0 without it)
+  for (std::size_t i = 0; drag != 0.0 && i < n; ++i) {
     const double m = mass[i];
     const double dx = ux[i] - sx[i], dy = uy[i] - sy[i];
-    // (α = 0, the usual case: the term is +0 and the sum stays +0 without the division)
-    if (drag != 0.0) drag_work -= drag * m * (dx * dx + dy * dy) / h;
+    drag_work -= drag * m * (dx * dx + dy * dy) / h;
+  }
+  for (std::size_t i = 0; !report_only && i < n; ++i) {
+    const double m = mass[i];
+    const double dx = ux[i] - sx[i], dy = uy[i] - sy[i];
     const double inertia = m / (h * th);
     if (jacobian) {
       diag[i] = {inertia + drag * m, 0.0, 0.0, inertia + drag * m};
-      solver_.lower[i] = {};
-      solver_.upper[i] = {};
+      // a closed loop's links set every lower and upper block below (an open chain's leave the
+      // corners lower[0] and upper[n − 1])
+      if (open_chain) solver_.lower[i] = solver_.upper[i] = {};
       if (pentadiagonal_) far_lower_[i] = far_upper_[i] = {};
     }
     rhs[i] = {-(inertia * (dx - h * svx[i]) + drag * m * dx - h * m * grav_x),
@@ -211,6 +220,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   }
   drag_work_ = drag_work;
   for (const NodeLoad& f : model.loads) {  // constant: no Jacobian term
+    if (report_only) break;
     solver_.rhs[f.node].x += h * f.fx;
     solver_.rhs[f.node].y += h * f.fy;
   }
@@ -220,6 +230,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   Mat2* upper = solver_.upper.data();
   Mat2* lower = solver_.lower.data();
   double damper_work = 0.0;
+  const bool hinges = !hinge_links_.empty();  // (read once: the stores below may alias it)
   for (std::size_t j = 0; j < links; ++j) {
     const std::size_t a = j, b = j + 1 == n ? 0 : j + 1;
     const double d0x = sx[b] - sx[a], d0y = sy[b] - sy[a];
@@ -230,24 +241,25 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     len1[j] = l1;
     const double lt = (1.0 - th) * l0 + th * l1;
     const double mx = (1.0 - th) * d0x + th * d1x, my = (1.0 - th) * d0y + th * d1y;
+    // the damper's share of φ d_θ does the work −c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ on the two
+    // nodes (d_θ·(d₁ − d₀) = l̄ (l₁ − l₀) + (θ − ½)|d₁ − d₀|²: −c (l₁ − l₀)²/h at θ = ½)
+    if (c > 0.0) {
+      damper_work -= c * (l1 - l0) / h * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
+    }
+    // report only: the force is not needed (but for the hinges' couples, which take it)
+    if (report_only && !hinges) continue;
     // φ = [k (l_θ − p) + c (l₁ − l₀)/h] / l_θ; the force on node a is φ d_θ, on node b −φ d_θ.
     // At θ = ½ the work over the step is exactly the change of ½ k (l − p)² plus the damper's
     // loss c (l₁ − l₀)²/h (Simo & Tarnow 1992).
     const double p = model.rest_length(j);  // p ± a (round-link chain), else p
     const double phi = (k * (lt - p) + c * (l1 - l0) / h) / lt;
     const double fx = h * phi * mx, fy = h * phi * my;
-    // the damper's share of φ d_θ does the work −c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ on the two
-    // nodes (d_θ·(d₁ − d₀) = l̄ (l₁ − l₀) + (θ − ½)|d₁ − d₀|²: −c (l₁ − l₀)²/h at θ = ½)
-    if (c > 0.0) {
-      damper_work -= c * (l1 - l0) / h * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
-    }
     rhs[a].x += fx;
     rhs[a].y += fy;
     rhs[b].x -= fx;
     rhs[b].y -= fy;
     // the link's share of the couples of the hinges at its two ends (the hinge loop below)
-    if (!hinge_links_.empty())
-      hinge_link(d0x, d0y, d1x, d1y, l0, l1, p, k, th, hinge_links_[j], jacobian);
+    if (hinges) hinge_link(d0x, d0y, d1x, d1y, l0, l1, p, k, th, hinge_links_[j], jacobian);
     if (!jacobian) continue;
     // A = ∂(φ d_θ)/∂d₁ = θ φ I + d_θ ⊗ (∂φ/∂l₁) d₁/l₁,  ∂φ/∂l₁ = [(k θ + c/h) − θ φ] / l_θ.
     const double dphi = ((k * th + c / h) - th * phi) / lt;
@@ -353,14 +365,13 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
     double wdiag = driven ? wheel.inertia / (h * th) : 0.0;
     double sdiag = 0.0, cross_ws = 0.0, cross_sw = 0.0;  // ∂R_s/∂s, ∂R_ψ/∂s, ∂R_s/∂ψ
     double pull_x = 0.0, pull_y = 0.0;  // Σ (f n − F_t): the chain's force on the wheel
-    if (driven && jacobian) {
-      std::fill(bcol_[ia].begin(), bcol_[ia].end(), Vec2{});
-      std::fill(brow_[ia].begin(), brow_[ia].end(), Vec2{});
-    }
-    if (slides && jacobian) {
-      std::fill(bcol_[is].begin(), bcol_[is].end(), Vec2{});
-      std::fill(brow_[is].begin(), brow_[is].end(), Vec2{});
-    }
+    // the border's column and row: zero but in the rows the last Jacobian assembly set
+    auto clear_border = [&](std::size_t x) {
+      for (const std::size_t i : border_rows_[x]) bcol_[x][i] = brow_[x][i] = Vec2{};
+      border_rows_[x].clear();
+    };
+    if (driven && jacobian) clear_border(ia);
+    if (slides && jacobian) clear_border(is);
     // seat_contact's own first test, inline: most rollers are clear of a wheel, and the call
     // (its result zeroed, the velocity formed) cost more than the test.
     const double reach = contact_reach(wheel);
@@ -392,10 +403,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
         vx -= slide_rate * ex;
         vy -= slide_rate * ey;
       }
-      SeatContact sc;
-      if (wheel.pocket) {
-        sc = pocket_contact(wheel, qx, qy, vx, vy, psi, omega, held);
-      } else {
+      // (assigned once: a default-constructed contact overwritten cost its zeroing per roller)
+      const SeatContact sc = [&] {
+        if (wheel.pocket) return pocket_contact(wheel, qx, qy, vx, vy, psi, omega, held);
         // seat_contact, its seat's direction from the step's table when there
         const double kseat = nearest_seat(rx, ry, psi, geometry.tau);
         const double teeth = static_cast<double>(directions.size());
@@ -408,11 +418,11 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
             const double sigma = psi + kseat * geometry.tau;
             d = {kseat, std::cos(sigma), std::sin(sigma)};
           }
-          sc = seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn);
-        } else {  // a non-finite iterate: as seat_contact (no table slot)
-          sc = seat_contact(wheel, geometry, qx, qy, vx, vy, psi, omega);
+          return seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn);
         }
-      }
+        // a non-finite iterate: as seat_contact (no table slot)
+        return seat_contact(wheel, geometry, qx, qy, vx, vy, psi, omega);
+      }();
       if (!sc.active) continue;
       max_penetration_ = std::max(max_penetration_, sc.depth);
       contact_damping_work_ += h * sc.damping_power;
@@ -489,6 +499,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
       const double hf = h * th * sc.force;
       const double spin =  // h θ c n·perp(v)
           wheel.pocket ? 0.0 : h * th * sc.damping * (sc.ny * vx - sc.nx * vy);
+      border_rows_[ia].push_back(i);
       bcol_[ia][i] = {-dt.x - hf * sc.ny - spin * sc.nx, -dt.y + hf * sc.nx - spin * sc.ny};
       brow_[ia][i] = {-dtt.x - hf * sc.ny, -dtt.y + hf * sc.nx};
       wdiag +=
@@ -513,6 +524,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
                 dc.c - (ht * sf.dq[2] + sf.dv[2]), dc.d - (ht * sf.dq[3] + sf.dv[3])};
       }
       const Vec2 de{dall.a * ex + dall.b * ey, dall.c * ex + dall.d * ey};
+      border_rows_[is].push_back(i);
       bcol_[is][i] = {-de.x, -de.y};
       brow_[is][i] = {-(dall.a * ex + dall.c * ey), -(dall.b * ex + dall.d * ey)};
       sdiag += ex * de.x + ey * de.y;
@@ -558,6 +570,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
   // Each guide is tried against the nodes the hint lists near it, in node order (the pairs and
   // their order are those of the loop over every node: bit-identical; "Guides: O(N) a step").
   refresh_guide_hint(model);
+  // report only: the guides' works are taken after the step, and the residual is not wanted
+  if (report_only) return 0.0;
   for (std::size_t g = 0; g < model.guides.size(); ++g) {
     const Guide& guide = model.guides[g];
     const GuideBounds bounds = options_.guide_hint ? guide_hint_.bounds()[g] : guide_bounds(guide);
@@ -599,7 +613,16 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian) {
 }
 
 SolveStatus Integrator::factor() {
-  if (!pentadiagonal_) return solver_.factor();
+  if (!pentadiagonal_) {
+    // A fresh iteration's first substitution is always of the residual (and, with a border, of
+    // the first extra's column, beside it): its forward sweep rides along with the factorisation
+    // and the substitution below only finishes it (the same arithmetic, one pass fewer).
+    const std::span<const Vec2> second =
+        extra_.empty() ? std::span<const Vec2>() : std::span<const Vec2>(bcol_[0]);
+    const SolveStatus status = solver_.factor_forward(solver_.rhs, second);
+    forward_pending_ = status == SolveStatus::kSolved;
+    return status;
+  }
   // the tridiagonal arrays' cyclic convention (lower[0] is block (0, n − 1), upper[n − 1] block
   // (n − 1, 0)) is the pentadiagonal bands' (column i + o modulo n)
   penta_.band[0] = far_lower_;
@@ -611,8 +634,12 @@ SolveStatus Integrator::factor() {
 }
 
 void Integrator::substitute(std::span<const Vec2> b, std::span<Vec2> x) {
+  const bool pending = forward_pending_;
+  forward_pending_ = false;
   if (pentadiagonal_) {
     penta_.substitute(b, x);
+  } else if (pending && extra_.empty() && b.data() == solver_.rhs.data()) {
+    solver_.finish(x, {});
   } else {
     solver_.substitute(b, x);
   }
@@ -620,8 +647,13 @@ void Integrator::substitute(std::span<const Vec2> b, std::span<Vec2> x) {
 
 void Integrator::substitute(std::span<const Vec2> b, std::span<Vec2> x, std::span<const Vec2> b2,
                             std::span<Vec2> x2) {
+  const bool pending = forward_pending_;
+  forward_pending_ = false;
   if (pentadiagonal_) {
     penta_.substitute(b, x, b2, x2);
+  } else if (pending && !extra_.empty() && b.data() == solver_.rhs.data() &&
+             b2.data() == bcol_[0].data()) {
+    solver_.finish(x, x2);
   } else {
     solver_.substitute(b, x, b2, x2);
   }
@@ -773,14 +805,17 @@ StepReport Integrator::step(const Model& model, State& s) {
         substitute(solver_.rhs, delta_, bcol_[0], wsol_[0]);
         for (std::size_t a = 1; a < nd; ++a) substitute(bcol_[a], wsol_[a]);
         for (std::size_t a = 0; a < nd; ++a) {
-          const std::vector<Vec2>& ba = brow_[a];  // the unknown's row
+          // the unknown's row, over the rows where it is not zero (in the same order: the same
+          // sums, the zero terms left out)
+          const std::vector<Vec2>& ba = brow_[a];
+          const std::vector<std::size_t>& rows = border_rows_[a];
           double g = xres_[a];
-          for (std::size_t i = 0; i < n; ++i) g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
+          for (const std::size_t i : rows) g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
           dx_[a] = g;
           for (std::size_t b = 0; b < nd; ++b) {
             const std::vector<Vec2>& wb = wsol_[b];
             double sab = xjac_[a * nd + b];
-            for (std::size_t i = 0; i < n; ++i) sab -= ba[i].x * wb[i].x + ba[i].y * wb[i].y;
+            for (const std::size_t i : rows) sab -= ba[i].x * wb[i].x + ba[i].y * wb[i].y;
             schur_[a * nd + b] = sab;
           }
         }
@@ -959,7 +994,7 @@ StepReport Integrator::step(const Model& model, State& s) {
   }
   // Converged on the estimate, the last assembly is one correction (≤ √tolerance·p or so) off the
   // accepted iterate: the step's works and torques are taken there again (residual only).
-  if (report.converged && estimated && !checked) assemble(model, s, false);
+  if (report.converged && estimated && !checked) assemble(model, s, false, true);
   report.max_penetration = max_penetration_;
   if (!report.converged) return report;
   // The guides' friction work over the step: the friction force the step applied (at the θ point,
