@@ -166,6 +166,22 @@ lead_in_angle = "20 deg"
   for (const char* range : {"(0, 90] deg", "start, end or both", "no lead_in_radius on an arc"})
     EXPECT_NE(r.err.find(range), std::string::npos) << range << "\n" << r.err;
 
+  // an unreadable lead-in value does not hide the rail's own range problems: both at once
+  const fs::path hidden = dir / "unreadable_lead_in.toml";
+  std::ofstream(hidden) << head << R"([[dynamics.guide]]
+kind = "straight"
+x0 = "30 mm"
+y0 = "30 mm"
+x1 = "150 mm"
+y1 = "30 mm"
+friction = 2
+lead_in_radius = "abc"
+)";
+  const CliRun h = run("dynamics " + hidden.string());
+  EXPECT_EQ(h.status, 2);
+  for (const char* field : {"dynamics.guide[0].lead_in_radius", "dynamics.guide[0].friction"})
+    EXPECT_NE(h.err.find(field), std::string::npos) << field << "\n" << h.err;
+
   const fs::path good = dir / "lead_ins.toml";
   std::ofstream(good) << head << R"([[dynamics.guide]]
 kind = "straight"

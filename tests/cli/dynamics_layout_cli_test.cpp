@@ -807,6 +807,21 @@ TEST(DynamicsLayoutCli, RefusedSlackNamesALimitThatStartsWithTheGuides) {
   EXPECT_NE(more.err.find("the sagging span would run into guide[0]"), std::string::npos)
       << more.err;
   EXPECT_EQ(named_count(more.err), count) << more.err;
+
+  // a sag that runs into a lead-in arc names it by its rail, not by a guide number the file does
+  // not have (the arcs are laid after the guides as given)
+  const std::string lead_in =
+      "\n[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"224.408 mm\"\ny0 = \"-271.683 mm\"\n"
+      "x1 = \"250.408 mm\"\ny1 = \"-241.683 mm\"\nlead_in_radius = \"150 mm\"\n"
+      "lead_in_angle = \"90 deg\"\nlead_in_end = \"end\"\n";
+  std::string t = text;
+  t.replace(t.find(key), key.size(), "duration = \"1 ms\"\nlinks = 61\ngravity = true");
+  const CliRun arc = run("dynamics " + write("limit61arc.toml", t + lead_in));
+  ASSERT_EQ(arc.status, 2) << arc.out;
+  EXPECT_NE(arc.err.find("the sagging span would run into the lead-in at the end of guide[0]"),
+            std::string::npos)
+      << arc.err;
+  EXPECT_EQ(arc.err.find("guide[1]"), std::string::npos) << arc.err;
 }
 
 // `links` omitted: the table names the count the command took and the slack it implies as the
@@ -883,6 +898,14 @@ TEST(DynamicsLayoutCli, TwoSaggingWallsOfANotchAreCheckedAgainstEachOther) {
       << crossing.err;
   EXPECT_NE(crossing.err.find("sprocket[3] -> sprocket[4]"), std::string::npos) << crossing.err;
   EXPECT_EQ(named_count(crossing.err), 363) << crossing.err;
+  EXPECT_EQ(crossing.err.find("no start was found at exactly"), std::string::npos) << crossing.err;
+  // 344 is below the count named but does not start (the slack's solve finds no closing layout
+  // for it): the refusal says so rather than leave the count named unexplained
+  const CliRun gap = run("dynamics " + notch(344));
+  ASSERT_EQ(gap.status, 2) << gap.out;
+  EXPECT_EQ(named_count(gap.err), 363) << gap.err;
+  EXPECT_NE(gap.err.find("; no start was found at exactly 344 links"), std::string::npos)
+      << gap.err;
   for (const int links : {345, 363}) {
     const CliRun r = run("dynamics " + notch(links));
     ASSERT_EQ(r.status, 0) << links << ": " << r.err;

@@ -252,6 +252,21 @@ TEST(BlockTridiagonal, FusedFactorAndForwardSweepEqualsFactorThenSubstitute) {
   std::vector<Vec2> wrong(4);
   EXPECT_THROW(z.factor_forward(wrong, {}), std::invalid_argument);
   EXPECT_THROW(z.factor_forward(z.rhs, wrong), std::invalid_argument);
+  std::vector<Vec2> x5(5);
+  EXPECT_THROW(z.finish(x5, {}), std::logic_error);  // the failed call left nothing to finish
+  // a solve begun by factor_forward() is finished only while its workspace is its own
+  std::mt19937 rng_g(5);
+  BlockTridiagonalSolver g(6, true);
+  fill_spd(g, rng_g, 1.0);
+  std::vector<Vec2> x6(6), other(6);
+  EXPECT_THROW(g.finish(x6, {}), std::logic_error);  // none begun
+  ASSERT_EQ(g.factor_forward(g.rhs, {}), SolveStatus::kSolved);
+  g.finish(x6, {});
+  g.substitute(g.rhs, other);
+  EXPECT_THROW(g.finish(x6, {}), std::logic_error);  // substitute() overwrote the workspace
+  ASSERT_EQ(g.factor_forward(g.rhs, {}), SolveStatus::kSolved);
+  ASSERT_EQ(g.factor(), SolveStatus::kSolved);
+  EXPECT_THROW(g.finish(x6, {}), std::logic_error);  // so did factor()
 }
 
 // The corner blocks matter: a cyclic solve differs from the open solve of the same blocks.

@@ -183,7 +183,10 @@ TEST(HingeFriction, CoupleWithoutJacobianIsTheFullOnesBitForBitAndLeavesTheJacob
 // The integrator's hinge loop takes the couple's Jacobian block by block (hinge_couple_blocks),
 // adding −h × each block into its band: the nine blocks, each once, in row-major order, each the
 // stored Jacobian's bit for bit (both links' terms from hinge_link, as the integrator has them);
-// none without the Jacobian, the other fields the same either way.
+// none without the Jacobian, the other fields the same either way. hinge_couple fills its stored
+// Jacobian through hinge_couple_blocks, so this checks the blocks' indices and order, not the
+// formula: the formula is checked against finite differences in
+// JacobianIsTheForcesDerivativeByTheEndOfStepPositions (a block's sign flipped fails it).
 TEST(HingeFriction, CoupleBlocksAreTheStoredJacobiansNineBlocksInOrderBitForBit) {
   std::mt19937 rng(13);
   const HingeFriction hinge{.arm = 2.86e-4, .rate_band = 5.0};

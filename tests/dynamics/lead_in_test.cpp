@@ -207,8 +207,9 @@ TEST(DynamicsLeadIn, ValuesOutOfRangeAreNamed) {
 // fails at about 0.079 s, whatever the rise (its peak counted infinite; so it was in the
 // conveyor of validation (6b) before its hand-laid lead-ins). With a 50 mm, 30° lead-in at each
 // end every step of the 0.25 s converges and the entering rollers' peak rail force, after the
-// start, stays finite (44-62 N here): below half the bare ends' in every case.
-TEST(DynamicsLeadIn, EnteringRollersPeakRailForceFallsOnAConveyor) {
+// start, stays finite (44-62 N here). There is no finite bare peak to compare with: the test
+// asserts that the bare ends' run fails and the lead-ins' runs converge with a finite peak.
+TEST(DynamicsLeadIn, EnteringRollersRunOnLeadInsWhereTheBareEndsFail) {
   constexpr int kTeeth = 16, kSpan = 60, kGap = 3;
   constexpr double kPitch = 0.01905, kRollerD = 0.01207, kOmega = 5.0, kStiffness = 5e7;
   const auto n = static_cast<std::size_t>(kTeeth + 2 * kSpan);
@@ -267,11 +268,10 @@ TEST(DynamicsLeadIn, EnteringRollersPeakRailForceFallsOnAConveyor) {
     for (const Guide& g : rails)
       for (const Guide& arc : lead_in_arcs(g, {0.05, kPi / 6, true, true})) led.push_back(arc);
     const double smooth = peak_entry_force(led);
-    EXPECT_GT(bare, 0.0) << rise;                // infinite: the bare ends' run fails (above)
+    EXPECT_FALSE(std::isfinite(bare)) << rise;   // the bare ends' run fails (above)
     EXPECT_TRUE(std::isfinite(smooth)) << rise;  // every step converged with the lead-ins
     EXPECT_GT(smooth, 0.0) << rise;
-    EXPECT_LT(smooth, 0.5 * bare) << "rise " << rise << " m: bare " << bare << " N, with lead-ins "
-                                  << smooth << " N";
+    EXPECT_LT(smooth, 100.0) << "rise " << rise << " m: with lead-ins " << smooth << " N";
     std::printf(
         "rails %.2g mm high: entering rollers' peak rail force bare %.4g N, with lead-ins "
         "%.4g N\n",

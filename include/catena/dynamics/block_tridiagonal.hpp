@@ -87,7 +87,9 @@ class BlockTridiagonalSolver {
   /// fewer in each direction. Leaves the factors for substitute() as factor() does.
   SolveStatus factor_forward(std::span<const Vec2> b, std::span<const Vec2> b2);
   /// The rest of the solve begun by the last successful factor_forward(): x (and x2 when that
-  /// call had a second right-hand side; x2 is ignored otherwise).
+  /// call had a second right-hand side; x2 is ignored otherwise). Throws std::logic_error when
+  /// there is no such solve to finish: no factor_forward() yet, the last one failed, or a
+  /// factor() or substitute() has run since (they overwrite the workspace finish() reads).
   void finish(std::span<Vec2> x, std::span<Vec2> x2);
 
  private:
@@ -101,7 +103,8 @@ class BlockTridiagonalSolver {
   std::vector<Mat2> s_inv_, c_prime_, w_;
   std::vector<Vec2> y_, y2_;
   Mat2 cap_inv_, h_;
-  bool two_ = false;  // the last factor_forward() had a second right-hand side
+  bool two_ = false;      // the last factor_forward() had a second right-hand side
+  bool pending_ = false;  // a successful factor_forward()'s solve is left for finish()
 };
 
 }  // namespace catena::dynamics

@@ -307,6 +307,9 @@ struct Setup {
   double speed = NAN, inertia = NAN, load = 0.0;
   double gravity = 0.0;       // [m/s²] downward (−y)
   std::vector<Guide> guides;  // [[dynamics.guide]]
+  // each of `guides` as a message names it: guide[i] as the file numbers it, a lead-in arc (laid
+  // after the guides as given) as the lead-in at its rail's start or end
+  std::vector<std::string> guide_names;
   bool work_balance = false;  // summary.work_balance in the output
   // the free layout (docs/models/dynamics.md, "Command"): every sprocket with its centre; empty
   // `wheels` for the two equal wheels on a line
@@ -483,8 +486,13 @@ bool slack_starts(const Setup& s, const std::vector<std::size_t>& pieces, int li
 // an interval (the slack solve finds no exact-pitch walk for some counts among others that start:
 // 344 and 360 on a notched serpentine path of 272 pitches, where 343 and 345-355 start). After
 // kScanned counts without a start the rest is bisected, as if they were (bounded work).
-int longest_slack_links(const Setup& s, const std::vector<std::size_t>& pieces, double most,
-                        const std::vector<double>& tip, const std::vector<Guide>& guides) {
+struct LongestSlack {
+  int links = 0;         // 0: none starts
+  bool scanned = false;  // found by the downward scan: no count above it starts
+};
+LongestSlack longest_slack_links(const Setup& s, const std::vector<std::size_t>& pieces,
+                                 double most, const std::vector<double>& tip,
+                                 const std::vector<Guide>& guides) {
   constexpr int kScanned = 100;
   LoopPlacement placement;
   BeltPath laid;
@@ -497,20 +505,49 @@ int longest_slack_links(const Setup& s, const std::vector<std::size_t>& pieces, 
   if (lo * s.pitch > s.path.length) --lo;  // lo: the last count not beyond the path
   int hi = std::min(10000, static_cast<int>(std::floor((s.path.length + most) / s.pitch)) + 1);
   for (int n = hi; n > lo; --n) {
-    if (starts(n)) return n;
+    if (starts(n)) return {n, true};
     if (hi - n + 1 >= kScanned) {
-      // the rest by bisection: lo + 1 .. n - 1
+      // the rest by bisection: lo + 1 .. n - 1 (a count that starts, not always the most)
       hi = n;
-      if (!starts(lo + 1)) return 0;
+      if (!starts(lo + 1)) return {};
       ++lo;
       while (hi - lo > 1) {  // lo starts, hi does not
         const int mid = lo + (hi - lo) / 2;
         (starts(mid) ? lo : hi) = mid;
       }
-      return lo;
+      return {lo, false};
     }
   }
-  return 0;
+  return {};
+}
+
+// The end of a slack refusal: the most links that start with the slack in `pieces`, and, when
+// the count given (`given`) is not above it, that the slack's solve found no start at exactly
+// that count (the counts that start are not an interval, above).
+std::string links_that_start_text(const Setup& s, const std::vector<std::size_t>& pieces,
+                                  double most, const std::vector<Guide>& guides, int given) {
+  const LongestSlack longest = longest_slack_links(s, pieces, most, s.tip, guides);
+  if (longest.links <= 0) return "no count starts so";
+  const std::string n = std::to_string(longest.links);
+  std::string text = longest.scanned ? "at most " + n + " links start so"
+                                     : n + " links start so (found by bisection after " +
+                                           "the 100 counts below the limit failed; a larger "
+                                           "count may start)";
+  if (given > 0 && given <= longest.links)
+    text += "; no start was found at exactly " + std::to_string(given) +
+            " links (the slack's solve finds no closing layout for some counts among others "
+            "that start)";
+  return text;
+}
+
+// A guide named in a message (`sag_obstacle` names s.guides[k] as guide[k]): as the file
+// numbers it, a lead-in arc as the lead-in of its rail.
+std::string guide_named(const Setup& s, const std::string& blocked) {
+  if (blocked.rfind("guide[", 0) != 0 || blocked.back() != ']') return blocked;
+  const std::string digits = blocked.substr(6, blocked.size() - 7);
+  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) return blocked;
+  const std::size_t k = std::stoul(digits);
+  return k < s.guide_names.size() ? s.guide_names[k] : blocked;
 }
 
 // The refusal of a count too long for its slack to sag (`dynamics.links`'s expected text after
@@ -521,7 +558,6 @@ std::string slack_refusal_text(const Setup& s, const Setup::SlackRefusal& r,
   auto shown = [](double x) { return format_g(x, 6); };
   auto mm = [](double x) { return format_g(x * 1e3, 6) + " mm"; };
   const double most = slack_limit(s, r.pieces, s.tip, guides);
-  const int longest = longest_slack_links(s, r.pieces, most, s.tip, guides);
   return r.why + "; or a chain longer than the path by at most about " + mm(most) + " (" +
          shown(most / s.path.length * 100.0) + " % of the path), the most its " +
          span_names(s.path, r.pieces) +
@@ -529,9 +565,9 @@ std::string slack_refusal_text(const Setup& s, const Setup::SlackRefusal& r,
          "teeth and the other spans" +
          (guides.empty() ? "" : " and the guides") + " (here " + mm(r.over) + ", " +
          shown(r.over / s.path.length * 100.0) + " %" +
-         (r.blocked.empty() ? "" : "; the sagging span would run into " + r.blocked) + "): " +
-         (longest > 0 ? "at most " + std::to_string(longest) + " links start so"
-                      : "no count starts so");
+         (r.blocked.empty() ? ""
+                            : "; the sagging span would run into " + guide_named(s, r.blocked)) +
+         "): " + links_that_start_text(s, r.pieces, most, guides, r.chosen);
 }
 
 // The free layout: every [[dynamics.sprocket]] with its centre (docs/models/dynamics.md,
@@ -1492,6 +1528,7 @@ Setup parse(const analysis::Inputs& in) {
   s.positions = positions;
   // the guides: kind and its geometry, all present; then the core's checks (named per field)
   std::vector<Guide> lead_arcs;
+  std::vector<std::string> lead_names;
   for (std::size_t i = 0; i < guides.size(); ++i) {
     const GuideInput& g = guides[i];
     const std::string base = "dynamics.guide[" + std::to_string(i) + "].";
@@ -1553,11 +1590,12 @@ Setup parse(const analysis::Inputs& in) {
     guide.friction_band = get("friction_band", 1e-3);
     bool readable = true;
     for (const auto& [key, at_line] : g.seen)
-      if (key != "kind" && key != "inside" && key != "lead_in_end" && !g.value.count(key))
-        readable = false;
+      if (key != "kind" && key != "inside" && key.rfind("lead_in_", 0) != 0 && !g.value.count(key))
+        readable = false;  // the rail's own values (an unreadable lead-in value is the lead-in's)
     // a lead-in (straight rails only; an arc's lead-in keys are refused above): its values'
     // checks, named per field, with the rail's
     std::vector<Guide> lead_ins;
+    bool lead_ins_at_start = false;
     if (straight && (g.seen.count("lead_in_angle") || g.seen.count("lead_in_end")) &&
         !g.seen.count("lead_in_radius")) {
       issues.push_back({field("lead_in_radius"), "(missing)",
@@ -1577,6 +1615,7 @@ Setup parse(const analysis::Inputs& in) {
         issues.push_back({field(issue.field), issue.value, issue.expected});
       }
       lead_ins = lead_in_arcs(guide, lead);
+      lead_ins_at_start = lead.at_start;
     }
     if (!readable || !(s.roller > 0.0) || std::isnan(guide.contact_stiffness) ||
         std::isnan(guide.contact_damping))
@@ -1594,11 +1633,19 @@ Setup parse(const analysis::Inputs& in) {
     }
     if (complete) {
       s.guides.push_back(guide);
+      s.guide_names.push_back("guide[" + std::to_string(i) + "]");
       lead_arcs.insert(lead_arcs.end(), lead_ins.begin(), lead_ins.end());
+      // lead_in_arcs lays the start's arc before the end's
+      for (std::size_t k = 0; k < lead_ins.size(); ++k) {
+        const bool start = k == 0 && lead_ins_at_start;
+        lead_names.push_back("the lead-in at the " + std::string(start ? "start" : "end") +
+                             " of guide[" + std::to_string(i) + "]");
+      }
     }
   }
   // the lead-in arcs after the guides as given (which keep their numbers)
   s.guides.insert(s.guides.end(), lead_arcs.begin(), lead_arcs.end());
+  s.guide_names.insert(s.guide_names.end(), lead_names.begin(), lead_names.end());
   // a start with slack: the sagging span must clear the guides too (docs/models/dynamics.md,
   // "A start with slack")
   if (s.slack > 0.0 && !s.guides.empty()) {
@@ -1608,17 +1655,15 @@ Setup parse(const analysis::Inputs& in) {
           sag_obstacle(s.laid, s.slack_pieces[i], s.circles, s.tip, s.guides, s.roller, s.pitch);
     if (!blocked.empty()) {
       const double most = slack_limit(s, s.slack_pieces, s.tip, s.guides);
-      const int longest = longest_slack_links(s, s.slack_pieces, most, s.tip, s.guides);
       issues.push_back(
           {at("links"), std::to_string(s.links),
            "a chain longer than the path by at most about " + format_g(most * 1e3, 6) +
                " mm, the most its " + span_names(s.path, s.slack_pieces) +
                " can sag by as circular arcs clear of every other wheel's teeth, the other "
                "spans and the guides (here " +
-               format_g(s.slack * 1e3, 6) + " mm; the sagging span would run into " + blocked +
-               "): " +
-               (longest > 0 ? "at most " + std::to_string(longest) + " links start so"
-                            : "no count starts so")});
+               format_g(s.slack * 1e3, 6) + " mm; the sagging span would run into " +
+               guide_named(s, blocked) +
+               "): " + links_that_start_text(s, s.slack_pieces, most, s.guides, s.links)});
     }
   }
   // a count refused in parse_layout as too long for its slack: its limit named again with the

@@ -46,6 +46,7 @@ SolveStatus BlockTridiagonalSolver::solve(std::span<Vec2> x) {
 }
 
 SolveStatus BlockTridiagonalSolver::factor() {
+  pending_ = false;  // the factors and the workspace are no longer factor_forward()'s
   const std::size_t n = n_;
   const std::size_t last = n - 1;
 
@@ -96,6 +97,7 @@ SolveStatus BlockTridiagonalSolver::factor() {
 }
 
 void BlockTridiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec2> x) {
+  pending_ = false;  // y_ is overwritten
   if (x.size() != n_ || b.size() != n_) throw std::invalid_argument("span of the wrong size");
   const std::size_t n = n_;
   y_[0] = s_inv_[0] * b[0];
@@ -111,6 +113,7 @@ void BlockTridiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec2>
 
 void BlockTridiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec2> x,
                                         std::span<const Vec2> b2, std::span<Vec2> x2) {
+  pending_ = false;  // y_ and y2_ are overwritten
   if (x.size() != n_ || b.size() != n_ || x2.size() != n_ || b2.size() != n_) {
     throw std::invalid_argument("span of the wrong size");
   }
@@ -216,11 +219,18 @@ SolveStatus BlockTridiagonalSolver::factor_forward(std::span<const Vec2> b,
   if (b.size() != n_ || (!b2.empty() && b2.size() != n_)) {
     throw std::invalid_argument("span of the wrong size");
   }
-  return b2.empty() ? factor_forward<false>(b.data(), nullptr)
-                    : factor_forward<true>(b.data(), b2.data());
+  pending_ = false;
+  const SolveStatus status = b2.empty() ? factor_forward<false>(b.data(), nullptr)
+                                        : factor_forward<true>(b.data(), b2.data());
+  pending_ = status == SolveStatus::kSolved;
+  return status;
 }
 
 void BlockTridiagonalSolver::finish(std::span<Vec2> x, std::span<Vec2> x2) {
+  if (!pending_) {
+    throw std::logic_error(
+        "finish() without a successful factor_forward() since the last factor() or substitute()");
+  }
   if (x.size() != n_ || (two_ && x2.size() != n_)) {
     throw std::invalid_argument("span of the wrong size");
   }
