@@ -19,19 +19,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kRoller = 0.006035;  // [m] 12B roller radius
 
-Guide straight_rail(double mu) {
-  Guide g;
-  g.kind = Guide::Kind::kStraight;
-  g.x0 = -0.2;
-  g.y0 = 0.1;
-  g.x1 = 0.5;
-  g.y1 = 0.3;  // inclined, free side up-left
-  g.roller_radius = kRoller;
-  g.contact_stiffness = 1e7;
-  g.contact_damping = 200.0;
-  g.friction = mu;
-  return g;
-}
+Guide straight_rail(double mu) { return testing::inclined_rail(mu); }
 
 Guide arc_rail(bool inside, double mu) {
   Guide g;

@@ -15,6 +15,7 @@
 
 #include "catena/dynamics/guide_hint.hpp"
 #include "catena/dynamics/integrator.hpp"
+#include "random_guides.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -22,18 +23,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kRoller = 0.006035;  // [m] 12B roller radius
 
-Guide inclined_rail(double mu) {
-  Guide g;
-  g.x0 = -0.2;
-  g.y0 = 0.1;
-  g.x1 = 0.5;
-  g.y1 = 0.3;  // inclined, free side up-left
-  g.roller_radius = kRoller;
-  g.contact_stiffness = 1e7;
-  g.contact_damping = 200.0;
-  g.friction = mu;
-  return g;
-}
+using testing::inclined_rail;  // tests/dynamics/random_guides.hpp
 
 // the force of the rail and its lead-in arcs together, and their Newton blocks summed
 struct Total {

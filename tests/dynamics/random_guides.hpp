@@ -13,6 +13,23 @@
 
 namespace catena::dynamics::testing {
 
+// The fixed rail of the guides' and lead-ins' contact tests: straight from (−0.2, 0.1) to
+// (0.5, 0.3) m, inclined, its free side up-left; a 12B roller (r = 6.035 mm), contact stiffness
+// 1e7 N/m, damping 200 N·s/m, friction `mu`.
+inline Guide inclined_rail(double mu) {
+  Guide g;
+  g.kind = Guide::Kind::kStraight;
+  g.x0 = -0.2;
+  g.y0 = 0.1;
+  g.x1 = 0.5;
+  g.y1 = 0.3;
+  g.roller_radius = 0.006035;
+  g.contact_stiffness = 1e7;
+  g.contact_damping = 200.0;
+  g.friction = mu;
+  return g;
+}
+
 // The ranges the guides are drawn from (uniform in each).
 struct GuideRanges {
   double roller_lo = 1e-3, roller_hi = 2e-2;  // [m] roller radius r

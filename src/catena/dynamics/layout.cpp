@@ -558,6 +558,24 @@ std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
   return {};
 }
 
+// The largest extra length in [0, most] that `clear` allows (`most` itself if it does), by
+// bisection to 1e-6 of `scale` (the segments of a growing sag are nested, so what is inside
+// stays inside: the clear extras are an interval from 0).
+namespace {
+
+template <class Clear>
+double largest_clear_extra(double most, double scale, Clear clear) {
+  if (clear(most)) return most;
+  double lo = 0.0, hi = most;
+  while (hi - lo > 1e-6 * scale) {
+    const double mid = 0.5 * (lo + hi);
+    (clear(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+}  // namespace
+
 double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circle>& circles,
                  const std::vector<double>& tip, const std::vector<Guide>& guides, double roller,
                  double pitch) {
@@ -569,14 +587,7 @@ double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circ
            sag_obstacle(laid, piece, circles, tip, guides, roller, pitch).empty();
   };
   // the half circle's extra, a hair inside (sag_span refuses beyond it)
-  const double most = (0.5 * kPi - 1.0) * c * (1.0 - 1e-9);
-  if (clear(most)) return most;
-  double lo = 0.0, hi = most;
-  while (hi - lo > 1e-6 * c) {
-    const double mid = 0.5 * (lo + hi);
-    (clear(mid) ? lo : hi) = mid;
-  }
-  return lo;
+  return largest_clear_extra((0.5 * kPi - 1.0) * c * (1.0 - 1e-9), c, clear);
 }
 
 double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pieces,
@@ -598,14 +609,7 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
     return true;
   };
   // every share reaches its half circle together: (π/2 − 1) of the total, a hair inside
-  const double most = (0.5 * kPi - 1.0) * total * (1.0 - 1e-9);
-  if (clear(most)) return most;
-  double lo = 0.0, hi = most;
-  while (hi - lo > 1e-6 * total) {
-    const double mid = 0.5 * (lo + hi);
-    (clear(mid) ? lo : hi) = mid;
-  }
-  return lo;
+  return largest_clear_extra((0.5 * kPi - 1.0) * total * (1.0 - 1e-9), total, clear);
 }
 
 std::vector<std::size_t> sagging_spans(const BeltPath& path) {
