@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -2248,6 +2249,51 @@ Stats window_stats(const std::vector<double>& x, const Window& w) {
   return s;
 }
 
+// The scatter of a series' means over the window's tooth periods (docs/models/dynamics.md,
+// "Pocket wheel: the example's means"): the mean over each whole period (t_s + iT, t_s + (i+1)T]
+// of the window, their sample standard deviation s (n − 1 in the denominator) and the standard
+// error of the window's mean s/√n, the periods' means taken as independent. A loop whose response
+// repeats with the tooth period has s ≈ 0; the pocket-wheel example's is chaotic (a change of
+// 1e-9 in the pretension grows to the full scatter within 0.4 s) and its period means scatter by
+// about 15 % of the mean. Fewer than 2 whole periods give no estimate (n = 0).
+struct PeriodSpread {
+  int periods = 0;
+  double sd = 0.0, error = 0.0;
+};
+
+PeriodSpread period_spread(const std::vector<double>& time, const std::vector<double>& x,
+                           const Window& w, double period) {
+  PeriodSpread p;
+  if (w.periods < 2) return p;
+  std::vector<double> sum(static_cast<std::size_t>(w.periods), 0.0);
+  std::vector<int> count(sum.size(), 0);
+  for (std::size_t k = w.first; k < w.last; ++k) {
+    // sample k in (t_s + iT, t_s + (i+1)T]: i = ⌈(t − t_s)/T⌉ − 1, clamped to the window
+    const double i = std::ceil((time[k] - w.start) / period) - 1.0;
+    const std::size_t at =
+        static_cast<std::size_t>(std::clamp(i, 0.0, static_cast<double>(w.periods - 1)));
+    sum[at] += x[k];
+    ++count[at];
+  }
+  std::vector<double> means;
+  for (std::size_t i = 0; i < sum.size(); ++i)
+    if (count[i] > 0) means.push_back(sum[i] / count[i]);
+  if (means.size() < 2) return p;
+  double mean = 0.0;
+  for (double m : means) mean += m;
+  mean /= static_cast<double>(means.size());
+  double ss = 0.0;
+  for (double m : means) ss += (m - mean) * (m - mean);
+  p.periods = static_cast<int>(means.size());
+  p.sd = std::sqrt(ss / static_cast<double>(means.size() - 1));
+  p.error = p.sd / std::sqrt(static_cast<double>(means.size()));
+  return p;
+}
+
+// The relative standard error above which a pocket-wheel run's mean span tensions are reported
+// as not settled: the 1 % (docs/models/dynamics.md, "Pocket wheel: the example's means").
+constexpr double kSettledMeans = 0.01;
+
 Record describe(const Result& r, const analysis::Inputs&) {
   const Setup& d = r.setup;
   Record rec;
@@ -2393,7 +2439,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
   // sweep): each sprocket's mean speed and torque, each span's mean, least and greatest tension,
   // over the window of summary_window(), all added after the fields above
   const int driver_teeth = d.layout() ? d.wheels[d.driver].teeth : d.teeth;
-  const Window win = summary_window(r.time, 2 * kPi / (driver_teeth * d.speed));
+  const double period = 2 * kPi / (driver_teeth * d.speed);
+  const Window win = summary_window(r.time, period);
   j["summary"]["window_start"] = win.start;
   j["summary"]["window_end"] = win.end;
   j["summary"]["window_periods"] = win.periods;
@@ -2436,7 +2483,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
         settled_length.size() != span_length.size())
       settled_length.clear();
   }
-  std::vector<SpanFrequencies> span_f;  // also marked on the report's spectrum
+  std::vector<SpanFrequencies> span_f;       // also marked on the report's spectrum
+  double worst_error = 0.0, worst_sd = 0.0;  // a pocket's spans: the largest s.e./mean, s/mean
   for (std::size_t k = 0; k < r.span.size(); ++k) {
     const Stats t = window_stats(r.span[k], win);
     const SpanFrequencies f = span_frequencies(span_length[k], t.mean, d.mass_per_metre,
@@ -2444,6 +2492,21 @@ Record describe(const Result& r, const analysis::Inputs&) {
     Value& summary = j["summary"]["span_" + std::to_string(k)];
     summary =
         Value::object({{"mean_tension", t.mean}, {"min_tension", t.min}, {"max_tension", t.max}});
+    // a pocket wheel's loop: how far the window's mean is from settled (new fields, a pocket
+    // only: every other run prints what it did before)
+    if (d.pocket) {
+      const PeriodSpread ps = period_spread(r.time, r.span[k], win, period);
+      if (ps.periods >= 2) {
+        summary["mean_tension_error"] = ps.error;
+        summary["period_tension_sd"] = ps.sd;
+      }
+      if (ps.periods < 2) {
+        worst_error = std::numeric_limits<double>::infinity();
+      } else if (t.mean != 0.0) {
+        worst_error = std::max(worst_error, ps.error / std::abs(t.mean));
+        worst_sd = std::max(worst_sd, ps.sd / std::abs(t.mean));
+      }
+    }
     // a span on guides is not free: its frequencies are not these
     if (!d.guides.empty()) continue;
     summary["transverse_frequency"] = f.transverse;
@@ -2473,6 +2536,32 @@ Record describe(const Result& r, const analysis::Inputs&) {
                " N at the chain's speed: the span has no transverse natural frequency (it runs "
                "at or above the speed of its transverse waves)",
            t.mean, qv2});
+  }
+  // a pocket wheel's means not settled to kSettledMeans: say so, and the duration that would
+  // (n periods with s/(√n mean) at the bound: n = (s/mean/bound)², the window half the run)
+  if (d.pocket && worst_error > kSettledMeans) {
+    const double simulated_end = r.time.back();
+    std::string message;
+    if (std::isfinite(worst_error)) {
+      const double n = std::ceil(std::pow(worst_sd / kSettledMeans, 2));
+      message = "the mean span tensions over the window's " + std::to_string(win.periods) +
+                " tooth periods are uncertain by up to " + format_g(100 * worst_error, 2) +
+                " % (one standard error: the periods' means scatter by " +
+                format_g(100 * worst_sd, 2) +
+                " % of the mean, the loop's response does not repeat with the tooth period); "
+                "dynamics.duration = " +
+                format_g(simulated_end, 4) + " s; about " + format_g(2 * n * period, 3) + " s (" +
+                format_g(n, 4) + " periods in the window) would settle them to " +
+                format_g(100 * kSettledMeans, 2) + " %";
+    } else {
+      message = "the window holds " + std::to_string(win.periods) +
+                " whole tooth period(s): the mean span tensions' uncertainty needs at least 2 "
+                "(dynamics.duration = " +
+                format_g(simulated_end, 4) + " s; at least " + format_g(4 * period, 3) + " s)";
+    }
+    rec.diagnostics.push_back({Diagnostic::Severity::kWarning, "dynamics.means_not_settled",
+                               message, std::isfinite(worst_error) ? worst_error : 0.0,
+                               kSettledMeans});
   }
   // opt-in (positions = true): positions.x[k][i], positions.y[k][i], node i at time[k]
   if (d.positions) {
@@ -2540,6 +2629,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
   j["units"]["mean_speed"] = "rad/s";
   j["units"]["mean_torque"] = "N m";
   for (const char* key : {"mean_tension", "min_tension", "max_tension"}) j["units"][key] = "N";
+  if (d.pocket)
+    for (const char* key : {"mean_tension_error", "period_tension_sd"}) j["units"][key] = "N";
   if (d.guides.empty())
     for (const char* key : {"transverse_frequency", "longitudinal_frequency"})
       j["units"][key] = "Hz";
