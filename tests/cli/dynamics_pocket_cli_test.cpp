@@ -112,6 +112,25 @@ TEST(DynamicsPocketCli, ExampleRunsOnSeed003sWheelAndBalancesTheDrivenWheel) {
             "time,angle_0,speed_0,torque_0,angle_1,speed_1,torque_1,tension_upper,tension_lower");
 }
 
+TEST(DynamicsPocketCli, ShortRunHasNoMeanErrorAndSaysSo) {
+  // 0.5 s: the window (the second half) holds 1 whole tooth period, 0.157 s: no scatter of the
+  // periods' means to estimate the means' error from; the warning names the duration and 4 T
+  const CliRun r = run("dynamics " + kExample + " --duration 0.5s --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["summary"]["window_periods"], 1);
+  for (const char* span : {"span_0", "span_1"}) {
+    EXPECT_FALSE(j["summary"][span].contains("mean_tension_error")) << span;
+    EXPECT_FALSE(j["summary"][span].contains("period_tension_sd")) << span;
+  }
+  ASSERT_EQ(j["diagnostics"].size(), 1u) << j["diagnostics"].dump();
+  EXPECT_EQ(j["diagnostics"][0]["code"], "dynamics.means_not_settled");
+  const std::string message = j["diagnostics"][0]["message"];
+  for (const char* text :
+       {"holds 1 whole tooth period", "dynamics.duration = 0.5 s", "more than 0.628 s"})
+    EXPECT_NE(message.find(text), std::string::npos) << text << "\n" << message;
+}
+
 TEST(DynamicsPocketCli, RollerChainOutputHasNoPocketFields) {
   const CliRun r = run("dynamics " + std::string(CATENA_EXAMPLES_DIR) +
                        "/dynamics_12B.toml --duration 0.01s --format json");
@@ -120,6 +139,11 @@ TEST(DynamicsPocketCli, RollerChainOutputHasNoPocketFields) {
   for (const char* key :
        {"wheel", "wire_diameter", "pocket_clearance", "pitch_radius", "pocket_angle"}) {
     EXPECT_FALSE(j.contains(key)) << key;
+    EXPECT_FALSE(j["units"].contains(key)) << key;
+  }
+  // nor the pocket's summary fields
+  for (const char* key : {"mean_tension_error", "period_tension_sd"}) {
+    EXPECT_FALSE(j["summary"]["span_0"].contains(key)) << key;
     EXPECT_FALSE(j["units"].contains(key)) << key;
   }
 }

@@ -2557,7 +2557,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
       message = "the window holds " + std::to_string(win.periods) +
                 " whole tooth period(s): the mean span tensions' uncertainty needs at least 2 "
                 "(dynamics.duration = " +
-                format_g(simulated_end, 4) + " s; at least " + format_g(4 * period, 3) + " s)";
+                format_g(simulated_end, 4) + " s; more than " + format_g(4 * period, 3) + " s)";
     }
     rec.diagnostics.push_back({Diagnostic::Severity::kWarning, "dynamics.means_not_settled",
                                message, std::isfinite(worst_error) ? worst_error : 0.0,
