@@ -2255,7 +2255,7 @@ Stats window_stats(const std::vector<double>& x, const Window& w) {
 // error of the window's mean s/√n, the periods' means taken as independent. A loop whose response
 // repeats with the tooth period has s ≈ 0; the pocket-wheel example's is chaotic (a change of
 // 1e-9 in the pretension grows to the full scatter within 0.4 s) and its period means scatter by
-// about 15 % of the mean. Fewer than 2 whole periods give no estimate (n = 0).
+// 10-22 % of the mean. Fewer than 2 whole periods give no estimate (n = 0).
 struct PeriodSpread {
   int periods = 0;
   double sd = 0.0, error = 0.0;
