@@ -11,7 +11,7 @@
 // drive's slack side set to the slack tension the simulation finds, then the two runs with w = μ,
 // the lift and a turn of factor 1, and the drive, gives the tight-side tension and the tension
 // along the upper guide. The simulation is compared with it, over whole tooth periods of steady
-// running, within 1 % (measured: +0.2 % at the tight side, +0.4 to +0.55 % along the guide).
+// running, within 1 % (measured: +0.44 % at the tight side, +0.63 to +0.75 % along the guide).
 //
 // The speed is low on purpose: the wheels' polygon action dissipates energy (seat impacts and
 // the dampers), which shows as a further tension rise round each wheel growing as v². In a
@@ -21,10 +21,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <numbers>
 #include <vector>
 
-#include "../dynamics/period_mean.hpp"
 #include "../dynamics/two_wheel_loops.hpp"
 #include "catena/dynamics/integrator.hpp"
 #include "catena/strength/loop.hpp"
@@ -54,11 +55,15 @@ struct ConveyorRun {
   std::vector<double> friction_work;  // [J] the state's accumulated friction work after each step
 };
 
-ConveyorRun run(const Conveyor& d, std::vector<Probe> probes, double duration, double step) {
+// `lift` raises the start by that much [m] (picometres: the same run perturbed at the Newton
+// tolerance's level, for the window means' scatter below).
+ConveyorRun run(const Conveyor& d, std::vector<Probe> probes, double duration, double step,
+                double lift = 0.0) {
   const auto n = static_cast<std::size_t>(d.teeth + 2 * d.span_links);
   testing::Loop loop = testing::conveyor_loop(d);
   const Model& model = loop.model;
   State& s = loop.state;
+  for (double& y : s.y) y += lift;
   Integrator integ(model, {.step = step, .theta = 0.6});
   std::vector<double> tension(model.links());
   ConveyorRun out;
@@ -91,27 +96,53 @@ ConveyorRun run(const Conveyor& d, std::vector<Probe> probes, double duration, d
   return out;
 }
 
-TEST(DynamicsConveyor, GuideFrictionTensionsMatchTheLoopModel) {
-  const Conveyor d;
+// slack side: the lower run between the driver and its guide; tight side: the upper run between
+// its guide and the driver; three points along the upper guide; its entry
+std::vector<Probe> conveyor_probes(const Conveyor& d) {
   const double p = d.pitch, centre = d.span_links * p;
   const double x_lo = d.guide_gap * p, x_hi = (d.span_links - d.guide_gap) * p;
   const double guide = x_hi - x_lo;
-  // slack side: the lower run between the driver and its guide; tight side: the upper run between
-  // its guide and the driver; and three points along the upper guide
-  std::vector<Probe> probes = {{1.5 * p, false, {}},
-                               {1.5 * p, true, {}},
-                               {x_lo + 0.25 * guide, true, {}},
-                               {x_lo + 0.5 * guide, true, {}},
-                               {x_lo + 0.75 * guide, true, {}},
-                               {centre - 1.5 * p, true, {}}};
-  const double duration = 0.8, step = 1e-4;
-  const ConveyorRun r = run(d, probes, duration, step);
-  ASSERT_EQ(r.time.size(), static_cast<std::size_t>(std::lround(duration / step)));
+  return {{1.5 * p, false, {}},
+          {1.5 * p, true, {}},
+          {x_lo + 0.25 * guide, true, {}},
+          {x_lo + 0.5 * guide, true, {}},
+          {x_lo + 0.75 * guide, true, {}},
+          {centre - 1.5 * p, true, {}}};
+}
+
+// Mean of `series` over the whole tooth periods in (t0, t1].
+double window_mean(const std::vector<double>& time, const std::vector<double>& series, double t0,
+                   double t1, double period) {
+  const double end = t0 + std::floor((t1 - t0) / period + 1e-9) * period;
+  double sum = 0.0;
+  int count = 0;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    if (time[k] > t0 && time[k] <= end) {
+      sum += series[k];
+      ++count;
+    }
+  }
+  EXPECT_GT(count, 0);
+  return sum / count;
+}
+
+// The simulation over the loop model in a window (t0, t1] of a run (whole tooth periods).
+struct Comparison {
+  std::vector<double> mean;   // the probes' window means [N]
+  std::vector<double> ratio;  // simulation / loop model, the probes 1..5 (0: the slack, input)
+  double rise = 0.0;          // (tight − slack) over the loop model's
+  double friction = 0.0;      // the steps' friction power over (2 μ q0 L) v
+};
+
+Comparison compare(const Conveyor& d, const ConveyorRun& r, double t0, double t1) {
+  const double p = d.pitch;
+  const double x_hi = (d.span_links - d.guide_gap) * p;
+  const double guide = x_hi - d.guide_gap * p;
   const double period = 2 * kPi / (d.teeth * d.omega);
-  const double t0 = 0.4;
-  std::vector<double> mean;
+  Comparison c;
   for (const Probe& pr : r.probes)
-    mean.push_back(mean_over_periods(r.time, pr.tension, t0, period));
+    c.mean.push_back(window_mean(r.time, pr.tension, t0, t1, period));
+  const std::vector<double>& mean = c.mean;
 
   // catena loop: take-up at the drive's slack side (the simulated slack tension), the lower
   // run, the lift round the tail idler, the idler, the upper run, the drive. A run's friction acts
@@ -157,33 +188,77 @@ TEST(DynamicsConveyor, GuideFrictionTensionsMatchTheLoopModel) {
     const double along = x_hi + 0.5 * d.guide_gap * p - x;
     return upper_in + along / carried * (lr.tight_tension - upper_in);
   };
-
-  EXPECT_NEAR(mean[1] / lr.tight_tension, 1.0, kTensionTol)
-      << "tight " << mean[1] << " loop " << lr.tight_tension << " slack " << mean[0];
-  for (std::size_t k = 2; k < 5; ++k) {
-    EXPECT_NEAR(mean[k] / loop_tension_at(r.probes[k].x), 1.0, kTensionTol)
-        << "x " << r.probes[k].x << ": " << mean[k] << " loop " << loop_tension_at(r.probes[k].x);
-  }
-  EXPECT_NEAR(mean[5] / upper_in, 1.0, kTensionTol) << mean[5] << " loop " << upper_in;
-  // The rise alone (tight − slack = 2 μ q0 L + q0 H), within 2 %: it also carries the wheels'
-  // polygon losses, which the loop model's factor-1 turn leaves out (measured: +0.28 %).
-  const double rise = mean[1] - mean[0];
-  EXPECT_NEAR(rise / (lr.tight_tension - lr.slack_tension), 1.0, kCarriedTol)
-      << "rise " << rise << " loop " << lr.tight_tension - lr.slack_tension;
-  // The friction work the steps report, over the same whole periods: the guides' friction force
-  // is the loop model's friction resistance 2 μ q0 L (the rise without the lift), times v. Within
-  // 2 %, not 1: "half of each unsupported stretch" is the weight a level guide's end carries when
-  // the wheel's end of the stretch is at the same height; here the wheel's end swings with the
-  // polygon and the guide's end is a rounded nose (measured: −0.96 %).
-  const double t_end = t0 + std::floor((r.time.back() - t0) / period) * period;
+  c.ratio = {0.0, mean[1] / lr.tight_tension};
+  for (std::size_t k = 2; k < 5; ++k) c.ratio.push_back(mean[k] / loop_tension_at(r.probes[k].x));
+  c.ratio.push_back(mean[5] / upper_in);
+  c.rise = (mean[1] - mean[0]) / (lr.tight_tension - lr.slack_tension);
+  // the steps' friction work over the same whole periods
+  const double t_end = t0 + std::floor((t1 - t0) / period + 1e-9) * period;
   double w0 = 0.0, w1 = 0.0;
   for (std::size_t k = 0; k < r.time.size(); ++k) {
     if (r.time[k] <= t0) w0 = r.friction_work[k];
     if (r.time[k] <= t_end) w1 = r.friction_work[k];
   }
   const double friction_force = 2.0 * d.friction * q0 * carried;
-  EXPECT_NEAR(-(w1 - w0) / ((t_end - t0) * loop.speed) / friction_force, 1.0, kCarriedTol)
-      << "friction power " << -(w1 - w0) / (t_end - t0) << " W";
+  c.friction = -(w1 - w0) / ((t_end - t0) * loop.speed) / friction_force;
+  return c;
+}
+
+// Validation (6b). The window (0.4 s, 3.2 s]: the trajectory is sensitive to picometre changes
+// (the rollers' rattle on the rails and the seats), so a window's mean scatters about the steady
+// mean. Measured over picometre lifts of the start (DISABLED_Scatter below;
+// docs/models/dynamics.md, validation (6b)) at the probe three quarters along the upper guide: the
+// old (0.4 s, 0.8 s] scattered by ±0.25 % (σ; 4 of 20 lifted runs had a probe beyond 1 %), (0.4
+// s, 3.2 s] by ±0.04 % (σ; the largest deviation over 10 runs 0.07 %), with the predictor and the
+// error-estimate stop on as without them.
+TEST(DynamicsConveyor, GuideFrictionTensionsMatchTheLoopModel) {
+  const Conveyor d;
+  const double duration = 3.2, step = 1e-4, t0 = 0.4;
+  const ConveyorRun r = run(d, conveyor_probes(d), duration, step);
+  ASSERT_EQ(r.time.size(), static_cast<std::size_t>(std::lround(duration / step)));
+  const Comparison c = compare(d, r, t0, duration);
+
+  EXPECT_NEAR(c.ratio[1], 1.0, kTensionTol) << "tight " << c.mean[1] << " slack " << c.mean[0];
+  for (std::size_t k = 2; k < 5; ++k)
+    EXPECT_NEAR(c.ratio[k], 1.0, kTensionTol) << "x " << r.probes[k].x << ": " << c.mean[k];
+  EXPECT_NEAR(c.ratio[5], 1.0, kTensionTol) << "guide's entry " << c.mean[5];
+  // The rise alone (tight − slack = 2 μ q0 L + q0 H), within 2 %: it also carries the wheels'
+  // polygon losses, which the loop model's factor-1 turn leaves out (measured: +0.59 %).
+  EXPECT_NEAR(c.rise, 1.0, kCarriedTol) << "rise " << c.mean[1] - c.mean[0];
+  // The friction work the steps report, over the same whole periods: the guides' friction force
+  // is the loop model's friction resistance 2 μ q0 L (the rise without the lift), times v. Within
+  // 2 %, not 1: "half of each unsupported stretch" is the weight a level guide's end carries when
+  // the wheel's end of the stretch is at the same height; here the wheel's end swings with the
+  // polygon and the guide's end is a rounded nose (measured: −0.94 %).
+  EXPECT_NEAR(c.friction, 1.0, kCarriedTol) << "friction power over the loop model's";
+}
+
+// Measurement, not a check: the window means of runs lifted by k pm, k = FIRST ... FIRST+RUNS−1
+// (environment CONVEYOR_SCATTER_FIRST, _RUNS, _DURATION [s]; defaults 0, 5, 3.2), for windows
+// (t0, t1] with t0 = 0.2, 0.3, 0.4 s and t1 every 0.4 s: one line per run and window, the ratios
+// of the probes 1..5, the rise and the friction power to the loop model's. Run with
+// --gtest_also_run_disabled_tests --gtest_filter='*Scatter'.
+TEST(DynamicsConveyor, DISABLED_Scatter) {
+  const Conveyor d;
+  auto env = [](const char* name, double fallback) {
+    const char* v = std::getenv(name);
+    return v ? std::atof(v) : fallback;
+  };
+  const int first = static_cast<int>(env("CONVEYOR_SCATTER_FIRST", 0));
+  const int runs = static_cast<int>(env("CONVEYOR_SCATTER_RUNS", 5));
+  const double duration = env("CONVEYOR_SCATTER_DURATION", 3.2);
+  for (int k = first; k < first + runs; ++k) {
+    const ConveyorRun r = run(d, conveyor_probes(d), duration, 1e-4, k * 1e-12);
+    for (double t1 = 0.8; t1 <= duration + 1e-9; t1 += 0.4) {
+      for (double t0 : {0.2, 0.3, 0.4}) {
+        const Comparison c = compare(d, r, t0, t1);
+        std::printf("RUN %d t0 %.2f t1 %.2f slack %.5f", k, t0, t1, c.mean[0]);
+        for (std::size_t i = 1; i < c.ratio.size(); ++i) std::printf(" %.6f", c.ratio[i]);
+        std::printf(" rise %.6f fric %.6f\n", c.rise, c.friction);
+      }
+    }
+    std::fflush(stdout);
+  }
 }
 
 }  // namespace

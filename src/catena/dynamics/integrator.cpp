@@ -876,10 +876,9 @@ StepReport Integrator::step(const Model& model, State& s) {
       // Converged when this correction is within tolerance, or when the error it leaves,
       // estimated from the contraction ϑ = |Δ_k|/|Δ_{k−1}| as ϑ/(1 − ϑ)·|Δ_k| (Hairer & Wanner,
       // Solving ODEs II, §IV.8), is: near the solution Newton's error falls quadratically and the
-      // correction that would only confirm it is skipped. Not with guides (as the predictor):
-      // with both, the conveyor's tension means (validation (6b)) came out 1.04 % off, beyond
-      // their 1 % — the scatter of its window means under picometre changes of the steps (±0.3 %,
-      // docs/models/dynamics.md, "The predictor and the estimate with guides"), not a bias.
+      // correction that would only confirm it is skipped. With guides too: the conveyor's
+      // validation (6b) resolves its tension means to ±0.1 % and shows no bias from it or the
+      // predictor (docs/models/dynamics.md, "The predictor and the estimate with guides").
       // No estimate before two corrections of one sequence (previous is infinite until then, and
       // again after a backtracked step).
       const double rate = correction / previous;
@@ -896,8 +895,8 @@ StepReport Integrator::step(const Model& model, State& s) {
         previous_correction = 0.0;
         previous = before;
       };
-      if (correction <= tol || (model.guides.empty() && std::isfinite(before) && rate < 0.5 &&
-                                rate / (1.0 - rate) * correction <= tol)) {
+      if (correction <= tol ||
+          (std::isfinite(before) && rate < 0.5 && rate / (1.0 - rate) * correction <= tol)) {
         if (chord && !fresh && correction > tol) {
           // A chord step accepted on the estimate: the estimate assumes the chord iteration
           // contracts, which a chord step that raised the residual did not. Its residual (which
@@ -974,11 +973,10 @@ StepReport Integrator::step(const Model& model, State& s) {
     }
     return report;
   };
-  // not with guides: with it and the estimate the conveyor's validation (6b) missed its 1 % by
-  // its own scatter (above; docs/models/dynamics.md, "The predictor and the estimate with guides")
-  const double extrapolate = s.time == history_time_ && model.guides.empty() ? h * th : 0.0;
-  // the last step's factors: hinge friction only, and not with guides (the same caution as the
-  // predictor's)
+  // with guides too (above; docs/models/dynamics.md, "The predictor and the estimate with guides")
+  const double extrapolate = s.time == history_time_ ? h * th : 0.0;
+  // the last step's factors: hinge friction only, and not with guides (no validation has hinge
+  // friction and guides together)
   const bool stale =
       pentadiagonal_ && factors_kept_ && s.time == history_time_ && model.guides.empty();
   StepReport report = newton(extrapolate, stale);
