@@ -27,6 +27,9 @@ struct ConveyorRun {
   std::vector<double> time;
   std::vector<ConveyorProbe> probes;
   std::vector<double> friction_work;  // [J] the state's accumulated friction work after each step
+  // [J] the driver's accumulated work on the chain after each step: the chain's torque on it at
+  // each step's θ point (Integrator::applied_torque) over the step's turn
+  std::vector<double> drive_work;
 };
 
 // Steps conveyor `d` for `duration` at `step` (θ = 0.6), sampling every probe after each step. A
@@ -44,7 +47,9 @@ inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> pr
   ConveyorRun out;
   out.probes = std::move(probes);
   const int steps = static_cast<int>(std::lround(duration / step));
+  double drive_work = 0.0;
   for (int k = 0; k < steps; ++k) {
+    const double angle0 = s.angle[0];
     const StepReport rep = integ.step(model, s);
     if (!rep.converged) {
       ADD_FAILURE() << "step " << k << " did not converge";
@@ -68,6 +73,8 @@ inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> pr
     }
     out.time.push_back(s.time);
     out.friction_work.push_back(s.friction_work);
+    drive_work -= integ.applied_torque()[0] * (s.angle[0] - angle0);
+    out.drive_work.push_back(drive_work);
   }
   return out;
 }
