@@ -19,7 +19,10 @@ namespace catena::dynamics::testing {
 // `guide_gap` pitches after one wheel to as many before the other, at the mean height of the
 // polygon's tangent point, R sin(π/z)/(π/z), each with a lead-in arc at its entry end. Each rail
 // is cut into `pieces` collinear pieces end to end (1: the example's one rail a run; 0: no
-// guides at all — the loop sags under gravity).
+// guides at all — the loop sags under gravity). With `incline` β ≠ 0 the whole loop — wheels,
+// rails, lead-ins and chain — is turned by −β about the driver's centre, gravity staying −y: the
+// tail wheel below the driver and both runs' rails inclined at β, rising towards the driver (β < 0:
+// falling towards it), the runs still ±level from the line of centres.
 struct Conveyor {
   int teeth = 16;
   int span_links = 60;
@@ -36,6 +39,7 @@ struct Conveyor {
   double inertia = 0.002;        // [kg·m²] tail idler
   double friction = 0.3;         // μ on the guides
   double gravity = 9.81;         // [m/s²]
+  double incline = 0.0;          // [rad] β, the line of centres rising towards the driver
 };
 
 struct Loop {
@@ -43,6 +47,33 @@ struct Loop {
   State state;
   double level = 0.0;  // [m] the height of the runs' roller centres on the rails (±level)
 };
+
+// Turns a loop's wheels, guides and chain (positions, velocities, the wheels' seat angles) by
+// `phi` counter-clockwise about the origin: the same loop in a frame turned against gravity.
+inline void turn_loop(Model& model, State& s, double phi) {
+  const double c = std::cos(phi), sn = std::sin(phi);
+  auto turn = [&](double& x, double& y) {
+    const double u = x;
+    x = c * u - sn * y;
+    y = sn * u + c * y;
+  };
+  for (Sprocket& w : model.sprockets) {
+    turn(w.centre_x, w.centre_y);
+    turn(w.takeup_dx, w.takeup_dy);
+  }
+  for (Guide& g : model.guides) {
+    turn(g.x0, g.y0);
+    turn(g.x1, g.y1);
+    turn(g.centre_x, g.centre_y);
+    g.start_angle += phi;
+    g.end_angle += phi;
+  }
+  for (std::size_t i = 0; i < s.x.size(); ++i) {
+    turn(s.x[i], s.y[i]);
+    turn(s.vx[i], s.vy[i]);
+  }
+  for (double& a : s.angle) a += phi;
+}
 
 // The model and its start: every roller seated on the wheels at the pitch-line speed, the
 // straight runs lifted onto the rails' level. Guides in the order upper run's pieces (left to
@@ -110,6 +141,7 @@ inline Loop conveyor_loop(const Conveyor& d) {
     if (s.x[i] > 0.5 * d.pitch && s.x[i] < centre - 0.5 * d.pitch)
       s.y[i] = s.y[i] > 0 ? level : -level;
   }
+  if (d.incline != 0.0) turn_loop(model, s, -d.incline);
   return out;
 }
 

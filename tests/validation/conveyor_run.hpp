@@ -1,0 +1,82 @@
+// Test helper: validation (6b)'s conveyor (tests/dynamics/two_wheel_loops.hpp) stepped at a fixed
+// step, with the tension of a link sampled at probes fixed in the conveyor's own frame — along its
+// line of centres from the driver's centre, on the upper or the lower run — so that a level and an
+// inclined conveyor are probed at the same points (tests/validation/dynamics_conveyor_*_test.cpp).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+#include "../dynamics/two_wheel_loops.hpp"
+#include "catena/dynamics/integrator.hpp"
+
+namespace catena::dynamics::testing {
+
+// A probe: the time series of the tension of the link whose middle is nearest `x` along the line
+// of centres, on the upper (above the line) or the lower run.
+struct ConveyorProbe {
+  double x = 0.0;
+  bool upper = true;
+  std::vector<double> tension;
+};
+
+struct ConveyorRun {
+  std::vector<double> time;
+  std::vector<ConveyorProbe> probes;
+  std::vector<double> friction_work;  // [J] the state's accumulated friction work after each step
+  // [J] the driver's accumulated work on the chain after each step: the chain's torque on it at
+  // each step's θ point (Integrator::applied_torque) over the step's turn
+  std::vector<double> drive_work;
+};
+
+// Steps conveyor `d` for `duration` at `step` (θ = 0.6), sampling every probe after each step. A
+// step that does not converge fails the test and ends the run.
+inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> probes,
+                                double duration, double step) {
+  Loop loop = conveyor_loop(d);
+  const Model& model = loop.model;
+  State& s = loop.state;
+  const std::size_t n = model.nodes();
+  // the conveyor's frame: u along the line of centres (driver to tail), w across it (upper run +)
+  const double ux = std::cos(d.incline), uy = -std::sin(d.incline);
+  Integrator integ(model, {.step = step, .theta = 0.6});
+  std::vector<double> tension(model.links());
+  ConveyorRun out;
+  out.probes = std::move(probes);
+  const int steps = static_cast<int>(std::lround(duration / step));
+  double drive_work = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    const double angle0 = s.angle[0];
+    const StepReport rep = integ.step(model, s);
+    if (!rep.converged) {
+      ADD_FAILURE() << "step " << k << " did not converge";
+      break;
+    }
+    link_tensions(model, s, tension);
+    for (ConveyorProbe& p : out.probes) {
+      std::size_t best = 0;
+      double gap = INFINITY;
+      for (std::size_t j = 0; j < n; ++j) {
+        const std::size_t e = (j + 1) % n;
+        const double xm = 0.5 * (s.x[j] + s.x[e]), ym = 0.5 * (s.y[j] + s.y[e]);
+        const double u = xm * ux + ym * uy, w = -xm * uy + ym * ux;
+        if ((w > 0.0) != p.upper) continue;
+        if (std::abs(u - p.x) < gap) {
+          gap = std::abs(u - p.x);
+          best = j;
+        }
+      }
+      p.tension.push_back(tension[best]);
+    }
+    out.time.push_back(s.time);
+    out.friction_work.push_back(s.friction_work);
+    drive_work -= integ.applied_torque()[0] * (s.angle[0] - angle0);
+    out.drive_work.push_back(drive_work);
+  }
+  return out;
+}
+
+}  // namespace catena::dynamics::testing
