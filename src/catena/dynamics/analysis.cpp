@@ -1610,9 +1610,26 @@ Setup parse(const analysis::Inputs& in) {
       const std::string which = ends == g.text.end() ? "both" : ends->second;
       lead.at_start = which != "end";
       lead.at_end = which != "start";
-      for (const Issue& issue : validate(lead)) {
+      const std::vector<Issue> lead_issues = validate(lead);
+      for (const Issue& issue : lead_issues) {
         if (!g.value.count(issue.field)) continue;  // not read: reported already
         issues.push_back({field(issue.field), issue.value, issue.expected});
+      }
+      // the bound (docs/models/dynamics.md, "Lead-ins"): a closed chain of length N p spans no
+      // chord longer than N p / 2 (the way back is at least as long), so an arc whose chord
+      // 2 R sin(α/2) is longer cannot be a run of this chain: at most R = N p / (4 sin(α/2))
+      const double chain_length = s.links * s.pitch;
+      if (lead_issues.empty() && chain_length > 0.0 && std::isfinite(chain_length)) {
+        const double most = chain_length / (4.0 * std::sin(0.5 * lead.angle));
+        if (lead.radius > most)
+          issues.push_back(
+              {field("lead_in_radius"), shown(lead.radius) + " m",
+               "a lead-in radius 0 < R <= " + format_g(most, 4) + " m at lead_in_angle " +
+                   format_g(lead.angle * 180.0 / std::numbers::pi, 4) +
+                   " deg: its arc's chord 2 R sin(angle/2) at most half the chain's length, N p/2 "
+                   "= " +
+                   format_g(0.5 * chain_length, 4) +
+                   " m (a closed loop spans no longer chord: the way back is as long)"});
       }
       lead_ins = lead_in_arcs(guide, lead);
       lead_ins_at_start = lead.at_start;
