@@ -193,4 +193,34 @@ lead_in_radius = ")" + radius + "\"\n" +
   std::filesystem::remove_all(dir);
 }
 
+// An error diagnostic never exits 0: a run whose first step does not converge (an axial damping
+// of 1e12 N s/m on the 12B example) exits 1 from `catena dynamics` and from `catena run`, each
+// error named on stderr (by its analysis in a case run), the output written in full with it.
+TEST(DynamicsBoundaryCli, AnErrorDiagnosticExitsOneWithTheOutputWritten) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("catena_boundary_error_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "stiff_damper.toml").string();
+  std::string text = read(kExamples + "/dynamics_12B.toml");
+  text = std::regex_replace(text, std::regex("(^|\n)axial_damping *=[^\n]*"),
+                            "$1axial_damping = 1e12");
+  text = std::regex_replace(text, std::regex("(^|\n)duration *=[^\n]*"), "$1duration = \"2 ms\"");
+  std::ofstream(path) << text;
+  const CliRun d = run("dynamics " + path + " --format json");
+  const CliRun c = run("run " + path);
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(d.status, 1) << d.err;
+  EXPECT_NE(d.err.find("catena: error: step 1 (t = 0.0001 s) did not converge"), std::string::npos)
+      << d.err;
+  bool listed = false;
+  const auto j = nlohmann::json::parse(d.out);
+  for (const auto& g : j.at("diagnostics"))
+    listed = listed || g.at("code") == "dynamics.not_converged";
+  EXPECT_TRUE(listed) << d.out.substr(0, 400);
+  EXPECT_EQ(c.status, 1) << c.err;
+  EXPECT_NE(c.err.find("catena: error: analyses.dynamics: step 1"), std::string::npos) << c.err;
+  EXPECT_NE(c.out.find("dynamics.not_converged"), std::string::npos);
+  EXPECT_TRUE(nlohmann::json::parse(c.out).contains("analyses")) << c.out.substr(0, 400);
+}
+
 }  // namespace
