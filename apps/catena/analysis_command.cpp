@@ -263,13 +263,11 @@ std::function<int()> add_analysis(CLI::App& root, const analysis::Analysis& a) {
     if (!state->output.empty()) outputs.add("--output", state->output, text);
     outputs.commit(state->output.empty() ? text : "");
     if (!state->csv.empty()) std::cerr << "catena: wrote the series to " << state->csv << "\n";
-    // A result that is not finite is named on stderr too: the text table and CSV do not carry
-    // diagnostics, and a reader of them must not take inf or nan for an answer.
-    for (const Diagnostic& d : record.diagnostics) {
-      if (d.severity == Diagnostic::Severity::kError)
-        std::cerr << "catena: error: " << d.message << "\n";
-    }
-    return 0;
+    // An error diagnostic (a result that is not finite, a solve that did not converge) is named
+    // on stderr too: the text table and CSV do not carry diagnostics, and a reader of them must
+    // not take inf or nan for an answer. The output is written in full (its diagnostics are part
+    // of it), and the exit status says the run did not give a sound result.
+    return report_errors(record.diagnostics, "");
   };
 }
 

@@ -1,6 +1,7 @@
 // catena run CASE / catena report [CASE]: the command-line front of the library's case runner
 // (catena/io/case_run.hpp): which file, which output. Nothing here knows a model or the schema.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 
 #include "catena/io/case_file.hpp"
@@ -37,6 +38,14 @@ io::CaseRun run_listening(const CaseFlags& f, const std::string& command) {
   return io::run_case(file, &progress);
 }
 
+// Each analysis' error diagnostics on stderr, named by its table; 1 when there was one.
+int report_case_errors(const io::CaseRun& run) {
+  int status = 0;
+  for (const io::AnalysisRun& each : run.runs)
+    status = std::max(status, report_errors(each.record.diagnostics, "analyses." + each.name));
+  return status;
+}
+
 }  // namespace
 
 std::function<int()> add_run(CLI::App& app) {
@@ -47,9 +56,9 @@ std::function<int()> add_run(CLI::App& app) {
       c->add_option("CASE", f->path, "TOML case file (docs/case_files.md)")->required();
   c->add_option("-o,--output", f->output, "write the JSON to FILE instead of stdout");
   return [f]() {
-    write_text_output(
-        f->output, io::to_json(io::result_tree(run_listening(*f, "run"), CATENA_VERSION)), f->path);
-    return 0;
+    const io::CaseRun run = run_listening(*f, "run");
+    write_text_output(f->output, io::to_json(io::result_tree(run, CATENA_VERSION)), f->path);
+    return report_case_errors(run);
   };
 }
 
@@ -68,7 +77,7 @@ std::function<int()> add_report(CLI::App& app) {
     const io::CaseRun run = run_listening(*f, "report");
     if (f->format == "json") {
       write_text_output(f->output, io::to_json(io::result_tree(run, CATENA_VERSION)), f->path);
-      return 0;
+      return report_case_errors(run);
     }
     const std::string path = f->output.empty() ? "report.html" : f->output;
     Outputs outputs;
@@ -77,7 +86,7 @@ std::function<int()> add_report(CLI::App& app) {
     outputs.commit();
     std::cerr << "catena: wrote " << path << " (" << run.runs.size()
               << (run.runs.size() == 1 ? " analysis)\n" : " analyses)\n");
-    return 0;
+    return report_case_errors(run);
   };
 }
 

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <system_error>
 
 #include "catena/io/atomic_file.hpp"
@@ -134,6 +135,16 @@ void Outputs::commit(const std::string& stdout_text) {
   throw_if_interrupted();
   for (io::StagedFile& file : staged) file.commit();
   if (!stdout_text.empty()) io::write_stdout(stdout_text);
+}
+
+int report_errors(const std::vector<Diagnostic>& diagnostics, const std::string& where) {
+  int status = 0;
+  for (const Diagnostic& d : diagnostics) {
+    if (d.severity != Diagnostic::Severity::kError) continue;
+    std::cerr << "catena: error: " << (where.empty() ? "" : where + ": ") << d.message << "\n";
+    status = 1;
+  }
+  return status;
 }
 
 }  // namespace catena::cli

@@ -1611,9 +1611,26 @@ Setup parse(const analysis::Inputs& in) {
       const std::string which = ends == g.text.end() ? "both" : ends->second;
       lead.at_start = which != "end";
       lead.at_end = which != "start";
-      for (const Issue& issue : validate(lead)) {
+      const std::vector<Issue> lead_issues = validate(lead);
+      for (const Issue& issue : lead_issues) {
         if (!g.value.count(issue.field)) continue;  // not read: reported already
         issues.push_back({field(issue.field), issue.value, issue.expected});
+      }
+      // the bound (docs/models/dynamics.md, "Lead-ins"): a closed chain of length N p spans no
+      // chord longer than N p / 2 (the way back is at least as long), so an arc whose chord
+      // 2 R sin(α/2) is longer cannot be a run of this chain: at most R = N p / (4 sin(α/2))
+      const double chain_length = s.links * s.pitch;
+      if (lead_issues.empty() && chain_length > 0.0 && std::isfinite(chain_length)) {
+        const double most = chain_length / (4.0 * std::sin(0.5 * lead.angle));
+        if (lead.radius > most)
+          issues.push_back(
+              {field("lead_in_radius"), shown(lead.radius) + " m",
+               "a lead-in radius 0 < R <= " + format_g(most, 4) + " m at lead_in_angle " +
+                   format_g(lead.angle * 180.0 / std::numbers::pi, 4) +
+                   " deg: its arc's chord 2 R sin(angle/2) at most half the chain's length, N p/2 "
+                   "= " +
+                   format_g(0.5 * chain_length, 4) +
+                   " m (a closed loop spans no longer chord: the way back is as long)"});
       }
       lead_ins = lead_in_arcs(guide, lead);
       lead_ins_at_start = lead.at_start;
@@ -2509,18 +2526,44 @@ Record describe(const Result& r, const analysis::Inputs&) {
     }
     // a span on guides is not free: its frequencies are not these
     if (!d.guides.empty()) continue;
-    summary["transverse_frequency"] = f.transverse;
-    summary["longitudinal_frequency"] = f.longitudinal;
+    // a frequency the span has not (no tension over the window, or a span under a pitch) is
+    // null, an absent value, with the warning below saying why: never NaN, which would read as
+    // a result the model failed to compute
+    auto frequency = [](double hz) { return std::isfinite(hz) ? Value(hz) : Value(); };
+    summary["transverse_frequency"] = frequency(f.transverse);
+    summary["longitudinal_frequency"] = frequency(f.longitudinal);
     if (!settled_length.empty()) {  // new fields beside the start layout's (a take-up only)
       const SpanFrequencies fs = span_frequencies(settled_length[k], t.mean, d.mass_per_metre,
                                                   chain_speed, d.stiffness, d.pitch);
       summary["settled_length"] = settled_length[k];
-      summary["settled_transverse_frequency"] = fs.transverse;
-      summary["settled_longitudinal_frequency"] = fs.longitudinal;
+      summary["settled_transverse_frequency"] = frequency(fs.transverse);
+      summary["settled_longitudinal_frequency"] = frequency(fs.longitudinal);
     }
     span_f.push_back(f);
     const double qv2 = d.mass_per_metre * chain_speed * chain_speed;
-    if (!std::isfinite(f.transverse) || !std::isfinite(f.longitudinal))
+    const bool no_frequency = !std::isfinite(f.transverse) || !std::isfinite(f.longitudinal);
+    if ((no_frequency || f.transverse == 0.0) && win.periods == 0 && span_length[k] >= d.pitch &&
+        !(t.mean > qv2)) {
+      // the run is too short: its summary window (the second half) holds no whole tooth period
+      // of the driver, so the span's mean tension is that of the start-up, not of the drive.
+      // The window ends at the last output sample: the shortest run whose last sample is two
+      // tooth periods in, a whole number of output intervals
+      const double period = 2 * kPi / (driver_teeth * d.speed);
+      const double sample =
+          std::max(1, static_cast<int>(std::lround(d.interval / d.step))) * d.step;
+      const double shortest = std::ceil(2 * period / sample) * sample;
+      rec.diagnostics.push_back(
+          {Diagnostic::Severity::kWarning, "dynamics.span_frequencies_unmeasured",
+           "span " + std::to_string(k) + ": no natural frequencies (" +
+               (no_frequency ? "null" : "transverse 0") + "): the run of " +
+               format_g(simulated, 4) + " s (duration) is too short to measure them; over its " +
+               "second half, less than one tooth period of the driver (" + format_g(period, 4) +
+               " s), the span's mean tension is " + format_g(t.mean, 4) +
+               " N (a free span's frequencies need more than q v^2 = " + format_g(qv2, 4) +
+               " N); a duration of at least " + format_g(shortest, 4) +
+               " s (two tooth periods: one whole period after the start-up half) measures them",
+           simulated, shortest});
+    } else if (!std::isfinite(f.transverse) || !std::isfinite(f.longitudinal))
       rec.diagnostics.push_back(
           {Diagnostic::Severity::kWarning, "dynamics.span_frequencies_undefined",
            "span " + std::to_string(k) + " (" + format_g(span_length[k], 4) + " m, mean tension " +
