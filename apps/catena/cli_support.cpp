@@ -137,14 +137,11 @@ void Outputs::commit(const std::string& stdout_text) {
   if (!stdout_text.empty()) io::write_stdout(stdout_text);
 }
 
-int report_errors(const std::vector<Diagnostic>& diagnostics, const std::string& where) {
-  int status = 0;
+void report_errors(const std::vector<Diagnostic>& diagnostics, const std::string& where) {
   for (const Diagnostic& d : diagnostics) {
     if (d.severity != Diagnostic::Severity::kError) continue;
     std::cerr << "catena: error: " << (where.empty() ? "" : where + ": ") << d.message << "\n";
-    status = 1;
   }
-  return status;
 }
 
 }  // namespace catena::cli

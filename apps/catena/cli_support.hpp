@@ -89,9 +89,9 @@ void write_text_output(const std::string& output, const std::string& text,
                        const std::string& case_path = "");
 
 /// Names each error diagnostic of a run on stderr (`catena: error: <where>: message`, `where`
-/// the case run's analysis, or nothing for a subcommand) and returns the exit status: 1 when
-/// there was one (the output, written in full, holds a result that is not sound: a value not
-/// finite, a solve that did not converge), else 0.
-int report_errors(const std::vector<Diagnostic>& diagnostics, const std::string& where);
+/// the case run's analysis, or nothing for a subcommand): the text table and CSV carry no
+/// diagnostics. The exit status stays 0 (issue 2's contract: 0 whenever the analysis ran, its
+/// diagnostics part of the output).
+void report_errors(const std::vector<Diagnostic>& diagnostics, const std::string& where);
 
 }  // namespace catena::cli

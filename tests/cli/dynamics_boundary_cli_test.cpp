@@ -1,7 +1,8 @@
 // The dynamics command's boundary (issue 21): a run too short to measure a span's natural
 // frequencies says so itself (null frequencies and a warning naming `duration` and the shortest
 // run that measures them) instead of NaN blamed on the input's range, and an error diagnostic
-// never exits 0.
+// is named on stderr by `catena run` as by the subcommand, the exit status staying 0 (the
+// analysis ran; docs/cli.md).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -193,10 +194,12 @@ lead_in_radius = ")" + radius + "\"\n" +
   std::filesystem::remove_all(dir);
 }
 
-// An error diagnostic never exits 0: a run whose first step does not converge (an axial damping
-// of 1e12 N s/m on the 12B example) exits 1 from `catena dynamics` and from `catena run`, each
-// error named on stderr (by its analysis in a case run), the output written in full with it.
-TEST(DynamicsBoundaryCli, AnErrorDiagnosticExitsOneWithTheOutputWritten) {
+// An error diagnostic is never silent: a run whose first step does not converge (an axial
+// damping of 1e12 N s/m on the 12B example) names it on stderr from `catena dynamics` and from
+// `catena run` (by its analysis in a case run), with the output written in full and holding it.
+// The exit status is 0, the CLI's contract since issue 2 ("0 whenever the analysis ran,
+// diagnostics part of the output").
+TEST(DynamicsBoundaryCli, AnErrorDiagnosticIsNamedOnStderrWithTheOutputWritten) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("catena_boundary_error_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
@@ -209,7 +212,7 @@ TEST(DynamicsBoundaryCli, AnErrorDiagnosticExitsOneWithTheOutputWritten) {
   const CliRun d = run("dynamics " + path + " --format json");
   const CliRun c = run("run " + path);
   std::filesystem::remove_all(dir);
-  EXPECT_EQ(d.status, 1) << d.err;
+  EXPECT_EQ(d.status, 0) << d.err;
   EXPECT_NE(d.err.find("catena: error: step 1 (t = 0.0001 s) did not converge"), std::string::npos)
       << d.err;
   bool listed = false;
@@ -217,7 +220,7 @@ TEST(DynamicsBoundaryCli, AnErrorDiagnosticExitsOneWithTheOutputWritten) {
   for (const auto& g : j.at("diagnostics"))
     listed = listed || g.at("code") == "dynamics.not_converged";
   EXPECT_TRUE(listed) << d.out.substr(0, 400);
-  EXPECT_EQ(c.status, 1) << c.err;
+  EXPECT_EQ(c.status, 0) << c.err;
   EXPECT_NE(c.err.find("catena: error: analyses.dynamics: step 1"), std::string::npos) << c.err;
   EXPECT_NE(c.out.find("dynamics.not_converged"), std::string::npos);
   EXPECT_TRUE(nlohmann::json::parse(c.out).contains("analyses")) << c.out.substr(0, 400);

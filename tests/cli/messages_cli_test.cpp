@@ -143,12 +143,12 @@ TEST(MessagesCli, WarpConvergedMeansTheResidualTestsPassedAndShowsThem) {
 // A sprocket of 10⁹ teeth gave R1max = NaN (1 − cos γmax cancelled), and the sweep refused it
 // blaming --plate-radius, an input the user never gave; now it runs, and what double precision
 // cannot compute (R2 of rows beyond eq. 6's reach) is an error diagnostic naming the field —
-// on stderr too, with exit status 1 (an error never exits 0), the output written in full.
+// on stderr too, the exit status 0 (the analysis ran: docs/cli.md), the output written in full.
 TEST(MessagesCli, AHingeSweepOverABillionTeethBlamesNoInputItWasNotGiven) {
   const CliRun r =
       run("hinge sweep --pin-diameter 40 --half-thickness 8 --teeth 1000000000 --count 5 "
           "--format json");
-  ASSERT_EQ(r.status, 1) << r.err;
+  ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("catena: error: the result 'rows["), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("--plate-radius"), std::string::npos) << r.err;
   const auto j = nlohmann::json::parse(r.out);
