@@ -848,11 +848,20 @@ StepReport Integrator::step(const Model& model, State& s) {
       } else {
         // a chord iteration: the same bordered solve with the kept W = A⁻¹ B and the Schur
         // complement's factors, for the new right-hand sides
+        // The unknown's row over border_rows_ alone, as the fresh branch: brow_ and border_rows_
+        // are written together, only by a Jacobian assembly (its clear_border zeroes the rows it
+        // listed, +0.0, before it lists the new ones), and a chord iteration assembles the
+        // residual alone — so the rows outside border_rows_[a] are +0.0 here, and the rows inside
+        // it are visited in the same ascending order as the loop over every row visited them. The
+        // terms left out are (+0)·δ + (+0)·δ = ±0, and g − (±0) = g but for g = −0 exactly (then
+        // +0): at most the sign of an exactly zero correction (a non-finite δ is refused below
+        // either way).
         substitute(solver_.rhs, delta_);
         for (std::size_t a = 0; a < nd; ++a) {
           const std::vector<Vec2>& ba = brow_[a];
           double g = xres_[a];
-          for (std::size_t i = 0; i < n; ++i) g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
+          for (const std::size_t i : border_rows_[a])
+            g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
           dx_[a] = g;
         }
         for (std::size_t c = 0; c < nd; ++c) {
