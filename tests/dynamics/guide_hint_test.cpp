@@ -318,5 +318,78 @@ TEST(DynamicsGuideHint, StartAndEnergyBitIdenticalToEveryPairOnAManyGuideConveyo
   EXPECT_EQ(std::memcmp(&after, &want_after, sizeof(double)), 0);
 }
 
+// energy()'s wheel term on random states of the drive and of the many-guide conveyor (rollers
+// moved by up to 0.6 roller radii, wheels turned at random, a third wheel laid over the chain at a
+// random place, and now and then a node thrown far off or made non-finite): the elastic energy is
+// the every-pair sum — every wheel against every node, then every guide against every node, then
+// the links', in energy()'s order — bit for bit, and the seats are pressed (the term is not empty).
+TEST(DynamicsGuideHint, EnergyWheelTermBitIdenticalToEveryPair) {
+  std::mt19937_64 rng(2127);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  testing::Conveyor conveyor;
+  conveyor.pieces = 12;
+  const testing::Loop loops[2] = {testing::benchmark_drive(), testing::conveyor_loop(conveyor)};
+  long pressed = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const testing::Loop& base = loops[trial % 2];
+    Model m = base.model;
+    State s = base.state;
+    ASSERT_GE(m.sprockets.size(), 2U);
+    Sprocket extra = m.sprockets[trial % 2];
+    extra.driver = false;
+    extra.inertia = 0.01;
+    extra.centre_x = s.x[static_cast<std::size_t>(u01(rng) * static_cast<double>(s.x.size()))];
+    extra.centre_y = 0.5 * extra.pitch_radius * (u01(rng) - 0.5);
+    m.sprockets.push_back(extra);
+    s.angle.push_back(0.0);
+    s.speed.push_back(0.0);
+    s.slide.push_back(0.0);
+    s.slide_speed.push_back(0.0);
+    for (const Sprocket& w : m.sprockets) ASSERT_FALSE(w.takeup || w.pocket);
+    const double r = m.sprockets.front().roller_radius;
+    for (std::size_t i = 0; i < s.x.size(); ++i) {
+      s.x[i] += 1.2 * r * (u01(rng) - 0.5);
+      s.y[i] += 1.2 * r * (u01(rng) - 0.5);
+    }
+    for (double& a : s.angle) a = 2.0 * kPi * u01(rng);
+    if (trial % 5 == 4) {
+      s.x[7] = 1e3;
+      s.y[11] = NAN;
+    }
+    const std::size_t n = m.nodes();
+    double want = 0.0, seats = 0.0;
+    for (std::size_t w = 0; w < m.sprockets.size(); ++w) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const SeatContact c =
+            wheel_contact(m.sprockets[w], s.x[i], s.y[i], 0.0, 0.0, s.angle[w], 0.0);
+        if (!c.active) continue;
+        want += c.energy;
+        seats += c.energy;
+        ++pressed;
+      }
+    }
+    for (const Guide& g : m.guides) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const GuideContact gc = guide_contact(g, s.x[i], s.y[i], 0.0, 0.0);
+        if (gc.active) want += gc.energy;
+      }
+    }
+    for (std::size_t j = 0; j < m.links(); ++j) {
+      const std::size_t b = (j + 1) % n;
+      const double stretch = std::hypot(s.x[b] - s.x[j], s.y[b] - s.y[j]) - m.rest_length(j);
+      want += 0.5 * m.axial_stiffness * stretch * stretch;
+    }
+    const double got = energy(m, s).elastic;
+    if (std::isnan(want)) {
+      EXPECT_TRUE(std::isnan(got)) << "trial " << trial;
+    } else {
+      EXPECT_EQ(std::memcmp(&got, &want, sizeof(double)), 0)
+          << "trial " << trial << ": " << got << " vs " << want;
+    }
+    EXPECT_GT(seats, 0.0) << "trial " << trial;
+  }
+  EXPECT_GT(pressed, 40 * 20);
+}
+
 }  // namespace
 }  // namespace catena::dynamics

@@ -60,6 +60,12 @@ Pose random_pose(std::mt19937& rng, double pitch, double move) {
 
 constexpr double kPitch = 0.01905, kStiffness = 5e7;
 
+// Link j's (j → j + 1) length at the nodes (x, y), as the integrator takes it (sqrt, not hypot).
+double link_length(const double x[3], const double y[3], int j) {
+  const double dx = x[j + 1] - x[j], dy = y[j + 1] - y[j];
+  return std::sqrt(dx * dx + dy * dy);
+}
+
 // The pin load is the mean of the two links' elastic tensions, each from its own rest length
 // (an alternating round-link chain has links of p + a and p − a): links of 82 and 46 mm at rest
 // on rest lengths 82 and 46 mm carry nothing; on 80 and 45 mm, k (2 mm + 1 mm)/2; on one pitch
@@ -146,10 +152,8 @@ TEST(HingeFriction, CoupleWithoutJacobianIsTheFullOnesBitForBitAndLeavesTheJacob
     const double rest[2] = {kPitch, kPitch * (1.0 + 1e-3)};
     double l0[2], l1[2];
     for (int j = 0; j < 2; ++j) {
-      l0[j] = std::sqrt((p.x0[j + 1] - p.x0[j]) * (p.x0[j + 1] - p.x0[j]) +
-                        (p.y0[j + 1] - p.y0[j]) * (p.y0[j + 1] - p.y0[j]));
-      l1[j] = std::sqrt((p.x1[j + 1] - p.x1[j]) * (p.x1[j + 1] - p.x1[j]) +
-                        (p.y1[j + 1] - p.y1[j]) * (p.y1[j + 1] - p.y1[j]));
+      l0[j] = link_length(p.x0, p.y0, j);
+      l1[j] = link_length(p.x1, p.y1, j);
     }
     const HingeCouple full =
         hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1);
@@ -198,8 +202,8 @@ TEST(HingeFriction, CoupleBlocksAreTheStoredJacobiansNineBlocksInOrderBitForBit)
     for (int j = 0; j < 2; ++j) {
       const double d0x = p.x0[j + 1] - p.x0[j], d0y = p.y0[j + 1] - p.y0[j];
       const double d1x = p.x1[j + 1] - p.x1[j], d1y = p.y1[j + 1] - p.y1[j];
-      hinge_link(d0x, d0y, d1x, d1y, std::sqrt(d0x * d0x + d0y * d0y),
-                 std::sqrt(d1x * d1x + d1y * d1y), rest[j], kStiffness, theta, link[j]);
+      hinge_link(d0x, d0y, d1x, d1y, link_length(p.x0, p.y0, j), link_length(p.x1, p.y1, j),
+                 rest[j], kStiffness, theta, link[j]);
     }
     HingeCouple stored;
     hinge_couple(hinge, link[0], link[1], h, stored, true);

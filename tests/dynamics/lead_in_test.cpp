@@ -16,6 +16,7 @@
 #include "catena/dynamics/guide_hint.hpp"
 #include "catena/dynamics/integrator.hpp"
 #include "random_guides.hpp"
+#include "two_wheel_loops.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -200,22 +201,18 @@ TEST(DynamicsLeadIn, ValuesOutOfRangeAreNamed) {
 // start, stays finite (44-62 N here). There is no finite bare peak to compare with: the test
 // asserts that the bare ends' run fails and the lead-ins' runs converge with a finite peak.
 TEST(DynamicsLeadIn, EnteringRollersRunOnLeadInsWhereTheBareEndsFail) {
-  constexpr int kTeeth = 16, kSpan = 60, kGap = 3;
-  constexpr double kPitch = 0.01905, kRollerD = 0.01207, kOmega = 5.0, kStiffness = 5e7;
-  const auto n = static_cast<std::size_t>(kTeeth + 2 * kSpan);
-  Model m =
-      uniform_chain(n, true, kPitch - 20.0 / kStiffness, 1.25 * kPitch, kStiffness, 100.0, false);
-  m.gravity_y = -9.81;
-  const double centre = kSpan * kPitch;
-  Sprocket a = iso606_sprocket(kPitch, kRollerD, 0.01168, kTeeth, 0.0, 0.0, 2e8, 800.0);
-  a.driver = true;
-  a.speed = kOmega;
-  Sprocket b = iso606_sprocket(kPitch, kRollerD, 0.01168, kTeeth, centre, 0.0, 2e8, 800.0);
-  b.inertia = 0.002;
-  m.sprockets = {a, b};
-  const double r = 0.5 * kRollerD, level = a.pitch_radius * std::sin(kPi / kTeeth) / (kPi / kTeeth);
-  const double x_lo = kGap * kPitch, x_hi = (kSpan - kGap) * kPitch;
-  const State start = two_sprocket_loop(kTeeth, kSpan, kPitch, a.pitch_radius, kOmega);
+  // validation (6b)'s conveyor without its guides (tests/dynamics/two_wheel_loops.hpp: these
+  // defaults), started from the two-wheel loop itself (its runs straight at the pitch radius)
+  // rather than from conveyor_loop's start lifted onto the rails' level
+  testing::Conveyor d;
+  d.pieces = 0;
+  const testing::Loop loop = testing::conveyor_loop(d);
+  const Model& m = loop.model;
+  const std::size_t n = m.nodes();
+  const double r = 0.5 * d.roller, level = loop.level;
+  const double x_lo = d.guide_gap * d.pitch, x_hi = (d.span_links - d.guide_gap) * d.pitch;
+  const State start =
+      two_sprocket_loop(d.teeth, d.span_links, d.pitch, m.sprockets[0].pitch_radius, d.omega);
   // the peak over the run, or infinity when a step does not converge (Newton fails on the square
   // end's impact)
   const auto peak_entry_force = [&](const std::vector<Guide>& guides) -> double {
@@ -233,7 +230,7 @@ TEST(DynamicsLeadIn, EnteringRollersRunOnLeadInsWhereTheBareEndsFail) {
         // +x, the lower from −x)
         const bool upper = s.y[i] > 0.0;
         const double from_entry = upper ? x_hi - s.x[i] : s.x[i] - x_lo;
-        if (from_entry > 4.0 * kPitch || from_entry < -4.0 * kPitch) continue;
+        if (from_entry > 4.0 * d.pitch || from_entry < -4.0 * d.pitch) continue;
         for (const Guide& g : mg.guides)
           peak = std::max(peak, guide_contact(g, s.x[i], s.y[i], s.vx[i], s.vy[i]).normal_force);
       }

@@ -8,10 +8,40 @@
 #include <cmath>
 #include <cstddef>
 #include <numbers>
+#include <vector>
 
 #include "catena/dynamics/integrator.hpp"
 
 namespace catena::dynamics::testing {
+
+// Two equal ISO 606 wheels (`teeth` teeth, the chain's pitch, roller diameter and inner width)
+// `span` pitches apart on the x axis, seats of k_c = `contact_stiffness`, c_c = `contact_damping`:
+// the driver at the origin turning counter-clockwise at `omega`, the driven wheel at (span · p, 0)
+// with inertia `inertia` and load torque `load` — the pair every loop here and the drive's
+// validation (tests/validation/dynamics_drive_test.cpp) run on.
+struct EqualWheels {
+  double pitch = 0.01905;          // [m] 12B
+  double roller = 0.01207;         // [m] d1
+  double width = 0.01168;          // [m] b1
+  int teeth = 20;                  // z
+  int span = 90;                   // pitches between the centres
+  double omega = 30.0;             // [rad/s] the driver
+  double inertia = 0.05;           // [kg·m²] the driven wheel
+  double load = 0.0;               // [N·m] on the driven wheel
+  double contact_stiffness = 2e8;  // [N/m]
+  double contact_damping = 800.0;  // [N·s/m]
+};
+inline std::vector<Sprocket> equal_wheels(const EqualWheels& d) {
+  Sprocket a = iso606_sprocket(d.pitch, d.roller, d.width, d.teeth, 0.0, 0.0, d.contact_stiffness,
+                               d.contact_damping);
+  a.driver = true;
+  a.speed = d.omega;
+  Sprocket b = iso606_sprocket(d.pitch, d.roller, d.width, d.teeth, d.span * d.pitch, 0.0,
+                               d.contact_stiffness, d.contact_damping);
+  b.inertia = d.inertia;
+  b.load_torque = d.load;
+  return {a, b};
+}
 
 // The conveyor loop of validation (6b) (examples/dynamics_conveyor.toml): a closed 12B chain over
 // two z-tooth wheels `span_links` pitches apart, the driver at `omega`, a free tail idler,
@@ -92,14 +122,16 @@ inline Loop conveyor_loop(const Conveyor& d) {
                         100.0, false);
   model.gravity_y = -d.gravity;
   const double centre = m * d.pitch;
-  Sprocket a =
-      iso606_sprocket(d.pitch, d.roller, d.width, z, 0.0, 0.0, kContactStiffness, kContactDamping);
-  a.driver = true;
-  a.speed = d.omega;
-  Sprocket b = iso606_sprocket(d.pitch, d.roller, d.width, z, centre, 0.0, kContactStiffness,
-                               kContactDamping);
-  b.inertia = d.inertia;
-  model.sprockets = {a, b};
+  model.sprockets = equal_wheels({.pitch = d.pitch,
+                                  .roller = d.roller,
+                                  .width = d.width,
+                                  .teeth = z,
+                                  .span = m,
+                                  .omega = d.omega,
+                                  .inertia = d.inertia,
+                                  .contact_stiffness = kContactStiffness,
+                                  .contact_damping = kContactDamping});
+  const Sprocket& a = model.sprockets[0];
   // the guides carry the runs at the mean height of the polygon's tangent point (the seat at the
   // top swings through ±π/z): the chain runs level onto the wheels on average
   const double r = 0.5 * d.roller, radius = a.pitch_radius;
@@ -159,15 +191,18 @@ inline Loop benchmark_drive(double hinge_arm = 0.0) {
   Model& m = out.model;
   m = uniform_chain(n, true, kPitch * (1.0 - 1e-3), 0.0238, 5e7, 100.0, false);
   m.gravity_y = -9.81;
-  Sprocket a = iso606_sprocket(kPitch, 0.01207, 0.01168, kTeeth, 0.0, 0.0, 2e8, 800.0);
-  a.driver = true;
-  a.speed = kOmega;
-  Sprocket b = iso606_sprocket(kPitch, 0.01207, 0.01168, kTeeth, kSpan * kPitch, 0.0, 2e8, 800.0);
-  b.inertia = 0.05;
-  b.load_torque = 20.0;
-  m.sprockets = {a, b};
+  m.sprockets = equal_wheels({.pitch = kPitch,
+                              .roller = 0.01207,
+                              .width = 0.01168,
+                              .teeth = kTeeth,
+                              .span = kSpan,
+                              .omega = kOmega,
+                              .inertia = 0.05,
+                              .load = 20.0,
+                              .contact_stiffness = 2e8,
+                              .contact_damping = 800.0});
   m.hinge.arm = hinge_arm;
-  out.state = two_sprocket_loop(kTeeth, kSpan, kPitch, a.pitch_radius, kOmega);
+  out.state = two_sprocket_loop(kTeeth, kSpan, kPitch, m.sprockets[0].pitch_radius, kOmega);
   return out;
 }
 

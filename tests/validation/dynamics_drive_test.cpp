@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "../dynamics/period_mean.hpp"
+#include "../dynamics/two_wheel_loops.hpp"
 #include "catena/dynamics/integrator.hpp"
 
 namespace catena::dynamics {
@@ -45,18 +46,19 @@ DriveRun run(const Drive& d, double duration, double step) {
   Model model = uniform_chain(n, true, d.pitch * (1.0 - d.prestretch), d.node_mass, d.stiffness,
                               100.0, false);
   const double centre = m * d.pitch;
-  constexpr double kContactStiffness = 2e8;  // [N/m] an input here (no Hertz default yet)
-  constexpr double kContactDamping = 800.0;  // [N·s/m] about 0.2 of critical for one roller
-  Sprocket a =
-      iso606_sprocket(d.pitch, d.roller, d.width, z, 0.0, 0.0, kContactStiffness, kContactDamping);
-  a.driver = true;
-  a.speed = d.omega;
-  Sprocket b = iso606_sprocket(d.pitch, d.roller, d.width, z, centre, 0.0, kContactStiffness,
-                               kContactDamping);
-  b.inertia = d.inertia;
-  b.load_torque = d.load;
-  model.sprockets = {a, b};
-  State s = two_sprocket_loop(z, m, d.pitch, a.pitch_radius, d.omega);
+  // contacts k_c = 2e8 N/m (an input here: no Hertz default yet) and c_c = 800 N·s/m (about 0.2
+  // of critical for one roller)
+  model.sprockets = testing::equal_wheels({.pitch = d.pitch,
+                                           .roller = d.roller,
+                                           .width = d.width,
+                                           .teeth = z,
+                                           .span = m,
+                                           .omega = d.omega,
+                                           .inertia = d.inertia,
+                                           .load = d.load,
+                                           .contact_stiffness = 2e8,
+                                           .contact_damping = 800.0});
+  State s = two_sprocket_loop(z, m, d.pitch, model.sprockets[0].pitch_radius, d.omega);
 
   // θ = 0.6: the contacts are evaluated at the θ point without a discrete gradient, and at
   // θ = ½ the stiff, unresolved roller–seat contacts gain energy and the run diverges within

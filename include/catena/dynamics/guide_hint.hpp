@@ -33,6 +33,10 @@ class GuideHint {
   /// margin since the last build, when the guides' boxes changed, or when the node count changed.
   /// Returns true when it rebuilt. x and y have one entry per node.
   bool update(std::span<const Guide> guides, std::span<const double> x, std::span<const double> y);
+  /// The same for any boxes (the wheels' reach in energy()): box g in place of
+  /// guide_bounds(guides[g]); a box with a non-finite bound lists every node.
+  bool update(std::span<const GuideBounds> boxes, std::span<const double> x,
+              std::span<const double> y);
 
   /// Guide g's listed nodes, increasing. Valid after update.
   std::span<const std::uint32_t> nodes(std::size_t g) const {
@@ -49,6 +53,9 @@ class GuideHint {
   std::size_t rebuilds() const { return rebuilds_; }
 
  private:
+  template <class BoxOf>
+  bool update_from(std::size_t count, BoxOf box_of, std::span<const double> x,
+                   std::span<const double> y);
   void rebuild_grid();
   std::size_t cell_index(double v, double origin, std::size_t side) const;
   void rebuild_lists(std::span<const double> x, std::span<const double> y);

@@ -133,6 +133,10 @@ class Integrator {
   // friction; with it, the exact block-pentadiagonal matrix (the tridiagonal arrays plus the
   // hinges' blocks two nodes apart, far_lower_/far_upper_) in penta_.
   SolveStatus factor();
+  // The θ points x_θ = (1 − θ) x₀ + θ u of the state s and the iterate ux_, uy_ into qx_, qy_
+  // (assemble's with guides but no wheels, and the accepted iterate's after a step; with wheels
+  // assemble forms them by the same arithmetic in its candidate lists' pass).
+  void theta_points(const State& s);
   // Brings the guide hint up to date with the θ points qx_, qy_ (those of the iterate ux_, uy_:
   // the caller has filled them), O(N) + a rebuild when a node has moved more than its margin.
   void refresh_guide_hint(const Model& model);

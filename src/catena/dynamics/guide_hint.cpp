@@ -26,11 +26,23 @@ std::size_t GuideHint::cell_index(double v, double origin, std::size_t side) con
 
 bool GuideHint::update(std::span<const Guide> guides, std::span<const double> x,
                        std::span<const double> y) {
-  const std::size_t count = guides.size();
+  return update_from(
+      guides.size(), [&](std::size_t g) { return guide_bounds(guides[g]); }, x, y);
+}
+
+bool GuideHint::update(std::span<const GuideBounds> boxes, std::span<const double> x,
+                       std::span<const double> y) {
+  return update_from(
+      boxes.size(), [&](std::size_t g) { return boxes[g]; }, x, y);
+}
+
+template <class BoxOf>
+bool GuideHint::update_from(std::size_t count, BoxOf box_of, std::span<const double> x,
+                            std::span<const double> y) {
   bool grid_stale = bounds_.size() != count;
   if (grid_stale) bounds_.resize(count);
   for (std::size_t g = 0; g < count; ++g) {
-    const GuideBounds b = guide_bounds(guides[g]);
+    const GuideBounds b = box_of(g);
     if (!same_box(b, bounds_[g])) {
       bounds_[g] = b;
       grid_stale = true;

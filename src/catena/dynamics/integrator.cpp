@@ -104,6 +104,21 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
   for (std::size_t i = 0; i < model.nodes(); ++i) all_nodes_[i] = static_cast<std::uint32_t>(i);
 }
 
+void Integrator::theta_points(const State& s) {
+  const std::size_t n = qx_.size();
+  const double th = options_.theta;
+  const double* sx = s.x.data();
+  const double* sy = s.y.data();
+  const double* ux = ux_.data();
+  const double* uy = uy_.data();
+  double* qx = qx_.data();
+  double* qy = qy_.data();
+  for (std::size_t i = 0; i < n; ++i) {
+    qx[i] = (1.0 - th) * sx[i] + th * ux[i];
+    qy[i] = (1.0 - th) * sy[i] + th * uy[i];
+  }
+}
+
 void Integrator::refresh_guide_hint(const Model& model) {
   // the rails' frames, O(G): recomputed here so that a model whose guides changed since the last
   // step is still right
@@ -314,15 +329,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   // The nodes' θ points, once for all wheels and guides, and how far they are from where the
   // wheels' candidate lists were made (∞-norm; NaN when a point is not finite)
   bool listed = false;  // the candidate lists hold every node within reach of its wheel
-  if (model.sprockets.empty() && !model.guides.empty()) {
-    double* qx = qx_.data();
-    double* qy = qy_.data();
-    for (std::size_t i = 0; i < n; ++i) {
-      qx[i] = (1.0 - th) * sx[i] + th * ux[i];
-      qy[i] = (1.0 - th) * sy[i] + th * uy[i];
-    }
-  }
+  if (model.sprockets.empty() && !model.guides.empty()) theta_points(s);
   if (!model.sprockets.empty()) {
+    // theta_points' arithmetic, fused with the distance from the lists' points (one pass)
     double* qx = qx_.data();
     double* qy = qy_.data();
     const double* bx = listed_x_.data();
@@ -839,11 +848,20 @@ StepReport Integrator::step(const Model& model, State& s) {
       } else {
         // a chord iteration: the same bordered solve with the kept W = A⁻¹ B and the Schur
         // complement's factors, for the new right-hand sides
+        // The unknown's row over border_rows_ alone, as the fresh branch: brow_ and border_rows_
+        // are written together, only by a Jacobian assembly (its clear_border zeroes the rows it
+        // listed, +0.0, before it lists the new ones), and a chord iteration assembles the
+        // residual alone — so the rows outside border_rows_[a] are +0.0 here, and the rows inside
+        // it are visited in the same ascending order as the loop over every row visited them. The
+        // terms left out are (+0)·δ + (+0)·δ = ±0, and g − (±0) = g but for g = −0 exactly (then
+        // +0): at most the sign of an exactly zero correction (a non-finite δ is refused below
+        // either way).
         substitute(solver_.rhs, delta_);
         for (std::size_t a = 0; a < nd; ++a) {
           const std::vector<Vec2>& ba = brow_[a];
           double g = xres_[a];
-          for (std::size_t i = 0; i < n; ++i) g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
+          for (const std::size_t i : border_rows_[a])
+            g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
           dx_[a] = g;
         }
         for (std::size_t c = 0; c < nd; ++c) {
@@ -1007,12 +1025,7 @@ StepReport Integrator::step(const Model& model, State& s) {
   report.takeup_damper_work = takeup_damper_work_;
   // the θ points of the accepted iterate (the last assembly's may be one correction before it;
   // the next assembly makes them afresh)
-  if (!model.guides.empty()) {
-    for (std::size_t i = 0; i < n; ++i) {
-      qx_[i] = (1.0 - th) * s.x[i] + th * ux_[i];
-      qy_[i] = (1.0 - th) * s.y[i] + th * uy_[i];
-    }
-  }
+  if (!model.guides.empty()) theta_points(s);
   refresh_guide_hint(model);
   for (std::size_t g = 0; g < model.guides.size(); ++g) {
     const Guide& guide = model.guides[g];
