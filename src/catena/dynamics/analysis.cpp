@@ -2548,7 +2548,6 @@ Record describe(const Result& r, const analysis::Inputs&) {
       // of the driver, so the span's mean tension is that of the start-up, not of the drive.
       // The window ends at the last output sample: the shortest run whose last sample is two
       // tooth periods in, a whole number of output intervals
-      const double period = 2 * kPi / (driver_teeth * d.speed);
       const double sample =
           std::max(1, static_cast<int>(std::lround(d.interval / d.step))) * d.step;
       const double shortest = std::ceil(2 * period / sample) * sample;
