@@ -120,14 +120,41 @@ TEST(DynamicsPocketCli, ShortRunHasNoMeanErrorAndSaysSo) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["summary"]["window_periods"], 1);
   for (const char* span : {"span_0", "span_1"}) {
-    EXPECT_FALSE(j["summary"][span].contains("mean_tension_error")) << span;
-    EXPECT_FALSE(j["summary"][span].contains("period_tension_sd")) << span;
+    // the fields are kept (a sweep's columns), null: no value to give
+    ASSERT_TRUE(j["summary"][span].contains("mean_tension_error")) << span;
+    EXPECT_TRUE(j["summary"][span]["mean_tension_error"].is_null()) << span;
+    ASSERT_TRUE(j["summary"][span].contains("period_tension_sd")) << span;
+    EXPECT_TRUE(j["summary"][span]["period_tension_sd"].is_null()) << span;
   }
   ASSERT_EQ(j["diagnostics"].size(), 1u) << j["diagnostics"].dump();
   EXPECT_EQ(j["diagnostics"][0]["code"], "dynamics.means_not_settled");
   const std::string message = j["diagnostics"][0]["message"];
   for (const char* text :
        {"holds 1 whole tooth period", "dynamics.duration = 0.5 s", "more than 0.628 s"})
+    EXPECT_NE(message.find(text), std::string::npos) << text << "\n" << message;
+}
+
+// A coarse output_interval: the window (0.4 s) holds 2 whole tooth periods (0.157 s) but 0.15 s
+// samples give the first period one sample, whose "mean" would be an instantaneous value. No
+// estimate (null fields), and the warning names output_interval and half a tooth period.
+TEST(DynamicsPocketCli, SparseSamplesGiveNoMeanErrorAndNameTheOutputInterval) {
+  const std::string path =
+      example_with("sparse.toml", {{"duration =", "duration = \"0.8 s\""},
+                                   {"output_interval =", "output_interval = \"0.15 s\""}});
+  const CliRun r = run("dynamics " + path + " --format json");
+  std::filesystem::remove(path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["summary"]["window_periods"], 2);
+  for (const char* span : {"span_0", "span_1"}) {
+    ASSERT_TRUE(j["summary"][span].contains("mean_tension_error")) << span;
+    EXPECT_TRUE(j["summary"][span]["mean_tension_error"].is_null()) << span;
+    EXPECT_TRUE(j["summary"][span]["period_tension_sd"].is_null()) << span;
+  }
+  ASSERT_EQ(j["diagnostics"].size(), 1u) << j["diagnostics"].dump();
+  EXPECT_EQ(j["diagnostics"][0]["code"], "dynamics.means_not_settled");
+  const std::string message = j["diagnostics"][0]["message"];
+  for (const char* text : {"not estimated", "dynamics.output_interval = 0.15 s", "at most 0.0785"})
     EXPECT_NE(message.find(text), std::string::npos) << text << "\n" << message;
 }
 

@@ -2272,9 +2272,12 @@ Stats window_stats(const std::vector<double>& x, const Window& w) {
 // error of the window's mean s/√n, the periods' means taken as independent. A loop whose response
 // repeats with the tooth period has s ≈ 0; the pocket-wheel example's is chaotic (a change of
 // 1e-9 in the pretension grows to the full scatter within 0.4 s) and its period means scatter by
-// 10-22 % of the mean. Fewer than 2 whole periods give no estimate (n = 0).
+// 10-22 % of the mean. Fewer than 2 whole periods give no estimate (n = 0), nor does a window
+// one of whose periods holds fewer than 2 samples (`sparse`: a coarse output_interval; a period's
+// "mean" would be one instantaneous sample).
 struct PeriodSpread {
   int periods = 0;
+  bool sparse = false;
   double sd = 0.0, error = 0.0;
 };
 
@@ -2292,10 +2295,12 @@ PeriodSpread period_spread(const std::vector<double>& time, const std::vector<do
     sum[at] += x[k];
     ++count[at];
   }
+  if (*std::min_element(count.begin(), count.end()) < 2) {
+    p.sparse = true;
+    return p;
+  }
   std::vector<double> means;
-  for (std::size_t i = 0; i < sum.size(); ++i)
-    if (count[i] > 0) means.push_back(sum[i] / count[i]);
-  if (means.size() < 2) return p;
+  for (std::size_t i = 0; i < sum.size(); ++i) means.push_back(sum[i] / count[i]);
   double mean = 0.0;
   for (double m : means) mean += m;
   mean /= static_cast<double>(means.size());
@@ -2458,6 +2463,9 @@ Record describe(const Result& r, const analysis::Inputs&) {
   const int driver_teeth = d.layout() ? d.wheels[d.driver].teeth : d.teeth;
   const double period = 2 * kPi / (driver_teeth * d.speed);
   const Window win = summary_window(r.time, period);
+  // the series' sampling interval: output_interval rounded to whole steps
+  const double output_sample =
+      std::max(1, static_cast<int>(std::lround(d.interval / d.step))) * d.step;
   j["summary"]["window_start"] = win.start;
   j["summary"]["window_end"] = win.end;
   j["summary"]["window_periods"] = win.periods;
@@ -2502,6 +2510,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
   }
   std::vector<SpanFrequencies> span_f;       // also marked on the report's spectrum
   double worst_error = 0.0, worst_sd = 0.0;  // a pocket's spans: the largest s.e./mean, s/mean
+  bool unestimated = false, sparse = false;  // a pocket span's error not estimated, and why
   for (std::size_t k = 0; k < r.span.size(); ++k) {
     const Stats t = window_stats(r.span[k], win);
     const SpanFrequencies f = span_frequencies(span_length[k], t.mean, d.mass_per_metre,
@@ -2513,12 +2522,14 @@ Record describe(const Result& r, const analysis::Inputs&) {
     // only: every other run prints what it did before)
     if (d.pocket) {
       const PeriodSpread ps = period_spread(r.time, r.span[k], win, period);
-      if (ps.periods >= 2) {
-        summary["mean_tension_error"] = ps.error;
-        summary["period_tension_sd"] = ps.sd;
-      }
-      if (ps.periods < 2) {
-        worst_error = std::numeric_limits<double>::infinity();
+      // fewer than 2 whole periods: null (the fields kept, as a span's frequencies a short run
+      // has not), the warning below saying why
+      const bool estimated = ps.periods >= 2 && std::isfinite(ps.error) && std::isfinite(ps.sd);
+      summary["mean_tension_error"] = estimated ? Value(ps.error) : Value();
+      summary["period_tension_sd"] = estimated ? Value(ps.sd) : Value();
+      if (ps.periods < 2 || !std::isfinite(ps.error) || !std::isfinite(ps.sd)) {
+        unestimated = true;
+        sparse = sparse || ps.sparse;
       } else if (t.mean != 0.0) {
         worst_error = std::max(worst_error, ps.error / std::abs(t.mean));
         worst_sd = std::max(worst_sd, ps.sd / std::abs(t.mean));
@@ -2547,15 +2558,15 @@ Record describe(const Result& r, const analysis::Inputs&) {
       // the run is too short: its summary window (the second half) holds no whole tooth period
       // of the driver, so the span's mean tension is that of the start-up, not of the drive.
       // The window ends at the last output sample: the shortest run whose last sample is two
-      // tooth periods in, a whole number of output intervals
-      const double sample =
-          std::max(1, static_cast<int>(std::lround(d.interval / d.step))) * d.step;
-      const double shortest = std::ceil(2 * period / sample) * sample;
+      // tooth periods in, a whole number of output intervals (one more when 2T is a whole
+      // number of them: the samples' times carry round-off, and the last must be past 2T)
+      const double shortest = (std::floor(2 * period / output_sample) + 1.0) * output_sample;
       rec.diagnostics.push_back(
           {Diagnostic::Severity::kWarning, "dynamics.span_frequencies_unmeasured",
            "span " + std::to_string(k) + ": no natural frequencies (" +
                (no_frequency ? "null" : "transverse 0") + "): the run of " +
-               format_g(simulated, 4) + " s (duration) is too short to measure them; over its " +
+               format_g(simulated, 4) +
+               " s (dynamics.duration) is too short to measure them; over its " +
                "second half, less than one tooth period of the driver (" + format_g(period, 4) +
                " s), the span's mean tension is " + format_g(t.mean, 4) +
                " N (a free span's frequencies need more than q v^2 = " + format_g(qv2, 4) +
@@ -2581,10 +2592,16 @@ Record describe(const Result& r, const analysis::Inputs&) {
   }
   // a pocket wheel's means not settled to kSettledMeans: say so, and the duration that would
   // (n periods with s/(√n mean) at the bound: n = (s/mean/bound)², the window half the run)
-  if (d.pocket && worst_error > kSettledMeans) {
+  if (d.pocket && (unestimated || worst_error > kSettledMeans)) {
     const double simulated_end = r.time.back();
     std::string message;
-    if (std::isfinite(worst_error)) {
+    if (sparse) {
+      message = "the mean span tensions' uncertainty is not estimated: each of the window's " +
+                std::to_string(win.periods) + " tooth periods (" + format_g(period, 4) +
+                " s) needs at least 2 output samples; dynamics.output_interval = " +
+                format_g(output_sample, 4) + " s, at most " + format_g(0.5 * period, 4) +
+                " s (half a tooth period) gives them";
+    } else if (!unestimated) {
       const double n = std::ceil(std::pow(worst_sd / kSettledMeans, 2));
       message = "the mean span tensions over the window's " + std::to_string(win.periods) +
                 " tooth periods are uncertain by up to " + format_g(100 * worst_error, 2) +
@@ -2602,8 +2619,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
                 format_g(simulated_end, 4) + " s; more than " + format_g(4 * period, 3) + " s)";
     }
     rec.diagnostics.push_back({Diagnostic::Severity::kWarning, "dynamics.means_not_settled",
-                               message, std::isfinite(worst_error) ? worst_error : 0.0,
-                               kSettledMeans});
+                               message, unestimated ? 0.0 : worst_error, kSettledMeans});
   }
   // opt-in (positions = true): positions.x[k][i], positions.y[k][i], node i at time[k]
   if (d.positions) {
