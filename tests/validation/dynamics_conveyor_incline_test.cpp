@@ -20,9 +20,10 @@
 //     incline β) to the tight side;
 //   the drive.
 // The probes sit at those segments' ends (1.5 pitches from each wheel's centre, where the level
-// test's carried length ends) and along the upper guide. Measured (+15°, −15°, −25°): the tensions
-// +0.20 to +0.58 % above the loop model, the drive's power −0.05 to −0.31 %, the rise +0.33 to
-// +0.53 %, the friction power −0.88 to −1.03 % (docs/models/dynamics.md, "The inclined conveyor":
+// test's carried length ends) and along the upper guide. Measured (+15°, −15°, −25°; with the
+// predictor and the estimate on with guides): the tensions +0.21 to +0.71 % above the loop model,
+// the drive's power −0.32 to +0.08 %, the rise +0.35 to +0.74 %, the friction power −0.87 to
+// −1.00 % (docs/models/dynamics.md, "The inclined conveyor":
 // the tensions' bias, the same as level, is not traced to one cause).
 #include <gtest/gtest.h>
 
@@ -53,8 +54,8 @@ struct Measured {
   double drive_power = 0.0;     // [W] the driver's work on the chain/time over the window
 };
 
-// The inclined conveyor, 2 s at h = 0.1 ms, means over the whole tooth periods after 0.4 s. The
-// window is four times the level test's: the loop's mean tensions wander from tooth period to
+// The inclined conveyor, 2 s at h = 0.1 ms, means over the whole tooth periods after 0.4 s (the
+// level test's is 2.8 s, one run of 3.2 s; it was 0.4 s when this test was written): the loop's mean tensions wander from tooth period to
 // tooth period (the means over two periods of the tight side scatter by ±3 %, not periodically),
 // and over 0.4 s windows the ratios to the loop model moved by ±0.5 % from one window to the next
 // (β = −20°: +0.02 to +1.09 % in the rise); over 1.6 s they move by under 0.05 % when Newton's
