@@ -174,7 +174,7 @@ lead_in_radius = "50 mm"
         "dynamics.guide[0].lead_in_end (line 26)", "dynamics.guide[1].lead_in_radius (line 34)",
         "dynamics.guide[2].lead_in_radius"})
     EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
-  for (const char* range : {"(0, 90] deg", "start, end or both", "no lead_in_radius on an arc"})
+  for (const char* range : {"[0.1, 90] deg", "start, end or both", "no lead_in_radius on an arc"})
     EXPECT_NE(r.err.find(range), std::string::npos) << range << "\n" << r.err;
 
   // an unreadable lead-in value does not hide the rail's own range problems: both at once

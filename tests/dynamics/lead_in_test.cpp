@@ -182,8 +182,14 @@ TEST(DynamicsLeadIn, ValuesOutOfRangeAreNamed) {
     ASSERT_EQ(issues.size(), 2U);
     EXPECT_EQ(issues[0].field, "lead_in_radius");
     EXPECT_EQ(issues[1].field, "lead_in_angle");
-    EXPECT_NE(issues[1].expected.find("(0, 90] deg"), std::string::npos);
+    EXPECT_NE(issues[1].expected.find("[0.1, 90] deg"), std::string::npos);
   }
+  // a sweep below 0.1 deg is refused by name (1e-15 deg reached the inner arc guide's end_angle
+  // check, a field the user never wrote); 0.1 deg itself is accepted
+  const std::vector<Issue> tiny = validate(LeadIn{0.05, 1e-17, true, true});
+  ASSERT_EQ(tiny.size(), 1U);
+  EXPECT_EQ(tiny[0].field, "lead_in_angle");
+  EXPECT_TRUE(validate(LeadIn{0.05, 0.1 * kPi / 180.0, true, true}).empty());
   // none on an arc, none for a lead-in out of range
   Guide arc = inclined_rail(0.0);
   arc.kind = Guide::Kind::kArc;

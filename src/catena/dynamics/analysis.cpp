@@ -155,7 +155,7 @@ std::vector<Parameter> guide_fields() {
                "straight: a lead-in, the surface radius of an arc tangent to the rail at its end "
                "and bending away from the rollers, > 0 (default: none, the rail's end is square)"),
       quantity("lead_in_angle", K::kAngle,
-               "straight: the lead-in arc's sweep, in (0, 90] deg (default 30 deg; with "
+               "straight: the lead-in arc's sweep, in [0.1, 90] deg (default 30 deg; with "
                "lead_in_radius)"),
       text("lead_in_end",
            "straight: where the lead-ins go: start (at x0, y0), end (at x1, y1) or both "

@@ -255,9 +255,13 @@ GuideBounds guide_bounds(const Guide& g) {
 std::vector<Issue> validate(const LeadIn& lead) {
   std::vector<Issue> out;
   check::finite_positive(out, "lead_in_radius", lead.radius, "m");
-  if (!std::isfinite(lead.angle) || !(lead.angle > 0.0) || !(lead.angle <= 0.5 * std::numbers::pi))
+  // at least 0.1 deg: a sweep of 1e-15 deg gave an arc whose end angle equals its start in
+  // double precision, refused as an inner guide's end_angle the user never wrote
+  constexpr double kLeast = 0.1 * std::numbers::pi / 180.0;
+  if (!std::isfinite(lead.angle) || !(lead.angle >= kLeast) ||
+      !(lead.angle <= 0.5 * std::numbers::pi))
     out.push_back({"lead_in_angle", check::format_si(lead.angle * 180.0 / std::numbers::pi, "deg"),
-                   "an angle in (0, 90] deg"});
+                   "an angle in [0.1, 90] deg"});
   return out;
 }
 
