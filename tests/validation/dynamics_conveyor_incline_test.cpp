@@ -43,7 +43,6 @@ constexpr double kTensionTol = 0.01;  // issue 21 (6b): 1 %
 constexpr double kCarriedTol = 0.02;  // the rise and the friction power, as level (below)
 
 using testing::Conveyor;
-using testing::ConveyorProbe;
 
 struct Measured {
   double slack = 0.0, tight = 0.0, upper_entry = 0.0;
@@ -60,17 +59,9 @@ struct Measured {
 // (β = −20°: +0.02 to +1.09 % in the rise); over 1.6 s they move by under 0.05 % when Newton's
 // tolerance is halved or doubled.
 Measured simulate(const Conveyor& d) {
-  const double p = d.pitch, centre = d.span_links * p;
-  const double x_lo = d.guide_gap * p, x_hi = (d.span_links - d.guide_gap) * p;
-  const double guide = x_hi - x_lo;
-  std::vector<ConveyorProbe> probes = {{1.5 * p, false, {}},
-                                       {1.5 * p, true, {}},
-                                       {x_lo + 0.25 * guide, true, {}},
-                                       {x_lo + 0.5 * guide, true, {}},
-                                       {x_lo + 0.75 * guide, true, {}},
-                                       {centre - 1.5 * p, true, {}}};
   const double duration = 2.0, step = 1e-4, t0 = 0.4;
-  const testing::ConveyorRun r = testing::run_conveyor(d, probes, duration, step);
+  const testing::ConveyorRun r =
+      testing::run_conveyor(d, testing::conveyor_probes(d), duration, step);
   EXPECT_EQ(r.time.size(), static_cast<std::size_t>(std::lround(duration / step)));
   Measured m;
   if (r.time.empty() || r.time.back() < t0 + 0.1) return m;
