@@ -33,6 +33,7 @@
 
 #include "../dynamics/period_mean.hpp"
 #include "catena/strength/loop.hpp"
+#include "conveyor_loop_model.hpp"
 #include "conveyor_run.hpp"
 
 namespace catena::dynamics {
@@ -109,32 +110,18 @@ LoopModel loop_model(const Conveyor& d, double slack) {
   strength::Loop loop;
   loop.speed = d.omega * radius;
   out.speed = loop.speed;
+  // a straight run of the chain's weight (tests/validation/conveyor_loop_model.hpp)
   auto straight = [&](const char* name, double length, double incline, double w) {
-    strength::Segment g;
-    g.kind = strength::SegmentKind::kStraight;
-    g.name = name;
-    g.length = length;
-    g.incline = incline;
-    g.chain_weight = q0;
-    g.resistance = w;
-    return g;
+    return testing::loop_straight(name, length, incline, q0, w);
   };
-  strength::Segment takeup;
-  takeup.kind = strength::SegmentKind::kTakeup;
-  takeup.pretension = slack;
-  strength::Segment idler;
-  idler.kind = strength::SegmentKind::kTurn;
-  idler.factor = 1.0;
-  strength::Segment drive;
-  drive.kind = strength::SegmentKind::kDrive;
-  loop.segments = {takeup,
+  loop.segments = {testing::loop_takeup(slack),
                    straight("lower run, guided", out.carried, -beta, d.friction),
                    straight("lower run to the tail", stretch, -beta, 0.0),
                    straight("lift round the tail", 2 * level * std::cos(beta), kPi / 2, 0.0),
-                   idler,
+                   testing::loop_idler(),
                    straight("upper run from the tail", stretch, beta, 0.0),
                    straight("upper run, guided", out.carried, beta, d.friction),
-                   drive};
+                   testing::loop_drive()};
   out.result = strength::solve(loop);
   out.upper_entry = out.result.segments[6].tension_in;
   out.upper_gradient = (out.result.tight_tension - out.upper_entry) / out.carried;

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "catena/strength/loop.hpp"
+#include "conveyor_loop_model.hpp"
 #include "conveyor_run.hpp"
 
 namespace catena::dynamics {
@@ -97,30 +98,16 @@ Comparison compare(const Conveyor& d, const ConveyorRun& r, double t0, double t1
   const double carried = guide + d.guide_gap * p;  // 2 × half a stretch of guide_gap pitches
   strength::Loop loop;
   loop.speed = d.omega * radius;
+  // a straight run of the chain's weight (tests/validation/conveyor_loop_model.hpp)
   auto straight = [&](const char* name, double length, double incline, double w) {
-    strength::Segment g;
-    g.kind = strength::SegmentKind::kStraight;
-    g.name = name;
-    g.length = length;
-    g.incline = incline;
-    g.chain_weight = q0;
-    g.resistance = w;
-    return g;
+    return testing::loop_straight(name, length, incline, q0, w);
   };
-  strength::Segment takeup;
-  takeup.kind = strength::SegmentKind::kTakeup;
-  takeup.pretension = mean[0];
-  strength::Segment idler;
-  idler.kind = strength::SegmentKind::kTurn;
-  idler.factor = 1.0;
-  strength::Segment drive;
-  drive.kind = strength::SegmentKind::kDrive;
-  loop.segments = {takeup,
+  loop.segments = {testing::loop_takeup(mean[0]),
                    straight("lower run", carried, 0.0, d.friction),
                    straight("lift round the idler", 2 * level, kPi / 2, 0.0),
-                   idler,
+                   testing::loop_idler(),
                    straight("upper run", carried, 0.0, d.friction),
-                   drive};
+                   testing::loop_drive()};
   const strength::LoopResult lr = strength::solve(loop);
   const double upper_in = lr.segments[4].tension_in;
   // along the upper run (travel −x from x_hi + half a stretch), the loop model's tension is linear
