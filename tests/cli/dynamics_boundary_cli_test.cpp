@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cli_run.hpp"
+#include "lead_in_loop.hpp"
 
 namespace {
 
@@ -140,31 +141,8 @@ TEST(DynamicsBoundaryCli, ALeadInRadiusIsBoundedByTheChainsLength) {
   std::filesystem::create_directories(dir);
   auto write = [&](const std::string& name, const std::string& radius, const std::string& more) {
     const std::string path = (dir / name).string();
-    std::ofstream(path) << R"([dynamics]
-chain = "12B"
-links = 32
-axial_stiffness = "5e7 N/m"
-contact_stiffness = "2e8 N/m"
-contact_damping = 800
-duration = "0.002 s"
-step = "0.1 ms"
-gravity = true
-[[dynamics.sprocket]]
-teeth = 12
-role = "driver"
-speed = "13 rad/s"
-[[dynamics.sprocket]]
-teeth = 12
-role = "driven"
-inertia = 0.01
-[[dynamics.guide]]
-kind = "straight"
-x0 = "30 mm"
-y0 = "30 mm"
-x1 = "150 mm"
-y1 = "30 mm"
-lead_in_radius = ")" + radius + "\"\n" +
-                               more;
+    std::ofstream(path) << kLeadInLoopHead
+                        << lead_in_rail("30 mm", "lead_in_radius = \"" + radius + "\"\n" + more);
     return path;
   };
   // N p = 32 × 19.05 mm = 0.6096 m: at 30 deg R <= 0.6096 / (4 sin 15 deg) = 0.5888 m

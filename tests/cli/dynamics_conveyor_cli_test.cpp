@@ -16,6 +16,7 @@
 #include "../dynamics/period_mean.hpp"
 #include "chart_list.hpp"
 #include "cli_run.hpp"
+#include "lead_in_loop.hpp"
 
 namespace {
 
@@ -129,34 +130,11 @@ colour = "red"
 TEST(DynamicsConveyorCli, LeadInKeysCheckedAndRun) {
   const fs::path dir = fs::temp_directory_path() / "catena_dynamics_conveyor_cli_test";
   fs::create_directories(dir);
-  const std::string head = R"([dynamics]
-chain = "12B"
-links = 32
-axial_stiffness = "5e7 N/m"
-contact_stiffness = "2e8 N/m"
-contact_damping = 800
-duration = "0.002 s"
-step = "0.1 ms"
-gravity = true
-[[dynamics.sprocket]]
-teeth = 12
-role = "driver"
-speed = "13 rad/s"
-[[dynamics.sprocket]]
-teeth = 12
-role = "driven"
-inertia = 0.01
-)";
-  // a straight [[dynamics.guide]] from (30 mm, y) to (150 mm, y), then `keys` (whole lines)
-  const auto rail = [](const std::string& y, const std::string& keys) {
-    return "[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"30 mm\"\ny0 = \"" + y +
-           "\"\nx1 = \"150 mm\"\ny1 = \"" + y + "\"\n" + keys;
-  };
   const fs::path bad = dir / "bad_lead_ins.toml";
-  std::ofstream(bad) << head
-                     << rail("30 mm",
-                             "lead_in_radius = \"-5 mm\"\nlead_in_angle = \"120 deg\"\n"
-                             "lead_in_end = \"middle\"\n")
+  std::ofstream(bad) << kLeadInLoopHead
+                     << lead_in_rail("30 mm",
+                                     "lead_in_radius = \"-5 mm\"\nlead_in_angle = \"120 deg\"\n"
+                                     "lead_in_end = \"middle\"\n")
                      << R"([[dynamics.guide]]
 kind = "arc"
 centre_x = 0
@@ -165,7 +143,7 @@ radius = "50 mm"
 start_angle = "10 deg"
 end_angle = "50 deg"
 lead_in_radius = "50 mm"
-)" << rail("-30 mm", "lead_in_angle = \"20 deg\"\n");
+)" << lead_in_rail("-30 mm", "lead_in_angle = \"20 deg\"\n");
   const CliRun r = run("dynamics " + bad.string());
   EXPECT_EQ(r.status, 2);
   EXPECT_TRUE(r.out.empty());
@@ -179,16 +157,19 @@ lead_in_radius = "50 mm"
 
   // an unreadable lead-in value does not hide the rail's own range problems: both at once
   const fs::path hidden = dir / "unreadable_lead_in.toml";
-  std::ofstream(hidden) << head << rail("30 mm", "friction = 2\nlead_in_radius = \"abc\"\n");
+  std::ofstream(hidden) << kLeadInLoopHead
+                        << lead_in_rail("30 mm", "friction = 2\nlead_in_radius = \"abc\"\n");
   const CliRun h = run("dynamics " + hidden.string());
   EXPECT_EQ(h.status, 2);
   for (const char* field : {"dynamics.guide[0].lead_in_radius", "dynamics.guide[0].friction"})
     EXPECT_NE(h.err.find(field), std::string::npos) << field << "\n" << h.err;
 
   const fs::path good = dir / "lead_ins.toml";
-  std::ofstream(good) << head
-                      << rail("30 mm", "lead_in_radius = \"40 mm\"\nlead_in_end = \"end\"\n")
-                      << rail("-60 mm", "lead_in_radius = \"40 mm\"\nlead_in_angle = \"45 deg\"\n");
+  std::ofstream(good) << kLeadInLoopHead
+                      << lead_in_rail("30 mm",
+                                      "lead_in_radius = \"40 mm\"\nlead_in_end = \"end\"\n")
+                      << lead_in_rail("-60 mm",
+                                      "lead_in_radius = \"40 mm\"\nlead_in_angle = \"45 deg\"\n");
   const CliRun ok = run("dynamics " + good.string() + " --format json");
   ASSERT_EQ(ok.status, 0) << ok.err;
   EXPECT_EQ(nlohmann::json::parse(ok.out)["guides"], 5);  // two rails, one arc, two arcs

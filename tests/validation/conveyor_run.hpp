@@ -32,13 +32,31 @@ struct ConveyorRun {
   std::vector<double> drive_work;
 };
 
+// Validation (6b)'s probes, in the conveyor's frame: the slack side (the lower run between the
+// driver and its guide), the tight side (the upper run between its guide and the driver), three
+// points a quarter, half and three quarters along the upper guide, and its entry.
+inline std::vector<ConveyorProbe> conveyor_probes(const Conveyor& d) {
+  const double p = d.pitch, centre = d.span_links * p;
+  const double x_lo = d.guide_gap * p, x_hi = (d.span_links - d.guide_gap) * p;
+  const double guide = x_hi - x_lo;
+  return {{1.5 * p, false, {}},
+          {1.5 * p, true, {}},
+          {x_lo + 0.25 * guide, true, {}},
+          {x_lo + 0.5 * guide, true, {}},
+          {x_lo + 0.75 * guide, true, {}},
+          {centre - 1.5 * p, true, {}}};
+}
+
 // Steps conveyor `d` for `duration` at `step` (θ = 0.6), sampling every probe after each step. A
-// step that does not converge fails the test and ends the run.
+// step that does not converge fails the test and ends the run. `lift` raises the start by that
+// much [m] along y (picometres: the same run perturbed at the Newton tolerance's level, for the
+// level test's window means' scatter).
 inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> probes,
-                                double duration, double step) {
+                                double duration, double step, double lift = 0.0) {
   Loop loop = conveyor_loop(d);
   const Model& model = loop.model;
   State& s = loop.state;
+  for (double& y : s.y) y += lift;
   const std::size_t n = model.nodes();
   // the conveyor's frame: u along the line of centres (driver to tail), w across it (upper run +)
   const double ux = std::cos(d.incline), uy = -std::sin(d.incline);

@@ -34,6 +34,7 @@
 
 #include "../dynamics/period_mean.hpp"
 #include "catena/strength/loop.hpp"
+#include "conveyor_loop_model.hpp"
 #include "conveyor_run.hpp"
 
 namespace catena::dynamics {
@@ -44,7 +45,6 @@ constexpr double kTensionTol = 0.01;  // issue 21 (6b): 1 %
 constexpr double kCarriedTol = 0.02;  // the rise and the friction power, as level (below)
 
 using testing::Conveyor;
-using testing::ConveyorProbe;
 
 struct Measured {
   double slack = 0.0, tight = 0.0, upper_entry = 0.0;
@@ -61,17 +61,9 @@ struct Measured {
 // (β = −20°: +0.02 to +1.09 % in the rise); over 1.6 s they move by under 0.05 % when Newton's
 // tolerance is halved or doubled.
 Measured simulate(const Conveyor& d) {
-  const double p = d.pitch, centre = d.span_links * p;
-  const double x_lo = d.guide_gap * p, x_hi = (d.span_links - d.guide_gap) * p;
-  const double guide = x_hi - x_lo;
-  std::vector<ConveyorProbe> probes = {{1.5 * p, false, {}},
-                                       {1.5 * p, true, {}},
-                                       {x_lo + 0.25 * guide, true, {}},
-                                       {x_lo + 0.5 * guide, true, {}},
-                                       {x_lo + 0.75 * guide, true, {}},
-                                       {centre - 1.5 * p, true, {}}};
   const double duration = 2.0, step = 1e-4, t0 = 0.4;
-  const testing::ConveyorRun r = testing::run_conveyor(d, probes, duration, step);
+  const testing::ConveyorRun r =
+      testing::run_conveyor(d, testing::conveyor_probes(d), duration, step);
   EXPECT_EQ(r.time.size(), static_cast<std::size_t>(std::lround(duration / step)));
   Measured m;
   if (r.time.empty() || r.time.back() < t0 + 0.1) return m;
@@ -119,32 +111,18 @@ LoopModel loop_model(const Conveyor& d, double slack) {
   strength::Loop loop;
   loop.speed = d.omega * radius;
   out.speed = loop.speed;
+  // a straight run of the chain's weight (tests/validation/conveyor_loop_model.hpp)
   auto straight = [&](const char* name, double length, double incline, double w) {
-    strength::Segment g;
-    g.kind = strength::SegmentKind::kStraight;
-    g.name = name;
-    g.length = length;
-    g.incline = incline;
-    g.chain_weight = q0;
-    g.resistance = w;
-    return g;
+    return testing::loop_straight(name, length, incline, q0, w);
   };
-  strength::Segment takeup;
-  takeup.kind = strength::SegmentKind::kTakeup;
-  takeup.pretension = slack;
-  strength::Segment idler;
-  idler.kind = strength::SegmentKind::kTurn;
-  idler.factor = 1.0;
-  strength::Segment drive;
-  drive.kind = strength::SegmentKind::kDrive;
-  loop.segments = {takeup,
+  loop.segments = {testing::loop_takeup(slack),
                    straight("lower run, guided", out.carried, -beta, d.friction),
                    straight("lower run to the tail", stretch, -beta, 0.0),
                    straight("lift round the tail", 2 * level * std::cos(beta), kPi / 2, 0.0),
-                   idler,
+                   testing::loop_idler(),
                    straight("upper run from the tail", stretch, beta, 0.0),
                    straight("upper run, guided", out.carried, beta, d.friction),
-                   drive};
+                   testing::loop_drive()};
   out.result = strength::solve(loop);
   out.upper_entry = out.result.segments[6].tension_in;
   out.upper_gradient = (out.result.tight_tension - out.upper_entry) / out.carried;

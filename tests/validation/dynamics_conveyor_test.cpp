@@ -26,9 +26,9 @@
 #include <numbers>
 #include <vector>
 
-#include "../dynamics/two_wheel_loops.hpp"
-#include "catena/dynamics/integrator.hpp"
 #include "catena/strength/loop.hpp"
+#include "conveyor_loop_model.hpp"
+#include "conveyor_run.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -40,74 +40,16 @@ constexpr double kCarriedTol = 0.02;  // the rise and the friction power (below)
 // The loop, its wheels and guides (tests/dynamics/two_wheel_loops.hpp): validation (6b)'s
 // defaults, one rail a run.
 using testing::Conveyor;
+using testing::conveyor_probes;
+using testing::ConveyorProbe;
+using testing::ConveyorRun;
 
-// The probes: time series of the tension of the link whose middle is nearest each probe's x on
-// the upper (y > 0) or lower run.
-struct Probe {
-  double x = 0.0;
-  bool upper = true;
-  std::vector<double> tension;
-};
-
-struct ConveyorRun {
-  std::vector<double> time;
-  std::vector<Probe> probes;
-  std::vector<double> friction_work;  // [J] the state's accumulated friction work after each step
-};
-
+// The run (tests/validation/conveyor_run.hpp): the conveyor stepped, its tensions sampled at
+// validation (6b)'s probes in the conveyor's frame (level here: along x, above or below y = 0).
 // `lift` raises the start by that much [m] (picometres: the same run perturbed at the Newton
 // tolerance's level, for the window means' scatter below).
-ConveyorRun run(const Conveyor& d, std::vector<Probe> probes, double duration, double step,
-                double lift = 0.0) {
-  const auto n = static_cast<std::size_t>(d.teeth + 2 * d.span_links);
-  testing::Loop loop = testing::conveyor_loop(d);
-  const Model& model = loop.model;
-  State& s = loop.state;
-  for (double& y : s.y) y += lift;
-  Integrator integ(model, {.step = step, .theta = 0.6});
-  std::vector<double> tension(model.links());
-  ConveyorRun out;
-  out.probes = std::move(probes);
-  const int steps = static_cast<int>(std::lround(duration / step));
-  for (int k = 0; k < steps; ++k) {
-    const StepReport rep = integ.step(model, s);
-    if (!rep.converged) {
-      ADD_FAILURE() << "step " << k << " did not converge";
-      break;
-    }
-    link_tensions(model, s, tension);
-    for (Probe& p : out.probes) {
-      std::size_t best = 0;
-      double gap = INFINITY;
-      for (std::size_t j = 0; j < n; ++j) {
-        const std::size_t e = (j + 1) % n;
-        const double xm = 0.5 * (s.x[j] + s.x[e]), ym = 0.5 * (s.y[j] + s.y[e]);
-        if ((ym > 0.0) != p.upper) continue;
-        if (std::abs(xm - p.x) < gap) {
-          gap = std::abs(xm - p.x);
-          best = j;
-        }
-      }
-      p.tension.push_back(tension[best]);
-    }
-    out.time.push_back(s.time);
-    out.friction_work.push_back(s.friction_work);
-  }
-  return out;
-}
-
-// slack side: the lower run between the driver and its guide; tight side: the upper run between
-// its guide and the driver; three points along the upper guide; its entry
-std::vector<Probe> conveyor_probes(const Conveyor& d) {
-  const double p = d.pitch, centre = d.span_links * p;
-  const double x_lo = d.guide_gap * p, x_hi = (d.span_links - d.guide_gap) * p;
-  const double guide = x_hi - x_lo;
-  return {{1.5 * p, false, {}},
-          {1.5 * p, true, {}},
-          {x_lo + 0.25 * guide, true, {}},
-          {x_lo + 0.5 * guide, true, {}},
-          {x_lo + 0.75 * guide, true, {}},
-          {centre - 1.5 * p, true, {}}};
+ConveyorRun run(const Conveyor& d, double duration, double step, double lift = 0.0) {
+  return testing::run_conveyor(d, conveyor_probes(d), duration, step, lift);
 }
 
 // Mean of `series` over the whole tooth periods in (t0, t1].
@@ -140,7 +82,7 @@ Comparison compare(const Conveyor& d, const ConveyorRun& r, double t0, double t1
   const double guide = x_hi - d.guide_gap * p;
   const double period = 2 * kPi / (d.teeth * d.omega);
   Comparison c;
-  for (const Probe& pr : r.probes)
+  for (const ConveyorProbe& pr : r.probes)
     c.mean.push_back(window_mean(r.time, pr.tension, t0, t1, period));
   const std::vector<double>& mean = c.mean;
 
@@ -156,30 +98,16 @@ Comparison compare(const Conveyor& d, const ConveyorRun& r, double t0, double t1
   const double carried = guide + d.guide_gap * p;  // 2 × half a stretch of guide_gap pitches
   strength::Loop loop;
   loop.speed = d.omega * radius;
+  // a straight run of the chain's weight (tests/validation/conveyor_loop_model.hpp)
   auto straight = [&](const char* name, double length, double incline, double w) {
-    strength::Segment g;
-    g.kind = strength::SegmentKind::kStraight;
-    g.name = name;
-    g.length = length;
-    g.incline = incline;
-    g.chain_weight = q0;
-    g.resistance = w;
-    return g;
+    return testing::loop_straight(name, length, incline, q0, w);
   };
-  strength::Segment takeup;
-  takeup.kind = strength::SegmentKind::kTakeup;
-  takeup.pretension = mean[0];
-  strength::Segment idler;
-  idler.kind = strength::SegmentKind::kTurn;
-  idler.factor = 1.0;
-  strength::Segment drive;
-  drive.kind = strength::SegmentKind::kDrive;
-  loop.segments = {takeup,
+  loop.segments = {testing::loop_takeup(mean[0]),
                    straight("lower run", carried, 0.0, d.friction),
                    straight("lift round the idler", 2 * level, kPi / 2, 0.0),
-                   idler,
+                   testing::loop_idler(),
                    straight("upper run", carried, 0.0, d.friction),
-                   drive};
+                   testing::loop_drive()};
   const strength::LoopResult lr = strength::solve(loop);
   const double upper_in = lr.segments[4].tension_in;
   // along the upper run (travel −x from x_hi + half a stretch), the loop model's tension is linear
@@ -214,7 +142,7 @@ Comparison compare(const Conveyor& d, const ConveyorRun& r, double t0, double t1
 TEST(DynamicsConveyor, GuideFrictionTensionsMatchTheLoopModel) {
   const Conveyor d;
   const double duration = 3.2, step = 1e-4, t0 = 0.4;
-  const ConveyorRun r = run(d, conveyor_probes(d), duration, step);
+  const ConveyorRun r = run(d, duration, step);
   ASSERT_EQ(r.time.size(), static_cast<std::size_t>(std::lround(duration / step)));
   const Comparison c = compare(d, r, t0, duration);
 
@@ -248,7 +176,7 @@ TEST(DynamicsConveyor, DISABLED_Scatter) {
   const int runs = static_cast<int>(env("CONVEYOR_SCATTER_RUNS", 5));
   const double duration = env("CONVEYOR_SCATTER_DURATION", 3.2);
   for (int k = first; k < first + runs; ++k) {
-    const ConveyorRun r = run(d, conveyor_probes(d), duration, 1e-4, k * 1e-12);
+    const ConveyorRun r = run(d, duration, 1e-4, k * 1e-12);
     for (double t1 = 0.8; t1 <= duration + 1e-9; t1 += 0.4) {
       for (double t0 : {0.2, 0.3, 0.4}) {
         const Comparison c = compare(d, r, t0, t1);
