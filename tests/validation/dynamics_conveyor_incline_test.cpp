@@ -55,11 +55,11 @@ struct Measured {
 };
 
 // The inclined conveyor, 2 s at h = 0.1 ms, means over the whole tooth periods after 0.4 s (the
-// level test's is 2.8 s, one run of 3.2 s; it was 0.4 s when this test was written): the loop's mean tensions wander from tooth period to
-// tooth period (the means over two periods of the tight side scatter by ±3 %, not periodically),
-// and over 0.4 s windows the ratios to the loop model moved by ±0.5 % from one window to the next
-// (β = −20°: +0.02 to +1.09 % in the rise); over 1.6 s they move by under 0.05 % when Newton's
-// tolerance is halved or doubled.
+// level test's is 2.8 s, one run of 3.2 s; it was 0.4 s when this test was written): the loop's
+// mean tensions wander from tooth period to tooth period (the means over two periods of the tight
+// side scatter by ±3 %, not periodically), and over 0.4 s windows the ratios to the loop model
+// moved by ±0.5 % from one window to the next (β = −20°: +0.02 to +1.09 % in the rise); over 1.6 s
+// they move by under 0.05 % when Newton's tolerance is halved or doubled.
 Measured simulate(const Conveyor& d) {
   const double duration = 2.0, step = 1e-4, t0 = 0.4;
   const testing::ConveyorRun r =

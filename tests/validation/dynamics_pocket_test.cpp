@@ -433,11 +433,11 @@ Forced forced(pocketwheel::GuideKind kind, double force) {
 //
 // Pinned as measured: the chordal guide at low tension misses the 1 % (1.90 % at 1 kN; 0.98 % at
 // 2 kN, at the edge and not asserted). The simulated speed follows the kinematics' profile with a
-// ripple (3.8° of φ by the bins, 89 Hz by its spectrum) that starts at the seating on φ = 0 (the first bin, 0.955
-// against 0.971 ωR) and comes back every period, so the synchronous average keeps it (over 18
-// periods: 1.64 % at 1 kN); it falls as the tension rises — as the free run-on's slack strand.
-// The tangential guide, whose seatings fall inside the period (15.9° and 37.6°), passes at 1 kN.
-// The ripple is the free span's transverse swing at twice its frequency (asserted below;
+// ripple (3.8° of φ by the bins, 89 Hz by its spectrum) that starts at the seating on φ = 0 (the
+// first bin, 0.955 against 0.971 ωR) and comes back every period, so the synchronous average keeps
+// it (over 18 periods: 1.64 % at 1 kN); it falls as the tension rises — as the free run-on's slack
+// strand. The tangential guide, whose seatings fall inside the period (15.9° and 37.6°), passes at
+// 1 kN. The ripple is the free span's transverse swing at twice its frequency (asserted below;
 // docs/models/dynamics.md, "Pocket wheel: forced run-on").
 TEST(DynamicsPocketWheel, ForcedRunOnStrandSpeedAgainstPocketwheel) {
   using pocketwheel::GuideKind;
