@@ -16,7 +16,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -1974,6 +1973,12 @@ std::vector<std::pair<double, double>> pocket_outline(const Setup& d) {
   return line;
 }
 
+// The series' sampling: every `output_every` steps, output_interval rounded to whole steps (at
+// least one) — the run's recording and the summary's sample interval read it.
+int output_every(const Setup& d) {
+  return std::max(1, static_cast<int>(std::lround(d.interval / d.step)));
+}
+
 Result run(const analysis::Inputs& in) {
   Result out;
   out.setup = parse(in);
@@ -2064,7 +2069,7 @@ Result run(const analysis::Inputs& in) {
     since = 0;
   };
   const int steps = static_cast<int>(std::lround(d.duration / d.step));
-  const int every = std::max(1, static_cast<int>(std::lround(d.interval / d.step)));
+  const int every = output_every(d);
   // the report's animation: frames every `frame_every` steps (docs/models/dynamics.md, Report)
   std::size_t drawn = 0;
   for (std::size_t w = 0; w < nw; ++w) {
@@ -2463,9 +2468,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
   const int driver_teeth = d.layout() ? d.wheels[d.driver].teeth : d.teeth;
   const double period = 2 * kPi / (driver_teeth * d.speed);
   const Window win = summary_window(r.time, period);
-  // the series' sampling interval: output_interval rounded to whole steps
-  const double output_sample =
-      std::max(1, static_cast<int>(std::lround(d.interval / d.step))) * d.step;
+  const double output_sample = output_every(d) * d.step;  // the series' sampling interval
   j["summary"]["window_start"] = win.start;
   j["summary"]["window_end"] = win.end;
   j["summary"]["window_periods"] = win.periods;
@@ -2573,7 +2576,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
                " N); a duration of at least " + format_g(shortest, 4) +
                " s (two tooth periods: one whole period after the start-up half) measures them",
            simulated, shortest});
-    } else if (!std::isfinite(f.transverse) || !std::isfinite(f.longitudinal))
+    } else if (no_frequency)
       rec.diagnostics.push_back(
           {Diagnostic::Severity::kWarning, "dynamics.span_frequencies_undefined",
            "span " + std::to_string(k) + " (" + format_g(span_length[k], 4) + " m, mean tension " +
