@@ -11,16 +11,19 @@
 #include <vector>
 
 #include "../dynamics/two_wheel_loops.hpp"
+#include "catena/dynamics/chain.hpp"
 #include "catena/dynamics/integrator.hpp"
 
 namespace catena::dynamics::testing {
 
 // A probe: the time series of the tension of the link whose middle is nearest `x` along the line
-// of centres, on the upper (above the line) or the lower run.
+// of centres, on the upper (above the line) or the lower run, and of that link's speed along itself
+// (its middle's velocity along the link, unsigned: the chain's speed there).
 struct ConveyorProbe {
   double x = 0.0;
   bool upper = true;
   std::vector<double> tension;
+  std::vector<double> speed;  // [m/s]
 };
 
 struct ConveyorRun {
@@ -30,6 +33,9 @@ struct ConveyorRun {
   // [J] the driver's accumulated work on the chain after each step: the chain's torque on it at
   // each step's θ point (Integrator::applied_torque) over the step's turn
   std::vector<double> drive_work;
+  // [J] the loop's energy (Energy::total) at each of run_conveyor's `energy_at` times (after the
+  // step that ends nearest it; NaN for a time no step ends near)
+  std::vector<double> energy;
 };
 
 // Validation (6b)'s probes, in the conveyor's frame: the slack side (the lower run between the
@@ -50,9 +56,11 @@ inline std::vector<ConveyorProbe> conveyor_probes(const Conveyor& d) {
 // Steps conveyor `d` for `duration` at `step` (θ = 0.6), sampling every probe after each step. A
 // step that does not converge fails the test and ends the run. `lift` raises the start by that
 // much [m] along y (picometres: the same run perturbed at the Newton tolerance's level, for the
-// level test's window means' scatter).
+// level test's window means' scatter). The loop's energy is taken only at the times `energy_at`
+// (a window's ends): at every step it would cost a third of the run.
 inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> probes,
-                                double duration, double step, double lift = 0.0) {
+                                double duration, double step, double lift = 0.0,
+                                const std::vector<double>& energy_at = {}) {
   Loop loop = conveyor_loop(d);
   const Model& model = loop.model;
   State& s = loop.state;
@@ -64,6 +72,7 @@ inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> pr
   std::vector<double> tension(model.links());
   ConveyorRun out;
   out.probes = std::move(probes);
+  out.energy.assign(energy_at.size(), NAN);
   const int steps = static_cast<int>(std::lround(duration / step));
   double drive_work = 0.0;
   for (int k = 0; k < steps; ++k) {
@@ -88,11 +97,18 @@ inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> pr
         }
       }
       p.tension.push_back(tension[best]);
+      const std::size_t e = (best + 1) % n;
+      const double lx = s.x[e] - s.x[best], ly = s.y[e] - s.y[best];
+      const double vx = 0.5 * (s.vx[best] + s.vx[e]), vy = 0.5 * (s.vy[best] + s.vy[e]);
+      p.speed.push_back(std::abs(vx * lx + vy * ly) / std::hypot(lx, ly));
     }
     out.time.push_back(s.time);
     out.friction_work.push_back(s.friction_work);
     drive_work -= integ.applied_torque()[0] * (s.angle[0] - angle0);
     out.drive_work.push_back(drive_work);
+    for (std::size_t i = 0; i < energy_at.size(); ++i) {
+      if (std::abs(s.time - energy_at[i]) < 0.5 * step) out.energy[i] = energy(model, s).total();
+    }
   }
   return out;
 }

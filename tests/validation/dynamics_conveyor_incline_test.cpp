@@ -23,8 +23,8 @@
 // test's carried length ends) and along the upper guide. Measured (+15°, −15°, −25°; with the
 // predictor and the estimate on with guides): the tensions +0.21 to +0.71 % above the loop model,
 // the drive's power −0.32 to +0.08 %, the rise +0.35 to +0.74 %, the friction power −0.87 to
-// −1.00 % (docs/models/dynamics.md, "The inclined conveyor":
-// the tensions' bias, the same as level, is not traced to one cause).
+// −1.00 % (docs/models/dynamics.md, "The inclined conveyor"; the tensions' bias, the same as
+// level, is the loop's losses besides the guides' friction: "The conveyor's bias").
 #include <gtest/gtest.h>
 
 #include <cmath>
