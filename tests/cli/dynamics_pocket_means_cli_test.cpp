@@ -3,7 +3,9 @@
 // period: a change of 1e-9 in the pretension grows to the full scatter within half a second, so
 // the window's mean over whole tooth periods is a sample, and what converges in the step is the
 // mean within its standard error, not the sample. Checked here: the summary's standard error
-// and the periods' scatter against the series (computed here), the means at h and h/2 over a
+// and the periods' scatter against the series (the period means computed here, their error by
+// period_means.hpp's estimator, tested on AR(1) sequences in tests/dynamics/
+// period_means_test.cpp), the means at h and h/2 over a
 // 10 s run within three combined standard errors, the load (tight − slack) and the driven
 // wheel's torque closer, and the 1 s example's sensitivity: a 1e-9 change of the pretension
 // moves its 3-period means by more than 1 %, as halving the step does.
@@ -17,6 +19,7 @@
 #include <sstream>
 #include <vector>
 
+#include "catena/dynamics/period_means.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -32,10 +35,11 @@ nlohmann::json dynamics(const std::string& file, const std::string& options) {
 }
 
 // Each span's mean over the run's second half in whole driver tooth periods T = 2π/(zω), and
-// the means of each period (t0 + iT, t0 + (i+1)T]: their mean, sample deviation and s/√n.
+// the means of each period (t0 + iT, t0 + (i+1)T], with their error (period_means.hpp).
 struct Spread {
-  double mean = 0, sd = 0, error = 0;
+  double mean = 0;
   int periods = 0;
+  catena::dynamics::PeriodMeansError e;
 };
 
 Spread spread(const nlohmann::json& j, int span) {
@@ -56,12 +60,9 @@ Spread spread(const nlohmann::json& j, int span) {
     n += 1;
   }
   s.mean = all / n;
-  double m = 0;
-  for (int i = 0; i < s.periods; ++i) m += sum[i] / count[i] / s.periods;
-  double ss = 0;
-  for (int i = 0; i < s.periods; ++i) ss += std::pow(sum[i] / count[i] - m, 2);
-  s.sd = std::sqrt(ss / (s.periods - 1));
-  s.error = s.sd / std::sqrt(s.periods);
+  std::vector<double> means;
+  for (int i = 0; i < s.periods; ++i) means.push_back(sum[i] / count[i]);
+  s.e = catena::dynamics::period_means_error(means);
   return s;
 }
 
@@ -82,8 +83,8 @@ std::string perturbed_example() {
 }
 
 TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
-  // 10 s: the window holds 31 tooth periods (measured: 1971.2 ± 47.5 and 1346.6 ± 46.9 N at
-  // h = 0.1 ms, 1848.3 ± 34.2 and 1228.9 ± 33.5 N at 0.05 ms: 2.1 and 2.0 combined errors)
+  // 10 s: the window holds 31 tooth periods (measured: 1971.2 ± 78.4 and 1346.6 ± 78.1 N at
+  // h = 0.1 ms, 1848.3 ± 34.2 and 1228.9 ± 33.5 N at 0.05 ms: 1.4 and 1.4 combined errors)
   const auto a = dynamics(kExample, "--duration 10s --step 0.1ms");
   const auto b = dynamics(kExample, "--duration 10s --step 0.05ms");
   ASSERT_FALSE(a.is_null() || b.is_null());
@@ -95,17 +96,25 @@ TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
       const auto& sum = (*j)["summary"][key];
       EXPECT_EQ((*j)["summary"]["window_periods"].get<int>(), s.periods);
       EXPECT_NEAR(sum["mean_tension"].get<double>(), s.mean, 1e-9 * s.mean);
-      EXPECT_NEAR(sum["period_tension_sd"].get<double>(), s.sd, 1e-9 * s.sd);
-      EXPECT_NEAR(sum["mean_tension_error"].get<double>(), s.error, 1e-9 * s.error);
+      EXPECT_NEAR(sum["period_tension_sd"].get<double>(), s.e.sd, 1e-9 * s.e.sd);
+      EXPECT_NEAR(sum["mean_tension_error"].get<double>(), s.e.error, 1e-9 * s.e.error);
+      // 31 periods: their lag-1 autocorrelation estimated (measured 0.46 at h = 0.1 ms, the
+      // error 78.4 and 78.1 N against s/√n = 47.5 and 46.9 N; 0, clamped, at 0.05 ms), the
+      // error s/√n inflated by it
+      ASSERT_TRUE(sum["period_correlation"].is_number()) << key;
+      EXPECT_NEAR(sum["period_correlation"].get<double>(), s.e.correlation, 1e-12) << key;
+      EXPECT_NEAR(sum["effective_periods"].get<double>(), s.e.effective_periods, 1e-9) << key;
+      EXPECT_GE(sum["mean_tension_error"].get<double>(), s.e.sd / std::sqrt(31.0) * (1 - 1e-12));
       // the cause, pinned: the periods' means scatter (measured 10-19 % of the mean over these
       // 10 s, 12-22 % over 20 s); a loop whose response repeated with the tooth period would
       // have s ≈ 0
-      EXPECT_GT(s.sd, 0.05 * s.mean) << key;
+      EXPECT_GT(s.e.sd, 0.05 * s.mean) << key;
     }
     EXPECT_EQ(a["units"]["mean_tension_error"], "N");
-    EXPECT_LT(std::abs(sa.mean - sb.mean), 3 * std::hypot(sa.error, sb.error))
-        << key << ": " << sa.mean << " ± " << sa.error << " against " << sb.mean << " ± "
-        << sb.error;
+    EXPECT_EQ(a["units"]["period_correlation"], "1");
+    EXPECT_LT(std::abs(sa.mean - sb.mean), 3 * std::hypot(sa.e.error, sb.e.error))
+        << key << ": " << sa.mean << " ± " << sa.e.error << " against " << sb.mean << " ± "
+        << sb.e.error;
   }
   // what the spans carry converges closer than their level: the load (tight − slack; measured
   // 624.6 and 619.3 N, 0.86 %) and the driven wheel's torque (100.014 and 99.982 N m)
@@ -120,8 +129,11 @@ TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
   for (const auto* j : {&a, &b}) {
     ASSERT_EQ((*j)["diagnostics"].size(), 1u) << (*j)["diagnostics"].dump();
     EXPECT_EQ((*j)["diagnostics"][0]["code"], "dynamics.means_not_settled");
-    EXPECT_NE((*j)["diagnostics"][0]["message"].get<std::string>().find("dynamics.duration = 10 s"),
-              std::string::npos);
+    const std::string message = (*j)["diagnostics"][0]["message"];
+    for (const char* text :
+         {"dynamics.duration = 10 s", "of the largest span mean tension (span 0's",
+          "allowing for the periods' lag-1 autocorrelation"})
+      EXPECT_NE(message.find(text), std::string::npos) << text << "\n" << message;
   }
 }
 

@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -28,6 +29,7 @@
 #include "catena/drive/sprocket.hpp"
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/layout.hpp"
+#include "catena/dynamics/period_means.hpp"
 #include "catena/dynamics/pocket_wheel.hpp"
 #include "catena/dynamics/report_charts.hpp"
 #include "catena/dynamics/span_modes.hpp"
@@ -2273,17 +2275,17 @@ Stats window_stats(const std::vector<double>& x, const Window& w) {
 
 // The scatter of a series' means over the window's tooth periods (docs/models/dynamics.md,
 // "Pocket wheel: the example's means"): the mean over each whole period (t_s + iT, t_s + (i+1)T]
-// of the window, their sample standard deviation s (n − 1 in the denominator) and the standard
-// error of the window's mean s/√n, the periods' means taken as independent. A loop whose response
-// repeats with the tooth period has s ≈ 0; the pocket-wheel example's is chaotic (a change of
-// 1e-9 in the pretension grows to the full scatter within 0.4 s) and its period means scatter by
-// 10-22 % of the mean. Fewer than 2 whole periods give no estimate (n = 0), nor does a window
-// one of whose periods holds fewer than 2 samples (`sparse`: a coarse output_interval; a period's
-// "mean" would be one instantaneous sample).
+// of the window, and from them (period_means.hpp) their sample standard deviation s and the
+// standard error of the window's mean, s/√n inflated for the means' serial correlation (AR(1),
+// its lag-1 autocorrelation estimated from 10 periods on; fewer are taken as independent). A
+// loop whose response repeats with the tooth period has s ≈ 0; the pocket-wheel example's is
+// chaotic (a change of 1e-9 in the pretension grows to the full scatter within 0.4 s) and its
+// period means scatter by 10-22 % of the mean. Fewer than 2 whole periods give no estimate
+// (periods = 0), nor does a window one of whose periods holds fewer than 2 samples (`sparse`: a
+// coarse output_interval; a period's "mean" would be one instantaneous sample).
 struct PeriodSpread {
-  int periods = 0;
   bool sparse = false;
-  double sd = 0.0, error = 0.0;
+  PeriodMeansError e;
 };
 
 PeriodSpread period_spread(const std::vector<double>& time, const std::vector<double>& x,
@@ -2306,14 +2308,7 @@ PeriodSpread period_spread(const std::vector<double>& time, const std::vector<do
   }
   std::vector<double> means;
   for (std::size_t i = 0; i < sum.size(); ++i) means.push_back(sum[i] / count[i]);
-  double mean = 0.0;
-  for (double m : means) mean += m;
-  mean /= static_cast<double>(means.size());
-  double ss = 0.0;
-  for (double m : means) ss += (m - mean) * (m - mean);
-  p.periods = static_cast<int>(means.size());
-  p.sd = std::sqrt(ss / static_cast<double>(means.size() - 1));
-  p.error = p.sd / std::sqrt(static_cast<double>(means.size()));
+  p.e = period_means_error(means);
   return p;
 }
 
@@ -2511,9 +2506,12 @@ Record describe(const Result& r, const analysis::Inputs&) {
         settled_length.size() != span_length.size())
       settled_length.clear();
   }
-  std::vector<SpanFrequencies> span_f;       // also marked on the report's spectrum
-  double worst_error = 0.0, worst_sd = 0.0;  // a pocket's spans: the largest s.e./mean, s/mean
-  bool unestimated = false, sparse = false;  // a pocket span's error not estimated, and why
+  std::vector<SpanFrequencies> span_f;  // also marked on the report's spectrum
+  // a pocket's spans: each one's mean and the means' error (the warning below); unestimated:
+  // a span's error not estimated, sparse: why
+  std::vector<double> pocket_mean;
+  std::vector<PeriodMeansError> pocket_error;
+  bool unestimated = false, sparse = false;
   for (std::size_t k = 0; k < r.span.size(); ++k) {
     const Stats t = window_stats(r.span[k], win);
     const SpanFrequencies f = span_frequencies(span_length[k], t.mean, d.mass_per_metre,
@@ -2525,18 +2523,22 @@ Record describe(const Result& r, const analysis::Inputs&) {
     // only: every other run prints what it did before)
     if (d.pocket) {
       const PeriodSpread ps = period_spread(r.time, r.span[k], win, period);
+      const PeriodMeansError& e = ps.e;
       // fewer than 2 whole periods: null (the fields kept, as a span's frequencies a short run
-      // has not), the warning below saying why
-      const bool estimated = ps.periods >= 2 && std::isfinite(ps.error) && std::isfinite(ps.sd);
-      summary["mean_tension_error"] = estimated ? Value(ps.error) : Value();
-      summary["period_tension_sd"] = estimated ? Value(ps.sd) : Value();
-      if (ps.periods < 2 || !std::isfinite(ps.error) || !std::isfinite(ps.sd)) {
+      // has not), the warning below saying why; the correlation also null below
+      // kCorrelationMinPeriods periods (the means taken as independent)
+      const bool estimated = e.periods >= 2 && std::isfinite(e.error) && std::isfinite(e.sd);
+      summary["mean_tension_error"] = estimated ? Value(e.error) : Value();
+      summary["period_tension_sd"] = estimated ? Value(e.sd) : Value();
+      summary["period_correlation"] =
+          estimated && std::isfinite(e.correlation) ? Value(e.correlation) : Value();
+      summary["effective_periods"] = estimated ? Value(e.effective_periods) : Value();
+      if (!estimated) {
         unestimated = true;
         sparse = sparse || ps.sparse;
-      } else if (t.mean != 0.0) {
-        worst_error = std::max(worst_error, ps.error / std::abs(t.mean));
-        worst_sd = std::max(worst_sd, ps.sd / std::abs(t.mean));
       }
+      pocket_mean.push_back(t.mean);
+      pocket_error.push_back(e);
     }
     // a span on guides is not free: its frequencies are not these
     if (!d.guides.empty()) continue;
@@ -2594,8 +2596,34 @@ Record describe(const Result& r, const analysis::Inputs&) {
            t.mean, qv2});
   }
   // a pocket wheel's means not settled to kSettledMeans: say so, and the duration that would
-  // (n periods with s/(√n mean) at the bound: n = (s/mean/bound)², the window half the run)
-  if (d.pocket && (unestimated || worst_error > kSettledMeans)) {
+  // (periods_to_settle, the window half the run). The errors are measured against the largest
+  // span mean tension (the tight span's: the loop's working tension, what the chain is sized
+  // by), not each span's own: a slack span's mean of a few newtons would make its relative
+  // error, and the duration asked for, as large as one likes
+  double scale = -std::numeric_limits<double>::infinity();
+  std::size_t scale_span = 0;
+  for (std::size_t k = 0; k < pocket_mean.size(); ++k)
+    if (pocket_mean[k] > scale) {
+      scale = pocket_mean[k];
+      scale_span = k;
+    }
+  const bool unscaled = d.pocket && !unestimated && !(scale > 0.0 && std::isfinite(scale));
+  double worst_error = 0.0, worst_sd = 0.0, settle = 0.0;  // error, s over the scale; periods
+  double worst_rho = 0.0, fewest_effective = 0.0;          // the correlation's effect, if any
+  bool correlated = false;  // every span's correlation estimated (else all taken independent)
+  if (d.pocket && !unestimated && !unscaled) {
+    correlated = true;
+    fewest_effective = std::numeric_limits<double>::infinity();
+    for (const PeriodMeansError& e : pocket_error) {
+      worst_error = std::max(worst_error, e.error / scale);
+      worst_sd = std::max(worst_sd, e.sd / scale);
+      settle = std::max(settle, periods_to_settle(e, scale, kSettledMeans));
+      correlated = correlated && std::isfinite(e.correlation);
+      if (std::isfinite(e.correlation)) worst_rho = std::max(worst_rho, e.correlation);
+      fewest_effective = std::min(fewest_effective, e.effective_periods);
+    }
+  }
+  if (d.pocket && (unestimated || unscaled || worst_error > kSettledMeans)) {
     const double simulated_end = r.time.back();
     std::string message;
     if (sparse) {
@@ -2604,13 +2632,26 @@ Record describe(const Result& r, const analysis::Inputs&) {
                 " s) needs at least 2 output samples; dynamics.output_interval = " +
                 format_g(output_sample, 4) + " s, at most " + format_g(0.5 * period, 4) +
                 " s (half a tooth period) gives them";
+    } else if (unscaled) {
+      message =
+          "the mean span tensions' uncertainty is not measured against a tension: no span's "
+          "mean tension over the window is positive (the largest, span " +
+          std::to_string(scale_span) + "'s, is " + format_g(scale, 4) + " N)";
     } else if (!unestimated) {
-      const double n = std::ceil(std::pow(worst_sd / kSettledMeans, 2));
+      const double n = std::ceil(settle);
+      const std::string correlation =
+          correlated ? "allowing for the periods' lag-1 autocorrelation, up to " +
+                           format_g(worst_rho, 2) + ": at least " + format_g(fewest_effective, 3) +
+                           " effective periods of " + std::to_string(win.periods)
+                     : "the periods' means taken as independent: " + std::to_string(win.periods) +
+                           " periods are too few to estimate their correlation, at least " +
+                           std::to_string(kCorrelationMinPeriods);
       message = "the mean span tensions over the window's " + std::to_string(win.periods) +
                 " tooth periods are uncertain by up to " + format_g(100 * worst_error, 2) +
-                " % (one standard error: the periods' means scatter by " +
-                format_g(100 * worst_sd, 2) +
-                " % of the mean, the loop's response does not repeat with the tooth period); "
+                " % of the largest span mean tension (span " + std::to_string(scale_span) + "'s, " +
+                format_g(scale, 4) + " N; one standard error, " + correlation +
+                "); the periods' means scatter by up to " + format_g(100 * worst_sd, 2) +
+                " % of it (the loop's response does not repeat with the tooth period); "
                 "dynamics.duration = " +
                 format_g(simulated_end, 4) + " s; about " + format_g(2 * n * period, 3) + " s (" +
                 format_g(n, 4) + " periods in the window) would settle them to " +
@@ -2622,7 +2663,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
                 format_g(simulated_end, 4) + " s; more than " + format_g(4 * period, 3) + " s)";
     }
     rec.diagnostics.push_back({Diagnostic::Severity::kWarning, "dynamics.means_not_settled",
-                               message, unestimated ? 0.0 : worst_error, kSettledMeans});
+                               message, unestimated || unscaled ? 0.0 : worst_error,
+                               kSettledMeans});
   }
   // opt-in (positions = true): positions.x[k][i], positions.y[k][i], node i at time[k]
   if (d.positions) {
@@ -2690,8 +2732,10 @@ Record describe(const Result& r, const analysis::Inputs&) {
   j["units"]["mean_speed"] = "rad/s";
   j["units"]["mean_torque"] = "N m";
   for (const char* key : {"mean_tension", "min_tension", "max_tension"}) j["units"][key] = "N";
-  if (d.pocket)
+  if (d.pocket) {
     for (const char* key : {"mean_tension_error", "period_tension_sd"}) j["units"][key] = "N";
+    for (const char* key : {"period_correlation", "effective_periods"}) j["units"][key] = "1";
+  }
   if (d.guides.empty())
     for (const char* key : {"transverse_frequency", "longitudinal_frequency"})
       j["units"][key] = "Hz";
