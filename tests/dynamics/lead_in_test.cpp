@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -15,6 +16,7 @@
 
 #include "catena/dynamics/guide_hint.hpp"
 #include "catena/dynamics/integrator.hpp"
+#include "catena/dynamics/layout.hpp"
 #include "random_guides.hpp"
 #include "two_wheel_loops.hpp"
 
@@ -270,6 +272,133 @@ TEST(DynamicsLeadIn, EnteringRollersRunOnLeadInsWhereTheBareEndsFail) {
         "%.4g N\n",
         rise * 1e3, bare, smooth);
   }
+}
+
+// The lead-in's clearance (lead_in_obstacle, lead_in_limit) against an independent brute force on
+// the 32-link 12B loop of the CLI's lead-in tests (two z = 12 wheels ten pitches apart): random
+// lead-ins (radius 2 mm to 0.15 m, sweep 0.1-90°, start, end or both) on a random level rail under
+// the upper run, with a random post (a straight guide 5-40 mm long, any direction) below it. The
+// check samples the arc and measures to the path's pieces; the brute force turns it round: it
+// samples the path (path_point, every 0.1 mm) and the post (every 0.1 mm) and measures to the arcs.
+// A lead-in is refused exactly when some arc comes closer than a roller radius to a point of the
+// path off the spans the rail carries (those with a point within a roller's diameter of it) or to
+// the post (draws within 2 % of a roller radius of the threshold are left out: the sampling's own
+// error). The limits it names (the radius at the sweep, the sweep at the radius) clear, by the
+// brute force too.
+TEST(DynamicsLeadIn, ClearanceMatchesABruteForceOnRandomLeadIns) {
+  const double p = 0.01905, roller = 0.01207, r = 0.5 * roller, step = 1e-4;
+  const double radius = 0.5 * p / std::sin(kPi / 12);
+  const BeltPath path = belt_path({{0.0, 0.0, radius}, {10 * p, 0.0, radius}}, 0);
+  ASSERT_FALSE(path.pieces.empty());
+  struct Point {
+    double x, y;
+    std::size_t piece;
+  };
+  std::vector<Point> points;  // the path's
+  for (double s = 0.0; s < path.length; s += step) {
+    const PathPoint q = path_point(path, s);
+    points.push_back({q.x, q.y, q.piece});
+  }
+  auto to_segment = [](double x, double y, const Guide& g) {
+    const double ux = g.x1 - g.x0, uy = g.y1 - g.y0;
+    const double t =
+        std::clamp(((x - g.x0) * ux + (y - g.y0) * uy) / (ux * ux + uy * uy), 0.0, 1.0);
+    return std::hypot(x - g.x0 - t * ux, y - g.y0 - t * uy);
+  };
+  // to an arc: to its circle within its sweep, else to the nearer end
+  auto to_arc = [](double x, double y, const Guide& g) {
+    const double a = std::atan2(y - g.centre_y, x - g.centre_x);
+    for (const double turn : {-2 * kPi, 0.0, 2 * kPi})
+      if (a + turn >= g.start_angle && a + turn <= g.end_angle)
+        return std::abs(std::hypot(x - g.centre_x, y - g.centre_y) - g.radius);
+    return std::min(std::hypot(x - g.centre_x - g.radius * std::cos(g.start_angle),
+                               y - g.centre_y - g.radius * std::sin(g.start_angle)),
+                    std::hypot(x - g.centre_x - g.radius * std::cos(g.end_angle),
+                               y - g.centre_y - g.radius * std::sin(g.end_angle)));
+  };
+  std::mt19937_64 rng(21);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  int accepted = 0, by_path = 0, by_post = 0;
+  for (int trial = 0; trial < 250; ++trial) {
+    Guide upper = inclined_rail(0.0);
+    upper.y0 = upper.y1 = radius - r - 1e-3 * u01(rng);  // the rollers 0-1 mm above it
+    upper.x0 = 0.12 * u01(rng) - 0.01;
+    upper.x1 = upper.x0 + 0.02 + (0.2 - upper.x0) * u01(rng);
+    Guide post = inclined_rail(0.0);
+    post.x0 = -0.06 + 0.32 * u01(rng);
+    post.y0 = -0.04 + 0.07 * u01(rng);
+    const double length = 0.005 + 0.035 * u01(rng), direction = 2 * kPi * u01(rng);
+    post.x1 = post.x0 + length * std::cos(direction);
+    post.y1 = post.y0 + length * std::sin(direction);
+    LeadIn lead;
+    lead.radius = 0.002 * std::pow(0.15 / 0.002, u01(rng));
+    lead.angle = (0.1 + 89.9 * u01(rng)) * kPi / 180.0;
+    const int ends = static_cast<int>(3 * u01(rng));
+    lead.at_start = ends != 1;
+    lead.at_end = ends != 0;
+    const std::vector<Guide> arcs = lead_in_arcs(upper, lead);
+    ASSERT_FALSE(arcs.empty());
+    std::vector<Guide> guides{upper, post};
+    guides.insert(guides.end(), arcs.begin(), arcs.end());
+    std::vector<std::size_t> skip{0};
+    for (std::size_t k = 0; k < arcs.size(); ++k) skip.push_back(2 + k);
+    bool blocked = false;
+    std::string names;
+    for (const Guide& arc : arcs) {
+      const std::string what = lead_in_obstacle(path, upper, arc, guides, skip, roller);
+      blocked = blocked || !what.empty();
+      names += what + " ";
+    }
+    // the brute force: the pieces the rail carries, then the nearest approach of the path's
+    // points (off those) and of the post's to the arcs
+    std::vector<bool> carried(path.pieces.size(), false);
+    for (const Point& q : points)
+      if (!path.pieces[q.piece].arc && to_segment(q.x, q.y, upper) < roller)
+        carried[q.piece] = true;
+    struct Nearest {
+      double path = INFINITY, post = INFINITY;
+    };
+    auto nearest = [&](const std::vector<Guide>& laid) {
+      Nearest n;
+      for (const Guide& arc : laid) {
+        for (const Point& q : points)
+          if (!carried[q.piece]) n.path = std::min(n.path, to_arc(q.x, q.y, arc));
+        for (double t = 0.0; t <= 1.0; t += step / length)
+          n.post = std::min(n.post, to_arc(post.x0 + t * (post.x1 - post.x0),
+                                           post.y0 + t * (post.y1 - post.y0), arc));
+      }
+      return n;
+    };
+    const Nearest n = nearest(arcs);
+    if (std::abs(n.path - r) < 0.02 * r || std::abs(n.post - r) < 0.02 * r) continue;
+    EXPECT_EQ(blocked, n.path < r || n.post < r)
+        << "trial " << trial << ": R = " << lead.radius << " m, " << lead.angle * 180 / kPi
+        << " deg, nearest " << n.path * 1e3 << " mm (path), " << n.post * 1e3 << " mm (post), "
+        << names;
+    if (!blocked) {
+      ++accepted;
+      continue;
+    }
+    by_path += n.path < r;
+    by_post += n.post < r;
+    // the limits named clear (by the brute force too)
+    const LeadInLimit most = lead_in_limit(path, upper, lead, guides, skip, roller);
+    EXPECT_LT(most.radius, lead.radius) << trial;
+    EXPECT_LT(most.angle, lead.angle) << trial;
+    LeadIn smaller = lead, shorter = lead;
+    smaller.radius = most.radius;
+    shorter.angle = most.angle;
+    for (const LeadIn& at : {smaller, shorter}) {
+      if (!validate(at).empty()) continue;  // none clears
+      const Nearest clear = nearest(lead_in_arcs(upper, at));
+      EXPECT_GT(std::min(clear.path, clear.post), 0.98 * r) << "trial " << trial;
+    }
+  }
+  std::printf("lead-ins: %d accepted; refused: %d by the chain's path, %d by the post\n", accepted,
+              by_path, by_post);
+  EXPECT_GE(accepted, 50);
+  EXPECT_GE(by_path, 30);
+  EXPECT_GE(by_post, 8);
 }
 
 }  // namespace

@@ -132,6 +132,29 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
                        const std::vector<Circle>& circles, const std::vector<double>& tip,
                        const std::vector<Guide>& guides, double roller, double pitch);
 
+/// What the lead-in arc `arc` laid at an end of the straight guide `rail` (`lead_in_arcs`) runs
+/// into, as a name; empty when clear (docs/models/dynamics.md, "Lead-ins"). Sampled along the
+/// arc's surface (at least 512 samples, at most a quarter roller apart): the chain's path `path`
+/// closer than `roller`/2 (a roller's centre on it would be in the arc's contact), a wheel's wrap
+/// named "the chain on sprocket[w]", a span "the span sprocket[a] -> sprocket[b]", but for the
+/// spans the rail carries (a point within `roller` of its segment: the arc bends away from
+/// them); and a guide of `guides` closer than `roller`/2 ("guide[g]"), but for those whose index is
+/// in `skip` (the rail and its own arcs).
+std::string lead_in_obstacle(const BeltPath& path, const Guide& rail, const Guide& arc,
+                             const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
+                             double roller);
+
+/// The largest lead-in radius at `lead`'s sweep, and the largest sweep at its radius, whose arcs
+/// (`lead_in_arcs`) are all clear (`lead_in_obstacle`): `lead`'s own values when they are, else
+/// by bisection to 1e-6 of them from 0 (0: none clears).
+struct LeadInLimit {
+  double radius = 0.0;  ///< [m]
+  double angle = 0.0;   ///< [rad]
+};
+LeadInLimit lead_in_limit(const BeltPath& path, const Guide& rail, const LeadIn& lead,
+                          const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
+                          double roller);
+
 /// The path with span `piece` laid as a circular arc of its chord plus `extra` (> 0), bulging
 /// outward (to the right of the travel), between the same tangent points; the other pieces and the
 /// wheels unchanged. Empty (no pieces) if `piece` is not a span or the arc would exceed a half

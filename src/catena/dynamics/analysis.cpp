@@ -896,6 +896,27 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
   }
 }
 
+// The chain's path at the start (docs/models/dynamics.md, "Command"): the free layout's (with its
+// sagging spans on a start with slack), or that of the two equal wheels on a line as the run lays
+// them (their centres m pitches apart, m = (N − z)/2; a pocket chain's 2m, m = (N − 2z)/4); empty
+// when the geometry is not known.
+BeltPath starting_path(const Setup& s) {
+  if (s.layout()) return s.slack > 0.0 ? s.laid : s.path;
+  const int z = s.teeth;
+  if (z < 3 || !(s.pitch > 0.0) || !std::isfinite(s.pitch)) return {};
+  const int m = s.pocket ? (s.links - 2 * z) / 4 : (s.links - z) / 2;
+  const double radius = s.pocket ? s.pocket_radius : 0.5 * s.pitch / std::sin(kPi / z);
+  if (m < 1 || !(radius > 0.0) || !std::isfinite(radius)) return {};
+  return belt_path({{0.0, 0.0, radius}, {(s.pocket ? 2 * m : m) * s.pitch, 0.0, radius}}, 0);
+}
+
+// x rounded down to `digits` significant digits (a limit named so that the value named is inside).
+double down_to(double x, int digits) {
+  if (!(x > 0.0) || !std::isfinite(x)) return x;
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - (digits - 1));
+  return std::floor(x / unit * (1.0 + 1e-12)) * unit;
+}
+
 Setup parse(const analysis::Inputs& in) {
   const InputValue& file = in.at("dynamics");
   std::vector<Issue> issues;
@@ -1531,6 +1552,15 @@ Setup parse(const analysis::Inputs& in) {
   // the guides: kind and its geometry, all present; then the core's checks (named per field)
   std::vector<Guide> lead_arcs;
   std::vector<std::string> lead_names;
+  // each rail's lead-in, checked against the chain's path and the other guides once every guide
+  // is read: the rail's index in s.guides, its arcs' first index in lead_arcs and their count
+  struct LeadInRail {
+    std::string field;
+    std::size_t file = 0, rail = 0, first = 0, count = 0;
+    bool placed = false;  // the rail was read whole (else its problems are named already)
+    LeadIn lead;
+  };
+  std::vector<LeadInRail> lead_rails;
   for (std::size_t i = 0; i < guides.size(); ++i) {
     const GuideInput& g = guides[i];
     const std::string base = "dynamics.guide[" + std::to_string(i) + "].";
@@ -1621,9 +1651,11 @@ Setup parse(const analysis::Inputs& in) {
       // chord longer than N p / 2 (the way back is at least as long), so an arc whose chord
       // 2 R sin(α/2) is longer cannot be a run of this chain: at most R = N p / (4 sin(α/2))
       const double chain_length = s.links * s.pitch;
+      bool bounded = false;  // within the bound (then checked against the path below)
       if (lead_issues.empty() && chain_length > 0.0 && std::isfinite(chain_length)) {
         const double most = chain_length / (4.0 * std::sin(0.5 * lead.angle));
-        if (lead.radius > most)
+        bounded = !(lead.radius > most);
+        if (!bounded)
           issues.push_back(
               {field("lead_in_radius"), shown(lead.radius) + " m",
                "a lead-in radius 0 < R <= " + format_g(most, 4) + " m at lead_in_angle " +
@@ -1635,6 +1667,8 @@ Setup parse(const analysis::Inputs& in) {
       }
       lead_ins = lead_in_arcs(guide, lead);
       lead_ins_at_start = lead.at_start;
+      if (!lead_ins.empty() && bounded)
+        lead_rails.push_back({field("lead_in_radius"), i, 0, 0, 0, false, lead});
     }
     if (!readable || !(s.roller > 0.0) || std::isnan(guide.contact_stiffness) ||
         std::isnan(guide.contact_damping))
@@ -1651,6 +1685,12 @@ Setup parse(const analysis::Inputs& in) {
       issues.push_back({field(key == "end" ? "x1" : key), issue.value, issue.expected});
     }
     if (complete) {
+      if (!lead_rails.empty() && lead_rails.back().file == i) {
+        lead_rails.back().rail = s.guides.size();
+        lead_rails.back().first = lead_arcs.size();
+        lead_rails.back().count = lead_ins.size();
+        lead_rails.back().placed = true;
+      }
       s.guides.push_back(guide);
       s.guide_names.push_back("guide[" + std::to_string(i) + "]");
       lead_arcs.insert(lead_arcs.end(), lead_ins.begin(), lead_ins.end());
@@ -1663,8 +1703,46 @@ Setup parse(const analysis::Inputs& in) {
     }
   }
   // the lead-in arcs after the guides as given (which keep their numbers)
+  const std::size_t given_guides = s.guides.size();
   s.guides.insert(s.guides.end(), lead_arcs.begin(), lead_arcs.end());
   s.guide_names.insert(s.guide_names.end(), lead_names.begin(), lead_names.end());
+  // a lead-in's arcs clear of the chain's path and of the other guides (docs/models/dynamics.md,
+  // "Lead-ins"): refused naming what they run into and the largest radius (and sweep) that clears
+  const BeltPath chain_path = lead_rails.empty() ? BeltPath{} : starting_path(s);
+  for (const LeadInRail& lr : lead_rails) {
+    if (chain_path.pieces.empty()) break;
+    if (!lr.placed) continue;
+    const Guide& rail = s.guides[lr.rail];
+    std::vector<std::size_t> skip{lr.rail};
+    for (std::size_t k = 0; k < lr.count; ++k) skip.push_back(given_guides + lr.first + k);
+    std::string runs_into;
+    for (std::size_t k = 0; k < lr.count; ++k) {
+      const std::size_t arc = given_guides + lr.first + k;
+      const std::string blocked =
+          lead_in_obstacle(chain_path, rail, s.guides[arc], s.guides, skip, s.roller);
+      if (blocked.empty()) continue;
+      runs_into += std::string(runs_into.empty() ? "" : "; ") + s.guide_names[arc] +
+                   " would run into " + guide_named(s, blocked);
+    }
+    if (runs_into.empty()) continue;
+    const LeadInLimit most = lead_in_limit(chain_path, rail, lr.lead, s.guides, skip, s.roller);
+    constexpr double kLeastAngle = 0.1 * std::numbers::pi / 180.0;  // validate(LeadIn)'s
+    const double deg = 180.0 / std::numbers::pi;
+    const std::string angle = format_g(lr.lead.angle * deg, 4) + " deg";
+    const double radius = down_to(most.radius, 4);
+    const double sweep = down_to(most.angle * deg, 4);
+    issues.push_back(
+        {lr.field, shown(lr.lead.radius) + " m",
+         (radius > 0.0
+              ? "a lead-in radius 0 < R <= " + format_g(radius, 4) + " m at lead_in_angle " + angle
+              : "no lead-in radius at lead_in_angle " + angle) +
+             (most.angle >= kLeastAngle
+                  ? " (or lead_in_angle <= " + format_g(sweep, 4) + " deg at this radius)"
+                  : "") +
+             ": its arcs a roller radius (" + format_g(0.5 * s.roller * 1e3, 4) +
+             " mm) clear of the chain's path round the wheels and of the other guides (here " +
+             runs_into + ")"});
+  }
   // a start with slack: the sagging span must clear the guides too (docs/models/dynamics.md,
   // "A start with slack")
   if (s.slack > 0.0 && !s.guides.empty()) {

@@ -95,6 +95,12 @@ double arc_distance(double x, double y, double cx, double cy, double radius, dou
                   std::hypot(x - cx - radius * std::cos(a1), y - cy - radius * std::sin(a1)));
 }
 
+// The distance from (x, y) to a guide's surface: its segment, or its arc (`arc_distance`).
+double guide_distance(const Guide& g, double x, double y) {
+  if (g.kind == Guide::Kind::kStraight) return segment_distance(x, y, g.x0, g.y0, g.x1, g.y1);
+  return arc_distance(x, y, g.centre_x, g.centre_y, g.radius, g.start_angle, g.end_angle);
+}
+
 // Appends to `path` the arc on wheel `w` from the chain's angle `from` turning by `wrap` in
 // `sense` (+1 counter-clockwise, −1 on the back), then the span from its end to wheel `to` at the
 // tangent's normal angle `normal` (the point at the signed radius there), each placed at `along`
@@ -484,19 +490,6 @@ std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
   const double want = std::ceil(q.length / (0.25 * roller));
   const auto samples =
       static_cast<int>(want > 512.0 ? (want < kMaxSagSamples ? want : kMaxSagSamples) : 512.0);
-  // the distance from (x, y) to a guide's surface
-  auto to_guide = [](const Guide& g, double x, double y) {
-    if (g.kind == Guide::Kind::kStraight) return segment_distance(x, y, g.x0, g.y0, g.x1, g.y1);
-    const double a = std::atan2(y - g.centre_y, x - g.centre_x) - g.start_angle;
-    const double along = a - kTwoPi * std::floor(a / kTwoPi);
-    if (along <= g.end_angle - g.start_angle)
-      return std::abs(std::hypot(x - g.centre_x, y - g.centre_y) - g.radius);
-    double best = INFINITY;
-    for (const double e : {g.start_angle, g.end_angle})
-      best = std::min(best, std::hypot(x - g.centre_x - g.radius * std::cos(e),
-                                       y - g.centre_y - g.radius * std::sin(e)));
-    return best;
-  };
   // inside the circular segment the sag sweeps (between the chord and the arc): the segments of
   // a growing sag are nested, so an obstacle once inside stays inside
   const double ux = q.x1 - q.x0, uy = q.y1 - q.y0, chord = std::hypot(ux, uy);
@@ -541,7 +534,7 @@ std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
         return wheel_name(w) + "'s teeth";
     }
     for (std::size_t g = 0; g < guides.size(); ++g)
-      if (to_guide(guides[g], x, y) < 0.5 * roller) return "guide[" + std::to_string(g) + "]";
+      if (guide_distance(guides[g], x, y) < 0.5 * roller) return "guide[" + std::to_string(g) + "]";
     const double along = q.length * j / samples;
     if (along < pitch || along > q.length - pitch) continue;
     for (std::size_t k = 0; k < laid.pieces.size(); ++k) {
@@ -610,6 +603,76 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
   };
   // every share reaches its half circle together: (π/2 − 1) of the total, a hair inside
   return largest_clear_extra((0.5 * kPi - 1.0) * total * (1.0 - 1e-9), total, clear);
+}
+
+std::string lead_in_obstacle(const BeltPath& path, const Guide& rail, const Guide& arc,
+                             const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
+                             double roller) {
+  const double r = 0.5 * roller;
+  // the spans the rail carries: a point within a roller's diameter of its segment (the rollers
+  // riding on it); the arc bends away from them
+  std::vector<bool> carried(path.pieces.size(), false);
+  for (std::size_t k = 0; k < path.pieces.size(); ++k) {
+    const PathPiece& q = path.pieces[k];
+    for (int j = 0; !q.arc && !carried[k] && j <= 256; ++j) {
+      const double a = q.from + (q.to - q.from) * j / 256.0;
+      const double x = q.sag ? q.cx + q.radius * std::cos(a) : q.x0 + (q.x1 - q.x0) * j / 256.0;
+      const double y = q.sag ? q.cy + q.radius * std::sin(a) : q.y0 + (q.y1 - q.y0) * j / 256.0;
+      carried[k] = segment_distance(x, y, rail.x0, rail.y0, rail.x1, rail.y1) < roller;
+    }
+  }
+  // a quarter roller apart along the arc's surface, at least 512 and at most kMaxSagSamples
+  const double sweep = arc.end_angle - arc.start_angle;
+  const double want = std::ceil(arc.radius * sweep / (0.25 * roller));
+  const auto samples =
+      static_cast<int>(want > 512.0 ? (want < kMaxSagSamples ? want : kMaxSagSamples) : 512.0);
+  for (int j = 0; j <= samples; ++j) {
+    const double a = arc.start_angle + sweep * j / samples;
+    const double x = arc.centre_x + arc.radius * std::cos(a);
+    const double y = arc.centre_y + arc.radius * std::sin(a);
+    for (std::size_t k = 0; k < path.pieces.size(); ++k) {
+      if (carried[k]) continue;
+      const PathPiece& q = path.pieces[k];
+      // a wheel's wrap (clockwise on the back: its angles the other way round), a sagging span's
+      // arc, a straight span
+      const double gap = q.arc   ? arc_distance(x, y, q.cx, q.cy, q.radius, std::min(q.from, q.to),
+                                                std::max(q.from, q.to))
+                         : q.sag ? arc_distance(x, y, q.cx, q.cy, q.radius, q.from, q.to)
+                                 : segment_distance(x, y, q.x0, q.y0, q.x1, q.y1);
+      if (gap < r)
+        return q.arc ? "the chain on " + wheel_name(q.wheel)
+                     : "the span " + wheel_name(q.wheel) + " -> " + wheel_name(q.next);
+    }
+    for (std::size_t g = 0; g < guides.size(); ++g) {
+      if (std::find(skip.begin(), skip.end(), g) != skip.end()) continue;
+      if (guide_distance(guides[g], x, y) < r) return "guide[" + std::to_string(g) + "]";
+    }
+  }
+  return {};
+}
+
+LeadInLimit lead_in_limit(const BeltPath& path, const Guide& rail, const LeadIn& lead,
+                          const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
+                          double roller) {
+  auto clear = [&](const LeadIn& trial) {
+    for (const Guide& arc : lead_in_arcs(rail, trial))
+      if (!lead_in_obstacle(path, rail, arc, guides, skip, roller).empty()) return false;
+    return true;
+  };
+  LeadInLimit out;
+  // the radius at the sweep given (the arcs are not nested in R: bisected from 0, where the
+  // arc shrinks to the rail's end), and the sweep at the radius given (nested: exact)
+  out.radius = largest_clear_extra(lead.radius, lead.radius, [&](double radius) {
+    LeadIn trial = lead;
+    trial.radius = radius;
+    return clear(trial);
+  });
+  out.angle = largest_clear_extra(lead.angle, lead.angle, [&](double angle) {
+    LeadIn trial = lead;
+    trial.angle = angle;
+    return clear(trial);
+  });
+  return out;
 }
 
 std::vector<std::size_t> sagging_spans(const BeltPath& path) {
