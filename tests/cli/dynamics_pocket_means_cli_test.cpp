@@ -82,8 +82,9 @@ std::string perturbed_example() {
 }
 
 TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
-  // 10 s: the window holds 31 tooth periods (measured: 1971.2 ± 47.5 and 1346.6 ± 46.9 N at
-  // h = 0.1 ms, 1848.3 ± 34.2 and 1228.9 ± 33.5 N at 0.05 ms: 2.1 and 2.0 combined errors)
+  // 10 s: the window holds 31 tooth periods (measured with the tension-only links: 1945.3 ± 46.1
+  // and 1321.9 ± 45.6 N at h = 0.1 ms, 1953.5 ± 42.0 and 1330.3 ± 41.9 N at 0.05 ms: 0.13 and
+  // 0.14 combined errors; with the bilateral links 2.1 and 2.0)
   const auto a = dynamics(kExample, "--duration 10s --step 0.1ms");
   const auto b = dynamics(kExample, "--duration 10s --step 0.05ms");
   ASSERT_FALSE(a.is_null() || b.is_null());
@@ -97,8 +98,9 @@ TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
       EXPECT_NEAR(sum["mean_tension"].get<double>(), s.mean, 1e-9 * s.mean);
       EXPECT_NEAR(sum["period_tension_sd"].get<double>(), s.sd, 1e-9 * s.sd);
       EXPECT_NEAR(sum["mean_tension_error"].get<double>(), s.error, 1e-9 * s.error);
-      // the cause, pinned: the periods' means scatter (measured 10-19 % of the mean over these
-      // 10 s, 12-22 % over 20 s); a loop whose response repeated with the tooth period would
+      // the cause, pinned: the periods' means scatter (measured 12-19 % of the mean over these
+      // 10 s with the tension-only links, 10-19 % with the bilateral ones, 12-22 % over 20 s); a
+      // loop whose response repeated with the tooth period would
       // have s ≈ 0
       EXPECT_GT(s.sd, 0.05 * s.mean) << key;
     }
@@ -108,7 +110,7 @@ TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
         << sb.error;
   }
   // what the spans carry converges closer than their level: the load (tight − slack; measured
-  // 624.6 and 619.3 N, 0.86 %) and the driven wheel's torque (100.014 and 99.982 N m)
+  // 623.4 and 623.2 N) and the driven wheel's torque (99.959 and 99.994 N m)
   auto load = [](const nlohmann::json& j) {
     return j["summary"]["span_0"]["mean_tension"].get<double>() -
            j["summary"]["span_1"]["mean_tension"].get<double>();
@@ -127,8 +129,8 @@ TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
 
 TEST(DynamicsPocketMeansCli, ExampleMovesWithAPretensionFarBelowTheTolerance) {
   // the 1 s example and the same with the pretension 1e-9 larger (1 µN): the 3-period means move
-  // by more than 1 % (measured 1959.3 → 1937.5 N, 1342.3 → 1316.2 N), of the order of their
-  // standard error (163, 167 N) — as halving the step moves them (to 1859.5 and 1234.8 N)
+  // by more than 1 % (measured 1856.5 → 1943.5 N, 1233.7 → 1321.4 N), of the order of their
+  // standard error (46, 44 N) — as halving the step moves them (to 1789.2 and 1168.5 N)
   const auto a = dynamics(kExample, "");
   const auto b = dynamics(perturbed_example(), "");
   ASSERT_FALSE(a.is_null() || b.is_null());
