@@ -223,8 +223,9 @@ TEST(DynamicsTensionOnlyLinks, NodesPushedTogetherFeelNoForce) {
 // A mass on a slack-able link: node 0 pinned, node 1 (0.42 kg) thrown outward at 0.1 m/s from the
 // rest length, gravity pulling it away from the pin (9.81 m/s²). The link stretches, throws the
 // mass back, goes slack (the mass flies free towards the pin until gravity turns it) and catches
-// it again, over and over. The tension never goes below 0 (the bilateral law: −6 N·… it
-// oscillates through compression), the link goes slack, and at θ = ½ the work balance closes:
+// it again, over and over. The tension never goes below 0 (the bilateral law keeps the mass
+// oscillating about the rest length, through compression), the link goes slack, and at θ = ½ the
+// work balance closes:
 // ΔE = the damper's work + a numerical rest that is small against it (the ramp's steps are not a
 // discrete gradient).
 TEST(DynamicsTensionOnlyLinks, BouncingOnASlackLinkClosesItsWorkBalance) {
