@@ -117,7 +117,7 @@ TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
         << sb.e.error;
   }
   // what the spans carry converges closer than their level: the load (tight − slack; measured
-  // 624.6 and 619.3 N, 0.86 %) and the driven wheel's torque (100.014 and 99.982 N m)
+  // 623.4 and 623.2 N) and the driven wheel's torque (99.959 and 99.994 N m)
   auto load = [](const nlohmann::json& j) {
     return j["summary"]["span_0"]["mean_tension"].get<double>() -
            j["summary"]["span_1"]["mean_tension"].get<double>();
@@ -139,8 +139,8 @@ TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
 
 TEST(DynamicsPocketMeansCli, ExampleMovesWithAPretensionFarBelowTheTolerance) {
   // the 1 s example and the same with the pretension 1e-9 larger (1 µN): the 3-period means move
-  // by more than 1 % (measured 1959.3 → 1937.5 N, 1342.3 → 1316.2 N), of the order of their
-  // standard error (163, 167 N) — as halving the step moves them (to 1859.5 and 1234.8 N)
+  // by more than 1 % (measured 1856.5 → 1943.5 N, 1233.7 → 1321.4 N), of the order of their
+  // standard error (46, 44 N) — as halving the step moves them (to 1789.2 and 1168.5 N)
   const auto a = dynamics(kExample, "");
   const auto b = dynamics(perturbed_example(), "");
   ASSERT_FALSE(a.is_null() || b.is_null());

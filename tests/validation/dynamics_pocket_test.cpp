@@ -45,6 +45,9 @@ struct PocketRun {
   double theta = 0.6;
   int periods = 4;
   int skip_periods = 1;
+  // round links carry no compression (Model::links_carry_compression; docs/models/dynamics.md,
+  // "Tension-only links"), as in the command
+  bool tension_only = true;
 };
 
 struct Measured {
@@ -68,6 +71,7 @@ Measured simulate(const PocketRun& d, int bins) {
   const auto n = static_cast<std::size_t>(c + 1 + d.wrapped);
   Model model = uniform_chain(n, false, d.pitch, d.node_mass, d.stiffness, d.damping, false);
   model.alternation = d.wire;
+  model.links_carry_compression = !d.tension_only;
   model.sprockets = {w};
   model.loads = {{.node = 0, .fx = -d.force, .fy = 0.0}};
   State s(n, 1);
@@ -280,6 +284,7 @@ Forced forced_run_on(const PocketRun& d, pocketwheel::GuideKind kind, double end
   const auto n = static_cast<std::size_t>(c + 1 + d.wrapped);
   Model model = uniform_chain(n, false, d.pitch, d.node_mass, d.stiffness, d.damping, false);
   model.alternation = d.wire;
+  model.links_carry_compression = !d.tension_only;
   model.sprockets = {w};
   model.loads = {{.node = 0, .fx = -d.force, .fy = 0.0}};
   // two rails holding the joints on y = H up to the guide's end: the lower carries them on top,

@@ -262,6 +262,16 @@ struct Model {
   /// pocket wheel: the joint polygon's sides t + d and t − d, a = d); 0 = every link p
   double alternation = 0.0;
   HingeFriction hinge;  ///< friction in every hinge; arm 0 = frictionless
+  /// true (the default): every link is the bilateral spring–damper above, pushing as it pulls (a
+  /// roller chain's plates carry compression). false: a tension-only link (a round link, whose
+  /// neighbour slides inside the ring when the joints come closer than its inner length;
+  /// docs/models/dynamics.md, "Tension-only links"): the tension is link_force's, never negative.
+  /// Hinge friction needs the bilateral links (validated).
+  bool links_carry_compression = true;
+  /// [m] ε of a tension-only link: its spring's tension rises as k (s + ε/2)²/2ε over
+  /// −ε/2 < s < ε/2 (s = l − rest length) and is k s beyond, 0 below, and its damper ramps in
+  /// over the same ε (link_force); unused with links_carry_compression
+  double link_smoothing = 1e-6;
 
   std::size_t nodes() const { return mass.size(); }
   /// Links: N in a closed loop, N − 1 in an open chain.
@@ -275,8 +285,50 @@ struct Model {
 
 /// Every problem with the model, fields "nodes", "pitch", "axial_stiffness", "axial_damping",
 /// "drag", "gravity", "mass", "pinned", "sprocket[i].<field>", "guide[i].<field>",
-/// "load[i].node", "load[i].force", "hinge.arm", "hinge.rate_band".
+/// "load[i].node", "load[i].force", "hinge.arm", "hinge.rate_band", "link_smoothing",
+/// "links_carry_compression".
 std::vector<Issue> validate(const Model& model);
+
+/// One link's law at the stretch s = l − rest length and the rate ṡ = l̇ (docs/models/dynamics.md,
+/// "Model" and "Tension-only links").
+struct LinkForce {
+  double tension = 0.0;    ///< [N] T, along the link (pulling its two nodes together when > 0)
+  double elastic = 0.0;    ///< [N] the spring's part T_e(s) = dE/ds (T − T_e is the damper's)
+  double stiffness = 0.0;  ///< [N/m] ∂T/∂s
+  double damping = 0.0;    ///< [N·s/m] ∂T/∂ṡ
+  double energy = 0.0;     ///< [J] E(s), the spring's energy
+};
+
+/// The bilateral link (Model::links_carry_compression): T = k s + c ṡ, E = ½ k s². The
+/// tension-only link: with u = s + ε/2 (ε = Model::link_smoothing), T_e = 0 for u ≤ 0,
+/// k u²/2ε for 0 < u < ε, k s for u ≥ ε — C¹, ≥ 0, and equal to the bilateral spring in tension
+/// beyond s = ε/2 — with E = k u³/6ε, then ½ k s² + k ε²/24; the damper c r ṡ with r = u/ε
+/// ramped in over the same ε (the seats' gating), and T = 0 wherever T_e + c r ṡ ≤ 0 (a link
+/// shortening faster than its spring pulls goes slack: it never pushes).
+inline LinkForce link_force(const Model& model, double s, double rate) {
+  const double k = model.axial_stiffness, c = model.axial_damping;
+  LinkForce out;
+  if (model.links_carry_compression) {
+    out.elastic = k * s;
+    out.tension = k * s + c * rate;
+    out.stiffness = k;
+    out.damping = c;
+    out.energy = 0.5 * k * s * s;
+    return out;
+  }
+  const double eps = model.link_smoothing, u = s + 0.5 * eps;
+  if (!(u > 0.0)) return out;  // slack: the joints closer than the rest length less ε/2
+  const bool ramp = u < eps;
+  out.elastic = ramp ? k * u * u / (2.0 * eps) : k * s;
+  out.energy = ramp ? k * u * u * u / (6.0 * eps) : 0.5 * k * s * s + k * eps * eps / 24.0;
+  const double r = ramp ? u / eps : 1.0;
+  const double tension = out.elastic + c * r * rate;
+  if (!(tension > 0.0)) return out;  // shortening faster than the spring pulls: slack
+  out.tension = tension;
+  out.stiffness = (ramp ? k * u / eps : k) + (ramp ? c * rate / eps : 0.0);
+  out.damping = c * r;
+  return out;
+}
 
 /// N nodes of equal mass; an open chain gets its two end nodes pinned when `pin_ends`.
 Model uniform_chain(std::size_t nodes, bool closed, double pitch, double node_mass,
@@ -324,7 +376,8 @@ std::vector<Issue> validate(const Model& model, const State& state);
 struct Energy {
   /// [J] Σ ½ m v² + Σ ½ J ω² (driven sprockets) + Σ ½ m_t ṡ² (take-ups)
   double kinetic = 0.0;
-  /// [J] Σ ½ k (l − p)² + the seat and guide contacts' energies + Σ ½ k_t s² (take-ups)
+  /// [J] Σ ½ k (l − p)² (a tension-only link: link_force's E) + the seat and guide contacts'
+  /// energies + Σ ½ k_t s² (take-ups)
   double elastic = 0.0;
   /// [J] −Σ m g·x − Σ f·x (gravity and node loads) − Σ (F₀ + m_t g·e) s (take-ups)
   double potential = 0.0;
@@ -511,7 +564,8 @@ struct SeatFriction {
 SeatFriction seat_friction(const Sprocket& w, const SeatContact& c, double x, double y, double vx,
                            double vy, double speed);
 
-/// [N] the tension of each link, k (l − p) + c l̇ (size links()).
+/// [N] the tension of each link, k (l − p) + c l̇ (a tension-only link: link_force's T, ≥ 0)
+/// (size links()).
 void link_tensions(const Model& model, const State& state, std::span<double> tension);
 
 }  // namespace catena::dynamics

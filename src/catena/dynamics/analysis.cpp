@@ -2070,7 +2070,12 @@ Result run(const analysis::Inputs& in) {
   const double rest = (d.layout() ? d.laid_pitch : d.pitch) - d.pretension / d.stiffness;
   Model model =
       uniform_chain(n, true, rest, d.mass_per_metre * d.pitch, d.stiffness, d.damping, false);
-  if (d.pocket) model.alternation = d.wire;
+  if (d.pocket) {
+    model.alternation = d.wire;
+    // round links: the next link slides inside the ring, no compression (docs/models/dynamics.md,
+    // "Tension-only links")
+    model.links_carry_compression = false;
+  }
   const double centre = (d.pocket ? 2 * m : m) * d.pitch;
   std::vector<Sprocket> wheels;
   if (d.layout()) wheels = layout_sprockets(d);

@@ -32,6 +32,13 @@ std::vector<Issue> validate(const Model& model) {
     out.push_back({"axial_damping", check::format_si(model.axial_damping, "N*s/m"),
                    "a finite value >= 0 N*s/m"});
   }
+  if (!model.links_carry_compression) {
+    check::finite_positive(out, "link_smoothing", model.link_smoothing, "m");
+    if (model.hinge.active())
+      out.push_back({"links_carry_compression", "false",
+                     "true with hinge friction (the hinges' load of tension-only links is not "
+                     "built)"});
+  }
   if (!std::isfinite(model.drag) || model.drag < 0.0) {
     out.push_back({"drag", check::format_si(model.drag, "1/s"), "a finite value >= 0 1/s"});
   }
@@ -976,7 +983,7 @@ Energy energy(const Model& model, const State& state) {
     const std::size_t b = (j + 1) % n;
     const double stretch =
         std::hypot(state.x[b] - state.x[j], state.y[b] - state.y[j]) - model.rest_length(j);
-    e.elastic += 0.5 * model.axial_stiffness * stretch * stretch;
+    e.elastic += link_force(model, stretch, 0.0).energy;
   }
   return e;
 }
@@ -988,7 +995,7 @@ void link_tensions(const Model& model, const State& state, std::span<double> ten
     const double dx = state.x[b] - state.x[j], dy = state.y[b] - state.y[j];
     const double l = std::hypot(dx, dy);
     const double rate = (dx * (state.vx[b] - state.vx[j]) + dy * (state.vy[b] - state.vy[j])) / l;
-    tension[j] = model.axial_stiffness * (l - model.rest_length(j)) + model.axial_damping * rate;
+    tension[j] = link_force(model, l - model.rest_length(j), rate).tension;
   }
 }
 

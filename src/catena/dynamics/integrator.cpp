@@ -256,6 +256,34 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     len1[j] = l1;
     const double lt = (1.0 - th) * l0 + th * l1;
     const double mx = (1.0 - th) * d0x + th * d1x, my = (1.0 - th) * d0y + th * d1y;
+    if (!model.links_carry_compression) {
+      // A tension-only link (docs/models/dynamics.md, "Tension-only links"): link_force's T at the
+      // θ point's stretch and the step's rate; the damper's share T − T_e does the work
+      // −(T − T_e) d_θ·(d₁ − d₀)/l_θ (−T_e there where T is clamped at 0, as the seats' damper).
+      const double p = model.rest_length(j);
+      const LinkForce law = link_force(model, lt - p, (l1 - l0) / h);
+      damper_work -= (law.tension - law.elastic) * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
+      if (report_only) continue;  // (no hinges: validated)
+      const double phi = law.tension / lt;
+      const double fx = h * phi * mx, fy = h * phi * my;
+      rhs[a].x += fx;
+      rhs[a].y += fy;
+      rhs[b].x -= fx;
+      rhs[b].y -= fy;
+      if (!jacobian) continue;
+      // as below, with ∂T/∂l₁ = θ ∂T/∂s + (∂T/∂ṡ)/h (0 on a slack link)
+      const double dphi = ((th * law.stiffness + law.damping / h) - th * phi) / lt;
+      const double gx = l1 > 0.0 ? dphi * d1x / l1 : 0.0;
+      const double gy = l1 > 0.0 ? dphi * d1y / l1 : 0.0;
+      const Mat2 hA{h * (th * phi + mx * gx), h * mx * gy, h * my * gx, h * (th * phi + my * gy)};
+      Mat2& daa = diag[a];
+      Mat2& dbb = diag[b];
+      daa = {daa.a + hA.a, daa.b + hA.b, daa.c + hA.c, daa.d + hA.d};
+      dbb = {dbb.a + hA.a, dbb.b + hA.b, dbb.c + hA.c, dbb.d + hA.d};
+      upper[a] = {-hA.a, -hA.b, -hA.c, -hA.d};
+      lower[b] = {-hA.a, -hA.b, -hA.c, -hA.d};
+      continue;
+    }
     // the damper's share of φ d_θ does the work −c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ on the two
     // nodes (d_θ·(d₁ − d₀) = l̄ (l₁ − l₀) + (θ − ½)|d₁ − d₀|²: −c (l₁ − l₀)²/h at θ = ½)
     if (c > 0.0) {

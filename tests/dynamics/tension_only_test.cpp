@@ -1,0 +1,280 @@
+// Tension-only links (Model::links_carry_compression = false; docs/models/dynamics.md,
+// "Tension-only links"): a round link cannot push its neighbour. The law (link_force) against
+// central differences and its energy's derivative, in compression, in the ramp and in tension;
+// the integrator's Newton matrix against its residual's differences; two nodes pushed together
+// pass without a force; a mass bouncing on a slack link closes its work balance.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "catena/dynamics/integrator.hpp"
+
+namespace catena::dynamics {
+namespace {
+
+constexpr double kStiffness = 1e8;  // the pocket example's chain: k = 1e8 N/m, c = 2000 N·s/m
+constexpr double kDamping = 2000.0;
+constexpr double kPitch = 0.064;
+
+Model tension_only(std::size_t nodes, double damping = kDamping) {
+  Model m = uniform_chain(nodes, false, kPitch, 0.42, kStiffness, damping, false);
+  m.links_carry_compression = false;
+  return m;
+}
+
+// The law over compression, the ramp and tension, at rates from fast shortening to fast
+// stretching: T ≥ 0 everywhere, T = 0 and E = 0 in compression below the ramp (the bilateral law
+// pushes there with k s < 0), the bilateral law exactly beyond the ramp where it pulls, ∂T/∂s and
+// ∂T/∂ṡ against central differences, and T_e = dE/ds.
+TEST(DynamicsTensionOnlyLinks, LawNeverPushesAndItsDerivativesAndEnergyAreExact) {
+  const Model m = tension_only(2);
+  Model bilateral = m;
+  bilateral.links_carry_compression = true;
+  const double eps = m.link_smoothing;
+  ASSERT_EQ(eps, 1e-6);
+  int compressed = 0, ramp = 0, taut = 0, clamped = 0;
+  for (int i = -300; i <= 300; ++i) {
+    const double s = i * 0.01 * eps + 0.003 * eps;  // off the ramp's ends by a little
+    for (const double rate : {-0.5, -0.02, -1e-4, 0.0, 1e-4, 0.02, 0.5}) {
+      const LinkForce f = link_force(m, s, rate);
+      EXPECT_GE(f.tension, 0.0) << s << " " << rate;
+      const double u = s + 0.5 * eps;
+      if (u <= 0.0) {
+        ++compressed;
+        EXPECT_EQ(f.tension, 0.0);
+        EXPECT_EQ(f.energy, 0.0);
+        EXPECT_EQ(f.stiffness, 0.0);
+        EXPECT_EQ(f.damping, 0.0);
+      } else if (u < eps) {
+        ++ramp;
+        EXPECT_GT(f.elastic, 0.0);
+        EXPECT_LT(f.elastic, kStiffness * eps / 2 * (1 + 1e-12));
+      } else {
+        ++taut;
+        const LinkForce b = link_force(bilateral, s, rate);
+        EXPECT_EQ(f.elastic, b.elastic);
+        if (b.tension > 0.0) {
+          EXPECT_EQ(f.tension, b.tension);
+        } else {
+          EXPECT_EQ(f.tension, 0.0);
+        }
+      }
+      if (f.tension == 0.0 && f.elastic > 0.0) ++clamped;
+      // the derivatives, where the differences do not straddle the clamp T = 0
+      const double ds = 1e-4 * eps, dr = 1e-7;
+      const LinkForce sp = link_force(m, s + ds, rate), sm = link_force(m, s - ds, rate);
+      const LinkForce rp = link_force(m, s, rate + dr), rm = link_force(m, s, rate - dr);
+      const double scale = kStiffness + kDamping * std::abs(rate) / eps;
+      if ((sp.tension > 0.0) == (sm.tension > 0.0) && (sp.tension > 0.0) == (f.tension > 0.0)) {
+        EXPECT_NEAR(f.stiffness, (sp.tension - sm.tension) / (2 * ds), 1e-6 * scale)
+            << s << " " << rate;
+      }
+      if ((rp.tension > 0.0) == (rm.tension > 0.0) && (rp.tension > 0.0) == (f.tension > 0.0)) {
+        EXPECT_NEAR(f.damping, (rp.tension - rm.tension) / (2 * dr), 1e-6 * kDamping)
+            << s << " " << rate;
+      }
+      EXPECT_NEAR(f.elastic, (sp.energy - sm.energy) / (2 * ds), 1e-6 * kStiffness * eps) << s;
+    }
+  }
+  // C¹ at both ends of the ramp: T_e and its slope meet
+  for (const double u : {0.0, eps}) {
+    const double s = u - 0.5 * eps, d = 1e-9 * eps;
+    const LinkForce lo = link_force(m, s - d, 0.0), hi = link_force(m, s + d, 0.0);
+    EXPECT_NEAR(lo.elastic, hi.elastic, 1e-6 * kStiffness * eps);
+    EXPECT_NEAR(lo.stiffness, hi.stiffness, 1e-6 * kStiffness);
+    EXPECT_NEAR(lo.energy, hi.energy, 1e-6 * kStiffness * eps * eps);
+  }
+  EXPECT_GT(compressed, 1000);
+  EXPECT_GT(ramp, 500);
+  EXPECT_GT(taut, 1000);
+  EXPECT_GT(clamped, 50);  // shortening fast in tension: slack, the spring still stretched
+}
+
+// energy() and link_tensions() read the law: on a 4-node chain at rest (one link slack, one in the
+// ramp, one taut), each node's force from the tensions against −∂E/∂q, the central difference of
+// energy().elastic.
+TEST(DynamicsTensionOnlyLinks, ForceIsMinusTheGradientOfTheChainsEnergy) {
+  const Model m = tension_only(4);
+  const double eps = m.link_smoothing;
+  State s(4, 0);
+  // link 0 slack (2 µm short), link 1 in the ramp (0.2 ε), link 2 taut (30 µm)
+  const double len[3] = {kPitch - 2e-6, kPitch + 0.2 * eps, kPitch + 30e-6};
+  const double ang[3] = {0.1, -0.3, 0.7};
+  for (std::size_t j = 0; j < 3; ++j) {
+    s.x[j + 1] = s.x[j] + len[j] * std::cos(ang[j]);
+    s.y[j + 1] = s.y[j] + len[j] * std::sin(ang[j]);
+  }
+  std::vector<double> t(3);
+  link_tensions(m, s, t);
+  EXPECT_EQ(t[0], 0.0);  // the bilateral law: −200 N
+  EXPECT_GT(t[1], 0.0);
+  EXPECT_NEAR(t[2], kStiffness * 30e-6, 1e-6);
+  for (std::size_t i = 0; i < 4; ++i) {
+    // the force on node i: +T_j e_j from the link j = i it starts, −T_j e_j from link i − 1
+    double f[2] = {0.0, 0.0};
+    if (i < 3) f[0] += t[i] * std::cos(ang[i]), f[1] += t[i] * std::sin(ang[i]);
+    if (i > 0) f[0] -= t[i - 1] * std::cos(ang[i - 1]), f[1] -= t[i - 1] * std::sin(ang[i - 1]);
+    for (int axis = 0; axis < 2; ++axis) {
+      const double d = 1e-4 * eps;
+      State p = s, q = s;
+      (axis == 0 ? p.x : p.y)[i] += d;
+      (axis == 0 ? q.x : q.y)[i] -= d;
+      const double grad = (energy(m, p).elastic - energy(m, q).elastic) / (2 * d);
+      EXPECT_NEAR(f[axis], -grad, 1e-3 * kStiffness * eps) << i << " " << axis;
+    }
+  }
+}
+
+// The integrator's Newton matrix (Integrator::newton_system) against central differences of its
+// residual, on a chain whose links are at the step's θ point slack, in the ramp, taut, and taut
+// but shortening faster than the spring pulls (slack by the clamp); and the slack link's end node
+// feels no force: its residual is the inertia's alone, 0 at the constant-velocity predictor.
+TEST(DynamicsTensionOnlyLinks, NewtonMatrixMatchesTheResidualsDifferences) {
+  const Model m = tension_only(5);
+  const double eps = m.link_smoothing, h = 1e-4, th = 0.6;
+  State s(5, 0);
+  const double len[4] = {kPitch - 3e-6, kPitch + 0.1 * eps, kPitch + 20e-6, kPitch + 2e-6};
+  const double ang[4] = {0.2, -0.4, 0.5, 1.1};
+  // the rate of each link along itself: link 3 shortens at 0.5 m/s (c ṡ = −1000 N against
+  // k s = 200 N), the others slowly
+  const double rate[4] = {0.0, 1e-4, -1e-3, -0.5};
+  for (std::size_t j = 0; j < 4; ++j) {
+    s.x[j + 1] = s.x[j] + len[j] * std::cos(ang[j]);
+    s.y[j + 1] = s.y[j] + len[j] * std::sin(ang[j]);
+    s.vx[j + 1] = s.vx[j] + rate[j] * std::cos(ang[j]) - 0.3 * std::sin(ang[j]);
+    s.vy[j + 1] = s.vy[j] + rate[j] * std::sin(ang[j]) + 0.3 * std::cos(ang[j]);
+  }
+  std::vector<double> t(4);
+  link_tensions(m, s, t);
+  EXPECT_EQ(t[0], 0.0);
+  EXPECT_GT(t[1], 0.0);
+  EXPECT_GT(t[2], 1000.0);
+  EXPECT_EQ(t[3], 0.0);
+  Integrator integ(m, {.step = h, .theta = th});
+  const std::size_t nu = integ.unknowns();
+  ASSERT_EQ(nu, 10u);
+  std::vector<double> u(nu), r, jac, rp, rm;
+  for (std::size_t i = 0; i < 5; ++i) {
+    u[2 * i] = s.x[i] + h * s.vx[i];
+    u[2 * i + 1] = s.y[i] + h * s.vy[i];
+  }
+  integ.newton_system(m, s, u, r, &jac);
+  // node 0 hangs on the slack link 0 alone
+  EXPECT_EQ(r[0], 0.0);
+  EXPECT_EQ(r[1], 0.0);
+  const double scale = h * th * kStiffness;
+  double worst = 0.0;
+  for (std::size_t j = 0; j < nu; ++j) {
+    const double hd = 1e-11;
+    std::vector<double> up = u, um = u;
+    up[j] += hd;
+    um[j] -= hd;
+    integ.newton_system(m, s, up, rp, nullptr);
+    integ.newton_system(m, s, um, rm, nullptr);
+    for (std::size_t a = 0; a < nu; ++a) {
+      const double fd = (rp[a] - rm[a]) / (2 * hd);
+      worst = std::max(worst, std::abs(fd - jac[a * nu + j]) / scale);
+      EXPECT_NEAR(jac[a * nu + j], fd, 1e-5 * scale) << a << " " << j;
+    }
+  }
+  std::printf("tension-only Newton matrix: largest misfit %.2e of h theta k\n", worst);
+}
+
+// Two free nodes on one link, thrown together at 1 m/s each: the link goes slack and they pass
+// on at their speeds (the undamped bilateral link, for contrast, rings with them at its
+// 3.5 kHz, pushing with −9 kN); every tension 0, the energy unchanged.
+TEST(DynamicsTensionOnlyLinks, NodesPushedTogetherFeelNoForce) {
+  for (const bool compression : {false, true}) {
+    Model m = tension_only(2, 0.0);  // undamped: the bilateral link rings, never lets them pass
+    m.links_carry_compression = compression;
+    State s(2, 0);
+    s.x[1] = kPitch - 1e-6;  // just slack (at l = p the ramp still pulls k ε/8 = 12.5 N)
+    s.vx[0] = 1.0;
+    s.vx[1] = -1.0;
+    const double e0 = energy(m, s).total();
+    Integrator integ(m, {.step = 1e-5, .theta = 0.5});
+    std::vector<double> t(1);
+    double lowest = 0.0;
+    for (int k = 0; k < 1000; ++k) {  // 10 ms: the gap closes by 20 mm of 64
+      ASSERT_TRUE(integ.step(m, s).converged) << k;
+      link_tensions(m, s, t);
+      lowest = std::min(lowest, t[0]);
+    }
+    std::printf("pushed together (%s): v %.6f %.6f m/s, lowest tension %.1f N\n",
+                compression ? "bilateral" : "tension-only", s.vx[0], s.vx[1], lowest);
+    if (compression) {  // the old law, for contrast: the link pushes them back
+      EXPECT_LT(lowest, -1000.0);
+      EXPECT_GT(std::abs(s.vx[0] - 1.0), 0.1);
+      continue;
+    }
+    EXPECT_EQ(lowest, 0.0);
+    // (to Newton's rounding: the steps' corrections stop at 1e-10 of the pitch)
+    EXPECT_NEAR(s.vx[0], 1.0, 1e-9);
+    EXPECT_NEAR(s.vx[1], -1.0, 1e-9);
+    EXPECT_NEAR(s.x[1] - s.x[0], kPitch - 1e-6 - 0.02, 1e-12);
+    EXPECT_NEAR(energy(m, s).total(), e0, 1e-9 * e0);
+    EXPECT_EQ(s.damper_work, 0.0);
+  }
+}
+
+// A mass on a slack-able link: node 0 pinned, node 1 (0.42 kg) thrown outward at 0.1 m/s from the
+// rest length, gravity pulling it away from the pin (9.81 m/s²). The link stretches, throws the
+// mass back, goes slack (the mass flies free towards the pin until gravity turns it) and catches
+// it again, over and over. The tension never goes below 0 (the bilateral law keeps the mass
+// oscillating about the rest length, through compression), the link goes slack, and at θ = ½ the
+// work balance closes:
+// ΔE = the damper's work + a numerical rest that is small against it (the ramp's steps are not a
+// discrete gradient).
+TEST(DynamicsTensionOnlyLinks, BouncingOnASlackLinkClosesItsWorkBalance) {
+  Model m = tension_only(2);
+  m.pinned = {1, 0};
+  m.gravity_x = 9.81;
+  State s(2, 0);
+  s.x[1] = kPitch;
+  s.vx[1] = 0.1;
+  const double e0 = energy(m, s).total();
+  Integrator integ(m, {.step = 2e-6, .theta = 0.5});
+  std::vector<double> t(1);
+  double lowest = INFINITY, shortest = INFINITY, highest = 0.0;
+  for (int k = 0; k < 20000; ++k) {  // 40 ms
+    ASSERT_TRUE(integ.step(m, s).converged) << k;
+    link_tensions(m, s, t);
+    lowest = std::min(lowest, t[0]);
+    highest = std::max(highest, t[0]);
+    shortest = std::min(shortest, s.x[1] - s.x[0]);
+  }
+  const double de = energy(m, s).total() - e0, rest = de - s.damper_work;
+  std::printf(
+      "bouncing: tension %.3g .. %.1f N, shortest l - p %.2f um, dE %.4e J, damper %.4e J, "
+      "numerical %.2e J\n",
+      lowest, highest, (shortest - kPitch) * 1e6, de, s.damper_work, rest);
+  EXPECT_GE(lowest, 0.0);
+  EXPECT_GT(highest, 300.0);
+  EXPECT_LT(shortest - kPitch, -10 * m.link_smoothing);  // slack, well below the ramp
+  EXPECT_LT(s.damper_work, -1e-4);
+  EXPECT_LT(std::abs(rest), 1e-3 * std::abs(s.damper_work));
+}
+
+// Hinge friction takes the links' bilateral tension: with tension-only links it is refused, and
+// a bad ε is named.
+TEST(DynamicsTensionOnlyLinks, BadFieldsAreNamed) {
+  Model m = tension_only(3);
+  m.link_smoothing = -1e-6;
+  m.hinge.arm = 1e-3;
+  const std::vector<Issue> issues = validate(m);
+  auto named = [&](const char* field) {
+    return std::any_of(issues.begin(), issues.end(),
+                       [&](const Issue& i) { return i.field == field; });
+  };
+  EXPECT_TRUE(named("link_smoothing"));
+  EXPECT_TRUE(named("links_carry_compression"));
+  m.links_carry_compression = true;  // the bilateral links take neither
+  m.hinge.arm = 0.0;
+  EXPECT_TRUE(validate(m).empty());
+}
+
+}  // namespace
+}  // namespace catena::dynamics
