@@ -379,8 +379,9 @@ double hertz_seat_stiffness(double pitch, double roller, double width, int teeth
 // the links' stiffness and damping over a step against a node's mass, k (θh)² / m and c θh / m:
 // the steps of the 12B example stopped converging at about 1.5e8 (k) and 8e7 (c)
 constexpr double kMaxLinkRatio = 1e6;
-// the seats' and the rails' penalty over a step, k_c (θh)² / m: stopped at about 4.5e4 (0.1 ms)
-constexpr double kMaxContactRatio = 1e4;
+// the seats' and the rails' penalty over a step, k_c (θh)² / m: stopped at about 4.5e4 (ran at
+// 1.5e4)
+constexpr double kMaxContactRatio = 5e3;
 // the seats' and the rails' damper over a step, c_c θh / m: stopped at about 250
 constexpr double kMaxContactDampingRatio = 50.0;
 // the chain's travel in a step, ω R h, in pitches: stopped at about 1.1 pitches
