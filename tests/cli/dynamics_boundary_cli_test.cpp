@@ -244,6 +244,21 @@ TEST(DynamicsBoundaryCli, ExtremeScalesAreRefusedNamingTheFieldAndItsRange) {
     EXPECT_NE(r.err.find(c.field + ": expected "), std::string::npos) << c.value << "\n" << r.err;
     EXPECT_NE(r.err.find(c.range), std::string::npos) << c.value << "\n" << r.err;
   }
+  // a round-link chain on pocket wheels: a fortieth of a pitch a step (200 rad/s ran 20 ms on
+  // examples/dynamics_pocketwheel.toml, 500 rad/s stopped at 11 ms)
+  {
+    std::string text = read(kExamples + "/dynamics_pocketwheel.toml");
+    text = std::regex_replace(text, std::regex("(^|\n)speed *=[^\n]*"), "$1speed = \"200 rad/s\"");
+    const std::string pocket = (dir / "pocket.toml").string();
+    std::ofstream(pocket) << text;
+  }
+  const CliRun p = run("dynamics " + (dir / "pocket.toml").string());
+  EXPECT_EQ(p.status, 2) << p.err;
+  EXPECT_NE(p.err.find("= 200 rad/s: expected at most 97.39 rad/s at step 0.0001 s"),
+            std::string::npos)
+      << p.err;
+  EXPECT_NE(p.err.find("a fortieth of a pitch a step on pocket wheels"), std::string::npos)
+      << p.err;
   // a guide's own penalty and damper: the seats' bounds
   const std::string rail = (dir / "rail.toml").string();
   std::ofstream(rail) << kLeadInLoopHead

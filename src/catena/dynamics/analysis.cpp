@@ -384,8 +384,9 @@ constexpr double kMaxLinkRatio = 1e6;
 constexpr double kMaxContactRatio = 5e3;
 // the seats' and the rails' damper over a step, c_c θh / m: stopped at about 250
 constexpr double kMaxContactDampingRatio = 50.0;
-// the chain's travel in a step, ω R h, in pitches: stopped at about 1.1 pitches
-constexpr double kMaxTravel = 0.25;
+// the chain's travel in a step, ω R h, in pitches: stopped at about 1.1 pitches (a round-link
+// chain on pocket wheels, whose links seat with a jump, at 0.13: kMaxPocketTravel)
+constexpr double kMaxTravel = 0.25, kMaxPocketTravel = 0.025;
 // a driven wheel's load: its tension T_L/R stretches a link by at most this part of the pitch
 // (as the pretension's bound)
 constexpr double kMaxStretch = 0.1;
@@ -473,15 +474,18 @@ void check_scales(const Setup& s, const std::vector<SprocketInput>& wheels, cons
     const double r = pitch_radius(s, teeth);
     if (!valid(r) || !valid(s.pitch)) continue;
     const double speed = w.speed.value_or(NAN);
-    if (driver && valid(speed) && valid(s.step) && speed * r * s.step > kMaxTravel * s.pitch) {
-      const double fastest = kMaxTravel * s.pitch / (r * s.step);
+    const double travel = s.pocket ? kMaxPocketTravel : kMaxTravel;
+    if (driver && valid(speed) && valid(s.step) && speed * r * s.step > travel * s.pitch) {
+      const double fastest = travel * s.pitch / (r * s.step);
       issues.push_back(
           {field(i, "speed"), shown(speed) + " rad/s",
            "at most " + format_g(fastest, 4) + " rad/s at step " + format_g(s.step, 4) +
-               " s, or a step of at most " + format_g(kMaxTravel * s.pitch / (r * speed), 4) +
-               " s at this speed (the chain travels at most a quarter pitch a step: speed x R x "
-               "step <= pitch/4, R the driver's pitch radius " +
-               format_g(r, 4) + " m)"});
+               " s, or a step of at most " + format_g(travel * s.pitch / (r * speed), 4) +
+               " s at this speed (the chain travels at most " +
+               (s.pocket ? "a fortieth of a pitch a step on pocket wheels: speed x R x step <= "
+                           "pitch/40"
+                         : "a quarter pitch a step: speed x R x step <= pitch/4") +
+               ", R the driver's pitch radius " + format_g(r, 4) + " m)"});
     }
     const double load = w.load_torque.value_or(NAN);
     if (driven && valid(s.stiffness) && load > kMaxStretch * s.stiffness * s.pitch * r &&
