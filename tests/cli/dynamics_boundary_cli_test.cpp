@@ -2,7 +2,9 @@
 // frequencies says so itself (null frequencies and a warning naming `duration` and the shortest
 // run that measures them) instead of NaN blamed on the input's range, and an error diagnostic
 // is named on stderr by `catena run` as by the subcommand, the exit status staying 0 (the
-// analysis ran; docs/cli.md).
+// analysis ran; docs/cli.md). Values at which the steps stop converging (a stiffness, a damping,
+// a speed, a load or an inertia far outside the chain's scales) are refused before anything runs,
+// each named with its range (docs/models/dynamics.md, "The inputs' bounds").
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -11,6 +13,8 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli_run.hpp"
 #include "lead_in_loop.hpp"
@@ -24,6 +28,23 @@ std::string read(const std::string& path) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+// The 12B example with each `key = ...` line set to `value` (a key it does not have goes first in
+// [dynamics]), written to `dir`/`name`.
+std::string example_with(const std::filesystem::path& dir, const std::string& name,
+                         const std::vector<std::pair<std::string, std::string>>& values) {
+  std::string text = read(kExamples + "/dynamics_12B.toml");
+  for (const auto& [key, value] : values) {
+    const std::regex line("(^|\n)" + key + " *=[^\n]*");
+    if (std::regex_search(text, line))
+      text = std::regex_replace(text, line, "$1" + key + " = " + value);
+    else
+      text.replace(text.find("[dynamics]\n"), 11, "[dynamics]\n" + key + " = " + value + "\n");
+  }
+  const std::string path = (dir / name).string();
+  std::ofstream(path) << text;
+  return path;
 }
 
 // The issue's reproducer: 1 ms of the serpentine drive (its second half shorter than a tooth
@@ -272,17 +293,179 @@ TEST(DynamicsBoundaryCli, ALeadInMustClearTheChainsPathAndTheOtherGuides) {
 // An error diagnostic is never silent: a run whose first step does not converge (an axial
 // damping of 1e12 N s/m on the 12B example) names it on stderr from `catena dynamics`, `catena
 // run` and `catena report` (by its analysis in a case run), the output written in full.
+// The extremes that ran into "did not converge" (an error diagnostic, exit 0) are refused up front
+// (exit 2), each naming its field, the value and the range with the keys the range follows from.
+// The 12B example: m = 1.244 kg/m x 19.05 mm = 0.0237 kg, theta step = 0.06 ms, R = 36.80 mm,
+// 32 links (M R^2 = 1.027e-3 kg m^2).
+TEST(DynamicsBoundaryCli, ExtremeScalesAreRefusedNamingTheFieldAndItsRange) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("catena_boundary_scales_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  struct Case {
+    std::string key, value, field, range;
+  };
+  const std::vector<Case> cases{
+      {"axial_stiffness", "\"1e300 N/m\"", "dynamics.axial_stiffness (line 15) = 1e+300 N/m",
+       "at most 1e+06 m/(theta step)^2 = 6.583e+12 N/m, m = mass_per_metre x pitch = 0.0237 kg, "
+       "theta 0.6, step 0.0001 s"},
+      {"axial_damping", "1e12", "dynamics.axial_damping (line 16) = 1e+12 N s/m",
+       "at most 1e+06 m/(theta step) = 3.95e+08 N s/m"},
+      {"axial_damping", "1e300", "dynamics.axial_damping (line 16) = 1e+300 N s/m",
+       "= 3.95e+08 N s/m"},
+      {"contact_stiffness", "\"1e300 N/m\"", "dynamics.contact_stiffness (line 18) = 1e+300 N/m",
+       "at most 5e+03 m/(theta step)^2 = 3.291e+10 N/m"},
+      {"contact_damping", "1e12", "dynamics.contact_damping (line 19) = 1e+12 N s/m",
+       "at most 50 m/(theta step) = 1.975e+04 N s/m"},
+      {"speed", "\"1e4 rad/s\"", "dynamics.sprocket[0].speed (line 28) = 10000 rad/s",
+       "at most 1294 rad/s at step 0.0001 s, or a step of at most 1.294e-05 s at this speed"},
+      {"speed", "\"1e300 rad/s\"", "dynamics.sprocket[0].speed (line 28) = 1e+300 rad/s",
+       "at most 1294 rad/s"},
+      {"inertia", "1e300", "dynamics.sprocket[1].inertia (line 33) = 1e+300 kg m^2",
+       "in [1.027e-06, 1027] kg m^2: 0.001 to 1e+06 times the chain's own about the wheel"},
+      {"inertia", "1e-300", "dynamics.sprocket[1].inertia (line 33) = 1e-300 kg m^2",
+       "in [1.027e-06, 1027] kg m^2"},
+      {"load_torque", "1e6", "dynamics.sprocket[1].load_torque (line 34) = 1e+06 N m",
+       "at most 0.1 axial_stiffness x pitch x R = 3505 N m"},
+      {"load_torque", "1e300", "dynamics.sprocket[1].load_torque (line 34) = 1e+300 N m",
+       "= 3505 N m"},
+      {"mass_per_metre", "\"1e300 kg/m\"", "dynamics.mass_per_metre (line 13) = 1e+300 kg/m",
+       "in (0, 10000] kg/m"},
+  };
+  for (const Case& c : cases) {
+    const CliRun r = run("dynamics " + example_with(dir, "extreme.toml", {{c.key, c.value}}));
+    EXPECT_EQ(r.status, 2) << c.key << " " << c.value << "\n" << r.err;
+    EXPECT_TRUE(r.out.empty()) << c.key;
+    EXPECT_NE(r.err.find(c.field + ": expected "), std::string::npos) << c.value << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.range), std::string::npos) << c.value << "\n" << r.err;
+  }
+  // a round-link chain on pocket wheels: a fortieth of a pitch a step (200 rad/s ran 20 ms on
+  // examples/dynamics_pocketwheel.toml, 500 rad/s stopped at 11 ms)
+  {
+    std::string text = read(kExamples + "/dynamics_pocketwheel.toml");
+    text = std::regex_replace(text, std::regex("(^|\n)speed *=[^\n]*"), "$1speed = \"200 rad/s\"");
+    const std::string pocket = (dir / "pocket.toml").string();
+    std::ofstream(pocket) << text;
+  }
+  const CliRun p = run("dynamics " + (dir / "pocket.toml").string());
+  EXPECT_EQ(p.status, 2) << p.err;
+  EXPECT_NE(p.err.find("= 200 rad/s: expected at most 97.39 rad/s at step 0.0001 s"),
+            std::string::npos)
+      << p.err;
+  EXPECT_NE(p.err.find("a fortieth of a pitch a step on pocket wheels"), std::string::npos)
+      << p.err;
+  // a guide's own penalty and damper: the seats' bounds
+  const std::string rail = (dir / "rail.toml").string();
+  std::ofstream(rail) << kLeadInLoopHead
+                      << lead_in_rail(
+                             "30 mm",
+                             "contact_stiffness = \"1e300 N/m\"\ncontact_damping = 1e12\n");
+  const CliRun g = run("dynamics " + rail);
+  EXPECT_EQ(g.status, 2) << g.err;
+  EXPECT_NE(g.err.find("dynamics.guide[0].contact_stiffness (line 24) = 1e+300 N/m: expected at "
+                       "most 5e+03 m/(theta step)^2 = 3.291e+10 N/m"),
+            std::string::npos)
+      << g.err;
+  EXPECT_NE(g.err.find("dynamics.guide[0].contact_damping (line 25) = 1e+12 N s/m: expected at "
+                       "most 50 m/(theta step) = 1.975e+04 N s/m"),
+            std::string::npos)
+      << g.err;
+  // a step too short for the inertia terms (the command line's --step named as such)
+  const CliRun tiny = run("dynamics " + kExamples +
+                          "/dynamics_12B.toml --duration 1e-11s --step 1e-12s --allow-large");
+  EXPECT_EQ(tiny.status, 2) << tiny.err;
+  EXPECT_NE(tiny.err.find("step = 1e-12 s: expected at least 1e-09 s"), std::string::npos)
+      << tiny.err;
+  // the bounds follow the step: at 0.01 ms the driver may turn ten times as fast (1e4 rad/s is
+  // inside, 2e4 rad/s is not)
+  const CliRun fine =
+      run("dynamics " + example_with(dir, "fine.toml", {{"speed", "\"1e4 rad/s\""}}) +
+          " --duration 0.1ms --step 0.01ms");
+  EXPECT_EQ(fine.status, 0) << fine.err;
+  const CliRun fast =
+      run("dynamics " + example_with(dir, "fast.toml", {{"speed", "\"2e4 rad/s\""}}) +
+          " --duration 0.1ms --step 0.01ms");
+  EXPECT_EQ(fast.status, 2) << fast.err;
+  EXPECT_NE(fast.err.find("at most 1.294e+04 rad/s at step 1e-05 s"), std::string::npos)
+      << fast.err;
+  std::filesystem::remove_all(dir);
+}
+
+// Every bad scale in one file is named at once, with the parser's other problems.
+TEST(DynamicsBoundaryCli, EveryExtremeScaleInOneFileIsNamedTogether) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("catena_boundary_together_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const CliRun r = run("dynamics " + example_with(dir, "all.toml",
+                                                  {{"axial_damping", "1e12"},
+                                                   {"contact_stiffness", "\"1e300 N/m\""},
+                                                   {"contact_damping", "1e12"},
+                                                   {"speed", "\"1e4 rad/s\""},
+                                                   {"inertia", "1e300"},
+                                                   {"load_torque", "1e6"},
+                                                   {"pretension", "\"-5 N\""}}));
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("(7 problems)"), std::string::npos) << r.err;
+  for (const char* field :
+       {"dynamics.axial_damping (line 16)", "dynamics.contact_stiffness (line 18)",
+        "dynamics.contact_damping (line 19)", "dynamics.pretension (line 17)",
+        "dynamics.sprocket[0].speed (line 28)", "dynamics.sprocket[1].inertia (line 33)",
+        "dynamics.sprocket[1].load_torque (line 34)"})
+    EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
+}
+
+// Just inside each bound the case is not refused (one step runs), and the driver at 1290 rad/s
+// (the bound 1294) and the load at 3490 N m (3505) each run 5 ms with every step converged.
+TEST(DynamicsBoundaryCli, ScalesJustInsideTheirBoundsRun) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("catena_boundary_inside_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::vector<std::pair<std::string, std::string>> inside{
+      {"axial_stiffness", "\"6.5e12 N/m\""},
+      {"axial_damping", "3.9e8"},
+      {"contact_stiffness", "\"3.2e10 N/m\""},
+      {"contact_damping", "1.97e4"},
+      {"speed", "\"1290 rad/s\""},
+      {"inertia", "1.03e-6"},
+      {"inertia", "1020"},
+      {"load_torque", "3490"},
+      {"mass_per_metre", "\"1e4 kg/m\""}};
+  for (const auto& [key, value] : inside) {
+    // (a chain of 1e4 kg/m needs a wheel of its scale)
+    std::vector<std::pair<std::string, std::string>> values{{key, value}};
+    if (key == "mass_per_metre") values.push_back({"inertia", "1000"});
+    const CliRun r = run("dynamics " + example_with(dir, "inside.toml", values) +
+                         " --duration 0.1ms --format json");
+    EXPECT_EQ(r.status, 0) << key << " " << value << "\n" << r.err;
+    EXPECT_EQ(r.err.find("invalid input"), std::string::npos) << key << "\n" << r.err;
+  }
+  for (const auto& [key, value] : std::vector<std::pair<std::string, std::string>>{
+           {"speed", "\"1290 rad/s\""}, {"load_torque", "3490"}}) {
+    const CliRun r = run("dynamics " + example_with(dir, "run.toml", {{key, value}}) +
+                         " --duration 5ms --format json");
+    EXPECT_EQ(r.status, 0) << key << "\n" << r.err;
+    EXPECT_EQ(r.out.find("dynamics.not_converged"), std::string::npos) << key << "\n" << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out).at("summary").at("steps").get<int>(), 50) << key;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// An error diagnostic is never silent: a run whose third step does not converge (the 12B example
+// with stiff links, 1e9 N/m, at a coarse step of 1 ms: inside the inputs' bounds, which are
+// necessary, not sufficient) names it on stderr from `catena dynamics`, `catena run` and `catena
+// report` (by its analysis in a case run), the output written in full.
 // The exit status is 0, the CLI's contract since issue 2 ("0 whenever the analysis ran,
 // diagnostics part of the output").
 TEST(DynamicsBoundaryCli, AnErrorDiagnosticIsNamedOnStderrWithTheOutputWritten) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("catena_boundary_error_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  const std::string path = (dir / "stiff_damper.toml").string();
+  const std::string path = (dir / "stiff_links.toml").string();
   std::string text = read(kExamples + "/dynamics_12B.toml");
-  text = std::regex_replace(text, std::regex("(^|\n)axial_damping *=[^\n]*"),
-                            "$1axial_damping = 1e12");
-  text = std::regex_replace(text, std::regex("(^|\n)duration *=[^\n]*"), "$1duration = \"2 ms\"");
+  text = std::regex_replace(text, std::regex("(^|\n)axial_stiffness *=[^\n]*"),
+                            "$1axial_stiffness = \"1e9 N/m\"");
+  text = std::regex_replace(text, std::regex("(^|\n)step *=[^\n]*"), "$1step = \"1 ms\"");
+  text = std::regex_replace(text, std::regex("(^|\n)duration *=[^\n]*"), "$1duration = \"5 ms\"");
   std::ofstream(path) << text;
   const CliRun d = run("dynamics " + path + " --format json");
   const CliRun c = run("run " + path);
@@ -291,7 +474,7 @@ TEST(DynamicsBoundaryCli, AnErrorDiagnosticIsNamedOnStderrWithTheOutputWritten) 
   const bool written = std::filesystem::exists(html) && std::filesystem::file_size(html) > 0;
   std::filesystem::remove_all(dir);
   EXPECT_EQ(d.status, 0) << d.err;
-  EXPECT_NE(d.err.find("catena: error: step 1 (t = 0.0001 s) did not converge"), std::string::npos)
+  EXPECT_NE(d.err.find("catena: error: step 3 (t = 0.003 s) did not converge"), std::string::npos)
       << d.err;
   bool listed = false;
   const auto j = nlohmann::json::parse(d.out);
@@ -299,11 +482,11 @@ TEST(DynamicsBoundaryCli, AnErrorDiagnosticIsNamedOnStderrWithTheOutputWritten) 
     listed = listed || g.at("code") == "dynamics.not_converged";
   EXPECT_TRUE(listed) << d.out.substr(0, 400);
   EXPECT_EQ(c.status, 0) << c.err;
-  EXPECT_NE(c.err.find("catena: error: analyses.dynamics: step 1"), std::string::npos) << c.err;
+  EXPECT_NE(c.err.find("catena: error: analyses.dynamics: step 3"), std::string::npos) << c.err;
   EXPECT_NE(c.out.find("dynamics.not_converged"), std::string::npos);
   EXPECT_TRUE(nlohmann::json::parse(c.out).contains("analyses")) << c.out.substr(0, 400);
   EXPECT_EQ(h.status, 0) << h.err;
-  EXPECT_NE(h.err.find("catena: error: analyses.dynamics: step 1"), std::string::npos) << h.err;
+  EXPECT_NE(h.err.find("catena: error: analyses.dynamics: step 3"), std::string::npos) << h.err;
   EXPECT_TRUE(written);
 }
 

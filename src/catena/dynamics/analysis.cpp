@@ -374,6 +374,148 @@ double hertz_seat_stiffness(double pitch, double roller, double width, int teeth
   }
 }
 
+// The bounds on the scales of the inputs (docs/models/dynamics.md, "The inputs' bounds"): each
+// refuses, before anything runs, a value at which the steps were measured to stop converging,
+// with a margin, and names the keys it depends on. m = q p is a node's mass (a link's), θh the
+// implicit part of the step.
+// the links' stiffness and damping over a step against a node's mass, k (θh)² / m and c θh / m:
+// the steps of the 12B example stopped converging at about 1.5e8 (k) and 8e7 (c)
+constexpr double kMaxLinkRatio = 1e6;
+// the seats' and the rails' penalty over a step, k_c (θh)² / m: stopped at about 4.5e4 (ran at
+// 1.5e4)
+constexpr double kMaxContactRatio = 5e3;
+// the seats' and the rails' damper over a step, c_c θh / m: stopped at about 250
+constexpr double kMaxContactDampingRatio = 50.0;
+// the chain's travel in a step, ω R h, in pitches: stopped at about 1.1 pitches (a round-link
+// chain on pocket wheels, whose links seat with a jump, at 0.13: kMaxPocketTravel)
+constexpr double kMaxTravel = 0.25, kMaxPocketTravel = 0.025;
+// a driven wheel's load: its tension T_L/R stretches a link by at most this part of the pitch
+// (as the pretension's bound)
+constexpr double kMaxStretch = 0.1;
+// a wheel's inertia against the chain's own about its axis, M R² (M the loop's mass)
+constexpr double kMinInertiaRatio = 1e-3, kMaxInertiaRatio = 1e6;
+constexpr double kMinStep = 1e-9;         // [s]
+constexpr double kMaxMassPerMetre = 1e4;  // [kg/m]
+
+// The pitch radius of a wheel of z teeth (a pocket wheel: its pocket radius R).
+double pitch_radius(const Setup& s, int teeth) {
+  if (s.pocket) return s.pocket_radius;
+  return teeth >= 3 ? 0.5 * s.pitch / std::sin(kPi / teeth) : NAN;
+}
+
+// What the bounds over a step compare, for their messages.
+constexpr const char* kLinkScale =
+    " (the link's spring or damper over a step against a node's mass; a smaller step allows more)";
+constexpr const char* kContactScale =
+    " (the seat's or rail's spring or damper over a step against a roller's mass; a smaller step "
+    "allows more)";
+
+// The most a stiffness (power 2) or a damping (power 1) over a step may be, `ratio` m/(θh)^power,
+// and the text naming it and the keys it follows from.
+std::string scale_bound(const Setup& s, double ratio, int power, const char* unit, double& most) {
+  const double m = s.mass_per_metre * s.pitch;
+  const double th = s.theta * s.step;
+  most = ratio * m / std::pow(th, power);
+  return "at most " + format_g(ratio, 3) + " m/(theta step)" + (power == 2 ? "^2" : "") + " = " +
+         format_g(most, 4) + " " + unit + ", m = mass_per_metre x pitch = " + format_g(m, 4) +
+         " kg, theta " + format_g(s.theta, 4) + ", step " + format_g(s.step, 4) + " s";
+}
+
+// Whether the mass, the pitch, the step and theta the bounds over a step follow from are valid.
+bool scales_known(const Setup& s) {
+  auto valid = [](double x) { return x > 0.0 && std::isfinite(x); };
+  return valid(s.mass_per_metre) && s.mass_per_metre <= kMaxMassPerMetre && valid(s.pitch) &&
+         valid(s.step) && s.step >= kMinStep && s.theta >= 0.5 && s.theta <= 1.0;
+}
+
+// The bounds of the scales (kMaxLinkRatio ...): every value out of them named, with the bound it
+// breaks and the keys the bound follows from. `at` names a [dynamics] key, `step_at` the step's
+// source (the table's key or the command line's --step).
+template <class At>
+void check_scales(const Setup& s, const std::vector<SprocketInput>& wheels, const At& at,
+                  const std::string& step_at, std::vector<Issue>& issues) {
+  auto shown = [](double x) { return format_g(x, 6); };
+  auto valid = [](double x) { return x > 0.0 && std::isfinite(x); };
+  if (valid(s.mass_per_metre) && s.mass_per_metre > kMaxMassPerMetre)
+    issues.push_back(
+        {at("mass_per_metre"), shown(s.mass_per_metre) + " kg/m",
+         "in (0, " + shown(kMaxMassPerMetre) + "] kg/m (above every roller and round-link chain)"});
+  if (valid(s.step) && s.step < kMinStep)
+    issues.push_back({step_at, shown(s.step) + " s", "at least " + shown(kMinStep) + " s"});
+  double most = NAN;
+  if (scales_known(s)) {
+    const std::string link = kLinkScale, contact = kContactScale;
+    std::string why = scale_bound(s, kMaxLinkRatio, 2, "N/m", most);
+    if (valid(s.stiffness) && s.stiffness > most)
+      issues.push_back({at("axial_stiffness"), shown(s.stiffness) + " N/m", why + link});
+    why = scale_bound(s, kMaxLinkRatio, 1, "N s/m", most);
+    if (s.damping > most && std::isfinite(s.damping))
+      issues.push_back({at("axial_damping"), shown(s.damping) + " N s/m", why + link});
+    why = scale_bound(s, kMaxContactRatio, 2, "N/m", most);
+    if (valid(s.contact_stiffness) && s.contact_stiffness > most)
+      issues.push_back(
+          {at("contact_stiffness"),
+           shown(s.contact_stiffness) + " N/m" + (s.hertz_stiffness ? " (the Hertz default)" : ""),
+           why + contact});
+    why = scale_bound(s, kMaxContactDampingRatio, 1, "N s/m", most);
+    if (s.contact_damping > most && std::isfinite(s.contact_damping))
+      issues.push_back({at("contact_damping"), shown(s.contact_damping) + " N s/m", why + contact});
+  }
+  // the wheels: the driver's speed, the driven wheels' loads, the inertias
+  auto field = [&](std::size_t i, const std::string& key) {
+    const auto it = wheels[i].seen.find(key);
+    const int l = it == wheels[i].seen.end() ? wheels[i].line : it->second;
+    return "dynamics.sprocket[" + std::to_string(i) + "]." + key +
+           (l ? " (line " + std::to_string(l) + ")" : "");
+  };
+  for (std::size_t i = 0; i < wheels.size(); ++i) {
+    const SprocketInput& w = wheels[i];
+    const bool driver = w.has_role && w.role == "driver";
+    const bool driven = w.has_role && w.role == "driven";
+    const int teeth = s.layout() ? s.wheels[i].teeth : s.teeth;
+    const double r = pitch_radius(s, teeth);
+    if (!valid(r) || !valid(s.pitch)) continue;
+    const double speed = w.speed.value_or(NAN);
+    const double travel = s.pocket ? kMaxPocketTravel : kMaxTravel;
+    if (driver && valid(speed) && valid(s.step) && speed * r * s.step > travel * s.pitch) {
+      const double fastest = travel * s.pitch / (r * s.step);
+      issues.push_back(
+          {field(i, "speed"), shown(speed) + " rad/s",
+           "at most " + format_g(fastest, 4) + " rad/s at step " + format_g(s.step, 4) +
+               " s, or a step of at most " + format_g(travel * s.pitch / (r * speed), 4) +
+               " s at this speed (the chain travels at most " +
+               (s.pocket ? "a fortieth of a pitch a step on pocket wheels: speed x R x step <= "
+                           "pitch/40"
+                         : "a quarter pitch a step: speed x R x step <= pitch/4") +
+               ", R the driver's pitch radius " + format_g(r, 4) + " m)"});
+    }
+    const double load = w.load_torque.value_or(NAN);
+    if (driven && valid(s.stiffness) && load > kMaxStretch * s.stiffness * s.pitch * r &&
+        std::isfinite(load))
+      issues.push_back({field(i, "load_torque"), shown(load) + " N m",
+                        "at most 0.1 axial_stiffness x pitch x R = " +
+                            format_g(kMaxStretch * s.stiffness * s.pitch * r, 4) +
+                            " N m (its tension load_torque/R stretches a link by under 10 % of "
+                            "the pitch; R the wheel's pitch radius " +
+                            format_g(r, 4) + " m)"});
+    const double inertia = w.inertia.value_or(NAN);
+    const double chain = s.mass_per_metre * s.links * s.pitch;  // the loop's mass M
+    if (s.mass_per_metre <= kMaxMassPerMetre && (driven || (s.layout() && w.role == "idler")) &&
+        valid(inertia) && valid(chain)) {
+      const double own = chain * r * r;
+      if (inertia < kMinInertiaRatio * own || inertia > kMaxInertiaRatio * own)
+        issues.push_back(
+            {field(i, "inertia"), shown(inertia) + " kg m^2",
+             "in [" + format_g(kMinInertiaRatio * own, 4) + ", " +
+                 format_g(kMaxInertiaRatio * own, 4) + "] kg m^2: " +
+                 format_g(kMinInertiaRatio, 3) + " to " + format_g(kMaxInertiaRatio, 3) +
+                 " times the chain's own about the wheel, M R^2 = " + format_g(own, 4) +
+                 " kg m^2 (M = mass_per_metre x links x pitch = " + format_g(chain, 4) +
+                 " kg, R its pitch radius " + format_g(r, 4) + " m)"});
+    }
+  }
+}
+
 bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
 
 constexpr std::size_t kMaxWheels = 20;  // sprockets of the free layout
@@ -1480,6 +1622,7 @@ Setup parse(const analysis::Inputs& in) {
                         "contact's approach law covers; here " +
                             shown(s.expected_load) + " N)"});
   }
+  check_scales(s, wheels, at, in.present("step") ? std::string("step") : at("step"), issues);
   s.gravity = gravity;
   s.work_balance = work_balance;
   // hinge friction: each kind's keys, required or defaulted, the other kinds' keys refused
@@ -1618,6 +1761,21 @@ Setup parse(const analysis::Inputs& in) {
     guide.roller_radius = 0.5 * s.roller;
     guide.contact_stiffness = get("contact_stiffness", s.contact_stiffness);
     guide.contact_damping = get("contact_damping", s.contact_damping);
+    // the rail's own penalty and damper: the bounds of the seats' (kMaxContactRatio ...)
+    if (scales_known(s)) {
+      double most = NAN;
+      const std::string why = kContactScale;
+      std::string bound = scale_bound(s, kMaxContactRatio, 2, "N/m", most);
+      if (g.value.count("contact_stiffness") && guide.contact_stiffness > most &&
+          std::isfinite(guide.contact_stiffness))
+        issues.push_back(
+            {field("contact_stiffness"), shown(guide.contact_stiffness) + " N/m", bound + why});
+      bound = scale_bound(s, kMaxContactDampingRatio, 1, "N s/m", most);
+      if (g.value.count("contact_damping") && guide.contact_damping > most &&
+          std::isfinite(guide.contact_damping))
+        issues.push_back(
+            {field("contact_damping"), shown(guide.contact_damping) + " N s/m", bound + why});
+    }
     guide.friction = get("friction", 0.0);
     guide.friction_band = get("friction_band", 1e-3);
     bool readable = true;
