@@ -256,46 +256,32 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     len1[j] = l1;
     const double lt = (1.0 - th) * l0 + th * l1;
     const double mx = (1.0 - th) * d0x + th * d1x, my = (1.0 - th) * d0y + th * d1y;
+    const double p = model.rest_length(j);  // p ± a (round-link chain), else p
+    // φ and ∂(φ l_θ)/∂l₁ = θ ∂T/∂s + (∂T/∂ṡ)/h of the link's law
+    double phi = 0.0, dtension = 0.0;
     if (!model.links_carry_compression) {
       // A tension-only link (docs/models/dynamics.md, "Tension-only links"): link_force's T at the
       // θ point's stretch and the step's rate; the damper's share T − T_e does the work
       // −(T − T_e) d_θ·(d₁ − d₀)/l_θ (−T_e there where T is clamped at 0, as the seats' damper).
-      const double p = model.rest_length(j);
       const LinkForce law = link_force(model, lt - p, (l1 - l0) / h);
       damper_work -= (law.tension - law.elastic) * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
       if (report_only) continue;  // (no hinges: validated)
-      const double phi = law.tension / lt;
-      const double fx = h * phi * mx, fy = h * phi * my;
-      rhs[a].x += fx;
-      rhs[a].y += fy;
-      rhs[b].x -= fx;
-      rhs[b].y -= fy;
-      if (!jacobian) continue;
-      // as below, with ∂T/∂l₁ = θ ∂T/∂s + (∂T/∂ṡ)/h (0 on a slack link)
-      const double dphi = ((th * law.stiffness + law.damping / h) - th * phi) / lt;
-      const double gx = l1 > 0.0 ? dphi * d1x / l1 : 0.0;
-      const double gy = l1 > 0.0 ? dphi * d1y / l1 : 0.0;
-      const Mat2 hA{h * (th * phi + mx * gx), h * mx * gy, h * my * gx, h * (th * phi + my * gy)};
-      Mat2& daa = diag[a];
-      Mat2& dbb = diag[b];
-      daa = {daa.a + hA.a, daa.b + hA.b, daa.c + hA.c, daa.d + hA.d};
-      dbb = {dbb.a + hA.a, dbb.b + hA.b, dbb.c + hA.c, dbb.d + hA.d};
-      upper[a] = {-hA.a, -hA.b, -hA.c, -hA.d};
-      lower[b] = {-hA.a, -hA.b, -hA.c, -hA.d};
-      continue;
+      phi = law.tension / lt;
+      dtension = th * law.stiffness + law.damping / h;  // 0 on a slack link
+    } else {
+      // the damper's share of φ d_θ does the work −c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ on the two
+      // nodes (d_θ·(d₁ − d₀) = l̄ (l₁ − l₀) + (θ − ½)|d₁ − d₀|²: −c (l₁ − l₀)²/h at θ = ½)
+      if (c > 0.0) {
+        damper_work -= c * (l1 - l0) / h * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
+      }
+      // report only: the force is not needed (but for the hinges' couples, which take it)
+      if (report_only && !hinges) continue;
+      // φ = [k (l_θ − p) + c (l₁ − l₀)/h] / l_θ; the force on node a is φ d_θ, on node b −φ d_θ.
+      // At θ = ½ the work over the step is exactly the change of ½ k (l − p)² plus the damper's
+      // loss c (l₁ − l₀)²/h (Simo & Tarnow 1992).
+      phi = (k * (lt - p) + c * (l1 - l0) / h) / lt;
+      dtension = k * th + c / h;
     }
-    // the damper's share of φ d_θ does the work −c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ on the two
-    // nodes (d_θ·(d₁ − d₀) = l̄ (l₁ − l₀) + (θ − ½)|d₁ − d₀|²: −c (l₁ − l₀)²/h at θ = ½)
-    if (c > 0.0) {
-      damper_work -= c * (l1 - l0) / h * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
-    }
-    // report only: the force is not needed (but for the hinges' couples, which take it)
-    if (report_only && !hinges) continue;
-    // φ = [k (l_θ − p) + c (l₁ − l₀)/h] / l_θ; the force on node a is φ d_θ, on node b −φ d_θ.
-    // At θ = ½ the work over the step is exactly the change of ½ k (l − p)² plus the damper's
-    // loss c (l₁ − l₀)²/h (Simo & Tarnow 1992).
-    const double p = model.rest_length(j);  // p ± a (round-link chain), else p
-    const double phi = (k * (lt - p) + c * (l1 - l0) / h) / lt;
     const double fx = h * phi * mx, fy = h * phi * my;
     rhs[a].x += fx;
     rhs[a].y += fy;
@@ -304,8 +290,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     // the link's share of the couples of the hinges at its two ends (the hinge loop below)
     if (hinges) hinge_link(d0x, d0y, d1x, d1y, l0, l1, p, k, th, hinge_links_[j], jacobian);
     if (!jacobian) continue;
-    // A = ∂(φ d_θ)/∂d₁ = θ φ I + d_θ ⊗ (∂φ/∂l₁) d₁/l₁,  ∂φ/∂l₁ = [(k θ + c/h) − θ φ] / l_θ.
-    const double dphi = ((k * th + c / h) - th * phi) / lt;
+    // A = ∂(φ d_θ)/∂d₁ = θ φ I + d_θ ⊗ (∂φ/∂l₁) d₁/l₁,  ∂φ/∂l₁ = [∂T/∂l₁ − θ φ] / l_θ
+    // (∂T/∂l₁ = k θ + c/h for the bilateral link).
+    const double dphi = (dtension - th * phi) / lt;
     const double gx = l1 > 0.0 ? dphi * d1x / l1 : 0.0;
     const double gy = l1 > 0.0 ? dphi * d1y / l1 : 0.0;
     const Mat2 hA{h * (th * phi + mx * gx), h * mx * gy, h * my * gx, h * (th * phi + my * gy)};
