@@ -1,7 +1,7 @@
 // The lead-in tests' case (tests/cli/dynamics_*_cli_test.cpp): a 12B two-wheel loop of 32 links
 // under gravity, two z = 12 wheels (the driver at 13 rad/s, a driven wheel of inertia 0.01), run
-// for two 0.1 ms steps, and the straight rails its guides are written as. Some tests assert the
-// line numbers of the messages on these files: the text must stay as it is.
+// for 2 ms (20 steps of 0.1 ms), and the straight rails its guides are written as. Some tests
+// assert the line numbers of the messages on these files: the text must stay as it is.
 #pragma once
 
 #include <string>

@@ -209,7 +209,7 @@ TEST(DynamicsConveyor, GuideFrictionTensionsMatchTheLoopModel) {
   // the wheel's end of the stretch is at the same height; here the wheel's end swings with the
   // polygon and the guide's end is a rounded nose (measured: −0.94 %, of which −0.64 % is the
   // chain's mean speed z p ω/2π = ωR sin(π/z)/(π/z) against the loop model's ωR: the friction
-  // force itself is 0.30 % short of 2 μ q0 L).
+  // force itself is about 0.3 % short of 2 μ q0 L: −0.027 N, −0.34 %, over the balance's window).
   EXPECT_NEAR(c.friction, 1.0, kCarriedTol) << "friction power over the loop model's";
   // The tensions' bias over the loop model, traced: the rise of the speed-weighted means is the
   // energy balance's — the simulated friction force, the lift q0 H and the loop's other losses,
