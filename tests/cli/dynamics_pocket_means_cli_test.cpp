@@ -83,8 +83,9 @@ std::string perturbed_example() {
 }
 
 TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
-  // 10 s: the window holds 31 tooth periods (measured: 1971.2 ± 78.4 and 1346.6 ± 78.1 N at
-  // h = 0.1 ms, 1848.3 ± 34.2 and 1228.9 ± 33.5 N at 0.05 ms: 1.4 and 1.4 combined errors)
+  // 10 s: the window holds 31 tooth periods (measured with the tension-only links: 1945.3 ± 52.0
+  // and 1321.9 ± 51.3 N at h = 0.1 ms, 1953.5 ± 48.1 and 1330.3 ± 48.5 N at 0.05 ms: 0.12 and
+  // 0.12 combined errors)
   const auto a = dynamics(kExample, "--duration 10s --step 0.1ms");
   const auto b = dynamics(kExample, "--duration 10s --step 0.05ms");
   ASSERT_FALSE(a.is_null() || b.is_null());
@@ -98,16 +99,16 @@ TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
       EXPECT_NEAR(sum["mean_tension"].get<double>(), s.mean, 1e-9 * s.mean);
       EXPECT_NEAR(sum["period_tension_sd"].get<double>(), s.e.sd, 1e-9 * s.e.sd);
       EXPECT_NEAR(sum["mean_tension_error"].get<double>(), s.e.error, 1e-9 * s.e.error);
-      // 31 periods: their lag-1 autocorrelation estimated (measured 0.46 at h = 0.1 ms, the
-      // error 78.4 and 78.1 N against s/√n = 47.5 and 46.9 N; 0, clamped, at 0.05 ms), the
-      // error s/√n inflated by it
+      // 31 periods: their lag-1 autocorrelation estimated (measured 0.12 and 0.12 at h = 0.1 ms,
+      // the error 52.0 and 51.3 N against s/√n = 46.1 and 45.6 N; 0.13 and 0.14 at 0.05 ms),
+      // the error s/√n inflated by it
       ASSERT_TRUE(sum["period_correlation"].is_number()) << key;
       EXPECT_NEAR(sum["period_correlation"].get<double>(), s.e.correlation, 1e-12) << key;
       EXPECT_NEAR(sum["effective_periods"].get<double>(), s.e.effective_periods, 1e-9) << key;
       EXPECT_GE(sum["mean_tension_error"].get<double>(), s.e.sd / std::sqrt(31.0) * (1 - 1e-12));
-      // the cause, pinned: the periods' means scatter (measured 10-19 % of the mean over these
-      // 10 s, 12-22 % over 20 s); a loop whose response repeated with the tooth period would
-      // have s ≈ 0
+      // the cause, pinned: the periods' means scatter (measured 12-19 % of the mean over these
+      // 10 s; 12-22 % over 20 s with the bilateral links); a loop whose response repeated with
+      // the tooth period would have s ≈ 0
       EXPECT_GT(s.e.sd, 0.05 * s.mean) << key;
     }
     EXPECT_EQ(a["units"]["mean_tension_error"], "N");
