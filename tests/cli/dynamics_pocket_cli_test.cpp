@@ -195,14 +195,12 @@ TEST(DynamicsPocketCli, SparseSamplesGiveNoMeanErrorAndNameTheOutputInterval) {
     EXPECT_NE(message.find(text), std::string::npos) << text << "\n" << message;
 }
 
-// A slack span whose mean is near zero: no pretension and 800 N m on the driven wheel. With the
-// bilateral links the tight span's mean was 4997.6 ± 4.6 N and the slack span's 65.3 ± 12.7 N
-// over the 3 periods: against the largest span mean settled (0.25 %), no warning; against the
-// slack span's own mean (19 %) the run would have been told to last about 355 s (1131 periods),
-// for 13 N of a 5 kN loop. With the tension-only links (measured 5089.7 ± 24.3 and
-// 162.2 ± 16.6 N) the slack span's mean is 3.2 % of the tight span's, so the first check below
-// fails (162.2 against 101.8 N); the others hold: settled to 0.48 % of the tight span's mean,
-// no warning, where the slack span's own mean (10 %) would ask for about 98 s (313 periods).
+// A slack span whose mean is near zero against the loop's: no pretension and 800 N m on the
+// driven wheel (measured 5089.7 ± 24.3 N tight, 162.2 ± 16.6 N slack over the 3 periods: the
+// slack span 3.2 % of the tight span's mean). Against the largest span mean the means are settled
+// (0.48 %), no warning; against the slack span's own mean (10 %) the run would have been told to
+// last about 98 s (313 periods), for 17 N of a 5 kN loop. (With the bilateral links, before the
+// tension-only ones: 4997.6 ± 4.6 and 65.3 ± 12.7 N, 355 s.)
 TEST(DynamicsPocketCli, SlackSpanNearZeroDoesNotAskForAnAbsurdDuration) {
   const std::string path = example_with("slack.toml", {{"pretension =", "pretension = \"0 N\""},
                                                        {"load_torque =", "load_torque = 800"}});
@@ -214,7 +212,7 @@ TEST(DynamicsPocketCli, SlackSpanNearZeroDoesNotAskForAnAbsurdDuration) {
   const auto& slack = j["summary"]["span_1"];
   const double scale = tight["mean_tension"].get<double>();
   // the case is what it says: a slack span near zero whose own relative error exceeds 1 %
-  EXPECT_LT(std::abs(slack["mean_tension"].get<double>()), 0.02 * scale);
+  EXPECT_LT(std::abs(slack["mean_tension"].get<double>()), 0.05 * scale);
   EXPECT_GT(slack["mean_tension_error"].get<double>(),
             0.01 * std::abs(slack["mean_tension"].get<double>()));
   for (const auto* span : {&tight, &slack})
