@@ -61,9 +61,10 @@ Check replicas(int n, double rho, bool independent) {
 }
 
 // The pocket example's 10 s and 20 s windows (31, 63 periods) and a short one (12), at the
-// correlations measured on its periods (up to 0.30) and twice that, 4000 replicas each. 31 and
-// 63 periods: the error's rms is within −5 %/+20 % of the true deviation of the mean and ±2
-// errors cover it in 89-99 % of replicas (a normal mean's 95.4 %; measured 1.03-1.13 and
+// correlations measured on its periods (up to 0.30 over 20 s and 0.46 over 10 s with the
+// bilateral links, 0.12-0.14 over 10 s with the tension-only ones) and twice that, 4000 replicas
+// each. 31 and 63 periods: the error's rms is within −5 %/+20 % of the true deviation of the mean
+// and ±2 errors cover it in 89-99 % of replicas (a normal mean's 95.4 %; measured 1.03-1.13 and
 // 0.91-0.96); 12 periods, where ρ is barely estimable: rms within −5 %/+35 % (measured 1.21-1.28),
 // coverage at least 83 % (0.85-0.95). Taking the periods as independent, s/√n, fails at
 // ρ = 0.3 and 0.6: its rms is 1/√((1 + ρ)/(1 − ρ)) of the truth (measured 0.72-0.73 and
