@@ -217,10 +217,6 @@ TEST(DynamicsBoundaryCli, ALeadInMustClearTheChainsPathAndTheOtherGuides) {
                         << lead_in_rail("30 mm", lead) << more;
     return path;
   };
-  auto limit = [](const std::string& err, const std::string& before) {
-    const auto at = err.find(before);
-    return at == std::string::npos ? NAN : std::stod(err.substr(at + before.size()));
-  };
   double named = NAN;
   for (const char* radius : {"0.3 m", "0.58 m", "0.12 m"}) {
     const CliRun r = run(
@@ -232,7 +228,7 @@ TEST(DynamicsBoundaryCli, ALeadInMustClearTheChainsPathAndTheOtherGuides) {
                          "sprocket[0]"),
               std::string::npos)
         << r.err;
-    const double most = limit(r.err, "0 < R <= ");
+    const double most = named_after(r.err, "0 < R <= ");
     EXPECT_LT(most, std::stod(radius)) << r.err;
     if (std::isnan(named)) named = most;
     EXPECT_EQ(most, named)
@@ -255,7 +251,7 @@ TEST(DynamicsBoundaryCli, ALeadInMustClearTheChainsPathAndTheOtherGuides) {
   EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
   EXPECT_EQ(run("dynamics " + write("above.toml", above.str(), "")).status, 2);
   // the sweep named at the radius given clears too
-  const double sweep = limit(both.err, "lead_in_angle <= ");
+  const double sweep = named_after(both.err, "lead_in_angle <= ");
   EXPECT_GT(sweep, 0.1);
   EXPECT_LT(sweep, 30.0);
   std::ostringstream shorter;
@@ -269,7 +265,7 @@ TEST(DynamicsBoundaryCli, ALeadInMustClearTheChainsPathAndTheOtherGuides) {
   EXPECT_EQ(end.status, 2);
   EXPECT_EQ(end.err.find("sprocket[0]"), std::string::npos) << end.err;
   EXPECT_NE(end.err.find("sprocket[1]"), std::string::npos) << end.err;
-  EXPECT_NEAR(limit(end.err, "0 < R <= "), 0.138, 0.001) << end.err;
+  EXPECT_NEAR(named_after(end.err, "0 < R <= "), 0.138, 0.001) << end.err;
   // a guide in the start's arc's way (a post 15 mm from the wheel's centre line, its top 8 mm
   // under the rail's surface): a 50 mm lead-in, clear of the chain, runs into it
   const std::string post =
@@ -282,7 +278,7 @@ TEST(DynamicsBoundaryCli, ALeadInMustClearTheChainsPathAndTheOtherGuides) {
   EXPECT_NE(blocked.err.find("the lead-in at the start of guide[0] would run into guide[1]"),
             std::string::npos)
       << blocked.err;
-  EXPECT_LT(limit(blocked.err, "0 < R <= "), 0.05) << blocked.err;
+  EXPECT_LT(named_after(blocked.err, "0 < R <= "), 0.05) << blocked.err;
   // without the post the same lead-in is accepted
   EXPECT_EQ(run("dynamics " +
                 write("nopost.toml", "lead_in_radius = \"50 mm\"\nlead_in_end = \"start\"\n", ""))

@@ -12,6 +12,7 @@
 
 #include "../dynamics/period_mean.hpp"
 #include "cli_run.hpp"
+#include "lead_in_loop.hpp"
 
 namespace {
 
@@ -915,4 +916,116 @@ TEST(DynamicsLayoutCli, TwoSaggingWallsOfANotchAreCheckedAgainstEachOther) {
               std::string::npos)
         << r.out;
   }
+}
+
+// A lead-in on the free layout is checked against the layout's path (issue 21,
+// docs/models/dynamics.md, "Lead-ins"): on the three-wheel example a rail 7 mm under the tight span
+// sprocket[1] -> sprocket[0] (parallel to it, from 70 to 220 mm along it from sprocket[0]'s tangent
+// point) with 0.3 m, 30 deg lead-ins at both ends: each arc bends down into the chain wrapped on
+// the wheel it points at, so the refusal names both wheels and the largest radius that clears both
+// (0.2012 m, the start's arc's, bisected by the command), which runs 2 ms without an error while 1
+// % more is refused; the end's arc alone names only sprocket[1] and its own, larger limit.
+TEST(DynamicsLayoutCli, ALeadInOnTheFreeLayoutMustClearTheWheelsWraps) {
+  std::stringstream example;
+  example << std::ifstream(kExample).rdbuf();
+  std::string text = example.str();
+  const std::string key = "duration = \"1 s\"";
+  ASSERT_NE(text.find(key), std::string::npos);
+  text.replace(text.find(key), key.size(), "duration = \"2 ms\"");
+  auto with = [&](const std::string& name, const std::string& lead) {
+    return write(name, text +
+                           "\n[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"68.08 mm\"\n"
+                           "y0 = \"33.96 mm\"\nx1 = \"217.81 mm\"\ny1 = \"42.98 mm\"\n" +
+                           lead);
+  };
+  const CliRun cut = run("dynamics " + with("free_cut.toml", "lead_in_radius = \"0.3 m\"\n"));
+  ASSERT_EQ(cut.status, 2) << cut.err;
+  EXPECT_TRUE(cut.out.empty());
+  EXPECT_NE(cut.err.find("dynamics.guide[0].lead_in_radius (line 57) = 0.3 m"), std::string::npos)
+      << cut.err;
+  EXPECT_NE(cut.err.find("the lead-in at the start of guide[0] would run into the chain on "
+                         "sprocket[0]; the lead-in at the end of guide[0] would run into the "
+                         "chain on sprocket[1]"),
+            std::string::npos)
+      << cut.err;
+  const double most = named_after(cut.err, "0 < R <= ");
+  EXPECT_NEAR(most, 0.2012, 1e-4) << cut.err;
+  // the radius named runs without an error; 1 % more is refused
+  std::ostringstream at_limit, above;
+  at_limit << "lead_in_radius = \"" << most << " m\"\n";
+  above << "lead_in_radius = \"" << most * 1.01 << " m\"\n";
+  const CliRun ok = run("dynamics " + with("free_limit.toml", at_limit.str()) + " --format json");
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  EXPECT_EQ(ok.err.find("error"), std::string::npos) << ok.err;
+  const auto j = nlohmann::json::parse(ok.out);
+  EXPECT_TRUE(j["diagnostics"].empty()) << j["diagnostics"].dump();
+  EXPECT_EQ(j["guides"], 3);  // the rail and its two arcs
+  const CliRun over = run("dynamics " + with("free_above.toml", above.str()));
+  EXPECT_EQ(over.status, 2);
+  EXPECT_NE(over.err.find("would run into the chain on sprocket[0]"), std::string::npos)
+      << over.err;
+  // the end's arc alone, towards the larger driven wheel: its own limit, naming only sprocket[1]
+  const CliRun end = run(
+      "dynamics " + with("free_end.toml", "lead_in_radius = \"0.3 m\"\nlead_in_end = \"end\"\n"));
+  ASSERT_EQ(end.status, 2) << end.err;
+  EXPECT_EQ(end.err.find("sprocket[0]"), std::string::npos) << end.err;
+  EXPECT_NE(end.err.find("the lead-in at the end of guide[0] would run into the chain on "
+                         "sprocket[1]"),
+            std::string::npos)
+      << end.err;
+  EXPECT_NEAR(named_after(end.err, "0 < R <= "), 0.2524, 1e-4) << end.err;
+}
+
+// A lead-in on a start with slack is checked against the sagging span as laid, not the taut path
+// (issue 21, docs/models/dynamics.md, "Lead-ins"): 57 links on the three-wheel example, 36.06 mm
+// beyond its 55-link path, sag in the span sprocket[2] -> sprocket[1] (the slack span, 230.3 mm
+// between its tangent points; a circular arc bulging about 57 mm out of the chord at its middle).
+// A rail 80 mm outside that span's line, parallel to it, its rollers' side facing away from the
+// loop, runs towards sprocket[2] and ends 40 mm past the span's middle towards sprocket[1]; its
+// 40 mm, 90 deg lead-in at that end bends back towards the span and ends over the span's middle,
+// 40 mm from the taut span (no nearer to the taut path anywhere): inside the sag. With 57 links it
+// is refused naming the sagging span and the largest radius that clears the sag (14.55 mm, which
+// starts); with the 55 links the path takes (laid taut) the same lead-in is accepted.
+TEST(DynamicsLayoutCli, ALeadInOnAStartWithSlackMustClearTheSaggingSpan) {
+  std::stringstream example;
+  example << std::ifstream(kExample).rdbuf();
+  const std::string text = example.str();
+  const std::string key = "duration = \"1 s\"";
+  ASSERT_NE(text.find(key), std::string::npos);
+  auto with = [&](int links, const std::string& radius) {
+    std::string t = text;
+    t.replace(t.find(key), key.size(),
+              "duration = \"1 ms\"\nlinks = " + std::to_string(links) + "\ngravity = true");
+    return write("sag_lead_in" + std::to_string(links) + "_" + radius + ".toml",
+                 t +
+                     "\n[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"388.6 mm\"\n"
+                     "y0 = \"-102.8 mm\"\nx1 = \"347.8 mm\"\ny1 = \"-146.8 mm\"\n"
+                     "lead_in_radius = \"" +
+                     radius + " mm\"\nlead_in_angle = \"90 deg\"\nlead_in_end = \"end\"\n");
+  };
+  const CliRun sag = run("dynamics " + with(57, "40"));
+  ASSERT_EQ(sag.status, 2) << sag.err;
+  EXPECT_NE(sag.err.find("dynamics.guide[0].lead_in_radius (line 59) = 0.04 m"), std::string::npos)
+      << sag.err;
+  EXPECT_NE(sag.err.find("the lead-in at the end of guide[0] would run into the span "
+                         "sprocket[2] -> sprocket[1]"),
+            std::string::npos)
+      << sag.err;
+  const double most = named_after(sag.err, "0 < R <= ");
+  EXPECT_NEAR(most, 0.01455, 1e-5) << sag.err;
+  // the same lead-in on the taut path is clear of it
+  const CliRun taut = run("dynamics " + with(55, "40"));
+  EXPECT_EQ(taut.status, 0) << taut.err;
+  EXPECT_EQ(taut.err.find("lead_in_radius"), std::string::npos) << taut.err;
+  // the radius named starts with the sag (clear of it both ways); 1 % more is refused
+  std::ostringstream at_limit, above;
+  at_limit << most * 1e3;
+  above << most * 1.01e3;
+  const CliRun ok = run("dynamics " + with(57, at_limit.str()));
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_EQ(ok.err.find("error"), std::string::npos) << ok.err;
+  const CliRun over = run("dynamics " + with(57, above.str()));
+  EXPECT_EQ(over.status, 2);
+  EXPECT_NE(over.err.find("would run into the span sprocket[2] -> sprocket[1]"), std::string::npos)
+      << over.err;
 }

@@ -4,6 +4,7 @@
 // assert the line numbers of the messages on these files: the text must stay as it is.
 #pragma once
 
+#include <cmath>
 #include <string>
 
 // The case's [dynamics] table and its two [[dynamics.sprocket]] tables (18 lines): the guides
@@ -31,4 +32,11 @@ inertia = 0.01
 inline std::string lead_in_rail(const std::string& y, const std::string& keys) {
   return "[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"30 mm\"\ny0 = \"" + y +
          "\"\nx1 = \"150 mm\"\ny1 = \"" + y + "\"\n" + keys;
+}
+
+// The number written after `before` in a refusal (the radius "0 < R <= " or the sweep
+// "lead_in_angle <= " a lead-in's refusal names); NaN when `before` is not in it.
+inline double named_after(const std::string& err, const std::string& before) {
+  const auto at = err.find(before);
+  return at == std::string::npos ? NAN : std::stod(err.substr(at + before.size()));
 }
