@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -136,21 +137,69 @@ TEST(PeriodMeans, FewPeriodsAreTakenAsIndependent) {
 }
 
 // The duration asked for: the periods that bring the error to the bound of the given scale,
-// n = (s/(bound scale))² (1 + ρ)/(1 − ρ). Against the loop's largest span mean a slack span
-// whose mean is a few newtons asks for as many periods as the tight span's scatter would
-// (here 225 for s = 300 N against 2000 N), not (300/4/0.01)² = 5.6e7 (about 18 000 hours of
-// the example's 0.157 s periods) against its own 4 N.
+// n′ = n (error/(bound scale))² (= (s/(bound scale))² for independent means). Against the loop's
+// largest span mean a slack span whose mean is a few newtons asks for as many periods as the tight
+// span's scatter would (here 225 for s = 300 N against 2000 N), not (300/4/0.01)² = 5.6e7 (about 18
+// 000 hours of the example's 0.157 s periods) against its own 4 N.
 TEST(PeriodMeans, PeriodsToSettleAgainstTheScale) {
   PeriodMeansError slack;
   slack.periods = 3;
   slack.sd = 300.0;
+  slack.error = 300.0 / std::sqrt(3.0);
   slack.correlation = std::nan("");
   EXPECT_NEAR(periods_to_settle(slack, 2000.0, 0.01), 225.0, 1e-9);
   EXPECT_NEAR(periods_to_settle(slack, 4.0, 0.01), 5.625e7, 1e-3);
-  slack.correlation = 0.5;  // (1 + ρ)/(1 − ρ) = 3
-  EXPECT_NEAR(periods_to_settle(slack, 2000.0, 0.01), 675.0, 1e-9);
   EXPECT_TRUE(std::isinf(periods_to_settle(slack, 0.0, 0.01)));
   EXPECT_TRUE(std::isinf(periods_to_settle(slack, -3.0, 0.01)));
+  EXPECT_TRUE(std::isinf(periods_to_settle(PeriodMeansError{}, 2000.0, 0.01)));
+}
+
+// With a correlation estimated the periods asked for follow the error as reported (its finite-n
+// factor), so they exceed the window's own whenever the error is above the bound. The large-n
+// factor (1 + ρ)/(1 − ρ) alone is below the finite-n one (n = 10, ρ = 0.5: by 1/1.054) and asked
+// for fewer periods than the window held when the error was up to 5 % above the bound; the
+// example below is such a window (the old rule gives 9.9 periods for a window of 10).
+TEST(PeriodMeans, PeriodsToSettleExceedTheWindowWhenTheErrorIsAboveTheBound) {
+  std::mt19937_64 rng(7);
+  int checked = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const std::vector<double> x = ar1(rng, 10 + trial % 30, 0.5, 50.0, 2000.0);
+    const PeriodMeansError e = period_means_error(x);
+    if (!(e.correlation > 0.0)) continue;
+    // the scale at which the error is 1.02 times the 1 % bound
+    const double scale = e.error / (1.02 * 0.01);
+    EXPECT_GT(periods_to_settle(e, scale, 0.01), e.periods) << trial;
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
+  // the window of 10 periods at ρ = 0.5 by hand: g = Σ (1 − k/10) 0.5^k, the finite-n factor
+  PeriodMeansError e;
+  e.periods = 10;
+  e.sd = 1.0;
+  e.correlation = 0.5;
+  double g = 0.0;
+  for (int k = 1; k < 10; ++k) g += (1.0 - k / 10.0) * std::pow(0.5, k);
+  e.error = std::sqrt(9.0 * (1.0 + 2.0 * g) / (9.0 - 2.0 * g) / 10.0);
+  const double scale = e.error / (1.02 * 0.01);
+  EXPECT_NEAR(periods_to_settle(e, scale, 0.01), 10.0 * 1.02 * 1.02, 1e-9);
+  EXPECT_LT(std::pow(e.sd / (0.01 * scale), 2) * 3.0, 10.0);  // the large-n rule: 9.87 periods
+}
+
+// Equal means: no correlation (0, not the bias correction's 1/(n − 3)), the error 0; means that
+// are not finite: the correlation not estimated (NaN), the error not finite.
+TEST(PeriodMeans, EqualOrNonFiniteMeans) {
+  const std::vector<double> equal(12, 1500.0);
+  const PeriodMeansError e = period_means_error(equal);
+  EXPECT_EQ(e.correlation, 0.0);
+  EXPECT_EQ(e.error, 0.0);
+  EXPECT_EQ(e.effective_periods, 12.0);
+  std::vector<double> bad(12, 1500.0);
+  bad[4] = std::nan("");
+  const PeriodMeansError b = period_means_error(bad);
+  EXPECT_TRUE(std::isnan(b.correlation));
+  EXPECT_FALSE(std::isfinite(b.error));
+  bad[4] = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(std::isnan(period_means_error(bad).correlation));
 }
 
 }  // namespace

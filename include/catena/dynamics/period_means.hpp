@@ -37,8 +37,11 @@ struct PeriodMeansError {
 PeriodMeansError period_means_error(std::span<const double> means);
 
 /// The window's periods that would bring the standard error to `bound` × `scale` (scale > 0):
-/// n = (s / (bound · scale))² (1 + ρ)/(1 − ρ), the AR(1) inflation's limit for large n (ρ = 0
-/// when not estimated). Infinite when scale is not positive.
+/// n′ = n (error / (bound · scale))², the error falling as 1/√n at the correlation estimated (for
+/// large n, (s / (bound · scale))² (1 + ρ)/(1 − ρ); (s / (bound · scale))² when the means are
+/// taken as independent). n′ > n whenever the error is above the bound (the large-n factor
+/// alone, below the finite-n one, could ask for fewer periods than the window already has).
+/// Infinite when scale or bound is not positive or fewer than 2 means were given.
 double periods_to_settle(const PeriodMeansError& e, double scale, double bound);
 
 }  // namespace catena::dynamics

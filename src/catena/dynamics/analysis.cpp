@@ -2896,7 +2896,11 @@ Record describe(const Result& r, const analysis::Inputs&) {
                 "dynamics.duration = " +
                 format_g(simulated_end, 4) + " s; about " + format_g(2 * n * period, 3) + " s (" +
                 format_g(n, 4) + " periods in the window) would settle them to " +
-                format_g(100 * kSettledMeans, 2) + " %";
+                format_g(100 * kSettledMeans, 2) + " %" +
+                (correlated ? std::string()
+                            : std::string(" (a rough figure: the scatter is estimated from ") +
+                                  std::to_string(win.periods) +
+                                  " periods only, and a longer run may scatter more)");
     } else {
       message = "the window holds " + std::to_string(win.periods) +
                 " whole tooth period(s): the mean span tensions' uncertainty needs at least 2 "

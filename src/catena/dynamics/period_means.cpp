@@ -24,11 +24,13 @@ PeriodMeansError period_means_error(std::span<const double> means) {
   double rho = 0.0;
   if (e.periods < kCorrelationMinPeriods) {
     e.correlation = std::numeric_limits<double>::quiet_NaN();
-  } else {
-    // equal means (s = 0): no correlation to speak of, and none needed
-    const double r1 = ss > 0.0 ? lag / ss : 0.0;
-    rho = std::clamp((n * r1 + 1.0) / (n - 3.0), 0.0, kCorrelationMax);
+  } else if (ss > 0.0) {
+    rho = std::clamp((n * lag / ss + 1.0) / (n - 3.0), 0.0, kCorrelationMax);
     e.correlation = rho;
+  } else {
+    // equal means (s = 0): no correlation to speak of, and none needed (the bias correction
+    // would give 1/(n − 3)); means that are not finite: none estimated
+    e.correlation = ss == 0.0 ? 0.0 : std::numeric_limits<double>::quiet_NaN();
   }
   double g = 0.0, power = 1.0;
   for (std::size_t k = 1; k < size && rho > 0.0; ++k) {
@@ -43,9 +45,9 @@ PeriodMeansError period_means_error(std::span<const double> means) {
 }
 
 double periods_to_settle(const PeriodMeansError& e, double scale, double bound) {
-  if (!(scale > 0.0) || !(bound > 0.0)) return std::numeric_limits<double>::infinity();
-  const double rho = std::isfinite(e.correlation) ? e.correlation : 0.0;
-  return std::pow(e.sd / (bound * scale), 2) * (1.0 + rho) / (1.0 - rho);
+  if (!(scale > 0.0) || !(bound > 0.0) || e.periods < 2)
+    return std::numeric_limits<double>::infinity();
+  return e.periods * std::pow(e.error / (bound * scale), 2);
 }
 
 }  // namespace catena::dynamics
