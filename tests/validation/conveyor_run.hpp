@@ -36,6 +36,9 @@ struct ConveyorRun {
   // [J] the loop's energy (Energy::total) at each of run_conveyor's `energy_at` times (after the
   // step that ends nearest it; NaN for a time no step ends near)
   std::vector<double> energy;
+  // the sample (index into `time`, `friction_work`, `drive_work`) each `energy` was taken at: a
+  // balance takes the works at the same sample as the energy (size_t(-1) where `energy` is NaN)
+  std::vector<std::size_t> energy_sample;
 };
 
 // Validation (6b)'s probes, in the conveyor's frame: the slack side (the lower run between the
@@ -73,6 +76,7 @@ inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> pr
   ConveyorRun out;
   out.probes = std::move(probes);
   out.energy.assign(energy_at.size(), NAN);
+  out.energy_sample.assign(energy_at.size(), static_cast<std::size_t>(-1));
   const int steps = static_cast<int>(std::lround(duration / step));
   double drive_work = 0.0;
   for (int k = 0; k < steps; ++k) {
@@ -107,7 +111,10 @@ inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> pr
     drive_work -= integ.applied_torque()[0] * (s.angle[0] - angle0);
     out.drive_work.push_back(drive_work);
     for (std::size_t i = 0; i < energy_at.size(); ++i) {
-      if (std::abs(s.time - energy_at[i]) < 0.5 * step) out.energy[i] = energy(model, s).total();
+      if (std::abs(s.time - energy_at[i]) < 0.5 * step) {
+        out.energy[i] = energy(model, s).total();
+        out.energy_sample[i] = out.time.size() - 1;
+      }
     }
   }
   return out;
