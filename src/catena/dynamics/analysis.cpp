@@ -382,10 +382,11 @@ double hertz_seat_stiffness(double pitch, double roller, double width, int teeth
 // the steps of the 12B example stopped converging at about 1.5e8 (k) and 8e7 (c)
 constexpr double kMaxLinkRatio = 1e6;
 // the seats' and the rails' penalty over a step, k_c (θh)² / m: the 12B example stopped at about
-// 4.5e4 at 0.1 ms, but a 06B ran at 1.9e4 (1 ms), so the bound catches only the absurd
+// 4.5e4 at 0.1 ms and 4.9e3 at 1 ms, while a 06B ran at 1.9e4 at 1 ms: no one ratio separates
+// them, so the bound catches only the absurd
 constexpr double kMaxContactRatio = 5e5;
 // the seats' and the rails' damper over a step, c_c θh / m: the 12B stopped at about 250 at 0.1 ms,
-// a 06B ran at 130 (1 ms); the bound catches only the absurd
+// a 06B ran at 130 at 1 ms; the bound catches only the absurd
 constexpr double kMaxContactDampingRatio = 5e3;
 // the chain's travel in a step, ω R h, in pitches: stopped at about 1.1 pitches (a round-link
 // chain on pocket wheels, whose links seat with a jump, at 0.13: kMaxPocketTravel)
