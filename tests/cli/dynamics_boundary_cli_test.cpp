@@ -289,8 +289,9 @@ TEST(DynamicsBoundaryCli, ALeadInMustClearTheChainsPathAndTheOtherGuides) {
 
 // The extremes that ran into "did not converge" (an error diagnostic, exit 0) are refused up front
 // (exit 2), each naming its field, the value and the range with the keys the range follows from.
-// The 12B example: m = 1.244 kg/m x 19.05 mm = 0.0237 kg, theta step = 0.06 ms, R = 36.80 mm,
-// 32 links (M R^2 = 1.027e-3 kg m^2).
+// The 12B example: m = 1.244 kg/m x 19.05 mm = 0.0237 kg, theta step = 0.06 ms, R = 36.80 mm
+// (M R^2 = 3.896e-4 kg m^2, M = 1.244 kg/m x 2 pi R the chain on one round of the wheel). The
+// limits named are rounded inwards (an upper one down, a lower one up).
 TEST(DynamicsBoundaryCli, ExtremeScalesAreRefusedNamingTheFieldAndItsRange) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("catena_boundary_scales_" + std::to_string(::getpid()));
@@ -300,24 +301,24 @@ TEST(DynamicsBoundaryCli, ExtremeScalesAreRefusedNamingTheFieldAndItsRange) {
   };
   const std::vector<Case> cases{
       {"axial_stiffness", "\"1e300 N/m\"", "dynamics.axial_stiffness (line 15) = 1e+300 N/m",
-       "at most 1e+06 m/(theta step)^2 = 6.583e+12 N/m, m = mass_per_metre x pitch = 0.0237 kg, "
+       "at most 1e+06 m/(theta step)^2 = 6.582e+12 N/m, m = mass_per_metre x pitch = 0.0237 kg, "
        "theta 0.6, step 0.0001 s"},
       {"axial_damping", "1e12", "dynamics.axial_damping (line 16) = 1e+12 N s/m",
-       "at most 1e+06 m/(theta step) = 3.95e+08 N s/m"},
+       "at most 1e+06 m/(theta step) = 3.949e+08 N s/m"},
       {"axial_damping", "1e300", "dynamics.axial_damping (line 16) = 1e+300 N s/m",
-       "= 3.95e+08 N s/m"},
+       "= 3.949e+08 N s/m"},
       {"contact_stiffness", "\"1e300 N/m\"", "dynamics.contact_stiffness (line 18) = 1e+300 N/m",
-       "at most 5e+03 m/(theta step)^2 = 3.291e+10 N/m"},
+       "at most 5e+05 m/(theta step)^2 = 3.291e+12 N/m"},
       {"contact_damping", "1e12", "dynamics.contact_damping (line 19) = 1e+12 N s/m",
-       "at most 50 m/(theta step) = 1.975e+04 N s/m"},
+       "at most 5e+03 m/(theta step) = 1.974e+06 N s/m"},
       {"speed", "\"1e4 rad/s\"", "dynamics.sprocket[0].speed (line 28) = 10000 rad/s",
        "at most 1294 rad/s at step 0.0001 s, or a step of at most 1.294e-05 s at this speed"},
       {"speed", "\"1e300 rad/s\"", "dynamics.sprocket[0].speed (line 28) = 1e+300 rad/s",
        "at most 1294 rad/s"},
       {"inertia", "1e300", "dynamics.sprocket[1].inertia (line 33) = 1e+300 kg m^2",
-       "in [1.027e-06, 1027] kg m^2: 0.001 to 1e+06 times the chain's own about the wheel"},
+       "in [3.896e-07, 389.5] kg m^2: 0.001 to 1e+06 times the chain's own about the wheel"},
       {"inertia", "1e-300", "dynamics.sprocket[1].inertia (line 33) = 1e-300 kg m^2",
-       "in [1.027e-06, 1027] kg m^2"},
+       "in [3.896e-07, 389.5] kg m^2"},
       {"load_torque", "1e6", "dynamics.sprocket[1].load_torque (line 34) = 1e+06 N m",
        "at most 0.1 axial_stiffness x pitch x R = 3505 N m"},
       {"load_torque", "1e300", "dynamics.sprocket[1].load_torque (line 34) = 1e+300 N m",
@@ -357,11 +358,11 @@ TEST(DynamicsBoundaryCli, ExtremeScalesAreRefusedNamingTheFieldAndItsRange) {
   const CliRun g = run("dynamics " + rail);
   EXPECT_EQ(g.status, 2) << g.err;
   EXPECT_NE(g.err.find("dynamics.guide[0].contact_stiffness (line 24) = 1e+300 N/m: expected at "
-                       "most 5e+03 m/(theta step)^2 = 3.291e+10 N/m"),
+                       "most 5e+05 m/(theta step)^2 = 3.291e+12 N/m"),
             std::string::npos)
       << g.err;
   EXPECT_NE(g.err.find("dynamics.guide[0].contact_damping (line 25) = 1e+12 N s/m: expected at "
-                       "most 50 m/(theta step) = 1.975e+04 N s/m"),
+                       "most 5e+03 m/(theta step) = 1.974e+06 N s/m"),
             std::string::npos)
       << g.err;
   // a step too short for the inertia terms, from the case file (named with its line) and from the
@@ -428,11 +429,11 @@ TEST(DynamicsBoundaryCli, ScalesJustInsideTheirBoundsRun) {
   const std::vector<std::pair<std::string, std::string>> inside{
       {"axial_stiffness", "\"6.5e12 N/m\""},
       {"axial_damping", "3.9e8"},
-      {"contact_stiffness", "\"3.2e10 N/m\""},
-      {"contact_damping", "1.97e4"},
+      {"contact_stiffness", "\"3.2e12 N/m\""},
+      {"contact_damping", "1.97e6"},
       {"speed", "\"1290 rad/s\""},
-      {"inertia", "1.03e-6"},
-      {"inertia", "1020"},
+      {"inertia", "3.9e-7"},
+      {"inertia", "389"},
       {"load_torque", "3490"},
       {"mass_per_metre", "\"1e4 kg/m\""}};
   for (const auto& [key, value] : inside) {
@@ -452,6 +453,91 @@ TEST(DynamicsBoundaryCli, ScalesJustInsideTheirBoundsRun) {
     EXPECT_EQ(r.out.find("dynamics.not_converged"), std::string::npos) << key << "\n" << r.err;
     EXPECT_EQ(nlohmann::json::parse(r.out).at("summary").at("steps").get<int>(), 50) << key;
   }
+  std::filesystem::remove_all(dir);
+}
+
+// A wheel's inertia is bounded against the chain it holds, not the loop's: a real z = 12 sprocket
+// (J = 2e-4 kg m^2) on a loop of 10 000 links is accepted (the loop's mass set a lower bound of
+// 3.2e-4 kg m^2), one step runs; the extremes stay refused.
+TEST(DynamicsBoundaryCli, AWheelsInertiaBoundDoesNotGrowWithTheLoop) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("catena_boundary_long_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  for (const char* inertia : {"2e-4", "1e-300", "1e300"}) {
+    const CliRun r = run(
+        "dynamics " + example_with(dir, "long.toml", {{"links", "10000"}, {"inertia", inertia}}) +
+        " --duration 0.1ms --allow-large --format json");
+    if (std::string(inertia) == "2e-4") {
+      EXPECT_EQ(r.status, 0) << r.err;
+      EXPECT_EQ(r.err.find("inertia"), std::string::npos) << r.err;
+      EXPECT_EQ(nlohmann::json::parse(r.out).at("summary").at("steps").get<int>(), 1);
+    } else {
+      EXPECT_EQ(r.status, 2) << inertia << "\n" << r.err;
+      EXPECT_NE(r.err.find("in [3.896e-07, 389.5] kg m^2"), std::string::npos) << r.err;
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// The contact's bounds catch the absurd, not a smaller chain at a coarser step: a 06B (0.39 kg/m)
+// with the 12B example's contact_stiffness 2e8 N/m and contact_damping 800 N s/m runs at 0.5 ms
+// and at 1 ms with every step converged (the bounds calibrated at 0.1 ms refused both).
+TEST(DynamicsBoundaryCli, ContactBoundsAcceptA06BAtCoarseSteps) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("catena_boundary_06B_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  for (const auto& [step, steps] :
+       std::vector<std::pair<std::string, int>>{{"\"0.5 ms\"", 10}, {"\"1 ms\"", 5}}) {
+    const CliRun r = run("dynamics " +
+                         example_with(dir, "06B.toml",
+                                      {{"chain", "\"06B\""},
+                                       {"mass_per_metre", "\"0.39 kg/m\""},
+                                       {"step", step},
+                                       {"output_interval", step}}) +
+                         " --duration 5ms --format json");
+    EXPECT_EQ(r.status, 0) << step << "\n" << r.err;
+    EXPECT_EQ(r.err.find("contact_"), std::string::npos) << step << "\n" << r.err;
+    EXPECT_EQ(r.out.find("dynamics.not_converged"), std::string::npos) << step;
+    if (r.status == 0) {
+      EXPECT_EQ(nlohmann::json::parse(r.out).at("summary").at("steps").get<int>(), steps) << step;
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// A limit named is inside: typed back it is accepted. The driver's speed at 0.3 ms (the bound
+// 431.37 rad/s, named 431.3, not 431.4) and a wheel's lowest inertia on a chain of 1.2 kg/m (the
+// bound 3.7581e-7 kg m^2, named 3.759e-7, not 3.758e-7).
+TEST(DynamicsBoundaryCli, TheLimitsNamedAreAcceptedTypedBack) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("catena_boundary_named_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string step = " --step 0.3ms --duration 0.3ms --format json";
+  const CliRun fast =
+      run("dynamics " + example_with(dir, "fast.toml", {{"speed", "431.4"}}) + step);
+  ASSERT_EQ(fast.status, 2) << fast.err;
+  const double fastest = named_after(fast.err, "expected at most ");
+  EXPECT_LT(fastest, 431.4) << fast.err;
+  std::ostringstream speed;
+  speed << fastest;
+  const CliRun back =
+      run("dynamics " + example_with(dir, "back.toml", {{"speed", speed.str()}}) + step);
+  EXPECT_EQ(back.status, 0) << speed.str() << "\n" << back.err;
+  const std::string light = "\"1.2 kg/m\"";
+  const CliRun low =
+      run("dynamics " +
+          example_with(dir, "low.toml", {{"mass_per_metre", light}, {"inertia", "1e-9"}}) +
+          " --duration 0.1ms");
+  ASSERT_EQ(low.status, 2) << low.err;
+  const double least = named_after(low.err, "expected in [");
+  EXPECT_GT(least, 3.758e-7) << low.err;
+  std::ostringstream inertia;
+  inertia << least;
+  const CliRun up =
+      run("dynamics " +
+          example_with(dir, "up.toml", {{"mass_per_metre", light}, {"inertia", inertia.str()}}) +
+          " --duration 0.1ms --format json");
+  EXPECT_EQ(up.status, 0) << inertia.str() << "\n" << up.err;
   std::filesystem::remove_all(dir);
 }
 

@@ -381,18 +381,21 @@ double hertz_seat_stiffness(double pitch, double roller, double width, int teeth
 // the links' stiffness and damping over a step against a node's mass, k (θh)² / m and c θh / m:
 // the steps of the 12B example stopped converging at about 1.5e8 (k) and 8e7 (c)
 constexpr double kMaxLinkRatio = 1e6;
-// the seats' and the rails' penalty over a step, k_c (θh)² / m: stopped at about 4.5e4 (ran at
-// 1.5e4)
-constexpr double kMaxContactRatio = 5e3;
-// the seats' and the rails' damper over a step, c_c θh / m: stopped at about 250
-constexpr double kMaxContactDampingRatio = 50.0;
+// the seats' and the rails' penalty over a step, k_c (θh)² / m: the 12B example stopped at about
+// 4.5e4 at 0.1 ms and 4.9e3 at 1 ms, while a 06B ran at 1.9e4 at 1 ms: no one ratio separates
+// them, so the bound catches only the absurd
+constexpr double kMaxContactRatio = 5e5;
+// the seats' and the rails' damper over a step, c_c θh / m: the 12B stopped at about 250 at 0.1 ms,
+// a 06B ran at 130 at 1 ms; the bound catches only the absurd
+constexpr double kMaxContactDampingRatio = 5e3;
 // the chain's travel in a step, ω R h, in pitches: stopped at about 1.1 pitches (a round-link
 // chain on pocket wheels, whose links seat with a jump, at 0.13: kMaxPocketTravel)
 constexpr double kMaxTravel = 0.25, kMaxPocketTravel = 0.025;
 // a driven wheel's load: its tension T_L/R stretches a link by at most this part of the pitch
 // (as the pretension's bound)
 constexpr double kMaxStretch = 0.1;
-// a wheel's inertia against the chain's own about its axis, M R² (M the loop's mass)
+// a wheel's inertia against the chain's own about its axis, M R² (M = q 2πR, the chain on one round
+// of the wheel's pitch circle)
 constexpr double kMinInertiaRatio = 1e-3, kMaxInertiaRatio = 1e6;
 constexpr double kMinStep = 1e-9;         // [s]
 constexpr double kMaxMassPerMetre = 1e4;  // [kg/m]
@@ -410,6 +413,21 @@ constexpr const char* kContactScale =
     " (the seat's or rail's spring or damper over a step against a roller's mass; a smaller step "
     "allows more)";
 
+// x rounded down to `digits` significant digits (a limit named so that the value named is inside).
+double down_to(double x, int digits) {
+  if (!(x > 0.0) || !std::isfinite(x)) return x;
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - (digits - 1));
+  return std::floor(x / unit * (1.0 + 1e-12)) * unit;
+}
+
+// x rounded up to `digits` significant digits (a lower limit named so that the value named is
+// inside).
+double up_to(double x, int digits) {
+  if (!(x > 0.0) || !std::isfinite(x)) return x;
+  const double unit = std::pow(10.0, std::floor(std::log10(x)) - (digits - 1));
+  return std::ceil(x / unit * (1.0 - 1e-12)) * unit;
+}
+
 // The most a stiffness (power 2) or a damping (power 1) over a step may be, `ratio` m/(θh)^power,
 // and the text naming it and the keys it follows from.
 std::string scale_bound(const Setup& s, double ratio, int power, const char* unit, double& most) {
@@ -417,8 +435,9 @@ std::string scale_bound(const Setup& s, double ratio, int power, const char* uni
   const double th = s.theta * s.step;
   most = ratio * m / std::pow(th, power);
   return "at most " + format_g(ratio, 3) + " m/(theta step)" + (power == 2 ? "^2" : "") + " = " +
-         format_g(most, 4) + " " + unit + ", m = mass_per_metre x pitch = " + format_g(m, 4) +
-         " kg, theta " + format_g(s.theta, 4) + ", step " + format_g(s.step, 4) + " s";
+         format_g(down_to(most, 4), 4) + " " + unit +
+         ", m = mass_per_metre x pitch = " + format_g(m, 4) + " kg, theta " + format_g(s.theta, 4) +
+         ", step " + format_g(s.step, 4) + " s";
 }
 
 // Whether the mass, the pitch, the step and theta the bounds over a step follow from are valid.
@@ -481,8 +500,9 @@ void check_scales(const Setup& s, const std::vector<SprocketInput>& wheels, cons
       const double fastest = travel * s.pitch / (r * s.step);
       issues.push_back(
           {field(i, "speed"), shown(speed) + " rad/s",
-           "at most " + format_g(fastest, 4) + " rad/s at step " + format_g(s.step, 4) +
-               " s, or a step of at most " + format_g(travel * s.pitch / (r * speed), 4) +
+           "at most " + format_g(down_to(fastest, 4), 4) + " rad/s at step " + format_g(s.step, 4) +
+               " s, or a step of at most " +
+               format_g(down_to(travel * s.pitch / (r * speed), 4), 4) +
                " s at this speed (the chain travels at most " +
                (s.pocket ? "a fortieth of a pitch a step on pocket wheels: speed x R x step <= "
                            "pitch/40"
@@ -494,24 +514,27 @@ void check_scales(const Setup& s, const std::vector<SprocketInput>& wheels, cons
         std::isfinite(load))
       issues.push_back({field(i, "load_torque"), shown(load) + " N m",
                         "at most 0.1 axial_stiffness x pitch x R = " +
-                            format_g(kMaxStretch * s.stiffness * s.pitch * r, 4) +
+                            format_g(down_to(kMaxStretch * s.stiffness * s.pitch * r, 4), 4) +
                             " N m (its tension load_torque/R stretches a link by under 10 % of "
                             "the pitch; R the wheel's pitch radius " +
                             format_g(r, 4) + " m)"});
     const double inertia = w.inertia.value_or(NAN);
-    const double chain = s.mass_per_metre * s.links * s.pitch;  // the loop's mass M
+    // the chain one round of the wheel's pitch circle holds, M = q 2 pi R: the seats against the
+    // wheel within a step set the failures, not the loop's length
+    const double chain = s.mass_per_metre * 2.0 * kPi * r;
     if (s.mass_per_metre <= kMaxMassPerMetre && (driven || (s.layout() && w.role == "idler")) &&
         valid(inertia) && valid(chain)) {
       const double own = chain * r * r;
       if (inertia < kMinInertiaRatio * own || inertia > kMaxInertiaRatio * own)
         issues.push_back(
             {field(i, "inertia"), shown(inertia) + " kg m^2",
-             "in [" + format_g(kMinInertiaRatio * own, 4) + ", " +
-                 format_g(kMaxInertiaRatio * own, 4) + "] kg m^2: " +
+             "in [" + format_g(up_to(kMinInertiaRatio * own, 4), 4) + ", " +
+                 format_g(down_to(kMaxInertiaRatio * own, 4), 4) + "] kg m^2: " +
                  format_g(kMinInertiaRatio, 3) + " to " + format_g(kMaxInertiaRatio, 3) +
                  " times the chain's own about the wheel, M R^2 = " + format_g(own, 4) +
-                 " kg m^2 (M = mass_per_metre x links x pitch = " + format_g(chain, 4) +
-                 " kg, R its pitch radius " + format_g(r, 4) + " m)"});
+                 " kg m^2 (M = mass_per_metre x 2 pi R = " + format_g(chain, 4) +
+                 " kg, the chain on one round of its pitch circle, R its pitch radius " +
+                 format_g(r, 4) + " m)"});
     }
   }
 }
@@ -1050,13 +1073,6 @@ BeltPath starting_path(const Setup& s) {
   const double radius = s.pocket ? s.pocket_radius : 0.5 * s.pitch / std::sin(kPi / z);
   if (m < 1 || !(radius > 0.0) || !std::isfinite(radius)) return {};
   return belt_path({{0.0, 0.0, radius}, {(s.pocket ? 2 * m : m) * s.pitch, 0.0, radius}}, 0);
-}
-
-// x rounded down to `digits` significant digits (a limit named so that the value named is inside).
-double down_to(double x, int digits) {
-  if (!(x > 0.0) || !std::isfinite(x)) return x;
-  const double unit = std::pow(10.0, std::floor(std::log10(x)) - (digits - 1));
-  return std::floor(x / unit * (1.0 + 1e-12)) * unit;
 }
 
 Setup parse(const analysis::Inputs& in) {
@@ -1816,8 +1832,8 @@ Setup parse(const analysis::Inputs& in) {
         if (!bounded)
           issues.push_back(
               {field("lead_in_radius"), shown(lead.radius) + " m",
-               "a lead-in radius 0 < R <= " + format_g(most, 4) + " m at lead_in_angle " +
-                   format_g(lead.angle * 180.0 / std::numbers::pi, 4) +
+               "a lead-in radius 0 < R <= " + format_g(down_to(most, 4), 4) +
+                   " m at lead_in_angle " + format_g(lead.angle * 180.0 / std::numbers::pi, 4) +
                    " deg: its arc's chord 2 R sin(angle/2) at most half the chain's length, N p/2 "
                    "= " +
                    format_g(0.5 * chain_length, 4) +
