@@ -287,6 +287,62 @@ TEST(DynamicsBoundaryCli, ALeadInMustClearTheChainsPathAndTheOtherGuides) {
   std::filesystem::remove_all(dir);
 }
 
+// A rail that runs to a wheel's tangent point: 30.8 mm high from x = 30 mm to sprocket[1]'s centre
+// line (190.5 mm), its end 6.0 mm from the chain wrapped there, closer than a roller radius
+// (6.035 mm). Its lead-in may come no closer to that wrap than the rail's end already is: a 20 mm
+// arc bends away from it (inside the wheel's pitch circle) and is accepted and runs 5 ms without
+// error (it was refused, "no lead-in radius", when every arc had to keep a roller radius off the
+// wrap); a 0.1 m arc, flatter than the pitch circle, closes in on the wrap and is still refused.
+TEST(DynamicsBoundaryCli, ALeadInAtARailRunningToTheTangentPointMayNotCloseInOnTheWrap) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("catena_boundary_tangent_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  auto write = [&](const std::string& name, const std::string& radius) {
+    const std::string path = (dir / name).string();
+    std::ofstream(path) << std::regex_replace(kLeadInLoopHead, std::regex("0.002 s"), "5 ms")
+                        << "[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"30 mm\"\n"
+                           "y0 = \"30.8 mm\"\nx1 = \"190.5 mm\"\ny1 = \"30.8 mm\"\n"
+                           "lead_in_radius = \""
+                        << radius << "\"\nlead_in_end = \"end\"\n";
+    return path;
+  };
+  const CliRun ok = run("dynamics " + write("away.toml", "20 mm") + " --format json");
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_EQ(ok.err.find("lead_in_radius"), std::string::npos) << ok.err;
+  EXPECT_EQ(ok.out.find("\"error\""), std::string::npos) << ok.out;
+  EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
+  const CliRun in = run("dynamics " + write("in.toml", "0.1 m"));
+  EXPECT_EQ(in.status, 2) << in.err;
+  EXPECT_NE(in.err.find("the lead-in at the end of guide[0] would run into the chain on "
+                        "sprocket[1]"),
+            std::string::npos)
+      << in.err;
+  std::filesystem::remove_all(dir);
+}
+
+// The lead-in check's work is bounded: 100 rails laid on top of one another, each with 20 mm
+// lead-ins at both ends, would have every arc measured against every other guide and bisected
+// (200 arcs x 513 samples x the 199 other guides and the wrap x 43 passes, a bound of 8.78e8
+// distances): refused at once naming dynamics.guide and the cap, before any of it is measured.
+TEST(DynamicsBoundaryCli, TheLeadInChecksWorkIsCapped) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("catena_boundary_leadwork_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "stack.toml").string();
+  {
+    std::ofstream f(path);
+    f << kLeadInLoopHead;
+    for (int i = 0; i < 100; ++i) f << lead_in_rail("30 mm", "lead_in_radius = \"20 mm\"\n");
+  }
+  const CliRun r = run("dynamics " + path);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("dynamics.guide"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("200 lead-in arcs"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("distances to check"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("at most 5e+08"), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
+}
+
 // The extremes that ran into "did not converge" (an error diagnostic, exit 0) are refused up front
 // (exit 2), each naming its field, the value and the range with the keys the range follows from.
 // The 12B example: m = 1.244 kg/m x 19.05 mm = 0.0237 kg, theta step = 0.06 ms, R = 36.80 mm

@@ -138,11 +138,22 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
 /// closer than `roller`/2 (a roller's centre on it would be in the arc's contact), a wheel's wrap
 /// named "the chain on sprocket[w]", a span "the span sprocket[a] -> sprocket[b]", but for the
 /// spans the rail carries (a point within `roller` of its segment: the arc bends away from
-/// them); and a guide of `guides` closer than `roller`/2 ("guide[g]"), but for those whose index is
-/// in `skip` (the rail and its own arcs).
+/// them); where the rail's end itself is nearer a piece than `roller`/2 (a rail that runs to a
+/// wheel's tangent point), the arc may come no closer to that piece than the rail's end is; and a
+/// guide of `guides` closer than `roller`/2 ("guide[g]"), but for those whose index is in `skip`
+/// (the rail and its own arcs). Only the pieces and guides whose bounding box comes within
+/// `roller`/2 of the samples' are measured (the same verdict, less work).
 std::string lead_in_obstacle(const BeltPath& path, const Guide& rail, const Guide& arc,
                              const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
                              double roller);
+
+/// The distances `lead_in_obstacle` measures for `arc` (its samples times the pieces and guides
+/// its prefilter keeps): the work of one check, which `lead_in_limit`'s bisections repeat at most
+/// kLeadInPasses times in all (their arcs lie within the given arc's bounding box).
+double lead_in_work(const BeltPath& path, const Guide& rail, const Guide& arc,
+                    const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
+                    double roller);
+inline constexpr double kLeadInPasses = 43.0;  // the check, then two bisections of ≤ 21 steps
 
 /// The largest lead-in radius at `lead`'s sweep, and the largest sweep at its radius, whose arcs
 /// (`lead_in_arcs`) are all clear (`lead_in_obstacle`): `lead`'s own values when they are, else

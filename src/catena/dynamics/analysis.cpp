@@ -542,7 +542,9 @@ void check_scales(const Setup& s, const std::vector<SprocketInput>& wheels, cons
 bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
 
 constexpr std::size_t kMaxWheels = 20;  // sprockets of the free layout
-constexpr int kMinWrapTeeth = 3;        // a wheel's wrap, in teeth (docs/models/dynamics.md)
+// the distances the lead-in check may measure (docs/models/dynamics.md, "Lead-ins")
+constexpr double kMaxLeadInWork = 5e8;
+constexpr int kMinWrapTeeth = 3;  // a wheel's wrap, in teeth (docs/models/dynamics.md)
 
 constexpr const char* kTakeupKeys[] = {"takeup_force",     "takeup_direction", "takeup_stiffness",
                                        "takeup_damping",   "takeup_mass",      "takeup_travel_min",
@@ -1883,8 +1885,30 @@ Setup parse(const analysis::Inputs& in) {
   // a lead-in's arcs clear of the chain's path and of the other guides (docs/models/dynamics.md,
   // "Lead-ins"): refused naming what they run into and the largest radius (and sweep) that clears
   const BeltPath chain_path = lead_rails.empty() ? BeltPath{} : starting_path(s);
+  // the check's work bounded (docs/models/dynamics.md, "Lead-ins"): the distances it may measure,
+  // each arc's check repeated by the bisections, at most kMaxLeadInWork
+  double lead_work = 0.0;
   for (const LeadInRail& lr : lead_rails) {
-    if (chain_path.pieces.empty()) break;
+    if (chain_path.pieces.empty() || !lr.placed) continue;
+    std::vector<std::size_t> skip{lr.rail};
+    for (std::size_t k = 0; k < lr.count; ++k) skip.push_back(given_guides + lr.first + k);
+    for (std::size_t k = 0; k < lr.count; ++k)
+      lead_work += kLeadInPasses * lead_in_work(chain_path, s.guides[lr.rail],
+                                                s.guides[given_guides + lr.first + k], s.guides,
+                                                skip, s.roller);
+  }
+  if (lead_work > kMaxLeadInWork)
+    issues.push_back({"dynamics.guide",
+                      std::to_string(lead_arcs.size()) + " lead-in arcs, " +
+                          format_g(lead_work, 3) + " distances to check",
+                      "at most " + format_g(kMaxLeadInWork, 3) +
+                          " (the arcs' samples, a quarter roller apart, times the chain's path "
+                          "pieces and guides within a roller radius of each arc, times " +
+                          format_g(kLeadInPasses, 3) +
+                          " for the largest clear radius and sweep): fewer or shorter lead-ins, or "
+                          "the guides farther apart"});
+  for (const LeadInRail& lr : lead_rails) {
+    if (chain_path.pieces.empty() || lead_work > kMaxLeadInWork) break;
     if (!lr.placed) continue;
     const Guide& rail = s.guides[lr.rail];
     std::vector<std::size_t> skip{lr.rail};

@@ -605,10 +605,34 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
   return largest_clear_extra((0.5 * kPi - 1.0) * total * (1.0 - 1e-9), total, clear);
 }
 
-std::string lead_in_obstacle(const BeltPath& path, const Guide& rail, const Guide& arc,
-                             const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
-                             double roller) {
+namespace {
+
+// What a lead-in arc's check measures: its samples (a quarter roller apart along the arc's surface,
+// at least 512 and at most kMaxSagSamples), the path's pieces it may approach (off the spans the
+// rail carries) with the least distance each allows, and the other guides it may run into; only
+// those whose bounding box comes within a roller radius of the samples' (no other can come that
+// close to a sample: the prefilter changes no verdict, it only skips work).
+struct LeadInReach {
+  int samples = 0;
+  std::vector<std::size_t> pieces;
+  std::vector<double> least;  // [m], for each of `pieces`
+  std::vector<std::size_t> guides;
+};
+
+// a wheel's wrap (clockwise on the back: its angles the other way round), a sagging span's arc, a
+// straight span
+double piece_gap(const PathPiece& q, double x, double y) {
+  return q.arc   ? arc_distance(x, y, q.cx, q.cy, q.radius, std::min(q.from, q.to),
+                                std::max(q.from, q.to))
+         : q.sag ? arc_distance(x, y, q.cx, q.cy, q.radius, q.from, q.to)
+                 : segment_distance(x, y, q.x0, q.y0, q.x1, q.y1);
+}
+
+LeadInReach lead_in_reach(const BeltPath& path, const Guide& rail, const Guide& arc,
+                          const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
+                          double roller) {
   const double r = 0.5 * roller;
+  LeadInReach out;
   // the spans the rail carries: a point within a roller's diameter of its segment (the rollers
   // riding on it); the arc bends away from them
   std::vector<bool> carried(path.pieces.size(), false);
@@ -621,34 +645,89 @@ std::string lead_in_obstacle(const BeltPath& path, const Guide& rail, const Guid
       carried[k] = segment_distance(x, y, rail.x0, rail.y0, rail.x1, rail.y1) < roller;
     }
   }
-  // a quarter roller apart along the arc's surface, at least 512 and at most kMaxSagSamples
+  // the rail's end the arc is laid at (the rail's end nearer one of the arc's ends)
+  const double sx = arc.centre_x + arc.radius * std::cos(arc.start_angle);
+  const double sy = arc.centre_y + arc.radius * std::sin(arc.start_angle);
+  const double fx = arc.centre_x + arc.radius * std::cos(arc.end_angle);
+  const double fy = arc.centre_y + arc.radius * std::sin(arc.end_angle);
+  auto to_arc_ends = [&](double x, double y) {
+    return std::min(std::hypot(x - sx, y - sy), std::hypot(x - fx, y - fy));
+  };
+  const bool first = to_arc_ends(rail.x0, rail.y0) <= to_arc_ends(rail.x1, rail.y1);
+  const double ex = first ? rail.x0 : rail.x1, ey = first ? rail.y0 : rail.y1;
   const double sweep = arc.end_angle - arc.start_angle;
   const double want = std::ceil(arc.radius * sweep / (0.25 * roller));
-  const auto samples =
+  out.samples =
       static_cast<int>(want > 512.0 ? (want < kMaxSagSamples ? want : kMaxSagSamples) : 512.0);
-  for (int j = 0; j <= samples; ++j) {
-    const double a = arc.start_angle + sweep * j / samples;
+  double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
+  for (int j = 0; j <= out.samples; ++j) {
+    const double a = arc.start_angle + sweep * j / out.samples;
     const double x = arc.centre_x + arc.radius * std::cos(a);
     const double y = arc.centre_y + arc.radius * std::sin(a);
-    for (std::size_t k = 0; k < path.pieces.size(); ++k) {
-      if (carried[k]) continue;
-      const PathPiece& q = path.pieces[k];
-      // a wheel's wrap (clockwise on the back: its angles the other way round), a sagging span's
-      // arc, a straight span
-      const double gap = q.arc   ? arc_distance(x, y, q.cx, q.cy, q.radius, std::min(q.from, q.to),
-                                                std::max(q.from, q.to))
-                         : q.sag ? arc_distance(x, y, q.cx, q.cy, q.radius, q.from, q.to)
-                                 : segment_distance(x, y, q.x0, q.y0, q.x1, q.y1);
-      if (gap < r)
+    lo_x = std::min(lo_x, x);
+    lo_y = std::min(lo_y, y);
+    hi_x = std::max(hi_x, x);
+    hi_y = std::max(hi_y, y);
+  }
+  auto near_box = [&](double x0, double y0, double x1, double y1) {
+    return std::min(x0, x1) <= hi_x + r && std::max(x0, x1) >= lo_x - r &&
+           std::min(y0, y1) <= hi_y + r && std::max(y0, y1) >= lo_y - r;
+  };
+  auto near_circle = [&](double cx, double cy, double radius) {
+    return near_box(cx - radius, cy - radius, cx + radius, cy + radius);
+  };
+  // each piece the arc may approach: no closer than a roller radius, or than the rail's end
+  // already is when that is nearer (a rail that runs to a wheel's tangent point: its arc may not
+  // close in on the wrap beyond where the rail ends, but is not refused for where the rail ends)
+  for (std::size_t k = 0; k < path.pieces.size(); ++k) {
+    const PathPiece& q = path.pieces[k];
+    if (carried[k]) continue;
+    if (!(q.arc || q.sag ? near_circle(q.cx, q.cy, q.radius) : near_box(q.x0, q.y0, q.x1, q.y1)))
+      continue;
+    out.pieces.push_back(k);
+    // (the arc's first sample is the rail's end: a hair below it, for its rounding)
+    const double end = piece_gap(q, ex, ey);
+    out.least.push_back(end < r ? end - 1e-9 * roller : r);
+  }
+  for (std::size_t g = 0; g < guides.size(); ++g) {
+    if (std::find(skip.begin(), skip.end(), g) != skip.end()) continue;
+    const Guide& gd = guides[g];
+    if (gd.kind == Guide::Kind::kStraight ? near_box(gd.x0, gd.y0, gd.x1, gd.y1)
+                                          : near_circle(gd.centre_x, gd.centre_y, gd.radius))
+      out.guides.push_back(g);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string lead_in_obstacle(const BeltPath& path, const Guide& rail, const Guide& arc,
+                             const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
+                             double roller) {
+  const double r = 0.5 * roller;
+  const LeadInReach reach = lead_in_reach(path, rail, arc, guides, skip, roller);
+  const double sweep = arc.end_angle - arc.start_angle;
+  for (int j = 0; j <= reach.samples; ++j) {
+    const double a = arc.start_angle + sweep * j / reach.samples;
+    const double x = arc.centre_x + arc.radius * std::cos(a);
+    const double y = arc.centre_y + arc.radius * std::sin(a);
+    for (std::size_t i = 0; i < reach.pieces.size(); ++i) {
+      const PathPiece& q = path.pieces[reach.pieces[i]];
+      if (piece_gap(q, x, y) < reach.least[i])
         return q.arc ? "the chain on " + wheel_name(q.wheel)
                      : "the span " + wheel_name(q.wheel) + " -> " + wheel_name(q.next);
     }
-    for (std::size_t g = 0; g < guides.size(); ++g) {
-      if (std::find(skip.begin(), skip.end(), g) != skip.end()) continue;
+    for (const std::size_t g : reach.guides)
       if (guide_distance(guides[g], x, y) < r) return "guide[" + std::to_string(g) + "]";
-    }
   }
   return {};
+}
+
+double lead_in_work(const BeltPath& path, const Guide& rail, const Guide& arc,
+                    const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
+                    double roller) {
+  const LeadInReach reach = lead_in_reach(path, rail, arc, guides, skip, roller);
+  return (reach.samples + 1.0) * static_cast<double>(reach.pieces.size() + reach.guides.size());
 }
 
 LeadInLimit lead_in_limit(const BeltPath& path, const Guide& rail, const LeadIn& lead,
