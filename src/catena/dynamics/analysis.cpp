@@ -1072,7 +1072,7 @@ BeltPath starting_path(const Setup& s) {
   const int z = s.teeth;
   if (z < 3 || !(s.pitch > 0.0) || !std::isfinite(s.pitch)) return {};
   const int m = s.pocket ? (s.links - 2 * z) / 4 : (s.links - z) / 2;
-  const double radius = s.pocket ? s.pocket_radius : 0.5 * s.pitch / std::sin(kPi / z);
+  const double radius = pitch_radius(s, z);
   if (m < 1 || !(radius > 0.0) || !std::isfinite(radius)) return {};
   return belt_path({{0.0, 0.0, radius}, {(s.pocket ? 2 * m : m) * s.pitch, 0.0, radius}}, 0);
 }
@@ -1887,11 +1887,16 @@ Setup parse(const analysis::Inputs& in) {
   const BeltPath chain_path = lead_rails.empty() ? BeltPath{} : starting_path(s);
   // the check's work bounded (docs/models/dynamics.md, "Lead-ins"): the distances it may measure,
   // each arc's check repeated by the bisections, at most kMaxLeadInWork
+  // a rail's arcs are not checked against the rail itself nor its own arcs
+  auto own_guides = [&](const LeadInRail& lr) {
+    std::vector<std::size_t> skip{lr.rail};
+    for (std::size_t k = 0; k < lr.count; ++k) skip.push_back(given_guides + lr.first + k);
+    return skip;
+  };
   double lead_work = 0.0;
   for (const LeadInRail& lr : lead_rails) {
     if (chain_path.pieces.empty() || !lr.placed) continue;
-    std::vector<std::size_t> skip{lr.rail};
-    for (std::size_t k = 0; k < lr.count; ++k) skip.push_back(given_guides + lr.first + k);
+    const std::vector<std::size_t> skip = own_guides(lr);
     for (std::size_t k = 0; k < lr.count; ++k)
       lead_work += kLeadInPasses * lead_in_work(chain_path, s.guides[lr.rail],
                                                 s.guides[given_guides + lr.first + k], s.guides,
@@ -1911,8 +1916,7 @@ Setup parse(const analysis::Inputs& in) {
     if (chain_path.pieces.empty() || lead_work > kMaxLeadInWork) break;
     if (!lr.placed) continue;
     const Guide& rail = s.guides[lr.rail];
-    std::vector<std::size_t> skip{lr.rail};
-    for (std::size_t k = 0; k < lr.count; ++k) skip.push_back(given_guides + lr.first + k);
+    const std::vector<std::size_t> skip = own_guides(lr);
     std::string runs_into;
     for (std::size_t k = 0; k < lr.count; ++k) {
       const std::size_t arc = given_guides + lr.first + k;
