@@ -480,16 +480,24 @@ BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra) {
 // the most points the sag check samples along one arc (bounded work: sag_limit bisects over it)
 constexpr double kMaxSagSamples = 1e6;
 
+namespace {
+
+// The samples along an arc `length` long [m] that the sag and lead-in checks take: a quarter
+// roller apart, at least 512 and at most kMaxSagSamples (an arc longer than 2.5e5 rollers — a
+// roller under 0.24 mm on a 60 m span — is sampled more coarsely).
+int arc_samples(double length, double roller) {
+  const double want = std::ceil(length / (0.25 * roller));
+  return static_cast<int>(want > 512.0 ? (want < kMaxSagSamples ? want : kMaxSagSamples) : 512.0);
+}
+
+}  // namespace
+
 std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
                          const std::vector<Circle>& circles, const std::vector<double>& tip,
                          const std::vector<Guide>& guides, double roller, double pitch) {
   if (piece >= laid.pieces.size() || !laid.pieces[piece].sag) return "the sagging span";
   const PathPiece& q = laid.pieces[piece];
-  // a quarter roller apart, at least 512 and at most kMaxSagSamples (a span longer than
-  // 2.5e5 rollers — a roller under 0.24 mm on a 60 m span — is sampled more coarsely)
-  const double want = std::ceil(q.length / (0.25 * roller));
-  const auto samples =
-      static_cast<int>(want > 512.0 ? (want < kMaxSagSamples ? want : kMaxSagSamples) : 512.0);
+  const int samples = arc_samples(q.length, roller);
   // inside the circular segment the sag sweeps (between the chord and the arc): the segments of
   // a growing sag are nested, so an obstacle once inside stays inside
   const double ux = q.x1 - q.x0, uy = q.y1 - q.y0, chord = std::hypot(ux, uy);
@@ -607,11 +615,11 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
 
 namespace {
 
-// What a lead-in arc's check measures: its samples (a quarter roller apart along the arc's surface,
-// at least 512 and at most kMaxSagSamples), the path's pieces it may approach (off the spans the
-// rail carries) with the least distance each allows, and the other guides it may run into; only
-// those whose bounding box comes within a roller radius of the samples' (no other can come that
-// close to a sample: the prefilter changes no verdict, it only skips work).
+// What a lead-in arc's check measures: its samples (`arc_samples` of them along the arc's surface),
+// the path's pieces it may approach (off the spans the rail carries) with the least distance each
+// allows, and the other guides it may run into; only those whose bounding box comes within a
+// roller radius of the samples' (no other can come that close to a sample: the prefilter changes
+// no verdict, it only skips work).
 struct LeadInReach {
   int samples = 0;
   std::vector<std::size_t> pieces;
@@ -656,9 +664,7 @@ LeadInReach lead_in_reach(const BeltPath& path, const Guide& rail, const Guide& 
   const bool first = to_arc_ends(rail.x0, rail.y0) <= to_arc_ends(rail.x1, rail.y1);
   const double ex = first ? rail.x0 : rail.x1, ey = first ? rail.y0 : rail.y1;
   const double sweep = arc.end_angle - arc.start_angle;
-  const double want = std::ceil(arc.radius * sweep / (0.25 * roller));
-  out.samples =
-      static_cast<int>(want > 512.0 ? (want < kMaxSagSamples ? want : kMaxSagSamples) : 512.0);
+  out.samples = arc_samples(arc.radius * sweep, roller);
   double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
   for (int j = 0; j <= out.samples; ++j) {
     const double a = arc.start_angle + sweep * j / out.samples;
