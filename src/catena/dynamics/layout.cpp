@@ -615,13 +615,13 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
 
 namespace {
 
-// What a lead-in arc's check measures: its samples (`arc_samples` of them along the arc's surface),
-// the path's pieces it may approach (off the spans the rail carries) with the least distance each
-// allows, and the other guides it may run into; only those whose bounding box comes within a
-// roller radius of the samples' (no other can come that close to a sample: the prefilter changes
-// no verdict, it only skips work).
+// What a lead-in arc's check measures: its samples (`arc_samples` of them along the arc's surface,
+// laid once for the prefilter's box and the check), the path's pieces it may approach (off the
+// spans the rail carries) with the least distance each allows, and the other guides it may run
+// into; only those whose bounding box comes within a roller radius of the samples' (no other can
+// come that close to a sample: the prefilter changes no verdict, it only skips work).
 struct LeadInReach {
-  int samples = 0;
+  std::vector<double> x, y;  // [m] the samples
   std::vector<std::size_t> pieces;
   std::vector<double> least;  // [m], for each of `pieces`
   std::vector<std::size_t> guides;
@@ -664,12 +664,16 @@ LeadInReach lead_in_reach(const BeltPath& path, const Guide& rail, const Guide& 
   const bool first = to_arc_ends(rail.x0, rail.y0) <= to_arc_ends(rail.x1, rail.y1);
   const double ex = first ? rail.x0 : rail.x1, ey = first ? rail.y0 : rail.y1;
   const double sweep = arc.end_angle - arc.start_angle;
-  out.samples = arc_samples(arc.radius * sweep, roller);
+  const int samples = arc_samples(arc.radius * sweep, roller);
+  out.x.reserve(static_cast<std::size_t>(samples) + 1);
+  out.y.reserve(static_cast<std::size_t>(samples) + 1);
   double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
-  for (int j = 0; j <= out.samples; ++j) {
-    const double a = arc.start_angle + sweep * j / out.samples;
+  for (int j = 0; j <= samples; ++j) {
+    const double a = arc.start_angle + sweep * j / samples;
     const double x = arc.centre_x + arc.radius * std::cos(a);
     const double y = arc.centre_y + arc.radius * std::sin(a);
+    out.x.push_back(x);
+    out.y.push_back(y);
     lo_x = std::min(lo_x, x);
     lo_y = std::min(lo_y, y);
     hi_x = std::max(hi_x, x);
@@ -712,11 +716,8 @@ std::string lead_in_obstacle(const BeltPath& path, const Guide& rail, const Guid
                              double roller) {
   const double r = 0.5 * roller;
   const LeadInReach reach = lead_in_reach(path, rail, arc, guides, skip, roller);
-  const double sweep = arc.end_angle - arc.start_angle;
-  for (int j = 0; j <= reach.samples; ++j) {
-    const double a = arc.start_angle + sweep * j / reach.samples;
-    const double x = arc.centre_x + arc.radius * std::cos(a);
-    const double y = arc.centre_y + arc.radius * std::sin(a);
+  for (std::size_t j = 0; j < reach.x.size(); ++j) {
+    const double x = reach.x[j], y = reach.y[j];
     for (std::size_t i = 0; i < reach.pieces.size(); ++i) {
       const PathPiece& q = path.pieces[reach.pieces[i]];
       if (piece_gap(q, x, y) < reach.least[i])
@@ -733,7 +734,8 @@ double lead_in_work(const BeltPath& path, const Guide& rail, const Guide& arc,
                     const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
                     double roller) {
   const LeadInReach reach = lead_in_reach(path, rail, arc, guides, skip, roller);
-  return (reach.samples + 1.0) * static_cast<double>(reach.pieces.size() + reach.guides.size());
+  return static_cast<double>(reach.x.size()) *
+         static_cast<double>(reach.pieces.size() + reach.guides.size());
 }
 
 LeadInLimit lead_in_limit(const BeltPath& path, const Guide& rail, const LeadIn& lead,
