@@ -447,6 +447,23 @@ bool scales_known(const Setup& s) {
          valid(s.step) && s.step >= kMinStep && s.theta >= 0.5 && s.theta <= 1.0;
 }
 
+// The seats' contact bounds (kMaxContactRatio, kMaxContactDampingRatio; the scales known): a
+// penalty `stiffness` [N/m] (its value shown with `note`) or a damper `damping` [N s/m] above its
+// bound named at its field, with the bound and the keys it follows from; NaN is not checked. The
+// [dynamics] table's and each guide's own.
+void check_contact(const Setup& s, const std::string& stiffness_at, double stiffness,
+                   const std::string& note, const std::string& damping_at, double damping,
+                   std::vector<Issue>& issues) {
+  auto shown = [](double x) { return format_g(x, 6); };
+  double most = NAN;
+  std::string why = scale_bound(s, kMaxContactRatio, 2, "N/m", most);
+  if (stiffness > most && std::isfinite(stiffness))
+    issues.push_back({stiffness_at, shown(stiffness) + " N/m" + note, why + kContactScale});
+  why = scale_bound(s, kMaxContactDampingRatio, 1, "N s/m", most);
+  if (damping > most && std::isfinite(damping))
+    issues.push_back({damping_at, shown(damping) + " N s/m", why + kContactScale});
+}
+
 // The bounds of the scales (kMaxLinkRatio ...): every value out of them named, with the bound it
 // breaks and the keys the bound follows from. `at` names a [dynamics] key, `step_at` the step's
 // source (the table's key or the command line's --step).
@@ -463,22 +480,16 @@ void check_scales(const Setup& s, const std::vector<SprocketInput>& wheels, cons
     issues.push_back({step_at, shown(s.step) + " s", "at least " + shown(kMinStep) + " s"});
   double most = NAN;
   if (scales_known(s)) {
-    const std::string link = kLinkScale, contact = kContactScale;
+    const std::string link = kLinkScale;
     std::string why = scale_bound(s, kMaxLinkRatio, 2, "N/m", most);
     if (valid(s.stiffness) && s.stiffness > most)
       issues.push_back({at("axial_stiffness"), shown(s.stiffness) + " N/m", why + link});
     why = scale_bound(s, kMaxLinkRatio, 1, "N s/m", most);
     if (s.damping > most && std::isfinite(s.damping))
       issues.push_back({at("axial_damping"), shown(s.damping) + " N s/m", why + link});
-    why = scale_bound(s, kMaxContactRatio, 2, "N/m", most);
-    if (valid(s.contact_stiffness) && s.contact_stiffness > most)
-      issues.push_back(
-          {at("contact_stiffness"),
-           shown(s.contact_stiffness) + " N/m" + (s.hertz_stiffness ? " (the Hertz default)" : ""),
-           why + contact});
-    why = scale_bound(s, kMaxContactDampingRatio, 1, "N s/m", most);
-    if (s.contact_damping > most && std::isfinite(s.contact_damping))
-      issues.push_back({at("contact_damping"), shown(s.contact_damping) + " N s/m", why + contact});
+    check_contact(s, at("contact_stiffness"), s.contact_stiffness,
+                  s.hertz_stiffness ? " (the Hertz default)" : "", at("contact_damping"),
+                  s.contact_damping, issues);
   }
   // the wheels: the driver's speed, the driven wheels' loads, the inertias
   auto field = [&](std::size_t i, const std::string& key) {
@@ -1779,21 +1790,13 @@ Setup parse(const analysis::Inputs& in) {
     guide.roller_radius = 0.5 * s.roller;
     guide.contact_stiffness = get("contact_stiffness", s.contact_stiffness);
     guide.contact_damping = get("contact_damping", s.contact_damping);
-    // the rail's own penalty and damper: the bounds of the seats' (kMaxContactRatio ...)
-    if (scales_known(s)) {
-      double most = NAN;
-      const std::string why = kContactScale;
-      std::string bound = scale_bound(s, kMaxContactRatio, 2, "N/m", most);
-      if (g.value.count("contact_stiffness") && guide.contact_stiffness > most &&
-          std::isfinite(guide.contact_stiffness))
-        issues.push_back(
-            {field("contact_stiffness"), shown(guide.contact_stiffness) + " N/m", bound + why});
-      bound = scale_bound(s, kMaxContactDampingRatio, 1, "N s/m", most);
-      if (g.value.count("contact_damping") && guide.contact_damping > most &&
-          std::isfinite(guide.contact_damping))
-        issues.push_back(
-            {field("contact_damping"), shown(guide.contact_damping) + " N s/m", bound + why});
-    }
+    // the rail's own penalty and damper, when given: the bounds of the seats' (the table's are
+    // checked with the scales)
+    if (scales_known(s))
+      check_contact(s, field("contact_stiffness"),
+                    g.value.count("contact_stiffness") ? guide.contact_stiffness : NAN, "",
+                    field("contact_damping"),
+                    g.value.count("contact_damping") ? guide.contact_damping : NAN, issues);
     guide.friction = get("friction", 0.0);
     guide.friction_band = get("friction_band", 1e-3);
     bool readable = true;
