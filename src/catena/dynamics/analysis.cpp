@@ -1074,18 +1074,19 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
   }
 }
 
-// The chain's path at the start (docs/models/dynamics.md, "Command"): the free layout's (with its
-// sagging spans on a start with slack), or that of the two equal wheels on a line as the run lays
-// them (their centres m pitches apart, m = (N − z)/2; a pocket chain's 2m, m = (N − 2z)/4); empty
-// when the geometry is not known.
+// A roller chain's path at the start (docs/models/dynamics.md, "Command"), which its guides'
+// lead-ins are checked against: the free layout's (with its sagging spans on a start with slack),
+// or that of the two equal wheels on a line as the run lays them (their centres m pitches apart,
+// m = (N − z)/2); empty when the geometry is not known, and on pocket wheels (they take no guides:
+// parse refuses them, and with no roller none of their rails is placed).
 BeltPath starting_path(const Setup& s) {
   if (s.layout()) return s.slack > 0.0 ? s.laid : s.path;
   const int z = s.teeth;
-  if (z < 3 || !(s.pitch > 0.0) || !std::isfinite(s.pitch)) return {};
-  const int m = s.pocket ? (s.links - 2 * z) / 4 : (s.links - z) / 2;
+  if (s.pocket || z < 3 || !(s.pitch > 0.0) || !std::isfinite(s.pitch)) return {};
+  const int m = (s.links - z) / 2;
   const double radius = pitch_radius(s, z);
   if (m < 1 || !(radius > 0.0) || !std::isfinite(radius)) return {};
-  return belt_path({{0.0, 0.0, radius}, {(s.pocket ? 2 * m : m) * s.pitch, 0.0, radius}}, 0);
+  return belt_path({{0.0, 0.0, radius}, {m * s.pitch, 0.0, radius}}, 0);
 }
 
 Setup parse(const analysis::Inputs& in) {
