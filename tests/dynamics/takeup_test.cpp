@@ -17,6 +17,7 @@
 #include "catena/dynamics/chain.hpp"
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/layout.hpp"
+#include "residual_difference.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -92,19 +93,6 @@ std::vector<double> perturbed_iterate(const Loop& l, double h, unsigned seed, do
   return u;
 }
 
-// The central difference of the Newton residual in unknown c (step eps) at u.
-std::vector<double> fd_column(Integrator& integ, const Loop& l, const std::vector<double>& u,
-                              std::size_t c, double eps) {
-  std::vector<double> rp, rm, v = u;
-  v[c] += eps;
-  integ.newton_system(l.model, l.state, v, rp, nullptr);
-  v[c] -= 2 * eps;
-  integ.newton_system(l.model, l.state, v, rm, nullptr);
-  std::vector<double> fd(u.size());
-  for (std::size_t r = 0; r < u.size(); ++r) fd[r] = (rp[r] - rm[r]) / (2 * eps);
-  return fd;
-}
-
 // The Newton matrix's entries in the take-up's row and column (and the idler's angle's, which
 // now couple to it) against central differences of the residual, at a perturbed iterate with the
 // idler part-way along its slide and moving, rollers in and out of their seats.
@@ -126,7 +114,9 @@ TEST(DynamicsTakeup, JacobianMatchesFiniteDifferences) {
     double coupling = 0.0;
     for (std::size_t i = 0; i < 2 * n; ++i) coupling += std::abs(jac[i * size + 2 * n + 2]);
     ASSERT_GT(coupling, 0.0);
-    auto column = [&](std::size_t c, double eps) { return fd_column(integ, l, u, c, eps); };
+    auto column = [&](std::size_t c, double eps) {
+      return testing::residual_difference(integ, l.model, l.state, u, c, eps);
+    };
     // the extras' columns: the slide's (new) and the two angles' (which gained the slide's row)
     for (std::size_t c = 2 * n; c < size; ++c) {
       const std::vector<double> fd = column(c, c == 2 * n + 2 ? 1e-9 : 1e-8);
@@ -172,7 +162,8 @@ TEST(DynamicsTakeup, JacobianWithSeatDampingMatchesFiniteDifferences) {
     double worst = 0.0;
     for (std::size_t c = 0; c < size; ++c) {
       const double eps = c >= 2 * n && c < 2 * n + 2 ? 1e-8 : 1e-9;
-      const std::vector<double> fd = fd_column(integ, l, u, c, eps);
+      const std::vector<double> fd =
+          testing::residual_difference(integ, l.model, l.state, u, c, eps);
       double scale = 0.0;
       for (std::size_t r = 0; r < size; ++r) scale = std::max(scale, std::abs(fd[r]));
       for (std::size_t r = 0; r < size; ++r) {
@@ -248,7 +239,8 @@ TEST(DynamicsTakeup, JacobianWithHingeFrictionMatchesFiniteDifferences) {
     for (std::size_t b = 0; b < 2; ++b) far += std::abs(jac[(4 + a) * size + b]);
   ASSERT_GT(far, 0.0);
   for (std::size_t c = 0; c < 2 * n; ++c) {
-    const std::vector<double> fd = fd_column(integ, l, u, c, 1e-9);
+    const std::vector<double> fd =
+        testing::residual_difference(integ, l.model, l.state, u, c, 1e-9);
     double scale = 0.0;
     for (std::size_t r = 0; r < size; ++r) scale = std::max(scale, std::abs(fd[r]));
     for (std::size_t r = 0; r < size; ++r)

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "catena/dynamics/integrator.hpp"
+#include "residual_difference.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -156,7 +157,7 @@ TEST(DynamicsTensionOnlyLinks, NewtonMatrixMatchesTheResidualsDifferences) {
   Integrator integ(m, {.step = h, .theta = th});
   const std::size_t nu = integ.unknowns();
   ASSERT_EQ(nu, 10u);
-  std::vector<double> u(nu), r, jac, rp, rm;
+  std::vector<double> u(nu), r, jac;
   for (std::size_t i = 0; i < 5; ++i) {
     u[2 * i] = s.x[i] + h * s.vx[i];
     u[2 * i + 1] = s.y[i] + h * s.vy[i];
@@ -168,16 +169,10 @@ TEST(DynamicsTensionOnlyLinks, NewtonMatrixMatchesTheResidualsDifferences) {
   const double scale = h * th * kStiffness;
   double worst = 0.0;
   for (std::size_t j = 0; j < nu; ++j) {
-    const double hd = 1e-11;
-    std::vector<double> up = u, um = u;
-    up[j] += hd;
-    um[j] -= hd;
-    integ.newton_system(m, s, up, rp, nullptr);
-    integ.newton_system(m, s, um, rm, nullptr);
+    const std::vector<double> fd = testing::residual_difference(integ, m, s, u, j, 1e-11);
     for (std::size_t a = 0; a < nu; ++a) {
-      const double fd = (rp[a] - rm[a]) / (2 * hd);
-      worst = std::max(worst, std::abs(fd - jac[a * nu + j]) / scale);
-      EXPECT_NEAR(jac[a * nu + j], fd, 1e-5 * scale) << a << " " << j;
+      worst = std::max(worst, std::abs(fd[a] - jac[a * nu + j]) / scale);
+      EXPECT_NEAR(jac[a * nu + j], fd[a], 1e-5 * scale) << a << " " << j;
     }
   }
   std::printf("tension-only Newton matrix: largest misfit %.2e of h theta k\n", worst);
