@@ -29,6 +29,7 @@
 #include <numbers>
 #include <vector>
 
+#include "../dynamics/period_mean.hpp"
 #include "catena/strength/loop.hpp"
 #include "conveyor_loop_model.hpp"
 #include "conveyor_run.hpp"
@@ -64,22 +65,6 @@ ConveyorRun run(const Conveyor& d, double duration, double step, double t0, doub
                                {t0, window_end(d, t0, duration)});
 }
 
-// Mean of `series` over the whole tooth periods in (t0, t1].
-double window_mean(const std::vector<double>& time, const std::vector<double>& series, double t0,
-                   double t1, double period) {
-  const double end = t0 + std::floor((t1 - t0) / period + 1e-9) * period;
-  double sum = 0.0;
-  int count = 0;
-  for (std::size_t k = 0; k < time.size(); ++k) {
-    if (time[k] > t0 && time[k] <= end) {
-      sum += series[k];
-      ++count;
-    }
-  }
-  EXPECT_GT(count, 0);
-  return sum / count;
-}
-
 // The simulation over the loop model in a window (t0, t1] of a run (whole tooth periods).
 struct Comparison {
   std::vector<double> mean;   // the probes' window means [N]
@@ -99,10 +84,11 @@ Comparison compare(const Conveyor& d, const ConveyorRun& r, double t0, double t1
   const double p = d.pitch;
   const double x_hi = (d.span_links - d.guide_gap) * p;
   const double guide = x_hi - d.guide_gap * p;
-  const double period = 2 * kPi / (d.teeth * d.omega);
+  // the window's whole tooth periods in (t0, t1]
+  const double t_end = window_end(d, t0, t1);
   Comparison c;
   for (const ConveyorProbe& pr : r.probes)
-    c.mean.push_back(window_mean(r.time, pr.tension, t0, t1, period));
+    c.mean.push_back(mean_between(r.time, pr.tension, t0, t_end));
   const std::vector<double>& mean = c.mean;
 
   // catena loop: take-up at the drive's slack side (the simulated slack tension), the lower
@@ -141,7 +127,6 @@ Comparison compare(const Conveyor& d, const ConveyorRun& r, double t0, double t1
   c.loop_rise = lr.tight_tension - lr.slack_tension;
   c.rise = (mean[1] - mean[0]) / c.loop_rise;
   // the steps' friction work over the same whole periods
-  const double t_end = window_end(d, t0, t1);
   double w0 = 0.0, w1 = 0.0;
   for (std::size_t k = 0; k < r.time.size(); ++k) {
     if (r.time[k] <= t0) w0 = r.friction_work[k];
@@ -172,10 +157,9 @@ Comparison compare(const Conveyor& d, const ConveyorRun& r, double t0, double t1
   auto weighted = [&](const ConveyorProbe& pr) {  // mean(T v) / mean(v) over the window
     std::vector<double> flux(pr.tension.size());
     for (std::size_t k = 0; k < flux.size(); ++k) flux[k] = pr.tension[k] * pr.speed[k];
-    return window_mean(r.time, flux, t0, t1, period) /
-           window_mean(r.time, pr.speed, t0, t1, period);
+    return mean_between(r.time, flux, t0, t_end) / mean_between(r.time, pr.speed, t0, t_end);
   };
-  const double v_mean = window_mean(r.time, r.probes[0].speed, t0, t1, period);
+  const double v_mean = mean_between(r.time, r.probes[0].speed, t0, t_end);
   const double dt = r.time[k1] - r.time[k0];
   const double friction_power = -(r.friction_work.at(k1) - r.friction_work.at(k0)) / dt;
   const double other = (d1 - d0 - (e1 - e0)) / dt - friction_power;
