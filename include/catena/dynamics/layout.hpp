@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -173,9 +174,9 @@ LeadInLimit lead_in_limit(const BeltPath& path, const Guide& rail, const LeadIn&
 BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra);
 
 /// A start with slack: N nodes at chord exactly `pitch` (so the chain is N·pitch long) on the path
-/// with its slack span (`slack_span`) sagging by the extra length that closes the loop (solved by
-/// secant). `laid` gets that path. Empty placement if N·pitch does not exceed the path's length or
-/// the sag cannot be solved.
+/// with its slack span (`slack_span`) sagging by the extra length that closes the loop
+/// (`slack_extra`). `laid` gets that path. Empty placement if N·pitch does not exceed the path's
+/// length or the sag cannot be solved.
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid);
@@ -188,11 +189,38 @@ std::vector<std::size_t> sagging_spans(const BeltPath& path);
 /// proportion to its length. Empty if any cannot (not a span, beyond a half circle).
 BeltPath sag_spans(const BeltPath& path, const std::vector<std::size_t>& pieces, double extra);
 
+/// The extra length e (the sagging arcs' length beyond their chords, shared by `pieces` as
+/// `sag_spans` shares it) at which N nodes walked at chord exactly `pitch` close the loop: by
+/// secant on the walk's miss, and where the secant does not converge (the miss, continuous and
+/// falling in e, bends sharply where a node passes a sag's kink at a wheel, and the secant can
+/// cycle) by bisection between N·pitch less the path's length (where the miss is not negative: a
+/// chord spans at least its own length of the path) and every span's half circle. INFINITY when
+/// the walk still overshoots at the half circle (the count needs more), NAN when no e is found
+/// (or N·pitch does not exceed the path's length).
+double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
+                   double pitch);
+
 /// A start with slack shared by the spans `pieces` in proportion to their lengths
 /// (`sag_spans`), solved as `place_slack_loop` solves one span's.
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid, const std::vector<std::size_t>& pieces);
+
+/// The most links that start with slack among the counts lo + 1 .. hi (`starts` says whether a
+/// count does): tried downwards from hi, the first that starts taken (`scanned`: none above it
+/// starts). The counts that start need not be an interval, so they are tried one by one; after
+/// `scan` counts without a start the rest is bisected as if they were (bounded work): the count
+/// found then starts but a larger one may (`scanned` false). `links` 0 when none is found.
+struct LongestCount {
+  int links = 0;
+  bool scanned = false;
+};
+LongestCount longest_count(int lo, int hi, const std::function<bool(int)>& starts, int scan = 100);
+
+/// The end of a refusal of a chain too long for its slack: the most links that start
+/// (`longest`, found among the counts below the limit, `scan` of them tried one by one), and,
+/// when the count given (`given`) is not above it, that no start was found at exactly that count.
+std::string links_that_start_phrase(const LongestCount& longest, int given, int scan = 100);
 
 /// The loop's start state from a placement: nodes at the placement, moving along the path at
 /// `chain_speed`; every wheel at its placement angle, turning at chain_speed / its radius.

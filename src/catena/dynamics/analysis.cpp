@@ -662,18 +662,11 @@ bool slack_starts(const Setup& s, const std::vector<std::size_t>& pieces, int li
 // The most links that start with their slack sagging in `pieces` (`slack_starts`, the guides
 // included), 0 if none. A start at N links sags by more than N p less the path's length, so no
 // count beyond the path's length plus `most` (the slack limit) starts; the counts below it are
-// tried downwards, the first that starts taken. Not by bisection: the counts that start are not
-// an interval (the slack solve finds no exact-pitch walk for some counts among others that start:
-// 344 and 360 on a notched serpentine path of 272 pitches, where 343 and 345-355 start). After
-// kScanned counts without a start the rest is bisected, as if they were (bounded work).
-struct LongestSlack {
-  int links = 0;         // 0: none starts
-  bool scanned = false;  // found by the downward scan: no count above it starts
-};
-LongestSlack longest_slack_links(const Setup& s, const std::vector<std::size_t>& pieces,
+// tried downwards (`longest_count`: not by bisection, the counts that start need not be an
+// interval; after 100 counts without a start the rest is bisected, bounded work).
+LongestCount longest_slack_links(const Setup& s, const std::vector<std::size_t>& pieces,
                                  double most, const std::vector<double>& tip,
                                  const std::vector<Guide>& guides) {
-  constexpr int kScanned = 100;
   LoopPlacement placement;
   BeltPath laid;
   std::string blocked;
@@ -683,41 +676,47 @@ LongestSlack longest_slack_links(const Setup& s, const std::vector<std::size_t>&
   };
   int lo = static_cast<int>(std::floor(s.path.length / s.pitch));
   if (lo * s.pitch > s.path.length) --lo;  // lo: the last count not beyond the path
-  int hi = std::min(10000, static_cast<int>(std::floor((s.path.length + most) / s.pitch)) + 1);
-  for (int n = hi; n > lo; --n) {
-    if (starts(n)) return {n, true};
-    if (hi - n + 1 >= kScanned) {
-      // the rest by bisection: lo + 1 .. n - 1 (a count that starts, not always the most)
-      hi = n;
-      if (!starts(lo + 1)) return {};
-      ++lo;
-      while (hi - lo > 1) {  // lo starts, hi does not
-        const int mid = lo + (hi - lo) / 2;
-        (starts(mid) ? lo : hi) = mid;
-      }
-      return {lo, false};
-    }
-  }
-  return {};
+  const int hi =
+      std::min(10000, static_cast<int>(std::floor((s.path.length + most) / s.pitch)) + 1);
+  return longest_count(lo, hi, starts);
 }
 
 // The end of a slack refusal: the most links that start with the slack in `pieces`, and, when
-// the count given (`given`) is not above it, that the slack's solve found no start at exactly
-// that count (the counts that start are not an interval, above).
+// the count given (`given`) is not above it, that no start was found at exactly that count.
 std::string links_that_start_text(const Setup& s, const std::vector<std::size_t>& pieces,
                                   double most, const std::vector<Guide>& guides, int given) {
-  const LongestSlack longest = longest_slack_links(s, pieces, most, s.tip, guides);
-  if (longest.links <= 0) return "no count starts so";
-  const std::string n = std::to_string(longest.links);
-  std::string text = longest.scanned ? "at most " + n + " links start so"
-                                     : n + " links start so (found by bisection after " +
-                                           "the 100 counts below the limit failed; a larger "
-                                           "count may start)";
-  if (given > 0 && given <= longest.links)
-    text += "; no start was found at exactly " + std::to_string(given) +
-            " links (the slack's solve finds no closing layout for some counts among others "
-            "that start)";
-  return text;
+  return links_that_start_phrase(longest_slack_links(s, pieces, most, s.tip, guides), given);
+}
+
+// What a refused slack is measured by, like with like: the sag's extra length e (the arcs' length
+// beyond their chords) the spans `pieces` take at most (`most`, with `guides`), against the e the
+// count given needs (`slack_extra`), and apart from them N p less the path's length, the chain's
+// own extra (less than e: a link's chord spans a little more than a pitch of a curved path). Ends
+// with "(here ...", for the caller to close.
+std::string slack_measure_text(const Setup& s, const std::vector<std::size_t>& pieces, double most,
+                               bool half_circle, const std::vector<Guide>& guides, int given) {
+  auto shown = [](double x) { return format_g(x, 6); };
+  auto mm = [](double x) { return format_g(x * 1e3, 6) + " mm"; };
+  const double over = given * s.pitch - s.path.length;
+  const double need = slack_extra(s.path, pieces, given, s.pitch);
+  double spans = 0.0;
+  for (const std::size_t k : pieces) spans += s.path.pieces[k].length;
+  const double half = (0.5 * kPi - 1.0) * spans;
+  const std::string count = std::to_string(given) + " links";
+  return "a chain longer than the path, its " + span_names(s.path, pieces) +
+         " sagging by an extra length e (the arc" + (pieces.size() == 1 ? "'s" : "s'") +
+         " length beyond " + (pieces.size() == 1 ? "its chord" : "their chords") +
+         ") of at most about " + mm(most) + " (" + shown(most / s.path.length * 100.0) +
+         " % of the path), the most " + (pieces.size() == 1 ? "it" : "they") +
+         " can sag by as circular arcs" + (half_circle ? " of at most a half circle" : "") +
+         " clear of every other wheel's teeth and the other spans" +
+         (guides.empty() ? "" : " and the guides") + " (here " + count +
+         (need == INFINITY      ? " need an e beyond the half circle's " + mm(half)
+          : std::isfinite(need) ? " need e = " + mm(need)
+                                : " need an e that was not found") +
+         "; their N p less the path's length is " + mm(over) + " (" +
+         shown(over / s.path.length * 100.0) +
+         " %), less than e: a link's chord spans a little more than a pitch of a curved path";
 }
 
 // A guide named in a message (`sag_obstacle` names s.guides[k] as guide[k]): as the file
@@ -735,16 +734,8 @@ std::string guide_named(const Setup& s, const std::string& blocked) {
 // the most links that start so, and what the sag of the count given runs into.
 std::string slack_refusal_text(const Setup& s, const Setup::SlackRefusal& r,
                                const std::vector<Guide>& guides) {
-  auto shown = [](double x) { return format_g(x, 6); };
-  auto mm = [](double x) { return format_g(x * 1e3, 6) + " mm"; };
   const double most = slack_limit(s, r.pieces, s.tip, guides);
-  return r.why + "; or a chain longer than the path by at most about " + mm(most) + " (" +
-         shown(most / s.path.length * 100.0) + " % of the path), the most its " +
-         span_names(s.path, r.pieces) +
-         " can sag by as circular arcs of at most a half circle clear of every other wheel's "
-         "teeth and the other spans" +
-         (guides.empty() ? "" : " and the guides") + " (here " + mm(r.over) + ", " +
-         shown(r.over / s.path.length * 100.0) + " %" +
+  return r.why + "; or " + slack_measure_text(s, r.pieces, most, true, guides, r.chosen) +
          (r.blocked.empty() ? ""
                             : "; the sagging span would run into " + guide_named(s, r.blocked)) +
          "): " + links_that_start_text(s, r.pieces, most, guides, r.chosen);
@@ -1958,15 +1949,10 @@ Setup parse(const analysis::Inputs& in) {
           sag_obstacle(s.laid, s.slack_pieces[i], s.circles, s.tip, s.guides, s.roller, s.pitch);
     if (!blocked.empty()) {
       const double most = slack_limit(s, s.slack_pieces, s.tip, s.guides);
-      issues.push_back(
-          {at("links"), std::to_string(s.links),
-           "a chain longer than the path by at most about " + format_g(most * 1e3, 6) +
-               " mm, the most its " + span_names(s.path, s.slack_pieces) +
-               " can sag by as circular arcs clear of every other wheel's teeth, the other "
-               "spans and the guides (here " +
-               format_g(s.slack * 1e3, 6) + " mm; the sagging span would run into " +
-               guide_named(s, blocked) +
-               "): " + links_that_start_text(s, s.slack_pieces, most, s.guides, s.links)});
+      issues.push_back({at("links"), std::to_string(s.links),
+                        slack_measure_text(s, s.slack_pieces, most, false, s.guides, s.links) +
+                            "; the sagging span would run into " + guide_named(s, blocked) + "): " +
+                            links_that_start_text(s, s.slack_pieces, most, s.guides, s.links)});
     }
   }
   // a count refused in parse_layout as too long for its slack: its limit named again with the

@@ -806,19 +806,16 @@ LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& 
   return place_slack_loop(path, circles, teeth, nodes, pitch, laid, {span});
 }
 
-LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
-                               const std::vector<int>& teeth, int nodes, double pitch,
-                               BeltPath& laid, const std::vector<std::size_t>& pieces) {
-  LoopPlacement out;
-  laid = BeltPath{};
+double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
+                   double pitch) {
   const double chain = nodes * pitch;
   if (path.pieces.empty() || nodes < 3 || !(pitch > 0.0) || pieces.empty() ||
       !(chain > path.length))
-    return out;
+    return NAN;
   // the walk's miss at chord `pitch` with the spans sagging by `extra`: the end of node N's walk
   // against the laid path's length
-  auto miss = [&](double extra, BeltPath& p) -> double {
-    p = sag_spans(path, pieces, extra);
+  auto miss = [&](double extra) -> double {
+    const BeltPath p = sag_spans(path, pieces, extra);
     if (p.pieces.empty()) return NAN;
     return walk(p, pitch, nodes).back() - p.length;
   };
@@ -829,10 +826,10 @@ LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& 
   for (const std::size_t k : pieces)
     if (k < path.pieces.size()) spans += path.pieces[k].length;
   const double most = (0.5 * kPi - 1.0) * spans * (1.0 - 1e-9);
-  BeltPath p0, p1;
-  double e0 = chain - path.length, g0 = miss(e0, p0);
+  const double least = chain - path.length;
+  double e0 = least, g0 = miss(e0);
   double e1 = 1.001 * e0 > most && e0 < most ? 0.5 * (e0 + most) : 1.001 * e0;
-  double g1 = miss(e1, p1);
+  double g1 = miss(e1);
   for (int it = 0; it < 60 && std::isfinite(g1) && std::abs(g1) > 1e-13 * chain; ++it) {
     if (g1 == g0 || !std::isfinite(g0)) break;
     double e2 = e1 - g1 * (e1 - e0) / (g1 - g0);
@@ -840,15 +837,73 @@ LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& 
     e0 = e1;
     g0 = g1;
     e1 = e2;
-    if (!(e1 > 0.0)) return out;
-    g1 = miss(e1, p1);
+    if (!(e1 > 0.0)) break;
+    g1 = miss(e1);
   }
-  if (!(std::abs(g1) <= 1e-11 * chain)) return out;
+  if (e1 > 0.0 && std::abs(g1) <= 1e-11 * chain) return e1;
+  // the secant missed (it cycles where the miss bends sharply, e.g. 344 links on a notched path):
+  // bisection between `least`, where the miss is not negative, and the half circle
+  double lo = least, hi = most;
+  const double at_lo = miss(lo), at_hi = miss(hi);
+  if (at_hi > 0.0) return INFINITY;  // the walk overshoots even at the half circle
+  if (!(at_lo >= 0.0 && at_hi <= 0.0)) return NAN;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;
+    const double g = miss(mid);
+    if (std::abs(g) <= 1e-11 * chain) return mid;
+    if (!std::isfinite(g)) break;
+    (g > 0.0 ? lo : hi) = mid;
+  }
+  return NAN;
+}
+
+LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
+                               const std::vector<int>& teeth, int nodes, double pitch,
+                               BeltPath& laid, const std::vector<std::size_t>& pieces) {
+  laid = BeltPath{};
+  const double extra = slack_extra(path, pieces, nodes, pitch);
+  if (!std::isfinite(extra)) return {};
+  const BeltPath sagging = sag_spans(path, pieces, extra);
   // the wheels' seats as on a taut path: place_loop's chord solve lands on `pitch` itself here
-  out = place_loop(p1, circles, teeth, nodes, pitch);
+  LoopPlacement out = place_loop(sagging, circles, teeth, nodes, pitch);
   if (out.s.empty()) return out;
-  laid = p1;
+  laid = sagging;
   return out;
+}
+
+LongestCount longest_count(int lo, int hi, const std::function<bool(int)>& starts, int scan) {
+  for (int n = hi; n > lo; --n) {
+    if (starts(n)) return {n, true};
+    if (hi - n + 1 >= scan) {
+      // the rest by bisection: lo + 1 .. n - 1 (a count that starts, not always the most)
+      int top = n;  // does not start
+      int bottom = lo + 1;
+      if (bottom >= top || !starts(bottom)) return {};
+      while (top - bottom > 1) {  // bottom starts, top does not
+        const int mid = bottom + (top - bottom) / 2;
+        (starts(mid) ? bottom : top) = mid;
+      }
+      return {bottom, false};
+    }
+  }
+  return {};
+}
+
+std::string links_that_start_phrase(const LongestCount& longest, int given, int scan) {
+  if (longest.links <= 0) return "no count starts so";
+  const std::string n = std::to_string(longest.links);
+  std::string text = longest.scanned ? "at most " + n + " links start so"
+                                     : n + " links start so (found by bisection after the " +
+                                           std::to_string(scan) +
+                                           " counts below the limit failed; a larger count may "
+                                           "start)";
+  if (given > 0 && given <= longest.links)
+    text += "; no start was found at exactly " + std::to_string(given) +
+            " links (the counts that start are not an interval: at that count the walk at "
+            "exactly one pitch closes nowhere, or leaves a wrapped roller beyond its seat's "
+            "clearance)";
+  return text;
 }
 
 State loop_state(const BeltPath& path, const std::vector<Circle>& circles,
