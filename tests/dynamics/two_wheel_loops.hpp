@@ -52,7 +52,9 @@ inline std::vector<Sprocket> equal_wheels(const EqualWheels& d) {
 // guides at all — the loop sags under gravity). With `incline` β ≠ 0 the whole loop — wheels,
 // rails, lead-ins and chain — is turned by −β about the driver's centre, gravity staying −y: the
 // tail wheel below the driver and both runs' rails inclined at β, rising towards the driver (β < 0:
-// falling towards it), the runs still ±level from the line of centres.
+// falling towards it), the runs still ±level from the line of centres. With `load_per_metre` q_L >
+// 0 the upper run's rail pieces carry that conveyed load (Guide::load_per_metre;
+// docs/models/dynamics.md, "A conveyed load"), its lead-in none.
 struct Conveyor {
   int teeth = 16;
   int span_links = 60;
@@ -70,6 +72,7 @@ struct Conveyor {
   double friction = 0.3;         // μ on the guides
   double gravity = 9.81;         // [m/s²]
   double incline = 0.0;          // [rad] β, the line of centres rising towards the driver
+  double load_per_metre = 0.0;   // [kg/m] q_L on the upper (carrying) run's rail pieces
 };
 
 struct Loop {
@@ -149,6 +152,7 @@ inline Loop conveyor_loop(const Conveyor& d) {
         g.contact_stiffness = 1e7;
         g.contact_damping = 100.0;
         g.friction = d.friction;
+        if (y > 0.0) g.load_per_metre = d.load_per_metre;  // the carrying run's
         model.guides.push_back(g);
       }
     }
@@ -159,6 +163,7 @@ inline Loop conveyor_loop(const Conveyor& d) {
       const Guide& rail = model.guides[upper ? 0 : static_cast<std::size_t>(d.pieces)];
       Guide nose = rail;
       nose.kind = Guide::Kind::kArc;
+      nose.load_per_metre = 0.0;  // the rail carries the load, not its lead-in
       nose.radius = kNose;
       nose.centre_x = upper ? x_hi : x_lo;  // the upper run travels −x and enters at x_hi
       nose.centre_y = rail.y0 - kNose;

@@ -8,8 +8,10 @@
 
 #include <cmath>
 #include <cstddef>
+#include <numbers>
 #include <vector>
 
+#include "../dynamics/period_mean.hpp"
 #include "../dynamics/two_wheel_loops.hpp"
 #include "catena/dynamics/chain.hpp"
 #include "catena/dynamics/integrator.hpp"
@@ -30,6 +32,7 @@ struct ConveyorRun {
   std::vector<double> time;
   std::vector<ConveyorProbe> probes;
   std::vector<double> friction_work;  // [J] the state's accumulated friction work after each step
+  std::vector<double> load_work;      // [J] the state's accumulated work of the rails' loads
   // [J] the driver's accumulated work on the chain after each step: the chain's torque on it at
   // each step's θ point (Integrator::applied_torque) over the step's turn
   std::vector<double> drive_work;
@@ -108,6 +111,7 @@ inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> pr
     }
     out.time.push_back(s.time);
     out.friction_work.push_back(s.friction_work);
+    out.load_work.push_back(s.load_work);
     drive_work -= integ.applied_torque()[0] * (s.angle[0] - angle0);
     out.drive_work.push_back(drive_work);
     for (std::size_t i = 0; i < energy_at.size(); ++i) {
@@ -118,6 +122,48 @@ inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> pr
     }
   }
   return out;
+}
+
+// The steady means of a conveyor's run (the inclined and the loaded conveyor's tests): validation
+// (6b)'s probes' mean tensions and the works' mean powers over the whole tooth periods after t0.
+struct ConveyorMeans {
+  double slack = 0.0, tight = 0.0, upper_entry = 0.0;
+  double along[3] = {0.0, 0.0, 0.0};  // a quarter, half and three quarters along the upper guide
+  double along_x[3] = {0.0, 0.0, 0.0};
+  double friction_power = 0.0;  // [W] −(friction work)/time over the window
+  double drive_power = 0.0;     // [W] the driver's work on the chain/time over the window
+  double load_power = 0.0;      // [W] the rails' loads' work on the chain/time over the window
+};
+
+// Conveyor `d` run for `duration` at h = 0.1 ms, its means over the whole tooth periods after
+// t0 = 0.4 s (the window's choice: tests/validation/dynamics_conveyor_incline_test.cpp).
+inline ConveyorMeans conveyor_means(const Conveyor& d, double duration = 2.0) {
+  const double step = 1e-4, t0 = 0.4;
+  const ConveyorRun r = run_conveyor(d, conveyor_probes(d), duration, step);
+  EXPECT_EQ(r.time.size(), static_cast<std::size_t>(std::lround(duration / step)));
+  ConveyorMeans m;
+  if (r.time.empty() || r.time.back() < t0 + 0.1) return m;
+  const double period = 2 * std::numbers::pi / (d.teeth * d.omega);
+  auto mean = [&](std::size_t k) {
+    return mean_over_periods(r.time, r.probes[k].tension, t0, period);
+  };
+  m.slack = mean(0);
+  m.tight = mean(1);
+  for (std::size_t k = 0; k < 3; ++k) {
+    m.along[k] = mean(k + 2);
+    m.along_x[k] = r.probes[k + 2].x;
+  }
+  m.upper_entry = mean(5);
+  const double t_end = t0 + std::floor((r.time.back() - t0) / period) * period;
+  double w0 = 0.0, w1 = 0.0, p0 = 0.0, p1 = 0.0, l0 = 0.0, l1 = 0.0;
+  for (std::size_t k = 0; k < r.time.size(); ++k) {
+    if (r.time[k] <= t0) w0 = r.friction_work[k], p0 = r.drive_work[k], l0 = r.load_work[k];
+    if (r.time[k] <= t_end) w1 = r.friction_work[k], p1 = r.drive_work[k], l1 = r.load_work[k];
+  }
+  m.friction_power = -(w1 - w0) / (t_end - t0);
+  m.drive_power = (p1 - p0) / (t_end - t0);
+  m.load_power = (l1 - l0) / (t_end - t0);
+  return m;
 }
 
 }  // namespace catena::dynamics::testing

@@ -32,7 +32,6 @@
 #include <numbers>
 #include <vector>
 
-#include "../dynamics/period_mean.hpp"
 #include "catena/strength/loop.hpp"
 #include "conveyor_loop_model.hpp"
 #include "conveyor_run.hpp"
@@ -46,93 +45,17 @@ constexpr double kCarriedTol = 0.02;  // the rise and the friction power, as lev
 
 using testing::Conveyor;
 
-struct Measured {
-  double slack = 0.0, tight = 0.0, upper_entry = 0.0;
-  double along[3] = {0.0, 0.0, 0.0};  // a quarter, half and three quarters along the upper guide
-  double along_x[3] = {0.0, 0.0, 0.0};
-  double friction_power = 0.0;  // [W] −(friction work)/time over the window
-  double drive_power = 0.0;     // [W] the driver's work on the chain/time over the window
-};
-
-// The inclined conveyor, 2 s at h = 0.1 ms, means over the whole tooth periods after 0.4 s (the
-// level test's is 2.8 s, one run of 3.2 s; it was 0.4 s when this test was written): the loop's
-// mean tensions wander from tooth period to tooth period (the means over two periods of the tight
-// side scatter by ±3 %, not periodically), and over 0.4 s windows the ratios to the loop model
-// moved by ±0.5 % from one window to the next (β = −20°: +0.02 to +1.09 % in the rise); over 1.6 s
-// they move by under 0.05 % when Newton's tolerance is halved or doubled.
-Measured simulate(const Conveyor& d) {
-  const double duration = 2.0, step = 1e-4, t0 = 0.4;
-  const testing::ConveyorRun r =
-      testing::run_conveyor(d, testing::conveyor_probes(d), duration, step);
-  EXPECT_EQ(r.time.size(), static_cast<std::size_t>(std::lround(duration / step)));
-  Measured m;
-  if (r.time.empty() || r.time.back() < t0 + 0.1) return m;
-  const double period = 2 * kPi / (d.teeth * d.omega);
-  auto mean = [&](std::size_t k) {
-    return mean_over_periods(r.time, r.probes[k].tension, t0, period);
-  };
-  m.slack = mean(0);
-  m.tight = mean(1);
-  for (std::size_t k = 0; k < 3; ++k) {
-    m.along[k] = mean(k + 2);
-    m.along_x[k] = r.probes[k + 2].x;
-  }
-  m.upper_entry = mean(5);
-  const double t_end = t0 + std::floor((r.time.back() - t0) / period) * period;
-  double w0 = 0.0, w1 = 0.0, p0 = 0.0, p1 = 0.0;
-  for (std::size_t k = 0; k < r.time.size(); ++k) {
-    if (r.time[k] <= t0) w0 = r.friction_work[k], p0 = r.drive_work[k];
-    if (r.time[k] <= t_end) w1 = r.friction_work[k], p1 = r.drive_work[k];
-  }
-  m.friction_power = -(w1 - w0) / (t_end - t0);
-  m.drive_power = (p1 - p0) / (t_end - t0);
-  return m;
-}
-
-// `catena loop` for the inclined conveyor with its take-up at `slack` (the construction above).
-struct LoopModel {
-  strength::LoopResult result;
-  double speed = 0.0;           // [m/s] the pitch line's
-  double upper_entry = 0.0;     // [N] where the upper guide's carried length begins
-  double upper_gradient = 0.0;  // [N/m] the tension's rise along the upper guide
-  double carried = 0.0;         // [m] a run's carried length
-  double x_start = 0.0;  // [m] where (along the line of centres) the upper carried length begins
-};
-
-LoopModel loop_model(const Conveyor& d, double slack) {
-  const double p = d.pitch, beta = d.incline;
-  const double q0 = d.mass_per_metre * d.gravity;
-  const double radius = 0.5 * p / std::sin(kPi / d.teeth);
-  const double level = radius * std::sin(kPi / d.teeth) / (kPi / d.teeth);
-  LoopModel out;
-  out.carried = (d.span_links - d.guide_gap) * p;  // the guide and 2 × half a stretch
-  out.x_start = (d.span_links - 0.5 * d.guide_gap) * p;
-  const double stretch = d.span_links * p - out.x_start;  // to the tail's tangent point
-  strength::Loop loop;
-  loop.speed = d.omega * radius;
-  out.speed = loop.speed;
-  // a straight run of the chain's weight (tests/validation/conveyor_loop_model.hpp)
-  auto straight = [&](const char* name, double length, double incline, double w) {
-    return testing::loop_straight(name, length, incline, q0, w);
-  };
-  loop.segments = {testing::loop_takeup(slack),
-                   straight("lower run, guided", out.carried, -beta, d.friction),
-                   straight("lower run to the tail", stretch, -beta, 0.0),
-                   straight("lift round the tail", 2 * level * std::cos(beta), kPi / 2, 0.0),
-                   testing::loop_idler(),
-                   straight("upper run from the tail", stretch, beta, 0.0),
-                   straight("upper run, guided", out.carried, beta, d.friction),
-                   testing::loop_drive()};
-  out.result = strength::solve(loop);
-  out.upper_entry = out.result.segments[6].tension_in;
-  out.upper_gradient = (out.result.tight_tension - out.upper_entry) / out.carried;
-  return out;
-}
-
+// The inclined conveyor, 2 s at h = 0.1 ms, means over the whole tooth periods after 0.4 s
+// (testing::conveyor_means; the level test's window is 2.8 s, one run of 3.2 s; it was 0.4 s when
+// this test was written): the loop's mean tensions wander from tooth period to tooth period (the
+// means over two periods of the tight side scatter by ±3 %, not periodically), and over 0.4 s
+// windows the ratios to the loop model moved by ±0.5 % from one window to the next (β = −20°:
+// +0.02 to +1.09 % in the rise); over 1.6 s they move by under 0.05 % when Newton's tolerance is
+// halved or doubled. The loop model is testing::conveyor_loop_model (the construction above).
 void compare(const Conveyor& d) {
-  const Measured m = simulate(d);
+  const testing::ConveyorMeans m = testing::conveyor_means(d);
   ASSERT_GT(m.slack, 0.0);
-  const LoopModel lm = loop_model(d, m.slack);
+  const testing::ConveyorLoopModel lm = testing::conveyor_loop_model(d, m.slack);
   const strength::LoopResult& lr = lm.result;
   const double q0 = d.mass_per_metre * d.gravity;
   // the loop model's own closed form: tight − slack = 2 μ q0 cos β L + q0 2 h cos β
@@ -141,13 +64,13 @@ void compare(const Conveyor& d) {
   const double friction_force = 2.0 * d.friction * q0 * std::cos(d.incline) * lm.carried;
   EXPECT_NEAR(lr.tight_tension - lr.slack_tension,
               friction_force + q0 * 2 * level * std::cos(d.incline), 1e-9);
-  EXPECT_NEAR(lm.upper_gradient, q0 * (d.friction * std::cos(d.incline) + std::sin(d.incline)),
+  EXPECT_NEAR(lm.guide_gradient, q0 * (d.friction * std::cos(d.incline) + std::sin(d.incline)),
               1e-9);
 
   EXPECT_NEAR(m.tight / lr.tight_tension, 1.0, kTensionTol)
       << "tight " << m.tight << " loop " << lr.tight_tension << " slack " << m.slack;
   for (std::size_t k = 0; k < 3; ++k) {
-    const double loop_t = lm.upper_entry + (lm.x_start - m.along_x[k]) * lm.upper_gradient;
+    const double loop_t = lm.upper_at(m.along_x[k]);
     EXPECT_NEAR(m.along[k] / loop_t, 1.0, kTensionTol)
         << "x " << m.along_x[k] << ": " << m.along[k] << " loop " << loop_t;
   }
@@ -170,7 +93,7 @@ void compare(const Conveyor& d) {
               d.incline * 180 / kPi, m.slack, m.tight, lr.tight_tension,
               100 * (m.tight / lr.tight_tension - 1), 100 * (m.upper_entry / lm.upper_entry - 1));
   for (std::size_t k = 0; k < 3; ++k) {
-    const double loop_t = lm.upper_entry + (lm.x_start - m.along_x[k]) * lm.upper_gradient;
+    const double loop_t = lm.upper_at(m.along_x[k]);
     std::printf(" %+.3f", 100 * (m.along[k] / loop_t - 1));
   }
   std::printf(" %% drive power %+.3f", 100 * (m.drive_power / (lm.speed * friction_force) - 1));

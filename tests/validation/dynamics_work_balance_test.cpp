@@ -32,16 +32,19 @@ constexpr std::size_t kNodes = 21;
 struct Balance {
   double e0 = 0.0, e1 = 0.0;
   double friction = 0.0, dampers = 0.0, contact = 0.0, drag = 0.0;
+  double load = 0.0;  // the rail's load's work (an external force's, not dissipated)
   double kinetic_max = 0.0;
   double dissipated() const { return friction + dampers + contact + drag; }
-  double numerical() const { return e1 - e0 - dissipated(); }
+  double numerical() const { return e1 - e0 - dissipated() - load; }
 };
 
 // A 20-link chain sliding down a rail inclined at 15° with μ = 0.2 (tan 15° > μ: it speeds up),
 // link dampers, contact damping and a little drag, released at 1 m/s with a longitudinal wave
 // along it and every other roller thrown off the rail at 0.1 m/s, so that the rollers bounce and
-// the links ring: every dissipative force works. 3 s.
-Balance slide(double theta, double step) {
+// the links ring: every dissipative force works. 3 s. With `load` q_L > 0 [kg/m] the rail is two
+// collinear pieces cut at x = −0.5 m, the lower one carrying that conveyed load: the chain slides
+// onto it over its ramp (Guide::load_per_metre).
+Balance slide(double theta, double step, double load = 0.0) {
   const double incline = 15.0 * std::numbers::pi / 180.0;
   Model model = uniform_chain(kNodes, false, kPitch, kNodeMass, 2e6, 30.0, false);
   model.drag = 0.01;
@@ -56,6 +59,13 @@ Balance slide(double theta, double step) {
   rail.friction = 0.2;
   rail.friction_band = 1e-3;
   model.guides = {rail};
+  if (load > 0.0) {
+    Guide lower = rail;
+    lower.x1 = -0.5;
+    lower.load_per_metre = load;
+    rail.x0 = -0.5;
+    model.guides = {lower, rail};
+  }
   State s(kNodes, 0);
   const double sink =
       kNodeMass * kG * std::cos(incline) / rail.contact_stiffness + 0.5 * rail.contact_smoothing;
@@ -83,6 +93,7 @@ Balance slide(double theta, double step) {
   b.dampers = s.damper_work;
   b.contact = s.contact_damping_work;
   b.drag = s.drag_work;
+  b.load = s.load_work;
   return b;
 }
 
@@ -122,6 +133,19 @@ TEST(DynamicsWorkBalance, ThetaMethodsDissipationIsReportedAsNumerical) {
   EXPECT_GT(std::abs(b.numerical()), 10.0 * std::abs(half.numerical()));
   // the same slide: the physical works agree with θ = ½ where they are large
   EXPECT_NEAR(b.friction, half.friction, 1e-2 * std::abs(half.friction));
+}
+
+// A rail's load in the balance (Guide::load_per_metre): the slide above onto a rail piece carrying
+// q_L = 2.5 kg/m (twice the chain's), at θ = ½. The load's weight along the slope works on the
+// chain and presses it onto the rail (more friction): the balance closes only with the load's
+// work, which is far larger than the tolerance.
+TEST(DynamicsWorkBalance, ClosesWithARailsLoad) {
+  const Balance b = slide(0.5, 1e-4, 2.5);
+  print("rail load", b);
+  std::printf("rail load: the load's work %.6g J\n", b.load);
+  EXPECT_GT(b.load, 0.0);  // the chain slides down with its load
+  EXPECT_GT(b.load, 100 * kClosureTol * std::abs(b.dissipated()));
+  EXPECT_LT(std::abs(b.numerical()), kClosureTol * std::abs(b.dissipated()));
 }
 
 // Seat friction in the balance: two linked rollers thrown sideways at 0.15 m/s in two top seats

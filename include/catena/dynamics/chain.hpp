@@ -182,7 +182,13 @@ struct Guide {
   /// [m/s] v_ε: the friction force is −μ f v_t/√(v_t² + v_ε²), within 1/(2 (v_t/v_ε)²) of the
   /// Coulomb value when sliding faster than v_ε (1e-4 relative at 70 v_ε)
   double friction_band = 1e-3;
+  /// [kg/m] q_L: conveyed material riding on the chain along a straight rail (docs/models/
+  /// dynamics.md, "A conveyed load"; rail_load); 0, the default: none. A straight guide only.
+  double load_per_metre = 0.0;
 };
+
+/// The largest Guide::load_per_metre validate accepts [kg/m].
+inline constexpr double kMaxRailLoad = 1e4;
 
 /// One roller's contact with one guide at position q and velocity v: the force on the roller,
 /// F = f n + f_t t (n the rail's normal to the free side, t = (−n_y, n_x)), and its derivatives
@@ -214,6 +220,22 @@ GuideFrame guide_frame(const Guide& g);
 /// bit.
 GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
                            double vy);
+/// A straight rail's load (Guide::load_per_metre q_L) on one node at q (docs/models/dynamics.md,
+/// "A conveyed load"): its weight share F = q_L p g w(s), g the gravity vector, p the pitch (the
+/// links' rest length), s = (q − P₀)·u the node's projection along the rail from its first end,
+/// w(s) = |[s − p/2, s + p/2] ∩ [0, L]|/p — 1 along the rail, ramped linearly to 0 over the pitch
+/// centred on each end, so that nodes a pitch apart carry q_L L g in all. Only a node within one
+/// pitch across of the line the roller centres ride on (either side: the run on the rail, not a
+/// return run beneath it) carries it. ∂F/∂q = q_L p g (dw/ds) uᵀ, the ramp's (row-major).
+struct RailLoad {
+  bool active = false;
+  double share = 0.0;           ///< [-] w(s)
+  double fx = 0.0, fy = 0.0;    ///< [N] F
+  double dq[4] = {0, 0, 0, 0};  ///< [N/m] ∂F/∂q
+};
+RailLoad rail_load(const Guide& g, const GuideFrame& frame, double pitch, double gravity_x,
+                   double gravity_y, double x, double y);
+
 /// An axis-aligned box that holds every roller centre a guide can touch: guide_contact(g, x, y,
 /// …) is active only if guide_touch_possible(guide_bounds(g), x, y). A straight rail's segment
 /// widened by the roller radius, an arc's whole circle of radius + roller radius, each padded by
@@ -347,6 +369,8 @@ struct State {
   double contact_damping_work = 0.0;
   double seat_friction_work = 0.0;  ///< [J] work of the seats' friction so far (≤ 0)
   double hinge_work = 0.0;          ///< [J] work of the hinges' friction so far (≤ 0)
+  /// [J] work of the rails' loads (Guide::load_per_metre) on the chain so far
+  double load_work = 0.0;
   /// [m] per sprocket: a take-up's slide displacement s along its direction (0 without one)
   std::vector<double> slide;
   std::vector<double> slide_speed;  ///< [m/s] per sprocket: ṡ

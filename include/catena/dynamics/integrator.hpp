@@ -73,6 +73,8 @@ struct StepReport {
   double hinge_work = 0.0;  ///< [J] the hinges' friction work over the step, Σ M Δβ (≤ 0)
   /// [J] the take-ups' dampers' work over the step, −Σ c_t (s₁ − s₀)²/h (≤ 0)
   double takeup_damper_work = 0.0;
+  /// [J] the rails' loads' work over the step, Σ F(q_θ)·(x₁ − x₀) (Guide::load_per_metre)
+  double load_work = 0.0;
   SolveStatus solve = SolveStatus::kSolved;
 };
 

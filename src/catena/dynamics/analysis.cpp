@@ -148,6 +148,9 @@ std::vector<Parameter> guide_fields() {
       number("friction", "Coulomb friction coefficient mu in [0, 1] (default 0)"),
       quantity("friction_band", K::kSpeed,
                "speed band of the regularised friction, in (0, 1] m/s (default 1 mm/s)"),
+      quantity("load_per_metre", K::kMassPerLength,
+               "straight: conveyed material riding on the chain along the rail, kg/m in [0, "
+               "10000] (default 0; its weight needs gravity)"),
       quantity("contact_stiffness", K::kForcePerLength,
                "roller-rail penalty [N/m] (default: dynamics.contact_stiffness)"),
       number("contact_damping",
@@ -1791,6 +1794,11 @@ Setup parse(const analysis::Inputs& in) {
                     g.value.count("contact_damping") ? guide.contact_damping : NAN, issues);
     guide.friction = get("friction", 0.0);
     guide.friction_band = get("friction_band", 1e-3);
+    guide.load_per_metre = get("load_per_metre", 0.0);
+    // a load's weight is q_L g: without gravity it would do nothing, silently
+    if (guide.load_per_metre > 0.0 && !(s.gravity > 0.0))
+      issues.push_back({field("load_per_metre"), shown(guide.load_per_metre) + " kg/m",
+                        "0 without gravity (a load's weight is q_L g: set dynamics.gravity)"});
     bool readable = true;
     for (const auto& [key, at_line] : g.seen)
       if (key != "kind" && key != "inside" && key.rfind("lead_in_", 0) != 0 && !g.value.count(key))
@@ -2058,6 +2066,7 @@ struct Result {
   double friction_work = 0.0;
   double seat_friction_work = 0.0;  // the seats' friction (0 unless seat_friction > 0)
   double hinge_work = 0.0;          // the hinges' friction (≤ 0)
+  double load_work = 0.0;           // the rails' loads (0 without load_per_metre)
   // the work balance (summary.work_balance): E_end − E_0 = input + friction + link dampers +
   // contact dampers + numerical (the command's model has no drag)
   double input_work = 0.0, damper_work = 0.0, contact_damping_work = 0.0;
@@ -2100,6 +2109,12 @@ bool per_wheel_friction(const Setup& d) {
   return false;
 }
 // Some wheel with seat friction: the outputs then carry its work.
+// Some guide carrying a load (load_per_metre > 0).
+bool any_rail_load(const Setup& d) {
+  return std::any_of(d.guides.begin(), d.guides.end(),
+                     [](const Guide& g) { return g.load_per_metre > 0.0; });
+}
+
 bool any_seat_friction(const Setup& d) {
   for (std::size_t w = 0; w < d.wheel_friction.size(); ++w)
     if (wheel_mu(d, w) > 0.0) return true;
@@ -2440,6 +2455,11 @@ Result run(const analysis::Inputs& in) {
   out.hinge_work = s.hinge_work;
   out.energy_drift =
       energy(model, s).total() - e0 - work - s.friction_work - s.seat_friction_work - s.hinge_work;
+  // the rails' loads' work (a run without a load computes as before)
+  if (any_rail_load(d)) {
+    out.load_work = s.load_work;
+    out.energy_drift -= s.load_work;
+  }
   out.input_work = work;
   out.damper_work = s.damper_work;
   out.contact_damping_work = s.contact_damping_work;
@@ -2711,6 +2731,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
     if (any_seat_friction(d)) j["summary"]["work_balance"]["seat_friction"] = r.seat_friction_work;
     if (hinge_on) j["summary"]["work_balance"]["hinge_friction"] = r.hinge_work;
     if (!r.takeup.empty()) j["summary"]["work_balance"]["takeup_dampers"] = r.takeup_damper_work;
+    if (any_rail_load(d)) j["summary"]["work_balance"]["loads"] = r.load_work;
   }
   // take-ups add fields only when given: takeup[k] {sprocket, position, slide_speed, force}
   if (!r.takeup.empty()) {
@@ -3130,6 +3151,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
       << " J, contact dampers " << format_g(r.contact_damping_work, 5) << " J, "
       << (r.takeup.empty() ? std::string()
                            : "take-up dampers " + format_g(r.takeup_damper_work, 5) + " J, ")
+      << (any_rail_load(d) ? "loads " + format_g(r.load_work, 5) + " J, " : std::string())
       << "numerical " << format_g(r.numerical_work, 4) << " J\n";
   if (any_seat_friction(d)) {
     t << "  seat friction ";

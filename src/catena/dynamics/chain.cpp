@@ -226,6 +226,14 @@ std::vector<Issue> validate(const Model& model) {
       out.push_back(
           {f + "friction_band", check::format_si(g.friction_band, "m/s"), "a speed in (0, 1] m/s"});
     }
+    if (!std::isfinite(g.load_per_metre) || !(g.load_per_metre >= 0.0) ||
+        !(g.load_per_metre <= kMaxRailLoad)) {
+      out.push_back({f + "load_per_metre", check::format_si(g.load_per_metre, "kg/m"),
+                     "a load per metre in [0, 10000] kg/m"});
+    } else if (g.load_per_metre > 0.0 && g.kind != Guide::Kind::kStraight) {
+      out.push_back({f + "load_per_metre", check::format_si(g.load_per_metre, "kg/m"),
+                     "0 on an arc guide: a load rides on a straight guide only"});
+    }
   }
   std::vector<Issue> hinge = validate(model.hinge, model.pitch);
   out.insert(out.end(), hinge.begin(), hinge.end());
@@ -292,6 +300,7 @@ std::vector<Guide> lead_in_arcs(const Guide& rail, const LeadIn& lead) {
     g.start_angle = from;
     g.end_angle = to;
     g.inside = false;
+    g.load_per_metre = 0.0;  // the rail's load is the rail's (an arc carries none)
     out.push_back(g);
   };
   if (lead.at_start) arc(rail.x0, rail.y0, up, up + lead.angle);
@@ -304,6 +313,35 @@ GuideFrame guide_frame(const Guide& g) {
   const double ax = g.x1 - g.x0, ay = g.y1 - g.y0;
   const double len = std::sqrt(ax * ax + ay * ay);
   return {ax / len, ay / len, len};
+}
+
+RailLoad rail_load(const Guide& g, const GuideFrame& frame, double pitch, double gravity_x,
+                   double gravity_y, double x, double y) {
+  RailLoad out;
+  if (g.kind != Guide::Kind::kStraight || !(g.load_per_metre > 0.0) || !(frame.length > 0.0) ||
+      !(pitch > 0.0))
+    return out;
+  const double ux = frame.ux, uy = frame.uy;
+  const double rx = x - g.x0, ry = y - g.y0;
+  const double s = rx * ux + ry * uy;
+  // across the rail from the roller centres' line (the free side's normal n = (−u_y, u_x))
+  const double across = -rx * uy + ry * ux - g.roller_radius;
+  if (!(std::abs(across) <= pitch)) return out;
+  const double half = 0.5 * pitch, len = frame.length;
+  const double hi = std::min(s + half, len), lo = std::max(s - half, 0.0);
+  if (!(hi > lo)) return out;  // beyond the ramp at either end
+  out.active = true;
+  out.share = (hi - lo) / pitch;
+  const double slope = ((s + half < len ? 1.0 : 0.0) - (s - half > 0.0 ? 1.0 : 0.0)) / pitch;
+  const double weight = g.load_per_metre * pitch;  // [kg] one pitch's load
+  out.fx = weight * gravity_x * out.share;
+  out.fy = weight * gravity_y * out.share;
+  const double ax = weight * gravity_x * slope, ay = weight * gravity_y * slope;
+  out.dq[0] = ax * ux;
+  out.dq[1] = ax * uy;
+  out.dq[2] = ay * ux;
+  out.dq[3] = ay * uy;
+  return out;
 }
 
 GuideContact guide_contact(const Guide& gd, double x, double y, double vx, double vy) {

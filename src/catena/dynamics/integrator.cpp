@@ -614,6 +614,27 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
            d.c - (ht * gc.dq[2] + gc.dv[2]), d.d - (ht * gc.dq[3] + gc.dv[3])};
     }
   }
+  // Rails' loads (Guide::load_per_metre; docs/models/dynamics.md, "A conveyed load"): the weight
+  // share F(q) at the θ point; the diagonal block gains −hθ ∂F/∂q, the ramp's at the rail's ends.
+  // Every node is tried against a loaded rail (a node carries it within a pitch of the rail,
+  // farther than the guide hint's lists reach).
+  for (std::size_t g = 0; g < model.guides.size(); ++g) {
+    const Guide& guide = model.guides[g];
+    if (!(guide.load_per_metre > 0.0)) continue;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (model.is_pinned(i)) continue;
+      const RailLoad load =
+          rail_load(guide, guide_frame_[g], model.pitch, grav_x, grav_y, qx_[i], qy_[i]);
+      if (!load.active) continue;
+      rhs[i].x += h * load.fx;
+      rhs[i].y += h * load.fy;
+      if (!jacobian) continue;
+      const double ht = h * th;
+      Mat2& d = diag[i];
+      d = {d.a - ht * load.dq[0], d.b - ht * load.dq[1], d.c - ht * load.dq[2],
+           d.d - ht * load.dq[3]};
+    }
+  }
   if (!model.pinned.empty()) {
     for (std::size_t i = 0; i < n; ++i) {
       if (!model.is_pinned(i)) continue;
@@ -1056,7 +1077,21 @@ StepReport Integrator::step(const Model& model, State& s) {
       report.contact_damping_work += h * gc.damping_power;
     }
   }
+  // The rails' loads' work over the step: the force the step applied (at the θ point) times the
+  // step's displacement.
+  for (std::size_t g = 0; g < model.guides.size(); ++g) {
+    const Guide& guide = model.guides[g];
+    if (!(guide.load_per_metre > 0.0)) continue;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (model.is_pinned(i)) continue;
+      const RailLoad load = rail_load(guide, guide_frame_[g], model.pitch, model.gravity_x,
+                                      model.gravity_y, qx_[i], qy_[i]);
+      if (load.active)
+        report.load_work += load.fx * (ux_[i] - s.x[i]) + load.fy * (uy_[i] - s.y[i]);
+    }
+  }
   s.friction_work += report.friction_work;
+  s.load_work += report.load_work;
   s.damper_work += report.damper_work;
   s.drag_work += report.drag_work;
   s.contact_damping_work += report.contact_damping_work;

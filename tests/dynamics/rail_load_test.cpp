@@ -1,0 +1,212 @@
+// A conveyed load on a straight rail (Guide::load_per_metre; docs/models/dynamics.md, "A conveyed
+// load"): the ramped weight share sums to the rail's whole load q_L L g over nodes a pitch apart
+// wherever they sit, and is 0 beyond the ramp and away from the rail; its Newton block is the
+// finite difference of the force; bad values are named; a lead-in carries none; and the work the
+// steps report for a chain sliding onto a loaded rail is the load's along its travel.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "catena/dynamics/integrator.hpp"
+#include "random_guides.hpp"
+
+namespace catena::dynamics {
+namespace {
+
+constexpr double kPitch = 0.01905;        // [m] 12B
+constexpr double kGx = 0.7, kGy = -9.78;  // [m/s²] a gravity not across the rail
+
+Guide loaded_rail(double load) {
+  Guide g = testing::inclined_rail(0.2);
+  g.load_per_metre = load;
+  return g;
+}
+
+// The point `along` the rail from its first end and `across` it from the roller centres' line.
+void at(const Guide& g, double along, double across, double& x, double& y) {
+  const GuideFrame f = guide_frame(g);
+  const double off = g.roller_radius + across;  // along the free side's normal (−u_y, u_x)
+  x = g.x0 + along * f.ux - off * f.uy;
+  y = g.y0 + along * f.uy + off * f.ux;
+}
+
+TEST(RailLoad, NodesAPitchApartCarryTheWholeLoadWhereverTheySit) {
+  const double q = 7.5;
+  const Guide g = loaded_rail(q);
+  const GuideFrame f = guide_frame(g);
+  for (int k = 0; k < 97; ++k) {  // the nodes' offset along the rail, through a whole pitch
+    const double offset = kPitch * k / 97.0;
+    double fx = 0.0, fy = 0.0;
+    for (double s = -3.0 * kPitch + offset; s < f.length + 3.0 * kPitch; s += kPitch) {
+      double x = 0.0, y = 0.0;
+      at(g, s, 0.0, x, y);
+      const RailLoad l = rail_load(g, f, kPitch, kGx, kGy, x, y);
+      fx += l.fx;
+      fy += l.fy;
+    }
+    EXPECT_NEAR(fx, q * f.length * kGx, 1e-12 * q * f.length * 10.0) << offset;
+    EXPECT_NEAR(fy, q * f.length * kGy, 1e-12 * q * f.length * 10.0) << offset;
+  }
+  double x = 0.0, y = 0.0;
+  at(g, 0.5 * f.length, 0.0, x, y);  // along the rail: one pitch's load
+  const RailLoad mid = rail_load(g, f, kPitch, kGx, kGy, x, y);
+  EXPECT_TRUE(mid.active);
+  EXPECT_DOUBLE_EQ(mid.share, 1.0);
+  EXPECT_DOUBLE_EQ(mid.fy, q * kPitch * kGy);
+  for (const double d : {0.9, -0.9}) {  // a roller lifted off, or pressed in: still carrying
+    at(g, 0.5 * f.length, d * kPitch, x, y);
+    EXPECT_TRUE(rail_load(g, f, kPitch, kGx, kGy, x, y).active) << d;
+  }
+  // beyond the ramp (half a pitch past either end), more than a pitch across (the chain's other
+  // run beneath), or no load: nothing
+  for (const auto& [s, d] :
+       std::vector<std::pair<double, double>>{{-0.5001 * kPitch, 0.0},
+                                              {f.length + 0.5001 * kPitch, 0.0},
+                                              {0.5 * f.length, 1.001 * kPitch},
+                                              {0.5 * f.length, -5 * kPitch}}) {
+    at(g, s, d, x, y);
+    const RailLoad l = rail_load(g, f, kPitch, kGx, kGy, x, y);
+    EXPECT_FALSE(l.active) << s << " " << d;
+    EXPECT_EQ(l.fx, 0.0);
+    EXPECT_EQ(l.fy, 0.0);
+  }
+  at(g, 0.5 * f.length, 0.0, x, y);
+  EXPECT_FALSE(rail_load(loaded_rail(0.0), f, kPitch, kGx, kGy, x, y).active);
+  // on the ramp: linear, a quarter of the load a quarter pitch inside the first end's ramp
+  at(g, -0.25 * kPitch, 0.0, x, y);
+  EXPECT_NEAR(rail_load(g, f, kPitch, kGx, kGy, x, y).share, 0.25, 1e-12);
+  at(g, f.length + 0.25 * kPitch, 0.0, x, y);
+  EXPECT_NEAR(rail_load(g, f, kPitch, kGx, kGy, x, y).share, 0.25, 1e-12);
+}
+
+TEST(RailLoad, NewtonBlockIsTheForcesDerivative) {
+  const Guide g = loaded_rail(12.0);
+  const GuideFrame f = guide_frame(g);
+  // on each end's ramp and along the rail (where the block is 0)
+  for (const double s : {-0.3 * kPitch, 0.2 * kPitch, 0.5 * f.length, f.length - 0.1 * kPitch,
+                         f.length + 0.35 * kPitch}) {
+    double x = 0.0, y = 0.0;
+    at(g, s, 0.2 * kPitch, x, y);
+    const RailLoad l = rail_load(g, f, kPitch, kGx, kGy, x, y);
+    ASSERT_TRUE(l.active) << s;
+    const double e = 1e-7;
+    for (int c = 0; c < 2; ++c) {
+      const double dx = c == 0 ? e : 0.0, dy = c == 1 ? e : 0.0;
+      const RailLoad p = rail_load(g, f, kPitch, kGx, kGy, x + dx, y + dy);
+      const RailLoad m = rail_load(g, f, kPitch, kGx, kGy, x - dx, y - dy);
+      EXPECT_NEAR(l.dq[c], (p.fx - m.fx) / (2 * e), 1e-6) << s << " column " << c;
+      EXPECT_NEAR(l.dq[2 + c], (p.fy - m.fy) / (2 * e), 1e-6) << s << " column " << c;
+    }
+  }
+  double x = 0.0, y = 0.0;
+  at(g, 0.2 * kPitch, 0.0, x, y);
+  EXPECT_GT(std::abs(rail_load(g, f, kPitch, kGx, kGy, x, y).dq[3]), 1.0);  // the ramp's slope
+}
+
+TEST(RailLoad, BadLoadsNamedAndAnArcRefused) {
+  Model m = uniform_chain(4, false, kPitch, 0.024, 1e7, 0.0, false);
+  Guide arc = loaded_rail(0.0);
+  arc.kind = Guide::Kind::kArc;
+  arc.radius = 0.2;
+  arc.start_angle = 0.0;
+  arc.end_angle = 1.0;
+  arc.load_per_metre = 5.0;
+  m.guides = {loaded_rail(-1.0), loaded_rail(NAN), loaded_rail(2e4), arc,
+              loaded_rail(1e4),  loaded_rail(0.0)};
+  const std::vector<Issue> issues = validate(m);
+  std::vector<std::string> fields;
+  for (const Issue& i : issues) fields.push_back(i.field);
+  for (const char* f : {"guide[0].load_per_metre", "guide[1].load_per_metre",
+                        "guide[2].load_per_metre", "guide[3].load_per_metre"})
+    EXPECT_EQ(std::count(fields.begin(), fields.end(), f), 1) << f;
+  EXPECT_EQ(issues.size(), 4u);  // the cap itself and 0 are accepted
+  for (const Issue& i : issues) {
+    if (i.field == "guide[3].load_per_metre")
+      EXPECT_NE(i.expected.find("a straight guide"), std::string::npos) << i.expected;
+    else
+      EXPECT_NE(i.expected.find("[0, 10000] kg/m"), std::string::npos) << i.expected;
+  }
+  // a loaded rail's lead-ins are arcs: they carry none of its load
+  for (const Guide& a : lead_in_arcs(loaded_rail(5.0), LeadIn{.radius = 0.05, .angle = 0.5}))
+    EXPECT_EQ(a.load_per_metre, 0.0);
+}
+
+// ∫ w(s) ds from a to b (a ≤ b), w the ramped share on a rail of length `len`: the trapezoid
+// 0 below −p/2, linear to 1 at p/2, 1 to len − p/2, linear to 0 at len + p/2 (len ≥ p), summed
+// exactly by the trapezoid rule between its corners.
+double share_integral(double a, double b, double len) {
+  const double h = 0.5 * kPitch;
+  auto w = [&](double s) {
+    if (s <= -h || s >= len + h) return 0.0;
+    if (s < h) return (s + h) / kPitch;
+    if (s > len - h) return (len + h - s) / kPitch;
+    return 1.0;
+  };
+  std::vector<double> cuts{a, b};
+  for (const double c : {-h, h, len - h, len + h})
+    if (c > a && c < b) cuts.push_back(c);
+  std::sort(cuts.begin(), cuts.end());
+  double sum = 0.0;
+  for (std::size_t k = 1; k < cuts.size(); ++k)
+    sum += 0.5 * (w(cuts[k - 1]) + w(cuts[k])) * (cuts[k] - cuts[k - 1]);
+  return sum;
+}
+
+// A 6-link chain slides down an inclined rail from an unloaded piece onto a loaded one collinear
+// with it (15°, μ = 0.1, θ = ½), crossing the loaded piece's first end: the load's work the steps
+// report is q_L p g·u Σ ∫ w(s) ds over each node's travel (its weight share along the rail, the
+// ramp included) within 1e-3, and the energy balance closes with it.
+TEST(RailLoad, WorkOfTheLoadIsItsWeightAlongTheTravel) {
+  const double beta = 15.0 * std::numbers::pi / 180.0, g0 = 9.81, q = 2.5, m = 0.024;
+  const std::size_t n = 7;
+  Model model = uniform_chain(n, false, kPitch, m, 2e6, 30.0, false);
+  model.gravity_x = -g0 * std::sin(beta);  // the rail along +x, the slope down −x
+  model.gravity_y = -g0 * std::cos(beta);
+  Guide rail;
+  rail.roller_radius = 0.006;
+  rail.contact_stiffness = 1e6;
+  rail.contact_damping = 100.0;
+  rail.friction = 0.1;
+  Guide loaded = rail, bare = rail;
+  loaded.x0 = -2.0;
+  loaded.x1 = 0.0;  // its second end, where the chain comes from
+  loaded.load_per_metre = q;
+  bare.x0 = 0.0;
+  bare.x1 = 1.0;
+  model.guides = {loaded, bare};
+  State s(n, 0);
+  const double sink =
+      m * g0 * std::cos(beta) / rail.contact_stiffness + 0.5 * rail.contact_smoothing;
+  for (std::size_t i = 0; i < n; ++i) {
+    s.x[i] = 0.02 + kPitch * static_cast<double>(i);
+    s.y[i] = rail.roller_radius - sink;
+  }
+  const std::vector<double> x0 = s.x;
+  const double e0 = energy(model, s).total();
+  Integrator integ(model, {.step = 1e-4, .theta = 0.5});
+  for (int k = 0; k < 5000; ++k) ASSERT_TRUE(integ.step(model, s).converged) << k;
+  const double len = 2.0;
+  double expected = 0.0;  // the load's weight along the travel, −x: q p g sin β per metre
+  for (std::size_t i = 0; i < n; ++i)  // s along the loaded piece from its first end at x = −2
+    expected += q * kPitch * g0 * std::sin(beta) * share_integral(s.x[i] + 2.0, x0[i] + 2.0, len);
+  ASSERT_LT(s.x[n - 1], -0.5 * kPitch) << "every node crossed onto the loaded piece";
+  EXPECT_GT(expected, 0.0);
+  std::printf("the load's work %.6g J, its weight along the travel %.6g J (%+.2e)\n", s.load_work,
+              expected, s.load_work / expected - 1.0);
+  EXPECT_NEAR(s.load_work, expected, 1e-3 * expected);
+  const double dissipated = s.friction_work + s.damper_work + s.contact_damping_work + s.drag_work;
+  const double numerical = energy(model, s).total() - e0 - dissipated - s.load_work;
+  std::printf("numerical %.3g J\n", numerical);
+  EXPECT_LT(std::abs(numerical), 1e-3 * std::abs(s.load_work))
+      << "dE " << energy(model, s).total() - e0 << " dissipated " << dissipated << " load "
+      << s.load_work;
+}
+
+}  // namespace
+}  // namespace catena::dynamics
