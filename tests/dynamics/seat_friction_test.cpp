@@ -1,7 +1,7 @@
 // Seat friction (docs/models/dynamics.md, "Seat friction"): the regularised Coulomb force on a
 // roller's slip along its seat relative to the wheel, its derivatives for the Newton matrix
-// against finite differences, its Coulomb value outside the band, one-sidedness, and the power
-// identity the work balance rests on.
+// against finite differences (on ISO seats and in a pocket wheel's pockets), its Coulomb value
+// outside the band, one-sidedness, and the power identity the work balance rests on.
 #include <gtest/gtest.h>
 
 #include <cmath>
