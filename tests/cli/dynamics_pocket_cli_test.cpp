@@ -238,6 +238,31 @@ TEST(DynamicsPocketCli, RollerChainOutputHasNoPocketFields) {
   }
 }
 
+// Friction in the pockets (docs/models/dynamics.md, "Pocket wheel: friction"): `seat_friction`
+// on a pocket wheel runs (exit 0), reports seat_friction and its work, which is < 0 and in the
+// work balance, and the drift is net of it. (That the balance closes with the pockets' friction
+// is tests/validation/dynamics_work_balance_test.cpp's: this example's θ = 0.6 leaves its own
+// numerical rest, −0.14 J in 0.1 s without friction.)
+TEST(DynamicsPocketCli, SeatFrictionActsInThePocketsAndIsInTheBalance) {
+  const CliRun r = run("dynamics " +
+                       example_with("mu.toml", {{"", "work_balance = true\nseat_friction = 0.1"}}) +
+                       " --duration 0.1s --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["seat_friction"], 0.1);
+  const double seat = j["summary"]["seat_friction_work"];
+  const auto& b = j["summary"]["work_balance"];
+  EXPECT_EQ(b["seat_friction"], seat);
+  const double links = b["link_dampers"], contact = b["contact_dampers"],
+               numerical = b["numerical"], drift = j["summary"]["energy_drift"];
+  std::printf(
+      "pockets' friction work %.6g J, link dampers %.6g, contact dampers %.6g, "
+      "numerical %.3g, drift %.6g\n",
+      seat, links, contact, numerical, drift);
+  EXPECT_LT(seat, 0.0);
+  EXPECT_NEAR(links + contact + numerical, drift, 1e-12 + 1e-9 * std::abs(drift));
+}
+
 TEST(DynamicsPocketCli, FieldsThatDoNotFitAPocketWheelAreNamedAtOnce) {
   // the roller chain's keys and what is not built on a pocket, all in one run
   const CliRun parts = bad("parts.toml", {{"", "chain = \"12B\""},
@@ -246,8 +271,13 @@ TEST(DynamicsPocketCli, FieldsThatDoNotFitAPocketWheelAreNamedAtOnce) {
                                           {"", "seat_friction = 0.2"},
                                           {"", "hinge = \"sliding\""}});
   named(parts, {"dynamics.chain", "dynamics.roller_diameter", "dynamics.inner_width",
-                "dynamics.seat_friction", "0 or omitted with wheel = \"pocket\"", "dynamics.hinge",
-                "frictionless with wheel = \"pocket\""});
+                "dynamics.hinge", "frictionless with wheel = \"pocket\""});
+  EXPECT_EQ(parts.err.find("dynamics.seat_friction"), std::string::npos) << parts.err;
+  // the pockets' friction keeps its range, [0, 1], on [dynamics] and on a wheel
+  const CliRun mu =
+      bad("mu.toml", {{"", "seat_friction = 1.5"},
+                      {"role = \"driven\"", "role = \"driven\"\nseat_friction = -0.1"}});
+  named(mu, {"dynamics.seat_friction", "in [0, 1]", "dynamics.sprocket[1].seat_friction"});
   // guides and centres (the free layout) are not built for pocket wheels
   const CliRun layout =
       bad("layout.toml", {{"role = \"driver\"", "role = \"driver\"\ncentre_x = 0\ncentre_y = 0"}});

@@ -856,7 +856,7 @@ TEST(DynamicsPocket, BadFieldsAreListedAtOnce) {
   w.contact_stiffness = 0.0;
   w.pocket_mouth = -1e-5;
   w.inertia = 1.0;
-  w.friction = 0.2;  // friction in the pockets is not built
+  w.friction = 1.2;  // outside [0, 1] (0.2 is accepted on a pocket: checked below)
   m.sprockets = {w};
   const std::vector<Issue> issues = validate(m);
   std::string fields;
@@ -879,6 +879,9 @@ TEST(DynamicsPocket, BadFieldsAreListedAtOnce) {
   driver.speed = 1.0;
   a.sprockets = {driver};
   EXPECT_TRUE(validate(a).empty());
+  a.sprockets[0].friction = 0.2;  // friction in the pockets
+  EXPECT_TRUE(validate(a).empty());
+  a.sprockets[0].friction = 0.0;
   a.alternation = 0.0;  // equal links on the bi-regular polygon
   const std::vector<Issue> equal = validate(a);
   ASSERT_EQ(equal.size(), 1u);

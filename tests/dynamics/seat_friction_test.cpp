@@ -1,14 +1,17 @@
 // Seat friction (docs/models/dynamics.md, "Seat friction"): the regularised Coulomb force on a
 // roller's slip along its seat relative to the wheel, its derivatives for the Newton matrix
-// against finite differences, its Coulomb value outside the band, one-sidedness, and the power
-// identity the work balance rests on.
+// against finite differences (on ISO seats and in a pocket wheel's pockets), its Coulomb value
+// outside the band, one-sidedness, and the power identity the work balance rests on.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <random>
+#include <string>
 
 #include "catena/dynamics/chain.hpp"
+#include "catena/dynamics/pocket_wheel.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -53,6 +56,67 @@ SeatFriction eval(const Sprocket& w, const Point& p, double psi, double omega) {
   return seat_friction(w, c, p.x, p.y, p.vx, p.vy, omega);
 }
 
+// The contact of a roller (or joint) at p with the wheel at angle ψ and speed ω.
+using ContactAt = std::function<SeatContact(const Point& p, double psi, double omega)>;
+
+// Central differences of F = (fx, fy) and τ against q, v, ψ and ω at p, compared with
+// seat_friction's analytic derivatives of the contact `contact` gives, each within 2e-4 of the
+// largest analytic entry of its kind. Steps: 1e-11 m (a 1e-5 part of the ramp ε), 1e-8 m/s (1e-5
+// of the band), and the same displacement at the pitch radius for ψ and ω.
+void expect_derivatives(const Sprocket& w, const ContactAt& contact, const Point& p, double psi,
+                        double omega, const std::string& where) {
+  auto at = [&](const Point& a, double pa, double wa) {
+    return seat_friction(w, contact(a, pa, wa), a.x, a.y, a.vx, a.vy, wa);
+  };
+  const SeatFriction f = at(p, psi, omega);
+  const double hq = 1e-11, hv = 1e-8, hpsi = hq / w.pitch_radius, hw = hv / w.pitch_radius;
+  auto diff = [&](Point a, Point b, double pa, double pb, double wa, double wb, double step,
+                  double out[3]) {
+    const SeatFriction fa = at(a, pa, wa), fb = at(b, pb, wb);
+    out[0] = (fb.fx - fa.fx) / (2 * step);
+    out[1] = (fb.fy - fa.fy) / (2 * step);
+    out[2] = (fb.torque - fa.torque) / (2 * step);
+  };
+  // scales: the largest analytic entry of each kind
+  const double sq =
+      std::max({std::abs(f.dq[0]), std::abs(f.dq[1]), std::abs(f.dq[2]), std::abs(f.dq[3]), 1.0});
+  const double sv =
+      std::max({std::abs(f.dv[0]), std::abs(f.dv[1]), std::abs(f.dv[2]), std::abs(f.dv[3]), 1e-3});
+  const double tol = 2e-4, arm = w.pitch_radius * 2;
+  double fd[3];
+  for (int j = 0; j < 2; ++j) {
+    Point a = p, b = p;
+    (j == 0 ? a.x : a.y) -= hq;
+    (j == 0 ? b.x : b.y) += hq;
+    diff(a, b, psi, psi, omega, omega, hq, fd);
+    EXPECT_NEAR(fd[0], f.dq[j], tol * sq) << "dFx/dq" << j << " " << where;
+    EXPECT_NEAR(fd[1], f.dq[2 + j], tol * sq) << "dFy/dq" << j << " " << where;
+    EXPECT_NEAR(fd[2], f.torque_dq[j], tol * sq * arm) << "dtau/dq" << j << " " << where;
+    a = p;
+    b = p;
+    (j == 0 ? a.vx : a.vy) -= hv;
+    (j == 0 ? b.vx : b.vy) += hv;
+    diff(a, b, psi, psi, omega, omega, hv, fd);
+    EXPECT_NEAR(fd[0], f.dv[j], tol * sv) << "dFx/dv" << j << " " << where;
+    EXPECT_NEAR(fd[1], f.dv[2 + j], tol * sv) << "dFy/dv" << j << " " << where;
+    EXPECT_NEAR(fd[2], f.torque_dv[j], tol * sv * arm) << "dtau/dv" << j << " " << where;
+  }
+  diff(p, p, psi - hpsi, psi + hpsi, omega, omega, hpsi, fd);
+  const double spsi = sq * arm;
+  EXPECT_NEAR(fd[0], f.dpsi[0], tol * spsi) << "dFx/dpsi " << where;
+  EXPECT_NEAR(fd[1], f.dpsi[1], tol * spsi) << "dFy/dpsi " << where;
+  EXPECT_NEAR(fd[2], f.torque_dpsi, tol * spsi * arm) << "dtau/dpsi " << where;
+  diff(p, p, psi, psi, omega - hw, omega + hw, hw, fd);
+  const double sw = sv * arm;
+  EXPECT_NEAR(fd[0], f.domega[0], tol * sw) << "dFx/domega " << where;
+  EXPECT_NEAR(fd[1], f.domega[1], tol * sw) << "dFy/domega " << where;
+  EXPECT_NEAR(fd[2], f.torque_domega, tol * sw * arm) << "dtau/domega " << where;
+}
+
+SeatContact iso_contact(const Sprocket& w, const Point& p, double psi, double omega) {
+  return seat_contact(w, p.x, p.y, p.vx, p.vy, psi, omega);
+}
+
 // Central differences of F = (fx, fy) and τ against every argument, compared with the analytic
 // derivatives, at random contacts on the seating arc and on the flanks, within the C¹ ramp and
 // beyond it, sliding inside and outside the friction band.
@@ -81,51 +145,9 @@ TEST(DynamicsSeatFriction, DerivativesMatchFiniteDifferences) {
     const SeatFriction f = eval(w, p, psi, omega);
     (c.curvature > 0.0 ? arc : flank)++;
     (std::abs(f.slip) < 3e-3 ? in_band : sliding)++;
-    // steps: 1e-11 m (a 1e-5 part of the ramp ε), 1e-8 m/s (1e-5 of the band), and the same
-    // displacement at the pitch radius for ψ and ω
-    const double hq = 1e-11, hv = 1e-8, hpsi = hq / w.pitch_radius, hw = hv / w.pitch_radius;
-    auto diff = [&](Point a, Point b, double pa, double pb, double wa, double wb, double step,
-                    double out[3]) {
-      const SeatFriction fa = eval(w, a, pa, wa), fb = eval(w, b, pb, wb);
-      out[0] = (fb.fx - fa.fx) / (2 * step);
-      out[1] = (fb.fy - fa.fy) / (2 * step);
-      out[2] = (fb.torque - fa.torque) / (2 * step);
-    };
-    // scales: the largest analytic entry of each kind
-    const double sq =
-        std::max({std::abs(f.dq[0]), std::abs(f.dq[1]), std::abs(f.dq[2]), std::abs(f.dq[3]), 1.0});
-    const double sv = std::max(
-        {std::abs(f.dv[0]), std::abs(f.dv[1]), std::abs(f.dv[2]), std::abs(f.dv[3]), 1e-3});
-    const double tol = 2e-4;
-    for (int j = 0; j < 2; ++j) {
-      Point a = p, b = p;
-      (j == 0 ? a.x : a.y) -= hq;
-      (j == 0 ? b.x : b.y) += hq;
-      double fd[3];
-      diff(a, b, psi, psi, omega, omega, hq, fd);
-      EXPECT_NEAR(fd[0], f.dq[j], tol * sq) << "dFx/dq" << j << " trial " << trial;
-      EXPECT_NEAR(fd[1], f.dq[2 + j], tol * sq) << "dFy/dq" << j << " trial " << trial;
-      EXPECT_NEAR(fd[2], f.torque_dq[j], tol * sq * w.pitch_radius * 2) << "dtau/dq" << j;
-      a = p;
-      b = p;
-      (j == 0 ? a.vx : a.vy) -= hv;
-      (j == 0 ? b.vx : b.vy) += hv;
-      diff(a, b, psi, psi, omega, omega, hv, fd);
-      EXPECT_NEAR(fd[0], f.dv[j], tol * sv) << "dFx/dv" << j << " trial " << trial;
-      EXPECT_NEAR(fd[1], f.dv[2 + j], tol * sv) << "dFy/dv" << j << " trial " << trial;
-      EXPECT_NEAR(fd[2], f.torque_dv[j], tol * sv * w.pitch_radius * 2) << "dtau/dv" << j;
-    }
-    double fd[3];
-    diff(p, p, psi - hpsi, psi + hpsi, omega, omega, hpsi, fd);
-    const double spsi = sq * w.pitch_radius * 2;
-    EXPECT_NEAR(fd[0], f.dpsi[0], tol * spsi) << "dFx/dpsi trial " << trial;
-    EXPECT_NEAR(fd[1], f.dpsi[1], tol * spsi) << "dFy/dpsi trial " << trial;
-    EXPECT_NEAR(fd[2], f.torque_dpsi, tol * spsi * w.pitch_radius * 2) << "dtau/dpsi";
-    diff(p, p, psi, psi, omega - hw, omega + hw, hw, fd);
-    const double sw = sv * w.pitch_radius * 2;
-    EXPECT_NEAR(fd[0], f.domega[0], tol * sw) << "dFx/domega trial " << trial;
-    EXPECT_NEAR(fd[1], f.domega[1], tol * sw) << "dFy/domega trial " << trial;
-    EXPECT_NEAR(fd[2], f.torque_domega, tol * sw * w.pitch_radius * 2) << "dtau/domega";
+    expect_derivatives(
+        w, [&](const Point& q, double pa, double wa) { return iso_contact(w, q, pa, wa); }, p, psi,
+        omega, "trial " + std::to_string(trial));
   }
   EXPECT_GE(arc, 30);
   EXPECT_GE(flank, 30);
@@ -181,46 +203,11 @@ TEST(DynamicsSeatFriction, DerivativesMatchFiniteDifferencesOnTheTip) {
         const SeatContact cv = seat_contact(w, p.x, p.y, p.vx, p.vy, psi, omega);
         if (!(cv.force > 1.0)) continue;
         ++count[surface];
-        const SeatFriction f = eval(w, p, psi, omega);
-        const double hq = 1e-11, hv = 1e-8, hpsi = hq / w.pitch_radius, hw = hv / w.pitch_radius;
-        const double sq = std::max(
-            {std::abs(f.dq[0]), std::abs(f.dq[1]), std::abs(f.dq[2]), std::abs(f.dq[3]), 1.0});
-        const double sv = std::max(
-            {std::abs(f.dv[0]), std::abs(f.dv[1]), std::abs(f.dv[2]), std::abs(f.dv[3]), 1e-3});
+        const std::string where = "z " + std::to_string(z) + " surface " + std::to_string(surface);
+        expect_derivatives(
+            w, [&](const Point& q, double pa, double wa) { return iso_contact(w, q, pa, wa); }, p,
+            psi, omega, where);
         const double tol = 2e-4;
-        auto fd = [&](Point lo, Point hi, double pl, double ph, double wl, double wh, double step,
-                      double out[3]) {
-          const SeatFriction a0 = eval(w, lo, pl, wl), a1 = eval(w, hi, ph, wh);
-          out[0] = (a1.fx - a0.fx) / (2 * step);
-          out[1] = (a1.fy - a0.fy) / (2 * step);
-          out[2] = (a1.torque - a0.torque) / (2 * step);
-        };
-        double d[3];
-        for (int j = 0; j < 2; ++j) {
-          Point lo = p, hi = p;
-          (j == 0 ? lo.x : lo.y) -= hq;
-          (j == 0 ? hi.x : hi.y) += hq;
-          fd(lo, hi, psi, psi, omega, omega, hq, d);
-          EXPECT_NEAR(d[0], f.dq[j], tol * sq) << "z " << z << " surface " << surface;
-          EXPECT_NEAR(d[1], f.dq[2 + j], tol * sq) << "z " << z << " surface " << surface;
-          EXPECT_NEAR(d[2], f.torque_dq[j], tol * sq * w.pitch_radius * 2) << "z " << z;
-          lo = p;
-          hi = p;
-          (j == 0 ? lo.vx : lo.vy) -= hv;
-          (j == 0 ? hi.vx : hi.vy) += hv;
-          fd(lo, hi, psi, psi, omega, omega, hv, d);
-          EXPECT_NEAR(d[0], f.dv[j], tol * sv) << "z " << z << " surface " << surface;
-          EXPECT_NEAR(d[1], f.dv[2 + j], tol * sv) << "z " << z << " surface " << surface;
-        }
-        fd(p, p, psi - hpsi, psi + hpsi, omega, omega, hpsi, d);
-        const double spsi = sq * w.pitch_radius * 2;
-        EXPECT_NEAR(d[0], f.dpsi[0], tol * spsi) << "z " << z << " surface " << surface;
-        EXPECT_NEAR(d[1], f.dpsi[1], tol * spsi) << "z " << z << " surface " << surface;
-        EXPECT_NEAR(d[2], f.torque_dpsi, tol * spsi * w.pitch_radius * 2) << "z " << z;
-        fd(p, p, psi, psi, omega - hw, omega + hw, hw, d);
-        const double sw = sv * w.pitch_radius * 2;
-        EXPECT_NEAR(d[0], f.domega[0], tol * sw) << "z " << z << " surface " << surface;
-        EXPECT_NEAR(d[1], f.domega[1], tol * sw) << "z " << z << " surface " << surface;
         // the normal force's own gradient (the integrator's block: stiffness along n, f κ across)
         const double hn = 1e-11;
         const SeatContact lo = seat_contact(w, p.x - hn, p.y, p.vx, p.vy, psi, omega);
@@ -239,6 +226,71 @@ TEST(DynamicsSeatFriction, DerivativesMatchFiniteDifferencesOnTheTip) {
       if (z >= 9) {
         EXPECT_GT(count[3], 20) << "z " << z;
       }
+    }
+  }
+}
+
+// The same derivatives on a pocket wheel's joint contact (docs/models/dynamics.md, "Pocket wheel:
+// friction"), z = 8 for seed 003's chain Ø18×64, clearance c = 0.1 mm: within the mouth (the
+// force along e = q − C, κ = 1/|e|: the fields seat_friction reads are exact), on the mouth's ramp
+// (pocket_mouth = c/2: the force has a radial part) and with the release (pocket_release, a held
+// joint beyond the mouth, in and out of its band): there the contact's friction_dq and
+// friction_dv carry the rest of the normal force's exact Jacobians. Joints at every angle of e
+// round the vertex, 0–3 µm deep (on the ramp also up to 1.5c, where W falls), slipping inside and
+// outside the band.
+TEST(DynamicsSeatFriction, DerivativesMatchFiniteDifferencesInAPocket) {
+  std::mt19937 rng(2113);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  enum Kind { kMouth, kRamp, kRelease };
+  for (const Kind kind : {kMouth, kRamp, kRelease}) {
+    Sprocket w = pocket_wheel(0.064, 0.018, 8, 0.03, -0.02, 1e-4, 1e8, 2000.0);
+    w.friction = 0.3;
+    if (kind == kRamp) w.pocket_mouth = 0.5 * w.pocket_clearance;
+    if (kind == kRelease) w.pocket_release = true;
+    const double c = w.pocket_clearance, mouth = w.pitch_radius + 0.5 * c;
+    const double reach = contact_reach(w);
+    const ReleaseBand band = release_band(w);
+    int count = 0, in_band = 0, sliding = 0, released = 0;
+    for (int trial = 0; trial < 4000 && count < 150; ++trial) {
+      const double psi = 2 * kPi * u(rng), omega = 40.0 * (u(rng) - 0.5);
+      const PocketVertex v = nearest_pocket(w, 2 * kPi * u(rng), psi);
+      const int held = kind == kRelease ? v.index : kNoPocket;
+      // e at angle β from the outward radial through the vertex, |e| = c + g
+      const double beta = kPi * (2 * u(rng) - 1);
+      const double g = (kind == kRamp && u(rng) < 0.5 ? 1.5 * c : 3e-6) * u(rng);
+      if (std::abs(g - w.contact_smoothing) < 2e-8) continue;  // off the damper's ramp end
+      const double dir = v.angle + beta;
+      const double x = w.centre_x + w.pitch_radius * std::cos(v.angle) + (c + g) * std::cos(dir);
+      const double y = w.centre_y + w.pitch_radius * std::sin(v.angle) + (c + g) * std::sin(dir);
+      const double rx = x - w.centre_x, ry = y - w.centre_y, rho = std::hypot(rx, ry);
+      if (std::abs(rho - mouth) < 1e-8 || std::abs(rho - reach) < 1e-8) continue;
+      if (kind == kMouth && rho > mouth) continue;
+      if (kind == kRamp && !(rho > mouth && rho < reach)) continue;
+      const SeatContact c0 = pocket_contact(w, x, y, -omega * ry, omega * rx, psi, omega, held);
+      if (!c0.active || c0.seat != v.index) continue;
+      const double slip = (u(rng) < 0.5 ? 3e-3 : 0.2) * (2.0 * u(rng) - 1.0);
+      const double rate = 0.01 * (u(rng) - 0.3);
+      const Point p{x, y, rate * c0.nx - slip * c0.ny - omega * ry,
+                    rate * c0.ny + slip * c0.nx + omega * rx};
+      const ContactAt contact = [&](const Point& q, double pa, double wa) {
+        return pocket_contact(w, q.x, q.y, q.vx, q.vy, pa, wa, held);
+      };
+      const SeatContact cv = contact(p, psi, omega);
+      if (!(cv.force > 1.0)) continue;
+      ++count;
+      const SeatFriction f = seat_friction(w, cv, p.x, p.y, p.vx, p.vy, omega);
+      (std::abs(f.slip) < 3e-3 ? in_band : sliding)++;
+      // in the release's band: u = e·r̂/|e| between its ends (S between 1 and 0)
+      const double cu = std::cos(beta);  // ≈ u (r̂ at q is within 0.04° of the vertex's radial)
+      if (kind == kRelease && cu > band.full + 0.01 && cu < band.none - 0.01) ++released;
+      expect_derivatives(w, contact, p, psi, omega,
+                         "kind " + std::to_string(kind) + " trial " + std::to_string(trial));
+    }
+    EXPECT_GE(count, 100) << "kind " << kind;
+    EXPECT_GE(in_band, 20) << "kind " << kind;
+    EXPECT_GE(sliding, 20) << "kind " << kind;
+    if (kind == kRelease) {
+      EXPECT_GE(released, 10);
     }
   }
 }

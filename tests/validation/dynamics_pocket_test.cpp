@@ -41,6 +41,7 @@ struct PocketRun {
   double clearance = 1e-4;
   double contact_stiffness = 1e8;
   double contact_damping = 2000.0;
+  double friction = 0.0;  // μ in the pockets (Sprocket::friction)
   double step = 1e-4;
   double theta = 0.6;
   int periods = 4;
@@ -55,7 +56,8 @@ struct Measured {
   std::vector<double> strand;  // mean vx over the measured strand nodes
   std::vector<double> node;    // vx of one strand node a few links from the wheel
   double max_penetration = 0.0;
-  double max_tilt = 0.0;  // [rad] the largest slope of a measured strand link
+  double max_tilt = 0.0;       // [rad] the largest slope of a measured strand link
+  double friction_work = 0.0;  // [J] the pockets' friction's over the run (State)
   bool converged = true;
 };
 
@@ -64,6 +66,7 @@ Measured simulate(const PocketRun& d, int bins) {
                             d.contact_damping);
   w.driver = true;
   w.speed = -d.omega;  // clockwise: the top moves along +x
+  w.friction = d.friction;
   const double r = w.pitch_radius, d1 = w.pocket_angle;
   const double tau = 2 * kPi / d.teeth, d2 = tau - d1;
   // node order: the strand's far end 0 … the crank c … the wrapped joints c + 1 … c + wrapped
@@ -127,6 +130,7 @@ Measured simulate(const PocketRun& d, int bins) {
     node[b] += s.vx[last];
     ++count[b];
   }
+  out.friction_work = s.seat_friction_work;
   for (int b = 0; b < bins; ++b) {
     out.phi.push_back((b + 0.5) / bins * tau);
     out.strand.push_back(count[b] ? strand[b] / count[b] : NAN);
@@ -140,6 +144,7 @@ struct Comparison {
   double variation = 0.0;           // (max − min)/ωR of the simulated bins
   double expected_variation = 0.0;  // the same of the theory at the bins' centres
   double tilt = 0.0;                // [rad] the largest slope of a measured strand link
+  double friction_work = 0.0;       // [J] the pockets' friction's
 };
 
 Comparison compare(const PocketRun& d) {
@@ -166,9 +171,13 @@ Comparison compare(const PocketRun& d) {
   }
   c.variation = (hi - lo) / v0;
   c.tilt = m.max_tilt;
+  c.friction_work = m.friction_work;
   c.expected_variation = (ehi - elo) / v0;
-  std::printf("k %.2g F %.0f: worst %.4f variation %.4f (theory %.4f) tilt %.4f rad\n", d.stiffness,
-              d.force, c.worst, c.variation, c.expected_variation, c.tilt);
+  std::printf(
+      "k %.2g F %.0f mu %.2g: worst %.4f variation %.4f (theory %.4f) tilt %.4f rad, "
+      "friction work %.4g J\n",
+      d.stiffness, d.force, d.friction, c.worst, c.variation, c.expected_variation, c.tilt,
+      c.friction_work);
   return c;
 }
 
@@ -188,6 +197,26 @@ TEST(DynamicsPocketWheel, FreeRunOnStrandSpeedAgainstPocketwheel) {
     EXPECT_LT(c.worst, 0.01) << "F " << force;
     EXPECT_NEAR(c.variation / c.expected_variation, 1.0, 0.2) << "F " << force;
     EXPECT_NEAR(c.expected_variation, 0.0292, 5e-4);
+  }
+}
+
+// Friction in the pockets (docs/models/dynamics.md, "Pocket wheel: friction"): the stiff strand of
+// the first test at 1, 2 and 5 kN with μ = 0.1 in the pockets. The kinematics has no friction,
+// but the joints it follows sit at the pockets' vertices, and the friction acts only on a joint's
+// slip within its clearance: the strand's speed stays within the same 1 % of ωR and its
+// variation within the same 20 % (measured 0.64 %, 0.83 %, 0.61 % against 0.56 %, 0.64 %,
+// 0.94 % without; variation 0.0292, 0.0346, 0.0278 ωR against 0.0284, 0.0335, 0.0284), while the
+// friction does work (< 0).
+TEST(DynamicsPocketWheel, FreeRunOnWithFrictionInThePocketsKeepsTheOnePercent) {
+  for (double force : {1000.0, 2000.0, 5000.0}) {
+    PocketRun d;
+    d.stiffness = 1.6e9;
+    d.force = force;
+    d.friction = 0.1;
+    const Comparison c = compare(d);
+    EXPECT_LT(c.worst, 0.01) << "F " << force;
+    EXPECT_NEAR(c.variation / c.expected_variation, 1.0, 0.2) << "F " << force;
+    EXPECT_LT(c.friction_work, 0.0) << "F " << force;
   }
 }
 

@@ -18,6 +18,7 @@
 #include <numbers>
 
 #include "catena/dynamics/integrator.hpp"
+#include "catena/dynamics/pocket_wheel.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -196,6 +197,55 @@ TEST(DynamicsWorkBalance, ClosesWithSeatFriction) {
   EXPECT_LT(std::abs(numerical), kClosureTol * std::abs(dissipated));
   // the wheel took the friction's reaction: it turned (its share is in the balance)
   EXPECT_GT(std::abs(s.angle[0] - (kPi / 2 - tau / 2)), 1e-5);
+}
+
+// Friction in the pockets in the balance (docs/models/dynamics.md, "Pocket wheel: friction"): a
+// round link's two joints (Ø18×64) in two pockets over the top of a free z = 8 pocket wheel, the
+// pockets widened to a 3 mm clearance (bowls of that radius round their vertices), each joint
+// resting straight below its vertex under gravity and thrown sideways at 0.15 m/s; θ = ½, the
+// contact resolved (ω_c h = 0.15). They slide in their pockets until the pockets' friction
+// (μ = 0.3) stops them, turning the wheel by its reaction. 0.3 s. The balance closes only with
+// the friction's work (most of the energy lost): leaving it out fails.
+TEST(DynamicsWorkBalance, ClosesWithFrictionInThePockets) {
+  constexpr double kPi = std::numbers::pi;
+  constexpr double kJoint = 0.42;  // [kg] a node of the 6.6 kg/m chain
+  Model model = uniform_chain(2, false, 0.064, kJoint, 1e6, 5.0, false);
+  model.alternation = 0.018;
+  model.gravity_y = -kG;
+  Sprocket w = pocket_wheel(0.064, 0.018, 8, 0.0, 0.0, 3e-3, 1e6, 20.0);
+  w.inertia = 1.0;  // slow to roll over under the joints' weight (top-heavy, as in the seats)
+  w.friction = 0.3;
+  model.sprockets = {w};
+  State s(2, 1);
+  s.angle = {0.5 * kPi - 0.5 * w.pocket_angle};  // vertices 0 and 1 at ±δ1/2 about the top
+  const double sink = kJoint * kG / w.contact_stiffness + 0.5 * w.contact_smoothing;
+  for (int i = 0; i < 2; ++i) {
+    const double a = s.angle[0] + i * w.pocket_angle;
+    s.x[i] = w.pitch_radius * std::cos(a);
+    s.y[i] = w.pitch_radius * std::sin(a) - (w.pocket_clearance + sink);
+    s.vx[i] = 0.15;
+  }
+  const double e0 = energy(model, s).total();
+  Integrator integ(model, {.step = 1e-4, .theta = 0.5});
+  double kinetic_max = 0.0;
+  for (int k = 0; k < 3000; ++k) {
+    ASSERT_TRUE(integ.step(model, s).converged) << "step " << k;
+    kinetic_max = std::max(kinetic_max, energy(model, s).kinetic);
+  }
+  const double de = energy(model, s).total() - e0;
+  const double dissipated =
+      s.seat_friction_work + s.damper_work + s.contact_damping_work + s.drag_work;
+  const double numerical = de - dissipated;
+  std::printf(
+      "pockets' friction: dE %.6g J, friction %.6g, link dampers %.6g, contact dampers %.6g, "
+      "numerical %.3g (%.3g of the dissipated work); wheel turned %.3g rad\n",
+      de, s.seat_friction_work, s.damper_work, s.contact_damping_work, numerical,
+      numerical / std::abs(dissipated), s.angle[0] - (0.5 * kPi - 0.5 * w.pocket_angle));
+  EXPECT_LT(s.seat_friction_work, 0.0);
+  EXPECT_LT(de, -0.5 * kinetic_max);
+  EXPECT_GT(std::abs(s.seat_friction_work), 0.5 * std::abs(dissipated));
+  EXPECT_LT(std::abs(numerical), kClosureTol * std::abs(dissipated));
+  EXPECT_GT(std::abs(s.angle[0] - (0.5 * kPi - 0.5 * w.pocket_angle)), 1e-5);
 }
 
 }  // namespace

@@ -479,6 +479,12 @@ struct SeatContact {
   /// (row-major) beyond the fields' −c n nᵀ: the damper acts along e/|e|, the fields' n is the
   /// force's direction.
   double dv_extra[4] = {0.0, 0.0, 0.0, 0.0};
+  /// The pocket's mouth ramp and release (zero elsewhere, where the fields are exact): the rest
+  /// of the exact ∂F/∂q and ∂F/∂v of the contact force F = −f n on the joint (row-major, the
+  /// damper's share included) beyond what seat_friction reads from the fields,
+  /// −n [(∂f/∂g) nᵀ + c (ω + κ v_t) tᵀ] − f κ t tᵀ and −c n nᵀ (v_t the slip along t).
+  double friction_dq[4] = {0.0, 0.0, 0.0, 0.0};
+  double friction_dv[4] = {0.0, 0.0, 0.0, 0.0};
   double torque = 0.0;                ///< [N·m] on the wheel, counter-clockwise positive
   double seat_x = 0.0, seat_y = 0.0;  ///< [m] the seat centre
 };
@@ -567,7 +573,10 @@ inline double contact_reach(const Sprocket& w) {
 /// force on the roller F = f_t t, f_t = −μ f v_t/√(v_t² + v_ε²) (f the normal force); its
 /// reaction −F acts on the wheel at q. Derivatives of F and of the wheel's torque with respect
 /// to the roller's position q and velocity v and to the wheel's angle ψ and speed ω, for the
-/// Newton matrix (2×2 row-major [[∂Fx/∂qx, ∂Fx/∂qy], [∂Fy/∂qx, ∂Fy/∂qy]]).
+/// Newton matrix (2×2 row-major [[∂Fx/∂qx, ∂Fx/∂qy], [∂Fy/∂qx, ∂Fy/∂qy]]). The normal force's
+/// derivatives are the fields' (exact on an ISO seat and within a pocket's mouth) plus the
+/// contact's friction_dq and friction_dv (a pocket's mouth ramp and release), so that these are
+/// exact on every contact.
 struct SeatFriction {
   double friction_force = 0.0;   ///< [N] f_t along t
   double slip = 0.0;             ///< [m/s] v_t

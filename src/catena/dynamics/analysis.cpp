@@ -1306,11 +1306,6 @@ Setup parse(const analysis::Inputs& in) {
         issues.push_back({at(key), key == std::string("chain") ? "'" + chain + "'" : "(given)",
                           std::string("no ") + key + why +
                               " (a round-link chain: pitch = t, wire_diameter = d)"});
-    if (line.count("seat_friction") &&
-        !(value.count("seat_friction") && value["seat_friction"] == 0))
-      issues.push_back({at("seat_friction"),
-                        value.count("seat_friction") ? shown(value["seat_friction"]) : "(given)",
-                        "0 or omitted" + why + " (friction in the pockets is not built)"});
     if (line.count("hinge") && hinge != "frictionless")
       issues.push_back({at("hinge"), "'" + hinge + "'",
                         "frictionless" + why + " (the round links' joint friction is not built)"});
@@ -1420,13 +1415,6 @@ Setup parse(const analysis::Inputs& in) {
                           "no centres with wheel = \"pocket\" (two equal pocket wheels on a "
                           "line; the free layout of pocket wheels is not built)"});
     }
-    const auto mu = wheels[i].seen.find("seat_friction");
-    if (mu != wheels[i].seen.end() && wheels[i].seat_friction && *wheels[i].seat_friction > 0.0 &&
-        *wheels[i].seat_friction <= 1.0)  // (outside [0, 1] it is reported as such)
-      issues.push_back({"dynamics.sprocket[" + std::to_string(i) + "].seat_friction (line " +
-                            std::to_string(mu->second) + ")",
-                        shown(*wheels[i].seat_friction),
-                        "0 with wheel = \"pocket\" (friction in the pockets is not built)"});
   }
   const double links = layout ? optional("links", NAN)
                               : required("links", "the number of links in the loop, an integer");

@@ -164,11 +164,7 @@ std::vector<Issue> validate(const Model& model) {
         out.push_back({f + "takeup_travel_max", check::format_si(s.takeup_travel_max, "m"),
                        ">= 0 m (the start, s = 0, within the travel), or +infinity"});
     }
-    if (s.pocket && s.friction != 0.0) {
-      // seat_friction's derivatives are tested on the ISO seat only (docs/models/dynamics.md)
-      out.push_back({f + "friction", check::format_si(s.friction, ""),
-                     "0 on a pocket wheel (friction in the pockets is not built)"});
-    } else if (!std::isfinite(s.friction) || !(s.friction >= 0.0) || !(s.friction <= 1.0)) {
+    if (!std::isfinite(s.friction) || !(s.friction >= 0.0) || !(s.friction <= 1.0)) {
       out.push_back({f + "friction", check::format_si(s.friction, ""), "a number in [0, 1]"});
     }
     if (!std::isfinite(s.friction_band) || !(s.friction_band > 0.0) || !(s.friction_band <= 1.0)) {
@@ -829,11 +825,30 @@ SeatFriction seat_friction(const Sprocket& w, const SeatContact& c, double x, do
   // f = f_el(g) + c(g) ġ: ∂g/∂q = nᵀ, ∂ġ/∂q = (ω + κ v_t) tᵀ, ∂ġ/∂v = nᵀ
   // (∂n/∂q = κ t tᵀ, ∂t/∂q = −κ n tᵀ, ∂(v − ω perp ρ)/∂q = −ω perp)
   const double f = c.force, fg = c.stiffness, cg = c.damping;
-  const double dfq[2] = {fg * nx + cg * (speed + kappa * vt) * tx,
-                         fg * ny + cg * (speed + kappa * vt) * ty};
-  const double dfv[2] = {cg * nx, cg * ny};
+  double dfq[2] = {fg * nx + cg * (speed + kappa * vt) * tx,
+                   fg * ny + cg * (speed + kappa * vt) * ty};
+  double dfv[2] = {cg * nx, cg * ny};
   // ∂v_t/∂q = −ω nᵀ − κ v_n tᵀ, ∂v_t/∂v = tᵀ
-  const double dvtq[2] = {-speed * nx - kappa * vn * tx, -speed * ny - kappa * vn * ty};
+  double dvtq[2] = {-speed * nx - kappa * vn * tx, -speed * ny - kappa * vn * ty};
+  double dvtv[2] = {tx, ty};
+  // A pocket's mouth ramp or release: the normal force N = −f n has the exact Jacobians the
+  // fields give plus X = friction_dq (friction_dv for v). With ∂f = −nᵀ ∂N, ∂n = −t tᵀ ∂N/f and
+  // ∂t = n tᵀ ∂N/f, X adds −nᵀ X to ∂f, v_n tᵀ X/f to ∂v_t and f_t n tᵀ X/f to ∂F (below).
+  const double* xq = c.friction_dq;
+  const double* xv = c.friction_dv;
+  const bool rest = xq[0] != 0.0 || xq[1] != 0.0 || xq[2] != 0.0 || xq[3] != 0.0 || xv[0] != 0.0 ||
+                    xv[1] != 0.0 || xv[2] != 0.0 || xv[3] != 0.0;
+  double tq[2] = {0.0, 0.0}, tv[2] = {0.0, 0.0};  // tᵀ X/f
+  if (rest) {
+    for (int j = 0; j < 2; ++j) {
+      tq[j] = (tx * xq[j] + ty * xq[2 + j]) / f;
+      tv[j] = (tx * xv[j] + ty * xv[2 + j]) / f;
+      dfq[j] -= nx * xq[j] + ny * xq[2 + j];
+      dfv[j] -= nx * xv[j] + ny * xv[2 + j];
+      dvtq[j] += vn * tq[j];
+      dvtv[j] += vn * tv[j];
+    }
+  }
   const double ve2 = w.friction_band * w.friction_band;
   const double root = std::sqrt(vt * vt + ve2);
   const double phi = vt / root, dphi = ve2 / (root * root * root);
@@ -841,8 +856,8 @@ SeatFriction seat_friction(const Sprocket& w, const SeatContact& c, double x, do
   const double ft = -mu * f * phi;
   const double dftq[2] = {-mu * (phi * dfq[0] + f * dphi * dvtq[0]),
                           -mu * (phi * dfq[1] + f * dphi * dvtq[1])};
-  const double dftv[2] = {-mu * (phi * dfv[0] + f * dphi * tx),
-                          -mu * (phi * dfv[1] + f * dphi * ty)};
+  const double dftv[2] = {-mu * (phi * dfv[0] + f * dphi * dvtv[0]),
+                          -mu * (phi * dfv[1] + f * dphi * dvtv[1])};
   out.friction_force = ft;
   out.slip = vt;
   out.power = ft * vt;
@@ -857,6 +872,15 @@ SeatFriction seat_friction(const Sprocket& w, const SeatContact& c, double x, do
   out.dv[1] = tx * dftv[1];
   out.dv[2] = ty * dftv[0];
   out.dv[3] = ty * dftv[1];
+  if (rest) {  // F = f_t t: f_t ∂t = f_t n tᵀ X/f
+    const double n[2] = {nx, ny};
+    for (int i = 0; i < 2; ++i) {
+      for (int j = 0; j < 2; ++j) {
+        out.dq[2 * i + j] += ft * n[i] * tq[j];
+        out.dv[2 * i + j] += ft * n[i] * tv[j];
+      }
+    }
+  }
   // The contact turns with the wheel: F(ψ + a, q, v) = Rot(a) F(ψ, c + Rot(−a) ρ, Rot(−a) v),
   // so ∂F/∂ψ = perp F − ∂F/∂q perp ρ − ∂F/∂v perp v; v enters only through v − ω perp ρ, so
   // ∂F/∂ω = −∂F/∂v perp ρ. The torque (a scalar) is invariant: ∂τ/∂ψ = −∂τ/∂q perp ρ − ∂τ/∂v perp

@@ -54,6 +54,23 @@ Step smooth_step(double t, double a, double b) {
 }  // namespace
 
 namespace {
+// The contact's friction_dq and friction_dv (SeatContact) from the exact Jacobians jq = ∂F/∂q
+// and jv = ∂F/∂v of its force F = −f n on the joint, with the velocity w = v − ω perp(q − O)
+// relative to the wheel: what seat_friction does not read from the fields.
+void set_friction_rest(const double jq[4], const double jv[4], double wx, double wy, double speed,
+                       SeatContact& c) {
+  const double m[2] = {c.nx, c.ny}, t[2] = {-c.ny, c.nx};
+  const double turn = c.damping * (speed + c.curvature * (wx * t[0] + wy * t[1]));
+  const double fk = c.force * c.curvature;
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const double fields = -m[i] * (c.stiffness * m[j] + turn * t[j]) - fk * t[i] * t[j];
+      c.friction_dq[2 * i + j] = jq[2 * i + j] - fields;
+      c.friction_dv[2 * i + j] = jv[2 * i + j] + c.damping * m[i] * m[j];
+    }
+  }
+}
+
 // The angle of pocket vertex k (even k: ψ + (k/2) τ; odd: ψ + ((k − 1)/2) τ + δ1).
 double vertex_angle(const Sprocket& w, int k, double angle) {
   const double tau = 2.0 * std::numbers::pi / w.teeth;
@@ -144,6 +161,9 @@ void apply_release(const Sprocket& w, double g, double dist, double rx, double r
   const double m[2] = {mx, my};
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j) c.dv_extra[2 * i + j] = -cn * (n[i] * n[j] - m[i] * m[j]);
+  // for the friction: exact is the whole ∂F/∂q, ∂F/∂v = −S c n nᵀ
+  const double jv[4] = {-cn * nx * nx, -cn * nx * ny, -cn * ny * nx, -cn * ny * ny};
+  set_friction_rest(exact, jv, wx, wy, speed, c);
 }
 }  // namespace
 
@@ -195,6 +215,7 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
   const Step ss = smooth_step(contact_reach(w) - rho, 0.0, w.pocket_mouth);
   if (!(ss.s > 0.0)) return c;
   apply_seat_law(w, g, rx, ry, vx, vy, speed, c);  // f₀ = f_el + c ġ ≥ 0, E₀, …
+  const double k0 = c.stiffness, c0 = c.damping;  // ∂f₀/∂g and c(g) (0 where f₀ is clamped)
   const double eps = w.contact_smoothing, kc = w.contact_stiffness;
   const double fel = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
   const double kel = g < eps ? kc * g / eps : kc;
@@ -241,6 +262,26 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
   const double fields[4] = {-(kn * mx * mx + ft * (1 - mx * mx)), -(kn - ft) * mx * my,
                             -(kn - ft) * mx * my, -(kn * my * my + ft * (1 - my * my))};
   for (int i = 0; i < 4; ++i) c.dq_extra[i] = exact[i] - fields[i];
+  // For the friction, the whole ∂F/∂q: `exact` is the elastic part, with the force's A = s Φ';
+  // the actual A = s (W f₀ + E₀ W') differs by Q = s W (f₀ − f_el) (the damper's c ġ, or −f_el
+  // where the damper's pull clamps f₀ at 0), whose share is −n ∇Qᵀ − Q P_n/|e|, with
+  // ∇Q = −s' W (f₀ − f_el) r̂ + s W' (f₀ − f_el) n + s W (∇f₀ − k_el n),
+  // ∇f₀ = ∂f₀/∂g n + c ∇ġ, ∇ġ = (ω + v_rel·t/|e|) t, t = perp(n); ∂F/∂v = −s W c n nᵀ.
+  const double wx = vx + speed * ry, wy = vy - speed * rx;  // v_rel
+  const double te[2] = {-ny, nx};
+  const double dgt = speed + (wx * te[0] + wy * te[1]) / dist;  // ∇ġ = dgt t
+  const double extra = f0 - fel, q = s0 * wg * extra;
+  double jq[4], jv[4];
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const double id = i == j ? 1.0 : 0.0;
+      const double dq = -s1 * wg * extra * u[j] + s0 * dwg * extra * n[j] +
+                        s0 * wg * ((k0 - kel) * n[j] + c0 * dgt * te[j]);
+      jq[2 * i + j] = exact[2 * i + j] - n[i] * dq - q * (id - n[i] * n[j]) / dist;
+      jv[2 * i + j] = -s0 * wg * c0 * n[i] * n[j];
+    }
+  }
+  set_friction_rest(jq, jv, wx, wy, speed, c);
   return c;
 }
 
