@@ -72,8 +72,10 @@ BENCHMARK(BM_DynamicsLoopStepHingeFriction)
 // setting of the drive validation), h = 1e-4 s. Started with every roller seated and moving at
 // the pitch-line speed; the benchmark steps on from there.
 // `hinge_arm` > 0: the same with hinge friction of that arm (docs/models/dynamics.md, "Hinges").
-void two_sprocket_drive(benchmark::State& bs, double hinge_arm) {
+// `pin_load`: the hinges' pin load rule (the mean of the two links' tensions, or the pin link's).
+void two_sprocket_drive(benchmark::State& bs, double hinge_arm, PinLoad pin_load = PinLoad::kMean) {
   testing::Loop drive = testing::benchmark_drive(hinge_arm);
+  drive.model.hinge.pin_load = pin_load;
   const Model& m = drive.model;
   State& s = drive.state;
   Integrator integ(m, {.step = 1e-4, .theta = 0.6});
@@ -113,6 +115,13 @@ void BM_DynamicsTwoSprocketDriveHingeFriction(benchmark::State& bs) {
   two_sprocket_drive(bs, 0.1 * 5.72e-3 / 2);
 }
 BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFriction)->Unit(benchmark::kMicrosecond)->MinTime(3.0);
+// the same with the pin link's tension as each hinge's load (pin_load = "pin_link")
+void BM_DynamicsTwoSprocketDriveHingeFrictionPinLink(benchmark::State& bs) {
+  two_sprocket_drive(bs, 0.1 * 5.72e-3 / 2, PinLoad::kPinLink);
+}
+BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFrictionPinLink)
+    ->Unit(benchmark::kMicrosecond)
+    ->MinTime(3.0);
 // the same for a fixed 3000 steps from the seated start (instruction counts, as above;
 // docs/performance.md, "Hinge friction: the couple's Jacobian straight into the band")
 BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFriction)

@@ -17,9 +17,11 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kExample = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_12B.toml";
 
-// The example with `extra` lines added to its [dynamics] table (after its theta line).
-std::string example_with(const std::string& name, const std::string& extra) {
-  std::ifstream in(kExample);
+// The example (`source`, by default the 12B drive) with `extra` lines added to its [dynamics]
+// table (after its theta line).
+std::string example_with(const std::string& name, const std::string& extra,
+                         const std::string& source = kExample) {
+  std::ifstream in(source);
   std::stringstream text;
   text << in.rdbuf();
   std::string s = text.str();
@@ -120,6 +122,57 @@ TEST(DynamicsHingeCli, EveryHingeProblemIsNamedAtOnce) {
   EXPECT_EQ(pin.status, 2);
   EXPECT_NE(pin.err.find("dynamics.pin_diameter"), std::string::npos) << pin.err;
   EXPECT_NE(pin.err.find("< p/2"), std::string::npos) << pin.err;
+}
+
+// pin_load = "pin_link": the pin load is the outer link's tension (docs/models/dynamics.md,
+// "Hinges"); the JSON names it (a run with the mean, given or not, prints what it did before),
+// and the run's hinge work differs from the mean's. A bad value, the key without hinge friction
+// and an odd loop (the three-wheel example lays 55 links) are refused by name.
+TEST(DynamicsHingeCli, PinLinkLoadIsAnOptionNamedInTheOutput) {
+  const std::string sliding = "hinge = \"sliding\"\nhinge_friction = 0.1\n";
+  const auto mean = run_json(example_with("mean.toml", sliding), "--duration 0.02s");
+  const auto named = run_json(example_with("mean_named.toml", sliding + "pin_load = \"mean\"\n"),
+                              "--duration 0.02s");
+  EXPECT_EQ(mean.dump(), named.dump());
+  EXPECT_FALSE(mean.contains("hinge_pin_load"));
+  const auto pin = run_json(example_with("pin_link.toml", sliding + "pin_load = \"pin_link\"\n"),
+                            "--duration 0.02s");
+  EXPECT_EQ(pin["hinge_pin_load"], "pin_link");
+  const double w_mean = mean["summary"]["hinge_friction_work"].get<double>();
+  const double w_pin = pin["summary"]["hinge_friction_work"].get<double>();
+  EXPECT_LT(w_pin, 0.0);
+  EXPECT_NE(w_pin, w_mean);
+  const CliRun table =
+      run("dynamics " + example_with("pin_link_table.toml", sliding + "pin_load = \"pin_link\"\n") +
+          " --duration 0.005s");
+  EXPECT_EQ(table.status, 0) << table.err;
+  EXPECT_NE(table.out.find("pin load the pin link's"), std::string::npos) << table.out;
+
+  const CliRun bad =
+      run("dynamics " + example_with("pin_bad_value.toml", sliding + "pin_load = \"outer\"\n") +
+          " --format json");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("dynamics.pin_load"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("mean or pin_link"), std::string::npos) << bad.err;
+
+  const CliRun alone = run(
+      "dynamics " + example_with("pin_alone.toml", "pin_load = \"pin_link\"\n") + " --format json");
+  EXPECT_EQ(alone.status, 2);
+  EXPECT_NE(alone.err.find("dynamics.pin_load"), std::string::npos) << alone.err;
+  EXPECT_NE(alone.err.find("only with hinge"), std::string::npos) << alone.err;
+
+  const std::string three = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_three_wheels.toml";
+  const CliRun odd =
+      run("dynamics " + example_with("pin_odd.toml", sliding + "pin_load = \"pin_link\"\n", three) +
+          " --format json");
+  EXPECT_EQ(odd.status, 2);
+  EXPECT_NE(odd.err.find("dynamics.links"), std::string::npos) << odd.err;
+  EXPECT_NE(odd.err.find("55"), std::string::npos) << odd.err;
+  EXPECT_NE(odd.err.find("an even count"), std::string::npos) << odd.err;
+  // the same loop with the mean runs
+  const CliRun odd_mean =
+      run("dynamics " + example_with("mean_odd.toml", sliding, three) + " --duration 0.002s");
+  EXPECT_EQ(odd_mean.status, 0) << odd_mean.err;
 }
 
 }  // namespace

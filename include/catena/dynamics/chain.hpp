@@ -308,7 +308,7 @@ struct Model {
 /// Every problem with the model, fields "nodes", "pitch", "axial_stiffness", "axial_damping",
 /// "drag", "gravity", "mass", "pinned", "sprocket[i].<field>", "guide[i].<field>",
 /// "load[i].node", "load[i].force", "hinge.arm", "hinge.rate_band", "link_smoothing",
-/// "links_carry_compression".
+/// "links_carry_compression", "links" (an odd closed loop with the pin link's hinge load).
 std::vector<Issue> validate(const Model& model);
 
 /// One link's law at the stretch s = l − rest length and the rate ṡ = l̇ (docs/models/dynamics.md,

@@ -3,19 +3,30 @@
 // A hinge at node i is the articulation between link i − 1 (node i − 1 → node i) and link i
 // (node i → node i + 1). Its friction is a torque M = −e F s(ω) between the two links: e the
 // equivalent lever arm (μ r for a sliding pin of radius r with friction coefficient μ; c_r R* for
-// the rolling hinge of seed 000, see rolling_hinge_arm), F the pin load (the mean of the two
-// links' elastic tensions, never below 0), ω the links' relative rotation rate and
+// the rolling hinge of seed 000, see rolling_hinge_arm), F the pin load (by default the mean of
+// the two links' elastic tensions, or the pin-holding link's: PinLoad; never below 0), ω the
+// links' relative rotation rate and
 // s(ω) = ω/√(ω² + ω_ε²) the sign regularised over a rate band ω_ε. As forces it is a couple on
 // each link: M ∂β/∂x on the three nodes, β the relative angle (link i's angle less link i − 1's).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "catena/core/error.hpp"
 
 namespace catena::dynamics {
+
+/// Which tension loads a hinge's pin (docs/models/dynamics.md, "Hinges").
+enum class PinLoad {
+  kMean,  ///< the mean of the two links' elastic tensions (the default)
+  /// the tension of the outer (pin) link of the two: links alternate inner (roller) and outer
+  /// along the chain, link 0 an outer link, so at the hinge of node i link i holds the pin when i
+  /// is even and link i − 1 when i is odd (pin_link_side). A closed loop needs an even count.
+  kPinLink,
+};
 
 /// The hinges' friction (one law for every hinge of the chain). arm = 0: frictionless.
 struct HingeFriction {
@@ -23,11 +34,23 @@ struct HingeFriction {
   /// [rad/s] ω_ε: the torque is −e F ω/√(ω² + ω_ε²), within 1/(2 (ω/ω_ε)²) of Coulomb's e F
   /// once the links turn relative to each other faster than ω_ε
   double rate_band = 5.0;
+  PinLoad pin_load = PinLoad::kMean;  ///< F: the two links' mean, or the pin link's tension
   bool active() const { return arm > 0.0; }
 };
 
 /// Every problem with the hinge law, fields "hinge.arm", "hinge.rate_band".
 std::vector<Issue> validate(const HingeFriction& hinge, double pitch);
+/// With PinLoad::kPinLink and friction on a closed loop of an odd `links` count, the issue
+/// "links" (an even count: the inner and outer links alternate round the loop); none otherwise.
+std::vector<Issue> validate_pin_links(const HingeFriction& hinge, std::size_t links, bool closed);
+
+/// The link whose tension is the pin load at the hinge of node `node` (between link node − 1,
+/// the hinge's first, and link node, its second): −1 both (PinLoad::kMean: their mean), 0 the
+/// first, 1 the second (PinLoad::kPinLink: the outer link, the even-numbered of the two).
+inline int pin_link_side(const HingeFriction& hinge, std::size_t node) {
+  if (hinge.pin_load == PinLoad::kMean) return -1;
+  return node % 2 == 0 ? 1 : 0;
+}
 
 /// [m] the rolling hinge's equivalent lever arm (seed 000; docs/models/dynamics.md, "Hinges"):
 /// rolling without slip, a turn φ of the hinge turns the roller by φ/2 on each plate (eq. 3) and
@@ -60,10 +83,12 @@ struct HingeCouple {
   double jacobian[6][6] = {};
 };
 /// `rest` holds the two links' rest lengths (they differ on an alternating round-link chain,
-/// Model::alternation); the pin load is the mean of their elastic tensions k (l_θ − rest).
+/// Model::alternation); the pin load is the mean of their elastic tensions k (l_θ − rest), or
+/// with PinLoad::kPinLink the pin link's (pin_link_side at `node`, the hinge's node index along
+/// the chain: only its parity counts).
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
-                         const double y1[3], double theta, double step);
+                         const double y1[3], double theta, double step, std::size_t node = 0);
 /// The same with the two links' chord lengths given: `length0` at the start of the step
 /// (|d₀|), `length1` at the end (|d₁|), as the integrator has them from its links (each link
 /// serves two hinges; the square roots are taken once). They must be the square roots of the
@@ -73,14 +98,14 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
                          const double y1[3], double theta, double step, const double length0[2],
-                         const double length1[2], bool jacobian = true);
+                         const double length1[2], bool jacobian = true, std::size_t node = 0);
 /// The same into `out`: every field is written but `jacobian`, which is written only when
 /// `jacobian` is true (else left as it was). For the integrator's hinge loop, which keeps one
 /// HingeCouple for all hinges rather than zeroing a fresh one (its 36-entry Jacobian) per hinge.
 void hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                   const double x0[3], const double y0[3], const double x1[3], const double y1[3],
                   double theta, double step, const double length0[2], const double length1[2],
-                  HingeCouple& out, bool jacobian);
+                  HingeCouple& out, bool jacobian, std::size_t node = 0);
 /// What one link contributes to the couples of the two hinges at its ends (each link serves two
 /// hinges: the integrator computes these once per link and iteration, then combines them per
 /// hinge with the hinge_couple overload below). From the link's chord at the start of the step
@@ -130,12 +155,20 @@ inline void hinge_link(double d0x, double d0y, double d1x, double d1y, double le
 /// of ∂f/∂x₁ (rows of node k, columns of node q; a b / c d row-major), in the order (0, 0),
 /// (0, 1), …, (2, 2). `out.jacobian` is not touched. For the integrator's hinge loop, which adds
 /// −h × each block into its band without the 6×6 array in between (the same arithmetic).
+/// `node`: the hinge's node index along the chain, whose parity picks the pin link
+/// (pin_link_side; unused with PinLoad::kMean).
 template <class Block>
 inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
                                 const HingeLink& l1, double step, HingeCouple& hc, bool jacobian,
-                                Block&& block) {
-  const double tension_sum = l0.tension + l1.tension;
-  hc.load = std::max(0.0, 0.5 * tension_sum);
+                                Block&& block, std::size_t node = 0) {
+  // F: ½ (T₀ + T₁) (the mean), or the pin link's T (weights w₀, w₁ of ½ T₀, ½ T₁: 1 and 1, or
+  // 2 and 0, or 0 and 2; exact, so the mean's arithmetic is what it was)
+  const int side = pin_link_side(hinge, node);
+  const double w0 = side < 0 ? 1.0 : (side == 0 ? 2.0 : 0.0);
+  const double w1 = side < 0 ? 1.0 : 2.0 - w0;
+  const double load =
+      side < 0 ? 0.5 * (l0.tension + l1.tension) : (side == 0 ? l0.tension : l1.tension);
+  hc.load = std::max(0.0, load);
   hc.turn = l1.turn - l0.turn;
   hc.rate = hc.turn / step;
   // g = ∂β/∂x: (+P₀, −P₀ − P₁, +P₁), P = perp(d_θ)/|d_θ|²
@@ -157,15 +190,17 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
   hc.rate_stiffness = limit * band * band / (root * root * root);
   if (!jacobian) return;
   // The exact ∂f/∂x₁. Node gradients of a per-link quantity q(d₁) of links 0 (a → b) and 1
-  // (b → c): the turn Δβ = turn₁ − turn₀ gives (T₀, −T₀ − T₁, T₁) (as g); the load F = Σ ½ k
-  // (l_θ − rest) gives (−E₀, E₀ − E₁, E₁) (zero where the load is clamped at 0).
-  const double loaded = 0.5 * tension_sum > 0.0 ? 1.0 : 0.0;
+  // (b → c): the turn Δβ = turn₁ − turn₀ gives (T₀, −T₀ − T₁, T₁) (as g); the load F = Σ w_j ½ k
+  // (l_θ − rest)_j gives (−w₀ E₀, w₀ E₀ − w₁ E₁, w₁ E₁) (zero where the load is clamped at 0):
+  // the pin link's alone with PinLoad::kPinLink.
+  const double loaded = load > 0.0 ? 1.0 : 0.0;
   const double load_factor = -hinge.arm * (hc.rate / root) * loaded;  // ∂M/∂F = −e s(ω)
   const double rate_factor = -hc.rate_stiffness / step;               // ∂M/∂Δβ = −e F s'/h
   const double nturn_x[3] = {l0.tx, -l0.tx - l1.tx, l1.tx};
   const double nturn_y[3] = {l0.ty, -l0.ty - l1.ty, l1.ty};
-  const double nload_x[3] = {-l0.ex, l0.ex - l1.ex, l1.ex};
-  const double nload_y[3] = {-l0.ey, l0.ey - l1.ey, l1.ey};
+  const double e0x = w0 * l0.ex, e0y = w0 * l0.ey, e1x = w1 * l1.ex, e1y = w1 * l1.ey;
+  const double nload_x[3] = {-e0x, e0x - e1x, e1x};
+  const double nload_y[3] = {-e0y, e0y - e1y, e1y};
   double dmx[3], dmy[3];  // ∂M/∂x₁ per node
   for (int q = 0; q < 3; ++q) {
     dmx[q] = load_factor * nload_x[q] + rate_factor * nturn_x[q];
@@ -209,22 +244,25 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
 /// The couple of the hinge between links `l0` (a → b) and `l1` (b → c) from their HingeLink
 /// terms, into `out` as above: bit for bit what the overloads above give.
 inline void hinge_couple(const HingeFriction& hinge, const HingeLink& l0, const HingeLink& l1,
-                         double step, HingeCouple& hc, bool jacobian) {
-  hinge_couple_blocks(hinge, l0, l1, step, hc, jacobian,
-                      [&hc](int k, int q, double a, double b, double c, double d) {
-                        hc.jacobian[2 * k][2 * q] = a;
-                        hc.jacobian[2 * k][2 * q + 1] = b;
-                        hc.jacobian[2 * k + 1][2 * q] = c;
-                        hc.jacobian[2 * k + 1][2 * q + 1] = d;
-                      });
+                         double step, HingeCouple& hc, bool jacobian, std::size_t node = 0) {
+  hinge_couple_blocks(
+      hinge, l0, l1, step, hc, jacobian,
+      [&hc](int k, int q, double a, double b, double c, double d) {
+        hc.jacobian[2 * k][2 * q] = a;
+        hc.jacobian[2 * k][2 * q + 1] = b;
+        hc.jacobian[2 * k + 1][2 * q] = c;
+        hc.jacobian[2 * k + 1][2 * q + 1] = d;
+      },
+      node);
 }
 
 /// Both links of rest length `pitch`.
 inline HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, double pitch,
                                 const double x0[3], const double y0[3], const double x1[3],
-                                const double y1[3], double theta, double step) {
+                                const double y1[3], double theta, double step,
+                                std::size_t node = 0) {
   const double rest[2] = {pitch, pitch};
-  return hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step);
+  return hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step, node);
 }
 
 }  // namespace catena::dynamics

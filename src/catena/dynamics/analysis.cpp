@@ -112,6 +112,9 @@ std::vector<Parameter> table_fields() {
                "rolling: the roller's concave face R2 > R1 (default: a flat face)"),
       quantity("hinge_band", K::kAngularSpeed,
                "rate band of the regularised hinge friction, in (0, 100] rad/s (default 5 rad/s)"),
+      text("pin_load",
+           "the hinges' pin load: mean (of the two links' tensions, the default) or pin_link "
+           "(the outer link's; links alternate, link 0 outer; an even count)"),
       text("positions",
            "true to add every node's x and y at each output sample to the JSON (default false; "
            "at most 500000 node-samples)"),
@@ -1105,8 +1108,10 @@ Setup parse(const analysis::Inputs& in) {
   bool work_balance = false;
   std::string hinge = "frictionless";
   bool hinge_known = true;
-  bool slack_all = false;        // slack_spans = "all"
-  bool slack_spans_bad = false;  // a slack_spans value refused (not quoted again below)
+  PinLoad pin_load = PinLoad::kMean;  // pin_load = "pin_link": the outer link's tension
+  bool pin_load_bad = false;          // a pin_load value refused (not quoted again below)
+  bool slack_all = false;             // slack_spans = "all"
+  bool slack_spans_bad = false;       // a slack_spans value refused (not quoted again below)
   bool positions = false;
   std::string wheel = "iso606";
   for (const Entry& v : file.table) {
@@ -1246,6 +1251,16 @@ Setup parse(const analysis::Inputs& in) {
       } else {
         hinge_known = false;
         issues.push_back({where(v), "'" + v.text + "'", "frictionless, sliding or rolling"});
+      }
+      continue;
+    }
+    if (key == "pin_load") {
+      line[key] = v.line;
+      if (v.is_string && (v.text == "mean" || v.text == "pin_link"))
+        pin_load = v.text == "pin_link" ? PinLoad::kPinLink : PinLoad::kMean;
+      else {
+        issues.push_back({where(v), "'" + v.text + "'", "mean or pin_link"});
+        pin_load_bad = true;
       }
       continue;
     }
@@ -1656,6 +1671,17 @@ Setup parse(const analysis::Inputs& in) {
       issues.push_back({at("hinge_band"),
                         value.count("hinge_band") ? shown(value["hinge_band"]) : "(given)",
                         "only with hinge = \"sliding\" or \"rolling\""});
+    if (hinge_known && hinge == "frictionless" && line.count("pin_load") && !pin_load_bad)
+      issues.push_back({at("pin_load"), pin_load == PinLoad::kPinLink ? "'pin_link'" : "'mean'",
+                        "only with hinge = \"sliding\" or \"rolling\""});
+    // the pin link's load alternates round the loop: an odd count has an offset link (two outer
+    // links meeting), which is not modelled
+    if (hinge != "frictionless" && pin_load == PinLoad::kPinLink && s.links > 0 && s.links % 2 != 0)
+      issues.push_back({at("links"), std::to_string(s.links),
+                        "an even count with pin_load = \"pin_link\" (inner and outer links "
+                        "alternate round the loop; an odd count needs an offset link, not "
+                        "modelled)"});
+    s.hinge_law.pin_load = pin_load;
     const double band = optional("hinge_band", 5.0);
     if (!std::isnan(band) && !(band > 0.0 && band <= 100.0))
       issues.push_back({at("hinge_band"), shown(band), "in (0, 100] rad/s"});
@@ -2708,6 +2734,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["hinge"] = d.hinge;
     j["hinge_arm"] = d.hinge_law.arm;
     j["hinge_band"] = d.hinge_law.rate_band;
+    // the pin link's load only: a run with the mean prints what it did before
+    if (d.hinge_law.pin_load == PinLoad::kPinLink) j["hinge_pin_load"] = "pin_link";
     j["summary"]["hinge_friction_work"] = r.hinge_work;
   }
   if (d.work_balance) {
@@ -3154,8 +3182,9 @@ Record describe(const Result& r, const analysis::Inputs&) {
   }
   if (hinge_on)
     t << "  hinges " << d.hinge << ": friction arm " << format_g(d.hinge_law.arm * 1e3, 4)
-      << " mm, rate band " << format_g(d.hinge_law.rate_band, 3) << " rad/s, friction work "
-      << format_g(r.hinge_work, 5) << " J\n";
+      << " mm, rate band " << format_g(d.hinge_law.rate_band, 3) << " rad/s"
+      << (d.hinge_law.pin_load == PinLoad::kPinLink ? ", pin load the pin link's" : "")
+      << ", friction work " << format_g(r.hinge_work, 5) << " J\n";
   for (const Diagnostic& diag : rec.diagnostics)
     t << "  " << to_string(diag.severity) << ": " << diag.message << "\n";
   rec.table = t.str();

@@ -233,6 +233,10 @@ std::vector<Issue> validate(const Model& model) {
   }
   std::vector<Issue> hinge = validate(model.hinge, model.pitch);
   out.insert(out.end(), hinge.begin(), hinge.end());
+  if (!model.mass.empty()) {
+    hinge = validate_pin_links(model.hinge, model.links(), model.closed);
+    out.insert(out.end(), hinge.begin(), hinge.end());
+  }
   return out;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace catena::dynamics {
 
@@ -22,6 +23,18 @@ std::vector<Issue> validate(const HingeFriction& hinge, double pitch) {
   return out;
 }
 
+std::vector<Issue> validate_pin_links(const HingeFriction& hinge, std::size_t links, bool closed) {
+  std::vector<Issue> out;
+  // round a closed loop of an odd count the alternation meets itself: two outer links (0 and
+  // links − 1) at node 0, an offset link, which is not modelled
+  if (hinge.active() && hinge.pin_load == PinLoad::kPinLink && closed && links % 2 != 0) {
+    out.push_back({"links", std::to_string(links),
+                   "an even count with the pin link's load (inner and outer links alternate "
+                   "round the loop; an odd count needs an offset link, not modelled)"});
+  }
+  return out;
+}
+
 double rolling_hinge_arm(double rolling_coefficient, double plate_radius, double face_radius) {
   const double reduced = std::isinf(face_radius)
                              ? plate_radius
@@ -31,7 +44,7 @@ double rolling_hinge_arm(double rolling_coefficient, double plate_radius, double
 
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
-                         const double y1[3], double theta, double step) {
+                         const double y1[3], double theta, double step, std::size_t node) {
   double length0[2], length1[2];
   for (int j = 0; j < 2; ++j) {
     const double d0x = x0[j + 1] - x0[j], d0y = y0[j + 1] - y0[j];
@@ -39,29 +52,30 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
     length0[j] = std::sqrt(d0x * d0x + d0y * d0y);
     length1[j] = std::sqrt(d1x * d1x + d1y * d1y);
   }
-  return hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step, length0, length1);
+  return hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step, length0, length1,
+                      true, node);
 }
 
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
                          const double y1[3], double theta, double step, const double length0[2],
-                         const double length1[2], bool jacobian) {
+                         const double length1[2], bool jacobian, std::size_t node) {
   HingeCouple hc;
   hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step, length0, length1, hc,
-               jacobian);
+               jacobian, node);
   return hc;
 }
 
 void hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                   const double x0[3], const double y0[3], const double x1[3], const double y1[3],
                   double theta, double step, const double length0[2], const double length1[2],
-                  HingeCouple& hc, bool jacobian) {
+                  HingeCouple& hc, bool jacobian, std::size_t node) {
   HingeLink link[2];
   for (int j = 0; j < 2; ++j) {
     hinge_link(x0[j + 1] - x0[j], y0[j + 1] - y0[j], x1[j + 1] - x1[j], y1[j + 1] - y1[j],
                length0[j], length1[j], rest[j], axial_stiffness, theta, link[j], jacobian);
   }
-  hinge_couple(hinge, link[0], link[1], step, hc, jacobian);
+  hinge_couple(hinge, link[0], link[1], step, hc, jacobian, node);
 }
 
 }  // namespace catena::dynamics

@@ -326,11 +326,13 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       Mat2* const slot[3][3] = {{&diag[ha], &upper[ha], &far_upper[ha]},
                                 {&lower[i], &diag[i], &upper[i]},
                                 {&far_lower[hb], &lower[hb], &diag[hb]}};
-      hinge_couple_blocks(model.hinge, hinge_link_of[ha], hinge_link_of[i], h, hc, jacobian,
-                          [&](int r, int q, double ja, double jb, double jc, double jd) {
-                            Mat2& m = *slot[r][q];
-                            m = {m.a - h * ja, m.b - h * jb, m.c - h * jc, m.d - h * jd};
-                          });
+      hinge_couple_blocks(
+          model.hinge, hinge_link_of[ha], hinge_link_of[i], h, hc, jacobian,
+          [&](int r, int q, double ja, double jb, double jc, double jd) {
+            Mat2& m = *slot[r][q];
+            m = {m.a - h * ja, m.b - h * jb, m.c - h * jc, m.d - h * jd};
+          },
+          i);
       hinge_work += hc.work;
       rhs[ha].x += h * hc.fx[0];
       rhs[ha].y += h * hc.fy[0];
