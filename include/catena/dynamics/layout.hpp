@@ -206,6 +206,11 @@ LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& 
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid, const std::vector<std::size_t>& pieces);
 
+/// How many counts the search for the most links that start tries one by one before it bisects
+/// (`longest_count`'s and `links_that_start_phrase`'s default, one number for the search and the
+/// message that tells it).
+inline constexpr int kLongestCountScan = 100;
+
 /// The most links that start with slack among the counts lo + 1 .. hi (`starts` says whether a
 /// count does): tried downwards from hi, the first that starts taken (`scanned`: none above it
 /// starts). The counts that start need not be an interval, so they are tried one by one; after
@@ -215,12 +220,14 @@ struct LongestCount {
   int links = 0;
   bool scanned = false;
 };
-LongestCount longest_count(int lo, int hi, const std::function<bool(int)>& starts, int scan = 100);
+LongestCount longest_count(int lo, int hi, const std::function<bool(int)>& starts,
+                           int scan = kLongestCountScan);
 
 /// The end of a refusal of a chain too long for its slack: the most links that start
 /// (`longest`, found among the counts below the limit, `scan` of them tried one by one), and,
 /// when the count given (`given`) is not above it, that no start was found at exactly that count.
-std::string links_that_start_phrase(const LongestCount& longest, int given, int scan = 100);
+std::string links_that_start_phrase(const LongestCount& longest, int given,
+                                    int scan = kLongestCountScan);
 
 /// The loop's start state from a placement: nodes at the placement, moving along the path at
 /// `chain_speed`; every wheel at its placement angle, turning at chain_speed / its radius.

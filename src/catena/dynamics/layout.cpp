@@ -616,12 +616,13 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
 namespace {
 
 // What a lead-in arc's check measures: its samples (`arc_samples` of them along the arc's surface,
-// laid once for the prefilter's box and the check), the path's pieces it may approach (off the
-// spans the rail carries) with the least distance each allows, and the other guides it may run
-// into; only those whose bounding box comes within a roller radius of the samples' (no other can
-// come that close to a sample: the prefilter changes no verdict, it only skips work).
+// laid once for the prefilter's box and, when `lead_in_reach` is asked to keep them, the check),
+// the path's pieces it may approach (off the spans the rail carries) with the least distance each
+// allows, and the other guides it may run into; only those whose bounding box comes within a
+// roller radius of the samples' (no other can come that close to a sample: the prefilter changes
+// no verdict, it only skips work).
 struct LeadInReach {
-  std::vector<double> x, y;  // [m] the samples
+  std::vector<double> x, y;  // [m] the samples, when kept (empty for a count of the work)
   std::vector<std::size_t> pieces;
   std::vector<double> least;  // [m], for each of `pieces`
   std::vector<std::size_t> guides;
@@ -638,7 +639,7 @@ double piece_gap(const PathPiece& q, double x, double y) {
 
 LeadInReach lead_in_reach(const BeltPath& path, const Guide& rail, const Guide& arc,
                           const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
-                          double roller) {
+                          double roller, bool keep_samples) {
   const double r = 0.5 * roller;
   LeadInReach out;
   // the spans the rail carries: a point within a roller's diameter of its segment (the rollers
@@ -665,15 +666,19 @@ LeadInReach lead_in_reach(const BeltPath& path, const Guide& rail, const Guide& 
   const double ex = first ? rail.x0 : rail.x1, ey = first ? rail.y0 : rail.y1;
   const double sweep = arc.end_angle - arc.start_angle;
   const int samples = arc_samples(arc.radius * sweep, roller);
-  out.x.reserve(static_cast<std::size_t>(samples) + 1);
-  out.y.reserve(static_cast<std::size_t>(samples) + 1);
+  if (keep_samples) {
+    out.x.reserve(static_cast<std::size_t>(samples) + 1);
+    out.y.reserve(static_cast<std::size_t>(samples) + 1);
+  }
   double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
   for (int j = 0; j <= samples; ++j) {
     const double a = arc.start_angle + sweep * j / samples;
     const double x = arc.centre_x + arc.radius * std::cos(a);
     const double y = arc.centre_y + arc.radius * std::sin(a);
-    out.x.push_back(x);
-    out.y.push_back(y);
+    if (keep_samples) {
+      out.x.push_back(x);
+      out.y.push_back(y);
+    }
     lo_x = std::min(lo_x, x);
     lo_y = std::min(lo_y, y);
     hi_x = std::max(hi_x, x);
@@ -715,7 +720,7 @@ std::string lead_in_obstacle(const BeltPath& path, const Guide& rail, const Guid
                              const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
                              double roller) {
   const double r = 0.5 * roller;
-  const LeadInReach reach = lead_in_reach(path, rail, arc, guides, skip, roller);
+  const LeadInReach reach = lead_in_reach(path, rail, arc, guides, skip, roller, true);
   for (std::size_t j = 0; j < reach.x.size(); ++j) {
     const double x = reach.x[j], y = reach.y[j];
     for (std::size_t i = 0; i < reach.pieces.size(); ++i) {
@@ -733,9 +738,10 @@ std::string lead_in_obstacle(const BeltPath& path, const Guide& rail, const Guid
 double lead_in_work(const BeltPath& path, const Guide& rail, const Guide& arc,
                     const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
                     double roller) {
-  const LeadInReach reach = lead_in_reach(path, rail, arc, guides, skip, roller);
-  return static_cast<double>(reach.x.size()) *
-         static_cast<double>(reach.pieces.size() + reach.guides.size());
+  // the samples counted, not kept (up to 1e6 + 1 of them, and the bisections ask again and again)
+  const LeadInReach reach = lead_in_reach(path, rail, arc, guides, skip, roller, false);
+  const int samples = arc_samples(arc.radius * (arc.end_angle - arc.start_angle), roller);
+  return (samples + 1.0) * static_cast<double>(reach.pieces.size() + reach.guides.size());
 }
 
 LeadInLimit lead_in_limit(const BeltPath& path, const Guide& rail, const LeadIn& lead,
