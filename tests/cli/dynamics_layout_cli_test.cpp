@@ -632,6 +632,25 @@ TEST(DynamicsLayoutCli, BackSideDriverAndDrivenWheelsCarryTheLoad) {
   }
 }
 
+namespace {
+
+// The count (the number before " links start so"), the limit in mm ("of at most about … mm", the
+// sag's extra length e), the e the count given needs ("need e = … mm") and its N p less the path's
+// length ("less the path's length is … mm") a refusal of a too-long chain names; -1 when absent.
+double named_mm(const std::string& err, const std::string& key) {
+  const std::size_t at = err.find(key);
+  return at == std::string::npos ? -1.0 : std::stod(err.substr(at + key.size()));
+}
+int named_count(const std::string& err) {
+  const std::size_t end = err.find(" links start so");
+  if (end == std::string::npos) return -1;
+  const std::size_t begin = err.rfind("at most ", end);
+  return begin == std::string::npos ? -1 : std::stoi(err.substr(begin + 8, end - begin - 8));
+}
+double named_limit_mm(const std::string& err) { return named_mm(err, "of at most about "); }
+
+}  // namespace
+
 // A start with slack through the command: examples/dynamics_three_wheels.toml (55 links fit its
 // path) given 56 links and gravity starts with the extra 17 mm sagging in the span facing down
 // (idler -> driven), every link one pitch: `laid_pitch` the pitch, `slack` = 56 p − the path's
@@ -689,10 +708,17 @@ TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
   EXPECT_NE(refused.err.find("the most it can sag by as circular arcs of at most a half circle"),
             std::string::npos)
       << refused.err;
-  EXPECT_NE(refused.err.find("(here 65 links need an e beyond the half circle's 131.461 mm; their "
-                             "N p less the path's length is 188.461 mm"),
+  // 65 links need an e beyond the half circle (the limit named), and their N p - L is the
+  // chain's own extra beside it (no "less than e" against an e that was not found)
+  EXPECT_NE(refused.err.find("(here 65 links need an e beyond the half circle's "),
             std::string::npos)
       << refused.err;
+  EXPECT_NEAR(named_mm(refused.err, "beyond the half circle's "), named_limit_mm(refused.err), 1e-3)
+      << refused.err;
+  EXPECT_NEAR(named_mm(refused.err, "N p less the path's length is "), (65 * kPitch - path) * 1e3,
+              1e-3)
+      << refused.err;
+  EXPECT_EQ(refused.err.find("less than e"), std::string::npos) << refused.err;
 
   // slack_spans = "all": the 93 mm shared by the three spans (each between two wheels inside)
   auto with_key = [&](int links, const std::string& value) {
@@ -746,25 +772,6 @@ TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
       << blocked.err;
 }
 
-namespace {
-
-// The count (the number before " links start so"), the limit in mm ("of at most about … mm", the
-// sag's extra length e), the e the count given needs ("need e = … mm") and its N p less the path's
-// length ("less the path's length is … mm") a refusal of a too-long chain names; -1 when absent.
-double named_mm(const std::string& err, const std::string& key) {
-  const std::size_t at = err.find(key);
-  return at == std::string::npos ? -1.0 : std::stod(err.substr(at + key.size()));
-}
-int named_count(const std::string& err) {
-  const std::size_t end = err.find(" links start so");
-  if (end == std::string::npos) return -1;
-  const std::size_t begin = err.rfind("at most ", end);
-  return begin == std::string::npos ? -1 : std::stoi(err.substr(begin + 8, end - begin - 8));
-}
-double named_limit_mm(const std::string& err) { return named_mm(err, "of at most about "); }
-
-}  // namespace
-
 // A refused chain names a limit the guides allow (issue 21): 65 links on the three-wheel example
 // are more than the slack span's half circle, and were refused naming 131.4 mm, the span's limit
 // without the guides, although a rail 70 mm outside the taut span's middle stops the sag at
@@ -793,18 +800,30 @@ TEST(DynamicsLayoutCli, RefusedSlackNamesALimitThatStartsWithTheGuides) {
   ASSERT_EQ(bare.status, 2);
   EXPECT_NEAR(named_limit_mm(bare.err), 131.46, 0.01) << bare.err;
   EXPECT_EQ(named_count(bare.err), 61) << bare.err;
-  EXPECT_EQ(run("dynamics " + with(61, false)).status, 0);
-  // 62 links are N p - L = 131.311 mm beyond the path, less than the limit: the message named
-  // that beside the limit as if alike ("here 131.311 mm"), and read as refusing a count within
-  // it. The limit is the arc's extra e, and 62 links need an e beyond the half circle: the message
-  // says so, and names N p - L apart as what it is
+  const CliRun fits = run("dynamics " + with(61, false) + " --format json");
+  ASSERT_EQ(fits.status, 0) << fits.err;
+  const double path = nlohmann::json::parse(fits.out)["path_length"].get<double>();
+  // 62 links are N p - L (62 p less the path's length) beyond the path, less than the limit: the
+  // message named that beside the limit as if alike ("here 131.311 mm"), and read as refusing a
+  // count within it. The limit is the arc's extra e, and 62 links need an e beyond the half
+  // circle: the message says so, and names N p - L apart as what it is, without calling it "less
+  // than e" (that e was not found: it is beyond the half circle)
   const CliRun beyond = run("dynamics " + with(62, false));
   ASSERT_EQ(beyond.status, 2);
-  EXPECT_NE(beyond.err.find("(here 62 links need an e beyond the half circle's 131.461 mm; their N "
-                            "p less the path's length is 131.311 mm (12.5083 %), less than e"),
+  EXPECT_NE(beyond.err.find("(here 62 links need an e beyond the half circle's "),
             std::string::npos)
       << beyond.err;
-  EXPECT_LT(named_mm(beyond.err, "less the path's length is "), named_limit_mm(beyond.err));
+  EXPECT_NEAR(named_mm(beyond.err, "beyond the half circle's "), named_limit_mm(beyond.err), 1e-3)
+      << beyond.err;
+  const std::string own_key = "; their N p less the path's length is ";
+  const double own = named_mm(beyond.err, own_key);
+  EXPECT_NEAR(own, (62 * kPitch - path) * 1e3, 1e-3) << beyond.err;
+  EXPECT_LT(own, named_limit_mm(beyond.err));
+  const std::size_t own_at = beyond.err.find(own_key);
+  ASSERT_NE(own_at, std::string::npos) << beyond.err;
+  EXPECT_NEAR(named_mm(beyond.err.substr(own_at), " mm ("), own / (path * 1e3) * 100.0, 1e-3)
+      << beyond.err;
+  EXPECT_EQ(beyond.err.find("less than e"), std::string::npos) << beyond.err;
 
   const CliRun guided = run("dynamics " + with(65, true));
   ASSERT_EQ(guided.status, 2);
@@ -829,6 +848,7 @@ TEST(DynamicsLayoutCli, RefusedSlackNamesALimitThatStartsWithTheGuides) {
   const double need = named_mm(more.err, "need e = ");
   EXPECT_GT(need, limit) << more.err;
   EXPECT_GT(need, named_mm(more.err, "less the path's length is ")) << more.err;
+  EXPECT_NE(more.err.find(" %), less than e: a link's chord spans"), std::string::npos) << more.err;
 
   // a sag that runs into a lead-in arc names it by its rail, not by a guide number the file does
   // not have (the arcs are laid after the guides as given)
@@ -923,7 +943,7 @@ TEST(DynamicsLayoutCli, TwoSaggingWallsOfANotchAreCheckedAgainstEachOther) {
   EXPECT_EQ(crossing.err.find("no start was found at exactly"), std::string::npos) << crossing.err;
   // 344, 360 and 364 start too (the slack solve's secant cycled on them and they were refused,
   // 365 named 363 as the most: the bisection on e finds them,
-  // DynamicsSlackStart.EveryCountOnTheNotchedPathStarts)
+  // DynamicsSlackStart.EveryCountOnTheNotchedPathIsLaid)
   for (const int links : {344, 345, 360, 363, 364}) {
     const CliRun r = run("dynamics " + notch(links));
     ASSERT_EQ(r.status, 0) << links << ": " << r.err;

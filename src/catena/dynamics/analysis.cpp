@@ -669,7 +669,7 @@ bool slack_starts(const Setup& s, const std::vector<std::size_t>& pieces, int li
 // included), 0 if none. A start at N links sags by more than N p less the path's length, so no
 // count beyond the path's length plus `most` (the slack limit) starts; the counts below it are
 // tried downwards (`longest_count`: not by bisection, the counts that start need not be an
-// interval; after 100 counts without a start the rest is bisected, bounded work).
+// interval; after kLongestCountScan counts without a start the rest is bisected, bounded work).
 LongestCount longest_slack_links(const Setup& s, const std::vector<std::size_t>& pieces,
                                  double most, const std::vector<double>& tip,
                                  const std::vector<Guide>& guides) {
@@ -697,8 +697,8 @@ std::string links_that_start_text(const Setup& s, const std::vector<std::size_t>
 // What a refused slack is measured by, like with like: the sag's extra length e (the arcs' length
 // beyond their chords) the spans `pieces` take at most (`most`, with `guides`), against the e the
 // count given needs (`slack_extra`), and apart from them N p less the path's length, the chain's
-// own extra (less than e: a link's chord spans a little more than a pitch of a curved path). Ends
-// with "(here ...", for the caller to close.
+// own extra (less than e, said only when that e was found: a link's chord spans a little more than
+// a pitch of a curved path). Ends with "(here ...", for the caller to close.
 std::string slack_measure_text(const Setup& s, const std::vector<std::size_t>& pieces, double most,
                                bool half_circle, const std::vector<Guide>& guides, int given) {
   auto shown = [](double x) { return format_g(x, 6); };
@@ -721,8 +721,10 @@ std::string slack_measure_text(const Setup& s, const std::vector<std::size_t>& p
           : std::isfinite(need) ? " need e = " + mm(need)
                                 : " need an e that was not found") +
          "; their N p less the path's length is " + mm(over) + " (" +
-         shown(over / s.path.length * 100.0) +
-         " %), less than e: a link's chord spans a little more than a pitch of a curved path";
+         shown(over / s.path.length * 100.0) + " %)" +
+         (std::isfinite(need)
+              ? ", less than e: a link's chord spans a little more than a pitch of a curved path"
+              : "");
 }
 
 // A guide named in a message (`sag_obstacle` names s.guides[k] as guide[k]): as the file
