@@ -320,7 +320,7 @@ TEST(DynamicsSlackStart, TwoSaggingSpansAreCheckedAgainstEachOther) {
 // and the half circle, and the bisection there finds e (344: 44.197 mm beyond N p - L). Every
 // count 343-368 is now laid, every link one pitch (the sags' checks against the wheels and each
 // other are not made here: through the command 365 and above run into the other wall).
-TEST(DynamicsSlackStart, EveryCountOnTheNotchedPathStarts) {
+TEST(DynamicsSlackStart, EveryCountOnTheNotchedPathIsLaid) {
   std::vector<Circle> circles{
       {-0.5, -0.3, pitch_radius(20)},    {0.5, -0.3, pitch_radius(20)},
       {0.5, 0.6, pitch_radius(20)},      {0.25, 0.6, pitch_radius(20)},
