@@ -126,8 +126,9 @@ TEST(DynamicsHingeCli, EveryHingeProblemIsNamedAtOnce) {
 
 // pin_load = "pin_link": the pin load is the outer link's tension (docs/models/dynamics.md,
 // "Hinges"); the JSON names it (a run with the mean, given or not, prints what it did before),
-// and the run's hinge work differs from the mean's. A bad value, the key without hinge friction
-// and an odd loop (the three-wheel example lays 55 links) are refused by name.
+// and the run's hinge work is smaller in size than the mean's by the measured margin. A bad
+// value, the key without hinge friction and an odd loop (the three-wheel example lays 55 links) are
+// refused by name.
 TEST(DynamicsHingeCli, PinLinkLoadIsAnOptionNamedInTheOutput) {
   const std::string sliding = "hinge = \"sliding\"\nhinge_friction = 0.1\n";
   const auto mean = run_json(example_with("mean.toml", sliding), "--duration 0.02s");
@@ -141,7 +142,12 @@ TEST(DynamicsHingeCli, PinLinkLoadIsAnOptionNamedInTheOutput) {
   const double w_mean = mean["summary"]["hinge_friction_work"].get<double>();
   const double w_pin = pin["summary"]["hinge_friction_work"].get<double>();
   EXPECT_LT(w_pin, 0.0);
-  EXPECT_NE(w_pin, w_mean);
+  // over these 20 ms (half a tooth period) the two classes of hinge do not yet average out: the
+  // pin link's work is 0.942 of the mean's (measured); with the parities swapped (the integrator
+  // handing each hinge node i + 1) it is 1.058, with the mean's load 1: the bound separates all
+  // three
+  EXPECT_GT(w_pin / w_mean, 0.90);
+  EXPECT_LT(w_pin / w_mean, 0.97);
   const CliRun table =
       run("dynamics " + example_with("pin_link_table.toml", sliding + "pin_load = \"pin_link\"\n") +
           " --duration 0.005s");
@@ -169,10 +175,36 @@ TEST(DynamicsHingeCli, PinLinkLoadIsAnOptionNamedInTheOutput) {
   EXPECT_NE(odd.err.find("dynamics.links"), std::string::npos) << odd.err;
   EXPECT_NE(odd.err.find("55"), std::string::npos) << odd.err;
   EXPECT_NE(odd.err.find("an even count"), std::string::npos) << odd.err;
+  // the count is the layout's (links omitted): said so
+  EXPECT_NE(odd.err.find("the layout's choice"), std::string::npos) << odd.err;
   // the same loop with the mean runs
   const CliRun odd_mean =
       run("dynamics " + example_with("mean_odd.toml", sliding, three) + " --duration 0.002s");
   EXPECT_EQ(odd_mean.status, 0) << odd_mean.err;
+}
+
+// The odd-loop rule is the model's (validate_pin_links: the pin link's load with friction on),
+// named at the case's links field: an odd count given in the case is refused at its line (not
+// called the layout's choice); a sliding hinge of zero friction (arm 0, no hinge friction at all)
+// with pin_load = "pin_link" on the same odd loop runs, as the model accepts it.
+TEST(DynamicsHingeCli, PinLinkOddLoopRuleIsTheModelsNamedAtTheLinksField) {
+  const std::string three = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_three_wheels.toml";
+  const std::string pin = "pin_load = \"pin_link\"\n";
+  const CliRun given =
+      run("dynamics " +
+          example_with("pin_odd_given.toml",
+                       "links = 55\nhinge = \"sliding\"\nhinge_friction = 0.1\n" + pin, three) +
+          " --format json");
+  EXPECT_EQ(given.status, 2) << given.err;
+  EXPECT_NE(given.err.find("dynamics.links (line "), std::string::npos) << given.err;
+  EXPECT_NE(given.err.find("an even count with pin_load = \"pin_link\""), std::string::npos)
+      << given.err;
+  EXPECT_EQ(given.err.find("the layout's choice"), std::string::npos) << given.err;
+  const CliRun still = run(
+      "dynamics " +
+      example_with("pin_odd_still.toml", "hinge = \"sliding\"\nhinge_friction = 0\n" + pin, three) +
+      " --duration 0.002s");
+  EXPECT_EQ(still.status, 0) << still.err;
 }
 
 }  // namespace

@@ -82,13 +82,13 @@ TEST(HingeFriction, PinLoadTakesEachLinksOwnRestLength) {
   p.x1[2] += 1e-6;  // the hinge turns a little over the step
   const double own[2] = {0.082, 0.046}, shorter[2] = {0.080, 0.045};
   auto load = [&](const double rest[2]) {
-    return hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4).load;
+    return hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, 0).load;
   };
   EXPECT_NEAR(load(own), 0.0, 1e-6);
   EXPECT_NEAR(load(shorter), 0.5 * kStiffness * (0.002 + 0.001), 1e-6 * kStiffness * 0.003);
-  EXPECT_NEAR(hinge_couple(hinge, kStiffness, 0.064, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4).load, 0.0,
-              1e-6);
-  EXPECT_NE(hinge_couple(hinge, kStiffness, shorter, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4).torque,
+  EXPECT_NEAR(hinge_couple(hinge, kStiffness, 0.064, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, 0).load,
+              0.0, 1e-6);
+  EXPECT_NE(hinge_couple(hinge, kStiffness, shorter, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, 0).torque,
             0.0);
 }
 
@@ -118,10 +118,11 @@ TEST(HingeFriction, PinLinkLoadIsTheOuterLinksTension) {
     EXPECT_NEAR(couple(node).load, kStiffness * 0.002, 1e-6 * kStiffness * 0.002) << node;
   // the torque scales with the load: twice as much at an odd node as at an even one
   EXPECT_NEAR(couple(1).torque, 2.0 * couple(0).torque, 1e-9 * std::abs(couple(0).torque));
-  // the mean ignores the node: bit for bit the overload without it
+  // the mean ignores the node's parity: at node 0 bit for bit what it is at node 1
   hinge.pin_load = PinLoad::kMean;
   EXPECT_EQ(pin_link_side(hinge, 1), -1);
-  const HingeCouple mean = hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4);
+  const HingeCouple mean =
+      hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, 0);
   EXPECT_EQ(couple(1).load, mean.load);
   EXPECT_EQ(couple(0).torque, mean.torque);
   EXPECT_NEAR(mean.load, 0.5 * kStiffness * 0.003, 1e-6 * kStiffness * 0.003);
@@ -158,7 +159,7 @@ TEST(HingeFriction, ForceIsTheTorqueTimesTheGradientOfTheRelativeAngle) {
     const Pose p = random_pose(rng, kPitch, 2e-4);
     for (double theta : {0.5, 0.6, 1.0}) {
       const HingeCouple hc =
-          hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, theta, 1e-4);
+          hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, theta, 1e-4, 0);
       // g = ∂β/∂x at the θ point, by central differences of β
       double xt[3], yt[3];
       for (int k = 0; k < 3; ++k) {
@@ -215,12 +216,12 @@ TEST(HingeFriction, CoupleWithoutJacobianIsTheFullOnesBitForBitAndLeavesTheJacob
       l1[j] = link_length(p.x1, p.y1, j);
     }
     const HingeCouple full =
-        hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1);
+        hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1, true, 0);
     HingeCouple lean;
     for (auto& row : lean.jacobian) {
       for (double& v : row) v = 12345.0;
     }
-    hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1, lean, false);
+    hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1, lean, false, 0);
     EXPECT_EQ(lean.load, full.load);
     EXPECT_EQ(lean.rate, full.rate);
     EXPECT_EQ(lean.torque, full.torque);
@@ -236,7 +237,7 @@ TEST(HingeFriction, CoupleWithoutJacobianIsTheFullOnesBitForBitAndLeavesTheJacob
     for (const auto& row : lean.jacobian) {
       for (const double v : row) EXPECT_EQ(v, 12345.0);
     }
-    hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1, lean, true);
+    hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1, lean, true, 0);
     for (int r = 0; r < 6; ++r) {
       for (int c = 0; c < 6; ++c) EXPECT_EQ(lean.jacobian[r][c], full.jacobian[r][c]);
     }
@@ -265,22 +266,25 @@ TEST(HingeFriction, CoupleBlocksAreTheStoredJacobiansNineBlocksInOrderBitForBit)
                  rest[j], kStiffness, theta, link[j]);
     }
     HingeCouple stored;
-    hinge_couple(hinge, link[0], link[1], h, stored, true);
+    hinge_couple(hinge, link[0], link[1], h, stored, true, 0);
     HingeCouple blocks;
     int calls = 0;
-    hinge_couple_blocks(hinge, link[0], link[1], h, blocks, true,
-                        [&](int k, int q, double a, double b, double c, double d) {
-                          EXPECT_EQ(3 * k + q, calls);
-                          ++calls;
-                          EXPECT_EQ(a, stored.jacobian[2 * k][2 * q]);
-                          EXPECT_EQ(b, stored.jacobian[2 * k][2 * q + 1]);
-                          EXPECT_EQ(c, stored.jacobian[2 * k + 1][2 * q]);
-                          EXPECT_EQ(d, stored.jacobian[2 * k + 1][2 * q + 1]);
-                        });
+    hinge_couple_blocks(
+        hinge, link[0], link[1], h, blocks, true,
+        [&](int k, int q, double a, double b, double c, double d) {
+          EXPECT_EQ(3 * k + q, calls);
+          ++calls;
+          EXPECT_EQ(a, stored.jacobian[2 * k][2 * q]);
+          EXPECT_EQ(b, stored.jacobian[2 * k][2 * q + 1]);
+          EXPECT_EQ(c, stored.jacobian[2 * k + 1][2 * q]);
+          EXPECT_EQ(d, stored.jacobian[2 * k + 1][2 * q + 1]);
+        },
+        0);
     EXPECT_EQ(calls, 9);
     HingeCouple lean;
-    hinge_couple_blocks(hinge, link[0], link[1], h, lean, false,
-                        [&](int, int, double, double, double, double) { ++calls; });
+    hinge_couple_blocks(
+        hinge, link[0], link[1], h, lean, false,
+        [&](int, int, double, double, double, double) { ++calls; }, 0);
     EXPECT_EQ(calls, 9);
     for (const HingeCouple* hc : {&blocks, &lean}) {
       EXPECT_EQ(hc->torque, stored.torque);
@@ -304,7 +308,7 @@ TEST(HingeFriction, CoupleHasNoResultantItsMomentIsTheTorqueAndItsWorkIsMTimesTh
     const Pose p = random_pose(rng, kPitch, 5e-5);  // a step: turns of up to 0.3°
     const double theta = trial % 2 ? 0.5 : 0.6, h = 1e-4;
     const HingeCouple hc =
-        hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, theta, h);
+        hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, theta, h, 0);
     const double scale = std::abs(hc.torque) / kPitch + 1e-300;
     EXPECT_NEAR(hc.fx[0] + hc.fx[1] + hc.fx[2], 0.0, 1e-12 * scale);
     EXPECT_NEAR(hc.fy[0] + hc.fy[1] + hc.fy[2], 0.0, 1e-12 * scale);
@@ -353,7 +357,7 @@ TEST(HingeFriction, RateStiffnessIsTheTorquesSlopeInTheRate) {
       p.x1[2] = p.x1[1] + l * std::cos(turn);
       p.y1[2] = l * std::sin(turn);
       p.x0[0] = p.x1[0] = p.x0[1] - l;
-      return hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, 0.5, h);
+      return hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, 0.5, h, 0);
     };
     const double dr = 1e-4;
     const HingeCouple mid = at(rate);

@@ -297,7 +297,8 @@ TEST(DynamicsHinge, ToothTipDriveArticulatesAsTheClosedFormUnderALowerPinLoad) {
 // side, partly unloaded by the flank, F is lower (0.787); the mean gives both classes 0.893. The
 // classes alternate, so in all L is the mean's (0.893), and so are K L B (0.820) and each side's
 // L and total (tight 0.876 / 0.802, slack 0.924 / 0.852, as with the mean to 3 digits): the
-// pin-holding link's tension does not explain the tip's 0.820, it averages to the mean.
+// pin-holding link's tension does not explain the tip's 0.820, it averages to the mean. Checked
+// against the mean's run, not against a number (the mean's K L B is pinned by the test above).
 TEST(DynamicsHinge, PinLinkLoadAlternatesAtTheToothTipAndAveragesToTheMean) {
   constexpr double arm = 0.1 * 0.00572 / 2;
   constexpr double duration = 0.5, step = 1e-4, period = 2 * kPi / (12 * 13.0);
@@ -328,7 +329,6 @@ TEST(DynamicsHinge, PinLinkLoadAlternatesAtTheToothTipAndAveragesToTheMean) {
     EXPECT_NEAR(l.side_load[c], m.side_load[c], 0.01) << c;
     EXPECT_NEAR(l.side_total[c], m.side_total[c], 0.01) << c;
   }
-  EXPECT_NEAR(l.engaging / l.expected, 0.820, 0.03);
 }
 
 // Newton on the exact hinge Jacobian (the block-pentadiagonal solve): with hinge friction a step

@@ -85,10 +85,11 @@ struct HingeCouple {
 /// `rest` holds the two links' rest lengths (they differ on an alternating round-link chain,
 /// Model::alternation); the pin load is the mean of their elastic tensions k (l_θ − rest), or
 /// with PinLoad::kPinLink the pin link's (pin_link_side at `node`, the hinge's node index along
-/// the chain: only its parity counts).
+/// the chain: only its parity counts). `node` has no default on any overload: a default would
+/// take every hinge as node 0 with the pin link's load, wrong at every odd node.
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
-                         const double y1[3], double theta, double step, std::size_t node = 0);
+                         const double y1[3], double theta, double step, std::size_t node);
 /// The same with the two links' chord lengths given: `length0` at the start of the step
 /// (|d₀|), `length1` at the end (|d₁|), as the integrator has them from its links (each link
 /// serves two hinges; the square roots are taken once). They must be the square roots of the
@@ -98,14 +99,14 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
                          const double y1[3], double theta, double step, const double length0[2],
-                         const double length1[2], bool jacobian = true, std::size_t node = 0);
+                         const double length1[2], bool jacobian, std::size_t node);
 /// The same into `out`: every field is written but `jacobian`, which is written only when
 /// `jacobian` is true (else left as it was). For the integrator's hinge loop, which keeps one
 /// HingeCouple for all hinges rather than zeroing a fresh one (its 36-entry Jacobian) per hinge.
 void hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                   const double x0[3], const double y0[3], const double x1[3], const double y1[3],
                   double theta, double step, const double length0[2], const double length1[2],
-                  HingeCouple& out, bool jacobian, std::size_t node = 0);
+                  HingeCouple& out, bool jacobian, std::size_t node);
 /// What one link contributes to the couples of the two hinges at its ends (each link serves two
 /// hinges: the integrator computes these once per link and iteration, then combines them per
 /// hinge with the hinge_couple overload below). From the link's chord at the start of the step
@@ -160,7 +161,7 @@ inline void hinge_link(double d0x, double d0y, double d1x, double d1y, double le
 template <class Block>
 inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
                                 const HingeLink& l1, double step, HingeCouple& hc, bool jacobian,
-                                Block&& block, std::size_t node = 0) {
+                                Block&& block, std::size_t node) {
   // F: ½ (T₀ + T₁) (the mean), or the pin link's T (weights w₀, w₁ of ½ T₀, ½ T₁: 1 and 1, or
   // 2 and 0, or 0 and 2; exact, so the mean's arithmetic is what it was)
   const int side = pin_link_side(hinge, node);
@@ -244,7 +245,7 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
 /// The couple of the hinge between links `l0` (a → b) and `l1` (b → c) from their HingeLink
 /// terms, into `out` as above: bit for bit what the overloads above give.
 inline void hinge_couple(const HingeFriction& hinge, const HingeLink& l0, const HingeLink& l1,
-                         double step, HingeCouple& hc, bool jacobian, std::size_t node = 0) {
+                         double step, HingeCouple& hc, bool jacobian, std::size_t node) {
   hinge_couple_blocks(
       hinge, l0, l1, step, hc, jacobian,
       [&hc](int k, int q, double a, double b, double c, double d) {
@@ -259,8 +260,7 @@ inline void hinge_couple(const HingeFriction& hinge, const HingeLink& l0, const 
 /// Both links of rest length `pitch`.
 inline HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, double pitch,
                                 const double x0[3], const double y0[3], const double x1[3],
-                                const double y1[3], double theta, double step,
-                                std::size_t node = 0) {
+                                const double y1[3], double theta, double step, std::size_t node) {
   const double rest[2] = {pitch, pitch};
   return hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step, node);
 }

@@ -1676,13 +1676,6 @@ Setup parse(const analysis::Inputs& in) {
     if (hinge_known && hinge == "frictionless" && line.count("pin_load") && !pin_load_bad)
       issues.push_back({at("pin_load"), pin_load == PinLoad::kPinLink ? "'pin_link'" : "'mean'",
                         "only with hinge = \"sliding\" or \"rolling\""});
-    // the pin link's load alternates round the loop: an odd count has an offset link (two outer
-    // links meeting), which is not modelled
-    if (hinge != "frictionless" && pin_load == PinLoad::kPinLink && s.links > 0 && s.links % 2 != 0)
-      issues.push_back({at("links"), std::to_string(s.links),
-                        "an even count with pin_load = \"pin_link\" (inner and outer links "
-                        "alternate round the loop; an odd count needs an offset link, not "
-                        "modelled)"});
     s.hinge_law.pin_load = pin_load;
     const double band = optional("hinge_band", 5.0);
     if (!std::isnan(band) && !(band > 0.0 && band <= 100.0))
@@ -1730,6 +1723,18 @@ Setup parse(const analysis::Inputs& in) {
           {at(arm_key), shown(arm),
            "a friction arm (mu r or c_r R*) below p/2 = " + shown(0.5 * s.pitch) + " m"});
     s.hinge_law.arm = arm;
+    // the pin link's load round an odd loop: the model's rule (validate_pin_links, the friction
+    // on), named at the case's links field; a count the layout chose is said to be its choice
+    if (s.links > 0 && std::isfinite(arm)) {
+      for (Issue issue : validate_pin_links(s.hinge_law, static_cast<std::size_t>(s.links), true)) {
+        issue.field = at("links");
+        if (s.links_fitted)
+          issue.expected +=
+              "; here the count is the layout's choice (links omitted): give an "
+              "even links";
+        issues.push_back(issue);
+      }
+    }
   }
   s.positions = positions;
   // the guides: kind and its geometry, all present; then the core's checks (named per field)

@@ -29,8 +29,8 @@ std::vector<Issue> validate_pin_links(const HingeFriction& hinge, std::size_t li
   // links − 1) at node 0, an offset link, which is not modelled
   if (hinge.active() && hinge.pin_load == PinLoad::kPinLink && closed && links % 2 != 0) {
     out.push_back({"links", std::to_string(links),
-                   "an even count with the pin link's load (inner and outer links alternate "
-                   "round the loop; an odd count needs an offset link, not modelled)"});
+                   "an even count with pin_load = \"pin_link\" (inner and outer links "
+                   "alternate round the loop; an odd count needs an offset link, not modelled)"});
   }
   return out;
 }
