@@ -118,7 +118,7 @@ TEST(RailLoad, NewtonBlockIsTheForcesDerivative) {
 // The step's Newton matrix with a loaded rail (−hθ ∂F/∂q on a node's diagonal block, the ramp's
 // at the rail's ends): every column against central differences of the step's residual, for a
 // two-node chain a half pitch above the rail (no contact) with a node on either end's ramp. The
-// load's block is a fifth of the matrix's scale there: a wrong sign or a missing term shows.
+// load's block is about a tenth of the matrix's scale there: a wrong sign or a missing term shows.
 TEST(RailLoad, IntegratorNewtonMatrixHasTheRampsBlock) {
   const Guide g = loaded_rail(1e3);
   const GuideFrame f = guide_frame(g);
