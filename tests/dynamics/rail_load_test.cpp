@@ -15,6 +15,7 @@
 
 #include "catena/dynamics/integrator.hpp"
 #include "random_guides.hpp"
+#include "residual_difference.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -59,16 +60,21 @@ TEST(RailLoad, NodesAPitchApartCarryTheWholeLoadWhereverTheySit) {
   EXPECT_TRUE(mid.active);
   EXPECT_DOUBLE_EQ(mid.share, 1.0);
   EXPECT_DOUBLE_EQ(mid.fy, q * kPitch * kGy);
-  for (const double d : {0.9, -0.9}) {  // a roller lifted off, or pressed in: still carrying
-    at(g, 0.5 * f.length, d * kPitch, x, y);
+  const double r = g.roller_radius;
+  // a roller lifted off by up to a pitch, or pressed in by up to its radius: still carrying
+  for (const double d : {0.9 * kPitch, 0.999 * kPitch, -0.9 * r, -0.999 * r}) {
+    at(g, 0.5 * f.length, d, x, y);
     EXPECT_TRUE(rail_load(g, f, kPitch, kGx, kGy, x, y).active) << d;
   }
-  // beyond the ramp (half a pitch past either end), more than a pitch across (the chain's other
-  // run beneath), or no load: nothing
+  // beyond the ramp (half a pitch past either end), more than a pitch off the rail, behind it
+  // (the centre past the surface: a strand under the rail, up to a pitch or the chain's other
+  // run farther down), or no load: nothing
   for (const auto& [s, d] :
        std::vector<std::pair<double, double>>{{-0.5001 * kPitch, 0.0},
                                               {f.length + 0.5001 * kPitch, 0.0},
                                               {0.5 * f.length, 1.001 * kPitch},
+                                              {0.5 * f.length, -1.01 * r},
+                                              {0.5 * f.length, -0.9 * kPitch},
                                               {0.5 * f.length, -5 * kPitch}}) {
     at(g, s, d, x, y);
     const RailLoad l = rail_load(g, f, kPitch, kGx, kGy, x, y);
@@ -109,29 +115,92 @@ TEST(RailLoad, NewtonBlockIsTheForcesDerivative) {
   EXPECT_GT(std::abs(rail_load(g, f, kPitch, kGx, kGy, x, y).dq[3]), 1.0);  // the ramp's slope
 }
 
+// The step's Newton matrix with a loaded rail (−hθ ∂F/∂q on a node's diagonal block, the ramp's
+// at the rail's ends): every column against central differences of the step's residual, for a
+// two-node chain a half pitch above the rail (no contact) with a node on either end's ramp. The
+// load's block is about a tenth of the matrix's scale there: a wrong sign or a missing term shows.
+TEST(RailLoad, IntegratorNewtonMatrixHasTheRampsBlock) {
+  const Guide g = loaded_rail(1e3);
+  const GuideFrame f = guide_frame(g);
+  for (const double s0 : {0.2 * kPitch, f.length - 1.1 * kPitch}) {
+    Model m = uniform_chain(2, false, kPitch, 0.024, 1e4, 0.0, false);
+    m.gravity_x = kGx;
+    m.gravity_y = kGy;
+    State st(2, 0);
+    for (std::size_t i = 0; i < 2; ++i)
+      at(g, s0 + kPitch * static_cast<double>(i), 0.5 * kPitch, st.x[i], st.y[i]);
+    std::vector<double> u{st.x[0], st.y[0], st.x[1], st.y[1]};
+    const double h = 1e-3;
+    std::vector<double> r0, jac, bare;
+    m.guides = {loaded_rail(0.0)};
+    Integrator plain(m, {.step = h, .theta = 0.6});
+    plain.newton_system(m, st, u, r0, &bare);
+    m.guides = {g};
+    Integrator integ(m, {.step = h, .theta = 0.6});
+    ASSERT_EQ(integ.unknowns(), 4u);
+    integ.newton_system(m, st, u, r0, &jac);
+    double scale = 0.0, load = 0.0;
+    for (std::size_t k = 0; k < 16; ++k) {
+      scale = std::max(scale, std::abs(jac[k]));
+      load = std::max(load, std::abs(jac[k] - bare[k]));
+    }
+    EXPECT_GT(load, 0.05 * scale) << s0 << ": the load's block is not negligible";
+    for (std::size_t c = 0; c < 4; ++c) {
+      const std::vector<double> fd = testing::residual_difference(integ, m, st, u, c, 1e-8);
+      for (std::size_t r = 0; r < 4; ++r)
+        EXPECT_NEAR(jac[r * 4 + c], fd[r], 1e-6 * scale) << s0 << " row " << r << " column " << c;
+    }
+  }
+}
+
 TEST(RailLoad, BadLoadsNamedAndAnArcRefused) {
   Model m = uniform_chain(4, false, kPitch, 0.024, 1e7, 0.0, false);
+  m.gravity_x = kGx;
+  m.gravity_y = kGy;
   Guide arc = loaded_rail(0.0);
   arc.kind = Guide::Kind::kArc;
   arc.radius = 0.2;
   arc.start_angle = 0.0;
   arc.end_angle = 1.0;
   arc.load_per_metre = 5.0;
-  m.guides = {loaded_rail(-1.0), loaded_rail(NAN), loaded_rail(2e4), arc,
-              loaded_rail(1e4),  loaded_rail(0.0)};
+  // the same rail from its second end to its first: its carrying side faces down, the load
+  // would pull the chain off it
+  Guide under = loaded_rail(5.0);
+  std::swap(under.x0, under.x1);
+  std::swap(under.y0, under.y1);
+  m.guides = {loaded_rail(-1.0),
+              loaded_rail(NAN),
+              loaded_rail(2e4),
+              arc,
+              loaded_rail(1e4),
+              loaded_rail(0.0),
+              under};
   const std::vector<Issue> issues = validate(m);
   std::vector<std::string> fields;
   for (const Issue& i : issues) fields.push_back(i.field);
-  for (const char* f : {"guide[0].load_per_metre", "guide[1].load_per_metre",
-                        "guide[2].load_per_metre", "guide[3].load_per_metre"})
+  for (const char* f :
+       {"guide[0].load_per_metre", "guide[1].load_per_metre", "guide[2].load_per_metre",
+        "guide[3].load_per_metre", "guide[6].load_per_metre"})
     EXPECT_EQ(std::count(fields.begin(), fields.end(), f), 1) << f;
-  EXPECT_EQ(issues.size(), 4u);  // the cap itself and 0 are accepted
+  EXPECT_EQ(issues.size(), 5u);  // the cap itself and 0 are accepted
   for (const Issue& i : issues) {
     if (i.field == "guide[3].load_per_metre")
       EXPECT_NE(i.expected.find("a straight guide"), std::string::npos) << i.expected;
+    else if (i.field == "guide[6].load_per_metre")
+      EXPECT_NE(i.expected.find("press the chain onto the rail, and this rail's carrying side "
+                                "(left going from its first end to its second) faces down"),
+                std::string::npos)
+          << i.expected;
     else
       EXPECT_NE(i.expected.find("[0, 10000] kg/m"), std::string::npos) << i.expected;
   }
+  // without gravity (or with it along the rail) the load presses nothing: refused too
+  m.gravity_x = m.gravity_y = 0.0;
+  m.guides = {loaded_rail(5.0)};
+  const std::vector<Issue> weightless = validate(m);
+  ASSERT_EQ(weightless.size(), 1u);
+  EXPECT_EQ(weightless[0].field, "guide[0].load_per_metre");
+  EXPECT_NE(weightless[0].expected.find("no gravity"), std::string::npos);
   // a loaded rail's lead-ins are arcs: they carry none of its load
   for (const Guide& a : lead_in_arcs(loaded_rail(5.0), LeadIn{.radius = 0.05, .angle = 0.5}))
     EXPECT_EQ(a.load_per_metre, 0.0);

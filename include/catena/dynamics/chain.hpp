@@ -224,9 +224,9 @@ GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, do
 /// "A conveyed load"): its weight share F = q_L p g w(s), g the gravity vector, p the pitch (the
 /// links' rest length), s = (q − P₀)·u the node's projection along the rail from its first end,
 /// w(s) = |[s − p/2, s + p/2] ∩ [0, L]|/p — 1 along the rail, ramped linearly to 0 over the pitch
-/// centred on each end, so that nodes a pitch apart carry q_L L g in all. Only a node within one
-/// pitch across of the line the roller centres ride on (either side: the run on the rail, not a
-/// return run beneath it) carries it. ∂F/∂q = q_L p g (dw/ds) uᵀ, the ramp's (row-major).
+/// centred on each end, so that nodes a pitch apart carry q_L L g in all. Only a node from a roller
+/// radius behind the roller centres' line (the surface) to a pitch off it carries it (not a strand
+/// behind the rail); validate wants n·g < 0 (n the free side's normal). ∂F/∂q = q_L p g w' uᵀ.
 struct RailLoad {
   bool active = false;
   double share = 0.0;           ///< [-] w(s)

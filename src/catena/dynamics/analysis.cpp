@@ -152,8 +152,10 @@ std::vector<Parameter> guide_fields() {
       quantity("friction_band", K::kSpeed,
                "speed band of the regularised friction, in (0, 1] m/s (default 1 mm/s)"),
       quantity("load_per_metre", K::kMassPerLength,
-               "straight: conveyed material riding on the chain along the rail, kg/m in [0, "
-               "10000] (default 0; its weight needs gravity)"),
+               "straight: conveyed material riding on the chain along the rail, kg/m in [0, " +
+                   check::format_si(kMaxRailLoad, "") +
+                   "] (default 0; its weight needs gravity and must press the chain onto the "
+                   "rail: x1 > x0)"),
       quantity("contact_stiffness", K::kForcePerLength,
                "roller-rail penalty [N/m] (default: dynamics.contact_stiffness)"),
       number("contact_damping",
@@ -1876,9 +1878,14 @@ Setup parse(const analysis::Inputs& in) {
     // the core's checks of the values given (a missing one is reported above)
     Model probe;
     probe.guides = {guide};
+    probe.gravity_y = -s.gravity;  // a load must press the chain onto its rail: n·g < 0
+    const bool weightless = guide.load_per_metre > 0.0 && !(s.gravity > 0.0);
     for (const Issue& issue : validate(probe)) {
       if (issue.field.rfind("guide[0].", 0) != 0) continue;
       const std::string key = issue.field.substr(9);
+      // a valid load without gravity is reported above: the core's n·g < 0 is that one again
+      if (key == "load_per_metre" && weightless && straight && guide.load_per_metre <= kMaxRailLoad)
+        continue;
       const bool given = key == "end" ? complete : g.seen.count(key) > 0;
       const bool derived = key == "roller_radius" || key == "contact_smoothing";
       if (!given && !derived) continue;
@@ -2129,13 +2136,13 @@ bool per_wheel_friction(const Setup& d) {
     if (!std::isnan(mu)) return true;
   return false;
 }
-// Some wheel with seat friction: the outputs then carry its work.
 // Some guide carrying a load (load_per_metre > 0).
 bool any_rail_load(const Setup& d) {
   return std::any_of(d.guides.begin(), d.guides.end(),
                      [](const Guide& g) { return g.load_per_metre > 0.0; });
 }
 
+// Some wheel with seat friction: the outputs then carry its work.
 bool any_seat_friction(const Setup& d) {
   for (std::size_t w = 0; w < d.wheel_friction.size(); ++w)
     if (wheel_mu(d, w) > 0.0) return true;

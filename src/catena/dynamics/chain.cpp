@@ -225,10 +225,22 @@ std::vector<Issue> validate(const Model& model) {
     if (!std::isfinite(g.load_per_metre) || !(g.load_per_metre >= 0.0) ||
         !(g.load_per_metre <= kMaxRailLoad)) {
       out.push_back({f + "load_per_metre", check::format_si(g.load_per_metre, "kg/m"),
-                     "a load per metre in [0, 10000] kg/m"});
+                     "a load per metre in [0, " + check::format_si(kMaxRailLoad, "") + "] kg/m"});
     } else if (g.load_per_metre > 0.0 && g.kind != Guide::Kind::kStraight) {
       out.push_back({f + "load_per_metre", check::format_si(g.load_per_metre, "kg/m"),
                      "0 on an arc guide: a load rides on a straight guide only"});
+    } else if (g.load_per_metre > 0.0 && std::isfinite(g.x0 + g.y0 + g.x1 + g.y1) &&
+               std::hypot(g.x1 - g.x0, g.y1 - g.y0) > 0.0) {
+      // the load's weight must press the chain onto the rail: n·g < 0, n = (−u_y, u_x) the free
+      // (carrying) side's normal; else it pulls the chain off and is dropped a pitch away
+      const GuideFrame fr = guide_frame(g);
+      const double press = -fr.uy * model.gravity_x + fr.ux * model.gravity_y;
+      if (!(press < 0.0))
+        out.push_back({f + "load_per_metre", check::format_si(g.load_per_metre, "kg/m"),
+                       "0 on this guide: the load must press the chain onto the rail, and this "
+                       "rail's carrying side (left going from its first end to its second) faces " +
+                           std::string(press > 0.0 ? "down" : "sideways or there is no gravity") +
+                           " (n.g = " + check::format_si(press + 0.0, "m/s^2") + ", must be < 0)"});
     }
   }
   std::vector<Issue> hinge = validate(model.hinge, model.pitch);
@@ -326,7 +338,10 @@ RailLoad rail_load(const Guide& g, const GuideFrame& frame, double pitch, double
   const double s = rx * ux + ry * uy;
   // across the rail from the roller centres' line (the free side's normal n = (−u_y, u_x))
   const double across = -rx * uy + ry * ux - g.roller_radius;
-  if (!(std::abs(across) <= pitch)) return out;
+  // the carried side only: up to a pitch off the rail (a roller lifted by the chain's motion),
+  // at most a roller radius into it (a carried roller's centre is never behind the surface); a
+  // strand behind the rail — the chain's other run, another guided strand — carries none
+  if (!(across >= -g.roller_radius && across <= pitch)) return out;
   const double half = 0.5 * pitch, len = frame.length;
   const double hi = std::min(s + half, len), lo = std::max(s - half, 0.0);
   if (!(hi > lo)) return out;  // beyond the ramp at either end
