@@ -40,6 +40,20 @@ struct Pose {
 };
 
 // Three nodes about a pitch apart at random angles, and a small random step.
+// Links of 82 and 46 mm (directions 0.3 and 0.9 rad) from the origin, the hinge turning a little
+// over the step (the last node moves by 1 µm).
+Pose round_link_pose() {
+  const double a = 0.3, b = 0.9;  // the links' directions
+  Pose p{};
+  p.x0[1] = 0.082 * std::cos(a);
+  p.y0[1] = 0.082 * std::sin(a);
+  p.x0[2] = p.x0[1] + 0.046 * std::cos(b);
+  p.y0[2] = p.y0[1] + 0.046 * std::sin(b);
+  for (int k = 0; k < 3; ++k) p.x1[k] = p.x0[k], p.y1[k] = p.y0[k];
+  p.x1[2] += 1e-6;
+  return p;
+}
+
 Pose random_pose(std::mt19937& rng, double pitch, double move) {
   std::uniform_real_distribution<double> angle(-3.0, 3.0), turn(-0.6, 0.6), stretch(0.995, 1.005),
       d(-move, move);
@@ -72,14 +86,7 @@ double link_length(const double x[3], const double y[3], int j) {
 // of 64 mm for both, the stretch of one and the shortening of the other cancel.
 TEST(HingeFriction, PinLoadTakesEachLinksOwnRestLength) {
   const HingeFriction hinge{.arm = 2.86e-4, .rate_band = 5.0};
-  const double a = 0.3, b = 0.9;  // the links' directions
-  Pose p{};
-  p.x0[1] = 0.082 * std::cos(a);
-  p.y0[1] = 0.082 * std::sin(a);
-  p.x0[2] = p.x0[1] + 0.046 * std::cos(b);
-  p.y0[2] = p.y0[1] + 0.046 * std::sin(b);
-  for (int k = 0; k < 3; ++k) p.x1[k] = p.x0[k], p.y1[k] = p.y0[k];
-  p.x1[2] += 1e-6;  // the hinge turns a little over the step
+  const Pose p = round_link_pose();
   const double own[2] = {0.082, 0.046}, shorter[2] = {0.080, 0.045};
   auto load = [&](const double rest[2]) {
     return hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, 0).load;
@@ -98,14 +105,7 @@ TEST(HingeFriction, PinLoadTakesEachLinksOwnRestLength) {
 // even node, k 2 mm at an odd one, where the mean takes k 1.5 mm at both.
 TEST(HingeFriction, PinLinkLoadIsTheOuterLinksTension) {
   HingeFriction hinge{.arm = 2.86e-4, .rate_band = 5.0, .pin_load = PinLoad::kPinLink};
-  const double a = 0.3, b = 0.9;
-  Pose p{};
-  p.x0[1] = 0.082 * std::cos(a);
-  p.y0[1] = 0.082 * std::sin(a);
-  p.x0[2] = p.x0[1] + 0.046 * std::cos(b);
-  p.y0[2] = p.y0[1] + 0.046 * std::sin(b);
-  for (int k = 0; k < 3; ++k) p.x1[k] = p.x0[k], p.y1[k] = p.y0[k];
-  p.x1[2] += 1e-6;
+  const Pose p = round_link_pose();
   const double rest[2] = {0.080, 0.045};
   auto couple = [&](std::size_t node) {
     return hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, node);

@@ -149,6 +149,34 @@ TEST(DynamicsWorkBalance, ClosesWithARailsLoad) {
   EXPECT_LT(std::abs(b.numerical()), kClosureTol * std::abs(b.dissipated()));
 }
 
+// The two friction throws' run and balance (seat and pocket friction): 3000 steps of 0.1 ms at
+// θ = ½ from the thrown state; the balance closes only with the friction's work, which took most
+// of the energy lost, and the wheel, taking the friction's reaction, turned from `angle0`.
+void throw_and_balance(const char* what, const Model& model, State& s, double angle0) {
+  const double e0 = energy(model, s).total();
+  Integrator integ(model, {.step = 1e-4, .theta = 0.5});
+  double kinetic_max = 0.0;
+  for (int k = 0; k < 3000; ++k) {
+    ASSERT_TRUE(integ.step(model, s).converged) << what << ", step " << k;
+    kinetic_max = std::max(kinetic_max, energy(model, s).kinetic);
+  }
+  const double de = energy(model, s).total() - e0;
+  const double dissipated =
+      s.seat_friction_work + s.damper_work + s.contact_damping_work + s.drag_work;
+  const double numerical = de - dissipated;
+  std::printf(
+      "%s: dE %.6g J, friction %.6g, link dampers %.6g, contact dampers %.6g, numerical %.3g "
+      "(%.3g of the dissipated work); wheel turned %.3g rad\n",
+      what, de, s.seat_friction_work, s.damper_work, s.contact_damping_work, numerical,
+      numerical / std::abs(dissipated), s.angle[0] - angle0);
+  EXPECT_EQ(s.friction_work, 0.0);  // no guides: the guides' friction work stays 0
+  EXPECT_LT(s.seat_friction_work, 0.0);
+  EXPECT_LT(de, -0.5 * kinetic_max);
+  EXPECT_GT(std::abs(s.seat_friction_work), 0.5 * std::abs(dissipated));
+  EXPECT_LT(std::abs(numerical), kClosureTol * std::abs(dissipated));
+  EXPECT_GT(std::abs(s.angle[0] - angle0), 1e-5);
+}
+
 // Seat friction in the balance: two linked rollers thrown sideways at 0.15 m/s in two top seats
 // of a free (driven, unloaded) z = 17 wheel, the seats widened into 3 mm bowls, under gravity;
 // θ = ½ with the contact resolved (ω_c h = 0.65). They slide in their bowls until the seats'
@@ -173,30 +201,7 @@ TEST(DynamicsWorkBalance, ClosesWithSeatFriction) {
     s.y[i] = w.pitch_radius * std::sin(sigma) - (w.seat_radius - kRoller + sink);
     s.vx[i] = 0.15;
   }
-  const double e0 = energy(model, s).total();
-  Integrator integ(model, {.step = 1e-4, .theta = 0.5});
-  double kinetic_max = 0.0;
-  for (int k = 0; k < 3000; ++k) {
-    ASSERT_TRUE(integ.step(model, s).converged) << "step " << k;
-    kinetic_max = std::max(kinetic_max, energy(model, s).kinetic);
-  }
-  const double de = energy(model, s).total() - e0;
-  const double dissipated =
-      s.seat_friction_work + s.damper_work + s.contact_damping_work + s.drag_work;
-  const double numerical = de - dissipated;
-  std::printf(
-      "seat friction: dE %.6g J, seat friction %.6g, link dampers %.6g, contact dampers "
-      "%.6g, numerical %.3g (%.3g of the dissipated work); wheel turned %.3g rad\n",
-      de, s.seat_friction_work, s.damper_work, s.contact_damping_work, numerical,
-      numerical / std::abs(dissipated), s.angle[0] - (kPi / 2 - tau / 2));
-  EXPECT_EQ(s.friction_work, 0.0);  // no guides: the guides' friction work stays 0
-  EXPECT_LT(s.seat_friction_work, 0.0);
-  // the rollers lost most of their energy: the friction did most of that
-  EXPECT_LT(de, -0.5 * kinetic_max);
-  EXPECT_GT(std::abs(s.seat_friction_work), 0.5 * std::abs(dissipated));
-  EXPECT_LT(std::abs(numerical), kClosureTol * std::abs(dissipated));
-  // the wheel took the friction's reaction: it turned (its share is in the balance)
-  EXPECT_GT(std::abs(s.angle[0] - (kPi / 2 - tau / 2)), 1e-5);
+  throw_and_balance("seat friction", model, s, s.angle[0]);
 }
 
 // Friction in the pockets in the balance (docs/models/dynamics.md, "Pocket wheel: friction"): a
@@ -225,27 +230,7 @@ TEST(DynamicsWorkBalance, ClosesWithFrictionInThePockets) {
     s.y[i] = w.pitch_radius * std::sin(a) - (w.pocket_clearance + sink);
     s.vx[i] = 0.15;
   }
-  const double e0 = energy(model, s).total();
-  Integrator integ(model, {.step = 1e-4, .theta = 0.5});
-  double kinetic_max = 0.0;
-  for (int k = 0; k < 3000; ++k) {
-    ASSERT_TRUE(integ.step(model, s).converged) << "step " << k;
-    kinetic_max = std::max(kinetic_max, energy(model, s).kinetic);
-  }
-  const double de = energy(model, s).total() - e0;
-  const double dissipated =
-      s.seat_friction_work + s.damper_work + s.contact_damping_work + s.drag_work;
-  const double numerical = de - dissipated;
-  std::printf(
-      "pockets' friction: dE %.6g J, friction %.6g, link dampers %.6g, contact dampers %.6g, "
-      "numerical %.3g (%.3g of the dissipated work); wheel turned %.3g rad\n",
-      de, s.seat_friction_work, s.damper_work, s.contact_damping_work, numerical,
-      numerical / std::abs(dissipated), s.angle[0] - (0.5 * kPi - 0.5 * w.pocket_angle));
-  EXPECT_LT(s.seat_friction_work, 0.0);
-  EXPECT_LT(de, -0.5 * kinetic_max);
-  EXPECT_GT(std::abs(s.seat_friction_work), 0.5 * std::abs(dissipated));
-  EXPECT_LT(std::abs(numerical), kClosureTol * std::abs(dissipated));
-  EXPECT_GT(std::abs(s.angle[0] - (0.5 * kPi - 0.5 * w.pocket_angle)), 1e-5);
+  throw_and_balance("pockets' friction", model, s, s.angle[0]);
 }
 
 }  // namespace
