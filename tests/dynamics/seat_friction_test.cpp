@@ -83,34 +83,32 @@ void expect_derivatives(const Sprocket& w, const ContactAt& contact, const Point
   const double sv =
       std::max({std::abs(f.dv[0]), std::abs(f.dv[1]), std::abs(f.dv[2]), std::abs(f.dv[3]), 1e-3});
   const double tol = 2e-4, arm = w.pitch_radius * 2;
+  // the differences fd of (Fx, Fy, τ) against one argument `of` and its analytic derivatives,
+  // within tol of `scale` (the torque's times the arm)
+  auto expect = [&](const double fd[3], double fx, double fy, double tau, double scale,
+                    const std::string& of) {
+    EXPECT_NEAR(fd[0], fx, tol * scale) << "dFx/" << of << " " << where;
+    EXPECT_NEAR(fd[1], fy, tol * scale) << "dFy/" << of << " " << where;
+    EXPECT_NEAR(fd[2], tau, tol * scale * arm) << "dtau/" << of << " " << where;
+  };
   double fd[3];
   for (int j = 0; j < 2; ++j) {
     Point a = p, b = p;
     (j == 0 ? a.x : a.y) -= hq;
     (j == 0 ? b.x : b.y) += hq;
     diff(a, b, psi, psi, omega, omega, hq, fd);
-    EXPECT_NEAR(fd[0], f.dq[j], tol * sq) << "dFx/dq" << j << " " << where;
-    EXPECT_NEAR(fd[1], f.dq[2 + j], tol * sq) << "dFy/dq" << j << " " << where;
-    EXPECT_NEAR(fd[2], f.torque_dq[j], tol * sq * arm) << "dtau/dq" << j << " " << where;
+    expect(fd, f.dq[j], f.dq[2 + j], f.torque_dq[j], sq, "dq" + std::to_string(j));
     a = p;
     b = p;
     (j == 0 ? a.vx : a.vy) -= hv;
     (j == 0 ? b.vx : b.vy) += hv;
     diff(a, b, psi, psi, omega, omega, hv, fd);
-    EXPECT_NEAR(fd[0], f.dv[j], tol * sv) << "dFx/dv" << j << " " << where;
-    EXPECT_NEAR(fd[1], f.dv[2 + j], tol * sv) << "dFy/dv" << j << " " << where;
-    EXPECT_NEAR(fd[2], f.torque_dv[j], tol * sv * arm) << "dtau/dv" << j << " " << where;
+    expect(fd, f.dv[j], f.dv[2 + j], f.torque_dv[j], sv, "dv" + std::to_string(j));
   }
   diff(p, p, psi - hpsi, psi + hpsi, omega, omega, hpsi, fd);
-  const double spsi = sq * arm;
-  EXPECT_NEAR(fd[0], f.dpsi[0], tol * spsi) << "dFx/dpsi " << where;
-  EXPECT_NEAR(fd[1], f.dpsi[1], tol * spsi) << "dFy/dpsi " << where;
-  EXPECT_NEAR(fd[2], f.torque_dpsi, tol * spsi * arm) << "dtau/dpsi " << where;
+  expect(fd, f.dpsi[0], f.dpsi[1], f.torque_dpsi, sq * arm, "dpsi");
   diff(p, p, psi, psi, omega - hw, omega + hw, hw, fd);
-  const double sw = sv * arm;
-  EXPECT_NEAR(fd[0], f.domega[0], tol * sw) << "dFx/domega " << where;
-  EXPECT_NEAR(fd[1], f.domega[1], tol * sw) << "dFy/domega " << where;
-  EXPECT_NEAR(fd[2], f.torque_domega, tol * sw * arm) << "dtau/domega " << where;
+  expect(fd, f.domega[0], f.domega[1], f.torque_domega, sv * arm, "domega");
 }
 
 SeatContact iso_contact(const Sprocket& w, const Point& p, double psi, double omega) {

@@ -4,11 +4,15 @@
 // take-up at the drive's slack side, the tail idler and the drive.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cmath>
+#include <cstddef>
 #include <numbers>
 
 #include "../dynamics/two_wheel_loops.hpp"
 #include "catena/strength/loop.hpp"
+#include "conveyor_run.hpp"
 
 namespace catena::dynamics::testing {
 
@@ -112,6 +116,22 @@ inline ConveyorLoopModel conveyor_loop_model(const Conveyor& d, double slack) {
   out.guide_in = out.result.segments[7].tension_in;
   out.guide_gradient = (out.result.segments[8].tension_in - out.guide_in) / guide;
   return out;
+}
+
+// The simulation's window means `m` against the loop model `lm`, each within `tol` of it: the
+// tight side, the three points along the upper guide and the guide's entry (validation 6b's
+// tensions, level, inclined and loaded).
+inline void expect_tensions_match(const ConveyorMeans& m, const ConveyorLoopModel& lm, double tol) {
+  const strength::LoopResult& lr = lm.result;
+  EXPECT_NEAR(m.tight / lr.tight_tension, 1.0, tol)
+      << "tight " << m.tight << " loop " << lr.tight_tension << " slack " << m.slack;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double loop_t = lm.upper_at(m.along_x[k]);
+    EXPECT_NEAR(m.along[k] / loop_t, 1.0, tol)
+        << "x " << m.along_x[k] << ": " << m.along[k] << " loop " << loop_t;
+  }
+  EXPECT_NEAR(m.upper_entry / lm.upper_entry, 1.0, tol)
+      << m.upper_entry << " loop " << lm.upper_entry;
 }
 
 }  // namespace catena::dynamics::testing

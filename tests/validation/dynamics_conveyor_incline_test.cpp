@@ -67,15 +67,7 @@ void compare(const Conveyor& d) {
   EXPECT_NEAR(lm.guide_gradient, q0 * (d.friction * std::cos(d.incline) + std::sin(d.incline)),
               1e-9);
 
-  EXPECT_NEAR(m.tight / lr.tight_tension, 1.0, kTensionTol)
-      << "tight " << m.tight << " loop " << lr.tight_tension << " slack " << m.slack;
-  for (std::size_t k = 0; k < 3; ++k) {
-    const double loop_t = lm.upper_at(m.along_x[k]);
-    EXPECT_NEAR(m.along[k] / loop_t, 1.0, kTensionTol)
-        << "x " << m.along_x[k] << ": " << m.along[k] << " loop " << loop_t;
-  }
-  EXPECT_NEAR(m.upper_entry / lm.upper_entry, 1.0, kTensionTol)
-      << m.upper_entry << " loop " << lm.upper_entry;
+  testing::expect_tensions_match(m, lm, kTensionTol);
   // the rise tight − slack (2 μ q0 cos β L + q0 2 h cos β: the runs' lifts cancel), within 2 %
   // as level: it also carries the wheels' polygon losses
   EXPECT_NEAR((m.tight - m.slack) / (lr.tight_tension - lr.slack_tension), 1.0, kCarriedTol)

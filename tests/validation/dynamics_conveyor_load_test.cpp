@@ -43,14 +43,7 @@ void compare(const Conveyor& d) {
   EXPECT_NEAR(lm.guide_gradient, (q0 + load) * (d.friction * std::cos(beta) + std::sin(beta)),
               1e-9);
 
-  EXPECT_NEAR(m.tight / lr.tight_tension, 1.0, kTensionTol)
-      << "tight " << m.tight << " loop " << lr.tight_tension << " slack " << m.slack;
-  for (std::size_t k = 0; k < 3; ++k) {
-    EXPECT_NEAR(m.along[k] / lm.upper_at(m.along_x[k]), 1.0, kTensionTol)
-        << "x " << m.along_x[k] << ": " << m.along[k] << " loop " << lm.upper_at(m.along_x[k]);
-  }
-  EXPECT_NEAR(m.upper_entry / lm.upper_entry, 1.0, kTensionTol)
-      << m.upper_entry << " loop " << lm.upper_entry;
+  testing::expect_tensions_match(m, lm, kTensionTol);
   const double rise = lr.tight_tension - lr.slack_tension;
   EXPECT_NEAR((m.tight - m.slack) / rise, 1.0, kCarriedTol)
       << "rise " << m.tight - m.slack << " loop " << rise;
