@@ -107,6 +107,29 @@ double mean_over(const std::vector<double>& time, const std::vector<double>& x, 
   return sum / count;
 }
 
+// The lost-chain case (below): the example with a soft chain (1e4 N/m a link), gravity, no load
+// and a 100 N take-up, 0.5 s; its slide free (add takeup_travel_max = 0 to hold it).
+std::string slack_loop() {
+  std::string text = replaced(example_text(), "duration", "duration = \"0.5 s\"");
+  text = replaced(text, "axial_stiffness", "axial_stiffness = \"1e4 N/m\"");
+  text = replaced(text, "load_torque", "load_torque = 0");
+  text = replaced(text, "takeup_force", "takeup_force = \"100 N\"");
+  return in_dynamics(text, "gravity = true\n");
+}
+
+// The dynamics.takeup_lost_chain warning of `j` (null without one).
+nlohmann::json lost_chain(const nlohmann::json& j) {
+  for (const auto& d : j["diagnostics"])
+    if (d["code"] == "dynamics.takeup_lost_chain") return d;
+  return nullptr;
+}
+
+// The number after `label` in `message` (NAN without it).
+double number_after(const std::string& message, const std::string& label) {
+  const std::size_t at = message.find(label);
+  return at == std::string::npos ? NAN : std::stod(message.substr(at + label.size()));
+}
+
 }  // namespace
 
 // takeup_travel_max = 0.4 mm on the example (whose slide settles at about 0.54 mm and overshoots
@@ -169,11 +192,7 @@ TEST(DynamicsTakeupCli, EndStopHoldsTheSlideAtItsBound) {
 // the slide free (the 100 N reaching the chain) keeps the chain on the wheel, and so does the
 // example: no such warning.
 TEST(DynamicsTakeupCli, LosingTheChainIsDiagnosed) {
-  std::string text = replaced(example_text(), "duration", "duration = \"0.5 s\"");
-  text = replaced(text, "axial_stiffness", "axial_stiffness = \"1e4 N/m\"");
-  text = replaced(text, "load_torque", "load_torque = 0");
-  text = replaced(text, "takeup_force", "takeup_force = \"100 N\"");
-  text = in_dynamics(text, "gravity = true\n");
+  const std::string text = slack_loop();
   const nlohmann::json sagging =
       dynamics_json(write("sag.toml", in_idler(text, "takeup_travel_max = \"0 mm\"\n")));
   bool found = false;
@@ -196,6 +215,68 @@ TEST(DynamicsTakeupCli, LosingTheChainIsDiagnosed) {
   const nlohmann::json plain = dynamics_json(kExample, " --duration 0.3s");
   EXPECT_FALSE(has_code(plain, "dynamics.takeup_lost_chain")) << plain["diagnostics"].dump();
   EXPECT_FALSE(has_code(plain, "dynamics.takeup_at_travel_end"));
+}
+
+// The lost-chain warning's thresholds are case keys on the take-up's wheel. The held case above
+// reports its longest stretch L at zero force: with takeup_lost_time a little above L it no
+// longer fires, a little below L it does, with that time as its limit and no more stretches than
+// at 10 ms. takeup_lost_force moves the zero: the free-slide case, where the chain presses the
+// wheel with about the take-up's 100 N and the default 1 N never fires, fires with a 1 kN zero
+// (the whole run is one stretch from the start).
+TEST(DynamicsTakeupCli, LostChainThresholdsAreCaseKeys) {
+  const std::string held = in_idler(slack_loop(), "takeup_travel_max = \"0 mm\"\n");
+  const nlohmann::json base = lost_chain(dynamics_json(write("held.toml", held)));
+  ASSERT_FALSE(base.is_null());
+  const std::string message = base["message"];
+  const double longest = number_after(message, "the longest ");
+  const double count = number_after(message, " ms ");
+  ASSERT_GT(longest, 0.010) << message;
+  ASSERT_GE(count, 1.0) << message;
+
+  auto lost_time = [&](double factor) {  // the key at factor × L, in ms
+    return "takeup_lost_time = \"" + std::to_string(factor * longest * 1e3) + " ms\"\n";
+  };
+  const nlohmann::json above = dynamics_json(write("above.toml", in_idler(held, lost_time(1.02))));
+  EXPECT_TRUE(lost_chain(above).is_null()) << above["diagnostics"].dump();
+  const nlohmann::json below =
+      lost_chain(dynamics_json(write("below.toml", in_idler(held, lost_time(0.98)))));
+  ASSERT_FALSE(below.is_null());
+  EXPECT_NEAR(below["limit"].get<double>(), 0.98 * longest, 1e-9);
+  const std::string fewer = below["message"];
+  EXPECT_GE(number_after(fewer, " ms "), 1.0) << fewer;
+  EXPECT_LE(number_after(fewer, " ms "), count) << fewer;
+
+  const nlohmann::json taut = dynamics_json(write("taut.toml", slack_loop()));
+  EXPECT_TRUE(lost_chain(taut).is_null()) << taut["diagnostics"].dump();
+  const nlohmann::json high = lost_chain(
+      dynamics_json(write("high.toml", in_idler(slack_loop(), "takeup_lost_force = \"1 kN\"\n"))));
+  ASSERT_FALSE(high.is_null());
+  const std::string loud = high["message"];
+  EXPECT_NE(loud.find("at most 1000 N"), std::string::npos) << loud;
+  EXPECT_NE(loud.find("longer than 10 ms 1 time(s)"), std::string::npos) << loud;
+  EXPECT_LT(high["value"].get<double>(), 1e-3) << loud;
+}
+
+// The thresholds' keys refused, all at once, each named with its line: out of range on the
+// take-up's wheel, and on a wheel without a take-up (the driver; the driven wheel).
+TEST(DynamicsTakeupCli, LostChainThresholdsRefused) {
+  std::string text =
+      in_idler(example_text(), "takeup_lost_force = \"-1 N\"\ntakeup_lost_time = \"2000 s\"\n");
+  text.insert(text.find("role = \"driven\"\n"), "takeup_lost_time = \"5 ms\"\n");
+  text.insert(text.find("role = \"driver\"\n"), "takeup_lost_force = \"2 N\"\n");
+  const CliRun r = run("dynamics " + write("bad_lost.toml", text));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty());
+  for (const char* piece :
+       {"dynamics.sprocket[2].takeup_lost_force (line",
+        ") = -1: expected the lost-chain warning's "
+        "zero, in [0, 1e6] N",
+        "dynamics.sprocket[2].takeup_lost_time (line",
+        ") = 2000: expected the lost-chain warning's "
+        "time, in [0, 1000] s",
+        "dynamics.sprocket[1].takeup_lost_time (line", "only on a wheel with a take-up",
+        "dynamics.sprocket[0].takeup_lost_force (line", "a take-up only on an idler"})
+    EXPECT_NE(r.err.find(piece), std::string::npos) << piece << "\n" << r.err;
 }
 
 // The CSV's take-up columns: position_2, slide_speed_2, force_2 after the spans' tensions, the

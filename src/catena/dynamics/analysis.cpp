@@ -215,6 +215,13 @@ std::vector<Parameter> sprocket_fields() {
       quantity("takeup_travel_max", K::kLength,
                "take-up: the slide's end stop ahead of the start, along takeup_direction, in "
                "[0, 10] m (default: none)"),
+      quantity("takeup_lost_force", K::kForce,
+               "take-up: the chain's force on the wheel at or below which the wheel counts as "
+               "without the chain (dynamics.takeup_lost_chain), in [0, 1e6] N (default: 1 % of "
+               "takeup_force, at most 1 N)"),
+      quantity("takeup_lost_time", K::kTime,
+               "take-up: how long that force must stay there for the warning, in [0, 1000] s "
+               "(default 10 ms)"),
       number("seat_friction",
              "Coulomb mu of this wheel's roller-seat contact in [0, 1] (default: "
              "dynamics.seat_friction)")};
@@ -268,6 +275,7 @@ struct SprocketInput {
   std::optional<double> teeth, speed, inertia, load_torque, centre_x, centre_y;
   std::optional<double> takeup_force, takeup_direction, takeup_stiffness, takeup_damping,
       takeup_mass, takeup_travel_min, takeup_travel_max;
+  std::optional<double> takeup_lost_force, takeup_lost_time;  // the lost-chain warning's
   std::optional<double> seat_friction;  // this wheel's μ, overriding dynamics.seat_friction
   std::string role;
   bool has_role = false;
@@ -288,6 +296,8 @@ struct LayoutWheel {
   double takeup_damping = 0.0, takeup_mass = NAN;
   // the slide's end stops [m] (±infinity: none)
   double takeup_travel_min = -INFINITY, takeup_travel_max = INFINITY;
+  // the lost-chain warning's zero [N] (NAN: the default, min(1 N, 1 % of F₀)) and time [s]
+  double takeup_lost_force = NAN, takeup_lost_time = 0.010;
 };
 
 struct GuideInput {
@@ -565,9 +575,11 @@ constexpr std::size_t kMaxWheels = 20;  // sprockets of the free layout
 constexpr double kMaxLeadInWork = 5e8;
 constexpr int kMinWrapTeeth = 3;  // a wheel's wrap, in teeth (docs/models/dynamics.md)
 
-constexpr const char* kTakeupKeys[] = {"takeup_force",     "takeup_direction", "takeup_stiffness",
-                                       "takeup_damping",   "takeup_mass",      "takeup_travel_min",
-                                       "takeup_travel_max"};
+constexpr const char* kTakeupKeys[] = {
+    "takeup_force",      "takeup_direction",  "takeup_stiffness",  "takeup_damping",  "takeup_mass",
+    "takeup_travel_min", "takeup_travel_max", "takeup_lost_force", "takeup_lost_time"};
+// the keys that make a take-up (the others tune it and need it)
+constexpr std::size_t kTakeupSlideKeys = 7;
 
 // `side` on a wheel that cannot be on the back of the chain (without centres: the two-wheel line):
 // "outside" refused; "inside" (the default) is accepted anywhere.
@@ -596,8 +608,14 @@ template <class Field>
 void parse_takeup(const SprocketInput& w, const Field& field, LayoutWheel& lw,
                   std::vector<Issue>& issues) {
   bool any = false;
-  for (const char* key : kTakeupKeys) any = any || w.seen.count(key) > 0;
-  if (!any) return;
+  for (std::size_t k = 0; k < kTakeupSlideKeys; ++k) any = any || w.seen.count(kTakeupKeys[k]) > 0;
+  if (!any) {
+    for (const char* key : {"takeup_lost_force", "takeup_lost_time"})
+      if (w.seen.count(key))
+        issues.push_back({field(key), "(given)",
+                          "only on a wheel with a take-up (takeup_force and takeup_direction)"});
+    return;
+  }
   auto shown = [](double x) { return format_g(x, 6); };
   bool ok = true;
   auto ranged = [&](const char* key, const std::optional<double>& v, double lo, double hi,
@@ -629,6 +647,10 @@ void parse_takeup(const SprocketInput& w, const Field& field, LayoutWheel& lw,
          "the end stop behind the start, in [-10, 0] m", false, lw.takeup_travel_min);
   ranged("takeup_travel_max", w.takeup_travel_max, 0.0, 10.0, false,
          "the end stop ahead of the start, in [0, 10] m", false, lw.takeup_travel_max);
+  ranged("takeup_lost_force", w.takeup_lost_force, 0.0, 1e6, false,
+         "the lost-chain warning's zero, in [0, 1e6] N", false, lw.takeup_lost_force);
+  ranged("takeup_lost_time", w.takeup_lost_time, 0.0, 1000.0, false,
+         "the lost-chain warning's time, in [0, 1000] s", false, lw.takeup_lost_time);
   lw.takeup = ok;
 }
 
@@ -1176,7 +1198,8 @@ Setup parse(const analysis::Inputs& in) {
                           "a key of a sprocket: teeth, role, speed, inertia, load_torque, "
                           "centre_x, centre_y, takeup_force, takeup_direction, "
                           "takeup_stiffness, takeup_damping, takeup_mass, takeup_travel_min, "
-                          "takeup_travel_max, seat_friction, side"});
+                          "takeup_travel_max, takeup_lost_force, takeup_lost_time, "
+                          "seat_friction, side"});
         continue;
       }
       w.seen[key] = v.line;
@@ -1208,6 +1231,8 @@ Setup parse(const analysis::Inputs& in) {
       if (key == "takeup_mass") w.takeup_mass = *x;
       if (key == "takeup_travel_min") w.takeup_travel_min = *x;
       if (key == "takeup_travel_max") w.takeup_travel_max = *x;
+      if (key == "takeup_lost_force") w.takeup_lost_force = *x;
+      if (key == "takeup_lost_time") w.takeup_lost_time = *x;
       if (key == "seat_friction") w.seat_friction = *x;
       continue;
     }
@@ -2069,16 +2094,19 @@ struct TakeupSeries {
   int stop_steps[2] = {0, 0};
   double stop_depth[2] = {0.0, 0.0};
   // the chain lost (its force on the wheel at most lost_force): since when (NAN: in contact),
-  // and every stretch longer than kTakeupLossTime as {start, length}
+  // and every stretch longer than the wheel's takeup_lost_time as {start, length}
   double lost_since = NAN;
   std::vector<std::pair<double, double>> lost;
 };
 
-// How long the chain's force on a take-up's wheel must stay at "zero" for the run to say the
-// wheel lost the chain, and what counts as zero: at most 1 % of the take-up's preload F₀, and at
-// most 1 N (exactly 0, no roller touching, when F₀ = 0). docs/models/dynamics.md, "Take-up".
-constexpr double kTakeupLossTime = 0.010;  // [s]
-double takeup_lost_force(const Sprocket& w) { return std::min(1.0, 0.01 * w.takeup_force); }
+// What counts as "zero" for the chain's force on a take-up's wheel when the run says the wheel
+// lost the chain: the case's takeup_lost_force, by default at most 1 % of the take-up's preload
+// F₀ and at most 1 N (exactly 0, no roller touching, when F₀ = 0); how long it must stay there
+// is the case's takeup_lost_time (default 10 ms). docs/models/dynamics.md, "Take-up".
+double takeup_lost_force(const LayoutWheel& w) {
+  return std::isnan(w.takeup_lost_force) ? std::min(1.0, 0.01 * w.takeup_force)
+                                         : w.takeup_lost_force;
+}
 
 struct Result {
   Setup setup;
@@ -2430,10 +2458,11 @@ Result run(const analysis::Inputs& in) {
         ++tu.stop_steps[e];
         tu.stop_depth[e] = std::max(tu.stop_depth[e], past[e]);
       }
-      const bool lost = wheel_force[tu.wheel] <= takeup_lost_force(wh);
+      const LayoutWheel& lw = d.wheels[tu.wheel];
+      const bool lost = wheel_force[tu.wheel] <= takeup_lost_force(lw);
       if (lost && std::isnan(tu.lost_since)) tu.lost_since = s.time - d.step;
       if (!lost && !std::isnan(tu.lost_since)) {
-        if (s.time - d.step - tu.lost_since > kTakeupLossTime)
+        if (s.time - d.step - tu.lost_since > lw.takeup_lost_time)
           tu.lost.push_back({tu.lost_since, s.time - d.step - tu.lost_since});
         tu.lost_since = NAN;
       }
@@ -2500,8 +2529,9 @@ Result run(const analysis::Inputs& in) {
   }
   for (TakeupSeries& tu : out.takeup) {
     const Sprocket& wh = wheels[tu.wheel];
+    const LayoutWheel& lw = d.wheels[tu.wheel];
     const std::string who = "the take-up of sprocket " + std::to_string(tu.wheel);
-    if (!std::isnan(tu.lost_since) && s.time - tu.lost_since > kTakeupLossTime)
+    if (!std::isnan(tu.lost_since) && s.time - tu.lost_since > lw.takeup_lost_time)
       tu.lost.push_back({tu.lost_since, s.time - tu.lost_since});  // lost to the run's end
     for (int e = 0; e < 2; ++e) {
       if (std::isnan(tu.stop_first[e])) continue;
@@ -2522,12 +2552,12 @@ Result run(const analysis::Inputs& in) {
           {Diagnostic::Severity::kWarning, "dynamics.takeup_lost_chain",
            "sprocket " + std::to_string(tu.wheel) +
                " lost the chain on its take-up (the chain's force on the wheel at most " +
-               format_g(takeup_lost_force(wh), 4) + " N) for longer than " +
-               format_g(kTakeupLossTime * 1e3, 3) + " ms " + std::to_string(tu.lost.size()) +
+               format_g(takeup_lost_force(lw), 4) + " N) for longer than " +
+               format_g(lw.takeup_lost_time * 1e3, 3) + " ms " + std::to_string(tu.lost.size()) +
                " time(s), first at t = " + format_g(tu.lost.front().first, 6) + " s for " +
                format_g(tu.lost.front().second, 4) + " s, the longest " + format_g(longest, 4) +
                " s",
-           tu.lost.front().first, kTakeupLossTime});
+           tu.lost.front().first, lw.takeup_lost_time});
     }
   }
   if (d.theta < 0.6)
