@@ -113,8 +113,9 @@ std::vector<Parameter> table_fields() {
       quantity("hinge_band", K::kAngularSpeed,
                "rate band of the regularised hinge friction, in (0, 100] rad/s (default 5 rad/s)"),
       text("pin_load",
-           "the hinges' pin load: mean (of the two links' tensions, the default) or pin_link "
-           "(the outer link's; links alternate, link 0 outer; an even count)"),
+           "with friction on (hinge sliding or rolling): the hinges' pin load, mean (of the "
+           "two links' tensions, the default) or pin_link (the outer link's; links alternate, "
+           "link 0 outer; an even count); refused with hinge = frictionless"),
       text("positions",
            "true to add every node's x and y at each output sample to the JSON (default false; "
            "at most 500000 node-samples)"),
