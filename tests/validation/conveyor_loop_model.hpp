@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <numbers>
 
 #include "../dynamics/two_wheel_loops.hpp"
@@ -55,6 +56,16 @@ inline strength::Segment loop_drive() {
   return dr;
 }
 
+// The wheels' pitch radius R, and the runs' mean height off the line of centres on a wheel of z
+// teeth, R sin(π/z)/(π/z) (the chain climbs twice that round the tail).
+inline double wheel_radius(const Conveyor& d) {
+  return 0.5 * d.pitch / std::sin(std::numbers::pi / d.teeth);
+}
+inline double run_level(const Conveyor& d) {
+  const double half_angle = std::numbers::pi / d.teeth;
+  return wheel_radius(d) * std::sin(half_angle) / half_angle;
+}
+
 // `catena loop` for validation (6b)'s conveyor `d`, level or inclined at β = d.incline, its
 // take-up at `slack` (the simulated slack tension), from the drive's slack side:
 //   the lower run, travelling down (β > 0) from the drive: its carried length (the guide and half
@@ -86,8 +97,7 @@ inline ConveyorLoopModel conveyor_loop_model(const Conveyor& d, double slack) {
   constexpr double kPi = std::numbers::pi;
   const double p = d.pitch, beta = d.incline;
   const double q0 = d.mass_per_metre * d.gravity, load = d.load_per_metre * d.gravity;
-  const double radius = 0.5 * p / std::sin(kPi / d.teeth);
-  const double level = radius * std::sin(kPi / d.teeth) / (kPi / d.teeth);
+  const double radius = wheel_radius(d), level = run_level(d);
   ConveyorLoopModel out;
   out.carried = (d.span_links - d.guide_gap) * p;  // the guide and 2 × half a stretch
   out.half_stretch = 0.5 * d.guide_gap * p;
@@ -132,6 +142,30 @@ inline void expect_tensions_match(const ConveyorMeans& m, const ConveyorLoopMode
   }
   EXPECT_NEAR(m.upper_entry / lm.upper_entry, 1.0, tol)
       << m.upper_entry << " loop " << lm.upper_entry;
+}
+
+// A conveyor's steady means (conveyor_means) and the loop model taken at their slack tension:
+// the inclined and the loaded conveyor's comparisons start so. The slack side must be in tension
+// (fatal: ASSERT_NO_FATAL_FAILURE at the call).
+struct ConveyorAgainstLoop {
+  ConveyorMeans m;
+  ConveyorLoopModel lm;
+};
+inline void run_against_loop_model(const Conveyor& d, ConveyorAgainstLoop& out) {
+  out.m = conveyor_means(d);
+  ASSERT_GT(out.m.slack, 0.0);
+  out.lm = conveyor_loop_model(d, out.m.slack);
+}
+
+// The tensions' line of those comparisons' printout: the slack and tight sides, the tight side and
+// the guide's entry against the loop model, and the three points along the upper guide, in %.
+inline void print_tensions(const ConveyorMeans& m, const ConveyorLoopModel& lm) {
+  const strength::LoopResult& lr = lm.result;
+  std::printf("slack %.4f tight %.4f (loop %.4f, %+.3f %%) entry %+.3f %% along", m.slack, m.tight,
+              lr.tight_tension, 100 * (m.tight / lr.tight_tension - 1),
+              100 * (m.upper_entry / lm.upper_entry - 1));
+  for (std::size_t k = 0; k < 3; ++k)
+    std::printf(" %+.3f", 100 * (m.along[k] / lm.upper_at(m.along_x[k]) - 1));
 }
 
 }  // namespace catena::dynamics::testing

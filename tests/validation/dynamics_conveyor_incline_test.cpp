@@ -53,14 +53,14 @@ using testing::Conveyor;
 // +0.02 to +1.09 % in the rise); over 1.6 s they move by under 0.05 % when Newton's tolerance is
 // halved or doubled. The loop model is testing::conveyor_loop_model (the construction above).
 void compare(const Conveyor& d) {
-  const testing::ConveyorMeans m = testing::conveyor_means(d);
-  ASSERT_GT(m.slack, 0.0);
-  const testing::ConveyorLoopModel lm = testing::conveyor_loop_model(d, m.slack);
+  testing::ConveyorAgainstLoop run;
+  ASSERT_NO_FATAL_FAILURE(testing::run_against_loop_model(d, run));
+  const testing::ConveyorMeans& m = run.m;
+  const testing::ConveyorLoopModel& lm = run.lm;
   const strength::LoopResult& lr = lm.result;
   const double q0 = d.mass_per_metre * d.gravity;
   // the loop model's own closed form: tight − slack = 2 μ q0 cos β L + q0 2 h cos β
-  const double radius = 0.5 * d.pitch / std::sin(kPi / d.teeth);
-  const double level = radius * std::sin(kPi / d.teeth) / (kPi / d.teeth);
+  const double level = testing::run_level(d);
   const double friction_force = 2.0 * d.friction * q0 * std::cos(d.incline) * lm.carried;
   EXPECT_NEAR(lr.tight_tension - lr.slack_tension,
               friction_force + q0 * 2 * level * std::cos(d.incline), 1e-9);
@@ -81,13 +81,8 @@ void compare(const Conveyor& d) {
   // dampers and the θ = 0.6 steps' numerical damping make up the difference.
   EXPECT_NEAR(m.drive_power / (lm.speed * friction_force), 1.0, kTensionTol)
       << "drive power " << m.drive_power << " W, loop " << lm.speed * friction_force;
-  std::printf("beta %.1f deg:  slack %.4f tight %.4f (loop %.4f, %+.3f %%) entry %+.3f %% along",
-              d.incline * 180 / kPi, m.slack, m.tight, lr.tight_tension,
-              100 * (m.tight / lr.tight_tension - 1), 100 * (m.upper_entry / lm.upper_entry - 1));
-  for (std::size_t k = 0; k < 3; ++k) {
-    const double loop_t = lm.upper_at(m.along_x[k]);
-    std::printf(" %+.3f", 100 * (m.along[k] / loop_t - 1));
-  }
+  std::printf("beta %.1f deg:  ", d.incline * 180 / kPi);
+  testing::print_tensions(m, lm);
   std::printf(" %% drive power %+.3f", 100 * (m.drive_power / (lm.speed * friction_force) - 1));
   std::printf(" %% rise %+.3f %% friction power %+.3f %%\n",
               100 * ((m.tight - m.slack) / (lr.tight_tension - lr.slack_tension) - 1),

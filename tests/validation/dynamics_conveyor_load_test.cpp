@@ -33,9 +33,10 @@ constexpr double kCarriedTol = 0.02;  // the rise and the powers, as unloaded
 using testing::Conveyor;
 
 void compare(const Conveyor& d) {
-  const testing::ConveyorMeans m = testing::conveyor_means(d);
-  ASSERT_GT(m.slack, 0.0);
-  const testing::ConveyorLoopModel lm = testing::conveyor_loop_model(d, m.slack);
+  testing::ConveyorAgainstLoop run;
+  ASSERT_NO_FATAL_FAILURE(testing::run_against_loop_model(d, run));
+  const testing::ConveyorMeans& m = run.m;
+  const testing::ConveyorLoopModel& lm = run.lm;
   const strength::LoopResult& lr = lm.result;
   const double q0 = d.mass_per_metre * d.gravity, load = d.load_per_metre * d.gravity;
   const double beta = d.incline, guide = lm.carried - 2 * lm.half_stretch;
@@ -60,13 +61,8 @@ void compare(const Conveyor& d) {
   EXPECT_NEAR(m.load_power, lift_power,
               kCarriedTol * std::abs(lift_power) + 1e-3 * std::abs(m.friction_power))
       << "load power " << m.load_power << " W, friction power " << m.friction_power << " W";
-  std::printf(
-      "q_L %.3f kg/m beta %.0f deg: slack %.4f tight %.4f (loop %.4f, %+.3f %%) entry %+.3f %% "
-      "along",
-      d.load_per_metre, beta * 180 / kPi, m.slack, m.tight, lr.tight_tension,
-      100 * (m.tight / lr.tight_tension - 1), 100 * (m.upper_entry / lm.upper_entry - 1));
-  for (std::size_t k = 0; k < 3; ++k)
-    std::printf(" %+.3f", 100 * (m.along[k] / lm.upper_at(m.along_x[k]) - 1));
+  std::printf("q_L %.3f kg/m beta %.0f deg: ", d.load_per_metre, beta * 180 / kPi);
+  testing::print_tensions(m, lm);
   std::printf(" %% rise %+.3f %% friction power %+.3f %% load power %.4g W (loop %.4g W)\n",
               100 * ((m.tight - m.slack) / rise - 1),
               100 * (m.friction_power / (lm.speed * friction_force) - 1), m.load_power, lift_power);

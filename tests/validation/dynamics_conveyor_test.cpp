@@ -98,8 +98,7 @@ Comparison compare(const Conveyor& d, const ConveyorRun& r, double t0, double t1
   // carries half its weight). Round the idler the chain climbs from the lower run's level to the
   // upper's, H = 2 R sin(π/z)/(π/z): in the contour method a vertical run of height H, q0 H.
   const double q0 = d.mass_per_metre * d.gravity;
-  const double radius = 0.5 * p / std::sin(kPi / d.teeth);
-  const double level = radius * std::sin(kPi / d.teeth) / (kPi / d.teeth);
+  const double radius = testing::wheel_radius(d), level = testing::run_level(d);
   const double carried = guide + d.guide_gap * p;  // 2 × half a stretch of guide_gap pitches
   strength::Loop loop;
   loop.speed = d.omega * radius;
