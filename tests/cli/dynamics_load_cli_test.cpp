@@ -120,7 +120,8 @@ TEST(DynamicsLoadCli, DriftIsNetOfTheLoadsWork) {
 
 TEST(DynamicsLoadCli, EveryBadLoadNamed) {
   std::string text = with_guide_key(example(), 0, "load_per_metre = \"-1 kg/m\"");
-  text = with_guide_key(text, 1, "load_per_metre = \"3 kg/m\"");  // the upper rail's lead-in arc
+  // the upper rail's lead-in arc turned inside: its carrying side would face down
+  text = with_guide_key(text, 1, "load_per_metre = \"3 kg/m\"\ninside = true");
   text = with_guide_key(text, 2, "load_per_metre = \"2e4 kg/m\"");
   text = with_guide_key(text, 3, "load_per_metre = \"4 m\"");
   const CliRun r = run("dynamics " + write("bad.toml", text));
@@ -130,7 +131,7 @@ TEST(DynamicsLoadCli, EveryBadLoadNamed) {
        {"dynamics.guide[0].load_per_metre (line", "dynamics.guide[1].load_per_metre (line",
         "dynamics.guide[2].load_per_metre (line", "dynamics.guide[3].load_per_metre"})
     EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
-  EXPECT_NE(r.err.find("a straight guide"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("over the whole arc, and at 90 deg"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("[0, 10000] kg/m"), std::string::npos) << r.err;
 
   // a loaded rail whose carrying side faces down (x1 < x0: the rollers would hang under it) or

@@ -29,31 +29,75 @@ Guide loaded_rail(double load) {
   return g;
 }
 
-// The point `along` the rail from its first end and `across` it from the roller centres' line.
+// Loaded arcs with their carrying sides up (gravity about −y): over an outside arc's top (a convex
+// transition) and along an inside arc's bottom (a concave one).
+Guide loaded_arc(double load, bool inside) {
+  Guide g = loaded_rail(load);
+  g.kind = Guide::Kind::kArc;
+  g.inside = inside;
+  g.centre_x = 0.1;
+  g.centre_y = inside ? 0.5 : -0.2;
+  g.radius = inside ? 0.4 : 0.3;
+  g.start_angle = (inside ? 240.0 : 60.0) * std::numbers::pi / 180.0;
+  g.end_angle = (inside ? 300.0 : 120.0) * std::numbers::pi / 180.0;
+  return g;
+}
+
+// The roller centres' line's radius of an arc.
+double line_radius(const Guide& g) {
+  return g.inside ? g.radius - g.roller_radius : g.radius + g.roller_radius;
+}
+
+// The rail's length along the roller centres' line.
+double rail_length(const Guide& g) {
+  if (g.kind == Guide::Kind::kStraight) return guide_frame(g).length;
+  return line_radius(g) * (g.end_angle - g.start_angle);
+}
+
+// The point `along` the rail from its first end and `across` it from the roller centres' line
+// (along the free side's normal); on an arc `along` is the arc length on that line.
 void at(const Guide& g, double along, double across, double& x, double& y) {
+  if (g.kind == Guide::Kind::kArc) {
+    const double rho = line_radius(g), phi = g.start_angle + along / rho;
+    const double d = g.inside ? rho - across : rho + across;
+    x = g.centre_x + d * std::cos(phi);
+    y = g.centre_y + d * std::sin(phi);
+    return;
+  }
   const GuideFrame f = guide_frame(g);
   const double off = g.roller_radius + across;  // along the free side's normal (−u_y, u_x)
   x = g.x0 + along * f.ux - off * f.uy;
   y = g.y0 + along * f.uy + off * f.ux;
 }
 
+// A straight rail and both arcs, loaded with `load`.
+std::vector<Guide> loaded_rails(double load) {
+  return {loaded_rail(load), loaded_arc(load, false), loaded_arc(load, true)};
+}
+
+// On a straight rail and on either arc: an arc's nodes a pitch apart along its roller centres'
+// line carry q_L L_arc g, L_arc that line's length.
 TEST(RailLoad, NodesAPitchApartCarryTheWholeLoadWhereverTheySit) {
   const double q = 7.5;
+  for (const Guide& rail : loaded_rails(q)) {
+    const GuideFrame f = guide_frame(rail);
+    const double len = rail_length(rail);
+    for (int k = 0; k < 97; ++k) {  // the nodes' offset along the rail, through a whole pitch
+      const double offset = kPitch * k / 97.0;
+      double fx = 0.0, fy = 0.0;
+      for (double s = -3.0 * kPitch + offset; s < len + 3.0 * kPitch; s += kPitch) {
+        double x = 0.0, y = 0.0;
+        at(rail, s, 0.0, x, y);
+        const RailLoad l = rail_load(rail, f, kPitch, kGx, kGy, x, y);
+        fx += l.fx;
+        fy += l.fy;
+      }
+      EXPECT_NEAR(fx, q * len * kGx, 1e-12 * q * len * 10.0) << offset << " inside " << rail.inside;
+      EXPECT_NEAR(fy, q * len * kGy, 1e-12 * q * len * 10.0) << offset << " inside " << rail.inside;
+    }
+  }
   const Guide g = loaded_rail(q);
   const GuideFrame f = guide_frame(g);
-  for (int k = 0; k < 97; ++k) {  // the nodes' offset along the rail, through a whole pitch
-    const double offset = kPitch * k / 97.0;
-    double fx = 0.0, fy = 0.0;
-    for (double s = -3.0 * kPitch + offset; s < f.length + 3.0 * kPitch; s += kPitch) {
-      double x = 0.0, y = 0.0;
-      at(g, s, 0.0, x, y);
-      const RailLoad l = rail_load(g, f, kPitch, kGx, kGy, x, y);
-      fx += l.fx;
-      fy += l.fy;
-    }
-    EXPECT_NEAR(fx, q * f.length * kGx, 1e-12 * q * f.length * 10.0) << offset;
-    EXPECT_NEAR(fy, q * f.length * kGy, 1e-12 * q * f.length * 10.0) << offset;
-  }
   double x = 0.0, y = 0.0;
   at(g, 0.5 * f.length, 0.0, x, y);  // along the rail: one pitch's load
   const RailLoad mid = rail_load(g, f, kPitch, kGx, kGy, x, y);
@@ -91,69 +135,79 @@ TEST(RailLoad, NodesAPitchApartCarryTheWholeLoadWhereverTheySit) {
   EXPECT_NEAR(rail_load(g, f, kPitch, kGx, kGy, x, y).share, 0.25, 1e-12);
 }
 
+// On a straight rail and on either arc (there through the arc's parametrisation s = ρ_c φ(q),
+// off the roller centres' line too).
 TEST(RailLoad, NewtonBlockIsTheForcesDerivative) {
-  const Guide g = loaded_rail(12.0);
-  const GuideFrame f = guide_frame(g);
-  // on each end's ramp and along the rail (where the block is 0)
-  for (const double s : {-0.3 * kPitch, 0.2 * kPitch, 0.5 * f.length, f.length - 0.1 * kPitch,
-                         f.length + 0.35 * kPitch}) {
-    double x = 0.0, y = 0.0;
-    at(g, s, 0.2 * kPitch, x, y);
-    const RailLoad l = rail_load(g, f, kPitch, kGx, kGy, x, y);
-    ASSERT_TRUE(l.active) << s;
-    const double e = 1e-7;
-    for (int c = 0; c < 2; ++c) {
-      const double dx = c == 0 ? e : 0.0, dy = c == 1 ? e : 0.0;
-      const RailLoad p = rail_load(g, f, kPitch, kGx, kGy, x + dx, y + dy);
-      const RailLoad m = rail_load(g, f, kPitch, kGx, kGy, x - dx, y - dy);
-      EXPECT_NEAR(l.dq[c], (p.fx - m.fx) / (2 * e), 1e-6) << s << " column " << c;
-      EXPECT_NEAR(l.dq[2 + c], (p.fy - m.fy) / (2 * e), 1e-6) << s << " column " << c;
+  for (const Guide& g : loaded_rails(12.0)) {
+    const GuideFrame f = guide_frame(g);
+    const double len = rail_length(g);
+    // on each end's ramp and along the rail (where the block is 0)
+    for (const double s :
+         {-0.3 * kPitch, 0.2 * kPitch, 0.5 * len, len - 0.1 * kPitch, len + 0.35 * kPitch}) {
+      double x = 0.0, y = 0.0;
+      at(g, s, 0.2 * kPitch, x, y);
+      const RailLoad l = rail_load(g, f, kPitch, kGx, kGy, x, y);
+      ASSERT_TRUE(l.active) << s;
+      const double e = 1e-7;
+      for (int c = 0; c < 2; ++c) {
+        const double dx = c == 0 ? e : 0.0, dy = c == 1 ? e : 0.0;
+        const RailLoad p = rail_load(g, f, kPitch, kGx, kGy, x + dx, y + dy);
+        const RailLoad m = rail_load(g, f, kPitch, kGx, kGy, x - dx, y - dy);
+        EXPECT_NEAR(l.dq[c], (p.fx - m.fx) / (2 * e), 1e-6) << s << " column " << c;
+        EXPECT_NEAR(l.dq[2 + c], (p.fy - m.fy) / (2 * e), 1e-6) << s << " column " << c;
+      }
     }
+    double x = 0.0, y = 0.0;
+    at(g, 0.2 * kPitch, 0.0, x, y);
+    EXPECT_GT(std::abs(rail_load(g, f, kPitch, kGx, kGy, x, y).dq[3]), 1.0);  // the ramp's slope
   }
-  double x = 0.0, y = 0.0;
-  at(g, 0.2 * kPitch, 0.0, x, y);
-  EXPECT_GT(std::abs(rail_load(g, f, kPitch, kGx, kGy, x, y).dq[3]), 1.0);  // the ramp's slope
 }
 
 // The step's Newton matrix with a loaded rail (−hθ ∂F/∂q on a node's diagonal block, the ramp's
 // at the rail's ends): every column against central differences of the step's residual, for a
 // two-node chain a half pitch above the rail (no contact) with a node on either end's ramp. The
 // load's block is about a tenth of the matrix's scale there: a wrong sign or a missing term shows.
+// On a straight rail and on either arc.
 TEST(RailLoad, IntegratorNewtonMatrixHasTheRampsBlock) {
-  const Guide g = loaded_rail(1e3);
-  const GuideFrame f = guide_frame(g);
-  for (const double s0 : {0.2 * kPitch, f.length - 1.1 * kPitch}) {
-    Model m = uniform_chain(2, false, kPitch, 0.024, 1e4, 0.0, false);
-    m.gravity_x = kGx;
-    m.gravity_y = kGy;
-    State st(2, 0);
-    for (std::size_t i = 0; i < 2; ++i)
-      at(g, s0 + kPitch * static_cast<double>(i), 0.5 * kPitch, st.x[i], st.y[i]);
-    std::vector<double> u{st.x[0], st.y[0], st.x[1], st.y[1]};
-    const double h = 1e-3;
-    std::vector<double> r0, jac, bare;
-    m.guides = {loaded_rail(0.0)};
-    Integrator plain(m, {.step = h, .theta = 0.6});
-    plain.newton_system(m, st, u, r0, &bare);
-    m.guides = {g};
-    Integrator integ(m, {.step = h, .theta = 0.6});
-    ASSERT_EQ(integ.unknowns(), 4u);
-    integ.newton_system(m, st, u, r0, &jac);
-    double scale = 0.0, load = 0.0;
-    for (std::size_t k = 0; k < 16; ++k) {
-      scale = std::max(scale, std::abs(jac[k]));
-      load = std::max(load, std::abs(jac[k] - bare[k]));
-    }
-    EXPECT_GT(load, 0.05 * scale) << s0 << ": the load's block is not negligible";
-    for (std::size_t c = 0; c < 4; ++c) {
-      const std::vector<double> fd = testing::residual_difference(integ, m, st, u, c, 1e-8);
-      for (std::size_t r = 0; r < 4; ++r)
-        EXPECT_NEAR(jac[r * 4 + c], fd[r], 1e-6 * scale) << s0 << " row " << r << " column " << c;
+  for (const Guide& g : loaded_rails(1e3)) {
+    Guide bare_rail = g;
+    bare_rail.load_per_metre = 0.0;
+    for (const double s0 : {0.2 * kPitch, rail_length(g) - 1.1 * kPitch}) {
+      Model m = uniform_chain(2, false, kPitch, 0.024, 1e4, 0.0, false);
+      m.gravity_x = kGx;
+      m.gravity_y = kGy;
+      State st(2, 0);
+      for (std::size_t i = 0; i < 2; ++i)
+        at(g, s0 + kPitch * static_cast<double>(i), 0.5 * kPitch, st.x[i], st.y[i]);
+      std::vector<double> u{st.x[0], st.y[0], st.x[1], st.y[1]};
+      const double h = 1e-3;
+      std::vector<double> r0, jac, bare;
+      m.guides = {bare_rail};
+      Integrator plain(m, {.step = h, .theta = 0.6});
+      plain.newton_system(m, st, u, r0, &bare);
+      m.guides = {g};
+      Integrator integ(m, {.step = h, .theta = 0.6});
+      ASSERT_EQ(integ.unknowns(), 4u);
+      integ.newton_system(m, st, u, r0, &jac);
+      double scale = 0.0, load = 0.0;
+      for (std::size_t k = 0; k < 16; ++k) {
+        scale = std::max(scale, std::abs(jac[k]));
+        load = std::max(load, std::abs(jac[k] - bare[k]));
+      }
+      EXPECT_GT(load, 0.05 * scale) << s0 << ": the load's block is not negligible";
+      for (std::size_t c = 0; c < 4; ++c) {
+        const std::vector<double> fd = testing::residual_difference(integ, m, st, u, c, 1e-8);
+        for (std::size_t r = 0; r < 4; ++r)
+          EXPECT_NEAR(jac[r * 4 + c], fd[r], 1e-6 * scale) << s0 << " row " << r << " column " << c;
+      }
     }
   }
 }
 
-TEST(RailLoad, BadLoadsNamedAndAnArcRefused) {
+// An arc carries a load only if it presses the chain onto the rail over the whole arc (n·g < 0
+// at every angle: the message names the worst) and its roller centres' line's radius is at least
+// a pitch (the ramps at its ends clear of each other).
+TEST(RailLoad, BadLoadsNamedAndAnArcFacingDownRefused) {
   Model m = uniform_chain(4, false, kPitch, 0.024, 1e7, 0.0, false);
   m.gravity_x = kGx;
   m.gravity_y = kGy;
@@ -168,24 +222,43 @@ TEST(RailLoad, BadLoadsNamedAndAnArcRefused) {
   Guide under = loaded_rail(5.0);
   std::swap(under.x0, under.x1);
   std::swap(under.y0, under.y1);
+  // an inside arc over 60°–120°: its carrying side (inward) faces down, worst at 94.09°
+  Guide hanging = loaded_arc(5.0, true);
+  hanging.start_angle = 60.0 * std::numbers::pi / 180.0;
+  hanging.end_angle = 120.0 * std::numbers::pi / 180.0;
+  Guide tight = loaded_arc(5.0, false);
+  tight.radius = 0.01;  // the rollers' line 16 mm round: less than a pitch
   m.guides = {loaded_rail(-1.0),
               loaded_rail(NAN),
               loaded_rail(2e4),
               arc,
               loaded_rail(1e4),
               loaded_rail(0.0),
-              under};
+              under,
+              loaded_arc(5.0, false),
+              loaded_arc(5.0, true),
+              hanging,
+              tight};
   const std::vector<Issue> issues = validate(m);
   std::vector<std::string> fields;
   for (const Issue& i : issues) fields.push_back(i.field);
-  for (const char* f :
-       {"guide[0].load_per_metre", "guide[1].load_per_metre", "guide[2].load_per_metre",
-        "guide[3].load_per_metre", "guide[6].load_per_metre"})
+  for (const char* f : {"guide[0].load_per_metre", "guide[1].load_per_metre",
+                        "guide[2].load_per_metre", "guide[3].load_per_metre",
+                        "guide[6].load_per_metre", "guide[9].load_per_metre", "guide[10].radius"})
     EXPECT_EQ(std::count(fields.begin(), fields.end(), f), 1) << f;
-  EXPECT_EQ(issues.size(), 5u);  // the cap itself and 0 are accepted
+  EXPECT_EQ(issues.size(), 7u);  // the cap itself, 0 and the two arcs facing up are accepted
   for (const Issue& i : issues) {
     if (i.field == "guide[3].load_per_metre")
-      EXPECT_NE(i.expected.find("a straight guide"), std::string::npos) << i.expected;
+      EXPECT_NE(i.expected.find("over the whole arc, and at 0 deg this arc's carrying side "
+                                "(outward) faces down (n.g = 0.7 m/s^2"),
+                std::string::npos)
+          << i.expected;
+    else if (i.field == "guide[9].load_per_metre")
+      EXPECT_NE(i.expected.find("at 94.0939 deg this arc's carrying side (inward) faces down"),
+                std::string::npos)
+          << i.expected;
+    else if (i.field == "guide[10].radius")
+      EXPECT_NE(i.expected.find("at least a pitch 0.01905 m"), std::string::npos) << i.expected;
     else if (i.field == "guide[6].load_per_metre")
       EXPECT_NE(i.expected.find("press the chain onto the rail, and this rail's carrying side "
                                 "(left going from its first end to its second) faces down"),
@@ -273,6 +346,57 @@ TEST(RailLoad, WorkOfTheLoadIsItsWeightAlongTheTravel) {
   const double numerical = energy(model, s).total() - e0 - dissipated - s.load_work;
   std::printf("numerical %.3g J\n", numerical);
   EXPECT_LT(std::abs(numerical), 1e-3 * std::abs(s.load_work))
+      << "dE " << energy(model, s).total() - e0 << " dissipated " << dissipated << " load "
+      << s.load_work;
+}
+
+// A 6-link chain slides down over a loaded convex arc (an outside arc of R = 0.5 m over
+// 45°–135°, q_L = 2.5 kg/m, μ = 0.1, θ = ½, 0.15 s) from near its top, every node on the arc and
+// off its ramps all along: the load's work the steps report is q_L p g·Σ Δq (its weight along the
+// nodes' drop) within 1e-3, and the energy balance closes with it within 1e-3 of it.
+TEST(RailLoad, WorkBalanceClosesOnALoadedArc) {
+  const double g0 = 9.81, q = 2.5, m = 0.024;
+  const std::size_t n = 7;
+  Model model = uniform_chain(n, false, kPitch, m, 2e6, 30.0, false);
+  model.gravity_y = -g0;
+  Guide arc;
+  arc.kind = Guide::Kind::kArc;
+  arc.radius = 0.5;
+  arc.start_angle = 45.0 * std::numbers::pi / 180.0;
+  arc.end_angle = 135.0 * std::numbers::pi / 180.0;
+  arc.roller_radius = 0.006;
+  arc.contact_stiffness = 1e6;
+  arc.contact_damping = 100.0;
+  arc.friction = 0.1;
+  arc.load_per_metre = q;
+  model.guides = {arc};
+  ASSERT_TRUE(validate(model).empty());
+  State s(n, 0);
+  const double rho = arc.radius + arc.roller_radius - m * g0 / arc.contact_stiffness;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double phi = 100.0 * std::numbers::pi / 180.0 + kPitch * static_cast<double>(i) / rho;
+    s.x[i] = rho * std::cos(phi);
+    s.y[i] = rho * std::sin(phi);
+  }
+  const std::vector<double> y0 = s.y;
+  const double e0 = energy(model, s).total();
+  Integrator integ(model, {.step = 1e-4, .theta = 0.5});
+  for (int k = 0; k < 1500; ++k) ASSERT_TRUE(integ.step(model, s).converged) << k;
+  double drop = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double phi = std::atan2(s.y[i], s.x[i]);
+    ASSERT_LT(phi, arc.end_angle - kPitch / rho) << i << ": off the ramp";
+    drop += y0[i] - s.y[i];
+  }
+  const double expected = q * kPitch * g0 * drop;
+  EXPECT_GT(drop, 0.05);  // [m] the nodes' drops summed: the chain slid
+  std::printf("the arc's load's work %.6g J, its weight along the drop %.6g J (%+.2e)\n",
+              s.load_work, expected, s.load_work / expected - 1.0);
+  EXPECT_NEAR(s.load_work, expected, 1e-3 * expected);
+  const double dissipated = s.friction_work + s.damper_work + s.contact_damping_work + s.drag_work;
+  const double numerical = energy(model, s).total() - e0 - dissipated - s.load_work;
+  std::printf("numerical %.3g J\n", numerical);
+  EXPECT_LT(std::abs(numerical), 1e-3 * expected)
       << "dE " << energy(model, s).total() - e0 << " dissipated " << dissipated << " load "
       << s.load_work;
 }

@@ -182,8 +182,8 @@ struct Guide {
   /// [m/s] v_ε: the friction force is −μ f v_t/√(v_t² + v_ε²), within 1/(2 (v_t/v_ε)²) of the
   /// Coulomb value when sliding faster than v_ε (1e-4 relative at 70 v_ε)
   double friction_band = 1e-3;
-  /// [kg/m] q_L: conveyed material riding on the chain along a straight rail (docs/models/
-  /// dynamics.md, "A conveyed load"; rail_load); 0, the default: none. A straight guide only.
+  /// [kg/m] q_L: conveyed material riding on the chain along the rail, straight or arc (docs/
+  /// models/dynamics.md, "A conveyed load"; rail_load); 0, the default: none.
   double load_per_metre = 0.0;
 };
 
@@ -220,13 +220,13 @@ GuideFrame guide_frame(const Guide& g);
 /// bit.
 GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
                            double vy);
-/// A straight rail's load (Guide::load_per_metre q_L) on one node at q (docs/models/dynamics.md,
-/// "A conveyed load"): its weight share F = q_L p g w(s), g the gravity vector, p the pitch (the
-/// links' rest length), s = (q − P₀)·u the node's projection along the rail from its first end,
-/// w(s) = |[s − p/2, s + p/2] ∩ [0, L]|/p — 1 along the rail, ramped linearly to 0 over the pitch
-/// centred on each end, so that nodes a pitch apart carry q_L L g in all. Only a node from a roller
-/// radius behind the roller centres' line (the surface) to a pitch off it carries it (not a strand
-/// behind the rail); validate wants n·g < 0 (n the free side's normal). ∂F/∂q = q_L p g w' uᵀ.
+/// A rail's load (Guide::load_per_metre q_L) on one node at q (dynamics.md, "A conveyed load"):
+/// F = q_L p g w(s), g the gravity, p the pitch, s the node's place along the rail from its first
+/// end (straight: (q − P₀)·u; arc: ρ_c φ, φ its angle from the start, ρ_c = R ± r the rollers'
+/// line's radius; frame unused), w(s) = |[s − p/2, s + p/2] ∩ [0, L]|/p: nodes a pitch apart carry
+/// q_L L g. Only a node from a roller radius behind the rollers' line to a pitch off it carries it;
+/// validate wants n·g < 0 (n the free side's normal; over the whole arc on an arc).
+/// ∂F/∂q = q_L p g w' (∂s/∂q)ᵀ, ∂s/∂q = u (straight) or ρ_c t/|q − C| (arc, t the ccw tangent).
 struct RailLoad {
   bool active = false;
   double share = 0.0;           ///< [-] w(s)

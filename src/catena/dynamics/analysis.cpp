@@ -153,10 +153,10 @@ std::vector<Parameter> guide_fields() {
       quantity("friction_band", K::kSpeed,
                "speed band of the regularised friction, in (0, 1] m/s (default 1 mm/s)"),
       quantity("load_per_metre", K::kMassPerLength,
-               "straight: conveyed material riding on the chain along the rail, kg/m in [0, " +
+               "conveyed material riding on the chain along the rail, kg/m in [0, " +
                    check::format_si(kMaxRailLoad, "") +
                    "] (default 0; its weight needs gravity and must press the chain onto the "
-                   "rail: x1 > x0)"),
+                   "rail: straight, x1 > x0; arc, the carrying side facing up over the whole arc)"),
       quantity("contact_stiffness", K::kForcePerLength,
                "roller-rail penalty [N/m] (default: dynamics.contact_stiffness)"),
       number("contact_damping",
@@ -1905,13 +1905,13 @@ Setup parse(const analysis::Inputs& in) {
     Model probe;
     probe.guides = {guide};
     probe.gravity_y = -s.gravity;  // a load must press the chain onto its rail: n·g < 0
+    if (s.pitch > 0.0) probe.pitch = s.pitch;  // a loaded arc's rollers' line: at least a pitch
     const bool weightless = guide.load_per_metre > 0.0 && !(s.gravity > 0.0);
     for (const Issue& issue : validate(probe)) {
       if (issue.field.rfind("guide[0].", 0) != 0) continue;
       const std::string key = issue.field.substr(9);
       // a valid load without gravity is reported above: the core's n·g < 0 is that one again
-      if (key == "load_per_metre" && weightless && straight && guide.load_per_metre <= kMaxRailLoad)
-        continue;
+      if (key == "load_per_metre" && weightless && guide.load_per_metre <= kMaxRailLoad) continue;
       const bool given = key == "end" ? complete : g.seen.count(key) > 0;
       const bool derived = key == "roller_radius" || key == "contact_smoothing";
       if (!given && !derived) continue;

@@ -14,7 +14,45 @@
 namespace catena::dynamics {
 namespace {
 constexpr std::size_t kMaxNodes = 10'000'000;
+
+// A loaded arc guide's checks (docs/models/dynamics.md, "A conveyed load"): the load must press
+// the chain onto the rail over the whole arc, n·g < 0 at every angle φ in [start, end] (n = ±(cos
+// φ, sin φ), outward on an outside arc, inward on an inside one): the largest n·g over the arc is
+// at an end or where n points along g. And the roller centres' line's radius at least a pitch, so
+// that the ramps a half pitch beyond the ends stay clear of each other round the back.
+void arc_load_presses(std::vector<Issue>& out, const std::string& f, const Guide& g,
+                      const Model& model) {
+  const double a0 = g.start_angle, a1 = g.end_angle;
+  if (!std::isfinite(a0) || !std::isfinite(a1) || !(a1 > a0) || !std::isfinite(g.radius)) return;
+  const double sgn = g.inside ? -1.0 : 1.0;
+  const double gx = model.gravity_x, gy = model.gravity_y;
+  auto press = [&](double phi) { return sgn * (gx * std::cos(phi) + gy * std::sin(phi)); };
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  double worst = a0;
+  if (press(a1) > press(worst)) worst = a1;
+  if (gx != 0.0 || gy != 0.0) {
+    double peak = std::atan2(sgn * gy, sgn * gx);  // n along g
+    peak += kTwoPi * std::ceil((a0 - peak) / kTwoPi);
+    if (peak <= a1 && press(peak) > press(worst)) worst = peak;
+  }
+  const double at = press(worst);
+  if (!(at < 0.0)) {
+    out.push_back({f + "load_per_metre", check::format_si(g.load_per_metre, "kg/m"),
+                   "0 on this arc: the load must press the chain onto the rail over the whole "
+                   "arc, and at " +
+                       check::format_si(worst * 180.0 / std::numbers::pi, "deg") +
+                       " this arc's carrying side (" + (g.inside ? "inward" : "outward") +
+                       ") faces " + (at > 0.0 ? "down" : "sideways or there is no gravity") +
+                       " (n.g = " + check::format_si(at + 0.0, "m/s^2") + ", must be < 0)"});
+    return;
+  }
+  const double line = g.inside ? g.radius - g.roller_radius : g.radius + g.roller_radius;
+  if (model.pitch > 0.0 && std::isfinite(line) && !(line >= model.pitch))
+    out.push_back({f + "radius", check::format_si(g.radius, "m"),
+                   "a loaded arc whose roller centres' line has a radius of at least a pitch " +
+                       check::format_si(model.pitch, "m") + " (the load's ramps at its ends)"});
 }
+}  // namespace
 
 std::vector<Issue> validate(const Model& model) {
   std::vector<Issue> out;
@@ -226,9 +264,8 @@ std::vector<Issue> validate(const Model& model) {
         !(g.load_per_metre <= kMaxRailLoad)) {
       out.push_back({f + "load_per_metre", check::format_si(g.load_per_metre, "kg/m"),
                      "a load per metre in [0, " + check::format_si(kMaxRailLoad, "") + "] kg/m"});
-    } else if (g.load_per_metre > 0.0 && g.kind != Guide::Kind::kStraight) {
-      out.push_back({f + "load_per_metre", check::format_si(g.load_per_metre, "kg/m"),
-                     "0 on an arc guide: a load rides on a straight guide only"});
+    } else if (g.load_per_metre > 0.0 && g.kind == Guide::Kind::kArc) {
+      arc_load_presses(out, f, g, model);
     } else if (g.load_per_metre > 0.0 && std::isfinite(g.x0 + g.y0 + g.x1 + g.y1) &&
                std::hypot(g.x1 - g.x0, g.y1 - g.y0) > 0.0) {
       // the load's weight must press the chain onto the rail: n·g < 0, n = (−u_y, u_x) the free
@@ -330,19 +367,40 @@ GuideFrame guide_frame(const Guide& g) {
 RailLoad rail_load(const Guide& g, const GuideFrame& frame, double pitch, double gravity_x,
                    double gravity_y, double x, double y) {
   RailLoad out;
-  if (g.kind != Guide::Kind::kStraight || !(g.load_per_metre > 0.0) || !(frame.length > 0.0) ||
-      !(pitch > 0.0))
-    return out;
-  const double ux = frame.ux, uy = frame.uy;
-  const double rx = x - g.x0, ry = y - g.y0;
-  const double s = rx * ux + ry * uy;
-  // across the rail from the roller centres' line (the free side's normal n = (−u_y, u_x))
-  const double across = -rx * uy + ry * ux - g.roller_radius;
+  if (!(g.load_per_metre > 0.0) || !(pitch > 0.0)) return out;
+  // the node's place along the rail s, its length L, its place across it from the roller centres'
+  // line (along the free side's normal) and ∂s/∂q
+  double s = 0.0, len = 0.0, across = 0.0, dsx = 0.0, dsy = 0.0;
+  if (g.kind == Guide::Kind::kStraight) {
+    if (!(frame.length > 0.0)) return out;
+    const double rx = x - g.x0, ry = y - g.y0;
+    s = rx * frame.ux + ry * frame.uy;
+    across = -rx * frame.uy + ry * frame.ux - g.roller_radius;
+    len = frame.length;
+    dsx = frame.ux;
+    dsy = frame.uy;
+  } else {
+    // an arc: s = ρ_c φ along the roller centres' line (radius ρ_c = R ± r) from its start angle,
+    // counter-clockwise, φ the node's angle taken within π of the arc's middle
+    const double rx = x - g.centre_x, ry = y - g.centre_y;
+    const double d2 = rx * rx + ry * ry, d = std::sqrt(d2);
+    if (!(d > 0.0)) return out;
+    const double line = g.inside ? g.radius - g.roller_radius : g.radius + g.roller_radius;
+    const double sweep = g.end_angle - g.start_angle;
+    constexpr double kTwoPi = 2.0 * std::numbers::pi;
+    double phi = std::atan2(ry, rx) - g.start_angle;
+    phi -= kTwoPi * std::floor((phi - 0.5 * sweep + std::numbers::pi) / kTwoPi);
+    s = line * phi;
+    len = line * sweep;
+    across = g.inside ? line - d : d - line;
+    dsx = -line * ry / d2;  // ∂φ/∂q = t/d, t = (−r_y, r_x)/d
+    dsy = line * rx / d2;
+  }
   // the carried side only: up to a pitch off the rail (a roller lifted by the chain's motion),
   // at most a roller radius into it (a carried roller's centre is never behind the surface); a
   // strand behind the rail — the chain's other run, another guided strand — carries none
   if (!(across >= -g.roller_radius && across <= pitch)) return out;
-  const double half = 0.5 * pitch, len = frame.length;
+  const double half = 0.5 * pitch;
   const double hi = std::min(s + half, len), lo = std::max(s - half, 0.0);
   if (!(hi > lo)) return out;  // beyond the ramp at either end
   out.active = true;
@@ -352,10 +410,10 @@ RailLoad rail_load(const Guide& g, const GuideFrame& frame, double pitch, double
   out.fx = weight * gravity_x * out.share;
   out.fy = weight * gravity_y * out.share;
   const double ax = weight * gravity_x * slope, ay = weight * gravity_y * slope;
-  out.dq[0] = ax * ux;
-  out.dq[1] = ax * uy;
-  out.dq[2] = ay * ux;
-  out.dq[3] = ay * uy;
+  out.dq[0] = ax * dsx;
+  out.dq[1] = ax * dsy;
+  out.dq[2] = ay * dsx;
+  out.dq[3] = ay * dsy;
   return out;
 }
 
