@@ -390,6 +390,28 @@ TEST(DynamicsSlackStart, MostLinksFoundByBisectionAfterTheScanFails) {
   EXPECT_EQ(links_that_start_phrase(none, 0), "no count starts so");
 }
 
+// The catenary through the span's ends, solved by the test itself (bisection on a in
+// 2a sinh(d/2a) = √(S² − h²), S the laid span's length): a, x0 with y = y_A + a (cosh((x − x0)/a)
+// − cosh((x_A − x0)/a)).
+struct ClosedForm {
+  double a = 0.0, x0 = 0.0;
+  double y(double x, double xa, double ya) const {
+    return ya + a * (std::cosh((x - x0) / a) - std::cosh((xa - x0) / a));
+  }
+};
+ClosedForm closed_form(double xa, double ya, double xb, double yb, double length) {
+  const double d = xb - xa, h = yb - ya;
+  double lo = 1e-6, hi = 1e3;
+  for (int i = 0; i < 300; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (2.0 * mid * std::sinh(d / (2.0 * mid)) > std::sqrt(length * length - h * h) ? lo : hi) = mid;
+  }
+  ClosedForm c;
+  c.a = 0.5 * (lo + hi);
+  c.x0 = 0.5 * (xa + xb) - c.a * std::atanh(h / length);
+  return c;
+}
+
 // The slack loop at rest under gravity: the driver held, the driven wheel free, drag settling the
 // chain. The lower span between the last roller seated on each wheel hangs as the catenary of its
 // links' length through those two points: y = a cosh((x − x0)/a) + c with √(s² − h²) =
@@ -438,16 +460,9 @@ void expect_settled_catenary(double fraction, bool tensions, int steps) {
   const double sl = static_cast<double>(count) * kPitch;  // the links' rest length; stretch < 1e-6
   const double xa = st.x[a], ya = st.y[a], xb = st.x[b], yb = st.y[b];
   const double d = xb - xa, h = yb - ya;
-  double lo = 1e-4, hi = 100.0;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (2.0 * mid * std::sinh(d / (2.0 * mid)) > std::sqrt(sl * sl - h * h) ? lo : hi) = mid;
-  }
-  const double ca = 0.5 * (lo + hi);
-  const double x0 = 0.5 * (xa + xb) - ca * std::atanh(h / sl);
-  auto catenary = [&](double x) {
-    return ya + ca * (std::cosh((x - x0) / ca) - std::cosh((xa - x0) / ca));
-  };
+  const ClosedForm form = closed_form(xa, ya, xb, yb, sl);
+  const double ca = form.a, x0 = form.x0;
+  auto catenary = [&](double x) { return form.y(x, xa, ya); };
   double sag = 0.0;
   for (std::size_t k = 1; k < count; ++k) {
     const std::size_t i = (a + k) % n;
@@ -492,28 +507,6 @@ TEST(DynamicsSlackStart, SettledSlackSpanIsTheCatenary) {
 // length and settled with its sag, its end tensions and its lowest tension the catenary's
 TEST(DynamicsSlackStart, SettledSlackBeyondTheHalfCircleIsTheCatenary) {
   expect_settled_catenary(0.30, true, 20000);
-}
-
-// The catenary through the span's ends, solved by the test itself (bisection on a in
-// 2a sinh(d/2a) = √(S² − h²), S the laid span's length): a, x0 with y = y_A + a (cosh((x − x0)/a)
-// − cosh((x_A − x0)/a)).
-struct ClosedForm {
-  double a = 0.0, x0 = 0.0;
-  double y(double x, double xa, double ya) const {
-    return ya + a * (std::cosh((x - x0) / a) - std::cosh((xa - x0) / a));
-  }
-};
-ClosedForm closed_form(double xa, double ya, double xb, double yb, double length) {
-  const double d = xb - xa, h = yb - ya;
-  double lo = 1e-6, hi = 1e3;
-  for (int i = 0; i < 300; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (2.0 * mid * std::sinh(d / (2.0 * mid)) > std::sqrt(length * length - h * h) ? lo : hi) = mid;
-  }
-  ClosedForm c;
-  c.a = 0.5 * (lo + hi);
-  c.x0 = 0.5 * (xa + xb) - c.a * std::atanh(h / length);
-  return c;
 }
 
 // Slack beyond a half circle of its span (before: refused) is laid as the catenary of the span's
