@@ -592,5 +592,24 @@ TEST(DynamicsSlackStart, ACatenaryIntoAWheelIsRefused) {
     }
 }
 
+// A tight catenary (a under 0.7 p, where a circle of radius a would turn the chord over 1.6 p of
+// the curve short of p; the catenary is that tight only at its lowest point): wheels z 8 70 mm
+// apart, 46 links, e = 8.46 c, a = 7.9 mm = 0.41 p: every link still one pitch.
+TEST(DynamicsSlackStart, ATightCatenaryIsWalkedAtOnePitch) {
+  const std::vector<Circle> circles{{0.0, 0.0, pitch_radius(8)}, {0.07, 0.0, pitch_radius(8)}};
+  const BeltPath path = belt_path(circles, 0);
+  BeltPath laid;
+  const int links = 46;
+  const LoopPlacement place = place_slack_loop(path, circles, {8, 8}, links, kPitch, laid);
+  ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links));
+  const std::size_t k = slack_span(path);
+  ASSERT_TRUE(laid.pieces[k].catenary);
+  EXPECT_LT(laid.pieces[k].hang_a, 0.7 * kPitch);
+  std::printf("tight catenary: a %.6f m, e / c %.4f\n", laid.pieces[k].hang_a,
+              (laid.pieces[k].length - path.pieces[k].length) / path.pieces[k].length);
+  expect_every_link_one_pitch(loop_state(laid, circles, place, 0.0), links, "tight",
+                              1e-11 * links * kPitch);
+}
+
 }  // namespace
 }  // namespace catena::dynamics

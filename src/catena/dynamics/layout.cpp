@@ -357,7 +357,8 @@ double next_node(const BeltPath& path, double s, double h) {
   const double along = u - q.start;
   if (q.catenary) {
     // a catenary: by the bisection below (its curvature radius is at least a, so the chord
-    // still grows over the 1.6 h searched where a is more than about 0.7 h)
+    // still grows over the 1.6 h searched where a is more than about 0.7 h; and at a = 0.41 h,
+    // tight only at its lowest point: DynamicsSlackStart.ATightCatenaryIsWalkedAtOnePitch)
   } else if ((q.arc || q.sag) && h < 2.0 * q.radius) {
     const double step = 2.0 * q.radius * std::asin(h / (2.0 * q.radius));
     if (along + step <= q.length) return s + step;
