@@ -3,7 +3,9 @@
 // gives the closed forms of its steady state; every bad input of the layout is named at once.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -651,14 +653,60 @@ double named_limit_mm(const std::string& err) { return named_mm(err, "of at most
 
 }  // namespace
 
+// Slack beyond a half circle of its span starts as the catenary of the span's length (before:
+// refused, "beyond the half circle"): two wheels z 17 on a horizontal line 0.6 m apart, 105 links
+// (30 % beyond the path; the half circle takes 22.5 %). The start's lowest node against the
+// catenary's sag (the test's own bisection: 2a sinh(c/2a) = c + e, sag a (cosh(c/2a) − 1)) with
+// e = N p − L, within 1 %: the laid e is a little more (each link's chord spans a little more than
+// a pitch of the curve, most at the two kinks where the catenary leaves the wheels at 76° to
+// their tangents), and the lowest node is within (p/2)²/2a of the vertex; measured +0.81 %.
+TEST(DynamicsLayoutCli, SlackBeyondTheHalfCircleStartsAsTheCatenary) {
+  auto with_links = [](int links) {
+    return write("catenary" + std::to_string(links) + ".toml",
+                 "[dynamics]\nchain = \"12B\"\naxial_stiffness = \"5e7 N/m\"\naxial_damping = "
+                 "100\npretension = \"100 N\"\ncontact_stiffness = \"2e8 N/m\"\n"
+                 "contact_damping = 800\nduration = \"0.2 ms\"\nstep = \"0.1 ms\"\n"
+                 "output_interval = \"0.1 ms\"\ntheta = 0.6\ngravity = true\npositions = true\n"
+                 "links = " +
+                     std::to_string(links) +
+                     "\n\n[[dynamics.sprocket]]\nteeth = 17\nrole = \"driver\"\nspeed = "
+                     "\"0.1 rad/s\"\ncentre_x = \"0 mm\"\ncentre_y = \"0 mm\"\n\n"
+                     "[[dynamics.sprocket]]\nteeth = 17\nrole = \"driven\"\ninertia = 0.02\n"
+                     "load_torque = 0\ncentre_x = \"600 mm\"\ncentre_y = \"0 mm\"\n");
+  };
+  const CliRun r = run("dynamics " + with_links(105) + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["links"], 105);
+  EXPECT_NEAR(j["laid_pitch"].get<double>(), kPitch, 1e-12 * kPitch);
+  const double path = j["path_length"].get<double>();
+  const double over = j["slack"].get<double>();
+  EXPECT_NEAR(over, 105 * kPitch - path, 1e-12);
+  const double c = 0.6;
+  EXPECT_GT(over, (0.5 * kPi - 1.0) * c);  // beyond the half circle
+  double lo = 1e-4, hi = 100.0;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (2.0 * mid * std::sinh(c / (2.0 * mid)) > c + over ? lo : hi) = mid;
+  }
+  const double a = 0.5 * (lo + hi);
+  const double sag = a * (std::cosh(c / (2.0 * a)) - 1.0);
+  double lowest = 0.0;
+  for (const auto& y : j["positions"]["y"][0]) lowest = std::min(lowest, y.get<double>());
+  const double start_sag = -radius(17) - lowest;
+  EXPECT_NEAR(start_sag / sag, 1.0, 0.01) << start_sag << " vs " << sag;
+  std::printf("105 links: start sag %.6f m, catenary %.6f m\n", start_sag, sag);
+}
+
 // A start with slack through the command: examples/dynamics_three_wheels.toml (55 links fit its
 // path) given 56 links and gravity starts with the extra 17 mm sagging in the span facing down
 // (idler -> driven), every link one pitch: `laid_pitch` the pitch, `slack` = 56 p − the path's
 // length; it runs (0.05 s), and so does 60 (93 mm, 8.9 %: beyond the 3 % the start once took).
-// 65 links (188 mm) are more than the span's half circle (131 mm) and are refused, naming the
-// field and the limit; `links_chosen` is reported only when `links` is omitted. A rail 30 mm
-// outside the span's middle is clear of the taut chain but inside the 60-link sag: refused,
-// naming the guide.
+// 65 links (188 mm), beyond the span's half circle (131 mm), were refused; they now start with the
+// span hanging as its catenary. 180 links (2379 mm) are beyond the longest catenary (10 chords of
+// extra, 2303 mm) and are refused, naming the field and the limit (175 start);
+// `links_chosen` is reported only when `links` is omitted. A rail 30 mm outside the span's middle
+// is clear of the taut chain but inside the 60-link sag: refused, naming the guide.
 TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
   std::stringstream example;
   example << std::ifstream(kExample).rdbuf();
@@ -696,29 +744,47 @@ TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
   EXPECT_GT(l["slack"].get<double>(), 0.08 * path);
   EXPECT_LT(l["summary"]["max_penetration"].get<double>(), 20e-6);
 
-  const CliRun refused = run("dynamics " + with_links(65));
+  // 65 links, beyond the span's half circle (131.4 mm), were refused: the span now hangs as the
+  // catenary of its length (nothing under it), up to 10 chords of extra (2303.1 mm): 175 start
+  const CliRun hanging = run("dynamics " + with_links(65) + " --format json");
+  ASSERT_EQ(hanging.status, 0) << hanging.err;
+  EXPECT_NEAR(nlohmann::json::parse(hanging.out)["slack"].get<double>(), 65 * kPitch - path, 1e-12);
+  const CliRun refused = run("dynamics " + with_links(180));
   EXPECT_EQ(refused.status, 2);
   EXPECT_NE(refused.err.find("dynamics.links (line "), std::string::npos) << refused.err;
-  EXPECT_NE(refused.err.find(") = 65: expected"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find(") = 180: expected"), std::string::npos) << refused.err;
   EXPECT_NE(refused.err.find("or a chain longer than the path, its slack span sprocket[2] -> "
                              "sprocket[1] sagging by an extra length e (the arc's length beyond "
-                             "its chord) of at most about 131.4"),
+                             "its chord) of at most about "),
             std::string::npos)
       << refused.err;
-  EXPECT_NE(refused.err.find("the most it can sag by as circular arcs of at most a half circle"),
+  // nothing under the span stops it: the limit is the longest catenary's extra, 10 c, c the slack
+  // span's chord, the outer tangent from the idler z = 15 at (150, −175) mm to the driven wheel
+  // z = 18 at (300, 0) mm, √(d² − (R18 − R15)²)
+  const double chord =
+      std::sqrt(std::pow(std::hypot(0.15, 0.175), 2) - std::pow(radius(18) - radius(15), 2));
+  EXPECT_NEAR(named_limit_mm(refused.err), 10.0 * chord * 1e3, 0.01) << refused.err;
+  EXPECT_NE(refused.err.find("the most it can sag by as circular arcs of at most a half circle "
+                             "and, beyond a half circle, catenaries of at most 11 times the chord"),
             std::string::npos)
       << refused.err;
-  // 65 links need an e beyond the half circle (the limit named), and their N p - L is the
+  // 180 links need an e beyond the longest catenary (the limit named), and their N p - L is the
   // chain's own extra beside it (no "less than e" against an e that was not found)
-  EXPECT_NE(refused.err.find("(here 65 links need an e beyond the half circle's "),
+  EXPECT_NE(refused.err.find("(here 180 links need an e beyond the longest catenary's "),
             std::string::npos)
       << refused.err;
-  EXPECT_NEAR(named_mm(refused.err, "beyond the half circle's "), named_limit_mm(refused.err), 1e-3)
-      << refused.err;
-  EXPECT_NEAR(named_mm(refused.err, "N p less the path's length is "), (65 * kPitch - path) * 1e3,
+  EXPECT_NEAR(named_mm(refused.err, "beyond the longest catenary's "), named_limit_mm(refused.err),
               1e-3)
       << refused.err;
+  EXPECT_NEAR(named_mm(refused.err, "N p less the path's length is "), (180 * kPitch - path) * 1e3,
+              1e-2)  // six digits
+      << refused.err;
   EXPECT_EQ(refused.err.find("less than e"), std::string::npos) << refused.err;
+  // the count named starts, one more does not
+  const int most = named_count(refused.err);
+  EXPECT_EQ(most, 175) << refused.err;
+  EXPECT_EQ(run("dynamics " + with_links(most) + " --duration 1ms").status, 0);
+  EXPECT_EQ(run("dynamics " + with_links(most + 1) + " --duration 1ms").status, 2);
 
   // slack_spans = "all": the 93 mm shared by the three spans (each between two wheels inside)
   auto with_key = [&](int links, const std::string& value) {
@@ -776,10 +842,9 @@ TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
 // are more than the slack span's half circle, and were refused naming 131.4 mm, the span's limit
 // without the guides, although a rail 70 mm outside the taut span's middle stops the sag at
 // 44.6 mm. The refusal now names the limit with the rail and the most links that start, and that
-// count starts (with the rail) while one more is refused naming the rail. Without the rail the
-// count named is 61, which starts: its sag, 112 mm of 131 mm possible, was refused before (the
-// slack solve's secant stepped beyond the half circle and stopped), so the count the limit in mm
-// implied did not start either.
+// count starts (with the rail) while one more is refused naming the rail. Without the rail 65
+// links now start, the span hanging beyond its half circle as its catenary (before the catenary:
+// refused, the most that started 61).
 TEST(DynamicsLayoutCli, RefusedSlackNamesALimitThatStartsWithTheGuides) {
   std::stringstream example;
   example << std::ifstream(kExample).rdbuf();
@@ -796,39 +861,14 @@ TEST(DynamicsLayoutCli, RefusedSlackNamesALimitThatStartsWithTheGuides) {
     return write("limit" + std::to_string(links) + (guided ? "r" : "") + ".toml",
                  guided ? t + rail : t);
   };
-  const CliRun bare = run("dynamics " + with(65, false));
-  ASSERT_EQ(bare.status, 2);
-  // without the rail nothing stops the sag short of its half circle: the limit is that arc's
-  // extra length (π/2 − 1) c, c the slack span's chord, the outer tangent from the idler z = 15
-  // at (150, −175) mm to the driven wheel z = 18 at (300, 0) mm, √(d² − (R18 − R15)²)
-  const double chord =
-      std::sqrt(std::pow(std::hypot(0.15, 0.175), 2) - std::pow(radius(18) - radius(15), 2));
-  EXPECT_NEAR(named_limit_mm(bare.err), (kPi / 2.0 - 1.0) * chord * 1e3, 0.01) << bare.err;
-  EXPECT_EQ(named_count(bare.err), 61) << bare.err;
-  const CliRun fits = run("dynamics " + with(61, false) + " --format json");
-  ASSERT_EQ(fits.status, 0) << fits.err;
-  const double path = nlohmann::json::parse(fits.out)["path_length"].get<double>();
-  // 62 links are N p - L (62 p less the path's length) beyond the path, less than the limit: the
-  // message named that beside the limit as if alike ("here 131.311 mm"), and read as refusing a
-  // count within it. The limit is the arc's extra e, and 62 links need an e beyond the half
-  // circle: the message says so, and names N p - L apart as what it is, without calling it "less
-  // than e" (that e was not found: it is beyond the half circle)
-  const CliRun beyond = run("dynamics " + with(62, false));
-  ASSERT_EQ(beyond.status, 2);
-  EXPECT_NE(beyond.err.find("(here 62 links need an e beyond the half circle's "),
-            std::string::npos)
-      << beyond.err;
-  EXPECT_NEAR(named_mm(beyond.err, "beyond the half circle's "), named_limit_mm(beyond.err), 1e-3)
-      << beyond.err;
-  const std::string own_key = "; their N p less the path's length is ";
-  const double own = named_mm(beyond.err, own_key);
-  EXPECT_NEAR(own, (62 * kPitch - path) * 1e3, 1e-3) << beyond.err;
-  EXPECT_LT(own, named_limit_mm(beyond.err));
-  const std::size_t own_at = beyond.err.find(own_key);
-  ASSERT_NE(own_at, std::string::npos) << beyond.err;
-  EXPECT_NEAR(named_mm(beyond.err.substr(own_at), " mm ("), own / (path * 1e3) * 100.0, 1e-3)
-      << beyond.err;
-  EXPECT_EQ(beyond.err.find("less than e"), std::string::npos) << beyond.err;
+  // without the rail, 62 and 65 links (beyond the span's half circle, 131.4 mm: refused before,
+  // "need an e beyond the half circle's") start with the span hanging as its catenary
+  for (const int n : {62, 65}) {
+    const CliRun bare = run("dynamics " + with(n, false) + " --format json");
+    ASSERT_EQ(bare.status, 0) << n << bare.err;
+    // N p - L: 131.3 mm at 62, 188.5 mm at 65 (the e laid a little more)
+    EXPECT_GT(nlohmann::json::parse(bare.out)["slack"].get<double>(), 0.1313) << n;
+  }
 
   const CliRun guided = run("dynamics " + with(65, true));
   ASSERT_EQ(guided.status, 2);

@@ -6,6 +6,7 @@
 // closes, each wheel turned so that its seats sit under its wrapped rollers.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -35,6 +36,11 @@ struct PathPiece {
   /// (x0, y0) to (x1, y1) about (cx, cy) of `radius`, from the angle `from` (`sense` +1); still a
   /// span (arc false)
   bool sag = false;
+  /// a sag beyond a half circle (`sag_span`): not a circular arc but the catenary of its length
+  /// hanging down (−y) from (x0, y0) to (x1, y1), x1 > x0: y = y0 + a (cosh((x − x0 − u)/a) −
+  /// cosh(u/a)), `hang_a` = a [m], `hang_u` = u [m] (its lowest point's x from x0); `sag` true too
+  bool catenary = false;
+  double hang_a = 0.0, hang_u = 0.0;
   double cx = 0.0, cy = 0.0;  ///< arc: [m] the wheel's centre
   double radius = 0.0;        ///< arc: [m] its pitch radius
   double x0 = 0.0, y0 = 0.0;  ///< [m] start point
@@ -169,9 +175,26 @@ LeadInLimit lead_in_limit(const BeltPath& path, const Guide& rail, const LeadIn&
 
 /// The path with span `piece` laid as a circular arc of its chord plus `extra` (> 0), bulging
 /// outward (to the right of the travel), between the same tangent points; the other pieces and the
-/// wheels unchanged. Empty (no pieces) if `piece` is not a span or the arc would exceed a half
-/// circle.
+/// wheels unchanged. Beyond a half circle (extra > (π/2 − 1) c), up to kCatenaryMostExtra c: the
+/// catenary of that length through the same points (`catenary`), for a span whose outward side
+/// is down (travelling towards +x, so that the catenary, which hangs below its chord, bulges
+/// outward). Empty (no pieces) if `piece` is not a span or neither curve is laid.
 BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra);
+
+/// The most extra length a sag is laid with, in its chord c: a catenary of 11 c.
+inline constexpr double kCatenaryMostExtra = 10.0;
+
+/// The catenary through two points a horizontal distance h > 0 and a height v apart, of length
+/// `length` (more than the chord): its parameter a [m] (from √(S² − v²) = 2 a sinh(h / 2a), by
+/// bisection on h / 2a) and its lowest point's horizontal distance u [m] from the first point
+/// (h/2 − a atanh(v/S)). NAN both if not defined (h not positive, length not beyond the chord).
+struct Catenary {
+  double a = NAN, u = NAN;
+};
+Catenary catenary_through(double h, double v, double length);
+
+/// The point at arc length `along` [m] of a sagging piece (arc or catenary) and its unit tangent.
+PathPoint sag_point(const PathPiece& q, double along);
 
 /// A start with slack: N nodes at chord exactly `pitch` (so the chain is N·pitch long) on the path
 /// with its slack span (`slack_span`) sagging by the extra length that closes the loop

@@ -733,6 +733,9 @@ std::string slack_measure_text(const Setup& s, const std::vector<std::size_t>& p
   double spans = 0.0;
   for (const std::size_t k : pieces) spans += s.path.pieces[k].length;
   const double half = (0.5 * kPi - 1.0) * spans;
+  // beyond the half circle the spans hang as catenaries (when they can: a run travelling
+  // towards +x, whose outward side is down), up to kCatenaryMostExtra chords of extra
+  const bool hangs = !sag_spans(s.path, pieces, half * (1.0 + 1e-9)).pieces.empty();
   const std::string count = std::to_string(given) + " links";
   return "a chain longer than the path, its " + span_names(s.path, pieces) +
          " sagging by an extra length e (the arc" + (pieces.size() == 1 ? "'s" : "s'") +
@@ -740,9 +743,14 @@ std::string slack_measure_text(const Setup& s, const std::vector<std::size_t>& p
          ") of at most about " + mm(most) + " (" + shown(most / s.path.length * 100.0) +
          " % of the path), the most " + (pieces.size() == 1 ? "it" : "they") +
          " can sag by as circular arcs" + (half_circle ? " of at most a half circle" : "") +
+         (hangs ? " and, beyond a half circle, catenaries of at most " +
+                      format_g(kCatenaryMostExtra + 1.0, 6) + " times the chord"
+                : "") +
          " clear of every other wheel's teeth and the other spans" +
          (guides.empty() ? "" : " and the guides") + " (here " + count +
-         (need == INFINITY      ? " need an e beyond the half circle's " + mm(half)
+         (need == INFINITY && hangs
+              ? " need an e beyond the longest catenary's " + mm(kCatenaryMostExtra * spans)
+          : need == INFINITY    ? " need an e beyond the half circle's " + mm(half)
           : std::isfinite(need) ? " need e = " + mm(need)
                                 : " need an e that was not found") +
          "; their N p less the path's length is " + mm(over) + " (" +
@@ -1040,8 +1048,8 @@ void parse_layout(const std::vector<SprocketInput>& wheels, double links,
     if (std::find(fitting.begin(), fitting.end(), chosen) == fitting.end() &&
         !fits(chosen, trial)) {
       // longer than the path: a start with slack, its slack span sagging (every link one pitch)
-      // as a circular arc of at most a half circle, clear of every other wheel's teeth and of
-      // the other spans (of the guides: checked in parse() once they are read)
+      // as a circular arc of at most a half circle (beyond: a catenary), clear of every other
+      // wheel's teeth and of the other spans (of the guides: checked in parse() once they are read)
       const double over = chosen * s.pitch - s.path.length;
       const std::size_t k = slack_span(s.path);
       const std::vector<std::size_t> pieces = k >= s.path.pieces.size() ? std::vector<std::size_t>{}

@@ -277,6 +277,45 @@ BeltPath belt_path(const std::vector<Circle>& circles, std::size_t first) {
   return path;
 }
 
+Catenary catenary_through(double h, double v, double length) {
+  Catenary out;
+  if (!(h > 0.0) || !(length > std::hypot(h, v)) || !std::isfinite(length)) return out;
+  // sinh ξ / ξ = √(S² − v²) / h with ξ = h / 2a (sinh ξ / ξ rises from 1 on ξ > 0): bracketed
+  // by doubling, then bisected to the last bit
+  const double ratio = std::sqrt(length * length - v * v) / h;
+  double lo = 0.0, hi = 1.0;
+  while (std::sinh(hi) / hi < ratio && hi < 700.0) hi *= 2.0;
+  for (int it = 0; it < 300; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;
+    (std::sinh(mid) / mid < ratio ? lo : hi) = mid;
+  }
+  out.a = h / (lo + hi);
+  out.u = 0.5 * h - out.a * std::atanh(v / length);
+  return out;
+}
+
+PathPoint sag_point(const PathPiece& q, double along) {
+  PathPoint p;
+  if (q.catenary) {
+    // the arc length from the first end: a (sinh((X − u)/a) + sinh(u/a)), inverted
+    const double a = q.hang_a, u = q.hang_u;
+    const double t = std::asinh(along / a - std::sinh(u / a));  // (X − u)/a
+    p.x = q.x0 + u + a * t;
+    p.y = q.y0 + a * (std::cosh(t) - std::cosh(u / a));
+    p.tx = 1.0 / std::cosh(t);
+    p.ty = std::tanh(t);
+    return p;
+  }
+  const double t = q.from + q.sense * along / q.radius;
+  const double c = std::cos(t), sn = std::sin(t);
+  p.x = q.cx + q.radius * c;
+  p.y = q.cy + q.radius * sn;
+  p.tx = -q.sense * sn;
+  p.ty = q.sense * c;
+  return p;
+}
+
 PathPoint path_point(const BeltPath& path, double s) {
   PathPoint p;
   double u = std::fmod(s, path.length);
@@ -289,12 +328,11 @@ PathPoint path_point(const BeltPath& path, double s) {
   p.piece = k;
   const double along = std::clamp(u - q.start, 0.0, q.length);
   if (q.arc || q.sag) {
-    const double t = q.from + q.sense * along / q.radius;
-    const double c = std::cos(t), sn = std::sin(t);
-    p.x = q.cx + q.radius * c;
-    p.y = q.cy + q.radius * sn;
-    p.tx = -q.sense * sn;
-    p.ty = q.sense * c;
+    const PathPoint on = sag_point(q, along);
+    p.x = on.x;
+    p.y = on.y;
+    p.tx = on.tx;
+    p.ty = on.ty;
   } else {
     const double f = q.length > 0.0 ? along / q.length : 0.0;
     p.x = q.x0 + f * (q.x1 - q.x0);
@@ -317,7 +355,11 @@ double next_node(const BeltPath& path, double s, double h) {
   double u = std::fmod(s, path.length);
   if (u < 0.0) u += path.length;
   const double along = u - q.start;
-  if ((q.arc || q.sag) && h < 2.0 * q.radius) {
+  if (q.catenary) {
+    // a catenary: by the bisection below (its curvature radius is at least a, so the chord
+    // still grows over the 1.6 h searched where a is more than about 0.7 h; and at a = 0.41 h,
+    // tight only at its lowest point: DynamicsSlackStart.ATightCatenaryIsWalkedAtOnePitch)
+  } else if ((q.arc || q.sag) && h < 2.0 * q.radius) {
     const double step = 2.0 * q.radius * std::asin(h / (2.0 * q.radius));
     if (along + step <= q.length) return s + step;
   } else if (!q.arc && along + h <= q.length) {
@@ -445,8 +487,27 @@ BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra) {
   const double c = std::hypot(q.x1 - q.x0, q.y1 - q.y0), arc = c + extra;
   // the half angle φ of the arc: sin φ / φ = c / arc (decreasing on (0, π]), by bisection
   const double ratio = c / arc;
-  if (!(ratio > 2.0 / kPi)) {  // beyond a half circle
-    out.pieces.clear();
+  if (!(ratio > 2.0 / kPi)) {
+    // beyond a half circle: the catenary of that length, hanging below its chord, so only on a
+    // span whose outward side is down (travelling towards +x)
+    const Catenary hang = extra <= kCatenaryMostExtra * c
+                              ? catenary_through(q.x1 - q.x0, q.y1 - q.y0, arc)
+                              : Catenary{};
+    if (!std::isfinite(hang.a) || !std::isfinite(hang.u)) {
+      out.pieces.clear();
+      return out;
+    }
+    q.sag = true;
+    q.catenary = true;
+    q.hang_a = hang.a;
+    q.hang_u = hang.u;
+    q.length = arc;
+    double along = 0.0;
+    for (PathPiece& r : out.pieces) {
+      r.start = along;
+      along += r.length;
+    }
+    out.length = along;
     return out;
   }
   double lo = 1e-12, hi = 0.5 * kPi;
@@ -490,6 +551,61 @@ int arc_samples(double length, double roller) {
   return static_cast<int>(want > 512.0 ? (want < kMaxSagSamples ? want : kMaxSagSamples) : 512.0);
 }
 
+// A catenary's height at x (x0 ≤ x ≤ x1).
+double catenary_y(const PathPiece& q, double x) {
+  return q.y0 +
+         q.hang_a * (std::cosh((x - q.x0 - q.hang_u) / q.hang_a) - std::cosh(q.hang_u / q.hang_a));
+}
+
+// The distance from (x, y) to a catenary piece between the arc lengths `from` and `to`: the
+// nearest of 256 samples, then golden-section search over the samples either side of it (the
+// distance is smooth along the curve; within a sample's spacing it has one minimum where the
+// spacing is small against the curve's radius, at least a).
+double catenary_distance(const PathPiece& q, double x, double y, double from, double to) {
+  auto at = [&](double along) {
+    const PathPoint p = sag_point(q, along);
+    return std::hypot(p.x - x, p.y - y);
+  };
+  const int n = 256;
+  const double step = (to - from) / n;
+  int best = 0;
+  double least = INFINITY;
+  for (int j = 0; j <= n; ++j) {
+    const double d = at(from + step * j);
+    if (d < least) {
+      least = d;
+      best = j;
+    }
+  }
+  double lo = from + step * std::max(best - 1, 0), hi = from + step * std::min(best + 1, n);
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int it = 0; it < 80; ++it) {
+    const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+    if (at(m1) < at(m2))
+      hi = m2;
+    else
+      lo = m1;
+  }
+  return std::min(least, at(0.5 * (lo + hi)));
+}
+
+// A sagging piece's bounding box: its ends and, on a catenary, its lowest point; on an arc the
+// box of its whole circle.
+void sag_box(const PathPiece& q, double& x0, double& y0, double& x1, double& y1) {
+  if (!q.catenary) {
+    x0 = q.cx - q.radius;
+    y0 = q.cy - q.radius;
+    x1 = q.cx + q.radius;
+    y1 = q.cy + q.radius;
+    return;
+  }
+  x0 = q.x0;
+  x1 = q.x1;
+  y1 = std::max(q.y0, q.y1);
+  y0 = q.hang_u > 0.0 && q.hang_u < q.x1 - q.x0 ? catenary_y(q, q.x0 + q.hang_u)
+                                                : std::min(q.y0, q.y1);
+}
+
 }  // namespace
 
 std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
@@ -503,6 +619,8 @@ std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
   const double ux = q.x1 - q.x0, uy = q.y1 - q.y0, chord = std::hypot(ux, uy);
   auto swept = [&](double x, double y) {
     const double out = ((x - q.x0) * uy - (y - q.y0) * ux) / chord;  // to the right of the travel
+    // a catenary's segment: below the chord (x1 > x0) and above the curve
+    if (q.catenary) return out > 0.0 && x > q.x0 && x < q.x1 && y > catenary_y(q, x);
     return out > 0.0 && std::hypot(x - q.cx, y - q.cy) < q.radius;
   };
   for (std::size_t w = 0; w < circles.size(); ++w)
@@ -528,14 +646,21 @@ std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
       // a straight span's points, or another sagging span's along its arc (two sags may face
       // each other across a notch of a serpentine path)
       const double a = r.from + (r.to - r.from) * j / 256.0;
-      const double x = r.sag ? r.cx + r.radius * std::cos(a) : r.x0 + (r.x1 - r.x0) * j / 256.0;
-      const double y = r.sag ? r.cy + r.radius * std::sin(a) : r.y0 + (r.y1 - r.y0) * j / 256.0;
+      const PathPoint on = r.catenary ? sag_point(r, r.length * j / 256.0) : PathPoint{};
+      const double x = r.catenary ? on.x
+                       : r.sag    ? r.cx + r.radius * std::cos(a)
+                                  : r.x0 + (r.x1 - r.x0) * j / 256.0;
+      const double y = r.catenary ? on.y
+                       : r.sag    ? r.cy + r.radius * std::sin(a)
+                                  : r.y0 + (r.y1 - r.y0) * j / 256.0;
       if (swept(x, y)) return "the span " + wheel_name(r.wheel) + " -> " + wheel_name(r.next);
     }
   }
   for (int j = 0; j <= samples; ++j) {
     const double a = q.from + (q.to - q.from) * j / samples;
-    const double x = q.cx + q.radius * std::cos(a), y = q.cy + q.radius * std::sin(a);
+    const PathPoint on = q.catenary ? sag_point(q, q.length * j / samples) : PathPoint{};
+    const double x = q.catenary ? on.x : q.cx + q.radius * std::cos(a);
+    const double y = q.catenary ? on.y : q.cy + q.radius * std::sin(a);
     for (std::size_t w = 0; w < circles.size(); ++w) {
       if (w == q.wheel || w == q.next) continue;
       if (std::hypot(x - circles[w].x, y - circles[w].y) < tip[w] + 0.5 * roller)
@@ -549,10 +674,13 @@ std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
       const PathPiece& r = laid.pieces[k];
       if (k == piece || r.arc) continue;
       // another sagging span: its arc but for a pitch at either end (on its wheels)
-      const double end = r.sag ? pitch / r.radius : 0.0;
-      if (r.sag && !(r.to - r.from > 2.0 * end)) continue;
-      const double gap = r.sag ? arc_distance(x, y, r.cx, r.cy, r.radius, r.from + end, r.to - end)
-                               : segment_distance(x, y, r.x0, r.y0, r.x1, r.y1);
+      if (r.catenary && !(r.length > 2.0 * pitch)) continue;
+      const double end = r.sag && !r.catenary ? pitch / r.radius : 0.0;
+      if (r.sag && !r.catenary && !(r.to - r.from > 2.0 * end)) continue;
+      const double gap = r.catenary ? catenary_distance(r, x, y, pitch, r.length - pitch)
+                         : r.sag
+                             ? arc_distance(x, y, r.cx, r.cy, r.radius, r.from + end, r.to - end)
+                             : segment_distance(x, y, r.x0, r.y0, r.x1, r.y1);
       if (gap < roller) return "the span " + wheel_name(r.wheel) + " -> " + wheel_name(r.next);
     }
   }
@@ -575,6 +703,20 @@ double largest_clear_extra(double most, double scale, Clear clear) {
   return lo;
 }
 
+// The largest clear extra up to the half circle's `half` (a hair inside), as before the catenary;
+// when the half circle is clear, on along the catenaries from a hair beyond it up to `longest`
+// (a catenary's segment and a half circle's are not nested, but the catenaries' are: bisected
+// apart), or the half circle's extra when the first catenary is not clear or not laid.
+template <class Clear>
+double largest_clear_sag(double half, double longest, double scale, Clear clear) {
+  const double arcs = largest_clear_extra(half * (1.0 - 1e-9), scale, clear);
+  if (arcs < half * (1.0 - 1e-9)) return arcs;
+  const double from = half * (1.0 + 1e-9);
+  if (!clear(from)) return arcs;
+  return from + largest_clear_extra(longest * (1.0 - 1e-9) - from, scale,
+                                    [&](double more) { return clear(from + more); });
+}
+
 }  // namespace
 
 double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circle>& circles,
@@ -587,8 +729,8 @@ double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circ
     return !laid.pieces.empty() &&
            sag_obstacle(laid, piece, circles, tip, guides, roller, pitch).empty();
   };
-  // the half circle's extra, a hair inside (sag_span refuses beyond it)
-  return largest_clear_extra((0.5 * kPi - 1.0) * c * (1.0 - 1e-9), c, clear);
+  // the arcs up to the half circle, then the catenaries (sag_span refuses beyond the longest)
+  return largest_clear_sag((0.5 * kPi - 1.0) * c, kCatenaryMostExtra * c, c, clear);
 }
 
 double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pieces,
@@ -609,8 +751,8 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
       if (!sag_obstacle(laid, k, circles, tip, guides, roller, pitch).empty()) return false;
     return true;
   };
-  // every share reaches its half circle together: (π/2 − 1) of the total, a hair inside
-  return largest_clear_extra((0.5 * kPi - 1.0) * total * (1.0 - 1e-9), total, clear);
+  // every share reaches its half circle together: (π/2 − 1) of the total; then the catenaries
+  return largest_clear_sag((0.5 * kPi - 1.0) * total, kCatenaryMostExtra * total, total, clear);
 }
 
 namespace {
@@ -631,10 +773,11 @@ struct LeadInReach {
 // a wheel's wrap (clockwise on the back: its angles the other way round), a sagging span's arc, a
 // straight span
 double piece_gap(const PathPiece& q, double x, double y) {
-  return q.arc   ? arc_distance(x, y, q.cx, q.cy, q.radius, std::min(q.from, q.to),
-                                std::max(q.from, q.to))
-         : q.sag ? arc_distance(x, y, q.cx, q.cy, q.radius, q.from, q.to)
-                 : segment_distance(x, y, q.x0, q.y0, q.x1, q.y1);
+  return q.arc        ? arc_distance(x, y, q.cx, q.cy, q.radius, std::min(q.from, q.to),
+                                     std::max(q.from, q.to))
+         : q.catenary ? catenary_distance(q, x, y, 0.0, q.length)
+         : q.sag      ? arc_distance(x, y, q.cx, q.cy, q.radius, q.from, q.to)
+                      : segment_distance(x, y, q.x0, q.y0, q.x1, q.y1);
 }
 
 LeadInReach lead_in_reach(const BeltPath& path, const Guide& rail, const Guide& arc,
@@ -649,8 +792,13 @@ LeadInReach lead_in_reach(const BeltPath& path, const Guide& rail, const Guide& 
     const PathPiece& q = path.pieces[k];
     for (int j = 0; !q.arc && !carried[k] && j <= 256; ++j) {
       const double a = q.from + (q.to - q.from) * j / 256.0;
-      const double x = q.sag ? q.cx + q.radius * std::cos(a) : q.x0 + (q.x1 - q.x0) * j / 256.0;
-      const double y = q.sag ? q.cy + q.radius * std::sin(a) : q.y0 + (q.y1 - q.y0) * j / 256.0;
+      const PathPoint on = q.catenary ? sag_point(q, q.length * j / 256.0) : PathPoint{};
+      const double x = q.catenary ? on.x
+                       : q.sag    ? q.cx + q.radius * std::cos(a)
+                                  : q.x0 + (q.x1 - q.x0) * j / 256.0;
+      const double y = q.catenary ? on.y
+                       : q.sag    ? q.cy + q.radius * std::sin(a)
+                                  : q.y0 + (q.y1 - q.y0) * j / 256.0;
       carried[k] = segment_distance(x, y, rail.x0, rail.y0, rail.x1, rail.y1) < roller;
     }
   }
@@ -697,8 +845,9 @@ LeadInReach lead_in_reach(const BeltPath& path, const Guide& rail, const Guide& 
   for (std::size_t k = 0; k < path.pieces.size(); ++k) {
     const PathPiece& q = path.pieces[k];
     if (carried[k]) continue;
-    if (!(q.arc || q.sag ? near_circle(q.cx, q.cy, q.radius) : near_box(q.x0, q.y0, q.x1, q.y1)))
-      continue;
+    double bx0 = q.x0, by0 = q.y0, bx1 = q.x1, by1 = q.y1;
+    if (q.sag) sag_box(q, bx0, by0, bx1, by1);
+    if (!(q.arc ? near_circle(q.cx, q.cy, q.radius) : near_box(bx0, by0, bx1, by1))) continue;
     out.pieces.push_back(k);
     // (the arc's first sample is the rail's end: a hair below it, for its rounding)
     const double end = piece_gap(q, ex, ey);
@@ -850,8 +999,17 @@ double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces,
   // the secant missed (it cycles where the miss bends sharply, e.g. 344 links on a notched path):
   // bisection between `least`, where the miss is not negative, and the half circle
   double lo = least, hi = most;
-  const double at_lo = miss(lo), at_hi = miss(hi);
-  if (at_hi > 0.0) return INFINITY;  // the walk overshoots even at the half circle
+  double at_lo = miss(lo), at_hi = miss(hi);
+  if (at_hi > 0.0) {
+    // the walk overshoots even at the half circle: the catenaries beyond it, up to the longest
+    // (a span that cannot hang as one, an upper run: refused as before)
+    lo = std::max(least, (0.5 * kPi - 1.0) * spans * (1.0 + 1e-9));
+    hi = kCatenaryMostExtra * spans * (1.0 - 1e-9);  // a hair inside, as the half circle
+    at_lo = miss(lo);
+    if (!std::isfinite(at_lo)) return INFINITY;
+    at_hi = miss(hi);
+    if (at_hi > 0.0) return INFINITY;  // overshoots even at the longest catenary
+  }
   if (!(at_lo >= 0.0 && at_hi <= 0.0)) return NAN;
   for (int it = 0; it < 200; ++it) {
     const double mid = 0.5 * (lo + hi);
