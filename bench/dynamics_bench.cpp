@@ -184,4 +184,55 @@ BENCHMARK(BM_DynamicsConveyorGuidesEveryNode)
     ->Unit(benchmark::kMicrosecond)
     ->MinTime(2.0);
 
+// The seats' law on examples/dynamics_12B.toml's drive (docs/models/dynamics.md, "Contact law"):
+// 32 links of 12B (5e7 N/m, 100 N·s/m, pretension 950 N) over two z = 12 wheels 10 pitches apart,
+// the driver at 13 rad/s, the driven wheel J = 0.01 kg·m² against 10 N·m, c_c = 800 N·s/m,
+// θ = 0.6, h = 1e-4 s, the example's 5000 steps from the seated start. Argument 0: the linear
+// penalty at the Hertz default's secant (k_c = Q0/δ(Q0), Q0 = T_L/R + pretension); 1: the line
+// law; 2: the linear penalty at the example's k_c = 2e8 N/m. Counters: Newton iterations a step
+// and the deepest seat.
+void BM_DynamicsExampleDriveSeatLaw(benchmark::State& bs) {
+  constexpr int kTeeth = 12, kSpan = 10;
+  constexpr double kOmega = 13.0, kWidth = 0.01168, kLoad = 10.0, kPretension = 950.0;
+  const auto n = static_cast<std::size_t>(kTeeth + 2 * kSpan);
+  Model m = uniform_chain(n, true, kPitch - kPretension / kStiffness, 1.25 * kPitch, kStiffness,
+                          100.0, false);
+  m.sprockets = testing::equal_wheels({.teeth = kTeeth,
+                                       .span = kSpan,
+                                       .omega = kOmega,
+                                       .inertia = 0.01,
+                                       .load = kLoad,
+                                       .contact_damping = 800.0});
+  const double q0 = kLoad / m.sprockets[0].pitch_radius + kPretension;
+  const double secant =
+      q0 / catena::contact::slice_approach(seat_line_contact(m.sprockets[0], kWidth), q0 / kWidth);
+  for (Sprocket& w : m.sprockets) {
+    if (bs.range(0) != 2) w.contact_stiffness = secant;
+    if (bs.range(0) == 1) use_line_law(w, kWidth);
+  }
+  State s = two_sprocket_loop(kTeeth, kSpan, kPitch, m.sprockets[0].pitch_radius, kOmega);
+  Integrator integ(m, {.step = 1e-4, .theta = 0.6});
+  long iterations = 0, steps = 0;
+  double penetration = 0.0;
+  for (auto _ : bs) {
+    const StepReport rep = integ.step(m, s);
+    if (!rep.converged) {
+      bs.SkipWithError("step did not converge");
+      break;
+    }
+    iterations += rep.iterations;
+    penetration = std::max(penetration, rep.max_penetration);
+    ++steps;
+  }
+  bs.counters["newton_iterations"] =
+      benchmark::Counter(static_cast<double>(iterations) / static_cast<double>(steps));
+  bs.counters["max_penetration_um"] = 1e6 * penetration;
+}
+BENCHMARK(BM_DynamicsExampleDriveSeatLaw)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMicrosecond)
+    ->Iterations(5000);
+
 }  // namespace

@@ -5,6 +5,7 @@
 // opens linearly along s: g(s) = s·tan φ (the measuring device's Δh over the base B).
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -83,5 +84,31 @@ SliceResult slice_model(const RollerTooth& c, double load, double skew,
 
 /// [m] plane-strain approach δ(q) of the slice law above.
 double slice_approach(const RollerTooth& c, double load_per_length);
+
+/// The plane-strain line contact's approach as a law of the load per length q (Johnson 1985,
+/// eq. 5.36 form; docs/models/dynamics.md, "Contact law"): δ(q) = (q/π)·Σ(1 − ν²)/E·(2 ln(4R_ref/b)
+/// − 1), b = √(4qρ/(πE*)), R_ref = d1/2, which is δ(q) = A q (C − ln q) with A = Σ(1 − ν²)/E / π
+/// and C = 2 ln(4R_ref) − ln(4ρ/(πE*)) − 1. It increases while dδ/dq = A (C − ln q − 1) > 0,
+/// i.e. for q < max_load() = e^(C−1) (b < 4R_ref/e). slice_approach evaluates it.
+struct LineApproach {
+  double e_star = 0.0;      ///< [Pa] E*
+  double rho = 0.0;         ///< [m] the reduced radius ρ
+  double r_ref = 0.0;       ///< [m] R_ref
+  double compliance = 0.0;  ///< [1/Pa] Σ(1 − ν²)/E over both bodies
+  double a = 0.0;           ///< [m²/N] A
+  double c = 0.0;           ///< C (q in N/m)
+  /// [m] δ(q); 0 for q ≤ 0
+  double approach(double q) const;
+  /// [m²/N] dδ/dq
+  double slope(double q) const { return a * (c - std::log(q) - 1.0); }
+  /// [N/m] the q at which δ stops increasing
+  double max_load() const { return std::exp(c - 1.0); }
+  /// [N/m] the inverse: q with δ(q) = delta, for 0 ≤ delta < δ(max_load()) (Newton in ln q,
+  /// bracketed, no allocation); 0 for delta ≤ 0, NaN beyond the increasing branch
+  double load(double delta) const;
+  /// [J/m] ∫₀^δ(q) q dδ = A q² ((C − ln q)/2 − 1/4), the elastic energy per length at q
+  double energy(double q) const;
+};
+LineApproach line_approach(const RollerTooth& c);
 
 }  // namespace catena::contact

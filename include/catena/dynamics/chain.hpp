@@ -12,6 +12,7 @@
 #include <span>
 #include <vector>
 
+#include "catena/contact/roller_tooth.hpp"
 #include "catena/core/error.hpp"
 #include "catena/dynamics/hinge_friction.hpp"
 
@@ -19,8 +20,9 @@ namespace catena::dynamics {
 
 /// A rigid sprocket: its rollers' seats on the ISO 606 tooth form (seat i's centre on the pitch
 /// circle at the angle ψ + 2π i/z, the seating arc of radius ri about it). Roller–seat contact is a
-/// unilateral linear penalty with damping. A driver turns at a prescribed speed; a driven wheel
-/// has inertia and a constant load torque against counter-clockwise rotation.
+/// unilateral linear penalty with damping (or, with line_law, the Hertz line contact's law). A
+/// driver turns at a prescribed speed; a driven wheel has inertia and a constant load torque
+/// against counter-clockwise rotation.
 struct Sprocket {
   double centre_x = 0.0;       ///< [m]
   double centre_y = 0.0;       ///< [m]
@@ -45,6 +47,13 @@ struct Sprocket {
   /// and the damping ramps in over the same ε, so that the force is C¹ at first touch (Newton
   /// does not cycle on a roller touching and leaving its seat within one step)
   double contact_smoothing = 1e-6;
+  /// The seats' elastic law (docs/models/dynamics.md, "Contact law"). false: the linear penalty
+  /// above. true: the Hertz line contact `line` over the width `line_width` (b1): the force Q(g)
+  /// with δ(Q/b1) = g, up to the cap line_cap(), beyond it the tangent there; contact_stiffness
+  /// then serves only a take-up's end stops (slide_stop). The damping is the same in both.
+  bool line_law = false;
+  contact::LineApproach line;
+  double line_width = 0.0;   ///< [m] b1
   bool driver = false;       ///< prescribed speed (true) or inertia + load (false)
   double speed = 0.0;        ///< [rad/s] a driver's speed, counter-clockwise positive
   double inertia = 0.0;      ///< [kg·m²] a driven wheel's moment of inertia
@@ -517,10 +526,28 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
 /// pocket: on a contact `c` whose normal (c.nx, c.ny) is set, at penetration g > 0, with
 /// r = q − centre and the roller's velocity v, sets force, stiffness ∂f/∂g, damping, energy,
 /// damping power, torque, penetration and `active` — f = k_c (g − ε/2) with the C¹ ramp
-/// k_c g²/2ε over the first ε, damping c_c ġ ramped in over ε (ġ relative to the wheel), never
-/// pulling.
+/// k_c g²/2ε over the first ε (with `line_law` the line contact's Q(g), line_force), damping c_c ġ
+/// ramped in over ε (ġ relative to the wheel), never pulling.
 void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx, double vy,
                     double speed, SeatContact& c);
+
+/// The roller in an ISO seat as a line contact (docs/models/dynamics.md, "Contact stiffness
+/// default"): the roller d1 = 2 r in the seating arc ri (concave), over the inner width b1,
+/// steel on steel. The Hertz default's secant and the line law both evaluate its approach.
+contact::RollerTooth seat_line_contact(const Sprocket& w, double width);
+/// [N/m] The line law's cap: the load per length e^(C−2) at which dδ/dq has fallen to A
+/// (b = 4R_ref/e^(3/2), 0.37 of the branch's end e^(C−1)); beyond it the seat law continues along
+/// the tangent there.
+double line_cap(const contact::LineApproach& l);
+/// The line law's elastic part at penetration g ≥ 0 on a wheel with `line_law`: force [N],
+/// ∂force/∂g [N/m] and energy [J].
+struct LineForce {
+  double force = 0.0, stiffness = 0.0, energy = 0.0;
+};
+LineForce line_force(const Sprocket& w, double g);
+/// Turns an ISO wheel's seats to the line law over the inner width b1 = `width` (line_law,
+/// line_width, line from seat_line_contact).
+void use_line_law(Sprocket& w, double width);
 
 /// One joint's contact with the nearest pocket of a pocket wheel (`Sprocket::pocket`), found in
 /// O(1) from the joint's angle about the centre. The pocket holds the joint at its vertex C: with

@@ -82,17 +82,52 @@ double load_factor(double gamma, double skew, double skew_factor) {
   return 1.0 + gamma * arcmin * arcmin;
 }
 
-double slice_approach(const RollerTooth& c, double q) {
-  if (q <= 0.0) return 0.0;
-  const double e_star = contact_modulus(c.roller, c.tooth);
-  const double b = std::sqrt(4.0 * q * reduced_radius(c) / (kPi * e_star));
-  const double r_ref = 0.5 * c.roller_diameter;
-  const double log_term = 2.0 * std::log(4.0 * r_ref / b) - 1.0;
-  double sum = 0.0;
+LineApproach line_approach(const RollerTooth& c) {
+  LineApproach l;
+  l.e_star = contact_modulus(c.roller, c.tooth);
+  l.rho = reduced_radius(c);
+  l.r_ref = 0.5 * c.roller_diameter;
   for (const Elastic* e : {&c.roller, &c.tooth})
-    sum += (1.0 - e->poisson * e->poisson) / e->modulus;
-  return q / kPi * sum * log_term;
+    l.compliance += (1.0 - e->poisson * e->poisson) / e->modulus;
+  // 2 ln(4R_ref/b) = 2 ln(4R_ref) − ln(4ρ/(πE*)) − ln q
+  l.a = l.compliance / kPi;
+  l.c = 2.0 * std::log(4.0 * l.r_ref) - std::log(4.0 * l.rho / (kPi * l.e_star)) - 1.0;
+  return l;
 }
+
+double LineApproach::approach(double q) const {
+  if (q <= 0.0) return 0.0;
+  const double b = std::sqrt(4.0 * q * rho / (kPi * e_star));
+  const double log_term = 2.0 * std::log(4.0 * r_ref / b) - 1.0;
+  return q / kPi * compliance * log_term;
+}
+
+double LineApproach::load(double delta) const {
+  if (!(delta > 0.0)) return 0.0;
+  // f(u) = u + ln(C − u) − ln(δ/A), u = ln q: increasing and concave on u < C − 1, so a Newton
+  // step from anywhere there lands at or left of the root and the iterates then rise to it
+  // monotonically; a step past the bracket's top C − 1 is halved back into it
+  const double target = std::log(delta / a), top = c - 1.0;
+  if (!(target < top)) return NAN;  // δ(e^top) = A e^top is the branch's largest approach
+  double u = std::min(target - std::log(std::max(c - target, 1.0)), top - 1.0);
+  for (int it = 0; it < 60; ++it) {
+    const double f = u + std::log(c - u) - target;
+    const double step = f / (1.0 - 1.0 / (c - u));
+    double next = u - step;
+    if (!(next < top)) next = 0.5 * (u + top);
+    const bool done = std::abs(next - u) <= 1e-14 * std::max(1.0, std::abs(u));
+    u = next;
+    if (done) break;
+  }
+  return std::exp(u);
+}
+
+double LineApproach::energy(double q) const {
+  if (q <= 0.0) return 0.0;
+  return a * q * q * (0.5 * (c - std::log(q)) - 0.25);
+}
+
+double slice_approach(const RollerTooth& c, double q) { return line_approach(c).approach(q); }
 
 namespace {
 // Largest load per length for which δ(q) still increases: b = 4R_ref/e (beyond it the

@@ -119,6 +119,11 @@ std::vector<Parameter> table_fields() {
       text("positions",
            "true to add every node's x and y at each output sample to the JSON (default false; "
            "at most 500000 node-samples)"),
+      // the seats' elastic law (docs/models/dynamics.md, "Contact law")
+      text("contact_law",
+           "the ISO seats' elastic law: linear (the penalty contact_stiffness, the default) or "
+           "line (the Hertz line contact's approach law, followed in load; no contact_stiffness; "
+           "not with wheel = \"pocket\")"),
       // the round-link chain on pocket wheels (docs/models/dynamics.md, "Pocket wheel")
       text("wheel",
            "iso606 (roller chain on ISO 606 sprockets, the default) or pocket (round-link chain "
@@ -366,6 +371,8 @@ struct Setup {
   std::string hinge = "frictionless";  // frictionless, sliding or rolling
   HingeFriction hinge_law;             // arm 0 when frictionless
   bool positions = false;              // positions {x, y} in the output
+  // contact_law = "line": the ISO seats follow the Hertz line contact's approach law
+  bool line_law = false;
   // contact_stiffness omitted: the Hertz default (hertz_seat_stiffness) at this load [N]
   bool hertz_stiffness = false;
   double expected_load = NAN;
@@ -381,12 +388,7 @@ struct Setup {
 double hertz_seat_stiffness(double pitch, double roller, double width, int teeth, double load) {
   try {
     const Sprocket probe = iso606_sprocket(pitch, roller, width, teeth, 0.0, 0.0, 1.0, 0.0);
-    contact::RollerTooth c;
-    c.roller_diameter = roller;
-    c.roller_length = width;
-    c.tooth_radius = probe.seat_radius;
-    c.profile = contact::Profile::kConcave;
-    const double delta = contact::slice_approach(c, load / width);
+    const double delta = contact::slice_approach(seat_line_contact(probe, width), load / width);
     return delta > 0.0 && std::isfinite(delta) ? load / delta : NAN;
   } catch (const InputError&) {
     return NAN;
@@ -1149,6 +1151,7 @@ Setup parse(const analysis::Inputs& in) {
   bool slack_spans_bad = false;       // a slack_spans value refused (not quoted again below)
   bool positions = false;
   std::string wheel = "iso606";
+  bool line_law = false;  // contact_law = "line"
   for (const Entry& v : file.table) {
     if (v.path.rfind("dynamics.", 0) != 0) continue;  // the rest of a case file is not ours
     std::smatch m;
@@ -1302,6 +1305,14 @@ Setup parse(const analysis::Inputs& in) {
       }
       continue;
     }
+    if (key == "contact_law") {
+      line[key] = v.line;
+      if (v.is_string && (v.text == "linear" || v.text == "line"))
+        line_law = v.text == "line";
+      else
+        issues.push_back({where(v), "'" + v.text + "'", "linear or line"});
+      continue;
+    }
     if (key == "wheel") {
       line[key] = v.line;
       if (v.is_string && (v.text == "iso606" || v.text == "pocket"))
@@ -1350,6 +1361,16 @@ Setup parse(const analysis::Inputs& in) {
 
   Setup s;
   s.pocket = wheel == "pocket";
+  s.line_law = line_law;
+  if (line_law && s.pocket)
+    issues.push_back({at("contact_law"), "'line'",
+                      "linear with wheel = \"pocket\" (the line law is the roller in an ISO "
+                      "seat; a round link's joint in its pocket keeps the penalty)"});
+  if (line_law && !s.pocket && line.count("contact_stiffness"))
+    issues.push_back({at("contact_stiffness"), "(given)",
+                      "no contact_stiffness with contact_law = \"line\" (the seats' stiffness "
+                      "follows the load; the guides and the take-up's stops take the Hertz "
+                      "secant, or a guide's own contact_stiffness)"});
   // a round-link chain on pocket wheels: no catalogue, no roller; the keys of the roller chain
   // and the parts not built for a pocket are refused, each by name
   if (s.pocket) {
@@ -1686,6 +1707,18 @@ Setup parse(const analysis::Inputs& in) {
                         "an expected seat load load_torque/R + pretension > 0 that the line "
                         "contact's approach law covers; here " +
                             shown(s.expected_load) + " N)"});
+  }
+  // contact_law = "line": the expected seat load within the law's range (the cap, line_cap)
+  if (s.line_law && !std::isnan(s.contact_stiffness) && s.expected_load > 0.0) {
+    const Sprocket probe =
+        iso606_sprocket(s.pitch, s.roller, s.width, probe_teeth, 0.0, 0.0, 1.0, 0.0);
+    const double cap =
+        s.width * line_cap(contact::line_approach(seat_line_contact(probe, s.width)));
+    if (!(s.expected_load < cap))
+      issues.push_back({at("contact_law"), "'line'",
+                        "an expected seat load load_torque/R + pretension = " +
+                            shown(s.expected_load) + " N below the line law's cap " + shown(cap) +
+                            " N (b = 4R_ref/e^1.5), or contact_law = \"linear\""});
   }
   check_scales(s, wheels, at, in.present("step") ? std::string("step") : at("step"), issues);
   s.gravity = gravity;
@@ -2186,6 +2219,11 @@ bool any_seat_friction(const Setup& d) {
   return d.seat_friction > 0.0;
 }
 
+// contact_law = "line": the ISO seats' line law, the roller d1 in the seat over the inner width b1
+void set_seat_law(const Setup& d, Sprocket& s) {
+  if (d.line_law) use_line_law(s, d.width);
+}
+
 // The free layout's wheels at their centres, and the loop's start on the belt path: every node
 // at the driver's pitch-line speed, each wheel at that speed over its pitch radius (the driver at
 // exactly its own).
@@ -2194,6 +2232,7 @@ std::vector<Sprocket> layout_sprockets(const Setup& d) {
   for (const LayoutWheel& w : d.wheels) {
     Sprocket s = iso606_sprocket(d.pitch, d.roller, d.width, w.teeth, w.x, w.y, d.contact_stiffness,
                                  d.contact_damping);
+    set_seat_law(d, s);
     s.friction = wheel_mu(d, wheels.size());
     // a wheel on the back of the chain turns clockwise: the driver's speed and the driven
     // wheel's load (against its turning) change sign
@@ -2356,6 +2395,7 @@ Result run(const analysis::Inputs& in) {
                                          d.clearance, d.contact_stiffness, d.contact_damping)
                           : iso606_sprocket(d.pitch, d.roller, d.width, z, w == 0 ? 0.0 : centre,
                                             0.0, d.contact_stiffness, d.contact_damping);
+    if (!d.pocket) set_seat_law(d, s);
     s.friction = wheel_mu(d, w);
     if (w == d.driver) {
       s.driver = true;
@@ -2766,6 +2806,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["pitch_radius"] = d.pocket_radius;
     j["pocket_angle"] = d.pocket_angle;
   }
+  // the seats' law only when not the linear one
+  if (d.line_law) j["contact_law"] = "line";
   // contact_stiffness omitted: the Hertz default used and its linearisation load
   if (d.hertz_stiffness) {
     j["contact_stiffness"] = d.contact_stiffness;

@@ -173,6 +173,15 @@ std::vector<Issue> validate(const Model& model) {
                        "a length in (0, roller radius]"});
       }
     }
+    if (s.line_law) {
+      if (s.pocket)
+        out.push_back({f + "line_law", "on a pocket wheel", "the linear law on a pocket wheel"});
+      check::finite_positive(out, (f + "line_width").c_str(), s.line_width, "m");
+      if (!(s.line.a > 0.0 && std::isfinite(s.line.a) && std::isfinite(s.line.c) &&
+            std::isfinite(line_cap(s.line)) && line_cap(s.line) > 0.0))
+        out.push_back({f + "line", "(constants)",
+                       "a line contact with finite A > 0 and C (line_approach of the seat)"});
+    }
     if (!std::isfinite(s.contact_damping) || s.contact_damping < 0.0) {
       out.push_back({f + "contact_damping", check::format_si(s.contact_damping, "N*s/m"),
                      "a finite value >= 0 N*s/m"});
@@ -603,15 +612,60 @@ std::array<std::size_t, 2> span_middle_links(const State& state, double centre_d
   return link;
 }
 
+contact::RollerTooth seat_line_contact(const Sprocket& w, double width) {
+  contact::RollerTooth c;
+  c.roller_diameter = 2.0 * w.roller_radius;
+  c.roller_length = width;
+  c.tooth_radius = w.seat_radius;
+  c.profile = contact::Profile::kConcave;
+  return c;
+}
+
+double line_cap(const contact::LineApproach& l) { return std::exp(l.c - 2.0); }
+
+LineForce line_force(const Sprocket& w, double g) {
+  LineForce f;
+  if (!(g > 0.0)) return f;
+  const contact::LineApproach& l = w.line;
+  const double b1 = w.line_width, q_cap = line_cap(l), g_cap = l.approach(q_cap);
+  if (g < g_cap) {
+    const double q = l.load(g);
+    f.force = b1 * q;
+    f.stiffness = b1 / l.slope(q);  // → 0 at first touch (dδ/dq grows as −A ln q)
+    f.energy = b1 * l.energy(q);
+    return f;
+  }
+  // beyond the cap: the tangent at it (C¹), its energy the trapezoid added to the cap's
+  const double k = b1 / l.slope(q_cap), s = g - g_cap, f_cap = b1 * q_cap;
+  f.force = f_cap + k * s;
+  f.stiffness = k;
+  f.energy = b1 * l.energy(q_cap) + f_cap * s + 0.5 * k * s * s;
+  return f;
+}
+
+void use_line_law(Sprocket& w, double width) {
+  w.line_law = true;
+  w.line_width = width;
+  w.line = contact::line_approach(seat_line_contact(w, width));
+}
+
 void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx, double vy,
                     double speed, SeatContact& c) {
   // rate of penetration: the roller's velocity relative to the wheel's material point under it
   const double rate = (vx + speed * ry) * c.nx + (vy - speed * rx) * c.ny;
   const double eps = w.contact_smoothing, kc = w.contact_stiffness;
-  const double elastic = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
-  c.stiffness = g < eps ? kc * g / eps : kc;
-  c.energy =
-      g < eps ? kc * g * g * g / (6.0 * eps) : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
+  double elastic = 0.0;
+  if (w.line_law) {
+    const LineForce lf = line_force(w, g);
+    elastic = lf.force;
+    c.stiffness = lf.stiffness;
+    c.energy = lf.energy;
+  } else {
+    elastic = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
+    c.stiffness = g < eps ? kc * g / eps : kc;
+    c.energy = g < eps ? kc * g * g * g / (6.0 * eps)
+                       : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
+  }
   c.damping = w.contact_damping * std::min(1.0, g / eps);
   c.force = std::max(0.0, elastic + c.damping * rate);
   // ∂f/∂g: the elastic slope, and the damping's ramp over the first ε
