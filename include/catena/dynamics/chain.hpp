@@ -194,6 +194,13 @@ struct Guide {
   /// [kg/m] q_L: conveyed material riding on the chain along the rail, straight or arc (docs/
   /// models/dynamics.md, "A conveyed load"; rail_load); 0, the default: none.
   double load_per_metre = 0.0;
+  /// [N/m] k_t: sticking (docs/models/dynamics.md, "Guides: sticking"). 0, the default: the
+  /// regularised friction above. > 0 (a straight guide only): each roller in contact carries an
+  /// anchor a (State::stick_anchor) and the friction is the elasto-plastic spring
+  /// f_t = −clamp(k_t (s − a), −μ f, μ f), s the roller's position along t; while the spring's
+  /// force is below μ f the roller sticks (no creep), beyond it slides at μ f and the anchor
+  /// follows (updated once per accepted step, update_stick_anchors).
+  double stick_stiffness = 0.0;
 };
 
 /// The largest Guide::load_per_metre validate accepts [kg/m].
@@ -212,8 +219,11 @@ struct GuideContact {
   /// [W] the power of the normal force's damping part on the roller, −(f − f_el) ġ ≤ 0 (f_el the
   /// elastic part; with f clamped at 0 the damper cancels f_el): the contact damper's dissipation
   double damping_power = 0.0;
-  double nx = 0.0, ny = 0.0;    ///< unit normal to the free side
-  double fx = 0.0, fy = 0.0;    ///< [N] F
+  /// [m] s = (q − P₀)·t: a straight rail's tangential position (0 on an arc)
+  double position = 0.0;
+  bool sticking = false;      ///< the stick spring holds (|k_t (s − a)| ≤ μ f; stick law only)
+  double nx = 0.0, ny = 0.0;  ///< unit normal to the free side
+  double fx = 0.0, fy = 0.0;  ///< [N] F
   double dq[4] = {0, 0, 0, 0};  ///< [N/m] ∂F/∂q
   double dv[4] = {0, 0, 0, 0};  ///< [N·s/m] ∂F/∂v
 };
@@ -229,6 +239,19 @@ GuideFrame guide_frame(const Guide& g);
 /// bit.
 GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
                            double vy);
+/// guide_contact with the stick law (Guide::stick_stiffness > 0 on a straight rail) about the
+/// anchor a [m] along t: the friction is −clamp(k_t (s − a), −μ f, μ f) instead of the
+/// regularised law, and its derivatives enter dq and dv. A NaN anchor, k_t = 0 or an arc: the
+/// regularised contact above, bit for bit.
+GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
+                           double vy, double anchor);
+/// [m] s = (q − P₀)·t, the tangential position on a straight rail from its first end
+/// (t = (−n_y, n_x) = −u, u the direction from the first end to the second); 0 on an arc.
+double guide_position(const Guide& g, const GuideFrame& frame, double x, double y);
+/// The anchor after a step whose contact (at the step's θ point, about the anchor `anchor`) was
+/// `c`: unchanged while the spring holds, else moved so that k_t |s − a| = μ f (the slip). NaN
+/// (released) when the contact is inactive or carries no normal force.
+double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor);
 /// A rail's load (Guide::load_per_metre q_L) on one node at q (dynamics.md, "A conveyed load"):
 /// F = q_L p g w(s), g the gravity, p the pitch, s the node's place along the rail from its first
 /// end (straight: (q − P₀)·u; arc: ρ_c φ, φ its angle from the start, ρ_c = R ± r the rollers'
@@ -371,9 +394,11 @@ struct State {
   std::vector<double> vx, vy;  ///< [m/s] node velocities
   std::vector<double> angle;   ///< [rad] per sprocket: ψ, the angle of seat 0
   std::vector<double> speed;   ///< [rad/s] per sprocket
-  double friction_work = 0.0;  ///< [J] work of the guides' friction on the chain so far (≤ 0)
-  double damper_work = 0.0;    ///< [J] work of the links' dampers so far (≤ 0 at θ = ½)
-  double drag_work = 0.0;      ///< [J] work of the drag −α m v so far (≤ 0)
+  /// [J] work of the guides' friction on the chain so far (≤ 0); with the stick law minus the
+  /// spring–sliders' dissipation (their springs' energy is in Energy::elastic)
+  double friction_work = 0.0;
+  double damper_work = 0.0;  ///< [J] work of the links' dampers so far (≤ 0 at θ = ½)
+  double drag_work = 0.0;    ///< [J] work of the drag −α m v so far (≤ 0)
   /// [J] work of the seats' and guides' contact dampers so far (≤ 0)
   double contact_damping_work = 0.0;
   double seat_friction_work = 0.0;  ///< [J] work of the seats' friction so far (≤ 0)
@@ -388,6 +413,10 @@ struct State {
   /// (Sprocket::pocket_release), set at the start and end of each step where the joint is within
   /// a mouth (update_held), cleared when its released contact's force is 0
   std::vector<int> held_wheel, held_pocket;
+  /// [m] per guide g and node i at [g·N + i]: the stick law's anchor a along the rail
+  /// (Guide::stick_stiffness; NaN: not in contact). Empty until a step on a model with a sticking
+  /// guide sizes it (once); set at the end of each step from the contact at its θ point.
+  std::vector<double> stick_anchor;
   explicit State(std::size_t nodes = 0, std::size_t sprockets = 0)
       : x(nodes),
         y(nodes),
@@ -410,7 +439,7 @@ struct Energy {
   /// [J] Σ ½ m v² + Σ ½ J ω² (driven sprockets) + Σ ½ m_t ṡ² (take-ups)
   double kinetic = 0.0;
   /// [J] Σ ½ k (l − p)² (a tension-only link: link_force's E) + the seat and guide contacts'
-  /// energies + Σ ½ k_t s² (take-ups)
+  /// energies + Σ ½ k_t s² (take-ups) + Σ ½ k_t (s − a)² (the guides' stick springs)
   double elastic = 0.0;
   /// [J] −Σ m g·x − Σ f·x (gravity and node loads) − Σ (F₀ + m_t g·e) s (take-ups)
   double potential = 0.0;

@@ -157,6 +157,10 @@ std::vector<Parameter> guide_fields() {
       number("friction", "Coulomb friction coefficient mu in [0, 1] (default 0)"),
       quantity("friction_band", K::kSpeed,
                "speed band of the regularised friction, in (0, 1] m/s (default 1 mm/s)"),
+      quantity("stick_stiffness", K::kForcePerLength,
+               "straight: the stick law's tangential spring k_t [N/m], >= 0: a roller holds "
+               "until its force reaches mu times the normal force (default 0: the regularised "
+               "friction, which creeps at rest)"),
       quantity("load_per_metre", K::kMassPerLength,
                "conveyed material riding on the chain along the rail, kg/m in [0, " +
                    check::format_si(kMaxRailLoad, "") +
@@ -1885,6 +1889,7 @@ Setup parse(const analysis::Inputs& in) {
     guide.friction = get("friction", 0.0);
     guide.friction_band = get("friction_band", 1e-3);
     guide.load_per_metre = get("load_per_metre", 0.0);
+    guide.stick_stiffness = get("stick_stiffness", 0.0);
     // a load's weight is q_L g: without gravity it would do nothing, silently
     if (guide.load_per_metre > 0.0 && !(s.gravity > 0.0))
       issues.push_back({field("load_per_metre"), shown(guide.load_per_metre) + " kg/m",

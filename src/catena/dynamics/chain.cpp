@@ -269,6 +269,13 @@ std::vector<Issue> validate(const Model& model) {
       out.push_back(
           {f + "friction_band", check::format_si(g.friction_band, "m/s"), "a speed in (0, 1] m/s"});
     }
+    if (!std::isfinite(g.stick_stiffness) || !(g.stick_stiffness >= 0.0)) {
+      out.push_back({f + "stick_stiffness", check::format_si(g.stick_stiffness, "N/m"),
+                     "a finite stiffness >= 0 N/m (0: the regularised friction)"});
+    } else if (g.stick_stiffness > 0.0 && g.kind != Guide::Kind::kStraight) {
+      out.push_back({f + "stick_stiffness", check::format_si(g.stick_stiffness, "N/m"),
+                     "0 on an arc guide: sticking is built on straight guides only"});
+    }
     if (!std::isfinite(g.load_per_metre) || !(g.load_per_metre >= 0.0) ||
         !(g.load_per_metre <= kMaxRailLoad)) {
       out.push_back({f + "load_per_metre", check::format_si(g.load_per_metre, "kg/m"),
@@ -358,7 +365,8 @@ std::vector<Guide> lead_in_arcs(const Guide& rail, const LeadIn& lead) {
     g.start_angle = from;
     g.end_angle = to;
     g.inside = false;
-    g.load_per_metre = 0.0;  // the rail's load is the rail's (an arc carries none)
+    g.load_per_metre = 0.0;   // the rail's load is the rail's (an arc carries none)
+    g.stick_stiffness = 0.0;  // an arc's friction is the regularised law (sticking: straight only)
     out.push_back(g);
   };
   if (lead.at_start) arc(rail.x0, rail.y0, up, up + lead.angle);
@@ -432,6 +440,26 @@ GuideContact guide_contact(const Guide& gd, double x, double y, double vx, doubl
 
 GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, double y, double vx,
                            double vy) {
+  return guide_contact(gd, frame, x, y, vx, vy, NAN);
+}
+
+double guide_position(const Guide& g, const GuideFrame& frame, double x, double y) {
+  if (g.kind != Guide::Kind::kStraight) return 0.0;
+  return -((x - g.x0) * frame.ux + (y - g.y0) * frame.uy);
+}
+
+double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor) {
+  if (!c.active || !(c.normal_force > 0.0)) return NAN;  // off the rail or lifting: released
+  if (!std::isfinite(anchor)) return c.position;         // first touch: it sticks where it is
+  // the spring's reach μ f/k_t: beyond it the anchor follows the roller (the slip)
+  const double reach = g.friction * std::max(c.normal_force, 0.0) / g.stick_stiffness;
+  const double d = c.position - anchor;
+  if (std::abs(d) <= reach) return anchor;
+  return c.position - std::copysign(reach, d);
+}
+
+GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, double y, double vx,
+                           double vy, double anchor) {
   GuideContact c;
   const double r = gd.roller_radius;
   double g = 0.0, kappa = 0.0, nx = 0.0, ny = 0.0;
@@ -474,6 +502,9 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   c.nx = nx;
   c.ny = ny;
   c.slip = vt;
+  const bool stick =
+      gd.stick_stiffness > 0.0 && gd.kind == Guide::Kind::kStraight && std::isfinite(anchor);
+  if (stick) c.position = guide_position(gd, frame, x, y);
   c.energy =
       g < eps ? kc * g * g * g / (6.0 * eps) : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
   const double f = elastic + cg * rate;
@@ -486,6 +517,39 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   const double fg = slope + dcg * rate;
   const double dfq[2] = {-fg * nx - cg * kappa * vt * tx, -fg * ny - cg * kappa * vt * ty};
   const double dfv[2] = {-cg * nx, -cg * ny};
+  if (stick) {
+    // the stick law on a straight rail (κ = 0, t fixed): f_t = −k_t (s − a) while that is within
+    // ±μ f (∂s/∂q = tᵀ), else −μ f sgn(s − a) (sliding, the spring at its reach)
+    const double mu = gd.friction, kt = gd.stick_stiffness, d = c.position - anchor;
+    const double spring = -kt * d;
+    double dftq[2] = {0.0, 0.0}, dftv[2] = {0.0, 0.0};
+    double ft = spring;
+    if (std::abs(spring) <= mu * f) {
+      c.sticking = true;
+      dftq[0] = -kt * tx;
+      dftq[1] = -kt * ty;
+    } else {
+      const double sgn = d > 0.0 ? 1.0 : -1.0;
+      ft = -mu * f * sgn;
+      dftq[0] = -mu * sgn * dfq[0];
+      dftq[1] = -mu * sgn * dfq[1];
+      dftv[0] = -mu * sgn * dfv[0];
+      dftv[1] = -mu * sgn * dfv[1];
+    }
+    c.normal_force = f;
+    c.friction_force = ft;
+    c.fx = f * nx + ft * tx;
+    c.fy = f * ny + ft * ty;
+    c.dq[0] = nx * dfq[0] + tx * dftq[0];
+    c.dq[1] = nx * dfq[1] + tx * dftq[1];
+    c.dq[2] = ny * dfq[0] + ty * dftq[0];
+    c.dq[3] = ny * dfq[1] + ty * dftq[1];
+    c.dv[0] = nx * dfv[0] + tx * dftv[0];
+    c.dv[1] = nx * dfv[1] + tx * dftv[1];
+    c.dv[2] = ny * dfv[0] + ty * dftv[0];
+    c.dv[3] = ny * dfv[1] + ty * dftv[1];
+    return c;
+  }
   // friction −μ f φ(v_t), φ = v_t/√(v_t² + v_ε²); ∂v_t/∂q = −κ v_n tᵀ (t turns with n on an arc)
   const double ve2 = gd.friction_band * gd.friction_band;
   const double root = std::sqrt(vt * vt + ve2);
@@ -1169,6 +1233,20 @@ Energy energy(const Model& model, const State& state) {
       for (const std::uint32_t i : hint.nodes(g)) {
         const GuideContact c = guide_contact(guide, state.x[i], state.y[i], 0.0, 0.0);
         if (c.active) e.elastic += c.energy;
+      }
+    }
+  }
+  // the guides' stick springs ½ k_t (s − a)² about their anchors (Guide::stick_stiffness)
+  if (state.stick_anchor.size() == model.guides.size() * n) {
+    for (std::size_t g = 0; g < model.guides.size(); ++g) {
+      const Guide& guide = model.guides[g];
+      if (!(guide.stick_stiffness > 0.0)) continue;
+      const GuideFrame frame = guide_frame(guide);
+      for (std::size_t i = 0; i < n; ++i) {
+        const double a = state.stick_anchor[g * n + i];
+        if (!std::isfinite(a)) continue;
+        const double d = guide_position(guide, frame, state.x[i], state.y[i]) - a;
+        e.elastic += 0.5 * guide.stick_stiffness * d * d;
       }
     }
   }

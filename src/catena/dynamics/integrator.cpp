@@ -41,9 +41,27 @@ std::size_t checked_nodes(const Model& model, const IntegratorOptions& options) 
 GuideContact guide_contact_at_theta(const Guide& guide, const GuideFrame& frame,
                                     const GuideBounds& bounds, const State& s,
                                     const std::vector<double>& ux, const std::vector<double>& uy,
-                                    std::size_t i, double qx, double qy, double h) {
+                                    std::size_t i, double qx, double qy, double h,
+                                    double anchor = NAN) {
   if (!guide_touch_possible(bounds, qx, qy)) return {};
-  return guide_contact(guide, frame, qx, qy, (ux[i] - s.x[i]) / h, (uy[i] - s.y[i]) / h);
+  return guide_contact(guide, frame, qx, qy, (ux[i] - s.x[i]) / h, (uy[i] - s.y[i]) / h, anchor);
+}
+// The stick law's anchor of node i on guide g for the step from the state s (Guide::
+// stick_stiffness): the state's, or where the node starts the step if it was not in contact
+// (a roller touching down sticks where it is). NaN for a guide without the stick law.
+double step_anchor(const Model& model, const GuideFrame& frame, const State& s, std::size_t g,
+                   std::size_t i) {
+  const Guide& guide = model.guides[g];
+  if (!(guide.stick_stiffness > 0.0)) return NAN;
+  const std::size_t n = model.nodes();
+  const double a =
+      s.stick_anchor.size() == model.guides.size() * n ? s.stick_anchor[g * n + i] : NAN;
+  return std::isfinite(a) ? a : guide_position(guide, frame, s.x[i], s.y[i]);
+}
+bool any_sticking(const Model& model) {
+  for (const Guide& g : model.guides)
+    if (g.stick_stiffness > 0.0) return true;
+  return false;
 }
 }  // namespace
 
@@ -605,7 +623,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
          options_.guide_hint ? guide_hint_.nodes(g) : std::span<const std::uint32_t>(all_nodes_)) {
       if (model.is_pinned(i)) continue;
       const GuideContact gc =
-          guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_, i, qx_[i], qy_[i], h);
+          guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_, i, qx_[i], qy_[i], h,
+                                 step_anchor(model, guide_frame_[g], s, g, i));
       if (!gc.active) continue;
       solver_.rhs[i].x += h * gc.fx;
       solver_.rhs[i].y += h * gc.fy;
@@ -741,6 +760,9 @@ StepReport Integrator::step(const Model& model, State& s) {
   // but a state that no step has ended in (t = 0, or one set by hand) gets them too — else a
   // joint within a mouth there that leaves it in this step would meet the sharp mouth.
   update_held(model, s);
+  // the stick law's anchors (Guide::stick_stiffness): sized once, none in contact yet
+  if (any_sticking(model) && s.stick_anchor.size() != model.guides.size() * model.nodes())
+    s.stick_anchor.assign(model.guides.size() * model.nodes(), NAN);
   const std::size_t n = model.nodes();
   const double h = options_.step;
   const double th = options_.theta;
@@ -1067,6 +1089,36 @@ StepReport Integrator::step(const Model& model, State& s) {
   refresh_guide_hint(model);
   for (std::size_t g = 0; g < model.guides.size(); ++g) {
     const Guide& guide = model.guides[g];
+    if (guide.stick_stiffness > 0.0) {
+      // The stick law (Guide::stick_stiffness): every node's anchor moves on from the contact at
+      // the θ point (the force the step applied) — kept while the spring held, dragged to the
+      // spring's reach where it slid, released off the rail or lifting. The springs' energy
+      // ½ k_t (s − a)² is in energy(); the friction work is minus what the spring–slider
+      // dissipated over the step: the friction force's work on the roller, h f_t v_t, plus the
+      // change of the spring's energy from (s₀, a₀) to (s₁, a₁) — −μ f |Δa| while sliding
+      // steadily, 0 while sticking (θ = ½), minus the spring's whole energy where it is released.
+      const GuideBounds bounds = guide_bounds(guide);
+      const double kt = guide.stick_stiffness;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (model.is_pinned(i)) continue;
+        const double was = s.stick_anchor[g * n + i];
+        const double a = step_anchor(model, guide_frame_[g], s, g, i);
+        const GuideContact gc = guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_,
+                                                       i, qx_[i], qy_[i], h, a);
+        const double next = stick_anchor_after(guide, gc, a);
+        s.stick_anchor[g * n + i] = next;
+        if (!std::isfinite(was) && !std::isfinite(next) && !gc.active) continue;
+        const double d0 =
+            std::isfinite(was) ? guide_position(guide, guide_frame_[g], s.x[i], s.y[i]) - was : 0.0;
+        const double d1 = std::isfinite(next)
+                              ? guide_position(guide, guide_frame_[g], ux_[i], uy_[i]) - next
+                              : 0.0;
+        const double work = gc.active ? h * gc.friction_force * gc.slip : 0.0;
+        report.friction_work += work + 0.5 * kt * (d1 * d1 - d0 * d0);
+        if (gc.active) report.contact_damping_work += h * gc.damping_power;
+      }
+      continue;
+    }
     if (!(guide.friction > 0.0) && !(guide.contact_damping > 0.0)) continue;
     const GuideBounds bounds = options_.guide_hint ? guide_hint_.bounds()[g] : guide_bounds(guide);
     for (const std::uint32_t i :

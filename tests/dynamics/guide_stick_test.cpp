@@ -1,0 +1,301 @@
+// Sticking on a guide (Guide::stick_stiffness, issue 21; docs/models/dynamics.md, "Guides:
+// sticking"): the stick law's Newton blocks against central differences of the force and of the
+// step's residual; a short piece of chain resting on an incline with tan β < μ holds (the
+// regularised law creeps); with tan β > μ it slides at g (sin β − μ cos β) under either law; an
+// incline tilted slowly through μ lets go at tan β = μ; the work balance closes with the stick
+// springs' energy and the slip's dissipation, also where a lifted roller's spring is released;
+// and the stick stiffness's bad values are named.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "catena/dynamics/integrator.hpp"
+#include "random_guides.hpp"
+#include "residual_difference.hpp"
+
+namespace catena::dynamics {
+namespace {
+
+constexpr double kPitch = 0.01905, kMass = 0.024, kG = 9.81, kRoller = 0.006035;
+constexpr double kContact = 1e6;  // [N/m] the rail's penalty
+
+// A level rail from x = −1 to 1 m, rollers on top; the incline is the gravity's tilt β (the
+// downhill direction −x), the same problem turned by β.
+Guide level_rail(double mu, double stick) {
+  Guide g;
+  g.x0 = -1.0;
+  g.x1 = 1.0;
+  g.roller_radius = kRoller;
+  g.contact_stiffness = kContact;
+  g.contact_damping = 20.0;
+  g.friction = mu;
+  g.stick_stiffness = stick;
+  return g;
+}
+
+void tilt(Model& m, double beta) {
+  m.gravity_x = -kG * std::sin(beta);
+  m.gravity_y = -kG * std::cos(beta);
+}
+
+// Two rollers one link apart resting on the rail (their normal contact in equilibrium), at rest.
+struct Piece {
+  Model model;
+  State state{2, 0};
+};
+Piece resting_piece(double mu, double stick, double beta) {
+  Piece p;
+  p.model = uniform_chain(2, false, kPitch, kMass, 1e6, 5.0, false);
+  tilt(p.model, beta);
+  p.model.guides = {level_rail(mu, stick)};
+  // the penetration where the contact carries the weight's normal part W: k g²/2ε = W within
+  // the ramp (g < ε), k (g − ε/2) = W beyond
+  const double w = kMass * kG * std::cos(beta), eps = p.model.guides[0].contact_smoothing;
+  const double sink =
+      w / kContact >= 0.5 * eps ? w / kContact + 0.5 * eps : std::sqrt(2.0 * eps * w / kContact);
+  for (std::size_t i = 0; i < 2; ++i) {
+    p.state.x[i] = kPitch * static_cast<double>(i);
+    p.state.y[i] = kRoller - sink;
+  }
+  return p;
+}
+
+// Sticking and sliding contacts on the inclined rail of the guides' tests: ∂F/∂q and ∂F/∂v
+// column by column against central differences of guide_contact about the same anchor, on both
+// sides of the spring's reach μ f/k_t.
+TEST(GuideStick, ContactBlocksMatchFiniteDifferencesOfTheForce) {
+  Guide g = testing::inclined_rail(0.3);
+  g.stick_stiffness = 2e5;
+  const GuideFrame f = guide_frame(g);
+  int sticking = 0, sliding = 0;
+  for (int k = 0; k < 40; ++k) {
+    const double along = 0.1 + 0.015 * k, depth = 1.2e-6 + 1e-7 * k;  // beyond the ramp
+    const double x = g.x0 + along * f.ux + (g.roller_radius - depth) * -f.uy;
+    const double y = g.y0 + along * f.uy + (g.roller_radius - depth) * f.ux;
+    const double vx = 0.01 * std::sin(k), vy = 0.01 * std::cos(3.0 * k);
+    // deflections from well within the reach μ f/k_t (10 … 70 µm here) to beyond it, either way
+    const double s = guide_position(g, f, x, y);
+    const double anchor = s - (k % 2 == 0 ? 1.0 : -1.0) * 2e-6 * (1 + k);
+    const GuideContact c = guide_contact(g, f, x, y, vx, vy, anchor);
+    ASSERT_TRUE(c.normal_force > 0.0) << k;
+    (c.sticking ? sticking : sliding)++;
+    const double dx = 1e-10, dv = 1e-8;
+    const double q[2] = {x, y}, v[2] = {vx, vy};
+    for (int col = 0; col < 2; ++col) {
+      double qp[2] = {q[0], q[1]}, qm[2] = {q[0], q[1]};
+      qp[col] += dx;
+      qm[col] -= dx;
+      const GuideContact a = guide_contact(g, f, qp[0], qp[1], vx, vy, anchor);
+      const GuideContact b = guide_contact(g, f, qm[0], qm[1], vx, vy, anchor);
+      const double tol = 1e-5 * (std::abs(c.dq[col]) + std::abs(c.dq[2 + col])) + 1e-2;
+      EXPECT_NEAR(c.dq[col], (a.fx - b.fx) / (2 * dx), tol) << k << " dq x" << col;
+      EXPECT_NEAR(c.dq[2 + col], (a.fy - b.fy) / (2 * dx), tol) << k << " dq y" << col;
+      double vp[2] = {v[0], v[1]}, vm[2] = {v[0], v[1]};
+      vp[col] += dv;
+      vm[col] -= dv;
+      const GuideContact e = guide_contact(g, f, x, y, vp[0], vp[1], anchor);
+      const GuideContact h = guide_contact(g, f, x, y, vm[0], vm[1], anchor);
+      const double vtol = 1e-5 * (std::abs(c.dv[col]) + std::abs(c.dv[2 + col])) + 1e-6;
+      EXPECT_NEAR(c.dv[col], (e.fx - h.fx) / (2 * dv), vtol) << k << " dv x" << col;
+      EXPECT_NEAR(c.dv[2 + col], (e.fy - h.fy) / (2 * dv), vtol) << k << " dv y" << col;
+    }
+    // the stick law: the spring within the reach, μ f beyond (never the regularised φ)
+    const double spring = -g.stick_stiffness * (s - anchor);
+    if (c.sticking) {
+      EXPECT_DOUBLE_EQ(c.friction_force, spring);
+    } else {
+      EXPECT_DOUBLE_EQ(std::abs(c.friction_force), 0.3 * c.normal_force);
+      EXPECT_GT(c.friction_force * spring, 0.0);
+    }
+  }
+  EXPECT_GT(sticking, 5);
+  EXPECT_GT(sliding, 5);
+  // a NaN anchor or k_t = 0: the regularised contact, bit for bit
+  double x = 0.0, y = 0.0;
+  x = g.x0 + 0.3 * f.ux - (g.roller_radius - 2e-6) * f.uy;
+  y = g.y0 + 0.3 * f.uy + (g.roller_radius - 2e-6) * f.ux;
+  const GuideContact plain = guide_contact(g, f, x, y, 0.01, 0.0);
+  const GuideContact none = guide_contact(g, f, x, y, 0.01, 0.0, NAN);
+  EXPECT_EQ(plain.fx, none.fx);
+  EXPECT_EQ(plain.fy, none.fy);
+  Guide off = g;
+  off.stick_stiffness = 0.0;
+  EXPECT_EQ(guide_contact(off, f, x, y, 0.01, 0.0, 0.0).fx, plain.fx);
+}
+
+// The step's Newton matrix with the stick law: every column against central differences of the
+// step's residual, one node sticking and one sliding (their anchors set in the state); the stick
+// spring's share of the matrix is not negligible.
+TEST(GuideStick, IntegratorNewtonMatrixHasTheStickBlocks) {
+  Piece p = resting_piece(0.3, 1e5, 0.0);
+  const Guide& g = p.model.guides[0];
+  const GuideFrame f = guide_frame(g);
+  p.state.stick_anchor = {guide_position(g, f, p.state.x[0], p.state.y[0]) + 2e-7,
+                          guide_position(g, f, p.state.x[1], p.state.y[1]) - 2e-4};
+  std::vector<double> u{p.state.x[0] - 1e-7, p.state.y[0], p.state.x[1] + 3e-7, p.state.y[1]};
+  const double h = 1e-3;
+  Integrator integ(p.model, {.step = h, .theta = 0.6});
+  std::vector<double> r, jac, bare;
+  integ.newton_system(p.model, p.state, u, r, &jac);
+  Model plain = p.model;
+  plain.guides[0].stick_stiffness = 0.0;
+  Integrator base(plain, {.step = h, .theta = 0.6});
+  base.newton_system(plain, p.state, u, r, &bare);
+  double scale = 0.0, stick = 0.0;
+  for (std::size_t k = 0; k < 16; ++k) {
+    scale = std::max(scale, std::abs(jac[k]));
+    stick = std::max(stick, std::abs(jac[k] - bare[k]));
+  }
+  EXPECT_GT(stick, 1e-3 * scale) << "the stick spring's block is not negligible";
+  for (std::size_t c = 0; c < 4; ++c) {
+    const std::vector<double> fd =
+        testing::residual_difference(integ, p.model, p.state, u, c, 1e-9);
+    for (std::size_t row = 0; row < 4; ++row)
+      EXPECT_NEAR(jac[row * 4 + c], fd[row], 1e-6 * scale) << "row " << row << " column " << c;
+  }
+}
+
+// Runs the piece for `seconds`; returns the largest downhill displacement of node 0 from its start.
+double run(Piece& p, double seconds, double h, double theta) {
+  Integrator integ(p.model, {.step = h, .theta = theta});
+  const double x0 = p.state.x[0];
+  double most = 0.0;
+  while (p.state.time < seconds - 0.5 * h) {
+    const StepReport r = integ.step(p.model, p.state);
+    EXPECT_TRUE(r.converged) << p.state.time;
+    if (!r.converged) break;
+    most = std::max(most, x0 - p.state.x[0]);
+  }
+  EXPECT_NEAR(p.state.time, seconds, h);
+  return most;
+}
+
+// (1) tan β = μ/2: with the stick law the piece holds — over 1 s its displacement stays within
+// twice the spring's static deflection m g sin β/k_t (a load applied at once overshoots to twice
+// it) and settles to it within 1 %; the regularised law creeps at about the band's speed.
+TEST(GuideStick, APieceHoldsOnAnInclineBelowTheFrictionAngle) {
+  const double mu = 0.3, kt = 1e5, beta = std::atan(0.5 * mu);
+  const double deflection = kMass * kG * std::sin(beta) / kt;
+  Piece held = resting_piece(mu, kt, beta);
+  const double most = run(held, 1.0, 2e-4, 0.6);
+  EXPECT_LE(most, 2.0 * deflection * (1 + 1e-3));
+  EXPECT_NEAR(-held.state.x[0], deflection, 0.01 * deflection);
+  EXPECT_NEAR(kPitch - held.state.x[1], deflection, 0.01 * deflection);
+  Piece creeps = resting_piece(mu, 0.0, beta);
+  const double crept = run(creeps, 1.0, 2e-4, 0.6);
+  // φ(v) = tan β/μ = ½: v = v_ε/√3 ≈ 0.58 mm/s
+  EXPECT_GT(crept, 1e-4);
+  EXPECT_NEAR(-creeps.state.vx[0], 1e-3 / std::sqrt(3.0), 0.05e-3);
+}
+
+// (2) tan β = 2μ: either law slides at a = g (sin β − μ cos β), measured over 0.1 … 0.3 s.
+TEST(GuideStick, APieceSlidesAtTheAnalyticAccelerationAboveIt) {
+  const double mu = 0.25, beta = std::atan(2.0 * mu);
+  const double a = kG * (std::sin(beta) - mu * std::cos(beta));
+  for (const double kt : {0.0, 1e5}) {
+    Piece p = resting_piece(mu, kt, beta);
+    run(p, 0.1, 2e-4, 0.5);
+    const double v1 = -p.state.vx[0], t1 = p.state.time;
+    run(p, 0.3, 2e-4, 0.5);
+    const double v2 = -p.state.vx[0], t2 = p.state.time;
+    EXPECT_NEAR((v2 - v1) / (t2 - t1), a, 0.01 * a) << "k_t " << kt;
+  }
+}
+
+// (3) The incline tilted slowly (tan β from 0.8 μ to 1.2 μ over 4 s): with the stick law the piece
+// lets go at tan β = μ within 0.5 % (it has slid 2 µm by then, 30 times the static deflection); the
+// regularised law creeps from the start.
+double tan_at_slip(double kt) {
+  const double mu = 0.3, lo = 0.8 * mu, hi = 1.2 * mu, span = 4.0, h = 2e-4;
+  Piece p = resting_piece(mu, kt, std::atan(lo));
+  Integrator integ(p.model, {.step = h, .theta = 0.6});
+  const double x0 = p.state.x[0];
+  while (p.state.time < span) {
+    const double t = lo + (hi - lo) * p.state.time / span;
+    tilt(p.model, std::atan(t));
+    if (!integ.step(p.model, p.state).converged) return NAN;
+    if (x0 - p.state.x[0] > 2e-6) return t;
+  }
+  return INFINITY;
+}
+TEST(GuideStick, AnInclineTiltedThroughTheFrictionAngleLetsGoThere) {
+  EXPECT_NEAR(tan_at_slip(1e6), 0.3, 0.0015);
+  EXPECT_LT(tan_at_slip(0.0), 0.25);
+}
+
+// (4) Two rollers sliding along a level rail from v₀ stop after v₀²/2μg and stay (no creep); the
+// work balance closes: the energy lost (the stick springs' energy counted) is the slip's
+// dissipation −Σ μ f |Δa| the steps report (with the contact and link dampers' work), ½ (2m) v₀².
+TEST(GuideStick, WorkBalanceClosesWithTheSpringsEnergyAndTheSlip) {
+  const double mu = 0.3, v0 = 0.5;
+  Piece p = resting_piece(mu, 1e5, 0.0);
+  p.state.vx = {v0, v0};
+  const Energy e0 = energy(p.model, p.state);
+  const double t_stop = v0 / (mu * kG);
+  run(p, 1.5 * t_stop, 2e-4, 0.5);
+  const double distance = p.state.x[0];
+  EXPECT_NEAR(distance, v0 * v0 / (2 * mu * kG), 2e-3 * distance);
+  const double stopped = p.state.x[0];
+  run(p, 1.5 * t_stop + 0.5, 2e-4, 0.5);
+  const double spring_reach = mu * kMass * kG / 1e5;
+  EXPECT_LT(std::abs(p.state.x[0] - stopped), 2.0 * spring_reach);  // held, not creeping
+  const Energy e1 = energy(p.model, p.state);
+  const double dissipated =
+      p.state.friction_work + p.state.contact_damping_work + p.state.damper_work;
+  EXPECT_NEAR(dissipated, e1.total() - e0.total(), 1e-4 * kMass * v0 * v0);
+  EXPECT_NEAR(p.state.friction_work, -kMass * v0 * v0, 1e-3 * kMass * v0 * v0);
+}
+
+// A piece held on an incline (tan β = μ/2, a soft k_t = 1e3 N/m: its springs deflected by
+// m g sin β/k_t = 35 µm) lifted off the rail (the gravity turned away from it): the anchors are
+// released and the springs' energy let go is counted as dissipated, so that the balance over the
+// lift-off still closes.
+TEST(GuideStick, ReleasedSpringsEnergyIsCountedWhenLiftedOff) {
+  const double mu = 0.3, kt = 1e3, beta = std::atan(0.5 * mu);
+  Piece p = resting_piece(mu, kt, beta);
+  run(p, 0.05, 2e-4, 0.5);
+  ASSERT_EQ(p.state.stick_anchor.size(), 2u);
+  ASSERT_TRUE(std::isfinite(p.state.stick_anchor[0]));
+  p.model.gravity_y = kG;  // away from the rail
+  const Energy e0 = energy(p.model, p.state);
+  const Guide& g = p.model.guides[0];
+  double stored = 0.0;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double d =
+        guide_position(g, guide_frame(g), p.state.x[i], p.state.y[i]) - p.state.stick_anchor[i];
+    stored += 0.5 * kt * d * d;
+  }
+  const double w0 = p.state.friction_work + p.state.contact_damping_work + p.state.damper_work;
+  run(p, 0.07, 2e-4, 0.5);
+  EXPECT_GT(p.state.y[0], kRoller + 1e-4);  // off the rail
+  EXPECT_TRUE(std::isnan(p.state.stick_anchor[0]));
+  EXPECT_TRUE(std::isnan(p.state.stick_anchor[1]));
+  const double w1 = p.state.friction_work + p.state.contact_damping_work + p.state.damper_work;
+  EXPECT_GT(stored, 1e-7);
+  EXPECT_NEAR(w1 - w0, energy(p.model, p.state).total() - e0.total(), 1e-2 * stored);
+}
+
+TEST(GuideStick, BadStickStiffnessNamed) {
+  Model m = uniform_chain(4, false, kPitch, kMass, 1e7, 0.0, false);
+  Guide arc = level_rail(0.3, 1e5);
+  arc.kind = Guide::Kind::kArc;
+  arc.radius = 0.2;
+  arc.start_angle = 0.0;
+  arc.end_angle = 1.0;
+  m.guides = {level_rail(0.3, -1.0), level_rail(0.3, NAN), arc, level_rail(0.3, 1e5),
+              level_rail(0.3, 0.0)};
+  std::vector<std::string> fields;
+  for (const Issue& i : validate(m)) fields.push_back(i.field);
+  const std::vector<std::string> want{"guide[0].stick_stiffness", "guide[1].stick_stiffness",
+                                      "guide[2].stick_stiffness"};
+  EXPECT_EQ(fields, want);
+  // a lead-in's arcs slide with the regularised law: they do not inherit the rail's k_t
+  for (const Guide& a : lead_in_arcs(level_rail(0.3, 1e5), {.radius = 0.05, .angle = 0.3}))
+    EXPECT_EQ(a.stick_stiffness, 0.0);
+}
+
+}  // namespace
+}  // namespace catena::dynamics
