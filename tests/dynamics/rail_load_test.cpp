@@ -206,7 +206,7 @@ TEST(RailLoad, IntegratorNewtonMatrixHasTheRampsBlock) {
 
 // An arc carries a load only if it presses the chain onto the rail over the whole arc (n·g < 0
 // at every angle: the message names the worst) and its roller centres' line's radius is at least
-// a pitch (the ramps at its ends clear of each other).
+// a pitch; an arc with both problems has both named.
 TEST(RailLoad, BadLoadsNamedAndAnArcFacingDownRefused) {
   Model m = uniform_chain(4, false, kPitch, 0.024, 1e7, 0.0, false);
   m.gravity_x = kGx;
@@ -227,7 +227,9 @@ TEST(RailLoad, BadLoadsNamedAndAnArcFacingDownRefused) {
   hanging.start_angle = 60.0 * std::numbers::pi / 180.0;
   hanging.end_angle = 120.0 * std::numbers::pi / 180.0;
   Guide tight = loaded_arc(5.0, false);
-  tight.radius = 0.01;  // the rollers' line 16 mm round: less than a pitch
+  tight.radius = 0.01;   // the rollers' line 16 mm round: less than a pitch
+  Guide both = hanging;  // facing down and tight: both named
+  both.radius = 0.02;    // the rollers' line (inside) 14 mm round, less than a pitch
   m.guides = {loaded_rail(-1.0),
               loaded_rail(NAN),
               loaded_rail(2e4),
@@ -238,26 +240,28 @@ TEST(RailLoad, BadLoadsNamedAndAnArcFacingDownRefused) {
               loaded_arc(5.0, false),
               loaded_arc(5.0, true),
               hanging,
-              tight};
+              tight,
+              both};
   const std::vector<Issue> issues = validate(m);
   std::vector<std::string> fields;
   for (const Issue& i : issues) fields.push_back(i.field);
-  for (const char* f : {"guide[0].load_per_metre", "guide[1].load_per_metre",
-                        "guide[2].load_per_metre", "guide[3].load_per_metre",
-                        "guide[6].load_per_metre", "guide[9].load_per_metre", "guide[10].radius"})
+  for (const char* f :
+       {"guide[0].load_per_metre", "guide[1].load_per_metre", "guide[2].load_per_metre",
+        "guide[3].load_per_metre", "guide[6].load_per_metre", "guide[9].load_per_metre",
+        "guide[10].radius", "guide[11].load_per_metre", "guide[11].radius"})
     EXPECT_EQ(std::count(fields.begin(), fields.end(), f), 1) << f;
-  EXPECT_EQ(issues.size(), 7u);  // the cap itself, 0 and the two arcs facing up are accepted
+  EXPECT_EQ(issues.size(), 9u);  // the cap itself, 0 and the two arcs facing up are accepted
   for (const Issue& i : issues) {
     if (i.field == "guide[3].load_per_metre")
       EXPECT_NE(i.expected.find("over the whole arc, and at 0 deg this arc's carrying side "
                                 "(outward) faces down (n.g = 0.7 m/s^2"),
                 std::string::npos)
           << i.expected;
-    else if (i.field == "guide[9].load_per_metre")
+    else if (i.field == "guide[9].load_per_metre" || i.field == "guide[11].load_per_metre")
       EXPECT_NE(i.expected.find("at 94.0939 deg this arc's carrying side (inward) faces down"),
                 std::string::npos)
           << i.expected;
-    else if (i.field == "guide[10].radius")
+    else if (i.field == "guide[10].radius" || i.field == "guide[11].radius")
       EXPECT_NE(i.expected.find("at least a pitch 0.01905 m"), std::string::npos) << i.expected;
     else if (i.field == "guide[6].load_per_metre")
       EXPECT_NE(i.expected.find("press the chain onto the rail, and this rail's carrying side "

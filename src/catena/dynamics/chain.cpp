@@ -18,8 +18,12 @@ constexpr std::size_t kMaxNodes = 10'000'000;
 // A loaded arc guide's checks (docs/models/dynamics.md, "A conveyed load"): the load must press
 // the chain onto the rail over the whole arc, n·g < 0 at every angle φ in [start, end] (n = ±(cos
 // φ, sin φ), outward on an outside arc, inward on an inside one): the largest n·g over the arc is
-// at an end or where n points along g. And the roller centres' line's radius at least a pitch, so
-// that the ramps a half pitch beyond the ends stay clear of each other round the back.
+// at an end or where n points along g (so a loaded arc sweeps less than π, and its ramps, a half
+// pitch beyond its ends, stay clear of each other round the back whenever ρ_c > p/π). And the
+// roller centres' line's radius ρ_c at least a pitch: the gate carries a node up to a pitch off
+// the line on its free side (inward on an inside arc, |q − C| ≥ ρ_c − p), so it does not reach
+// past the centre, where |q − C| → 0 and the arc's parametrisation ∂s/∂q = ρ_c t/|q − C| blows
+// up. Both problems are reported, not only the first.
 void arc_load_presses(std::vector<Issue>& out, const std::string& f, const Guide& g,
                       const Model& model) {
   const double a0 = g.start_angle, a1 = g.end_angle;
@@ -44,7 +48,6 @@ void arc_load_presses(std::vector<Issue>& out, const std::string& f, const Guide
                        " this arc's carrying side (" + (g.inside ? "inward" : "outward") +
                        ") faces " + (at > 0.0 ? "down" : "sideways or there is no gravity") +
                        " (n.g = " + check::format_si(at + 0.0, "m/s^2") + ", must be < 0)"});
-    return;
   }
   const double line = g.inside ? g.radius - g.roller_radius : g.radius + g.roller_radius;
   if (model.pitch > 0.0 && std::isfinite(line) && !(line >= model.pitch))
