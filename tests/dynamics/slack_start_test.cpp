@@ -613,3 +613,50 @@ TEST(DynamicsSlackStart, ATightCatenaryIsWalkedAtOnePitch) {
 
 }  // namespace
 }  // namespace catena::dynamics
+
+namespace catena::dynamics {
+namespace {
+
+// A sloped lower run (the second wheel below and to the right of the first, z 17 both, 80 links):
+// its catenary meets the lower wheel at a kink, where the path nearly folds back (about 146° on
+// the 45° span), and on a steep span its lowest point is tight. The start is laid with every link
+// one pitch, or not laid (refused) — never with a link cut short (16.9 mm at 45°, 5.4 mm at
+// (60, -400) mm before the walk marched to the first point a pitch on). Below a = d1/2 the sag
+// check names the catenary's own other strand.
+TEST(DynamicsSlackStart, ASlopedCatenaryIsLaidAtOnePitchOrRefused) {
+  struct Case {
+    double x, y;  // [m] the second wheel's centre
+  };
+  int laid_count = 0;
+  for (const Case c : {Case{0.3, -0.3}, Case{0.2, -0.4}, Case{0.06, -0.4}, Case{0.03, -0.4}}) {
+    const std::string what = std::to_string(c.x) + ", " + std::to_string(c.y);
+    const std::vector<Circle> circles{{0.0, 0.0, pitch_radius(17)}, {c.x, c.y, pitch_radius(17)}};
+    const std::vector<double> tip(2, pitch_radius(17) + 0.01);
+    const BeltPath path = belt_path(circles, 0);
+    const std::size_t k = slack_span(path);
+    BeltPath laid;
+    const int links = 80;
+    const LoopPlacement place = place_slack_loop(path, circles, {17, 17}, links, kPitch, laid);
+    // the catenary of the chain's own extra (about the e a start needs): below a = d1/2 the sag
+    // check names its other strand
+    const BeltPath hang = sag_span(path, k, links * kPitch - path.length);
+    ASSERT_TRUE(hang.pieces[k].catenary) << what;
+    const std::string strand = sag_obstacle(hang, k, circles, tip, {}, kRoller, kPitch);
+    std::printf("sloped (%s): %s, a %.3f mm at e = N p - L, sag check \"%s\"\n", what.c_str(),
+                place.s.empty() ? "not laid" : "laid", hang.pieces[k].hang_a * 1e3, strand.c_str());
+    EXPECT_EQ(hang.pieces[k].hang_a < 0.5 * kRoller, strand.rfind("its own other strand", 0) == 0)
+        << what << ": " << strand;
+    if (place.s.empty()) {
+      EXPECT_TRUE(laid.pieces.empty()) << what;
+      continue;
+    }
+    ++laid_count;
+    ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links)) << what;
+    expect_every_link_one_pitch(loop_state(laid, circles, place, 0.0), links, what,
+                                1e-11 * links * kPitch);
+  }
+  EXPECT_GE(laid_count, 2);  // (0.3, -0.3) and (0.06, -0.4) m
+}
+
+}  // namespace
+}  // namespace catena::dynamics

@@ -117,7 +117,8 @@ std::size_t slack_span(const BeltPath& path);
 /// another sagging span's arc (but for a pitch at either of its ends) closer than `roller` too;
 /// and any of those inside the circular segment the sag sweeps between its chord and its arc (a
 /// wheel's centre, 257 points of a guide, 255 of a span or of another sag's arc), where the chain
-/// would enclose it.
+/// would enclose it. A catenary whose lowest curvature radius a is below `roller`/2 is named as
+/// "its own other strand (…)" (its two strands there within a roller's diameter of each other).
 std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
                          const std::vector<Circle>& circles, const std::vector<double>& tip,
                          const std::vector<Guide>& guides, double roller, double pitch);
@@ -199,7 +200,8 @@ PathPoint sag_point(const PathPiece& q, double along);
 /// A start with slack: N nodes at chord exactly `pitch` (so the chain is N·pitch long) on the path
 /// with its slack span (`slack_span`) sagging by the extra length that closes the loop
 /// (`slack_extra`). `laid` gets that path. Empty placement if N·pitch does not exceed the path's
-/// length or the sag cannot be solved.
+/// length, the sag cannot be solved, or any link's chord (the closing one too) is off `pitch` by
+/// more than 1e-9 of it.
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -345,27 +346,53 @@ PathPoint path_point(const BeltPath& path, double s) {
 
 namespace {
 
+// Whether a catenary piece lies within the arc lengths [s, s + reach] of the path (the pieces
+// from the one at s on).
+bool catenary_ahead(const BeltPath& path, std::size_t piece, double u, double reach) {
+  for (std::size_t k = 0; k < path.pieces.size(); ++k) {
+    const PathPiece& q = path.pieces[(piece + k) % path.pieces.size()];
+    const double start = q.start + (piece + k >= path.pieces.size() ? path.length : 0.0);
+    if (k > 0 && start > u + reach) return false;
+    if (q.catenary) return true;
+  }
+  return false;
+}
+
 // The next node forward of the one at arc length s: the first point of the path at chord h from
 // it. Exact within one piece (an arc: the chord's angle 2 asin(h/2R); a span: h itself); across
 // pieces by bisection on the arc length (the chord grows monotonically over the 1.6 h searched:
 // the pitch radius is at least 1.3 p at z = 8, where an arc of 1.6 h spans a chord of 1.5 h).
+// Near a catenary the chord need not grow: its lowest point may be tighter than h, and a sloped
+// span's catenary meets the far wheel at a kink (it climbs into the wheel almost vertically while
+// the wrap leaves along the chord's direction), where the path nearly folds back. There the
+// path is marched in steps of h/16 to the first point whose chord reaches h, and that step is
+// bisected; NaN when no point within the path's length reaches h.
 double next_node(const BeltPath& path, double s, double h) {
   const PathPoint p = path_point(path, s);
   const PathPiece& q = path.pieces[p.piece];
   double u = std::fmod(s, path.length);
   if (u < 0.0) u += path.length;
   const double along = u - q.start;
-  if (q.catenary) {
-    // a catenary: by the bisection below (its curvature radius is at least a, so the chord
-    // still grows over the 1.6 h searched where a is more than about 0.7 h; and at a = 0.41 h,
-    // tight only at its lowest point: DynamicsSlackStart.ATightCatenaryIsWalkedAtOnePitch)
-  } else if ((q.arc || q.sag) && h < 2.0 * q.radius) {
+  if (!q.catenary && (q.arc || q.sag) && h < 2.0 * q.radius) {
     const double step = 2.0 * q.radius * std::asin(h / (2.0 * q.radius));
     if (along + step <= q.length) return s + step;
-  } else if (!q.arc && along + h <= q.length) {
+  } else if (!q.arc && !q.catenary && along + h <= q.length) {
     return s + h;
   }
   double lo = s, hi = s + 1.6 * h;
+  if (catenary_ahead(path, p.piece, u, 1.6 * h)) {
+    const double step = h / 16.0;
+    const int steps = static_cast<int>(std::ceil(path.length / step));
+    for (int k = 1;; ++k) {
+      if (k > steps) return NAN;
+      const PathPoint m = path_point(path, s + k * step);
+      if (std::hypot(m.x - p.x, m.y - p.y) >= h) {
+        lo = s + (k - 1) * step;
+        hi = s + k * step;
+        break;
+      }
+    }
+  }
   for (int it = 0; it < 200 && hi - lo > 1e-15 * path.length; ++it) {
     const double mid = 0.5 * (lo + hi);
     const PathPoint m = path_point(path, mid);
@@ -613,6 +640,17 @@ std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
                          const std::vector<Guide>& guides, double roller, double pitch) {
   if (piece >= laid.pieces.size() || !laid.pieces[piece].sag) return "the sagging span";
   const PathPiece& q = laid.pieces[piece];
+  // a catenary whose lowest point turns tighter than a roller's radius: its two strands there
+  // lie within a roller's diameter of each other (the checks below skip the piece itself); a
+  // grows smaller as the extra grows, so what is refused stays refused
+  if (q.catenary && q.hang_a < 0.5 * roller) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "its own other strand (the catenary's lowest curvature radius a = %.4g mm is "
+                  "below the roller's radius d1/2 = %.4g mm)",
+                  q.hang_a * 1e3, 0.5 * roller * 1e3);
+    return text;
+  }
   const int samples = arc_samples(q.length, roller);
   // inside the circular segment the sag sweeps (between the chord and the arc): the segments of
   // a growing sag are nested, so an obstacle once inside stays inside
@@ -1032,6 +1070,13 @@ LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& 
   // the wheels' seats as on a taut path: place_loop's chord solve lands on `pitch` itself here
   LoopPlacement out = place_loop(sagging, circles, teeth, nodes, pitch);
   if (out.s.empty()) return out;
+  // every link one pitch (the closing one too), 1e-9 relative: a walk that found no point a
+  // pitch on, or a link cut short, is not laid
+  for (std::size_t i = 0; i < out.s.size(); ++i) {
+    const PathPoint a = path_point(sagging, out.s[i]);
+    const PathPoint b = path_point(sagging, out.s[(i + 1) % out.s.size()]);
+    if (!(std::abs(std::hypot(b.x - a.x, b.y - a.y) - pitch) <= 1e-9 * pitch)) return {};
+  }
   laid = sagging;
   return out;
 }
