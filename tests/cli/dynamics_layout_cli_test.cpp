@@ -12,6 +12,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "../dynamics/catenary_closed_form.hpp"
 #include "../dynamics/period_mean.hpp"
 #include "cli_run.hpp"
 #include "lead_in_loop.hpp"
@@ -683,13 +684,8 @@ TEST(DynamicsLayoutCli, SlackBeyondTheHalfCircleStartsAsTheCatenary) {
   const double over = j["slack"].get<double>();
   EXPECT_NEAR(over, 105 * kPitch - path, 1e-12);
   const double c = 0.6;
-  EXPECT_GT(over, (0.5 * kPi - 1.0) * c);  // beyond the half circle
-  double lo = 1e-4, hi = 100.0;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (2.0 * mid * std::sinh(c / (2.0 * mid)) > c + over ? lo : hi) = mid;
-  }
-  const double a = 0.5 * (lo + hi);
+  EXPECT_GT(over, (0.5 * kPi - 1.0) * c);                      // beyond the half circle
+  const double a = closed_form(0.0, 0.0, c, 0.0, c + over).a;  // the level span's catenary
   const double sag = a * (std::cosh(c / (2.0 * a)) - 1.0);
   double lowest = 0.0;
   for (const auto& y : j["positions"]["y"][0]) lowest = std::min(lowest, y.get<double>());

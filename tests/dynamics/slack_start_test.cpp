@@ -15,6 +15,7 @@
 #include "catena/dynamics/chain.hpp"
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/layout.hpp"
+#include "catenary_closed_form.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -390,27 +391,7 @@ TEST(DynamicsSlackStart, MostLinksFoundByBisectionAfterTheScanFails) {
   EXPECT_EQ(links_that_start_phrase(none, 0), "no count starts so");
 }
 
-// The catenary through the span's ends, solved by the test itself (bisection on a in
-// 2a sinh(d/2a) = √(S² − h²), S the laid span's length): a, x0 with y = y_A + a (cosh((x − x0)/a)
-// − cosh((x_A − x0)/a)).
-struct ClosedForm {
-  double a = 0.0, x0 = 0.0;
-  double y(double x, double xa, double ya) const {
-    return ya + a * (std::cosh((x - x0) / a) - std::cosh((xa - x0) / a));
-  }
-};
-ClosedForm closed_form(double xa, double ya, double xb, double yb, double length) {
-  const double d = xb - xa, h = yb - ya;
-  double lo = 1e-6, hi = 1e3;
-  for (int i = 0; i < 300; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (2.0 * mid * std::sinh(d / (2.0 * mid)) > std::sqrt(length * length - h * h) ? lo : hi) = mid;
-  }
-  ClosedForm c;
-  c.a = 0.5 * (lo + hi);
-  c.x0 = 0.5 * (xa + xb) - c.a * std::atanh(h / length);
-  return c;
-}
+// The catenary through the span's ends: closed_form (catenary_closed_form.hpp).
 
 // The slack loop at rest under gravity: the driver held, the driven wheel free, drag settling the
 // chain. The lower span between the last roller seated on each wheel hangs as the catenary of its

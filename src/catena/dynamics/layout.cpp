@@ -296,6 +296,16 @@ Catenary catenary_through(double h, double v, double length) {
   return out;
 }
 
+namespace {
+
+// A catenary piece's height at t = (X − u)/a (X along from its first end): y0 + a (cosh t −
+// cosh(u/a)).
+double catenary_height(const PathPiece& q, double t) {
+  return q.y0 + q.hang_a * (std::cosh(t) - std::cosh(q.hang_u / q.hang_a));
+}
+
+}  // namespace
+
 PathPoint sag_point(const PathPiece& q, double along) {
   PathPoint p;
   if (q.catenary) {
@@ -303,7 +313,7 @@ PathPoint sag_point(const PathPiece& q, double along) {
     const double a = q.hang_a, u = q.hang_u;
     const double t = std::asinh(along / a - std::sinh(u / a));  // (X − u)/a
     p.x = q.x0 + u + a * t;
-    p.y = q.y0 + a * (std::cosh(t) - std::cosh(u / a));
+    p.y = catenary_height(q, t);
     p.tx = 1.0 / std::cosh(t);
     p.ty = std::tanh(t);
     return p;
@@ -580,8 +590,23 @@ int arc_samples(double length, double roller) {
 
 // A catenary's height at x (x0 ≤ x ≤ x1).
 double catenary_y(const PathPiece& q, double x) {
-  return q.y0 +
-         q.hang_a * (std::cosh((x - q.x0 - q.hang_u) / q.hang_a) - std::cosh(q.hang_u / q.hang_a));
+  return catenary_height(q, (x - q.x0 - q.hang_u) / q.hang_a);
+}
+
+// Sample j of n along a span (j/n of the way): a catenary's point at that share of its length, a
+// sagging arc's at that share of its angle, a straight span's at that share of its chord.
+PathPoint span_sample(const PathPiece& q, int j, int n) {
+  if (q.catenary) return sag_point(q, q.length * j / n);
+  PathPoint p;
+  if (q.sag) {
+    const double a = q.from + (q.to - q.from) * j / n;
+    p.x = q.cx + q.radius * std::cos(a);
+    p.y = q.cy + q.radius * std::sin(a);
+  } else {
+    p.x = q.x0 + (q.x1 - q.x0) * j / n;
+    p.y = q.y0 + (q.y1 - q.y0) * j / n;
+  }
+  return p;
 }
 
 // The distance from (x, y) to a catenary piece between the arc lengths `from` and `to`: the
@@ -683,22 +708,13 @@ std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
     for (int j = 1; j < 256; ++j) {
       // a straight span's points, or another sagging span's along its arc (two sags may face
       // each other across a notch of a serpentine path)
-      const double a = r.from + (r.to - r.from) * j / 256.0;
-      const PathPoint on = r.catenary ? sag_point(r, r.length * j / 256.0) : PathPoint{};
-      const double x = r.catenary ? on.x
-                       : r.sag    ? r.cx + r.radius * std::cos(a)
-                                  : r.x0 + (r.x1 - r.x0) * j / 256.0;
-      const double y = r.catenary ? on.y
-                       : r.sag    ? r.cy + r.radius * std::sin(a)
-                                  : r.y0 + (r.y1 - r.y0) * j / 256.0;
-      if (swept(x, y)) return "the span " + wheel_name(r.wheel) + " -> " + wheel_name(r.next);
+      const PathPoint on = span_sample(r, j, 256);
+      if (swept(on.x, on.y)) return "the span " + wheel_name(r.wheel) + " -> " + wheel_name(r.next);
     }
   }
   for (int j = 0; j <= samples; ++j) {
-    const double a = q.from + (q.to - q.from) * j / samples;
-    const PathPoint on = q.catenary ? sag_point(q, q.length * j / samples) : PathPoint{};
-    const double x = q.catenary ? on.x : q.cx + q.radius * std::cos(a);
-    const double y = q.catenary ? on.y : q.cy + q.radius * std::sin(a);
+    const PathPoint on = span_sample(q, j, samples);
+    const double x = on.x, y = on.y;
     for (std::size_t w = 0; w < circles.size(); ++w) {
       if (w == q.wheel || w == q.next) continue;
       if (std::hypot(x - circles[w].x, y - circles[w].y) < tip[w] + 0.5 * roller)
@@ -829,15 +845,8 @@ LeadInReach lead_in_reach(const BeltPath& path, const Guide& rail, const Guide& 
   for (std::size_t k = 0; k < path.pieces.size(); ++k) {
     const PathPiece& q = path.pieces[k];
     for (int j = 0; !q.arc && !carried[k] && j <= 256; ++j) {
-      const double a = q.from + (q.to - q.from) * j / 256.0;
-      const PathPoint on = q.catenary ? sag_point(q, q.length * j / 256.0) : PathPoint{};
-      const double x = q.catenary ? on.x
-                       : q.sag    ? q.cx + q.radius * std::cos(a)
-                                  : q.x0 + (q.x1 - q.x0) * j / 256.0;
-      const double y = q.catenary ? on.y
-                       : q.sag    ? q.cy + q.radius * std::sin(a)
-                                  : q.y0 + (q.y1 - q.y0) * j / 256.0;
-      carried[k] = segment_distance(x, y, rail.x0, rail.y0, rail.x1, rail.y1) < roller;
+      const PathPoint on = span_sample(q, j, 256);
+      carried[k] = segment_distance(on.x, on.y, rail.x0, rail.y0, rail.x1, rail.y1) < roller;
     }
   }
   // the rail's end the arc is laid at (the rail's end nearer one of the arc's ends)
