@@ -1716,14 +1716,14 @@ Setup parse(const analysis::Inputs& in) {
                             "covers; here " +
                             shown(s.expected_load) + " N)"});
   }
-  // contact_law = "line": the expected seat load within the law's range (the cap, line_cap);
+  // contact_law = "line": the expected seat load within the law's range (the cap, cap_load);
   // a load the Hertz default could not take is reported above
   if (s.line_law && loads_known && s.expected_load > 0.0 &&
       !(s.hertz_stiffness && std::isnan(s.contact_stiffness))) {
     const Sprocket probe =
         iso606_sprocket(s.pitch, s.roller, s.width, probe_teeth, 0.0, 0.0, 1.0, 0.0);
     const double cap =
-        s.width * line_cap(contact::line_approach(seat_line_contact(probe, s.width)));
+        s.width * contact::line_approach(seat_line_contact(probe, s.width)).cap_load();
     if (!(s.expected_load < cap))
       issues.push_back({at("contact_law"), "'line'",
                         "a seat load load_torque/R + pretension below the line law's "
