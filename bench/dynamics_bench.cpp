@@ -66,6 +66,31 @@ BENCHMARK(BM_DynamicsLoopStepHingeFriction)
     ->Arg(800)
     ->Unit(benchmark::kMicrosecond);
 
+// Steps `s` once per benchmark iteration, stopping with an error on a step that does not converge;
+// the Newton iterations, factorizations and backtracks summed, the steps counted and the deepest
+// penetration.
+struct StepTally {
+  long iterations = 0, steps = 0, factorizations = 0, backtracks = 0;
+  double penetration = 0.0;
+};
+StepTally step_on(benchmark::State& bs, Integrator& integ, const Model& m, State& s) {
+  StepTally t;
+  for (auto _ : bs) {
+    const StepReport rep = integ.step(m, s);
+    if (!rep.converged) {
+      bs.SkipWithError("step did not converge");
+      break;
+    }
+    t.iterations += rep.iterations;
+    t.factorizations += rep.factorizations;
+    t.backtracks += rep.backtracks;
+    t.penetration = std::max(t.penetration, rep.max_penetration);
+    ++t.steps;
+    benchmark::DoNotOptimize(s.x.data());
+  }
+  return t;
+}
+
 // The drive: a 200-link 12B loop over two equal sprockets (z = 20, 90 pitches apart, the
 // polygons in phase), the driver at 30 rad/s (1.8 m/s), the driven wheel with J = 0.05 kg·m² and
 // a 20 N·m load, gravity in the plane, contacts k_c = 2e8 N/m, c_c = 800 N·s/m, θ = 0.6 (the
@@ -79,21 +104,8 @@ void two_sprocket_drive(benchmark::State& bs, double hinge_arm, PinLoad pin_load
   const Model& m = drive.model;
   State& s = drive.state;
   Integrator integ(m, {.step = 1e-4, .theta = 0.6});
-  long iterations = 0, steps = 0, factorizations = 0, backtracks = 0;
-  double penetration = 0.0;
-  for (auto _ : bs) {
-    const StepReport rep = integ.step(m, s);
-    if (!rep.converged) {
-      bs.SkipWithError("step did not converge");
-      break;
-    }
-    iterations += rep.iterations;
-    factorizations += rep.factorizations;
-    backtracks += rep.backtracks;
-    penetration = std::max(penetration, rep.max_penetration);
-    ++steps;
-    benchmark::DoNotOptimize(s.x.data());
-  }
+  const auto [iterations, steps, factorizations, backtracks, penetration] =
+      step_on(bs, integ, m, s);
   bs.counters["newton_iterations"] =
       benchmark::Counter(static_cast<double>(iterations) / static_cast<double>(steps));
   bs.counters["factorizations"] =
@@ -212,18 +224,9 @@ void BM_DynamicsExampleDriveSeatLaw(benchmark::State& bs) {
   }
   State s = two_sprocket_loop(kTeeth, kSpan, kPitch, m.sprockets[0].pitch_radius, kOmega);
   Integrator integ(m, {.step = 1e-4, .theta = 0.6});
-  long iterations = 0, steps = 0;
-  double penetration = 0.0;
-  for (auto _ : bs) {
-    const StepReport rep = integ.step(m, s);
-    if (!rep.converged) {
-      bs.SkipWithError("step did not converge");
-      break;
-    }
-    iterations += rep.iterations;
-    penetration = std::max(penetration, rep.max_penetration);
-    ++steps;
-  }
+  const StepTally t = step_on(bs, integ, m, s);
+  const long iterations = t.iterations, steps = t.steps;
+  const double penetration = t.penetration;
   bs.counters["newton_iterations"] =
       benchmark::Counter(static_cast<double>(iterations) / static_cast<double>(steps));
   bs.counters["max_penetration_um"] = 1e6 * penetration;

@@ -570,8 +570,9 @@ TEST(DynamicsCli, ContactStiffnessDefaultsToTheHertzLineContact) {
 // linear secant the default takes at the same expected load (measured: 1.45 against 2.91 µm; the
 // law is softer at first touch, so the rollers engage with less impact, and it has no ramp's ε/2;
 // with the linear law in its place the two runs are the same). The law's field and keys are
-// checked: an unknown law, contact_stiffness with it, a pocket wheel with it and an expected seat
-// load past its cap are refused, each by name.
+// checked: an unknown law, a pocket wheel with it and an expected seat load past its cap are
+// refused, each by name; with no expected seat load contact_stiffness (then the guides' and the
+// take-up's stops' penalty) is asked for, and given, accepted.
 TEST(DynamicsCli, LineContactLawRunsTheExampleDrive) {
   std::stringstream text;
   text << std::ifstream(kExample).rdbuf();
@@ -607,14 +608,35 @@ TEST(DynamicsCli, LineContactLawRunsTheExampleDrive) {
   std::string unknown = line;
   unknown.replace(unknown.find("\"line\""), 6, "\"hertz\"");
   refused("law_unknown.toml", unknown, "linear or line");
-  std::string stiff = line;
-  stiff.insert(stiff.find("contact_law"), "contact_stiffness = \"2e8 N/m\"\n");
-  refused("law_stiffness.toml", stiff, "no contact_stiffness with contact_law = \"line\"");
-  std::string heavy = line;  // Q0 = T_L/R + pretension past the law's cap (50.4 kN for 12B)
   const std::string rest = "pretension = \"950 N\"";
-  ASSERT_NE(heavy.find(rest), std::string::npos);
+  ASSERT_NE(line.find(rest), std::string::npos);
+  std::string heavy = line;  // Q0 = T_L/R + pretension past the law's cap (50.4 kN for 12B)
   heavy.replace(heavy.find(rest), rest.size(), "pretension = \"60 kN\"");
-  refused("law_heavy.toml", heavy, "below the line law's cap");
+  refused("law_heavy.toml", heavy,
+          "below the line law's cap 50.4 kN (b = 4R_ref/e^1.5; here 60.3 kN)");
+  // no expected seat load (no pretension, no load torque): the Hertz default has no load to be
+  // taken at, so contact_stiffness is asked for as the guides' and the stops' penalty (not the
+  // seats': they follow the load), and given, the case runs
+  std::string idle = line;
+  idle.replace(idle.find(rest), rest.size(), "pretension = \"0 N\"");
+  const std::string torque = "load_torque = 10";
+  ASSERT_NE(idle.find(torque), std::string::npos);
+  idle.replace(idle.find(torque), torque.size(), "load_torque = 0");
+  const CliRun missing = run("dynamics " + write("law_idle.toml", idle));
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("dynamics.contact_stiffness = (missing)"), std::string::npos)
+      << missing.err;
+  EXPECT_NE(missing.err.find("the guides and a take-up's end stops"), std::string::npos)
+      << missing.err;
+  EXPECT_EQ(missing.err.find("roller-seat penalty"), std::string::npos) << missing.err;
+  std::string idle_stiff = idle;
+  idle_stiff.insert(idle_stiff.find("contact_law"), "contact_stiffness = \"2e8 N/m\"\n");
+  const CliRun idle_run =
+      run("dynamics " + write("law_idle_stiff.toml", idle_stiff) + " --duration 5ms --format json");
+  ASSERT_EQ(idle_run.status, 0) << idle_run.err;
+  const auto ji = nlohmann::json::parse(idle_run.out);
+  EXPECT_EQ(ji["contact_law"], "line");
+  EXPECT_FALSE(ji.contains("contact_load"));  // the penalty given: no Hertz default reported
   std::stringstream pocket_text;
   pocket_text
       << std::ifstream(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_pocketwheel.toml").rdbuf();

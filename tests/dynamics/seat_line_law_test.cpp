@@ -67,7 +67,7 @@ double quadrature(const Sprocket& w, double from, double to) {
 // the quadrature of the force over g; beyond the cap the tangent there, C¹ and with its energy.
 TEST(DynamicsSeatLineLaw, InverseTangentAndEnergyAgainstIndependentNumerics) {
   const Sprocket w = line_wheel(12);
-  const double cap = kWidth * line_cap(w.line);
+  const double cap = kWidth * w.line.cap_load();
   EXPECT_GT(cap, 4e4);
   EXPECT_LT(cap, 6e4);
   std::mt19937 rng(21);
@@ -100,7 +100,7 @@ TEST(DynamicsSeatLineLaw, InverseTangentAndEnergyAgainstIndependentNumerics) {
   // past the branch's end e^(C−1) the inverse has no value
   EXPECT_TRUE(std::isnan(w.line.load(1.001 * w.line.approach(w.line.max_load()))));
   // beyond the cap: force and stiffness continuous, then linear, energy its integral
-  const double g_cap = w.line.approach(line_cap(w.line));
+  const double g_cap = w.line.approach(w.line.cap_load());
   const SeatContact below = law(w, g_cap * (1 - 1e-9)), above = law(w, g_cap * (1 + 1e-9));
   EXPECT_NEAR(above.force / below.force, 1.0, 1e-8);
   EXPECT_NEAR(above.stiffness / below.stiffness, 1.0, 1e-6);
@@ -110,7 +110,8 @@ TEST(DynamicsSeatLineLaw, InverseTangentAndEnergyAgainstIndependentNumerics) {
   EXPECT_NEAR(deep.energy / e_deep, 1.0, 1e-9);
 }
 
-// The model's check refuses the line law on a pocket wheel and without its width, by field.
+// The model's check refuses the line law on a pocket wheel, without its width and without the
+// cap's constants use_line_law sets, by field.
 TEST(DynamicsSeatLineLaw, ModelCheckNamesTheLawsFields) {
   Model m = uniform_chain(2, false, kPitch, 0.0238, 5e7, 0.0, false);
   m.sprockets = {line_wheel(12)};
@@ -118,6 +119,15 @@ TEST(DynamicsSeatLineLaw, ModelCheckNamesTheLawsFields) {
   m.sprockets[0].speed = 13.0;
   for (const Issue& i : validate(m))
     ADD_FAILURE() << i.field << " " << i.value << " " << i.expected;
+  // the line set without use_line_law: the cap's constants missing, named
+  Sprocket bare = m.sprockets[0];
+  bare.line_cap_depth = bare.line_cap_stiffness = 0.0;
+  Model unset = m;
+  unset.sprockets = {bare};
+  bool cap = false;
+  for (const Issue& i : validate(unset))
+    cap = cap || i.field.find("line_cap_depth") != std::string::npos;
+  EXPECT_TRUE(cap);
   m.sprockets[0].line_width = 0.0;
   m.sprockets[0].pocket = true;
   bool width = false, pocket = false;

@@ -103,6 +103,9 @@ struct LineApproach {
   double slope(double q) const { return a * (c - std::log(q) - 1.0); }
   /// [N/m] the q at which δ stops increasing
   double max_load() const { return std::exp(c - 1.0); }
+  /// [N/m] the dynamics seat law's cap e^(C−2), where dδ/dq has fallen to A (b = 4R_ref/e^(3/2),
+  /// 0.37 of max_load()); beyond it the seat law continues along the tangent there
+  double cap_load() const { return std::exp(c - 2.0); }
   /// [N/m] the inverse: q with δ(q) = delta, for 0 ≤ delta < δ(max_load()) (Newton in ln q,
   /// bracketed, no allocation); 0 for delta ≤ 0, NaN beyond the increasing branch
   double load(double delta) const;

@@ -49,11 +49,16 @@ struct Sprocket {
   double contact_smoothing = 1e-6;
   /// The seats' elastic law (docs/models/dynamics.md, "Contact law"). false: the linear penalty
   /// above. true: the Hertz line contact `line` over the width `line_width` (b1): the force Q(g)
-  /// with δ(Q/b1) = g, up to the cap line_cap(), beyond it the tangent there; contact_stiffness
-  /// then serves only a take-up's end stops (slide_stop). The damping is the same in both.
+  /// with δ(Q/b1) = g, up to the cap line.cap_load(), beyond it the tangent there;
+  /// contact_stiffness then serves only a take-up's end stops (slide_stop). The damping is the same
+  /// in both.
   bool line_law = false;
   contact::LineApproach line;
-  double line_width = 0.0;   ///< [m] b1
+  double line_width = 0.0;  ///< [m] b1
+  /// the cap's constants (use_line_law sets them from `line` and b1; line_force reads them): its
+  /// approach [m], force [N], tangent dQ/dg [N/m] and energy [J]
+  double line_cap_depth = 0.0, line_cap_force = 0.0, line_cap_stiffness = 0.0;
+  double line_cap_energy = 0.0;
   bool driver = false;       ///< prescribed speed (true) or inertia + load (false)
   double speed = 0.0;        ///< [rad/s] a driver's speed, counter-clockwise positive
   double inertia = 0.0;      ///< [kg·m²] a driven wheel's moment of inertia
@@ -564,10 +569,6 @@ void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx
 /// default"): the roller d1 = 2 r in the seating arc ri (concave), over the inner width b1,
 /// steel on steel. The Hertz default's secant and the line law both evaluate its approach.
 contact::RollerTooth seat_line_contact(const Sprocket& w, double width);
-/// [N/m] The line law's cap: the load per length e^(C−2) at which dδ/dq has fallen to A
-/// (b = 4R_ref/e^(3/2), 0.37 of the branch's end e^(C−1)); beyond it the seat law continues along
-/// the tangent there.
-double line_cap(const contact::LineApproach& l);
 /// The line law's elastic part at penetration g ≥ 0 on a wheel with `line_law`: force [N],
 /// ∂force/∂g [N/m] and energy [J].
 struct LineForce {
@@ -575,7 +576,7 @@ struct LineForce {
 };
 LineForce line_force(const Sprocket& w, double g);
 /// Turns an ISO wheel's seats to the line law over the inner width b1 = `width` (line_law,
-/// line_width, line from seat_line_contact).
+/// line_width, line from seat_line_contact, and the cap's constants line_cap_*).
 void use_line_law(Sprocket& w, double width);
 
 /// One joint's contact with the nearest pocket of a pocket wheel (`Sprocket::pocket`), found in

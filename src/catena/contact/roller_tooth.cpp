@@ -131,7 +131,10 @@ double slice_approach(const RollerTooth& c, double q) { return line_approach(c).
 
 namespace {
 // Largest load per length for which δ(q) still increases: b = 4R_ref/e (beyond it the
-// plane-strain approach formula is outside its range).
+// plane-strain approach formula is outside its range). LineApproach::max_load() is the same value
+// as e^(C−1), and LineApproach::load the same inverse by Newton, but both round differently in
+// the last digit, which moves the last digit of examples/001_roller_chain_skew.toml's slice
+// loads: the slice model keeps this form and the bracketed root.
 double slice_load_limit(const RollerTooth& c) {
   const double b_max = 4.0 * 0.5 * c.roller_diameter / std::exp(1.0);
   return kPi * contact_modulus(c.roller, c.tooth) * b_max * b_max / (4.0 * reduced_radius(c));

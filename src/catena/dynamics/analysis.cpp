@@ -122,7 +122,8 @@ std::vector<Parameter> table_fields() {
       // the seats' elastic law (docs/models/dynamics.md, "Contact law")
       text("contact_law",
            "the ISO seats' elastic law: linear (the penalty contact_stiffness, the default) or "
-           "line (the Hertz line contact's approach law, followed in load; no contact_stiffness; "
+           "line (the Hertz line contact's approach law, followed in load; contact_stiffness, "
+           "given or the Hertz default, is then the guides' and a take-up's stops' penalty; "
            "not with wheel = \"pocket\")"),
       // the round-link chain on pocket wheels (docs/models/dynamics.md, "Pocket wheel")
       text("wheel",
@@ -1370,11 +1371,6 @@ Setup parse(const analysis::Inputs& in) {
     issues.push_back({at("contact_law"), "'line'",
                       "linear with wheel = \"pocket\" (the line law is the roller in an ISO "
                       "seat; a round link's joint in its pocket keeps the penalty)"});
-  if (line_law && !s.pocket && line.count("contact_stiffness"))
-    issues.push_back({at("contact_stiffness"), "(given)",
-                      "no contact_stiffness with contact_law = \"line\" (the seats' stiffness "
-                      "follows the load; the guides and the take-up's stops take the Hertz "
-                      "secant, or a guide's own contact_stiffness)"});
   // a round-link chain on pocket wheels: no catalogue, no roller; the keys of the roller chain
   // and the parts not built for a pocket are refused, each by name
   if (s.pocket) {
@@ -1699,30 +1695,42 @@ Setup parse(const analysis::Inputs& in) {
   } else if (s.teeth) {
     driven_pull = s.load / (0.5 * s.pitch / std::sin(kPi / s.teeth));
   }
-  if (s.hertz_stiffness && probe_teeth && s.pitch > 0.0 && s.roller > 0.0 && s.width > 0.0 &&
-      s.pretension >= 0.0 && s.load >= 0.0) {
+  const bool loads_known = !s.pocket && probe_teeth && s.pitch > 0.0 && s.roller > 0.0 &&
+                           s.width > 0.0 && s.pretension >= 0.0 && s.load >= 0.0;
+  if (loads_known && (s.hertz_stiffness || s.line_law))
     s.expected_load = driven_pull + s.pretension;
+  if (s.hertz_stiffness && loads_known) {
     s.contact_stiffness = s.expected_load > 0.0 ? hertz_seat_stiffness(s.pitch, s.roller, s.width,
                                                                        probe_teeth, s.expected_load)
                                                 : NAN;
+    // with the line law the penalty is the guides' and the take-up's stops', not the seats'
+    const std::string what =
+        s.line_law ? "the penalty of the guides and a take-up's end stops with contact_law = "
+                     "\"line\" (the seats follow the load)"
+                   : "the roller-seat penalty k_c";
     if (std::isnan(s.contact_stiffness))
       issues.push_back({"dynamics.contact_stiffness", "(missing)",
-                        "the roller-seat penalty k_c, e.g. \"2e8 N/m\" (the Hertz default needs "
-                        "an expected seat load load_torque/R + pretension > 0 that the line "
-                        "contact's approach law covers; here " +
+                        what +
+                            ", e.g. \"2e8 N/m\" (the Hertz default needs an expected seat load "
+                            "load_torque/R + pretension > 0 that the line contact's approach law "
+                            "covers; here " +
                             shown(s.expected_load) + " N)"});
   }
-  // contact_law = "line": the expected seat load within the law's range (the cap, line_cap)
-  if (s.line_law && !std::isnan(s.contact_stiffness) && s.expected_load > 0.0) {
+  // contact_law = "line": the expected seat load within the law's range (the cap, cap_load);
+  // a load the Hertz default could not take is reported above
+  if (s.line_law && loads_known && s.expected_load > 0.0 &&
+      !(s.hertz_stiffness && std::isnan(s.contact_stiffness))) {
     const Sprocket probe =
         iso606_sprocket(s.pitch, s.roller, s.width, probe_teeth, 0.0, 0.0, 1.0, 0.0);
     const double cap =
-        s.width * line_cap(contact::line_approach(seat_line_contact(probe, s.width)));
+        s.width * contact::line_approach(seat_line_contact(probe, s.width)).cap_load();
     if (!(s.expected_load < cap))
       issues.push_back({at("contact_law"), "'line'",
-                        "an expected seat load load_torque/R + pretension = " +
-                            shown(s.expected_load) + " N below the line law's cap " + shown(cap) +
-                            " N (b = 4R_ref/e^1.5), or contact_law = \"linear\""});
+                        "a seat load load_torque/R + pretension below the line law's "
+                        "cap " +
+                            format_g(cap * 1e-3, 3) + " kN (b = 4R_ref/e^1.5; here " +
+                            format_g(s.expected_load * 1e-3, 3) +
+                            " kN), or contact_law = \"linear\""});
   }
   check_scales(s, wheels, at, in.present("step") ? std::string("step") : at("step"), issues);
   s.gravity = gravity;

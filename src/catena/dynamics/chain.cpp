@@ -181,9 +181,13 @@ std::vector<Issue> validate(const Model& model) {
         out.push_back({f + "line_law", "on a pocket wheel", "the linear law on a pocket wheel"});
       check::finite_positive(out, (f + "line_width").c_str(), s.line_width, "m");
       if (!(s.line.a > 0.0 && std::isfinite(s.line.a) && std::isfinite(s.line.c) &&
-            std::isfinite(line_cap(s.line)) && line_cap(s.line) > 0.0))
+            std::isfinite(s.line.cap_load()) && s.line.cap_load() > 0.0))
         out.push_back({f + "line", "(constants)",
                        "a line contact with finite A > 0 and C (line_approach of the seat)"});
+      else if (!(s.line_cap_depth > 0.0 && std::isfinite(s.line_cap_depth) &&
+                 s.line_cap_stiffness > 0.0 && std::isfinite(s.line_cap_stiffness)))
+        out.push_back({f + "line_cap_depth", "(constants)",
+                       "the cap's constants of the line (set by use_line_law)"});
     }
     if (!std::isfinite(s.contact_damping) || s.contact_damping < 0.0) {
       out.push_back({f + "contact_damping", check::format_si(s.contact_damping, "N*s/m"),
@@ -688,13 +692,11 @@ contact::RollerTooth seat_line_contact(const Sprocket& w, double width) {
   return c;
 }
 
-double line_cap(const contact::LineApproach& l) { return std::exp(l.c - 2.0); }
-
 LineForce line_force(const Sprocket& w, double g) {
   LineForce f;
   if (!(g > 0.0)) return f;
   const contact::LineApproach& l = w.line;
-  const double b1 = w.line_width, q_cap = line_cap(l), g_cap = l.approach(q_cap);
+  const double b1 = w.line_width, g_cap = w.line_cap_depth;
   if (g < g_cap) {
     const double q = l.load(g);
     f.force = b1 * q;
@@ -703,10 +705,10 @@ LineForce line_force(const Sprocket& w, double g) {
     return f;
   }
   // beyond the cap: the tangent at it (C¹), its energy the trapezoid added to the cap's
-  const double k = b1 / l.slope(q_cap), s = g - g_cap, f_cap = b1 * q_cap;
+  const double k = w.line_cap_stiffness, s = g - g_cap, f_cap = w.line_cap_force;
   f.force = f_cap + k * s;
   f.stiffness = k;
-  f.energy = b1 * l.energy(q_cap) + f_cap * s + 0.5 * k * s * s;
+  f.energy = w.line_cap_energy + f_cap * s + 0.5 * k * s * s;
   return f;
 }
 
@@ -714,6 +716,11 @@ void use_line_law(Sprocket& w, double width) {
   w.line_law = true;
   w.line_width = width;
   w.line = contact::line_approach(seat_line_contact(w, width));
+  const double q_cap = w.line.cap_load();
+  w.line_cap_depth = w.line.approach(q_cap);
+  w.line_cap_force = width * q_cap;
+  w.line_cap_stiffness = width / w.line.slope(q_cap);
+  w.line_cap_energy = width * w.line.energy(q_cap);
 }
 
 void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx, double vy,
