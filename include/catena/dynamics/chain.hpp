@@ -249,9 +249,11 @@ GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, do
 /// (t = (−n_y, n_x) = −u, u the direction from the first end to the second); 0 on an arc.
 double guide_position(const Guide& g, const GuideFrame& frame, double x, double y);
 /// The anchor after a step whose contact (at the step's θ point, about the anchor `anchor`) was
-/// `c`: unchanged while the spring holds, else moved so that k_t |s − a| = μ f (the slip). NaN
-/// (released) when the contact is inactive or carries no normal force.
-double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor);
+/// `c` and that ends at the position `end` [m] along t (s₁, guide_position): unchanged while
+/// |s₁ − a| is within the spring's reach μ f/k_t (f the θ point's normal force), else moved to
+/// s₁ ∓ μ f/k_t (the slip), so that the spring is left stretched by at most its reach. NaN
+/// (released) when the contact is inactive or carries no normal force; `end` for a NaN anchor.
+double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor, double end);
 /// A rail's load (Guide::load_per_metre q_L) on one node at q (dynamics.md, "A conveyed load"):
 /// F = q_L p g w(s), g the gravity, p the pitch, s the node's place along the rail from its first
 /// end (straight: (q − P₀)·u; arc: ρ_c φ, φ its angle from the start, ρ_c = R ± r the rollers'

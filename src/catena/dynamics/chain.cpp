@@ -275,6 +275,9 @@ std::vector<Issue> validate(const Model& model) {
     } else if (g.stick_stiffness > 0.0 && g.kind != Guide::Kind::kStraight) {
       out.push_back({f + "stick_stiffness", check::format_si(g.stick_stiffness, "N/m"),
                      "0 on an arc guide: sticking is built on straight guides only"});
+    } else if (g.stick_stiffness > 0.0 && g.friction == 0.0) {
+      out.push_back({f + "stick_stiffness", check::format_si(g.stick_stiffness, "N/m"),
+                     "0 on a frictionless guide (friction = 0: nothing to stick with)"});
     }
     if (!std::isfinite(g.load_per_metre) || !(g.load_per_metre >= 0.0) ||
         !(g.load_per_metre <= kMaxRailLoad)) {
@@ -448,14 +451,15 @@ double guide_position(const Guide& g, const GuideFrame& frame, double x, double 
   return -((x - g.x0) * frame.ux + (y - g.y0) * frame.uy);
 }
 
-double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor) {
+double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor, double end) {
   if (!c.active || !(c.normal_force > 0.0)) return NAN;  // off the rail or lifting: released
-  if (!std::isfinite(anchor)) return c.position;         // first touch: it sticks where it is
-  // the spring's reach μ f/k_t: beyond it the anchor follows the roller (the slip)
+  if (!std::isfinite(anchor)) return end;                // first touch: it sticks where it is
+  // the spring's reach μ f/k_t (the force the step applied): the spring is left at the step's end
+  // s₁ stretched by at most that, the anchor following the roller beyond it (the slip)
   const double reach = g.friction * std::max(c.normal_force, 0.0) / g.stick_stiffness;
-  const double d = c.position - anchor;
+  const double d = end - anchor;
   if (std::abs(d) <= reach) return anchor;
-  return c.position - std::copysign(reach, d);
+  return end - std::copysign(reach, d);
 }
 
 GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, double y, double vx,

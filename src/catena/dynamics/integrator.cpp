@@ -1091,12 +1091,14 @@ StepReport Integrator::step(const Model& model, State& s) {
     const Guide& guide = model.guides[g];
     if (guide.stick_stiffness > 0.0) {
       // The stick law (Guide::stick_stiffness): every node's anchor moves on from the contact at
-      // the θ point (the force the step applied) — kept while the spring held, dragged to the
-      // spring's reach where it slid, released off the rail or lifting. The springs' energy
+      // the θ point (the force the step applied, its reach μ f/k_t) and the step's end s₁ — kept
+      // while |s₁ − a| is within the reach, dragged to s₁ ∓ reach where it slid (the spring left
+      // at most at its reach), released off the rail or lifting. The springs' energy
       // ½ k_t (s − a)² is in energy(); the friction work is minus what the spring–slider
       // dissipated over the step: the friction force's work on the roller, h f_t v_t, plus the
       // change of the spring's energy from (s₀, a₀) to (s₁, a₁) — −μ f |Δa| while sliding
-      // steadily, 0 while sticking (θ = ½), minus the spring's whole energy where it is released.
+      // steadily, −k_t (θ − ½) Δs² while sticking (the θ-method's damping of the spring; 0 at
+      // θ = ½), minus the spring's whole energy where it is released.
       const GuideBounds bounds = guide_bounds(guide);
       const double kt = guide.stick_stiffness;
       for (std::size_t i = 0; i < n; ++i) {
@@ -1105,14 +1107,13 @@ StepReport Integrator::step(const Model& model, State& s) {
         const double a = step_anchor(model, guide_frame_[g], s, g, i);
         const GuideContact gc = guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_,
                                                        i, qx_[i], qy_[i], h, a);
-        const double next = stick_anchor_after(guide, gc, a);
+        const double end = guide_position(guide, guide_frame_[g], ux_[i], uy_[i]);
+        const double next = stick_anchor_after(guide, gc, a, end);
         s.stick_anchor[g * n + i] = next;
         if (!std::isfinite(was) && !std::isfinite(next) && !gc.active) continue;
         const double d0 =
             std::isfinite(was) ? guide_position(guide, guide_frame_[g], s.x[i], s.y[i]) - was : 0.0;
-        const double d1 = std::isfinite(next)
-                              ? guide_position(guide, guide_frame_[g], ux_[i], uy_[i]) - next
-                              : 0.0;
+        const double d1 = std::isfinite(next) ? end - next : 0.0;
         const double work = gc.active ? h * gc.friction_force * gc.slip : 0.0;
         report.friction_work += work + 0.5 * kt * (d1 * d1 - d0 * d0);
         if (gc.active) report.contact_damping_work += h * gc.damping_power;
