@@ -387,11 +387,12 @@ TEST(GuideStick, ARollerComingOffALeadInIsAnchoredOnArrival) {
     Piece p;
     p.model = uniform_chain(2, false, kPitch, kMass, 1e6, 5.0, false);
     tilt(p.model, 0.0);
+    // the arc first: the rail is guide 1, the only sticking one (its anchors State::stick_anchor's
+    // first N)
     const Guide rail = level_rail(mu, k);
-    p.model.guides = {rail};
-    for (const Guide& a : lead_in_arcs(rail, {.radius = radius, .angle = sweep, .at_end = false}))
-      p.model.guides.push_back(a);
-    const Guide& arc = p.model.guides.at(1);
+    p.model.guides = lead_in_arcs(rail, {.radius = radius, .angle = sweep, .at_end = false});
+    p.model.guides.push_back(rail);
+    const Guide& arc = p.model.guides.at(0);
     // the rollers on the arc short of the joint at φ = π/2 (the leading one 6 mm before it),
     // resting on it, moving along it toward the rail
     const double rho = radius + kRoller -
@@ -409,7 +410,7 @@ TEST(GuideStick, ARollerComingOffALeadInIsAnchoredOnArrival) {
   };
   Piece p = entering(kt), q = entering(0.0);
   ASSERT_TRUE(validate(p.model).empty());
-  const Guide& rail = p.model.guides[0];
+  const Guide& rail = p.model.guides[1];
   const GuideFrame f = guide_frame(rail);
   const double x0 = rail.x0;
   const double reach = mu * 1.5 * kMass * kG / kt;  // the normal force within 1.5 m g
@@ -421,7 +422,8 @@ TEST(GuideStick, ARollerComingOffALeadInIsAnchoredOnArrival) {
     ASSERT_TRUE(integ.step(p.model, p.state).converged) << p.state.time;
     ASSERT_TRUE(plain.step(q.model, q.state).converged) << q.state.time;
     for (std::size_t i = 0; i < 2; ++i) {
-      const double a = p.state.stick_anchor.at(i);  // the rail is guide 0
+      ASSERT_EQ(p.state.stick_anchor.size(), 2u);  // the sticking rail's only
+      const double a = p.state.stick_anchor[i];
       const double s1 = guide_position(rail, f, p.state.x[i], p.state.y[i]);
       if (p.state.x[i] < x0 - 1e-4) {
         EXPECT_TRUE(std::isnan(a)) << p.state.time << " node " << i;

@@ -415,9 +415,10 @@ struct State {
   /// (Sprocket::pocket_release), set at the start and end of each step where the joint is within
   /// a mouth (update_held), cleared when its released contact's force is 0
   std::vector<int> held_wheel, held_pocket;
-  /// [m] per guide g and node i at [g·N + i]: the stick law's anchor a along the rail
-  /// (Guide::stick_stiffness; NaN: not in contact). Empty until a step on a model with a sticking
-  /// guide sizes it (once); set at the end of each step from the contact at its θ point.
+  /// [m] per sticking guide (Guide::stick_stiffness > 0), the k-th of them in the guides' order,
+  /// and node i at [k·N + i]: the stick law's anchor a along the rail (NaN: not in contact).
+  /// Empty until a step on a model with a sticking guide sizes it (once); set at the end of each
+  /// step from the contact at its θ point and the step's end (stick_anchor_after).
   std::vector<double> stick_anchor;
   explicit State(std::size_t nodes = 0, std::size_t sprockets = 0)
       : x(nodes),
