@@ -4,7 +4,7 @@
 // of range, on an arc, without gravity, on a rail whose carrying side faces down — with its line
 // and exit status 2; the drift is net of the load's work. And `stick_stiffness` on a guide
 // ("Guides: sticking"): every bad value named at once (negative, a wrong unit, on an arc, on a
-// frictionless rail).
+// frictionless rail), and an absurd one beyond the rail's penalty's bound over a step.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -190,6 +190,13 @@ TEST(DynamicsLoadCli, EveryBadStickStiffnessNamed) {
   for (const char* why :
        {"a finite stiffness >= 0 N/m", "0 on an arc guide", "0 on a frictionless guide", "N/m"})
     EXPECT_NE(r.err.find(why), std::string::npos) << why << "\n" << r.err;
+  // an absurd spring: the bound of the rail's penalty over a step ("The inputs' bounds")
+  const CliRun big =
+      run("dynamics " +
+          write("stick_big.toml", with_guide_key(example(), 2, "stick_stiffness = \"1e300 N/m\"")));
+  EXPECT_EQ(big.status, 2);
+  EXPECT_NE(big.err.find("dynamics.guide[2].stick_stiffness (line"), std::string::npos) << big.err;
+  EXPECT_NE(big.err.find("at most 5e+05 m/(theta step)^2"), std::string::npos) << big.err;
 }
 
 }  // namespace
