@@ -1092,6 +1092,12 @@ StepReport Integrator::step(const Model& model, State& s) {
   // the next assembly makes them afresh)
   if (!model.guides.empty()) theta_points(s);
   refresh_guide_hint(model);
+  // one contact's friction work over the step, h f_t v_t (0 off the rail), its damper's booked
+  auto contact_work = [&](const GuideContact& gc) {
+    if (!gc.active) return 0.0;
+    report.contact_damping_work += h * gc.damping_power;
+    return h * gc.friction_force * gc.slip;
+  };
   for (std::size_t g = 0; g < model.guides.size(); ++g) {
     const Guide& guide = model.guides[g];
     if (guide.stick_stiffness > 0.0) {
@@ -1120,9 +1126,7 @@ StepReport Integrator::step(const Model& model, State& s) {
         const double d0 =
             std::isfinite(was) ? guide_position(guide, guide_frame_[g], s.x[i], s.y[i]) - was : 0.0;
         const double d1 = std::isfinite(next) ? end - next : 0.0;
-        const double work = gc.active ? h * gc.friction_force * gc.slip : 0.0;
-        report.friction_work += work + 0.5 * kt * (d1 * d1 - d0 * d0);
-        if (gc.active) report.contact_damping_work += h * gc.damping_power;
+        report.friction_work += contact_work(gc) + 0.5 * kt * (d1 * d1 - d0 * d0);
       }
       continue;
     }
@@ -1133,9 +1137,7 @@ StepReport Integrator::step(const Model& model, State& s) {
       if (model.is_pinned(i)) continue;
       const GuideContact gc =
           guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_, i, qx_[i], qy_[i], h);
-      if (!gc.active) continue;
-      report.friction_work += h * gc.friction_force * gc.slip;
-      report.contact_damping_work += h * gc.damping_power;
+      report.friction_work += contact_work(gc);
     }
   }
   // The rails' loads' work over the step: the force the step applied (at the θ point) times the
