@@ -2,7 +2,9 @@
 // `catena dynamics`: a loaded rail adds the loads' work to the work balance (and nothing is added
 // without one: the example's output keeps its fields), and every bad load is named at once — out
 // of range, on an arc, without gravity, on a rail whose carrying side faces down — with its line
-// and exit status 2; the drift is net of the load's work.
+// and exit status 2; the drift is net of the load's work. And `stick_stiffness` on a guide
+// ("Guides: sticking"): every bad value named at once (negative, a wrong unit, on an arc, on a
+// frictionless rail), and an absurd one beyond the rail's penalty's bound over a step.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -166,6 +168,35 @@ TEST(DynamicsLoadCli, EveryBadLoadNamed) {
   EXPECT_EQ(w.status, 2);
   EXPECT_NE(w.err.find("dynamics.guide[0].load_per_metre"), std::string::npos) << w.err;
   EXPECT_NE(w.err.find("without gravity"), std::string::npos) << w.err;
+}
+
+TEST(DynamicsLoadCli, EveryBadStickStiffnessNamed) {
+  std::string text = with_guide_key(example(), 0, "stick_stiffness = \"-1 N/m\"");
+  text = with_guide_key(text, 1, "stick_stiffness = \"1e5 N/m\"");  // the upper lead-in's arc
+  text = with_guide_key(text, 3, "stick_stiffness = \"2 m\"");
+  // the lower rail made frictionless: nothing to stick with
+  const std::string mu = "friction = 0.3";
+  std::size_t at = 0;
+  for (int k = 0; k < 3; ++k) at = text.find(mu, k == 0 ? 0 : at + 1);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, mu.size(), "friction = 0\nstick_stiffness = \"1e5 N/m\"");
+  const CliRun r = run("dynamics " + write("stick.toml", text));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty());
+  for (const char* field :
+       {"dynamics.guide[0].stick_stiffness (line", "dynamics.guide[1].stick_stiffness (line",
+        "dynamics.guide[2].stick_stiffness", "dynamics.guide[3].stick_stiffness (line"})
+    EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
+  for (const char* why :
+       {"a finite stiffness >= 0 N/m", "0 on an arc guide", "0 on a frictionless guide", "N/m"})
+    EXPECT_NE(r.err.find(why), std::string::npos) << why << "\n" << r.err;
+  // an absurd spring: the bound of the rail's penalty over a step ("The inputs' bounds")
+  const CliRun big =
+      run("dynamics " +
+          write("stick_big.toml", with_guide_key(example(), 2, "stick_stiffness = \"1e300 N/m\"")));
+  EXPECT_EQ(big.status, 2);
+  EXPECT_NE(big.err.find("dynamics.guide[2].stick_stiffness (line"), std::string::npos) << big.err;
+  EXPECT_NE(big.err.find("at most 5e+05 m/(theta step)^2"), std::string::npos) << big.err;
 }
 
 }  // namespace

@@ -254,9 +254,11 @@ GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, do
 /// (t = (−n_y, n_x) = −u, u the direction from the first end to the second); 0 on an arc.
 double guide_position(const Guide& g, const GuideFrame& frame, double x, double y);
 /// The anchor after a step whose contact (at the step's θ point, about the anchor `anchor`) was
-/// `c`: unchanged while the spring holds, else moved so that k_t |s − a| = μ f (the slip). NaN
-/// (released) when the contact is inactive or carries no normal force.
-double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor);
+/// `c` and that ends at the position `end` [m] along t (s₁, guide_position): unchanged while
+/// |s₁ − a| is within the spring's reach μ f/k_t (f the θ point's normal force), else moved to
+/// s₁ ∓ μ f/k_t (the slip), so that the spring is left stretched by at most its reach. NaN
+/// (released) when the contact is inactive or carries no normal force; `end` for a NaN anchor.
+double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor, double end);
 /// A rail's load (Guide::load_per_metre q_L) on one node at q (dynamics.md, "A conveyed load"):
 /// F = q_L p g w(s), g the gravity, p the pitch, s the node's place along the rail from its first
 /// end (straight: (q − P₀)·u; arc: ρ_c φ, φ its angle from the start, ρ_c = R ± r the rollers'
@@ -418,9 +420,10 @@ struct State {
   /// (Sprocket::pocket_release), set at the start and end of each step where the joint is within
   /// a mouth (update_held), cleared when its released contact's force is 0
   std::vector<int> held_wheel, held_pocket;
-  /// [m] per guide g and node i at [g·N + i]: the stick law's anchor a along the rail
-  /// (Guide::stick_stiffness; NaN: not in contact). Empty until a step on a model with a sticking
-  /// guide sizes it (once); set at the end of each step from the contact at its θ point.
+  /// [m] per sticking guide (Guide::stick_stiffness > 0), the k-th of them in the guides' order,
+  /// and node i at [k·N + i]: the stick law's anchor a along the rail (NaN: not in contact).
+  /// Empty until a step on a model with a sticking guide sizes it (once); set at the end of each
+  /// step from the contact at its θ point and the step's end (stick_anchor_after).
   std::vector<double> stick_anchor;
   explicit State(std::size_t nodes = 0, std::size_t sprockets = 0)
       : x(nodes),

@@ -217,7 +217,9 @@ class Integrator {
   // iterations may reuse them)
   bool factors_kept_ = false;
   double max_penetration_ = 0.0;
-  std::vector<GuideFrame> guide_frame_;   // per guide: guide_frame, refreshed with the hint
+  std::vector<GuideFrame> guide_frame_;  // per guide: guide_frame, refreshed with the hint
+  // per guide: its slot in State::stick_anchor (−1: not sticking), refreshed with the frames
+  std::vector<std::ptrdiff_t> stick_slot_;
   GuideHint guide_hint_;                  // per guide: the nodes near it
   std::vector<std::uint32_t> all_nodes_;  // 0 … N − 1 (the guide loops without the hint)
   // the dissipative works of the last assembly's iterate (StepReport's fields)

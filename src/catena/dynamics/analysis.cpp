@@ -1898,6 +1898,10 @@ Setup parse(const analysis::Inputs& in) {
     guide.friction_band = get("friction_band", 1e-3);
     guide.load_per_metre = get("load_per_metre", 0.0);
     guide.stick_stiffness = get("stick_stiffness", 0.0);
+    // the stick spring sits in the rail's Newton block beside its penalty: the penalty's bound
+    if (scales_known(s) && g.value.count("stick_stiffness"))
+      check_contact(s, field("stick_stiffness"), guide.stick_stiffness, "",
+                    field("contact_damping"), NAN, issues);
     // a load's weight is q_L g: without gravity it would do nothing, silently
     if (guide.load_per_metre > 0.0 && !(s.gravity > 0.0))
       issues.push_back({field("load_per_metre"), shown(guide.load_per_metre) + " kg/m",

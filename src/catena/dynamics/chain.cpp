@@ -282,6 +282,9 @@ std::vector<Issue> validate(const Model& model) {
     } else if (g.stick_stiffness > 0.0 && g.kind != Guide::Kind::kStraight) {
       out.push_back({f + "stick_stiffness", check::format_si(g.stick_stiffness, "N/m"),
                      "0 on an arc guide: sticking is built on straight guides only"});
+    } else if (g.stick_stiffness > 0.0 && g.friction == 0.0) {
+      out.push_back({f + "stick_stiffness", check::format_si(g.stick_stiffness, "N/m"),
+                     "0 on a frictionless guide (friction = 0: nothing to stick with)"});
     }
     if (!std::isfinite(g.load_per_metre) || !(g.load_per_metre >= 0.0) ||
         !(g.load_per_metre <= kMaxRailLoad)) {
@@ -455,14 +458,15 @@ double guide_position(const Guide& g, const GuideFrame& frame, double x, double 
   return -((x - g.x0) * frame.ux + (y - g.y0) * frame.uy);
 }
 
-double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor) {
+double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor, double end) {
   if (!c.active || !(c.normal_force > 0.0)) return NAN;  // off the rail or lifting: released
-  if (!std::isfinite(anchor)) return c.position;         // first touch: it sticks where it is
-  // the spring's reach μ f/k_t: beyond it the anchor follows the roller (the slip)
+  if (!std::isfinite(anchor)) return end;                // first touch: it sticks where it is
+  // the spring's reach μ f/k_t (the force the step applied): the spring is left at the step's end
+  // s₁ stretched by at most that, the anchor following the roller beyond it (the slip)
   const double reach = g.friction * std::max(c.normal_force, 0.0) / g.stick_stiffness;
-  const double d = c.position - anchor;
+  const double d = end - anchor;
   if (std::abs(d) <= reach) return anchor;
-  return c.position - std::copysign(reach, d);
+  return end - std::copysign(reach, d);
 }
 
 GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, double y, double vx,
@@ -524,14 +528,14 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   const double fg = slope + dcg * rate;
   const double dfq[2] = {-fg * nx - cg * kappa * vt * tx, -fg * ny - cg * kappa * vt * ty};
   const double dfv[2] = {-cg * nx, -cg * ny};
+  // the friction f_t and its gradients, by the stick law or the regularised one
+  double ft = 0.0, dftq[2] = {0.0, 0.0}, dftv[2] = {0.0, 0.0};
   if (stick) {
     // the stick law on a straight rail (κ = 0, t fixed): f_t = −k_t (s − a) while that is within
     // ±μ f (∂s/∂q = tᵀ), else −μ f sgn(s − a) (sliding, the spring at its reach)
     const double mu = gd.friction, kt = gd.stick_stiffness, d = c.position - anchor;
-    const double spring = -kt * d;
-    double dftq[2] = {0.0, 0.0}, dftv[2] = {0.0, 0.0};
-    double ft = spring;
-    if (std::abs(spring) <= mu * f) {
+    ft = -kt * d;
+    if (std::abs(ft) <= mu * f) {
       c.sticking = true;
       dftq[0] = -kt * tx;
       dftq[1] = -kt * ty;
@@ -543,35 +547,23 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
       dftv[0] = -mu * sgn * dfv[0];
       dftv[1] = -mu * sgn * dfv[1];
     }
-    c.normal_force = f;
-    c.friction_force = ft;
-    c.fx = f * nx + ft * tx;
-    c.fy = f * ny + ft * ty;
-    c.dq[0] = nx * dfq[0] + tx * dftq[0];
-    c.dq[1] = nx * dfq[1] + tx * dftq[1];
-    c.dq[2] = ny * dfq[0] + ty * dftq[0];
-    c.dq[3] = ny * dfq[1] + ty * dftq[1];
-    c.dv[0] = nx * dfv[0] + tx * dftv[0];
-    c.dv[1] = nx * dfv[1] + tx * dftv[1];
-    c.dv[2] = ny * dfv[0] + ty * dftv[0];
-    c.dv[3] = ny * dfv[1] + ty * dftv[1];
-    return c;
+  } else {
+    // friction −μ f φ(v_t), φ = v_t/√(v_t² + v_ε²); ∂v_t/∂q = −κ v_n tᵀ (t turns with n on an arc)
+    const double ve2 = gd.friction_band * gd.friction_band;
+    const double root = std::sqrt(vt * vt + ve2);
+    const double phi = vt / root, dphi = ve2 / (root * root * root);
+    const double mu = gd.friction;
+    ft = -mu * f * phi;
+    dftq[0] = -mu * phi * dfq[0] + mu * f * dphi * kappa * vn * tx;
+    dftq[1] = -mu * phi * dfq[1] + mu * f * dphi * kappa * vn * ty;
+    dftv[0] = -mu * phi * dfv[0] - mu * f * dphi * tx;
+    dftv[1] = -mu * phi * dfv[1] - mu * f * dphi * ty;
   }
-  // friction −μ f φ(v_t), φ = v_t/√(v_t² + v_ε²); ∂v_t/∂q = −κ v_n tᵀ (t turns with n on an arc)
-  const double ve2 = gd.friction_band * gd.friction_band;
-  const double root = std::sqrt(vt * vt + ve2);
-  const double phi = vt / root, dphi = ve2 / (root * root * root);
-  const double mu = gd.friction;
-  const double ft = -mu * f * phi;
-  const double dftq[2] = {-mu * phi * dfq[0] + mu * f * dphi * kappa * vn * tx,
-                          -mu * phi * dfq[1] + mu * f * dphi * kappa * vn * ty};
-  const double dftv[2] = {-mu * phi * dfv[0] - mu * f * dphi * tx,
-                          -mu * phi * dfv[1] - mu * f * dphi * ty};
   c.normal_force = f;
   c.friction_force = ft;
   c.fx = f * nx + ft * tx;
   c.fy = f * ny + ft * ty;
-  // ∂F/∂q = n ⊗ ∂f/∂q + f κ t tᵀ + t ⊗ ∂f_t/∂q − f_t κ n tᵀ  (∂t/∂q = −κ n tᵀ)
+  // ∂F/∂q = n ⊗ ∂f/∂q + f κ t tᵀ + t ⊗ ∂f_t/∂q − f_t κ n tᵀ  (∂t/∂q = −κ n tᵀ; κ = 0 straight)
   c.dq[0] = nx * dfq[0] + f * kappa * tx * tx + tx * dftq[0] - ft * kappa * nx * tx;
   c.dq[1] = nx * dfq[1] + f * kappa * tx * ty + tx * dftq[1] - ft * kappa * nx * ty;
   c.dq[2] = ny * dfq[0] + f * kappa * ty * tx + ty * dftq[0] - ft * kappa * ny * tx;
@@ -1246,19 +1238,21 @@ Energy energy(const Model& model, const State& state) {
       }
     }
   }
-  // the guides' stick springs ½ k_t (s − a)² about their anchors (Guide::stick_stiffness)
-  if (state.stick_anchor.size() == model.guides.size() * n) {
-    for (std::size_t g = 0; g < model.guides.size(); ++g) {
-      const Guide& guide = model.guides[g];
-      if (!(guide.stick_stiffness > 0.0)) continue;
-      const GuideFrame frame = guide_frame(guide);
-      for (std::size_t i = 0; i < n; ++i) {
-        const double a = state.stick_anchor[g * n + i];
-        if (!std::isfinite(a)) continue;
-        const double d = guide_position(guide, frame, state.x[i], state.y[i]) - a;
-        e.elastic += 0.5 * guide.stick_stiffness * d * d;
-      }
+  // the guides' stick springs ½ k_t (s − a)² about their anchors (Guide::stick_stiffness; the
+  // sticking guides' anchors in their order, State::stick_anchor)
+  std::size_t slot = 0, sticking = 0;
+  for (const Guide& guide : model.guides) sticking += guide.stick_stiffness > 0.0 ? 1 : 0;
+  for (const Guide& guide : model.guides) {
+    if (!(guide.stick_stiffness > 0.0)) continue;
+    if (state.stick_anchor.size() != sticking * n) break;  // not sized yet: none in contact
+    const GuideFrame frame = guide_frame(guide);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double a = state.stick_anchor[slot * n + i];
+      if (!std::isfinite(a)) continue;
+      const double d = guide_position(guide, frame, state.x[i], state.y[i]) - a;
+      e.elastic += 0.5 * guide.stick_stiffness * d * d;
     }
+    ++slot;
   }
   for (std::size_t j = 0; j < model.links(); ++j) {
     const std::size_t b = (j + 1) % n;

@@ -46,22 +46,22 @@ GuideContact guide_contact_at_theta(const Guide& guide, const GuideFrame& frame,
   if (!guide_touch_possible(bounds, qx, qy)) return {};
   return guide_contact(guide, frame, qx, qy, (ux[i] - s.x[i]) / h, (uy[i] - s.y[i]) / h, anchor);
 }
-// The stick law's anchor of node i on guide g for the step from the state s (Guide::
-// stick_stiffness): the state's, or where the node starts the step if it was not in contact
-// (a roller touching down sticks where it is). NaN for a guide without the stick law.
-double step_anchor(const Model& model, const GuideFrame& frame, const State& s, std::size_t g,
+// The stick law's anchor of node i on the sticking guide `guide` (Guide::stick_stiffness) whose
+// anchors are the state's slot `slot` (State::stick_anchor) for the step from the state s: the
+// state's, or where the node starts the step if it was not in contact (a roller touching down
+// sticks where it is). NaN for a guide without the stick law (slot < 0).
+double step_anchor(const Guide& guide, const GuideFrame& frame, const State& s, std::ptrdiff_t slot,
                    std::size_t i) {
-  const Guide& guide = model.guides[g];
-  if (!(guide.stick_stiffness > 0.0)) return NAN;
-  const std::size_t n = model.nodes();
-  const double a =
-      s.stick_anchor.size() == model.guides.size() * n ? s.stick_anchor[g * n + i] : NAN;
+  if (slot < 0) return NAN;
+  const std::size_t at = static_cast<std::size_t>(slot) * s.x.size() + i;
+  const double a = at < s.stick_anchor.size() ? s.stick_anchor[at] : NAN;
   return std::isfinite(a) ? a : guide_position(guide, frame, s.x[i], s.y[i]);
 }
-bool any_sticking(const Model& model) {
+std::size_t sticking_guides(const Model& model) {
+  std::size_t k = 0;
   for (const Guide& g : model.guides)
-    if (g.stick_stiffness > 0.0) return true;
-  return false;
+    if (g.stick_stiffness > 0.0) ++k;
+  return k;
 }
 }  // namespace
 
@@ -141,8 +141,12 @@ void Integrator::refresh_guide_hint(const Model& model) {
   // the rails' frames, O(G): recomputed here so that a model whose guides changed since the last
   // step is still right
   guide_frame_.resize(model.guides.size());
-  for (std::size_t g = 0; g < model.guides.size(); ++g)
+  stick_slot_.resize(model.guides.size());
+  std::ptrdiff_t sticking = 0;
+  for (std::size_t g = 0; g < model.guides.size(); ++g) {
     guide_frame_[g] = guide_frame(model.guides[g]);
+    stick_slot_[g] = model.guides[g].stick_stiffness > 0.0 ? sticking++ : -1;
+  }
   if (model.guides.empty() || !options_.guide_hint) return;
   guide_hint_.update(model.guides, qx_, qy_);
 }
@@ -624,7 +628,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       if (model.is_pinned(i)) continue;
       const GuideContact gc =
           guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_, i, qx_[i], qy_[i], h,
-                                 step_anchor(model, guide_frame_[g], s, g, i));
+                                 step_anchor(guide, guide_frame_[g], s, stick_slot_[g], i));
       if (!gc.active) continue;
       solver_.rhs[i].x += h * gc.fx;
       solver_.rhs[i].y += h * gc.fy;
@@ -761,8 +765,9 @@ StepReport Integrator::step(const Model& model, State& s) {
   // joint within a mouth there that leaves it in this step would meet the sharp mouth.
   update_held(model, s);
   // the stick law's anchors (Guide::stick_stiffness): sized once, none in contact yet
-  if (any_sticking(model) && s.stick_anchor.size() != model.guides.size() * model.nodes())
-    s.stick_anchor.assign(model.guides.size() * model.nodes(), NAN);
+  if (const std::size_t k = sticking_guides(model);
+      k > 0 && s.stick_anchor.size() != k * model.nodes())
+    s.stick_anchor.assign(k * model.nodes(), NAN);
   const std::size_t n = model.nodes();
   const double h = options_.step;
   const double th = options_.theta;
@@ -1087,35 +1092,41 @@ StepReport Integrator::step(const Model& model, State& s) {
   // the next assembly makes them afresh)
   if (!model.guides.empty()) theta_points(s);
   refresh_guide_hint(model);
+  // one contact's friction work over the step, h f_t v_t (0 off the rail), its damper's booked
+  auto contact_work = [&](const GuideContact& gc) {
+    if (!gc.active) return 0.0;
+    report.contact_damping_work += h * gc.damping_power;
+    return h * gc.friction_force * gc.slip;
+  };
   for (std::size_t g = 0; g < model.guides.size(); ++g) {
     const Guide& guide = model.guides[g];
     if (guide.stick_stiffness > 0.0) {
       // The stick law (Guide::stick_stiffness): every node's anchor moves on from the contact at
-      // the θ point (the force the step applied) — kept while the spring held, dragged to the
-      // spring's reach where it slid, released off the rail or lifting. The springs' energy
+      // the θ point (the force the step applied, its reach μ f/k_t) and the step's end s₁ — kept
+      // while |s₁ − a| is within the reach, dragged to s₁ ∓ reach where it slid (the spring left
+      // at most at its reach), released off the rail or lifting. The springs' energy
       // ½ k_t (s − a)² is in energy(); the friction work is minus what the spring–slider
       // dissipated over the step: the friction force's work on the roller, h f_t v_t, plus the
       // change of the spring's energy from (s₀, a₀) to (s₁, a₁) — −μ f |Δa| while sliding
-      // steadily, 0 while sticking (θ = ½), minus the spring's whole energy where it is released.
+      // steadily, −k_t (θ − ½) Δs² while sticking (the θ-method's damping of the spring; 0 at
+      // θ = ½), minus the spring's whole energy where it is released.
       const GuideBounds bounds = guide_bounds(guide);
       const double kt = guide.stick_stiffness;
       for (std::size_t i = 0; i < n; ++i) {
         if (model.is_pinned(i)) continue;
-        const double was = s.stick_anchor[g * n + i];
-        const double a = step_anchor(model, guide_frame_[g], s, g, i);
+        const std::size_t at = static_cast<std::size_t>(stick_slot_[g]) * n + i;
+        const double was = s.stick_anchor[at];
+        const double a = step_anchor(guide, guide_frame_[g], s, stick_slot_[g], i);
         const GuideContact gc = guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_,
                                                        i, qx_[i], qy_[i], h, a);
-        const double next = stick_anchor_after(guide, gc, a);
-        s.stick_anchor[g * n + i] = next;
+        const double end = guide_position(guide, guide_frame_[g], ux_[i], uy_[i]);
+        const double next = stick_anchor_after(guide, gc, a, end);
+        s.stick_anchor[at] = next;
         if (!std::isfinite(was) && !std::isfinite(next) && !gc.active) continue;
         const double d0 =
             std::isfinite(was) ? guide_position(guide, guide_frame_[g], s.x[i], s.y[i]) - was : 0.0;
-        const double d1 = std::isfinite(next)
-                              ? guide_position(guide, guide_frame_[g], ux_[i], uy_[i]) - next
-                              : 0.0;
-        const double work = gc.active ? h * gc.friction_force * gc.slip : 0.0;
-        report.friction_work += work + 0.5 * kt * (d1 * d1 - d0 * d0);
-        if (gc.active) report.contact_damping_work += h * gc.damping_power;
+        const double d1 = std::isfinite(next) ? end - next : 0.0;
+        report.friction_work += contact_work(gc) + 0.5 * kt * (d1 * d1 - d0 * d0);
       }
       continue;
     }
@@ -1126,9 +1137,7 @@ StepReport Integrator::step(const Model& model, State& s) {
       if (model.is_pinned(i)) continue;
       const GuideContact gc =
           guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_, i, qx_[i], qy_[i], h);
-      if (!gc.active) continue;
-      report.friction_work += h * gc.friction_force * gc.slip;
-      report.contact_damping_work += h * gc.damping_power;
+      report.friction_work += contact_work(gc);
     }
   }
   // The rails' loads' work over the step: the force the step applied (at the θ point) times the
