@@ -200,11 +200,11 @@ struct Guide {
   /// models/dynamics.md, "A conveyed load"; rail_load); 0, the default: none.
   double load_per_metre = 0.0;
   /// [N/m] k_t: sticking (docs/models/dynamics.md, "Guides: sticking"). 0, the default: the
-  /// regularised friction above. > 0 (a straight guide only): each roller in contact carries an
-  /// anchor a (State::stick_anchor) and the friction is the elasto-plastic spring
-  /// f_t = −clamp(k_t (s − a), −μ f, μ f), s the roller's position along t; while the spring's
-  /// force is below μ f the roller sticks (no creep), beyond it slides at μ f and the anchor
-  /// follows (updated once per accepted step, update_stick_anchors).
+  /// regularised friction above. > 0 (a straight guide with friction > 0 only): each roller in
+  /// contact carries an anchor a (State::stick_anchor) and the friction is the elasto-plastic
+  /// spring f_t = −clamp(k_t (s − a), −μ f, μ f), s the roller's position along t; while the
+  /// spring's force is below μ f the roller sticks (no creep), beyond it slides at μ f and the
+  /// anchor follows (updated once per accepted step, update_stick_anchors).
   double stick_stiffness = 0.0;
 };
 
