@@ -34,6 +34,20 @@ std::string write(const std::string& name, const std::string& text) {
   return path.string();
 }
 
+// The example's text without its `contact_stiffness` line (the key then takes its default).
+std::string example_without_contact_stiffness() {
+  std::stringstream text;
+  text << std::ifstream(kExample).rdbuf();
+  std::string out = text.str();
+  const std::size_t at = out.find("contact_stiffness = ");
+  if (at == std::string::npos) {
+    ADD_FAILURE() << "the example has no contact_stiffness to leave out";
+    return out;
+  }
+  out.erase(at, out.find('\n', at) + 1 - at);
+  return out;
+}
+
 // The example's drive (z = 12 / 12, driver 13 rad/s, T_L = 10 N m, 12B) from the command's JSON:
 // the mean tight-span tension over the last 8 tooth periods against the driven wheel's torque
 // balance, (T_L / R) mean(sec φ) + slack, as a ratio (1 when they agree).
@@ -497,12 +511,8 @@ TEST(DynamicsCli, SummaryOfTooSparseSamplesIsTheLastSample) {
 // through the library. The JSON then names it (contact_stiffness, contact_load); a case that
 // gives it has no such fields; no load and no pretension leave nothing to linearise at.
 TEST(DynamicsCli, ContactStiffnessDefaultsToTheHertzLineContact) {
-  std::stringstream text;
-  text << std::ifstream(kExample).rdbuf();
-  std::string without = text.str();
-  const std::size_t at = without.find("contact_stiffness = ");
-  ASSERT_NE(at, std::string::npos);
-  without.erase(at, without.find('\n', at) + 1 - at);
+  const std::string without = example_without_contact_stiffness();
+  ASSERT_EQ(without.find("contact_stiffness = "), std::string::npos);
   const std::string file = write("hertz.toml", without);
   const CliRun r = run("dynamics " + file + " --duration 20ms --format json");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -574,12 +584,8 @@ TEST(DynamicsCli, ContactStiffnessDefaultsToTheHertzLineContact) {
 // refused, each by name; with no expected seat load contact_stiffness (then the guides' and the
 // take-up's stops' penalty) is asked for, and given, accepted.
 TEST(DynamicsCli, LineContactLawRunsTheExampleDrive) {
-  std::stringstream text;
-  text << std::ifstream(kExample).rdbuf();
-  std::string linear = text.str();
-  const std::size_t at = linear.find("contact_stiffness = ");
-  ASSERT_NE(at, std::string::npos);
-  linear.erase(at, linear.find('\n', at) + 1 - at);
+  const std::string linear = example_without_contact_stiffness();
+  ASSERT_EQ(linear.find("contact_stiffness = "), std::string::npos);
   std::string line = linear;
   const std::size_t table = line.find("[dynamics]\n");
   ASSERT_NE(table, std::string::npos);

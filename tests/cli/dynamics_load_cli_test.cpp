@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
@@ -47,6 +48,18 @@ std::string with_guide_key(std::string text, int n, const std::string& key) {
   }
   text.insert(text.find('\n', at) + 1, key + "\n");
   return text;
+}
+
+// `text` run through the command: refused (exit 2, nothing on stdout), naming every one of
+// `fields` on stderr; the run, for its message's further checks.
+CliRun refused_naming(const std::string& name, const std::string& text,
+                      std::initializer_list<const char*> fields) {
+  const CliRun r = run("dynamics " + write(name, text));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty());
+  for (const char* field : fields)
+    EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
+  return r;
 }
 
 std::string with_dynamics_key(std::string text, const std::string& key) {
@@ -126,13 +139,10 @@ TEST(DynamicsLoadCli, EveryBadLoadNamed) {
   text = with_guide_key(text, 1, "load_per_metre = \"3 kg/m\"\ninside = true");
   text = with_guide_key(text, 2, "load_per_metre = \"2e4 kg/m\"");
   text = with_guide_key(text, 3, "load_per_metre = \"4 m\"");
-  const CliRun r = run("dynamics " + write("bad.toml", text));
-  EXPECT_EQ(r.status, 2);
-  EXPECT_TRUE(r.out.empty());
-  for (const char* field :
-       {"dynamics.guide[0].load_per_metre (line", "dynamics.guide[1].load_per_metre (line",
-        "dynamics.guide[2].load_per_metre (line", "dynamics.guide[3].load_per_metre"})
-    EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
+  const CliRun r = refused_naming(
+      "bad.toml", text,
+      {"dynamics.guide[0].load_per_metre (line", "dynamics.guide[1].load_per_metre (line",
+       "dynamics.guide[2].load_per_metre (line", "dynamics.guide[3].load_per_metre"});
   EXPECT_NE(r.err.find("over the whole arc, and at 90 deg"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("[0, 10000] kg/m"), std::string::npos) << r.err;
 
@@ -147,12 +157,10 @@ TEST(DynamicsLoadCli, EveryBadLoadNamed) {
                 "[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"0 mm\"\ny0 = \"-300 mm\"\n"
                 "x1 = \"0 mm\"\ny1 = \"-200 mm\"\nload_per_metre = 1\n\n");
   facing = with_guide_key(facing, 0, "load_per_metre = \"-1 kg/m\"");
-  const CliRun d = run("dynamics " + write("facing.toml", facing));
-  EXPECT_EQ(d.status, 2);
-  EXPECT_TRUE(d.out.empty());
-  for (const char* field : {"dynamics.guide[0].load_per_metre", "dynamics.guide[2].load_per_metre",
-                            "dynamics.guide[4].load_per_metre"})
-    EXPECT_NE(d.err.find(field), std::string::npos) << field << "\n" << d.err;
+  const CliRun d =
+      refused_naming("facing.toml", facing,
+                     {"dynamics.guide[0].load_per_metre", "dynamics.guide[2].load_per_metre",
+                      "dynamics.guide[4].load_per_metre"});
   EXPECT_NE(d.err.find("the load must press the chain onto the rail, and this rail's carrying "
                        "side (left going from its first end to its second) faces down"),
             std::string::npos)
@@ -163,10 +171,9 @@ TEST(DynamicsLoadCli, EveryBadLoadNamed) {
   std::string weightless = example();
   const std::string gravity = "gravity = true";
   weightless.replace(weightless.find(gravity), gravity.size(), "gravity = false");
-  const CliRun w = run(
-      "dynamics " + write("weightless.toml", with_guide_key(weightless, 0, "load_per_metre = 2")));
-  EXPECT_EQ(w.status, 2);
-  EXPECT_NE(w.err.find("dynamics.guide[0].load_per_metre"), std::string::npos) << w.err;
+  const CliRun w =
+      refused_naming("weightless.toml", with_guide_key(weightless, 0, "load_per_metre = 2"),
+                     {"dynamics.guide[0].load_per_metre"});
   EXPECT_NE(w.err.find("without gravity"), std::string::npos) << w.err;
 }
 
@@ -180,13 +187,10 @@ TEST(DynamicsLoadCli, EveryBadStickStiffnessNamed) {
   for (int k = 0; k < 3; ++k) at = text.find(mu, k == 0 ? 0 : at + 1);
   ASSERT_NE(at, std::string::npos);
   text.replace(at, mu.size(), "friction = 0\nstick_stiffness = \"1e5 N/m\"");
-  const CliRun r = run("dynamics " + write("stick.toml", text));
-  EXPECT_EQ(r.status, 2);
-  EXPECT_TRUE(r.out.empty());
-  for (const char* field :
-       {"dynamics.guide[0].stick_stiffness (line", "dynamics.guide[1].stick_stiffness (line",
-        "dynamics.guide[2].stick_stiffness", "dynamics.guide[3].stick_stiffness (line"})
-    EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
+  const CliRun r = refused_naming(
+      "stick.toml", text,
+      {"dynamics.guide[0].stick_stiffness (line", "dynamics.guide[1].stick_stiffness (line",
+       "dynamics.guide[2].stick_stiffness", "dynamics.guide[3].stick_stiffness (line"});
   for (const char* why :
        {"a finite stiffness >= 0 N/m", "0 on an arc guide", "0 on a frictionless guide", "N/m"})
     EXPECT_NE(r.err.find(why), std::string::npos) << why << "\n" << r.err;
