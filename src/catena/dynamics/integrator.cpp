@@ -514,8 +514,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       // The damper's rate ġ = v_rel·n, v_rel = v − ω perp(q − c), also turns with the roller's
       // position: ∂ġ/∂q = (κ t·v_rel + ω) t, t = perp(n); its share c n (∂ġ/∂q)ᵀ is not
       // symmetric (without it Newton converges only linearly while a wheel turns). ISO seats only:
-      // the pocket wheel's forced run-on (tests/validation/dynamics_pocket_test.cpp) moves by
-      // 0.1-0.2 % of ωR with it, which is not understood yet, so its Newton matrix stays as it was.
+      // on the pocket wheel the term is right too (it matches the residual's differences), but its
+      // runs are chaotic, the steps' tolerance-level change grows, and the example's means and a
+      // check on them move; the default stays (docs/models/dynamics.md, "Not built yet").
       const double normal = h * (th * sc.stiffness + sc.damping / h);
       const double tangent = h * th * sc.force * sc.curvature;
       const double rcx = qx - wheel.centre_x, rcy = qy - wheel.centre_y;
