@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "case_text.hpp"
 #include "cli_run.hpp"
 #include "lead_in_loop.hpp"
 
@@ -40,7 +41,7 @@ std::string example_with(const std::filesystem::path& dir, const std::string& na
     if (std::regex_search(text, line))
       text = std::regex_replace(text, line, "$1" + key + " = " + value);
     else
-      text.replace(text.find("[dynamics]\n"), 11, "[dynamics]\n" + key + " = " + value + "\n");
+      text = with_dynamics_key(text, key + " = " + value);
   }
   const std::string path = (dir / name).string();
   std::ofstream(path) << text;

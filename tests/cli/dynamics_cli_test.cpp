@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "../dynamics/period_mean.hpp"
+#include "case_text.hpp"
 #include "chart_list.hpp"
 #include "cli_run.hpp"
 
@@ -279,10 +280,7 @@ inertia = 0.01
 TEST(DynamicsCli, WorkBalanceIsOptInAndAddsUp) {
   std::stringstream text;
   text << std::ifstream(kExample).rdbuf();
-  std::string with = text.str();
-  const std::size_t at = with.find("[dynamics]\n");
-  ASSERT_NE(at, std::string::npos);
-  with.insert(at + 11, "work_balance = true\n");
+  const std::string with = with_dynamics_key(text.str(), "work_balance = true");
   const CliRun r =
       run("dynamics " + write("balance.toml", with) + " --duration 0.1s --format json");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -306,8 +304,7 @@ TEST(DynamicsCli, WorkBalanceIsOptInAndAddsUp) {
   EXPECT_FALSE(p["units"].contains("work_balance"));
   EXPECT_EQ(p["summary"]["energy_drift"], j["summary"]["energy_drift"]);
 
-  std::string bad = text.str();
-  bad.insert(at + 11, "work_balance = \"yes\"\n");
+  const std::string bad = with_dynamics_key(text.str(), "work_balance = \"yes\"");
   const CliRun e = run("dynamics " + write("balance_bad.toml", bad));
   EXPECT_EQ(e.status, 2);
   EXPECT_NE(e.err.find("dynamics.work_balance"), std::string::npos) << e.err;
@@ -320,10 +317,8 @@ TEST(DynamicsCli, WorkBalanceIsOptInAndAddsUp) {
 TEST(DynamicsCli, SeatFrictionIsOptInAndInTheBalance) {
   std::stringstream text;
   text << std::ifstream(kExample).rdbuf();
-  std::string with = text.str();
-  const std::size_t at = with.find("[dynamics]\n");
-  ASSERT_NE(at, std::string::npos);
-  with.insert(at + 11, "work_balance = true\nseat_friction = 0.1\n");
+  const std::string with =
+      with_dynamics_key(text.str(), "work_balance = true\nseat_friction = 0.1");
   const CliRun r = run("dynamics " + write("seat.toml", with) + " --duration 0.1s --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -361,8 +356,7 @@ TEST(DynamicsCli, SeatFrictionPerWheel) {
     const std::size_t sp = t.find("speed = \"13 rad/s\"");
     EXPECT_NE(sp, std::string::npos);
     t.insert(t.find('\n', sp) + 1, driver);
-    t.insert(t.find("[dynamics]\n") + 11, dynamics);
-    return t;
+    return with_dynamics_key(t, dynamics);
   };
   const std::string flags = " --duration 0.02s --format json";
   const CliRun once =
@@ -408,10 +402,7 @@ TEST(DynamicsCli, SeatFrictionPerWheel) {
 TEST(DynamicsCli, PositionsAreOptInAndMatchTheAnimation) {
   std::stringstream text;
   text << std::ifstream(kExample).rdbuf();
-  std::string with = text.str();
-  const std::size_t at = with.find("[dynamics]\n");
-  ASSERT_NE(at, std::string::npos);
-  with.insert(at + 11, "positions = true\n");
+  const std::string with = with_dynamics_key(text.str(), "positions = true");
   const std::string file = write("positions.toml", with);
   const CliRun r = run("dynamics " + file + " --format json");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -475,8 +466,7 @@ TEST(DynamicsCli, PositionsAreOptInAndMatchTheAnimation) {
   EXPECT_NE(big.err.find("at most 500000 node-samples"), std::string::npos) << big.err;
   EXPECT_NE(big.err.find("here 640032"), std::string::npos) << big.err;
 
-  std::string bad = text.str();
-  bad.insert(at + 11, "positions = 1\n");
+  const std::string bad = with_dynamics_key(text.str(), "positions = 1");
   const CliRun e = run("dynamics " + write("positions_bad.toml", bad));
   EXPECT_EQ(e.status, 2);
   EXPECT_NE(e.err.find("dynamics.positions"), std::string::npos) << e.err;
@@ -586,10 +576,7 @@ TEST(DynamicsCli, ContactStiffnessDefaultsToTheHertzLineContact) {
 TEST(DynamicsCli, LineContactLawRunsTheExampleDrive) {
   const std::string linear = example_without_contact_stiffness();
   ASSERT_EQ(linear.find("contact_stiffness = "), std::string::npos);
-  std::string line = linear;
-  const std::size_t table = line.find("[dynamics]\n");
-  ASSERT_NE(table, std::string::npos);
-  line.insert(table + 11, "contact_law = \"line\"\n");
+  const std::string line = with_dynamics_key(linear, "contact_law = \"line\"");
   const CliRun r = run("dynamics " + write("line.toml", line) + " --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -646,10 +633,7 @@ TEST(DynamicsCli, LineContactLawRunsTheExampleDrive) {
   std::stringstream pocket_text;
   pocket_text
       << std::ifstream(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_pocketwheel.toml").rdbuf();
-  std::string pocket = pocket_text.str();
-  const std::size_t ptable = pocket.find("[dynamics]\n");
-  ASSERT_NE(ptable, std::string::npos);
-  pocket.insert(ptable + 11, "contact_law = \"line\"\n");
+  const std::string pocket = with_dynamics_key(pocket_text.str(), "contact_law = \"line\"");
   refused("law_pocket.toml", pocket, "dynamics.contact_law");
 }
 

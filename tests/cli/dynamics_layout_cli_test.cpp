@@ -14,6 +14,7 @@
 
 #include "../dynamics/catenary_closed_form.hpp"
 #include "../dynamics/period_mean.hpp"
+#include "case_text.hpp"
 #include "cli_run.hpp"
 #include "lead_in_loop.hpp"
 
@@ -122,10 +123,8 @@ TEST(DynamicsLayoutCli, ThreeWheelLoopGivesItsClosedForms) {
 TEST(DynamicsLayoutCli, SeatFrictionAndPositionsApplyToTheFreeLayout) {
   std::stringstream text;
   text << std::ifstream(kExample).rdbuf();
-  std::string with = text.str();
-  const std::size_t at = with.find("[dynamics]\n");
-  ASSERT_NE(at, std::string::npos);
-  with.insert(at + 11, "seat_friction = 0.05\npositions = true\nwork_balance = true\n");
+  const std::string with =
+      with_dynamics_key(text.str(), "seat_friction = 0.05\npositions = true\nwork_balance = true");
   const CliRun r =
       run("dynamics " + write("options.toml", with) + " --duration 20ms --format json");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -334,10 +333,8 @@ double tangent_normal(double ax, double ay, double ra, double bx, double by, dou
 TEST(DynamicsLayoutCli, SlackOnTheSerpentineSagsAwayFromTheBackSideIdler) {
   std::stringstream example;
   example << std::ifstream(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_serpentine.toml").rdbuf();
-  std::string text = example.str();
-  const std::size_t at = text.find("[dynamics]\n");
-  ASSERT_NE(at, std::string::npos);
-  text.insert(at + 11, "links = 60\n");  // the path takes 59.14 pitches: 1.5 % of slack
+  // the path takes 59.14 pitches: 1.5 % of slack
+  const std::string text = with_dynamics_key(example.str(), "links = 60");
   const std::string file = write("serpentine_slack.toml", text);
   const CliRun table = run("dynamics " + file + " --duration 0.02s");
   ASSERT_EQ(table.status, 0) << table.err;

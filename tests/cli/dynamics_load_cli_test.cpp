@@ -17,6 +17,7 @@
 #include <sstream>
 #include <string>
 
+#include "case_text.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -38,18 +39,6 @@ std::string write(const std::string& name, const std::string& text) {
   return path.string();
 }
 
-// `key` inserted after the n-th "[[dynamics.guide]]" line (0: the first) of `text`.
-std::string with_guide_key(std::string text, int n, const std::string& key) {
-  std::size_t at = 0;
-  for (int k = 0; k <= n; ++k) {
-    at = text.find("[[dynamics.guide]]", k == 0 ? 0 : at + 1);
-    EXPECT_NE(at, std::string::npos) << n;
-    if (at == std::string::npos) return text;
-  }
-  text.insert(text.find('\n', at) + 1, key + "\n");
-  return text;
-}
-
 // `text` run through the command: refused (exit 2, nothing on stdout), naming every one of
 // `fields` on stderr; the run, for its message's further checks.
 CliRun refused_naming(const std::string& name, const std::string& text,
@@ -60,13 +49,6 @@ CliRun refused_naming(const std::string& name, const std::string& text,
   for (const char* field : fields)
     EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
   return r;
-}
-
-std::string with_dynamics_key(std::string text, const std::string& key) {
-  const std::size_t at = text.find("[dynamics]\n");
-  EXPECT_NE(at, std::string::npos);
-  text.insert(at + 11, key + "\n");
-  return text;
 }
 
 TEST(DynamicsLoadCli, LoadedRailAddsTheLoadsWorkToTheBalance) {

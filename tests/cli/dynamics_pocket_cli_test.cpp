@@ -14,6 +14,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "case_text.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -32,8 +33,7 @@ std::string example_with(const std::string& name,
   std::string s = text.str();
   for (const auto& [from, to] : edits) {
     if (from.empty()) {
-      const std::size_t at = s.find("\n", s.find("[dynamics]"));
-      s.insert(at + 1, to + "\n");
+      s = with_dynamics_key(s, to);
       continue;
     }
     const std::size_t at = s.find("\n" + from);
@@ -329,9 +329,8 @@ TEST(DynamicsPocketCli, FieldsThatDoNotFitAPocketWheelAreNamedAtOnce) {
   std::ifstream in(roller);
   std::stringstream text;
   text << in.rdbuf();
-  std::string s = text.str();
-  s.insert(s.find("\n", s.find("[dynamics]")) + 1,
-           "wire_diameter = \"5 mm\"\npocket_clearance = \"0.1 mm\"\n");
+  const std::string s =
+      with_dynamics_key(text.str(), "wire_diameter = \"5 mm\"\npocket_clearance = \"0.1 mm\"");
   const fs::path p = fs::temp_directory_path() / "catena_dynamics_pocket_cli_test" / "roller.toml";
   std::ofstream(p) << s;
   const CliRun r = run("dynamics " + p.string() + " --format json");

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "case_text.hpp"
 #include "chart_list.hpp"
 #include "cli_run.hpp"
 
@@ -55,13 +56,6 @@ std::string replaced(std::string text, const std::string& key, const std::string
   if (at == std::string::npos) return text;
   const std::size_t end = text.find('\n', at + 1);
   return text.replace(at + 1, end - at - 1, line);
-}
-
-// `lines` added to the [dynamics] table (after its header).
-std::string in_dynamics(std::string text, const std::string& lines) {
-  const std::size_t at = text.find("[dynamics]\n");
-  EXPECT_NE(at, std::string::npos);
-  return text.insert(at + 11, lines);
 }
 
 // `lines` added to the last [[dynamics.sprocket]] table (the idler's).
@@ -114,7 +108,7 @@ std::string slack_loop() {
   text = replaced(text, "axial_stiffness", "axial_stiffness = \"1e4 N/m\"");
   text = replaced(text, "load_torque", "load_torque = 0");
   text = replaced(text, "takeup_force", "takeup_force = \"100 N\"");
-  return in_dynamics(text, "gravity = true\n");
+  return with_dynamics_key(text, "gravity = true\n");
 }
 
 // The dynamics.takeup_lost_chain warning of `j` (null without one).
@@ -382,11 +376,11 @@ TEST(DynamicsTakeupCli, SpectrumStartChoosesTheWindow) {
   };
   const nlohmann::json base = spectrum_of("default", text);
   const nlohmann::json half =
-      spectrum_of("half", in_dynamics(text, "spectrum_start = \"0.5 s\"\n"));
+      spectrum_of("half", with_dynamics_key(text, "spectrum_start = \"0.5 s\"\n"));
   EXPECT_EQ(base["traces"], half["traces"]);
   EXPECT_EQ(base["title"], half["title"]);
   const nlohmann::json quarter =
-      spectrum_of("quarter", in_dynamics(text, "spectrum_start = \"0.25 s\"\n"));
+      spectrum_of("quarter", with_dynamics_key(text, "spectrum_start = \"0.25 s\"\n"));
   EXPECT_NE(quarter["title"].get<std::string>().find("0.25 s"), std::string::npos)
       << quarter["title"];
   EXPECT_NE(base["traces"], quarter["traces"]);
@@ -428,7 +422,7 @@ TEST(DynamicsTakeupCli, SpectrumStartChoosesTheWindow) {
 // spectrum_start and the travel keys out of range: every one named with its line and range, at
 // once, before anything runs.
 TEST(DynamicsTakeupCli, BadWindowAndTravelNamed) {
-  std::string text = in_dynamics(example_text(), "spectrum_start = \"0.995 s\"\n");
+  std::string text = with_dynamics_key(example_text(), "spectrum_start = \"0.995 s\"\n");
   text = in_idler(text, "takeup_travel_min = \"5 mm\"\ntakeup_travel_max = \"-1 mm\"\n");
   const CliRun r = run("dynamics " + write("bad.toml", text));
   EXPECT_EQ(r.status, 2);
@@ -437,8 +431,9 @@ TEST(DynamicsTakeupCli, BadWindowAndTravelNamed) {
                             "dynamics.sprocket[2].takeup_travel_min (line", "in [-10, 0] m",
                             "dynamics.sprocket[2].takeup_travel_max (line", "in [0, 10] m"})
     EXPECT_NE(r.err.find(piece), std::string::npos) << piece << "\n" << r.err;
-  const CliRun negative = run(
-      "dynamics " + write("negative.toml", in_dynamics(example_text(), "spectrum_start = -1\n")));
+  const CliRun negative =
+      run("dynamics " +
+          write("negative.toml", with_dynamics_key(example_text(), "spectrum_start = -1\n")));
   EXPECT_EQ(negative.status, 2);
   EXPECT_NE(negative.err.find("dynamics.spectrum_start (line 17) = -1: expected in [0, 0.985] s"),
             std::string::npos)
@@ -447,9 +442,9 @@ TEST(DynamicsTakeupCli, BadWindowAndTravelNamed) {
   // of 0.3 ms), not at the duration, so the window's latest start is 0.9999 - 15 x 0.3 ms
   const std::string odd =
       replaced(example_text(), "output_interval", "output_interval = \"0.3 ms\"");
-  const CliRun late = run("dynamics " + write("late.toml", in_dynamics(odd,
-                                                                       "spectrum_start = "
-                                                                       "\"0.9955 s\"\n")));
+  const CliRun late = run("dynamics " + write("late.toml", with_dynamics_key(odd,
+                                                                             "spectrum_start = "
+                                                                             "\"0.9955 s\"\n")));
   EXPECT_EQ(late.status, 2);
   EXPECT_NE(late.err.find("dynamics.spectrum_start (line 17) = 0.9955: expected in [0, 0.9954] s"),
             std::string::npos)
