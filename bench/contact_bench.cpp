@@ -1,6 +1,8 @@
 // Throughput of the roller–tooth contact models (seed 001). docs/performance.md.
 #include <benchmark/benchmark.h>
 
+#include <array>
+#include <cmath>
 #include <numbers>
 
 #include "catena/contact/roller_tooth.hpp"
@@ -37,5 +39,29 @@ void BM_SliceModel(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_SliceModel)->Arg(51)->Arg(201)->Unit(benchmark::kMillisecond);
+
+// The line law's inverse (LineApproach::load, docs/models/dynamics.md "Contact law"), as the
+// dynamics' seat law calls it: the 12B roller (b1 = 11.68 mm) in the seat of the dynamics' tooth
+// form (ISO 606's smallest seating radius, r_i = 0.505 d1), at the approaches of 64 loads spaced
+// evenly in ln Q over 10 N … 50 kN (the law's cap: 50.4 kN), taken in turn. Independent of the
+// trajectory, unlike the drive's seat-law benchmark.
+void BM_LineApproachLoad(benchmark::State& state) {
+  RollerTooth c = roller();
+  c.tooth_radius = 0.505 * c.roller_diameter;
+  c.profile = Profile::kConcave;
+  const LineApproach law = line_approach(c);
+  std::array<double, 64> approach{};
+  for (std::size_t k = 0; k < approach.size(); ++k) {
+    const double load = 10.0 * std::pow(5000.0, static_cast<double>(k) / (approach.size() - 1));
+    approach[k] = law.approach(load / c.roller_length);
+  }
+  std::size_t k = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(law.load(approach[k]));
+    k = (k + 1) % approach.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_LineApproachLoad);
 
 }  // namespace
