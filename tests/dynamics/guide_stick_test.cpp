@@ -3,9 +3,10 @@
 // step's residual; a short piece of chain resting on an incline with tan β < μ holds (the
 // regularised law creeps); with tan β > μ it slides at g (sin β − μ cos β) under either law; an
 // incline tilted slowly through μ lets go at tan β = μ; the work balance closes with the stick
-// springs' energy and the slip's dissipation, also where a lifted roller's spring is released;
-// the springs stay within their reach μ f/k_t and every step's friction work is ≤ 0; and the
-// stick stiffness's bad values are named (also on a frictionless rail).
+// springs' energy and the slip's dissipation, also where a lifted roller's spring is released
+// (and where a held roller is moved far off the rail between two steps); the springs stay within
+// their reach μ f/k_t and every step's friction work is ≤ 0; and the stick stiffness's bad values
+// are named (also on a frictionless rail).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -283,6 +284,33 @@ TEST(GuideStick, ReleasedSpringsEnergyIsCountedWhenLiftedOff) {
   const double w1 = p.state.friction_work + p.state.contact_damping_work + p.state.damper_work;
   EXPECT_GT(stored, 1e-7);
   EXPECT_NEAR(w1 - w0, energy(p.model, p.state).total() - e0.total(), 1e-2 * stored);
+}
+
+// The same held piece moved 1 m off the rail between two steps (its rollers far outside the
+// rail's box and the guides' hint's lists, which the anchors' update visits with the anchored
+// nodes): the next step releases both anchors all the same and counts their springs' energy as
+// dissipated.
+TEST(GuideStick, AnAnchorFarOffTheRailIsReleased) {
+  const double mu = 0.3, kt = 1e3, beta = std::atan(0.5 * mu);
+  Piece p = resting_piece(mu, kt, beta);
+  run(p, 0.05, 2e-4, 0.5);
+  ASSERT_EQ(p.state.stick_anchor.size(), 2u);
+  const Guide& g = p.model.guides[0];
+  double stored = 0.0;
+  for (std::size_t i = 0; i < 2; ++i) {
+    ASSERT_TRUE(std::isfinite(p.state.stick_anchor[i])) << i;
+    const double d =
+        guide_position(g, guide_frame(g), p.state.x[i], p.state.y[i]) - p.state.stick_anchor[i];
+    stored += 0.5 * kt * d * d;
+    p.state.y[i] += 1.0;
+  }
+  EXPECT_GT(stored, 1e-7);
+  const double w0 = p.state.friction_work;
+  Integrator integ(p.model, {.step = 2e-4, .theta = 0.5});
+  ASSERT_TRUE(integ.step(p.model, p.state).converged);
+  EXPECT_TRUE(std::isnan(p.state.stick_anchor[0]));
+  EXPECT_TRUE(std::isnan(p.state.stick_anchor[1]));
+  EXPECT_NEAR(p.state.friction_work - w0, -stored, 1e-9 * stored);
 }
 
 // (6) The holdback question with a conveyed load: the piece carrying 2.5 kg/m on the same rail

@@ -1113,10 +1113,17 @@ StepReport Integrator::step(const Model& model, State& s) {
       // θ = ½), minus the spring's whole energy where it is released.
       const GuideBounds bounds = guide_bounds(guide);
       const double kt = guide.stick_stiffness;
+      // a node neither on the hint's list (in increasing order) nor anchored stays free: skipped
+      const auto near =
+          options_.guide_hint ? guide_hint_.nodes(g) : std::span<const std::uint32_t>(all_nodes_);
+      std::size_t listed = 0;
       for (std::size_t i = 0; i < n; ++i) {
+        const bool on_list = listed < near.size() && near[listed] == i;
+        listed += on_list ? 1 : 0;
         if (model.is_pinned(i)) continue;
         const std::size_t at = static_cast<std::size_t>(stick_slot_[g]) * n + i;
         const double was = s.stick_anchor[at];
+        if (!on_list && !std::isfinite(was)) continue;
         const double a = step_anchor(guide, guide_frame_[g], s, stick_slot_[g], i);
         const GuideContact gc = guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_,
                                                        i, qx_[i], qy_[i], h, a);
