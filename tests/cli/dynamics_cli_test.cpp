@@ -619,7 +619,7 @@ TEST(DynamicsCli, LineContactLawRunsTheExampleDrive) {
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.err.find("dynamics.contact_stiffness = (missing)"), std::string::npos)
       << missing.err;
-  EXPECT_NE(missing.err.find("the guides and a take-up's end stops"), std::string::npos)
+  EXPECT_NE(missing.err.find("the penalty of a take-up's end stops"), std::string::npos)
       << missing.err;
   EXPECT_EQ(missing.err.find("roller-seat penalty"), std::string::npos) << missing.err;
   std::string idle_stiff = idle;

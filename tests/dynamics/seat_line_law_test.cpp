@@ -67,7 +67,7 @@ double quadrature(const Sprocket& w, double from, double to) {
 // the quadrature of the force over g; beyond the cap the tangent there, C¹ and with its energy.
 TEST(DynamicsSeatLineLaw, InverseTangentAndEnergyAgainstIndependentNumerics) {
   const Sprocket w = line_wheel(12);
-  const double cap = kWidth * w.line.cap_load();
+  const double cap = kWidth * w.line.law.cap_load();
   EXPECT_GT(cap, 4e4);
   EXPECT_LT(cap, 6e4);
   std::mt19937 rng(21);
@@ -77,7 +77,7 @@ TEST(DynamicsSeatLineLaw, InverseTangentAndEnergyAgainstIndependentNumerics) {
   for (int i = 0; i < 200; ++i) {
     const double load = std::pow(10.0, decade(rng));
     const double g = johnson_approach(load);
-    const double back = kWidth * w.line.load(g);
+    const double back = kWidth * w.line.law.load(g);
     worst = std::max(worst, std::abs(back / load - 1.0));
     EXPECT_NEAR(back / load, 1.0, 1e-12) << load;
     if (load >= 0.999 * cap) continue;
@@ -98,9 +98,9 @@ TEST(DynamicsSeatLineLaw, InverseTangentAndEnergyAgainstIndependentNumerics) {
   // the tangent at first touch falls to 0 (dδ/dQ grows as −ln Q): below the secant's
   EXPECT_LT(law(w, johnson_approach(1.0)).stiffness, 0.5 * law(w, johnson_approach(1e3)).stiffness);
   // past the branch's end e^(C−1) the inverse has no value
-  EXPECT_TRUE(std::isnan(w.line.load(1.001 * w.line.approach(w.line.max_load()))));
+  EXPECT_TRUE(std::isnan(w.line.law.load(1.001 * w.line.law.approach(w.line.law.max_load()))));
   // beyond the cap: force and stiffness continuous, then linear, energy its integral
-  const double g_cap = w.line.approach(w.line.cap_load());
+  const double g_cap = w.line.law.approach(w.line.law.cap_load());
   const SeatContact below = law(w, g_cap * (1 - 1e-9)), above = law(w, g_cap * (1 + 1e-9));
   EXPECT_NEAR(above.force / below.force, 1.0, 1e-8);
   EXPECT_NEAR(above.stiffness / below.stiffness, 1.0, 1e-6);
@@ -121,14 +121,14 @@ TEST(DynamicsSeatLineLaw, ModelCheckNamesTheLawsFields) {
     ADD_FAILURE() << i.field << " " << i.value << " " << i.expected;
   // the line set without use_line_law: the cap's constants missing, named
   Sprocket bare = m.sprockets[0];
-  bare.line_cap_depth = bare.line_cap_stiffness = 0.0;
+  bare.line.cap_depth = bare.line.cap_stiffness = 0.0;
   Model unset = m;
   unset.sprockets = {bare};
   bool cap = false;
   for (const Issue& i : validate(unset))
     cap = cap || i.field.find("line_cap_depth") != std::string::npos;
   EXPECT_TRUE(cap);
-  m.sprockets[0].line_width = 0.0;
+  m.sprockets[0].line.width = 0.0;
   m.sprockets[0].pocket = true;
   bool width = false, pocket = false;
   for (const Issue& i : validate(m)) {
@@ -294,7 +294,7 @@ TEST(DynamicsSeatLineLaw, UndampedDropConservesEnergyAsTheLinearLaws) {
               line.drift / line.kinetic_max, linear.drift / linear.kinetic_max);
   // the links at rest length: the elastic energy is the two contacts', the law's at g0
   const Sprocket w = line_wheel(17);
-  EXPECT_NEAR(line.elastic0 / (2 * kWidth * w.line.energy(w.line.load(g0))), 1.0, 1e-9);
+  EXPECT_NEAR(line.elastic0 / (2 * kWidth * w.line.law.energy(w.line.law.load(g0))), 1.0, 1e-9);
   EXPECT_EQ(line.damping_work, 0.0);
   EXPECT_GT(line.kinetic_max, 1e-3);
   EXPECT_LT(line.drift, 1e-3 * line.kinetic_max);

@@ -113,5 +113,9 @@ struct LineApproach {
   double energy(double q) const;
 };
 LineApproach line_approach(const RollerTooth& c);
+/// The same law for any two bodies pressed along a line: `a` and `b` their materials, ρ the
+/// reduced radius [m] (1/ρ = 1/r1 ± 1/r2; r1 on a flat), R_ref the reference depth [m].
+/// line_approach(c) is this with c's materials, reduced_radius(c) and D_p/2.
+LineApproach line_approach(const Elastic& a, const Elastic& b, double rho, double r_ref);
 
 }  // namespace catena::contact

@@ -18,6 +18,25 @@
 
 namespace catena::dynamics {
 
+/// A roller's line contact as a force law of its penetration g (docs/models/dynamics.md,
+/// "Contact law"), shared by the ISO seats and the guides' rails: the force Q(g) = width · q with
+/// δ(q) = g (`law`, Johnson's plane-strain approach), up to the cap law.cap_load(); beyond it the
+/// tangent there (C¹), its energy the integral of the force. make_line_law sets the cap's
+/// constants; line_force evaluates it.
+struct LineLaw {
+  contact::LineApproach law;
+  double width = 0.0;  ///< [m] the line's length (the roller's inner width b1)
+  /// the cap's approach [m], force [N], tangent dQ/dg [N/m] and energy [J]
+  double cap_depth = 0.0, cap_force = 0.0, cap_stiffness = 0.0, cap_energy = 0.0;
+};
+/// The law `law` over `width`, with its cap's constants.
+LineLaw make_line_law(const contact::LineApproach& law, double width);
+/// The line law's elastic part at penetration g ≥ 0: force [N], ∂force/∂g [N/m] and energy [J].
+struct LineForce {
+  double force = 0.0, stiffness = 0.0, energy = 0.0;
+};
+LineForce line_force(const LineLaw& l, double g);
+
 /// A rigid sprocket: its rollers' seats on the ISO 606 tooth form (seat i's centre on the pitch
 /// circle at the angle ψ + 2π i/z, the seating arc of radius ri about it). Roller–seat contact is a
 /// unilateral linear penalty with damping (or, with line_law, the Hertz line contact's law). A
@@ -48,17 +67,11 @@ struct Sprocket {
   /// does not cycle on a roller touching and leaving its seat within one step)
   double contact_smoothing = 1e-6;
   /// The seats' elastic law (docs/models/dynamics.md, "Contact law"). false: the linear penalty
-  /// above. true: the Hertz line contact `line` over the width `line_width` (b1): the force Q(g)
-  /// with δ(Q/b1) = g, up to the cap line.cap_load(), beyond it the tangent there;
-  /// contact_stiffness then serves only a take-up's end stops (slide_stop). The damping is the same
-  /// in both.
+  /// above. true: the Hertz line contact `line` (LineLaw) over the width b1: the force Q(g) with
+  /// δ(Q/b1) = g, up to the cap, beyond it the tangent there; contact_stiffness then serves only
+  /// a take-up's end stops (slide_stop). The damping is the same in both.
   bool line_law = false;
-  contact::LineApproach line;
-  double line_width = 0.0;  ///< [m] b1
-  /// the cap's constants (use_line_law sets them from `line` and b1; line_force reads them): its
-  /// approach [m], force [N], tangent dQ/dg [N/m] and energy [J]
-  double line_cap_depth = 0.0, line_cap_force = 0.0, line_cap_stiffness = 0.0;
-  double line_cap_energy = 0.0;
+  LineLaw line;
   bool driver = false;       ///< prescribed speed (true) or inertia + load (false)
   double speed = 0.0;        ///< [rad/s] a driver's speed, counter-clockwise positive
   double inertia = 0.0;      ///< [kg·m²] a driven wheel's moment of inertia
@@ -206,7 +219,23 @@ struct Guide {
   /// spring's force is below μ f the roller sticks (no creep), beyond it slides at μ f and the
   /// anchor follows (updated once per accepted step, update_stick_anchors).
   double stick_stiffness = 0.0;
+  /// The rail's elastic law (docs/models/dynamics.md, "Guides: the line law"). false: the linear
+  /// penalty contact_stiffness above. true: the roller's line contact on the rail (LineLaw, set by
+  /// use_line_law from the geometry and `rail`), the seats' law with ρ = r on a straight rail,
+  /// 1/ρ = 1/r + 1/R outside an arc, 1/r − 1/R inside; contact_stiffness is then unused. The
+  /// damping is the same in both.
+  bool line_law = false;
+  LineLaw line;
+  Elastic rail;  ///< the rail's material (steel, as the rollers, by default)
 };
+
+/// Turns a guide's rail to the line law over the roller's inner width `width` (b1): the roller
+/// (steel, radius roller_radius, R_ref = the roller radius as in the seats) on the rail of
+/// material `rail`, flat or of its arc's curvature. Call it after the geometry is set.
+void use_line_law(Guide& g, double width);
+
+/// The range of Guide::rail's modulus validate accepts [Pa].
+inline constexpr double kLeastRailModulus = 1e8, kMostRailModulus = 1e12;
 
 /// The largest Guide::load_per_metre validate accepts [kg/m].
 inline constexpr double kMaxRailLoad = 1e4;
@@ -572,14 +601,8 @@ void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx
 /// default"): the roller d1 = 2 r in the seating arc ri (concave), over the inner width b1,
 /// steel on steel. The Hertz default's secant and the line law both evaluate its approach.
 contact::RollerTooth seat_line_contact(const Sprocket& w, double width);
-/// The line law's elastic part at penetration g ≥ 0 on a wheel with `line_law`: force [N],
-/// ∂force/∂g [N/m] and energy [J].
-struct LineForce {
-  double force = 0.0, stiffness = 0.0, energy = 0.0;
-};
-LineForce line_force(const Sprocket& w, double g);
-/// Turns an ISO wheel's seats to the line law over the inner width b1 = `width` (line_law,
-/// line_width, line from seat_line_contact, and the cap's constants line_cap_*).
+/// Turns an ISO wheel's seats to the line law over the inner width b1 = `width` (line_law, and
+/// line from seat_line_contact with its cap's constants).
 void use_line_law(Sprocket& w, double width);
 
 /// One joint's contact with the nearest pocket of a pocket wheel (`Sprocket::pocket`), found in

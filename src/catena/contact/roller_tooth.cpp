@@ -83,12 +83,15 @@ double load_factor(double gamma, double skew, double skew_factor) {
 }
 
 LineApproach line_approach(const RollerTooth& c) {
+  return line_approach(c.roller, c.tooth, reduced_radius(c), 0.5 * c.roller_diameter);
+}
+
+LineApproach line_approach(const Elastic& a, const Elastic& b, double rho, double r_ref) {
   LineApproach l;
-  l.e_star = contact_modulus(c.roller, c.tooth);
-  l.rho = reduced_radius(c);
-  l.r_ref = 0.5 * c.roller_diameter;
-  for (const Elastic* e : {&c.roller, &c.tooth})
-    l.compliance += (1.0 - e->poisson * e->poisson) / e->modulus;
+  l.e_star = contact_modulus(a, b);
+  l.rho = rho;
+  l.r_ref = r_ref;
+  for (const Elastic* e : {&a, &b}) l.compliance += (1.0 - e->poisson * e->poisson) / e->modulus;
   // 2 ln(4R_ref/b) = 2 ln(4R_ref) − ln(4ρ/(πE*)) − ln q
   l.a = l.compliance / kPi;
   l.c = 2.0 * std::log(4.0 * l.r_ref) - std::log(4.0 * l.rho / (kPi * l.e_star)) - 1.0;

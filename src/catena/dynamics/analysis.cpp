@@ -122,9 +122,9 @@ std::vector<Parameter> table_fields() {
       // the seats' elastic law (docs/models/dynamics.md, "Contact law")
       text("contact_law",
            "the ISO seats' elastic law: linear (the penalty contact_stiffness, the default) or "
-           "line (the Hertz line contact's approach law, followed in load; contact_stiffness, "
-           "given or the Hertz default, is then the guides' and a take-up's stops' penalty; "
-           "not with wheel = \"pocket\")"),
+           "line (the Hertz line contact's approach law, followed in load, on the seats and "
+           "the guides' rails; contact_stiffness, given or the Hertz default, is then a "
+           "take-up's stops' penalty; not with wheel = \"pocket\")"),
       // the round-link chain on pocket wheels (docs/models/dynamics.md, "Pocket wheel")
       text("wheel",
            "iso606 (roller chain on ISO 606 sprockets, the default) or pocket (round-link chain "
@@ -168,7 +168,13 @@ std::vector<Parameter> guide_fields() {
                    "] (default 0; its weight needs gravity and must press the chain onto the "
                    "rail: straight, x1 > x0; arc, the carrying side facing up over the whole arc)"),
       quantity("contact_stiffness", K::kForcePerLength,
-               "roller-rail penalty [N/m] (default: dynamics.contact_stiffness)"),
+               "roller-rail penalty [N/m] (default: dynamics.contact_stiffness; not with "
+               "contact_law = \"line\": the rail then follows the line law)"),
+      quantity("rail_modulus", K::kStress,
+               "contact_law = \"line\": the rail's Young's modulus, in [0.1, 1000] GPa (default "
+               "210 GPa, steel as the rollers; UHMW-PE 0.5-1 GPa)"),
+      number("rail_poisson",
+             "contact_law = \"line\": the rail's Poisson's ratio, in [0, 0.5) (default 0.3)"),
       number("contact_damping",
              "roller-rail damping [N s/m], >= 0 (default: dynamics.contact_damping)"),
       quantity("lead_in_radius", K::kLength,
@@ -1703,10 +1709,10 @@ Setup parse(const analysis::Inputs& in) {
     s.contact_stiffness = s.expected_load > 0.0 ? hertz_seat_stiffness(s.pitch, s.roller, s.width,
                                                                        probe_teeth, s.expected_load)
                                                 : NAN;
-    // with the line law the penalty is the guides' and the take-up's stops', not the seats'
+    // with the line law the penalty is the take-up's stops' only, not the seats' or the rails'
     const std::string what =
-        s.line_law ? "the penalty of the guides and a take-up's end stops with contact_law = "
-                     "\"line\" (the seats follow the load)"
+        s.line_law ? "the penalty of a take-up's end stops with contact_law = \"line\" (the "
+                     "seats and the guides' rails follow the load)"
                    : "the roller-seat penalty k_c";
     if (std::isnan(s.contact_stiffness))
       issues.push_back({"dynamics.contact_stiffness", "(missing)",
@@ -1890,14 +1896,35 @@ Setup parse(const analysis::Inputs& in) {
     // the rail's own penalty and damper, when given: the bounds of the seats' (the table's are
     // checked with the scales)
     if (scales_known(s))
-      check_contact(s, field("contact_stiffness"),
-                    g.value.count("contact_stiffness") ? guide.contact_stiffness : NAN, "",
-                    field("contact_damping"),
-                    g.value.count("contact_damping") ? guide.contact_damping : NAN, issues);
+      check_contact(
+          s, field("contact_stiffness"),
+          g.value.count("contact_stiffness") && !s.line_law ? guide.contact_stiffness : NAN, "",
+          field("contact_damping"), g.value.count("contact_damping") ? guide.contact_damping : NAN,
+          issues);
     guide.friction = get("friction", 0.0);
     guide.friction_band = get("friction_band", 1e-3);
     guide.load_per_metre = get("load_per_metre", 0.0);
     guide.stick_stiffness = get("stick_stiffness", 0.0);
+    // the rail's elastic law: with contact_law = "line" the seats' line law on the rail's
+    // curvature and material (docs/models/dynamics.md, "Guides: the line law"), which replaces
+    // the penalty as on the seats; the material serves that law only
+    guide.rail.modulus = get("rail_modulus", guide.rail.modulus);
+    guide.rail.poisson = get("rail_poisson", guide.rail.poisson);
+    if (s.line_law) {
+      if (g.seen.count("contact_stiffness"))
+        issues.push_back({field("contact_stiffness"), "(given)",
+                          "no contact_stiffness on a guide with contact_law = \"line\": the rail "
+                          "follows the line law as the seats do (a softer rail: rail_modulus), or "
+                          "contact_law = \"linear\" for the penalty"});
+      if (s.width > 0.0 && s.roller > 0.0) use_line_law(guide, s.width);
+    } else {
+      for (const char* key : {"rail_modulus", "rail_poisson"})
+        if (g.seen.count(key))
+          issues.push_back({field(key), "(given)",
+                            std::string("no ") + key +
+                                " with contact_law = \"linear\" (the rail's material serves "
+                                "the line law only: contact_law = \"line\")"});
+    }
     // the stick spring sits in the rail's Newton block beside its penalty: the penalty's bound
     if (scales_known(s) && g.value.count("stick_stiffness"))
       check_contact(s, field("stick_stiffness"), guide.stick_stiffness, "",

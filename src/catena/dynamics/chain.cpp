@@ -55,6 +55,22 @@ void arc_load_presses(std::vector<Issue>& out, const std::string& f, const Guide
                    "a loaded arc whose roller centres' line has a radius of at least a pitch " +
                        check::format_si(model.pitch, "m") + " (the load's ramps at its ends)"});
 }
+// A LineLaw's width and constants (named line_width, line, line_cap_depth under `f`), as
+// use_line_law sets them for the `what` (seat or rail).
+void check_line_law(std::vector<Issue>& out, const std::string& f, const LineLaw& l,
+                    const char* what) {
+  check::finite_positive(out, (f + "line_width").c_str(), l.width, "m");
+  const contact::LineApproach& a = l.law;
+  if (!(a.a > 0.0 && std::isfinite(a.a) && std::isfinite(a.c) && std::isfinite(a.cap_load()) &&
+        a.cap_load() > 0.0))
+    out.push_back({f + "line", "(constants)",
+                   std::string("a line contact with finite A > 0 and C (line_approach of the ") +
+                       what + ")"});
+  else if (!(l.cap_depth > 0.0 && std::isfinite(l.cap_depth) && l.cap_stiffness > 0.0 &&
+             std::isfinite(l.cap_stiffness)))
+    out.push_back({f + "line_cap_depth", "(constants)",
+                   "the cap's constants of the line (set by use_line_law)"});
+}
 }  // namespace
 
 std::vector<Issue> validate(const Model& model) {
@@ -179,15 +195,7 @@ std::vector<Issue> validate(const Model& model) {
     if (s.line_law) {
       if (s.pocket)
         out.push_back({f + "line_law", "on a pocket wheel", "the linear law on a pocket wheel"});
-      check::finite_positive(out, (f + "line_width").c_str(), s.line_width, "m");
-      if (!(s.line.a > 0.0 && std::isfinite(s.line.a) && std::isfinite(s.line.c) &&
-            std::isfinite(s.line.cap_load()) && s.line.cap_load() > 0.0))
-        out.push_back({f + "line", "(constants)",
-                       "a line contact with finite A > 0 and C (line_approach of the seat)"});
-      else if (!(s.line_cap_depth > 0.0 && std::isfinite(s.line_cap_depth) &&
-                 s.line_cap_stiffness > 0.0 && std::isfinite(s.line_cap_stiffness)))
-        out.push_back({f + "line_cap_depth", "(constants)",
-                       "the cap's constants of the line (set by use_line_law)"});
+      check_line_law(out, f, s.line, "seat");
     }
     if (!std::isfinite(s.contact_damping) || s.contact_damping < 0.0) {
       out.push_back({f + "contact_damping", check::format_si(s.contact_damping, "N*s/m"),
@@ -259,7 +267,15 @@ std::vector<Issue> validate(const Model& model) {
       }
     }
     check::finite_positive(out, (f + "roller_radius").c_str(), g.roller_radius, "m");
-    check::finite_positive(out, (f + "contact_stiffness").c_str(), g.contact_stiffness, "N/m");
+    if (g.line_law)
+      check_line_law(out, f, g.line, "rail");
+    else
+      check::finite_positive(out, (f + "contact_stiffness").c_str(), g.contact_stiffness, "N/m");
+    if (!(g.rail.modulus >= kLeastRailModulus && g.rail.modulus <= kMostRailModulus))
+      out.push_back({f + "rail_modulus", check::format_si(g.rail.modulus, "Pa"),
+                     "a modulus in [0.1, 1000] GPa (polymers, UHMW-PE 0.5-1 GPa, to steel)"});
+    if (!(g.rail.poisson >= 0.0 && g.rail.poisson < 0.5))
+      out.push_back({f + "rail_poisson", check::format_si(g.rail.poisson, ""), "0 <= nu < 0.5"});
     if (!std::isfinite(g.contact_damping) || g.contact_damping < 0.0) {
       out.push_back({f + "contact_damping", check::format_si(g.contact_damping, "N*s/m"),
                      "a finite value >= 0 N*s/m"});
@@ -377,6 +393,7 @@ std::vector<Guide> lead_in_arcs(const Guide& rail, const LeadIn& lead) {
     g.inside = false;
     g.load_per_metre = 0.0;   // the rail's load is the rail's (an arc carries none)
     g.stick_stiffness = 0.0;  // an arc's friction is the regularised law (sticking: straight only)
+    if (rail.line_law) use_line_law(g, rail.line.width);  // the arc's own curvature
     out.push_back(g);
   };
   if (lead.at_start) arc(rail.x0, rail.y0, up, up + lead.angle);
@@ -504,8 +521,11 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   const double vn = vx * nx + vy * ny, vt = vx * tx + vy * ty;
   const double rate = -vn;  // ġ
   const double eps = gd.contact_smoothing, kc = gd.contact_stiffness;
-  const double elastic = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
-  const double slope = g < eps ? kc * g / eps : kc;
+  // the normal force's elastic part: the line law (as the seats') or the penalty with its ramp
+  const LineForce lf = gd.line_law ? line_force(gd.line, g) : LineForce{};
+  const double elastic =
+      gd.line_law ? lf.force : (g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps));
+  const double slope = gd.line_law ? lf.stiffness : (g < eps ? kc * g / eps : kc);
   const double cg = gd.contact_damping * std::min(1.0, g / eps);
   const double dcg = g < eps ? gd.contact_damping / eps : 0.0;
   c.active = true;
@@ -516,8 +536,9 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   const bool stick =
       gd.stick_stiffness > 0.0 && gd.kind == Guide::Kind::kStraight && std::isfinite(anchor);
   if (stick) c.position = guide_position(gd, frame, x, y);
-  c.energy =
-      g < eps ? kc * g * g * g / (6.0 * eps) : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
+  c.energy = gd.line_law ? lf.energy
+             : g < eps   ? kc * g * g * g / (6.0 * eps)
+                         : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
   const double f = elastic + cg * rate;
   if (!(f > 0.0)) {  // separating: no force; the damper cancels the elastic part
     c.damping_power = elastic * rate;
@@ -684,35 +705,50 @@ contact::RollerTooth seat_line_contact(const Sprocket& w, double width) {
   return c;
 }
 
-LineForce line_force(const Sprocket& w, double g) {
+LineLaw make_line_law(const contact::LineApproach& law, double width) {
+  LineLaw l;
+  l.law = law;
+  l.width = width;
+  const double q_cap = law.cap_load();
+  l.cap_depth = law.approach(q_cap);
+  l.cap_force = width * q_cap;
+  l.cap_stiffness = width / law.slope(q_cap);
+  l.cap_energy = width * law.energy(q_cap);
+  return l;
+}
+
+LineForce line_force(const LineLaw& l, double g) {
   LineForce f;
   if (!(g > 0.0)) return f;
-  const contact::LineApproach& l = w.line;
-  const double b1 = w.line_width, g_cap = w.line_cap_depth;
+  const double b1 = l.width, g_cap = l.cap_depth;
   if (g < g_cap) {
-    const double q = l.load(g);
+    const double q = l.law.load(g);
     f.force = b1 * q;
-    f.stiffness = b1 / l.slope(q);  // → 0 at first touch (dδ/dq grows as −A ln q)
-    f.energy = b1 * l.energy(q);
+    f.stiffness = b1 / l.law.slope(q);  // → 0 at first touch (dδ/dq grows as −A ln q)
+    f.energy = b1 * l.law.energy(q);
     return f;
   }
   // beyond the cap: the tangent at it (C¹), its energy the trapezoid added to the cap's
-  const double k = w.line_cap_stiffness, s = g - g_cap, f_cap = w.line_cap_force;
+  const double k = l.cap_stiffness, s = g - g_cap, f_cap = l.cap_force;
   f.force = f_cap + k * s;
   f.stiffness = k;
-  f.energy = w.line_cap_energy + f_cap * s + 0.5 * k * s * s;
+  f.energy = l.cap_energy + f_cap * s + 0.5 * k * s * s;
   return f;
 }
 
 void use_line_law(Sprocket& w, double width) {
   w.line_law = true;
-  w.line_width = width;
-  w.line = contact::line_approach(seat_line_contact(w, width));
-  const double q_cap = w.line.cap_load();
-  w.line_cap_depth = w.line.approach(q_cap);
-  w.line_cap_force = width * q_cap;
-  w.line_cap_stiffness = width / w.line.slope(q_cap);
-  w.line_cap_energy = width * w.line.energy(q_cap);
+  w.line = make_line_law(contact::line_approach(seat_line_contact(w, width)), width);
+}
+
+void use_line_law(Guide& g, double width) {
+  // the reduced radius: the roller r on a flat (ρ = r), outside an arc of radius R (convex on
+  // convex, 1/ρ = 1/r + 1/R) or inside it (convex in concave, 1/ρ = 1/r − 1/R)
+  const double r = g.roller_radius;
+  double rho = r;
+  if (g.kind == Guide::Kind::kArc) rho = 1.0 / (1.0 / r + (g.inside ? -1.0 : 1.0) / g.radius);
+  g.line_law = true;
+  g.line = make_line_law(contact::line_approach(Elastic{}, g.rail, rho, r), width);
 }
 
 void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx, double vy,
@@ -722,7 +758,7 @@ void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx
   const double eps = w.contact_smoothing, kc = w.contact_stiffness;
   double elastic = 0.0;
   if (w.line_law) {
-    const LineForce lf = line_force(w, g);
+    const LineForce lf = line_force(w.line, g);
     elastic = lf.force;
     c.stiffness = lf.stiffness;
     c.energy = lf.energy;

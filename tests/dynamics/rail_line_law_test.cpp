@@ -1,0 +1,400 @@
+// The guides' rails under the line law (contact_law = "line"; docs/models/dynamics.md, "Guides:
+// the line law"): a roller on a rail is a line contact of the roller on a flat (ρ = r), on a
+// convex arc (1/ρ = 1/r + 1/R) or in a concave one (1/ρ = 1/r − 1/R), its force Q(g) the inverse of
+// Johnson's plane-strain approach δ(Q), written out here from its formula (not through the
+// library), as the seats' (seat_line_law_test.cpp); its tangent and energy; the Newton matrix with
+// the law; a chain piece settling on a straight rail under gravity at the law's approach, on steel
+// and on a polymer rail; and the energy of a damped drop onto the rail, balanced by the work of
+// its damper.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "catena/dynamics/integrator.hpp"
+#include "residual_difference.hpp"
+
+namespace catena::dynamics {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// 12B (ISO 606): pitch, roller radius d1/2, inner width b1, a link's mass; steel rollers
+constexpr double kPitch = 0.01905, kRoller = 0.006035, kWidth = 0.01168, kMass = 0.0238;
+constexpr double kSteel = 210e9, kSteelNu = 0.3;
+constexpr double kPolymer = 0.7e9, kPolymerNu = 0.4;  // UHMW-PE
+constexpr double kArcRadius = 0.25;
+
+// The rails of the tests: straight, level, rollers on top (free side +y), the surface at y = 0;
+// an arc of R = 0.25 m about the origin with the rollers outside or inside it
+Guide rail(Guide::Kind kind, bool inside, double modulus = kSteel, double nu = kSteelNu) {
+  Guide g;
+  g.kind = kind;
+  if (kind == Guide::Kind::kStraight) {
+    g.x0 = -0.5;
+    g.x1 = 0.5;
+  } else {
+    g.radius = kArcRadius;
+    g.start_angle = 0.2;
+    g.end_angle = 2.9;
+    g.inside = inside;
+  }
+  g.roller_radius = kRoller;
+  g.contact_stiffness = 1e7;  // the penalty the law replaces (used if the law were off)
+  g.rail = {modulus, nu};
+  use_line_law(g, kWidth);
+  return g;
+}
+
+// Johnson's line contact of the roller on the rail written out: the reduced radius, the
+// compliance Σ(1 − ν²)/E and E*
+struct Johnson {
+  double rho = 0.0, compliance = 0.0, e_star = 0.0;
+};
+Johnson johnson(const Guide& g) {
+  Johnson j;
+  const double curvature = g.kind == Guide::Kind::kStraight ? 0.0
+                           : g.inside                       ? -1.0 / g.radius
+                                                            : 1.0 / g.radius;
+  j.rho = 1.0 / (1.0 / kRoller + curvature);
+  j.compliance =
+      (1 - kSteelNu * kSteelNu) / kSteel + (1 - g.rail.poisson * g.rail.poisson) / g.rail.modulus;
+  j.e_star = 1.0 / j.compliance;
+  return j;
+}
+// [m] δ(Q) = (q/π) Σ(1 − ν²)/E (2 ln(4 r/b) − 1), b = √(4qρ/(πE*)), q = Q/b1
+double johnson_approach(const Guide& g, double load) {
+  const Johnson j = johnson(g);
+  const double q = load / kWidth;
+  const double b = std::sqrt(4 * q * j.rho / (kPi * j.e_star));
+  return q / kPi * j.compliance * (2 * std::log(4 * kRoller / b) - 1);
+}
+// [J] ∫ Q dδ = b1 ∫ q dδ: with δ = A q (C − ln q) (A = compliance/π, C from the formula above),
+// b1 A q² ((C − ln q)/2 − 1/4)
+double johnson_energy(const Guide& g, double load) {
+  const Johnson j = johnson(g);
+  const double q = load / kWidth, a = j.compliance / kPi;
+  const double c = 2 * std::log(4 * kRoller) - std::log(4 * j.rho / (kPi * j.e_star)) - 1;
+  return kWidth * a * q * q * (0.5 * (c - std::log(q)) - 0.25);
+}
+
+// The roller's centre pressed `depth` into the rail at the rail's middle, and the normal n there
+struct Touch {
+  double x = 0.0, y = 0.0, nx = 0.0, ny = 0.0;
+};
+Touch touch(const Guide& g, double depth, double along = 0.5) {
+  Touch t;
+  if (g.kind == Guide::Kind::kStraight) {
+    t.x = g.x0 + along * (g.x1 - g.x0);
+    t.y = kRoller - depth;
+    t.ny = 1.0;
+    return t;
+  }
+  const double a = g.start_angle + along * (g.end_angle - g.start_angle);
+  const double d = g.inside ? g.radius - kRoller + depth : g.radius + kRoller - depth;
+  const double sgn = g.inside ? -1.0 : 1.0;
+  t.x = d * std::cos(a);
+  t.y = d * std::sin(a);
+  t.nx = sgn * std::cos(a);
+  t.ny = sgn * std::sin(a);
+  return t;
+}
+GuideContact at_depth(const Guide& g, double depth) {
+  const Touch t = touch(g, depth);
+  return guide_contact(g, t.x, t.y, 0.0, 0.0);
+}
+// −nᵀ (∂F/∂q) n: the normal force's stiffness ∂f/∂g (the arc's f κ t tᵀ has no n n part)
+double normal_stiffness(const GuideContact& c) {
+  return -(c.nx * (c.dq[0] * c.nx + c.dq[1] * c.ny) + c.ny * (c.dq[2] * c.nx + c.dq[3] * c.ny));
+}
+// ∫ f dg' over [from, to] by Simpson's rule in s = ln g'
+double quadrature(const Guide& g, double from, double to) {
+  const int n = 16000;
+  const double a = std::log(from), b = std::log(to), h = (b - a) / n;
+  double sum = 0.0;
+  for (int i = 0; i <= n; ++i) {
+    const double d = std::exp(a + i * h);
+    sum += (i == 0 || i == n ? 1.0 : (i % 2 ? 4.0 : 2.0)) * at_depth(g, d).normal_force * d;
+  }
+  return sum * h / 3.0;
+}
+
+// (1) The law against independent numerics on a flat steel rail, outside and inside a steel arc
+// and on a flat polymer rail: at 100 random loads over 1 N … the cap, the rail contact's normal
+// force at δ(Q) is Q, its stiffness the central difference of the force, its energy the
+// quadrature of the force over g and the closed form; past the cap the tangent (C¹).
+TEST(DynamicsRailLineLaw, ForceStiffnessAndEnergyAgainstJohnsonsApproach) {
+  const std::vector<Guide> rails = {rail(Guide::Kind::kStraight, false),
+                                    rail(Guide::Kind::kArc, false), rail(Guide::Kind::kArc, true),
+                                    rail(Guide::Kind::kStraight, false, kPolymer, kPolymerNu)};
+  const char* names[] = {"flat", "outside arc", "inside arc", "flat polymer"};
+  for (std::size_t k = 0; k < rails.size(); ++k) {
+    const Guide& g = rails[k];
+    EXPECT_NEAR(g.line.law.rho / johnson(g).rho, 1.0, 1e-14) << names[k];
+    const double cap = g.line.cap_force;
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<double> decade(0.0, std::log10(cap));
+    double worst = 0.0;
+    for (int i = 0; i < 100; ++i) {
+      const double load = std::pow(10.0, decade(rng));
+      const double d = johnson_approach(g, load);
+      const GuideContact c = at_depth(g, d);
+      ASSERT_TRUE(c.active) << names[k];
+      // at the penetration guide_contact finds (on the arcs the roller's centre, 0.25 m from
+      // theirs, rounds it by 1e-17 m, 1e-8 of the lightest loads' approach), the force's approach
+      // by the formula is that penetration
+      const double back = johnson_approach(g, c.normal_force) / c.penetration;
+      worst = std::max(worst, std::abs(back - 1.0));
+      EXPECT_NEAR(back, 1.0, 1e-12) << names[k] << " " << load;
+      EXPECT_NEAR(c.normal_force / load, 1.0, 1e-7) << names[k] << " " << load;
+      // over the penetrations guide_contact itself finds (the arcs' centres at 0.25 m round the
+      // roller's position at 1e-17 m, against steps of 1e-14 m at the lightest loads)
+      const GuideContact up = at_depth(g, 1.0001 * d), down = at_depth(g, 0.9999 * d);
+      const double slope =
+          (up.normal_force - down.normal_force) / (up.penetration - down.penetration);
+      EXPECT_NEAR(normal_stiffness(c) / slope, 1.0, 1e-7) << names[k] << " " << load;
+      EXPECT_NEAR(c.energy / johnson_energy(g, c.normal_force), 1.0, 1e-12)
+          << names[k] << " " << load;
+      if (i % 10 == 0) {
+        EXPECT_NEAR(c.energy / quadrature(g, 1e-14 * d, d), 1.0, 1e-9) << names[k] << " " << load;
+      }
+    }
+    const double g_cap = g.line.cap_depth;
+    const GuideContact below = at_depth(g, g_cap * (1 - 1e-9)),
+                       above = at_depth(g, g_cap * (1 + 1e-9));
+    EXPECT_NEAR(above.normal_force / below.normal_force, 1.0, 1e-8) << names[k];
+    EXPECT_NEAR(normal_stiffness(above) / normal_stiffness(below), 1.0, 1e-6) << names[k];
+    const GuideContact deep = at_depth(g, 1.5 * g_cap);
+    EXPECT_NEAR(deep.normal_force, cap + g.line.cap_stiffness * 0.5 * g_cap, 1e-9 * cap);
+    std::printf(
+        "%s rail: cap %.4g N at %.4g um, worst |delta(Q(g))/g - 1| %.2e, at 100 N: %.4g um\n",
+        names[k], cap, g_cap * 1e6, worst, johnson_approach(g, 100.0) * 1e6);
+  }
+}
+
+// Lead-ins take their own arc's curvature: a straight rail's lead-in arcs under the line law carry
+// the law of a roller on a convex arc of the lead-in's radius and the rail's material.
+TEST(DynamicsRailLineLaw, LeadInArcsUseTheirCurvature) {
+  const Guide flat = rail(Guide::Kind::kStraight, false, kPolymer, kPolymerNu);
+  const std::vector<Guide> arcs = lead_in_arcs(flat, {.radius = 0.05, .angle = 0.5});
+  ASSERT_EQ(arcs.size(), 2u);
+  for (const Guide& a : arcs) {
+    EXPECT_TRUE(a.line_law);
+    EXPECT_NEAR(a.line.law.rho, 1.0 / (1.0 / kRoller + 1.0 / 0.05), 1e-15);
+    EXPECT_NEAR(a.line.law.e_star / johnson(flat).e_star, 1.0, 1e-14);
+    EXPECT_EQ(a.line.width, kWidth);
+  }
+}
+
+// The model's check names a rail's bad material and a law left unset, each by field.
+TEST(DynamicsRailLineLaw, ModelCheckNamesTheRailsFields) {
+  Model m = uniform_chain(2, false, kPitch, kMass, 5e7, 0.0, false);
+  m.guides = {rail(Guide::Kind::kStraight, false)};
+  EXPECT_TRUE(validate(m).empty());
+  m.guides[0].rail = {1e6, 0.5};
+  m.guides[0].line.cap_depth = 0.0;
+  std::vector<std::string> fields;
+  for (const Issue& i : validate(m)) fields.push_back(i.field);
+  for (const char* f :
+       {"guide[0].rail_modulus", "guide[0].rail_poisson", "guide[0].line_cap_depth"})
+    EXPECT_NE(std::find(fields.begin(), fields.end(), f), fields.end()) << f;
+}
+
+// (2) The step's Newton matrix with rails in the line law, against central differences of the
+// step's residual, every column: two linked rollers pressed 1–3 µm into a straight rail, an arc
+// from outside and one from inside, moving along and into it, with the rails' damping and
+// friction; and it is the law's matrix: it differs from the penalty's (1e7 N/m) at the same
+// iterate.
+TEST(DynamicsRailLineLaw, NewtonMatrixMatchesTheResidualsDifferences) {
+  const double h = 1e-4;
+  const std::pair<Guide::Kind, bool> rails[] = {
+      {Guide::Kind::kStraight, false}, {Guide::Kind::kArc, false}, {Guide::Kind::kArc, true}};
+  for (const auto& [kind, inside] : rails) {
+    std::vector<double> jac_linear;
+    for (const bool line : {false, true}) {
+      Guide g = rail(kind, inside);
+      g.contact_damping = 200.0;
+      g.friction = 0.3;
+      g.line_law = line;
+      Model m = uniform_chain(2, false, kPitch, kMass, 5e7, 100.0, false);
+      m.gravity_y = -9.81;
+      m.guides = {g};
+      State s(2, 0);
+      for (std::size_t i = 0; i < 2; ++i) {
+        const double step = kind == Guide::Kind::kStraight ? 0.02 : 0.07;
+        const double along = 0.5 + step * static_cast<double>(i);
+        Touch t = touch(g, 1e-6 + 2e-6 * static_cast<double>(i), along);
+        s.x[i] = t.x;
+        s.y[i] = t.y;
+        s.vx[i] = -0.2 * t.ny - 1e-3 * t.nx;  // along the rail and into it
+        s.vy[i] = 0.2 * t.nx - 1e-3 * t.ny;
+      }
+      Integrator integ(m, {.step = h, .theta = 0.6});
+      const std::size_t size = integ.unknowns();
+      ASSERT_EQ(size, 4u);
+      std::vector<double> u(size);
+      std::mt19937 rng(3);
+      std::uniform_real_distribution<double> jitter(-1e-8, 1e-8);
+      for (std::size_t i = 0; i < 2; ++i) {
+        u[2 * i] = s.x[i] + h * s.vx[i] + jitter(rng);
+        u[2 * i + 1] = s.y[i] + h * s.vy[i] + jitter(rng);
+      }
+      std::vector<double> r0, jac;
+      integ.newton_system(m, s, u, r0, &jac);
+      if (!line) {
+        jac_linear = jac;
+        continue;
+      }
+      double worst = 0.0, differs = 0.0, scale_all = 0.0;
+      for (std::size_t c = 0; c < size; ++c) {
+        const std::vector<double> fd = testing::residual_difference(integ, m, s, u, c, 1e-9);
+        double scale = 0.0;
+        for (std::size_t r = 0; r < size; ++r) scale = std::max(scale, std::abs(fd[r]));
+        scale_all = std::max(scale_all, scale);
+        for (std::size_t r = 0; r < size; ++r) {
+          worst = std::max(worst, std::abs(jac[r * size + c] - fd[r]) / scale);
+          EXPECT_NEAR(jac[r * size + c], fd[r], 1e-5 * scale) << "row " << r << " column " << c;
+          differs = std::max(differs, std::abs(jac[r * size + c] - jac_linear[r * size + c]));
+        }
+      }
+      std::printf("rail line law's Newton matrix (%s): worst |J - FD| / column scale %.2e\n",
+                  kind == Guide::Kind::kStraight ? "straight" : (inside ? "inside arc" : "arc"),
+                  worst);
+      EXPECT_GT(differs, 0.1 * scale_all);
+    }
+  }
+}
+
+// (3) A chain piece of five links resting on a level straight rail under gravity, frictionless,
+// settles (θ = 1: its fixed point is the static equilibrium) with each roller at the approach
+// δ(m g/b1) of the closed form, and the contacts' energy at rest is the closed form's; on a
+// polymer rail (UHMW-PE, E = 0.7 GPa, ν = 0.4) the rollers sink deeper by the law's ratio of the
+// two approaches, not by the moduli's.
+struct Settled {
+  std::vector<double> depth;
+  double elastic = 0.0;
+};
+Settled settle(const Guide& g) {
+  constexpr double kG = 9.81;
+  const std::size_t n = 5;
+  Model m = uniform_chain(n, false, kPitch, kMass, 5e7, 100.0, false);
+  m.gravity_y = -kG;
+  Guide r = g;
+  r.contact_damping = 2000.0;
+  m.guides = {r};
+  State s(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    s.x[i] = kPitch * static_cast<double>(i);
+    s.y[i] = kRoller;  // touching
+  }
+  Integrator integ(m, {.step = 1e-4, .theta = 1.0});
+  for (int k = 0; k < 400; ++k) {
+    const StepReport rep = integ.step(m, s);
+    if (!rep.converged) {
+      ADD_FAILURE() << "step " << k << " did not converge";
+      break;
+    }
+  }
+  Settled out;
+  for (std::size_t i = 0; i < n; ++i) out.depth.push_back(kRoller - s.y[i]);
+  out.elastic = energy(m, s).elastic;
+  return out;
+}
+
+TEST(DynamicsRailLineLaw, ChainPieceSettlesAtTheLawsApproach) {
+  const double weight = kMass * 9.81;
+  const Guide steel = rail(Guide::Kind::kStraight, false);
+  const Guide polymer = rail(Guide::Kind::kStraight, false, kPolymer, kPolymerNu);
+  const Settled on_steel = settle(steel), on_polymer = settle(polymer);
+  const double d_steel = johnson_approach(steel, weight);
+  const double d_polymer = johnson_approach(polymer, weight);
+  for (std::size_t i = 0; i < on_steel.depth.size(); ++i) {
+    EXPECT_NEAR(on_steel.depth[i] / d_steel, 1.0, 1e-6) << i;
+    EXPECT_NEAR(on_polymer.depth[i] / d_polymer, 1.0, 1e-6) << i;
+  }
+  const double n = static_cast<double>(on_steel.depth.size());
+  EXPECT_NEAR(on_steel.elastic / (n * johnson_energy(steel, weight)), 1.0, 1e-5);
+  EXPECT_NEAR(on_polymer.elastic / (n * johnson_energy(polymer, weight)), 1.0, 1e-5);
+  const double ratio = on_polymer.depth[2] / on_steel.depth[2];
+  const double moduli = johnson(steel).compliance / johnson(polymer).compliance;
+  std::printf(
+      "at rest under %.4g N a roller: steel %.5g nm, polymer %.5g nm (x %.2f; the "
+      "compliances' ratio %.2f)\n",
+      weight, on_steel.depth[2] * 1e9, on_polymer.depth[2] * 1e9, ratio, 1.0 / moduli);
+  EXPECT_NEAR(ratio, d_polymer / d_steel, 1e-5 * ratio);
+  EXPECT_LT(ratio, 1.0 / moduli);  // the log term grows less on the softer rail (b wider)
+}
+
+// (4) Energy: two linked rollers dropped at 0.3 m/s onto the polymer rail from 0.1 µm above it,
+// frictionless, at θ = ½ over 2 ms of 0.5 µs steps. Undamped, the energy is conserved and the
+// deepest approach is the closed form's: the contact's energy E(Q) at δ(Q) equals the kinetic
+// energy and the fall, ½ m v₀² + m g (δ + 0.1 µm), per roller. With the rail's damper the energy
+// lost is the damper's work (the work balance closes).
+struct RailDrop {
+  double deepest = 0.0, lost = 0.0, damper = 0.0, kinetic0 = 0.0, drift = 0.0;
+};
+RailDrop rail_drop(const Guide& g, double damping) {
+  constexpr double kG = 9.81, kV = 0.3, kAbove = 1e-7;
+  Guide r = g;
+  r.contact_damping = damping;
+  Model m = uniform_chain(2, false, kPitch, kMass, 5e7, 0.0, false);
+  m.gravity_y = -kG;
+  m.guides = {r};
+  State s(2, 0);
+  for (std::size_t i = 0; i < 2; ++i) {
+    s.x[i] = kPitch * static_cast<double>(i);
+    s.y[i] = kRoller + kAbove;
+    s.vy[i] = -kV;
+  }
+  const Energy e0 = energy(m, s);
+  Integrator integ(m, {.step = 5e-7, .theta = 0.5});
+  RailDrop d;
+  d.kinetic0 = e0.kinetic;
+  double lowest = INFINITY;
+  for (int k = 0; k < 4000; ++k) {
+    if (!integ.step(m, s).converged) {
+      ADD_FAILURE() << "step " << k << " did not converge";
+      break;
+    }
+    lowest = std::min(lowest, s.y[0]);
+    d.drift = std::max(d.drift, std::abs(energy(m, s).total() - e0.total()));
+  }
+  d.deepest = kRoller - lowest;
+  d.lost = e0.total() - energy(m, s).total();
+  d.damper = s.contact_damping_work;
+  return d;
+}
+
+TEST(DynamicsRailLineLaw, DropsEnergyAndWorkBalance) {
+  constexpr double kG = 9.81, kV = 0.3, kAbove = 1e-7;
+  const Guide g = rail(Guide::Kind::kStraight, false, kPolymer, kPolymerNu);
+  const RailDrop free = rail_drop(g, 0.0), damped = rail_drop(g, 20.0);
+  // the closed form's deepest approach: E(Q) − m g δ(Q) = ½ m v₀² + m g · 0.1 µm, by bisection
+  // in Q (the left side increases with Q: dE = Q dδ > m g dδ past the roller's weight)
+  const double target = 0.5 * kMass * kV * kV + kMass * kG * kAbove;
+  double lo = kMass * kG, hi = 1e5;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = std::sqrt(lo * hi);
+    const double left = johnson_energy(g, mid) - kMass * kG * johnson_approach(g, mid);
+    (left < target ? lo : hi) = mid;
+  }
+  const double deepest = johnson_approach(g, lo);
+  std::printf(
+      "drop on polymer: deepest %.5g um (closed form %.5g um) at %.4g N, |E - E0| "
+      "%.2e of the kinetic; damped: lost %.6g J, the damper's work %.6g J\n",
+      free.deepest * 1e6, deepest * 1e6, lo, free.drift / free.kinetic0, damped.lost,
+      damped.damper);
+  EXPECT_NEAR(free.deepest / deepest, 1.0, 1e-3);
+  EXPECT_LT(free.drift, 1e-3 * free.kinetic0);
+  EXPECT_EQ(free.damper, 0.0);
+  EXPECT_GT(damped.lost, 0.1 * damped.kinetic0);
+  EXPECT_NEAR(damped.lost, -damped.damper, 1e-3 * damped.lost);
+}
+
+}  // namespace
+}  // namespace catena::dynamics
