@@ -4,8 +4,10 @@
 // regularised law creeps); with tan β > μ it slides at g (sin β − μ cos β) under either law; an
 // incline tilted slowly through μ lets go at tan β = μ; the work balance closes with the stick
 // springs' energy and the slip's dissipation, also where a lifted roller's spring is released;
-// the springs stay within their reach μ f/k_t and every step's friction work is ≤ 0; and the
-// stick stiffness's bad values are named (also on a frictionless rail).
+// the springs stay within their reach μ f/k_t and every step's friction work is ≤ 0; on arcs
+// ("On an arc": s = ±ρ_c φ) the Newton blocks, a piece held on a convex arc's slope, and a piece
+// crossing a closed inside arc's seam, stopping and held with the balance closing; and the stick
+// stiffness's bad values are named (also on a frictionless rail; an arc's accepted).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -564,7 +566,7 @@ Piece piece_on_arc(const Guide& g, double at, double speed = 0.0) {
   return p;
 }
 
-// The step's Newton matrix on arcs (a convex one, R = 0.5 m, the piece 8.5° down its slope; a
+// The step's Newton matrix on arcs (a convex one, R = 0.5 m, the piece 0.15 rad down its slope; a
 // closed inside one, the piece at its bottom): node 0 sticking, node 1 sliding, against central
 // differences of the step's residual.
 TEST(GuideStick, IntegratorNewtonMatrixHasTheStickBlocksOnAnArc) {
