@@ -4,7 +4,8 @@
 // of range, on an arc, without gravity, on a rail whose carrying side faces down — with its line
 // and exit status 2; the drift is net of the load's work. And `stick_stiffness` on a guide
 // ("Guides: sticking"): every bad value named at once (negative, a wrong unit, on a frictionless
-// rail; an arc's is accepted), and an absurd one beyond the rail's penalty's bound over a step.
+// rail; an arc's is accepted), an absurd one beyond the rail's penalty's bound over a step, and
+// `stick_damping` negative or without the spring.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -179,8 +180,9 @@ TEST(DynamicsLoadCli, EveryBadLoadNamed) {
 
 TEST(DynamicsLoadCli, EveryBadStickStiffnessNamed) {
   std::string text = with_guide_key(example(), 0, "stick_stiffness = \"-1 N/m\"");
-  // the upper lead-in's arc: an arc sticks as a straight rail does, not refused
-  text = with_guide_key(text, 1, "stick_stiffness = \"1e5 N/m\"");
+  // the upper lead-in's arc: an arc sticks as a straight rail does, not refused; its damper
+  // negative, refused
+  text = with_guide_key(text, 1, "stick_stiffness = \"1e5 N/m\"\nstick_damping = -1");
   text = with_guide_key(text, 3, "stick_stiffness = \"2 m\"");
   // the lower rail made frictionless: nothing to stick with
   const std::string mu = "friction = 0.3";
@@ -191,10 +193,11 @@ TEST(DynamicsLoadCli, EveryBadStickStiffnessNamed) {
   const CliRun r = refused_naming(
       "stick.toml", text,
       {"dynamics.guide[0].stick_stiffness (line", "dynamics.guide[2].stick_stiffness",
-       "dynamics.guide[3].stick_stiffness (line"});
-  for (const char* why : {"a finite stiffness >= 0 N/m", "0 on a frictionless guide", "N/m"})
+       "dynamics.guide[3].stick_stiffness (line", "dynamics.guide[1].stick_damping (line"});
+  for (const char* why : {"a finite stiffness >= 0 N/m", "0 on a frictionless guide", "N/m",
+                          "a finite damping >= 0 N*s/m"})
     EXPECT_NE(r.err.find(why), std::string::npos) << why << "\n" << r.err;
-  EXPECT_EQ(r.err.find("dynamics.guide[1]"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("dynamics.guide[1].stick_stiffness"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("arc guide"), std::string::npos) << r.err;
   // an absurd spring: the bound of the rail's penalty over a step ("The inputs' bounds")
   const CliRun big =
@@ -203,6 +206,11 @@ TEST(DynamicsLoadCli, EveryBadStickStiffnessNamed) {
   EXPECT_EQ(big.status, 2);
   EXPECT_NE(big.err.find("dynamics.guide[2].stick_stiffness (line"), std::string::npos) << big.err;
   EXPECT_NE(big.err.find("at most 5e+05 m/(theta step)^2"), std::string::npos) << big.err;
+  // a damper without the spring: refused, named
+  const CliRun bare =
+      refused_naming("stick_bare.toml", with_guide_key(example(), 2, "stick_damping = 10"),
+                     {"dynamics.guide[2].stick_damping"});
+  EXPECT_NE(bare.err.find("0 without stick_stiffness"), std::string::npos) << bare.err;
 }
 
 }  // namespace

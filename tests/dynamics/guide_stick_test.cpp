@@ -100,11 +100,22 @@ void expect_blocks_match_differences(const Guide& g, const GuideFrame& f, double
     EXPECT_NEAR(c.dv[col], (e.fx - h.fx) / (2 * dv), vtol) << k << " dv x" << col;
     EXPECT_NEAR(c.dv[2 + col], (e.fy - h.fy) / (2 * dv), vtol) << k << " dv y" << col;
   }
-  // the stick law: the spring within the reach, μ f beyond (never the regularised φ)
-  const double spring = -g.stick_stiffness * (c.position - anchor);
-  if (c.sticking) {
+  // the stick law: the spring (and its damper, −c_t ṡ, ṡ by differences of s along v) within
+  // the reach, μ f beyond (never the regularised φ)
+  double spring = -g.stick_stiffness * (c.position - anchor);
+  if (g.stick_damping > 0.0) {
+    const double e = 1e-5;  // [s]
+    const double sdot = (guide_position(g, f, x + e * vx, y + e * vy) -
+                         guide_position(g, f, x - e * vx, y - e * vy)) /
+                        (2 * e);
+    spring -= g.stick_damping * sdot;
+    if (c.sticking) {
+      EXPECT_NEAR(c.friction_force, spring, 1e-7 * std::abs(spring)) << k;
+    }
+  } else if (c.sticking) {
     EXPECT_DOUBLE_EQ(c.friction_force, spring) << k;
-  } else {
+  }
+  if (!c.sticking) {
     EXPECT_DOUBLE_EQ(std::abs(c.friction_force), g.friction * c.normal_force) << k;
     EXPECT_GT(c.friction_force * spring, 0.0) << k;
   }
@@ -114,25 +125,31 @@ void expect_blocks_match_differences(const Guide& g, const GuideFrame& f, double
 // column by column against central differences of guide_contact about the same anchor, on both
 // sides of the spring's reach μ f/k_t.
 TEST(GuideStick, ContactBlocksMatchFiniteDifferencesOfTheForce) {
+  for (const double damper : {0.0, 300.0}) {
+    Guide g = testing::inclined_rail(0.3);
+    g.stick_stiffness = 2e5;
+    g.stick_damping = damper;
+    const GuideFrame f = guide_frame(g);
+    int sticking = 0, sliding = 0;
+    for (int k = 0; k < 40; ++k) {
+      const double along = 0.1 + 0.015 * k, depth = 1.2e-6 + 1e-7 * k;  // beyond the ramp
+      const double x = g.x0 + along * f.ux + (g.roller_radius - depth) * -f.uy;
+      const double y = g.y0 + along * f.uy + (g.roller_radius - depth) * f.ux;
+      const double vx = 0.01 * std::sin(k), vy = 0.01 * std::cos(3.0 * k);
+      // deflections from well within the reach μ f/k_t (10 … 70 µm here) to beyond it, either way
+      const double s = guide_position(g, f, x, y);
+      const double anchor = s - (k % 2 == 0 ? 1.0 : -1.0) * 2e-6 * (1 + k);
+      const GuideContact c = guide_contact(g, f, x, y, vx, vy, anchor);
+      ASSERT_TRUE(c.normal_force > 0.0) << k;
+      (c.sticking ? sticking : sliding)++;
+      expect_blocks_match_differences(g, f, x, y, vx, vy, anchor, k);
+    }
+    EXPECT_GT(sticking, 5) << damper;
+    EXPECT_GT(sliding, 5) << damper;
+  }
   Guide g = testing::inclined_rail(0.3);
   g.stick_stiffness = 2e5;
   const GuideFrame f = guide_frame(g);
-  int sticking = 0, sliding = 0;
-  for (int k = 0; k < 40; ++k) {
-    const double along = 0.1 + 0.015 * k, depth = 1.2e-6 + 1e-7 * k;  // beyond the ramp
-    const double x = g.x0 + along * f.ux + (g.roller_radius - depth) * -f.uy;
-    const double y = g.y0 + along * f.uy + (g.roller_radius - depth) * f.ux;
-    const double vx = 0.01 * std::sin(k), vy = 0.01 * std::cos(3.0 * k);
-    // deflections from well within the reach μ f/k_t (10 … 70 µm here) to beyond it, either way
-    const double s = guide_position(g, f, x, y);
-    const double anchor = s - (k % 2 == 0 ? 1.0 : -1.0) * 2e-6 * (1 + k);
-    const GuideContact c = guide_contact(g, f, x, y, vx, vy, anchor);
-    ASSERT_TRUE(c.normal_force > 0.0) << k;
-    (c.sticking ? sticking : sliding)++;
-    expect_blocks_match_differences(g, f, x, y, vx, vy, anchor, k);
-  }
-  EXPECT_GT(sticking, 5);
-  EXPECT_GT(sliding, 5);
   // a NaN anchor or k_t = 0: the regularised contact, bit for bit
   double x = 0.0, y = 0.0;
   x = g.x0 + 0.3 * f.ux - (g.roller_radius - 2e-6) * f.uy;
@@ -154,55 +171,57 @@ TEST(GuideStick, ContactBlocksMatchFiniteDifferencesOfTheForce) {
 // 2.5 times the spring's reach μ f/k_t either way) — with ∂s/∂q = ρ_c t/|q − C| and t turning with
 // the roller.
 TEST(GuideStick, ArcContactBlocksMatchFiniteDifferencesOfTheForce) {
-  for (const bool inside : {false, true}) {
-    Guide g;
-    g.kind = Guide::Kind::kArc;
-    g.centre_x = 0.1;
-    g.centre_y = -0.2;
-    g.radius = 0.03;
-    g.start_angle = 0.3;
-    g.end_angle = 4.0;
-    g.inside = inside;
-    g.roller_radius = kRoller;
-    g.contact_stiffness = 1e4;
-    g.contact_damping = 20.0;
-    g.friction = 0.3;
-    g.stick_stiffness = 2e5;
-    Model m = uniform_chain(2, false, kPitch, kMass, 1e6, 5.0, false);
-    m.guides = {g};
-    ASSERT_TRUE(validate(m).empty()) << inside;
-    const GuideFrame f = guide_frame(g);
-    const double line = inside ? g.radius - kRoller : g.radius + kRoller, sgn = inside ? -1 : 1;
-    int sticking = 0, sliding = 0;
-    double widest = 0.0;  // the largest |ρ_c/|q − C| − 1| met
-    for (int k = 0; k < 48; ++k) {
-      const double phi = 0.2 + 0.07 * k, depth = 5e-5 + 1.8e-4 * k;  // up to 1.4 r
-      const double d = line - sgn * depth;
-      widest = std::max(widest, std::abs(line / d - 1.0));
-      const double x = g.centre_x + d * std::cos(g.start_angle + phi);
-      const double y = g.centre_y + d * std::sin(g.start_angle + phi);
-      const double vx = 0.02 * std::sin(k), vy = 0.02 * std::cos(3.0 * k);
-      const GuideContact plain = guide_contact(g, f, x, y, vx, vy);
-      ASSERT_TRUE(plain.normal_force > 0.0) << k;
-      const double s = guide_position(g, f, x, y);
-      EXPECT_NEAR(s, sgn * line * phi, 1e-14) << k;
-      const double reach = g.friction * plain.normal_force / g.stick_stiffness;
-      const double frac[4] = {0.3, 0.7, 1.4, 2.5};
-      const double anchor =
-          s - (k % 2 == 0 ? 1.0 : -1.0) * frac[k % 4 / 2 + 2 * (k % 8 / 4)] * reach;
-      const GuideContact c = guide_contact(g, f, x, y, vx, vy, anchor);
-      EXPECT_EQ(c.normal_force, plain.normal_force) << k;
-      (c.sticking ? sticking : sliding)++;
-      expect_blocks_match_differences(g, f, x, y, vx, vy, anchor, k);
-      // a NaN anchor: the regularised contact, bit for bit
-      const GuideContact none = guide_contact(g, f, x, y, vx, vy, NAN);
-      EXPECT_EQ(none.fx, plain.fx);
-      EXPECT_EQ(none.fy, plain.fy);
+  for (const double damper : {0.0, 30.0})
+    for (const bool inside : {false, true}) {
+      Guide g;
+      g.kind = Guide::Kind::kArc;
+      g.centre_x = 0.1;
+      g.centre_y = -0.2;
+      g.radius = 0.03;
+      g.start_angle = 0.3;
+      g.end_angle = 4.0;
+      g.inside = inside;
+      g.roller_radius = kRoller;
+      g.contact_stiffness = 1e4;
+      g.contact_damping = 20.0;
+      g.friction = 0.3;
+      g.stick_stiffness = 2e5;
+      g.stick_damping = damper;
+      Model m = uniform_chain(2, false, kPitch, kMass, 1e6, 5.0, false);
+      m.guides = {g};
+      ASSERT_TRUE(validate(m).empty()) << inside;
+      const GuideFrame f = guide_frame(g);
+      const double line = inside ? g.radius - kRoller : g.radius + kRoller, sgn = inside ? -1 : 1;
+      int sticking = 0, sliding = 0;
+      double widest = 0.0;  // the largest |ρ_c/|q − C| − 1| met
+      for (int k = 0; k < 48; ++k) {
+        const double phi = 0.2 + 0.07 * k, depth = 5e-5 + 1.8e-4 * k;  // up to 1.4 r
+        const double d = line - sgn * depth;
+        widest = std::max(widest, std::abs(line / d - 1.0));
+        const double x = g.centre_x + d * std::cos(g.start_angle + phi);
+        const double y = g.centre_y + d * std::sin(g.start_angle + phi);
+        const double vx = 0.02 * std::sin(k), vy = 0.02 * std::cos(3.0 * k);
+        const GuideContact plain = guide_contact(g, f, x, y, vx, vy);
+        ASSERT_TRUE(plain.normal_force > 0.0) << k;
+        const double s = guide_position(g, f, x, y);
+        EXPECT_NEAR(s, sgn * line * phi, 1e-14) << k;
+        const double reach = g.friction * plain.normal_force / g.stick_stiffness;
+        const double frac[4] = {0.3, 0.7, 1.4, 2.5};
+        const double anchor =
+            s - (k % 2 == 0 ? 1.0 : -1.0) * frac[k % 4 / 2 + 2 * (k % 8 / 4)] * reach;
+        const GuideContact c = guide_contact(g, f, x, y, vx, vy, anchor);
+        EXPECT_EQ(c.normal_force, plain.normal_force) << k;
+        (c.sticking ? sticking : sliding)++;
+        expect_blocks_match_differences(g, f, x, y, vx, vy, anchor, k);
+        // a NaN anchor: the regularised contact, bit for bit
+        const GuideContact none = guide_contact(g, f, x, y, vx, vy, NAN);
+        EXPECT_EQ(none.fx, plain.fx);
+        EXPECT_EQ(none.fy, plain.fy);
+      }
+      EXPECT_GT(sticking, 10) << inside;
+      EXPECT_GT(sliding, 10) << inside;
+      EXPECT_GT(widest, 0.2) << inside;
     }
-    EXPECT_GT(sticking, 10) << inside;
-    EXPECT_GT(sliding, 10) << inside;
-    EXPECT_GT(widest, 0.2) << inside;
-  }
 }
 
 // The step's Newton matrix with the stick law: every column against central differences of the
@@ -220,6 +239,7 @@ void expect_newton_matrix_has_the_stick_blocks(Piece p, const double (&offset)[2
   integ.newton_system(p.model, p.state, u, r, &jac);
   Model plain = p.model;
   plain.guides[rail].stick_stiffness = 0.0;
+  plain.guides[rail].stick_damping = 0.0;
   Integrator base(plain, {.step = h, .theta = 0.6});
   base.newton_system(plain, p.state, u, r, &bare);
   double scale = 0.0, stick = 0.0;
@@ -571,15 +591,17 @@ Piece piece_on_arc(const Guide& g, double at, double speed = 0.0) {
 // differences of the step's residual.
 TEST(GuideStick, IntegratorNewtonMatrixHasTheStickBlocksOnAnArc) {
   constexpr double kPi = std::numbers::pi;
-  for (const bool inside : {false, true}) {
-    const Guide g = inside ? arc_rail(0.5, -0.5 * kPi, 1.5 * kPi, true, 0.3, 1e5)
-                           : arc_rail(0.5, 0.3, kPi - 0.3, false, 0.3, 1e5);
-    const Piece p = piece_on_arc(g, inside ? -0.5 * kPi + 0.01 : 0.5 * kPi + 0.15);
-    ASSERT_TRUE(validate(p.model).empty());
-    const std::vector<double> u{p.state.x[0] - 1e-7, p.state.y[0] + 2e-8, p.state.x[1] + 3e-7,
-                                p.state.y[1] - 1e-8};
-    expect_newton_matrix_has_the_stick_blocks(p, {2e-7, -2e-4}, u, 0);
-  }
+  for (const double damper : {0.0, 30.0})
+    for (const bool inside : {false, true}) {
+      Guide g = inside ? arc_rail(0.5, -0.5 * kPi, 1.5 * kPi, true, 0.3, 1e5)
+                       : arc_rail(0.5, 0.3, kPi - 0.3, false, 0.3, 1e5);
+      g.stick_damping = damper;
+      const Piece p = piece_on_arc(g, inside ? -0.5 * kPi + 0.01 : 0.5 * kPi + 0.15);
+      ASSERT_TRUE(validate(p.model).empty());
+      const std::vector<double> u{p.state.x[0] - 1e-7, p.state.y[0] + 2e-8, p.state.x[1] + 3e-7,
+                                  p.state.y[1] - 1e-8};
+      expect_newton_matrix_has_the_stick_blocks(p, {2e-7, -2e-4}, u, 0);
+    }
 }
 
 // Each node's displacement along its guide's tangent (guide_position) since `from`: the largest
@@ -692,6 +714,53 @@ TEST(GuideStick, OnAClosedInsideArcThePieceCrossesTheSeamStopsAndTheBalanceClose
       (lost - dissipated) / (kMass * v0 * v0), p.state.friction_work / (kMass * v0 * v0));
 }
 
+// The stick law's damper (Guide::stick_damping c_t = 50 N·s/m, half the critical 2 √(k_t m)) on
+// a piece held on the incline at tan β = 0.3 μ at θ = ½ (which does not damp): the springs'
+// ringing, which without it keeps swinging through about twice the static deflection
+// m g sin β/k_t, dies out — over the last 0.2 s of 1 s the piece moves less than 1e-3 of the
+// deflection and rests at it within 1e-3 — every step's friction work is ≤ 0 (the damper's
+// −c_t ṡ v_t h; the spring's share is 0 at θ = ½), and the work balance closes: the energy lost
+// (the springs' energy counted) is the friction's and the dampers' work within 1e-6 of the
+// friction work.
+TEST(GuideStick, TheStickDamperDampsAHeldPiecesRinging) {
+  const double mu = 0.3, kt = 1e5, beta = std::atan(0.3 * mu), h = 2e-4;
+  const double deflection = kMass * kG * std::sin(beta) / kt;
+  for (const double damper : {50.0, 0.0}) {
+    Piece p = resting_piece(mu, kt, beta);
+    p.model.guides[0].stick_damping = damper;
+    ASSERT_TRUE(validate(p.model).empty());
+    const Energy e0 = energy(p.model, p.state);
+    Integrator integ(p.model, {.step = h, .theta = 0.5});
+    double lo = INFINITY, hi = -INFINITY, worst = -INFINITY;
+    while (p.state.time < 1.0 - 0.5 * h) {
+      const StepReport r = integ.step(p.model, p.state);
+      ASSERT_TRUE(r.converged) << p.state.time;
+      worst = std::max(worst, r.friction_work);
+      if (p.state.time > 0.8) {
+        lo = std::min(lo, -p.state.x[0]);
+        hi = std::max(hi, -p.state.x[0]);
+      }
+    }
+    const double lost = energy(p.model, p.state).total() - e0.total();
+    const double works = p.state.friction_work + p.state.contact_damping_work + p.state.damper_work;
+    std::printf(
+        "stick damper %g N s/m: swing over the last 0.2 s %.3g of the static deflection, "
+        "rests at %.6g of it, friction work %.4g J, largest a step %.3g J, balance %.3g of "
+        "the friction work\n",
+        damper, (hi - lo) / deflection, p.state.x[0] / -deflection, p.state.friction_work, worst,
+        (lost - works) / p.state.friction_work);
+    if (damper > 0.0) {
+      EXPECT_LT(hi - lo, 1e-3 * deflection);
+      EXPECT_NEAR(-p.state.x[0], deflection, 1e-3 * deflection);
+      EXPECT_LE(worst, 1e-15);
+      EXPECT_LT(p.state.friction_work, 0.0);
+      EXPECT_NEAR(lost, works, 1e-6 * std::abs(p.state.friction_work));
+    } else {
+      EXPECT_GT(hi - lo, 0.5 * deflection);
+    }
+  }
+}
+
 TEST(GuideStick, BadStickStiffnessNamed) {
   Model m = uniform_chain(4, false, kPitch, kMass, 1e7, 0.0, false);
   // a frictionless rail (μ = 0) has nothing to stick with: its spring's reach μ f/k_t is 0; an
@@ -704,16 +773,30 @@ TEST(GuideStick, BadStickStiffnessNamed) {
               level_rail(0.0, 1e5),
               level_rail(0.0, 0.0),
               arc_rail(0.2, 0.0, 1.0, true, 0.0, 1e5),
-              arc_rail(0.2, 0.0, 1.0, true, 0.3, -1.0)};
+              arc_rail(0.2, 0.0, 1.0, true, 0.3, -1.0),
+              level_rail(0.3, 1e5),
+              level_rail(0.3, 1e5),
+              level_rail(0.3, 0.0),
+              arc_rail(0.2, 0.0, 1.0, false, 0.3, 1e5)};
+  // the stick law's damper: finite, ≥ 0, and only beside a spring
+  m.guides[9].stick_damping = -1.0;
+  m.guides[10].stick_damping = NAN;
+  m.guides[11].stick_damping = 10.0;
+  m.guides[12].stick_damping = 10.0;
   std::vector<std::string> fields;
   for (const Issue& i : validate(m)) fields.push_back(i.field);
   const std::vector<std::string> want{"guide[0].stick_stiffness", "guide[1].stick_stiffness",
                                       "guide[5].stick_stiffness", "guide[7].stick_stiffness",
-                                      "guide[8].stick_stiffness"};
+                                      "guide[8].stick_stiffness", "guide[9].stick_damping",
+                                      "guide[10].stick_damping",  "guide[11].stick_damping"};
   EXPECT_EQ(fields, want);
   // a lead-in's arcs slide with the regularised law: they do not inherit the rail's k_t
-  for (const Guide& a : lead_in_arcs(level_rail(0.3, 1e5), {.radius = 0.05, .angle = 0.3}))
+  Guide damped = level_rail(0.3, 1e5);
+  damped.stick_damping = 10.0;
+  for (const Guide& a : lead_in_arcs(damped, {.radius = 0.05, .angle = 0.3})) {
     EXPECT_EQ(a.stick_stiffness, 0.0);
+    EXPECT_EQ(a.stick_damping, 0.0);
+  }
 }
 
 }  // namespace

@@ -207,6 +207,10 @@ struct Guide {
   /// spring's force is below μ f the roller sticks (no creep), beyond it slides at μ f and the
   /// anchor follows (updated once per accepted step, update_stick_anchors).
   double stick_stiffness = 0.0;
+  /// [N·s/m] c_t: a damper beside the stick law's spring (needs stick_stiffness > 0): while
+  /// sticking f_t = −k_t (s − a) − c_t ṡ, ṡ = ∂s/∂q · v the roller's speed along the rail's
+  /// parametrisation; the roller slides when that exceeds μ f. 0, the default: the bare spring.
+  double stick_damping = 0.0;
 };
 
 /// The largest Guide::load_per_metre validate accepts [kg/m].

@@ -88,15 +88,22 @@ ArcPlace arc_place(const Guide& g, double x, double y) {
 // The stick law's tangential position s along the contact's tangent t = (−n_y, n_x) and ∂s/∂q:
 // on a straight rail s = (q − P₀)·t, ∂s/∂q = t (t = −u); on an arc ±ρ_c φ (arc_place; t is the
 // counter-clockwise tangent on an outside arc, the clockwise one inside), ∂s/∂q = ρ_c t/|q − C|.
+// On an arc also the Hessian of s, ∂²s/∂q² = [[hxx, hxy], [hxy, hyy]] (0 on a straight rail):
+// the stick damper's ∂ṡ/∂q = ∂²s/∂q² v.
 struct GuidePlace {
   double s = 0.0, dsx = 0.0, dsy = 0.0;
+  double hxx = 0.0, hxy = 0.0, hyy = 0.0;
 };
 GuidePlace guide_place(const Guide& g, const GuideFrame& frame, double x, double y) {
   if (g.kind == Guide::Kind::kStraight)
     return {-((x - g.x0) * frame.ux + (y - g.y0) * frame.uy), -frame.ux, -frame.uy};
   const ArcPlace p = arc_place(g, x, y);
   const double sgn = g.inside ? -1.0 : 1.0;
-  return {sgn * p.s, sgn * p.dsx, sgn * p.dsy};
+  // ∂s/∂q = σ ρ_c (−r_y, r_x)/d²: its derivatives, with ∂(1/d²)/∂q = −2 r/d⁴
+  const double rx = x - g.centre_x, ry = y - g.centre_y, d2 = p.d * p.d;
+  const double k = sgn * p.line / (d2 * d2);
+  return {sgn * p.s,         sgn * p.dsx, sgn * p.dsy, 2.0 * k * rx * ry, k * (ry * ry - rx * rx),
+          -2.0 * k * rx * ry};
 }
 }  // namespace
 
@@ -326,6 +333,13 @@ std::vector<Issue> validate(const Model& model) {
       out.push_back({f + "stick_stiffness", check::format_si(g.stick_stiffness, "N/m"),
                      "0 on a frictionless guide (friction = 0: nothing to stick with)"});
     }
+    if (!std::isfinite(g.stick_damping) || !(g.stick_damping >= 0.0)) {
+      out.push_back({f + "stick_damping", check::format_si(g.stick_damping, "N*s/m"),
+                     "a finite damping >= 0 N*s/m (0: the stick law's bare spring)"});
+    } else if (g.stick_damping > 0.0 && !(g.stick_stiffness > 0.0)) {
+      out.push_back({f + "stick_damping", check::format_si(g.stick_damping, "N*s/m"),
+                     "0 without stick_stiffness (a damper on the stick law's spring)"});
+    }
     if (!std::isfinite(g.load_per_metre) || !(g.load_per_metre >= 0.0) ||
         !(g.load_per_metre <= kMaxRailLoad)) {
       out.push_back({f + "load_per_metre", check::format_si(g.load_per_metre, "kg/m"),
@@ -417,6 +431,7 @@ std::vector<Guide> lead_in_arcs(const Guide& rail, const LeadIn& lead) {
     g.inside = false;
     g.load_per_metre = 0.0;   // the rail's load is the rail's (an arc carries none)
     g.stick_stiffness = 0.0;  // a lead-in slides with the regularised law (not the rail's k_t)
+    g.stick_damping = 0.0;
     out.push_back(g);
   };
   if (lead.at_start) arc(rail.x0, rail.y0, up, up + lead.angle);
@@ -577,18 +592,27 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   // the friction f_t and its gradients, by the stick law or the regularised one
   double ft = 0.0, dftq[2] = {0.0, 0.0}, dftv[2] = {0.0, 0.0};
   if (stick) {
-    // the stick law: f_t = −k_t (s − a) while that is within ±μ f (∂s/∂q: tᵀ on a straight rail,
-    // ρ_c tᵀ/|q − C| on an arc, guide_place), else −μ f sgn(s − a) (sliding, the spring at its
-    // reach); t turning with the roller on an arc is the −f_t κ n tᵀ term below
-    const double mu = gd.friction, kt = gd.stick_stiffness;
+    // the stick law: f_t = −k_t (s − a) − c_t ṡ while that is within ±μ f (∂s/∂q: tᵀ on a
+    // straight rail, ρ_c tᵀ/|q − C| on an arc, guide_place), else μ f against it (sliding); t
+    // turning with the roller on an arc is the −f_t κ n tᵀ term below
+    const double mu = gd.friction, kt = gd.stick_stiffness, ct = gd.stick_damping;
     const double d = stick_stretch(gd, c.position, anchor);
     ft = -kt * d;
+    // the damper beside it (Guide::stick_damping): −c_t ṡ, ṡ = ∂s/∂q · v
+    const double sdot = ct > 0.0 ? place.dsx * vx + place.dsy * vy : 0.0;
+    if (ct > 0.0) ft -= ct * sdot;
     if (std::abs(ft) <= mu * f) {
       c.sticking = true;
       dftq[0] = -kt * place.dsx;
       dftq[1] = -kt * place.dsy;
+      if (ct > 0.0) {
+        dftq[0] -= ct * (place.hxx * vx + place.hxy * vy);
+        dftq[1] -= ct * (place.hxy * vx + place.hyy * vy);
+        dftv[0] = -ct * place.dsx;
+        dftv[1] = -ct * place.dsy;
+      }
     } else {
-      const double sgn = d > 0.0 ? 1.0 : -1.0;
+      const double sgn = ft < 0.0 ? 1.0 : -1.0;  // against the spring and damper (d > 0: ft < 0)
       ft = -mu * f * sgn;
       dftq[0] = -mu * sgn * dfq[0];
       dftq[1] = -mu * sgn * dfq[1];
