@@ -206,6 +206,12 @@ TEST(DynamicsLoadCli, EveryBadStickStiffnessNamed) {
   EXPECT_EQ(big.status, 2);
   EXPECT_NE(big.err.find("dynamics.guide[2].stick_stiffness (line"), std::string::npos) << big.err;
   EXPECT_NE(big.err.find("at most 5e+05 m/(theta step)^2"), std::string::npos) << big.err;
+  // an absurd damper beside a spring: the bound of the rail's damper over a step
+  const CliRun loud = refused_naming(
+      "stick_loud.toml",
+      with_guide_key(example(), 2, "stick_stiffness = \"1e5 N/m\"\nstick_damping = 1e300"),
+      {"dynamics.guide[2].stick_damping (line"});
+  EXPECT_EQ(loud.err.find("stick_stiffness"), std::string::npos) << loud.err;
   // a damper without the spring: refused, named
   const CliRun bare =
       refused_naming("stick_bare.toml", with_guide_key(example(), 2, "stick_damping = 10"),
