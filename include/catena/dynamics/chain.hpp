@@ -203,9 +203,9 @@ struct Guide {
   /// regularised friction above. > 0 (a guide with friction > 0 only, straight or arc): each
   /// roller in contact carries an anchor a (State::stick_anchor) and the friction is the
   /// elasto-plastic spring f_t = −clamp(k_t (s − a), −μ f, μ f), s the roller's position along t
-  /// (guide_position); while the
-  /// spring's force is below μ f the roller sticks (no creep), beyond it slides at μ f and the
-  /// anchor follows (updated once per accepted step, update_stick_anchors).
+  /// (guide_position); while the spring's force is below μ f the roller sticks (no creep), beyond
+  /// it slides at μ f and the anchor follows (updated once per accepted step,
+  /// update_stick_anchors).
   double stick_stiffness = 0.0;
   /// [N·s/m] c_t: a damper beside the stick law's spring (needs stick_stiffness > 0): while
   /// sticking f_t = −k_t (s − a) − c_t ṡ, ṡ = ∂s/∂q · v the roller's speed along the rail's
@@ -231,9 +231,9 @@ struct GuideContact {
   double damping_power = 0.0;
   /// [m] s along t (guide_position; stick law only, else 0)
   double position = 0.0;
-  bool sticking = false;      ///< the stick spring holds (|k_t (s − a)| ≤ μ f; stick law only)
-  double nx = 0.0, ny = 0.0;  ///< unit normal to the free side
-  double fx = 0.0, fy = 0.0;  ///< [N] F
+  bool sticking = false;  ///< the stick spring holds (|k_t (s − a) + c_t ṡ| ≤ μ f; stick law only)
+  double nx = 0.0, ny = 0.0;    ///< unit normal to the free side
+  double fx = 0.0, fy = 0.0;    ///< [N] F
   double dq[4] = {0, 0, 0, 0};  ///< [N/m] ∂F/∂q
   double dv[4] = {0, 0, 0, 0};  ///< [N·s/m] ∂F/∂v
 };
@@ -250,10 +250,10 @@ GuideFrame guide_frame(const Guide& g);
 GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
                            double vy);
 /// guide_contact with the stick law (Guide::stick_stiffness > 0) about the anchor a [m] along t:
-/// the friction is −clamp(k_t (s − a), −μ f, μ f) instead of the regularised law (s − a taken by
-/// stick_stretch), and its derivatives enter dq and dv (on an arc with ∂s/∂q = ρ_c tᵀ/|q − C| and
-/// t turning with the roller). A NaN anchor or k_t = 0: the regularised contact above, bit for
-/// bit.
+/// the friction is −clamp(k_t (s − a) + c_t ṡ, −μ f, μ f) instead of the regularised law (s − a
+/// taken by stick_stretch; c_t = Guide::stick_damping), and its derivatives enter dq and dv (on an
+/// arc with ∂s/∂q = ρ_c tᵀ/|q − C| and t turning with the roller). A NaN anchor or k_t = 0: the
+/// regularised contact above, bit for bit.
 GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
                            double vy, double anchor);
 /// [m] s, the tangential position along the contact's tangent t = (−n_y, n_x): on a straight rail

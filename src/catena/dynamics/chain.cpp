@@ -15,6 +15,11 @@ namespace catena::dynamics {
 namespace {
 constexpr std::size_t kMaxNodes = 10'000'000;
 
+// [m] ρ_c = R ± r: the radius of an arc guide's roller centres' line (R − r inside).
+double roller_line(const Guide& g) {
+  return g.inside ? g.radius - g.roller_radius : g.radius + g.roller_radius;
+}
+
 // A loaded arc guide's checks (docs/models/dynamics.md, "A conveyed load"): the load must press
 // the chain onto the rail over the whole arc, n·g < 0 at every angle φ in [start, end] (n = ±(cos
 // φ, sin φ), outward on an outside arc, inward on an inside one): the largest n·g over the arc is
@@ -49,7 +54,7 @@ void arc_load_presses(std::vector<Issue>& out, const std::string& f, const Guide
                        ") faces " + (at > 0.0 ? "down" : "sideways or there is no gravity") +
                        " (n.g = " + check::format_si(at + 0.0, "m/s^2") + ", must be < 0)"});
   }
-  const double line = g.inside ? g.radius - g.roller_radius : g.radius + g.roller_radius;
+  const double line = roller_line(g);
   if (model.pitch > 0.0 && std::isfinite(line) && !(line >= model.pitch))
     out.push_back({f + "radius", check::format_si(g.radius, "m"),
                    "a loaded arc whose roller centres' line has a radius of at least a pitch " +
@@ -73,7 +78,7 @@ ArcPlace arc_place(const Guide& g, double x, double y) {
   if (!(d > 0.0)) return p;
   p.ok = true;
   p.d = d;
-  p.line = g.inside ? g.radius - g.roller_radius : g.radius + g.roller_radius;
+  p.line = roller_line(g);
   const double sweep = g.end_angle - g.start_angle;
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
   double phi = std::atan2(ry, rx) - g.start_angle;
@@ -510,8 +515,7 @@ double stick_stretch(const Guide& g, double s, double anchor) {
   if (g.kind == Guide::Kind::kStraight) return d;
   // an arc: within half the rollers' line's circle of the anchor (a closed arc's seam, where φ
   // jumps by 2π, is no slip); a stretch within that is kept bit for bit
-  const double round = 2.0 * std::numbers::pi *
-                       std::abs(g.inside ? g.radius - g.roller_radius : g.radius + g.roller_radius);
+  const double round = 2.0 * std::numbers::pi * std::abs(roller_line(g));
   if (!(round > 0.0)) return d;
   return d - round * std::floor(d / round + 0.5);
 }
