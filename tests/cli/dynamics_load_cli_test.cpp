@@ -3,8 +3,9 @@
 // without one: the example's output keeps its fields), and every bad load is named at once — out
 // of range, on an arc, without gravity, on a rail whose carrying side faces down — with its line
 // and exit status 2; the drift is net of the load's work. And `stick_stiffness` on a guide
-// ("Guides: sticking"): every bad value named at once (negative, a wrong unit, on an arc, on a
-// frictionless rail), and an absurd one beyond the rail's penalty's bound over a step.
+// ("Guides: sticking"): every bad value named at once (negative, a wrong unit, on a frictionless
+// rail; an arc's is accepted), an absurd one beyond the rail's penalty's bound over a step, and
+// `stick_damping` negative or without the spring.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -161,7 +162,9 @@ TEST(DynamicsLoadCli, EveryBadLoadNamed) {
 
 TEST(DynamicsLoadCli, EveryBadStickStiffnessNamed) {
   std::string text = with_guide_key(example(), 0, "stick_stiffness = \"-1 N/m\"");
-  text = with_guide_key(text, 1, "stick_stiffness = \"1e5 N/m\"");  // the upper lead-in's arc
+  // the upper lead-in's arc: an arc sticks as a straight rail does, not refused; its damper
+  // negative, refused
+  text = with_guide_key(text, 1, "stick_stiffness = \"1e5 N/m\"\nstick_damping = -1");
   text = with_guide_key(text, 3, "stick_stiffness = \"2 m\"");
   // the lower rail made frictionless: nothing to stick with
   const std::string mu = "friction = 0.3";
@@ -171,11 +174,13 @@ TEST(DynamicsLoadCli, EveryBadStickStiffnessNamed) {
   text.replace(at, mu.size(), "friction = 0\nstick_stiffness = \"1e5 N/m\"");
   const CliRun r = refused_naming(
       "stick.toml", text,
-      {"dynamics.guide[0].stick_stiffness (line", "dynamics.guide[1].stick_stiffness (line",
-       "dynamics.guide[2].stick_stiffness", "dynamics.guide[3].stick_stiffness (line"});
-  for (const char* why :
-       {"a finite stiffness >= 0 N/m", "0 on an arc guide", "0 on a frictionless guide", "N/m"})
+      {"dynamics.guide[0].stick_stiffness (line", "dynamics.guide[2].stick_stiffness",
+       "dynamics.guide[3].stick_stiffness (line", "dynamics.guide[1].stick_damping (line"});
+  for (const char* why : {"a finite stiffness >= 0 N/m", "0 on a frictionless guide", "N/m",
+                          "a finite damping >= 0 N*s/m"})
     EXPECT_NE(r.err.find(why), std::string::npos) << why << "\n" << r.err;
+  EXPECT_EQ(r.err.find("dynamics.guide[1].stick_stiffness"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("arc guide"), std::string::npos) << r.err;
   // an absurd spring: the bound of the rail's penalty over a step ("The inputs' bounds")
   const CliRun big =
       run("dynamics " +
@@ -183,6 +188,17 @@ TEST(DynamicsLoadCli, EveryBadStickStiffnessNamed) {
   EXPECT_EQ(big.status, 2);
   EXPECT_NE(big.err.find("dynamics.guide[2].stick_stiffness (line"), std::string::npos) << big.err;
   EXPECT_NE(big.err.find("at most 5e+05 m/(theta step)^2"), std::string::npos) << big.err;
+  // an absurd damper beside a spring: the bound of the rail's damper over a step
+  const CliRun loud = refused_naming(
+      "stick_loud.toml",
+      with_guide_key(example(), 2, "stick_stiffness = \"1e5 N/m\"\nstick_damping = 1e300"),
+      {"dynamics.guide[2].stick_damping (line"});
+  EXPECT_EQ(loud.err.find("stick_stiffness"), std::string::npos) << loud.err;
+  // a damper without the spring: refused, named
+  const CliRun bare =
+      refused_naming("stick_bare.toml", with_guide_key(example(), 2, "stick_damping = 10"),
+                     {"dynamics.guide[2].stick_damping"});
+  EXPECT_NE(bare.err.find("0 without stick_stiffness"), std::string::npos) << bare.err;
 }
 
 }  // namespace

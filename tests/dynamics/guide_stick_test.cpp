@@ -5,8 +5,10 @@
 // incline tilted slowly through μ lets go at tan β = μ; the work balance closes with the stick
 // springs' energy and the slip's dissipation, also where a lifted roller's spring is released
 // (and where a held roller is moved far off the rail between two steps); the springs stay within
-// their reach μ f/k_t and every step's friction work is ≤ 0; and the stick stiffness's bad values
-// are named (also on a frictionless rail).
+// their reach μ f/k_t and every step's friction work is ≤ 0; on arcs ("On an arc": s = ±ρ_c φ)
+// the Newton blocks, a piece held on a convex arc's slope, and a piece crossing a closed inside
+// arc's seam, stopping and held with the balance closing; and the stick stiffness's bad values are
+// named (also on a frictionless rail; an arc's accepted).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -45,6 +47,12 @@ void tilt(Model& m, double beta) {
   m.gravity_y = -kG * std::cos(beta);
 }
 
+// The penetration where a rail's contact (kContact, smoothing ε) carries the normal force w:
+// k g²/2ε = w within the ramp (g < ε), k (g − ε/2) = w beyond.
+double resting_sink(double w, double eps) {
+  return w / kContact >= 0.5 * eps ? w / kContact + 0.5 * eps : std::sqrt(2.0 * eps * w / kContact);
+}
+
 // Two rollers one link apart resting on the rail (their normal contact in equilibrium), at rest.
 struct Piece {
   Model model;
@@ -58,12 +66,8 @@ Piece resting_piece(double mu, double stick, double beta, double load = 0.0) {
   tilt(p.model, beta);
   p.model.guides = {level_rail(mu, stick)};
   p.model.guides[0].load_per_metre = load;
-  // the penetration where the contact carries the weight's normal part W: k g²/2ε = W within
-  // the ramp (g < ε), k (g − ε/2) = W beyond
-  const double w = (kMass + load * kPitch) * kG * std::cos(beta),
-               eps = p.model.guides[0].contact_smoothing;
-  const double sink =
-      w / kContact >= 0.5 * eps ? w / kContact + 0.5 * eps : std::sqrt(2.0 * eps * w / kContact);
+  const double sink = resting_sink((kMass + load * kPitch) * kG * std::cos(beta),
+                                   p.model.guides[0].contact_smoothing);
   for (std::size_t i = 0; i < 2; ++i) {
     p.state.x[i] = kPitch * static_cast<double>(i);
     p.state.y[i] = kRoller - sink;
@@ -71,56 +75,82 @@ Piece resting_piece(double mu, double stick, double beta, double load = 0.0) {
   return p;
 }
 
+// The contact's ∂F/∂q and ∂F/∂v at q = (x, y), v = (vx, vy) about the anchor `anchor`, column by
+// column against central differences of guide_contact about the same anchor (`k` names the
+// contact in a failure).
+void expect_blocks_match_differences(const Guide& g, const GuideFrame& f, double x, double y,
+                                     double vx, double vy, double anchor, int k) {
+  const GuideContact c = guide_contact(g, f, x, y, vx, vy, anchor);
+  const double dx = 1e-10, dv = 1e-8;
+  const double q[2] = {x, y}, v[2] = {vx, vy};
+  for (int col = 0; col < 2; ++col) {
+    double qp[2] = {q[0], q[1]}, qm[2] = {q[0], q[1]};
+    qp[col] += dx;
+    qm[col] -= dx;
+    const GuideContact a = guide_contact(g, f, qp[0], qp[1], vx, vy, anchor);
+    const GuideContact b = guide_contact(g, f, qm[0], qm[1], vx, vy, anchor);
+    const double tol = 1e-5 * (std::abs(c.dq[col]) + std::abs(c.dq[2 + col])) + 1e-2;
+    EXPECT_NEAR(c.dq[col], (a.fx - b.fx) / (2 * dx), tol) << k << " dq x" << col;
+    EXPECT_NEAR(c.dq[2 + col], (a.fy - b.fy) / (2 * dx), tol) << k << " dq y" << col;
+    double vp[2] = {v[0], v[1]}, vm[2] = {v[0], v[1]};
+    vp[col] += dv;
+    vm[col] -= dv;
+    const GuideContact e = guide_contact(g, f, x, y, vp[0], vp[1], anchor);
+    const GuideContact h = guide_contact(g, f, x, y, vm[0], vm[1], anchor);
+    const double vtol = 1e-5 * (std::abs(c.dv[col]) + std::abs(c.dv[2 + col])) + 1e-6;
+    EXPECT_NEAR(c.dv[col], (e.fx - h.fx) / (2 * dv), vtol) << k << " dv x" << col;
+    EXPECT_NEAR(c.dv[2 + col], (e.fy - h.fy) / (2 * dv), vtol) << k << " dv y" << col;
+  }
+  // the stick law: the spring (and its damper, −c_t ṡ, ṡ by differences of s along v) within
+  // the reach, μ f beyond (never the regularised φ)
+  double spring = -g.stick_stiffness * (c.position - anchor);
+  if (g.stick_damping > 0.0) {
+    const double e = 1e-5;  // [s]
+    const double sdot = (guide_position(g, f, x + e * vx, y + e * vy) -
+                         guide_position(g, f, x - e * vx, y - e * vy)) /
+                        (2 * e);
+    spring -= g.stick_damping * sdot;
+    if (c.sticking) {
+      EXPECT_NEAR(c.friction_force, spring, 1e-7 * std::abs(spring)) << k;
+    }
+  } else if (c.sticking) {
+    EXPECT_DOUBLE_EQ(c.friction_force, spring) << k;
+  }
+  if (!c.sticking) {
+    EXPECT_DOUBLE_EQ(std::abs(c.friction_force), g.friction * c.normal_force) << k;
+    EXPECT_GT(c.friction_force * spring, 0.0) << k;
+  }
+}
+
 // Sticking and sliding contacts on the inclined rail of the guides' tests: ∂F/∂q and ∂F/∂v
 // column by column against central differences of guide_contact about the same anchor, on both
 // sides of the spring's reach μ f/k_t.
 TEST(GuideStick, ContactBlocksMatchFiniteDifferencesOfTheForce) {
+  for (const double damper : {0.0, 300.0}) {
+    Guide g = testing::inclined_rail(0.3);
+    g.stick_stiffness = 2e5;
+    g.stick_damping = damper;
+    const GuideFrame f = guide_frame(g);
+    int sticking = 0, sliding = 0;
+    for (int k = 0; k < 40; ++k) {
+      const double along = 0.1 + 0.015 * k, depth = 1.2e-6 + 1e-7 * k;  // beyond the ramp
+      const double x = g.x0 + along * f.ux + (g.roller_radius - depth) * -f.uy;
+      const double y = g.y0 + along * f.uy + (g.roller_radius - depth) * f.ux;
+      const double vx = 0.01 * std::sin(k), vy = 0.01 * std::cos(3.0 * k);
+      // deflections from well within the reach μ f/k_t (10 … 70 µm here) to beyond it, either way
+      const double s = guide_position(g, f, x, y);
+      const double anchor = s - (k % 2 == 0 ? 1.0 : -1.0) * 2e-6 * (1 + k);
+      const GuideContact c = guide_contact(g, f, x, y, vx, vy, anchor);
+      ASSERT_TRUE(c.normal_force > 0.0) << k;
+      (c.sticking ? sticking : sliding)++;
+      expect_blocks_match_differences(g, f, x, y, vx, vy, anchor, k);
+    }
+    EXPECT_GT(sticking, 5) << damper;
+    EXPECT_GT(sliding, 5) << damper;
+  }
   Guide g = testing::inclined_rail(0.3);
   g.stick_stiffness = 2e5;
   const GuideFrame f = guide_frame(g);
-  int sticking = 0, sliding = 0;
-  for (int k = 0; k < 40; ++k) {
-    const double along = 0.1 + 0.015 * k, depth = 1.2e-6 + 1e-7 * k;  // beyond the ramp
-    const double x = g.x0 + along * f.ux + (g.roller_radius - depth) * -f.uy;
-    const double y = g.y0 + along * f.uy + (g.roller_radius - depth) * f.ux;
-    const double vx = 0.01 * std::sin(k), vy = 0.01 * std::cos(3.0 * k);
-    // deflections from well within the reach μ f/k_t (10 … 70 µm here) to beyond it, either way
-    const double s = guide_position(g, f, x, y);
-    const double anchor = s - (k % 2 == 0 ? 1.0 : -1.0) * 2e-6 * (1 + k);
-    const GuideContact c = guide_contact(g, f, x, y, vx, vy, anchor);
-    ASSERT_TRUE(c.normal_force > 0.0) << k;
-    (c.sticking ? sticking : sliding)++;
-    const double dx = 1e-10, dv = 1e-8;
-    const double q[2] = {x, y}, v[2] = {vx, vy};
-    for (int col = 0; col < 2; ++col) {
-      double qp[2] = {q[0], q[1]}, qm[2] = {q[0], q[1]};
-      qp[col] += dx;
-      qm[col] -= dx;
-      const GuideContact a = guide_contact(g, f, qp[0], qp[1], vx, vy, anchor);
-      const GuideContact b = guide_contact(g, f, qm[0], qm[1], vx, vy, anchor);
-      const double tol = 1e-5 * (std::abs(c.dq[col]) + std::abs(c.dq[2 + col])) + 1e-2;
-      EXPECT_NEAR(c.dq[col], (a.fx - b.fx) / (2 * dx), tol) << k << " dq x" << col;
-      EXPECT_NEAR(c.dq[2 + col], (a.fy - b.fy) / (2 * dx), tol) << k << " dq y" << col;
-      double vp[2] = {v[0], v[1]}, vm[2] = {v[0], v[1]};
-      vp[col] += dv;
-      vm[col] -= dv;
-      const GuideContact e = guide_contact(g, f, x, y, vp[0], vp[1], anchor);
-      const GuideContact h = guide_contact(g, f, x, y, vm[0], vm[1], anchor);
-      const double vtol = 1e-5 * (std::abs(c.dv[col]) + std::abs(c.dv[2 + col])) + 1e-6;
-      EXPECT_NEAR(c.dv[col], (e.fx - h.fx) / (2 * dv), vtol) << k << " dv x" << col;
-      EXPECT_NEAR(c.dv[2 + col], (e.fy - h.fy) / (2 * dv), vtol) << k << " dv y" << col;
-    }
-    // the stick law: the spring within the reach, μ f beyond (never the regularised φ)
-    const double spring = -g.stick_stiffness * (s - anchor);
-    if (c.sticking) {
-      EXPECT_DOUBLE_EQ(c.friction_force, spring);
-    } else {
-      EXPECT_DOUBLE_EQ(std::abs(c.friction_force), 0.3 * c.normal_force);
-      EXPECT_GT(c.friction_force * spring, 0.0);
-    }
-  }
-  EXPECT_GT(sticking, 5);
-  EXPECT_GT(sliding, 5);
   // a NaN anchor or k_t = 0: the regularised contact, bit for bit
   double x = 0.0, y = 0.0;
   x = g.x0 + 0.3 * f.ux - (g.roller_radius - 2e-6) * f.uy;
@@ -134,22 +164,83 @@ TEST(GuideStick, ContactBlocksMatchFiniteDifferencesOfTheForce) {
   EXPECT_EQ(guide_contact(off, f, x, y, 0.01, 0.0, 0.0).fx, plain.fx);
 }
 
+// An arc guide (R = 30 mm about (0.1, −0.2) m from 0.3 to 4 rad, the rollers outside it and
+// inside it; a soft penalty 1e4 N/m so that rollers sunk up to 1.4 r stay at sane forces, where
+// the roller centres' line's radius ρ_c is up to 1.3 times the roller's distance from the centre):
+// the position along t is ρ_c φ outside and −ρ_c φ inside (φ from the start angle, as the conveyed
+// load's), and ∂F/∂q and ∂F/∂v match central differences sticking and sliding (anchors from 0.3 to
+// 2.5 times the spring's reach μ f/k_t either way) — with ∂s/∂q = ρ_c t/|q − C| and t turning with
+// the roller.
+TEST(GuideStick, ArcContactBlocksMatchFiniteDifferencesOfTheForce) {
+  for (const double damper : {0.0, 30.0})
+    for (const bool inside : {false, true}) {
+      Guide g;
+      g.kind = Guide::Kind::kArc;
+      g.centre_x = 0.1;
+      g.centre_y = -0.2;
+      g.radius = 0.03;
+      g.start_angle = 0.3;
+      g.end_angle = 4.0;
+      g.inside = inside;
+      g.roller_radius = kRoller;
+      g.contact_stiffness = 1e4;
+      g.contact_damping = 20.0;
+      g.friction = 0.3;
+      g.stick_stiffness = 2e5;
+      g.stick_damping = damper;
+      Model m = uniform_chain(2, false, kPitch, kMass, 1e6, 5.0, false);
+      m.guides = {g};
+      ASSERT_TRUE(validate(m).empty()) << inside;
+      const GuideFrame f = guide_frame(g);
+      const double line = inside ? g.radius - kRoller : g.radius + kRoller, sgn = inside ? -1 : 1;
+      int sticking = 0, sliding = 0;
+      double widest = 0.0;  // the largest |ρ_c/|q − C| − 1| met
+      for (int k = 0; k < 48; ++k) {
+        const double phi = 0.2 + 0.07 * k, depth = 5e-5 + 1.8e-4 * k;  // up to 1.4 r
+        const double d = line - sgn * depth;
+        widest = std::max(widest, std::abs(line / d - 1.0));
+        const double x = g.centre_x + d * std::cos(g.start_angle + phi);
+        const double y = g.centre_y + d * std::sin(g.start_angle + phi);
+        const double vx = 0.02 * std::sin(k), vy = 0.02 * std::cos(3.0 * k);
+        const GuideContact plain = guide_contact(g, f, x, y, vx, vy);
+        ASSERT_TRUE(plain.normal_force > 0.0) << k;
+        const double s = guide_position(g, f, x, y);
+        EXPECT_NEAR(s, sgn * line * phi, 1e-14) << k;
+        const double reach = g.friction * plain.normal_force / g.stick_stiffness;
+        const double frac[4] = {0.3, 0.7, 1.4, 2.5};
+        const double anchor =
+            s - (k % 2 == 0 ? 1.0 : -1.0) * frac[k % 4 / 2 + 2 * (k % 8 / 4)] * reach;
+        const GuideContact c = guide_contact(g, f, x, y, vx, vy, anchor);
+        EXPECT_EQ(c.normal_force, plain.normal_force) << k;
+        (c.sticking ? sticking : sliding)++;
+        expect_blocks_match_differences(g, f, x, y, vx, vy, anchor, k);
+        // a NaN anchor: the regularised contact, bit for bit
+        const GuideContact none = guide_contact(g, f, x, y, vx, vy, NAN);
+        EXPECT_EQ(none.fx, plain.fx);
+        EXPECT_EQ(none.fy, plain.fy);
+      }
+      EXPECT_GT(sticking, 10) << inside;
+      EXPECT_GT(sliding, 10) << inside;
+      EXPECT_GT(widest, 0.2) << inside;
+    }
+}
+
 // The step's Newton matrix with the stick law: every column against central differences of the
-// step's residual, one node sticking and one sliding (their anchors set in the state); the stick
-// spring's share of the matrix is not negligible.
-TEST(GuideStick, IntegratorNewtonMatrixHasTheStickBlocks) {
-  Piece p = resting_piece(0.3, 1e5, 0.0);
-  const Guide& g = p.model.guides[0];
+// step's residual, node 0 sticking and node 1 sliding (their anchors `offset` from where they
+// start in the state), moved to `u`; the stick spring's share of the matrix is not negligible.
+void expect_newton_matrix_has_the_stick_blocks(Piece p, const double (&offset)[2],
+                                               const std::vector<double>& u, std::size_t rail) {
+  const Guide& g = p.model.guides[rail];
   const GuideFrame f = guide_frame(g);
-  p.state.stick_anchor = {guide_position(g, f, p.state.x[0], p.state.y[0]) + 2e-7,
-                          guide_position(g, f, p.state.x[1], p.state.y[1]) - 2e-4};
-  std::vector<double> u{p.state.x[0] - 1e-7, p.state.y[0], p.state.x[1] + 3e-7, p.state.y[1]};
+  p.state.stick_anchor = {guide_position(g, f, p.state.x[0], p.state.y[0]) + offset[0],
+                          guide_position(g, f, p.state.x[1], p.state.y[1]) + offset[1]};
   const double h = 1e-3;
   Integrator integ(p.model, {.step = h, .theta = 0.6});
   std::vector<double> r, jac, bare;
   integ.newton_system(p.model, p.state, u, r, &jac);
   Model plain = p.model;
-  plain.guides[0].stick_stiffness = 0.0;
+  plain.guides[rail].stick_stiffness = 0.0;
+  plain.guides[rail].stick_damping = 0.0;
   Integrator base(plain, {.step = h, .theta = 0.6});
   base.newton_system(plain, p.state, u, r, &bare);
   double scale = 0.0, stick = 0.0;
@@ -164,6 +255,12 @@ TEST(GuideStick, IntegratorNewtonMatrixHasTheStickBlocks) {
     for (std::size_t row = 0; row < 4; ++row)
       EXPECT_NEAR(jac[row * 4 + c], fd[row], 1e-6 * scale) << "row " << row << " column " << c;
   }
+}
+
+TEST(GuideStick, IntegratorNewtonMatrixHasTheStickBlocks) {
+  const Piece p = resting_piece(0.3, 1e5, 0.0);
+  const std::vector<double> u{p.state.x[0] - 1e-7, p.state.y[0], p.state.x[1] + 3e-7, p.state.y[1]};
+  expect_newton_matrix_has_the_stick_blocks(p, {2e-7, -2e-4}, u, 0);
 }
 
 // Runs the piece for `seconds`; returns the largest downhill displacement of node 0 from its start.
@@ -483,25 +580,251 @@ TEST(GuideStick, ARollerComingOffALeadInIsAnchoredOnArrival) {
               p.state.x[1]);
 }
 
+// An arc guide of radius R about the origin from `start` to `end` [rad], the rollers outside it
+// or `inside`, otherwise the level rail's (μ, k_t, its penalty and damper).
+Guide arc_rail(double radius, double start, double end, bool inside, double mu, double stick) {
+  Guide g = level_rail(mu, stick);
+  g.kind = Guide::Kind::kArc;
+  g.x0 = g.x1 = 0.0;
+  g.radius = radius;
+  g.start_angle = start;
+  g.end_angle = end;
+  g.inside = inside;
+  return g;
+}
+
+// Two rollers one link apart on the arc `g` under the gravity −y, node 0 at the angle `at` and
+// node 1 a chord on counter-clockwise, both at the roller centres' line sunk by the penetration
+// that carries node 0's weight's normal part, moving at `speed` counter-clockwise.
+Piece piece_on_arc(const Guide& g, double at, double speed = 0.0) {
+  Piece p;
+  p.model = uniform_chain(2, false, kPitch, kMass, 1e6, 5.0, false);
+  tilt(p.model, 0.0);
+  p.model.guides = {g};
+  const double sgn = g.inside ? -1.0 : 1.0, line = g.radius + sgn * g.roller_radius;
+  const double rho =
+      line - sgn * resting_sink(kMass * kG * sgn * std::sin(at), g.contact_smoothing);
+  const double phi[2] = {at, at + 2.0 * std::asin(0.5 * kPitch / rho)};
+  for (std::size_t i = 0; i < 2; ++i) {
+    p.state.x[i] = rho * std::cos(phi[i]);
+    p.state.y[i] = rho * std::sin(phi[i]);
+    p.state.vx[i] = -speed * std::sin(phi[i]);
+    p.state.vy[i] = speed * std::cos(phi[i]);
+  }
+  return p;
+}
+
+// The step's Newton matrix on arcs (a convex one, R = 0.5 m, the piece 0.15 rad down its slope; a
+// closed inside one, the piece at its bottom): node 0 sticking, node 1 sliding, against central
+// differences of the step's residual.
+TEST(GuideStick, IntegratorNewtonMatrixHasTheStickBlocksOnAnArc) {
+  constexpr double kPi = std::numbers::pi;
+  for (const double damper : {0.0, 30.0})
+    for (const bool inside : {false, true}) {
+      Guide g = inside ? arc_rail(0.5, -0.5 * kPi, 1.5 * kPi, true, 0.3, 1e5)
+                       : arc_rail(0.5, 0.3, kPi - 0.3, false, 0.3, 1e5);
+      g.stick_damping = damper;
+      const Piece p = piece_on_arc(g, inside ? -0.5 * kPi + 0.01 : 0.5 * kPi + 0.15);
+      ASSERT_TRUE(validate(p.model).empty());
+      const std::vector<double> u{p.state.x[0] - 1e-7, p.state.y[0] + 2e-8, p.state.x[1] + 3e-7,
+                                  p.state.y[1] - 1e-8};
+      expect_newton_matrix_has_the_stick_blocks(p, {2e-7, -2e-4}, u, 0);
+    }
+}
+
+// Each node's displacement along its guide's tangent (guide_position) since `from`: the largest
+// over a run, and the last.
+struct Travel {
+  double most[2] = {0.0, 0.0}, last[2] = {0.0, 0.0};
+};
+Travel run_along(Piece& p, double seconds, double h, double theta) {
+  const Guide& g = p.model.guides[0];
+  const GuideFrame f = guide_frame(g);
+  double s0[2];
+  for (std::size_t i = 0; i < 2; ++i) s0[i] = guide_position(g, f, p.state.x[i], p.state.y[i]);
+  Integrator integ(p.model, {.step = h, .theta = theta});
+  Travel t;
+  while (p.state.time < seconds - 0.5 * h) {
+    const StepReport r = integ.step(p.model, p.state);
+    EXPECT_TRUE(r.converged) << p.state.time;
+    if (!r.converged) break;
+    for (std::size_t i = 0; i < 2; ++i) {
+      t.last[i] = guide_position(g, f, p.state.x[i], p.state.y[i]) - s0[i];
+      t.most[i] = std::max(t.most[i], std::abs(t.last[i]));
+    }
+  }
+  return t;
+}
+
+// A piece resting on a convex arc's slope (R = 0.5 m, its two rollers 5.1° and 7.3° from the top,
+// tan β = 0.09 and 0.13 < μ = 0.3): with the stick law it holds — over 1 s each roller moves
+// along the arc at most twice the springs' static deflection m g sin β₁/k_t under the steeper
+// roller's load (a load applied at once overshoots to twice it, here within the reach μ f/k_t),
+// and settles within 2 % of m g (sin β₀ + sin β₁)/2k_t (the link shares the load) — while the
+// regularised law creeps down it.
+TEST(GuideStick, APieceHoldsOnAConvexArcsSlopeBelowTheFrictionAngle) {
+  constexpr double kPi = std::numbers::pi;
+  const double mu = 0.3, kt = 1e5, radius = 0.5, at = 0.5 * kPi + std::atan(0.3 * mu);
+  Piece held = piece_on_arc(arc_rail(radius, 0.3, kPi - 0.3, false, mu, kt), at);
+  ASSERT_TRUE(validate(held.model).empty());
+  const double beta[2] = {std::atan2(-held.state.x[0], held.state.y[0]),
+                          std::atan2(-held.state.x[1], held.state.y[1])};
+  ASSERT_LT(std::tan(beta[1]), 0.5 * mu);
+  const double steeper = kMass * kG * std::sin(beta[1]) / kt;
+  const double shared = kMass * kG * (std::sin(beta[0]) + std::sin(beta[1])) / (2.0 * kt);
+  const Travel t = run_along(held, 1.0, 2e-4, 0.6);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_LE(t.most[i], 2.0 * steeper) << i;
+    EXPECT_NEAR(t.last[i], shared, 0.02 * shared) << i;
+  }
+  std::printf(
+      "convex arc, held: largest %.4g and %.4g of the steeper static deflection %.3g m, "
+      "final %.5g and %.5g of the shared one\n",
+      t.most[0] / steeper, t.most[1] / steeper, steeper, t.last[0] / shared, t.last[1] / shared);
+  Piece creeps = piece_on_arc(arc_rail(radius, 0.3, kPi - 0.3, false, mu, 0.0), at);
+  const Travel c = run_along(creeps, 1.0, 2e-4, 0.6);
+  EXPECT_GT(c.last[0], 1e-4);
+  EXPECT_GT(c.last[1], 1e-4);
+  std::printf("convex arc, regularised: crept %.4g mm\n", c.last[0] * 1e3);
+}
+
+// A piece sliding at 0.5 m/s along the bottom of a closed inside arc (R = 0.5 m, its seam at the
+// bottom, where φ and s jump by the circumference) climbs it, stops and is held: every spring
+// stays within its reach μ f/k_t after every step (the stretch taken across the seam), every
+// step's friction work is ≤ 0 (a roller crossing the seam is not taken as a jump back of one
+// circumference; positive at most by the ringing's share g/ρ_c), both rollers cross the seam, are
+// held over the last 0.2 s within twice their reach, and the work balance closes: the energy lost
+// (the springs' energy counted) is the friction's and the dampers' work.
+TEST(GuideStick, OnAClosedInsideArcThePieceCrossesTheSeamStopsAndTheBalanceCloses) {
+  constexpr double kPi = std::numbers::pi;
+  const double mu = 0.3, kt = 1e5, v0 = 0.5, h = 2e-4;
+  Piece p = piece_on_arc(arc_rail(0.5, -0.5 * kPi, 1.5 * kPi, true, mu, kt), -0.5 * kPi - 0.05, v0);
+  ASSERT_TRUE(validate(p.model).empty());
+  const Guide& g = p.model.guides[0];
+  const GuideFrame f = guide_frame(g);
+  const double reach = mu * 1.5 * kMass * kG / kt;  // the normal force within 1.5 m g
+  // a held spring's ringing exchanges energy with the roller: the force −k_t (s − a) t, s along
+  // the rollers' line ρ_c, is the spring energy's gradient to within the penetration's g/ρ_c
+  // (1.4e-6 here), so a step may book that share of it as positive work; 1e-5 of a spring's
+  // energy at its reach bounds it
+  const double ringing = 1e-5 * 0.5 * kt * reach * reach;
+  const Energy e0 = energy(p.model, p.state);
+  Integrator integ(p.model, {.step = h, .theta = 0.5});
+  double worst = -INFINITY, lo = INFINITY, hi = -INFINITY;
+  bool crossed[2] = {false, false};
+  while (p.state.time < 0.6) {
+    const StepReport r = integ.step(p.model, p.state);
+    ASSERT_TRUE(r.converged) << p.state.time;
+    worst = std::max(worst, r.friction_work);
+    EXPECT_LE(r.friction_work, ringing) << p.state.time;
+    for (std::size_t i = 0; i < 2; ++i) {
+      const double a = p.state.stick_anchor.at(i);
+      ASSERT_TRUE(std::isfinite(a)) << p.state.time << " node " << i;
+      const double s = guide_position(g, f, p.state.x[i], p.state.y[i]);
+      EXPECT_LE(std::abs(stick_stretch(g, s, a)), reach) << p.state.time << " node " << i;
+      if (p.state.x[i] > 0.0) crossed[i] = true;
+    }
+    if (p.state.time > 0.4) {
+      lo = std::min(lo, p.state.x[0]);
+      hi = std::max(hi, p.state.x[0]);
+    }
+  }
+  EXPECT_TRUE(crossed[0] && crossed[1]);
+  EXPECT_LT(hi - lo, 2.0 * reach);
+  const double dissipated =
+      p.state.friction_work + p.state.contact_damping_work + p.state.damper_work;
+  const double lost = energy(p.model, p.state).total() - e0.total();
+  EXPECT_NEAR(lost, dissipated, 1e-4 * kMass * v0 * v0);
+  std::printf(
+      "closed inside arc: stopped at %.4g m, largest step friction work %.3g J (%.3g of a "
+      "spring's energy at its reach), balance %.3g of m v0^2, friction work %.4g of m v0^2\n",
+      p.state.x[0], worst, worst / (0.5 * kt * reach * reach),
+      (lost - dissipated) / (kMass * v0 * v0), p.state.friction_work / (kMass * v0 * v0));
+}
+
+// The stick law's damper (Guide::stick_damping c_t = 50 N·s/m, half the critical 2 √(k_t m)) on
+// a piece held on the incline at tan β = 0.3 μ at θ = ½ (which does not damp): the springs'
+// ringing, which without it keeps swinging through about twice the static deflection
+// m g sin β/k_t, dies out — over the last 0.2 s of 1 s the piece moves less than 1e-3 of the
+// deflection and rests at it within 1e-3 — every step's friction work is ≤ 0 (the damper's
+// −c_t ṡ v_t h; the spring's share is 0 at θ = ½), and the work balance closes: the energy lost
+// (the springs' energy counted) is the friction's and the dampers' work within 1e-6 of the
+// friction work.
+TEST(GuideStick, TheStickDamperDampsAHeldPiecesRinging) {
+  const double mu = 0.3, kt = 1e5, beta = std::atan(0.3 * mu), h = 2e-4;
+  const double deflection = kMass * kG * std::sin(beta) / kt;
+  for (const double damper : {50.0, 0.0}) {
+    Piece p = resting_piece(mu, kt, beta);
+    p.model.guides[0].stick_damping = damper;
+    ASSERT_TRUE(validate(p.model).empty());
+    const Energy e0 = energy(p.model, p.state);
+    Integrator integ(p.model, {.step = h, .theta = 0.5});
+    double lo = INFINITY, hi = -INFINITY, worst = -INFINITY;
+    while (p.state.time < 1.0 - 0.5 * h) {
+      const StepReport r = integ.step(p.model, p.state);
+      ASSERT_TRUE(r.converged) << p.state.time;
+      worst = std::max(worst, r.friction_work);
+      if (p.state.time > 0.8) {
+        lo = std::min(lo, -p.state.x[0]);
+        hi = std::max(hi, -p.state.x[0]);
+      }
+    }
+    const double lost = energy(p.model, p.state).total() - e0.total();
+    const double works = p.state.friction_work + p.state.contact_damping_work + p.state.damper_work;
+    std::printf(
+        "stick damper %g N s/m: swing over the last 0.2 s %.3g of the static deflection, "
+        "rests at %.6g of it, friction work %.4g J, largest a step %.3g J, balance %.3g of "
+        "the friction work\n",
+        damper, (hi - lo) / deflection, p.state.x[0] / -deflection, p.state.friction_work, worst,
+        (lost - works) / p.state.friction_work);
+    if (damper > 0.0) {
+      EXPECT_LT(hi - lo, 1e-3 * deflection);
+      EXPECT_NEAR(-p.state.x[0], deflection, 1e-3 * deflection);
+      EXPECT_LE(worst, 1e-15);
+      EXPECT_LT(p.state.friction_work, 0.0);
+      EXPECT_NEAR(lost, works, 1e-6 * std::abs(p.state.friction_work));
+    } else {
+      EXPECT_GT(hi - lo, 0.5 * deflection);
+    }
+  }
+}
+
 TEST(GuideStick, BadStickStiffnessNamed) {
   Model m = uniform_chain(4, false, kPitch, kMass, 1e7, 0.0, false);
-  Guide arc = level_rail(0.3, 1e5);
-  arc.kind = Guide::Kind::kArc;
-  arc.radius = 0.2;
-  arc.start_angle = 0.0;
-  arc.end_angle = 1.0;
-  // a frictionless rail (μ = 0) has nothing to stick with: its spring's reach μ f/k_t is 0
-  m.guides = {level_rail(0.3, -1.0), level_rail(0.3, NAN), arc,
-              level_rail(0.3, 1e5),  level_rail(0.3, 0.0), level_rail(0.0, 1e5),
-              level_rail(0.0, 0.0)};
+  // a frictionless rail (μ = 0) has nothing to stick with: its spring's reach μ f/k_t is 0; an
+  // arc sticks as a straight rail does, and is refused as one
+  m.guides = {level_rail(0.3, -1.0),
+              level_rail(0.3, NAN),
+              arc_rail(0.2, 0.0, 1.0, false, 0.3, 1e5),
+              level_rail(0.3, 1e5),
+              level_rail(0.3, 0.0),
+              level_rail(0.0, 1e5),
+              level_rail(0.0, 0.0),
+              arc_rail(0.2, 0.0, 1.0, true, 0.0, 1e5),
+              arc_rail(0.2, 0.0, 1.0, true, 0.3, -1.0),
+              level_rail(0.3, 1e5),
+              level_rail(0.3, 1e5),
+              level_rail(0.3, 0.0),
+              arc_rail(0.2, 0.0, 1.0, false, 0.3, 1e5)};
+  // the stick law's damper: finite, ≥ 0, and only beside a spring
+  m.guides[9].stick_damping = -1.0;
+  m.guides[10].stick_damping = NAN;
+  m.guides[11].stick_damping = 10.0;
+  m.guides[12].stick_damping = 10.0;
   std::vector<std::string> fields;
   for (const Issue& i : validate(m)) fields.push_back(i.field);
   const std::vector<std::string> want{"guide[0].stick_stiffness", "guide[1].stick_stiffness",
-                                      "guide[2].stick_stiffness", "guide[5].stick_stiffness"};
+                                      "guide[5].stick_stiffness", "guide[7].stick_stiffness",
+                                      "guide[8].stick_stiffness", "guide[9].stick_damping",
+                                      "guide[10].stick_damping",  "guide[11].stick_damping"};
   EXPECT_EQ(fields, want);
   // a lead-in's arcs slide with the regularised law: they do not inherit the rail's k_t
-  for (const Guide& a : lead_in_arcs(level_rail(0.3, 1e5), {.radius = 0.05, .angle = 0.3}))
+  Guide damped = level_rail(0.3, 1e5);
+  damped.stick_damping = 10.0;
+  for (const Guide& a : lead_in_arcs(damped, {.radius = 0.05, .angle = 0.3})) {
     EXPECT_EQ(a.stick_stiffness, 0.0);
+    EXPECT_EQ(a.stick_damping, 0.0);
+  }
 }
 
 }  // namespace

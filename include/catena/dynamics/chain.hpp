@@ -213,11 +213,12 @@ struct Guide {
   /// models/dynamics.md, "A conveyed load"; rail_load); 0, the default: none.
   double load_per_metre = 0.0;
   /// [N/m] k_t: sticking (docs/models/dynamics.md, "Guides: sticking"). 0, the default: the
-  /// regularised friction above. > 0 (a straight guide with friction > 0 only): each roller in
-  /// contact carries an anchor a (State::stick_anchor) and the friction is the elasto-plastic
-  /// spring f_t = −clamp(k_t (s − a), −μ f, μ f), s the roller's position along t; while the
-  /// spring's force is below μ f the roller sticks (no creep), beyond it slides at μ f and the
-  /// anchor follows (updated once per accepted step, update_stick_anchors).
+  /// regularised friction above. > 0 (a guide with friction > 0 only, straight or arc): each
+  /// roller in contact carries an anchor a (State::stick_anchor) and the friction is the
+  /// elasto-plastic spring f_t = −clamp(k_t (s − a), −μ f, μ f), s the roller's position along t
+  /// (guide_position); while the spring's force is below μ f the roller sticks (no creep), beyond
+  /// it slides at μ f and the anchor follows (updated once per accepted step,
+  /// update_stick_anchors).
   double stick_stiffness = 0.0;
   /// The rail's elastic law (docs/models/dynamics.md, "Guides: the line law"). false: the linear
   /// penalty contact_stiffness above. true: the roller's line contact on the rail (LineLaw, set by
@@ -227,6 +228,10 @@ struct Guide {
   bool line_law = false;
   LineLaw line;
   Elastic rail;  ///< the rail's material (steel, as the rollers, by default)
+  /// [N·s/m] c_t: a damper beside the stick law's spring (needs stick_stiffness > 0): while
+  /// sticking f_t = −k_t (s − a) − c_t ṡ, ṡ = ∂s/∂q · v the roller's speed along the rail's
+  /// parametrisation; the roller slides when that exceeds μ f. 0, the default: the bare spring.
+  double stick_damping = 0.0;
 };
 
 /// Turns a guide's rail to the line law over the roller's inner width `width` (b1): the roller
@@ -253,11 +258,11 @@ struct GuideContact {
   /// [W] the power of the normal force's damping part on the roller, −(f − f_el) ġ ≤ 0 (f_el the
   /// elastic part; with f clamped at 0 the damper cancels f_el): the contact damper's dissipation
   double damping_power = 0.0;
-  /// [m] s = (q − P₀)·t: a straight rail's tangential position (0 on an arc)
+  /// [m] s along t (guide_position; stick law only, else 0)
   double position = 0.0;
-  bool sticking = false;      ///< the stick spring holds (|k_t (s − a)| ≤ μ f; stick law only)
-  double nx = 0.0, ny = 0.0;  ///< unit normal to the free side
-  double fx = 0.0, fy = 0.0;  ///< [N] F
+  bool sticking = false;  ///< the stick spring holds (|k_t (s − a) + c_t ṡ| ≤ μ f; stick law only)
+  double nx = 0.0, ny = 0.0;    ///< unit normal to the free side
+  double fx = 0.0, fy = 0.0;    ///< [N] F
   double dq[4] = {0, 0, 0, 0};  ///< [N/m] ∂F/∂q
   double dv[4] = {0, 0, 0, 0};  ///< [N·s/m] ∂F/∂v
 };
@@ -273,20 +278,29 @@ GuideFrame guide_frame(const Guide& g);
 /// bit.
 GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
                            double vy);
-/// guide_contact with the stick law (Guide::stick_stiffness > 0 on a straight rail) about the
-/// anchor a [m] along t: the friction is −clamp(k_t (s − a), −μ f, μ f) instead of the
-/// regularised law, and its derivatives enter dq and dv. A NaN anchor, k_t = 0 or an arc: the
+/// guide_contact with the stick law (Guide::stick_stiffness > 0) about the anchor a [m] along t:
+/// the friction is −clamp(k_t (s − a) + c_t ṡ, −μ f, μ f) instead of the regularised law (s − a
+/// taken by stick_stretch; c_t = Guide::stick_damping), and its derivatives enter dq and dv (on an
+/// arc with ∂s/∂q = ρ_c tᵀ/|q − C| and t turning with the roller). A NaN anchor or k_t = 0: the
 /// regularised contact above, bit for bit.
 GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
                            double vy, double anchor);
-/// [m] s = (q − P₀)·t, the tangential position on a straight rail from its first end
-/// (t = (−n_y, n_x) = −u, u the direction from the first end to the second); 0 on an arc.
+/// [m] s, the tangential position along the contact's tangent t = (−n_y, n_x): on a straight rail
+/// (q − P₀)·t from its first end (t = −u, u the direction from the first end to the second); on
+/// an arc ρ_c φ outside (t counter-clockwise) and −ρ_c φ inside (t clockwise), ρ_c φ the conveyed
+/// load's place along the roller centres' line (rail_load: φ from start_angle, within π of the
+/// arc's middle, ρ_c = R ± r).
 double guide_position(const Guide& g, const GuideFrame& frame, double x, double y);
+/// [m] the stick spring's stretch s − a: on a straight rail s − a; on an arc taken within half
+/// the circumference 2π ρ_c of the rollers' line (a closed arc's seam, where s jumps by 2π ρ_c, is
+/// no slip), s − a itself when it is within that.
+double stick_stretch(const Guide& g, double s, double anchor);
 /// The anchor after a step whose contact (at the step's θ point, about the anchor `anchor`) was
 /// `c` and that ends at the position `end` [m] along t (s₁, guide_position): unchanged while
-/// |s₁ − a| is within the spring's reach μ f/k_t (f the θ point's normal force), else moved to
-/// s₁ ∓ μ f/k_t (the slip), so that the spring is left stretched by at most its reach. NaN
-/// (released) when the contact is inactive or carries no normal force; `end` for a NaN anchor.
+/// |s₁ − a| (stick_stretch) is within the spring's reach μ f/k_t (f the θ point's normal force),
+/// else moved to s₁ ∓ μ f/k_t (the slip), so that the spring is left stretched by at most its
+/// reach. NaN (released) when the contact is inactive or carries no normal force; `end` for a NaN
+/// anchor.
 double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor, double end);
 /// A rail's load (Guide::load_per_metre q_L) on one node at q (dynamics.md, "A conveyed load"):
 /// F = q_L p g w(s), g the gravity, p the pitch, s the node's place along the rail from its first

@@ -159,9 +159,12 @@ std::vector<Parameter> guide_fields() {
       quantity("friction_band", K::kSpeed,
                "speed band of the regularised friction, in (0, 1] m/s (default 1 mm/s)"),
       quantity("stick_stiffness", K::kForcePerLength,
-               "straight: the stick law's tangential spring k_t [N/m], >= 0: a roller holds "
-               "until its force reaches mu times the normal force (default 0: the regularised "
-               "friction, which creeps at rest)"),
+               "the stick law's tangential spring k_t [N/m], >= 0: a roller holds until its "
+               "force reaches mu times the normal force (default 0: the regularised friction, "
+               "which creeps at rest)"),
+      number("stick_damping",
+             "a damper c_t [N s/m] beside the stick law's spring, >= 0, with stick_stiffness "
+             "(default 0)"),
       quantity("load_per_metre", K::kMassPerLength,
                "conveyed material riding on the chain along the rail, kg/m in [0, " +
                    check::format_si(kMaxRailLoad, "") +
@@ -1925,10 +1928,14 @@ Setup parse(const analysis::Inputs& in) {
                                 " with contact_law = \"linear\" (the rail's material serves "
                                 "the line law only: contact_law = \"line\")"});
     }
-    // the stick spring sits in the rail's Newton block beside its penalty: the penalty's bound
-    if (scales_known(s) && g.value.count("stick_stiffness"))
-      check_contact(s, field("stick_stiffness"), guide.stick_stiffness, "",
-                    field("contact_damping"), NAN, issues);
+    guide.stick_damping = get("stick_damping", 0.0);
+    // the stick spring and its damper sit in the rail's Newton block beside its penalty and
+    // damper: their bounds
+    if (scales_known(s) && (g.value.count("stick_stiffness") || g.value.count("stick_damping")))
+      check_contact(s, field("stick_stiffness"),
+                    g.value.count("stick_stiffness") ? guide.stick_stiffness : NAN, "",
+                    field("stick_damping"),
+                    g.value.count("stick_damping") ? guide.stick_damping : NAN, issues);
     // a load's weight is q_L g: without gravity it would do nothing, silently
     if (guide.load_per_metre > 0.0 && !(s.gravity > 0.0))
       issues.push_back({field("load_per_metre"), shown(guide.load_per_metre) + " kg/m",

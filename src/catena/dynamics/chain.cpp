@@ -15,6 +15,11 @@ namespace catena::dynamics {
 namespace {
 constexpr std::size_t kMaxNodes = 10'000'000;
 
+// [m] ρ_c = R ± r: the radius of an arc guide's roller centres' line (R − r inside).
+double roller_line(const Guide& g) {
+  return g.inside ? g.radius - g.roller_radius : g.radius + g.roller_radius;
+}
+
 // A loaded arc guide's checks (docs/models/dynamics.md, "A conveyed load"): the load must press
 // the chain onto the rail over the whole arc, n·g < 0 at every angle φ in [start, end] (n = ±(cos
 // φ, sin φ), outward on an outside arc, inward on an inside one): the largest n·g over the arc is
@@ -49,12 +54,13 @@ void arc_load_presses(std::vector<Issue>& out, const std::string& f, const Guide
                        ") faces " + (at > 0.0 ? "down" : "sideways or there is no gravity") +
                        " (n.g = " + check::format_si(at + 0.0, "m/s^2") + ", must be < 0)"});
   }
-  const double line = g.inside ? g.radius - g.roller_radius : g.radius + g.roller_radius;
+  const double line = roller_line(g);
   if (model.pitch > 0.0 && std::isfinite(line) && !(line >= model.pitch))
     out.push_back({f + "radius", check::format_si(g.radius, "m"),
                    "a loaded arc whose roller centres' line has a radius of at least a pitch " +
                        check::format_si(model.pitch, "m") + " (the load's ramps at its ends)"});
 }
+
 // A LineLaw's width and constants (named line_width, line, line_cap_depth under `f`), as
 // use_line_law sets them for the `what` (seat or rail).
 void check_line_law(std::vector<Issue>& out, const std::string& f, const LineLaw& l,
@@ -70,6 +76,56 @@ void check_line_law(std::vector<Issue>& out, const std::string& f, const LineLaw
              std::isfinite(l.cap_stiffness)))
     out.push_back({f + "line_cap_depth", "(constants)",
                    "the cap's constants of the line (set by use_line_law)"});
+}
+
+// A point's place on an arc guide, the conveyed load's (rail_load) and the stick law's
+// (guide_position) parametrisation: s = ρ_c φ along the roller centres' line (radius ρ_c = R ± r)
+// from the arc's start angle, counter-clockwise, φ the point's angle taken within π of the arc's
+// middle; L = ρ_c × sweep its length, d = |q − C| and ∂s/∂q = ρ_c t/d (t the counter-clockwise
+// tangent). `ok` is false at the centre (no angle).
+struct ArcPlace {
+  bool ok = false;
+  double s = 0.0, len = 0.0, line = 0.0, d = 0.0;
+  double dsx = 0.0, dsy = 0.0;
+};
+ArcPlace arc_place(const Guide& g, double x, double y) {
+  ArcPlace p;
+  const double rx = x - g.centre_x, ry = y - g.centre_y;
+  const double d2 = rx * rx + ry * ry, d = std::sqrt(d2);
+  if (!(d > 0.0)) return p;
+  p.ok = true;
+  p.d = d;
+  p.line = roller_line(g);
+  const double sweep = g.end_angle - g.start_angle;
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  double phi = std::atan2(ry, rx) - g.start_angle;
+  phi -= kTwoPi * std::floor((phi - 0.5 * sweep + std::numbers::pi) / kTwoPi);
+  p.s = p.line * phi;
+  p.len = p.line * sweep;
+  p.dsx = -p.line * ry / d2;  // ∂φ/∂q = t/d, t = (−r_y, r_x)/d
+  p.dsy = p.line * rx / d2;
+  return p;
+}
+
+// The stick law's tangential position s along the contact's tangent t = (−n_y, n_x) and ∂s/∂q:
+// on a straight rail s = (q − P₀)·t, ∂s/∂q = t (t = −u); on an arc ±ρ_c φ (arc_place; t is the
+// counter-clockwise tangent on an outside arc, the clockwise one inside), ∂s/∂q = ρ_c t/|q − C|.
+// On an arc also the Hessian of s, ∂²s/∂q² = [[hxx, hxy], [hxy, hyy]] (0 on a straight rail):
+// the stick damper's ∂ṡ/∂q = ∂²s/∂q² v.
+struct GuidePlace {
+  double s = 0.0, dsx = 0.0, dsy = 0.0;
+  double hxx = 0.0, hxy = 0.0, hyy = 0.0;
+};
+GuidePlace guide_place(const Guide& g, const GuideFrame& frame, double x, double y) {
+  if (g.kind == Guide::Kind::kStraight)
+    return {-((x - g.x0) * frame.ux + (y - g.y0) * frame.uy), -frame.ux, -frame.uy};
+  const ArcPlace p = arc_place(g, x, y);
+  const double sgn = g.inside ? -1.0 : 1.0;
+  // ∂s/∂q = σ ρ_c (−r_y, r_x)/d²: its derivatives, with ∂(1/d²)/∂q = −2 r/d⁴
+  const double rx = x - g.centre_x, ry = y - g.centre_y, d2 = p.d * p.d;
+  const double k = sgn * p.line / (d2 * d2);
+  return {sgn * p.s,         sgn * p.dsx, sgn * p.dsy, 2.0 * k * rx * ry, k * (ry * ry - rx * rx),
+          -2.0 * k * rx * ry};
 }
 }  // namespace
 
@@ -295,12 +351,16 @@ std::vector<Issue> validate(const Model& model) {
     if (!std::isfinite(g.stick_stiffness) || !(g.stick_stiffness >= 0.0)) {
       out.push_back({f + "stick_stiffness", check::format_si(g.stick_stiffness, "N/m"),
                      "a finite stiffness >= 0 N/m (0: the regularised friction)"});
-    } else if (g.stick_stiffness > 0.0 && g.kind != Guide::Kind::kStraight) {
-      out.push_back({f + "stick_stiffness", check::format_si(g.stick_stiffness, "N/m"),
-                     "0 on an arc guide: sticking is built on straight guides only"});
     } else if (g.stick_stiffness > 0.0 && g.friction == 0.0) {
       out.push_back({f + "stick_stiffness", check::format_si(g.stick_stiffness, "N/m"),
                      "0 on a frictionless guide (friction = 0: nothing to stick with)"});
+    }
+    if (!std::isfinite(g.stick_damping) || !(g.stick_damping >= 0.0)) {
+      out.push_back({f + "stick_damping", check::format_si(g.stick_damping, "N*s/m"),
+                     "a finite damping >= 0 N*s/m (0: the stick law's bare spring)"});
+    } else if (g.stick_damping > 0.0 && !(g.stick_stiffness > 0.0)) {
+      out.push_back({f + "stick_damping", check::format_si(g.stick_damping, "N*s/m"),
+                     "0 without stick_stiffness (a damper on the stick law's spring)"});
     }
     if (!std::isfinite(g.load_per_metre) || !(g.load_per_metre >= 0.0) ||
         !(g.load_per_metre <= kMaxRailLoad)) {
@@ -392,7 +452,8 @@ std::vector<Guide> lead_in_arcs(const Guide& rail, const LeadIn& lead) {
     g.end_angle = to;
     g.inside = false;
     g.load_per_metre = 0.0;   // the rail's load is the rail's (an arc carries none)
-    g.stick_stiffness = 0.0;  // an arc's friction is the regularised law (sticking: straight only)
+    g.stick_stiffness = 0.0;  // a lead-in slides with the regularised law (not the rail's k_t)
+    g.stick_damping = 0.0;
     if (rail.line_law) use_line_law(g, rail.line.width);  // the arc's own curvature
     out.push_back(g);
   };
@@ -424,21 +485,14 @@ RailLoad rail_load(const Guide& g, const GuideFrame& frame, double pitch, double
     dsx = frame.ux;
     dsy = frame.uy;
   } else {
-    // an arc: s = ρ_c φ along the roller centres' line (radius ρ_c = R ± r) from its start angle,
-    // counter-clockwise, φ the node's angle taken within π of the arc's middle
-    const double rx = x - g.centre_x, ry = y - g.centre_y;
-    const double d2 = rx * rx + ry * ry, d = std::sqrt(d2);
-    if (!(d > 0.0)) return out;
-    const double line = g.inside ? g.radius - g.roller_radius : g.radius + g.roller_radius;
-    const double sweep = g.end_angle - g.start_angle;
-    constexpr double kTwoPi = 2.0 * std::numbers::pi;
-    double phi = std::atan2(ry, rx) - g.start_angle;
-    phi -= kTwoPi * std::floor((phi - 0.5 * sweep + std::numbers::pi) / kTwoPi);
-    s = line * phi;
-    len = line * sweep;
-    across = g.inside ? line - d : d - line;
-    dsx = -line * ry / d2;  // ∂φ/∂q = t/d, t = (−r_y, r_x)/d
-    dsy = line * rx / d2;
+    // an arc: s = ρ_c φ along the roller centres' line from its start angle (arc_place)
+    const ArcPlace p = arc_place(g, x, y);
+    if (!p.ok) return out;
+    s = p.s;
+    len = p.len;
+    across = g.inside ? p.line - p.d : p.d - p.line;
+    dsx = p.dsx;
+    dsy = p.dsy;
   }
   // the carried side only: up to a pitch off the rail (a roller lifted by the chain's motion),
   // at most a roller radius into it (a carried roller's centre is never behind the surface); a
@@ -471,8 +525,17 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
 }
 
 double guide_position(const Guide& g, const GuideFrame& frame, double x, double y) {
-  if (g.kind != Guide::Kind::kStraight) return 0.0;
-  return -((x - g.x0) * frame.ux + (y - g.y0) * frame.uy);
+  return guide_place(g, frame, x, y).s;
+}
+
+double stick_stretch(const Guide& g, double s, double anchor) {
+  const double d = s - anchor;
+  if (g.kind == Guide::Kind::kStraight) return d;
+  // an arc: within half the rollers' line's circle of the anchor (a closed arc's seam, where φ
+  // jumps by 2π, is no slip); a stretch within that is kept bit for bit
+  const double round = 2.0 * std::numbers::pi * std::abs(roller_line(g));
+  if (!(round > 0.0)) return d;
+  return d - round * std::floor(d / round + 0.5);
 }
 
 double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor, double end) {
@@ -481,7 +544,7 @@ double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor, 
   // the spring's reach μ f/k_t (the force the step applied): the spring is left at the step's end
   // s₁ stretched by at most that, the anchor following the roller beyond it (the slip)
   const double reach = g.friction * std::max(c.normal_force, 0.0) / g.stick_stiffness;
-  const double d = end - anchor;
+  const double d = stick_stretch(g, end, anchor);
   if (std::abs(d) <= reach) return anchor;
   return end - std::copysign(reach, d);
 }
@@ -533,9 +596,12 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   c.nx = nx;
   c.ny = ny;
   c.slip = vt;
-  const bool stick =
-      gd.stick_stiffness > 0.0 && gd.kind == Guide::Kind::kStraight && std::isfinite(anchor);
-  if (stick) c.position = guide_position(gd, frame, x, y);
+  const bool stick = gd.stick_stiffness > 0.0 && std::isfinite(anchor);
+  GuidePlace place;
+  if (stick) {
+    place = guide_place(gd, frame, x, y);
+    c.position = place.s;
+  }
   c.energy = gd.line_law ? lf.energy
              : g < eps   ? kc * g * g * g / (6.0 * eps)
                          : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
@@ -552,16 +618,27 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   // the friction f_t and its gradients, by the stick law or the regularised one
   double ft = 0.0, dftq[2] = {0.0, 0.0}, dftv[2] = {0.0, 0.0};
   if (stick) {
-    // the stick law on a straight rail (κ = 0, t fixed): f_t = −k_t (s − a) while that is within
-    // ±μ f (∂s/∂q = tᵀ), else −μ f sgn(s − a) (sliding, the spring at its reach)
-    const double mu = gd.friction, kt = gd.stick_stiffness, d = c.position - anchor;
+    // the stick law: f_t = −k_t (s − a) − c_t ṡ while that is within ±μ f (∂s/∂q: tᵀ on a
+    // straight rail, ρ_c tᵀ/|q − C| on an arc, guide_place), else μ f against it (sliding); t
+    // turning with the roller on an arc is the −f_t κ n tᵀ term below
+    const double mu = gd.friction, kt = gd.stick_stiffness, ct = gd.stick_damping;
+    const double d = stick_stretch(gd, c.position, anchor);
     ft = -kt * d;
+    // the damper beside it (Guide::stick_damping): −c_t ṡ, ṡ = ∂s/∂q · v
+    const double sdot = ct > 0.0 ? place.dsx * vx + place.dsy * vy : 0.0;
+    if (ct > 0.0) ft -= ct * sdot;
     if (std::abs(ft) <= mu * f) {
       c.sticking = true;
-      dftq[0] = -kt * tx;
-      dftq[1] = -kt * ty;
+      dftq[0] = -kt * place.dsx;
+      dftq[1] = -kt * place.dsy;
+      if (ct > 0.0) {
+        dftq[0] -= ct * (place.hxx * vx + place.hxy * vy);
+        dftq[1] -= ct * (place.hxy * vx + place.hyy * vy);
+        dftv[0] = -ct * place.dsx;
+        dftv[1] = -ct * place.dsy;
+      }
     } else {
-      const double sgn = d > 0.0 ? 1.0 : -1.0;
+      const double sgn = ft < 0.0 ? 1.0 : -1.0;  // against the spring and damper (d > 0: ft < 0)
       ft = -mu * f * sgn;
       dftq[0] = -mu * sgn * dfq[0];
       dftq[1] = -mu * sgn * dfq[1];
@@ -1285,7 +1362,8 @@ Energy energy(const Model& model, const State& state) {
     for (std::size_t i = 0; i < n; ++i) {
       const double a = state.stick_anchor[slot * n + i];
       if (!std::isfinite(a)) continue;
-      const double d = guide_position(guide, frame, state.x[i], state.y[i]) - a;
+      const double d =
+          stick_stretch(guide, guide_position(guide, frame, state.x[i], state.y[i]), a);
       e.elastic += 0.5 * guide.stick_stiffness * d * d;
     }
     ++slot;

@@ -1123,7 +1123,10 @@ StepReport Integrator::step(const Model& model, State& s) {
         if (model.is_pinned(i)) continue;
         const std::size_t at = static_cast<std::size_t>(stick_slot_[g]) * n + i;
         const double was = s.stick_anchor[at];
-        if (!on_list && !std::isfinite(was)) continue;
+        // not anchored, and neither on the hint's list nor within the guide's reach: it stays
+        // unanchored, nothing to book (and no position to take: on an arc that is an atan2 a node)
+        if (!std::isfinite(was) && (!on_list || !guide_touch_possible(bounds, qx_[i], qy_[i])))
+          continue;
         const double a = step_anchor(guide, guide_frame_[g], s, stick_slot_[g], i);
         const GuideContact gc = guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_,
                                                        i, qx_[i], qy_[i], h, a);
@@ -1132,8 +1135,10 @@ StepReport Integrator::step(const Model& model, State& s) {
         s.stick_anchor[at] = next;
         if (!std::isfinite(was) && !std::isfinite(next) && !gc.active) continue;
         const double d0 =
-            std::isfinite(was) ? guide_position(guide, guide_frame_[g], s.x[i], s.y[i]) - was : 0.0;
-        const double d1 = std::isfinite(next) ? end - next : 0.0;
+            std::isfinite(was)
+                ? stick_stretch(guide, guide_position(guide, guide_frame_[g], s.x[i], s.y[i]), was)
+                : 0.0;
+        const double d1 = std::isfinite(next) ? stick_stretch(guide, end, next) : 0.0;
         report.friction_work += contact_work(gc) + 0.5 * kt * (d1 * d1 - d0 * d0);
       }
       continue;
