@@ -4,7 +4,8 @@
 // of range, on an arc, without gravity, on a rail whose carrying side faces down — with its line
 // and exit status 2; the drift is net of the load's work. And `stick_stiffness` on a guide
 // ("Guides: sticking"): every bad value named at once (negative, a wrong unit, on an arc, on a
-// frictionless rail), and an absurd one beyond the rail's penalty's bound over a step.
+// frictionless rail), and an absurd one beyond the rail's penalty's bound over a step. And
+// `load_inertia`: the balance's catch and discharge, and its bad values named.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -175,6 +176,54 @@ TEST(DynamicsLoadCli, EveryBadLoadNamed) {
       refused_naming("weightless.toml", with_guide_key(weightless, 0, "load_per_metre = 2"),
                      {"dynamics.guide[0].load_per_metre"});
   EXPECT_NE(w.err.find("without gravity"), std::string::npos) << w.err;
+}
+
+// `load_inertia = true` on a loaded rail (docs/models/dynamics.md, "A conveyed load: its inertia,
+// loading and discharge"): the work balance gains the catch's and the discharge's works (< 0: the
+// example's upper run has nodes on its rail's entry and exit ramps from the start), which the
+// weight-only run does not print; the load's kinetic energy and both works are in the balance, so
+// `numerical` stays as small as the weight-only run's (within 1e-3 J of it in 0.02 s, while the
+// catch and discharge take about 4e-3 J each).
+TEST(DynamicsLoadCli, LoadInertiaAddsTheCatchAndDischargeToTheBalance) {
+  const std::string balance = with_dynamics_key(example(), "work_balance = true");
+  const std::string loaded = with_guide_key(balance, 0, "load_per_metre = \"2.5 kg/m\"");
+  const CliRun r =
+      run("dynamics " + write("inertia.toml", with_guide_key(loaded, 0, "load_inertia = true")) +
+          " --duration 0.02s --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& b = j["summary"]["work_balance"];
+  ASSERT_TRUE(b.contains("load_catch")) << b.dump();
+  ASSERT_TRUE(b.contains("load_discharge")) << b.dump();
+  EXPECT_LT(b["load_catch"].get<double>(), 0.0) << b.dump();
+  EXPECT_LT(b["load_discharge"].get<double>(), 0.0) << b.dump();
+  const CliRun w =
+      run("dynamics " + write("weight.toml", loaded) + " --duration 0.02s --format json");
+  ASSERT_EQ(w.status, 0) << w.err;
+  const auto p = nlohmann::json::parse(w.out);
+  EXPECT_FALSE(p["summary"]["work_balance"].contains("load_catch"));
+  EXPECT_FALSE(p["summary"]["work_balance"].contains("load_discharge"));
+  std::printf("catch %.4g J discharge %.4g J numerical %.4g J (weight only %.4g J)\n",
+              b["load_catch"].get<double>(), b["load_discharge"].get<double>(),
+              b["numerical"].get<double>(),
+              p["summary"]["work_balance"]["numerical"].get<double>());
+  EXPECT_NEAR(b["numerical"].get<double>(), p["summary"]["work_balance"]["numerical"].get<double>(),
+              1e-3);
+}
+
+// Every bad `load_inertia` named at once, with its line: not true or false, and true on a rail
+// without a load; beside a bad load on another guide (exit status 2).
+TEST(DynamicsLoadCli, EveryBadLoadInertiaNamed) {
+  std::string text = with_guide_key(example(), 0, "load_per_metre = 2\nload_inertia = \"yes\"");
+  text = with_guide_key(text, 2, "load_inertia = true");
+  text = with_guide_key(text, 3, "load_per_metre = \"-1 kg/m\"");
+  const CliRun r = refused_naming(
+      "inertia_bad.toml", text,
+      {"dynamics.guide[0].load_inertia (line", "dynamics.guide[2].load_inertia (line",
+       "dynamics.guide[3].load_per_metre (line"});
+  EXPECT_NE(r.err.find("true or false"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("false without a load (load_per_metre > 0 kg/m)"), std::string::npos)
+      << r.err;
 }
 
 TEST(DynamicsLoadCli, EveryBadStickStiffnessNamed) {
