@@ -2,7 +2,10 @@
 // load"): the ramped weight share sums to the rail's whole load q_L L g over nodes a pitch apart
 // wherever they sit, and is 0 beyond the ramp and away from the rail; its Newton block is the
 // finite difference of the force; bad values are named; a lead-in carries none; and the work the
-// steps report for a chain sliding onto a loaded rail is the load's along its travel.
+// steps report for a chain sliding onto a loaded rail is the load's along its travel. With the
+// load's inertia (Guide::load_inertia): the Newton matrix against the residual's differences, a
+// loaded chain's start-up and a loaded link's ringing against their spring–mass closed forms,
+// and the work balance with the catch and the discharge.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -279,8 +282,31 @@ TEST(RailLoad, BadLoadsNamedAndAnArcFacingDownRefused) {
   EXPECT_EQ(weightless[0].field, "guide[0].load_per_metre");
   EXPECT_NE(weightless[0].expected.find("no gravity"), std::string::npos);
   // a loaded rail's lead-ins are arcs: they carry none of its load
-  for (const Guide& a : lead_in_arcs(loaded_rail(5.0), LeadIn{.radius = 0.05, .angle = 0.5}))
+  Guide moving = loaded_rail(5.0);
+  moving.load_inertia = true;
+  for (const Guide& a : lead_in_arcs(moving, LeadIn{.radius = 0.05, .angle = 0.5})) {
     EXPECT_EQ(a.load_per_metre, 0.0);
+    EXPECT_FALSE(a.load_inertia);
+  }
+}
+
+// The load's inertia only with a load: load_inertia on an unloaded rail is named, with the
+// other guides' problems, and accepted on a loaded one.
+TEST(RailLoad, LoadInertiaWithoutALoadNamed) {
+  Model m = uniform_chain(4, false, kPitch, 0.024, 1e7, 0.0, false);
+  m.gravity_x = kGx;
+  m.gravity_y = kGy;
+  Guide bare = loaded_rail(0.0), loaded = loaded_rail(5.0), bad = loaded_rail(-1.0);
+  bare.load_inertia = loaded.load_inertia = bad.load_inertia = true;
+  m.guides = {bare, loaded, bad};
+  const std::vector<Issue> issues = validate(m);
+  ASSERT_EQ(issues.size(), 3u);
+  EXPECT_EQ(issues[0].field, "guide[0].load_inertia");
+  EXPECT_NE(issues[0].expected.find("false without a load (load_per_metre > 0 kg/m)"),
+            std::string::npos)
+      << issues[0].expected;
+  EXPECT_EQ(issues[1].field, "guide[2].load_inertia");
+  EXPECT_EQ(issues[2].field, "guide[2].load_per_metre");
 }
 
 // ∫ w(s) ds from a to b (a ≤ b), w the ramped share on a rail of length `len`: the trapezoid
@@ -403,6 +429,216 @@ TEST(RailLoad, WorkBalanceClosesOnALoadedArc) {
   EXPECT_LT(std::abs(numerical), 1e-3 * expected)
       << "dE " << energy(model, s).total() - e0 << " dissipated " << dissipated << " load "
       << s.load_work;
+}
+
+// The load's inertia (Guide::load_inertia): the step's Newton matrix — the load's mass m_L1/hθ on
+// the diagonal and its dependence on the iterate through the ramp, (v₁ − v₀ + [Δm_L > 0] v₀)
+// (∇m_L)ᵀ — column by column against central differences of the step's residual, for a two-node
+// chain a half pitch above the rail moving along it (so one node's load grows and the other's
+// shrinks: the catch's branch and the discharge's), one node on either end's ramp, both ways
+// along the rail, on a straight rail and either arc. The inertia's blocks are most of the matrix
+// there (against the same rail without load_inertia).
+TEST(RailLoad, LoadInertiaNewtonMatrixIsTheResidualsDerivative) {
+  for (Guide g : loaded_rails(1e3)) {
+    Guide weight_only = g;
+    g.load_inertia = true;
+    for (const double v : {1.0, -1.0}) {
+      for (const double s0 : {0.2 * kPitch, rail_length(g) - 1.1 * kPitch}) {
+        Model m = uniform_chain(2, false, kPitch, 0.024, 1e4, 0.0, false);
+        m.gravity_x = kGx;
+        m.gravity_y = kGy;
+        State st(2, 0);
+        std::vector<double> u(4);
+        const double h = 1e-3;
+        for (std::size_t i = 0; i < 2; ++i) {
+          const double si = s0 + kPitch * static_cast<double>(i);
+          at(g, si, 0.5 * kPitch, st.x[i], st.y[i]);
+          // the velocity along the rail (a chord of 1 mm), the iterate a little off x₀ + h v₀
+          double xa = 0.0, ya = 0.0;
+          at(g, si + 1e-3 * v, 0.5 * kPitch, xa, ya);
+          st.vx[i] = (xa - st.x[i]) / 1e-3 * std::abs(v);
+          st.vy[i] = (ya - st.y[i]) / 1e-3 * std::abs(v);
+          u[2 * i] = st.x[i] + h * st.vx[i] + 2e-5 * (i == 0 ? 1.0 : -0.5);
+          u[2 * i + 1] = st.y[i] + h * st.vy[i] + 1e-5;
+        }
+        std::vector<double> r0, jac, bare;
+        m.guides = {weight_only};
+        Integrator plain(m, {.step = h, .theta = 0.6});
+        plain.newton_system(m, st, u, r0, &bare);
+        m.guides = {g};
+        Integrator integ(m, {.step = h, .theta = 0.6});
+        integ.newton_system(m, st, u, r0, &jac);
+        double scale = 0.0, inertia = 0.0;
+        for (std::size_t k = 0; k < 16; ++k) {
+          scale = std::max(scale, std::abs(jac[k]));
+          inertia = std::max(inertia, std::abs(jac[k] - bare[k]));
+        }
+        EXPECT_GT(inertia, 0.5 * scale) << s0 << ": the inertia's block is not negligible";
+        for (std::size_t c = 0; c < 4; ++c) {
+          const std::vector<double> fd = testing::residual_difference(integ, m, st, u, c, 1e-8);
+          for (std::size_t r = 0; r < 4; ++r)
+            EXPECT_NEAR(jac[r * 4 + c], fd[r], 1e-7 * scale)
+                << s0 << " v " << v << " row " << r << " column " << c;
+        }
+      }
+    }
+  }
+}
+
+// A level, frictionless loaded rail (q_L = 2.5 kg/m) carrying a 6-link chain well inside its
+// ramps, with load_inertia: (a) pulled from rest by a constant force F at its front node, its
+// centre moves F t²/(2 N (m + q_L p)) in t (the spring–mass chain's start-up with the node mass
+// m + q_L p: the load's mass moves with the chain); (b) a single link stretched and let go rings
+// at ω = √(2 k/(m + q_L p)), its period measured from the stretch's zero crossings. With the
+// load's mass left out both are off by the mass ratio (m + q_L p)/m = 2.98 (its square root).
+TEST(RailLoad, LoadInertiaMovesWithTheChain) {
+  const double q = 2.5, m = 0.024, k = 1e4, g0 = 9.81, mass = m + q * kPitch;
+  Guide rail;
+  rail.x0 = -1.0;
+  rail.x1 = 1.0;
+  rail.roller_radius = 0.006;
+  rail.contact_stiffness = 1e6;
+  rail.contact_damping = 100.0;
+  rail.load_per_metre = q;
+  rail.load_inertia = true;
+  const double sink = mass * g0 / rail.contact_stiffness + 0.5 * rail.contact_smoothing;
+  // (a) the start-up: N = 7 nodes, F = 2 N along +x on the last, 0.2 s at θ = ½
+  {
+    const std::size_t n = 7;
+    Model model = uniform_chain(n, false, kPitch, m, k, 0.5, false);
+    model.gravity_y = -g0;
+    model.guides = {rail};
+    const double f = 2.0;
+    model.loads = {NodeLoad{n - 1, f, 0.0}};
+    State s(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      s.x[i] = kPitch * static_cast<double>(i);
+      s.y[i] = rail.roller_radius - sink;
+    }
+    const std::vector<double> x0 = s.x;
+    Integrator integ(model, {.step = 1e-4, .theta = 0.5});
+    const int steps = 2000;
+    for (int j = 0; j < steps; ++j) ASSERT_TRUE(integ.step(model, s).converged) << j;
+    const double t = steps * 1e-4;
+    double moved = 0.0;
+    for (std::size_t i = 0; i < n; ++i) moved += (s.x[i] - x0[i]) / static_cast<double>(n);
+    const double expected = f * t * t / (2.0 * static_cast<double>(n) * mass);
+    std::printf("start-up: the centre moved %.6g m, F t^2/2 N (m + q_L p) %.6g m (%+.2e)\n", moved,
+                expected, moved / expected - 1.0);
+    EXPECT_NEAR(moved, expected, 1e-6 * expected);
+    ASSERT_LT(s.x[n - 1], rail.x1 - kPitch) << "the chain stayed inside the ramps";
+  }
+  // (b) one link stretched by 0.1 mm and let go: 8 periods at about 170 steps each
+  {
+    Model model = uniform_chain(2, false, kPitch, m, k, 0.0, false);
+    model.gravity_y = -g0;
+    model.guides = {rail};
+    State s(2, 0);
+    s.x = {-0.5 * kPitch - 5e-5, 0.5 * kPitch + 5e-5};
+    s.y = {rail.roller_radius - sink, rail.roller_radius - sink};
+    const double omega = std::sqrt(2.0 * k / mass), h = 2.0 * std::numbers::pi / omega / 170.0;
+    Integrator integ(model, {.step = h, .theta = 0.5});
+    std::vector<double> ups;  // the times the stretch crosses 0 upwards, interpolated
+    double last = s.x[1] - s.x[0] - kPitch;
+    for (int j = 0; j < 8 * 170 + 20; ++j) {
+      ASSERT_TRUE(integ.step(model, s).converged) << j;
+      const double now = s.x[1] - s.x[0] - kPitch;
+      if (last < 0.0 && now >= 0.0) ups.push_back(s.time - h * now / (now - last));
+      last = now;
+    }
+    ASSERT_GE(ups.size(), 7u);
+    const double period = (ups.back() - ups.front()) / static_cast<double>(ups.size() - 1);
+    const double expected = 2.0 * std::numbers::pi / omega;
+    std::printf("the link's period %.6g ms, 2 pi sqrt((m + q_L p)/2k) %.6g ms (%+.2e)\n",
+                1e3 * period, 1e3 * expected, period / expected - 1.0);
+    EXPECT_NEAR(period, expected, 1e-3 * expected);
+  }
+}
+
+// A 6-link chain sliding down a 15° rail (μ = 0.1, θ = ½, 0.7 s) across the joint of two collinear
+// pieces, the lower (x from −2 m to 0) and the upper (0 to 1 m), from the upper onto the lower,
+// each loaded with load_inertia (q_L = 2.5 kg/m) or not: the run's works and what the work
+// balance leaves, E₁ − E₀ (the load's kinetic energy in energy()) less the friction's, dampers',
+// load's weight's, catch's and discharge's works.
+struct JointSlide {
+  State s;
+  double numerical = 0.0;  // [J]
+};
+JointSlide slide_across_joint(bool lower_loaded, bool upper_loaded) {
+  const double beta = 15.0 * std::numbers::pi / 180.0, g0 = 9.81, q = 2.5, m = 0.024;
+  const std::size_t n = 7;
+  Model model = uniform_chain(n, false, kPitch, m, 2e6, 30.0, false);
+  model.gravity_x = -g0 * std::sin(beta);  // the rail along +x, the slope down −x
+  model.gravity_y = -g0 * std::cos(beta);
+  Guide rail;
+  rail.roller_radius = 0.006;
+  rail.contact_stiffness = 1e6;
+  rail.contact_damping = 100.0;
+  rail.friction = 0.1;
+  Guide lower = rail, upper = rail;
+  lower.x0 = -2.0;
+  lower.x1 = 0.0;
+  upper.x0 = 0.0;
+  upper.x1 = 1.0;
+  lower.load_per_metre = lower_loaded ? q : 0.0;
+  upper.load_per_metre = upper_loaded ? q : 0.0;
+  lower.load_inertia = lower_loaded;
+  upper.load_inertia = upper_loaded;
+  model.guides = {lower, upper};
+  EXPECT_TRUE(validate(model).empty());
+  JointSlide out{State(n, 0)};
+  State& s = out.s;
+  const double sink =
+      (m + (upper_loaded ? q * kPitch : 0.0)) * g0 * std::cos(beta) / rail.contact_stiffness +
+      0.5 * rail.contact_smoothing;
+  for (std::size_t i = 0; i < n; ++i) {
+    s.x[i] = 0.02 + kPitch * static_cast<double>(i);
+    s.y[i] = rail.roller_radius - sink;
+  }
+  const double e0 = energy(model, s).total();
+  Integrator integ(model, {.step = 1e-4, .theta = 0.5});
+  for (int j = 0; j < 7000; ++j) {
+    if (!integ.step(model, s).converged) {
+      ADD_FAILURE() << "step " << j << " did not converge";
+      return out;
+    }
+  }
+  EXPECT_LT(s.x[n - 1], -0.5 * kPitch) << "every node crossed onto the lower piece";
+  const double dissipated = s.friction_work + s.damper_work + s.contact_damping_work + s.drag_work;
+  out.numerical = energy(model, s).total() - e0 - dissipated - s.load_work - s.load_catch_work -
+                  s.load_discharge_work;
+  std::printf("lower %s, upper %s: catch %.6g J discharge %.6g J load %.6g J numerical %.3g J\n",
+              lower_loaded ? "loaded" : "bare", upper_loaded ? "loaded" : "bare", s.load_catch_work,
+              s.load_discharge_work, s.load_work, out.numerical);
+  return out;
+}
+
+// Onto a loaded piece the catch takes work (< 0) and nothing is discharged, off one the reverse;
+// the work balance closes within 1e-6 of the catch's (the discharge's) work.
+TEST(RailLoad, LoadInertiaWorkBalanceClosesOntoAndOffALoadedPiece) {
+  for (const bool onto : {true, false}) {
+    const JointSlide r = slide_across_joint(onto, !onto);
+    const State& s = r.s;
+    const double exchanged = onto ? s.load_catch_work : s.load_discharge_work;
+    EXPECT_LT(exchanged, 0.0);
+    // (the share inside the ramps is 1 to rounding: a few ulps of the load's mass)
+    EXPECT_LT(std::abs(onto ? s.load_discharge_work : s.load_catch_work),
+              1e-9 * std::abs(exchanged));
+    EXPECT_LT(std::abs(r.numerical), 1e-6 * std::abs(exchanged))
+        << "catch " << s.load_catch_work << " discharge " << s.load_discharge_work;
+  }
+}
+
+// Across the joint of two collinear loaded pieces the load passes from one to the other with its
+// node (load_mass sums the pieces' shares, 1 to rounding across the joint): nothing is caught or
+// discharged — within 1e-9 of what the same slide catches onto a loaded piece from a bare one.
+TEST(RailLoad, LoadInertiaPassesAJointBetweenLoadedPiecesWithoutACatch) {
+  const double onto = slide_across_joint(true, false).s.load_catch_work;
+  const JointSlide r = slide_across_joint(true, true);
+  EXPECT_LT(onto, 0.0);
+  EXPECT_LT(std::abs(r.s.load_catch_work), 1e-9 * std::abs(onto));
+  EXPECT_LT(std::abs(r.s.load_discharge_work), 1e-9 * std::abs(onto));
+  EXPECT_LT(std::abs(r.numerical), 1e-6 * std::abs(onto));
 }
 
 }  // namespace

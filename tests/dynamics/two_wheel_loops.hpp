@@ -73,6 +73,7 @@ struct Conveyor {
   double gravity = 9.81;         // [m/s²]
   double incline = 0.0;          // [rad] β, the line of centres rising towards the driver
   double load_per_metre = 0.0;   // [kg/m] q_L on the upper (carrying) run's rail pieces
+  bool load_inertia = false;     // the load's mass moves with the chain (Guide::load_inertia)
 };
 
 struct Loop {
@@ -153,6 +154,7 @@ inline Loop conveyor_loop(const Conveyor& d) {
         g.contact_damping = 100.0;
         g.friction = d.friction;
         if (y > 0.0) g.load_per_metre = d.load_per_metre;  // the carrying run's
+        g.load_inertia = y > 0.0 && d.load_inertia && d.load_per_metre > 0.0;
         model.guides.push_back(g);
       }
     }
@@ -164,6 +166,7 @@ inline Loop conveyor_loop(const Conveyor& d) {
       Guide nose = rail;
       nose.kind = Guide::Kind::kArc;
       nose.load_per_metre = 0.0;  // the rail carries the load, not its lead-in
+      nose.load_inertia = false;
       nose.radius = kNose;
       nose.centre_x = upper ? x_hi : x_lo;  // the upper run travels −x and enters at x_hi
       nose.centre_y = rail.y0 - kNose;

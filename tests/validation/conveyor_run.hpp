@@ -33,6 +33,8 @@ struct ConveyorRun {
   std::vector<ConveyorProbe> probes;
   std::vector<double> friction_work;  // [J] the state's accumulated friction work after each step
   std::vector<double> load_work;      // [J] the state's accumulated work of the rails' loads
+  // [J] the state's accumulated catch and discharge works (Guide::load_inertia; ≤ 0)
+  std::vector<double> catch_work, discharge_work;
   // [J] the driver's accumulated work on the chain after each step: the chain's torque on it at
   // each step's θ point (Integrator::applied_torque) over the step's turn
   std::vector<double> drive_work;
@@ -112,6 +114,8 @@ inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> pr
     out.time.push_back(s.time);
     out.friction_work.push_back(s.friction_work);
     out.load_work.push_back(s.load_work);
+    out.catch_work.push_back(s.load_catch_work);
+    out.discharge_work.push_back(s.load_discharge_work);
     drive_work -= integ.applied_torque()[0] * (s.angle[0] - angle0);
     out.drive_work.push_back(drive_work);
     for (std::size_t i = 0; i < energy_at.size(); ++i) {
@@ -133,6 +137,8 @@ struct ConveyorMeans {
   double friction_power = 0.0;  // [W] −(friction work)/time over the window
   double drive_power = 0.0;     // [W] the driver's work on the chain/time over the window
   double load_power = 0.0;      // [W] the rails' loads' work on the chain/time over the window
+  // [W] −(the catch's work)/time and −(the discharge's work)/time over the window (load_inertia)
+  double catch_power = 0.0, discharge_power = 0.0;
 };
 
 // Conveyor `d` run for `duration` at h = 0.1 ms, its means over the whole tooth periods after
@@ -156,10 +162,15 @@ inline ConveyorMeans conveyor_means(const Conveyor& d, double duration = 2.0) {
   m.upper_entry = mean(5);
   const double t_end = t0 + std::floor((r.time.back() - t0) / period) * period;
   double w0 = 0.0, w1 = 0.0, p0 = 0.0, p1 = 0.0, l0 = 0.0, l1 = 0.0;
+  double c0 = 0.0, c1 = 0.0, d0 = 0.0, d1 = 0.0;
   for (std::size_t k = 0; k < r.time.size(); ++k) {
     if (r.time[k] <= t0) w0 = r.friction_work[k], p0 = r.drive_work[k], l0 = r.load_work[k];
     if (r.time[k] <= t_end) w1 = r.friction_work[k], p1 = r.drive_work[k], l1 = r.load_work[k];
+    if (r.time[k] <= t0) c0 = r.catch_work[k], d0 = r.discharge_work[k];
+    if (r.time[k] <= t_end) c1 = r.catch_work[k], d1 = r.discharge_work[k];
   }
+  m.catch_power = -(c1 - c0) / (t_end - t0);
+  m.discharge_power = -(d1 - d0) / (t_end - t0);
   m.friction_power = -(w1 - w0) / (t_end - t0);
   m.drive_power = (p1 - p0) / (t_end - t0);
   m.load_power = (l1 - l0) / (t_end - t0);

@@ -212,6 +212,12 @@ struct Guide {
   /// [kg/m] q_L: conveyed material riding on the chain along the rail, straight or arc (docs/
   /// models/dynamics.md, "A conveyed load"; rail_load); 0, the default: none.
   double load_per_metre = 0.0;
+  /// The load's inertia, loading and discharge (docs/models/dynamics.md, "A conveyed load: its
+  /// inertia, loading and discharge"; only with load_per_metre > 0): each node carries the load's
+  /// mass q_L p w(s) besides its own (load_mass), material joining a node arrives at rest (the
+  /// catch's reaction) and material leaving it leaves at the node's velocity. false, the default:
+  /// the load is weight only.
+  bool load_inertia = false;
   /// [N/m] k_t: sticking (docs/models/dynamics.md, "Guides: sticking"). 0, the default: the
   /// regularised friction above. > 0 (a guide with friction > 0 only, straight or arc): each
   /// roller in contact carries an anchor a (State::stick_anchor) and the friction is the
@@ -317,6 +323,17 @@ struct RailLoad {
 };
 RailLoad rail_load(const Guide& g, const GuideFrame& frame, double pitch, double gravity_x,
                    double gravity_y, double x, double y);
+struct Model;
+/// The conveyed load's mass on a node at q: Σ q_L p w(s) over the guides with load_inertia
+/// (rail_load's share w, ramp and gate), and its gradient ∂m_L/∂q = Σ q_L p w' (∂s/∂q)ᵀ.
+/// `frames`: guide_frame of each of model.guides.
+struct LoadMass {
+  double mass = 0.0;          ///< [kg] m_L
+  double dx = 0.0, dy = 0.0;  ///< [kg/m] ∂m_L/∂q
+};
+LoadMass load_mass(const Model& model, std::span<const GuideFrame> frames, double x, double y);
+/// Some guide with load_inertia and load_per_metre > 0.
+bool any_load_inertia(const Model& model);
 
 /// An axis-aligned box that holds every roller centre a guide can touch: guide_contact(g, x, y,
 /// …) is active only if guide_touch_possible(guide_bounds(g), x, y). A straight rail's segment
@@ -455,6 +472,13 @@ struct State {
   double hinge_work = 0.0;          ///< [J] work of the hinges' friction so far (≤ 0)
   /// [J] work of the rails' loads (Guide::load_per_metre) on the chain so far
   double load_work = 0.0;
+  /// [J] the loading's catch so far (Guide::load_inertia): the work of the reaction of material
+  /// arriving at rest on the chain, minus the kinetic energy it gains (≤ 0: half the work the
+  /// chain does to bring it to speed, lost in the inelastic catch)
+  double load_catch_work = 0.0;
+  /// [J] the discharge so far (Guide::load_inertia): minus the kinetic energy the material
+  /// leaving the chain carries away (≤ 0)
+  double load_discharge_work = 0.0;
   /// [m] per sprocket: a take-up's slide displacement s along its direction (0 without one)
   std::vector<double> slide;
   std::vector<double> slide_speed;  ///< [m/s] per sprocket: ṡ
@@ -487,7 +511,8 @@ struct State {
 std::vector<Issue> validate(const Model& model, const State& state);
 
 struct Energy {
-  /// [J] Σ ½ m v² + Σ ½ J ω² (driven sprockets) + Σ ½ m_t ṡ² (take-ups)
+  /// [J] Σ ½ (m + m_L) v² (m_L the conveyed load's mass with Guide::load_inertia, load_mass)
+  /// + Σ ½ J ω² (driven sprockets) + Σ ½ m_t ṡ² (take-ups)
   double kinetic = 0.0;
   /// [J] Σ ½ k (l − p)² (a tension-only link: link_force's E) + the seat and guide contacts'
   /// energies + Σ ½ k_t s² (take-ups) + Σ ½ k_t (s − a)² (the guides' stick springs)

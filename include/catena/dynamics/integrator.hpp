@@ -75,6 +75,10 @@ struct StepReport {
   double takeup_damper_work = 0.0;
   /// [J] the rails' loads' work over the step, Σ F(q_θ)·(x₁ − x₀) (Guide::load_per_metre)
   double load_work = 0.0;
+  /// [J] the loading's catch over the step (Guide::load_inertia; State::load_catch_work, ≤ 0)
+  double load_catch_work = 0.0;
+  /// [J] the discharge over the step: minus the leaving material's kinetic energy (≤ 0)
+  double load_discharge_work = 0.0;
   SolveStatus solve = SolveStatus::kSolved;
 };
 

@@ -170,6 +170,10 @@ std::vector<Parameter> guide_fields() {
                    check::format_si(kMaxRailLoad, "") +
                    "] (default 0; its weight needs gravity and must press the chain onto the "
                    "rail: straight, x1 > x0; arc, the carrying side facing up over the whole arc)"),
+      text("load_inertia",
+           "true: the load's mass moves with the chain, material arriving at rest on the rail's "
+           "entry is caught (a force q_L v^2 there) and leaves at its exit with the chain's "
+           "speed (default false: weight only; only with load_per_metre > 0)"),
       quantity("contact_stiffness", K::kForcePerLength,
                "roller-rail penalty [N/m] (default: dynamics.contact_stiffness; not with "
                "contact_law = \"line\": the rail then follows the line law)"),
@@ -1202,7 +1206,7 @@ Setup parse(const analysis::Inputs& in) {
           g.text[key] = v.text;
         continue;
       }
-      if (key == "inside") {
+      if (key == "inside" || key == "load_inertia") {
         if (!v.is_boolean)
           issues.push_back({where(v), "'" + v.text + "'", "true or false"});
         else
@@ -1907,6 +1911,8 @@ Setup parse(const analysis::Inputs& in) {
     guide.friction = get("friction", 0.0);
     guide.friction_band = get("friction_band", 1e-3);
     guide.load_per_metre = get("load_per_metre", 0.0);
+    const auto inertia = g.text.find("load_inertia");
+    guide.load_inertia = inertia != g.text.end() && inertia->second == "true";
     guide.stick_stiffness = get("stick_stiffness", 0.0);
     // the rail's elastic law: with contact_law = "line" the seats' line law on the rail's
     // curvature and material (docs/models/dynamics.md, "Guides: the line law"), which replaces
@@ -1942,7 +1948,8 @@ Setup parse(const analysis::Inputs& in) {
                         "0 without gravity (a load's weight is q_L g: set dynamics.gravity)"});
     bool readable = true;
     for (const auto& [key, at_line] : g.seen)
-      if (key != "kind" && key != "inside" && key.rfind("lead_in_", 0) != 0 && !g.value.count(key))
+      if (key != "kind" && key != "inside" && key != "load_inertia" &&
+          key.rfind("lead_in_", 0) != 0 && !g.value.count(key))
         readable = false;  // the rail's own values (an unreadable lead-in value is the lead-in's)
     // a lead-in (straight rails only; an arc's lead-in keys are refused above): its values'
     // checks, named per field, with the rail's
@@ -2216,6 +2223,8 @@ struct Result {
   double seat_friction_work = 0.0;  // the seats' friction (0 unless seat_friction > 0)
   double hinge_work = 0.0;          // the hinges' friction (≤ 0)
   double load_work = 0.0;           // the rails' loads (0 without load_per_metre)
+  // the load's catch and discharge (≤ 0; 0 without load_inertia)
+  double load_catch_work = 0.0, load_discharge_work = 0.0;
   // the work balance (summary.work_balance): E_end − E_0 = input + friction + link dampers +
   // contact dampers + numerical (the command's model has no drag)
   double input_work = 0.0, damper_work = 0.0, contact_damping_work = 0.0;
@@ -2257,6 +2266,12 @@ bool per_wheel_friction(const Setup& d) {
     if (!std::isnan(mu)) return true;
   return false;
 }
+// Some loaded guide with load_inertia: the work balance then carries the catch and discharge.
+bool any_load_inertia(const Setup& d) {
+  return std::any_of(d.guides.begin(), d.guides.end(),
+                     [](const Guide& g) { return g.load_inertia && g.load_per_metre > 0.0; });
+}
+
 // Some guide carrying a load (load_per_metre > 0).
 bool any_rail_load(const Setup& d) {
   return std::any_of(d.guides.begin(), d.guides.end(),
@@ -2617,6 +2632,12 @@ Result run(const analysis::Inputs& in) {
     out.load_work = s.load_work;
     out.energy_drift -= s.load_work;
   }
+  // the load's catch and discharge (a run without load_inertia computes as before)
+  if (any_load_inertia(d)) {
+    out.load_catch_work = s.load_catch_work;
+    out.load_discharge_work = s.load_discharge_work;
+    out.energy_drift -= s.load_catch_work + s.load_discharge_work;
+  }
   out.input_work = work;
   out.damper_work = s.damper_work;
   out.contact_damping_work = s.contact_damping_work;
@@ -2894,6 +2915,10 @@ Record describe(const Result& r, const analysis::Inputs&) {
     if (hinge_on) j["summary"]["work_balance"]["hinge_friction"] = r.hinge_work;
     if (!r.takeup.empty()) j["summary"]["work_balance"]["takeup_dampers"] = r.takeup_damper_work;
     if (any_rail_load(d)) j["summary"]["work_balance"]["loads"] = r.load_work;
+    if (any_load_inertia(d)) {
+      j["summary"]["work_balance"]["load_catch"] = r.load_catch_work;
+      j["summary"]["work_balance"]["load_discharge"] = r.load_discharge_work;
+    }
   }
   // take-ups add fields only when given: takeup[k] {sprocket, position, slide_speed, force}
   if (!r.takeup.empty()) {
@@ -3314,6 +3339,10 @@ Record describe(const Result& r, const analysis::Inputs&) {
       << (r.takeup.empty() ? std::string()
                            : "take-up dampers " + format_g(r.takeup_damper_work, 5) + " J, ")
       << (any_rail_load(d) ? "loads " + format_g(r.load_work, 5) + " J, " : std::string())
+      << (any_load_inertia(d)
+              ? "load catch " + format_g(r.load_catch_work, 5) + " J, load discharge " +
+                    format_g(r.load_discharge_work, 5) + " J, "
+              : std::string())
       << "numerical " << format_g(r.numerical_work, 4) << " J\n";
   if (any_seat_friction(d)) {
     t << "  seat friction ";

@@ -362,6 +362,9 @@ std::vector<Issue> validate(const Model& model) {
       out.push_back({f + "stick_damping", check::format_si(g.stick_damping, "N*s/m"),
                      "0 without stick_stiffness (a damper on the stick law's spring)"});
     }
+    if (g.load_inertia && !(g.load_per_metre > 0.0))
+      out.push_back({f + "load_inertia", "true",
+                     "false without a load (load_per_metre > 0 kg/m): there is no load to move"});
     if (!std::isfinite(g.load_per_metre) || !(g.load_per_metre >= 0.0) ||
         !(g.load_per_metre <= kMaxRailLoad)) {
       out.push_back({f + "load_per_metre", check::format_si(g.load_per_metre, "kg/m"),
@@ -452,6 +455,7 @@ std::vector<Guide> lead_in_arcs(const Guide& rail, const LeadIn& lead) {
     g.end_angle = to;
     g.inside = false;
     g.load_per_metre = 0.0;   // the rail's load is the rail's (an arc carries none)
+    g.load_inertia = false;
     g.stick_stiffness = 0.0;  // a lead-in slides with the regularised law (not the rail's k_t)
     g.stick_damping = 0.0;
     if (rail.line_law) use_line_law(g, rail.line.width);  // the arc's own curvature
@@ -513,6 +517,26 @@ RailLoad rail_load(const Guide& g, const GuideFrame& frame, double pitch, double
   out.dq[2] = ay * dsx;
   out.dq[3] = ay * dsy;
   return out;
+}
+
+LoadMass load_mass(const Model& model, std::span<const GuideFrame> frames, double x, double y) {
+  LoadMass out;
+  for (std::size_t g = 0; g < model.guides.size(); ++g) {
+    const Guide& guide = model.guides[g];
+    if (!guide.load_inertia || !(guide.load_per_metre > 0.0)) continue;
+    // the load's weight under a unit gravity along x: q_L p w(s) and its gradient
+    const RailLoad l = rail_load(guide, frames[g], model.pitch, 1.0, 0.0, x, y);
+    if (!l.active) continue;
+    out.mass += l.fx;
+    out.dx += l.dq[0];
+    out.dy += l.dq[1];
+  }
+  return out;
+}
+
+bool any_load_inertia(const Model& model) {
+  return std::any_of(model.guides.begin(), model.guides.end(),
+                     [](const Guide& g) { return g.load_inertia && g.load_per_metre > 0.0; });
 }
 
 GuideContact guide_contact(const Guide& gd, double x, double y, double vx, double vy) {
@@ -1283,10 +1307,15 @@ std::vector<Issue> validate(const Model& model, const State& state) {
 Energy energy(const Model& model, const State& state) {
   Energy e;
   const std::size_t n = model.nodes();
+  // the conveyed load's mass (Guide::load_inertia) moves with its node: its kinetic energy
+  std::vector<GuideFrame> frames;
+  if (any_load_inertia(model))
+    for (const Guide& g : model.guides) frames.push_back(guide_frame(g));
   for (std::size_t i = 0; i < n; ++i) {
-    const double m = model.mass[i];
+    const double m = model.mass[i] +
+                     (frames.empty() ? 0.0 : load_mass(model, frames, state.x[i], state.y[i]).mass);
     e.kinetic += 0.5 * m * (state.vx[i] * state.vx[i] + state.vy[i] * state.vy[i]);
-    e.potential -= m * (model.gravity_x * state.x[i] + model.gravity_y * state.y[i]);
+    e.potential -= model.mass[i] * (model.gravity_x * state.x[i] + model.gravity_y * state.y[i]);
   }
   for (const NodeLoad& f : model.loads) {
     if (f.node < n) e.potential -= f.fx * state.x[f.node] + f.fy * state.y[f.node];

@@ -661,6 +661,32 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
            d.d - ht * load.dq[3]};
     }
   }
+  // The conveyed load's inertia (Guide::load_inertia; docs/models/dynamics.md, "A conveyed load:
+  // its inertia, loading and discharge"): node i's momentum is (m + m_L) v, m_L taken at the
+  // step's ends (m_L0 at x₀, m_L1 at the iterate u), so that the momentum the steps exchange with
+  // the load telescopes. R gains m_L1 (v₁ − v₀) + max(Δm_L, 0) v₀, Δm_L = m_L1 − m_L0: material
+  // joining arrives at rest, (m + m_L1) v₁ − (m + m_L0) v₀ = h F; material leaving takes v₀ with
+  // it, (m + m_L1)(v₁ − v₀) = h F. With v₁ − v₀ = (u − x₀ − h v₀)/hθ the diagonal block gains
+  // m_L1/hθ I + a (∇m_L1)ᵀ, a = (v₁ − v₀) + [Δm_L > 0] v₀ (the mass's dependence on u through
+  // the ramp w(s)).
+  if (any_load_inertia(model)) {
+    const double ht = h * th;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (model.is_pinned(i)) continue;
+      const double m0 = load_mass(model, guide_frame_, sx[i], sy[i]).mass;
+      const LoadMass m1 = load_mass(model, guide_frame_, ux[i], uy[i]);
+      if (m0 == 0.0 && m1.mass == 0.0) continue;
+      const double dm = m1.mass - m0, joins = dm > 0.0 ? dm : 0.0;
+      const double dvx = (ux[i] - sx[i] - h * svx[i]) / ht, dvy = (uy[i] - sy[i] - h * svy[i]) / ht;
+      rhs[i].x -= m1.mass * dvx + joins * svx[i];
+      rhs[i].y -= m1.mass * dvy + joins * svy[i];
+      if (!jacobian) continue;
+      const double ax = dvx + (dm > 0.0 ? svx[i] : 0.0), ay = dvy + (dm > 0.0 ? svy[i] : 0.0);
+      const double mi = m1.mass / ht;
+      Mat2& d = diag[i];
+      d = {d.a + mi + ax * m1.dx, d.b + ax * m1.dy, d.c + ay * m1.dx, d.d + mi + ay * m1.dy};
+    }
+  }
   if (!model.pinned.empty()) {
     for (std::size_t i = 0; i < n; ++i) {
       if (!model.is_pinned(i)) continue;
@@ -1166,8 +1192,31 @@ StepReport Integrator::step(const Model& model, State& s) {
         report.load_work += load.fx * (ux_[i] - s.x[i]) + load.fy * (uy_[i] - s.y[i]);
     }
   }
+  // The load's catch and discharge over the step (Guide::load_inertia): the step's momentum
+  // balance dotted with the displacement Δx = h ((1 − θ) v₀ + θ v₁). A node whose load grows
+  // (Δm_L > 0) loses Δm_L ((½ − θ) |v₀|² + θ v₀·v₁) besides the load's kinetic energy gained
+  // (½ Δm_L v² at a steady speed: the inelastic catch); one whose load shrinks hands the leaving
+  // material ½ |Δm_L| |v₀|² (the discharge). What is left of the balance is the θ-method's own
+  // (θ − ½)(m + m_L1) |v₁ − v₀|².
+  if (any_load_inertia(model)) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (model.is_pinned(i)) continue;
+      const double dm = load_mass(model, guide_frame_, ux_[i], uy_[i]).mass -
+                        load_mass(model, guide_frame_, s.x[i], s.y[i]).mass;
+      const double v0x = s.vx[i], v0y = s.vy[i];
+      const double v1x = (ux_[i] - s.x[i] - h * (1.0 - th) * v0x) / (h * th);
+      const double v1y = (uy_[i] - s.y[i] - h * (1.0 - th) * v0y) / (h * th);
+      const double v00 = v0x * v0x + v0y * v0y;
+      if (dm > 0.0)
+        report.load_catch_work -= dm * ((0.5 - th) * v00 + th * (v0x * v1x + v0y * v1y));
+      else
+        report.load_discharge_work += 0.5 * dm * v00;
+    }
+  }
   s.friction_work += report.friction_work;
   s.load_work += report.load_work;
+  s.load_catch_work += report.load_catch_work;
+  s.load_discharge_work += report.load_discharge_work;
   s.damper_work += report.damper_work;
   s.drag_work += report.drag_work;
   s.contact_damping_work += report.contact_damping_work;
