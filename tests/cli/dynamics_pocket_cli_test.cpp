@@ -101,20 +101,27 @@ TEST(DynamicsPocketCli, ExampleRunsOnSeed003sWheelAndBalancesTheDrivenWheel) {
   // every joint stays in its pocket: within the clearance plus F/k_c (3.5 kN peak / 1e8 N/m)
   EXPECT_LT(s["max_penetration"].get<double>(), 1e-4);
   // the driven wheel over whole tooth periods: its speed is the driver's and the chain's mean
-  // torque carries the load (100 N m; measured 99.70)
+  // torque carries the load (100 N m; measured 100.26; over 20 runs with the pretension changed by
+  // 1-9 µN, 99.69-100.31)
   EXPECT_NEAR(s["sprocket_1"]["mean_speed"].get<double>(), 5.0, 5e-3);
   EXPECT_NEAR(s["sprocket_1"]["mean_torque"].get<double>(), 100.0, 1.0);
   // tight - slack against T_L/R times the polygon's mean(sec θ): the crank swings over
   // [-δ2/2, δ1/2] and [-δ1/2, δ2/2], mean(sec θ) = (z/π)(F(δ1/2) + F(δ2/2)), F(x) =
-  // ln(sec x + tan x) = 1.0081 here. Measured +1.49 % with the tension-only links (+1.05 % with
-  // the bilateral ones; the soft loop's spans ring: their tensions swing from 22 N to 4.0 kN over
-  // the window); held to 2 %.
+  // ln(sec x + tan x) = 1.0081 here. Measured +2.56 % (the soft loop's spans ring: their tensions
+  // swing from 65 N to 4.9 kN over the window). The 1 s run's rise is a sample of a chaotic
+  // response (docs/models/dynamics.md, "Pocket wheel: the example's means"): over 20 runs with the
+  // pretension changed by 0-9 µN (far below Newton's tolerance; 10 with the seat damper's rotation
+  // term in the Newton matrix, 10 without) +1.16 ± 0.69 % (σ), from −0.41 % to +2.56 %; over 24
+  // such 4 s runs +1.38 ± 0.32 %: the closed form (quasi-static, no dampers) sits about 1.4 %
+  // below. Held to 4 %: the mean + 4 σ of the 1 s runs. (At this scatter neither run length tells
+  // mean(sec θ) − 1 = 0.81 % apart; the reported mean_tension_error, 46-280 N a span, is of each
+  // span's mean, whose swings the two spans share, and bounds their difference only loosely.)
   const double d1 = 2 * std::asin((t + d) / (2 * R)), d2 = kPi / 4 - d1;
   auto F = [](double x) { return std::log(1 / std::cos(x) + std::tan(x)); };
   const double mean_sec = 8 / kPi * (F(d1 / 2) + F(d2 / 2));
   const double rise =
       s["span_0"]["mean_tension"].get<double>() - s["span_1"]["mean_tension"].get<double>();
-  EXPECT_NEAR(rise / (100.0 / R * mean_sec), 1.0, 0.02) << rise;
+  EXPECT_NEAR(rise / (100.0 / R * mean_sec), 1.0, 0.04) << rise;
   // the first sample (t = 0, the initial state's contact torque) is the pocket's, not an ISO
   // seat's: of the order of the load (an ISO seat's law put ~1e5 N on each joint at a vertex)
   for (int w = 0; w < 2; ++w)

@@ -83,9 +83,9 @@ std::string perturbed_example() {
 }
 
 TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
-  // 10 s: the window holds 31 tooth periods (measured with the tension-only links: 1945.3 ± 52.0
-  // and 1321.9 ± 51.3 N at h = 0.1 ms, 1953.5 ± 48.1 and 1330.3 ± 48.5 N at 0.05 ms: 0.12 and
-  // 0.12 combined errors)
+  // 10 s: the window holds 31 tooth periods (measured with the tension-only links: 1907.9 ± 60.3
+  // and 1286.5 ± 59.4 N at h = 0.1 ms, 1952.2 ± 49.9 and 1331.8 ± 48.7 N at 0.05 ms: 0.57 and
+  // 0.59 combined errors)
   const auto a = dynamics(kExample, "--duration 10s --step 0.1ms");
   const auto b = dynamics(kExample, "--duration 10s --step 0.05ms");
   ASSERT_FALSE(a.is_null() || b.is_null());
@@ -99,13 +99,13 @@ TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
       EXPECT_NEAR(sum["mean_tension"].get<double>(), s.mean, 1e-9 * s.mean);
       EXPECT_NEAR(sum["period_tension_sd"].get<double>(), s.e.sd, 1e-9 * s.e.sd);
       EXPECT_NEAR(sum["mean_tension_error"].get<double>(), s.e.error, 1e-9 * s.e.error);
-      // 31 periods: their lag-1 autocorrelation estimated (measured 0.12 and 0.12 at h = 0.1 ms,
-      // the error 52.0 and 51.3 N against s/√n = 46.1 and 45.6 N; 0.13 and 0.14 at 0.05 ms),
+      // 31 periods: their lag-1 autocorrelation estimated (measured 0.28 and 0.28 at h = 0.1 ms,
+      // the error 60.3 and 59.4 N against s/√n = 45.1 and 44.4 N; 0.25 and 0.23 at 0.05 ms),
       // the error s/√n inflated by it
       ASSERT_TRUE(sum["period_correlation"].is_number()) << key;
       EXPECT_NEAR(sum["period_correlation"].get<double>(), s.e.correlation, 1e-12) << key;
       EXPECT_NEAR(sum["effective_periods"].get<double>(), s.e.effective_periods, 1e-9) << key;
-      // the cause, pinned: the periods' means scatter (measured 12-19 % of the mean over these
+      // the cause, pinned: the periods' means scatter (measured 11-19 % of the mean over these
       // 10 s; 12-22 % over 20 s with the bilateral links); a loop whose response repeated with
       // the tooth period would have s ≈ 0
       EXPECT_GT(s.e.sd, 0.05 * s.mean) << key;
@@ -117,7 +117,7 @@ TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
         << sb.e.error;
   }
   // what the spans carry converges closer than their level: the load (tight − slack; measured
-  // 623.4 and 623.2 N) and the driven wheel's torque (99.959 and 99.994 N m)
+  // 621.4 and 620.3 N) and the driven wheel's torque (100.011 and 99.971 N m)
   auto load = [](const nlohmann::json& j) {
     return j["summary"]["span_0"]["mean_tension"].get<double>() -
            j["summary"]["span_1"]["mean_tension"].get<double>();
@@ -139,8 +139,8 @@ TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
 
 TEST(DynamicsPocketMeansCli, ExampleMovesWithAPretensionFarBelowTheTolerance) {
   // the 1 s example and the same with the pretension 1e-9 larger (1 µN): the 3-period means move
-  // by more than 1 % (measured 1856.5 → 1943.5 N, 1233.7 → 1321.4 N), of the order of their
-  // standard error (46, 44 N) — as halving the step moves them (to 1789.2 and 1168.5 N)
+  // by more than 1 % (measured 2031.1 → 1904.6 N, 1401.7 → 1282.8 N), of the order of their
+  // standard error (122, 119 N) — as halving the step moves them (to 2043.7 and 1426.5 N)
   const auto a = dynamics(kExample, "");
   const auto b = dynamics(perturbed_example(), "");
   ASSERT_FALSE(a.is_null() || b.is_null());

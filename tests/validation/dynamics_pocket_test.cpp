@@ -49,6 +49,7 @@ struct PocketRun {
   // round links carry no compression (Model::links_carry_compression; docs/models/dynamics.md,
   // "Tension-only links"), as in the command
   bool tension_only = true;
+  bool rails = true;  // the forced run-on's guide (false: the same strand, unguided)
 };
 
 struct Measured {
@@ -261,6 +262,7 @@ TEST(DynamicsPocketWheel, SoftOrSlackStrandsMissTheOnePercentForAReason) {
 struct Forced {
   double worst = 0.0;        // max over the bins of |v_sim − v_slider| / ωR
   double worst_pivot = 0.0;  // the same against the pivot span
+  double rms = 0.0;          // the rms over the bins of (v_sim − v_slider) / ωR
   double max_penetration = 0.0;
   double rail_gap = 0.0;  // [m] the largest |y − H| of a guided joint
   bool converged = true;
@@ -327,7 +329,7 @@ Forced forced_run_on(const PocketRun& d, pocketwheel::GuideKind kind, double end
     g->contact_stiffness = d.contact_stiffness;
     g->contact_damping = d.contact_damping;
   }
-  model.guides = {lower, upper};
+  if (d.rails) model.guides = {lower, upper};
   State s(n, 1);
   const double polar_c = kPi / 2 + th0;
   // vertex 2m at ψ + mτ, 2m + 1 at ψ + mτ + δ1: the crank is odd when its upstream link is t − d
@@ -427,64 +429,89 @@ Forced forced_run_on(const PocketRun& d, pocketwheel::GuideKind kind, double end
   for (int b = 0; b < kBins; ++b) {
     const double phi = (b + 0.5) / kBins * tau;
     const double sim = count[b] ? sum[b] / count[b] : NAN;
-    out.worst =
-        std::max(out.worst, std::abs(sim - d.omega * pocketwheel::evaluate(plan, phi).dx) / vr);
+    const double dev = (sim - d.omega * pocketwheel::evaluate(plan, phi).dx) / vr;
+    out.rms += dev * dev / kBins;
+    out.worst = std::max(out.worst, std::abs(dev));
     out.worst_pivot = std::max(out.worst_pivot,
                                std::abs(sim - d.omega * pocketwheel::evaluate(pivot, phi).dx) / vr);
   }
+  out.rms = std::sqrt(out.rms);
   std::printf(
-      "%s l %.3f k %.2g F %.0f: worst %.4f (pivot %.4f), rail gap %.1f um, pen %.1f um, "
-      "40-150 Hz ripple %.2f mm/s, dD/dt %.2f mm/s, correlation %.3f\n",
-      pocketwheel::to_string(kind), l, d.stiffness, d.force, out.worst, out.worst_pivot,
-      out.rail_gap * 1e6, out.max_penetration * 1e6, out.ripple_rms * 1e3, out.shortening_rms * 1e3,
-      out.ripple_correlation);
+      "%s%s l %.3f k %.2g F %.0f, %d periods: worst %.4f (pivot %.4f), rms %.5f, rail gap %.1f um, "
+      "pen %.1f um, 40-150 Hz ripple %.2f mm/s, dD/dt %.2f mm/s, correlation %.3f\n",
+      pocketwheel::to_string(kind), d.rails ? "" : " (no rails)", l, d.stiffness, d.force,
+      d.periods, out.worst, out.worst_pivot, out.rms, out.rail_gap * 1e6, out.max_penetration * 1e6,
+      out.ripple_rms * 1e3, out.shortening_rms * 1e3, out.ripple_correlation);
   return out;
 }
 
 // The strand in the guide against catena pocketwheel's forced run-on (the paper's slider span;
 // the pivot span differs from it by < 0.12 % of ωR in speed), the paper's l = 256 mm, on the stiff
-// strand of the free run-on's passing case (k = 1.6e9 N/m), 10 tooth periods, the first 2
-// skipped (the synchronous average over 8).
-Forced forced(pocketwheel::GuideKind kind, double force) {
+// strand of the free run-on's passing case (k = 1.6e9 N/m), 10 tooth periods, the first 2 skipped
+// (the synchronous average over 8); without `rails` the same strand unguided.
+Forced forced(pocketwheel::GuideKind kind, double force, bool rails = true) {
   PocketRun d;
   d.stiffness = 1.6e9;
   d.force = force;
   d.periods = 10;
   d.skip_periods = 2;
+  d.rails = rails;
   d.strand_links = 70;  // 2 links leave the guide a period: 20 in all, the rest stays in it
   const Forced f = forced_run_on(d, kind, 0.256);
   EXPECT_TRUE(f.converged);
   // every joint held in its pocket (clearance 0.1 mm; F/k_c = 50 µm at 5 kN)
   EXPECT_LT(f.max_penetration, d.clearance);
   // the rails hold the guided joints on the guide line
-  EXPECT_LT(f.rail_gap, 1e-5);
+  if (rails) {
+    EXPECT_LT(f.rail_gap, 1e-5);
+  }
   return f;
 }
 
 // Within 1 % of ωR (the issue's tolerance, as for the free run-on): the tangential guide at 1, 2
-// and 5 kN (measured with the tension-only links 0.56 %, 0.47 %, 0.58 %; against the pivot span
-// 0.60 %, 0.38 %, 0.52 %) and the chordal guide at 5 kN (0.90 %).
+// and 5 kN and the chordal guide at 5 kN, each the largest deviation over the 40 bins.
 //
-// Pinned as measured: the chordal guide at low tension misses the 1 % (1.93 % at 1 kN; with the
-// bilateral links 0.98 % at 2 kN, at the edge and not asserted). The simulated speed follows the
-// kinematics' profile with a ripple (3.8° of φ by the bins, 89 Hz by its spectrum) that starts at
-// the seating on φ = 0 (the first bin, 0.955 against 0.971 ωR) and comes back every period, so the
-// synchronous average keeps it (over 18 periods: 1.64 % at 1 kN); it falls as the tension rises —
-// as the free run-on's slack strand. The tangential guide, whose seatings fall inside the period
-// (15.9° and 37.6°), passes at 1 kN. The ripple is the free span's transverse swing at twice its
-// frequency (asserted below; docs/models/dynamics.md, "Pocket wheel: forced run-on"). The first
-// bin's and the 18 periods' figures were measured with the bilateral links.
+// The runs are chaotic (docs/models/dynamics.md, "Pocket wheel: forced run-on", "The bounds
+// against the runs' scatter"): a change of the start or of Newton's tolerance at the picometre
+// level gives another trajectory, and the synchronous average keeps part of that. The bounds here
+// are set from the scatter measured over picometre lifts of the start (a probe kept out of the
+// suite), mean ± σ [range] with the seat damper's rotation term in the Newton matrix: largest
+// deviation, tangential 1 kN 0.560 ± 0.029 % [0.515, 0.601] (10 lifts), 2 kN 0.458 ± 0.028 %
+// [0.417, 0.501] (10), 5 kN 0.60 ± 0.08 % [0.34, 0.72] (30); chordal 5 kN 0.87 ± 0.06 % [0.75,
+// 0.98] (30): within 2.3 σ of the 1 %, a pass that a perturbation may turn (over 18 periods
+// 0.68-0.81 %, but in 1 of 30 such runs a joint came 17 mm into its pocket's wall, not understood:
+// not taken).
+//
+// The 1 % alone does not tell a guided strand from a free one (the speed profiles of free and
+// forced run-on differ by less than 1 % of ωR). The largest bin does not either: its σ at 5 kN is
+// up to 0.11 % of ωR, across any bound between guided and unguided. The rms over the bins does,
+// with room: guided 0.223 ± 0.005 % [0.215, 0.233] (1 kN), 0.129 ± 0.005 % [0.122, 0.136]
+// (2 kN), 0.149 ± 0.008 % [0.127, 0.165] (5 kN, 30 lifts); the same runs without the rails 0.298 ±
+// 0.003 % [0.291, 0.300], 0.323 ± 0.003 % [0.318, 0.329], 0.213 ± 0.007 % [0.205, 0.227]. Held to
+// 0.26 %: 7 σ above the guided 1 kN mean; the unguided 1 kN run (15 σ above it) is in the test,
+// so the bound is checked to tell the two apart. (The unguided 5 kN run's rms is below it: at 5 kN
+// the bound holds the guided run to its own level, 15 σ above its mean.)
+//
+// Pinned as measured: the chordal guide at low tension misses the 1 % (1.86-1.98 % at 1 kN over
+// the lifts; with the bilateral links 0.98 % at 2 kN, at the edge and not asserted). The simulated
+// speed follows the kinematics' profile with a ripple (3.8° of φ by the bins, 89 Hz by its
+// spectrum) that starts at the seating on φ = 0 (the first bin, 0.955 against 0.971 ωR) and comes
+// back every period, so the synchronous average keeps it (over 18 periods: 1.64 % at 1 kN); it
+// falls as the tension rises — as the free run-on's slack strand. The tangential guide, whose
+// seatings fall inside the period (15.9° and 37.6°), passes at 1 kN. The ripple is the free
+// span's transverse swing at twice its frequency (asserted below). The first bin's and the 18
+// periods' figures were measured with the bilateral links.
 TEST(DynamicsPocketWheel, ForcedRunOnStrandSpeedAgainstPocketwheel) {
   using pocketwheel::GuideKind;
+  constexpr double kRms = 0.0026;  // the rms bound (above): the guided runs below, unguided above
   for (double force : {1000.0, 2000.0, 5000.0}) {
     const Forced f = forced(GuideKind::kTangential, force);
     EXPECT_LT(f.worst, 0.01) << "tangential F " << force;
-    // the 1 % alone does not tell a guided strand from a free one: the same run without the
-    // rails deviates 0.73 %, 0.92 %, 0.86 % (measured). The free run-on's stiff strands level off
-    // at 0.5-0.6 %; 0.65 % holds the guided run and fails the unguided one.
-    EXPECT_LT(f.worst, 0.0065) << "tangential F " << force;
     EXPECT_LT(f.worst_pivot, 0.01) << "tangential F " << force;
+    EXPECT_LT(f.rms, kRms) << "tangential F " << force;
   }
+  const Forced free = forced(GuideKind::kTangential, 1000.0, false);
+  EXPECT_GT(free.rms, kRms);  // the strand without the rails: the bound tells it from the guided
   const Forced high = forced(GuideKind::kChordal, 5000.0);
   EXPECT_LT(high.worst, 0.01);
   EXPECT_LT(high.worst_pivot, 0.01);

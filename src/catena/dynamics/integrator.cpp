@@ -513,16 +513,16 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       // ∂(f n)/∂q = (∂f/∂g + c/(θh)) n nᵀ + (f/s)(I − n nᵀ), q = x_θ, ∂q/∂u = θ.
       // The damper's rate ġ = v_rel·n, v_rel = v − ω perp(q − c), also turns with the roller's
       // position: ∂ġ/∂q = (κ t·v_rel + ω) t, t = perp(n); its share c n (∂ġ/∂q)ᵀ is not
-      // symmetric (without it Newton converges only linearly while a wheel turns). ISO seats only:
-      // on the pocket wheel the term is right too (it matches the residual's differences), but its
-      // runs are chaotic, the steps' tolerance-level change grows, and the example's means and a
-      // check on them move; the default stays (docs/models/dynamics.md, "Not built yet").
+      // symmetric (without it Newton converges only linearly while a wheel turns). ISO seats and
+      // pockets alike (on the mouth's ramp the blocks are quasi-Newton anyway); a pocket with the
+      // release (Sprocket::pocket_release) has it in its exact blocks (dq_extra) already.
       const double normal = h * (th * sc.stiffness + sc.damping / h);
       const double tangent = h * th * sc.force * sc.curvature;
       const double rcx = qx - wheel.centre_x, rcy = qy - wheel.centre_y;
       const double tnx = -sc.ny, tny = sc.nx;
       const double slip = (vx + omega * rcy) * tnx + (vy - omega * rcx) * tny;
-      const double turn = wheel.pocket ? 0.0 : h * th * sc.damping * (sc.curvature * slip + omega);
+      const bool rotation = !(wheel.pocket && wheel.pocket_release);
+      const double turn = rotation ? h * th * sc.damping * (sc.curvature * slip + omega) : 0.0;
       const Mat2 dc{normal * sc.nx * sc.nx + tangent * (1.0 - sc.nx * sc.nx) + turn * sc.nx * tnx,
                     (normal - tangent) * sc.nx * sc.ny + turn * sc.nx * tny,
                     (normal - tangent) * sc.nx * sc.ny + turn * sc.ny * tnx,
@@ -547,7 +547,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       const Vec2 dtt{dc.a * tx + dc.c * ty, dc.b * tx + dc.d * ty};
       const double hf = h * th * sc.force;
       const double spin =  // h θ c n·perp(v)
-          wheel.pocket ? 0.0 : h * th * sc.damping * (sc.ny * vx - sc.nx * vy);
+          rotation ? h * th * sc.damping * (sc.ny * vx - sc.nx * vy) : 0.0;
       border_rows_[ia].push_back(i);
       bcol_[ia][i] = {-dt.x - hf * sc.ny - spin * sc.nx, -dt.y + hf * sc.nx - spin * sc.ny};
       brow_[ia][i] = {-dtt.x - hf * sc.ny, -dtt.y + hf * sc.nx};
