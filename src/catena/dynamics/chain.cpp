@@ -454,7 +454,7 @@ std::vector<Guide> lead_in_arcs(const Guide& rail, const LeadIn& lead) {
     g.start_angle = from;
     g.end_angle = to;
     g.inside = false;
-    g.load_per_metre = 0.0;   // the rail's load is the rail's (an arc carries none)
+    g.load_per_metre = 0.0;  // the rail's load is the rail's (an arc carries none)
     g.load_inertia = false;
     g.stick_stiffness = 0.0;  // a lead-in slides with the regularised law (not the rail's k_t)
     g.stick_damping = 0.0;
