@@ -16,6 +16,7 @@
 #include <tuple>
 
 #include "../dynamics/period_mean.hpp"
+#include "case_text.hpp"
 #include "chart_list.hpp"
 #include "cli_run.hpp"
 #include "lead_in_loop.hpp"
@@ -27,6 +28,43 @@ constexpr double kPi = std::numbers::pi;
 const std::string kExample = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_conveyor.toml";
 constexpr double kTensionTol = 0.01;  // issue 21 (6b)
 
+// The example's text sampled at every step (output_interval 0.1 ms instead of 1 ms).
+std::string example_every_step() {
+  std::ifstream in(kExample);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string example = text.str();
+  const std::string every_ms = "output_interval = \"1 ms\"";
+  const auto at = example.find(every_ms);
+  EXPECT_NE(at, std::string::npos) << "the example's output_interval";
+  if (at != std::string::npos) example.replace(at, every_ms.size(), "output_interval = \"0.1 ms\"");
+  return example;
+}
+
+// The two runs' mean tensions over the whole tooth periods after t0 = 0.4 s, their difference
+// over the contour method's: the example is 12B (1.25 kg/m), z = 16, 60 pitches, 5 rad/s,
+// μ = 0.3, guides from 3 to 57 pitches at the height R sin(π/z)/(π/z).
+struct RunsAgainstLoopModel {
+  double upper = 0.0, lower = 0.0, ratio = 0.0;
+};
+RunsAgainstLoopModel runs_against_loop_model(const nlohmann::json& j) {
+  const int z = 16;
+  const double p = 0.01905, omega = 5.0, mu = 0.3, q0 = 1.25 * 9.80665;
+  const double radius = 0.5 * p / std::sin(kPi / z);
+  const double lift = 2 * radius * std::sin(kPi / z) / (kPi / z);
+  const double carried = 54 * p + 3 * p;
+  const double period = 2 * kPi / (z * omega);
+  const double t0 = 0.4;
+  const auto time = j["time"].get<std::vector<double>>();
+  RunsAgainstLoopModel out;
+  out.upper =
+      mean_over_periods(time, j["span"][0]["tension"].get<std::vector<double>>(), t0, period);
+  out.lower =
+      mean_over_periods(time, j["span"][1]["tension"].get<std::vector<double>>(), t0, period);
+  out.ratio = (out.upper - out.lower) / (mu * q0 * carried + q0 * lift);
+  return out;
+}
+
 // The example sampled at every step (output_interval 0.1 ms instead of 1 ms) and run 1.6 s
 // instead of 0.8: the difference of the two means over (0.4 s, 0.8 s] of the 1 ms series
 // scattered by about ±1 % under picometre shifts of a rail (1.0100 on the example as it is, 1.0216
@@ -34,14 +72,7 @@ constexpr double kTensionTol = 0.01;  // issue 21 (6b)
 // the 1 ms sampling); at every step over (0.4 s, 1.6 s]: 1.0004, 1.0010, 1.0023 and 1.0007 with
 // the rail shifted by 0, 2, 3 and 5 pm (docs/models/dynamics.md, validation (6b)).
 TEST(DynamicsConveyorCli, RunTensionsDifferByTheLoopModelsResistance) {
-  std::ifstream in(kExample);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string example = text.str();
-  const std::string every_ms = "output_interval = \"1 ms\"";
-  const auto at = example.find(every_ms);
-  ASSERT_NE(at, std::string::npos) << "the example's output_interval";
-  example.replace(at, every_ms.size(), "output_interval = \"0.1 ms\"");
+  const std::string example = example_every_step();
   const fs::path dir = fs::temp_directory_path() / "catena_dynamics_conveyor_cli_test";
   fs::create_directories(dir);
   const fs::path path = dir / "every_step.toml";
@@ -54,22 +85,8 @@ TEST(DynamicsConveyorCli, RunTensionsDifferByTheLoopModelsResistance) {
   EXPECT_DOUBLE_EQ(j["gravity"].get<double>(), 9.80665);
   EXPECT_EQ(j["units"]["friction_work"], "J");
   EXPECT_LT(j["summary"]["friction_work"].get<double>(), 0.0);
-  const auto time = j["time"].get<std::vector<double>>();
-  // the example: 12B (1.25 kg/m), z = 16, 60 pitches, 5 rad/s, μ = 0.3, guides from 3 to 57
-  // pitches at the height R sin(π/z)/(π/z)
-  const int z = 16;
-  const double p = 0.01905, omega = 5.0, mu = 0.3, q0 = 1.25 * 9.80665;
-  const double radius = 0.5 * p / std::sin(kPi / z);
-  const double lift = 2 * radius * std::sin(kPi / z) / (kPi / z);
-  const double carried = 54 * p + 3 * p;
-  const double period = 2 * kPi / (z * omega);
-  const double t0 = 0.4;
-  const double upper =
-      mean_over_periods(time, j["span"][0]["tension"].get<std::vector<double>>(), t0, period);
-  const double lower =
-      mean_over_periods(time, j["span"][1]["tension"].get<std::vector<double>>(), t0, period);
-  EXPECT_NEAR((upper - lower) / (mu * q0 * carried + q0 * lift), 1.0, kTensionTol)
-      << "upper " << upper << " lower " << lower;
+  const RunsAgainstLoopModel m = runs_against_loop_model(j);
+  EXPECT_NEAR(m.ratio, 1.0, kTensionTol) << "upper " << m.upper << " lower " << m.lower;
 }
 
 // contact_law = "line" on the example (docs/models/dynamics.md, "Guides: the line law"): the
@@ -79,19 +96,13 @@ TEST(DynamicsConveyorCli, RunTensionsDifferByTheLoopModelsResistance) {
 // the docs). And the law's guide keys: a rail's penalty with the law, its material without it and
 // a material out of range are refused, each named.
 TEST(DynamicsConveyorCli, LineLawOnTheRailsHoldsTheLoopModel) {
-  std::ifstream in(kExample);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string example = text.str();
-  const std::string every_ms = "output_interval = \"1 ms\"";
-  ASSERT_NE(example.find(every_ms), std::string::npos);
-  example.replace(example.find(every_ms), every_ms.size(), "output_interval = \"0.1 ms\"");
+  const std::string example = example_every_step();
   const std::string penalty = "contact_stiffness = \"1e7 N/m\"\n";
   std::string line = example;
   for (std::size_t at = line.find(penalty); at != std::string::npos; at = line.find(penalty))
     line.erase(at, penalty.size());
   ASSERT_EQ(example.size() - line.size(), 4 * penalty.size());
-  line.insert(line.find("[dynamics]\n") + 11, "contact_law = \"line\"\n");
+  line = with_dynamics_key(line, "contact_law = \"line\"");
   const fs::path dir = fs::temp_directory_path() / "catena_dynamics_conveyor_cli_test";
   fs::create_directories(dir);
   auto write = [&](const std::string& name, const std::string& toml) {
@@ -122,20 +133,9 @@ TEST(DynamicsConveyorCli, LineLawOnTheRailsHoldsTheLoopModel) {
   EXPECT_TRUE(j["diagnostics"].empty()) << j["diagnostics"].dump();
   EXPECT_EQ(j["contact_law"], "line");
   EXPECT_EQ(j["guides"], 4);
-  const auto time = j["time"].get<std::vector<double>>();
-  const int z = 16;
-  const double p = 0.01905, omega = 5.0, mu = 0.3, q0 = 1.25 * 9.80665;
-  const double radius = 0.5 * p / std::sin(kPi / z);
-  const double lift = 2 * radius * std::sin(kPi / z) / (kPi / z);
-  const double carried = 54 * p + 3 * p;
-  const double period = 2 * kPi / (z * omega);
-  const double upper =
-      mean_over_periods(time, j["span"][0]["tension"].get<std::vector<double>>(), 0.4, period);
-  const double lower =
-      mean_over_periods(time, j["span"][1]["tension"].get<std::vector<double>>(), 0.4, period);
-  const double ratio = (upper - lower) / (mu * q0 * carried + q0 * lift);
-  std::printf("line law on the rails: (upper - lower) / loop model %.5f\n", ratio);
-  EXPECT_NEAR(ratio, 1.0, kTensionTol) << "upper " << upper << " lower " << lower;
+  const RunsAgainstLoopModel m = runs_against_loop_model(j);
+  std::printf("line law on the rails: (upper - lower) / loop model %.5f\n", m.ratio);
+  EXPECT_NEAR(m.ratio, 1.0, kTensionTol) << "upper " << m.upper << " lower " << m.lower;
 }
 
 TEST(DynamicsConveyorCli, EveryBadGuideFieldNamed) {

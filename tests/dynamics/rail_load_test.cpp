@@ -330,35 +330,56 @@ double share_integral(double a, double b, double len) {
   return sum;
 }
 
-// A 6-link chain slides down an inclined rail from an unloaded piece onto a loaded one collinear
-// with it (15°, μ = 0.1, θ = ½), crossing the loaded piece's first end: the load's work the steps
-// report is q_L p g·u Σ ∫ w(s) ds over each node's travel (its weight share along the rail, the
-// ramp included) within 1e-3, and the energy balance closes with it.
-TEST(RailLoad, WorkOfTheLoadIsItsWeightAlongTheTravel) {
-  const double beta = 15.0 * std::numbers::pi / 180.0, g0 = 9.81, q = 2.5, m = 0.024;
+// A 6-link chain (7 nodes, 24 g each) on two collinear pieces of a 15° rail (μ = 0.1, 1e6 N/m,
+// 100 N·s/m), the lower x from −2 m to 0 and the upper 0 to 1 m, the slope down −x, loaded with
+// q_L `lower_load` and `upper_load` (kg/m; `inertia`: load_inertia on the loaded ones), the chain
+// set on the upper piece at its rest sink (its rollers' mass and the load they carry there).
+constexpr double kSlope = 15.0 * std::numbers::pi / 180.0, kG = 9.81, kRollerMass = 0.024;
+struct InclinedJoint {
+  Model model;
+  State state;
+};
+InclinedJoint inclined_joint(double lower_load, double upper_load, bool inertia) {
   const std::size_t n = 7;
-  Model model = uniform_chain(n, false, kPitch, m, 2e6, 30.0, false);
-  model.gravity_x = -g0 * std::sin(beta);  // the rail along +x, the slope down −x
-  model.gravity_y = -g0 * std::cos(beta);
+  InclinedJoint out{uniform_chain(n, false, kPitch, kRollerMass, 2e6, 30.0, false), State(n, 0)};
+  Model& model = out.model;
+  model.gravity_x = -kG * std::sin(kSlope);  // the rail along +x, the slope down −x
+  model.gravity_y = -kG * std::cos(kSlope);
   Guide rail;
   rail.roller_radius = 0.006;
   rail.contact_stiffness = 1e6;
   rail.contact_damping = 100.0;
   rail.friction = 0.1;
-  Guide loaded = rail, bare = rail;
-  loaded.x0 = -2.0;
-  loaded.x1 = 0.0;  // its second end, where the chain comes from
-  loaded.load_per_metre = q;
-  bare.x0 = 0.0;
-  bare.x1 = 1.0;
-  model.guides = {loaded, bare};
-  State s(n, 0);
+  Guide lower = rail, upper = rail;
+  lower.x0 = -2.0;
+  lower.x1 = 0.0;  // its second end, where the chain comes from
+  upper.x0 = 0.0;
+  upper.x1 = 1.0;
+  lower.load_per_metre = lower_load;
+  upper.load_per_metre = upper_load;
+  lower.load_inertia = inertia && lower_load > 0.0;
+  upper.load_inertia = inertia && upper_load > 0.0;
+  model.guides = {lower, upper};
   const double sink =
-      m * g0 * std::cos(beta) / rail.contact_stiffness + 0.5 * rail.contact_smoothing;
+      (kRollerMass + upper_load * kPitch) * kG * std::cos(kSlope) / rail.contact_stiffness +
+      0.5 * rail.contact_smoothing;
   for (std::size_t i = 0; i < n; ++i) {
-    s.x[i] = 0.02 + kPitch * static_cast<double>(i);
-    s.y[i] = rail.roller_radius - sink;
+    out.state.x[i] = 0.02 + kPitch * static_cast<double>(i);
+    out.state.y[i] = rail.roller_radius - sink;
   }
+  return out;
+}
+
+// A 6-link chain slides down an inclined rail from an unloaded piece onto a loaded one collinear
+// with it (15°, μ = 0.1, θ = ½), crossing the loaded piece's first end: the load's work the steps
+// report is q_L p g·u Σ ∫ w(s) ds over each node's travel (its weight share along the rail, the
+// ramp included) within 1e-3, and the energy balance closes with it.
+TEST(RailLoad, WorkOfTheLoadIsItsWeightAlongTheTravel) {
+  const double q = 2.5;
+  const std::size_t n = 7;
+  InclinedJoint joint = inclined_joint(q, 0.0, false);
+  const Model& model = joint.model;
+  State& s = joint.state;
   const std::vector<double> x0 = s.x;
   const double e0 = energy(model, s).total();
   Integrator integ(model, {.step = 1e-4, .theta = 0.5});
@@ -366,7 +387,7 @@ TEST(RailLoad, WorkOfTheLoadIsItsWeightAlongTheTravel) {
   const double len = 2.0;
   double expected = 0.0;  // the load's weight along the travel, −x: q p g sin β per metre
   for (std::size_t i = 0; i < n; ++i)  // s along the loaded piece from its first end at x = −2
-    expected += q * kPitch * g0 * std::sin(beta) * share_integral(s.x[i] + 2.0, x0[i] + 2.0, len);
+    expected += q * kPitch * kG * std::sin(kSlope) * share_integral(s.x[i] + 2.0, x0[i] + 2.0, len);
   ASSERT_LT(s.x[n - 1], -0.5 * kPitch) << "every node crossed onto the loaded piece";
   EXPECT_GT(expected, 0.0);
   std::printf("the load's work %.6g J, its weight along the travel %.6g J (%+.2e)\n", s.load_work,
@@ -565,36 +586,13 @@ struct JointSlide {
   double numerical = 0.0;  // [J]
 };
 JointSlide slide_across_joint(bool lower_loaded, bool upper_loaded) {
-  const double beta = 15.0 * std::numbers::pi / 180.0, g0 = 9.81, q = 2.5, m = 0.024;
+  const double q = 2.5;
   const std::size_t n = 7;
-  Model model = uniform_chain(n, false, kPitch, m, 2e6, 30.0, false);
-  model.gravity_x = -g0 * std::sin(beta);  // the rail along +x, the slope down −x
-  model.gravity_y = -g0 * std::cos(beta);
-  Guide rail;
-  rail.roller_radius = 0.006;
-  rail.contact_stiffness = 1e6;
-  rail.contact_damping = 100.0;
-  rail.friction = 0.1;
-  Guide lower = rail, upper = rail;
-  lower.x0 = -2.0;
-  lower.x1 = 0.0;
-  upper.x0 = 0.0;
-  upper.x1 = 1.0;
-  lower.load_per_metre = lower_loaded ? q : 0.0;
-  upper.load_per_metre = upper_loaded ? q : 0.0;
-  lower.load_inertia = lower_loaded;
-  upper.load_inertia = upper_loaded;
-  model.guides = {lower, upper};
+  InclinedJoint joint = inclined_joint(lower_loaded ? q : 0.0, upper_loaded ? q : 0.0, true);
+  const Model& model = joint.model;
   EXPECT_TRUE(validate(model).empty());
-  JointSlide out{State(n, 0)};
+  JointSlide out{joint.state};
   State& s = out.s;
-  const double sink =
-      (m + (upper_loaded ? q * kPitch : 0.0)) * g0 * std::cos(beta) / rail.contact_stiffness +
-      0.5 * rail.contact_smoothing;
-  for (std::size_t i = 0; i < n; ++i) {
-    s.x[i] = 0.02 + kPitch * static_cast<double>(i);
-    s.y[i] = rail.roller_radius - sink;
-  }
   const double e0 = energy(model, s).total();
   Integrator integ(model, {.step = 1e-4, .theta = 0.5});
   for (int j = 0; j < 7000; ++j) {

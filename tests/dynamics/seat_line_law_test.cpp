@@ -221,21 +221,11 @@ TEST(DynamicsSeatLineLaw, NewtonMatrixMatchesTheResidualsDifferences) {
       jac_linear = jac;
       continue;
     }
-    double worst = 0.0, differs = 0.0, scale_all = 0.0;
-    for (std::size_t c = 0; c < size; ++c) {
-      const std::vector<double> fd =
-          testing::residual_difference(integ, l.model, l.state, u, c, c == 2 * n ? 1e-8 : 1e-10);
-      double scale = 0.0;
-      for (std::size_t r = 0; r < size; ++r) scale = std::max(scale, std::abs(fd[r]));
-      scale_all = std::max(scale_all, scale);
-      for (std::size_t r = 0; r < size; ++r) {
-        worst = std::max(worst, std::abs(jac[r * size + c] - fd[r]) / scale);
-        EXPECT_NEAR(jac[r * size + c], fd[r], 1e-5 * scale) << "row " << r << " column " << c;
-        differs = std::max(differs, std::abs(jac[r * size + c] - jac_linear[r * size + c]));
-      }
-    }
-    std::printf("line law's Newton matrix: worst |J - FD| / column scale %.2e\n", worst);
-    EXPECT_GT(differs, 0.1 * scale_all);
+    const testing::ColumnsAgainstDifferences d = testing::expect_columns_match_differences(
+        integ, l.model, l.state, u, jac, jac_linear,
+        [n](std::size_t c) { return c == 2 * n ? 1e-8 : 1e-10; }, 1e-5);
+    std::printf("line law's Newton matrix: worst |J - FD| / column scale %.2e\n", d.worst);
+    EXPECT_GT(d.differs, 0.1 * d.scale);
   }
 }
 
