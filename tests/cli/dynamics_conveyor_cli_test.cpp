@@ -27,6 +27,8 @@ namespace fs = std::filesystem;
 constexpr double kPi = std::numbers::pi;
 const std::string kExample = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_conveyor.toml";
 constexpr double kTensionTol = 0.01;  // issue 21 (6b)
+// the line law's run: its statistic's scatter under picometre shifts (1.9 % worst measured)
+constexpr double kLineLawTol = 0.025;
 
 // The example's text sampled at every step (output_interval 0.1 ms instead of 1 ms).
 std::string example_every_step() {
@@ -92,9 +94,13 @@ TEST(DynamicsConveyorCli, RunTensionsDifferByTheLoopModelsResistance) {
 // contact_law = "line" on the example (docs/models/dynamics.md, "Guides: the line law"): the
 // seats and the four steel rails follow the line contact's law (the rails' penalty lines taken
 // out: with the law they are refused), sampled at every step over 1.6 s as above; the two runs'
-// means still differ by the loop model's resistance within 1 % (measured: see the printout and
-// the docs). And the law's guide keys: a rail's penalty with the law, its material without it and
-// a material out of range are refused, each named.
+// means still differ by the loop model's resistance, within 2.5 %, not the 1 % of the penalty's
+// run: with the law the statistic scatters past 1 % under picometre shifts of a rail (1.0018,
+// 1.0111, 1.0048 and 1.0028 with the upper rail shifted by 0, 2, 3 and 5 pm; over the longer
+// window (0.4 s, 3.2 s] 1.0080 and 1.0191 at 3 and 5 pm, no steadier), docs/models/dynamics.md,
+// "Guides: the line law". And the law's guide keys: a rail's penalty with the law, its material
+// without it and a material out of range are refused, each named, and an arc whose radius gives
+// the law no finite constants is refused naming its radius.
 TEST(DynamicsConveyorCli, LineLawOnTheRailsHoldsTheLoopModel) {
   const std::string example = example_every_step();
   const std::string penalty = "contact_stiffness = \"1e7 N/m\"\n";
@@ -111,17 +117,24 @@ TEST(DynamicsConveyorCli, LineLawOnTheRailsHoldsTheLoopModel) {
     return path.string();
   };
   // the refusals first (nothing runs)
-  std::string stiff = line;  // a rail's own penalty with the law
-  stiff.insert(stiff.find("friction = 0.3\n"), penalty);
-  std::string material = example;  // the rail's material without the law
-  material.insert(material.find("friction = 0.3\n"), "rail_modulus = \"0.7 GPa\"\n");
-  std::string soft = line;  // a modulus out of range, a Poisson's ratio of 0.5
-  soft.insert(soft.find("friction = 0.3\n"), "rail_modulus = \"1 MPa\"\nrail_poisson = 0.5\n");
+  const std::string stiff = with_guide_key(line, 0, penalty);  // a rail's own penalty, the law
+  // the rail's material without the law
+  const std::string material = with_guide_key(example, 0, "rail_modulus = \"0.7 GPa\"");
+  // a modulus out of range, a Poisson's ratio of 0.5
+  const std::string soft = with_guide_key(line, 0, "rail_modulus = \"1 MPa\"\nrail_poisson = 0.5");
+  // the upper lead-in's arc at 1e-305 m: ρ as small makes C about 720, and the law's cap
+  // e^(C−2) overflows
+  std::string tiny = line;
+  const std::string arc = "radius = \"50 mm\"";
+  ASSERT_NE(tiny.find(arc), std::string::npos);
+  tiny.replace(tiny.find(arc), arc.size(), "radius = \"1e-305 m\"");
   for (const auto& [name, toml, what] :
        {std::tuple{"law_stiff.toml", stiff, "dynamics.guide[0].contact_stiffness"},
         std::tuple{"law_material.toml", material, "dynamics.guide[0].rail_modulus"},
         std::tuple{"law_soft.toml", soft, "dynamics.guide[0].rail_modulus"},
-        std::tuple{"law_soft.toml", soft, "dynamics.guide[0].rail_poisson"}}) {
+        std::tuple{"law_soft.toml", soft, "dynamics.guide[0].rail_poisson"},
+        std::tuple{"law_tiny_arc.toml", tiny, "dynamics.guide[1].radius (line"},
+        std::tuple{"law_tiny_arc.toml", tiny, "giving the line law finite constants (line: "}}) {
     const CliRun bad = run("dynamics " + write(name, toml));
     EXPECT_EQ(bad.status, 2) << name;
     EXPECT_NE(bad.err.find(what), std::string::npos) << name << "\n" << bad.err;
@@ -135,7 +148,7 @@ TEST(DynamicsConveyorCli, LineLawOnTheRailsHoldsTheLoopModel) {
   EXPECT_EQ(j["guides"], 4);
   const RunsAgainstLoopModel m = runs_against_loop_model(j);
   std::printf("line law on the rails: (upper - lower) / loop model %.5f\n", m.ratio);
-  EXPECT_NEAR(m.ratio, 1.0, kTensionTol) << "upper " << m.upper << " lower " << m.lower;
+  EXPECT_NEAR(m.ratio, 1.0, kLineLawTol) << "upper " << m.upper << " lower " << m.lower;
 }
 
 TEST(DynamicsConveyorCli, EveryBadGuideFieldNamed) {

@@ -2006,11 +2006,28 @@ Setup parse(const analysis::Inputs& in) {
     probe.gravity_y = -s.gravity;  // a load must press the chain onto its rail: n·g < 0
     if (s.pitch > 0.0) probe.pitch = s.pitch;  // a loaded arc's rollers' line: at least a pitch
     const bool weightless = guide.load_per_metre > 0.0 && !(s.gravity > 0.0);
-    for (const Issue& issue : validate(probe)) {
+    const std::vector<Issue> found = validate(probe);
+    const bool bad_material = std::any_of(found.begin(), found.end(), [](const Issue& x) {
+      return x.field == "guide[0].rail_modulus" || x.field == "guide[0].rail_poisson";
+    });
+    for (const Issue& issue : found) {
       if (issue.field.rfind("guide[0].", 0) != 0) continue;
       const std::string key = issue.field.substr(9);
       // a valid load without gravity is reported above: the core's n·g < 0 is that one again
       if (key == "load_per_metre" && weightless && guide.load_per_metre <= kMaxRailLoad) continue;
+      // the line law's constants (use_line_law) come from the rail's material and curvature:
+      // impossible ones are named on the arc's radius (a rail material in range and a roller
+      // give finite constants; a material out of range is named itself, with these its result)
+      if (key == "line" || key == "line_width" || key == "line_cap_depth") {
+        if (bad_material) continue;
+        const bool arc = guide.kind == Guide::Kind::kArc;
+        issues.push_back(
+            {field(arc ? "radius" : "rail_modulus"),
+             arc ? check::format_si(guide.radius, "m") : check::format_si(guide.rail.modulus, "Pa"),
+             std::string(arc ? "a radius" : "a rail") + " giving the line law finite constants (" +
+                 key + ": " + issue.expected + ")"});
+        continue;
+      }
       const bool given = key == "end" ? complete : g.seen.count(key) > 0;
       const bool derived = key == "roller_radius" || key == "contact_smoothing";
       if (!given && !derived) continue;
