@@ -514,8 +514,11 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       // The damper's rate ġ = v_rel·n, v_rel = v − ω perp(q − c), also turns with the roller's
       // position: ∂ġ/∂q = (κ t·v_rel + ω) t, t = perp(n); its share c n (∂ġ/∂q)ᵀ is not
       // symmetric (without it Newton converges only linearly while a wheel turns). ISO seats and
-      // pockets alike (on the mouth's ramp the blocks are quasi-Newton anyway); a pocket with the
-      // release (Sprocket::pocket_release) has it in its exact blocks (dq_extra) already.
+      // pockets alike; a pocket with the release (Sprocket::pocket_release) has it in its exact
+      // blocks (dq_extra) already. On the mouth's ramp (Sprocket::pocket_mouth > 0, no release) the
+      // term is approximate and untested: it takes the ramp's scaled damping as c and the force's
+      // direction as n, and the blocks there are quasi-Newton anyway (the ramp's own derivatives
+      // are left out); the command never sets a ramp.
       const double normal = h * (th * sc.stiffness + sc.damping / h);
       const double tangent = h * th * sc.force * sc.curvature;
       const double rcx = qx - wheel.centre_x, rcy = qy - wheel.centre_y;
