@@ -669,7 +669,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   // it, (m + m_L1)(v₁ − v₀) = h F. With v₁ − v₀ = (u − x₀ − h v₀)/hθ the diagonal block gains
   // m_L1/hθ I + a (∇m_L1)ᵀ, a = (v₁ − v₀) + [Δm_L > 0] v₀ (the mass's dependence on u through
   // the ramp w(s)).
-  if (any_load_inertia(model)) {
+  if (any_load_inertia(model.guides)) {
     const double ht = h * th;
     for (std::size_t i = 0; i < n; ++i) {
       if (model.is_pinned(i)) continue;
@@ -1198,7 +1198,7 @@ StepReport Integrator::step(const Model& model, State& s) {
   // (½ Δm_L v² at a steady speed: the inelastic catch); one whose load shrinks hands the leaving
   // material ½ |Δm_L| |v₀|² (the discharge). What is left of the balance is the θ-method's own
   // (θ − ½)(m + m_L1) |v₁ − v₀|².
-  if (any_load_inertia(model)) {
+  if (any_load_inertia(model.guides)) {
     for (std::size_t i = 0; i < n; ++i) {
       if (model.is_pinned(i)) continue;
       const double dm = load_mass(model, guide_frame_, ux_[i], uy_[i]).mass -
