@@ -35,6 +35,10 @@ struct ConveyorRun {
   std::vector<double> load_work;      // [J] the state's accumulated work of the rails' loads
   // [J] the state's accumulated catch and discharge works (Guide::load_inertia; ≤ 0)
   std::vector<double> catch_work, discharge_work;
+  // [J] the state's accumulated works of the links' dampers, the seats' and guides' contact
+  // dampers, and the rest of the dissipative forces (drag, seat and hinge friction, take-up
+  // dampers)
+  std::vector<double> damper_work, contact_damping_work, other_work;
   // [J] the driver's accumulated work on the chain after each step: the chain's torque on it at
   // each step's θ point (Integrator::applied_torque) over the step's turn
   std::vector<double> drive_work;
@@ -116,6 +120,10 @@ inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> pr
     out.load_work.push_back(s.load_work);
     out.catch_work.push_back(s.load_catch_work);
     out.discharge_work.push_back(s.load_discharge_work);
+    out.damper_work.push_back(s.damper_work);
+    out.contact_damping_work.push_back(s.contact_damping_work);
+    out.other_work.push_back(s.drag_work + s.seat_friction_work + s.hinge_work +
+                             s.takeup_damper_work);
     drive_work -= integ.applied_torque()[0] * (s.angle[0] - angle0);
     out.drive_work.push_back(drive_work);
     for (std::size_t i = 0; i < energy_at.size(); ++i) {
@@ -139,17 +147,29 @@ struct ConveyorMeans {
   double load_power = 0.0;      // [W] the rails' loads' work on the chain/time over the window
   // [W] −(the catch's work)/time and −(the discharge's work)/time over the window (load_inertia)
   double catch_power = 0.0, discharge_power = 0.0;
+  // The work balance over the window, between the samples its ends' energies were taken at: each
+  // term the power [W] it takes from the chain, −(its work)/time (the drive's and the loads' the
+  // power they give), `energy_rate` the loop's energy change/time and `numerical` the θ-method's
+  // rest, −(ΔE − Σ the works)/time (docs/models/dynamics.md, "Work balance").
+  struct Balance {
+    double drive = 0.0, load = 0.0, friction = 0.0, damper = 0.0, contact_damping = 0.0;
+    double other = 0.0, load_catch = 0.0, discharge = 0.0, energy_rate = 0.0, numerical = 0.0;
+  } balance;
 };
 
 // Conveyor `d` run for `duration` at h = 0.1 ms, its means over the whole tooth periods after
 // t0 = 0.4 s (the window's choice: tests/validation/dynamics_conveyor_incline_test.cpp).
 inline ConveyorMeans conveyor_means(const Conveyor& d, double duration = 2.0) {
   const double step = 1e-4, t0 = 0.4;
-  const ConveyorRun r = run_conveyor(d, conveyor_probes(d), duration, step);
-  EXPECT_EQ(r.time.size(), static_cast<std::size_t>(std::lround(duration / step)));
+  const double period = 2 * std::numbers::pi / (d.teeth * d.omega);
+  const long steps = std::lround(duration / step);
+  // the window's ends (as below, from the last step's time, here its nominal one)
+  const double t_last = static_cast<double>(steps) * step;
+  const ConveyorRun r = run_conveyor(d, conveyor_probes(d), duration, step, 0.0,
+                                     {t0, t0 + std::floor((t_last - t0) / period) * period});
+  EXPECT_EQ(r.time.size(), static_cast<std::size_t>(steps));
   ConveyorMeans m;
   if (r.time.empty() || r.time.back() < t0 + 0.1) return m;
-  const double period = 2 * std::numbers::pi / (d.teeth * d.omega);
   auto mean = [&](std::size_t k) {
     return mean_over_periods(r.time, r.probes[k].tension, t0, period);
   };
@@ -174,6 +194,23 @@ inline ConveyorMeans conveyor_means(const Conveyor& d, double duration = 2.0) {
   m.friction_power = -(w1 - w0) / (t_end - t0);
   m.drive_power = (p1 - p0) / (t_end - t0);
   m.load_power = (l1 - l0) / (t_end - t0);
+  const std::size_t a = r.energy_sample[0], b = r.energy_sample[1];
+  EXPECT_TRUE(a < r.time.size() && b < r.time.size() && a < b) << "the window's energies";
+  if (!(a < r.time.size() && b < r.time.size() && a < b)) return m;
+  const double span = r.time[b] - r.time[a];
+  auto rate = [&](const std::vector<double>& work) { return (work[b] - work[a]) / span; };
+  ConveyorMeans::Balance& e = m.balance;
+  e.drive = rate(r.drive_work);
+  e.load = rate(r.load_work);
+  e.friction = -rate(r.friction_work);
+  e.damper = -rate(r.damper_work);
+  e.contact_damping = -rate(r.contact_damping_work);
+  e.other = -rate(r.other_work);
+  e.load_catch = -rate(r.catch_work);
+  e.discharge = -rate(r.discharge_work);
+  e.energy_rate = (r.energy[1] - r.energy[0]) / span;
+  e.numerical = -(e.energy_rate - e.drive - e.load + e.friction + e.damper + e.contact_damping +
+                  e.other + e.load_catch + e.discharge);
   return m;
 }
 

@@ -102,7 +102,10 @@ TEST(DynamicsConveyorLoad, RisingLoadedRunMatchesTheLoopModel) {
 // guide's entry to three quarters along the guide, in its travel a quarter along) and the tight
 // side over the slack side both rise by q_L v² (the material arriving at rest is brought to the
 // chain's speed there; leaving, it takes its momentum along without a force), the drive's power by
-// q_L v³, and the work balance's catch and discharge each take ½ q_L v³ — each within 2 %.
+// q_L v³, and the work balance's catch and discharge each take ½ q_L v³. The step, the catch and
+// the discharge are held within 2 %, the tight side's and the drive's rise within 4 % (below), and
+// the drive's rise against what the work balance books to the load's inertia and to the loop's
+// losses within 2 %.
 TEST(DynamicsConveyorLoad, LoadInertiaCatchesTheLoadAtTheRailsEntry) {
   Conveyor d;
   d.load_per_metre = 3.0 * d.mass_per_metre;
@@ -128,14 +131,38 @@ TEST(DynamicsConveyorLoad, LoadInertiaCatchesTheLoadAtTheRailsEntry) {
       on.catch_power, 100 * (on.catch_power / (0.5 * power) - 1), on.discharge_power,
       100 * (on.discharge_power / (0.5 * power) - 1), off.catch_power, off.discharge_power);
   std::printf("friction power %.4f -> %.4f W\n", off.friction_power, on.friction_power);
+  // The work balance of each run over the window (ConveyorMeans::Balance): the drive's rise
+  // against the catch and discharge plus the change of the losses — the rails' friction, the
+  // links' and the contacts' dampers and the θ-method's rest. What is left is the change of the
+  // loop's stored energy over the window and of the loads' work (the numerical rest being the
+  // balance's remainder, adding those two would close it identically): measured −1.45 %, the
+  // stored energy falling by 0.128 W with the load's inertia (+0.032 W as weight only).
+  const testing::ConveyorMeans::Balance &b0 = off.balance, &b1 = on.balance;
+  const double drive_rise = b1.drive - b0.drive;
+  const double catches = b1.load_catch + b1.discharge - (b0.load_catch + b0.discharge);
+  const double losses = (b1.friction - b0.friction) + (b1.damper - b0.damper) +
+                        (b1.contact_damping - b0.contact_damping) + (b1.numerical - b0.numerical);
+  std::printf(
+      "balance (W, off -> on): drive %.4f -> %.4f, catch + discharge %.4f -> %.4f, friction "
+      "%.4f -> %.4f, link dampers %.4f -> %.4f, contact dampers %.4f -> %.4f, numerical %.4f -> "
+      "%.4f, others %.4f -> %.4f, loads %.4f -> %.4f, energy rate %.4f -> %.4f\n",
+      b0.drive, b1.drive, b0.load_catch + b0.discharge, b1.load_catch + b1.discharge, b0.friction,
+      b1.friction, b0.damper, b1.damper, b0.contact_damping, b1.contact_damping, b0.numerical,
+      b1.numerical, b0.other, b1.other, b0.load, b1.load, b0.energy_rate, b1.energy_rate);
+  std::printf(
+      "drive rise %.4f W against catch + discharge %.4f W + the losses' change %+.4f W "
+      "(%+.4f %%)\n",
+      drive_rise, catches, losses, 100 * (drive_rise / (catches + losses) - 1));
+  EXPECT_NEAR(drive_rise / (catches + losses), 1.0, kCarriedTol);
   EXPECT_NEAR((step_on - step_off) / force, 1.0, kCarriedTol);
   EXPECT_NEAR(on.catch_power / (0.5 * power), 1.0, kCarriedTol);
   EXPECT_NEAR(on.discharge_power / (0.5 * power), 1.0, kCarriedTol);
-  // The tight side and the drive's power see the rest of the loop as well: with the load's mass
-  // the carrying run's vibrations lose a little less in the rails' friction, the dampers and the
-  // θ-method (measured: the drive's rise 0.36 W short of the catch's and discharge's 11.61 W, the
-  // friction's share 0.07 W; q_L = 3 q at 15 and 45 rad/s and q_L = 10 q at 30 rad/s gave the
-  // drive's rise −0.43, −1.37 and +1.82 % off q_L v³), so these two are held to 4 %.
+  // The tight side and the drive's power see the rest of the loop as well (the balance above:
+  // the drive's rise 0.357 W short of the catch's and discharge's 11.611 W — the loop's stored
+  // energy 0.160 W, the rails' friction 0.069 W, the θ-method's rest 0.068 W, the contacts'
+  // dampers 0.046 W, the links' 0.008 W; q_L = 3 q at 15 and 45 rad/s and q_L = 10 q at 30 rad/s
+  // gave the drive's rise −0.43, −1.37 and +1.82 % off q_L v³), so these two are held to 4 %
+  // (measured −2.50 and −2.67 %).
   EXPECT_NEAR((rise_on - rise_off) / force, 1.0, kLoopTol);
   EXPECT_NEAR((on.drive_power - off.drive_power) / power, 1.0, kLoopTol);
 }

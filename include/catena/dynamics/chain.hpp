@@ -332,8 +332,8 @@ struct LoadMass {
   double dx = 0.0, dy = 0.0;  ///< [kg/m] ∂m_L/∂q
 };
 LoadMass load_mass(const Model& model, std::span<const GuideFrame> frames, double x, double y);
-/// Some guide with load_inertia and load_per_metre > 0.
-bool any_load_inertia(const Model& model);
+/// Some guide with load_inertia and load_per_metre > 0 (a model's or a case's guides).
+bool any_load_inertia(std::span<const Guide> guides);
 
 /// An axis-aligned box that holds every roller centre a guide can touch: guide_contact(g, x, y,
 /// …) is active only if guide_touch_possible(guide_bounds(g), x, y). A straight rail's segment

@@ -162,6 +162,10 @@ class Integrator {
   std::vector<Vec2> delta_;                  // Newton correction
   std::vector<double> psi1_;                 // sprocket angles at the end of the step (iterate)
   std::vector<double> slide1_;  // take-ups' slides at the end of the step (iterate), per wheel
+  // per node: the conveyed load's mass m_L at x₀ (Guide::load_inertia), fixed for the step: taken
+  // at the step's first assembly (its guides' frames then current), unset with l0_
+  std::vector<double> load_mass0_;
+  bool load_mass0_set_ = false;
   // The unknowns that border the chain's matrix: the driven wheels' angles in wheel order, then
   // the take-ups' slides in wheel order (docs/models/dynamics.md, "Take-up").
   struct Extra {

@@ -2283,12 +2283,6 @@ bool per_wheel_friction(const Setup& d) {
     if (!std::isnan(mu)) return true;
   return false;
 }
-// Some loaded guide with load_inertia: the work balance then carries the catch and discharge.
-bool any_load_inertia(const Setup& d) {
-  return std::any_of(d.guides.begin(), d.guides.end(),
-                     [](const Guide& g) { return g.load_inertia && g.load_per_metre > 0.0; });
-}
-
 // Some guide carrying a load (load_per_metre > 0).
 bool any_rail_load(const Setup& d) {
   return std::any_of(d.guides.begin(), d.guides.end(),
@@ -2650,7 +2644,7 @@ Result run(const analysis::Inputs& in) {
     out.energy_drift -= s.load_work;
   }
   // the load's catch and discharge (a run without load_inertia computes as before)
-  if (any_load_inertia(d)) {
+  if (any_load_inertia(d.guides)) {
     out.load_catch_work = s.load_catch_work;
     out.load_discharge_work = s.load_discharge_work;
     out.energy_drift -= s.load_catch_work + s.load_discharge_work;
@@ -2932,7 +2926,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
     if (hinge_on) j["summary"]["work_balance"]["hinge_friction"] = r.hinge_work;
     if (!r.takeup.empty()) j["summary"]["work_balance"]["takeup_dampers"] = r.takeup_damper_work;
     if (any_rail_load(d)) j["summary"]["work_balance"]["loads"] = r.load_work;
-    if (any_load_inertia(d)) {
+    if (any_load_inertia(d.guides)) {
       j["summary"]["work_balance"]["load_catch"] = r.load_catch_work;
       j["summary"]["work_balance"]["load_discharge"] = r.load_discharge_work;
     }
@@ -3356,7 +3350,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
       << (r.takeup.empty() ? std::string()
                            : "take-up dampers " + format_g(r.takeup_damper_work, 5) + " J, ")
       << (any_rail_load(d) ? "loads " + format_g(r.load_work, 5) + " J, " : std::string())
-      << (any_load_inertia(d)
+      << (any_load_inertia(d.guides)
               ? "load catch " + format_g(r.load_catch_work, 5) + " J, load discharge " +
                     format_g(r.load_discharge_work, 5) + " J, "
               : std::string())

@@ -534,8 +534,8 @@ LoadMass load_mass(const Model& model, std::span<const GuideFrame> frames, doubl
   return out;
 }
 
-bool any_load_inertia(const Model& model) {
-  return std::any_of(model.guides.begin(), model.guides.end(),
+bool any_load_inertia(std::span<const Guide> guides) {
+  return std::any_of(guides.begin(), guides.end(),
                      [](const Guide& g) { return g.load_inertia && g.load_per_metre > 0.0; });
 }
 
@@ -1309,7 +1309,7 @@ Energy energy(const Model& model, const State& state) {
   const std::size_t n = model.nodes();
   // the conveyed load's mass (Guide::load_inertia) moves with its node: its kinetic energy
   std::vector<GuideFrame> frames;
-  if (any_load_inertia(model))
+  if (any_load_inertia(model.guides))
     for (const Guide& g : model.guides) frames.push_back(guide_frame(g));
   for (std::size_t i = 0; i < n; ++i) {
     const double m = model.mass[i] +

@@ -80,6 +80,7 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
       delta_(model.nodes()),
       psi1_(model.sprockets.size()),
       slide1_(model.sprockets.size()),
+      load_mass0_(model.nodes()),
       angle_of_(model.sprockets.size(), static_cast<std::size_t>(-1)),
       slide_of_(model.sprockets.size(), static_cast<std::size_t>(-1)),
       slide_force_(model.sprockets.size()),
@@ -672,11 +673,16 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   // it, (m + m_L1)(v₁ − v₀) = h F. With v₁ − v₀ = (u − x₀ − h v₀)/hθ the diagonal block gains
   // m_L1/hθ I + a (∇m_L1)ᵀ, a = (v₁ − v₀) + [Δm_L > 0] v₀ (the mass's dependence on u through
   // the ramp w(s)).
-  if (any_load_inertia(model)) {
+  if (any_load_inertia(model.guides)) {
     const double ht = h * th;
+    if (!load_mass0_set_) {
+      for (std::size_t i = 0; i < n; ++i)
+        load_mass0_[i] = load_mass(model, guide_frame_, sx[i], sy[i]).mass;
+      load_mass0_set_ = true;
+    }
     for (std::size_t i = 0; i < n; ++i) {
       if (model.is_pinned(i)) continue;
-      const double m0 = load_mass(model, guide_frame_, sx[i], sy[i]).mass;
+      const double m0 = load_mass0_[i];
       const LoadMass m1 = load_mass(model, guide_frame_, ux[i], uy[i]);
       if (m0 == 0.0 && m1.mass == 0.0) continue;
       const double dm = m1.mass - m0, joins = dm > 0.0 ? dm : 0.0;
@@ -810,6 +816,7 @@ StepReport Integrator::step(const Model& model, State& s) {
     const double dx = s.x[b] - s.x[j], dy = s.y[b] - s.y[j];
     l0_[j] = std::sqrt(dx * dx + dy * dy);
   }
+  load_mass0_set_ = false;
   prepare_seats(model);
   // Newton from the predictor x₁ = x₀ + h v₀ + ht Δv: with ht = hθ, the velocities (and wheel
   // speeds) change over this step as over the last one (Δv the last accepted step's change, when
@@ -1201,11 +1208,10 @@ StepReport Integrator::step(const Model& model, State& s) {
   // (½ Δm_L v² at a steady speed: the inelastic catch); one whose load shrinks hands the leaving
   // material ½ |Δm_L| |v₀|² (the discharge). What is left of the balance is the θ-method's own
   // (θ − ½)(m + m_L1) |v₁ − v₀|².
-  if (any_load_inertia(model)) {
+  if (any_load_inertia(model.guides)) {
     for (std::size_t i = 0; i < n; ++i) {
       if (model.is_pinned(i)) continue;
-      const double dm = load_mass(model, guide_frame_, ux_[i], uy_[i]).mass -
-                        load_mass(model, guide_frame_, s.x[i], s.y[i]).mass;
+      const double dm = load_mass(model, guide_frame_, ux_[i], uy_[i]).mass - load_mass0_[i];
       const double v0x = s.vx[i], v0y = s.vy[i];
       const double v1x = (ux_[i] - s.x[i] - h * (1.0 - th) * v0x) / (h * th);
       const double v1y = (uy_[i] - s.y[i] - h * (1.0 - th) * v0y) / (h * th);
@@ -1277,6 +1283,7 @@ void Integrator::newton_system(const Model& model, const State& s, std::span<con
     const std::size_t b = (j + 1) % n;
     l0_[j] = std::hypot(s.x[b] - s.x[j], s.y[b] - s.y[j]);
   }
+  load_mass0_set_ = false;
   prepare_seats(model);
   for (std::size_t i = 0; i < n; ++i) {
     ux_[i] = unknowns[2 * i];
