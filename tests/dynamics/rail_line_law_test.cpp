@@ -3,9 +3,9 @@
 // convex arc (1/ρ = 1/r + 1/R) or in a concave one (1/ρ = 1/r − 1/R), its force Q(g) the inverse of
 // Johnson's plane-strain approach δ(Q), written out here from its formula (not through the
 // library), as the seats' (seat_line_law_test.cpp); its tangent and energy; the Newton matrix with
-// the law; a chain piece settling on a straight rail under gravity at the law's approach, on steel
-// and on a polymer rail; and the energy of a damped drop onto the rail, balanced by the work of
-// its damper.
+// the law (also with the stick law on an arc); a chain piece settling on a straight rail under
+// gravity at the law's approach, on steel and on a polymer rail; and the energy of a damped drop
+// onto the rail, balanced by the work of its damper.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -209,17 +209,27 @@ TEST(DynamicsRailLineLaw, ModelCheckNamesTheRailsFields) {
 // step's residual, every column: two linked rollers pressed 1–3 µm into a straight rail, an arc
 // from outside and one from inside, moving along and into it, with the rails' damping and
 // friction; and it is the law's matrix: it differs from the penalty's (1e7 N/m) at the same
-// iterate.
+// iterate. The arc from outside once more with the stick law (k_t = 1e6 N/m, "Guides: sticking"):
+// node 0 anchored within its spring's reach (sticking), node 1 beyond it (sliding at μ f of the
+// line law's force).
 TEST(DynamicsRailLineLaw, NewtonMatrixMatchesTheResidualsDifferences) {
   const double h = 1e-4;
-  const std::pair<Guide::Kind, bool> rails[] = {
-      {Guide::Kind::kStraight, false}, {Guide::Kind::kArc, false}, {Guide::Kind::kArc, true}};
-  for (const auto& [kind, inside] : rails) {
+  struct Case {
+    Guide::Kind kind;
+    bool inside;
+    double stick;  // [N/m] k_t (0: the regularised friction)
+  };
+  const Case rails[] = {{Guide::Kind::kStraight, false, 0.0},
+                        {Guide::Kind::kArc, false, 0.0},
+                        {Guide::Kind::kArc, true, 0.0},
+                        {Guide::Kind::kArc, false, 1e6}};
+  for (const auto& [kind, inside, stick] : rails) {
     std::vector<double> jac_linear;
     for (const bool line : {false, true}) {
       Guide g = rail(kind, inside);
       g.contact_damping = 200.0;
       g.friction = 0.3;
+      g.stick_stiffness = stick;
       g.line_law = line;
       Model m = uniform_chain(2, false, kPitch, kMass, 5e7, 100.0, false);
       m.gravity_y = -9.81;
@@ -244,17 +254,46 @@ TEST(DynamicsRailLineLaw, NewtonMatrixMatchesTheResidualsDifferences) {
         u[2 * i] = s.x[i] + h * s.vx[i] + jitter(rng);
         u[2 * i + 1] = s.y[i] + h * s.vy[i] + jitter(rng);
       }
+      if (stick > 0.0) {
+        // the anchors 0.5 and 3 reaches μ f/k_t behind the θ point, f its normal force
+        const GuideFrame f = guide_frame(g);
+        s.stick_anchor.assign(2, NAN);
+        for (std::size_t i = 0; i < 2; ++i) {
+          const double qx = s.x[i] + 0.6 * (u[2 * i] - s.x[i]);
+          const double qy = s.y[i] + 0.6 * (u[2 * i + 1] - s.y[i]);
+          const double vx = (u[2 * i] - s.x[i]) / h, vy = (u[2 * i + 1] - s.y[i]) / h;
+          const GuideContact c = guide_contact(g, f, qx, qy, vx, vy);
+          ASSERT_GT(c.normal_force, 0.0) << i;
+          const double reach = g.friction * c.normal_force / stick;
+          s.stick_anchor[i] = guide_position(g, f, qx, qy) - (i == 0 ? 0.5 : 3.0) * reach;
+          EXPECT_EQ(guide_contact(g, f, qx, qy, vx, vy, s.stick_anchor[i]).sticking, i == 0) << i;
+        }
+      }
       std::vector<double> r0, jac;
       integ.newton_system(m, s, u, r0, &jac);
+      if (stick > 0.0) {
+        // the stick law's share of the matrix is not negligible
+        Model bare = m;
+        bare.guides[0].stick_stiffness = 0.0;
+        Integrator plain(bare, {.step = h, .theta = 0.6});
+        std::vector<double> r1, without;
+        plain.newton_system(bare, s, u, r1, &without);
+        double scale = 0.0, share = 0.0;
+        for (std::size_t k = 0; k < jac.size(); ++k) {
+          scale = std::max(scale, std::abs(jac[k]));
+          share = std::max(share, std::abs(jac[k] - without[k]));
+        }
+        EXPECT_GT(share, 1e-3 * scale);
+      }
       if (!line) {
         jac_linear = jac;
         continue;
       }
       const testing::ColumnsAgainstDifferences d = testing::expect_columns_match_differences(
           integ, m, s, u, jac, jac_linear, [](std::size_t) { return 1e-9; }, 1e-5);
-      std::printf("rail line law's Newton matrix (%s): worst |J - FD| / column scale %.2e\n",
+      std::printf("rail line law's Newton matrix (%s%s): worst |J - FD| / column scale %.2e\n",
                   kind == Guide::Kind::kStraight ? "straight" : (inside ? "inside arc" : "arc"),
-                  d.worst);
+                  stick > 0.0 ? ", sticking" : "", d.worst);
       EXPECT_GT(d.differs, 0.1 * d.scale);
     }
   }

@@ -266,7 +266,11 @@ struct GuideContact {
   double damping_power = 0.0;
   /// [m] s along t (guide_position; stick law only, else 0)
   double position = 0.0;
-  bool sticking = false;  ///< the stick spring holds (|k_t (s − a) + c_t ṡ| ≤ μ f; stick law only)
+  /// σ in ∂s/∂q = σ t: ρ_c/|q − C| on an arc, 1 on a straight rail (stick law only, else 1); the
+  /// spring's force along t is σ k_t (s − a)
+  double position_scale = 1.0;
+  /// the stick spring holds (|σ (k_t (s − a) + c_t ṡ)| ≤ μ f; stick law only)
+  bool sticking = false;
   double nx = 0.0, ny = 0.0;    ///< unit normal to the free side
   double fx = 0.0, fy = 0.0;    ///< [N] F
   double dq[4] = {0, 0, 0, 0};  ///< [N/m] ∂F/∂q
@@ -285,10 +289,12 @@ GuideFrame guide_frame(const Guide& g);
 GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
                            double vy);
 /// guide_contact with the stick law (Guide::stick_stiffness > 0) about the anchor a [m] along t:
-/// the friction is −clamp(k_t (s − a) + c_t ṡ, −μ f, μ f) instead of the regularised law (s − a
-/// taken by stick_stretch; c_t = Guide::stick_damping), and its derivatives enter dq and dv (on an
-/// arc with ∂s/∂q = ρ_c tᵀ/|q − C| and t turning with the roller). A NaN anchor or k_t = 0: the
-/// regularised contact above, bit for bit.
+/// the friction is −clamp(σ (k_t (s − a) + c_t ṡ), −μ f, μ f) instead of the regularised law
+/// (s − a taken by stick_stretch; c_t = Guide::stick_damping; ∂s/∂q = σ tᵀ, σ = 1 on a straight
+/// rail and ρ_c/|q − C| on an arc, so that while it sticks the force is exactly −∂/∂q of
+/// ½ k_t (s − a)² plus the damper's −c_t ṡ ∂s/∂q), and its derivatives enter dq and dv (on an arc
+/// with σ's gradient and t turning with the roller). A NaN anchor or k_t = 0: the regularised
+/// contact above, bit for bit.
 GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
                            double vy, double anchor);
 /// [m] s, the tangential position along the contact's tangent t = (−n_y, n_x): on a straight rail
@@ -303,8 +309,9 @@ double guide_position(const Guide& g, const GuideFrame& frame, double x, double 
 double stick_stretch(const Guide& g, double s, double anchor);
 /// The anchor after a step whose contact (at the step's θ point, about the anchor `anchor`) was
 /// `c` and that ends at the position `end` [m] along t (s₁, guide_position): unchanged while
-/// |s₁ − a| (stick_stretch) is within the spring's reach μ f/k_t (f the θ point's normal force),
-/// else moved to s₁ ∓ μ f/k_t (the slip), so that the spring is left stretched by at most its
+/// |s₁ − a| (stick_stretch) is within the spring's reach μ f/(k_t σ) (f and σ the θ point's
+/// normal force and GuideContact::position_scale; the spring's force along t is σ k_t (s − a)),
+/// else moved to s₁ ∓ μ f/(k_t σ) (the slip), so that the spring is left stretched by at most its
 /// reach. NaN (released) when the contact is inactive or carries no normal force; `end` for a NaN
 /// anchor.
 double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor, double end);

@@ -111,21 +111,29 @@ ArcPlace arc_place(const Guide& g, double x, double y) {
 // on a straight rail s = (q − P₀)·t, ∂s/∂q = t (t = −u); on an arc ±ρ_c φ (arc_place; t is the
 // counter-clockwise tangent on an outside arc, the clockwise one inside), ∂s/∂q = ρ_c t/|q − C|.
 // On an arc also the Hessian of s, ∂²s/∂q² = [[hxx, hxy], [hxy, hyy]] (0 on a straight rail):
-// the stick damper's ∂ṡ/∂q = ∂²s/∂q² v.
+// the stick damper's ∂ṡ/∂q = ∂²s/∂q² v; and σ = ρ_c/|q − C|, ∂s/∂q = σ t, with its gradient
+// ∂σ/∂q = −ρ_c (q − C)/|q − C|³ (σ = 1 exactly, ∂σ/∂q = 0 on a straight rail).
 struct GuidePlace {
   double s = 0.0, dsx = 0.0, dsy = 0.0;
   double hxx = 0.0, hxy = 0.0, hyy = 0.0;
+  double sigma = 1.0, dsigx = 0.0, dsigy = 0.0;
 };
 GuidePlace guide_place(const Guide& g, const GuideFrame& frame, double x, double y) {
   if (g.kind == Guide::Kind::kStraight)
     return {-((x - g.x0) * frame.ux + (y - g.y0) * frame.uy), -frame.ux, -frame.uy};
   const ArcPlace p = arc_place(g, x, y);
   const double sgn = g.inside ? -1.0 : 1.0;
-  // ∂s/∂q = σ ρ_c (−r_y, r_x)/d²: its derivatives, with ∂(1/d²)/∂q = −2 r/d⁴
+  // ∂s/∂q = ±ρ_c (−r_y, r_x)/d² (+ outside): its derivatives, with ∂(1/d²)/∂q = −2 r/d⁴
   const double rx = x - g.centre_x, ry = y - g.centre_y, d2 = p.d * p.d;
   const double k = sgn * p.line / (d2 * d2);
-  return {sgn * p.s,         sgn * p.dsx, sgn * p.dsy, 2.0 * k * rx * ry, k * (ry * ry - rx * rx),
-          -2.0 * k * rx * ry};
+  GuidePlace out{
+      sgn * p.s,         sgn * p.dsx, sgn * p.dsy, 2.0 * k * rx * ry, k * (ry * ry - rx * rx),
+      -2.0 * k * rx * ry};
+  // σ = ρ_c/d, ∂σ/∂q = −ρ_c r/d³
+  out.sigma = p.line / p.d;
+  out.dsigx = -out.sigma * rx / d2;
+  out.dsigy = -out.sigma * ry / d2;
+  return out;
 }
 }  // namespace
 
@@ -565,9 +573,12 @@ double stick_stretch(const Guide& g, double s, double anchor) {
 double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor, double end) {
   if (!c.active || !(c.normal_force > 0.0)) return NAN;  // off the rail or lifting: released
   if (!std::isfinite(anchor)) return end;                // first touch: it sticks where it is
-  // the spring's reach μ f/k_t (the force the step applied): the spring is left at the step's end
-  // s₁ stretched by at most that, the anchor following the roller beyond it (the slip)
-  const double reach = g.friction * std::max(c.normal_force, 0.0) / g.stick_stiffness;
+  // the spring's reach (the force the step applied): the spring is left at the step's end
+  // s₁ stretched by at most that, the anchor following the roller beyond it (the slip); the
+  // spring's force along t is σ k_t (s − a) (∂s/∂q = σ t; σ = 1 on a straight rail), so its reach
+  // in s is μ f/(k_t σ), σ taken at the θ point
+  const double reach =
+      g.friction * std::max(c.normal_force, 0.0) / g.stick_stiffness / c.position_scale;
   const double d = stick_stretch(g, end, anchor);
   if (std::abs(d) <= reach) return anchor;
   return end - std::copysign(reach, d);
@@ -625,6 +636,7 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   if (stick) {
     place = guide_place(gd, frame, x, y);
     c.position = place.s;
+    c.position_scale = place.sigma;
   }
   c.energy = gd.line_law ? lf.energy
              : g < eps   ? kc * g * g * g / (6.0 * eps)
@@ -642,15 +654,19 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   // the friction f_t and its gradients, by the stick law or the regularised one
   double ft = 0.0, dftq[2] = {0.0, 0.0}, dftv[2] = {0.0, 0.0};
   if (stick) {
-    // the stick law: f_t = −k_t (s − a) − c_t ṡ while that is within ±μ f (∂s/∂q: tᵀ on a
-    // straight rail, ρ_c tᵀ/|q − C| on an arc, guide_place), else μ f against it (sliding); t
-    // turning with the roller on an arc is the −f_t κ n tᵀ term below
+    // the stick law: the spring's energy ½ k_t (s − a)² and the damper's dissipation ½ c_t ṡ²
+    // (Guide::stick_damping, ṡ = ∂s/∂q · v) give the force −(k_t (s − a) + c_t ṡ) ∂s/∂q, with
+    // ∂s/∂q = σ t (σ = 1 on a straight rail, ρ_c/|q − C| on an arc; guide_place): f_t = σ p,
+    // p = −k_t (s − a) − c_t ṡ, while that is within ±μ f, else μ f against it (sliding). Its
+    // gradient σ ∂p/∂q + p ∂σ/∂q, with t turning with the roller on an arc (the −f_t κ n tᵀ term
+    // below), makes ∂F/∂q = −k_t ∂s/∂q ∂s/∂qᵀ + p ∂²s/∂q² − c_t ∂s/∂q (∂²s/∂q² v)ᵀ.
     const double mu = gd.friction, kt = gd.stick_stiffness, ct = gd.stick_damping;
     const double d = stick_stretch(gd, c.position, anchor);
-    ft = -kt * d;
-    // the damper beside it (Guide::stick_damping): −c_t ṡ, ṡ = ∂s/∂q · v
+    const bool arc = gd.kind != Guide::Kind::kStraight;  // σ ≠ 1: straight rails kept bit for bit
+    double p = -kt * d;
     const double sdot = ct > 0.0 ? place.dsx * vx + place.dsy * vy : 0.0;
-    if (ct > 0.0) ft -= ct * sdot;
+    if (ct > 0.0) p -= ct * sdot;
+    ft = arc ? place.sigma * p : p;
     if (std::abs(ft) <= mu * f) {
       c.sticking = true;
       dftq[0] = -kt * place.dsx;
@@ -660,6 +676,14 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
         dftq[1] -= ct * (place.hxy * vx + place.hyy * vy);
         dftv[0] = -ct * place.dsx;
         dftv[1] = -ct * place.dsy;
+      }
+      if (arc) {
+        for (int j = 0; j < 2; ++j) {
+          dftq[j] *= place.sigma;
+          dftv[j] *= place.sigma;
+        }
+        dftq[0] += p * place.dsigx;
+        dftq[1] += p * place.dsigy;
       }
     } else {
       const double sgn = ft < 0.0 ? 1.0 : -1.0;  // against the spring and damper (d > 0: ft < 0)
