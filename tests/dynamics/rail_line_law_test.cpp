@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "catena/dynamics/integrator.hpp"
+#include "log_simpson.hpp"
 #include "residual_difference.hpp"
 
 namespace catena::dynamics {
@@ -114,14 +115,7 @@ double normal_stiffness(const GuideContact& c) {
 }
 // ∫ f dg' over [from, to] by Simpson's rule in s = ln g'
 double quadrature(const Guide& g, double from, double to) {
-  const int n = 16000;
-  const double a = std::log(from), b = std::log(to), h = (b - a) / n;
-  double sum = 0.0;
-  for (int i = 0; i <= n; ++i) {
-    const double d = std::exp(a + i * h);
-    sum += (i == 0 || i == n ? 1.0 : (i % 2 ? 4.0 : 2.0)) * at_depth(g, d).normal_force * d;
-  }
-  return sum * h / 3.0;
+  return testing::simpson_in_log(from, to, [&g](double d) { return at_depth(g, d).normal_force; });
 }
 
 // (1) The law against independent numerics on a flat steel rail, outside and inside a steel arc
