@@ -238,6 +238,12 @@ struct Guide {
   /// sticking f_t = −k_t (s − a) − c_t ṡ, ṡ = ∂s/∂q · v the roller's speed along the rail's
   /// parametrisation; the roller slides when that exceeds μ f. 0, the default: the bare spring.
   double stick_damping = 0.0;
+  /// The normal force's elastic part over a step (docs/models/dynamics.md, "Guides: the discrete
+  /// gradient"): true, the discrete gradient f_e = (E(g₁) − E(g₀))/(g₁ − g₀) of the contact's
+  /// energy between the gaps at the step's start and end (guide_contact with a GuideStep), so that
+  /// on a straight rail its work over the step is exactly −ΔE; false: the force at the θ point.
+  /// use_line_law sets it (the line law's default); the linear penalty keeps the θ point's.
+  bool discrete_gradient = false;
 };
 
 /// Turns a guide's rail to the line law over the roller's inner width `width` (b1): the roller
@@ -297,6 +303,23 @@ GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, do
 /// contact above, bit for bit.
 GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
                            double vy, double anchor);
+/// A step's ends for the discrete gradient (Guide::discrete_gradient): the roller's centre at the
+/// step's start x₀ (the state) and at its end x₁ (the iterate) [m], and the step h [s].
+struct GuideStep {
+  double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
+  double h = 0.0;
+};
+/// guide_contact over the step `step` (nullptr, or a guide without Guide::discrete_gradient: the
+/// θ point's force above, bit for bit). With it the elastic part is the discrete gradient
+/// (E(g₁) − E(g₀))/(g₁ − g₀) of the law's energy between the gaps g₀ at x₀ and g₁ at x₁, taken in
+/// the same rail's geometry (no end test; E = 0 for g ≤ 0), E'((g₀ + g₁)/2) where |g₁ − g₀| is
+/// below 1e-6 of the larger gap; the direction n, the ends' test, the far side's (g < 2r) and
+/// the damper c ġ stay at the θ point (x, y). It is active while the larger of g₀ and g₁ is
+/// positive (a roller dropping in from g₀ ≤ 0 is pushed on the step it enters; `penetration` is
+/// the θ point's gap, then ≤ 0 possibly). ∂f_e/∂x₁ = −(∂f_e/∂g₁) n₁ enters dv as h ∂f_e/∂x₁ (the
+/// velocity is (x₁ − x₀)/h), so that −(hθ dq + dv) is still the step's exact block.
+GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
+                           double vy, double anchor, const GuideStep* step);
 /// [m] s, the tangential position along the contact's tangent t = (−n_y, n_x): on a straight rail
 /// (q − P₀)·t from its first end (t = −u, u the direction from the first end to the second); on
 /// an arc ρ_c φ outside (t counter-clockwise) and −ρ_c φ inside (t clockwise), ρ_c φ the conveyed

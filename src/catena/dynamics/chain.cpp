@@ -584,8 +584,69 @@ double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor, 
   return end - std::copysign(reach, d);
 }
 
+namespace {
+// A rail's elastic part at the gap g (0 for g ≤ 0): the line law, or the penalty with its C¹ ramp
+// over the first ε.
+LineForce rail_elastic(const Guide& gd, double g) {
+  if (gd.line_law) return line_force(gd.line, g);
+  LineForce e;
+  if (!(g > 0.0)) return e;
+  const double eps = gd.contact_smoothing, kc = gd.contact_stiffness;
+  e.force = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
+  e.stiffness = g < eps ? kc * g / eps : kc;
+  e.energy =
+      g < eps ? kc * g * g * g / (6.0 * eps) : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
+  return e;
+}
+
+// The gap g at (x, y) in the rail's geometry with no test of its ends or sides (∂g/∂q = −n, n
+// returned): r − (q − P₀)·n on a straight rail, R + r − |q − C| outside an arc, |q − C| − (R − r)
+// inside it.
+double rail_gap(const Guide& gd, const GuideFrame& frame, double x, double y, double& nx,
+                double& ny) {
+  const double r = gd.roller_radius;
+  if (gd.kind == Guide::Kind::kStraight) {
+    nx = -frame.uy;
+    ny = frame.ux;
+    return r - ((x - gd.x0) * nx + (y - gd.y0) * ny);
+  }
+  const double rx = x - gd.centre_x, ry = y - gd.centre_y;
+  const double d = std::sqrt(rx * rx + ry * ry);
+  const double sgn = gd.inside ? -1.0 : 1.0;
+  nx = d > 0.0 ? sgn * rx / d : 0.0;
+  ny = d > 0.0 ? sgn * ry / d : 0.0;
+  return gd.inside ? d - (gd.radius - r) : gd.radius + r - d;
+}
+
+// The discrete gradient of the rail's energy between the gaps g0 and g1: f_e and ∂f_e/∂g₁.
+struct DiscreteGradient {
+  double force = 0.0, slope = 0.0;
+};
+DiscreteGradient discrete_gradient(const Guide& gd, double g0, double g1) {
+  DiscreteGradient out;
+  const double dg = g1 - g0;
+  // the quotient's rounding is ~1e-16 g/|dg| of the force: past 1e-6 of the gap, 1e-10; below it
+  // the midpoint's force, within (dg/g)² ~ 1e-12 of the quotient
+  if (std::abs(dg) > 1e-6 * std::max(std::abs(g0), std::abs(g1))) {
+    const LineForce e0 = rail_elastic(gd, g0), e1 = rail_elastic(gd, g1);
+    out.force = (e1.energy - e0.energy) / dg;
+    out.slope = (e1.force - out.force) / dg;
+  } else {
+    const LineForce m = rail_elastic(gd, 0.5 * (g0 + g1));
+    out.force = m.force;
+    out.slope = 0.5 * m.stiffness;
+  }
+  return out;
+}
+}  // namespace
+
 GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, double y, double vx,
                            double vy, double anchor) {
+  return guide_contact(gd, frame, x, y, vx, vy, anchor, nullptr);
+}
+
+GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, double y, double vx,
+                           double vy, double anchor, const GuideStep* step) {
   GuideContact c;
   const double r = gd.roller_radius;
   double g = 0.0, kappa = 0.0, nx = 0.0, ny = 0.0;
@@ -614,18 +675,32 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   }
   // One-sided: a roller whose centre is past the rail's surface is on its far side, not pressed
   // into it (so a rail does not catch the chain's other run behind it).
-  if (!(g > 0.0) || !(g < 2.0 * r)) return c;
+  if (!(g < 2.0 * r)) return c;
+  // the discrete gradient over the step: the gaps at its ends, ∂g₁/∂x₁ = −n₁
+  const bool gradient = step != nullptr && gd.discrete_gradient;
+  double g1 = 0.0, n1x = 0.0, n1y = 0.0;
+  DiscreteGradient dgr;
+  if (gradient) {
+    double n0x = 0.0, n0y = 0.0;
+    const double g0 = rail_gap(gd, frame, step->x0, step->y0, n0x, n0y);
+    g1 = rail_gap(gd, frame, step->x1, step->y1, n1x, n1y);
+    if (!(std::max(g0, g1) > 0.0)) return c;
+    dgr = discrete_gradient(gd, g0, g1);
+  } else if (!(g > 0.0)) {
+    return c;
+  }
   const double tx = -ny, ty = nx;
   const double vn = vx * nx + vy * ny, vt = vx * tx + vy * ty;
   const double rate = -vn;  // ġ
-  const double eps = gd.contact_smoothing, kc = gd.contact_stiffness;
-  // the normal force's elastic part: the line law (as the seats') or the penalty with its ramp
-  const LineForce lf = gd.line_law ? line_force(gd.line, g) : LineForce{};
-  const double elastic =
-      gd.line_law ? lf.force : (g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps));
-  const double slope = gd.line_law ? lf.stiffness : (g < eps ? kc * g / eps : kc);
-  const double cg = gd.contact_damping * std::min(1.0, g / eps);
-  const double dcg = g < eps ? gd.contact_damping / eps : 0.0;
+  const double eps = gd.contact_smoothing;
+  // the normal force's elastic part: the line law (as the seats') or the penalty with its ramp,
+  // at the θ point or the discrete gradient over the step
+  const LineForce lf = rail_elastic(gd, g);
+  const double elastic = gradient ? dgr.force : lf.force;
+  const double slope = gradient ? 0.0 : lf.stiffness;  // ∂f_e/∂q at the θ point
+  // the damper ramps in over the first ε (none at g ≤ 0, on a discrete gradient's entry or exit)
+  const double cg = gd.contact_damping * std::clamp(g / eps, 0.0, 1.0);
+  const double dcg = g > 0.0 && g < eps ? gd.contact_damping / eps : 0.0;
   c.active = true;
   c.penetration = g;
   c.nx = nx;
@@ -638,9 +713,7 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
     c.position = place.s;
     c.position_scale = place.sigma;
   }
-  c.energy = gd.line_law ? lf.energy
-             : g < eps   ? kc * g * g * g / (6.0 * eps)
-                         : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
+  c.energy = lf.energy;
   const double f = elastic + cg * rate;
   if (!(f > 0.0)) {  // separating: no force; the damper cancels the elastic part
     c.damping_power = elastic * rate;
@@ -650,7 +723,9 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   // f and its gradients (∂g/∂q = −n, ∂ġ/∂q = −κ v_t tᵀ, ∂ġ/∂v = −nᵀ)
   const double fg = slope + dcg * rate;
   const double dfq[2] = {-fg * nx - cg * kappa * vt * tx, -fg * ny - cg * kappa * vt * ty};
-  const double dfv[2] = {-cg * nx, -cg * ny};
+  // the discrete gradient's dependence on x₁ = x₀ + h v: h ∂f_e/∂x₁ = −h (∂f_e/∂g₁) n₁
+  const double dgv = gradient ? step->h * dgr.slope : 0.0;
+  const double dfv[2] = {-cg * nx - dgv * n1x, -cg * ny - dgv * n1y};
   // the friction f_t and its gradients, by the stick law or the regularised one
   double ft = 0.0, dftq[2] = {0.0, 0.0}, dftv[2] = {0.0, 0.0};
   if (stick) {
@@ -874,6 +949,7 @@ void use_line_law(Guide& g, double width) {
   if (g.kind == Guide::Kind::kArc) rho = 1.0 / (1.0 / r + (g.inside ? -1.0 : 1.0) / g.radius);
   g.line_law = true;
   g.line = make_line_law(contact::line_approach(Elastic{}, g.rail, rho, r), width);
+  g.discrete_gradient = true;  // the law's default ("Guides: the discrete gradient")
 }
 
 void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx, double vy,

@@ -37,14 +37,24 @@ std::size_t checked_nodes(const Model& model, const IntegratorOptions& options) 
 // Node i's contact with a guide at its θ point (qx, qy) of the step from x₀ (the state) to the
 // iterate u, with the step's velocity (u − x₀)/h: the force the step applies. The guide's bounds
 // cull first (exact: a roller outside them cannot touch it; guide_bounds), so that a node far
-// from a rail costs a few comparisons.
+// from a rail costs a few comparisons. With the discrete gradient (Guide::discrete_gradient) the
+// elastic part is taken over the step from x₀ to u, and a node is culled only when its θ point,
+// x₀ and u are all outside the bounds (a roller entering or leaving the rail on the step).
 GuideContact guide_contact_at_theta(const Guide& guide, const GuideFrame& frame,
                                     const GuideBounds& bounds, const State& s,
                                     const std::vector<double>& ux, const std::vector<double>& uy,
                                     std::size_t i, double qx, double qy, double h,
                                     double anchor = NAN) {
-  if (!guide_touch_possible(bounds, qx, qy)) return {};
-  return guide_contact(guide, frame, qx, qy, (ux[i] - s.x[i]) / h, (uy[i] - s.y[i]) / h, anchor);
+  const double vx = (ux[i] - s.x[i]) / h, vy = (uy[i] - s.y[i]) / h;
+  if (!guide.discrete_gradient) {
+    if (!guide_touch_possible(bounds, qx, qy)) return {};
+    return guide_contact(guide, frame, qx, qy, vx, vy, anchor);
+  }
+  if (!guide_touch_possible(bounds, qx, qy) && !guide_touch_possible(bounds, s.x[i], s.y[i]) &&
+      !guide_touch_possible(bounds, ux[i], uy[i]))
+    return {};
+  const GuideStep step{s.x[i], s.y[i], ux[i], uy[i], h};
+  return guide_contact(guide, frame, qx, qy, vx, vy, anchor, &step);
 }
 // The stick law's anchor of node i on the sticking guide `guide` (Guide::stick_stiffness) whose
 // anchors are the state's slot `slot` (State::stick_anchor) for the step from the state s: the
