@@ -1,7 +1,7 @@
-// Round-link chain on a pocket wheel, free and forced run-on (issue 21 validation (1), second half;
+// Round-link chain on a pocket wheel, free run-on (issue 21 validation (1), second half;
 // docs/models/dynamics.md, "Pocket wheel"): the strand's speed simulated by the chain dynamics
 // against the free run-on kinematics of seed 003 (catena::pocketwheel::run_on, the library behind
-// `catena pocketwheel`).
+// `catena pocketwheel`). The forced run-on, a slow test, is in dynamics_pocket_forced_test.cpp.
 //
 // The paper's example chain Ø18×64 on a pocket wheel of z = 8 turning at ω = 5 rad/s clockwise
 // (the strand comes in from −x over the top, the paper's frame). The strand is a straight run of
