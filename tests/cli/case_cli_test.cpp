@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 
+#include "../read_text.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -21,13 +22,6 @@ std::string write_case(const std::string& name, const std::string& text) {
   const fs::path path = fs::temp_directory_path() / ("catena_case_" + name + ".toml");
   std::ofstream(path) << text;
   return path.string();
-}
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 nlohmann::json run_json(const std::string& args) {
@@ -193,7 +187,7 @@ TEST(CaseCli, ReportIsOneSelfContainedHtmlFile) {
   // the built-in case, from a directory with nothing in it
   const CliRun r = run("report -o " + (dir / "r.html").string());
   ASSERT_EQ(r.status, 0) << r.err;
-  const std::string html = slurp(dir / "r.html");
+  const std::string html = read_text(dir / "r.html");
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   for (const char* fragment :
        {"<section id=\"hinge\" class=\"analysis\">",
@@ -312,7 +306,7 @@ TEST(CaseCli, DescriptionAndNotesReachTheReportOnly) {
   const fs::path out = fs::temp_directory_path() / "catena_prose.html";
   const CliRun r = run("report " + prose + " -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.err;
-  const std::string html = slurp(out);
+  const std::string html = read_text(out);
   EXPECT_NE(html.find("<section id=\"about\"><p>Why this case.</p><p>Second paragraph.</p>"),
             std::string::npos);
   EXPECT_NE(html.find("<div class=\"note\"><p>the free run-on</p></div>"), std::string::npos);

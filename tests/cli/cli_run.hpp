@@ -7,9 +7,9 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
+
+#include "../read_text.hpp"
 
 struct CliRun {
   int status = -1;
@@ -29,10 +29,7 @@ inline CliRun run(const std::string& args) {
     r.out.append(buffer.data(), n);
   const int status = ::pclose(pipe);
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(err_path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  r.err = ss.str();
+  r.err = read_text(err_path);
   std::filesystem::remove(err_path);
   return r;
 }

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "../read_text.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -202,10 +203,8 @@ TEST(ContactCli, SweepValuesCsvTableAndOutputFile) {
   const CliRun file = run(kContact + " --skew 0.7deg --format json --output " + path.string());
   ASSERT_EQ(file.status, 0) << file.err;
   EXPECT_TRUE(file.out.empty());
-  std::ifstream in(path);
-  std::stringstream content;
-  content << in.rdbuf();
-  EXPECT_EQ(content.str(), run(kContact + " --skew 0.7deg --format json").out);
+  const std::string content = read_text(path);
+  EXPECT_EQ(content, run(kContact + " --skew 0.7deg --format json").out);
   std::filesystem::remove(path);
 }
 

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "../read_text.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -104,12 +105,9 @@ TEST(DriveCli, TableAndDrawing) {
                        dxf.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("centre distance, polygon wrap"), std::string::npos) << r.out;
-  std::ifstream s(svg), d(dxf);
-  std::stringstream svg_text, dxf_text;
-  svg_text << s.rdbuf();
-  dxf_text << d.rdbuf();
-  EXPECT_NE(svg_text.str().find("<svg"), std::string::npos);
-  EXPECT_NE(dxf_text.str().find("CHAIN"), std::string::npos);
+  const std::string svg_text = read_text(svg), dxf_text = read_text(dxf);
+  EXPECT_NE(svg_text.find("<svg"), std::string::npos);
+  EXPECT_NE(dxf_text.find("CHAIN"), std::string::npos);
   std::filesystem::remove(svg);
   std::filesystem::remove(dxf);
 }
@@ -148,11 +146,9 @@ TEST(DriveCli, ExampleCaseGivesWhatTheCommandGives) {
   const auto html = std::filesystem::temp_directory_path() / "catena_cli_drive_report.html";
   const CliRun r = run("report " + example + " -o " + html.string());
   ASSERT_EQ(r.status, 0) << r.err;
-  std::ifstream in(html);
-  std::stringstream text;
-  text << in.rdbuf();
-  EXPECT_NE(text.str().find("<div class=\"drawing\">"), std::string::npos);
-  EXPECT_NE(text.str().find("Taut centre distance of the polygon wrap"), std::string::npos);
+  const std::string text = read_text(html);
+  EXPECT_NE(text.find("<div class=\"drawing\">"), std::string::npos);
+  EXPECT_NE(text.find("Taut centre distance of the polygon wrap"), std::string::npos);
   std::filesystem::remove(html);
 }
 

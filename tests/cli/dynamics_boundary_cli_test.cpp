@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "../read_text.hpp"
 #include "case_text.hpp"
 #include "cli_run.hpp"
 #include "lead_in_loop.hpp"
@@ -24,18 +25,11 @@ namespace {
 
 const std::string kExamples = CATENA_EXAMPLES_DIR;
 
-std::string read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 // The 12B example with each `key = ...` line set to `value` (a key it does not have goes first in
 // [dynamics]), written to `dir`/`name`.
 std::string example_with(const std::filesystem::path& dir, const std::string& name,
                          const std::vector<std::pair<std::string, std::string>>& values) {
-  std::string text = read(kExamples + "/dynamics_12B.toml");
+  std::string text = read_text(kExamples + "/dynamics_12B.toml");
   for (const auto& [key, value] : values) {
     const std::regex line("(^|\n)" + key + " *=[^\n]*");
     if (std::regex_search(text, line))
@@ -101,7 +95,7 @@ TEST(DynamicsBoundaryCli, EveryExampleDownToOneStepGivesNoNonFiniteResult) {
   for (const auto& entry : std::filesystem::directory_iterator(kExamples)) {
     const std::string name = entry.path().filename().string();
     if (name.rfind("dynamics_", 0) != 0 || entry.path().extension() != ".toml") continue;
-    const std::string text = read(entry.path().string());
+    const std::string text = read_text(entry.path().string());
     std::smatch step;
     ASSERT_TRUE(std::regex_search(text, step, step_line)) << name;
     const std::string one_step = step[2];
@@ -394,7 +388,7 @@ TEST(DynamicsBoundaryCli, ExtremeScalesAreRefusedNamingTheFieldAndItsRange) {
   // links, 450 rad/s ran 20 ms on examples/dynamics_pocketwheel.toml at 0.1 ms, 500 rad/s stopped
   // at 15.4 ms; at 0.05 ms 650 ran, 700 stopped at 11.1 ms)
   {
-    std::string text = read(kExamples + "/dynamics_pocketwheel.toml");
+    std::string text = read_text(kExamples + "/dynamics_pocketwheel.toml");
     text = std::regex_replace(text, std::regex("(^|\n)speed *=[^\n]*"), "$1speed = \"200 rad/s\"");
     const std::string pocket = (dir / "pocket.toml").string();
     std::ofstream(pocket) << text;
@@ -609,7 +603,7 @@ TEST(DynamicsBoundaryCli, AnErrorDiagnosticIsNamedOnStderrWithTheOutputWritten) 
                    ("catena_boundary_error_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const std::string path = (dir / "stiff_links.toml").string();
-  std::string text = read(kExamples + "/dynamics_12B.toml");
+  std::string text = read_text(kExamples + "/dynamics_12B.toml");
   text = std::regex_replace(text, std::regex("(^|\n)axial_stiffness *=[^\n]*"),
                             "$1axial_stiffness = \"1e9 N/m\"");
   text = std::regex_replace(text, std::regex("(^|\n)step *=[^\n]*"), "$1step = \"1 ms\"");

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "../read_text.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -24,10 +25,7 @@ const std::string kRoller = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_12B.to
 // run shortened to 10 ms; every replacement must hit.
 std::string edited(const std::string& example, const std::string& name,
                    std::vector<std::pair<std::string, std::string>> edits) {
-  std::ifstream in(example);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string s = text.str();
+  std::string s = read_text(example);
   edits.push_back({"duration = ", "duration = \"0.01 s\""});
   for (const auto& [from, to] : edits) {
     const std::size_t at = s.find("\n" + from);

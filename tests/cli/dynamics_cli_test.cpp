@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "../dynamics/period_mean.hpp"
+#include "../read_text.hpp"
 #include "case_text.hpp"
 #include "chart_list.hpp"
 #include "cli_run.hpp"
@@ -37,9 +38,7 @@ std::string write(const std::string& name, const std::string& text) {
 
 // The example's text without its `contact_stiffness` line (the key then takes its default).
 std::string example_without_contact_stiffness() {
-  std::stringstream text;
-  text << std::ifstream(kExample).rdbuf();
-  std::string out = text.str();
+  std::string out = read_text(kExample);
   const std::size_t at = out.find("contact_stiffness = ");
   if (at == std::string::npos) {
     ADD_FAILURE() << "the example has no contact_stiffness to leave out";
@@ -278,9 +277,8 @@ inertia = 0.01
 // input and friction works); without it the output has no such field. A value other than true or
 // false is named with its line.
 TEST(DynamicsCli, WorkBalanceIsOptInAndAddsUp) {
-  std::stringstream text;
-  text << std::ifstream(kExample).rdbuf();
-  const std::string with = with_dynamics_key(text.str(), "work_balance = true");
+  const std::string text = read_text(kExample);
+  const std::string with = with_dynamics_key(text, "work_balance = true");
   const CliRun r =
       run("dynamics " + write("balance.toml", with) + " --duration 0.1s --format json");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -304,7 +302,7 @@ TEST(DynamicsCli, WorkBalanceIsOptInAndAddsUp) {
   EXPECT_FALSE(p["units"].contains("work_balance"));
   EXPECT_EQ(p["summary"]["energy_drift"], j["summary"]["energy_drift"]);
 
-  const std::string bad = with_dynamics_key(text.str(), "work_balance = \"yes\"");
+  const std::string bad = with_dynamics_key(text, "work_balance = \"yes\"");
   const CliRun e = run("dynamics " + write("balance_bad.toml", bad));
   EXPECT_EQ(e.status, 2);
   EXPECT_NE(e.err.find("dynamics.work_balance"), std::string::npos) << e.err;
@@ -315,10 +313,8 @@ TEST(DynamicsCli, WorkBalanceIsOptInAndAddsUp) {
 // summary.seat_friction_work (< 0; with work_balance also in the balance), and the energy drift
 // is net of it, so the balance's terms still add up to it; without it none of these appear.
 TEST(DynamicsCli, SeatFrictionIsOptInAndInTheBalance) {
-  std::stringstream text;
-  text << std::ifstream(kExample).rdbuf();
-  const std::string with =
-      with_dynamics_key(text.str(), "work_balance = true\nseat_friction = 0.1");
+  const std::string text = read_text(kExample);
+  const std::string with = with_dynamics_key(text, "work_balance = true\nseat_friction = 0.1");
   const CliRun r = run("dynamics " + write("seat.toml", with) + " --duration 0.1s --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -344,9 +340,7 @@ TEST(DynamicsCli, SeatFrictionIsOptInAndInTheBalance) {
 // a different one on one wheel changes the run; a value outside [0, 1] is refused naming the
 // wheel's field and line, every one at once.
 TEST(DynamicsCli, SeatFrictionPerWheel) {
-  std::stringstream text;
-  text << std::ifstream(kExample).rdbuf();
-  const std::string base = text.str();
+  const std::string base = read_text(kExample);
   auto with = [&](const std::string& dynamics, const std::string& driver,
                   const std::string& driven) {
     std::string t = base;
@@ -400,9 +394,8 @@ TEST(DynamicsCli, SeatFrictionPerWheel) {
 // Without it there is no such field; the size is capped, and a value other than true or false
 // is named with its line.
 TEST(DynamicsCli, PositionsAreOptInAndMatchTheAnimation) {
-  std::stringstream text;
-  text << std::ifstream(kExample).rdbuf();
-  const std::string with = with_dynamics_key(text.str(), "positions = true");
+  const std::string text = read_text(kExample);
+  const std::string with = with_dynamics_key(text, "positions = true");
   const std::string file = write("positions.toml", with);
   const CliRun r = run("dynamics " + file + " --format json");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -432,9 +425,8 @@ TEST(DynamicsCli, PositionsAreOptInAndMatchTheAnimation) {
   const fs::path html = fs::temp_directory_path() / "catena_dynamics_cli_test" / "positions.html";
   const CliRun report = run("report " + file + " -o " + html.string());
   ASSERT_EQ(report.status, 0) << report.err;
-  std::stringstream page;
-  page << std::ifstream(html).rdbuf();
-  const auto extra = chart_list(page.str(), "catena-charts-extra");
+  const std::string page = read_text(html);
+  const auto extra = chart_list(page, "catena-charts-extra");
   ASSERT_EQ(extra.size(), 2u);
   const auto& frames = extra[1]["frames"];
   ASSERT_GE(frames.size(), 50u);
@@ -466,7 +458,7 @@ TEST(DynamicsCli, PositionsAreOptInAndMatchTheAnimation) {
   EXPECT_NE(big.err.find("at most 500000 node-samples"), std::string::npos) << big.err;
   EXPECT_NE(big.err.find("here 640032"), std::string::npos) << big.err;
 
-  const std::string bad = with_dynamics_key(text.str(), "positions = 1");
+  const std::string bad = with_dynamics_key(text, "positions = 1");
   const CliRun e = run("dynamics " + write("positions_bad.toml", bad));
   EXPECT_EQ(e.status, 2);
   EXPECT_NE(e.err.find("dynamics.positions"), std::string::npos) << e.err;
@@ -476,9 +468,7 @@ TEST(DynamicsCli, PositionsAreOptInAndMatchTheAnimation) {
 // Samples too sparse for the summary's window (one at t = 0 and one at the end): the summary is
 // the last sample alone, and says so — no whole periods, one sample.
 TEST(DynamicsCli, SummaryOfTooSparseSamplesIsTheLastSample) {
-  std::stringstream text;
-  text << std::ifstream(kExample).rdbuf();
-  std::string sparse = text.str();
+  std::string sparse = read_text(kExample);
   const std::size_t at = sparse.find("output_interval = ");
   ASSERT_NE(at, std::string::npos);
   sparse.replace(at, sparse.find('\n', at) - at, "output_interval = \"0.2 s\"");
@@ -544,10 +534,7 @@ TEST(DynamicsCli, ContactStiffnessDefaultsToTheHertzLineContact) {
 
   // the free layout (examples/dynamics_three_wheels.toml): the expected load is the pretension
   // plus each driven wheel's T_L/R (one driven z = 18 wheel with 10 N m here), and the same law
-  std::stringstream three_text;
-  three_text
-      << std::ifstream(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_three_wheels.toml").rdbuf();
-  std::string three = three_text.str();
+  std::string three = read_text(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_three_wheels.toml");
   const std::size_t k3 = three.find("contact_stiffness = ");
   ASSERT_NE(k3, std::string::npos);
   three.erase(k3, three.find('\n', k3) + 1 - k3);
@@ -630,10 +617,9 @@ TEST(DynamicsCli, LineContactLawRunsTheExampleDrive) {
   const auto ji = nlohmann::json::parse(idle_run.out);
   EXPECT_EQ(ji["contact_law"], "line");
   EXPECT_FALSE(ji.contains("contact_load"));  // the penalty given: no Hertz default reported
-  std::stringstream pocket_text;
-  pocket_text
-      << std::ifstream(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_pocketwheel.toml").rdbuf();
-  const std::string pocket = with_dynamics_key(pocket_text.str(), "contact_law = \"line\"");
+  const std::string pocket_text =
+      read_text(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_pocketwheel.toml");
+  const std::string pocket = with_dynamics_key(pocket_text, "contact_law = \"line\"");
   refused("law_pocket.toml", pocket, "dynamics.contact_law");
 }
 
@@ -645,9 +631,7 @@ TEST(DynamicsCli, ReportHasTimeSeriesSpectrumAndAnimation) {
   fs::create_directories(out.parent_path());
   const CliRun r = run("report " + kExample + " -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.err;
-  std::stringstream ss;
-  ss << std::ifstream(out).rdbuf();
-  const std::string html = ss.str();
+  const std::string html = read_text(out);
   EXPECT_LT(html.size(), 2'000'000u);  // the browser test's bound: Plotly's basic bundle + data
   const auto plain = chart_list(html, "catena-charts");
   const auto extra = chart_list(html, "catena-charts-extra");

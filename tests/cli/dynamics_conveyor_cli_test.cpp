@@ -18,6 +18,7 @@
 #include <utility>
 
 #include "../dynamics/period_mean.hpp"
+#include "../read_text.hpp"
 #include "case_text.hpp"
 #include "chart_list.hpp"
 #include "cli_run.hpp"
@@ -35,10 +36,7 @@ constexpr double kLineLawTol = 0.01;
 
 // The example's text sampled at every step (output_interval 0.1 ms instead of 1 ms).
 std::string example_every_step() {
-  std::ifstream in(kExample);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string example = text.str();
+  std::string example = read_text(kExample);
   const std::string every_ms = "output_interval = \"1 ms\"";
   const auto at = example.find(every_ms);
   EXPECT_NE(at, std::string::npos) << "the example's output_interval";
@@ -282,9 +280,8 @@ TEST(DynamicsConveyorCli, ReportAnimationDrawsTheGuides) {
   fs::create_directories(out.parent_path());
   const CliRun r = run("report " + kExample + " -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.err;
-  std::stringstream ss;
-  ss << std::ifstream(out).rdbuf();
-  const auto extra = chart_list(ss.str(), "catena-charts-extra");
+  const std::string page = read_text(out);
+  const auto extra = chart_list(page, "catena-charts-extra");
   ASSERT_EQ(extra.size(), 2u);
   const auto& frames = extra[1]["frames"];
   ASSERT_GE(frames.size(), 2u);

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "../read_text.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -21,10 +22,7 @@ const std::string kExample = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_12B.t
 // table (after its theta line).
 std::string example_with(const std::string& name, const std::string& extra,
                          const std::string& source = kExample) {
-  std::ifstream in(source);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string s = text.str();
+  std::string s = read_text(source);
   const std::size_t at = s.find("\n", s.find("theta = 0.6"));
   s.insert(at + 1, extra);
   const fs::path dir = fs::temp_directory_path() / "catena_dynamics_hinge_cli_test";

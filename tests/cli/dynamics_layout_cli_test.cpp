@@ -14,6 +14,7 @@
 
 #include "../dynamics/catenary_closed_form.hpp"
 #include "../dynamics/period_mean.hpp"
+#include "../read_text.hpp"
 #include "case_text.hpp"
 #include "cli_run.hpp"
 #include "lead_in_loop.hpp"
@@ -121,10 +122,9 @@ TEST(DynamicsLayoutCli, ThreeWheelLoopGivesItsClosedForms) {
 // wheel (its work < 0, and in the balance), positions every sample (each link a laid pitch
 // within its stretch, 0.2 %).
 TEST(DynamicsLayoutCli, SeatFrictionAndPositionsApplyToTheFreeLayout) {
-  std::stringstream text;
-  text << std::ifstream(kExample).rdbuf();
+  const std::string text = read_text(kExample);
   const std::string with =
-      with_dynamics_key(text.str(), "seat_friction = 0.05\npositions = true\nwork_balance = true");
+      with_dynamics_key(text, "seat_friction = 0.05\npositions = true\nwork_balance = true");
   const CliRun r =
       run("dynamics " + write("options.toml", with) + " --duration 20ms --format json");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -156,9 +156,7 @@ TEST(DynamicsLayoutCli, SeatFrictionAndPositionsApplyToTheFreeLayout) {
 // spans at the pretension).
 TEST(DynamicsLayoutCli, CentresOnALineStartAsTheTwoWheelLine) {
   const std::string line = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_12B.toml";
-  std::stringstream text;
-  text << std::ifstream(line).rdbuf();
-  std::string with = text.str();
+  std::string with = read_text(line);
   const std::size_t driver = with.find("role = \"driver\"\n");
   ASSERT_NE(driver, std::string::npos);
   with.insert(driver + 16, "centre_x = \"0 mm\"\ncentre_y = \"0 mm\"\n");
@@ -331,10 +329,10 @@ double tangent_normal(double ax, double ay, double ra, double bx, double by, dou
 // sags in the one span between two wheels wrapped on their outside instead, and the run starts
 // with no roller pressed into a tooth.
 TEST(DynamicsLayoutCli, SlackOnTheSerpentineSagsAwayFromTheBackSideIdler) {
-  std::stringstream example;
-  example << std::ifstream(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_serpentine.toml").rdbuf();
+  const std::string example =
+      read_text(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_serpentine.toml");
   // the path takes 59.14 pitches: 1.5 % of slack
-  const std::string text = with_dynamics_key(example.str(), "links = 60");
+  const std::string text = with_dynamics_key(example, "links = 60");
   const std::string file = write("serpentine_slack.toml", text);
   const CliRun table = run("dynamics " + file + " --duration 0.02s");
   ASSERT_EQ(table.status, 0) << table.err;
@@ -701,9 +699,7 @@ TEST(DynamicsLayoutCli, SlackBeyondTheHalfCircleStartsAsTheCatenary) {
 // `links_chosen` is reported only when `links` is omitted. A rail 30 mm outside the span's middle
 // is clear of the taut chain but inside the 60-link sag: refused, naming the guide.
 TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
-  std::stringstream example;
-  example << std::ifstream(kExample).rdbuf();
-  std::string text = example.str();
+  std::string text = read_text(kExample);
   const std::string key = "duration = \"1 s\"";
   const std::size_t at = text.find(key);
   ASSERT_NE(at, std::string::npos);
@@ -783,10 +779,7 @@ TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
 
   // slack_spans = "all": the 93 mm shared by the three spans (each between two wheels inside)
   auto with_key = [&](int links, const std::string& value) {
-    std::ifstream in(with_links(links));
-    std::stringstream t;
-    t << in.rdbuf();
-    std::string body = t.str();
+    std::string body = read_text(with_links(links));
     body.insert(body.find("gravity = true"), "slack_spans = \"" + value + "\"\n");
     return write("spans" + value + ".toml", body);
   };
@@ -810,9 +803,7 @@ TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
   EXPECT_NE(some.err.find("dynamics.slack_spans (line "), std::string::npos) << some.err;
   EXPECT_NE(some.err.find(") = 'some': expected lowest or all"), std::string::npos) << some.err;
   // on the two-wheel line (no centres) a refused value is named once, not quoted again as 'lowest'
-  std::stringstream line_case;
-  line_case << std::ifstream(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_12B.toml").rdbuf();
-  std::string line_body = line_case.str();
+  std::string line_body = read_text(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_12B.toml");
   line_body.insert(line_body.find("duration ="), "slack_spans = \"some\"\n");
   const CliRun line_some = run("dynamics " + write("line_some.toml", line_body));
   EXPECT_EQ(line_some.status, 2);
@@ -825,10 +816,8 @@ TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
       "\n[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"273 mm\"\ny0 = \"-155 mm\"\n"
       "x1 = \"299 mm\"\ny1 = \"-125 mm\"\n";
   auto with_rail = [&](int links) {
-    std::ifstream in(with_links(links));
-    std::stringstream t;
-    t << in.rdbuf();
-    return write("rail" + std::to_string(links) + ".toml", t.str() + rail);
+    const std::string body = read_text(with_links(links));
+    return write("rail" + std::to_string(links) + ".toml", body + rail);
   };
   const CliRun taut = run("dynamics " + with_rail(55) + " --duration 1ms --format json");
   EXPECT_EQ(taut.status, 0) << taut.err;
@@ -850,9 +839,7 @@ TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
 // links now start, the span hanging beyond its half circle as its catenary (before the catenary:
 // refused, the most that started 61).
 TEST(DynamicsLayoutCli, RefusedSlackNamesALimitThatStartsWithTheGuides) {
-  std::stringstream example;
-  example << std::ifstream(kExample).rdbuf();
-  const std::string text = example.str();
+  const std::string text = read_text(kExample);
   const std::string key = "duration = \"1 s\"";
   ASSERT_NE(text.find(key), std::string::npos);
   const std::string rail =
@@ -935,9 +922,7 @@ TEST(DynamicsLayoutCli, TableNamesTheLinksChosenAsTheJsonDoes) {
     const double shown = std::stod(table.out.substr(at + want.size()));
     EXPECT_NEAR(shown, slack_mm, 5e-4 * std::abs(slack_mm)) << table.out;  // 4 digits
   }
-  std::stringstream example;
-  example << std::ifstream(kExample).rdbuf();
-  std::string text = example.str();
+  std::string text = read_text(kExample);
   text.replace(text.find("duration = \"1 s\""), 16, "duration = \"1 ms\"\nlinks = 55");
   const CliRun given = run("dynamics " + write("given55.toml", text));
   ASSERT_EQ(given.status, 0) << given.err;
@@ -1012,9 +997,7 @@ TEST(DynamicsLayoutCli, TwoSaggingWallsOfANotchAreCheckedAgainstEachOther) {
 // (0.2012 m, the start's arc's, bisected by the command), which runs 2 ms without an error while 1
 // % more is refused; the end's arc alone names only sprocket[1] and its own, larger limit.
 TEST(DynamicsLayoutCli, ALeadInOnTheFreeLayoutMustClearTheWheelsWraps) {
-  std::stringstream example;
-  example << std::ifstream(kExample).rdbuf();
-  std::string text = example.str();
+  std::string text = read_text(kExample);
   const std::string key = "duration = \"1 s\"";
   ASSERT_NE(text.find(key), std::string::npos);
   text.replace(text.find(key), key.size(), "duration = \"2 ms\"");
@@ -1073,9 +1056,7 @@ TEST(DynamicsLayoutCli, ALeadInOnTheFreeLayoutMustClearTheWheelsWraps) {
 // is refused naming the sagging span and the largest radius that clears the sag (14.55 mm, which
 // starts); with the 55 links the path takes (laid taut) the same lead-in is accepted.
 TEST(DynamicsLayoutCli, ALeadInOnAStartWithSlackMustClearTheSaggingSpan) {
-  std::stringstream example;
-  example << std::ifstream(kExample).rdbuf();
-  const std::string text = example.str();
+  const std::string text = read_text(kExample);
   const std::string key = "duration = \"1 s\"";
   ASSERT_NE(text.find(key), std::string::npos);
   auto with = [&](int links, const std::string& radius) {

@@ -19,6 +19,7 @@
 #include <sstream>
 #include <string>
 
+#include "../read_text.hpp"
 #include "case_text.hpp"
 #include "cli_run.hpp"
 
@@ -27,11 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kExample = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_conveyor.toml";
 
-std::string example() {
-  std::stringstream text;
-  text << std::ifstream(kExample).rdbuf();
-  return text.str();
-}
+std::string example() { return read_text(kExample); }
 
 std::string write(const std::string& name, const std::string& text) {
   const fs::path dir = fs::temp_directory_path() / "catena_dynamics_load_cli_test";

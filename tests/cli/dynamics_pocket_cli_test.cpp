@@ -14,6 +14,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "../read_text.hpp"
 #include "case_text.hpp"
 #include "cli_run.hpp"
 
@@ -27,10 +28,7 @@ const std::string kExample = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_pocke
 // `from` is empty); every replacement must hit.
 std::string example_with(const std::string& name,
                          const std::vector<std::pair<std::string, std::string>>& edits) {
-  std::ifstream in(kExample);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string s = text.str();
+  std::string s = read_text(kExample);
   for (const auto& [from, to] : edits) {
     if (from.empty()) {
       s = with_dynamics_key(s, to);
@@ -333,11 +331,9 @@ TEST(DynamicsPocketCli, FieldsThatDoNotFitAPocketWheelAreNamedAtOnce) {
   named(kind, {"dynamics.wheel", "iso606 or pocket"});
   // and the pocket's keys on a roller chain
   const std::string roller = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_12B.toml";
-  std::ifstream in(roller);
-  std::stringstream text;
-  text << in.rdbuf();
+  const std::string text = read_text(roller);
   const std::string s =
-      with_dynamics_key(text.str(), "wire_diameter = \"5 mm\"\npocket_clearance = \"0.1 mm\"");
+      with_dynamics_key(text, "wire_diameter = \"5 mm\"\npocket_clearance = \"0.1 mm\"");
   const fs::path p = fs::temp_directory_path() / "catena_dynamics_pocket_cli_test" / "roller.toml";
   std::ofstream(p) << s;
   const CliRun r = run("dynamics " + p.string() + " --format json");

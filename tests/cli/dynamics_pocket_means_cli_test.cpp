@@ -19,6 +19,7 @@
 #include <sstream>
 #include <vector>
 
+#include "../read_text.hpp"
 #include "catena/dynamics/period_means.hpp"
 #include "cli_run.hpp"
 
@@ -67,10 +68,7 @@ Spread spread(const nlohmann::json& j, int span) {
 }
 
 std::string perturbed_example() {
-  std::ifstream in(kExample);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string s = text.str();
+  std::string s = read_text(kExample);
   const std::string from = "pretension = \"1000 N\"";
   const std::size_t at = s.find(from);
   EXPECT_NE(at, std::string::npos);

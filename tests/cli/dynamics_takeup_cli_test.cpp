@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "../read_text.hpp"
 #include "case_text.hpp"
 #include "chart_list.hpp"
 #include "cli_run.hpp"
@@ -35,11 +36,7 @@ constexpr double kPitch = 0.01905;  // 12B
 constexpr double kMass = 1.25;      // 12B: q [kg/m]
 const std::string kExample = std::string(CATENA_EXAMPLES_DIR) + "/dynamics_takeup.toml";
 
-std::string example_text() {
-  std::stringstream text;
-  text << std::ifstream(kExample).rdbuf();
-  return text.str();
-}
+std::string example_text() { return read_text(kExample); }
 
 std::string write(const std::string& name, const std::string& text) {
   const fs::path dir = fs::temp_directory_path() / "catena_dynamics_takeup_cli_test";
@@ -322,9 +319,8 @@ TEST(DynamicsTakeupCli, AnimationOutlineFollowsTheSlide) {
   const fs::path html = fs::temp_directory_path() / "catena_dynamics_takeup_cli_test" / "r.html";
   const CliRun report = run("report " + file + " -o " + html.string());
   ASSERT_EQ(report.status, 0) << report.err;
-  std::stringstream page;
-  page << std::ifstream(html).rdbuf();
-  const auto extra = chart_list(page.str(), "catena-charts-extra");
+  const std::string page = read_text(html);
+  const auto extra = chart_list(page, "catena-charts-extra");
   ASSERT_EQ(extra.size(), 2u);
   const auto& frames = extra[1]["frames"];
   ASSERT_GE(frames.size(), 10u);
@@ -368,9 +364,8 @@ TEST(DynamicsTakeupCli, SpectrumStartChoosesTheWindow) {
         fs::temp_directory_path() / "catena_dynamics_takeup_cli_test" / (name + ".html");
     const CliRun report = run("report " + write(name + ".toml", toml) + " -o " + html.string());
     EXPECT_EQ(report.status, 0) << report.err;
-    std::stringstream page;
-    page << std::ifstream(html).rdbuf();
-    const auto extra = chart_list(page.str(), "catena-charts-extra");
+    const std::string page = read_text(html);
+    const auto extra = chart_list(page, "catena-charts-extra");
     EXPECT_EQ(extra.size(), 2u);
     return extra.empty() ? nlohmann::json::object() : extra[0];
   };

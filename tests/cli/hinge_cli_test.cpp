@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "../read_text.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -115,13 +116,10 @@ TEST(HingeCli, WritesTheApertureAsSvgAndDxf) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["aperture"]["clearance"].get<double>(), 0.3e-3, kExactLengthTol);
   EXPECT_NEAR(j["aperture"]["ymin"].get<double>(), -0.0203, kMicronTol);
-  std::ifstream s(svg), d(dxf);
-  std::stringstream svg_text, dxf_text;
-  svg_text << s.rdbuf();
-  dxf_text << d.rdbuf();
-  EXPECT_NE(svg_text.str().find("</svg>"), std::string::npos);
-  EXPECT_NE(dxf_text.str().find("APERTURE"), std::string::npos);
-  EXPECT_NE(dxf_text.str().find("$INSUNITS"), std::string::npos);
+  const std::string svg_text = read_text(svg), dxf_text = read_text(dxf);
+  EXPECT_NE(svg_text.find("</svg>"), std::string::npos);
+  EXPECT_NE(dxf_text.find("APERTURE"), std::string::npos);
+  EXPECT_NE(dxf_text.find("$INSUNITS"), std::string::npos);
   std::filesystem::remove(svg);
   std::filesystem::remove(dxf);
 }

@@ -26,6 +26,8 @@
 #include <thread>
 #include <vector>
 
+#include "../read_text.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -76,13 +78,6 @@ double cpu_seconds(pid_t pid) {
 
 double seconds_of(const timeval& t) {
   return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
-}
-
-std::string read_all(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 // A fresh, empty folder for one test's files.
@@ -186,8 +181,8 @@ Stopped interrupt(const std::vector<std::string>& args, const fs::path& dir,
   }
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   r.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
-  r.out = read_all(out);
-  r.err = terminal ? shown : read_all(err);
+  r.out = read_text(out);
+  r.err = terminal ? shown : read_text(err);
   fs::remove(out);
   fs::remove(err);
   return r;

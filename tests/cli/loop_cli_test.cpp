@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "../read_text.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -105,10 +106,8 @@ TEST(LoopCli, CsvIsThePointsTableAndTableIsReadable) {
   const CliRun o = run("loop " + file + " --format csv -o " + out);
   ASSERT_EQ(o.status, 0) << o.err;
   EXPECT_TRUE(o.out.empty());
-  std::ifstream in(out);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  EXPECT_EQ(ss.str(), csv.out);
+  const std::string written = read_text(out);
+  EXPECT_EQ(written, csv.out);
 }
 
 TEST(LoopCli, DiagnosticsCarryTheirLimits) {
@@ -216,10 +215,7 @@ TEST(LoopCli, ReportShowsLengthsInMetresAndTensionsInKilonewtons) {
       (std::filesystem::temp_directory_path() / "catena_loop_cli_report.html").string();
   const CliRun r = run("report " + std::string(CATENA_EXAMPLES_DIR) + "/000_loop.toml -o " + out);
   ASSERT_EQ(r.status, 0) << r.err;
-  std::ifstream in(out, std::ios::binary);
-  std::stringstream html;
-  html << in.rdbuf();
-  const std::string page = html.str();
+  const std::string page = read_text(out);
   for (const char* row :
        {"<td>Loop length L</td><td class=\"value\">90</td><td>m</td>",
         "<td>… at path length s</td><td class=\"value\">90</td><td>m</td>",

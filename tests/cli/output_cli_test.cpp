@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "../read_text.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -21,13 +22,6 @@ fs::path scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("catena_output_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir / name;
-}
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 bool has_full_device() { return fs::is_character_file("/dev/full"); }
@@ -92,7 +86,7 @@ TEST(OutputCli, AnOutputThroughASymbolicLinkWritesItsTargetAndKeepsTheLink) {
   const CliRun r = run(kWheel + "--format json --output " + link.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::is_symlink(link));
-  const std::string written = slurp(target);
+  const std::string written = read_text(target);
   EXPECT_EQ(written.rfind("{", 0), 0u) << written.substr(0, 40);
   // a dangling link: its target is created, the link kept
   fs::remove(target);
@@ -121,7 +115,7 @@ TEST(OutputCli, ControlCharactersInACaseReachTheReportAsVisibleSymbols) {
   const fs::path html = scratch("control.html");
   const CliRun r = run("report " + case_path.string() + " -o " + html.string());
   ASSERT_EQ(r.status, 0) << r.err;
-  const std::string page = slurp(html);
+  const std::string page = read_text(html);
   EXPECT_EQ(page.find('\0'), std::string::npos);
   EXPECT_EQ(page.find('\a'), std::string::npos);
   EXPECT_NE(page.find("Wheel\u2400A\u2407B"), std::string::npos);
@@ -183,7 +177,7 @@ TEST(OutputCli, TwoOutputsToHardLinksOfOneFileAreRefused) {
   EXPECT_NE(r.err.find("--output"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("--csv"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("are one file"), std::string::npos) << r.err;
-  EXPECT_EQ(slurp(first), "old");  // nothing written, the links not split apart
+  EXPECT_EQ(read_text(first), "old");  // nothing written, the links not split apart
   EXPECT_TRUE(fs::equivalent(first, second));
 }
 
@@ -203,12 +197,12 @@ TEST(OutputCli, AnOutputOntoTheCaseFileIsRefused) {
     EXPECT_EQ(r.status, 2) << command << "\n" << r.err;
     EXPECT_NE(r.err.find("--output"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("CASE"), std::string::npos) << r.err;
-    EXPECT_EQ(slurp(case_path), kCase) << command;  // the case is still the case
+    EXPECT_EQ(read_text(case_path), kCase) << command;  // the case is still the case
   }
   const fs::path result = scratch("own.json");
   const CliRun elsewhere = run("run " + case_path.string() + " -o " + result.string());
   EXPECT_EQ(elsewhere.status, 0) << elsewhere.err;
-  EXPECT_EQ(slurp(result).rfind("{", 0), 0u);
+  EXPECT_EQ(read_text(result).rfind("{", 0), 0u);
 }
 
 TEST(OutputCli, ACaseFileOverTheCapNamesItsSizeAndTheCap) {

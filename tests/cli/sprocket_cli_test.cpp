@@ -7,18 +7,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "../read_text.hpp"
 #include "cli_run.hpp"
 
 namespace {
 
 constexpr double kPrintedTol = 0.5e-6;  // [m] a value printed to 0.001 mm
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 TEST(SprocketCli, JsonCarriesTheContractFields) {
   const CliRun r = run("sprocket --chain 12B --teeth 17 --format json");
@@ -81,8 +75,8 @@ TEST(SprocketCli, WritesTheDrawingAsSvgAndDxf) {
   const CliRun r = run("sprocket --chain 12B --teeth 17 --svg " + (dir / "s.svg").string() +
                        " --dxf " + (dir / "s.dxf").string());
   ASSERT_EQ(r.status, 0) << r.err;
-  const std::string svg = slurp(dir / "s.svg");
-  const std::string dxf = slurp(dir / "s.dxf");
+  const std::string svg = read_text(dir / "s.svg");
+  const std::string dxf = read_text(dir / "s.dxf");
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   for (const char* layer : {"OUTLINE_MIN_GAP", "OUTLINE_MAX_GAP", "PITCH_CIRCLE", "ROOT_CIRCLE"})
     EXPECT_NE(dxf.find(layer), std::string::npos) << layer;
@@ -119,7 +113,7 @@ TEST(SprocketCli, ReportShowsMinMaxInDisplayUnitsAndTheDrawing) {
   const CliRun r =
       run(std::string("report ") + CATENA_EXAMPLES_DIR + "/sprocket_12B.toml -o " + path.string());
   ASSERT_EQ(r.status, 0) << r.err;
-  const std::string html = slurp(path);
+  const std::string html = read_text(path);
   std::filesystem::remove(path);
   EXPECT_NE(html.find("<td>seat_diameter.min</td><td class=\"value\">91.1665</td><td>mm</td>"),
             std::string::npos);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "../read_text.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -25,13 +26,6 @@ std::vector<std::string> split(const std::string& text, char separator) {
   while (std::getline(ss, part, separator)) out.push_back(part);
   if (!text.empty() && text.back() == separator) out.emplace_back();
   return out;
-}
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 TEST(SweepCli, OneRowPerGridPointFirstAxisSlowestWithTheRunsOwnResults) {
@@ -102,7 +96,7 @@ TEST(SweepCli, BareKeysForACaseWithOneAnalysisAndAPointThatDoesNotRun) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out, "");  // the CSV went to the file
   EXPECT_NE(r.err.find("1 of 3 points did not run"), std::string::npos) << r.err;
-  const std::vector<std::string> lines = split(slurp(out), '\n');
+  const std::vector<std::string> lines = split(read_text(out), '\n');
   ASSERT_EQ(lines.size(), 5u);
   EXPECT_EQ(lines[1].rfind("2,,", 0), 0u) << lines[1];
   EXPECT_NE(lines[1].find(",teeth = '2': expected a whole number ≥ 3"), std::string::npos)
@@ -255,7 +249,7 @@ TEST(SweepCli, ADynamicsSweepTakesTheCasesTableAndVariesAValueInIt) {
   ASSERT_EQ(rows.size(), 1u + 4u);
   EXPECT_EQ(rows[0][0], "dynamics.sprocket[1].load_torque");
   EXPECT_EQ(rows[0][1], "duration");
-  const std::string text = slurp(drive);
+  const std::string text = read_text(drive);
   const std::string torque = "load_torque = 10 ";
   ASSERT_NE(text.find(torque), std::string::npos);
   const fs::path light = fs::temp_directory_path() / "catena_sweep_dynamics_5.toml";

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../read_text.hpp"
 #include "cli_run.hpp"
 
 namespace {
@@ -118,8 +119,7 @@ TEST(WearCli, CaseFilesRunTheSameAnalysis) {
   const auto html = std::filesystem::temp_directory_path() / "catena_wear_report.html";
   const CliRun report = run("report " + kExamples + "/000_wear_benches.toml -o " + html.string());
   ASSERT_EQ(report.status, 0) << report.err;
-  std::ifstream in(html);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = read_text(html);
   EXPECT_NE(text.find("Elongation of the rolling-hinge chain"), std::string::npos);
   std::filesystem::remove(html);
 }
@@ -219,8 +219,7 @@ TEST(WearCli, LoadsFromTheLoopRefuseWhatContradictsIt) {
   // a case file without a [loop] table: named
   const auto tmp = std::filesystem::temp_directory_path() / "catena_wear_noloop.toml";
   {
-    std::ifstream in(kExamples + "/000_wear_benches.toml");
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string text = read_text(kExamples + "/000_wear_benches.toml");
     const auto at = text.find("wear_coefficient = 1e-4\n");
     text.insert(at, "tension_source = \"loop\"\n");
     std::ofstream(tmp) << text;

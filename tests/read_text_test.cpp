@@ -1,0 +1,59 @@
+// tests/read_text.hpp, the test programs' file reader: the whole file byte for byte, and a file
+// that cannot be opened fails the calling test, naming the path at the caller's line.
+#include "read_text.hpp"
+
+#include <gtest/gtest-spi.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <source_location>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::string_literals;
+
+fs::path scratch() {
+  const fs::path dir =
+      fs::temp_directory_path() / ("catena_read_text_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+TEST(ReadText, ReadsTheWholeFileByteForByte) {
+  const fs::path path = scratch() / "bytes.txt";
+  const std::string bytes = "line\r\nzero \0 byte, no newline at the end"s;
+  std::ofstream(path, std::ios::binary) << bytes;
+  EXPECT_EQ(read_text(path), bytes);
+  std::ofstream(path, std::ios::binary | std::ios::trunc).close();
+  EXPECT_EQ(read_text(path), "");  // an empty file reads empty, without a failure
+  fs::remove_all(path.parent_path());
+}
+
+TEST(ReadText, AFileThatCannotBeOpenedFailsTheCallerNamingThePath) {
+  const fs::path missing = scratch() / "missing.txt";
+  fs::remove(missing);
+  ::testing::TestPartResultArray failures;
+  std::string text = "not read";
+  int line = 0;
+  {
+    ::testing::ScopedFakeTestPartResultReporter reporter(
+        ::testing::ScopedFakeTestPartResultReporter::INTERCEPT_ONLY_CURRENT_THREAD, &failures);
+    line = __LINE__, text = read_text(missing);
+  }
+  EXPECT_EQ(text, "");
+  ASSERT_EQ(failures.size(), 1);
+  const ::testing::TestPartResult& failure = failures.GetTestPartResult(0);
+  EXPECT_TRUE(failure.nonfatally_failed());
+  EXPECT_NE(std::string(failure.message()).find(missing.string()), std::string::npos)
+      << failure.message();
+  ASSERT_NE(failure.file_name(), nullptr);
+  EXPECT_EQ(std::string(failure.file_name()), std::source_location::current().file_name());
+  EXPECT_EQ(failure.line_number(), line);
+  fs::remove_all(missing.parent_path());
+}
+
+}  // namespace
