@@ -27,6 +27,11 @@ struct PocketRun {
   // "Tension-only links"), as in the command
   bool tension_only = true;
   bool rails = true;  // the forced run-on's guide (false: the same strand, unguided)
+  // [N] the forced run-on's slack side: the chain's downstream end pulled down (−y), so that it
+  // leaves the wheel on its far side as into a locker (about 0.8 m of this chain hanging); 0
+  // leaves it free, and the pockets, which hold a joint only against its links' pull, let the
+  // wound-on chain fly off and lash back into the wheel
+  double tail_force = 50.0;
 };
 
 }  // namespace catena::dynamics::testing
