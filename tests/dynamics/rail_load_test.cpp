@@ -5,7 +5,9 @@
 // steps report for a chain sliding onto a loaded rail is the load's along its travel. With the
 // load's inertia (Guide::load_inertia): the Newton matrix against the residual's differences, a
 // loaded chain's start-up and a loaded link's ringing against their spring–mass closed forms,
-// and the work balance with the catch and the discharge.
+// and the work balance with the catch and the discharge; with the material arriving at a speed
+// of its own (Guide::load_speed) the Newton matrix again, the work balance with the arriving
+// material's kinetic energy, and a bad speed named.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -339,7 +341,8 @@ struct InclinedJoint {
   Model model;
   State state;
 };
-InclinedJoint inclined_joint(double lower_load, double upper_load, bool inertia) {
+InclinedJoint inclined_joint(double lower_load, double upper_load, bool inertia,
+                             double speed = 0.0) {
   const std::size_t n = 7;
   InclinedJoint out{uniform_chain(n, false, kPitch, kRollerMass, 2e6, 30.0, false), State(n, 0)};
   Model& model = out.model;
@@ -359,6 +362,8 @@ InclinedJoint inclined_joint(double lower_load, double upper_load, bool inertia)
   upper.load_per_metre = upper_load;
   lower.load_inertia = inertia && lower_load > 0.0;
   upper.load_inertia = inertia && upper_load > 0.0;
+  lower.load_speed = lower.load_inertia ? speed : 0.0;
+  upper.load_speed = upper.load_inertia ? speed : 0.0;
   model.guides = {lower, upper};
   const double sink =
       (kRollerMass + upper_load * kPitch) * kG * std::cos(kSlope) / rail.contact_stiffness +
@@ -459,50 +464,60 @@ TEST(RailLoad, WorkBalanceClosesOnALoadedArc) {
 // shrinks: the catch's branch and the discharge's), one node on either end's ramp, both ways
 // along the rail, on a straight rail and either arc. The inertia's blocks are most of the matrix
 // there (against the same rail without load_inertia).
+// The Newton checks of the load's inertia: a two-node chain a half pitch above guide `g`, node 0
+// at `s0` along it, moving along it at 1 m/s (the way of `v`'s sign), the iterate a little off
+// x₀ + h v₀ (h = 1 ms, θ = 0.6); the step's Newton matrix with `g` column by column against
+// central differences of the step's residual, within 1e-7 of its largest entry. Returns the
+// largest |J − J_ref| over that entry, J_ref the matrix with `reference` in place of `g` at the
+// same iterate (what the terms `g` adds weigh).
+double newton_against_differences(const Guide& g, const Guide& reference, double v, double s0) {
+  Model m = uniform_chain(2, false, kPitch, 0.024, 1e4, 0.0, false);
+  m.gravity_x = kGx;
+  m.gravity_y = kGy;
+  State st(2, 0);
+  std::vector<double> u(4);
+  const double h = 1e-3;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double si = s0 + kPitch * static_cast<double>(i);
+    at(g, si, 0.5 * kPitch, st.x[i], st.y[i]);
+    // the velocity along the rail (a chord of 1 mm), the iterate a little off x₀ + h v₀
+    double xa = 0.0, ya = 0.0;
+    at(g, si + 1e-3 * v, 0.5 * kPitch, xa, ya);
+    st.vx[i] = (xa - st.x[i]) / 1e-3 * std::abs(v);
+    st.vy[i] = (ya - st.y[i]) / 1e-3 * std::abs(v);
+    u[2 * i] = st.x[i] + h * st.vx[i] + 2e-5 * (i == 0 ? 1.0 : -0.5);
+    u[2 * i + 1] = st.y[i] + h * st.vy[i] + 1e-5;
+  }
+  std::vector<double> r0, jac, other;
+  m.guides = {reference};
+  Integrator plain(m, {.step = h, .theta = 0.6});
+  plain.newton_system(m, st, u, r0, &other);
+  m.guides = {g};
+  EXPECT_TRUE(validate(m).empty());
+  Integrator integ(m, {.step = h, .theta = 0.6});
+  integ.newton_system(m, st, u, r0, &jac);
+  double scale = 0.0, differs = 0.0;
+  for (std::size_t k = 0; k < 16; ++k) {
+    scale = std::max(scale, std::abs(jac[k]));
+    differs = std::max(differs, std::abs(jac[k] - other[k]));
+  }
+  for (std::size_t c = 0; c < 4; ++c) {
+    const std::vector<double> fd = testing::residual_difference(integ, m, st, u, c, 1e-8);
+    for (std::size_t r = 0; r < 4; ++r)
+      EXPECT_NEAR(jac[r * 4 + c], fd[r], 1e-7 * scale)
+          << s0 << " v " << v << " row " << r << " column " << c;
+  }
+  return differs / scale;
+}
+
 TEST(RailLoad, LoadInertiaNewtonMatrixIsTheResidualsDerivative) {
   for (Guide g : loaded_rails(1e3)) {
     Guide weight_only = g;
     g.load_inertia = true;
-    for (const double v : {1.0, -1.0}) {
-      for (const double s0 : {0.2 * kPitch, rail_length(g) - 1.1 * kPitch}) {
-        Model m = uniform_chain(2, false, kPitch, 0.024, 1e4, 0.0, false);
-        m.gravity_x = kGx;
-        m.gravity_y = kGy;
-        State st(2, 0);
-        std::vector<double> u(4);
-        const double h = 1e-3;
-        for (std::size_t i = 0; i < 2; ++i) {
-          const double si = s0 + kPitch * static_cast<double>(i);
-          at(g, si, 0.5 * kPitch, st.x[i], st.y[i]);
-          // the velocity along the rail (a chord of 1 mm), the iterate a little off x₀ + h v₀
-          double xa = 0.0, ya = 0.0;
-          at(g, si + 1e-3 * v, 0.5 * kPitch, xa, ya);
-          st.vx[i] = (xa - st.x[i]) / 1e-3 * std::abs(v);
-          st.vy[i] = (ya - st.y[i]) / 1e-3 * std::abs(v);
-          u[2 * i] = st.x[i] + h * st.vx[i] + 2e-5 * (i == 0 ? 1.0 : -0.5);
-          u[2 * i + 1] = st.y[i] + h * st.vy[i] + 1e-5;
-        }
-        std::vector<double> r0, jac, bare;
-        m.guides = {weight_only};
-        Integrator plain(m, {.step = h, .theta = 0.6});
-        plain.newton_system(m, st, u, r0, &bare);
-        m.guides = {g};
-        Integrator integ(m, {.step = h, .theta = 0.6});
-        integ.newton_system(m, st, u, r0, &jac);
-        double scale = 0.0, inertia = 0.0;
-        for (std::size_t k = 0; k < 16; ++k) {
-          scale = std::max(scale, std::abs(jac[k]));
-          inertia = std::max(inertia, std::abs(jac[k] - bare[k]));
-        }
-        EXPECT_GT(inertia, 0.5 * scale) << s0 << ": the inertia's block is not negligible";
-        for (std::size_t c = 0; c < 4; ++c) {
-          const std::vector<double> fd = testing::residual_difference(integ, m, st, u, c, 1e-8);
-          for (std::size_t r = 0; r < 4; ++r)
-            EXPECT_NEAR(jac[r * 4 + c], fd[r], 1e-7 * scale)
-                << s0 << " v " << v << " row " << r << " column " << c;
-        }
-      }
-    }
+    for (const double v : {1.0, -1.0})
+      for (const double s0 : {0.2 * kPitch, rail_length(g) - 1.1 * kPitch})
+        EXPECT_GT(newton_against_differences(g, weight_only, v, s0), 0.5)
+            << s0 << ": the inertia's block is not negligible";
   }
 }
 
@@ -585,10 +600,10 @@ struct JointSlide {
   State s;
   double numerical = 0.0;  // [J]
 };
-JointSlide slide_across_joint(bool lower_loaded, bool upper_loaded) {
+JointSlide slide_across_joint(bool lower_loaded, bool upper_loaded, double speed = 0.0) {
   const double q = 2.5;
   const std::size_t n = 7;
-  InclinedJoint joint = inclined_joint(lower_loaded ? q : 0.0, upper_loaded ? q : 0.0, true);
+  InclinedJoint joint = inclined_joint(lower_loaded ? q : 0.0, upper_loaded ? q : 0.0, true, speed);
   const Model& model = joint.model;
   EXPECT_TRUE(validate(model).empty());
   JointSlide out{joint.state};
@@ -637,6 +652,92 @@ TEST(RailLoad, LoadInertiaPassesAJointBetweenLoadedPiecesWithoutACatch) {
   EXPECT_LT(std::abs(r.s.load_catch_work), 1e-9 * std::abs(onto));
   EXPECT_LT(std::abs(r.s.load_discharge_work), 1e-9 * std::abs(onto));
   EXPECT_LT(std::abs(r.numerical), 1e-6 * std::abs(onto));
+}
+
+// Material arriving with a speed of its own (Guide::load_speed, u along the rail's direction or
+// the arc's counter-clockwise sense): the step's Newton matrix against central differences of the
+// step's residual, as for the load's inertia above (the same two-node chain, both ways along the
+// straight rail and either arc, a node on either end's ramp): the arriving velocity w's terms,
+// −[Δm_L > 0] w (∇m_L1)ᵀ and, on an arc, where w turns with the node, −Δm_L ∂w/∂u. Against the
+// same rail with the material arriving at rest those terms are far above the check's tolerance.
+TEST(RailLoad, LoadSpeedNewtonMatrixIsTheResidualsDerivative) {
+  for (Guide g : loaded_rails(1e3)) {
+    g.load_inertia = true;
+    Guide at_rest = g;
+    g.load_speed = 3.0;
+    for (const double s0 : {0.2 * kPitch, rail_length(g) - 1.1 * kPitch}) {
+      // the node on the ramp gains load one way along the rail and sheds it the other: the
+      // arriving velocity's terms act on the way it gains
+      double felt = 0.0;
+      for (const double v : {1.0, -1.0})
+        felt = std::max(felt, newton_against_differences(g, at_rest, v, s0));
+      EXPECT_GT(felt, 1e-2) << s0 << ": the arriving velocity's terms are felt";
+      std::printf(
+          "%s at %.4f m: the arriving velocity's terms %.3g of the matrix\n",
+          g.kind == Guide::Kind::kArc ? (g.inside ? "inside arc" : "outside arc") : "straight", s0,
+          felt);
+    }
+  }
+}
+
+// The slide onto a loaded piece (above) with the material arriving at u = −0.5 m/s along the rail
+// (down the slope, the chain's way): the work balance closes within 1e-6 of the catch's work
+// with the catch counting the arriving material's kinetic energy as input; that input,
+// load_arrival_work, is ½ u² times the load the chain carries at the end (every node caught on the
+// piece once: Σ Δm_L = Σ m_L at the end); and the catch's loss, load_catch_work less it, is a
+// loss (< 0; printed beside the same slide's catch with the material arriving at rest).
+TEST(RailLoad, LoadSpeedWorkBalanceClosesWithTheArrivingMaterialsEnergy) {
+  const double u = -0.5;
+  const JointSlide still = slide_across_joint(true, false);
+  const JointSlide r = slide_across_joint(true, false, u);
+  const State& s = r.s;
+  const Model model = inclined_joint(2.5, 0.0, true, u).model;
+  const std::vector<GuideFrame> frames{guide_frame(model.guides[0]), guide_frame(model.guides[1])};
+  double carried = 0.0;  // [kg] the load the chain carries at the end
+  for (std::size_t i = 0; i < s.x.size(); ++i)
+    carried += load_mass(model, frames, s.x[i], s.y[i]).mass;
+  const double arrival = 0.5 * u * u * carried;
+  const double loss = s.load_catch_work - s.load_arrival_work;
+  std::printf(
+      "arriving at %.2f m/s: catch %.6g J (arrival %.6g J, 1/2 u^2 m_L %.6g J; loss %.6g "
+      "J against %.6g J at rest), numerical %.3g J\n",
+      u, s.load_catch_work, s.load_arrival_work, arrival, loss, still.s.load_catch_work,
+      r.numerical);
+  EXPECT_LT(std::abs(r.numerical), 1e-6 * std::abs(loss))
+      << "catch " << s.load_catch_work << " discharge " << s.load_discharge_work;
+  EXPECT_NEAR(s.load_arrival_work, arrival, 1e-9 * arrival);
+  EXPECT_LT(loss, 0.0);
+  EXPECT_EQ(still.s.load_arrival_work, 0.0);
+}
+
+// A bad load_speed named with the other guides' problems: not finite, beyond ±100 m/s, and a
+// speed on a guide whose load is weight only (it would do nothing); accepted on a loaded guide
+// with the inertia, either way along it.
+TEST(RailLoad, BadLoadSpeedNamed) {
+  Model m = uniform_chain(4, false, kPitch, 0.024, 1e7, 0.0, false);
+  m.gravity_x = kGx;
+  m.gravity_y = kGy;
+  Guide fast = loaded_rail(5.0), nan = loaded_rail(5.0), weight = loaded_rail(5.0),
+        good = loaded_rail(5.0), back = loaded_rail(5.0);
+  fast.load_inertia = nan.load_inertia = good.load_inertia = back.load_inertia = true;
+  fast.load_speed = 100.5;
+  nan.load_speed = NAN;
+  weight.load_speed = 1.0;
+  good.load_speed = 100.0;
+  back.load_speed = -2.0;
+  m.guides = {good, fast, nan, back, weight};
+  const std::vector<Issue> issues = validate(m);
+  ASSERT_EQ(issues.size(), 3u);
+  EXPECT_EQ(issues[0].field, "guide[1].load_speed");
+  EXPECT_NE(issues[0].expected.find("a speed in [-100, 100] m/s"), std::string::npos)
+      << issues[0].expected;
+  EXPECT_EQ(issues[1].field, "guide[2].load_speed");
+  EXPECT_EQ(issues[2].field, "guide[4].load_speed");
+  EXPECT_NE(issues[2].expected.find("0 without load_inertia = true"), std::string::npos)
+      << issues[2].expected;
+  // a lead-in arc carries none of its rail's load, nor its speed
+  for (const Guide& a : lead_in_arcs(good, LeadIn{.radius = 0.05, .angle = 0.5}))
+    EXPECT_EQ(a.load_speed, 0.0);
 }
 
 }  // namespace

@@ -74,6 +74,7 @@ struct Conveyor {
   double incline = 0.0;          // [rad] β, the line of centres rising towards the driver
   double load_per_metre = 0.0;   // [kg/m] q_L on the upper (carrying) run's rail pieces
   bool load_inertia = false;     // the load's mass moves with the chain (Guide::load_inertia)
+  double load_speed = 0.0;       // [m/s] u, the material's arriving speed (Guide::load_speed)
 };
 
 struct Loop {
@@ -155,6 +156,7 @@ inline Loop conveyor_loop(const Conveyor& d) {
         g.friction = d.friction;
         if (y > 0.0) g.load_per_metre = d.load_per_metre;  // the carrying run's
         g.load_inertia = y > 0.0 && d.load_inertia && d.load_per_metre > 0.0;
+        if (g.load_inertia) g.load_speed = d.load_speed;
         model.guides.push_back(g);
       }
     }
@@ -167,6 +169,7 @@ inline Loop conveyor_loop(const Conveyor& d) {
       nose.kind = Guide::Kind::kArc;
       nose.load_per_metre = 0.0;  // the rail carries the load, not its lead-in
       nose.load_inertia = false;
+      nose.load_speed = 0.0;
       nose.radius = kNose;
       nose.centre_x = upper ? x_hi : x_lo;  // the upper run travels −x and enters at x_hi
       nose.centre_y = rail.y0 - kNose;

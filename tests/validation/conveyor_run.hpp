@@ -35,6 +35,8 @@ struct ConveyorRun {
   std::vector<double> load_work;      // [J] the state's accumulated work of the rails' loads
   // [J] the state's accumulated catch and discharge works (Guide::load_inertia; ≤ 0)
   std::vector<double> catch_work, discharge_work;
+  // [J] the arriving material's kinetic energy so far (Guide::load_speed; part of catch_work)
+  std::vector<double> arrival_work;
   // [J] the state's accumulated works of the links' dampers, the seats' and guides' contact
   // dampers, and the rest of the dissipative forces (drag, seat and hinge friction, take-up
   // dampers)
@@ -120,6 +122,7 @@ inline ConveyorRun run_conveyor(const Conveyor& d, std::vector<ConveyorProbe> pr
     out.load_work.push_back(s.load_work);
     out.catch_work.push_back(s.load_catch_work);
     out.discharge_work.push_back(s.load_discharge_work);
+    out.arrival_work.push_back(s.load_arrival_work);
     out.damper_work.push_back(s.damper_work);
     out.contact_damping_work.push_back(s.contact_damping_work);
     out.other_work.push_back(s.drag_work + s.seat_friction_work + s.hinge_work +
@@ -147,6 +150,9 @@ struct ConveyorMeans {
   double load_power = 0.0;      // [W] the rails' loads' work on the chain/time over the window
   // [W] −(the catch's work)/time and −(the discharge's work)/time over the window (load_inertia)
   double catch_power = 0.0, discharge_power = 0.0;
+  // [W] the arriving material's kinetic energy/time over the window (Guide::load_speed): the
+  // catch's loss is catch_power + arrival_power
+  double arrival_power = 0.0;
   // The work balance over the window, between the samples its ends' energies were taken at: each
   // term the power [W] it takes from the chain, −(its work)/time (the drive's and the loads' the
   // power they give), `energy_rate` the loop's energy change/time and `numerical` the θ-method's
@@ -158,9 +164,9 @@ struct ConveyorMeans {
 };
 
 // Conveyor `d` run for `duration` at h = 0.1 ms, its means over the whole tooth periods after
-// t0 = 0.4 s (the window's choice: tests/validation/dynamics_conveyor_incline_test.cpp).
-inline ConveyorMeans conveyor_means(const Conveyor& d, double duration = 2.0) {
-  const double step = 1e-4, t0 = 0.4;
+// t0 (0.4 s: the window's choice, tests/validation/dynamics_conveyor_incline_test.cpp).
+inline ConveyorMeans conveyor_means(const Conveyor& d, double duration = 2.0, double t0 = 0.4) {
+  const double step = 1e-4;
   const double period = 2 * std::numbers::pi / (d.teeth * d.omega);
   const long steps = std::lround(duration / step);
   // the window's ends (as below, from the last step's time, here its nominal one)
@@ -182,13 +188,14 @@ inline ConveyorMeans conveyor_means(const Conveyor& d, double duration = 2.0) {
   m.upper_entry = mean(5);
   const double t_end = t0 + std::floor((r.time.back() - t0) / period) * period;
   double w0 = 0.0, w1 = 0.0, p0 = 0.0, p1 = 0.0, l0 = 0.0, l1 = 0.0;
-  double c0 = 0.0, c1 = 0.0, d0 = 0.0, d1 = 0.0;
+  double c0 = 0.0, c1 = 0.0, d0 = 0.0, d1 = 0.0, a0 = 0.0, a1 = 0.0;
   for (std::size_t k = 0; k < r.time.size(); ++k) {
     if (r.time[k] <= t0) w0 = r.friction_work[k], p0 = r.drive_work[k], l0 = r.load_work[k];
     if (r.time[k] <= t_end) w1 = r.friction_work[k], p1 = r.drive_work[k], l1 = r.load_work[k];
-    if (r.time[k] <= t0) c0 = r.catch_work[k], d0 = r.discharge_work[k];
-    if (r.time[k] <= t_end) c1 = r.catch_work[k], d1 = r.discharge_work[k];
+    if (r.time[k] <= t0) c0 = r.catch_work[k], d0 = r.discharge_work[k], a0 = r.arrival_work[k];
+    if (r.time[k] <= t_end) c1 = r.catch_work[k], d1 = r.discharge_work[k], a1 = r.arrival_work[k];
   }
+  m.arrival_power = (a1 - a0) / (t_end - t0);
   m.catch_power = -(c1 - c0) / (t_end - t0);
   m.discharge_power = -(d1 - d0) / (t_end - t0);
   m.friction_power = -(w1 - w0) / (t_end - t0);

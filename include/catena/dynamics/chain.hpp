@@ -218,6 +218,13 @@ struct Guide {
   /// catch's reaction) and material leaving it leaves at the node's velocity. false, the default:
   /// the load is weight only.
   bool load_inertia = false;
+  /// [m/s] u: the speed of the material arriving on the chain (docs/models/dynamics.md, "A
+  /// conveyed load: its inertia, loading and discharge"; only with load_inertia): a chute or
+  /// feeder's delivery, along the rail's direction from (x0, y0) to (x1, y1) on a straight rail,
+  /// along the arc's counter-clockwise sense (from start_angle to end_angle) at the node on an
+  /// arc; negative: the other way. The catch's reaction is Δm_L (u − v). 0, the default: the
+  /// material arrives at rest.
+  double load_speed = 0.0;
   /// [N/m] k_t: sticking (docs/models/dynamics.md, "Guides: sticking"). 0, the default: the
   /// regularised friction above. > 0 (a guide with friction > 0 only, straight or arc): each
   /// roller in contact carries an anchor a (State::stick_anchor) and the friction is the
@@ -256,6 +263,8 @@ inline constexpr double kLeastRailModulus = 1e8, kMostRailModulus = 1e12;
 
 /// The largest Guide::load_per_metre validate accepts [kg/m].
 inline constexpr double kMaxRailLoad = 1e4;
+/// [m/s] the largest |Guide::load_speed| accepted
+inline constexpr double kMaxLoadSpeed = 100.0;
 
 /// One roller's contact with one guide at position q and velocity v: the force on the roller,
 /// F = f n + f_t t (n the rail's normal to the free side, t = (−n_y, n_x)), and its derivatives
@@ -357,9 +366,15 @@ struct Model;
 /// The conveyed load's mass on a node at q: Σ q_L p w(s) over the guides with load_inertia
 /// (rail_load's share w, ramp and gate), and its gradient ∂m_L/∂q = Σ q_L p w' (∂s/∂q)ᵀ.
 /// `frames`: guide_frame of each of model.guides.
+/// With Guide::load_speed also the arriving momentum p = Σ m_L,g u_g (u_g the guide's arriving
+/// velocity at q: load_speed along the rail's direction, or the arc's counter-clockwise tangent)
+/// and ∂p/∂q; the material joining a node arrives with p/m_L, the velocity of the load it carries.
 struct LoadMass {
   double mass = 0.0;          ///< [kg] m_L
   double dx = 0.0, dy = 0.0;  ///< [kg/m] ∂m_L/∂q
+  double px = 0.0, py = 0.0;  ///< [kg·m/s] p (0 without load_speed)
+  /// [kg/s] ∂p/∂q row-major: ∂p_x/∂x, ∂p_x/∂y, ∂p_y/∂x, ∂p_y/∂y
+  double dp[4] = {0, 0, 0, 0};
 };
 LoadMass load_mass(const Model& model, std::span<const GuideFrame> frames, double x, double y);
 /// Some guide with load_inertia and load_per_metre > 0 (a model's or a case's guides).
@@ -503,9 +518,14 @@ struct State {
   /// [J] work of the rails' loads (Guide::load_per_metre) on the chain so far
   double load_work = 0.0;
   /// [J] the loading's catch so far (Guide::load_inertia): the work of the reaction of material
-  /// arriving at rest on the chain, minus the kinetic energy it gains (≤ 0: half the work the
-  /// chain does to bring it to speed, lost in the inelastic catch)
+  /// arriving on the chain, minus the kinetic energy it gains on it. Arriving at rest it is ≤ 0
+  /// (half the work the chain does to bring it to speed, lost in the inelastic catch); arriving
+  /// at u (Guide::load_speed) it is that loss, −½ Δm_L |v − u|² at a steady speed, plus the
+  /// kinetic energy ½ Δm_L |u|² the material brings (load_arrival_work, part of this)
   double load_catch_work = 0.0;
+  /// [J] the arriving material's kinetic energy so far, Σ ½ Δm_L |u|² (≥ 0; Guide::load_speed):
+  /// the input part of load_catch_work (the catch's loss is load_catch_work − this)
+  double load_arrival_work = 0.0;
   /// [J] the discharge so far (Guide::load_inertia): minus the kinetic energy the material
   /// leaving the chain carries away (≤ 0)
   double load_discharge_work = 0.0;

@@ -75,8 +75,12 @@ struct StepReport {
   double takeup_damper_work = 0.0;
   /// [J] the rails' loads' work over the step, Σ F(q_θ)·(x₁ − x₀) (Guide::load_per_metre)
   double load_work = 0.0;
-  /// [J] the loading's catch over the step (Guide::load_inertia; State::load_catch_work, ≤ 0)
+  /// [J] the loading's catch over the step (Guide::load_inertia; State::load_catch_work: ≤ 0 for
+  /// material arriving at rest)
   double load_catch_work = 0.0;
+  /// [J] the arriving material's kinetic energy over the step, ½ Δm_L |u|² (Guide::load_speed;
+  /// State::load_arrival_work, part of load_catch_work)
+  double load_arrival_work = 0.0;
   /// [J] the discharge over the step: minus the leaving material's kinetic energy (≤ 0)
   double load_discharge_work = 0.0;
   SolveStatus solve = SolveStatus::kSolved;

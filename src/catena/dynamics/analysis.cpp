@@ -174,6 +174,11 @@ std::vector<Parameter> guide_fields() {
            "true: the load's mass moves with the chain, material arriving at rest on the rail's "
            "entry is caught (a force q_L v^2 there) and leaves at its exit with the chain's "
            "speed (default false: weight only; only with load_per_metre > 0)"),
+      quantity("load_speed", K::kSpeed,
+               "with load_inertia = true: the speed the material arrives with (a chute or "
+               "feeder), along the rail from (x0, y0) to (x1, y1), on an arc counter-clockwise "
+               "(from start_angle to end_angle); negative the other way; in [-100, 100] m/s "
+               "(default 0: it arrives at rest)"),
       quantity("contact_stiffness", K::kForcePerLength,
                "roller-rail penalty [N/m] (default: dynamics.contact_stiffness; not with "
                "contact_law = \"line\": the rail then follows the line law)"),
@@ -1913,6 +1918,7 @@ Setup parse(const analysis::Inputs& in) {
     guide.load_per_metre = get("load_per_metre", 0.0);
     const auto inertia = g.text.find("load_inertia");
     guide.load_inertia = inertia != g.text.end() && inertia->second == "true";
+    guide.load_speed = get("load_speed", 0.0);
     guide.stick_stiffness = get("stick_stiffness", 0.0);
     // the rail's elastic law: with contact_law = "line" the seats' line law on the rail's
     // curvature and material (docs/models/dynamics.md, "Guides: the line law"), which replaces

@@ -373,6 +373,14 @@ std::vector<Issue> validate(const Model& model) {
     if (g.load_inertia && !(g.load_per_metre > 0.0))
       out.push_back({f + "load_inertia", "true",
                      "false without a load (load_per_metre > 0 kg/m): there is no load to move"});
+    if (!std::isfinite(g.load_speed) || !(std::abs(g.load_speed) <= kMaxLoadSpeed))
+      out.push_back({f + "load_speed", check::format_si(g.load_speed, "m/s"),
+                     "a speed in [-" + check::format_si(kMaxLoadSpeed, "") + ", " +
+                         check::format_si(kMaxLoadSpeed, "") + "] m/s"});
+    else if (g.load_speed != 0.0 && !g.load_inertia)
+      out.push_back({f + "load_speed", check::format_si(g.load_speed, "m/s"),
+                     "0 without load_inertia = true (the arriving material's speed acts through "
+                     "the load's inertia)"});
     if (!std::isfinite(g.load_per_metre) || !(g.load_per_metre >= 0.0) ||
         !(g.load_per_metre <= kMaxRailLoad)) {
       out.push_back({f + "load_per_metre", check::format_si(g.load_per_metre, "kg/m"),
@@ -464,6 +472,7 @@ std::vector<Guide> lead_in_arcs(const Guide& rail, const LeadIn& lead) {
     g.inside = false;
     g.load_per_metre = 0.0;  // the rail's load is the rail's (an arc carries none)
     g.load_inertia = false;
+    g.load_speed = 0.0;
     g.stick_stiffness = 0.0;  // a lead-in slides with the regularised law (not the rail's k_t)
     g.stick_damping = 0.0;
     if (rail.line_law) use_line_law(g, rail.line.width);  // the arc's own curvature
@@ -538,6 +547,28 @@ LoadMass load_mass(const Model& model, std::span<const GuideFrame> frames, doubl
     out.mass += l.fx;
     out.dx += l.dq[0];
     out.dy += l.dq[1];
+    if (guide.load_speed == 0.0) continue;
+    // the arriving momentum m_g u_g: u_g = load_speed t, t the rail's direction (constant) or the
+    // arc's counter-clockwise tangent at q, t = (−r_y, r_x)/|r|, r = q − C, ∂t/∂q = −n tᵀ/|r|
+    double tx = frames[g].ux, ty = frames[g].uy, dt[4] = {0, 0, 0, 0};
+    if (guide.kind == Guide::Kind::kArc) {
+      const double rx = x - guide.centre_x, ry = y - guide.centre_y;
+      const double d = std::hypot(rx, ry);  // > 0: the share is active
+      const double nx = rx / d, ny = ry / d;
+      tx = -ny;
+      ty = nx;
+      dt[0] = -nx * tx / d;
+      dt[1] = -nx * ty / d;
+      dt[2] = -ny * tx / d;
+      dt[3] = -ny * ty / d;
+    }
+    const double u = guide.load_speed;
+    out.px += l.fx * u * tx;
+    out.py += l.fx * u * ty;
+    out.dp[0] += u * (tx * l.dq[0] + l.fx * dt[0]);
+    out.dp[1] += u * (tx * l.dq[1] + l.fx * dt[1]);
+    out.dp[2] += u * (ty * l.dq[0] + l.fx * dt[2]);
+    out.dp[3] += u * (ty * l.dq[1] + l.fx * dt[3]);
   }
   return out;
 }

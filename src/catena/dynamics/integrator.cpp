@@ -682,7 +682,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   // joining arrives at rest, (m + m_L1) v₁ − (m + m_L0) v₀ = h F; material leaving takes v₀ with
   // it, (m + m_L1)(v₁ − v₀) = h F. With v₁ − v₀ = (u − x₀ − h v₀)/hθ the diagonal block gains
   // m_L1/hθ I + a (∇m_L1)ᵀ, a = (v₁ − v₀) + [Δm_L > 0] v₀ (the mass's dependence on u through
-  // the ramp w(s)).
+  // the ramp w(s)). Material arriving with a speed of its own (Guide::load_speed) arrives with the
+  // velocity w = p/m_L1 of the load the node carries at the iterate (LoadMass::p): R gains
+  // −max(Δm_L, 0) w, a gains −[Δm_L > 0] w and the block −Δm_L ∂w/∂u, ∂w/∂u = (∂p/∂u − w
+  // (∇m_L1)ᵀ)/m_L1.
   if (any_load_inertia(model.guides)) {
     const double ht = h * th;
     if (!load_mass0_set_) {
@@ -697,13 +700,22 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       if (m0 == 0.0 && m1.mass == 0.0) continue;
       const double dm = m1.mass - m0, joins = dm > 0.0 ? dm : 0.0;
       const double dvx = (ux[i] - sx[i] - h * svx[i]) / ht, dvy = (uy[i] - sy[i] - h * svy[i]) / ht;
-      rhs[i].x -= m1.mass * dvx + joins * svx[i];
-      rhs[i].y -= m1.mass * dvy + joins * svy[i];
+      // the arriving material's velocity w (0: at rest)
+      const bool arrives = dm > 0.0 && (m1.px != 0.0 || m1.py != 0.0);
+      const double wx = arrives ? m1.px / m1.mass : 0.0, wy = arrives ? m1.py / m1.mass : 0.0;
+      rhs[i].x -= m1.mass * dvx + joins * (svx[i] - wx);
+      rhs[i].y -= m1.mass * dvy + joins * (svy[i] - wy);
       if (!jacobian) continue;
-      const double ax = dvx + (dm > 0.0 ? svx[i] : 0.0), ay = dvy + (dm > 0.0 ? svy[i] : 0.0);
+      const double ax = dvx + (dm > 0.0 ? svx[i] - wx : 0.0);
+      const double ay = dvy + (dm > 0.0 ? svy[i] - wy : 0.0);
       const double mi = m1.mass / ht;
       Mat2& d = diag[i];
       d = {d.a + mi + ax * m1.dx, d.b + ax * m1.dy, d.c + ay * m1.dx, d.d + mi + ay * m1.dy};
+      if (arrives) {
+        const double f = dm / m1.mass;
+        d = {d.a - f * (m1.dp[0] - wx * m1.dx), d.b - f * (m1.dp[1] - wx * m1.dy),
+             d.c - f * (m1.dp[2] - wy * m1.dx), d.d - f * (m1.dp[3] - wy * m1.dy)};
+      }
     }
   }
   if (!model.pinned.empty()) {
@@ -1217,24 +1229,36 @@ StepReport Integrator::step(const Model& model, State& s) {
   // (Δm_L > 0) loses Δm_L ((½ − θ) |v₀|² + θ v₀·v₁) besides the load's kinetic energy gained
   // (½ Δm_L v² at a steady speed: the inelastic catch); one whose load shrinks hands the leaving
   // material ½ |Δm_L| |v₀|² (the discharge). What is left of the balance is the θ-method's own
-  // (θ − ½)(m + m_L1) |v₁ − v₀|².
+  // (θ − ½)(m + m_L1) |v₁ − v₀|². Material arriving at w (Guide::load_speed) adds its reaction's
+  // work Δm_L w·Δx/h to the catch: the catch is then the loss −Δm_L ((½ − θ) |v₀|² + θ v₀·v₁ −
+  // w·Δx/h + ½ |w|²) (−½ Δm_L |v − w|² at a steady speed) plus the material's kinetic energy
+  // ½ Δm_L |w|² (load_arrival_work).
   if (any_load_inertia(model.guides)) {
     for (std::size_t i = 0; i < n; ++i) {
       if (model.is_pinned(i)) continue;
-      const double dm = load_mass(model, guide_frame_, ux_[i], uy_[i]).mass - load_mass0_[i];
+      const LoadMass m1 = load_mass(model, guide_frame_, ux_[i], uy_[i]);
+      const double dm = m1.mass - load_mass0_[i];
       const double v0x = s.vx[i], v0y = s.vy[i];
       const double v1x = (ux_[i] - s.x[i] - h * (1.0 - th) * v0x) / (h * th);
       const double v1y = (uy_[i] - s.y[i] - h * (1.0 - th) * v0y) / (h * th);
       const double v00 = v0x * v0x + v0y * v0y;
-      if (dm > 0.0)
+      if (dm > 0.0) {
         report.load_catch_work -= dm * ((0.5 - th) * v00 + th * (v0x * v1x + v0y * v1y));
-      else
+        if (m1.px != 0.0 || m1.py != 0.0) {
+          const double wx = m1.px / m1.mass, wy = m1.py / m1.mass;
+          report.load_catch_work +=
+              dm * (wx * ((1.0 - th) * v0x + th * v1x) + wy * ((1.0 - th) * v0y + th * v1y));
+          report.load_arrival_work += 0.5 * dm * (wx * wx + wy * wy);
+        }
+      } else {
         report.load_discharge_work += 0.5 * dm * v00;
+      }
     }
   }
   s.friction_work += report.friction_work;
   s.load_work += report.load_work;
   s.load_catch_work += report.load_catch_work;
+  s.load_arrival_work += report.load_arrival_work;
   s.load_discharge_work += report.load_discharge_work;
   s.damper_work += report.damper_work;
   s.drag_work += report.drag_work;
