@@ -206,3 +206,58 @@ TEST(DynamicsHingeCli, PinLinkOddLoopRuleIsTheModelsNamedAtTheLinksField) {
 }
 
 }  // namespace
+
+// The hinges' stick law (docs/models/dynamics.md, "Hinges: sticking"): its keys reach the model
+// (the output names them; the run's hinge work differs from the regularised law's, Coulomb's full
+// torque at any rate), the balance holds with the springs' energy, and every problem with the
+// keys is named at once.
+TEST(DynamicsHingeCli, StickLawKeysReachTheModelAndAreChecked) {
+  const std::string sliding = "hinge = \"sliding\"\nhinge_friction = 0.1\nwork_balance = true\n";
+  const auto stick = run_json(example_with("stick.toml", sliding + "hinge_stick_stiffness = 100\n"
+                                                                   "hinge_stick_damping = 0.002\n"),
+                              "--duration 0.05s");
+  EXPECT_DOUBLE_EQ(stick["hinge_stick_stiffness"].get<double>(), 100.0);
+  EXPECT_DOUBLE_EQ(stick["hinge_stick_damping"].get<double>(), 0.002);
+  EXPECT_EQ(stick["units"]["hinge_stick_stiffness"], "N m/rad");
+  const auto plain = run_json(example_with("regularised.toml", sliding), "--duration 0.05s");
+  EXPECT_FALSE(plain.contains("hinge_stick_stiffness"));
+  const double w_stick = stick["summary"]["hinge_friction_work"].get<double>();
+  const double w_plain = plain["summary"]["hinge_friction_work"].get<double>();
+  EXPECT_LT(w_stick, 0.0);
+  EXPECT_GT(std::abs(w_stick - w_plain), 1e-3 * std::abs(w_plain));
+  // the drift stays of the order of the regularised run's (the springs' energy is counted)
+  EXPECT_LT(std::abs(stick["summary"]["energy_drift"].get<double>()),
+            std::abs(plain["summary"]["energy_drift"].get<double>()) + 0.1 * std::abs(w_stick));
+
+  const CliRun bad = run("dynamics " +
+                         example_with("stick_bad.toml", sliding + "hinge_stick_stiffness = -1\n"
+                                                                  "hinge_stick_damping = -2\n") +
+                         " --format json");
+  EXPECT_EQ(bad.status, 2);
+  for (const char* field : {"dynamics.hinge_stick_stiffness", "dynamics.hinge_stick_damping"})
+    EXPECT_NE(bad.err.find(field), std::string::npos) << field << "\n" << bad.err;
+  const CliRun lone =
+      run("dynamics " + example_with("stick_lone.toml", sliding + "hinge_stick_damping = 0.1\n") +
+          " --format json");
+  EXPECT_EQ(lone.status, 2);
+  EXPECT_NE(lone.err.find("0 without hinge_stick_stiffness"), std::string::npos) << lone.err;
+  const CliRun stiff = run(
+      "dynamics " + example_with("stick_stiff.toml", sliding + "hinge_stick_stiffness = 1e10\n") +
+      " --format json");
+  EXPECT_EQ(stiff.status, 2);
+  EXPECT_NE(stiff.err.find("k_t/p^2"), std::string::npos) << stiff.err;
+  const CliRun bare = run(
+      "dynamics " +
+      example_with("stick_bare.toml", "hinge_stick_stiffness = 100\nhinge_stick_damping = 1\n") +
+      " --format json");
+  EXPECT_EQ(bare.status, 2);
+  EXPECT_NE(bare.err.find("only with hinge = \"sliding\" or \"rolling\""), std::string::npos)
+      << bare.err;
+  const CliRun still = run("dynamics " +
+                           example_with("stick_still.toml",
+                                        "hinge = \"sliding\"\nhinge_friction = 0\n"
+                                        "hinge_stick_stiffness = 100\n") +
+                           " --format json");
+  EXPECT_EQ(still.status, 2);
+  EXPECT_NE(still.err.find("nothing to stick with"), std::string::npos) << still.err;
+}

@@ -266,7 +266,7 @@ TEST(HingeFriction, CoupleBlocksAreTheStoredJacobiansNineBlocksInOrderBitForBit)
                  rest[j], kStiffness, theta, link[j]);
     }
     HingeCouple stored;
-    hinge_couple(hinge, link[0], link[1], h, stored, true, 0);
+    hinge_couple(hinge, link[0], link[1], h, stored, true, 0, theta, 0.0);
     HingeCouple blocks;
     int calls = 0;
     hinge_couple_blocks(
@@ -279,12 +279,12 @@ TEST(HingeFriction, CoupleBlocksAreTheStoredJacobiansNineBlocksInOrderBitForBit)
           EXPECT_EQ(c, stored.jacobian[2 * k + 1][2 * q]);
           EXPECT_EQ(d, stored.jacobian[2 * k + 1][2 * q + 1]);
         },
-        0);
+        0, theta, 0.0);
     EXPECT_EQ(calls, 9);
     HingeCouple lean;
     hinge_couple_blocks(
         hinge, link[0], link[1], h, lean, false,
-        [&](int, int, double, double, double, double) { ++calls; }, 0);
+        [&](int, int, double, double, double, double) { ++calls; }, 0, theta, 0.0);
     EXPECT_EQ(calls, 9);
     for (const HingeCouple* hc : {&blocks, &lean}) {
       EXPECT_EQ(hc->torque, stored.torque);

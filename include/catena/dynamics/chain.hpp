@@ -451,7 +451,8 @@ struct Model {
 
 /// Every problem with the model, fields "nodes", "pitch", "axial_stiffness", "axial_damping",
 /// "drag", "gravity", "mass", "pinned", "sprocket[i].<field>", "guide[i].<field>",
-/// "load[i].node", "load[i].force", "hinge.arm", "hinge.rate_band", "link_smoothing",
+/// "load[i].node", "load[i].force", "hinge.arm", "hinge.rate_band", "hinge.stick_stiffness",
+/// "hinge.stick_damping", "link_smoothing",
 /// "links_carry_compression", "links" (an odd closed loop with the pin link's hinge load).
 std::vector<Issue> validate(const Model& model);
 
@@ -514,7 +515,9 @@ struct State {
   /// [J] work of the seats' and guides' contact dampers so far (≤ 0)
   double contact_damping_work = 0.0;
   double seat_friction_work = 0.0;  ///< [J] work of the seats' friction so far (≤ 0)
-  double hinge_work = 0.0;          ///< [J] work of the hinges' friction so far (≤ 0)
+  /// [J] work of the hinges' friction so far (≤ 0); with the stick law minus the
+  /// spring–sliders' dissipation (their springs' energy is in Energy::elastic)
+  double hinge_work = 0.0;
   /// [J] work of the rails' loads (Guide::load_per_metre) on the chain so far
   double load_work = 0.0;
   /// [J] the loading's catch so far (Guide::load_inertia): the work of the reaction of material
@@ -542,6 +545,12 @@ struct State {
   /// Empty until a step on a model with a sticking guide sizes it (once); set at the end of each
   /// step from the contact at its θ point and the step's end (stick_anchor_after).
   std::vector<double> stick_anchor;
+  /// [rad] per node, with the hinges' stick law (HingeFriction::stick_stiffness): the deflection
+  /// d = φ − a of the hinge at node i (its relative angle φ from its anchor a, φ accumulated by
+  /// the steps' turns Δβ). Empty until a step on such a model sizes it (once, every hinge at 0:
+  /// anchored where it starts); set at the end of each step to d₀ + Δβ, or to ±e F/k_t where the
+  /// hinge slid past the spring's reach (the anchor dragged along). 0 at the ends of an open chain.
+  std::vector<double> hinge_deflection;
   explicit State(std::size_t nodes = 0, std::size_t sprockets = 0)
       : x(nodes),
         y(nodes),
@@ -566,6 +575,7 @@ struct Energy {
   double kinetic = 0.0;
   /// [J] Σ ½ k (l − p)² (a tension-only link: link_force's E) + the seat and guide contacts'
   /// energies + Σ ½ k_t s² (take-ups) + Σ ½ k_t (s − a)² (the guides' stick springs)
+  /// + Σ ½ k_t d² (the hinges' stick springs, State::hinge_deflection)
   double elastic = 0.0;
   /// [J] −Σ m g·x − Σ f·x (gravity and node loads) − Σ (F₀ + m_t g·e) s (take-ups)
   double potential = 0.0;

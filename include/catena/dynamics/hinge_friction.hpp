@@ -35,10 +35,21 @@ struct HingeFriction {
   /// once the links turn relative to each other faster than ω_ε
   double rate_band = 5.0;
   PinLoad pin_load = PinLoad::kMean;  ///< F: the two links' mean, or the pin link's tension
+  /// [N·m/rad] k_t: sticking (docs/models/dynamics.md, "Hinges: sticking"). 0, the default: the
+  /// regularised law above. > 0 (needs arm > 0): each hinge carries the deflection d = φ − a of
+  /// its relative angle from an anchor (State::hinge_deflection) and the torque is the spring's
+  /// −k_t d_θ − c_t ω while that is within e F (sticking: no creep), else e F against it
+  /// (sliding, Coulomb's torque at any rate, no band); the anchor follows after each accepted
+  /// step so that the spring is left at most at its reach e F/k_t.
+  double stick_stiffness = 0.0;
+  /// [N·m·s/rad] c_t: a damper beside the stick spring (needs stick_stiffness > 0)
+  double stick_damping = 0.0;
   bool active() const { return arm > 0.0; }
+  bool sticks() const { return arm > 0.0 && stick_stiffness > 0.0; }
 };
 
-/// Every problem with the hinge law, fields "hinge.arm", "hinge.rate_band".
+/// Every problem with the hinge law, fields "hinge.arm", "hinge.rate_band",
+/// "hinge.stick_stiffness", "hinge.stick_damping".
 std::vector<Issue> validate(const HingeFriction& hinge, double pitch);
 /// With PinLoad::kPinLink and friction on a closed loop of an odd `links` count, the issue
 /// "links" (an even count: the inner and outer links alternate round the loop); none otherwise.
@@ -65,14 +76,17 @@ double rolling_hinge_arm(double rolling_coefficient, double plate_radius, double
 /// Δα = (d₀ × d₁)/|d_θ|² per link (its turn to third order), ω = Δβ/h; the force on node k is
 /// M g_k with g = ∂β/∂x at the θ point, so the couple's work over the step is exactly M Δβ ≤ 0.
 struct HingeCouple {
-  double load = 0.0;                            ///< [N] F, the pin load
-  double rate = 0.0;                            ///< [rad/s] ω
-  double torque = 0.0;                          ///< [N·m] M on the second link (−M on the first)
-  double turn = 0.0;                            ///< [rad] Δβ over the step
-  double work = 0.0;                            ///< [J] M Δβ ≤ 0
+  double load = 0.0;    ///< [N] F, the pin load
+  double rate = 0.0;    ///< [rad/s] ω
+  double torque = 0.0;  ///< [N·m] M on the second link (−M on the first)
+  double turn = 0.0;    ///< [rad] Δβ over the step
+  double work = 0.0;    ///< [J] M Δβ (≤ 0 but with the stick law, whose spring stores energy)
+  /// the stick law's spring holds (|−k_t d_θ − c_t ω| ≤ e F; HingeFriction::stick_stiffness)
+  bool sticking = false;
   double gx[3] = {0, 0, 0}, gy[3] = {0, 0, 0};  ///< [1/m] g = ∂β/∂x_k at the θ point
   double fx[3] = {0, 0, 0}, fy[3] = {0, 0, 0};  ///< [N] M g_k
-  /// [N·m·s/rad] e F s'(ω) ≥ 0: −∂(h f)/∂x₁ ≈ this × g gᵀ (the rate term alone)
+  /// [N·m·s/rad] −∂M/∂ω ≥ 0 at the fixed load: e F s'(ω) (the regularised law), k_t θ h + c_t
+  /// (the stick law, sticking) or 0 (sliding); −∂(h f)/∂x₁ ≈ this × g gᵀ (the rate term alone)
   double rate_stiffness = 0.0;
   /// [N/m] the exact ∂f/∂x₁ (f = M g on the three nodes, x₁ the end-of-step positions): row
   /// 2k + r is f_k's component r (x, y), column 2q + c is x₁ of node q, component c. Three terms:
@@ -87,9 +101,12 @@ struct HingeCouple {
 /// with PinLoad::kPinLink the pin link's (pin_link_side at `node`, the hinge's node index along
 /// the chain: only its parity counts). `node` has no default on any overload: a default would
 /// take every hinge as node 0 with the pin link's load, wrong at every odd node.
+/// `deflection`: the stick law's d₀ = φ − a at the step's start (hinge_couple_blocks; 0, a hinge
+/// anchored where it starts the step, and unused without the stick law).
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
-                         const double y1[3], double theta, double step, std::size_t node);
+                         const double y1[3], double theta, double step, std::size_t node,
+                         double deflection = 0.0);
 /// The same with the two links' chord lengths given: `length0` at the start of the step
 /// (|d₀|), `length1` at the end (|d₁|), as the integrator has them from its links (each link
 /// serves two hinges; the square roots are taken once). They must be the square roots of the
@@ -99,14 +116,15 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
                          const double y1[3], double theta, double step, const double length0[2],
-                         const double length1[2], bool jacobian, std::size_t node);
+                         const double length1[2], bool jacobian, std::size_t node,
+                         double deflection = 0.0);
 /// The same into `out`: every field is written but `jacobian`, which is written only when
 /// `jacobian` is true (else left as it was). For the integrator's hinge loop, which keeps one
 /// HingeCouple for all hinges rather than zeroing a fresh one (its 36-entry Jacobian) per hinge.
 void hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                   const double x0[3], const double y0[3], const double x1[3], const double y1[3],
                   double theta, double step, const double length0[2], const double length1[2],
-                  HingeCouple& out, bool jacobian, std::size_t node);
+                  HingeCouple& out, bool jacobian, std::size_t node, double deflection = 0.0);
 /// What one link contributes to the couples of the two hinges at its ends (each link serves two
 /// hinges: the integrator computes these once per link and iteration, then combines them per
 /// hinge with the hinge_couple overload below). From the link's chord at the start of the step
@@ -157,11 +175,14 @@ inline void hinge_link(double d0x, double d0y, double d1x, double d1y, double le
 /// (0, 1), …, (2, 2). `out.jacobian` is not touched. For the integrator's hinge loop, which adds
 /// −h × each block into its band without the 6×6 array in between (the same arithmetic).
 /// `node`: the hinge's node index along the chain, whose parity picks the pin link
-/// (pin_link_side; unused with PinLoad::kMean).
+/// (pin_link_side; unused with PinLoad::kMean). With the stick law (HingeFriction::sticks):
+/// `deflection` is the spring's d₀ = φ − a at the step's start (State::hinge_deflection) and
+/// `theta` the θ of the links' terms, the spring's torque −k_t (d₀ + θ Δβ) − c_t Δβ/h; both unused
+/// without it.
 template <class Block>
 inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
                                 const HingeLink& l1, double step, HingeCouple& hc, bool jacobian,
-                                Block&& block, std::size_t node) {
+                                Block&& block, std::size_t node, double theta, double deflection) {
   // F: ½ (T₀ + T₁) (the mean), or the pin link's T (weights w₀, w₁ of ½ T₀, ½ T₁: 1 and 1, or
   // 2 and 0, or 0 and 2; exact, so the mean's arithmetic is what it was)
   const int side = pin_link_side(hinge, node);
@@ -179,24 +200,43 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
   hc.gy[1] = -l0.py - l1.py;
   hc.gx[2] = l1.px;
   hc.gy[2] = l1.py;
-  const double band = hinge.rate_band;
-  const double root = std::sqrt(hc.rate * hc.rate + band * band);
   const double limit = hinge.arm * hc.load;  // e F
-  hc.torque = -limit * hc.rate / root;
+  const double loaded = load > 0.0 ? 1.0 : 0.0;
+  double load_factor = 0.0;  // ∂M/∂F
+  if (hinge.sticks()) {
+    // the stick law: the spring and damper −k_t d_θ − c_t ω (d_θ = d₀ + θ Δβ) while within e F,
+    // else e F against them (sliding); ∂M/∂Δβ = −(k_t θ + c_t/h) sticking, ∂M/∂F = ±e sliding
+    const double kt = hinge.stick_stiffness, ct = hinge.stick_damping;
+    const double spring = -kt * (deflection + theta * hc.turn) - ct * hc.rate;
+    hc.sticking = std::abs(spring) <= limit;
+    if (hc.sticking) {
+      hc.torque = spring;
+      hc.rate_stiffness = kt * theta * step + ct;
+    } else {
+      const double sign = spring > 0.0 ? 1.0 : -1.0;
+      hc.torque = sign * limit;
+      hc.rate_stiffness = 0.0;
+      load_factor = sign * hinge.arm * loaded;
+    }
+  } else {
+    const double band = hinge.rate_band;
+    const double root = std::sqrt(hc.rate * hc.rate + band * band);
+    hc.sticking = false;
+    hc.torque = -limit * hc.rate / root;
+    hc.rate_stiffness = limit * band * band / (root * root * root);
+    load_factor = -hinge.arm * (hc.rate / root) * loaded;  // −e s(ω)
+  }
   hc.work = hc.torque * hc.turn;
   for (int k = 0; k < 3; ++k) {
     hc.fx[k] = hc.torque * hc.gx[k];
     hc.fy[k] = hc.torque * hc.gy[k];
   }
-  hc.rate_stiffness = limit * band * band / (root * root * root);
   if (!jacobian) return;
   // The exact ∂f/∂x₁. Node gradients of a per-link quantity q(d₁) of links 0 (a → b) and 1
   // (b → c): the turn Δβ = turn₁ − turn₀ gives (T₀, −T₀ − T₁, T₁) (as g); the load F = Σ w_j ½ k
   // (l_θ − rest)_j gives (−w₀ E₀, w₀ E₀ − w₁ E₁, w₁ E₁) (zero where the load is clamped at 0):
   // the pin link's alone with PinLoad::kPinLink.
-  const double loaded = load > 0.0 ? 1.0 : 0.0;
-  const double load_factor = -hinge.arm * (hc.rate / root) * loaded;  // ∂M/∂F = −e s(ω)
-  const double rate_factor = -hc.rate_stiffness / step;               // ∂M/∂Δβ = −e F s'/h
+  const double rate_factor = -hc.rate_stiffness / step;  // ∂M/∂Δβ (−e F s'/h regularised)
   const double nturn_x[3] = {l0.tx, -l0.tx - l1.tx, l1.tx};
   const double nturn_y[3] = {l0.ty, -l0.ty - l1.ty, l1.ty};
   const double e0x = w0 * l0.ex, e0y = w0 * l0.ey, e1x = w1 * l1.ex, e1y = w1 * l1.ey;
@@ -244,8 +284,10 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
 
 /// The couple of the hinge between links `l0` (a → b) and `l1` (b → c) from their HingeLink
 /// terms, into `out` as above: bit for bit what the overloads above give.
+/// `theta` and `deflection` as for hinge_couple_blocks (the stick law's).
 inline void hinge_couple(const HingeFriction& hinge, const HingeLink& l0, const HingeLink& l1,
-                         double step, HingeCouple& hc, bool jacobian, std::size_t node) {
+                         double step, HingeCouple& hc, bool jacobian, std::size_t node,
+                         double theta, double deflection) {
   hinge_couple_blocks(
       hinge, l0, l1, step, hc, jacobian,
       [&hc](int k, int q, double a, double b, double c, double d) {
@@ -254,15 +296,16 @@ inline void hinge_couple(const HingeFriction& hinge, const HingeLink& l0, const 
         hc.jacobian[2 * k + 1][2 * q] = c;
         hc.jacobian[2 * k + 1][2 * q + 1] = d;
       },
-      node);
+      node, theta, deflection);
 }
 
 /// Both links of rest length `pitch`.
 inline HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, double pitch,
                                 const double x0[3], const double y0[3], const double x1[3],
-                                const double y1[3], double theta, double step, std::size_t node) {
+                                const double y1[3], double theta, double step, std::size_t node,
+                                double deflection = 0.0) {
   const double rest[2] = {pitch, pitch};
-  return hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step, node);
+  return hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step, node, deflection);
 }
 
 }  // namespace catena::dynamics

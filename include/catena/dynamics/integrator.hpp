@@ -70,7 +70,10 @@ struct StepReport {
   double contact_damping_work = 0.0;
   /// [J] the seats' friction work over the step, Σ h f_t v_t (≤ 0; roller and wheel together)
   double seat_friction_work = 0.0;
-  double hinge_work = 0.0;  ///< [J] the hinges' friction work over the step, Σ M Δβ (≤ 0)
+  /// [J] the hinges' friction work over the step, Σ M Δβ (≤ 0); with the stick law
+  /// (HingeFriction::stick_stiffness) Σ M Δβ + the change of the springs' ½ k_t d² (minus what the
+  /// spring–sliders dissipated), taken at the accepted iterate
+  double hinge_work = 0.0;
   /// [J] the take-ups' dampers' work over the step, −Σ c_t (s₁ − s₀)²/h (≤ 0)
   double takeup_damper_work = 0.0;
   /// [J] the rails' loads' work over the step, Σ F(q_θ)·(x₁ − x₀) (Guide::load_per_metre)

@@ -112,6 +112,13 @@ std::vector<Parameter> table_fields() {
                "rolling: the roller's concave face R2 > R1 (default: a flat face)"),
       quantity("hinge_band", K::kAngularSpeed,
                "rate band of the regularised hinge friction, in (0, 100] rad/s (default 5 rad/s)"),
+      number("hinge_stick_stiffness",
+             "with friction on (hinge sliding or rolling): the stick law's spring k_t [N m/rad] "
+             "in each hinge, >= 0: a hinge holds until the spring's torque reaches the friction "
+             "torque (default 0: the regularised friction, which creeps inside its rate band)"),
+      number("hinge_stick_damping",
+             "a damper c_t [N m s/rad] beside the hinges' stick spring, >= 0, with "
+             "hinge_stick_stiffness (default 0)"),
       text("pin_load",
            "with friction on (hinge sliding or rolling): the hinges' pin load, mean (of the "
            "two links' tensions, the default) or pin_link (the outer link's; links alternate, "
@@ -1822,6 +1829,44 @@ Setup parse(const analysis::Inputs& in) {
           {at(arm_key), shown(arm),
            "a friction arm (mu r or c_r R*) below p/2 = " + shown(0.5 * s.pitch) + " m"});
     s.hinge_law.arm = arm;
+    // the stick law (docs/models/dynamics.md, "Hinges: sticking"): with friction on, a spring of
+    // finite k_t ≥ 0 below the step's bound (a spring k_t/p² at a link's end, as a contact's),
+    // its damper with the spring only
+    {
+      const char* stiffness_key = "hinge_stick_stiffness";
+      const char* damping_key = "hinge_stick_damping";
+      if (hinge_known && hinge == "frictionless") {
+        for (const char* key : {stiffness_key, damping_key})
+          if (line.count(key))
+            issues.push_back({at(key), value.count(key) ? shown(value[key]) : "(given)",
+                              "only with hinge = \"sliding\" or \"rolling\""});
+      }
+      const double kt = optional(stiffness_key, 0.0), ct = optional(damping_key, 0.0);
+      if (!std::isnan(kt) && !(kt >= 0.0 && std::isfinite(kt))) {
+        issues.push_back({at(stiffness_key), shown(kt), "a finite value >= 0 N m/rad"});
+      } else if (kt > 0.0 && hinge != "frictionless" && std::isfinite(arm) && !(arm > 0.0)) {
+        issues.push_back({at(stiffness_key), shown(kt),
+                          "0 with no hinge friction (" + arm_key + " = 0: nothing to stick with)"});
+      } else if (kt > 0.0 && scales_known(s)) {
+        double most = NAN;
+        const std::string why = scale_bound(s, kMaxContactRatio, 2, "N/m", most);
+        if (kt > most * s.pitch * s.pitch)
+          issues.push_back({at(stiffness_key), shown(kt) + " N m/rad",
+                            "at most " + format_g(down_to(most * s.pitch * s.pitch, 4), 4) +
+                                " N m/rad: k_t/p^2 (the spring felt at a link's end) " + why +
+                                " (a smaller step allows more)"});
+      }
+      if (!std::isnan(ct) && !(ct >= 0.0 && std::isfinite(ct))) {
+        issues.push_back({at(damping_key), shown(ct), "a finite value >= 0 N m s/rad"});
+      } else if (ct > 0.0 && !(kt > 0.0)) {
+        issues.push_back({at(damping_key), shown(ct),
+                          "0 without hinge_stick_stiffness (the damper sits beside the spring)"});
+      }
+      if (hinge != "frictionless" && kt > 0.0 && std::isfinite(kt)) {
+        s.hinge_law.stick_stiffness = kt;
+        s.hinge_law.stick_damping = ct >= 0.0 && std::isfinite(ct) ? ct : 0.0;
+      }
+    }
     // the pin link's load round an odd loop: the model's rule (validate_pin_links, the friction
     // on), named at the case's links field; a count the layout chose is said to be its choice
     if (s.links > 0 && std::isfinite(arm)) {
@@ -2920,6 +2965,11 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["hinge_band"] = d.hinge_law.rate_band;
     // the pin link's load only: a run with the mean prints what it did before
     if (d.hinge_law.pin_load == PinLoad::kPinLink) j["hinge_pin_load"] = "pin_link";
+    // the stick law only: a run with the regularised law prints what it did before
+    if (d.hinge_law.sticks()) {
+      j["hinge_stick_stiffness"] = d.hinge_law.stick_stiffness;
+      j["hinge_stick_damping"] = d.hinge_law.stick_damping;
+    }
     j["summary"]["hinge_friction_work"] = r.hinge_work;
   }
   if (d.work_balance) {
@@ -3227,6 +3277,10 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["units"]["hinge_arm"] = "m";
     j["units"]["hinge_band"] = "rad/s";
     j["units"]["hinge_friction_work"] = "J";
+    if (d.hinge_law.sticks()) {
+      j["units"]["hinge_stick_stiffness"] = "N m/rad";
+      j["units"]["hinge_stick_damping"] = "N m s/rad";
+    }
   }
   for (const char* key : {"window_start", "window_end"}) j["units"][key] = "s";
   if (d.positions) {
@@ -3376,6 +3430,12 @@ Record describe(const Result& r, const analysis::Inputs&) {
     t << "  hinges " << d.hinge << ": friction arm " << format_g(d.hinge_law.arm * 1e3, 4)
       << " mm, rate band " << format_g(d.hinge_law.rate_band, 3) << " rad/s"
       << (d.hinge_law.pin_load == PinLoad::kPinLink ? ", pin load the pin link's" : "")
+      << (d.hinge_law.sticks()
+              ? ", stick spring " + format_g(d.hinge_law.stick_stiffness, 4) + " N m/rad" +
+                    (d.hinge_law.stick_damping > 0.0
+                         ? " and damper " + format_g(d.hinge_law.stick_damping, 4) + " N m s/rad"
+                         : std::string())
+              : std::string())
       << ", friction work " << format_g(r.hinge_work, 5) << " J\n";
   for (const Diagnostic& diag : rec.diagnostics)
     t << "  " << to_string(diag.severity) << ": " << diag.message << "\n";

@@ -1534,6 +1534,12 @@ Energy energy(const Model& model, const State& state) {
         std::hypot(state.x[b] - state.x[j], state.y[b] - state.y[j]) - model.rest_length(j);
     e.elastic += link_force(model, stretch, 0.0).energy;
   }
+  // the hinges' stick springs ½ k_t d² (HingeFriction::stick_stiffness; State::hinge_deflection,
+  // empty until a step sizes it: every hinge then anchored where it is)
+  if (model.hinge.sticks() && state.hinge_deflection.size() == n) {
+    for (const double d : state.hinge_deflection)
+      e.elastic += 0.5 * model.hinge.stick_stiffness * d * d;
+  }
   return e;
 }
 

@@ -20,6 +20,21 @@ std::vector<Issue> validate(const HingeFriction& hinge, double pitch) {
     out.push_back({"hinge.rate_band", check::format_si(hinge.rate_band, "rad/s"),
                    "a value in (0, 100] rad/s"});
   }
+  // the stick law: a spring of finite stiffness ≥ 0, with friction to stick by
+  if (!std::isfinite(hinge.stick_stiffness) || hinge.stick_stiffness < 0.0) {
+    out.push_back({"hinge.stick_stiffness", check::format_si(hinge.stick_stiffness, "N*m/rad"),
+                   "a finite value >= 0 N*m/rad (0: the regularised law)"});
+  } else if (hinge.stick_stiffness > 0.0 && !(hinge.arm > 0.0)) {
+    out.push_back({"hinge.stick_stiffness", check::format_si(hinge.stick_stiffness, "N*m/rad"),
+                   "0 on a frictionless hinge (arm 0: nothing to stick with)"});
+  }
+  if (!std::isfinite(hinge.stick_damping) || hinge.stick_damping < 0.0) {
+    out.push_back({"hinge.stick_damping", check::format_si(hinge.stick_damping, "N*m*s/rad"),
+                   "a finite value >= 0 N*m*s/rad"});
+  } else if (hinge.stick_damping > 0.0 && !(hinge.stick_stiffness > 0.0)) {
+    out.push_back({"hinge.stick_damping", check::format_si(hinge.stick_damping, "N*m*s/rad"),
+                   "0 without hinge.stick_stiffness (the damper sits beside the stick spring)"});
+  }
   return out;
 }
 
@@ -44,7 +59,8 @@ double rolling_hinge_arm(double rolling_coefficient, double plate_radius, double
 
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
-                         const double y1[3], double theta, double step, std::size_t node) {
+                         const double y1[3], double theta, double step, std::size_t node,
+                         double deflection) {
   double length0[2], length1[2];
   for (int j = 0; j < 2; ++j) {
     const double d0x = x0[j + 1] - x0[j], d0y = y0[j + 1] - y0[j];
@@ -53,29 +69,30 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
     length1[j] = std::sqrt(d1x * d1x + d1y * d1y);
   }
   return hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step, length0, length1,
-                      true, node);
+                      true, node, deflection);
 }
 
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
                          const double y1[3], double theta, double step, const double length0[2],
-                         const double length1[2], bool jacobian, std::size_t node) {
+                         const double length1[2], bool jacobian, std::size_t node,
+                         double deflection) {
   HingeCouple hc;
   hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step, length0, length1, hc,
-               jacobian, node);
+               jacobian, node, deflection);
   return hc;
 }
 
 void hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                   const double x0[3], const double y0[3], const double x1[3], const double y1[3],
                   double theta, double step, const double length0[2], const double length1[2],
-                  HingeCouple& hc, bool jacobian, std::size_t node) {
+                  HingeCouple& hc, bool jacobian, std::size_t node, double deflection) {
   HingeLink link[2];
   for (int j = 0; j < 2; ++j) {
     hinge_link(x0[j + 1] - x0[j], y0[j + 1] - y0[j], x1[j + 1] - x1[j], y1[j + 1] - y1[j],
                length0[j], length1[j], rest[j], axial_stiffness, theta, link[j], jacobian);
   }
-  hinge_couple(hinge, link[0], link[1], step, hc, jacobian, node);
+  hinge_couple(hinge, link[0], link[1], step, hc, jacobian, node, theta, deflection);
 }
 
 }  // namespace catena::dynamics

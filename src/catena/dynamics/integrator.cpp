@@ -351,6 +351,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     Mat2* far_upper = far_upper_.data();
     double hinge_work = 0.0;
     HingeCouple hc;  // one for every hinge: each call writes every field read below
+    // the stick law's deflections at the step's start (none sized: every hinge at its anchor)
+    const double* deflection = model.hinge.sticks() && s.hinge_deflection.size() == n
+                                   ? s.hinge_deflection.data()
+                                   : nullptr;
     for (std::size_t i = first; i < last; ++i) {
       const std::size_t ha = i == 0 ? n - 1 : i - 1, hb = i + 1 == n ? 0 : i + 1;
       // links ha (ha → i) and i (i → hb), their terms from the links' loop above; −h × the
@@ -365,7 +369,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
             Mat2& m = *slot[r][q];
             m = {m.a - h * ja, m.b - h * jb, m.c - h * jc, m.d - h * jd};
           },
-          i);
+          i, th, deflection != nullptr ? deflection[i] : 0.0);
       hinge_work += hc.work;
       rhs[ha].x += h * hc.fx[0];
       rhs[ha].y += h * hc.fy[0];
@@ -826,6 +830,10 @@ StepReport Integrator::step(const Model& model, State& s) {
   if (const std::size_t k = sticking_guides(model);
       k > 0 && s.stick_anchor.size() != k * model.nodes())
     s.stick_anchor.assign(k * model.nodes(), NAN);
+  // the hinges' stick law's deflections (HingeFriction::stick_stiffness): sized once, every hinge
+  // anchored where it is
+  if (model.hinge.sticks() && s.hinge_deflection.size() != model.nodes())
+    s.hinge_deflection.assign(model.nodes(), 0.0);
   const std::size_t n = model.nodes();
   const double h = options_.step;
   const double th = options_.theta;
@@ -1210,6 +1218,38 @@ StepReport Integrator::step(const Model& model, State& s) {
           guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_, i, qx_[i], qy_[i], h);
       report.friction_work += contact_work(gc);
     }
+  }
+  // The hinges' stick law (HingeFriction::stick_stiffness): each hinge's couple at the accepted
+  // iterate (the links' terms taken there afresh), its deflection moved on from d₀ to
+  // d₁ = d₀ + Δβ, kept while |d₁| is within the spring's reach e F/k_t (F the θ point's load),
+  // else left at ±e F/k_t (the anchor dragged: the slip). The hinge work is minus what the
+  // spring–sliders dissipated: the couple's work M Δβ plus the change of the springs' energy
+  // ½ k_t (d₁² − d₀²) — 0 a step while sticking at θ = ½ without the damper, −e F |Δa| sliding.
+  if (model.hinge.sticks() && n >= 3) {
+    const std::size_t links = model.links();
+    for (std::size_t j = 0; j < links; ++j) {
+      const std::size_t a = j, b = j + 1 == n ? 0 : j + 1;
+      const double d1x = ux_[b] - ux_[a], d1y = uy_[b] - uy_[a];
+      hinge_link(s.x[b] - s.x[a], s.y[b] - s.y[a], d1x, d1y, l0_[j],
+                 std::sqrt(d1x * d1x + d1y * d1y), model.rest_length(j), model.axial_stiffness, th,
+                 hinge_links_[j], false);
+    }
+    const double kt = model.hinge.stick_stiffness;
+    const std::size_t first = model.closed ? 0 : 1;
+    const std::size_t last = model.closed ? n : n - 1;
+    double work = 0.0;
+    HingeCouple hc;
+    for (std::size_t i = first; i < last; ++i) {
+      const std::size_t ha = i == 0 ? n - 1 : i - 1;
+      const double d0 = s.hinge_deflection[i];
+      hinge_couple(model.hinge, hinge_links_[ha], hinge_links_[i], h, hc, false, i, th, d0);
+      const double reach = model.hinge.arm * hc.load / kt;
+      const double d1 = d0 + hc.turn;
+      const double next = std::abs(d1) <= reach ? d1 : std::copysign(reach, d1);
+      s.hinge_deflection[i] = next;
+      work += hc.work + 0.5 * kt * (next * next - d0 * d0);
+    }
+    report.hinge_work = work;
   }
   // The rails' loads' work over the step: the force the step applied (at the θ point) times the
   // step's displacement.

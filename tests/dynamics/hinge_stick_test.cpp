@@ -1,0 +1,325 @@
+// The hinges' stick law (HingeFriction::stick_stiffness; docs/models/dynamics.md, "Hinges:
+// sticking"): the couple's torque and Jacobian, a loaded hinge holding under a torque below its
+// friction torque (against the regularised law's creep) and sliding at it above, the work balance
+// with the stick springs' energy, and the step's Newton matrix against differences.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "catena/dynamics/integrator.hpp"
+#include "residual_difference.hpp"
+
+namespace catena::dynamics {
+namespace {
+
+constexpr double kPitch = 0.01905, kStiffness = 5e7, kArm = 2.86e-4;  // 12B, μ 0.1 on d2 5.72 mm
+
+// β at nodes a, b, c: the angle of link (b → c) less that of link (a → b).
+double relative_angle(double ax, double ay, double bx, double by, double cx, double cy) {
+  const double ux = bx - ax, uy = by - ay, vx = cx - bx, vy = cy - by;
+  return std::atan2(ux * vy - uy * vx, ux * vx + uy * vy);
+}
+
+// The couple's torque by the stick law: −k_t (d₀ + θ Δβ) − c_t Δβ/h while within e F, e F
+// against it beyond, on three nodes of a hinge loaded by stretched links.
+TEST(HingeStick, TorqueIsTheSpringsWithinTheFrictionTorqueAndCoulombsBeyond) {
+  const double h = 1e-4, theta = 0.6, kt = 40.0, ct = 0.05;
+  HingeFriction hinge{.arm = kArm, .rate_band = 5.0};
+  hinge.stick_stiffness = kt;
+  hinge.stick_damping = ct;
+  // links stretched by 1e-5 m (F = 500 N), the last node moved across by 0.2 µm over the step
+  const double l = kPitch + 1e-5;
+  const double x0[3] = {-l, 0.0, l}, y0[3] = {0.0, 0.0, 0.0};
+  const double x1[3] = {-l, 0.0, l}, y1[3] = {0.0, 0.0, 2e-7};
+  int sticking = 0, sliding = 0;
+  for (double d0 : {0.0, 1e-3, -2e-3, 5e-3, -9e-3, 2e-2}) {
+    const HingeCouple hc = hinge_couple(hinge, kStiffness, kPitch, x0, y0, x1, y1, theta, h, 1, d0);
+    EXPECT_NEAR(hc.load, kStiffness * 1e-5, 1e-6 * kStiffness * 1e-5);
+    const double limit = kArm * hc.load;  // e F
+    const double spring = -kt * (d0 + theta * hc.turn) - ct * hc.turn / h;
+    if (std::abs(spring) <= limit) {
+      ++sticking;
+      EXPECT_TRUE(hc.sticking) << d0;
+      EXPECT_NEAR(hc.torque, spring, 1e-12 * limit) << d0;
+      EXPECT_NEAR(hc.rate_stiffness, kt * theta * h + ct, 1e-15) << d0;
+    } else {
+      ++sliding;
+      EXPECT_FALSE(hc.sticking) << d0;
+      EXPECT_NEAR(hc.torque, std::copysign(limit, spring), 1e-12 * limit) << d0;
+      EXPECT_EQ(hc.rate_stiffness, 0.0) << d0;
+    }
+    EXPECT_NEAR(hc.work, hc.torque * hc.turn, 1e-18);
+  }
+  EXPECT_GE(sticking, 2);
+  EXPECT_GE(sliding, 2);
+  // without the stick law the same pose gives the regularised torque, ≠ the spring's
+  hinge.stick_stiffness = 0.0;
+  hinge.stick_damping = 0.0;
+  const HingeCouple free =
+      hinge_couple(hinge, kStiffness, kPitch, x0, y0, x1, y1, theta, h, 1, 1e-3);
+  const double limit = kArm * free.load;
+  EXPECT_NEAR(free.torque, -limit * free.rate / std::hypot(free.rate, 5.0), 1e-12 * limit);
+  EXPECT_FALSE(free.sticking);
+}
+
+// The stick law's Jacobian against central differences of f = M g in the six end-of-step
+// coordinates, sticking and sliding poses, θ = ½ and 0.6, both pin loads.
+TEST(HingeStick, JacobianIsTheForcesDerivativeStickingAndSliding) {
+  const double h = 1e-4;
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> angle(-3.0, 3.0), turn(-0.6, 0.6), d(-2e-6, 2e-6),
+      defl(-4e-3, 4e-3);
+  int sticking = 0, sliding = 0;
+  for (int trial = 0; trial < 160; ++trial) {
+    HingeFriction hinge{
+        .arm = kArm, .rate_band = 5.0, .pin_load = trial % 2 ? PinLoad::kPinLink : PinLoad::kMean};
+    hinge.stick_stiffness = 50.0;
+    hinge.stick_damping = trial % 4 < 2 ? 0.0 : 0.02;
+    const double theta = trial % 3 ? 0.6 : 0.5;
+    const std::size_t node = static_cast<std::size_t>(trial % 5);
+    const double d0 = defl(rng);
+    // three nodes a stretched pitch apart (tension ≈ 500 N) at random angles, a small step
+    double x0[3], y0[3], x1[3], y1[3];
+    const double a = angle(rng), b = a + turn(rng), l = kPitch * 1.0005;
+    x0[0] = 0.0, y0[0] = 0.0;
+    x0[1] = l * std::cos(a), y0[1] = l * std::sin(a);
+    x0[2] = x0[1] + l * std::cos(b), y0[2] = y0[1] + l * std::sin(b);
+    for (int k = 0; k < 3; ++k) x1[k] = x0[k] + d(rng), y1[k] = y0[k] + d(rng);
+    const HingeCouple hc =
+        hinge_couple(hinge, kStiffness, kPitch, x0, y0, x1, y1, theta, h, node, d0);
+    // away from the switch (the differences must not straddle it)
+    const double spring =
+        -hinge.stick_stiffness * (d0 + theta * hc.turn) - hinge.stick_damping * hc.turn / h;
+    if (std::abs(std::abs(spring) - kArm * hc.load) < 1e-3 * kArm * hc.load) continue;
+    (hc.sticking ? sticking : sliding) += 1;
+    double scale = 0.0;
+    for (const auto& row : hc.jacobian)
+      for (double v : row) scale = std::max(scale, std::abs(v));
+    double worst = 0.0;
+    for (int q = 0; q < 6; ++q) {
+      const double du = 1e-10;
+      double xp[3], yp[3], xm[3], ym[3];
+      for (int k = 0; k < 3; ++k) xp[k] = xm[k] = x1[k], yp[k] = ym[k] = y1[k];
+      (q % 2 == 0 ? xp : yp)[q / 2] += du;
+      (q % 2 == 0 ? xm : ym)[q / 2] -= du;
+      const HingeCouple p =
+          hinge_couple(hinge, kStiffness, kPitch, x0, y0, xp, yp, theta, h, node, d0);
+      const HingeCouple m =
+          hinge_couple(hinge, kStiffness, kPitch, x0, y0, xm, ym, theta, h, node, d0);
+      for (int r = 0; r < 6; ++r) {
+        const double fp = r % 2 == 0 ? p.fx[r / 2] : p.fy[r / 2];
+        const double fm = r % 2 == 0 ? m.fx[r / 2] : m.fy[r / 2];
+        worst = std::max(worst, std::abs(hc.jacobian[r][q] - (fp - fm) / (2 * du)));
+      }
+    }
+    EXPECT_LT(worst, 1e-5 * scale) << trial << (hc.sticking ? " sticking" : " sliding");
+  }
+  EXPECT_GT(sticking, 30);
+  EXPECT_GT(sliding, 30);
+}
+
+// A hinge loaded by its pin: nodes 0 and 1 pinned with link 0 stretched to the tension `load`
+// (the pin link at node 1, PinLoad::kPinLink: F = load exactly), node 2 (mass 1 kg) a pitch on,
+// pushed across by a constant force giving the torque `torque` about node 1. The hinge at node 1
+// takes it. θ = ½ (the balance exact but for Newton's tolerance).
+struct Lever {
+  Model model;
+  State state;
+};
+Lever lever(double load, double torque, double kt, double ct) {
+  Lever out;
+  Model& m = out.model;
+  m = uniform_chain(3, false, kPitch, 1.0, kStiffness, 0.0, false);
+  m.pinned = {1, 1, 0};
+  m.hinge = HingeFriction{.arm = kArm, .rate_band = 5.0, .pin_load = PinLoad::kPinLink};
+  m.hinge.stick_stiffness = kt;
+  m.hinge.stick_damping = ct;
+  m.loads.push_back({.node = 2, .fx = 0.0, .fy = torque / kPitch});
+  State& s = out.state;
+  s = State(3, 0);
+  s.x = {-(kPitch + load / kStiffness), 0.0, kPitch};
+  s.y = {0.0, 0.0, 0.0};
+  return out;
+}
+
+struct LeverRun {
+  double angle_mid = 0.0, angle_end = 0.0, angle_max = 0.0;
+  double hinge_work = 0.0, balance = 0.0;  // ΔE − W_loads − W_hinge (the loads' work in −ΔV)
+  double slide_torque = 0.0;               // −hinge work / turn over the run's second half
+  double spring_energy = 0.0;              // ½ k_t d² at the end (State::hinge_deflection)
+};
+LeverRun run_lever(Lever l, double duration) {
+  Integrator integ(l.model, {.step = 1e-4, .tolerance = 1e-12, .theta = 0.5});
+  const double e0 = energy(l.model, l.state).total();
+  LeverRun out;
+  const int steps = static_cast<int>(std::lround(duration / 1e-4));
+  double work_half = 0.0, angle_half = 0.0;
+  for (int k = 0; k < steps; ++k) {
+    const StepReport r = integ.step(l.model, l.state);
+    EXPECT_TRUE(r.converged) << k;
+    if (!r.converged) break;
+    const double beta = relative_angle(l.state.x[0], l.state.y[0], l.state.x[1], l.state.y[1],
+                                       l.state.x[2], l.state.y[2]);
+    out.angle_max = std::max(out.angle_max, std::abs(beta));
+    if (k + 1 == steps / 2) {
+      out.angle_mid = beta;
+      work_half = l.state.hinge_work;
+      angle_half = beta;
+    }
+    out.angle_end = beta;
+  }
+  out.hinge_work = l.state.hinge_work;
+  for (const double d : l.state.hinge_deflection)
+    out.spring_energy += 0.5 * l.model.hinge.stick_stiffness * d * d;
+  out.balance = energy(l.model, l.state).total() - e0 - l.state.hinge_work - l.state.damper_work;
+  out.slide_torque = -(l.state.hinge_work - work_half) / (out.angle_end - angle_half);
+  return out;
+}
+
+// Below the friction torque (half of e F, F = 1 kN): the stick law holds the hinge at the
+// spring's static deflection M/k_t (damped by c_t at half its critical value), with no creep;
+// the regularised law creeps through the rate band at ω_ε r/√(1 − r²) (r = ½: 2.9 rad/s).
+TEST(HingeStick, LoadedHingeHoldsBelowTheFrictionTorqueWhereTheRegularisedLawCreeps) {
+  const double load = 1000.0, limit = kArm * load, torque = 0.5 * limit, kt = 50.0;
+  const double ct = std::sqrt(kt * 1.0 * kPitch * kPitch);  // ½ of 2 √(k_t m p²)
+  const double deflection = torque / kt;                    // 1.43 mrad
+  const LeverRun held = run_lever(lever(load, torque, kt, ct), 0.2);
+  const LeverRun crept = run_lever(lever(load, torque, 0.0, 0.0), 0.2);
+  std::printf(
+      "stick law: angle %.6e rad at 0.1 s, %.6e at 0.2 s (static deflection %.6e, max "
+      "%.6e); regularised: %.6e at 0.1 s, %.6e at 0.2 s\n",
+      held.angle_mid, held.angle_end, deflection, held.angle_max, crept.angle_mid, crept.angle_end);
+  EXPECT_NEAR(held.angle_end, deflection, 1e-3 * deflection);
+  EXPECT_LT(std::abs(held.angle_end - held.angle_mid), 1e-6 * deflection);  // no creep
+  EXPECT_LT(held.angle_max, 1.5 * deflection);
+  // the regularised law: past a hundred deflections in 0.2 s, still turning
+  EXPECT_GT(crept.angle_end, 100.0 * deflection);
+  EXPECT_GT(crept.angle_end - crept.angle_mid, 50.0 * deflection);
+}
+
+// Above the friction torque (1.5 e F): the stick law slides at Coulomb's torque e F (the hinge
+// work over the turn, once the spring sits at its reach); the regularised law's torque is below
+// it while the rate is within a few bands (here 4.6 % below).
+TEST(HingeStick, LoadedHingeSlidesAtTheFrictionTorqueAboveIt) {
+  const double load = 1000.0, limit = kArm * load, torque = 1.5 * limit, kt = 50.0;
+  const LeverRun slid = run_lever(lever(load, torque, kt, 0.0), 0.04);
+  const LeverRun band = run_lever(lever(load, torque, 0.0, 0.0), 0.04);
+  std::printf(
+      "sliding: torque %.6e N m (e F %.6e), turned %.4f rad; regularised %.6e N m, "
+      "turned %.4f rad\n",
+      slid.slide_torque, limit, slid.angle_end, band.slide_torque, band.angle_end);
+  EXPECT_NEAR(slid.slide_torque, limit, 1e-6 * limit);
+  EXPECT_GT(slid.angle_end, 0.1);
+  EXPECT_LT(band.slide_torque, 0.99 * limit);
+}
+
+// The work balance: E₁ − E₀ = Σ hinge work (+ the links' dampers, none here) with the stick
+// springs' ½ k_t d² in the energy, held (at θ = ½ without the damper: the spring rings, storing
+// the load's work) and sliding (the spring at its reach, e F/k_t).
+TEST(HingeStick, WorkBalanceClosesWithTheStickSpringsEnergy) {
+  const double load = 1000.0, limit = kArm * load, kt = 50.0;
+  for (double ratio : {0.5, 1.5}) {
+    Lever l = lever(load, ratio * limit, kt, 0.0);
+    const LeverRun run = run_lever(l, 0.04);
+    // the load's work, ≈ M β at the largest turn, and the springs' energy at the end: what the
+    // balance misses without it
+    const double input = ratio * limit * run.angle_max;
+    std::printf("ratio %.1f: hinge work %.6e J, spring energy %.6e J, balance %.3e J\n", ratio,
+                run.hinge_work, run.spring_energy, run.balance);
+    EXPECT_LT(std::abs(run.balance), 1e-6 * input) << ratio;
+    EXPECT_GT(run.spring_energy, 1e-3 * input) << ratio;
+    if (ratio < 1.0) {
+      EXPECT_LT(std::abs(run.hinge_work), 1e-9 * input);  // sticking at θ = ½: no loss
+    } else {
+      EXPECT_NEAR(run.spring_energy, 0.5 * limit * limit / kt, 1e-9 * input);  // at its reach
+      EXPECT_LT(run.hinge_work, -0.5 * input);
+    }
+  }
+}
+
+// The step's Newton matrix (Integrator::newton_system) with the stick law against central
+// differences of its residual: a free 12-link loop spinning and wobbling, its hinges' deflections
+// set so that some stick and some slide, at θ = 0.6 with the damper.
+TEST(HingeStick, NewtonMatrixIsTheResidualsDerivative) {
+  const std::size_t n = 12;
+  Model m = uniform_chain(n, true, kPitch, 0.02, kStiffness, 20.0, false);
+  m.hinge = HingeFriction{.arm = kArm, .rate_band = 5.0};
+  m.hinge.stick_stiffness = 30.0;
+  m.hinge.stick_damping = 0.002;
+  const double radius = kPitch / (2 * std::sin(M_PI / static_cast<double>(n))) * 1.0004;
+  State s(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    s.x[i] = radius * std::cos(a);
+    s.y[i] = radius * std::sin(a);
+    const double radial = i % 2 ? 0.01 : -0.01;
+    s.vx[i] = -3.0 * s.y[i] + radial * std::cos(a);
+    s.vy[i] = 3.0 * s.x[i] + radial * std::sin(a);
+  }
+  const double h = 1e-4;
+  Integrator integ(m, {.step = h, .theta = 0.6});
+  // deflections: within the reach at every third hinge, far beyond it (both signs) at the others
+  s.hinge_deflection.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+    s.hinge_deflection[i] = i % 3 == 0 ? 1e-4 : (i % 3 == 1 ? 0.05 : -0.05);
+  const std::size_t size = integ.unknowns();
+  std::vector<double> u(size);
+  for (std::size_t i = 0; i < n; ++i) {
+    u[2 * i] = s.x[i] + h * s.vx[i];
+    u[2 * i + 1] = s.y[i] + h * s.vy[i];
+  }
+  // which hinges stick at this iterate (the couple of each, as the step's assembly takes it)
+  int sticking = 0, sliding = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t a = (i + n - 1) % n, b = (i + 1) % n;
+    const double x0[3] = {s.x[a], s.x[i], s.x[b]}, y0[3] = {s.y[a], s.y[i], s.y[b]};
+    const double x1[3] = {u[2 * a], u[2 * i], u[2 * b]};
+    const double y1[3] = {u[2 * a + 1], u[2 * i + 1], u[2 * b + 1]};
+    const HingeCouple hc = hinge_couple(m.hinge, m.axial_stiffness, kPitch, x0, y0, x1, y1, 0.6, h,
+                                        i, s.hinge_deflection[i]);
+    (hc.sticking ? sticking : sliding) += 1;
+  }
+  EXPECT_EQ(sticking, 4);
+  EXPECT_EQ(sliding, 8);
+  std::vector<double> r0, jac, regularised;
+  integ.newton_system(m, s, u, r0, &jac);
+  Model plain = m;
+  plain.hinge.stick_stiffness = 0.0;
+  plain.hinge.stick_damping = 0.0;
+  integ.newton_system(plain, s, u, r0, &regularised);
+  const testing::ColumnsAgainstDifferences d = testing::expect_columns_match_differences(
+      integ, m, s, u, jac, regularised, [](std::size_t) { return 1e-10; }, 1e-5);
+  std::printf(
+      "stick law's Newton matrix: worst |J - FD| / column scale %.2e, differs from the "
+      "regularised law's by %.2e of the largest\n",
+      d.worst, d.differs / d.scale);
+  EXPECT_GT(d.differs, 1e-4 * d.scale);
+}
+
+TEST(HingeStick, InvalidLawListsEveryProblem) {
+  HingeFriction hinge{.arm = kArm, .rate_band = 5.0};
+  hinge.stick_stiffness = -1.0;
+  hinge.stick_damping = NAN;
+  std::vector<Issue> issues = validate(hinge, kPitch);
+  ASSERT_EQ(issues.size(), 2u);
+  EXPECT_EQ(issues[0].field, "hinge.stick_stiffness");
+  EXPECT_EQ(issues[1].field, "hinge.stick_damping");
+  // a spring on a frictionless hinge, a damper without the spring
+  HingeFriction bare{.arm = 0.0, .rate_band = 5.0};
+  bare.stick_stiffness = 10.0;
+  issues = validate(bare, kPitch);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].field, "hinge.stick_stiffness");
+  HingeFriction damper{.arm = kArm, .rate_band = 5.0};
+  damper.stick_damping = 0.1;
+  issues = validate(damper, kPitch);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].field, "hinge.stick_damping");
+  damper.stick_stiffness = 10.0;
+  EXPECT_TRUE(validate(damper, kPitch).empty());
+}
+
+}  // namespace
+}  // namespace catena::dynamics
