@@ -361,11 +361,14 @@ TEST(DynamicsRailLineLaw, ChainPieceSettlesAtTheLawsApproach) {
 // lost is the damper's work (the work balance closes).
 struct RailDrop {
   double deepest = 0.0, lost = 0.0, damper = 0.0, kinetic0 = 0.0, drift = 0.0, gained = 0.0;
+  double friction = 0.0;  // [J] the rail's friction work booked
 };
-// the drop's speed [m/s] and height [m] above the rail, its steps [s] and their number
+// the drop's speed [m/s] and height [m] above the rail, its steps [s] and their number; its speed
+// along the rail [m/s]
 struct DropRun {
   double speed = 0.3, above = 1e-7, step = 5e-7;
   int steps = 4000;
+  double along = 0.0;
 };
 RailDrop rail_drop(const Guide& g, double damping, const DropRun& run = {}) {
   constexpr double kG = 9.81;
@@ -379,6 +382,7 @@ RailDrop rail_drop(const Guide& g, double damping, const DropRun& run = {}) {
   for (std::size_t i = 0; i < 2; ++i) {
     s.x[i] = kPitch * static_cast<double>(i);
     s.y[i] = kRoller + kAbove;
+    s.vx[i] = run.along;
     s.vy[i] = -kV;
   }
   const Energy e0 = energy(m, s);
@@ -399,6 +403,7 @@ RailDrop rail_drop(const Guide& g, double damping, const DropRun& run = {}) {
   d.deepest = kRoller - lowest;
   d.lost = e0.total() - energy(m, s).total();
   d.damper = s.contact_damping_work;
+  d.friction = s.friction_work;
   return d;
 }
 
@@ -490,6 +495,48 @@ TEST(DynamicsRailLineLaw, DiscreteGradientsWorkIsTheEnergysChange) {
   EXPECT_LT(arc_err, 1e-3);
 }
 
+// (5b) The discrete gradient of the penalty (contact_law "penalty" with discrete_gradient set:
+// through the API only, the case file sets it with the line law): over steps on a straight rail
+// across the ramp's ε, past it and out of contact, the elastic force's work is −ΔE of the
+// penalty's energy written out here, kc g³/(6ε) within the ramp, kc (g²/2 − ε g/2 + ε²/6) past it.
+TEST(DynamicsRailLineLaw, PenaltysDiscreteGradientsWorkIsTheEnergysChange) {
+  Guide g = rail(Guide::Kind::kStraight, false);
+  g.line_law = false;
+  g.discrete_gradient = true;
+  g.contact_smoothing = 1e-6;
+  const double kc = g.contact_stiffness, eps = g.contact_smoothing;
+  const GuideFrame f = guide_frame(g);
+  auto penalty_energy = [&](double gap) {
+    if (!(gap > 0.0)) return 0.0;
+    return gap < eps ? kc * gap * gap * gap / (6.0 * eps)
+                     : kc * (0.5 * gap * gap - 0.5 * eps * gap + eps * eps / 6.0);
+  };
+  struct Step {
+    double g0, g1;  // [m] the gaps at the step's ends
+  };
+  const Step steps[] = {{-2e-6, 0.5e-6}, {0.2e-6, 0.8e-6}, {0.5e-6, 3e-6},
+                        {4e-6, 1e-6},    {3e-6, -1e-6},    {2e-6, 2e-6 + 1e-13}};
+  double worst = 0.0;
+  for (const auto& [g0, g1] : steps) {
+    const Touch a = touch(g, g0, 0.5), b = touch(g, g1, 0.5 + 1e-4);
+    const double dx = b.x - a.x, dy = b.y - a.y, h = 1e-4;
+    const GuideStep step{a.x, a.y, b.x, b.y, h};
+    const GuideContact c =
+        guide_contact(g, f, a.x + 0.5 * dx, a.y + 0.5 * dy, dx / h, dy / h, NAN, &step);
+    ASSERT_TRUE(c.active) << g0 << " " << g1;
+    // the gaps as the rail takes them, r − y (exact: y is within a factor 2 of r)
+    const double e0 = penalty_energy(kRoller - a.y), e1 = penalty_energy(kRoller - b.y);
+    const double change = e1 - e0;
+    const double err = std::abs(c.fx * dx + c.fy * dy + change);
+    // within 1e-9 of ΔE, and of the reference ΔE's own rounding, ~1e-16 of the energies
+    EXPECT_LE(err, 1e-9 * std::abs(change) + 1e-14 * std::max(e0, e1))
+        << g0 << " -> " << g1 << ": work " << c.fx * dx + c.fy * dy << " dE " << change;
+    if (std::abs(g1 - g0) > 1e-9) worst = std::max(worst, err / std::abs(change));
+  }
+  std::printf("penalty's discrete gradient: |work + dE| / |dE| worst %.2e on a straight rail\n",
+              worst);
+}
+
 // (6) A pair of undamped rollers dropped at θ = ½ onto a stiff steel rail in steps of 0.1 ms
 // (the conveyor's; ω h ≈ 10 at the law's stiffness under a roller's weight): with the discrete
 // gradient the energy is kept to Newton's tolerance; with the θ point's force (the law without it)
@@ -507,6 +554,29 @@ TEST(DynamicsRailLineLaw, DiscreteGradientKeepsADropsEnergy) {
       kept.kinetic0, kept.drift / kept.kinetic0, theta.gained / theta.kinetic0);
   EXPECT_LT(kept.drift, 1e-6 * kept.kinetic0);
   EXPECT_GT(theta.gained, 1.0 * theta.kinetic0);
+}
+
+// (6b) The stick law on a line-law rail (k_t = 1e6 N/m, μ = 0.3; docs "Guides: sticking"): the
+// pair dropped at θ = ½ in steps of 0.1 ms from 10 µm above the rail at 0.05 m/s while sliding
+// along it at 0.2 m/s, undamped: it bounces, a contact acting on the entry's and the bounces'
+// steps while its θ point is above the rail (the discrete gradient's, over the step). The anchors
+// are taken and the friction work booked on those steps as the force acted: the work balance
+// closes, the energy lost the friction's work.
+TEST(DynamicsRailLineLaw, StickLawsWorkBalanceClosesOnABouncingDrop) {
+  Guide g = rail(Guide::Kind::kStraight, false);
+  ASSERT_TRUE(g.discrete_gradient);
+  g.friction = 0.3;
+  g.stick_stiffness = 1e6;
+  const DropRun run{.speed = 0.05, .above = 1e-5, .step = 1e-4, .steps = 400, .along = 0.2};
+  const RailDrop d = rail_drop(g, 0.0, run);
+  const double balance = -d.lost - (d.friction + d.damper);
+  std::printf(
+      "stick law on a line-law rail, bouncing drop at 0.1 ms steps: lost %.6g J, friction work "
+      "%.6g J, balance %.2e J\n",
+      d.lost, d.friction, balance);
+  EXPECT_LT(d.friction, -0.1 * d.kinetic0);  // it slid and was slowed
+  EXPECT_EQ(d.damper, 0.0);
+  EXPECT_LT(std::abs(balance), 1e-6 * d.kinetic0);
 }
 
 // (7) The discrete gradient's Newton matrix (θ = 0.6, damping and friction) on a step where one

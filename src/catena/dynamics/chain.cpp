@@ -631,14 +631,16 @@ LineForce rail_elastic(const Guide& gd, double g) {
 }
 
 // The gap g at (x, y) in the rail's geometry with no test of its ends or sides (∂g/∂q = −n, n
-// returned): r − (q − P₀)·n on a straight rail, R + r − |q − C| outside an arc, |q − C| − (R − r)
-// inside it.
+// returned): r − (q − P₀)·n on a straight rail (n the left normal: the free side), R + r − |q − C|
+// outside an arc, |q − C| − (R − r) inside it. `curvature`, if given, gets κ with ∂n/∂q = κ t tᵀ:
+// 0 on a straight rail, ±1/|q − C| on an arc (0 at its centre, where n is 0).
 double rail_gap(const Guide& gd, const GuideFrame& frame, double x, double y, double& nx,
-                double& ny) {
+                double& ny, double* curvature = nullptr) {
   const double r = gd.roller_radius;
   if (gd.kind == Guide::Kind::kStraight) {
     nx = -frame.uy;
     ny = frame.ux;
+    if (curvature != nullptr) *curvature = 0.0;
     return r - ((x - gd.x0) * nx + (y - gd.y0) * ny);
   }
   const double rx = x - gd.centre_x, ry = y - gd.centre_y;
@@ -646,6 +648,7 @@ double rail_gap(const Guide& gd, const GuideFrame& frame, double x, double y, do
   const double sgn = gd.inside ? -1.0 : 1.0;
   nx = d > 0.0 ? sgn * rx / d : 0.0;
   ny = d > 0.0 ? sgn * ry / d : 0.0;
+  if (curvature != nullptr) *curvature = d > 0.0 ? sgn / d : 0.0;
   return gd.inside ? d - (gd.radius - r) : gd.radius + r - d;
 }
 
@@ -680,30 +683,20 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
                            double vy, double anchor, const GuideStep* step) {
   GuideContact c;
   const double r = gd.roller_radius;
-  double g = 0.0, kappa = 0.0, nx = 0.0, ny = 0.0;
+  // the rail's ends: along the straight rail's length, within the arc's angles (and off its centre)
   if (gd.kind == Guide::Kind::kStraight) {
-    const double len = frame.length;
-    const double ux = frame.ux, uy = frame.uy;
-    nx = -uy;  // the left normal: the free side
-    ny = ux;
-    const double rx = x - gd.x0, ry = y - gd.y0;
-    const double along = rx * ux + ry * uy;
-    if (!(along >= 0.0) || !(along <= len)) return c;  // off the rail's ends
-    g = r - (rx * nx + ry * ny);
+    const double along = (x - gd.x0) * frame.ux + (y - gd.y0) * frame.uy;
+    if (!(along >= 0.0) || !(along <= frame.length)) return c;  // off the rail's ends
   } else {
     const double rx = x - gd.centre_x, ry = y - gd.centre_y;
-    const double d = std::sqrt(rx * rx + ry * ry);
-    if (!(d > 0.0)) return c;
+    if (!(rx * rx + ry * ry > 0.0)) return c;  // at the centre: no normal
     constexpr double kTwoPi = 2.0 * std::numbers::pi;
     double a = std::atan2(ry, rx) - gd.start_angle;
     a -= kTwoPi * std::floor(a / kTwoPi);
     if (a > gd.end_angle - gd.start_angle) return c;  // off the arc's ends
-    const double sgn = gd.inside ? -1.0 : 1.0;
-    nx = sgn * rx / d;
-    ny = sgn * ry / d;
-    g = gd.inside ? d - (gd.radius - r) : gd.radius + r - d;
-    kappa = sgn / d;  // ∂n/∂q = κ t tᵀ
   }
+  double nx = 0.0, ny = 0.0, kappa = 0.0;
+  const double g = rail_gap(gd, frame, x, y, nx, ny, &kappa);
   // One-sided: a roller whose centre is past the rail's surface is on its far side, not pressed
   // into it (so a rail does not catch the chain's other run behind it).
   if (!(g < 2.0 * r)) return c;

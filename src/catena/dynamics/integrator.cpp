@@ -34,25 +34,37 @@ std::size_t checked_nodes(const Model& model, const IntegratorOptions& options) 
   throw_if_any(issues);
   return model.nodes();
 }
+// Whether node i can touch the guide on the step from x₀ (the state) to the iterate u, its θ
+// point (qx, qy): the guide's bounds cull (exact: a roller outside them cannot touch it;
+// guide_bounds). The contact acts at the θ point, or, with the discrete gradient
+// (Guide::discrete_gradient), over the step: then it is culled only when its θ point, x₀ and u are
+// all outside the bounds (a roller entering or leaving the rail on the step, or bouncing off it
+// within a step or two, has a force while its θ point's gap is ≤ 0). Exact against the bounds;
+// but the guide hint's lists (GuideHint) are made from the θ points: they reach 1.25 margins
+// (p/4) past the box and a node moves at most a margin before they are made afresh, so a listed
+// node's x₀ or u is covered only while it is within p/16 of the θ point in x and in y — θ|Δx|
+// ≤ p/16 a step (1.2 mm on 12B); past that an x₀ or u inside the box can be missed (docs "Guides:
+// the discrete gradient").
+bool step_touch_possible(const Guide& guide, const GuideBounds& bounds, const State& s,
+                         const std::vector<double>& ux, const std::vector<double>& uy,
+                         std::size_t i, double qx, double qy) {
+  if (guide_touch_possible(bounds, qx, qy)) return true;
+  return guide.discrete_gradient && (guide_touch_possible(bounds, s.x[i], s.y[i]) ||
+                                     guide_touch_possible(bounds, ux[i], uy[i]));
+}
 // Node i's contact with a guide at its θ point (qx, qy) of the step from x₀ (the state) to the
 // iterate u, with the step's velocity (u − x₀)/h: the force the step applies. The guide's bounds
-// cull first (exact: a roller outside them cannot touch it; guide_bounds), so that a node far
-// from a rail costs a few comparisons. With the discrete gradient (Guide::discrete_gradient) the
-// elastic part is taken over the step from x₀ to u, and a node is culled only when its θ point,
-// x₀ and u are all outside the bounds (a roller entering or leaving the rail on the step).
+// cull first (step_touch_possible), so that a node far from a rail costs a few comparisons. With
+// the discrete gradient (Guide::discrete_gradient) the elastic part is taken over the step from
+// x₀ to u.
 GuideContact guide_contact_at_theta(const Guide& guide, const GuideFrame& frame,
                                     const GuideBounds& bounds, const State& s,
                                     const std::vector<double>& ux, const std::vector<double>& uy,
                                     std::size_t i, double qx, double qy, double h,
                                     double anchor = NAN) {
+  if (!step_touch_possible(guide, bounds, s, ux, uy, i, qx, qy)) return {};
   const double vx = (ux[i] - s.x[i]) / h, vy = (uy[i] - s.y[i]) / h;
-  if (!guide.discrete_gradient) {
-    if (!guide_touch_possible(bounds, qx, qy)) return {};
-    return guide_contact(guide, frame, qx, qy, vx, vy, anchor);
-  }
-  if (!guide_touch_possible(bounds, qx, qy) && !guide_touch_possible(bounds, s.x[i], s.y[i]) &&
-      !guide_touch_possible(bounds, ux[i], uy[i]))
-    return {};
+  if (!guide.discrete_gradient) return guide_contact(guide, frame, qx, qy, vx, vy, anchor);
   const GuideStep step{s.x[i], s.y[i], ux[i], uy[i], h};
   return guide_contact(guide, frame, qx, qy, vx, vy, anchor, &step);
 }
@@ -1189,9 +1201,12 @@ StepReport Integrator::step(const Model& model, State& s) {
         if (model.is_pinned(i)) continue;
         const std::size_t at = static_cast<std::size_t>(stick_slot_[g]) * n + i;
         const double was = s.stick_anchor[at];
-        // not anchored, and neither on the hint's list nor within the guide's reach: it stays
-        // unanchored, nothing to book (and no position to take: on an arc that is an atan2 a node)
-        if (!std::isfinite(was) && (!on_list || !guide_touch_possible(bounds, qx_[i], qy_[i])))
+        // not anchored, and neither on the hint's list nor within the guide's reach on the step
+        // (as the Newton assembly's test: with the discrete gradient x₀ and u besides the θ point):
+        // it stays unanchored, nothing to book (and no position to take: on an arc that is an
+        // atan2 a node)
+        if (!std::isfinite(was) &&
+            (!on_list || !step_touch_possible(guide, bounds, s, ux_, uy_, i, qx_[i], qy_[i])))
           continue;
         const double a = step_anchor(guide, guide_frame_[g], s, stick_slot_[g], i);
         const GuideContact gc = guide_contact_at_theta(guide, guide_frame_[g], bounds, s, ux_, uy_,
