@@ -1,5 +1,6 @@
-// tests/read_text.hpp, the test programs' file reader: the whole file byte for byte, and a file
-// that cannot be opened fails the calling test, naming the path at the caller's line.
+// tests/read_text.hpp, the test programs' file reader: the whole file byte for byte, and a path
+// that cannot be read (not opened, a directory, a read error) fails the calling test, naming the
+// path at the caller's line.
 #include "read_text.hpp"
 
 #include <gtest/gtest-spi.h>
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <source_location>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -54,6 +56,47 @@ TEST(ReadText, AFileThatCannotBeOpenedFailsTheCallerNamingThePath) {
   EXPECT_EQ(std::string(failure.file_name()), std::source_location::current().file_name());
   EXPECT_EQ(failure.line_number(), line);
   fs::remove_all(missing.parent_path());
+}
+
+// read_text on `path` with its failures caught: the text and the failures' messages
+struct Caught {
+  std::string text;
+  std::vector<std::string> messages;
+};
+Caught read_caught(const fs::path& path) {
+  ::testing::TestPartResultArray failures;
+  Caught out;
+  {
+    ::testing::ScopedFakeTestPartResultReporter reporter(
+        ::testing::ScopedFakeTestPartResultReporter::INTERCEPT_ONLY_CURRENT_THREAD, &failures);
+    out.text = read_text(path);
+  }
+  for (int i = 0; i < failures.size(); ++i)
+    out.messages.emplace_back(failures.GetTestPartResult(i).message());
+  return out;
+}
+
+TEST(ReadText, ADirectoryFailsTheCallerInsteadOfReadingEmpty) {
+  // a directory opens as a file stream on Linux and reads as nothing
+  const fs::path dir = scratch();
+  const Caught c = read_caught(dir);
+  EXPECT_EQ(c.text, "");
+  ASSERT_EQ(c.messages.size(), 1u);
+  EXPECT_NE(c.messages[0].find("directory"), std::string::npos) << c.messages[0];
+  EXPECT_NE(c.messages[0].find(dir.string()), std::string::npos) << c.messages[0];
+  fs::remove_all(dir);
+}
+
+TEST(ReadText, AReadErrorAfterOpeningFailsTheCaller) {
+  // /proc/self/mem opens for reading, and reading at offset 0 (never mapped) fails with EIO
+  const fs::path mem = "/proc/self/mem";
+  if (!fs::exists(mem)) GTEST_SKIP() << "no " << mem << " here";
+  ASSERT_TRUE(std::ifstream(mem, std::ios::binary).is_open());
+  const Caught c = read_caught(mem);
+  EXPECT_EQ(c.text, "");
+  ASSERT_EQ(c.messages.size(), 1u);
+  EXPECT_NE(c.messages[0].find("read error in " + mem.string()), std::string::npos)
+      << c.messages[0];
 }
 
 }  // namespace

@@ -4,7 +4,6 @@
 #include <array>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -135,10 +134,10 @@ TEST(PocketwheelCli, OutputFileAndCsvSideFile) {
                        csv.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(r.out.empty());
-  const auto j = nlohmann::json::parse(std::ifstream(json));
+  const auto j = nlohmann::json::parse(read_text(json));
   ASSERT_TRUE(j.is_array());
   EXPECT_EQ(j.size(), 3u);  // free, chordal, tangential
-  std::ifstream in(csv);
+  std::istringstream in(read_text(csv));
   std::string header;
   std::getline(in, header);
   EXPECT_EQ(header.rfind("phi,time,x_none,vx_none,ax_none,vy_none,ay_none,x_chordal", 0), 0u)

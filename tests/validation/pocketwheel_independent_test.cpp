@@ -7,13 +7,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "../read_text.hpp"
 #include "catena/pocketwheel/run_on.hpp"
 
 namespace catena::pocketwheel {
@@ -35,8 +35,7 @@ constexpr double kOmega = 5.0;              // [rad/s]
 constexpr double kGuideEnd = 0.256;         // [m] l
 
 std::vector<std::vector<std::string>> read_rows(const std::string& path) {
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << path;
+  std::istringstream in(read_text(path));
   std::vector<std::vector<std::string>> rows;
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line[0] == '#') continue;

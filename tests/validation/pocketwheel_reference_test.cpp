@@ -5,12 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "../read_text.hpp"
 #include "catena/pocketwheel/run_on.hpp"
 
 namespace catena::pocketwheel {
@@ -22,7 +22,7 @@ constexpr double kAccelTol = 1e-6;      // [m/s²]
 constexpr double kEventGap = 1e-9;      // [rad]
 
 std::map<std::string, std::vector<double>> read_csv(const std::string& path) {
-  std::ifstream in(path);
+  std::istringstream in(read_text(path));
   std::string line;
   std::getline(in, line);
   std::vector<std::string> names;

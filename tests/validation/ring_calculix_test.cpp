@@ -8,12 +8,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "../read_text.hpp"
 #include "catena/composite/ring.hpp"
 
 namespace catena::composite {
@@ -39,7 +39,7 @@ struct Table {
 };
 
 Table read_csv(const std::string& file) {
-  std::ifstream in(std::string(CATENA_REFERENCE_DIR) + "/ring_calculix/" + file);
+  std::istringstream in(read_text(std::string(CATENA_REFERENCE_DIR) + "/ring_calculix/" + file));
   Table t;
   std::string line;
   std::getline(in, line);
