@@ -188,6 +188,9 @@ TEST(DynamicsLoadCli, LoadInertiaAddsTheCatchAndDischargeToTheBalance) {
   EXPECT_NEAR(discharged / -half, 1.0, 0.03) << b.dump();
   EXPECT_LT(std::abs(b["numerical"].get<double>()), 0.05 * std::abs(caught + discharged))
       << b.dump();
+  // the material arrives at rest: it brings nothing, the catch is all loss
+  ASSERT_TRUE(b.contains("load_arrival")) << b.dump();
+  EXPECT_EQ(b["load_arrival"].get<double>(), 0.0) << b.dump();
   const CliRun w =
       run("dynamics " + write("weight.toml", loaded) + " --duration 0.02s --format json");
   ASSERT_EQ(w.status, 0) << w.err;
@@ -195,6 +198,7 @@ TEST(DynamicsLoadCli, LoadInertiaAddsTheCatchAndDischargeToTheBalance) {
   EXPECT_TRUE(p["summary"]["work_balance"].contains("loads"));
   EXPECT_FALSE(p["summary"]["work_balance"].contains("load_catch"));
   EXPECT_FALSE(p["summary"]["work_balance"].contains("load_discharge"));
+  EXPECT_FALSE(p["summary"]["work_balance"].contains("load_arrival"));
 }
 
 // Every bad `load_inertia` named at once, with its line: not true or false, and true on a rail
@@ -218,7 +222,8 @@ TEST(DynamicsLoadCli, EveryBadLoadInertiaNamed) {
 // load_speed = −v). Nothing is lost in the catch, and the material brings ½ q_L v u² = ½ q_L v³
 // of kinetic energy: `load_catch` is +½ q_L v³ t within 3 % (at rest it is −½ q_L v³ t), the
 // discharge as before, and `numerical` within 5 % of the discharge (`energy_drift` stays net of
-// both).
+// both). `load_arrival`, the part of `load_catch` the material brings, is ½ q_L v u² t = ½ q_L v³ t
+// within 3 %, and the catch's loss, `load_catch` less it, within 3 % of ½ q_L v³ t of 0.
 TEST(DynamicsLoadCli, LoadSpeedBringsTheArrivingMaterialsEnergy) {
   std::string balance = with_dynamics_key(example(), "work_balance = true");
   const std::string speed = "speed = \"5 rad/s\"";
@@ -243,6 +248,12 @@ TEST(DynamicsLoadCli, LoadSpeedBringsTheArrivingMaterialsEnergy) {
   EXPECT_NEAR(caught / half, 1.0, 0.03) << b.dump();
   EXPECT_NEAR(discharged / -half, 1.0, 0.03) << b.dump();
   EXPECT_LT(std::abs(b["numerical"].get<double>()), 0.05 * std::abs(discharged)) << b.dump();
+  ASSERT_TRUE(b.contains("load_arrival")) << b.dump();
+  const double arrival = b["load_arrival"];
+  std::printf("arrival %.4g J (1/2 q_L v u^2 t %.4g J), the catch's loss %.4g J\n", arrival, half,
+              caught - arrival);
+  EXPECT_NEAR(arrival / half, 1.0, 0.03) << b.dump();
+  EXPECT_LT(std::abs(caught - arrival), 0.03 * half) << b.dump();
 }
 
 // Every bad `load_speed` named at once, with its line and the valid range: beyond 100 m/s, a

@@ -710,6 +710,86 @@ TEST(RailLoad, LoadSpeedWorkBalanceClosesWithTheArrivingMaterialsEnergy) {
   EXPECT_EQ(still.s.load_arrival_work, 0.0);
 }
 
+// A 1-link chain (2 nodes, 24 g each, frictionless) riding round the inside of a circle of
+// R = 0.4 m at v = 1 m/s counter-clockwise, near its bottom, from a bare arc (180°–262°) onto a
+// loaded one on the same circle (262°–350°, q_L = 2.5 kg/m, load_inertia; θ = ½, 0.15 s: both
+// nodes end past the loaded arc's entry ramp). The gravity is a token 0.01 m/s² (a load needs
+// one to press it on the rail): over the ride's 6 mm drop its work is 1e-4 of the kinetic energy.
+// With the material arriving at rest the catch's loss (load_catch_work less load_arrival_work) is
+// the inelastic catch's, −½ v² 2m M_L/(2m + M_L), M_L = 2 q_L p (the angular momentum about the
+// centre kept: the contact pushes radially), within 1e-3 (measured +1.7e-4). With load_speed = +v
+// (the arc's counter-clockwise sense: the chain's own velocity) nothing is lost, |loss| below
+// 1e-6 of that (measured 1.8e-8), the material brings ½ v² M_L (within 1e-9) and the chain keeps
+// its speed within 1e-4 (measured +3e-5). With the arc's sign flipped the loss is −0.047 J, three
+// times the loss at rest, and the chain nearly stops (the test fails).
+TEST(RailLoad, LoadSpeedOnAnArcMatchingTheChainLosesNothing) {
+  const double q = 2.5, m = 0.024, v = 1.0;
+  const double deg = std::numbers::pi / 180.0;
+  Guide bare;
+  bare.kind = Guide::Kind::kArc;
+  bare.inside = true;
+  bare.radius = 0.4;
+  bare.roller_radius = 0.006;
+  bare.contact_stiffness = 1e6;
+  bare.contact_damping = 100.0;
+  bare.start_angle = 180.0 * deg;
+  bare.end_angle = 262.0 * deg;
+  Guide loaded = bare;
+  loaded.start_angle = 262.0 * deg;
+  loaded.end_angle = 350.0 * deg;
+  loaded.load_per_metre = q;
+  loaded.load_inertia = true;
+  const double rho = line_radius(bare);
+  struct Catch {
+    double loss = 0.0, arrival = 0.0, speed = 0.0;
+  };
+  const auto ride = [&](double u) {
+    Model model = uniform_chain(2, false, kPitch, m, 2e6, 30.0, false);
+    model.gravity_y = -0.01;
+    Guide g = loaded;
+    g.load_speed = u;
+    model.guides = {bare, g};
+    State s(2, 0);
+    const double lead = 257.0 * deg, gap = 2.0 * std::asin(0.5 * kPitch / rho);
+    for (std::size_t i = 0; i < 2; ++i) {
+      const double phi = lead - gap * static_cast<double>(1 - i);
+      s.x[i] = rho * std::cos(phi);
+      s.y[i] = rho * std::sin(phi);
+      s.vx[i] = -v * std::sin(phi);
+      s.vy[i] = v * std::cos(phi);
+    }
+    Integrator integ(model, {.step = 1e-4, .theta = 0.5});
+    Catch out;
+    for (int j = 0; j < 1500; ++j) {
+      if (!integ.step(model, s).converged) {
+        ADD_FAILURE() << "u " << u << ": step " << j << " did not converge";
+        return out;
+      }
+    }
+    for (std::size_t i = 0; i < 2; ++i) {
+      const double phi = std::atan2(s.y[i], s.x[i]) + 2.0 * std::numbers::pi;
+      EXPECT_GT(phi, loaded.start_angle + 0.5 * kPitch / rho) << i << ": past the entry's ramp";
+      EXPECT_LT(phi, loaded.end_angle - 0.5 * kPitch / rho) << i << ": before the exit's ramp";
+      out.speed += 0.5 * std::hypot(s.vx[i], s.vy[i]);
+    }
+    out.arrival = s.load_arrival_work;
+    out.loss = s.load_catch_work - s.load_arrival_work;
+    return out;
+  };
+  const double carried = 2.0 * q * kPitch;  // [kg] M_L
+  const double expected = -0.5 * v * v * 2.0 * m * carried / (2.0 * m + carried);
+  const Catch still = ride(0.0), along = ride(v);
+  std::printf(
+      "onto a loaded arc: at rest loss %.6g J (-1/2 v^2 2m M_L/(2m + M_L) %.6g J, %+.2e), speed "
+      "%.5f m/s; at +v loss %.3g J, arrival %.6g J, speed %.5f m/s\n",
+      still.loss, expected, still.loss / expected - 1.0, still.speed, along.loss, along.arrival,
+      along.speed);
+  EXPECT_NEAR(still.loss, expected, 1e-3 * std::abs(expected));
+  EXPECT_LT(std::abs(along.loss), 1e-6 * std::abs(expected));
+  EXPECT_NEAR(along.speed, v, 1e-4 * v);
+  EXPECT_NEAR(along.arrival, 0.5 * v * v * carried, 1e-9 * carried);
+}
+
 // A bad load_speed named with the other guides' problems: not finite, beyond ±100 m/s, and a
 // speed on a guide whose load is weight only (it would do nothing); accepted on a loaded guide
 // with the inertia, either way along it.

@@ -2291,8 +2291,9 @@ struct Result {
   double seat_friction_work = 0.0;  // the seats' friction (0 unless seat_friction > 0)
   double hinge_work = 0.0;          // the hinges' friction (≤ 0)
   double load_work = 0.0;           // the rails' loads (0 without load_per_metre)
-  // the load's catch and discharge (≤ 0; 0 without load_inertia)
-  double load_catch_work = 0.0, load_discharge_work = 0.0;
+  // the load's catch and discharge (≤ 0 at rest; 0 without load_inertia) and the arriving
+  // material's kinetic energy, part of the catch (≥ 0; 0 without load_speed)
+  double load_catch_work = 0.0, load_discharge_work = 0.0, load_arrival_work = 0.0;
   // the work balance (summary.work_balance): E_end − E_0 = input + friction + link dampers +
   // contact dampers + numerical (the command's model has no drag)
   double input_work = 0.0, damper_work = 0.0, contact_damping_work = 0.0;
@@ -2697,6 +2698,7 @@ Result run(const analysis::Inputs& in) {
   // the load's catch and discharge (a run without load_inertia computes as before)
   if (any_load_inertia(d.guides)) {
     out.load_catch_work = s.load_catch_work;
+    out.load_arrival_work = s.load_arrival_work;
     out.load_discharge_work = s.load_discharge_work;
     out.energy_drift -= s.load_catch_work + s.load_discharge_work;
   }
@@ -2984,6 +2986,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
     if (any_rail_load(d)) j["summary"]["work_balance"]["loads"] = r.load_work;
     if (any_load_inertia(d.guides)) {
       j["summary"]["work_balance"]["load_catch"] = r.load_catch_work;
+      // the part of load_catch the arriving material brings (its loss is load_catch less it)
+      j["summary"]["work_balance"]["load_arrival"] = r.load_arrival_work;
       j["summary"]["work_balance"]["load_discharge"] = r.load_discharge_work;
     }
   }
@@ -3411,7 +3415,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
                            : "take-up dampers " + format_g(r.takeup_damper_work, 5) + " J, ")
       << (any_rail_load(d) ? "loads " + format_g(r.load_work, 5) + " J, " : std::string())
       << (any_load_inertia(d.guides)
-              ? "load catch " + format_g(r.load_catch_work, 5) + " J, load discharge " +
+              ? "load catch " + format_g(r.load_catch_work, 5) + " J (arrival " +
+                    format_g(r.load_arrival_work, 5) + " J), load discharge " +
                     format_g(r.load_discharge_work, 5) + " J, "
               : std::string())
       << "numerical " << format_g(r.numerical_work, 4) << " J\n";
