@@ -89,14 +89,16 @@ TEST(HingeFriction, PinLoadTakesEachLinksOwnRestLength) {
   const Pose p = round_link_pose();
   const double own[2] = {0.082, 0.046}, shorter[2] = {0.080, 0.045};
   auto load = [&](const double rest[2]) {
-    return hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, 0).load;
+    return hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, 0, 0.0).load;
   };
   EXPECT_NEAR(load(own), 0.0, 1e-6);
   EXPECT_NEAR(load(shorter), 0.5 * kStiffness * (0.002 + 0.001), 1e-6 * kStiffness * 0.003);
-  EXPECT_NEAR(hinge_couple(hinge, kStiffness, 0.064, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, 0).load,
-              0.0, 1e-6);
-  EXPECT_NE(hinge_couple(hinge, kStiffness, shorter, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, 0).torque,
-            0.0);
+  EXPECT_NEAR(
+      hinge_couple(hinge, kStiffness, 0.064, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, 0, 0.0).load, 0.0,
+      1e-6);
+  EXPECT_NE(
+      hinge_couple(hinge, kStiffness, shorter, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, 0, 0.0).torque,
+      0.0);
 }
 
 // With PinLoad::kPinLink the load is the outer link's tension alone: links alternate along the
@@ -108,7 +110,7 @@ TEST(HingeFriction, PinLinkLoadIsTheOuterLinksTension) {
   const Pose p = round_link_pose();
   const double rest[2] = {0.080, 0.045};
   auto couple = [&](std::size_t node) {
-    return hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, node);
+    return hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, node, 0.0);
   };
   EXPECT_EQ(pin_link_side(hinge, 0), 1);
   EXPECT_EQ(pin_link_side(hinge, 7), 0);
@@ -122,7 +124,7 @@ TEST(HingeFriction, PinLinkLoadIsTheOuterLinksTension) {
   hinge.pin_load = PinLoad::kMean;
   EXPECT_EQ(pin_link_side(hinge, 1), -1);
   const HingeCouple mean =
-      hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, 0);
+      hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, 0.0, 1e-4, 0, 0.0);
   EXPECT_EQ(couple(1).load, mean.load);
   EXPECT_EQ(couple(0).torque, mean.torque);
   EXPECT_NEAR(mean.load, 0.5 * kStiffness * 0.003, 1e-6 * kStiffness * 0.003);
@@ -159,7 +161,7 @@ TEST(HingeFriction, ForceIsTheTorqueTimesTheGradientOfTheRelativeAngle) {
     const Pose p = random_pose(rng, kPitch, 2e-4);
     for (double theta : {0.5, 0.6, 1.0}) {
       const HingeCouple hc =
-          hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, theta, 1e-4, 0);
+          hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, theta, 1e-4, 0, 0.0);
       // g = ∂β/∂x at the θ point, by central differences of β
       double xt[3], yt[3];
       for (int k = 0; k < 3; ++k) {
@@ -215,13 +217,14 @@ TEST(HingeFriction, CoupleWithoutJacobianIsTheFullOnesBitForBitAndLeavesTheJacob
       l0[j] = link_length(p.x0, p.y0, j);
       l1[j] = link_length(p.x1, p.y1, j);
     }
-    const HingeCouple full =
-        hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1, true, 0);
+    const HingeCouple full = hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h,
+                                          l0, l1, true, 0, 0.0);
     HingeCouple lean;
     for (auto& row : lean.jacobian) {
       for (double& v : row) v = 12345.0;
     }
-    hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1, lean, false, 0);
+    hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1, lean, false, 0,
+                 0.0);
     EXPECT_EQ(lean.load, full.load);
     EXPECT_EQ(lean.rate, full.rate);
     EXPECT_EQ(lean.torque, full.torque);
@@ -237,7 +240,8 @@ TEST(HingeFriction, CoupleWithoutJacobianIsTheFullOnesBitForBitAndLeavesTheJacob
     for (const auto& row : lean.jacobian) {
       for (const double v : row) EXPECT_EQ(v, 12345.0);
     }
-    hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1, lean, true, 0);
+    hinge_couple(hinge, kStiffness, rest, p.x0, p.y0, p.x1, p.y1, theta, h, l0, l1, lean, true, 0,
+                 0.0);
     for (int r = 0; r < 6; ++r) {
       for (int c = 0; c < 6; ++c) EXPECT_EQ(lean.jacobian[r][c], full.jacobian[r][c]);
     }
@@ -308,7 +312,7 @@ TEST(HingeFriction, CoupleHasNoResultantItsMomentIsTheTorqueAndItsWorkIsMTimesTh
     const Pose p = random_pose(rng, kPitch, 5e-5);  // a step: turns of up to 0.3°
     const double theta = trial % 2 ? 0.5 : 0.6, h = 1e-4;
     const HingeCouple hc =
-        hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, theta, h, 0);
+        hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, theta, h, 0, 0.0);
     const double scale = std::abs(hc.torque) / kPitch + 1e-300;
     EXPECT_NEAR(hc.fx[0] + hc.fx[1] + hc.fx[2], 0.0, 1e-12 * scale);
     EXPECT_NEAR(hc.fy[0] + hc.fy[1] + hc.fy[2], 0.0, 1e-12 * scale);
@@ -357,7 +361,7 @@ TEST(HingeFriction, RateStiffnessIsTheTorquesSlopeInTheRate) {
       p.x1[2] = p.x1[1] + l * std::cos(turn);
       p.y1[2] = l * std::sin(turn);
       p.x0[0] = p.x1[0] = p.x0[1] - l;
-      return hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, 0.5, h, 0);
+      return hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, 0.5, h, 0, 0.0);
     };
     const double dr = 1e-4;
     const HingeCouple mid = at(rate);
@@ -389,7 +393,7 @@ TEST(HingeFriction, JacobianIsTheForcesDerivativeByTheEndOfStepPositions) {
           const double stretch = rule == 0 ? 1.002 : 1.006;
           for (int k = 0; k < 3; ++k) p.x0[k] *= stretch, p.x1[k] *= stretch;
           const HingeCouple hc =
-              hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, theta, h, node);
+              hinge_couple(hinge, kStiffness, kPitch, p.x0, p.y0, p.x1, p.y1, theta, h, node, 0.0);
           if (!(hc.load > 0.0)) continue;
           ++poses;
           double scale = 0.0;
@@ -403,9 +407,9 @@ TEST(HingeFriction, JacobianIsTheForcesDerivativeByTheEndOfStepPositions) {
             (q % 2 == 0 ? plus.x1 : plus.y1)[q / 2] += du;
             (q % 2 == 0 ? minus.x1 : minus.y1)[q / 2] -= du;
             const HingeCouple a = hinge_couple(hinge, kStiffness, kPitch, plus.x0, plus.y0, plus.x1,
-                                               plus.y1, theta, h, node);
+                                               plus.y1, theta, h, node, 0.0);
             const HingeCouple b = hinge_couple(hinge, kStiffness, kPitch, minus.x0, minus.y0,
-                                               minus.x1, minus.y1, theta, h, node);
+                                               minus.x1, minus.y1, theta, h, node, 0.0);
             for (int r = 0; r < 6; ++r) {
               const double fa = r % 2 == 0 ? a.fx[r / 2] : a.fy[r / 2];
               const double fb = r % 2 == 0 ? b.fx[r / 2] : b.fy[r / 2];
@@ -589,9 +593,10 @@ TEST(HingeFriction, IntegratorLoadsEachHingeByItsOwnPinLink) {
     const double x0[3] = {before.x[i - 1], before.x[i], before.x[i + 1]};
     const double y0[3] = {before.y[i - 1], before.y[i], before.y[i + 1]};
     const double x1[3] = {s.x[i - 1], s.x[i], s.x[i + 1]}, y1[3] = {s.y[i - 1], s.y[i], s.y[i + 1]};
-    own += hinge_couple(model.hinge, model.axial_stiffness, p, x0, y0, x1, y1, 0.5, h, i).work;
+    own += hinge_couple(model.hinge, model.axial_stiffness, p, x0, y0, x1, y1, 0.5, h, i, 0.0).work;
     swapped +=
-        hinge_couple(model.hinge, model.axial_stiffness, p, x0, y0, x1, y1, 0.5, h, i + 1).work;
+        hinge_couple(model.hinge, model.axial_stiffness, p, x0, y0, x1, y1, 0.5, h, i + 1, 0.0)
+            .work;
   }
   std::printf("step's hinge work %.12g J, its pin links' %.12g J, swapped %.12g J\n",
               rep.hinge_work, own, swapped);

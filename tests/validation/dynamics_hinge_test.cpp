@@ -105,7 +105,7 @@ HingeDriveRun run_drive(double arm, double band, double duration, double step,
         const double ey = std::abs(std::abs(s.y[i]) - a.pitch_radius);
         if (std::hypot(ex, ey) > 1.5 * pitch) continue;
         const HingeCouple hc = hinge_couple(model.hinge, model.axial_stiffness, model.pitch, x0, y0,
-                                            x1, y1, 0.6, step, i);
+                                            x1, y1, 0.6, step, i, 0.0);
         engaging += hc.work;
         turn += std::abs(hc.turn);
         coulomb += arm * hc.load * std::abs(hc.turn);

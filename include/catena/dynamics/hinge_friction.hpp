@@ -102,11 +102,12 @@ struct HingeCouple {
 /// the chain: only its parity counts). `node` has no default on any overload: a default would
 /// take every hinge as node 0 with the pin link's load, wrong at every odd node.
 /// `deflection`: the stick law's d₀ = φ − a at the step's start (hinge_couple_blocks; 0, a hinge
-/// anchored where it starts the step, and unused without the stick law).
+/// anchored where it starts the step, and unused without the stick law). No default either: a
+/// default would anchor every hinge where it starts the step, dropping the spring's stored turn.
 HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                          const double x0[3], const double y0[3], const double x1[3],
                          const double y1[3], double theta, double step, std::size_t node,
-                         double deflection = 0.0);
+                         double deflection);
 /// The same with the two links' chord lengths given: `length0` at the start of the step
 /// (|d₀|), `length1` at the end (|d₁|), as the integrator has them from its links (each link
 /// serves two hinges; the square roots are taken once). They must be the square roots of the
@@ -117,14 +118,14 @@ HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, con
                          const double x0[3], const double y0[3], const double x1[3],
                          const double y1[3], double theta, double step, const double length0[2],
                          const double length1[2], bool jacobian, std::size_t node,
-                         double deflection = 0.0);
+                         double deflection);
 /// The same into `out`: every field is written but `jacobian`, which is written only when
 /// `jacobian` is true (else left as it was). For the integrator's hinge loop, which keeps one
 /// HingeCouple for all hinges rather than zeroing a fresh one (its 36-entry Jacobian) per hinge.
 void hinge_couple(const HingeFriction& hinge, double axial_stiffness, const double rest[2],
                   const double x0[3], const double y0[3], const double x1[3], const double y1[3],
                   double theta, double step, const double length0[2], const double length1[2],
-                  HingeCouple& out, bool jacobian, std::size_t node, double deflection = 0.0);
+                  HingeCouple& out, bool jacobian, std::size_t node, double deflection);
 /// What one link contributes to the couples of the two hinges at its ends (each link serves two
 /// hinges: the integrator computes these once per link and iteration, then combines them per
 /// hinge with the hinge_couple overload below). From the link's chord at the start of the step
@@ -303,7 +304,7 @@ inline void hinge_couple(const HingeFriction& hinge, const HingeLink& l0, const 
 inline HingeCouple hinge_couple(const HingeFriction& hinge, double axial_stiffness, double pitch,
                                 const double x0[3], const double y0[3], const double x1[3],
                                 const double y1[3], double theta, double step, std::size_t node,
-                                double deflection = 0.0) {
+                                double deflection) {
   const double rest[2] = {pitch, pitch};
   return hinge_couple(hinge, axial_stiffness, rest, x0, y0, x1, y1, theta, step, node, deflection);
 }

@@ -439,6 +439,13 @@ constexpr double kMaxContactRatio = 5e5;
 // the seats' and the rails' damper over a step, c_c θh / m: the 12B stopped at about 250 at 0.1 ms,
 // a 06B ran at 130 at 1 ms; the bound catches only the absurd
 constexpr double kMaxContactDampingRatio = 5e3;
+// the hinges' stick spring over a step against a node's mass, k_t (θh)² / (m p²) (the middle node
+// of a straight pair turns the hinge by 2/p per metre, so it feels about 4θ k_t/p²): the steps
+// stopped converging from 21 (12B at 0.05 ms), 25 (a 06B at 0.1 ms; the 12B at 0.2 ms) and 29
+// (the 12B at 0.1 ms, which ran at 25): no one ratio separates them. Above the warning ratio
+// (half the lowest failure) a run is warned; above the bound (every run measured from 29 up
+// stopped; 4 times the highest that ran) it is refused
+constexpr double kHingeStickWarnRatio = 10, kMaxHingeStickRatio = 100;
 // the chain's travel in a step, ω R h, in pitches: stopped at about 1.1 pitches (a round-link
 // chain on pocket wheels, whose links seat with a jump, at 0.13: kMaxPocketTravel)
 constexpr double kMaxTravel = 0.25, kMaxPocketTravel = 0.025;
@@ -1848,19 +1855,33 @@ Setup parse(const analysis::Inputs& in) {
         issues.push_back({at(stiffness_key), shown(kt),
                           "0 with no hinge friction (" + arm_key + " = 0: nothing to stick with)"});
       } else if (kt > 0.0 && scales_known(s)) {
-        double most = NAN;
-        const std::string why = scale_bound(s, kMaxContactRatio, 2, "N/m", most);
-        if (kt > most * s.pitch * s.pitch)
+        const double mp2 = s.mass_per_metre * s.pitch * s.pitch * s.pitch, th = s.theta * s.step;
+        const double most = kMaxHingeStickRatio * mp2 / (th * th);
+        if (kt > most)
           issues.push_back({at(stiffness_key), shown(kt) + " N m/rad",
-                            "at most " + format_g(down_to(most * s.pitch * s.pitch, 4), 4) +
-                                " N m/rad: k_t/p^2 (the spring felt at a link's end) " + why +
-                                " (a smaller step allows more)"});
+                            "at most " + format_g(kMaxHingeStickRatio, 3) +
+                                " m p^2/(theta step)^2 = " + format_g(down_to(most, 4), 4) +
+                                " N m/rad (the middle node of a straight pair feels about " +
+                                "4 theta k_t/p^2), m = mass_per_metre x pitch = " +
+                                format_g(s.mass_per_metre * s.pitch, 4) + " kg, pitch " +
+                                format_g(s.pitch, 4) + " m, theta " + format_g(s.theta, 4) +
+                                ", step " + format_g(s.step, 4) +
+                                " s (a smaller step allows more)"});
       }
       if (!std::isnan(ct) && !(ct >= 0.0 && std::isfinite(ct))) {
         issues.push_back({at(damping_key), shown(ct), "a finite value >= 0 N m s/rad"});
-      } else if (ct > 0.0 && !(kt > 0.0)) {
+      } else if (ct > 0.0 && !(kt > 0.0) && !(hinge_known && hinge == "frictionless")) {
         issues.push_back({at(damping_key), shown(ct),
                           "0 without hinge_stick_stiffness (the damper sits beside the spring)"});
+      } else if (ct > 0.0 && scales_known(s)) {
+        // as the seats' damper (kMaxContactDampingRatio), felt as c_t/p^2 at a link's end
+        double most = NAN;
+        const std::string why = scale_bound(s, kMaxContactDampingRatio, 1, "N s/m", most);
+        if (ct > most * s.pitch * s.pitch)
+          issues.push_back({at(damping_key), shown(ct) + " N m s/rad",
+                            "at most " + format_g(down_to(most * s.pitch * s.pitch, 4), 4) +
+                                " N m s/rad: c_t/p^2 (the damper felt at a link's end) " + why +
+                                " (a smaller step allows more)"});
       }
       if (hinge != "frictionless" && kt > 0.0 && std::isfinite(kt)) {
         s.hinge_law.stick_stiffness = kt;
@@ -2665,7 +2686,9 @@ Result run(const analysis::Inputs& in) {
            "step " + std::to_string(k + 1) + " (t = " + format_g(s.time + d.step, 6) +
                " s) did not converge in " +
                newton_iterations_text(rep, integ.options().max_iterations) +
-               "; the run stopped there (try a smaller step or theta nearer 1)",
+               "; the run stopped there (try a smaller step or theta nearer 1" +
+               (d.hinge_law.stick_stiffness > 0.0 ? ", or a smaller hinge_stick_stiffness" : "") +
+               ")",
            s.time + d.step, d.duration});
       break;
     }
@@ -2744,6 +2767,20 @@ Result run(const analysis::Inputs& in) {
                " s",
            tu.lost.front().first, lw.takeup_lost_time});
     }
+  }
+  // the stick spring past the ratio at which some measured runs stopped (kHingeStickWarnRatio)
+  if (d.hinge_law.stick_stiffness > 0.0) {
+    const double th = d.theta * d.step;
+    const double warn =
+        kHingeStickWarnRatio * d.mass_per_metre * d.pitch * d.pitch * d.pitch / (th * th);
+    if (d.hinge_law.stick_stiffness > warn)
+      out.diagnostics.push_back(
+          {Diagnostic::Severity::kWarning, "dynamics.hinge_stick_stiffness_high",
+           "hinge_stick_stiffness = " + format_g(d.hinge_law.stick_stiffness, 4) + " N m/rad > " +
+               format_g(down_to(warn, 4), 4) + " N m/rad = " + format_g(kHingeStickWarnRatio, 3) +
+               " m p^2/(theta step)^2: runs stopped converging from about twice that "
+               "(docs/models/dynamics.md, \"Hinges: sticking\"); a smaller step allows more",
+           d.hinge_law.stick_stiffness, warn, "N m/rad"});
   }
   if (d.theta < 0.6)
     out.diagnostics.push_back(
