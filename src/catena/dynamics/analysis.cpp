@@ -498,6 +498,14 @@ std::string scale_bound(const Setup& s, double ratio, int power, const char* uni
          ", step " + format_g(s.step, 4) + " s";
 }
 
+// The hinges' stick spring's bound over a step (kHingeStickWarnRatio, kMaxHingeStickRatio),
+// `ratio` m p²/(θh)² [N m/rad]: scale_bound's stiffness m/(θh)² felt at a link's end (k_t/p²),
+// times p².
+double hinge_stick_bound(const Setup& s, double ratio) {
+  const double th = s.theta * s.step;
+  return ratio * s.mass_per_metre * s.pitch * s.pitch * s.pitch / (th * th);
+}
+
 // Whether the mass, the pitch, the step and theta the bounds over a step follow from are valid.
 bool scales_known(const Setup& s) {
   auto valid = [](double x) { return x > 0.0 && std::isfinite(x); };
@@ -1855,8 +1863,7 @@ Setup parse(const analysis::Inputs& in) {
         issues.push_back({at(stiffness_key), shown(kt),
                           "0 with no hinge friction (" + arm_key + " = 0: nothing to stick with)"});
       } else if (kt > 0.0 && scales_known(s)) {
-        const double mp2 = s.mass_per_metre * s.pitch * s.pitch * s.pitch, th = s.theta * s.step;
-        const double most = kMaxHingeStickRatio * mp2 / (th * th);
+        const double most = hinge_stick_bound(s, kMaxHingeStickRatio);
         if (kt > most)
           issues.push_back({at(stiffness_key), shown(kt) + " N m/rad",
                             "at most " + format_g(kMaxHingeStickRatio, 3) +
@@ -2770,9 +2777,7 @@ Result run(const analysis::Inputs& in) {
   }
   // the stick spring past the ratio at which some measured runs stopped (kHingeStickWarnRatio)
   if (d.hinge_law.stick_stiffness > 0.0) {
-    const double th = d.theta * d.step;
-    const double warn =
-        kHingeStickWarnRatio * d.mass_per_metre * d.pitch * d.pitch * d.pitch / (th * th);
+    const double warn = hinge_stick_bound(d, kHingeStickWarnRatio);
     if (d.hinge_law.stick_stiffness > warn)
       out.diagnostics.push_back(
           {Diagnostic::Severity::kWarning, "dynamics.hinge_stick_stiffness_high",
