@@ -85,6 +85,20 @@ std::size_t sticking_guides(const Model& model) {
     if (g.stick_stiffness > 0.0) ++k;
   return k;
 }
+// The chain's links and hinges in one order for every pass that walks them (the Newton system's
+// assembly, the stick law's end of a step), n nodes. f(j, a, b) for link j from node a = j to
+// node b (node 0 after the last on a loop); f(ha, i, hb) for the hinge at node i between links ha
+// (ha → i) and i (i → hb), at every node of a loop (modulo n) and at an open chain's inner nodes
+// (n ≥ 3).
+template <class F>
+void for_each_link(std::size_t n, std::size_t links, F&& f) {
+  for (std::size_t j = 0; j < links; ++j) f(j, j, j + 1 == n ? 0 : j + 1);
+}
+template <class F>
+void for_each_hinge(std::size_t n, bool closed, F&& f) {
+  const std::size_t first = closed ? 0 : 1, last = closed ? n : n - 1;
+  for (std::size_t i = first; i < last; ++i) f(i == 0 ? n - 1 : i - 1, i, i + 1 == n ? 0 : i + 1);
+}
 }  // namespace
 
 Integrator::Integrator(const Model& model, IntegratorOptions options)
@@ -291,8 +305,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   Mat2* lower = solver_.lower.data();
   double damper_work = 0.0;
   const bool hinges = !hinge_links_.empty();  // (read once: the stores below may alias it)
-  for (std::size_t j = 0; j < links; ++j) {
-    const std::size_t a = j, b = j + 1 == n ? 0 : j + 1;
+  for_each_link(n, links, [&](std::size_t j, std::size_t a, std::size_t b) {
     const double d0x = sx[b] - sx[a], d0y = sy[b] - sy[a];
     const double d1x = ux[b] - ux[a], d1y = uy[b] - uy[a];
     const double l0 = len0[j];
@@ -310,7 +323,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       // −(T − T_e) d_θ·(d₁ − d₀)/l_θ (−T_e there where T is clamped at 0, as the seats' damper).
       const LinkForce law = link_force(model, lt - p, (l1 - l0) / h);
       damper_work -= (law.tension - law.elastic) * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
-      if (report_only) continue;  // (no hinges: validated)
+      if (report_only) return;  // (no hinges: validated)
       phi = law.tension / lt;
       dtension = th * law.stiffness + law.damping / h;  // 0 on a slack link
     } else {
@@ -320,7 +333,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
         damper_work -= c * (l1 - l0) / h * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
       }
       // report only: the force is not needed (but for the hinges' couples, which take it)
-      if (report_only && !hinges) continue;
+      if (report_only && !hinges) return;
       // φ = [k (l_θ − p) + c (l₁ − l₀)/h] / l_θ; the force on node a is φ d_θ, on node b −φ d_θ.
       // At θ = ½ the work over the step is exactly the change of ½ k (l − p)² plus the damper's
       // loss c (l₁ − l₀)²/h (Simo & Tarnow 1992).
@@ -334,7 +347,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     rhs[b].y -= fy;
     // the link's share of the couples of the hinges at its two ends (the hinge loop below)
     if (hinges) hinge_link(d0x, d0y, d1x, d1y, l0, l1, p, k, th, hinge_links_[j], jacobian);
-    if (!jacobian) continue;
+    if (!jacobian) return;
     // A = ∂(φ d_θ)/∂d₁ = θ φ I + d_θ ⊗ (∂φ/∂l₁) d₁/l₁,  ∂φ/∂l₁ = [∂T/∂l₁ − θ φ] / l_θ
     // (∂T/∂l₁ = k θ + c/h for the bilateral link).
     const double dphi = (dtension - th * phi) / lt;
@@ -348,7 +361,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     // block (a, b) is upper[a] (the corner upper[n−1] when b = 0); block (b, a) is lower[b].
     upper[a] = {-hA.a, -hA.b, -hA.c, -hA.d};
     lower[b] = {-hA.a, -hA.b, -hA.c, -hA.d};
-  }
+  });
   damper_work_ = damper_work;
   // Hinge friction (docs/models/dynamics.md, "Hinges"): the couple M g on nodes i − 1, i, i + 1.
   // The residual and the Jacobian are exact: −h ∂(M g)/∂u (rate, load and direction terms; not
@@ -356,8 +369,6 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   // pentadiagonal band (far_upper_, far_lower_), solved by BlockPentadiagonalSolver.
   hinge_work_ = 0.0;
   if (model.hinge.active() && n >= 3) {
-    const std::size_t first = model.closed ? 0 : 1;
-    const std::size_t last = model.closed ? n : n - 1;
     const HingeLink* hinge_link_of = hinge_links_.data();
     Mat2* far_lower = far_lower_.data();
     Mat2* far_upper = far_upper_.data();
@@ -367,8 +378,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     const double* deflection = model.hinge.sticks() && s.hinge_deflection.size() == n
                                    ? s.hinge_deflection.data()
                                    : nullptr;
-    for (std::size_t i = first; i < last; ++i) {
-      const std::size_t ha = i == 0 ? n - 1 : i - 1, hb = i + 1 == n ? 0 : i + 1;
+    for_each_hinge(n, model.closed, [&](std::size_t ha, std::size_t i, std::size_t hb) {
       // links ha (ha → i) and i (i → hb), their terms from the links' loop above; −h × the
       // couple's Jacobian block (r, q) of the three nodes ha, i, hb into the band (node offsets
       // q − r in −2..2)
@@ -389,7 +399,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       rhs[i].y += h * hc.fy[1];
       rhs[hb].x += h * hc.fx[2];
       rhs[hb].y += h * hc.fy[2];
-    }
+    });
     hinge_work_ = hinge_work;
   }
   // The nodes' θ points, once for all wheels and guides, and how far they are from where the
@@ -1241,21 +1251,16 @@ StepReport Integrator::step(const Model& model, State& s) {
   // spring–sliders dissipated: the couple's work M Δβ plus the change of the springs' energy
   // ½ k_t (d₁² − d₀²) — 0 a step while sticking at θ = ½ without the damper, −e F |Δa| sliding.
   if (model.hinge.sticks() && n >= 3) {
-    const std::size_t links = model.links();
-    for (std::size_t j = 0; j < links; ++j) {
-      const std::size_t a = j, b = j + 1 == n ? 0 : j + 1;
+    for_each_link(n, model.links(), [&](std::size_t j, std::size_t a, std::size_t b) {
       const double d1x = ux_[b] - ux_[a], d1y = uy_[b] - uy_[a];
       hinge_link(s.x[b] - s.x[a], s.y[b] - s.y[a], d1x, d1y, l0_[j],
                  std::sqrt(d1x * d1x + d1y * d1y), model.rest_length(j), model.axial_stiffness, th,
                  hinge_links_[j], false);
-    }
+    });
     const double kt = model.hinge.stick_stiffness;
-    const std::size_t first = model.closed ? 0 : 1;
-    const std::size_t last = model.closed ? n : n - 1;
     double work = 0.0;
     HingeCouple hc;
-    for (std::size_t i = first; i < last; ++i) {
-      const std::size_t ha = i == 0 ? n - 1 : i - 1;
+    for_each_hinge(n, model.closed, [&](std::size_t ha, std::size_t i, std::size_t) {
       const double d0 = s.hinge_deflection[i];
       hinge_couple(model.hinge, hinge_links_[ha], hinge_links_[i], h, hc, false, i, th, d0);
       const double reach = model.hinge.arm * hc.load / kt;
@@ -1263,7 +1268,7 @@ StepReport Integrator::step(const Model& model, State& s) {
       const double next = std::abs(d1) <= reach ? d1 : std::copysign(reach, d1);
       s.hinge_deflection[i] = next;
       work += hc.work + 0.5 * kt * (next * next - d0 * d0);
-    }
+    });
     report.hinge_work = work;
   }
   // The rails' loads' work over the step: the force the step applied (at the θ point) times the
