@@ -199,6 +199,33 @@ TEST(DynamicsRailLineLaw, ModelCheckNamesTheRailsFields) {
     EXPECT_NE(std::find(fields.begin(), fields.end(), f), fields.end()) << f;
 }
 
+// The Newton matrix tests' set-up ((2), (7)): two linked 12B rollers (5e7 N/m, 100 N s/m) under
+// gravity on the rail rail(kind, inside) with its damper 200 N s/m and friction 0.3, then
+// tune(guide); roller i placed by place(guide, i, along, start, u) at the step's start and in the
+// iterate u, `along` 0.5 + 0.02 i of the straight rail (0.5 + 0.07 i of an arc).
+struct RailPair {
+  Model model;
+  State start;
+  std::vector<double> u;
+};
+template <class Tune, class Place>
+RailPair rail_pair(Guide::Kind kind, bool inside, Tune tune, Place place) {
+  Guide g = rail(kind, inside);
+  g.contact_damping = 200.0;
+  g.friction = 0.3;
+  tune(g);
+  RailPair p{uniform_chain(2, false, kPitch, kMass, 5e7, 100.0, false), State(2, 0),
+             std::vector<double>(4)};
+  p.model.gravity_y = -9.81;
+  p.model.guides = {g};
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double along =
+        0.5 + (kind == Guide::Kind::kStraight ? 0.02 : 0.07) * static_cast<double>(i);
+    place(g, i, along, p.start, p.u);
+  }
+  return p;
+}
+
 // (2) The step's Newton matrix with rails in the line law, against central differences of the
 // step's residual, every column: two linked rollers pressed 1–3 µm into a straight rail, an arc
 // from outside and one from inside, moving along and into it, with the rails' damping and
@@ -220,35 +247,31 @@ TEST(DynamicsRailLineLaw, NewtonMatrixMatchesTheResidualsDifferences) {
   for (const auto& [kind, inside, stick] : rails) {
     std::vector<double> jac_linear;
     for (const bool line : {false, true}) {
-      Guide g = rail(kind, inside);
-      g.contact_damping = 200.0;
-      g.friction = 0.3;
-      g.stick_stiffness = stick;
-      g.line_law = line;
-      g.discrete_gradient = line;  // the penalty at the θ point, the law's discrete gradient
-      Model m = uniform_chain(2, false, kPitch, kMass, 5e7, 100.0, false);
-      m.gravity_y = -9.81;
-      m.guides = {g};
-      State s(2, 0);
-      for (std::size_t i = 0; i < 2; ++i) {
-        const double step = kind == Guide::Kind::kStraight ? 0.02 : 0.07;
-        const double along = 0.5 + step * static_cast<double>(i);
-        Touch t = touch(g, 1e-6 + 2e-6 * static_cast<double>(i), along);
-        s.x[i] = t.x;
-        s.y[i] = t.y;
-        s.vx[i] = -0.2 * t.ny - 1e-3 * t.nx;  // along the rail and into it
-        s.vy[i] = 0.2 * t.nx - 1e-3 * t.ny;
-      }
-      Integrator integ(m, {.step = h, .theta = 0.6});
-      const std::size_t size = integ.unknowns();
-      ASSERT_EQ(size, 4u);
-      std::vector<double> u(size);
       std::mt19937 rng(3);
       std::uniform_real_distribution<double> jitter(-1e-8, 1e-8);
-      for (std::size_t i = 0; i < 2; ++i) {
-        u[2 * i] = s.x[i] + h * s.vx[i] + jitter(rng);
-        u[2 * i + 1] = s.y[i] + h * s.vy[i] + jitter(rng);
-      }
+      RailPair pair = rail_pair(
+          kind, inside,
+          [&](Guide& g) {
+            g.stick_stiffness = stick;
+            g.line_law = line;
+            g.discrete_gradient = line;  // the penalty at the θ point, the law's discrete gradient
+          },
+          [&](const Guide& g, std::size_t i, double along, State& s, std::vector<double>& u) {
+            // pressed 1 and 3 µm in, moving along the rail and into it; u a step on, jittered
+            const Touch t = touch(g, 1e-6 + 2e-6 * static_cast<double>(i), along);
+            s.x[i] = t.x;
+            s.y[i] = t.y;
+            s.vx[i] = -0.2 * t.ny - 1e-3 * t.nx;
+            s.vy[i] = 0.2 * t.nx - 1e-3 * t.ny;
+            u[2 * i] = s.x[i] + h * s.vx[i] + jitter(rng);
+            u[2 * i + 1] = s.y[i] + h * s.vy[i] + jitter(rng);
+          });
+      const Model& m = pair.model;
+      const Guide& g = m.guides[0];
+      State& s = pair.start;
+      const std::vector<double>& u = pair.u;
+      Integrator integ(m, {.step = h, .theta = 0.6});
+      ASSERT_EQ(integ.unknowns(), 4u);
       if (stick > 0.0) {
         // the anchors 0.5 and 3 reaches μ f/k_t behind the θ point, f its normal force
         const GuideFrame f = guide_frame(g);
@@ -590,28 +613,22 @@ TEST(DynamicsRailLineLaw, DiscreteGradientsNewtonMatrixOnEntryAndExit) {
        {std::pair{Guide::Kind::kStraight, false}, std::pair{Guide::Kind::kArc, false}}) {
     std::vector<double> jac_theta;
     for (const bool gradient : {false, true}) {
-      Guide g = rail(kind, inside);
-      g.contact_damping = 200.0;
-      g.friction = 0.3;
-      g.discrete_gradient = gradient;
-      Model m = uniform_chain(2, false, kPitch, kMass, 5e7, 100.0, false);
-      m.gravity_y = -9.81;
-      m.guides = {g};
-      State s(2, 0);
       const double g0[2] = {-0.08e-6, 0.05e-6}, g1[2] = {0.02e-6, -0.05e-6};
-      std::vector<double> u(4);
-      for (std::size_t i = 0; i < 2; ++i) {
-        const double along =
-            0.5 + (kind == Guide::Kind::kStraight ? 0.02 : 0.07) * static_cast<double>(i);
-        const Touch a = touch(g, g0[i], along), b = touch(g, g1[i], along);
-        // sliding along the rail at 0.2 m/s besides
-        s.x[i] = a.x;
-        s.y[i] = a.y;
-        u[2 * i] = b.x - 0.2 * h * a.ny;
-        u[2 * i + 1] = b.y + 0.2 * h * a.nx;
-        s.vx[i] = (u[2 * i] - s.x[i]) / h;
-        s.vy[i] = (u[2 * i + 1] - s.y[i]) / h;
-      }
+      RailPair pair = rail_pair(
+          kind, inside, [&](Guide& g) { g.discrete_gradient = gradient; },
+          [&](const Guide& g, std::size_t i, double along, State& s, std::vector<double>& u) {
+            const Touch a = touch(g, g0[i], along), b = touch(g, g1[i], along);
+            // sliding along the rail at 0.2 m/s besides
+            s.x[i] = a.x;
+            s.y[i] = a.y;
+            u[2 * i] = b.x - 0.2 * h * a.ny;
+            u[2 * i + 1] = b.y + 0.2 * h * a.nx;
+            s.vx[i] = (u[2 * i] - s.x[i]) / h;
+            s.vy[i] = (u[2 * i + 1] - s.y[i]) / h;
+          });
+      const Model& m = pair.model;
+      const State& s = pair.start;
+      const std::vector<double>& u = pair.u;
       Integrator integ(m, {.step = h, .theta = 0.6});
       ASSERT_EQ(integ.unknowns(), 4u);
       std::vector<double> r0, jac;
