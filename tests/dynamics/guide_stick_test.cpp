@@ -7,8 +7,9 @@
 // (and where a held roller is moved far off the rail between two steps); the springs stay within
 // their reach μ f/k_t and every step's friction work is ≤ 0; on arcs ("On an arc": s = ±ρ_c φ)
 // the Newton blocks, a piece held on a convex arc's slope, and a piece crossing a closed inside
-// arc's seam, stopping and held with the balance closing; and the stick stiffness's bad values are
-// named (also on a frictionless rail; an arc's accepted).
+// arc's seam, stopping and held with the balance closing; the balance with the hinges' stick law
+// on the same run (both kinds of spring); and the stick stiffness's bad values are named (also on
+// a frictionless rail; an arc's accepted).
 #include <gtest/gtest.h>
 
 #include <algorithm>
