@@ -98,9 +98,12 @@ StepTally step_on(benchmark::State& bs, Integrator& integ, const Model& m, State
 // the pitch-line speed; the benchmark steps on from there.
 // `hinge_arm` > 0: the same with hinge friction of that arm (docs/models/dynamics.md, "Hinges").
 // `pin_load`: the hinges' pin load rule (the mean of the two links' tensions, or the pin link's).
-void two_sprocket_drive(benchmark::State& bs, double hinge_arm, PinLoad pin_load = PinLoad::kMean) {
+// `stick_stiffness` > 0: the hinges' stick law with that k_t [N·m/rad] ("Hinges: sticking").
+void two_sprocket_drive(benchmark::State& bs, double hinge_arm, PinLoad pin_load = PinLoad::kMean,
+                        double stick_stiffness = 0.0) {
   testing::Loop drive = testing::benchmark_drive(hinge_arm);
   drive.model.hinge.pin_load = pin_load;
+  drive.model.hinge.stick_stiffness = stick_stiffness;
   const Model& m = drive.model;
   State& s = drive.state;
   Integrator integ(m, {.step = 1e-4, .theta = 0.6});
@@ -134,6 +137,28 @@ void BM_DynamicsTwoSprocketDriveHingeFrictionPinLink(benchmark::State& bs) {
 BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFrictionPinLink)
     ->Unit(benchmark::kMicrosecond)
     ->MinTime(3.0);
+// the same with the hinges' stick law, k_t = the argument [N·m/rad], no damper: the ratio
+// k_t (θh)²/(m p²) that the stick law's convergence follows is 0.042, 0.42 and 4.2 (m p²/(θh)² =
+// 2399 N·m/rad here; `catena dynamics` warns above 10), all three within the warning
+void BM_DynamicsTwoSprocketDriveHingeStick(benchmark::State& bs) {
+  two_sprocket_drive(bs, 0.1 * 5.72e-3 / 2, PinLoad::kMean, static_cast<double>(bs.range(0)));
+}
+BENCHMARK(BM_DynamicsTwoSprocketDriveHingeStick)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Unit(benchmark::kMicrosecond)
+    ->MinTime(3.0);
+// the same work in every run (5000 steps, 0.5 s from the seated start), argument 0 the regularised
+// law (BM_DynamicsTwoSprocketDriveHingeFriction's first 5000 steps): the comparison at equal
+// simulated time, which MinTime's runs of different lengths are not
+BENCHMARK(BM_DynamicsTwoSprocketDriveHingeStick)
+    ->Arg(0)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Unit(benchmark::kMicrosecond)
+    ->Iterations(5000);
 // the same for a fixed 3000 steps from the seated start (instruction counts, as above;
 // docs/performance.md, "Hinge friction: the couple's Jacobian straight into the band")
 BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFriction)
@@ -195,6 +220,47 @@ BENCHMARK(BM_DynamicsConveyorGuidesEveryNode)
     ->Arg(25)
     ->Unit(benchmark::kMicrosecond)
     ->MinTime(2.0);
+
+// The conveyor's rails (1 piece: both rails and their lead-in arcs) on each contact law, the
+// elastic force at the θ point or as the discrete gradient of the contact's energy (Guide::
+// discrete_gradient, "Guides: the discrete gradient": the law evaluated at the step's two ends
+// besides the θ point, three times a contact). Argument 0: the penalty at the θ point (the
+// example's); 1: the penalty's discrete gradient; 2: the line law at the θ point; 3: the line law's
+// discrete gradient (its default, use_line_law).
+void BM_DynamicsConveyorRailLaw(benchmark::State& bs) {
+  testing::Conveyor conveyor;
+  conveyor.node_mass = kNodeMass;
+  testing::Loop loop = testing::conveyor_loop(conveyor);
+  Model& m = loop.model;
+  const long law = bs.range(0);
+  for (Guide& g : m.guides) {
+    if (law >= 2) use_line_law(g, conveyor.width);
+    g.discrete_gradient = law % 2 == 1;
+  }
+  State& s = loop.state;
+  Integrator integ(m, {.step = 1e-4, .theta = 0.6});
+  const StepTally t = step_on(bs, integ, m, s);
+  bs.counters["newton_iterations"] =
+      benchmark::Counter(static_cast<double>(t.iterations) / static_cast<double>(t.steps));
+  bs.counters["simulated_s"] = 1e-4 * static_cast<double>(t.steps);
+  bs.counters["real_time_factor"] =
+      benchmark::Counter(1e-4 * static_cast<double>(t.steps), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_DynamicsConveyorRailLaw)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(3)
+    ->Unit(benchmark::kMicrosecond)
+    ->MinTime(2.0);
+// the same for a fixed 4000 steps (0.4 s from the start) in every run
+BENCHMARK(BM_DynamicsConveyorRailLaw)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(3)
+    ->Unit(benchmark::kMicrosecond)
+    ->Iterations(4000);
 
 // The seats' law on examples/dynamics_12B.toml's drive (docs/models/dynamics.md, "Contact law"):
 // 32 links of 12B (5e7 N/m, 100 N·s/m, pretension 950 N) over two z = 12 wheels 10 pitches apart,

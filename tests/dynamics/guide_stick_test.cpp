@@ -7,8 +7,9 @@
 // (and where a held roller is moved far off the rail between two steps); the springs stay within
 // their reach μ f/k_t and every step's friction work is ≤ 0; on arcs ("On an arc": s = ±ρ_c φ)
 // the Newton blocks, a piece held on a convex arc's slope, and a piece crossing a closed inside
-// arc's seam, stopping and held with the balance closing; and the stick stiffness's bad values are
-// named (also on a frictionless rail; an arc's accepted).
+// arc's seam, stopping and held with the balance closing; the balance with the hinges' stick law
+// on the same run (both kinds of spring); and the stick stiffness's bad values are named (also on
+// a frictionless rail; an arc's accepted).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -839,6 +840,87 @@ TEST(GuideStick, TheStickDamperDampsAHeldPiecesRinging) {
       EXPECT_GT(hi - lo, 0.5 * deflection);
     }
   }
+}
+
+// (15) Both stick laws in one run: an open 12-node chain with hinge friction (μ 0.1 on the 12B
+// pin, e = 0.286 mm) and the hinges' stick law (k_t = 1 N·m/rad) lies with eight rollers on a
+// sticking rail (k_t = 1e4 N/m, μ = 0.3; the penalty on its discrete gradient, so that the
+// contact's work is exactly its energy's change) and four hanging over the rail's end, swinging
+// under a 10 N load at the end node. Each lying roller is pressed on the rail by 10 N and pushed
+// back by 0.5 N, so that the rail's springs hold their share of the swinging end's pull; the
+// lying part starts sliding away from the end at 0.3 m/s and stops on its springs. At θ = ½
+// the balance ΔE = W_friction + W_hinge + W_dampers closes to Newton's tolerance; both kinds of
+// spring hold energy at the end, each far beyond that bound, so that the balance fails without
+// either's ½ k_t d² in energy().
+TEST(GuideStick, HingeAndRailStickLawsTogetherCloseTheWorkBalance) {
+  constexpr std::size_t kLying = 8, kNodes = 12;
+  const double press = 10.0, push = 0.5, end_load = 10.0, rail_kt = 1e4, hinge_kt = 1.0;
+  Model m = uniform_chain(kNodes, false, kPitch, kMass, 5e7, 5.0, false);
+  m.gravity_y = -kG;
+  m.hinge = HingeFriction{.arm = 2.86e-4, .rate_band = 5.0};
+  m.hinge.stick_stiffness = hinge_kt;
+  Guide rail = level_rail(0.3, rail_kt);
+  rail.x1 = 0.0;  // the rail ends at x = 0
+  rail.discrete_gradient = true;
+  m.guides = {rail};
+  const double level = kRoller - resting_sink(kMass * kG + press, rail.contact_smoothing);
+  State s(kNodes, 0);
+  const double edge = -5e-3;  // the last lying roller, 5 mm before the rail's end
+  for (std::size_t i = 0; i < kNodes; ++i) {
+    if (i < kLying) {
+      s.x[i] = edge - kPitch * static_cast<double>(kLying - 1 - i);
+      s.y[i] = level;
+      s.vx[i] = -0.3;  // sliding away from the end, to stop within 0.4 mm
+      m.loads.push_back({.node = i, .fx = -push, .fy = -press});
+    } else {
+      // hanging straight down from the last lying roller, swinging outwards at 30 rad/s
+      const double depth = kPitch * static_cast<double>(i + 1 - kLying);
+      s.x[i] = edge;
+      s.y[i] = level - depth;
+      s.vx[i] = 30.0 * depth;
+    }
+  }
+  m.loads.push_back({.node = kNodes - 1, .fx = 0.0, .fy = -end_load});
+  Integrator integ(m, {.step = 1e-4, .tolerance = 1e-12, .theta = 0.5});
+  const double e0 = energy(m, s).total();
+  double largest_kinetic = 0.0;
+  int sticking_steps = 0;
+  for (int k = 0; k < 1000; ++k) {
+    const StepReport r = integ.step(m, s);
+    ASSERT_TRUE(r.converged) << k;
+    largest_kinetic = std::max(largest_kinetic, energy(m, s).kinetic);
+    bool held = true;
+    for (std::size_t i = 0; i < kLying; ++i) held = held && std::isfinite(s.stick_anchor[i]);
+    sticking_steps += held ? 1 : 0;
+  }
+  // every lying roller anchored on the rail throughout, none of the hanging ones
+  EXPECT_EQ(sticking_steps, 1000);
+  for (std::size_t i = kLying; i < kNodes; ++i) EXPECT_TRUE(std::isnan(s.stick_anchor[i])) << i;
+  // the springs' energies at the end, from the state
+  const GuideFrame frame = guide_frame(m.guides[0]);
+  double rail_springs = 0.0, hinge_springs = 0.0;
+  for (std::size_t i = 0; i < kLying; ++i) {
+    const double d = guide_position(m.guides[0], frame, s.x[i], s.y[i]) - s.stick_anchor[i];
+    rail_springs += 0.5 * rail_kt * d * d;
+  }
+  for (const double d : s.hinge_deflection) hinge_springs += 0.5 * hinge_kt * d * d;
+  const double dissipated =
+      s.friction_work + s.hinge_work + s.damper_work + s.contact_damping_work + s.drag_work;
+  const double balance = energy(m, s).total() - e0 - dissipated;
+  std::printf(
+      "both stick laws: friction work %.6e J, hinge work %.6e J, dampers %.6e J; springs at the "
+      "end: rail %.6e J, hinges %.6e J; largest kinetic %.6e J; balance %.3e J\n",
+      s.friction_work, s.hinge_work, s.damper_work + s.contact_damping_work, rail_springs,
+      hinge_springs, largest_kinetic, balance);
+  // the bound: 1e-9 of the swing's kinetic energy (Newton's tolerance, 1e-12 p, on forces of
+  // tens of N over 1000 steps)
+  const double bound = 1e-9 * largest_kinetic;
+  EXPECT_LT(std::abs(balance), bound);
+  EXPECT_GT(rail_springs, 100.0 * bound);
+  EXPECT_GT(hinge_springs, 100.0 * bound);
+  // both frictions did work: the hinges slid as the end swung, the rail's rollers slid and stopped
+  EXPECT_LT(s.hinge_work, -1e3 * bound);
+  EXPECT_LT(s.friction_work, -1e3 * bound);
 }
 
 TEST(GuideStick, BadStickStiffnessNamed) {
