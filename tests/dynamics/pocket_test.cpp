@@ -1006,5 +1006,296 @@ TEST(DynamicsPocket, JointsInTheirPocketsTurnWithADriverWheel) {
   }
 }
 
+// The wheel's body between the pockets (docs/models/dynamics.md, "Pocket wheel: the body between
+// the pockets"): within the mouth, a joint more than 10c from its nearest vertex meets the rim
+// R + c/2, blended from the pocket's depth over 10c–20c. Its force is −∇ of its energy, its torque
+// −∂E/∂ψ, its ∂F/∂q and ∂F/∂v (dq_extra, dv_extra: the fields give none) those of central
+// differences, moving and with the wheel turning; within 10c the contact is the pocket's, bit for
+// bit; the rim pushes radially outward.
+TEST(DynamicsPocket, BodyBetweenThePocketsIsTheGradientOfItsEnergyWithExactDerivatives) {
+  const Sprocket w = wheel(8, 3000.0);
+  Sprocket off = w;
+  off.pocket_body = false;
+  const double c = w.pocket_clearance, mouth = w.pitch_radius + 0.5 * c;
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int blended = 0, rim = 0, pocket = 0;
+  for (int trial = 0; trial < 1200; ++trial) {
+    const double psi = 6.0 * (u(rng) - 0.5), omega = trial % 2 ? -5.0 : 0.0;
+    double x = 0.0, y = 0.0;
+    if (trial % 3 != 0) {  // near a vertex, 7c–23c off it: the pocket, the blend, the rim
+      const int m = static_cast<int>(16 * u(rng));
+      const double a = psi + (m / 2) * 2 * kPi / 8 + (m % 2 ? w.pocket_angle : 0.0);
+      const double off_by = c * (7.0 + 16.0 * u(rng)), dir = 2 * kPi * u(rng);
+      x = w.centre_x + w.pitch_radius * std::cos(a) + off_by * std::cos(dir);
+      y = w.centre_y + w.pitch_radius * std::sin(a) + off_by * std::sin(dir);
+    } else {  // anywhere on the rim, up to 3 mm in
+      const double a = 2 * kPi * u(rng), rho = mouth - 3e-3 * u(rng);
+      x = w.centre_x + rho * std::cos(a);
+      y = w.centre_y + rho * std::sin(a);
+    }
+    if (std::hypot(x - w.centre_x, y - w.centre_y) > mouth) continue;
+    const double vx = omega != 0.0 ? 0.2 * (u(rng) - 0.5) : 0.0;
+    const double vy = omega != 0.0 ? 0.2 * (u(rng) - 0.5) : 0.0;
+    const SeatContact k = pocket_contact(w, x, y, vx, vy, psi, omega);
+    const SeatContact before = pocket_contact(off, x, y, vx, vy, psi, omega);
+    const double vertex = std::hypot(x - k.seat_x, y - k.seat_y);
+    if (vertex <= 10.0 * c) {  // the pocket's, unchanged
+      ++pocket;
+      EXPECT_EQ(k.surface, 0);
+      EXPECT_EQ(k.force, before.force);
+      EXPECT_EQ(k.nx, before.nx);
+      EXPECT_EQ(k.torque, before.torque);
+      continue;
+    }
+    ASSERT_TRUE(k.active) << trial;  // within the mouth and off the pocket: the body holds it out
+    EXPECT_EQ(k.surface, 3);
+    EXPECT_EQ(k.stiffness, 0.0);
+    (vertex < 20.0 * c ? blended : rim) += 1;
+    if (vertex >= 20.0 * c) {  // the rim: radially outward, depth R + c/2 − ρ, no moment
+      const double rho = std::hypot(x - w.centre_x, y - w.centre_y);
+      EXPECT_NEAR(k.depth, mouth - rho, 1e-15);
+      if (k.force > 0.0) {
+        EXPECT_NEAR(-k.nx, (x - w.centre_x) / rho, 1e-12);
+        EXPECT_NEAR(-k.ny, (y - w.centre_y) / rho, 1e-12);
+      }
+      EXPECT_NEAR(k.torque, 0.0, 1e-9 * std::max(1.0, k.force));
+    }
+    const double scale = std::max(1.0, k.force);
+    if (omega == 0.0) {  // at rest: F = −∇E, τ = −∂E/∂ψ
+      auto energy = [&](double qx, double qy, double ps) {
+        return pocket_contact(w, qx, qy, 0.0, 0.0, ps, 0.0).energy;
+      };
+      const double hq = 1e-10;
+      const double gx = -(energy(x + hq, y, psi) - energy(x - hq, y, psi)) / (2 * hq);
+      const double gy = -(energy(x, y + hq, psi) - energy(x, y - hq, psi)) / (2 * hq);
+      EXPECT_NEAR(-k.force * k.nx, gx, 1e-4 * scale) << trial;
+      EXPECT_NEAR(-k.force * k.ny, gy, 1e-4 * scale) << trial;
+      const double tq = -(energy(x, y, psi + hq) - energy(x, y, psi - hq)) / (2 * hq);
+      EXPECT_NEAR(k.torque, tq, 1e-4 * scale * w.pitch_radius) << trial;
+    }
+    if (!(k.force > 0.0)) continue;
+    // ∂F/∂q and ∂F/∂v: dq_extra and dv_extra, the fields' share being 0
+    auto force = [&](double qx, double qy, double ux, double uy, double out[2]) {
+      total_force(w, pocket_contact(w, qx, qy, ux, uy, psi, omega), qx, qy, out);
+    };
+    double dq[4];
+    total_dq(w, k, x, y, vx, vy, omega, dq);
+    const double hq = 1e-11, hv = 1e-7;
+    const double stiff =
+        std::max(1e6, std::abs(dq[0]) + std::abs(dq[1]) + std::abs(dq[2]) + std::abs(dq[3]));
+    double p[2], q[2];
+    force(x + hq, y, vx, vy, p), force(x - hq, y, vx, vy, q);
+    EXPECT_NEAR(dq[0], (p[0] - q[0]) / (2 * hq), 2e-3 * stiff) << trial;
+    EXPECT_NEAR(dq[2], (p[1] - q[1]) / (2 * hq), 2e-3 * stiff) << trial;
+    force(x, y + hq, vx, vy, p), force(x, y - hq, vx, vy, q);
+    EXPECT_NEAR(dq[1], (p[0] - q[0]) / (2 * hq), 2e-3 * stiff) << trial;
+    EXPECT_NEAR(dq[3], (p[1] - q[1]) / (2 * hq), 2e-3 * stiff) << trial;
+    const double cv = 3000.0 * 40.0;  // c_c |∇d|², |∇d| below 6 in the blend
+    force(x, y, vx + hv, vy, p), force(x, y, vx - hv, vy, q);
+    EXPECT_NEAR(k.dv_extra[0], (p[0] - q[0]) / (2 * hv), 1e-4 * cv) << trial;
+    EXPECT_NEAR(k.dv_extra[2], (p[1] - q[1]) / (2 * hv), 1e-4 * cv) << trial;
+    force(x, y, vx, vy + hv, p), force(x, y, vx, vy - hv, q);
+    EXPECT_NEAR(k.dv_extra[1], (p[0] - q[0]) / (2 * hv), 1e-4 * cv) << trial;
+    EXPECT_NEAR(k.dv_extra[3], (p[1] - q[1]) / (2 * hv), 1e-4 * cv) << trial;
+  }
+  std::printf("body: %d joints in the pocket, %d in the blend, %d on the rim\n", pocket, blended,
+              rim);
+  EXPECT_GT(pocket, 60);
+  EXPECT_GT(blended, 100);
+  EXPECT_GT(rim, 200);
+}
+
+// The switch from the pocket to the body is continuous: along rays out of a vertex (every
+// direction within the mouth, the wheel at rest) the force's step between points 0.1 µm apart,
+// over the distance 9.9c–20.1c, is the smooth change only — at most (largest slope along the
+// ray) × 0.1 µm, across 10c and 20c too; a switch without the blend jumps by the pocket's whole
+// force there (k_c (9c − ε/2) at 10c). Measured: printed.
+TEST(DynamicsPocket, BodyTakesOverFromThePocketWithoutAJump) {
+  const Sprocket w = wheel(8, 0.0);
+  const double c = w.pocket_clearance, mouth = w.pitch_radius + 0.5 * c, step = 1e-7;
+  double largest_step = 0.0, largest_force = 0.0, largest_slope = 0.0;
+  int rays = 0;
+  for (int m = 0; m < 2; ++m) {
+    const double a = m * w.pocket_angle;  // vertices 0 and 1, ψ = 0
+    const double vx = w.centre_x + w.pitch_radius * std::cos(a);
+    const double vy = w.centre_y + w.pitch_radius * std::sin(a);
+    for (int r = 0; r < 72; ++r) {
+      const double dir = 2 * kPi * r / 72.0;
+      double prev[2] = {NAN, NAN};
+      bool inside = true;
+      for (double s = 9.9 * c; s <= 20.1 * c && inside; s += step) {
+        const double x = vx + s * std::cos(dir), y = vy + s * std::sin(dir);
+        inside = std::hypot(x - w.centre_x, y - w.centre_y) <= mouth;
+        if (!inside) break;
+        const SeatContact k = pocket_contact(w, x, y, 0.0, 0.0, 0.0, 0.0);
+        double f[2];
+        total_force(w, k, x, y, f);
+        if (!std::isnan(prev[0]))
+          largest_step = std::max(largest_step, std::hypot(f[0] - prev[0], f[1] - prev[1]));
+        prev[0] = f[0], prev[1] = f[1];
+        largest_force = std::max(largest_force, std::hypot(f[0], f[1]));
+        double dq[4];
+        total_dq(w, k, x, y, 0.0, 0.0, 0.0, dq);
+        largest_slope =
+            std::max(largest_slope, std::hypot(dq[0] * std::cos(dir) + dq[1] * std::sin(dir),
+                                               dq[2] * std::cos(dir) + dq[3] * std::sin(dir)));
+      }
+      rays += inside ? 1 : 0;
+    }
+  }
+  const double kc = w.contact_stiffness, sharp = kc * (9.0 * c - 0.5 * w.contact_smoothing);
+  std::printf(
+      "pocket to body over 9.9c-20.1c on %d rays: largest force %.4g N, largest step over 0.1 um "
+      "%.4g N (a sharp switch: %.4g N), largest slope along the ray %.3g k_c\n",
+      rays, largest_force, largest_step, sharp, largest_slope / kc);
+  EXPECT_GT(rays, 40);
+  EXPECT_LT(largest_step, 1.01 * largest_slope * step);  // only the smooth change
+  EXPECT_LT(largest_step, 1e-3 * sharp);
+}
+
+// A joint thrown onto the wheel between two pockets (the lost joint of the forced run-on,
+// docs/models/dynamics.md, "Pocket wheel: forced run-on"): a free link, radial, its leading joint
+// at 20 m/s towards a wheel at rest, `off` from the nearest vertex along the pitch circle. Without
+// the body (pocket_body = false) the vertex's pull takes it: depth ≈ off, forces k_c × it; with
+// the body the rim throws it back out, its depth below the rim's v √(m/k_c) (the joint's kinetic
+// energy into the rim's spring).
+struct Throw {
+  double depth = 0.0;     // [m] the largest max_penetration of the steps
+  double sideways = 0.0;  // [m] the joint's largest move along the pitch circle
+  double outward = 0.0;   // [m/s] the leading joint's radial speed at the end
+  double rho = 0.0;       // [m] its distance from the centre at the end
+  bool converged = true;
+};
+struct ThrowSetup {
+  Model model;
+  State state;
+  double polar = 0.0;  // [rad] the leading joint's
+};
+ThrowSetup throw_setup(double off, bool body, bool driven) {
+  Model m = uniform_chain(2, false, 0.064, 0.42, 1e8, 2000.0, false);
+  m.alternation = 0.018;
+  Sprocket w = pocket_wheel(0.064, 0.018, 8, 0.0, 0.0, 1e-4, 1e8, 2000.0);
+  w.pocket_body = body;
+  w.driver = !driven;
+  w.inertia = 0.2;
+  w.speed = 0.0;
+  m.sprockets = {w};
+  State s(2, 1);
+  s.angle = {0.0};  // vertex 1 at δ1, vertex 2 at 2π/8
+  s.speed = {0.0};
+  const double polar = w.pocket_angle + off / w.pitch_radius;
+  const double start = w.pitch_radius + 0.5 * w.pocket_clearance + 1e-3;
+  for (int i = 0; i < 2; ++i) {
+    const double rho = start + i * m.rest_length(0);
+    s.x[i] = rho * std::cos(polar);
+    s.y[i] = rho * std::sin(polar);
+    s.vx[i] = -20.0 * std::cos(polar);
+    s.vy[i] = -20.0 * std::sin(polar);
+  }
+  return {m, s, polar};
+}
+Throw throw_onto_wheel(double off, bool body) {
+  ThrowSetup t = throw_setup(off, body, false);
+  Integrator integ(t.model, {.step = 1e-5, .theta = 0.6});
+  Throw out;
+  const double r0 = t.model.sprockets[0].pitch_radius;
+  for (int k = 0; k < 300; ++k) {
+    const StepReport rep = integ.step(t.model, t.state);
+    if (!rep.converged) {
+      out.converged = false;
+      break;
+    }
+    out.depth = std::max(out.depth, rep.max_penetration);
+    const double polar = std::atan2(t.state.y[0], t.state.x[0]);
+    out.sideways = std::max(out.sideways, std::abs(polar - t.polar) * r0);
+  }
+  const State& s = t.state;
+  out.rho = std::hypot(s.x[0], s.y[0]);
+  out.outward = (s.x[0] * s.vx[0] + s.y[0] * s.vy[0]) / out.rho;
+  std::printf(
+      "thrown %.1f mm off vertex 1, body %s: depth %.4g mm, sideways %.4g mm, at the end %.4g mm "
+      "off the mouth at %.4g m/s outward%s\n",
+      off * 1e3, body ? "on" : "off", out.depth * 1e3, out.sideways * 1e3,
+      (out.rho - r0 - 5e-5) * 1e3, out.outward, out.converged ? "" : " (Newton stopped)");
+  return out;
+}
+
+TEST(DynamicsPocket, JointThrownBetweenThePocketsIsPushedOutByTheBody) {
+  const double bound = 20.0 * std::sqrt(0.42 / 1e8) + 1e-6;  // v √(m/k_c) + ε: 1.297 mm
+  // 14 mm off: between vertices 1 and 2, the rim alone
+  const Throw with = throw_onto_wheel(14e-3, true);
+  ASSERT_TRUE(with.converged);
+  EXPECT_LT(with.depth, bound);
+  EXPECT_GT(with.depth, 0.5 * bound);   // it did meet the rim
+  EXPECT_GT(with.outward, 5.0);         // thrown back out
+  EXPECT_GT(with.rho, 0.16428 + 5e-5);  // beyond the mouth R + c/2
+  EXPECT_LT(with.sideways, 1e-6);       // not pulled along the pitch circle
+  const Throw without = throw_onto_wheel(14e-3, false);
+  EXPECT_TRUE(without.depth > 10e-3 || !without.converged);  // k_c × > 10 mm: > 1 MN
+  // 1.5 mm off: through the blend, where the pocket's share still turns it (measured: 25 mm
+  // along the pitch circle) and the stiffer blend (slopes up to 8.8 k_c) is under-resolved at this
+  // step (depth 1.372 mm, 6 % above the rim's bound): thrown back out all the same
+  const Throw blend = throw_onto_wheel(1.5e-3, true);
+  ASSERT_TRUE(blend.converged);
+  EXPECT_LT(blend.depth, 1.2 * bound);
+  EXPECT_GT(blend.outward, 5.0);
+  EXPECT_GT(blend.rho, 0.16428 + 5e-5);
+}
+
+// The step's Newton matrix against central differences of its residual while the thrown joint is
+// on the body (the rim at 14 mm, the blend at 1.5 mm off vertex 1): its diagonal block, and with
+// the wheel free to turn (driven) the wheel's row, column and own entry, to 1e-4 of h θ k_c.
+TEST(DynamicsPocket, BodyNewtonMatrixMatchesTheResidualsDifferences) {
+  for (const bool driven : {false, true}) {
+    for (double off : {14e-3, 1.5e-3}) {
+      ThrowSetup t = throw_setup(off, true, driven);
+      const Model& m = t.model;
+      State& s = t.state;
+      const Sprocket& w = m.sprockets[0];
+      const double h = 1e-5;
+      Integrator integ(m, {.step = h, .theta = 0.6});
+      const std::size_t n = s.nodes(), nu = integ.unknowns();
+      ASSERT_EQ(nu, 2 * n + (driven ? 1 : 0));
+      const double scale = h * 0.6 * 1e8, rk = scale * w.pitch_radius;
+      int blocks = 0;
+      double worst = 0.0;
+      std::vector<double> r, jac;
+      for (int step = 0; step < 200; ++step) {
+        ASSERT_TRUE(integ.step(m, s).converged) << step;
+        const SeatContact k =
+            pocket_contact(w, s.x[0], s.y[0], s.vx[0], s.vy[0], s.angle[0], s.speed[0]);
+        if (!k.active || k.surface != 3 || !(k.force > 1.0) || step % 2) continue;
+        ++blocks;
+        std::vector<double> u(nu);
+        for (std::size_t i = 0; i < n; ++i) {
+          u[2 * i] = s.x[i] + h * s.vx[i];
+          u[2 * i + 1] = s.y[i] + h * s.vy[i];
+        }
+        if (driven) u[2 * n] = s.angle[0] + h * s.speed[0];
+        integ.newton_system(m, s, u, r, &jac);
+        std::vector<std::size_t> cols = {0, 1};
+        if (driven) cols.push_back(2 * n);
+        for (const std::size_t j : cols) {
+          const double eps = j == 2 * n ? 1e-10 / w.pitch_radius : 1e-10;
+          const std::vector<double> fd = testing::residual_difference(integ, m, s, u, j, eps);
+          for (const std::size_t a : cols) {
+            const double tol = (a == 2 * n && j == 2 * n)   ? rk * w.pitch_radius
+                               : (a == 2 * n || j == 2 * n) ? rk
+                                                            : scale;
+            worst = std::max(worst, std::abs(fd[a] - jac[a * nu + j]) / tol);
+            EXPECT_NEAR(jac[a * nu + j], fd[a], 1e-4 * tol)
+                << (driven ? "driven " : "driver ") << off << " step " << step << " " << a << " "
+                << j;
+          }
+        }
+      }
+      std::printf("body's Newton matrix (%s, %.1f mm off): %d steps, largest misfit %.2e\n",
+                  driven ? "driven" : "driver", off * 1e3, blocks, worst);
+      EXPECT_GT(blocks, 3);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace catena::dynamics

@@ -98,6 +98,12 @@ struct Sprocket {
   /// option (false, the default, is the sharp mouth's release; false is required with
   /// pocket_mouth > 0): with the contact's damping Newton stalls (docs, "Pocket wheel: unwinding").
   bool pocket_release = false;
+  /// The wheel's body between its pockets (docs/models/dynamics.md, "Pocket wheel: the body
+  /// between the pockets"): within the mouth, a joint more than 10c from its nearest vertex is
+  /// not that pocket's but meets the rim R + c/2, which pushes it radially out (penetration
+  /// R + c/2 − |q − O|, the seats' law, no friction); the two blend over 10c–20c. false leaves the
+  /// nearest vertex's pull however far the joint is (the law before; kept for the tests).
+  bool pocket_body = true;
   /// [-] μ of the roller–seat contact: Coulomb friction against the roller's slip along the seat
   /// surface relative to the wheel (0: frictionless seats, the default)
   double friction = 0.0;
@@ -642,7 +648,8 @@ struct SeatContact {
   /// −1/|q − O| on the tip's arc and −1/|q − K| at a tooth's corner K (convex: negative)
   double curvature = 0.0;
   /// where the roller touches: 0 the seating arc, 1 a flank, 2 a tooth's corner (the flank/tip
-  /// junction, or the flanks' apex), 3 the tip's arc
+  /// junction, or the flanks' apex), 3 the tip's arc (on a pocket wheel: the body between the
+  /// pockets, Sprocket::pocket_body, which takes no seat friction)
   int surface = 0;
   double nx = 0.0, ny = 0.0;  ///< unit vector from the seat centre to the roller
   /// The pocket's mouth ramp (pocket_contact; zero elsewhere): the part of the exact elastic

@@ -2775,6 +2775,19 @@ Result run(const analysis::Inputs& in) {
            tu.lost.front().first, lw.takeup_lost_time});
     }
   }
+  // a joint deeper than the pocket's clearance c: the validations' joints stay within 0.56 c
+  // (docs/models/dynamics.md, "Pocket wheel: the body between the pockets")
+  if (d.pocket && out.max_penetration > d.clearance)
+    out.diagnostics.push_back(
+        {Diagnostic::Severity::kWarning, "dynamics.pocket_penetration_deep",
+         "a joint went " + format_g(out.max_penetration * 1e3, 4) +
+             " mm deep into its pocket's wall or the wheel's body, more than the pocket "
+             "clearance " +
+             format_g(d.clearance * 1e3, 4) +
+             " mm: the penalty contact_stiffness is too soft for the load, or the chain came "
+             "back onto the wheel off its pockets (a free end or slack side whipping); the "
+             "forces and tensions around it are not to be trusted",
+         out.max_penetration, d.clearance, "m"});
   // the stick spring past the ratio at which some measured runs stopped (kHingeStickWarnRatio)
   if (d.hinge_law.stick_stiffness > 0.0) {
     const double warn = hinge_stick_bound(d, kHingeStickWarnRatio);

@@ -533,9 +533,11 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       }
       // Seat friction (docs/models/dynamics.md, "Seat friction"): F(q, v, ψ, ω) on the roller at
       // the θ point with the step's velocities, its reaction's torque on the wheel
+      // (none on a pocket wheel's body between the pockets: surface 3, "Pocket wheel: the body")
+      const bool rubs = wheel.friction > 0.0 && !(wheel.pocket && sc.surface == 3);
       const SeatFriction sf =
-          wheel.friction > 0.0 ? seat_friction(wheel, sc, qx, qy, vx, vy, omega) : SeatFriction{};
-      if (wheel.friction > 0.0) {
+          rubs ? seat_friction(wheel, sc, qx, qy, vx, vy, omega) : SeatFriction{};
+      if (rubs) {
         seat_friction_work_ += h * sf.power;
         torque += sf.torque;
         solver_.rhs[i].x += h * sf.fx;
@@ -570,7 +572,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       Mat2& d = solver_.diag[i];
       d = {d.a + dc.a, d.b + dc.b, d.c + dc.c, d.d + dc.d};
       const double ht = h * th;
-      if (wheel.friction > 0.0) {  // −∂(h F)/∂u = −(hθ ∂F/∂q + ∂F/∂v), as a guide's
+      if (rubs) {  // −∂(h F)/∂u = −(hθ ∂F/∂q + ∂F/∂v), as a guide's
         d = {d.a - (ht * sf.dq[0] + sf.dv[0]), d.b - (ht * sf.dq[1] + sf.dv[1]),
              d.c - (ht * sf.dq[2] + sf.dv[2]), d.d - (ht * sf.dq[3] + sf.dv[3])};
       }
@@ -593,7 +595,25 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       brow_[ia][i] = {-dtt.x - hf * sc.ny, -dtt.y + hf * sc.nx};
       wdiag +=
           tx * dt.x + ty * dt.y - hf * (sc.nx * cx + sc.ny * cy) + spin * (tx * sc.nx + ty * sc.ny);
-      if (wheel.friction > 0.0) {
+      if (wheel.pocket && sc.surface == 3) {
+        // the body between the pockets: its whole ∂F/∂q and ∂F/∂v are dq_extra = E_q and
+        // dv_extra = E_v (the fields give none), so by F(Rq, Rv, ψ + δ) = R F(q, v, ψ) the column
+        // gains hθ E_q t + E_v t + hθ E_v perp(v), the row hθ tᵀE_q + tᵀE_v, and the wheel's own
+        // entry −hθ tᵀE_q t − hθ tᵀE_v perp(v) − tᵀE_v t
+        const double* eq = sc.dq_extra;
+        const double* ev = sc.dv_extra;
+        const double hq = h * th, px = -vy, py = vx;
+        const Vec2 qt{eq[0] * tx + eq[1] * ty, eq[2] * tx + eq[3] * ty};
+        const Vec2 vt{ev[0] * tx + ev[1] * ty, ev[2] * tx + ev[3] * ty};
+        const Vec2 vp{ev[0] * px + ev[1] * py, ev[2] * px + ev[3] * py};
+        bcol_[ia][i].x += hq * qt.x + vt.x + hq * vp.x;
+        bcol_[ia][i].y += hq * qt.y + vt.y + hq * vp.y;
+        brow_[ia][i].x += hq * (tx * eq[0] + ty * eq[2]) + tx * ev[0] + ty * ev[2];
+        brow_[ia][i].y += hq * (tx * eq[1] + ty * eq[3]) + tx * ev[1] + ty * ev[3];
+        wdiag -=
+            hq * (tx * qt.x + ty * qt.y) + hq * (tx * vp.x + ty * vp.y) + tx * vt.x + ty * vt.y;
+      }
+      if (rubs) {
         // the friction's part is not symmetric: the column −h(θ ∂F/∂ψ + ∂F/∂ω/h), the row
         // −h(θ ∂τ/∂q + ∂τ/∂v/h), and −h(θ ∂τ/∂ψ + ∂τ/∂ω/h) on the wheel's own entry
         bcol_[ia][i].x -= ht * sf.dpsi[0] + sf.domega[0];
@@ -608,7 +628,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       // (normal, tangent and friction), the column is −D_i e, the slide's row −D_iᵀ e, its own
       // entry gains eᵀ D_i e, and the wheel's angle couples by −(∂R_ψ/∂u_i)·e and −e·∂R_i/∂ψ₁.
       Mat2 dall = dc;
-      if (wheel.friction > 0.0) {
+      if (rubs) {
         dall = {dc.a - (ht * sf.dq[0] + sf.dv[0]), dc.b - (ht * sf.dq[1] + sf.dv[1]),
                 dc.c - (ht * sf.dq[2] + sf.dv[2]), dc.d - (ht * sf.dq[3] + sf.dv[3])};
       }

@@ -167,6 +167,73 @@ void apply_release(const Sprocket& w, double g, double dist, double rx, double r
 }
 }  // namespace
 
+namespace {
+// The body's capture: a joint within the mouth and within kCaptureFrom c of its nearest vertex is
+// that pocket's; from kCaptureFrom c to kCaptureTo c the pocket's depth blends into the rim's;
+// beyond, the rim alone (docs/models/dynamics.md, "Pocket wheel: the body between the pockets":
+// twice the 4.9c of the deepest joint measured in a test's run, a slack span landing off its
+// vertex, and far below the 170–240c of the joints thrown back between the pockets).
+constexpr double kCaptureFrom = 10.0, kCaptureTo = 20.0;
+
+bool in_body(const Sprocket& w, double dist) {
+  return w.pocket_body && dist > kCaptureFrom * w.pocket_clearance;
+}
+
+// The body between the pockets on a contact whose seat and n = e/|e| are set, the joint within
+// the mouth M = R + c/2 and more than 10c from its vertex: the seats' law on the depth
+// d = g + B (h − g), g = |e| − c the pocket's, h = M − ρ the rim's, B the C² step in |e| from 0 at
+// 10c to 1 at 20c. F = −f ∇d, ∇d = (1 − B) n − B r̂ + (h − g) B′ n, f = f_el(d) + c(d) ∇d·v_rel
+// (never pulling); the torque f (r × ∇d) (the rim's part has no moment). The fields carry the
+// force's direction and size; stiffness, damping and curvature are 0 and the exact ∂F/∂q and
+// ∂F/∂v are dq_extra and dv_extra. surface = 3: no seat friction.
+void apply_body(const Sprocket& w, double dist, double rx, double ry, double vx, double vy,
+                double speed, SeatContact& c) {
+  const double cl = w.pocket_clearance, rho = std::hypot(rx, ry);
+  const double g = dist - cl, h = w.pitch_radius + 0.5 * cl - rho;
+  const Step b = smooth_step(dist, kCaptureFrom * cl, kCaptureTo * cl);
+  const double d = g + b.s * (h - g);
+  const double n[2] = {c.nx, c.ny}, u[2] = {rx / rho, ry / rho};
+  const double along = 1.0 - b.s + (h - g) * b.ds;
+  const double grad[2] = {along * n[0] - b.s * u[0], along * n[1] - b.s * u[1]};
+  const double len = std::hypot(grad[0], grad[1]);
+  if (!(d > 0.0) || !(len > 0.0)) {
+    c = SeatContact{};
+    return;
+  }
+  c.nx = grad[0] / len;
+  c.ny = grad[1] / len;
+  // the law along m = ∇d/|∇d| with the velocities scaled by |∇d|: its rate is ∇d·v_rel = ḋ
+  apply_seat_law(w, d, rx, ry, len * vx, len * vy, len * speed, c);
+  const double f = c.force, kf = c.stiffness, cf = c.damping;
+  // the Hessian of d: ∇∇g = P_n/|e|, ∇∇h = −P_r/ρ, ∇∇B = B″ n nᵀ + B′ P_n/|e|
+  double hess[4];
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const double id = i == j ? 1.0 : 0.0;
+      const double pn = (id - n[i] * n[j]) / dist, pr = (id - u[i] * u[j]) / rho;
+      hess[2 * i + j] = pn - b.ds * (n[j] * (u[i] + n[i]) + n[i] * (u[j] + n[j])) -
+                        b.s * (pr + pn) + (h - g) * (b.dds * n[i] * n[j] + b.ds * pn);
+    }
+  }
+  // ∂ḋ/∂q = ∇∇d v_rel + (∂v_rel/∂q)ᵀ ∇d, v_rel = v − ω ẑ × r, ∂v_rel/∂q = ω [[0, 1], [−1, 0]]
+  const double wx = vx + speed * ry, wy = vy - speed * rx;
+  const double rate_q[2] = {hess[0] * wx + hess[2] * wy - speed * grad[1],
+                            hess[1] * wx + hess[3] * wy + speed * grad[0]};
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      c.dq_extra[2 * i + j] = -grad[i] * (kf * grad[j] + cf * rate_q[j]) - f * hess[2 * i + j];
+      c.dv_extra[2 * i + j] = -cf * grad[i] * grad[j];
+    }
+  }
+  c.force = f * len;
+  c.torque = f * (rx * grad[1] - ry * grad[0]);
+  c.penetration = d;
+  c.depth = d;
+  c.stiffness = c.damping = c.curvature = 0.0;
+  c.surface = 3;
+}
+}  // namespace
+
 ReleaseBand release_band(const Sprocket& w) {
   constexpr double kDeg = std::numbers::pi / 180.0;
   return {std::sin(0.5 * w.pocket_angle + 5.0 * kDeg),
@@ -194,11 +261,18 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
   c.nx = nx;
   c.ny = ny;
   c.curvature = 1.0 / dist;
+  const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance;
+  if (!beyond && in_body(w, dist)) {  // between the pockets, within the mouth: the wheel's body
+    if (rho2 <= mouth * mouth)
+      apply_body(w, dist, rx, ry, vx, vy, speed, c);
+    else
+      c = SeatContact{};  // over a ramp (its W is 0 from 3c on)
+    return c;
+  }
   if (w.pocket_release) {
     apply_release(w, g, dist, rx, ry, vx, vy, speed, c);
     return c;
   }
-  const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance;
   const double rho = std::sqrt(rho2);
   if (!(w.pocket_mouth > 0.0) || rho <= mouth) {     // within the mouth: the pocket as it was
     apply_seat_law(w, g, rx, ry, vx, vy, speed, c);  // the seats' force law
@@ -300,8 +374,17 @@ void update_held(const Model& model, State& s) {
     for (std::size_t i = 0; i < n; ++i) {
       const double rx = s.x[i] - wheel.centre_x, ry = s.y[i] - wheel.centre_y;
       if (rx * rx + ry * ry <= mouth * mouth) {
-        s.held_wheel[i] = wi;
-        s.held_pocket[i] = nearest_pocket(wheel, std::atan2(ry, rx), s.angle[w]).index;
+        // within the mouth: held by the nearest pocket, unless the joint is on the body between
+        // the pockets (not held: beyond the mouth it is free)
+        const PocketVertex v = nearest_pocket(wheel, std::atan2(ry, rx), s.angle[w]);
+        const double vx = wheel.centre_x + wheel.pitch_radius * std::cos(v.angle);
+        const double vy = wheel.centre_y + wheel.pitch_radius * std::sin(v.angle);
+        if (!in_body(wheel, std::hypot(s.x[i] - vx, s.y[i] - vy))) {
+          s.held_wheel[i] = wi;
+          s.held_pocket[i] = v.index;
+        } else if (s.held_wheel[i] == wi) {
+          s.held_wheel[i] = -1;
+        }
       } else if (s.held_wheel[i] == wi &&
                  !pocket_contact(wheel, s.x[i], s.y[i], 0.0, 0.0, s.angle[w], 0.0, s.held_pocket[i])
                       .active) {
