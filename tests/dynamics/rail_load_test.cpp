@@ -7,7 +7,9 @@
 // loaded chain's start-up and a loaded link's ringing against their spring–mass closed forms,
 // and the work balance with the catch and the discharge; with the material arriving at a speed
 // of its own (Guide::load_speed) the Newton matrix again, the work balance with the arriving
-// material's kinetic energy, and a bad speed named.
+// material's kinetic energy, and a bad speed named; where loaded pieces with different speeds
+// overlap, the Newton matrix, the momentum and energy each piece's material brings, and the
+// two pieces' step force against its closed form.
 #include <gtest/gtest.h>
 
 #include <algorithm>
