@@ -372,9 +372,10 @@ struct Model;
 /// The conveyed load's mass on a node at q: Σ q_L p w(s) over the guides with load_inertia
 /// (rail_load's share w, ramp and gate), and its gradient ∂m_L/∂q = Σ q_L p w' (∂s/∂q)ᵀ.
 /// `frames`: guide_frame of each of model.guides.
-/// With Guide::load_speed also the arriving momentum p = Σ m_L,g u_g (u_g the guide's arriving
-/// velocity at q: load_speed along the rail's direction, or the arc's counter-clockwise tangent)
-/// and ∂p/∂q; the material joining a node arrives with p/m_L, the velocity of the load it carries.
+/// With Guide::load_speed also p = Σ m_L,g u_g (u_g the guide's arriving velocity at q:
+/// load_speed along the rail's direction, or the arc's counter-clockwise tangent) and ∂p/∂q; with
+/// one loaded piece at a node the material joining it arrives with p/m_L = u_g (the integrator
+/// takes the pieces' increments where two overlap: LoadPiece).
 struct LoadMass {
   double mass = 0.0;          ///< [kg] m_L
   double dx = 0.0, dy = 0.0;  ///< [kg/m] ∂m_L/∂q
@@ -382,7 +383,19 @@ struct LoadMass {
   /// [kg/s] ∂p/∂q row-major: ∂p_x/∂x, ∂p_x/∂y, ∂p_y/∂x, ∂p_y/∂y
   double dp[4] = {0, 0, 0, 0};
 };
-LoadMass load_mass(const Model& model, std::span<const GuideFrame> frames, double x, double y);
+/// One guide's part of load_mass at q: its mass m_L,g = q_L p w(s), ∇m_L,g, and the direction t
+/// of its arriving velocity u_g = load_speed t with ∂t/∂q (t = 0 without load_speed).
+struct LoadPiece {
+  bool active = false;
+  double mass = 0.0;                    ///< [kg] m_L,g
+  double dx = 0.0, dy = 0.0;            ///< [kg/m] ∂m_L,g/∂q
+  double tx = 0.0, ty = 0.0;            ///< [-] t
+  double dt[4] = {0.0, 0.0, 0.0, 0.0};  ///< [1/m] ∂t/∂q row-major
+};
+/// `pieces` (empty, or one per model.guides): also each guide's part (inactive for a guide
+/// without load_inertia or without a share at q).
+LoadMass load_mass(const Model& model, std::span<const GuideFrame> frames, double x, double y,
+                   std::span<LoadPiece> pieces = {});
 /// Some guide with load_inertia and load_per_metre > 0 (a model's or a case's guides).
 bool any_load_inertia(std::span<const Guide> guides);
 

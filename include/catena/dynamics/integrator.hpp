@@ -173,6 +173,23 @@ class Integrator {
   // at the step's first assembly (its guides' frames then current), unset with l0_
   std::vector<double> load_mass0_;
   bool load_mass0_set_ = false;
+  // Where loaded pieces with their own arriving speeds may overlap (load_speeds_mix): per node and
+  // guide, the piece's m_L,g at x₀ (node-major, taken with load_mass0_), and the pieces at the
+  // iterate of the node at hand (load_mass's)
+  bool load_mix_ = false;
+  std::vector<double> piece_mass0_;
+  std::vector<LoadPiece> pieces_;
+  // The material joining node i over the step (Guide::load_speed): it arrives with the velocity w,
+  // and −Δm_L ∂w/∂x₁ = −f G; `energy`: its kinetic energy per kg. With one loaded piece at the
+  // node w = p/m_L1 (LoadMass::p; f = Δm_L/m_L1, G = ∂p/∂x₁ − w (∇m_L1)ᵀ); with more (pieces_
+  // filled at the iterate) the growing pieces' increments' w = Σ⁺ Δm_g u_g / Σ⁺ Δm_g
+  // (f = Δm_L/Σ⁺ Δm_g, G = Σ⁺ ((u_g − w) (∇m_g)ᵀ + Δm_g ∂u_g/∂x₁)).
+  struct Arrival {
+    bool arrives = false;
+    double wx = 0.0, wy = 0.0, f = 0.0, energy = 0.0;
+    double g[4] = {0.0, 0.0, 0.0, 0.0};
+  };
+  Arrival arrival(const Model& model, std::size_t i, const LoadMass& m1, double dm) const;
   // The unknowns that border the chain's matrix: the driven wheels' angles in wheel order, then
   // the take-ups' slides in wheel order (docs/models/dynamics.md, "Take-up").
   struct Extra {

@@ -536,10 +536,12 @@ RailLoad rail_load(const Guide& g, const GuideFrame& frame, double pitch, double
   return out;
 }
 
-LoadMass load_mass(const Model& model, std::span<const GuideFrame> frames, double x, double y) {
+LoadMass load_mass(const Model& model, std::span<const GuideFrame> frames, double x, double y,
+                   std::span<LoadPiece> pieces) {
   LoadMass out;
   for (std::size_t g = 0; g < model.guides.size(); ++g) {
     const Guide& guide = model.guides[g];
+    if (!pieces.empty()) pieces[g] = {};
     if (!guide.load_inertia || !(guide.load_per_metre > 0.0)) continue;
     // the load's weight under a unit gravity along x: q_L p w(s) and its gradient
     const RailLoad l = rail_load(guide, frames[g], model.pitch, 1.0, 0.0, x, y);
@@ -547,28 +549,33 @@ LoadMass load_mass(const Model& model, std::span<const GuideFrame> frames, doubl
     out.mass += l.fx;
     out.dx += l.dq[0];
     out.dy += l.dq[1];
-    if (guide.load_speed == 0.0) continue;
-    // the arriving momentum m_g u_g: u_g = load_speed t, t the rail's direction (constant) or the
-    // arc's counter-clockwise tangent at q, t = (−r_y, r_x)/|r|, r = q − C, ∂t/∂q = −n tᵀ/|r|
-    double tx = frames[g].ux, ty = frames[g].uy, dt[4] = {0, 0, 0, 0};
-    if (guide.kind == Guide::Kind::kArc) {
-      const double rx = x - guide.centre_x, ry = y - guide.centre_y;
-      const double d = std::hypot(rx, ry);  // > 0: the share is active
-      const double nx = rx / d, ny = ry / d;
-      tx = -ny;
-      ty = nx;
-      dt[0] = -nx * tx / d;
-      dt[1] = -nx * ty / d;
-      dt[2] = -ny * tx / d;
-      dt[3] = -ny * ty / d;
+    LoadPiece piece{.active = true, .mass = l.fx, .dx = l.dq[0], .dy = l.dq[1]};
+    if (guide.load_speed != 0.0) {
+      // the arriving momentum m_g u_g: u_g = load_speed t, t the rail's direction (constant) or
+      // the arc's counter-clockwise tangent at q, t = (−r_y, r_x)/|r|, r = q − C, ∂t/∂q = −n tᵀ/|r|
+      piece.tx = frames[g].ux;
+      piece.ty = frames[g].uy;
+      if (guide.kind == Guide::Kind::kArc) {
+        const double rx = x - guide.centre_x, ry = y - guide.centre_y;
+        const double d = std::hypot(rx, ry);  // > 0: the share is active
+        const double nx = rx / d, ny = ry / d;
+        piece.tx = -ny;
+        piece.ty = nx;
+        piece.dt[0] = -nx * piece.tx / d;
+        piece.dt[1] = -nx * piece.ty / d;
+        piece.dt[2] = -ny * piece.tx / d;
+        piece.dt[3] = -ny * piece.ty / d;
+      }
+      const double u = guide.load_speed, tx = piece.tx, ty = piece.ty;
+      const double* dt = piece.dt;
+      out.px += l.fx * u * tx;
+      out.py += l.fx * u * ty;
+      out.dp[0] += u * (tx * l.dq[0] + l.fx * dt[0]);
+      out.dp[1] += u * (tx * l.dq[1] + l.fx * dt[1]);
+      out.dp[2] += u * (ty * l.dq[0] + l.fx * dt[2]);
+      out.dp[3] += u * (ty * l.dq[1] + l.fx * dt[3]);
     }
-    const double u = guide.load_speed;
-    out.px += l.fx * u * tx;
-    out.py += l.fx * u * ty;
-    out.dp[0] += u * (tx * l.dq[0] + l.fx * dt[0]);
-    out.dp[1] += u * (tx * l.dq[1] + l.fx * dt[1]);
-    out.dp[2] += u * (ty * l.dq[0] + l.fx * dt[2]);
-    out.dp[3] += u * (ty * l.dq[1] + l.fx * dt[3]);
+    if (!pieces.empty()) pieces[g] = piece;
   }
   return out;
 }

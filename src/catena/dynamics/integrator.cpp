@@ -79,6 +79,19 @@ double step_anchor(const Guide& guide, const GuideFrame& frame, const State& s, 
   const double a = at < s.stick_anchor.size() ? s.stick_anchor[at] : NAN;
   return std::isfinite(a) ? a : guide_position(guide, frame, s.x[i], s.y[i]);
 }
+// Loaded pieces with load_inertia of which two or more, one with a speed of its own, may overlap
+// at a node: only then is a node's arriving material the pieces' increments'
+// (Integrator::arrival).
+bool load_speeds_mix(std::span<const Guide> guides) {
+  int loaded = 0;
+  bool speed = false;
+  for (const Guide& g : guides) {
+    if (!g.load_inertia || !(g.load_per_metre > 0.0)) continue;
+    ++loaded;
+    speed = speed || g.load_speed != 0.0;
+  }
+  return loaded >= 2 && speed;
+}
 std::size_t sticking_guides(const Model& model) {
   std::size_t k = 0;
   for (const Guide& g : model.guides)
@@ -729,26 +742,38 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   // it, (m + m_L1)(v₁ − v₀) = h F. With v₁ − v₀ = (u − x₀ − h v₀)/hθ the diagonal block gains
   // m_L1/hθ I + a (∇m_L1)ᵀ, a = (v₁ − v₀) + [Δm_L > 0] v₀ (the mass's dependence on u through
   // the ramp w(s)). Material arriving with a speed of its own (Guide::load_speed) arrives with the
-  // velocity w = p/m_L1 of the load the node carries at the iterate (LoadMass::p): R gains
-  // −max(Δm_L, 0) w, a gains −[Δm_L > 0] w and the block −Δm_L ∂w/∂u, ∂w/∂u = (∂p/∂u − w
-  // (∇m_L1)ᵀ)/m_L1.
+  // velocity w (arrival: its piece's u_g, or where pieces overlap their increments' velocity):
+  // R gains −max(Δm_L, 0) w, a gains −[Δm_L > 0] w and the block −Δm_L ∂w/∂u = −f G.
   if (any_load_inertia(model.guides)) {
     const double ht = h * th;
     if (!load_mass0_set_) {
-      for (std::size_t i = 0; i < n; ++i)
-        load_mass0_[i] = load_mass(model, guide_frame_, sx[i], sy[i]).mass;
+      load_mix_ = load_speeds_mix(model.guides);
+      const std::size_t ng = model.guides.size();
+      if (load_mix_) {
+        // sized once for the model (its guides may be set after the build)
+        if (pieces_.size() != ng) pieces_.resize(ng);
+        if (piece_mass0_.size() != n * ng) piece_mass0_.resize(n * ng);
+      }
+      const std::span<LoadPiece> pieces =
+          load_mix_ ? std::span<LoadPiece>(pieces_) : std::span<LoadPiece>();
+      for (std::size_t i = 0; i < n; ++i) {
+        load_mass0_[i] = load_mass(model, guide_frame_, sx[i], sy[i], pieces).mass;
+        for (std::size_t g = 0; g < pieces.size(); ++g) piece_mass0_[i * ng + g] = pieces[g].mass;
+      }
       load_mass0_set_ = true;
     }
+    const std::span<LoadPiece> pieces =
+        load_mix_ ? std::span<LoadPiece>(pieces_) : std::span<LoadPiece>();
     for (std::size_t i = 0; i < n; ++i) {
       if (model.is_pinned(i)) continue;
       const double m0 = load_mass0_[i];
-      const LoadMass m1 = load_mass(model, guide_frame_, ux[i], uy[i]);
+      const LoadMass m1 = load_mass(model, guide_frame_, ux[i], uy[i], pieces);
       if (m0 == 0.0 && m1.mass == 0.0) continue;
       const double dm = m1.mass - m0, joins = dm > 0.0 ? dm : 0.0;
       const double dvx = (ux[i] - sx[i] - h * svx[i]) / ht, dvy = (uy[i] - sy[i] - h * svy[i]) / ht;
       // the arriving material's velocity w (0: at rest)
-      const bool arrives = dm > 0.0 && (m1.px != 0.0 || m1.py != 0.0);
-      const double wx = arrives ? m1.px / m1.mass : 0.0, wy = arrives ? m1.py / m1.mass : 0.0;
+      const Arrival in = arrival(model, i, m1, dm);
+      const double wx = in.wx, wy = in.wy;
       rhs[i].x -= m1.mass * dvx + joins * (svx[i] - wx);
       rhs[i].y -= m1.mass * dvy + joins * (svy[i] - wy);
       if (!jacobian) continue;
@@ -757,10 +782,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       const double mi = m1.mass / ht;
       Mat2& d = diag[i];
       d = {d.a + mi + ax * m1.dx, d.b + ax * m1.dy, d.c + ay * m1.dx, d.d + mi + ay * m1.dy};
-      if (arrives) {
-        const double f = dm / m1.mass;
-        d = {d.a - f * (m1.dp[0] - wx * m1.dx), d.b - f * (m1.dp[1] - wx * m1.dy),
-             d.c - f * (m1.dp[2] - wy * m1.dx), d.d - f * (m1.dp[3] - wy * m1.dy)};
+      if (in.arrives) {
+        const double f = in.f;
+        d = {d.a - f * in.g[0], d.b - f * in.g[1], d.c - f * in.g[2], d.d - f * in.g[3]};
       }
     }
   }
@@ -784,6 +808,65 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   double norm2 = wheel_norm2;
   for (std::size_t i = 0; i < n; ++i) norm2 += rhs[i].x * rhs[i].x + rhs[i].y * rhs[i].y;
   return norm2;
+}
+
+Integrator::Arrival Integrator::arrival(const Model& model, std::size_t i, const LoadMass& m1,
+                                        double dm) const {
+  Arrival out;
+  if (!(dm > 0.0)) return out;
+  // where loaded pieces overlap (pieces_ filled by load_mass at the iterate): each piece's
+  // increment Δm_g = m_g(x₁) − m_g(x₀); the growing ones' material arrives with their u_g (as much
+  // of it as the node's load grows by, Δm_L: what a shrinking piece hands over stays on the node)
+  if (load_mix_) {
+    const std::size_t ng = model.guides.size();
+    const double* mass0 = piece_mass0_.data() + i * ng;
+    int touching = 0;
+    for (std::size_t g = 0; g < ng; ++g)
+      if (pieces_[g].active || mass0[g] != 0.0) ++touching;
+    if (touching >= 2) {
+      double grown = 0.0, px = 0.0, py = 0.0, kinetic = 0.0;
+      for (std::size_t g = 0; g < ng; ++g) {
+        const LoadPiece& p = pieces_[g];
+        const double inc = p.mass - mass0[g];
+        if (!(inc > 0.0)) continue;
+        const double u = model.guides[g].load_speed;
+        grown += inc;
+        px += inc * u * p.tx;
+        py += inc * u * p.ty;
+        kinetic += inc * u * u * (p.tx * p.tx + p.ty * p.ty);
+      }
+      if (!(grown > 0.0) || (px == 0.0 && py == 0.0 && kinetic == 0.0)) return out;
+      out.arrives = true;
+      out.wx = px / grown;
+      out.wy = py / grown;
+      out.energy = 0.5 * kinetic / grown;
+      out.f = dm / grown;
+      for (std::size_t g = 0; g < ng; ++g) {
+        const LoadPiece& p = pieces_[g];
+        const double inc = p.mass - mass0[g];
+        if (!(inc > 0.0)) continue;
+        const double u = model.guides[g].load_speed;
+        const double rx = u * p.tx - out.wx, ry = u * p.ty - out.wy;
+        out.g[0] += rx * p.dx + inc * u * p.dt[0];
+        out.g[1] += rx * p.dy + inc * u * p.dt[1];
+        out.g[2] += ry * p.dx + inc * u * p.dt[2];
+        out.g[3] += ry * p.dy + inc * u * p.dt[3];
+      }
+      return out;
+    }
+  }
+  // one loaded piece at the node: the velocity of the load it carries, that piece's u_g
+  if (m1.px == 0.0 && m1.py == 0.0) return out;
+  out.arrives = true;
+  out.wx = m1.px / m1.mass;
+  out.wy = m1.py / m1.mass;
+  out.energy = 0.5 * (out.wx * out.wx + out.wy * out.wy);
+  out.f = dm / m1.mass;
+  out.g[0] = m1.dp[0] - out.wx * m1.dx;
+  out.g[1] = m1.dp[1] - out.wx * m1.dy;
+  out.g[2] = m1.dp[2] - out.wy * m1.dx;
+  out.g[3] = m1.dp[3] - out.wy * m1.dy;
+  return out;
 }
 
 SolveStatus Integrator::factor() {
@@ -1314,9 +1397,11 @@ StepReport Integrator::step(const Model& model, State& s) {
   // w·Δx/h + ½ |w|²) (−½ Δm_L |v − w|² at a steady speed) plus the material's kinetic energy
   // ½ Δm_L |w|² (load_arrival_work).
   if (any_load_inertia(model.guides)) {
+    const std::span<LoadPiece> pieces =
+        load_mix_ ? std::span<LoadPiece>(pieces_) : std::span<LoadPiece>();
     for (std::size_t i = 0; i < n; ++i) {
       if (model.is_pinned(i)) continue;
-      const LoadMass m1 = load_mass(model, guide_frame_, ux_[i], uy_[i]);
+      const LoadMass m1 = load_mass(model, guide_frame_, ux_[i], uy_[i], pieces);
       const double dm = m1.mass - load_mass0_[i];
       const double v0x = s.vx[i], v0y = s.vy[i];
       const double v1x = (ux_[i] - s.x[i] - h * (1.0 - th) * v0x) / (h * th);
@@ -1324,11 +1409,11 @@ StepReport Integrator::step(const Model& model, State& s) {
       const double v00 = v0x * v0x + v0y * v0y;
       if (dm > 0.0) {
         report.load_catch_work -= dm * ((0.5 - th) * v00 + th * (v0x * v1x + v0y * v1y));
-        if (m1.px != 0.0 || m1.py != 0.0) {
-          const double wx = m1.px / m1.mass, wy = m1.py / m1.mass;
+        if (const Arrival in = arrival(model, i, m1, dm); in.arrives) {
+          const double wx = in.wx, wy = in.wy;
           report.load_catch_work +=
               dm * (wx * ((1.0 - th) * v0x + th * v1x) + wy * ((1.0 - th) * v0y + th * v1y));
-          report.load_arrival_work += 0.5 * dm * (wx * wx + wy * wy);
+          report.load_arrival_work += dm * in.energy;
         }
       } else {
         report.load_discharge_work += 0.5 * dm * v00;
