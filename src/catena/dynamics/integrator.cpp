@@ -411,6 +411,15 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       check += mx + my;  // NaN if any is
     }
     listed = update_candidates(model, std::isfinite(check) ? moved : INFINITY);
+    // A wheel with the discrete gradient (Sprocket::discrete_gradient) tries a node whose x₀ or
+    // iterate is in reach too: they are within max(θ, 1 − θ) |u − x₀| (∞-norm) of the θ point
+    if (std::any_of(model.sprockets.begin(), model.sprockets.end(),
+                    [](const Sprocket& w) { return w.discrete_gradient && !w.pocket; })) {
+      double step_move = 0.0;
+      for (std::size_t i = 0; i < n; ++i)
+        step_move = std::max(step_move, std::max(std::abs(ux[i] - sx[i]), std::abs(uy[i] - sy[i])));
+      seat_travel_ = std::max(th, 1.0 - th) * step_move;
+    }
   }
   max_penetration_ = 0.0;
   takeup_damper_work_ = 0.0;
@@ -461,9 +470,31 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     const double cx0 = wheel.centre_x, cy0 = wheel.centre_y, reach2 = reach * reach;
     const double* thx = qx_.data();
     const double* thy = qy_.data();
+    // The seats' discrete gradient ("Sprockets: the discrete gradient"): the step's ends, the
+    // wheel's angles and centres there (a take-up's slides)
+    const bool stepped = wheel.discrete_gradient && !wheel.pocket;
+    SeatStep ends;
+    if (stepped) {
+      ends.h = h;
+      ends.cx0 = ends.cx1 = fixed.centre_x;
+      ends.cy0 = ends.cy1 = fixed.centre_y;
+      if (slides) {  // as at_slide
+        ends.cx0 += s.slide[w] * ex;
+        ends.cy0 += s.slide[w] * ey;
+        ends.cx1 += slide1_[w] * ex;
+        ends.cy1 += slide1_[w] * ey;
+      }
+    }
+    auto beyond = [&](double x, double y, double cx, double cy) {
+      return (x - cx) * (x - cx) + (y - cy) * (y - cy) > reach2;
+    };
     // every node, or only the wheel's candidates (the same nodes pass the test, in the same
-    // order); a pocket wheel's held joints may be beyond its reach, so it tries every node
-    const bool short_list = listed && !slides && !wheel.pocket;
+    // order); a pocket wheel's held joints may be beyond its reach, so it tries every node. A
+    // node off the list is beyond (1 + margin/2) reach at its θ point (update_candidates): its x₀
+    // and iterate are still beyond reach while √2 times the travel is within a quarter margin.
+    const bool short_list =
+        listed && !slides && !wheel.pocket &&
+        (!stepped || std::sqrt(2.0) * seat_travel_ <= 0.25 * kCandidateMargin * reach);
     const std::size_t count = short_list ? candidates_[w].size() : n;
     const std::size_t* list = candidates_[w].data();
     for (std::size_t slot_i = 0; slot_i < count; ++slot_i) {
@@ -471,7 +502,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       const double qx = thx[i], qy = thy[i];
       const double rx = qx - cx0, ry = qy - cy0;
       const int held = wheel.pocket ? held_pocket(s, i, w) : kNoPocket;
-      if (rx * rx + ry * ry > reach2 && held == kNoPocket) continue;
+      if (rx * rx + ry * ry > reach2 && held == kNoPocket &&
+          (!stepped || (beyond(s.x[i], s.y[i], ends.cx0, ends.cy0) &&
+                        beyond(ux_[i], uy_[i], ends.cx1, ends.cy1))))
+        continue;
       if (model.is_pinned(i)) continue;
       double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
       if (slides) {  // relative to the sliding centre
@@ -493,7 +527,21 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
             const double sigma = psi + kseat * geometry.tau;
             d = {kseat, std::cos(sigma), std::sin(sigma)};
           }
-          return seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn);
+          if (!stepped)
+            return seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn);
+          // the same seat k at the step's start and end angles
+          SeatStep e = ends;
+          e.x0 = s.x[i];
+          e.y0 = s.y[i];
+          e.x1 = ux_[i];
+          e.y1 = uy_[i];
+          const double sigma0 = s.angle[w] + kseat * geometry.tau;
+          const double sigma1 = psi1_[w] + kseat * geometry.tau;
+          e.cs0 = std::cos(sigma0);
+          e.sn0 = std::sin(sigma0);
+          e.cs1 = std::cos(sigma1);
+          e.sn1 = std::sin(sigma1);
+          return seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn, &e);
         }
         // a non-finite iterate: as seat_contact (no table slot)
         return seat_contact(wheel, geometry, qx, qy, vx, vy, psi, omega);
@@ -559,6 +607,11 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
                     normal * sc.ny * sc.ny + tangent * (1.0 - sc.ny * sc.ny) + turn * sc.ny * tny};
       Mat2& d = solver_.diag[i];
       d = {d.a + dc.a, d.b + dc.b, d.c + dc.c, d.d + dc.d};
+      // the discrete gradient's dependence on the iterate: ∂(h f n)/∂u = h (∂f/∂g₁) n n₁ᵀ
+      const double hs = h * sc.gap_slope;
+      const Mat2 dgrad{hs * sc.nx * sc.step_nx, hs * sc.nx * sc.step_ny, hs * sc.ny * sc.step_nx,
+                       hs * sc.ny * sc.step_ny};
+      if (hs != 0.0) d = {d.a + dgrad.a, d.b + dgrad.b, d.c + dgrad.c, d.d + dgrad.d};
       const double ht = h * th;
       if (wheel.friction > 0.0) {  // −∂(h F)/∂u = −(hθ ∂F/∂q + ∂F/∂v), as a guide's
         d = {d.a - (ht * sf.dq[0] + sf.dv[0]), d.b - (ht * sf.dq[1] + sf.dv[1]),
@@ -583,6 +636,16 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       brow_[ia][i] = {-dtt.x - hf * sc.ny, -dtt.y + hf * sc.nx};
       wdiag +=
           tx * dt.x + ty * dt.y - hf * (sc.nx * cx + sc.ny * cy) + spin * (tx * sc.nx + ty * sc.ny);
+      if (hs != 0.0) {
+        // the discrete gradient through g₁(x₁, ψ₁): the column h (∂f/∂g₁)(∂g₁/∂ψ₁) n, the row
+        // −h (∂f/∂g₁)(n·t) n₁ (the torque f n·t), the wheel's own −h (∂f/∂g₁)(n·t)(∂g₁/∂ψ₁)
+        const double arm = sc.nx * tx + sc.ny * ty;
+        bcol_[ia][i].x += hs * sc.step_turn * sc.nx;
+        bcol_[ia][i].y += hs * sc.step_turn * sc.ny;
+        brow_[ia][i].x -= hs * arm * sc.step_nx;
+        brow_[ia][i].y -= hs * arm * sc.step_ny;
+        wdiag -= hs * arm * sc.step_turn;
+      }
       if (wheel.friction > 0.0) {
         // the friction's part is not symmetric: the column −h(θ ∂F/∂ψ + ∂F/∂ω/h), the row
         // −h(θ ∂τ/∂q + ∂τ/∂v/h), and −h(θ ∂τ/∂ψ + ∂τ/∂ω/h) on the wheel's own entry
@@ -597,10 +660,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       // contact, moving the roller by −e ds₁: with D_i the contact's whole block ∂R_i/∂u_i
       // (normal, tangent and friction), the column is −D_i e, the slide's row −D_iᵀ e, its own
       // entry gains eᵀ D_i e, and the wheel's angle couples by −(∂R_ψ/∂u_i)·e and −e·∂R_i/∂ψ₁.
-      Mat2 dall = dc;
+      Mat2 dall = {dc.a + dgrad.a, dc.b + dgrad.b, dc.c + dgrad.c, dc.d + dgrad.d};
       if (wheel.friction > 0.0) {
-        dall = {dc.a - (ht * sf.dq[0] + sf.dv[0]), dc.b - (ht * sf.dq[1] + sf.dv[1]),
-                dc.c - (ht * sf.dq[2] + sf.dv[2]), dc.d - (ht * sf.dq[3] + sf.dv[3])};
+        dall = {dall.a - (ht * sf.dq[0] + sf.dv[0]), dall.b - (ht * sf.dq[1] + sf.dv[1]),
+                dall.c - (ht * sf.dq[2] + sf.dv[2]), dall.d - (ht * sf.dq[3] + sf.dv[3])};
       }
       const Vec2 de{dall.a * ex + dall.b * ey, dall.c * ex + dall.d * ey};
       border_rows_[is].push_back(i);
