@@ -554,7 +554,7 @@ TEST(DynamicsCli, ContactStiffnessDefaultsToTheHertzLineContact) {
 // contact_law = "line" (docs/models/dynamics.md, "Contact law"): the example without its k_c
 // runs with the seats on the Hertz line law; the mean tight-span tension still meets validation
 // (6)'s torque balance within 1 %, the JSON names the law, and the seats go less deep than on the
-// linear secant the default takes at the same expected load (measured: 1.45 against 2.91 µm; the
+// linear secant the default takes at the same expected load (measured: 1.01 against 2.91 µm; the
 // law is softer at first touch, so the rollers engage with less impact, and it has no ramp's ε/2;
 // with the linear law in its place the two runs are the same). The law's field and keys are
 // checked: an unknown law, a pocket wheel with it and an expected seat load past its cap are

@@ -75,9 +75,10 @@ struct Sprocket {
   /// The seats' elastic force over a step (docs/models/dynamics.md, "Sprockets: the discrete
   /// gradient"): true, the discrete gradient f_e = (E(g₁) − E(g₀))/(g₁ − g₀) of the law's energy
   /// between the gaps in the θ point's seat at the step's start (roller x₀, wheel angle ψ₀) and
-  /// end (x₁, ψ₁) (seat_contact_at with a SeatStep), so that its work over the step is −ΔE up to
-  /// the gap's curvature; false, the default: the force at the θ point. ISO seats only (a pocket
-  /// wheel keeps the θ point's force).
+  /// end (x₁, ψ₁) (seat_contact_at with a SeatStep), with a correction along the step so that its
+  /// work over the step is −ΔE on the curved seats and a turning wheel too; false, the default:
+  /// the force at the θ point. ISO seats only (a pocket wheel keeps the θ point's force).
+  /// use_line_law leaves it as it is (the case key discrete_gradient sets it).
   bool discrete_gradient = false;
   bool driver = false;       ///< prescribed speed (true) or inertia + load (false)
   double speed = 0.0;        ///< [rad/s] a driver's speed, counter-clockwise positive
@@ -675,6 +676,14 @@ struct SeatContact {
   double gap_slope = 0.0;
   double step_nx = 0.0, step_ny = 0.0;
   double step_turn = 0.0;
+  /// The discrete gradient's correction along the step (zero elsewhere; docs "Sprockets: the
+  /// discrete gradient"): the elastic force's part −S Δ on the roller, Δ = (skew_x, skew_y) [m]
+  /// its displacement over the step relative to the wheel's centre, and −S R² Δψ in `torque`, so
+  /// that the work over the step is −ΔE of the contact on any surface and a turning wheel. S [N/m]
+  /// and its derivatives ∂S/∂x₁ = (skew_dx, skew_dy) [N/m²], ∂S/∂ψ₁ = skew_dpsi [N/m].
+  double skew = 0.0;
+  double skew_x = 0.0, skew_y = 0.0;
+  double skew_dx = 0.0, skew_dy = 0.0, skew_dpsi = 0.0;
 };
 SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, double vy, double angle,
                          double speed);
@@ -710,6 +719,8 @@ struct SeatStep {
   double cs0 = 1.0, sn0 = 0.0, cs1 = 1.0, sn1 = 0.0;
   double cx0 = 0.0, cy0 = 0.0, cx1 = 0.0, cy1 = 0.0;
   double h = 0.0;
+  double turn = 0.0;   ///< [rad] the wheel's turn over the step, ψ₁ − ψ₀
+  double theta = 0.5;  ///< the θ point's weight (the θ point's angle ψ₀ + θ (ψ₁ − ψ₀))
 };
 /// seat_contact_at over the step `step` (nullptr, or a wheel without Sprocket::discrete_gradient:
 /// the θ point's force above, bit for bit). With it the elastic part is the discrete gradient
@@ -717,7 +728,10 @@ struct SeatStep {
 /// (x₁, ψ₁), both in seat k by the same surfaces (arc, flank, corner, tip), E = 0 for g ≤ 0,
 /// E'((g₀ + g₁)/2) where |g₁ − g₀| is below 1e-6 of the larger gap; the direction n, the damper
 /// (ramped by the θ point's gap, none where that is ≤ 0) and the torque's arm stay at the θ
-/// point. Active while the larger of g₀ and g₁ is positive (`penetration` and `depth` are then
+/// point; the work's miss on a curved surface or a turning wheel, ΔE − (the θ point's linear
+/// change), is put back along the step (Gonzalez's discrete gradient: the force −f_e ∇̄g with
+/// ∇̄g = ∇g_θ + (Δg − ∇g_θ·Δz) Δz/|Δz|², z = (x − c, R ψ); the skew fields). Active while the
+/// larger of g₀ and g₁ is positive (`penetration` and `depth` are then
 /// the θ point's gap, ≤ 0 possibly); `stiffness` is the θ point's ∂f/∂g (the damper's ramp
 /// only), gap_slope and the step_ fields carry ∂f/∂x₁ and ∂f/∂ψ₁, and friction_dv holds
 /// −h (∂f/∂g₁) n n₁ᵀ so that seat_friction's derivatives see the force's dependence on x₁.

@@ -1352,6 +1352,42 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
   c.step_nx = end.nx;
   c.step_ny = end.ny;
   c.step_turn = end.nx * (step->y1 - step->cy1) - end.ny * (step->x1 - step->cx1);
+  // The θ point's gradient ∇g_θ = (n, −a), a = n·perp(ρ_θ), predicts the gap's change over the
+  // step as lin = n·Δ − a Δψ (Δ the roller's displacement relative to the centre); on a curved
+  // surface or a turning wheel Δg differs. The rest goes along the step z = (Δ, R Δψ):
+  // ∇̄g = ∇g_θ + cc (Δ, R² Δψ), cc = (Δg − lin)/(|Δ|² + R² Δψ²), so that ∇̄g·Δz = Δg and the
+  // elastic force's work is exactly −ΔE. The roller gains −S Δ, the wheel −S R² Δψ, S = f_e cc.
+  const double r2 = w.pitch_radius * w.pitch_radius;
+  const double dx = (step->x1 - step->cx1) - (step->x0 - step->cx0);
+  const double dy = (step->y1 - step->cy1) - (step->y0 - step->cy0);
+  const double dpsi = step->turn;
+  const double px = -ry, py = rx;  // perp ρ_θ
+  const double arm = c.nx * px + c.ny * py;
+  const double lin = c.nx * dx + c.ny * dy - arm * dpsi;
+  const double den = dx * dx + dy * dy + r2 * dpsi * dpsi;
+  if (c.force > 0.0 && den > 0.0) {
+    const double cc = (end.g - start.g - lin) / den;
+    c.skew = elastic * cc;
+    c.skew_x = dx;
+    c.skew_y = dy;
+    c.torque -= c.skew * r2 * dpsi;
+    // ∂n/∂q = κ t tᵀ, ∂n/∂ψ = (1 − κ t·perp ρ) t, ∂a/∂q = (κ t·perp ρ − 1) t,
+    // ∂a/∂ψ = (t·perp ρ)(1 − κ t·perp ρ); the θ point moves by θ with x₁ and ψ₁
+    const double th = step->theta, kap = c.curvature;
+    const double tx = -c.ny, ty = c.nx;
+    const double tp = tx * px + ty * py, td = tx * dx + ty * dy;
+    const double lt = th * (kap * td - dpsi * (kap * tp - 1.0));
+    const double dlin_x = c.nx + lt * tx, dlin_y = c.ny + lt * ty;
+    const double dlin_psi = th * (1.0 - kap * tp) * (td - dpsi * tp) - arm;
+    // ∂cc = (∂(Δg − lin) − cc ∂den)/den, ∂Δg/∂x₁ = n₁, ∂Δg/∂ψ₁ = step_turn
+    const double dcc_x = (end.nx - dlin_x - 2.0 * cc * dx) / den;
+    const double dcc_y = (end.ny - dlin_y - 2.0 * cc * dy) / den;
+    const double dcc_psi = (c.step_turn - dlin_psi - 2.0 * cc * r2 * dpsi) / den;
+    // ∂S = cc ∂f_e + f_e ∂cc
+    c.skew_dx = cc * dgr.slope * end.nx + elastic * dcc_x;
+    c.skew_dy = cc * dgr.slope * end.ny + elastic * dcc_y;
+    c.skew_dpsi = cc * dgr.slope * c.step_turn + elastic * dcc_psi;
+  }
   // the friction's share: ∂(−f n)/∂x₁ = −(∂f/∂g₁) n n₁ᵀ, in ∂/∂v as h times it (v = (x₁ − x₀)/h)
   const double hs = step->h * c.gap_slope;
   c.friction_dv[0] = -hs * c.nx * end.nx;

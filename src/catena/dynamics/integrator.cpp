@@ -541,6 +541,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
           e.sn0 = std::sin(sigma0);
           e.cs1 = std::cos(sigma1);
           e.sn1 = std::sin(sigma1);
+          e.turn = psi1_[w] - s.angle[w];
+          e.theta = th;
           return seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn, &e);
         }
         // a non-finite iterate: as seat_contact (no table slot)
@@ -552,6 +554,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       torque += sc.torque;
       solver_.rhs[i].x -= h * sc.force * sc.nx;  // the force on the roller is −f n
       solver_.rhs[i].y -= h * sc.force * sc.ny;
+      if (sc.skew != 0.0) {  // the discrete gradient's correction along the step, −S Δ
+        solver_.rhs[i].x -= h * sc.skew * sc.skew_x;
+        solver_.rhs[i].y -= h * sc.skew * sc.skew_y;
+      }
       if (wheel.pocket && jacobian) {
         // the pocket's mouth ramp: the rest of the elastic ∂F/∂q on the diagonal block (its
         // coupling to the wheel's angle and the damping's are left out: quasi-Newton, the residual
@@ -582,6 +588,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       if (slides) {
         pull_x += sc.force * sc.nx - sf.fx;
         pull_y += sc.force * sc.ny - sf.fy;
+        if (sc.skew != 0.0) {
+          pull_x += sc.skew * sc.skew_x;
+          pull_y += sc.skew * sc.skew_y;
+        }
       }
       if (!jacobian || sc.force <= 0.0) continue;  // separating: no force, no stiffness
       // D = ∂(h f n)/∂u = normal n nᵀ + tangent (I − n nᵀ), from
@@ -609,9 +619,16 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       d = {d.a + dc.a, d.b + dc.b, d.c + dc.c, d.d + dc.d};
       // the discrete gradient's dependence on the iterate: ∂(h f n)/∂u = h (∂f/∂g₁) n n₁ᵀ
       const double hs = h * sc.gap_slope;
-      const Mat2 dgrad{hs * sc.nx * sc.step_nx, hs * sc.nx * sc.step_ny, hs * sc.ny * sc.step_nx,
-                       hs * sc.ny * sc.step_ny};
-      if (hs != 0.0) d = {d.a + dgrad.a, d.b + dgrad.b, d.c + dgrad.c, d.d + dgrad.d};
+      Mat2 dgrad{hs * sc.nx * sc.step_nx, hs * sc.nx * sc.step_ny, hs * sc.ny * sc.step_nx,
+                 hs * sc.ny * sc.step_ny};
+      // and its correction's, ∂(h S Δ)/∂u = h (Δ ∂S/∂x₁ᵀ + S I)
+      const bool skewed = sc.skew != 0.0;
+      if (skewed) {
+        dgrad = {dgrad.a + h * (sc.skew_x * sc.skew_dx + sc.skew),
+                 dgrad.b + h * sc.skew_x * sc.skew_dy, dgrad.c + h * sc.skew_y * sc.skew_dx,
+                 dgrad.d + h * (sc.skew_y * sc.skew_dy + sc.skew)};
+      }
+      if (hs != 0.0 || skewed) d = {d.a + dgrad.a, d.b + dgrad.b, d.c + dgrad.c, d.d + dgrad.d};
       const double ht = h * th;
       if (wheel.friction > 0.0) {  // −∂(h F)/∂u = −(hθ ∂F/∂q + ∂F/∂v), as a guide's
         d = {d.a - (ht * sf.dq[0] + sf.dv[0]), d.b - (ht * sf.dq[1] + sf.dv[1]),
@@ -645,6 +662,15 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
         brow_[ia][i].x -= hs * arm * sc.step_nx;
         brow_[ia][i].y -= hs * arm * sc.step_ny;
         wdiag -= hs * arm * sc.step_turn;
+      }
+      if (skewed) {
+        // the correction: R_i gains h S Δ, the wheel's residual h S R² Δψ (its torque −S R² Δψ)
+        const double r2dpsi = wheel.pitch_radius * wheel.pitch_radius * (psi1_[w] - s.angle[w]);
+        bcol_[ia][i].x += h * sc.skew_x * sc.skew_dpsi;
+        bcol_[ia][i].y += h * sc.skew_y * sc.skew_dpsi;
+        brow_[ia][i].x += h * r2dpsi * sc.skew_dx;
+        brow_[ia][i].y += h * r2dpsi * sc.skew_dy;
+        wdiag += h * (r2dpsi * sc.skew_dpsi + wheel.pitch_radius * wheel.pitch_radius * sc.skew);
       }
       if (wheel.friction > 0.0) {
         // the friction's part is not symmetric: the column −h(θ ∂F/∂ψ + ∂F/∂ω/h), the row
