@@ -72,6 +72,14 @@ struct Sprocket {
   /// a take-up's end stops (slide_stop). The damping is the same in both.
   bool line_law = false;
   LineLaw line;
+  /// The seats' elastic force over a step (docs/models/dynamics.md, "Sprockets: the discrete
+  /// gradient"): true, the discrete gradient f_e = (E(g₁) − E(g₀))/(g₁ − g₀) of the law's energy
+  /// between the gaps in the θ point's seat at the step's start (roller x₀, wheel angle ψ₀) and
+  /// end (x₁, ψ₁) (seat_contact_at with a SeatStep), with a correction along the step so that its
+  /// work over the step is −ΔE on the curved seats and a turning wheel too; false, the default:
+  /// the force at the θ point. ISO seats only (a pocket wheel keeps the θ point's force).
+  /// use_line_law leaves it as it is (the case key discrete_gradient sets it).
+  bool discrete_gradient = false;
   bool driver = false;       ///< prescribed speed (true) or inertia + load (false)
   double speed = 0.0;        ///< [rad/s] a driver's speed, counter-clockwise positive
   double inertia = 0.0;      ///< [kg·m²] a driven wheel's moment of inertia
@@ -681,6 +689,21 @@ struct SeatContact {
   double friction_dv[4] = {0.0, 0.0, 0.0, 0.0};
   double torque = 0.0;                ///< [N·m] on the wheel, counter-clockwise positive
   double seat_x = 0.0, seat_y = 0.0;  ///< [m] the seat centre
+  /// The discrete gradient (seat_contact_at with a SeatStep; zero elsewhere): ∂f/∂g₁ [N/m], the
+  /// force's derivative with respect to the gap g₁ at the step's end, and that gap's derivatives
+  /// ∂g₁/∂x₁ = (step_nx, step_ny) (the surface's normal at x₁) and ∂g₁/∂ψ₁ = step_turn [m]
+  /// (= −n₁·perp(x₁ − c₁), c₁ the centre at the end): ∂f/∂x₁ = gap_slope (step_nx, step_ny).
+  double gap_slope = 0.0;
+  double step_nx = 0.0, step_ny = 0.0;
+  double step_turn = 0.0;
+  /// The discrete gradient's correction along the step (zero elsewhere; docs "Sprockets: the
+  /// discrete gradient"): the elastic force's part −S Δ on the roller, Δ = (skew_x, skew_y) [m]
+  /// its displacement over the step relative to the wheel's centre, and −S R² Δψ in `torque`, so
+  /// that the work over the step is −ΔE of the contact on any surface and a turning wheel. S [N/m]
+  /// and its derivatives ∂S/∂x₁ = (skew_dx, skew_dy) [N/m²], ∂S/∂ψ₁ = skew_dpsi [N/m].
+  double skew = 0.0;
+  double skew_x = 0.0, skew_y = 0.0;
+  double skew_dx = 0.0, skew_dy = 0.0, skew_dpsi = 0.0;
 };
 SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, double vy, double angle,
                          double speed);
@@ -707,6 +730,34 @@ SeatContact seat_contact(const Sprocket& w, const SeatGeometry& t, double x, dou
 /// driver's angle is the same in every Newton iteration). No reach test: the caller's.
 SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
                             double vy, double speed, double k, double cs, double sn);
+/// A step's ends for the seats' discrete gradient (Sprocket::discrete_gradient): the roller's
+/// centre at the step's start x₀ and end x₁ [m], the seat's direction (cos σ, sin σ) at the
+/// wheel's angles there (σ = ψ + k τ, the θ point's seat k), the wheel's centre there [m] (they
+/// differ on a take-up's sliding wheel), and the step h [s].
+struct SeatStep {
+  double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
+  double cs0 = 1.0, sn0 = 0.0, cs1 = 1.0, sn1 = 0.0;
+  double cx0 = 0.0, cy0 = 0.0, cx1 = 0.0, cy1 = 0.0;
+  double h = 0.0;
+  double turn = 0.0;   ///< [rad] the wheel's turn over the step, ψ₁ − ψ₀
+  double theta = 0.5;  ///< the θ point's weight (the θ point's angle ψ₀ + θ (ψ₁ − ψ₀))
+};
+/// seat_contact_at over the step `step` (nullptr, or a wheel without Sprocket::discrete_gradient:
+/// the θ point's force above, bit for bit). With it the elastic part is the discrete gradient
+/// (E(g₁) − E(g₀))/(g₁ − g₀) of the law's energy between the gaps g₀ at (x₀, ψ₀) and g₁ at
+/// (x₁, ψ₁), both in seat k by the same surfaces (arc, flank, corner, tip), E = 0 for g ≤ 0,
+/// E'((g₀ + g₁)/2) where |g₁ − g₀| is below 1e-6 of the larger gap; the direction n, the damper
+/// (ramped by the θ point's gap, none where that is ≤ 0) and the torque's arm stay at the θ
+/// point; the work's miss on a curved surface or a turning wheel, ΔE − (the θ point's linear
+/// change), is put back along the step (Gonzalez's discrete gradient: the force −f_e ∇̄g with
+/// ∇̄g = ∇g_θ + (Δg − ∇g_θ·Δz) Δz/|Δz|², z = (x − c, R ψ); the skew fields). Active while the
+/// larger of g₀ and g₁ is positive (`penetration` and `depth` are then
+/// the θ point's gap, ≤ 0 possibly); `stiffness` is the θ point's ∂f/∂g (the damper's ramp
+/// only), gap_slope and the step_ fields carry ∂f/∂x₁ and ∂f/∂ψ₁, and friction_dv holds
+/// −h (∂f/∂g₁) n n₁ᵀ so that seat_friction's derivatives see the force's dependence on x₁.
+SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
+                            double vy, double speed, double k, double cs, double sn,
+                            const SeatStep* step);
 /// The seats' force law (docs/models/dynamics.md, "Sprockets"), shared by the ISO seat and the
 /// pocket: on a contact `c` whose normal (c.nx, c.ny) is set, at penetration g > 0, with
 /// r = q − centre and the roller's velocity v, sets force, stiffness ∂f/∂g, damping, energy,

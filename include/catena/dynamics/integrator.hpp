@@ -226,6 +226,10 @@ class Integrator {
   void prepare_seats(const Model& model);
   std::vector<SeatGeometry> seat_geometry_;
   std::vector<double> seat_psi_;  // per wheel: the angle of its directions
+  // [m] max(θ, 1 − θ) max |u − x₀| (∞-norm) over the nodes: how far a node's x₀ or iterate is from
+  // its θ point, for the reach test of the seats' discrete gradient (set by assemble when a wheel
+  // has it)
+  double seat_travel_ = 0.0;
   std::vector<std::vector<SeatDirection>> seat_direction_;  // per wheel: by k mod z
   // the nodes' θ points x_θ of the iterate (assemble's; the wheels' and the guides' one set)
   std::vector<double> qx_, qy_;

@@ -132,6 +132,13 @@ std::vector<Parameter> table_fields() {
            "line (the Hertz line contact's approach law, followed in load, on the seats and "
            "the guides' rails; contact_stiffness, given or the Hertz default, is then a "
            "take-up's stops' penalty; not with wheel = \"pocket\")"),
+      // the contacts' elastic force over a step (docs/models/dynamics.md, "Sprockets: the
+      // discrete gradient")
+      text("discrete_gradient",
+           "true or false: the ISO seats' and the guides' rails' elastic force as the discrete "
+           "gradient of the contact's energy over each step (conserving, for theta = 0.5) "
+           "instead of at the theta point (default true with contact_law = \"line\", false with "
+           "\"linear\"; not true with wheel = \"pocket\")"),
       // the round-link chain on pocket wheels (docs/models/dynamics.md, "Pocket wheel")
       text("wheel",
            "iso606 (roller chain on ISO 606 sprockets, the default) or pocket (round-link chain "
@@ -403,6 +410,8 @@ struct Setup {
   bool positions = false;              // positions {x, y} in the output
   // contact_law = "line": the ISO seats follow the Hertz line contact's approach law
   bool line_law = false;
+  // discrete_gradient: the seats' and rails' elastic force over the step (default: line_law)
+  bool discrete_gradient = false;
   // contact_stiffness omitted: the Hertz default (hertz_seat_stiffness) at this load [N]
   bool hertz_stiffness = false;
   double expected_load = NAN;
@@ -1196,7 +1205,8 @@ Setup parse(const analysis::Inputs& in) {
   bool slack_spans_bad = false;       // a slack_spans value refused (not quoted again below)
   bool positions = false;
   std::string wheel = "iso606";
-  bool line_law = false;  // contact_law = "line"
+  bool line_law = false;                  // contact_law = "line"
+  std::optional<bool> discrete_gradient;  // given, else the law's default
   for (const Entry& v : file.table) {
     if (v.path.rfind("dynamics.", 0) != 0) continue;  // the rest of a case file is not ours
     std::smatch m;
@@ -1366,6 +1376,14 @@ Setup parse(const analysis::Inputs& in) {
         issues.push_back({where(v), "'" + v.text + "'", "iso606 or pocket"});
       continue;
     }
+    if (key == "discrete_gradient") {
+      line[key] = v.line;
+      if (v.is_boolean)
+        discrete_gradient = v.text == "true";
+      else
+        issues.push_back({where(v), "'" + v.text + "'", "true or false"});
+      continue;
+    }
     if (key == "positions") {
       line[key] = v.line;
       if (v.is_boolean)
@@ -1411,6 +1429,11 @@ Setup parse(const analysis::Inputs& in) {
     issues.push_back({at("contact_law"), "'line'",
                       "linear with wheel = \"pocket\" (the line law is the roller in an ISO "
                       "seat; a round link's joint in its pocket keeps the penalty)"});
+  s.discrete_gradient = discrete_gradient.value_or(line_law);
+  if (discrete_gradient.value_or(false) && s.pocket)
+    issues.push_back({at("discrete_gradient"), "true",
+                      "false with wheel = \"pocket\" (the pockets' force is taken at the theta "
+                      "point: their discrete gradient is not built)"});
   // a round-link chain on pocket wheels: no catalogue, no roller; the keys of the roller chain
   // and the parts not built for a pocket are refused, each by name
   if (s.pocket) {
@@ -2005,7 +2028,9 @@ Setup parse(const analysis::Inputs& in) {
                           "follows the line law as the seats do (a softer rail: rail_modulus), or "
                           "contact_law = \"linear\" for the penalty"});
       if (s.width > 0.0 && s.roller > 0.0) use_line_law(guide, s.width);
-    } else {
+    }
+    guide.discrete_gradient = s.discrete_gradient;  // one key for the seats and the rails
+    if (!s.line_law) {
       for (const char* key : {"rail_modulus", "rail_poisson"})
         if (g.seen.count(key))
           issues.push_back({field(key), "(given)",
@@ -2379,6 +2404,7 @@ bool any_seat_friction(const Setup& d) {
 // contact_law = "line": the ISO seats' line law, the roller d1 in the seat over the inner width b1
 void set_seat_law(const Setup& d, Sprocket& s) {
   if (d.line_law) use_line_law(s, d.width);
+  s.discrete_gradient = d.discrete_gradient;  // discrete_gradient: over the step
 }
 
 // The free layout's wheels at their centres, and the loop's start on the belt path: every node
@@ -2999,6 +3025,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
   }
   // the seats' law only when not the linear one
   if (d.line_law) j["contact_law"] = "line";
+  // the discrete gradient only when not the law's default
+  if (d.discrete_gradient != d.line_law) j["discrete_gradient"] = d.discrete_gradient;
   // contact_stiffness omitted: the Hertz default used and its linearisation load
   if (d.hertz_stiffness) {
     j["contact_stiffness"] = d.contact_stiffness;

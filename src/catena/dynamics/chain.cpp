@@ -623,18 +623,23 @@ double stick_anchor_after(const Guide& g, const GuideContact& c, double anchor, 
 }
 
 namespace {
-// A rail's elastic part at the gap g (0 for g ≤ 0): the line law, or the penalty with its C¹ ramp
-// over the first ε.
-LineForce rail_elastic(const Guide& gd, double g) {
-  if (gd.line_law) return line_force(gd.line, g);
+// A contact's elastic part at the gap g (0 for g ≤ 0): the line law, or the penalty k_c with its
+// C¹ ramp over the first ε. A rail's and a seat's.
+LineForce contact_elastic(bool line_law, const LineLaw& line, double kc, double eps, double g) {
+  if (line_law) return line_force(line, g);
   LineForce e;
   if (!(g > 0.0)) return e;
-  const double eps = gd.contact_smoothing, kc = gd.contact_stiffness;
   e.force = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
   e.stiffness = g < eps ? kc * g / eps : kc;
   e.energy =
       g < eps ? kc * g * g * g / (6.0 * eps) : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
   return e;
+}
+LineForce rail_elastic(const Guide& gd, double g) {
+  return contact_elastic(gd.line_law, gd.line, gd.contact_stiffness, gd.contact_smoothing, g);
+}
+LineForce seat_elastic(const Sprocket& w, double g) {
+  return contact_elastic(w.line_law, w.line, w.contact_stiffness, w.contact_smoothing, g);
 }
 
 // The gap g at (x, y) in the rail's geometry with no test of its ends or sides (∂g/∂q = −n, n
@@ -659,21 +664,23 @@ double rail_gap(const Guide& gd, const GuideFrame& frame, double x, double y, do
   return gd.inside ? d - (gd.radius - r) : gd.radius + r - d;
 }
 
-// The discrete gradient of the rail's energy between the gaps g0 and g1: f_e and ∂f_e/∂g₁.
+// The discrete gradient of a contact's energy between the gaps g0 and g1: f_e and ∂f_e/∂g₁.
+// `elastic(g)` is the law (rail_elastic, seat_elastic).
 struct DiscreteGradient {
   double force = 0.0, slope = 0.0;
 };
-DiscreteGradient discrete_gradient(const Guide& gd, double g0, double g1) {
+template <class Law>
+DiscreteGradient discrete_gradient(const Law& elastic, double g0, double g1) {
   DiscreteGradient out;
   const double dg = g1 - g0;
   // the quotient's rounding is ~1e-16 g/|dg| of the force: past 1e-6 of the gap, 1e-10; below it
   // the midpoint's force, within (dg/g)² ~ 1e-12 of the quotient
   if (std::abs(dg) > 1e-6 * std::max(std::abs(g0), std::abs(g1))) {
-    const LineForce e0 = rail_elastic(gd, g0), e1 = rail_elastic(gd, g1);
+    const LineForce e0 = elastic(g0), e1 = elastic(g1);
     out.force = (e1.energy - e0.energy) / dg;
     out.slope = (e1.force - out.force) / dg;
   } else {
-    const LineForce m = rail_elastic(gd, 0.5 * (g0 + g1));
+    const LineForce m = elastic(0.5 * (g0 + g1));
     out.force = m.force;
     out.slope = 0.5 * m.stiffness;
   }
@@ -716,7 +723,7 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
     const double g0 = rail_gap(gd, frame, step->x0, step->y0, n0x, n0y);
     g1 = rail_gap(gd, frame, step->x1, step->y1, n1x, n1y);
     if (!(std::max(g0, g1) > 0.0)) return c;
-    dgr = discrete_gradient(gd, g0, g1);
+    dgr = discrete_gradient([&](double gap) { return rail_elastic(gd, gap); }, g0, g1);
   } else if (!(g > 0.0)) {
     return c;
   }
@@ -1163,14 +1170,21 @@ SeatContact seat_contact(const Sprocket& w, const SeatGeometry& t, double x, dou
   return seat_contact_at(w, t, x, y, vx, vy, speed, k, std::cos(sigma), std::sin(sigma));
 }
 
-SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
-                            double vy, double speed, double k, double cs, double sn) {
-  SeatContact c;
-  const double rx = x - w.centre_x, ry = y - w.centre_y;
-  c.seat = static_cast<int>(k);
-  c.seat_x = w.centre_x + w.pitch_radius * cs;
-  c.seat_y = w.centre_y + w.pitch_radius * sn;
-  const double ex = x - c.seat_x, ey = y - c.seat_y;
+namespace {
+// The gap g of a roller centred at (x, y) in the seat of a wheel centred at (cx, cy) whose
+// direction is (cs, sn) = (cos σ, sin σ): seat_contact_at's surfaces (the seating arc, a flank,
+// the tooth's corner, the tip's arc), continuous across them, ∂g/∂q = n. The normal n, the
+// curvature κ (∂n/∂q = κ t tᵀ) and the surface with it; `normal` false where n is undefined (the
+// roller's centre on the arc's, the flank's or the tip's centre or on the corner), g still set.
+struct SeatGap {
+  bool normal = false;
+  double g = 0.0, nx = 0.0, ny = 0.0, curvature = 0.0;
+  int surface = 0;
+};
+SeatGap seat_gap(const Sprocket& w, const SeatGeometry& t, double x, double y, double cx, double cy,
+                 double cs, double sn) {
+  SeatGap out;
+  const double ex = x - (cx + w.pitch_radius * cs), ey = y - (cy + w.pitch_radius * sn);
   // The tooth gap about the seat centre C: the seating arc of radius ri over the seating angle α
   // about the inward radial, and beyond its ends the flanks, taken as the straight lines tangent
   // to the arc there (the ISO flank arc re is several pitches: nearly straight over a roller).
@@ -1183,12 +1197,15 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
   // the inward radial iff |e_t| cos(α/2) ≤ e_in sin(α/2) with e_in ≥ 0 (γ = 0 at e = 0).
   if (e_in >= 0.0 && std::abs(e_t) * ch <= e_in * sh_abs) {
     const double dist = std::sqrt(ex * ex + ey * ey);
-    if (!(dist > 0.0)) return c;
+    if (!(dist > 0.0)) {
+      out.g = r - ri;
+      return out;
+    }
     g = dist + r - ri;
-    c.nx = ex / dist;
-    c.ny = ey / dist;
-    c.curvature = 1.0 / dist;
-    c.surface = 0;
+    out.nx = ex / dist;
+    out.ny = ey / dist;
+    out.curvature = 1.0 / dist;
+    out.surface = 0;
   } else {
     // The tooth on the roller's side (side = ±1 towards ±t). In the seat's frame mirrored to
     // side +1 — coordinates a along the inward radial, b = side·e_t — the flank leaves the arc's
@@ -1247,34 +1264,143 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
       }
     }
     if (where == kFlank && re > 0.0) {
-      if (!(fdist > 0.0)) return c;
-      world((fa - a) / fdist, (fb - b) / fdist, c.nx, c.ny);  // n = (F − q)/|F − q|
+      if (!(fdist > 0.0)) {
+        out.g = r + depth_flank;
+        return out;
+      }
+      world((fa - a) / fdist, (fb - b) / fdist, out.nx, out.ny);  // n = (F − q)/|F − q|
       g = r + depth_flank;
-      c.curvature = -1.0 / fdist;
-      c.surface = 1;
+      out.curvature = -1.0 / fdist;
+      out.surface = 1;
     } else if (where == kFlank) {
-      world(ch, sh_abs, c.nx, c.ny);
-      g = ex * c.nx + ey * c.ny + r - ri;  // depth_flank + r, as the form without a tip wrote it
-      c.curvature = 0.0;
-      c.surface = 1;
+      world(ch, sh_abs, out.nx, out.ny);
+      g = ex * out.nx + ey * out.ny + r -
+          ri;  // depth_flank + r, as the form without a tip wrote it
+      out.curvature = 0.0;
+      out.surface = 1;
     } else if (where == kTip) {
-      if (!(rho > 0.0)) return c;
-      world(-oa / rho, -ob / rho, c.nx, c.ny);  // n = −(q − O)/|q − O|
+      if (!(rho > 0.0)) {
+        out.g = r + depth_tip;
+        return out;
+      }
+      world(-oa / rho, -ob / rho, out.nx, out.ny);  // n = −(q − O)/|q − O|
       g = r + depth_tip;
-      c.curvature = -1.0 / rho;
-      c.surface = 3;
+      out.curvature = -1.0 / rho;
+      out.surface = 3;
     } else {
       const double da = ka - a, db = kb - b;  // K − q
       const double dist = std::sqrt(da * da + db * db);
-      if (!(dist > 0.0)) return c;
-      world(da / dist, db / dist, c.nx, c.ny);
+      if (!(dist > 0.0)) {
+        out.g = r;
+        return out;
+      }
+      world(da / dist, db / dist, out.nx, out.ny);
       g = r - dist;
-      c.curvature = -1.0 / dist;
-      c.surface = 2;
+      out.curvature = -1.0 / dist;
+      out.surface = 2;
     }
   }
-  if (!(g > 0.0)) return c;
-  apply_seat_law(w, g, rx, ry, vx, vy, speed, c);
+  out.g = g;
+  out.normal = true;
+  return out;
+}
+}  // namespace
+
+SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
+                            double vy, double speed, double k, double cs, double sn) {
+  return seat_contact_at(w, t, x, y, vx, vy, speed, k, cs, sn, nullptr);
+}
+
+SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
+                            double vy, double speed, double k, double cs, double sn,
+                            const SeatStep* step) {
+  SeatContact c;
+  const double rx = x - w.centre_x, ry = y - w.centre_y;
+  c.seat = static_cast<int>(k);
+  c.seat_x = w.centre_x + w.pitch_radius * cs;
+  c.seat_y = w.centre_y + w.pitch_radius * sn;
+  const SeatGap at = seat_gap(w, t, x, y, w.centre_x, w.centre_y, cs, sn);
+  if (!at.normal) return c;
+  c.nx = at.nx;
+  c.ny = at.ny;
+  c.curvature = at.curvature;
+  c.surface = at.surface;
+  const double g = at.g;
+  if (step == nullptr || !w.discrete_gradient) {
+    if (!(g > 0.0)) return c;
+    apply_seat_law(w, g, rx, ry, vx, vy, speed, c);
+    return c;
+  }
+  // the discrete gradient over the step: the gaps at its ends in the same seat k
+  const SeatGap start =
+      seat_gap(w, t, step->x0, step->y0, step->cx0, step->cy0, step->cs0, step->sn0);
+  const SeatGap end =
+      seat_gap(w, t, step->x1, step->y1, step->cx1, step->cy1, step->cs1, step->sn1);
+  if (!(std::max(start.g, end.g) > 0.0)) return c;
+  const DiscreteGradient dgr =
+      discrete_gradient([&](double gap) { return seat_elastic(w, gap); }, start.g, end.g);
+  // the damper at the θ point (ġ relative to the wheel), ramped in over ε by the θ point's gap,
+  // none where that is ≤ 0 (a roller entering or leaving on this step)
+  const double rate = (vx + speed * ry) * c.nx + (vy - speed * rx) * c.ny;
+  const double eps = w.contact_smoothing;
+  const double elastic = dgr.force;
+  c.damping = w.contact_damping * std::clamp(g / eps, 0.0, 1.0);
+  c.force = std::max(0.0, elastic + c.damping * rate);
+  // ∂f/∂g at the θ point: the damper's ramp only (f_e depends on the ends' gaps)
+  c.stiffness = g > 0.0 && g < eps ? w.contact_damping * rate / eps : 0.0;
+  c.gap_slope = dgr.slope;
+  if (c.force <= 0.0) c.stiffness = c.damping = c.gap_slope = 0.0;
+  c.damping_power = -(c.force - elastic) * rate;
+  c.energy = seat_elastic(w, g).energy;  // the θ point's, as without the gradient
+  c.active = true;
+  c.penetration = c.depth = g;
+  c.torque = c.force * (rx * c.ny - ry * c.nx);
+  // ∂g₁/∂x₁ = n₁, ∂g₁/∂ψ₁ = −n₁·perp(x₁ − c₁) (the gap is unchanged turning x₁ and ψ₁ together)
+  c.step_nx = end.nx;
+  c.step_ny = end.ny;
+  c.step_turn = end.nx * (step->y1 - step->cy1) - end.ny * (step->x1 - step->cx1);
+  // The θ point's gradient ∇g_θ = (n, −a), a = n·perp(ρ_θ), predicts the gap's change over the
+  // step as lin = n·Δ − a Δψ (Δ the roller's displacement relative to the centre); on a curved
+  // surface or a turning wheel Δg differs. The rest goes along the step z = (Δ, R Δψ):
+  // ∇̄g = ∇g_θ + cc (Δ, R² Δψ), cc = (Δg − lin)/(|Δ|² + R² Δψ²), so that ∇̄g·Δz = Δg and the
+  // elastic force's work is exactly −ΔE. The roller gains −S Δ, the wheel −S R² Δψ, S = f_e cc.
+  const double r2 = w.pitch_radius * w.pitch_radius;
+  const double dx = (step->x1 - step->cx1) - (step->x0 - step->cx0);
+  const double dy = (step->y1 - step->cy1) - (step->y0 - step->cy0);
+  const double dpsi = step->turn;
+  const double px = -ry, py = rx;  // perp ρ_θ
+  const double arm = c.nx * px + c.ny * py;
+  const double lin = c.nx * dx + c.ny * dy - arm * dpsi;
+  const double den = dx * dx + dy * dy + r2 * dpsi * dpsi;
+  if (c.force > 0.0 && den > 0.0) {
+    const double cc = (end.g - start.g - lin) / den;
+    c.skew = elastic * cc;
+    c.skew_x = dx;
+    c.skew_y = dy;
+    c.torque -= c.skew * r2 * dpsi;
+    // ∂n/∂q = κ t tᵀ, ∂n/∂ψ = (1 − κ t·perp ρ) t, ∂a/∂q = (κ t·perp ρ − 1) t,
+    // ∂a/∂ψ = (t·perp ρ)(1 − κ t·perp ρ); the θ point moves by θ with x₁ and ψ₁
+    const double th = step->theta, kap = c.curvature;
+    const double tx = -c.ny, ty = c.nx;
+    const double tp = tx * px + ty * py, td = tx * dx + ty * dy;
+    const double lt = th * (kap * td - dpsi * (kap * tp - 1.0));
+    const double dlin_x = c.nx + lt * tx, dlin_y = c.ny + lt * ty;
+    const double dlin_psi = th * (1.0 - kap * tp) * (td - dpsi * tp) - arm;
+    // ∂cc = (∂(Δg − lin) − cc ∂den)/den, ∂Δg/∂x₁ = n₁, ∂Δg/∂ψ₁ = step_turn
+    const double dcc_x = (end.nx - dlin_x - 2.0 * cc * dx) / den;
+    const double dcc_y = (end.ny - dlin_y - 2.0 * cc * dy) / den;
+    const double dcc_psi = (c.step_turn - dlin_psi - 2.0 * cc * r2 * dpsi) / den;
+    // ∂S = cc ∂f_e + f_e ∂cc
+    c.skew_dx = cc * dgr.slope * end.nx + elastic * dcc_x;
+    c.skew_dy = cc * dgr.slope * end.ny + elastic * dcc_y;
+    c.skew_dpsi = cc * dgr.slope * c.step_turn + elastic * dcc_psi;
+  }
+  // the friction's share: ∂(−f n)/∂x₁ = −(∂f/∂g₁) n n₁ᵀ, in ∂/∂v as h times it (v = (x₁ − x₀)/h)
+  const double hs = step->h * c.gap_slope;
+  c.friction_dv[0] = -hs * c.nx * end.nx;
+  c.friction_dv[1] = -hs * c.nx * end.ny;
+  c.friction_dv[2] = -hs * c.ny * end.nx;
+  c.friction_dv[3] = -hs * c.ny * end.ny;
   return c;
 }
 

@@ -434,6 +434,15 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       check += mx + my;  // NaN if any is
     }
     listed = update_candidates(model, std::isfinite(check) ? moved : INFINITY);
+    // A wheel with the discrete gradient (Sprocket::discrete_gradient) tries a node whose x₀ or
+    // iterate is in reach too: they are within max(θ, 1 − θ) |u − x₀| (∞-norm) of the θ point
+    if (std::any_of(model.sprockets.begin(), model.sprockets.end(),
+                    [](const Sprocket& w) { return w.discrete_gradient && !w.pocket; })) {
+      double step_move = 0.0;
+      for (std::size_t i = 0; i < n; ++i)
+        step_move = std::max(step_move, std::max(std::abs(ux[i] - sx[i]), std::abs(uy[i] - sy[i])));
+      seat_travel_ = std::max(th, 1.0 - th) * step_move;
+    }
   }
   max_penetration_ = 0.0;
   takeup_damper_work_ = 0.0;
@@ -484,9 +493,31 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     const double cx0 = wheel.centre_x, cy0 = wheel.centre_y, reach2 = reach * reach;
     const double* thx = qx_.data();
     const double* thy = qy_.data();
+    // The seats' discrete gradient ("Sprockets: the discrete gradient"): the step's ends, the
+    // wheel's angles and centres there (a take-up's slides)
+    const bool stepped = wheel.discrete_gradient && !wheel.pocket;
+    SeatStep ends;
+    if (stepped) {
+      ends.h = h;
+      ends.cx0 = ends.cx1 = fixed.centre_x;
+      ends.cy0 = ends.cy1 = fixed.centre_y;
+      if (slides) {  // as at_slide
+        ends.cx0 += s.slide[w] * ex;
+        ends.cy0 += s.slide[w] * ey;
+        ends.cx1 += slide1_[w] * ex;
+        ends.cy1 += slide1_[w] * ey;
+      }
+    }
+    auto beyond = [&](double x, double y, double cx, double cy) {
+      return (x - cx) * (x - cx) + (y - cy) * (y - cy) > reach2;
+    };
     // every node, or only the wheel's candidates (the same nodes pass the test, in the same
-    // order); a pocket wheel's held joints may be beyond its reach, so it tries every node
-    const bool short_list = listed && !slides && !wheel.pocket;
+    // order); a pocket wheel's held joints may be beyond its reach, so it tries every node. A
+    // node off the list is beyond (1 + margin/2) reach at its θ point (update_candidates): its x₀
+    // and iterate are still beyond reach while √2 times the travel is within a quarter margin.
+    const bool short_list =
+        listed && !slides && !wheel.pocket &&
+        (!stepped || std::sqrt(2.0) * seat_travel_ <= 0.25 * kCandidateMargin * reach);
     const std::size_t count = short_list ? candidates_[w].size() : n;
     const std::size_t* list = candidates_[w].data();
     for (std::size_t slot_i = 0; slot_i < count; ++slot_i) {
@@ -494,7 +525,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       const double qx = thx[i], qy = thy[i];
       const double rx = qx - cx0, ry = qy - cy0;
       const int held = wheel.pocket ? held_pocket(s, i, w) : kNoPocket;
-      if (rx * rx + ry * ry > reach2 && held == kNoPocket) continue;
+      if (rx * rx + ry * ry > reach2 && held == kNoPocket &&
+          (!stepped || (beyond(s.x[i], s.y[i], ends.cx0, ends.cy0) &&
+                        beyond(ux_[i], uy_[i], ends.cx1, ends.cy1))))
+        continue;
       if (model.is_pinned(i)) continue;
       double vx = (ux_[i] - s.x[i]) / h, vy = (uy_[i] - s.y[i]) / h;
       if (slides) {  // relative to the sliding centre
@@ -516,7 +550,23 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
             const double sigma = psi + kseat * geometry.tau;
             d = {kseat, std::cos(sigma), std::sin(sigma)};
           }
-          return seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn);
+          if (!stepped)
+            return seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn);
+          // the same seat k at the step's start and end angles
+          SeatStep e = ends;
+          e.x0 = s.x[i];
+          e.y0 = s.y[i];
+          e.x1 = ux_[i];
+          e.y1 = uy_[i];
+          const double sigma0 = s.angle[w] + kseat * geometry.tau;
+          const double sigma1 = psi1_[w] + kseat * geometry.tau;
+          e.cs0 = std::cos(sigma0);
+          e.sn0 = std::sin(sigma0);
+          e.cs1 = std::cos(sigma1);
+          e.sn1 = std::sin(sigma1);
+          e.turn = psi1_[w] - s.angle[w];
+          e.theta = th;
+          return seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn, &e);
         }
         // a non-finite iterate: as seat_contact (no table slot)
         return seat_contact(wheel, geometry, qx, qy, vx, vy, psi, omega);
@@ -527,6 +577,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       torque += sc.torque;
       solver_.rhs[i].x -= h * sc.force * sc.nx;  // the force on the roller is −f n
       solver_.rhs[i].y -= h * sc.force * sc.ny;
+      if (sc.skew != 0.0) {  // the discrete gradient's correction along the step, −S Δ
+        solver_.rhs[i].x -= h * sc.skew * sc.skew_x;
+        solver_.rhs[i].y -= h * sc.skew * sc.skew_y;
+      }
       if (wheel.pocket && jacobian) {
         // the pocket's mouth ramp: the rest of the elastic ∂F/∂q on the diagonal block (its
         // coupling to the wheel's angle and the damping's are left out: quasi-Newton, the residual
@@ -559,6 +613,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       if (slides) {
         pull_x += sc.force * sc.nx - sf.fx;
         pull_y += sc.force * sc.ny - sf.fy;
+        if (sc.skew != 0.0) {
+          pull_x += sc.skew * sc.skew_x;
+          pull_y += sc.skew * sc.skew_y;
+        }
       }
       if (!jacobian || sc.force <= 0.0) continue;  // separating: no force, no stiffness
       // D = ∂(h f n)/∂u = normal n nᵀ + tangent (I − n nᵀ), from
@@ -584,6 +642,18 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
                     normal * sc.ny * sc.ny + tangent * (1.0 - sc.ny * sc.ny) + turn * sc.ny * tny};
       Mat2& d = solver_.diag[i];
       d = {d.a + dc.a, d.b + dc.b, d.c + dc.c, d.d + dc.d};
+      // the discrete gradient's dependence on the iterate: ∂(h f n)/∂u = h (∂f/∂g₁) n n₁ᵀ
+      const double hs = h * sc.gap_slope;
+      Mat2 dgrad{hs * sc.nx * sc.step_nx, hs * sc.nx * sc.step_ny, hs * sc.ny * sc.step_nx,
+                 hs * sc.ny * sc.step_ny};
+      // and its correction's, ∂(h S Δ)/∂u = h (Δ ∂S/∂x₁ᵀ + S I)
+      const bool skewed = sc.skew != 0.0;
+      if (skewed) {
+        dgrad = {dgrad.a + h * (sc.skew_x * sc.skew_dx + sc.skew),
+                 dgrad.b + h * sc.skew_x * sc.skew_dy, dgrad.c + h * sc.skew_y * sc.skew_dx,
+                 dgrad.d + h * (sc.skew_y * sc.skew_dy + sc.skew)};
+      }
+      if (hs != 0.0 || skewed) d = {d.a + dgrad.a, d.b + dgrad.b, d.c + dgrad.c, d.d + dgrad.d};
       const double ht = h * th;
       if (rubs) {  // −∂(h F)/∂u = −(hθ ∂F/∂q + ∂F/∂v), as a guide's
         d = {d.a - (ht * sf.dq[0] + sf.dv[0]), d.b - (ht * sf.dq[1] + sf.dv[1]),
@@ -626,6 +696,25 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
         wdiag -=
             hq * (tx * qt.x + ty * qt.y) + hq * (tx * vp.x + ty * vp.y) + tx * vt.x + ty * vt.y;
       }
+      if (hs != 0.0) {
+        // the discrete gradient through g₁(x₁, ψ₁): the column h (∂f/∂g₁)(∂g₁/∂ψ₁) n, the row
+        // −h (∂f/∂g₁)(n·t) n₁ (the torque f n·t), the wheel's own −h (∂f/∂g₁)(n·t)(∂g₁/∂ψ₁)
+        const double arm = sc.nx * tx + sc.ny * ty;
+        bcol_[ia][i].x += hs * sc.step_turn * sc.nx;
+        bcol_[ia][i].y += hs * sc.step_turn * sc.ny;
+        brow_[ia][i].x -= hs * arm * sc.step_nx;
+        brow_[ia][i].y -= hs * arm * sc.step_ny;
+        wdiag -= hs * arm * sc.step_turn;
+      }
+      if (skewed) {
+        // the correction: R_i gains h S Δ, the wheel's residual h S R² Δψ (its torque −S R² Δψ)
+        const double r2dpsi = wheel.pitch_radius * wheel.pitch_radius * (psi1_[w] - s.angle[w]);
+        bcol_[ia][i].x += h * sc.skew_x * sc.skew_dpsi;
+        bcol_[ia][i].y += h * sc.skew_y * sc.skew_dpsi;
+        brow_[ia][i].x += h * r2dpsi * sc.skew_dx;
+        brow_[ia][i].y += h * r2dpsi * sc.skew_dy;
+        wdiag += h * (r2dpsi * sc.skew_dpsi + wheel.pitch_radius * wheel.pitch_radius * sc.skew);
+      }
       if (rubs) {
         // the friction's part is not symmetric: the column −h(θ ∂F/∂ψ + ∂F/∂ω/h), the row
         // −h(θ ∂τ/∂q + ∂τ/∂v/h), and −h(θ ∂τ/∂ψ + ∂τ/∂ω/h) on the wheel's own entry
@@ -640,10 +729,10 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       // contact, moving the roller by −e ds₁: with D_i the contact's whole block ∂R_i/∂u_i
       // (normal, tangent and friction), the column is −D_i e, the slide's row −D_iᵀ e, its own
       // entry gains eᵀ D_i e, and the wheel's angle couples by −(∂R_ψ/∂u_i)·e and −e·∂R_i/∂ψ₁.
-      Mat2 dall = dc;
+      Mat2 dall = {dc.a + dgrad.a, dc.b + dgrad.b, dc.c + dgrad.c, dc.d + dgrad.d};
       if (rubs) {
-        dall = {dc.a - (ht * sf.dq[0] + sf.dv[0]), dc.b - (ht * sf.dq[1] + sf.dv[1]),
-                dc.c - (ht * sf.dq[2] + sf.dv[2]), dc.d - (ht * sf.dq[3] + sf.dv[3])};
+        dall = {dall.a - (ht * sf.dq[0] + sf.dv[0]), dall.b - (ht * sf.dq[1] + sf.dv[1]),
+                dall.c - (ht * sf.dq[2] + sf.dv[2]), dall.d - (ht * sf.dq[3] + sf.dv[3])};
       }
       const Vec2 de{dall.a * ex + dall.b * ey, dall.c * ex + dall.d * ey};
       border_rows_[is].push_back(i);

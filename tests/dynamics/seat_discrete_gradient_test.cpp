@@ -1,0 +1,320 @@
+// The ISO seats' discrete gradient (Sprocket::discrete_gradient; docs/models/dynamics.md,
+// "Sprockets: the discrete gradient"): the seat's elastic force over a step is
+// (E(g₁) − E(g₀))/(g₁ − g₀) between the gaps in the θ point's seat at the step's ends. Its work on
+// roller and wheel over one step against the change of the contact's energy (the penalty's,
+// written out here), the Newton matrix against central differences of the step's residual, and a
+// roller-chain drive at θ = ½ whose work balance closes with it and not without it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "catena/dynamics/integrator.hpp"
+#include "residual_difference.hpp"
+#include "two_wheel_loops.hpp"
+
+namespace catena::dynamics {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// 12B (ISO 606): pitch, roller diameter d1, inner width b1
+constexpr double kPitch = 0.01905, kRoller = 0.01207, kWidth = 0.01168;
+constexpr double kStiffness = 2e8, kSmoothing = 1e-6;  // [N/m], [m] the seats' penalty
+
+// The penalty's energy at the gap g, written out: k_c g³/(6ε) within the ramp, k_c (g²/2 − ε g/2
+// + ε²/6) past it, 0 out of contact.
+double penalty_energy(double g) {
+  if (!(g > 0.0)) return 0.0;
+  return g < kSmoothing
+             ? kStiffness * g * g * g / (6.0 * kSmoothing)
+             : kStiffness * (0.5 * g * g - 0.5 * kSmoothing * g + kSmoothing * kSmoothing / 6.0);
+}
+
+Sprocket wheel17(bool straight_flank) {
+  Sprocket w = iso606_sprocket(kPitch, kRoller, kWidth, 17, 0.0, 0.0, kStiffness, 0.0);
+  if (straight_flank) w.flank_radius = 0.0;  // the flank the straight line tangent to the arc
+  w.discrete_gradient = true;
+  return w;
+}
+
+struct Point {
+  double x = 0.0, y = 0.0;
+};
+// The roller centre at gap g in seat 0 of wheel w turned to `angle`: on the seating arc at γ from
+// the inward radial (|γ| < α/2), or, with `along` ≥ 0, on the straight flank (flank_radius 0) of
+// the +t side, `along` [m] from the arc's end J along it. Both from the seat's geometry directly.
+Point in_seat(const Sprocket& w, double angle, double g, double gamma, double along = -1.0) {
+  const double cs = std::cos(angle), sn = std::sin(angle);
+  const double cx = w.pitch_radius * cs, cy = w.pitch_radius * sn;  // the seat centre
+  const double r = w.roller_radius, ri = w.seat_radius;
+  double a = 0.0, b = 0.0;  // along the inward radial, along t = (−sin σ, cos σ)
+  if (along < 0.0) {
+    a = (ri - r + g) * std::cos(gamma);
+    b = (ri - r + g) * std::sin(gamma);
+  } else {
+    const double ch = std::cos(0.5 * w.seating_angle), sh = std::sin(0.5 * w.seating_angle);
+    // J + along·u + (g − r) m, m = (cos α/2, sin α/2) into the tooth, u = (−sin α/2, cos α/2)
+    a = ri * ch - along * sh + (g - r) * ch;
+    b = ri * sh + along * ch + (g - r) * sh;
+  }
+  return {cx - a * cs - b * sn, cy - a * sn + b * cs};
+}
+
+// The contact's energy with the roller at q and the wheel at `angle` (its nearest seat)
+double energy_at(const Sprocket& w, Point q, double angle) {
+  return seat_contact(w, q.x, q.y, 0.0, 0.0, angle, 0.0).energy;
+}
+
+// One step's work on roller and wheel, the roller's force times x₁ − x₀ plus the torque times
+// ψ₁ − ψ₀, with the force over the step (the discrete gradient) or at the θ point (`gradient`
+// false); `surface` gets the θ point's. `direction_only` gets the work of the discrete gradient's
+// force without its correction along the step (SeatContact::skew): f_e along the θ point's n.
+double step_work(const Sprocket& w, Point p0, Point p1, double psi0, double psi1, bool gradient,
+                 int* surface = nullptr, double* direction_only = nullptr) {
+  const double h = 1e-4, theta = 0.5;
+  const SeatGeometry t = seat_geometry(w);
+  const double qx = p0.x + theta * (p1.x - p0.x), qy = p0.y + theta * (p1.y - p0.y);
+  const double psi = psi0 + theta * (psi1 - psi0), omega = (psi1 - psi0) / h;
+  const double vx = (p1.x - p0.x) / h, vy = (p1.y - p0.y) / h;
+  const double k = nearest_seat(qx, qy, psi, t.tau);
+  const SeatStep step{.x0 = p0.x,
+                      .y0 = p0.y,
+                      .x1 = p1.x,
+                      .y1 = p1.y,
+                      .cs0 = std::cos(psi0 + k * t.tau),
+                      .sn0 = std::sin(psi0 + k * t.tau),
+                      .cs1 = std::cos(psi1 + k * t.tau),
+                      .sn1 = std::sin(psi1 + k * t.tau),
+                      .h = h,
+                      .turn = psi1 - psi0,
+                      .theta = theta};
+  const SeatContact c = seat_contact_at(w, t, qx, qy, vx, vy, omega, k, std::cos(psi + k * t.tau),
+                                        std::sin(psi + k * t.tau), gradient ? &step : nullptr);
+  if (surface != nullptr) *surface = c.surface;
+  const double dx = p1.x - p0.x, dy = p1.y - p0.y, dpsi = psi1 - psi0;
+  const double along = -c.force * (c.nx * dx + c.ny * dy);
+  const double r2 = w.pitch_radius * w.pitch_radius;
+  if (direction_only != nullptr) *direction_only = along + (c.torque + c.skew * r2 * dpsi) * dpsi;
+  if (!c.active) return 0.0;
+  return along - c.skew * (c.skew_x * dx + c.skew_y * dy) + c.torque * dpsi;
+}
+
+// (1) Over one step the discrete gradient's work on roller and wheel is −ΔE of the contact: on
+// the straight flank (flank_radius 0) of a held wheel, entering from 2 µm out, pressing, lifting,
+// leaving, and over a step of 1e-13 m; on the seating arc (the roller's centre on a circle of
+// ri − r ≈ 60 µm about the seat centre), and on a turning wheel, where the gap is not affine and
+// the θ point's direction alone misses ΔE (measured), its correction along the step makes it
+// exact. The θ point's force misses it by far.
+TEST(DynamicsSeatDiscreteGradient, WorkOverAStepIsTheEnergysChange) {
+  const Sprocket flat = wheel17(true);
+  const double psi = 0.3;
+  struct Step {
+    double g0, g1;  // [m] the gaps at the ends
+  };
+  const Step steps[] = {{-2e-6, 3e-6},    {1e-6, 4e-6},  {5e-6, 0.5e-6},
+                        {0.2e-6, 0.8e-6}, {2e-6, -1e-6}, {2e-6, 2e-6 + 1e-13}};
+  double worst = 0.0, theta_worst = 0.0;
+  for (const auto& [g0, g1] : steps) {
+    const Point p0 = in_seat(flat, psi, g0, 0.0, 0.8e-3), p1 = in_seat(flat, psi, g1, 0.0, 0.9e-3);
+    int surface = -1;
+    const double work = step_work(flat, p0, p1, psi, psi, true, &surface);
+    EXPECT_EQ(surface, 1) << "the flank";
+    const double e0 = energy_at(flat, p0, psi), e1 = energy_at(flat, p1, psi);
+    // the reference: the penalty at the gaps the geometry put the roller at
+    EXPECT_NEAR(e0, penalty_energy(g0), 1e-6 * penalty_energy(g0) + 1e-18);
+    EXPECT_NEAR(e1, penalty_energy(g1), 1e-6 * penalty_energy(g1) + 1e-18);
+    const double change = e1 - e0, err = std::abs(work + change);
+    // within 1e-9 of ΔE, and of the positions' rounding (~1e-17 m at 5 cm from the centre) times
+    // the force, below 1e-16 m × k_c g
+    EXPECT_LE(err, 1e-9 * std::abs(change) + 1e-16 * kStiffness * std::max(g0, g1))
+        << g0 << " -> " << g1 << ": work " << work << " dE " << change;
+    if (std::abs(g1 - g0) > 1e-9) worst = std::max(worst, err / std::abs(change));
+    const double theta_work = step_work(flat, p0, p1, psi, psi, false);
+    theta_worst = std::max(theta_worst, std::abs(theta_work + change) / std::abs(change));
+  }
+  EXPECT_GT(theta_worst, 0.1);
+  // the seating arc of the ISO wheel, held: pressing 1 → 4 µm while swinging 0.1 → 0.12 rad, and
+  // entering from the clearance (−2 µm at −0.5 rad) to 3 µm at +0.4 rad
+  const Sprocket iso = wheel17(false);
+  struct Swing {
+    double g0, gamma0, g1, gamma1;
+  };
+  double arc_worst = 0.0, arc_direction = 0.0;
+  for (const auto& [g0, gamma0, g1, gamma1] :
+       {Swing{1e-6, 0.1, 4e-6, 0.12}, Swing{-2e-6, -0.5, 3e-6, 0.4}}) {
+    const Point a0 = in_seat(iso, psi, g0, gamma0), a1 = in_seat(iso, psi, g1, gamma1);
+    int surface = -1;
+    double direction = 0.0;
+    const double change = energy_at(iso, a1, psi) - energy_at(iso, a0, psi);
+    const double work = step_work(iso, a0, a1, psi, psi, true, &surface, &direction);
+    EXPECT_EQ(surface, 0) << "the seating arc";
+    arc_worst = std::max(arc_worst, std::abs(work + change) / std::abs(change));
+    arc_direction = std::max(arc_direction, std::abs(direction + change) / std::abs(change));
+  }
+  // a wheel turning at 30 rad/s for the step (3e-3 rad), the roller carried with it while pressing
+  // 1 → 4 µm: on the straight flank sliding 0.1 mm along it, on the seating arc swinging 0.1 →
+  // 0.12 rad
+  double turn_worst = 0.0, turn_direction = 0.0;
+  const double turn = 30.0 * 1e-4;
+  const Point ends[2][2] = {
+      {in_seat(flat, psi, 1e-6, 0.0, 0.8e-3), in_seat(flat, psi + turn, 4e-6, 0.0, 0.9e-3)},
+      {in_seat(iso, psi, 1e-6, 0.1), in_seat(iso, psi + turn, 4e-6, 0.12)}};
+  for (int j = 0; j < 2; ++j) {
+    const Sprocket& w = j == 0 ? flat : iso;
+    double direction = 0.0;
+    const double change = energy_at(w, ends[j][1], psi + turn) - energy_at(w, ends[j][0], psi);
+    const double work =
+        step_work(w, ends[j][0], ends[j][1], psi, psi + turn, true, nullptr, &direction);
+    turn_worst = std::max(turn_worst, std::abs(work + change) / std::abs(change));
+    turn_direction = std::max(turn_direction, std::abs(direction + change) / std::abs(change));
+  }
+  std::printf(
+      "seat discrete gradient: |work + dE| / |dE| worst %.2e on a held straight flank (the theta "
+      "point's force: %.3g); seating arc %.2e (the theta point's direction alone: %.2e); turning "
+      "wheel %.2e (alone: %.2e)\n",
+      worst, theta_worst, arc_worst, arc_direction, turn_worst, turn_direction);
+  EXPECT_LT(arc_worst, 1e-9);
+  EXPECT_LT(turn_worst, 1e-9);
+  EXPECT_GT(arc_direction, 1e-5);  // what the correction puts back
+}
+
+// A closed 12B loop over two z = 12 wheels 10 pitches apart, every seated roller pressed 0 … 3 µm
+// into its seat (the links 0.1 % short: about 950 N of tension), the driven wheel free.
+struct PressedLoop {
+  Model model;
+  State state;
+};
+PressedLoop pressed_loop(double damping, double friction, bool gradient) {
+  const int z = 12, m = 10;
+  PressedLoop l;
+  const auto n = static_cast<std::size_t>(z + 2 * m);
+  l.model = uniform_chain(n, true, kPitch * (1 - 1e-3), 0.0238, 5e7, 100.0, false);
+  l.model.sprockets = testing::equal_wheels(
+      {.teeth = z, .span = m, .omega = 13.0, .inertia = 0.01, .contact_damping = damping});
+  for (Sprocket& w : l.model.sprockets) {
+    w.friction = friction;
+    w.discrete_gradient = gradient;
+  }
+  const Sprocket& w0 = l.model.sprockets[0];
+  l.state = two_sprocket_loop(z, m, kPitch, w0.pitch_radius, 13.0);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> depth(0.0, 3e-6);
+  const double clearance = w0.seat_radius - w0.roller_radius;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (const Sprocket& w : l.model.sprockets) {
+      const double dx = l.state.x[i] - w.centre_x, dy = l.state.y[i] - w.centre_y;
+      const double r = std::hypot(dx, dy);
+      if (std::abs(r - w.pitch_radius) > 1e-9) continue;
+      const double in = clearance + depth(rng);
+      l.state.x[i] -= in * dx / r;
+      l.state.y[i] -= in * dy / r;
+    }
+  }
+  return l;
+}
+
+// (2) The Newton matrix with the discrete gradient against central differences of the step's
+// residual, every column: θ = 0.6 with the seats' damper and frictionless, the driven wheel's
+// angle an unknown, the iterate jittered by ±1 µm so that rollers enter and leave their seats
+// over the step (g₀ and g₁ of opposite signs); then θ = ½ with seat friction μ = 0.2 (where the
+// friction's turning columns are exact, docs). It is the discrete gradient's matrix: different from
+// the θ point's at the same iterate.
+TEST(DynamicsSeatDiscreteGradient, NewtonMatrixMatchesTheResidualsDifferences) {
+  const double h = 1e-4;
+  struct Case {
+    double theta, damping, friction;
+  };
+  for (const Case& k : {Case{0.6, 800.0, 0.0}, Case{0.5, 800.0, 0.2}}) {
+    std::vector<double> jac_theta;
+    for (const bool gradient : {false, true}) {
+      PressedLoop l = pressed_loop(k.damping, k.friction, gradient);
+      Integrator integ(l.model, {.step = h, .theta = k.theta});
+      const std::size_t n = l.model.nodes(), size = integ.unknowns();
+      ASSERT_EQ(size, 2 * n + 1);
+      std::vector<double> u(size);
+      std::mt19937 rng(3);
+      std::uniform_real_distribution<double> jitter(-1e-6, 1e-6);
+      for (std::size_t i = 0; i < n; ++i) {
+        u[2 * i] = l.state.x[i] + h * l.state.vx[i] + jitter(rng);
+        u[2 * i + 1] = l.state.y[i] + h * l.state.vy[i] + jitter(rng);
+      }
+      u[2 * n] = l.state.angle[1] + h * l.state.speed[1] + 2e-5;
+      std::vector<double> r0, jac;
+      integ.newton_system(l.model, l.state, u, r0, &jac);
+      if (!gradient) {
+        jac_theta = jac;
+        continue;
+      }
+      const testing::ColumnsAgainstDifferences d = testing::expect_columns_match_differences(
+          integ, l.model, l.state, u, jac, jac_theta,
+          [n](std::size_t c) { return c == 2 * n ? 1e-8 : 1e-10; }, 1e-5);
+      std::printf(
+          "seat discrete gradient's Newton matrix (theta %.1f, mu %.1f): worst |J - FD| / column "
+          "scale %.2e\n",
+          k.theta, k.friction, d.worst);
+      EXPECT_GT(d.differs, 1e-3 * d.scale);
+    }
+  }
+}
+
+// (3) The drive at θ = ½: the loop above unpressed (every roller on its pitch circle, the links
+// 0.1 % short), the driver at 13 rad/s, the driven wheel's inertia 0.01 kg·m² under a load of
+// 5 N·m, seats undamped (c_c = 0) and frictionless, links undamped, over 0.2 s of 0.1 ms steps
+// (ω h ≈ 9 on the seats). The work balance: the driver's work Σ −τ₀ Δψ₀ and the load's −T_L Σ Δψ₁
+// against the change of the energy (kinetic, links', contacts'). With the discrete gradient it
+// closes to Newton's tolerance (the rollers rattle in their seats unresolved; without the
+// correction along the step it wandered by 5e-2 of the kinetic energy, docs); with the θ point's
+// force the contacts gain energy until the run diverges.
+struct DriveRun {
+  double kinetic0 = 0.0, worst = 0.0, end = 0.0;
+  int steps = 0;  // completed
+};
+DriveRun drive_run(bool gradient) {
+  const int z = 12, m = 10;
+  const auto n = static_cast<std::size_t>(z + 2 * m);
+  Model model = uniform_chain(n, true, kPitch * (1 - 1e-3), 0.0238, 5e7, 0.0, false);
+  model.sprockets = testing::equal_wheels(
+      {.teeth = z, .span = m, .omega = 13.0, .inertia = 0.01, .load = 5.0, .contact_damping = 0.0});
+  for (Sprocket& w : model.sprockets) w.discrete_gradient = gradient;
+  State s = two_sprocket_loop(z, m, kPitch, model.sprockets[0].pitch_radius, 13.0);
+  const double h = 1e-4;
+  Integrator integ(model, {.step = h, .theta = 0.5});
+  DriveRun out;
+  const Energy e0 = energy(model, s);
+  out.kinetic0 = e0.kinetic;
+  double work = 0.0;
+  for (int k = 0; k < 2000; ++k) {
+    const double a0 = s.angle[0], b0 = s.angle[1];
+    const StepReport rep = integ.step(model, s);
+    if (!rep.converged) break;
+    work += -integ.applied_torque()[0] * (s.angle[0] - a0) -
+            model.sprockets[1].load_torque * (s.angle[1] - b0);
+    const double balance = energy(model, s).total() - e0.total() - work;
+    if (!std::isfinite(balance)) break;
+    out.worst = std::max(out.worst, std::abs(balance));
+    out.end = balance;
+    out.steps = k + 1;
+  }
+  return out;
+}
+
+TEST(DynamicsSeatDiscreteGradient, DriveAtThetaHalfKeepsItsWorkBalance) {
+  const DriveRun kept = drive_run(true), theta = drive_run(false);
+  std::printf(
+      "drive at theta = 1/2 over 0.2 s (kinetic %.4g J): work balance worst %.2e of the kinetic "
+      "with the discrete gradient (%d steps), %.3g with the theta point's force (%d steps, end "
+      "%.3g J)\n",
+      kept.kinetic0, kept.worst / kept.kinetic0, kept.steps, theta.worst / theta.kinetic0,
+      theta.steps, theta.end);
+  EXPECT_EQ(kept.steps, 2000);
+  EXPECT_LT(kept.worst, 1e-6 * kept.kinetic0);
+  // the θ point's force: diverges, or gains far more than the discrete gradient's error
+  EXPECT_TRUE(theta.steps < 2000 || theta.worst > 100.0 * kept.worst);
+}
+
+}  // namespace
+}  // namespace catena::dynamics
