@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "catena/dynamics/integrator.hpp"
+#include "pressed_loop.hpp"
 #include "residual_difference.hpp"
 #include "two_wheel_loops.hpp"
 
@@ -182,41 +183,6 @@ TEST(DynamicsSeatDiscreteGradient, WorkOverAStepIsTheEnergysChange) {
   EXPECT_GT(arc_direction, 1e-5);  // what the correction puts back
 }
 
-// A closed 12B loop over two z = 12 wheels 10 pitches apart, every seated roller pressed 0 … 3 µm
-// into its seat (the links 0.1 % short: about 950 N of tension), the driven wheel free.
-struct PressedLoop {
-  Model model;
-  State state;
-};
-PressedLoop pressed_loop(double damping, double friction, bool gradient) {
-  const int z = 12, m = 10;
-  PressedLoop l;
-  const auto n = static_cast<std::size_t>(z + 2 * m);
-  l.model = uniform_chain(n, true, kPitch * (1 - 1e-3), 0.0238, 5e7, 100.0, false);
-  l.model.sprockets = testing::equal_wheels(
-      {.teeth = z, .span = m, .omega = 13.0, .inertia = 0.01, .contact_damping = damping});
-  for (Sprocket& w : l.model.sprockets) {
-    w.friction = friction;
-    w.discrete_gradient = gradient;
-  }
-  const Sprocket& w0 = l.model.sprockets[0];
-  l.state = two_sprocket_loop(z, m, kPitch, w0.pitch_radius, 13.0);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> depth(0.0, 3e-6);
-  const double clearance = w0.seat_radius - w0.roller_radius;
-  for (std::size_t i = 0; i < n; ++i) {
-    for (const Sprocket& w : l.model.sprockets) {
-      const double dx = l.state.x[i] - w.centre_x, dy = l.state.y[i] - w.centre_y;
-      const double r = std::hypot(dx, dy);
-      if (std::abs(r - w.pitch_radius) > 1e-9) continue;
-      const double in = clearance + depth(rng);
-      l.state.x[i] -= in * dx / r;
-      l.state.y[i] -= in * dy / r;
-    }
-  }
-  return l;
-}
-
 // (2) The Newton matrix with the discrete gradient against central differences of the step's
 // residual, every column: θ = 0.6 with the seats' damper and frictionless, the driven wheel's
 // angle an unknown, the iterate jittered by ±1 µm so that rollers enter and leave their seats
@@ -231,7 +197,8 @@ TEST(DynamicsSeatDiscreteGradient, NewtonMatrixMatchesTheResidualsDifferences) {
   for (const Case& k : {Case{0.6, 800.0, 0.0}, Case{0.5, 800.0, 0.2}}) {
     std::vector<double> jac_theta;
     for (const bool gradient : {false, true}) {
-      PressedLoop l = pressed_loop(k.damping, k.friction, gradient);
+      testing::Loop l = testing::pressed_loop(
+          {.contact_damping = k.damping, .friction = k.friction, .discrete_gradient = gradient});
       Integrator integ(l.model, {.step = h, .theta = k.theta});
       const std::size_t n = l.model.nodes(), size = integ.unknowns();
       ASSERT_EQ(size, 2 * n + 1);

@@ -14,8 +14,8 @@
 
 #include "catena/dynamics/integrator.hpp"
 #include "log_simpson.hpp"
+#include "pressed_loop.hpp"
 #include "residual_difference.hpp"
-#include "two_wheel_loops.hpp"
 
 namespace catena::dynamics {
 namespace {
@@ -153,43 +153,6 @@ TEST(DynamicsSeatLineLaw, AtTheExpectedLoadItGivesTheSecantsApproach) {
               g * 1e6, kc, law(w, g).stiffness, ratio);
 }
 
-// A 12B loop over two z = 12 wheels, 10 pitches apart, both with the line law, seat damping
-// `damping`, every wrapped roller pressed 0–3 µm into its seat.
-struct PressedLoop {
-  Model model;
-  State state;
-};
-PressedLoop pressed_loop(bool line, double damping) {
-  const int z = 12, m = 10;
-  PressedLoop l;
-  const auto n = static_cast<std::size_t>(z + 2 * m);
-  l.model = uniform_chain(n, true, kPitch * (1 - 1e-3), 0.0238, 5e7, 100.0, false);
-  l.model.sprockets = testing::equal_wheels({.teeth = z,
-                                             .span = m,
-                                             .omega = 13.0,
-                                             .inertia = 0.01,
-                                             .load = 10.0,
-                                             .contact_damping = damping});
-  if (line)
-    for (Sprocket& w : l.model.sprockets) use_line_law(w, kWidth);
-  const Sprocket& w0 = l.model.sprockets[0];
-  l.state = two_sprocket_loop(z, m, kPitch, w0.pitch_radius, 13.0);
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> depth(0.0, 3e-6);
-  const double clearance = w0.seat_radius - w0.roller_radius;
-  for (std::size_t i = 0; i < n; ++i) {
-    for (const Sprocket& w : l.model.sprockets) {
-      const double dx = l.state.x[i] - w.centre_x, dy = l.state.y[i] - w.centre_y;
-      const double r = std::hypot(dx, dy);
-      if (std::abs(r - w.pitch_radius) > 1e-9) continue;
-      const double in = clearance + depth(rng);
-      l.state.x[i] -= in * dx / r;
-      l.state.y[i] -= in * dy / r;
-    }
-  }
-  return l;
-}
-
 // (3) The Newton matrix with the line law against central differences of the step's residual,
 // every column, with the seats' damping; and it is the line law's matrix: the seat columns differ
 // from the linear law's (k_c = 2e8 N/m) at the same iterate.
@@ -197,7 +160,8 @@ TEST(DynamicsSeatLineLaw, NewtonMatrixMatchesTheResidualsDifferences) {
   const double h = 1e-4;
   std::vector<double> jac_linear;
   for (const bool line : {false, true}) {
-    PressedLoop l = pressed_loop(line, 800.0);
+    testing::Loop l =
+        testing::pressed_loop({.contact_damping = 800.0, .line_law = line, .load = 10.0});
     Integrator integ(l.model, {.step = h, .theta = 0.6});
     const std::size_t n = l.model.nodes(), size = integ.unknowns();
     std::vector<double> u(size);
