@@ -1207,6 +1207,14 @@ Setup parse(const analysis::Inputs& in) {
   std::string wheel = "iso606";
   bool line_law = false;                  // contact_law = "line"
   std::optional<bool> discrete_gradient;  // given, else the law's default
+  // a [dynamics] key that is true or false: its line kept, `out` set, or the value refused
+  auto read_flag = [&](const Entry& v, const std::string& key, auto& out) {
+    line[key] = v.line;
+    if (v.is_boolean)
+      out = v.text == "true";
+    else
+      issues.push_back({where(v), "'" + v.text + "'", "true or false"});
+  };
   for (const Entry& v : file.table) {
     if (v.path.rfind("dynamics.", 0) != 0) continue;  // the rest of a case file is not ours
     std::smatch m;
@@ -1323,11 +1331,7 @@ Setup parse(const analysis::Inputs& in) {
       continue;
     }
     if (key == "work_balance") {
-      line[key] = v.line;
-      if (v.is_boolean)
-        work_balance = v.text == "true";
-      else
-        issues.push_back({where(v), "'" + v.text + "'", "true or false"});
+      read_flag(v, key, work_balance);
       continue;
     }
     if (key == "slack_spans") {
@@ -1377,19 +1381,11 @@ Setup parse(const analysis::Inputs& in) {
       continue;
     }
     if (key == "discrete_gradient") {
-      line[key] = v.line;
-      if (v.is_boolean)
-        discrete_gradient = v.text == "true";
-      else
-        issues.push_back({where(v), "'" + v.text + "'", "true or false"});
+      read_flag(v, key, discrete_gradient);
       continue;
     }
     if (key == "positions") {
-      line[key] = v.line;
-      if (v.is_boolean)
-        positions = v.text == "true";
-      else
-        issues.push_back({where(v), "'" + v.text + "'", "true or false"});
+      read_flag(v, key, positions);
       continue;
     }
     if (key.rfind("guide", 0) == 0) {
