@@ -168,33 +168,55 @@ void apply_release(const Sprocket& w, double g, double dist, double rx, double r
 }  // namespace
 
 namespace {
-// The body's capture: a joint within the mouth and within kCaptureFrom c of its nearest vertex is
-// that pocket's; from kCaptureFrom c to kCaptureTo c the pocket's depth blends into the rim's;
-// beyond, the rim alone (docs/models/dynamics.md, "Pocket wheel: the body between the pockets":
-// twice the 4.9c of the deepest joint measured in a test's run, a slack span landing off its
-// vertex, and far below the 170–240c of the joints thrown back between the pockets).
-constexpr double kCaptureFrom = 10.0, kCaptureTo = 20.0;
+// The body's capture: a joint within the mouth and within `from` of its nearest vertex is that
+// pocket's; from `from` to `to` = 2 from the pocket's depth blends into the rim's; beyond, the rim
+// alone (docs/models/dynamics.md, "Pocket wheel: the body between the pockets": 10c, twice the
+// 4.9c of the deepest joint measured in a test's run, a slack span landing off its vertex, and far
+// below the 170–240c of the joints thrown back between the pockets). `to` is at most 0.45 of the
+// smallest vertex spacing s (the nearest vertex switches at s/2: the blend ends before it). Within
+// `band` = from of the mouth the blend is weighted radially too, so that the depth is the rim's
+// on the mouth and the energy 0 there, as beyond it.
+constexpr double kCaptureFrom = 10.0, kCaptureTo = 20.0, kSpacingShare = 0.45;
+struct Capture {
+  double from = 0.0, to = 0.0, band = 0.0;
+};
+Capture body_capture(const Sprocket& w) {
+  const double tau = 2.0 * std::numbers::pi / w.teeth;
+  const double spacing =
+      2.0 * w.pitch_radius * std::sin(0.5 * std::min(w.pocket_angle, tau - w.pocket_angle));
+  const double share = kSpacingShare * spacing;
+  const double from =
+      std::min(kCaptureFrom * w.pocket_clearance, share * (kCaptureFrom / kCaptureTo));
+  return {from, std::min(kCaptureTo * w.pocket_clearance, share), from};
+}
 
 bool in_body(const Sprocket& w, double dist) {
-  return w.pocket_body && dist > kCaptureFrom * w.pocket_clearance;
+  return w.pocket_body && dist > body_capture(w).from;
 }
 
 // The body between the pockets on a contact whose seat and n = e/|e| are set, the joint within
-// the mouth M = R + c/2 and more than 10c from its vertex: the seats' law on the depth
-// d = g + B (h − g), g = |e| − c the pocket's, h = M − ρ the rim's, B the C² step in |e| from 0 at
-// 10c to 1 at 20c. F = −f ∇d, ∇d = (1 − B) n − B r̂ + (h − g) B′ n, f = f_el(d) + c(d) ∇d·v_rel
+// the mouth M = R + c/2 and more than `from` from its vertex: the seats' law on the depth
+// d = h + W (g − h), g = |e| − c the pocket's, h = M − ρ the rim's, W = P Q the pocket's share,
+// P = 1 − B, B the C² step in |e| from 0 at `from` to 1 at `to`, Q the C² step in h from 0 on the
+// mouth to 1 at `band` within it (d = h on the mouth: the energy ends at 0 there).
+// F = −f ∇d, ∇d = −r̂ + W (n + r̂) + (g − h) ∇W, ∇W = Q P′ n − P Q′ r̂, f = f_el(d) + c(d) ∇d·v_rel
 // (never pulling); the torque f (r × ∇d) (the rim's part has no moment). The fields carry the
 // force's direction and size; stiffness, damping and curvature are 0 and the exact ∂F/∂q and
 // ∂F/∂v are dq_extra and dv_extra. surface = 3: no seat friction.
 void apply_body(const Sprocket& w, double dist, double rx, double ry, double vx, double vy,
                 double speed, SeatContact& c) {
+  const Capture cap = body_capture(w);
   const double cl = w.pocket_clearance, rho = std::hypot(rx, ry);
-  const double g = dist - cl, h = w.pitch_radius + 0.5 * cl - rho;
-  const Step b = smooth_step(dist, kCaptureFrom * cl, kCaptureTo * cl);
-  const double d = g + b.s * (h - g);
+  const double g = dist - cl, h = w.pitch_radius + 0.5 * cl - rho, dd = g - h;
+  const Step b = smooth_step(dist, cap.from, cap.to);
+  const Step q = smooth_step(h, 0.0, cap.band);
+  const double p = 1.0 - b.s, p1 = -b.ds, p2 = -b.dds;  // P and its derivatives in |e|
+  const double wt = p * q.s;
+  const double d = h + wt * dd;
   const double n[2] = {c.nx, c.ny}, u[2] = {rx / rho, ry / rho};
-  const double along = 1.0 - b.s + (h - g) * b.ds;
-  const double grad[2] = {along * n[0] - b.s * u[0], along * n[1] - b.s * u[1]};
+  const double wn = q.s * p1, wr = -p * q.ds;  // ∇W = wn n + wr r̂
+  const double grad[2] = {-u[0] + wt * (n[0] + u[0]) + dd * (wn * n[0] + wr * u[0]),
+                          -u[1] + wt * (n[1] + u[1]) + dd * (wn * n[1] + wr * u[1])};
   const double len = std::hypot(grad[0], grad[1]);
   if (!(d > 0.0) || !(len > 0.0)) {
     c = SeatContact{};
@@ -205,14 +227,19 @@ void apply_body(const Sprocket& w, double dist, double rx, double ry, double vx,
   // the law along m = ∇d/|∇d| with the velocities scaled by |∇d|: its rate is ∇d·v_rel = ḋ
   apply_seat_law(w, d, rx, ry, len * vx, len * vy, len * speed, c);
   const double f = c.force, kf = c.stiffness, cf = c.damping;
-  // the Hessian of d: ∇∇g = P_n/|e|, ∇∇h = −P_r/ρ, ∇∇B = B″ n nᵀ + B′ P_n/|e|
+  // the Hessian of d: ∇∇h = −P_r/ρ, ∇∇(g − h) = P_n/|e| + P_r/ρ, and
+  // ∇∇W = Q P″ n nᵀ + Q P′ P_n/|e| − P′ Q′ (n r̂ᵀ + r̂ nᵀ) + P Q″ r̂ r̂ᵀ − P Q′ P_r/ρ
   double hess[4];
   for (int i = 0; i < 2; ++i) {
     for (int j = 0; j < 2; ++j) {
       const double id = i == j ? 1.0 : 0.0;
       const double pn = (id - n[i] * n[j]) / dist, pr = (id - u[i] * u[j]) / rho;
-      hess[2 * i + j] = pn - b.ds * (n[j] * (u[i] + n[i]) + n[i] * (u[j] + n[j])) -
-                        b.s * (pr + pn) + (h - g) * (b.dds * n[i] * n[j] + b.ds * pn);
+      const double gw[2] = {wn * n[i] + wr * u[i], wn * n[j] + wr * u[j]};  // ∇W_i, ∇W_j
+      const double hw = q.s * p2 * n[i] * n[j] + q.s * p1 * pn -
+                        p1 * q.ds * (n[i] * u[j] + u[i] * n[j]) + p * q.dds * u[i] * u[j] -
+                        p * q.ds * pr;
+      hess[2 * i + j] =
+          -pr + wt * (pn + pr) + (n[i] + u[i]) * gw[1] + gw[0] * (n[j] + u[j]) + dd * hw;
     }
   }
   // ∂ḋ/∂q = ∇∇d v_rel + (∂v_rel/∂q)ᵀ ∇d, v_rel = v − ω ẑ × r, ∂v_rel/∂q = ω [[0, 1], [−1, 0]]
@@ -231,6 +258,12 @@ void apply_body(const Sprocket& w, double dist, double rx, double ry, double vx,
   c.depth = d;
   c.stiffness = c.damping = c.curvature = 0.0;
   c.surface = 3;
+}
+
+// The point of pocket vertex `angle` on the pitch circle.
+void vertex_point(const Sprocket& w, double angle, double& x, double& y) {
+  x = w.centre_x + w.pitch_radius * std::cos(angle);
+  y = w.centre_y + w.pitch_radius * std::sin(angle);
 }
 }  // namespace
 
@@ -251,8 +284,7 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
   const PocketVertex v = beyond ? PocketVertex{held, vertex_angle(w, held, angle)}
                                 : nearest_pocket(w, std::atan2(ry, rx), angle);
   c.seat = v.index;
-  c.seat_x = w.centre_x + w.pitch_radius * std::cos(v.angle);
-  c.seat_y = w.centre_y + w.pitch_radius * std::sin(v.angle);
+  vertex_point(w, v.angle, c.seat_x, c.seat_y);
   const double ex = x - c.seat_x, ey = y - c.seat_y;
   const double dist = std::sqrt(ex * ex + ey * ey);
   const double g = dist - w.pocket_clearance;
@@ -377,8 +409,8 @@ void update_held(const Model& model, State& s) {
         // within the mouth: held by the nearest pocket, unless the joint is on the body between
         // the pockets (not held: beyond the mouth it is free)
         const PocketVertex v = nearest_pocket(wheel, std::atan2(ry, rx), s.angle[w]);
-        const double vx = wheel.centre_x + wheel.pitch_radius * std::cos(v.angle);
-        const double vy = wheel.centre_y + wheel.pitch_radius * std::sin(v.angle);
+        double vx = 0.0, vy = 0.0;
+        vertex_point(wheel, v.angle, vx, vy);
         if (!in_body(wheel, std::hypot(s.x[i] - vx, s.y[i] - vy))) {
           s.held_wheel[i] = wi;
           s.held_pocket[i] = v.index;
@@ -408,6 +440,15 @@ void pocket_issues(std::vector<Issue>& out, const Sprocket& w, const std::string
       !(std::isfinite(r) && w.pocket_clearance <= 0.1 * r)) {
     out.push_back({f + "pocket_clearance", check::format_si(w.pocket_clearance, "m"),
                    "a length in (0, R/10] (R the pitch radius)"});
+  }
+  if (w.pocket_body && std::isfinite(r) && w.pocket_clearance > 0.0 && w.pocket_angle > 0.0 &&
+      w.pocket_angle < top && !(body_capture(w).from >= 2.0 * w.pocket_clearance)) {
+    // the body's capture (at most 0.45 s, s the smallest vertex spacing) no longer clears the
+    // pocket: its blend would start within 2c of the vertex
+    out.push_back({f + "pocket_clearance", check::format_si(w.pocket_clearance, "m"),
+                   "at most 0.1125 s with the body between the pockets (pocket_body; s the "
+                   "smallest vertex spacing 2 R sin(min(delta1, 2 pi/z - delta1)/2): the body "
+                   "takes over at min(10c, 0.225 s) from a vertex)"});
   }
   if (!std::isfinite(w.pocket_mouth) || !(w.pocket_mouth >= 0.0) ||
       !(w.pocket_mouth <= w.pocket_clearance)) {
