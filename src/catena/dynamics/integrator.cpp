@@ -1482,9 +1482,13 @@ StepReport Integrator::step(const Model& model, State& s) {
   // (½ Δm_L v² at a steady speed: the inelastic catch); one whose load shrinks hands the leaving
   // material ½ |Δm_L| |v₀|² (the discharge). What is left of the balance is the θ-method's own
   // (θ − ½)(m + m_L1) |v₁ − v₀|². Material arriving at w (Guide::load_speed) adds its reaction's
-  // work Δm_L w·Δx/h to the catch: the catch is then the loss −Δm_L ((½ − θ) |v₀|² + θ v₀·v₁ −
-  // w·Δx/h + ½ |w|²) (−½ Δm_L |v − w|² at a steady speed) plus the material's kinetic energy
-  // ½ Δm_L |w|² (load_arrival_work).
+  // work Δm_L w·Δx/h to the catch: the catch is −Δm_L ((½ − θ) |v₀|² + θ v₀·v₁ − w·Δx/h), of
+  // which the arriving material's kinetic energy is the input part (load_arrival_work, arrival()):
+  // ½ Δm_L |w|² on one loaded piece; where loaded pieces overlap, each growing piece's material its
+  // own, ½ Δm_L Σ⁺ Δm_g |u_g|² / Σ⁺ Δm_g (Σ⁺ over the growing pieces), which exceeds ½ Δm_L |w|²
+  // when their speeds differ (docs/models/dynamics.md, "A conveyed load: its inertia, loading and
+  // discharge"). The rest is the catch's loss: −½ Δm_L |v − w|² at a steady speed on one piece,
+  // less that excess where pieces overlap.
   if (any_load_inertia(model.guides)) {
     const std::span<LoadPiece> pieces =
         load_mix_ ? std::span<LoadPiece>(pieces_) : std::span<LoadPiece>();
