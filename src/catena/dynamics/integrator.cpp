@@ -913,34 +913,34 @@ Integrator::Arrival Integrator::arrival(const Model& model, std::size_t i, const
     for (std::size_t g = 0; g < ng; ++g)
       if (pieces_[g].active || mass0[g] != 0.0) ++touching;
     if (touching >= 2) {
+      // the growing pieces (Δm_g > 0), each with its increment and u_g
+      const auto each_growing = [&](auto&& f) {
+        for (std::size_t g = 0; g < ng; ++g) {
+          const LoadPiece& p = pieces_[g];
+          const double inc = p.mass - mass0[g];
+          if (inc > 0.0) f(p, inc, model.guides[g].load_speed);
+        }
+      };
       double grown = 0.0, px = 0.0, py = 0.0, kinetic = 0.0;
-      for (std::size_t g = 0; g < ng; ++g) {
-        const LoadPiece& p = pieces_[g];
-        const double inc = p.mass - mass0[g];
-        if (!(inc > 0.0)) continue;
-        const double u = model.guides[g].load_speed;
+      each_growing([&](const LoadPiece& p, double inc, double u) {
         grown += inc;
         px += inc * u * p.tx;
         py += inc * u * p.ty;
         kinetic += inc * u * u * (p.tx * p.tx + p.ty * p.ty);
-      }
+      });
       if (!(grown > 0.0) || (px == 0.0 && py == 0.0 && kinetic == 0.0)) return out;
       out.arrives = true;
       out.wx = px / grown;
       out.wy = py / grown;
       out.energy = 0.5 * kinetic / grown;
       out.f = dm / grown;
-      for (std::size_t g = 0; g < ng; ++g) {
-        const LoadPiece& p = pieces_[g];
-        const double inc = p.mass - mass0[g];
-        if (!(inc > 0.0)) continue;
-        const double u = model.guides[g].load_speed;
+      each_growing([&](const LoadPiece& p, double inc, double u) {
         const double rx = u * p.tx - out.wx, ry = u * p.ty - out.wy;
         out.g[0] += rx * p.dx + inc * u * p.dt[0];
         out.g[1] += rx * p.dy + inc * u * p.dt[1];
         out.g[2] += ry * p.dx + inc * u * p.dt[2];
         out.g[3] += ry * p.dy + inc * u * p.dt[3];
-      }
+      });
       return out;
     }
   }
