@@ -201,8 +201,9 @@ TEST(DynamicsHinge, DriveLosesTheClosedFormPowerInItsHinges) {
   // which the regularised law dissipates within its rate band (1.162 measured).
   EXPECT_GT(power, engaging);
   EXPECT_LT(power / expected, 1.25);
-  // The driver's torque rises by less than P/ω (0.893 measured): the hinges' friction damps the
-  // seat impacts and span vibration, so the contact and link dampers take less.
+  // The driver's torque rises by less than P/ω (0.845 measured; 0.893 when first measured, the
+  // change since not traced): the hinges' friction damps the seat impacts and span vibration, so
+  // the contact and link dampers take less.
   EXPECT_GT(torque_rise * 13.0 / expected, 0.8);
   EXPECT_LT(torque_rise * 13.0, power);
 }

@@ -551,10 +551,13 @@ struct State {
   /// arriving on the chain, minus the kinetic energy it gains on it. Arriving at rest it is ≤ 0
   /// (half the work the chain does to bring it to speed, lost in the inelastic catch); arriving
   /// at u (Guide::load_speed) it is that loss, −½ Δm_L |v − u|² at a steady speed, plus the
-  /// kinetic energy ½ Δm_L |u|² the material brings (load_arrival_work, part of this)
+  /// kinetic energy the material brings (load_arrival_work, part of this)
   double load_catch_work = 0.0;
-  /// [J] the arriving material's kinetic energy so far, Σ ½ Δm_L |u|² (≥ 0; Guide::load_speed):
-  /// the input part of load_catch_work (the catch's loss is load_catch_work − this)
+  /// [J] the arriving material's kinetic energy so far (≥ 0; Guide::load_speed): the input part
+  /// of load_catch_work (the catch's loss is load_catch_work − this). A step adds ½ Δm_L |u|² on
+  /// one loaded piece; where loaded pieces overlap at a node, each growing piece's material its
+  /// own, ½ Δm_L Σ⁺ Δm_g |u_g|² / Σ⁺ Δm_g (Σ⁺ over the pieces whose share grows; the overlap
+  /// rule of docs/models/dynamics.md, "A conveyed load: its inertia, loading and discharge")
   double load_arrival_work = 0.0;
   /// [J] the discharge so far (Guide::load_inertia): minus the kinetic energy the material
   /// leaving the chain carries away (≤ 0)

@@ -81,8 +81,11 @@ struct StepReport {
   /// [J] the loading's catch over the step (Guide::load_inertia; State::load_catch_work: ≤ 0 for
   /// material arriving at rest)
   double load_catch_work = 0.0;
-  /// [J] the arriving material's kinetic energy over the step, ½ Δm_L |u|² (Guide::load_speed;
-  /// State::load_arrival_work, part of load_catch_work)
+  /// [J] the arriving material's kinetic energy over the step (Guide::load_speed;
+  /// State::load_arrival_work, part of load_catch_work): ½ Δm_L |u|² on one loaded piece; where
+  /// loaded pieces overlap at the node, each growing piece's material its own,
+  /// ½ Δm_L Σ⁺ Δm_g |u_g|² / Σ⁺ Δm_g (Σ⁺ over the pieces whose share grows;
+  /// docs/models/dynamics.md, "A conveyed load: its inertia, loading and discharge")
   double load_arrival_work = 0.0;
   /// [J] the discharge over the step: minus the leaving material's kinetic energy (≤ 0)
   double load_discharge_work = 0.0;

@@ -913,34 +913,34 @@ Integrator::Arrival Integrator::arrival(const Model& model, std::size_t i, const
     for (std::size_t g = 0; g < ng; ++g)
       if (pieces_[g].active || mass0[g] != 0.0) ++touching;
     if (touching >= 2) {
+      // the growing pieces (Δm_g > 0), each with its increment and u_g
+      const auto each_growing = [&](auto&& f) {
+        for (std::size_t g = 0; g < ng; ++g) {
+          const LoadPiece& p = pieces_[g];
+          const double inc = p.mass - mass0[g];
+          if (inc > 0.0) f(p, inc, model.guides[g].load_speed);
+        }
+      };
       double grown = 0.0, px = 0.0, py = 0.0, kinetic = 0.0;
-      for (std::size_t g = 0; g < ng; ++g) {
-        const LoadPiece& p = pieces_[g];
-        const double inc = p.mass - mass0[g];
-        if (!(inc > 0.0)) continue;
-        const double u = model.guides[g].load_speed;
+      each_growing([&](const LoadPiece& p, double inc, double u) {
         grown += inc;
         px += inc * u * p.tx;
         py += inc * u * p.ty;
         kinetic += inc * u * u * (p.tx * p.tx + p.ty * p.ty);
-      }
+      });
       if (!(grown > 0.0) || (px == 0.0 && py == 0.0 && kinetic == 0.0)) return out;
       out.arrives = true;
       out.wx = px / grown;
       out.wy = py / grown;
       out.energy = 0.5 * kinetic / grown;
       out.f = dm / grown;
-      for (std::size_t g = 0; g < ng; ++g) {
-        const LoadPiece& p = pieces_[g];
-        const double inc = p.mass - mass0[g];
-        if (!(inc > 0.0)) continue;
-        const double u = model.guides[g].load_speed;
+      each_growing([&](const LoadPiece& p, double inc, double u) {
         const double rx = u * p.tx - out.wx, ry = u * p.ty - out.wy;
         out.g[0] += rx * p.dx + inc * u * p.dt[0];
         out.g[1] += rx * p.dy + inc * u * p.dt[1];
         out.g[2] += ry * p.dx + inc * u * p.dt[2];
         out.g[3] += ry * p.dy + inc * u * p.dt[3];
-      }
+      });
       return out;
     }
   }
@@ -1482,9 +1482,13 @@ StepReport Integrator::step(const Model& model, State& s) {
   // (½ Δm_L v² at a steady speed: the inelastic catch); one whose load shrinks hands the leaving
   // material ½ |Δm_L| |v₀|² (the discharge). What is left of the balance is the θ-method's own
   // (θ − ½)(m + m_L1) |v₁ − v₀|². Material arriving at w (Guide::load_speed) adds its reaction's
-  // work Δm_L w·Δx/h to the catch: the catch is then the loss −Δm_L ((½ − θ) |v₀|² + θ v₀·v₁ −
-  // w·Δx/h + ½ |w|²) (−½ Δm_L |v − w|² at a steady speed) plus the material's kinetic energy
-  // ½ Δm_L |w|² (load_arrival_work).
+  // work Δm_L w·Δx/h to the catch: the catch is −Δm_L ((½ − θ) |v₀|² + θ v₀·v₁ − w·Δx/h), of
+  // which the arriving material's kinetic energy is the input part (load_arrival_work, arrival()):
+  // ½ Δm_L |w|² on one loaded piece; where loaded pieces overlap, each growing piece's material its
+  // own, ½ Δm_L Σ⁺ Δm_g |u_g|² / Σ⁺ Δm_g (Σ⁺ over the growing pieces), which exceeds ½ Δm_L |w|²
+  // when their speeds differ (docs/models/dynamics.md, "A conveyed load: its inertia, loading and
+  // discharge"). The rest is the catch's loss: −½ Δm_L |v − w|² at a steady speed on one piece,
+  // less that excess where pieces overlap.
   if (any_load_inertia(model.guides)) {
     const std::span<LoadPiece> pieces =
         load_mix_ ? std::span<LoadPiece>(pieces_) : std::span<LoadPiece>();
