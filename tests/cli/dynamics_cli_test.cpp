@@ -579,6 +579,17 @@ TEST(DynamicsCli, LineContactLawRunsTheExampleDrive) {
   std::printf("line law: max penetration %.4g um (the secant's %.4g um), tension ratio %.5f\n",
               deepest * 1e6, deepest_secant * 1e6, tight_tension_ratio(j));
   EXPECT_LT(deepest, deepest_secant - 0.4e-6);
+  // the line law takes the seats' discrete gradient by default, and says so: the same run with
+  // discrete_gradient = false differs and echoes false
+  EXPECT_EQ(j["discrete_gradient"], true);
+  const CliRun r_off = run(
+      "dynamics " + write("line_nodg.toml", with_dynamics_key(line, "discrete_gradient = false")) +
+      " --format json");
+  ASSERT_EQ(r_off.status, 0) << r_off.err;
+  const auto off = nlohmann::json::parse(r_off.out);
+  EXPECT_EQ(off["discrete_gradient"], false);
+  EXPECT_NE(off["span"], j["span"]);
+  EXPECT_NE(off["summary"]["max_penetration"], j["summary"]["max_penetration"]);
 
   auto refused = [&](const std::string& name, const std::string& toml, const std::string& what) {
     const CliRun bad = run("dynamics " + write(name, toml));
@@ -644,6 +655,24 @@ TEST(DynamicsCli, DiscreteGradientKeyTakesTheSeatsForceOverTheStep) {
   EXPECT_FALSE(off.contains("discrete_gradient"));
   EXPECT_EQ(off["span"], plain["span"]);
   EXPECT_EQ(off["summary"]["max_penetration"], plain["summary"]["max_penetration"]);
+  // below θ = 0.6 the warning says what the discrete gradient changes; without it, as before
+  auto theta_warning = [](const nlohmann::json& j) {
+    for (const auto& d : j["diagnostics"])
+      if (d["code"] == "dynamics.theta_below_0_6") return d["message"].get<std::string>();
+    return std::string();
+  };
+  const std::string theta = "theta = 0.6 ";
+  ASSERT_NE(base.find(theta), std::string::npos);
+  std::string half = base;
+  half.replace(half.find(theta), theta.size(), "theta = 0.5 ");
+  const std::string half_on =
+      theta_warning(json_run("dg_half.toml", with_dynamics_key(half, "discrete_gradient = true")));
+  const std::string half_off = theta_warning(json_run("dg_half_off.toml", half));
+  EXPECT_NE(half_on.find("with discrete_gradient = true undamped drives"), std::string::npos)
+      << half_on;
+  EXPECT_EQ(half_off,
+            "theta = 0.5 < 0.6: drives with roller-seat contact diverged below 0.6 "
+            "(docs/models/dynamics.md)");
   const CliRun text = run(
       "dynamics " + write("dg_text.toml", with_dynamics_key(base, "discrete_gradient = \"yes\"")));
   EXPECT_EQ(text.status, 2);

@@ -3,7 +3,9 @@
 // (E(g₁) − E(g₀))/(g₁ − g₀) between the gaps in the θ point's seat at the step's ends. Its work on
 // roller and wheel over one step against the change of the contact's energy (the penalty's,
 // written out here), the Newton matrix against central differences of the step's residual, and a
-// roller-chain drive at θ = ½ whose work balance closes with it and not without it.
+// roller-chain drive at θ = ½ whose work balance closes with it and not without it; the force's
+// continuity where the contact switches, and the integrator's reach test for a roller entering
+// over a tooth's tip.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -70,17 +72,15 @@ double energy_at(const Sprocket& w, Point q, double angle) {
   return seat_contact(w, q.x, q.y, 0.0, 0.0, angle, 0.0).energy;
 }
 
-// One step's work on roller and wheel, the roller's force times x₁ − x₀ plus the torque times
-// ψ₁ − ψ₀, with the force over the step (the discrete gradient) or at the θ point (`gradient`
-// false); `surface` gets the θ point's. `direction_only` gets the work of the discrete gradient's
-// force without its correction along the step (SeatContact::skew): f_e along the θ point's n.
-double step_work(const Sprocket& w, Point p0, Point p1, double psi0, double psi1, bool gradient,
-                 int* surface = nullptr, double* direction_only = nullptr) {
+// The contact over the step p0 → p1 (wheel ψ₀ → ψ₁, h = 0.1 ms, θ = ½), over the step or at the θ
+// point (`gradient` false); the velocity (p1 − p0)/h times `speedup`.
+SeatContact step_contact(const Sprocket& w, Point p0, Point p1, double psi0, double psi1,
+                         bool gradient, double speedup = 1.0) {
   const double h = 1e-4, theta = 0.5;
   const SeatGeometry t = seat_geometry(w);
   const double qx = p0.x + theta * (p1.x - p0.x), qy = p0.y + theta * (p1.y - p0.y);
   const double psi = psi0 + theta * (psi1 - psi0), omega = (psi1 - psi0) / h;
-  const double vx = (p1.x - p0.x) / h, vy = (p1.y - p0.y) / h;
+  const double vx = speedup * (p1.x - p0.x) / h, vy = speedup * (p1.y - p0.y) / h;
   const double k = nearest_seat(qx, qy, psi, t.tau);
   const SeatStep step{.x0 = p0.x,
                       .y0 = p0.y,
@@ -93,8 +93,22 @@ double step_work(const Sprocket& w, Point p0, Point p1, double psi0, double psi1
                       .h = h,
                       .turn = psi1 - psi0,
                       .theta = theta};
-  const SeatContact c = seat_contact_at(w, t, qx, qy, vx, vy, omega, k, std::cos(psi + k * t.tau),
-                                        std::sin(psi + k * t.tau), gradient ? &step : nullptr);
+  return seat_contact_at(w, t, qx, qy, vx, vy, omega, k, std::cos(psi + k * t.tau),
+                         std::sin(psi + k * t.tau), gradient ? &step : nullptr);
+}
+
+// The force on the roller over the step: −f n − S Δ
+Point roller_force(const SeatContact& c) {
+  return {-c.force * c.nx - c.skew * c.skew_x, -c.force * c.ny - c.skew * c.skew_y};
+}
+
+// One step's work on roller and wheel, the roller's force times x₁ − x₀ plus the torque times
+// ψ₁ − ψ₀, with the force over the step (the discrete gradient) or at the θ point (`gradient`
+// false); `surface` gets the θ point's. `direction_only` gets the work of the discrete gradient's
+// force without its correction along the step (SeatContact::skew): f_e along the θ point's n.
+double step_work(const Sprocket& w, Point p0, Point p1, double psi0, double psi1, bool gradient,
+                 int* surface = nullptr, double* direction_only = nullptr) {
+  const SeatContact c = step_contact(w, p0, p1, psi0, psi1, gradient);
   if (surface != nullptr) *surface = c.surface;
   const double dx = p1.x - p0.x, dy = p1.y - p0.y, dpsi = psi1 - psi0;
   const double along = -c.force * (c.nx * dx + c.ny * dy);
@@ -181,6 +195,85 @@ TEST(DynamicsSeatDiscreteGradient, WorkOverAStepIsTheEnergysChange) {
   EXPECT_LT(arc_worst, 1e-9);
   EXPECT_LT(turn_worst, 1e-9);
   EXPECT_GT(arc_direction, 1e-5);  // what the correction puts back
+  // a step of 1e-15 … 1e-12 m on the seating arc (held wheel, the roller 2 µm in): the correction
+  // would be the gaps' rounding over |Δ|² (S = 1.9e14 N/m at 1e-15 m, 7e7 N/m at 1e-12 m); below
+  // |Δz| = 1e-9 R it is skipped, S = 0, and the work still closes within the positions' rounding
+  // times the force. Just above (2e-10 m, 1e-9 m) it is bounded by the arc's curvature: S ≤
+  // f_e κ = f_e/(ri − r).
+  const Point held = in_seat(iso, psi, 2e-6, 0.1);
+  double tiny_stiffness = 0.0;
+  for (const double d : {1e-15, 1e-13, 1e-12, 2e-10, 1e-9}) {
+    const Point moved{held.x + d, held.y + 0.3 * d};
+    const SeatContact c = step_contact(iso, held, moved, psi, psi, true);
+    ASSERT_TRUE(c.active);
+    const double arc_curvature = 1.0 / (iso.seat_radius - iso.roller_radius);
+    EXPECT_LE(std::abs(c.skew), c.force * arc_curvature) << "step " << d << " m";
+    if (d < 1e-9 * iso.pitch_radius) {  // nor its Newton block
+      EXPECT_EQ(c.skew, 0.0) << "step " << d << " m";
+      EXPECT_EQ(std::abs(c.skew_dx) + std::abs(c.skew_dy) + std::abs(c.skew_dpsi), 0.0);
+    }
+    tiny_stiffness = std::max(tiny_stiffness, std::abs(c.skew));
+    const double change = energy_at(iso, moved, psi) - energy_at(iso, held, psi);
+    const double work = step_work(iso, held, moved, psi, psi, true);
+    EXPECT_LE(std::abs(work + change), 1e-16 * kStiffness * 2e-6) << "step " << d << " m";
+  }
+  std::printf("seat discrete gradient: steps 1e-15 ... 1e-9 m on the arc: |S| at most %.3g N/m\n",
+              tiny_stiffness);
+}
+
+// The residual's continuity where the discrete gradient switches. (a) A z = 12 wheel's tip (a
+// convex surface), seats damped (800 N s/m): a roller moving 1 µm inwards across the mid-tooth
+// line, its end gap g₁ crossing 0 while the θ point, on the chord, is about 3 µm inside the tip
+// circle: the contact is active there (the damper acting alone, f_e = 0), so the force does not
+// jump from 0 to the damper's 8 N as g₁ crosses 0. (b) A roller leaving the seating arc fast
+// (3 → 0.5 µm, swinging 0.1 → 0.3 rad) with the damper pulling the total force to 0 at a speed
+// s*: the correction along the step S Δ (switched on f_e, not on the clamped total) stays, so
+// the roller's force is continuous across s*.
+TEST(DynamicsSeatDiscreteGradient, ForceIsContinuousWhereTheContactSwitches) {
+  Sprocket tip = iso606_sprocket(kPitch, kRoller, kWidth, 12, 0.0, 0.0, kStiffness, 800.0);
+  tip.discrete_gradient = true;
+  const double tau = 2.0 * kPi / 12.0, mid = -0.5 * tau, half = 0.012;
+  const double touch = tip.tip_radius + tip.roller_radius;
+  double force[2] = {0.0, 0.0};
+  for (int j = 0; j < 2; ++j) {
+    const double g1 = j == 0 ? -1e-10 : 1e-10, r1 = touch - g1, r0 = r1 + 1e-6;
+    const Point p0{r0 * std::cos(mid - half), r0 * std::sin(mid - half)};
+    const Point p1{r1 * std::cos(mid + half), r1 * std::sin(mid + half)};
+    const SeatContact theta_point = step_contact(tip, p0, p1, 0.0, 0.0, false);
+    ASSERT_EQ(theta_point.surface, 3) << "the tip";
+    ASSERT_GT(theta_point.penetration, 2e-6);
+    const SeatContact c = step_contact(tip, p0, p1, 0.0, 0.0, true);
+    EXPECT_TRUE(c.active) << "g1 = " << g1;
+    force[j] = c.force;
+  }
+  std::printf("seat discrete gradient: the tip's force at g1 = -/+ 1e-10 m: %.6g / %.6g N\n",
+              force[0], force[1]);
+  EXPECT_GT(force[0], 1.0);  // the damper's
+  EXPECT_NEAR(force[0], force[1], 1e-3);
+  // (b) the held ISO wheel, damped
+  Sprocket seat = wheel17(false);
+  seat.contact_damping = 800.0;
+  const double psi = 0.3;
+  const Point a0 = in_seat(seat, psi, 3e-6, 0.1), a1 = in_seat(seat, psi, 0.5e-6, 0.3);
+  const SeatContact still = step_contact(seat, a0, a1, psi, psi, true, 0.0);  // f = f_e
+  const SeatContact moving = step_contact(seat, a0, a1, psi, psi, true, 1.0);
+  ASSERT_GT(still.force, 0.0);
+  ASSERT_GT(moving.force, 0.0);
+  // the rate is linear in the speed: f = f_e + s (f₁ − f_e), 0 at s*
+  const double clamp_at = still.force / (still.force - moving.force);
+  ASSERT_GT(clamp_at, 1.0);
+  const SeatContact before = step_contact(seat, a0, a1, psi, psi, true, clamp_at * (1.0 - 1e-9));
+  const SeatContact after = step_contact(seat, a0, a1, psi, psi, true, clamp_at * (1.0 + 1e-9));
+  EXPECT_GT(before.force, 0.0);
+  EXPECT_EQ(after.force, 0.0);
+  const Point fb = roller_force(before), fa = roller_force(after);
+  const double correction = std::abs(before.skew) * std::hypot(before.skew_x, before.skew_y);
+  std::printf(
+      "seat discrete gradient: the damper clamps the force at %.4g times the step's speed; the "
+      "correction |S D| %.3g N across it, the force's jump %.3g N\n",
+      clamp_at, correction, std::hypot(fa.x - fb.x, fa.y - fb.y));
+  EXPECT_GT(correction, 0.1);
+  EXPECT_LT(std::hypot(fa.x - fb.x, fa.y - fb.y), 1e-6 * correction + 1e-6);
 }
 
 // (2) The Newton matrix with the discrete gradient against central differences of the step's
@@ -188,7 +281,9 @@ TEST(DynamicsSeatDiscreteGradient, WorkOverAStepIsTheEnergysChange) {
 // angle an unknown, the iterate jittered by ±1 µm so that rollers enter and leave their seats
 // over the step (g₀ and g₁ of opposite signs); then θ = ½ with seat friction μ = 0.2 (where the
 // friction's turning columns are exact, docs). It is the discrete gradient's matrix: different from
-// the θ point's at the same iterate.
+// the θ point's at the same iterate. The wheel angle's difference step is 1e-9 rad: the
+// differences' truncation there goes as its square (6.7e-4 of the column at 1e-7, 6.7e-6 at
+// 1e-8, measured; 3e-7 at 1e-9, where their rounding takes over).
 TEST(DynamicsSeatDiscreteGradient, NewtonMatrixMatchesTheResidualsDifferences) {
   const double h = 1e-4;
   struct Case {
@@ -218,7 +313,7 @@ TEST(DynamicsSeatDiscreteGradient, NewtonMatrixMatchesTheResidualsDifferences) {
       }
       const testing::ColumnsAgainstDifferences d = testing::expect_columns_match_differences(
           integ, l.model, l.state, u, jac, jac_theta,
-          [n](std::size_t c) { return c == 2 * n ? 1e-8 : 1e-10; }, 1e-5);
+          [n](std::size_t c) { return c == 2 * n ? 1e-9 : 1e-10; }, 1e-5);
       std::printf(
           "seat discrete gradient's Newton matrix (theta %.1f, mu %.1f): worst |J - FD| / column "
           "scale %.2e\n",
@@ -281,6 +376,61 @@ TEST(DynamicsSeatDiscreteGradient, DriveAtThetaHalfKeepsItsWorkBalance) {
   EXPECT_LT(kept.worst, 1e-6 * kept.kinetic0);
   // the θ point's force: diverges, or gains far more than the discrete gradient's error
   EXPECT_TRUE(theta.steps < 2000 || theta.worst > 100.0 * kept.worst);
+}
+
+// (4) The integrator's reach test with the discrete gradient: a roller entering over a tooth's
+// tip whose θ point is beyond the wheel's reach (tip + roller radius) while its iterate x₁ is
+// inside, in contact. Two linked rollers (the second a pitch above the first, clear) fall
+// radially onto the tip of a held z = 17 wheel, θ = ½, one step, undamped: its work is −ΔE, so
+// the energy (kinetic, link's, contact's) is kept while the roller ends in contact. (a) 1.5 µm
+// over a 0.1 ms step from 1 µm outside the reach: the θ point 0.25 µm beyond it, the node on the
+// wheel's candidate list; the node is tried because x₁ is within reach. (b) 15 mm over a 1 ms
+// step from 1.21 reach to 5 µm inside: the θ point beyond the list's 1.1 reach, off the list; every
+// node is tried because the step's travel is past the list's margin. Without either, the step
+// flies into the tooth and gains the contact's energy E(g₁).
+struct Entry {
+  double before = 0.0, after = 0.0, contact = 0.0;
+  bool converged = false;
+};
+Entry enter_over_the_tip(double start, double travel, double h) {
+  Sprocket w = iso606_sprocket(kPitch, kRoller, kWidth, 17, 0.0, 0.0, kStiffness, 0.0);
+  w.discrete_gradient = true;
+  w.driver = true;  // held: speed 0
+  w.speed = 0.0;
+  const double tau = 2.0 * kPi / w.teeth, top = 0.5 * kPi + 0.01;  // just off the tooth's centre
+  State s(2, 1);
+  s.angle = {0.5 * kPi - 0.5 * tau};  // a tooth's centre line at 90°
+  s.speed = {0.0};
+  const double ex = std::cos(top), ey = std::sin(top), v = travel / h;
+  s.x = {start * ex, start * ex};
+  s.y = {start * ey, start * ey + kPitch};
+  s.vx = {-v * ex, -v * ex};
+  s.vy = {-v * ey, -v * ey};
+  Model model = uniform_chain(2, false, kPitch, 0.0238, 5e7, 0.0, false);
+  model.sprockets = {w};
+  Entry out;
+  out.before = energy(model, s).total();
+  Integrator integ(model, {.step = h, .theta = 0.5});
+  out.converged = integ.step(model, s).converged;
+  out.after = energy(model, s).total();
+  out.contact = seat_contact(w, s.x[0], s.y[0], 0.0, 0.0, s.angle[0], 0.0).energy;
+  return out;
+}
+
+TEST(DynamicsSeatDiscreteGradient, RollerEnteringOverTheTipIsTriedByItsEnds) {
+  const double reach = contact_reach(wheel17(false));
+  const Entry near = enter_over_the_tip(reach + 1e-6, 1.5e-6, 1e-4);
+  const Entry far = enter_over_the_tip(1.21 * reach, 0.21 * reach + 5e-6, 1e-3);
+  std::printf(
+      "seat discrete gradient, entering over the tip: |dE| %.3g of the contact's energy %.3g J "
+      "(near), %.3g of %.3g J (far)\n",
+      std::abs(near.after - near.before) / near.contact, near.contact,
+      std::abs(far.after - far.before) / far.contact, far.contact);
+  for (const Entry& e : {near, far}) {
+    EXPECT_TRUE(e.converged);
+    EXPECT_GT(e.contact, 0.0);  // the roller ends in contact
+    EXPECT_LT(std::abs(e.after - e.before), 1e-6 * e.contact);
+  }
 }
 
 }  // namespace

@@ -2822,11 +2822,19 @@ Result run(const analysis::Inputs& in) {
                "(docs/models/dynamics.md, \"Hinges: sticking\"); a smaller step allows more",
            d.hinge_law.stick_stiffness, warn, "N m/rad"});
   }
+  // with the discrete gradient the undamped drive closes its work balance at θ = ½; the damped
+  // seats' Newton failures at θ = ½ remain (docs, "Sprockets: the discrete gradient")
   if (d.theta < 0.6)
     out.diagnostics.push_back(
         {Diagnostic::Severity::kWarning, "dynamics.theta_below_0_6",
          "theta = " + format_g(d.theta, 4) +
-             " < 0.6: drives with roller-seat contact diverged below 0.6 (docs/models/dynamics.md)",
+             (d.discrete_gradient
+                  ? " < 0.6: with discrete_gradient = true undamped drives with roller-seat "
+                    "contact keep their work balance down to 0.5, but with damped seats some "
+                    "stopped converging at 0.5 (docs/models/dynamics.md, \"Sprockets: the "
+                    "discrete gradient\")"
+                  : " < 0.6: drives with roller-seat contact diverged below 0.6 "
+                    "(docs/models/dynamics.md)"),
          d.theta, 0.6});
   return out;
 }
@@ -3022,7 +3030,8 @@ Record describe(const Result& r, const analysis::Inputs&) {
   // the seats' law only when not the linear one
   if (d.line_law) j["contact_law"] = "line";
   // the discrete gradient only when not the law's default
-  if (d.discrete_gradient != d.line_law) j["discrete_gradient"] = d.discrete_gradient;
+  // echoed whenever it is not the penalty's default or the line law runs (whose default is true)
+  if (d.discrete_gradient || d.line_law) j["discrete_gradient"] = d.discrete_gradient;
   // contact_stiffness omitted: the Hertz default used and its linearisation load
   if (d.hertz_stiffness) {
     j["contact_stiffness"] = d.contact_stiffness;

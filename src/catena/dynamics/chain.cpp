@@ -1336,7 +1336,9 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
       seat_gap(w, t, step->x0, step->y0, step->cx0, step->cy0, step->cs0, step->sn0);
   const SeatGap end =
       seat_gap(w, t, step->x1, step->y1, step->cx1, step->cy1, step->cs1, step->sn1);
-  if (!(std::max(start.g, end.g) > 0.0)) return c;
+  // active where either end or the θ point is in contact: on a convex surface (a tooth's tip) the
+  // θ point can be inside with both ends clear; then f_e = 0 and the damper acts alone
+  if (!(std::max({start.g, end.g, g}) > 0.0)) return c;
   const DiscreteGradient dgr =
       discrete_gradient([&](double gap) { return seat_elastic(w, gap); }, start.g, end.g);
   // the damper at the θ point (ġ relative to the wheel), ramped in over ε by the θ point's gap,
@@ -1372,7 +1374,13 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
   const double arm = c.nx * px + c.ny * py;
   const double lin = c.nx * dx + c.ny * dy - arm * dpsi;
   const double den = dx * dx + dy * dy + r2 * dpsi * dpsi;
-  if (c.force > 0.0 && den > 0.0) {
+  // Switched on f_e (not on the clamped total force, which the damper can pull to 0 while f_e > 0:
+  // the residual would jump there). Skipped for a step |Δz| < 1e-9 R: Δg − lin is then the gaps'
+  // rounding (~1e-17 m at R ≈ 5 cm; the curvature's share κ|Δz|²/2 ≤ 2e-17 m on the seating arc
+  // of ri − r ≈ 60 µm), S = f_e cc grows as 1/den from it (1.9e14 N/m at |Δz| = 1e-15 m) and the
+  // work it would restore, f_e (Δg − lin), is the rounding's.
+  const double den_floor = 1e-18 * r2;
+  if (elastic > 0.0 && den > den_floor) {
     const double cc = (end.g - start.g - lin) / den;
     c.skew = elastic * cc;
     c.skew_x = dx;
