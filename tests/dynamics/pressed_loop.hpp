@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <random>
+#include <vector>
 
 #include "catena/dynamics/integrator.hpp"
 #include "two_wheel_loops.hpp"
@@ -59,6 +60,22 @@ inline Loop pressed_loop(const PressedLoop& d) {
     }
   }
   return l;
+}
+
+// The Newton tests' iterate on a pressed loop: every node one explicit step on, x + h v, jittered
+// by ±1 µm (seed 3: the same draws whatever the laws) so that rollers enter and leave their seats
+// over the step, and the driven wheel's angle ψ + h ω + `turn` last (`size` = 2 n + 1 unknowns).
+inline std::vector<double> pressed_iterate(const Loop& l, std::size_t size, double h, double turn) {
+  const std::size_t n = l.model.nodes();
+  std::vector<double> u(size);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> jitter(-1e-6, 1e-6);
+  for (std::size_t i = 0; i < n; ++i) {
+    u[2 * i] = l.state.x[i] + h * l.state.vx[i] + jitter(rng);
+    u[2 * i + 1] = l.state.y[i] + h * l.state.vy[i] + jitter(rng);
+  }
+  u[2 * n] = l.state.angle[1] + h * l.state.speed[1] + turn;
+  return u;
 }
 
 }  // namespace catena::dynamics::testing

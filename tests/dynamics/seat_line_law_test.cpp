@@ -164,14 +164,7 @@ TEST(DynamicsSeatLineLaw, NewtonMatrixMatchesTheResidualsDifferences) {
         testing::pressed_loop({.contact_damping = 800.0, .line_law = line, .load = 10.0});
     Integrator integ(l.model, {.step = h, .theta = 0.6});
     const std::size_t n = l.model.nodes(), size = integ.unknowns();
-    std::vector<double> u(size);
-    std::mt19937 rng(3);
-    std::uniform_real_distribution<double> jitter(-1e-6, 1e-6);
-    for (std::size_t i = 0; i < n; ++i) {
-      u[2 * i] = l.state.x[i] + h * l.state.vx[i] + jitter(rng);
-      u[2 * i + 1] = l.state.y[i] + h * l.state.vy[i] + jitter(rng);
-    }
-    u[2 * n] = l.state.angle[1] + h * l.state.speed[1];
+    const std::vector<double> u = testing::pressed_iterate(l, size, h, 0.0);
     std::vector<double> r0, jac;
     integ.newton_system(l.model, l.state, u, r0, &jac);
     if (!line) {
