@@ -221,7 +221,7 @@ TEST(DynamicsHinge, DriveLosesTheClosedFormPowerInItsHinges) {
       "(%.3f)\n",
       slow, slow / expected, wide_power, wide_expected, wide_power / wide_expected);
   // The entering and leaving hinges against the closed form: 0.999 measured on the old seat form,
-  // a cancellation: 21 % more articulation than 2π/z a point (0.165 of the closed form 1–1.5
+  // a cancellation: 21 % more articulation than 2π/z a point (0.163 of the closed form 1–1.5
   // pitches into the span) against the lower pin load and the rate band (the factors:
   // ToothTipDriveArticulatesAsTheClosedFormUnderALowerPinLoad). Kept as a regression check of
   // the old form.
@@ -323,14 +323,15 @@ double torque_rise_ratio(const HingeDriveRun& with, const HingeDriveRun& without
 // The default seat form (ISO tooth tip and arc flanks): the engaging hinges give 0.820 of the
 // closed form, and the factors say why: 0.820 = 1.023 x 0.893 x 0.897. The articulation is the
 // closed form's (13.3 rad/s a point against ω = 13; the zone takes all of it: 1.5 to 3 pitches
-// change the total by 1 %), but the arc flank carries the roller while its hinge turns, so the
-// link on the wheel's side is already partly unloaded by the seat and the pin load (the mean of
-// the two links' tensions) is 0.893 of the span's; and the rate band takes 10 % of Coulomb's
-// torque (a 2 rad/s band gives 0.875 in all, 1 rad/s 0.886). On the old straight-flank form the
-// 0.999 above is a cancellation: 1.212 x 0.926 x 0.891 — its hinges turn 21 % more than 2π/z at a
-// point (16.1 rad/s: a second articulation 1–1.5 pitches into the span, which the 1.5-pitch zone
-// happened to include). The closed form assumes L = B = 1 and neither is this model's (L < 1 is
-// the seat's share of the load, B < 1 the regularisation), so the total is pinned; K is tested.
+// change the total by 0.008, 1 to 3 by 0.013), but the arc flank carries the roller while its hinge
+// turns, so the link on the wheel's side is already partly unloaded by the seat and the pin load
+// (the mean of the two links' tensions) is 0.893 of the span's; and the rate band takes 10 % of
+// Coulomb's torque (a 2 rad/s band gives 0.875 in all, 1 rad/s 0.886). On the old straight-flank
+// form the 0.999 above is a cancellation: 1.212 x 0.926 x 0.891 — its hinges turn 21 % more than
+// 2π/z at a point (16.1 rad/s: a second articulation 1–1.5 pitches into the span, which
+// the 1.5-pitch zone happened to include). The closed form assumes L = B = 1 and neither is this
+// model's (L < 1 is the seat's share of the load, B < 1 the regularisation), so the total is
+// pinned; K is tested.
 TEST(DynamicsHinge, ToothTipDriveArticulatesAsTheClosedFormUnderALowerPinLoad) {
   constexpr double arm = 0.1 * 0.00572 / 2;
   constexpr double duration = 0.5, step = 1e-4, period = 2 * kPi / (12 * 13.0);
