@@ -72,15 +72,15 @@ double energy_at(const Sprocket& w, Point q, double angle) {
   return seat_contact(w, q.x, q.y, 0.0, 0.0, angle, 0.0).energy;
 }
 
-// The contact over the step p0 → p1 (wheel ψ₀ → ψ₁, h = 0.1 ms, θ = ½), over the step or at the θ
-// point (`gradient` false); the velocity (p1 − p0)/h times `speedup`.
+// The contact over the step p0 → p1 (wheel ψ₀ → ψ₁, θ = ½) of h [s] (0.1 ms unless given), over
+// the step or at the θ point (`gradient` false); the velocity (p1 − p0)/h.
 SeatContact step_contact(const Sprocket& w, Point p0, Point p1, double psi0, double psi1,
-                         bool gradient, double speedup = 1.0) {
-  const double h = 1e-4, theta = 0.5;
+                         bool gradient, double h = 1e-4) {
+  const double theta = 0.5;
   const SeatGeometry t = seat_geometry(w);
   const double qx = p0.x + theta * (p1.x - p0.x), qy = p0.y + theta * (p1.y - p0.y);
   const double psi = psi0 + theta * (psi1 - psi0), omega = (psi1 - psi0) / h;
-  const double vx = speedup * (p1.x - p0.x) / h, vy = speedup * (p1.y - p0.y) / h;
+  const double vx = (p1.x - p0.x) / h, vy = (p1.y - p0.y) / h;
   const double k = nearest_seat(qx, qy, psi, t.tau);
   const SeatStep step{.x0 = p0.x,
                       .y0 = p0.y,
@@ -224,11 +224,11 @@ TEST(DynamicsSeatDiscreteGradient, WorkOverAStepIsTheEnergysChange) {
 // The residual's continuity where the discrete gradient switches. (a) A z = 12 wheel's tip (a
 // convex surface), seats damped (800 N s/m): a roller moving 1 µm inwards across the mid-tooth
 // line, its end gap g₁ crossing 0 while the θ point, on the chord, is about 3 µm inside the tip
-// circle: the contact is active there (the damper acting alone, f_e = 0), so the force does not
-// jump from 0 to the damper's 8 N as g₁ crosses 0. (b) A roller leaving the seating arc fast
-// (3 → 0.5 µm, swinging 0.1 → 0.3 rad) with the damper pulling the total force to 0 at a speed
-// s*: the correction along the step S Δ (switched on f_e, not on the clamped total) stays, so
-// the roller's force is continuous across s*.
+// circle: with both ends clear there is no force (the elastic part and the damper are both taken
+// over the step), and just past g₁ = 0 hardly any, so the force does not jump as g₁ crosses 0.
+// (b) A roller leaving the seating arc (3 → 0.5 µm, swinging 0.1 → 0.3 rad) with the damper
+// pulling the total force to 0 at a step h* short enough: the correction along the step S Δ
+// (S = f cc, f the clamped total) goes to 0 with it, so the roller's force is continuous across h*.
 TEST(DynamicsSeatDiscreteGradient, ForceIsContinuousWhereTheContactSwitches) {
   Sprocket tip = iso606_sprocket(kPitch, kRoller, kWidth, 12, 0.0, 0.0, kStiffness, 800.0);
   tip.discrete_gradient = true;
@@ -243,37 +243,105 @@ TEST(DynamicsSeatDiscreteGradient, ForceIsContinuousWhereTheContactSwitches) {
     ASSERT_EQ(theta_point.surface, 3) << "the tip";
     ASSERT_GT(theta_point.penetration, 2e-6);
     const SeatContact c = step_contact(tip, p0, p1, 0.0, 0.0, true);
-    EXPECT_TRUE(c.active) << "g1 = " << g1;
     force[j] = c.force;
   }
   std::printf("seat discrete gradient: the tip's force at g1 = -/+ 1e-10 m: %.6g / %.6g N\n",
               force[0], force[1]);
-  EXPECT_GT(force[0], 1.0);  // the damper's
-  EXPECT_NEAR(force[0], force[1], 1e-3);
+  EXPECT_EQ(force[0], 0.0);  // both ends clear
+  EXPECT_LT(force[1], 1e-3);
   // (b) the held ISO wheel, damped
   Sprocket seat = wheel17(false);
   seat.contact_damping = 800.0;
   const double psi = 0.3;
   const Point a0 = in_seat(seat, psi, 3e-6, 0.1), a1 = in_seat(seat, psi, 0.5e-6, 0.3);
-  const SeatContact still = step_contact(seat, a0, a1, psi, psi, true, 0.0);  // f = f_e
-  const SeatContact moving = step_contact(seat, a0, a1, psi, psi, true, 1.0);
-  ASSERT_GT(still.force, 0.0);
-  ASSERT_GT(moving.force, 0.0);
-  // the rate is linear in the speed: f = f_e + s (f₁ − f_e), 0 at s*
-  const double clamp_at = still.force / (still.force - moving.force);
-  ASSERT_GT(clamp_at, 1.0);
-  const SeatContact before = step_contact(seat, a0, a1, psi, psi, true, clamp_at * (1.0 - 1e-9));
-  const SeatContact after = step_contact(seat, a0, a1, psi, psi, true, clamp_at * (1.0 + 1e-9));
+  // f = f_e + D/h (D = C(g₁) − C(g₀) < 0, leaving): f_e and D from two steps, 0 at h* = −D/f_e
+  const double h1 = 1e-4, h2 = 2e-4;
+  const SeatContact c1 = step_contact(seat, a0, a1, psi, psi, true, h1);
+  const SeatContact c2 = step_contact(seat, a0, a1, psi, psi, true, h2);
+  ASSERT_GT(c1.force, 0.0);
+  const double d = (c1.force - c2.force) / (1.0 / h1 - 1.0 / h2), fe = c1.force - d / h1;
+  ASSERT_LT(d, 0.0);
+  const double clamp_at = -d / fe;
+  ASSERT_LT(clamp_at, h1);
+  const SeatContact before = step_contact(seat, a0, a1, psi, psi, true, clamp_at * (1.0 + 1e-9));
+  const SeatContact after = step_contact(seat, a0, a1, psi, psi, true, clamp_at * (1.0 - 1e-9));
   EXPECT_GT(before.force, 0.0);
   EXPECT_EQ(after.force, 0.0);
   const Point fb = roller_force(before), fa = roller_force(after);
-  const double correction = std::abs(before.skew) * std::hypot(before.skew_x, before.skew_y);
+  const double correction = std::abs(c1.skew) * std::hypot(c1.skew_x, c1.skew_y);
   std::printf(
-      "seat discrete gradient: the damper clamps the force at %.4g times the step's speed; the "
-      "correction |S D| %.3g N across it, the force's jump %.3g N\n",
+      "seat discrete gradient: the damper clamps the force at a step of %.4g s; the correction "
+      "|S D| %.3g N at 0.1 ms, the force's jump %.3g N across the clamp\n",
       clamp_at, correction, std::hypot(fa.x - fb.x, fa.y - fb.y));
   EXPECT_GT(correction, 0.1);
   EXPECT_LT(std::hypot(fa.x - fb.x, fa.y - fb.y), 1e-6 * correction + 1e-6);
+}
+
+// (1b) The damper over the step: f_d = (C(g₁) − C(g₀))/h with C(g) = ∫₀^g c(s) ds, c(s) = c_c
+// min(1, s/ε), written out here. Over one step the contact's work on roller and wheel is
+// −ΔE − (C(g₁) − C(g₀)) Δg/h (the damper's −c̄ Δg²/h ≤ 0), and the reported damper's work
+// h·damping_power is that share, ≤ 0: on the held straight flank entering from 2 µm out, pressing
+// within the ramp and past it, lifting and leaving; on the seating arc swinging, and on a wheel
+// turning 3e-3 rad over the step (the correction along the step carries the damper's share too).
+// The θ point's damper c(g_θ) ġ_θ differs within the ramp and its work misses Δg on a curved path.
+double damper_potential(double g, double c) {
+  if (!(g > 0.0)) return 0.0;
+  return g < kSmoothing ? 0.5 * c * g * g / kSmoothing : c * (g - 0.5 * kSmoothing);
+}
+
+TEST(DynamicsSeatDiscreteGradient, DamperWorkOverAStepIsNeverPositive) {
+  const double c = 800.0, h = 1e-4, psi = 0.3, turn = 30.0 * 1e-4;
+  Sprocket flat = wheel17(true), iso = wheel17(false);
+  flat.contact_damping = iso.contact_damping = c;
+  struct Case {
+    const Sprocket* w;
+    Point p0, p1;
+    double psi1, g0, g1;
+  };
+  std::vector<Case> cases;
+  for (const auto& [g0, g1] : {std::pair{-2e-6, 3e-6},
+                               {0.2e-6, 0.8e-6},
+                               {0.3e-6, 2.5e-6},
+                               {1e-6, 4e-6},
+                               {5e-6, 0.5e-6},
+                               {2e-6, -1e-6},
+                               {0.9e-6, -3e-6}}) {
+    cases.push_back({&flat, in_seat(flat, psi, g0, 0.0, 0.8e-3),
+                     in_seat(flat, psi, g1, 0.0, 0.9e-3), psi, g0, g1});
+  }
+  cases.push_back(
+      {&iso, in_seat(iso, psi, 0.4e-6, 0.1), in_seat(iso, psi, 4e-6, 0.12), psi, 0.4e-6, 4e-6});
+  cases.push_back({&iso, in_seat(iso, psi, 3e-6, 0.1), in_seat(iso, psi + turn, 0.5e-6, 0.3),
+                   psi + turn, 3e-6, 0.5e-6});
+  cases.push_back({&iso, in_seat(iso, psi, -2e-6, -0.5), in_seat(iso, psi + turn, 0.7e-6, 0.4),
+                   psi + turn, -2e-6, 0.7e-6});
+  double worst = 0.0, worst_damper = 0.0;
+  for (const Case& k : cases) {
+    const Sprocket& w = *k.w;
+    const SeatContact sc = step_contact(w, k.p0, k.p1, psi, k.psi1, true, h);
+    ASSERT_TRUE(sc.active);
+    const double dx = k.p1.x - k.p0.x, dy = k.p1.y - k.p0.y, dpsi = k.psi1 - psi;
+    const double work = -sc.force * (sc.nx * dx + sc.ny * dy) -
+                        sc.skew * (sc.skew_x * dx + sc.skew_y * dy) + sc.torque * dpsi;
+    const double change = energy_at(w, k.p1, k.psi1) - energy_at(w, k.p0, psi);
+    const double dg = k.g1 - k.g0;
+    const double damper = (damper_potential(k.g1, c) - damper_potential(k.g0, c)) / h;
+    const double fe = (penalty_energy(k.g1) - penalty_energy(k.g0)) / dg;
+    ASSERT_GT(fe + damper, 0.0) << k.g0 << " -> " << k.g1 << ": not clamped";
+    const double dissipated = -damper * dg;  // the damper's work, −c̄ Δg²/h
+    EXPECT_LE(dissipated, 0.0);
+    const double err = std::abs(work - (-change + dissipated));
+    const double scale = std::abs(change) + std::abs(dissipated);
+    EXPECT_LE(err, 1e-8 * scale) << k.g0 << " -> " << k.g1 << ": work " << work << ", -dE "
+                                 << -change << ", damper " << dissipated;
+    EXPECT_NEAR(h * sc.damping_power, dissipated, 1e-8 * scale) << k.g0 << " -> " << k.g1;
+    worst = std::max(worst, err / scale);
+    worst_damper = std::max(worst_damper, std::abs(h * sc.damping_power - dissipated) / scale);
+  }
+  std::printf(
+      "seat discrete gradient, damped (800 N s/m): |work - (-dE + damper's)| worst %.2e of the "
+      "step's |dE| + |damper's|; the reported damper's work %.2e\n",
+      worst, worst_damper);
 }
 
 // (2) The Newton matrix with the discrete gradient against central differences of the step's
@@ -326,14 +394,19 @@ TEST(DynamicsSeatDiscreteGradient, NewtonMatrixMatchesTheResidualsDifferences) {
 // force the contacts gain energy until the run diverges.
 struct DriveRun {
   double kinetic0 = 0.0, worst = 0.0, end = 0.0;
-  int steps = 0;  // completed
+  double damper = 0.0;  // [J] the seats' dampers' work
+  int steps = 0;        // completed
 };
-DriveRun drive_run(bool gradient) {
+DriveRun drive_run(bool gradient, double damping = 0.0, int steps = 2000) {
   const int z = 12, m = 10;
   const auto n = static_cast<std::size_t>(z + 2 * m);
   Model model = uniform_chain(n, true, kPitch * (1 - 1e-3), 0.0238, 5e7, 0.0, false);
-  model.sprockets = testing::equal_wheels(
-      {.teeth = z, .span = m, .omega = 13.0, .inertia = 0.01, .load = 5.0, .contact_damping = 0.0});
+  model.sprockets = testing::equal_wheels({.teeth = z,
+                                           .span = m,
+                                           .omega = 13.0,
+                                           .inertia = 0.01,
+                                           .load = 5.0,
+                                           .contact_damping = damping});
   for (Sprocket& w : model.sprockets) w.discrete_gradient = gradient;
   State s = two_sprocket_loop(z, m, kPitch, model.sprockets[0].pitch_radius, 13.0);
   const double h = 1e-4;
@@ -342,17 +415,19 @@ DriveRun drive_run(bool gradient) {
   const Energy e0 = energy(model, s);
   out.kinetic0 = e0.kinetic;
   double work = 0.0;
-  for (int k = 0; k < 2000; ++k) {
+  for (int k = 0; k < steps; ++k) {
     const double a0 = s.angle[0], b0 = s.angle[1];
     const StepReport rep = integ.step(model, s);
     if (!rep.converged) break;
     work += -integ.applied_torque()[0] * (s.angle[0] - a0) -
             model.sprockets[1].load_torque * (s.angle[1] - b0);
-    const double balance = energy(model, s).total() - e0.total() - work;
+    // the seats' dampers' work (0 undamped)
+    const double balance = energy(model, s).total() - e0.total() - work - s.contact_damping_work;
     if (!std::isfinite(balance)) break;
     out.worst = std::max(out.worst, std::abs(balance));
     out.end = balance;
     out.steps = k + 1;
+    out.damper = s.contact_damping_work;
   }
   return out;
 }
@@ -369,6 +444,22 @@ TEST(DynamicsSeatDiscreteGradient, DriveAtThetaHalfKeepsItsWorkBalance) {
   EXPECT_LT(kept.worst, 1e-6 * kept.kinetic0);
   // the θ point's force: diverges, or gains far more than the discrete gradient's error
   EXPECT_TRUE(theta.steps < 2000 || theta.worst > 100.0 * kept.worst);
+}
+
+// (3b) The same drive with the seats damped as the example's (800 N·s/m), θ = ½, over 0.1 s: with
+// the damper over the step (f_d = (C(g₁) − C(g₀))/h, ∂f_d/∂g₁ ≥ 0) every step converges and the
+// work balance, with the dampers' work (≤ 0), closes. With the θ point's c(g_θ) ġ_θ the residual's
+// slope along n turned negative within the ramp (hθ c_c |ġ|/ε past m/(hθ) + c_c + h ∂f_e/∂g₁ for
+// rollers rattling across their seats at θ = ½) and Newton stalled within a few steps (docs).
+TEST(DynamicsSeatDiscreteGradient, DampedDriveAtThetaHalfConvergesAndKeepsItsWorkBalance) {
+  const DriveRun damped = drive_run(true, 800.0, 1000);
+  std::printf(
+      "damped drive (800 N s/m) at theta = 1/2 over 0.1 s: %d steps, work balance worst %.2e of "
+      "the kinetic %.4g J (end %.3g J), the seats' dampers' work %.4g J\n",
+      damped.steps, damped.worst / damped.kinetic0, damped.kinetic0, damped.end, damped.damper);
+  EXPECT_EQ(damped.steps, 1000);
+  EXPECT_LT(damped.damper, 0.0);
+  EXPECT_LT(damped.worst, 1e-6 * damped.kinetic0);
 }
 
 // (4) The integrator's reach test with the discrete gradient: a roller entering over a tooth's

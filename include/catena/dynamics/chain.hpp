@@ -700,10 +700,10 @@ struct SeatContact {
   double step_nx = 0.0, step_ny = 0.0;
   double step_turn = 0.0;
   /// The discrete gradient's correction along the step (zero elsewhere; docs "Sprockets: the
-  /// discrete gradient"): the elastic force's part −S Δ on the roller, Δ = (skew_x, skew_y) [m]
+  /// discrete gradient"): the normal force's part −S Δ on the roller, Δ = (skew_x, skew_y) [m]
   /// its displacement over the step relative to the wheel's centre, and −S R² Δψ in `torque`, so
-  /// that the work over the step is −ΔE of the contact on any surface and a turning wheel. S [N/m]
-  /// and its derivatives ∂S/∂x₁ = (skew_dx, skew_dy) [N/m²], ∂S/∂ψ₁ = skew_dpsi [N/m].
+  /// that the work over the step is −f Δg (−ΔE, the damper's) on any surface and a turning wheel.
+  /// S [N/m], its derivatives ∂S/∂x₁ = (skew_dx, skew_dy) [N/m²], ∂S/∂ψ₁ = skew_dpsi [N/m].
   double skew = 0.0;
   double skew_x = 0.0, skew_y = 0.0;
   double skew_dx = 0.0, skew_dy = 0.0, skew_dpsi = 0.0;
@@ -749,14 +749,14 @@ struct SeatStep {
 /// the θ point's force above, bit for bit). With it the elastic part is the discrete gradient
 /// (E(g₁) − E(g₀))/(g₁ − g₀) of the law's energy between the gaps g₀ at (x₀, ψ₀) and g₁ at
 /// (x₁, ψ₁), both in seat k by the same surfaces (arc, flank, corner, tip), E = 0 for g ≤ 0,
-/// E'((g₀ + g₁)/2) where |g₁ − g₀| is below 1e-6 of the larger gap; the direction n, the damper
-/// (ramped by the θ point's gap, none where that is ≤ 0) and the torque's arm stay at the θ
-/// point; the work's miss on a curved surface or a turning wheel, ΔE − (the θ point's linear
-/// change), is put back along the step (Gonzalez's discrete gradient: the force −f_e ∇̄g with
+/// E'((g₀ + g₁)/2) where |g₁ − g₀| is below 1e-6 of the larger gap; the damper (C(g₁) − C(g₀))/h
+/// over the step too, C(g) = ∫₀^g c_c min(1, s/ε) ds; the direction n and the torque's arm stay
+/// at the θ point; the work's miss on a curved surface or a turning wheel, f (Δg − the θ point's
+/// linear change), is put back along the step (Gonzalez's discrete gradient: the force −f ∇̄g with
 /// ∇̄g = ∇g_θ + (Δg − ∇g_θ·Δz) Δz/|Δz|², z = (x − c, R ψ); the skew fields). Active while the
-/// larger of g₀ and g₁ is positive (`penetration` and `depth` are then
-/// the θ point's gap, ≤ 0 possibly); `stiffness` is the θ point's ∂f/∂g (the damper's ramp
-/// only), gap_slope and the step_ fields carry ∂f/∂x₁ and ∂f/∂ψ₁, and friction_dv holds
+/// largest of g₀, g₁ and g_θ is positive (`penetration` and `depth` are then
+/// the θ point's gap, ≤ 0 possibly); `stiffness` and `damping` are 0 (nothing at the θ point):
+/// gap_slope (∂f/∂g₁) and the step_ fields carry ∂f/∂x₁ and ∂f/∂ψ₁, and friction_dv holds
 /// −h (∂f/∂g₁) n n₁ᵀ so that seat_friction's derivatives see the force's dependence on x₁.
 SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
                             double vy, double speed, double k, double cs, double sn,

@@ -2822,17 +2822,17 @@ Result run(const analysis::Inputs& in) {
                "(docs/models/dynamics.md, \"Hinges: sticking\"); a smaller step allows more",
            d.hinge_law.stick_stiffness, warn, "N m/rad"});
   }
-  // with the discrete gradient the undamped drive closes its work balance at θ = ½; the damped
-  // seats' Newton failures at θ = ½ remain (docs, "Sprockets: the discrete gradient")
+  // with the discrete gradient (the seats' elastic force and damper over the step) drives close
+  // their work balance at θ = ½, damped or not (docs, "Sprockets: the discrete gradient")
   if (d.theta < 0.6)
     out.diagnostics.push_back(
         {Diagnostic::Severity::kWarning, "dynamics.theta_below_0_6",
          "theta = " + format_g(d.theta, 4) +
              (d.discrete_gradient
-                  ? " < 0.6: with discrete_gradient = true undamped drives with roller-seat "
-                    "contact keep their work balance down to 0.5, but with damped seats some "
-                    "stopped converging at 0.5 (docs/models/dynamics.md, \"Sprockets: the "
-                    "discrete gradient\")"
+                  ? " < 0.6: with discrete_gradient = true drives with roller-seat contact, "
+                    "damped or not, keep their work balance down to 0.5 (the seats' elastic "
+                    "force and damper taken over the step; docs/models/dynamics.md, "
+                    "\"Sprockets: the discrete gradient\")"
                   : " < 0.6: drives with roller-seat contact diverged below 0.6 "
                     "(docs/models/dynamics.md)"),
          d.theta, 0.6});

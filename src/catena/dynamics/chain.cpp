@@ -1341,18 +1341,26 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
   if (!(std::max({start.g, end.g, g}) > 0.0)) return c;
   const DiscreteGradient dgr =
       discrete_gradient([&](double gap) { return seat_elastic(w, gap); }, start.g, end.g);
-  // the damper at the θ point (ġ relative to the wheel), ramped in over ε by the θ point's gap,
-  // none where that is ≤ 0 (a roller entering or leaving on this step)
-  const double rate = (vx + speed * ry) * c.nx + (vy - speed * rx) * c.ny;
-  const double eps = w.contact_smoothing;
+  // The damper over the step too: f_d = (C(g₁) − C(g₀))/h, C(g) = ∫₀^g c(s) ds the integral of
+  // the ramped coefficient c(g) = c_c min(1, g/ε) (0 for g ≤ 0): c_c (g₁ − g₀)/h once both ends
+  // are past ε. Its ∂f_d/∂g₁ = c(g₁)/h is never negative, and its work −f_d Δg = −c̄ Δg²/h ≤ 0
+  // (c̄ the mean of c over [g₀, g₁]). The θ point's c(g_θ) ġ_θ falls as the roller goes deeper
+  // while it leaves (∂f/∂g = c_c ġ/ε < 0 within the ramp): at θ = ½ the rollers rattling across
+  // their seats (|ġ| ≈ 0.16 m/s) made the residual's slope along n negative there, hθ c_c|ġ|/ε
+  // beyond m/(hθ) + c_c + h ∂f_e/∂g₁, and Newton stalled at g_θ = ε.
+  const double eps = w.contact_smoothing, cseat = w.contact_damping;
+  auto potential = [&](double gap) {
+    if (!(gap > 0.0)) return 0.0;
+    return gap < eps ? 0.5 * cseat * gap * gap / eps : cseat * (gap - 0.5 * eps);
+  };
+  const double h = step->h, dg = end.g - start.g;
   const double elastic = dgr.force;
-  c.damping = w.contact_damping * std::clamp(g / eps, 0.0, 1.0);
-  c.force = std::max(0.0, elastic + c.damping * rate);
-  // ∂f/∂g at the θ point: the damper's ramp only (f_e depends on the ends' gaps)
-  c.stiffness = g > 0.0 && g < eps ? w.contact_damping * rate / eps : 0.0;
-  c.gap_slope = dgr.slope;
-  if (c.force <= 0.0) c.stiffness = c.damping = c.gap_slope = 0.0;
-  c.damping_power = -(c.force - elastic) * rate;
+  const double damper = (potential(end.g) - potential(start.g)) / h;
+  c.force = std::max(0.0, elastic + damper);
+  c.damping = c.stiffness = 0.0;  // nothing at the θ point: f depends on g₁ alone
+  c.gap_slope = c.force > 0.0 ? dgr.slope + cseat * std::clamp(end.g / eps, 0.0, 1.0) / h : 0.0;
+  // the damper's share f − f_e (−f_e where clamped) against the step's Δg: its work −(f − f_e) Δg
+  c.damping_power = -(c.force - elastic) * dg / h;
   c.energy = seat_elastic(w, g).energy;  // the θ point's, as without the gradient
   c.active = true;
   c.penetration = c.depth = g;
@@ -1365,7 +1373,8 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
   // step as lin = n·Δ − a Δψ (Δ the roller's displacement relative to the centre); on a curved
   // surface or a turning wheel Δg differs. The rest goes along the step z = (Δ, R Δψ):
   // ∇̄g = ∇g_θ + cc (Δ, R² Δψ), cc = (Δg − lin)/(|Δ|² + R² Δψ²), so that ∇̄g·Δz = Δg and the
-  // elastic force's work is exactly −ΔE. The roller gains −S Δ, the wheel −S R² Δψ, S = f_e cc.
+  // normal force's work is exactly −f Δg (−ΔE and the damper's −f_d Δg). The roller gains −S Δ,
+  // the wheel −S R² Δψ, S = f cc.
   const double r2 = w.pitch_radius * w.pitch_radius;
   const double dx = (step->x1 - step->cx1) - (step->x0 - step->cx0);
   const double dy = (step->y1 - step->cy1) - (step->y0 - step->cy0);
@@ -1374,15 +1383,15 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
   const double arm = c.nx * px + c.ny * py;
   const double lin = c.nx * dx + c.ny * dy - arm * dpsi;
   const double den = dx * dx + dy * dy + r2 * dpsi * dpsi;
-  // Switched on f_e (not on the clamped total force, which the damper can pull to 0 while f_e > 0:
-  // the residual would jump there). Skipped for a step |Δz| < 1e-9 R: Δg − lin is then the gaps'
+  // S = f cc with f the clamped total force: it goes to 0 with f where the damper clamps it, so the
+  // residual is continuous there. Skipped for a step |Δz| < 1e-9 R: Δg − lin is then the gaps'
   // rounding (~1e-17 m at R ≈ 5 cm; the curvature's share κ|Δz|²/2 ≤ 2e-17 m on the seating arc
-  // of ri − r ≈ 60 µm), S = f_e cc grows as 1/den from it (1.9e14 N/m at |Δz| = 1e-15 m) and the
-  // work it would restore, f_e (Δg − lin), is the rounding's.
+  // of ri − r ≈ 60 µm), S = f cc grows as 1/den from it (1.9e14 N/m at |Δz| = 1e-15 m) and the
+  // work it would restore, f (Δg − lin), is the rounding's.
   const double den_floor = 1e-18 * r2;
-  if (elastic > 0.0 && den > den_floor) {
+  if (c.force > 0.0 && den > den_floor) {
     const double cc = (end.g - start.g - lin) / den;
-    c.skew = elastic * cc;
+    c.skew = c.force * cc;
     c.skew_x = dx;
     c.skew_y = dy;
     c.torque -= c.skew * r2 * dpsi;
@@ -1398,13 +1407,13 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
     const double dcc_x = (end.nx - dlin_x - 2.0 * cc * dx) / den;
     const double dcc_y = (end.ny - dlin_y - 2.0 * cc * dy) / den;
     const double dcc_psi = (c.step_turn - dlin_psi - 2.0 * cc * r2 * dpsi) / den;
-    // ∂S = cc ∂f_e + f_e ∂cc
-    c.skew_dx = cc * dgr.slope * end.nx + elastic * dcc_x;
-    c.skew_dy = cc * dgr.slope * end.ny + elastic * dcc_y;
-    c.skew_dpsi = cc * dgr.slope * c.step_turn + elastic * dcc_psi;
+    // ∂S = cc ∂f + f ∂cc, ∂f = (∂f/∂g₁) ∂g₁
+    c.skew_dx = cc * c.gap_slope * end.nx + c.force * dcc_x;
+    c.skew_dy = cc * c.gap_slope * end.ny + c.force * dcc_y;
+    c.skew_dpsi = cc * c.gap_slope * c.step_turn + c.force * dcc_psi;
   }
   // the friction's share: ∂(−f n)/∂x₁ = −(∂f/∂g₁) n n₁ᵀ, in ∂/∂v as h times it (v = (x₁ − x₀)/h)
-  const double hs = step->h * c.gap_slope;
+  const double hs = h * c.gap_slope;
   c.friction_dv[0] = -hs * c.nx * end.nx;
   c.friction_dv[1] = -hs * c.nx * end.ny;
   c.friction_dv[2] = -hs * c.ny * end.nx;
