@@ -77,7 +77,8 @@ struct Sprocket {
   /// between the gaps in the θ point's seat at the step's start (roller x₀, wheel angle ψ₀) and
   /// end (x₁, ψ₁) (seat_contact_at with a SeatStep), with a correction along the step so that its
   /// work over the step is −ΔE on the curved seats and a turning wheel too; false, the default:
-  /// the force at the θ point. ISO seats only (a pocket wheel keeps the θ point's force).
+  /// the force at the θ point. On a pocket wheel: the discrete gradient of the pocket's energy
+  /// over the step (pocket_step_contact; docs "Pocket wheel: the discrete gradient").
   /// use_line_law leaves it as it is (the case key discrete_gradient sets it).
   bool discrete_gradient = false;
   bool driver = false;       ///< prescribed speed (true) or inertia + load (false)
@@ -797,6 +798,30 @@ ReleaseBand release_band(const Sprocket& w);
 inline constexpr int kNoPocket = -2147483647 - 1;
 SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, double vy,
                            double angle, double speed, int held = kNoPocket);
+/// A step's ends for the pocket's discrete gradient (Sprocket::discrete_gradient on a pocket
+/// wheel): the joint at the step's start x₀ and end x₁ [m], the wheel's centre there [m] (they
+/// differ on a take-up's sliding wheel), its angles ψ₀ and ψ₁ [rad], and the θ point's weight.
+struct PocketStep {
+  double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
+  double cx0 = 0.0, cy0 = 0.0, cx1 = 0.0, cy1 = 0.0;
+  double angle0 = 0.0, angle1 = 0.0;
+  double theta = 0.5;
+};
+/// pocket_contact at the θ point (x, y, angle, its speeds) over the step `step` (docs/models/
+/// dynamics.md, "Pocket wheel: the discrete gradient"). Without Sprocket::discrete_gradient the
+/// θ point's contact, bit for bit. With it, the elastic energy E_k of the θ point's pocket k (the
+/// nearest, or the held one beyond the mouth; the same law at every point: pocket, mouth's ramp,
+/// release or body as the point's own place decides) at the step's ends puts the work's miss
+/// ΔE − ∇E_θ·Δz back along the step z = (q − O, R ψ), metric (1, R²): the skew fields as the
+/// seats' (the joint gains −S Δ, the torque −S R² Δψ, S = (ΔE − ∇E_θ·Δz)/|Δz|²), so that the
+/// elastic work over the step is −ΔE_k. Not where |Δz| < 1e-9 R, nor where the step's points lie
+/// across one of E_k's jumps (the sharp mouth out of the pocket; the body's capture within its
+/// radial band of the mouth, or with the release): there the θ point's force alone. The damper,
+/// friction and the release's hold stay at the θ point; where the θ point's force is 0 (out of
+/// contact, or the damper's clamp) its derivative fields are 0 and the contact is active with
+/// the correction alone.
+SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx, double vy,
+                                double angle, double speed, int held, const PocketStep& step);
 /// At the start and the end of a step (Integrator::step; the same flags for the same state, so
 /// the start's call changes nothing after a step, but sets them on a state no step has ended
 /// in): a joint within a pocket wheel's mouth (with pocket_release)

@@ -135,10 +135,10 @@ std::vector<Parameter> table_fields() {
       // the contacts' elastic force over a step (docs/models/dynamics.md, "Sprockets: the
       // discrete gradient")
       text("discrete_gradient",
-           "true or false: the ISO seats' and the guides' rails' elastic force as the discrete "
-           "gradient of the contact's energy over each step (conserving, for theta = 0.5) "
-           "instead of at the theta point (default true with contact_law = \"line\", false with "
-           "\"linear\"; not true with wheel = \"pocket\")"),
+           "true or false: the ISO seats', the pocket wheels' pockets' and the guides' rails' "
+           "elastic force as the discrete gradient of the contact's energy over each step "
+           "(conserving, for theta = 0.5) instead of at the theta point (default true with "
+           "contact_law = \"line\", false with \"linear\" and with wheel = \"pocket\")"),
       // the round-link chain on pocket wheels (docs/models/dynamics.md, "Pocket wheel")
       text("wheel",
            "iso606 (roller chain on ISO 606 sprockets, the default) or pocket (round-link chain "
@@ -1425,11 +1425,8 @@ Setup parse(const analysis::Inputs& in) {
     issues.push_back({at("contact_law"), "'line'",
                       "linear with wheel = \"pocket\" (the line law is the roller in an ISO "
                       "seat; a round link's joint in its pocket keeps the penalty)"});
+  // with wheel = "pocket" the pockets' discrete gradient (default false: the line law is refused)
   s.discrete_gradient = discrete_gradient.value_or(line_law);
-  if (discrete_gradient.value_or(false) && s.pocket)
-    issues.push_back({at("discrete_gradient"), "true",
-                      "false with wheel = \"pocket\" (the pockets' force is taken at the theta "
-                      "point: their discrete gradient is not built)"});
   // a round-link chain on pocket wheels: no catalogue, no roller; the keys of the roller chain
   // and the parts not built for a pocket are refused, each by name
   if (s.pocket) {
@@ -2574,7 +2571,7 @@ Result run(const analysis::Inputs& in) {
                                          d.clearance, d.contact_stiffness, d.contact_damping)
                           : iso606_sprocket(d.pitch, d.roller, d.width, z, w == 0 ? 0.0 : centre,
                                             0.0, d.contact_stiffness, d.contact_damping);
-    if (!d.pocket) set_seat_law(d, s);
+    set_seat_law(d, s);  // on a pocket wheel its discrete gradient alone (line law refused)
     s.friction = wheel_mu(d, w);
     if (w == d.driver) {
       s.driver = true;

@@ -495,7 +495,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     const double* thy = qy_.data();
     // The seats' discrete gradient ("Sprockets: the discrete gradient"): the step's ends, the
     // wheel's angles and centres there (a take-up's slides)
-    const bool stepped = wheel.discrete_gradient && !wheel.pocket;
+    const bool stepped = wheel.discrete_gradient;  // the seats' or the pockets'
     SeatStep ends;
     if (stepped) {
       ends.h = h;
@@ -537,7 +537,22 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       }
       // (assigned once: a default-constructed contact overwritten cost its zeroing per roller)
       const SeatContact sc = [&] {
-        if (wheel.pocket) return pocket_contact(wheel, qx, qy, vx, vy, psi, omega, held);
+        if (wheel.pocket && !stepped)
+          return pocket_contact(wheel, qx, qy, vx, vy, psi, omega, held);
+        if (wheel.pocket) {  // its discrete gradient ("Pocket wheel: the discrete gradient")
+          const PocketStep e{.x0 = s.x[i],
+                             .y0 = s.y[i],
+                             .x1 = ux_[i],
+                             .y1 = uy_[i],
+                             .cx0 = ends.cx0,
+                             .cy0 = ends.cy0,
+                             .cx1 = ends.cx1,
+                             .cy1 = ends.cy1,
+                             .angle0 = s.angle[w],
+                             .angle1 = psi1_[w],
+                             .theta = th};
+          return pocket_step_contact(wheel, qx, qy, vx, vy, psi, omega, held, e);
+        }
         // seat_contact, its seat's direction from the step's table when there
         const double kseat = nearest_seat(rx, ry, psi, geometry.tau);
         const double teeth = static_cast<double>(directions.size());
@@ -618,7 +633,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
           pull_y += sc.skew * sc.skew_y;
         }
       }
-      if (!jacobian || sc.force <= 0.0) continue;  // separating: no force, no stiffness
+      // separating: no force, no stiffness (a pocket's discrete gradient may still correct)
+      if (!jacobian || (sc.force <= 0.0 && !(wheel.pocket && sc.skew != 0.0))) continue;
       // D = ∂(h f n)/∂u = normal n nᵀ + tangent (I − n nᵀ), from
       // ∂(f n)/∂q = (∂f/∂g + c/(θh)) n nᵀ + (f/s)(I − n nᵀ), q = x_θ, ∂q/∂u = θ.
       // The damper's rate ġ = v_rel·n, v_rel = v − ω perp(q − c), also turns with the roller's

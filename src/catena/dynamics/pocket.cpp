@@ -273,16 +273,20 @@ ReleaseBand release_band(const Sprocket& w) {
           std::sin(0.5 * w.pocket_angle + 35.0 * kDeg)};
 }
 
-SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, double vy,
-                           double angle, double speed, int held) {
+namespace {
+// pocket_contact with its vertex given: `forced` (kNoPocket: the nearest within the mouth, the
+// held one beyond it), the discrete gradient's ends in the θ point's pocket (pocket_step_contact)
+SeatContact contact_with(const Sprocket& w, double x, double y, double vx, double vy, double angle,
+                         double speed, int held, int forced) {
   SeatContact c;
   const double rx = x - w.centre_x, ry = y - w.centre_y;
   const double reach = contact_reach(w);  // the mouth R + c/2, or its ramp's top
   const double rho2 = rx * rx + ry * ry;
   const bool beyond = rho2 > reach * reach;
   if (beyond && !(w.pocket_release && held != kNoPocket)) return c;
-  const PocketVertex v = beyond ? PocketVertex{held, vertex_angle(w, held, angle)}
-                                : nearest_pocket(w, std::atan2(ry, rx), angle);
+  const int fixed = forced != kNoPocket ? forced : beyond ? held : kNoPocket;
+  const PocketVertex v = fixed != kNoPocket ? PocketVertex{fixed, vertex_angle(w, fixed, angle)}
+                                            : nearest_pocket(w, std::atan2(ry, rx), angle);
   c.seat = v.index;
   vertex_point(w, v.angle, c.seat_x, c.seat_y);
   const double ex = x - c.seat_x, ey = y - c.seat_y;
@@ -388,6 +392,136 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
     }
   }
   set_friction_rest(jq, jv, wx, wy, speed, c);
+  return c;
+}
+}  // namespace
+
+SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, double vy,
+                           double angle, double speed, int held) {
+  return contact_with(w, x, y, vx, vy, angle, speed, held, kNoPocket);
+}
+
+// The pocket's discrete gradient (docs/models/dynamics.md, "Pocket wheel: the discrete
+// gradient"), a block of its own: the θ point's contact, and the elastic energy E_k of its pocket
+// k at the step's ends, put back along the step z = (q − O, R ψ) in the metric (1, R²).
+namespace {
+// Where a point is for pocket k, for the jumps of E_k: in the pocket's own law (its mouth's ramp
+// or release included), on the body between the pockets within the mouth, or out of both (E = 0)
+enum class Piece { kPocket, kBody, kOut };
+Piece piece_of(const Sprocket& w, double rx, double ry, double angle, int k, bool held) {
+  const double rho2 = rx * rx + ry * ry, reach = contact_reach(w);
+  if (rho2 > reach * reach) return w.pocket_release && held ? Piece::kPocket : Piece::kOut;
+  double vx = 0.0, vy = 0.0;
+  vertex_point(w, vertex_angle(w, k, angle), vx, vy);
+  const double dist = std::hypot(rx + w.centre_x - vx, ry + w.centre_y - vy);
+  if (!in_body(w, dist)) return Piece::kPocket;
+  const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance;
+  return rho2 <= mouth * mouth ? Piece::kBody : Piece::kOut;
+}
+
+// E_k is continuous between the pieces of the step's three points unless the path crosses one
+// of its two jumps: the sharp mouth (pocket_mouth = 0, no release) out of the pocket's own law,
+// and the body's capture `from` within its radial band of the mouth (or with the release, whose
+// energy E₀ S(u) there is not the body's)
+bool jumps(const Sprocket& w, const Piece (&p)[3], const double (&rho)[3]) {
+  bool pocket = false, body = false, out = false;
+  for (const Piece q : p) {
+    pocket = pocket || q == Piece::kPocket;
+    body = body || q == Piece::kBody;
+    out = out || q == Piece::kOut;
+  }
+  const bool sharp = !(w.pocket_mouth > 0.0) && !w.pocket_release;
+  if (pocket && out && sharp) return true;
+  if (pocket && body) {
+    if (w.pocket_release) return true;
+    const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance, band = body_capture(w).band;
+    for (const double r : rho)
+      if (mouth - r < band) return true;
+  }
+  return false;
+}
+
+// The elastic ∂F/∂q (row-major) of an elastic contact (no velocity): the fields' and dq_extra
+void elastic_jacobian(const SeatContact& e, double out[4]) {
+  const double f = e.active ? e.force : 0.0;
+  const double kn = e.active ? e.stiffness : 0.0, ft = f * e.curvature, nx = e.nx, ny = e.ny;
+  out[0] = -(kn * nx * nx + ft * (1 - nx * nx));
+  out[1] = out[2] = -(kn - ft) * nx * ny;
+  out[3] = -(kn * ny * ny + ft * (1 - ny * ny));
+  if (e.active)
+    for (int i = 0; i < 4; ++i) out[i] += e.dq_extra[i];
+}
+}  // namespace
+
+SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx, double vy,
+                                double angle, double speed, int held, const PocketStep& step) {
+  SeatContact c = contact_with(w, x, y, vx, vy, angle, speed, held, kNoPocket);
+  if (!w.discrete_gradient) return c;
+  const double rx = x - w.centre_x, ry = y - w.centre_y, reach = contact_reach(w);
+  const bool beyond = rx * rx + ry * ry > reach * reach;
+  // the θ point's pocket k (the nearest, or the held one beyond the mouth); E_k at the ends with
+  // it held there too if it is held at the θ point
+  const int k =
+      beyond && held != kNoPocket ? held : nearest_pocket(w, std::atan2(ry, rx), angle).index;
+  const int hk = held != kNoPocket ? k : kNoPocket;
+  // the ends relative to the wheel's centre there (a take-up's slides), put about w's centre
+  const double q0x = step.x0 - step.cx0, q0y = step.y0 - step.cy0;
+  const double q1x = step.x1 - step.cx1, q1y = step.y1 - step.cy1;
+  const double dx = q1x - q0x, dy = q1y - q0y, dpsi = step.angle1 - step.angle0;
+  const double r = w.pitch_radius, r2 = r * r;
+  const double den = dx * dx + dy * dy + r2 * dpsi * dpsi;
+  // below |Δz| = 1e-9 R the mismatch is the ends' rounding over |Δz|² (as the seats')
+  if (!(den > 1e-18 * r2)) return c;
+  const Piece pieces[3] = {piece_of(w, q0x, q0y, step.angle0, k, hk != kNoPocket),
+                           piece_of(w, rx, ry, angle, k, hk != kNoPocket),
+                           piece_of(w, q1x, q1y, step.angle1, k, hk != kNoPocket)};
+  const double rho[3] = {std::hypot(q0x, q0y), std::hypot(rx, ry), std::hypot(q1x, q1y)};
+  if (jumps(w, pieces, rho)) return c;  // E_k's jump: the θ point's force (docs)
+  const SeatContact e0 =
+      contact_with(w, q0x + w.centre_x, q0y + w.centre_y, 0.0, 0.0, step.angle0, 0.0, hk, k);
+  const SeatContact e1 =
+      contact_with(w, q1x + w.centre_x, q1y + w.centre_y, 0.0, 0.0, step.angle1, 0.0, hk, k);
+  const SeatContact et = contact_with(w, x, y, 0.0, 0.0, angle, 0.0, hk, k);
+  const double en0 = e0.active ? e0.energy : 0.0, en1 = e1.active ? e1.energy : 0.0;
+  // ∇E at the θ point: G_q = f n, G_ψ = −τ (the elastic force −∇_q E, torque −∂E/∂ψ)
+  const double gx = et.active ? et.force * et.nx : 0.0, gy = et.active ? et.force * et.ny : 0.0;
+  const double gpsi = et.active ? -et.torque : 0.0;
+  const double mismatch = en1 - en0 - (gx * dx + gy * dy) - gpsi * dpsi;
+  if (!(en0 > 0.0 || en1 > 0.0 || et.active)) return c;  // E_k = 0 at all three
+  // E's Hessian at the θ point: H = −∂F/∂q; E(q, ψ) = E(Rq, ψ + δ) gives ∂E/∂ψ = −G_q·Jq
+  // (Jq = perp q), so ∂²E/∂ψ∂q = a = −(H Jq + Jᵀ G_q) and ∂²E/∂ψ² = −a·Jq
+  double jf[4];
+  elastic_jacobian(et, jf);
+  const double hq[4] = {-jf[0], -jf[1], -jf[2], -jf[3]};
+  const double px = -ry, py = rx;
+  const double ax = -(hq[0] * px + hq[1] * py + gy), ay = -(hq[2] * px + hq[3] * py - gx);
+  const double hpp = -(ax * px + ay * py);
+  const double cc = mismatch / den;
+  // the damper's clamp: where the θ point's force is 0 its blocks are 0 (only the correction's)
+  if (!c.active) {
+    c = SeatContact{};
+    c.active = true;
+    c.seat = k;
+  } else if (!(c.force > 0.0)) {
+    c.stiffness = c.damping = c.curvature = 0.0;
+    for (int i = 0; i < 4; ++i)
+      c.dq_extra[i] = c.dv_extra[i] = c.friction_dq[i] = c.friction_dv[i] = 0.0;
+  }
+  c.skew = cc;
+  c.skew_x = dx;
+  c.skew_y = dy;
+  c.torque -= cc * r2 * dpsi;
+  // ∂cc = (∂mismatch − cc ∂den)/den; the θ point moves by θ with x₁ and ψ₁:
+  // ∂mismatch/∂x₁ = ∇_q E₁ − G_q − θ (H Δq + a Δψ), ∂/∂ψ₁ = ∂E₁/∂ψ − G_ψ − θ (a·Δq + E_ψψ Δψ)
+  const double th = step.theta;
+  const double f1x = e1.active ? e1.force * e1.nx : 0.0, f1y = e1.active ? e1.force * e1.ny : 0.0;
+  const double f1psi = e1.active ? -e1.torque : 0.0;
+  const double mx = f1x - gx - th * (hq[0] * dx + hq[1] * dy + ax * dpsi);
+  const double my = f1y - gy - th * (hq[2] * dx + hq[3] * dy + ay * dpsi);
+  const double mpsi = f1psi - gpsi - th * (ax * dx + ay * dy + hpp * dpsi);
+  c.skew_dx = (mx - 2.0 * cc * dx) / den;
+  c.skew_dy = (my - 2.0 * cc * dy) / den;
+  c.skew_dpsi = (mpsi - 2.0 * cc * r2 * dpsi) / den;
   return c;
 }
 

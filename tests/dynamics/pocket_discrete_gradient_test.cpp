@@ -1,0 +1,366 @@
+// The pocket wheel's discrete gradient (Sprocket::discrete_gradient on a pocket wheel;
+// docs/models/dynamics.md, "Pocket wheel: the discrete gradient"): the pocket's elastic force over
+// a step is the θ point's −∇E plus the work's miss put back along the step, so that its work on
+// joint and wheel is −ΔE of the θ point's pocket. Its work over one step against the change of the
+// contact's energy (pocket_contact's, at the ends) in the pocket, on the body's blend and its rim,
+// held and turning; the Newton matrix against central differences of the step's residual; and an
+// undamped, frictionless wrap on a pocket wheel at θ = ½ whose work balance closes with it and
+// not without it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <vector>
+
+#include "catena/dynamics/integrator.hpp"
+#include "catena/dynamics/pocket_wheel.hpp"
+#include "residual_difference.hpp"
+
+namespace catena::dynamics {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kClearance = 1e-4, kStiffness = 1e8;  // [m], [N/m]
+
+// Ø18×64 on z = 8 (seed 003's example), centre off the origin, the body between the pockets on
+Sprocket wheel8(bool gradient, double damping = 0.0) {
+  Sprocket w = pocket_wheel(0.064, 0.018, 8, 0.3, -0.2, kClearance, kStiffness, damping);
+  w.discrete_gradient = gradient;
+  return w;
+}
+
+struct Point {
+  double x = 0.0, y = 0.0;
+};
+// The point at `along` [m] along the pitch circle from vertex k (wheel at `angle`), `below` [m]
+// inside the mouth R + c/2 radially.
+Point near_vertex(const Sprocket& w, double angle, int k, double along, double below) {
+  const double tau = 2.0 * kPi / w.teeth;
+  const double a = angle + (k / 2) * tau + (k % 2 ? w.pocket_angle : 0.0) + along / w.pitch_radius;
+  const double rho = w.pitch_radius + 0.5 * w.pocket_clearance - below;
+  return {w.centre_x + rho * std::cos(a), w.centre_y + rho * std::sin(a)};
+}
+
+double energy_at(const Sprocket& w, Point q, double angle, int held = kNoPocket) {
+  return pocket_contact(w, q.x, q.y, 0.0, 0.0, angle, 0.0, held).energy;
+}
+
+// The contact over the step p0 → p1 (wheel ψ₀ → ψ₁, h = 0.1 ms, θ = ½)
+SeatContact step_contact(const Sprocket& w, Point p0, Point p1, double psi0, double psi1,
+                         int held = kNoPocket) {
+  const double h = 1e-4, th = 0.5;
+  const PocketStep step{.x0 = p0.x,
+                        .y0 = p0.y,
+                        .x1 = p1.x,
+                        .y1 = p1.y,
+                        .cx0 = w.centre_x,
+                        .cy0 = w.centre_y,
+                        .cx1 = w.centre_x,
+                        .cy1 = w.centre_y,
+                        .angle0 = psi0,
+                        .angle1 = psi1,
+                        .theta = th};
+  const double qx = p0.x + th * (p1.x - p0.x), qy = p0.y + th * (p1.y - p0.y);
+  return pocket_step_contact(w, qx, qy, (p1.x - p0.x) / h, (p1.y - p0.y) / h,
+                             psi0 + th * (psi1 - psi0), (psi1 - psi0) / h, held, step);
+}
+
+// The contact's work over the step on joint and wheel: (−f n − S Δ)·Δ + τ Δψ
+double step_work(const Sprocket& w, Point p0, Point p1, double psi0, double psi1, int* surface,
+                 int held = kNoPocket) {
+  const SeatContact c = step_contact(w, p0, p1, psi0, psi1, held);
+  if (surface != nullptr) *surface = c.surface;
+  if (!c.active) return 0.0;
+  const double dx = p1.x - p0.x, dy = p1.y - p0.y;
+  return -c.force * (c.nx * dx + c.ny * dy) - c.skew * (c.skew_x * dx + c.skew_y * dy) +
+         c.torque * (psi1 - psi0);
+}
+
+// (1) One step's work is −ΔE: in the pocket (pressing in 20 → 60 µm and swinging sideways),
+// entering it from the clearance, on the body's blend (12c–18c from the vertex, 20 µm below the
+// mouth: the pocket's and the rim's depths blended) and on the rim (30c off), over the mouth's
+// ramp and with the release beyond the mouth, the wheel held and turning 3e-3 rad over the step
+// (30 rad/s). With the θ point's force (the key off) it misses by
+// far (measured, printed).
+TEST(DynamicsPocketDiscreteGradient, WorkOverAStepIsTheEnergysChange) {
+  const Sprocket on = wheel8(true), off = wheel8(false);
+  const double c = kClearance, psi = 0.4;
+  struct Move {
+    const char* where;
+    double along0, below0, along1, below1;
+    int surface;  // the θ point's: 0 the pocket, 3 the body
+  };
+  // (the vertex is at `below` = c/2: 20 µm into the pocket is below = c/2 + c + 20 µm)
+  const Move moves[] = {
+      {"pocket", 0.3 * c, 1.7 * c + 20e-6, 0.1 * c, 1.5 * c + 60e-6, 0},
+      {"pocket, entering", -0.5 * c, 0.5 * c + 0.2 * c, 0.2 * c, 1.5 * c + 30e-6, 0},
+      {"pocket, sideways", -0.8 * c, 1.5 * c + 40e-6, 1.2 * c, 1.5 * c + 35e-6, 0},
+      {"blend", 12.0 * c, 20e-6, 12.5 * c, 30e-6, 3},
+      {"blend, sliding", 14.0 * c, 25e-6, 18.0 * c, 15e-6, 3},
+      {"rim", 30.0 * c, 20e-6, 31.0 * c, 40e-6, 3}};
+  double worst = 0.0, theta_best = INFINITY;
+  for (const double turn : {0.0, 3e-3}) {
+    for (const Move& m : moves) {
+      const Point p0 = near_vertex(on, psi, 3, m.along0, m.below0);
+      const Point p1 = near_vertex(on, psi + turn, 3, m.along1, m.below1);
+      int surface = -1;
+      const double work = step_work(on, p0, p1, psi, psi + turn, &surface);
+      EXPECT_EQ(surface, m.surface) << m.where;
+      const double change = energy_at(on, p1, psi + turn) - energy_at(on, p0, psi);
+      ASSERT_GT(std::abs(change), 1e-6) << m.where;
+      const double err = std::abs(work + change) / std::abs(change);
+      EXPECT_LT(err, 1e-9) << m.where << " turn " << turn << ": work " << work << " dE " << change;
+      worst = std::max(worst, err);
+      const double theta_work = step_work(off, p0, p1, psi, psi + turn, nullptr);
+      theta_best = std::min(theta_best, std::abs(theta_work + change) / std::abs(change));
+    }
+  }
+  // the mouth's ramp (w = c) and the release (a joint held by pocket 3 beyond the mouth): a joint
+  // 1.5c off its vertex rising over the ramp 10 → 60 µm above the mouth, and a held joint 2c off
+  // rising 10 → 30 µm above it, where E₀(g) S(u) falls with the angle u of e to the radial
+  Sprocket ramp = wheel8(true), release = wheel8(true);
+  ramp.pocket_mouth = c;
+  release.pocket_release = true;
+  double other = 0.0;
+  for (const double turn : {0.0, 3e-3}) {
+    for (int j = 0; j < 2; ++j) {
+      const Sprocket& w = j == 0 ? ramp : release;
+      const int held = j == 0 ? kNoPocket : 3;
+      const double along = (j == 0 ? 1.5 : 2.0) * c;
+      const Point p0 = near_vertex(w, psi, 3, along, -10e-6);
+      const Point p1 = near_vertex(w, psi + turn, 3, along, j == 0 ? -60e-6 : -30e-6);
+      const double work = step_work(w, p0, p1, psi, psi + turn, nullptr, held);
+      const double change = energy_at(w, p1, psi + turn, held) - energy_at(w, p0, psi, held);
+      ASSERT_GT(std::abs(change), 1e-6) << j;
+      const double err = std::abs(work + change) / std::abs(change);
+      EXPECT_LT(err, 1e-9) << (j == 0 ? "ramp" : "release") << " turn " << turn;
+      other = std::max(other, err);
+    }
+  }
+  std::printf(
+      "pocket discrete gradient: |work + dE| / |dE| worst %.2e over the pocket, blend and rim, "
+      "held and turning (%.2e over the mouth's ramp and the release); the theta point's force at "
+      "best %.3g\n",
+      worst, other, theta_best);
+  EXPECT_GT(theta_best, 1e-4);
+}
+
+// Where the step's points lie across one of E_k's jumps the correction would be the jump over
+// |Δz|² (kN per µm of step): there the force is the θ point's. A joint leaving over the sharp
+// mouth 3c off its vertex (E jumps from E₀(g) to 0), and one crossing the body's capture (10c
+// from the vertex) 20 µm below the mouth, within its radial band (the pocket's E₀(9c) against the
+// body's blended depth); a step across the capture straight below the vertex, beyond the band
+// (10c) from the mouth (no jump there), is corrected.
+TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheForceIsTheThetaPoints) {
+  const Sprocket on = wheel8(true), off = wheel8(false);
+  const double c = kClearance, psi = 0.4, turn = 1e-3;
+  struct Across {
+    const char* what;
+    double along0, below0, along1, below1;
+    bool corrected;
+  };
+  const Across steps[] = {{"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -2e-6, false},
+                          {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, false},
+                          {"capture deep", 0.0, 10.4 * c, 0.0, 10.6 * c, true}};
+  for (const Across& a : steps) {
+    const Point p0 = near_vertex(on, psi, 2, a.along0, a.below0);
+    const Point p1 = near_vertex(on, psi + turn, 2, a.along1, a.below1);
+    const SeatContact with = step_contact(on, p0, p1, psi, psi + turn);
+    const SeatContact without = step_contact(off, p0, p1, psi, psi + turn);
+    const double change = energy_at(on, p1, psi + turn) - energy_at(on, p0, psi);
+    std::printf("pocket discrete gradient across %s: dE %.4g J, S %.4g N/m\n", a.what, change,
+                with.skew);
+    if (a.corrected) {
+      EXPECT_NE(with.skew, 0.0) << a.what;
+      const double work = step_work(on, p0, p1, psi, psi + turn, nullptr);
+      EXPECT_LT(std::abs(work + change), 1e-9 * std::abs(change)) << a.what;
+      continue;
+    }
+    EXPECT_GT(std::abs(change), 1.0) << a.what;  // the jump
+    EXPECT_EQ(with.skew, 0.0) << a.what;
+    EXPECT_EQ(with.force, without.force) << a.what;
+    EXPECT_EQ(with.torque, without.torque) << a.what;
+  }
+}
+
+// A link's two joints falling radially onto a pocket wheel at `inward` [m/s], the leading one
+// `off` [m] along the pitch circle from vertex 1 and 10 µm above the mouth, both turning with the
+// wheel at `spin` [rad/s] and sliding along it at `slip` [m/s]; the wheel driven (inertia 0.2
+// kg·m², its angle an unknown) or a driver.
+struct Fall {
+  Model model;
+  State state;
+};
+Fall fall_onto(double off, double inward, double spin, double slip, bool driven, double damping,
+               bool gradient) {
+  Model m = uniform_chain(2, false, 0.064, 0.42, 1e8, 0.0, false);
+  m.alternation = 0.018;
+  Sprocket w = pocket_wheel(0.064, 0.018, 8, 0.0, 0.0, kClearance, kStiffness, damping);
+  w.discrete_gradient = gradient;
+  w.driver = !driven;
+  w.inertia = 0.2;
+  w.speed = spin;
+  m.sprockets = {w};
+  State s(2, 1);
+  s.angle = {0.0};
+  s.speed = {spin};
+  const double polar = w.pocket_angle + off / w.pitch_radius;
+  const double start = w.pitch_radius + 0.5 * kClearance + 10e-6;
+  for (int i = 0; i < 2; ++i) {
+    const double rho = start + i * m.rest_length(0);
+    const double cx = std::cos(polar), sn = std::sin(polar);
+    s.x[i] = rho * cx;
+    s.y[i] = rho * sn;
+    s.vx[i] = -inward * cx - spin * s.y[i] - slip * sn;
+    s.vy[i] = -inward * sn + spin * s.x[i] + slip * cx;
+  }
+  return {m, s};
+}
+
+// (2) The step's Newton matrix with the discrete gradient against central differences of its
+// residual, every column (the joints' and the driven wheel's angle), while the leading joint is in
+// contact: in its pocket (falling in at 1 m/s), on the body's blend (1.5 mm off the vertex) and on
+// its rim (14 mm off), the wheel turning at 5 rad/s, θ = 0.6 damped (c_c = 2000 N·s/m) and θ = ½
+// undamped with the joints sliding along the wheel at 0.5 m/s. It is the discrete gradient's
+// matrix: it differs from the θ point's at the same iterate (measured, printed), except on the rim
+// at θ = ½, whose energy is a function of |q − O| alone (nearly linear over a step).
+TEST(DynamicsPocketDiscreteGradient, NewtonMatrixMatchesTheResidualsDifferences) {
+  struct Case {
+    double off, inward, slip, theta, damping;
+    double differs;  // the least departure from the θ point's matrix (of the column scale)
+  };
+  const Case cases[] = {{0.0, 1.0, 0.0, 0.6, 2000.0, 1e-4},    {0.0, 1.0, 0.5, 0.5, 0.0, 1e-5},
+                        {1.5e-3, 2.0, 0.0, 0.6, 2000.0, 1e-4}, {1.5e-3, 2.0, 0.5, 0.5, 0.0, 3e-5},
+                        {14e-3, 2.0, 0.0, 0.6, 2000.0, 1e-4},  {14e-3, 2.0, 0.5, 0.5, 0.0, 0.0}};
+  const double h = 1e-5;
+  for (const Case& k : cases) {
+    Fall f = fall_onto(k.off, k.inward, 5.0, k.slip, true, k.damping, true);
+    const Fall plain = fall_onto(k.off, k.inward, 5.0, k.slip, true, k.damping, false);
+    const Model& m = f.model;
+    State& s = f.state;
+    Integrator integ(m, {.step = h, .theta = k.theta});
+    Integrator theta_point(plain.model, {.step = h, .theta = k.theta});
+    const std::size_t n = s.nodes(), nu = integ.unknowns();
+    ASSERT_EQ(nu, 2 * n + 1);
+    const double r = m.sprockets[0].pitch_radius;
+    int checked = 0;
+    double worst = 0.0, differs = 0.0;
+    for (int step = 0; step < 120 && checked < 6; ++step) {
+      ASSERT_TRUE(integ.step(m, s).converged) << step;
+      const SeatContact c =
+          pocket_contact(m.sprockets[0], s.x[0], s.y[0], s.vx[0], s.vy[0], s.angle[0], s.speed[0]);
+      if (!c.active || !(c.force > 1.0) || step % 3) continue;
+      std::vector<double> u(nu);
+      for (std::size_t i = 0; i < n; ++i) {
+        u[2 * i] = s.x[i] + h * s.vx[i];
+        u[2 * i + 1] = s.y[i] + h * s.vy[i];
+      }
+      u[2 * n] = s.angle[0] + h * s.speed[0];
+      std::vector<double> res, jac, jac_theta;
+      integ.newton_system(m, s, u, res, &jac);
+      theta_point.newton_system(plain.model, s, u, res, &jac_theta);
+      const testing::ColumnsAgainstDifferences d = testing::expect_columns_match_differences(
+          integ, m, s, u, jac, jac_theta,
+          [&](std::size_t col) { return col == 2 * n ? 1e-10 / r : 1e-10; }, 1e-5);
+      worst = std::max(worst, d.worst);
+      differs = std::max(differs, d.differs / d.scale);
+      ++checked;
+    }
+    std::printf(
+        "pocket discrete gradient's Newton matrix (%.1f mm off, theta %.1f, c_c %.0f): %d "
+        "iterates, worst |J - FD| / column scale %.2e, the theta point's matrix off by %.2e\n",
+        k.off * 1e3, k.theta, k.damping, checked, worst, differs);
+    EXPECT_GE(checked, 3);
+    EXPECT_GE(differs, k.differs);
+  }
+}
+
+// (3) A wrap on a driver pocket wheel at θ = ½, undamped and frictionless (links and pockets):
+// z = 8, turning clockwise at 5 rad/s, the tight strand (1000 N) level through the top vertex,
+// half a turn of joints in their pockets and the slack strand (200 N) leaving at the bottom, the
+// strands' ends pulled by constant forces, h = 0.1 ms over `steps` steps. The work balance: the
+// driver's work Σ −τ Δψ against the change of the energy (kinetic, links', contacts', the end
+// forces' potential). The mouth's ramp `mouth` (0: the sharp mouth, E's jump where a joint leaves
+// across it).
+struct WrapRun {
+  double kinetic0 = 0.0, worst = 0.0;
+  int steps = 0;  // completed
+};
+WrapRun wrap_run(bool gradient, double mouth, int steps) {
+  const double t = 0.064, d = 0.018, k = 1e8, tight = 1000.0, slack = 200.0, spin = -5.0;
+  Sprocket w = pocket_wheel(t, d, 8, 0.0, 0.0, kClearance, kStiffness, 0.0);
+  w.pocket_mouth = mouth;
+  w.discrete_gradient = gradient;
+  w.driver = true;
+  w.speed = spin;
+  const double r = w.pitch_radius, d1 = w.pocket_angle, d2 = 2 * kPi / 8 - d1;
+  const int c = 21, wrap = 8, bottom = 20;  // node c at the top vertex; link c is t − d (odd)
+  const auto n = static_cast<std::size_t>(c + wrap + bottom + 1);
+  Model m = uniform_chain(n, false, t, 0.42, k, 0.0, false);
+  m.alternation = d;
+  m.sprockets = {w};
+  m.loads = {{.node = 0, .fx = -tight, .fy = 0.0}, {.node = n - 1, .fx = -slack, .fy = 0.0}};
+  State s(n, 1);
+  s.angle = {kPi / 2};  // vertex 0 at the top
+  s.speed = {spin};
+  double x = 0.0;
+  for (int i = c; i >= 0; --i) {  // the tight strand
+    s.x[i] = x;
+    s.y[i] = r;
+    s.vx[i] = -spin * r;
+    if (i > 0) x -= m.rest_length(static_cast<std::size_t>(i - 1)) + tight / k;
+  }
+  double polar = kPi / 2;
+  for (int j = 1; j <= wrap; ++j) {  // half a turn: δ2, δ1, … down to the bottom vertex
+    polar -= (j % 2 == 1) ? d2 : d1;
+    const auto i = static_cast<std::size_t>(c + j);
+    s.x[i] = r * std::cos(polar);
+    s.y[i] = r * std::sin(polar);
+    s.vx[i] = -spin * s.y[i];
+    s.vy[i] = spin * s.x[i];
+  }
+  x = s.x[c + wrap];
+  for (std::size_t i = c + wrap + 1; i < n; ++i) {  // the slack strand
+    x -= m.rest_length(i - 1) + slack / k;
+    s.x[i] = x;
+    s.y[i] = -r;
+    s.vx[i] = spin * r;
+  }
+  Integrator integ(m, {.step = 1e-4, .theta = 0.5});
+  WrapRun out;
+  const Energy e0 = energy(m, s);
+  out.kinetic0 = e0.kinetic;
+  double work = 0.0;
+  for (int step = 0; step < steps; ++step) {
+    const double a0 = s.angle[0];
+    if (!integ.step(m, s).converged) break;
+    work -= integ.applied_torque()[0] * (s.angle[0] - a0);
+    const double balance = energy(m, s).total() - e0.total() - work;
+    if (!std::isfinite(balance)) break;
+    out.worst = std::max(out.worst, std::abs(balance));
+    out.steps = step + 1;
+  }
+  return out;
+}
+
+TEST(DynamicsPocketDiscreteGradient, WrapAtThetaHalfKeepsItsWorkBalance) {
+  const int steps = 1000;  // 0.1 s
+  const double ramp = kClearance;
+  const WrapRun kept = wrap_run(true, ramp, steps), theta = wrap_run(false, ramp, steps);
+  const WrapRun sharp = wrap_run(true, 0.0, steps), sharp_theta = wrap_run(false, 0.0, steps);
+  std::printf(
+      "pocket wrap at theta = 1/2 over 0.1 s (kinetic %.4g J), mouth's ramp c: work balance worst "
+      "%.2e of the kinetic with the discrete gradient (%d steps), %.3g with the theta point's "
+      "force (%d steps); sharp mouth: %.3g (%d steps), %.3g (%d steps)\n",
+      kept.kinetic0, kept.worst / kept.kinetic0, kept.steps, theta.worst / theta.kinetic0,
+      theta.steps, sharp.worst / sharp.kinetic0, sharp.steps, sharp_theta.worst / sharp.kinetic0,
+      sharp_theta.steps);
+  EXPECT_EQ(kept.steps, steps);
+  EXPECT_LT(kept.worst, 1e-6 * kept.kinetic0);
+  EXPECT_TRUE(theta.steps < steps || theta.worst > 100.0 * kept.worst);
+}
+
+}  // namespace
+}  // namespace catena::dynamics
