@@ -1,6 +1,6 @@
-// Reading the `drive` analyses' records in the property tests (drive_property_test.cpp, the fast
-// ones; drive_random_test.cpp, the slow program's): a field as a number, a number as text that
-// reads back as the same double, and the tolerance of identities of the same numbers.
+// Reading the `drive` analyses' records in the property tests (drive_property_test.cpp,
+// drive_random_test.cpp): a field as a number, a number as text that reads back as the same
+// double, and the tolerance of identities of the same numbers.
 #pragma once
 
 #include <cstdio>

@@ -43,6 +43,18 @@ struct PolygonWrap {
 PolygonWrap polygon_hull(double pitch, int z1, int z2, double center_distance, double phase1,
                          double phase2);
 
+/// A pitch polygon: `teeth` vertices (the seated pins) on the circle of `radius` about (x, y), at
+/// angles phase + 2πi/teeth, i = 0 … teeth − 1 (counter-clockwise) [m, rad].
+struct PitchPolygon {
+  double x = 0.0, y = 0.0, radius = 0.0, phase = 0.0;
+  int teeth = 0;
+};
+
+/// The bridge of the convex hull of two disjoint pitch polygons from `a` to `b`, both polygons
+/// on its left (polygon_hull's spans): (vertex index in a, vertex index in b). Throws
+/// std::invalid_argument unless both have 1 to 10⁶ teeth.
+std::pair<int, int> hull_bridge(const PitchPolygon& a, const PitchPolygon& b);
+
 /// The taut wrap of `links` rigid links for the driver at `phase1`: centre distance and the
 /// driven sprocket's phase such that both spans are whole numbers of links. Throws
 /// std::domain_error when the chain is too short to pass around both sprockets.

@@ -2,6 +2,7 @@
 #include "catena/drive/layout.hpp"
 
 #include <algorithm>
+#include <array>
 #include <boost/math/tools/minima.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "catena/core/progress.hpp"
 
@@ -42,42 +44,115 @@ struct Polygon {
 
 int wrap_index(int i, int n) { return ((i % n) + n) % n; }
 
+double dot(Point v, Point u) { return v.x * u.x + v.y * u.y; }
+
+// A polygon's vertices as the bridge search asks for them, each one's sine and cosine taken once:
+// the search touches a few neighbouring vertices, each several times. A direct-mapped table of
+// the last ones computed (keyed by the index modulo its size; a clash computes again).
+class Vertices {
+ public:
+  explicit Vertices(const Polygon& p) : p_(p) { keys_.fill(-1); }
+  Point operator[](int i) {
+    const int k = wrap_index(i, p_.teeth);
+    const auto slot = static_cast<std::size_t>(k) % kSlots;
+    if (keys_[slot] != k) {
+      keys_[slot] = k;
+      points_[slot] = p_[k];
+    }
+    return points_[slot];
+  }
+
+ private:
+  static constexpr std::size_t kSlots = 16;
+  const Polygon& p_;
+  std::array<int, kSlots> keys_{};
+  std::array<Point, kSlots> points_{};
+};
+
+// The vertex extreme in the direction `out`: of the largest dot product, the first (lowest
+// index) of equal ones. Every vertex scanned.
+int extreme_by_scan(const Polygon& p, Point out) {
+  int best = 0;
+  double best_dot = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < p.teeth; ++i) {
+    const double d = dot(p[i], out);
+    if (d > best_dot) {
+      best_dot = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
+// The same vertex from the three nearest the direction of `out`. The vertex nearest it in angle,
+// n, is δ ≤ π/z away, its neighbour on the other side of `out`, n', 2π/z − δ; every other vertex
+// is at least 2π/z + δ away, so its dot product is below n's by at least
+// g = 2 r |out| sin²(π/z). The rounding of the computed dot products (the phase's, the centre's
+// and the products' few ulps) is far below g/2 where `gap > noise` below (noise overstates it
+// more than ten times), so no vertex but n' can equal or pass n as computed. The estimate
+// k = round((atan2(out) − phase) z/2π) is n or, at a near tie, n': k ± 1 holds both. Among those
+// the first largest is the scan's, ties included (with two vertices k ± 1 is both, and one has
+// no gap). Where the arithmetic cannot be bounded so (non-finite or degenerate input, a huge
+// phase or centre) the scan decides.
+int extreme(const Polygon& p, Point out, Vertices& v) {
+  constexpr int kReach = 1;
+  const double z = p.teeth;
+  const double gap = 2 * std::pow(std::sin(kPi / z), 2);
+  const double centre = std::abs(p.centre.x) + std::abs(p.centre.y);
+  const double noise = 1e-14 * (std::abs(p.phase) + 2 * kPi + 1 + centre / p.radius);
+  const double size = std::abs(out.x) + std::abs(out.y);
+  const double turns = (std::atan2(out.y, out.x) - p.phase) * z / (2 * kPi);
+  // (a non-finite phase or centre or a NaN radius fails the first test, an infinite radius or a
+  // non-finite normal the second, a radius ≤ 0 or a zero normal the last)
+  if (!(gap > noise) || !((centre + p.radius) * size < 1e300) || !(p.radius * size > 1e-200))
+    return extreme_by_scan(p, out);
+  // |turns| < 2⁵³ here (gap > noise bounds the phase), so the rounding and fmod are exact
+  double k0 = std::fmod(std::round(turns), z);
+  if (k0 < 0) k0 += z;
+  const int k = static_cast<int>(k0);
+  int best = -1;
+  double best_dot = 0;
+  for (int j = -kReach; j <= kReach; ++j) {
+    const int i = wrap_index(k + j, p.teeth);
+    const double d = dot(v[i], out);
+    if (best < 0 || d > best_dot || (d == best_dot && i < best)) {
+      best = i;
+      best_dot = d;
+    }
+  }
+  return best;
+}
+
 // The bridge of the hull of two disjoint convex polygons from A to B with both polygons on its
-// left: (index in A, index in B).
-std::pair<int, int> bridge(const Polygon& a, const Polygon& b) {
+// left: its end vertices' indices and points. From the vertices extreme in the bridge's outward
+// normal, each end steps to a neighbour that lies more than the tolerance outside the line.
+struct Bridge {
+  int ia, ib;
+  Point pa, pb;
+};
+
+Bridge bridge(const Polygon& a, const Polygon& b) {
   const Point d = b.centre - a.centre;
   const Point out{d.y, -d.x};  // right normal: the bridge is extreme in this direction
-  auto extreme = [&](const Polygon& p) {
-    int best = 0;
-    double best_dot = -std::numeric_limits<double>::infinity();
-    for (int i = 0; i < p.teeth; ++i) {
-      const Point v = p[i];
-      const double dot = v.x * out.x + v.y * out.y;
-      if (dot > best_dot) {
-        best_dot = dot;
-        best = i;
-      }
-    }
-    return best;
-  };
-  int ia = extreme(a), ib = extreme(b);
+  Vertices va(a), vb(b);
+  int ia = extreme(a, out, va), ib = extreme(b, out, vb);
   const double scale = std::pow(std::hypot(d.x, d.y) + a.radius + b.radius, 2);
   const double tol = 1e-14 * scale;
   for (int guard = 0; guard < 4 * (a.teeth + b.teeth); ++guard) {
     bool changed = false;
     for (int step : {1, -1}) {
-      if (cross(a[ia], b[ib], a[ia + step]) < -tol) {
+      if (cross(va[ia], vb[ib], va[ia + step]) < -tol) {
         ia = wrap_index(ia + step, a.teeth);
         changed = true;
       }
-      if (cross(a[ia], b[ib], b[ib + step]) < -tol) {
+      if (cross(va[ia], vb[ib], vb[ib + step]) < -tol) {
         ib = wrap_index(ib + step, b.teeth);
         changed = true;
       }
     }
     if (!changed) break;
   }
-  return {ia, ib};
+  return {ia, ib, va[ia], vb[ib]};
 }
 
 double perimeter(const PolygonWrap& w, double pitch) {
@@ -122,13 +197,28 @@ PolygonWrap polygon_hull(double pitch, int z1, int z2, double a, double phase1, 
   w.center_distance = a;
   w.phase1 = phase1;
   w.phase2 = phase2;
-  std::tie(w.seat1_out, w.seat2_in) = bridge(p1, p2);  // lower span, left to right
-  std::tie(w.seat2_out, w.seat1_in) = bridge(p2, p1);  // upper span, right to left
+  const Bridge lower = bridge(p1, p2);  // left to right
+  const Bridge upper = bridge(p2, p1);  // right to left
+  w.seat1_out = lower.ia;
+  w.seat2_in = lower.ib;
+  w.seat2_out = upper.ia;
+  w.seat1_in = upper.ib;
   w.wrap1 = wrap_index(w.seat1_out - w.seat1_in, z1);
   w.wrap2 = wrap_index(w.seat2_out - w.seat2_in, z2);
-  w.lower_length = distance(p1[w.seat1_out], p2[w.seat2_in]);
-  w.upper_length = distance(p2[w.seat2_out], p1[w.seat1_in]);
+  w.lower_length = distance(lower.pa, lower.pb);
+  w.upper_length = distance(upper.pa, upper.pb);
   return w;
+}
+
+std::pair<int, int> hull_bridge(const PitchPolygon& a, const PitchPolygon& b) {
+  constexpr int kMaxTeeth = 1000000;
+  for (const PitchPolygon* p : {&a, &b})
+    if (p->teeth < 1 || p->teeth > kMaxTeeth)
+      throw std::invalid_argument("hull_bridge: teeth " + std::to_string(p->teeth) +
+                                  " outside 1 to 1000000");
+  const Bridge r =
+      bridge({{a.x, a.y}, a.radius, a.phase, a.teeth}, {{b.x, b.y}, b.radius, b.phase, b.teeth});
+  return {r.ia, r.ib};
 }
 
 PolygonWrap polygon_wrap(double pitch, int z1, int z2, int links, double phase1) {
