@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <numbers>
 #include <random>
@@ -334,6 +335,9 @@ TEST(DynamicsSeatFriction, DerivativesMatchFiniteDifferencesOverTheBodysBlend) {
     (std::abs(f.slip) < 3e-3 ? in_band : sliding)++;
     expect_derivatives(w, contact, p, psi, omega, "body trial " + std::to_string(trial));
   }
+  std::printf(
+      "the body's blend: %d joints, %d in the band, %d sliding, %d with P in (0.05, 0.95)\n", count,
+      in_band, sliding, faded);
   EXPECT_GE(count, 100);
   EXPECT_GE(in_band, 20);
   EXPECT_GE(sliding, 20);
