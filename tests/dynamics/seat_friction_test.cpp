@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <numbers>
 #include <random>
@@ -291,6 +292,56 @@ TEST(DynamicsSeatFriction, DerivativesMatchFiniteDifferencesInAPocket) {
       EXPECT_GE(released, 10);
     }
   }
+}
+
+// The same derivatives on a pocket wheel's body between the pockets, in the capture's blend
+// (docs/models/dynamics.md, "Pocket wheel: friction"): joints 10c–20c from their vertex within the
+// mouth, where the pocket's friction is faded by its share P of the depth (friction_weight, 1 at
+// 10c and 0 at 20c) on the blended contact's force and surface: ∇P is in ∂F/∂q and, through the
+// turning, in ∂F/∂ψ and the torque's. Without ∇P (friction_weight_dq) the q and ψ derivatives miss
+// by μ f_t-sized terms and the test fails.
+TEST(DynamicsSeatFriction, DerivativesMatchFiniteDifferencesOverTheBodysBlend) {
+  std::mt19937 rng(2117);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Sprocket w = pocket_wheel(0.064, 0.018, 8, 0.03, -0.02, 1e-4, 1e8, 2000.0);
+  w.friction = 0.3;
+  const double c = w.pocket_clearance, mouth = w.pitch_radius + 0.5 * c;
+  int count = 0, in_band = 0, sliding = 0, faded = 0;
+  for (int trial = 0; trial < 4000 && count < 150; ++trial) {
+    const double psi = 2 * kPi * u(rng), omega = 40.0 * (u(rng) - 0.5);
+    const PocketVertex v = nearest_pocket(w, 2 * kPi * u(rng), psi);
+    const double dist = c * (10.05 + 9.9 * u(rng)), dir = 2 * kPi * u(rng);
+    const double x = w.centre_x + w.pitch_radius * std::cos(v.angle) + dist * std::cos(dir);
+    const double y = w.centre_y + w.pitch_radius * std::sin(v.angle) + dist * std::sin(dir);
+    const double rx = x - w.centre_x, ry = y - w.centre_y;
+    if (!(std::hypot(rx, ry) < mouth - 1e-8)) continue;
+    const SeatContact c0 = pocket_contact(w, x, y, -omega * ry, omega * rx, psi, omega);
+    if (!c0.active || c0.surface != 3 || c0.seat != v.index) continue;
+    const double slip = (u(rng) < 0.5 ? 3e-3 : 0.2) * (2.0 * u(rng) - 1.0);
+    const double rate = 0.01 * (u(rng) - 0.3);
+    const Point p{x, y, rate * c0.nx - slip * c0.ny - omega * ry,
+                  rate * c0.ny + slip * c0.nx + omega * rx};
+    const ContactAt contact = [&](const Point& q, double pa, double wa) {
+      return pocket_contact(w, q.x, q.y, q.vx, q.vy, pa, wa);
+    };
+    const SeatContact cv = contact(p, psi, omega);
+    if (!(cv.force > 1.0)) continue;
+    ++count;
+    ASSERT_GT(cv.friction_weight, 0.0);
+    ASSERT_LT(cv.friction_weight, 1.0);
+    faded += cv.friction_weight > 0.05 && cv.friction_weight < 0.95 ? 1 : 0;
+    const SeatFriction f = seat_friction(w, cv, p.x, p.y, p.vx, p.vy, omega);
+    EXPECT_NE(f.friction_force, 0.0);
+    (std::abs(f.slip) < 3e-3 ? in_band : sliding)++;
+    expect_derivatives(w, contact, p, psi, omega, "body trial " + std::to_string(trial));
+  }
+  std::printf(
+      "the body's blend: %d joints, %d in the band, %d sliding, %d with P in (0.05, 0.95)\n", count,
+      in_band, sliding, faded);
+  EXPECT_GE(count, 100);
+  EXPECT_GE(in_band, 20);
+  EXPECT_GE(sliding, 20);
+  EXPECT_GE(faded, 50);
 }
 
 // Outside the band the force is Coulomb's μ f against the slip, within 1/(2 (v_t/v_ε)²); it is

@@ -110,8 +110,9 @@ struct Sprocket {
   /// The wheel's body between its pockets (docs/models/dynamics.md, "Pocket wheel: the body
   /// between the pockets"): within the mouth, a joint more than 10c from its nearest vertex is
   /// not that pocket's but meets the rim R + c/2, which pushes it radially out (penetration
-  /// R + c/2 − |q − O|, the seats' law, no friction); the two blend over 10c–20c. false leaves the
-  /// nearest vertex's pull however far the joint is (the law before; kept for the tests).
+  /// R + c/2 − |q − O|, the seats' law, no friction); the two blend over 10c–20c, the pocket's
+  /// friction fading with them. false leaves the nearest vertex's pull however far the joint is
+  /// (the law before; kept for the tests).
   bool pocket_body = true;
   /// [-] μ of the roller–seat contact: Coulomb friction against the roller's slip along the seat
   /// surface relative to the wheel (0: frictionless seats, the default)
@@ -674,7 +675,8 @@ struct SeatContact {
   double curvature = 0.0;
   /// where the roller touches: 0 the seating arc, 1 a flank, 2 a tooth's corner (the flank/tip
   /// junction, or the flanks' apex), 3 the tip's arc (on a pocket wheel: the body between the
-  /// pockets, Sprocket::pocket_body, which takes no seat friction)
+  /// pockets, Sprocket::pocket_body, whose seat friction is the pocket's faded over the capture's
+  /// blend: friction_weight)
   int surface = 0;
   double nx = 0.0, ny = 0.0;  ///< unit vector from the seat centre to the roller
   /// The pocket's mouth ramp (pocket_contact; zero elsewhere): the part of the exact elastic
@@ -685,12 +687,18 @@ struct SeatContact {
   /// (row-major) beyond the fields' −c n nᵀ: the damper acts along e/|e|, the fields' n is the
   /// force's direction.
   double dv_extra[4] = {0.0, 0.0, 0.0, 0.0};
-  /// The pocket's mouth ramp and release (zero elsewhere, where the fields are exact): the rest
-  /// of the exact ∂F/∂q and ∂F/∂v of the contact force F = −f n on the joint (row-major, the
+  /// The pocket's mouth ramp, release and body (zero elsewhere, where the fields are exact): the
+  /// rest of the exact ∂F/∂q and ∂F/∂v of the contact force F = −f n on the joint (row-major, the
   /// damper's share included) beyond what seat_friction reads from the fields,
   /// −n [(∂f/∂g) nᵀ + c (ω + κ v_t) tᵀ] − f κ t tᵀ and −c n nᵀ (v_t the slip along t).
   double friction_dq[4] = {0.0, 0.0, 0.0, 0.0};
   double friction_dv[4] = {0.0, 0.0, 0.0, 0.0};
+  /// The friction's share P (1 except on a pocket wheel's body between the pockets, where the
+  /// pocket's friction fades with the pocket's share of the depth: P from 1 at the capture's
+  /// `from` to 0 at `to`) and ∂P/∂q [1/m]: seat_friction gives P times its force, with P's
+  /// gradient in the derivatives.
+  double friction_weight = 1.0;
+  double friction_weight_dq[2] = {0.0, 0.0};
   double torque = 0.0;                ///< [N·m] on the wheel, counter-clockwise positive
   double seat_x = 0.0, seat_y = 0.0;  ///< [m] the seat centre
   /// The discrete gradient (seat_contact_at with a SeatStep; zero elsewhere): ∂f/∂g₁ [N/m], the

@@ -1461,11 +1461,22 @@ SeatFriction seat_friction(const Sprocket& w, const SeatContact& c, double x, do
   const double root = std::sqrt(vt * vt + ve2);
   const double phi = vt / root, dphi = ve2 / (root * root * root);
   const double mu = w.friction;
-  const double ft = -mu * f * phi;
-  const double dftq[2] = {-mu * (phi * dfq[0] + f * dphi * dvtq[0]),
-                          -mu * (phi * dfq[1] + f * dphi * dvtq[1])};
-  const double dftv[2] = {-mu * (phi * dfv[0] + f * dphi * dvtv[0]),
-                          -mu * (phi * dfv[1] + f * dphi * dvtv[1])};
+  double ft = -mu * f * phi;
+  double dftq[2] = {-mu * (phi * dfq[0] + f * dphi * dvtq[0]),
+                    -mu * (phi * dfq[1] + f * dphi * dvtq[1])};
+  double dftv[2] = {-mu * (phi * dfv[0] + f * dphi * dvtv[0]),
+                    -mu * (phi * dfv[1] + f * dphi * dvtv[1])};
+  // A pocket wheel's body between the pockets: the pocket's friction faded, P f_t, whose
+  // ∂/∂q = P ∂f_t/∂q + f_t ∇P (P depends on q alone, and on ψ only as q does relative to the
+  // wheel: the turning derivatives below hold as they are)
+  const double pw = c.friction_weight, *dpw = c.friction_weight_dq;
+  if (pw != 1.0 || dpw[0] != 0.0 || dpw[1] != 0.0) {
+    for (int j = 0; j < 2; ++j) {
+      dftq[j] = pw * dftq[j] + ft * dpw[j];
+      dftv[j] *= pw;
+    }
+    ft *= pw;
+  }
   out.friction_force = ft;
   out.slip = vt;
   out.power = ft * vt;

@@ -615,8 +615,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       }
       // Seat friction (docs/models/dynamics.md, "Seat friction"): F(q, v, ψ, ω) on the roller at
       // the θ point with the step's velocities, its reaction's torque on the wheel
-      // (none on a pocket wheel's body between the pockets: surface 3, "Pocket wheel: the body")
-      const bool rubs = wheel.friction > 0.0 && !(wheel.pocket && sc.surface == 3);
+      // (on a pocket wheel's body between the pockets the pocket's, faded over the capture's blend
+      // and none beyond it: friction_weight, "Pocket wheel: friction")
+      const bool rubs = wheel.friction > 0.0 && sc.friction_weight > 0.0;
       const SeatFriction sf =
           rubs ? seat_friction(wheel, sc, qx, qy, vx, vy, omega) : SeatFriction{};
       if (rubs) {

@@ -202,7 +202,8 @@ bool in_body(const Sprocket& w, double dist) {
 // F = −f ∇d, ∇d = −r̂ + W (n + r̂) + (g − h) ∇W, ∇W = Q P′ n − P Q′ r̂, f = f_el(d) + c(d) ∇d·v_rel
 // (never pulling); the torque f (r × ∇d) (the rim's part has no moment). The fields carry the
 // force's direction and size; stiffness, damping and curvature are 0 and the exact ∂F/∂q and
-// ∂F/∂v are dq_extra and dv_extra. surface = 3: no seat friction.
+// ∂F/∂v are dq_extra and dv_extra. surface = 3; its seat friction is the pocket's times P
+// (friction_weight).
 void apply_body(const Sprocket& w, double dist, double rx, double ry, double vx, double vy,
                 double speed, SeatContact& c) {
   const Capture cap = body_capture(w);
@@ -258,6 +259,15 @@ void apply_body(const Sprocket& w, double dist, double rx, double ry, double vx,
   c.depth = d;
   c.stiffness = c.damping = c.curvature = 0.0;
   c.surface = 3;
+  // The pocket's friction, faded with P (the pocket's share along |e|, the blend's own weight): on
+  // this contact's force and along its surface (seat_friction's n = ∇d/|∇d|), so that at `from`,
+  // where d = g and ∇d = n (away from the mouth), it is the pocket's friction; 0 from `to` on.
+  // With the fields 0 the normal force's whole exact Jacobians are the friction's rest.
+  c.friction_weight = p;
+  c.friction_weight_dq[0] = p1 * n[0];  // ∇P = P′ ∇|e|
+  c.friction_weight_dq[1] = p1 * n[1];
+  std::copy(c.dq_extra, c.dq_extra + 4, c.friction_dq);
+  std::copy(c.dv_extra, c.dv_extra + 4, c.friction_dv);
 }
 
 // The point of pocket vertex `angle` on the pitch circle.
