@@ -264,7 +264,9 @@ struct Guide {
   /// The normal force's elastic part over a step (docs/models/dynamics.md, "Guides: the discrete
   /// gradient"): true, the discrete gradient f_e = (E(g₁) − E(g₀))/(g₁ − g₀) of the contact's
   /// energy between the gaps at the step's start and end (guide_contact with a GuideStep), so that
-  /// on a straight rail its work over the step is exactly −ΔE; false: the force at the θ point.
+  /// on a straight rail its work over the step is exactly −ΔE, and the damper over the step,
+  /// (C(g₁) − C(g₀))/h (C the integral of the ramped damping coefficient; its work never
+  /// positive); false: the force and the damper at the θ point.
   /// use_line_law sets it (the line law's default); the linear penalty keeps the θ point's.
   bool discrete_gradient = false;
 };
@@ -293,7 +295,8 @@ struct GuideContact {
   double slip = 0.0;            ///< [m/s] v_t = v·t, the roller's sliding speed along the rail
   double energy = 0.0;          ///< [J] the elastic contact energy
   /// [W] the power of the normal force's damping part on the roller, −(f − f_el) ġ ≤ 0 (f_el the
-  /// elastic part; with f clamped at 0 the damper cancels f_el): the contact damper's dissipation
+  /// elastic part; with f clamped at 0 the damper cancels f_el): the contact damper's dissipation;
+  /// over a step (the discrete gradient) −(f − f_el) Δg/h, Δg = g₁ − g₀
   double damping_power = 0.0;
   /// [m] s along t (guide_position; stick law only, else 0)
   double position = 0.0;
@@ -338,11 +341,13 @@ struct GuideStep {
 /// θ point's force above, bit for bit). With it the elastic part is the discrete gradient
 /// (E(g₁) − E(g₀))/(g₁ − g₀) of the law's energy between the gaps g₀ at x₀ and g₁ at x₁, taken in
 /// the same rail's geometry (no end test; E = 0 for g ≤ 0), E'((g₀ + g₁)/2) where |g₁ − g₀| is
-/// below 1e-6 of the larger gap; the direction n, the ends' test, the far side's (g < 2r) and
-/// the damper c ġ stay at the θ point (x, y). It is active while the larger of g₀ and g₁ is
+/// below 1e-6 of the larger gap; the damper is taken over the step too, f_d = (C(g₁) − C(g₀))/h
+/// with C(g) = ∫₀^g c(s) ds, c(g) = c_c min(1, g/ε) (0 for g ≤ 0), the seats' (∂f_d/∂g₁ = c(g₁)/h
+/// ≥ 0, its work −c̄ Δg²/h ≤ 0), f = max(0, f_e + f_d); the direction n, the ends' test and the
+/// far side's (g < 2r) stay at the θ point (x, y). It is active while the larger of g₀ and g₁ is
 /// positive (a roller dropping in from g₀ ≤ 0 is pushed on the step it enters; `penetration` is
-/// the θ point's gap, then ≤ 0 possibly). ∂f_e/∂x₁ = −(∂f_e/∂g₁) n₁ enters dv as h ∂f_e/∂x₁ (the
-/// velocity is (x₁ − x₀)/h), so that −(hθ dq + dv) is still the step's exact block.
+/// the θ point's gap, then ≤ 0 possibly). ∂f/∂x₁ = −(∂f_e/∂g₁ + ∂f_d/∂g₁) n₁ enters dv as
+/// h ∂f/∂x₁ (the velocity is (x₁ − x₀)/h), so that −(hθ dq + dv) is still the step's exact block.
 GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
                            double vy, double anchor, const GuideStep* step);
 /// [m] s, the tangential position along the contact's tangent t = (−n_y, n_x): on a straight rail

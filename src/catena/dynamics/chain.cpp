@@ -686,6 +686,24 @@ DiscreteGradient discrete_gradient(const Law& elastic, double g0, double g1) {
   }
   return out;
 }
+
+// A contact's damper over the step from the gap g0 to g1 (the discrete gradient's; docs
+// "Sprockets: the discrete gradient", "The damper over the step"): f_d = (C(g₁) − C(g₀))/h,
+// C(g) = ∫₀^g c(s) ds the integral of the ramped coefficient c(g) = c_c min(1, g/ε) (0 for g ≤ 0),
+// c_c (g₁ − g₀)/h once both ends are past ε, and ∂f_d/∂g₁ = c(g₁)/h. The slope is never
+// negative, and the work −f_d Δg = −c̄ Δg²/h is never positive (c̄ the mean of c over [g₀, g₁]).
+// The θ point's c(g_θ) ġ_θ falls as the roller goes deeper while it leaves (∂f/∂g = c_c ġ/ε < 0
+// within the ramp), which can fold the step's residual along n. A seat's and a rail's.
+struct StepDamper {
+  double force = 0.0, slope = 0.0;
+};
+StepDamper step_damper(double cc, double eps, double g0, double g1, double h) {
+  auto potential = [&](double gap) {
+    if (!(gap > 0.0)) return 0.0;
+    return gap < eps ? 0.5 * cc * gap * gap / eps : cc * (gap - 0.5 * eps);
+  };
+  return {(potential(g1) - potential(g0)) / h, cc * std::clamp(g1 / eps, 0.0, 1.0) / h};
+}
 }  // namespace
 
 GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, double y, double vx,
@@ -714,16 +732,20 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   // One-sided: a roller whose centre is past the rail's surface is on its far side, not pressed
   // into it (so a rail does not catch the chain's other run behind it).
   if (!(g < 2.0 * r)) return c;
-  // the discrete gradient over the step: the gaps at its ends, ∂g₁/∂x₁ = −n₁
+  // the discrete gradient over the step: the gaps at its ends, ∂g₁/∂x₁ = −n₁; the damper over the
+  // step too (step_damper, as the seats')
   const bool gradient = step != nullptr && gd.discrete_gradient;
-  double g1 = 0.0, n1x = 0.0, n1y = 0.0;
+  double g1 = 0.0, n1x = 0.0, n1y = 0.0, dg = 0.0;
   DiscreteGradient dgr;
+  StepDamper damper;
   if (gradient) {
     double n0x = 0.0, n0y = 0.0;
     const double g0 = rail_gap(gd, frame, step->x0, step->y0, n0x, n0y);
     g1 = rail_gap(gd, frame, step->x1, step->y1, n1x, n1y);
     if (!(std::max(g0, g1) > 0.0)) return c;
     dgr = discrete_gradient([&](double gap) { return rail_elastic(gd, gap); }, g0, g1);
+    damper = step_damper(gd.contact_damping, gd.contact_smoothing, g0, g1, step->h);
+    dg = g1 - g0;
   } else if (!(g > 0.0)) {
     return c;
   }
@@ -736,9 +758,10 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   const LineForce lf = rail_elastic(gd, g);
   const double elastic = gradient ? dgr.force : lf.force;
   const double slope = gradient ? 0.0 : lf.stiffness;  // ∂f_e/∂q at the θ point
-  // the damper ramps in over the first ε (none at g ≤ 0, on a discrete gradient's entry or exit)
-  const double cg = gd.contact_damping * std::clamp(g / eps, 0.0, 1.0);
-  const double dcg = g > 0.0 && g < eps ? gd.contact_damping / eps : 0.0;
+  // the θ point's damper (without the discrete gradient) ramps in over the first ε, none at g ≤ 0;
+  // with it, nothing at the θ point: the damper is the step's, a function of g₀ and g₁ alone
+  const double cg = gradient ? 0.0 : gd.contact_damping * std::clamp(g / eps, 0.0, 1.0);
+  const double dcg = !gradient && g > 0.0 && g < eps ? gd.contact_damping / eps : 0.0;
   c.active = true;
   c.penetration = g;
   c.nx = nx;
@@ -752,17 +775,20 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
     c.position_scale = place.sigma;
   }
   c.energy = lf.energy;
-  const double f = elastic + cg * rate;
-  if (!(f > 0.0)) {  // separating: no force; the damper cancels the elastic part
-    c.damping_power = elastic * rate;
+  const double f = gradient ? elastic + damper.force : elastic + cg * rate;
+  // the damper's power: −(f − f_e) ġ, over the step −f_d Δg/h (the work −c̄ Δg²/h ≤ 0); separating
+  // (f ≤ 0: no force) the damper cancels the elastic part, f_e ġ (f_e Δg/h: the clamp needs
+  // f_d < 0, so Δg < 0)
+  if (!(f > 0.0)) {
+    c.damping_power = gradient ? elastic * dg / step->h : elastic * rate;
     return c;
   }
-  c.damping_power = -cg * rate * rate;
+  c.damping_power = gradient ? -damper.force * dg / step->h : -cg * rate * rate;
   // f and its gradients (∂g/∂q = −n, ∂ġ/∂q = −κ v_t tᵀ, ∂ġ/∂v = −nᵀ)
   const double fg = slope + dcg * rate;
   const double dfq[2] = {-fg * nx - cg * kappa * vt * tx, -fg * ny - cg * kappa * vt * ty};
-  // the discrete gradient's dependence on x₁ = x₀ + h v: h ∂f_e/∂x₁ = −h (∂f_e/∂g₁) n₁
-  const double dgv = gradient ? step->h * dgr.slope : 0.0;
+  // the discrete gradient's dependence on x₁ = x₀ + h v: h ∂f/∂x₁ = −h (∂f_e/∂g₁ + ∂f_d/∂g₁) n₁
+  const double dgv = gradient ? step->h * (dgr.slope + damper.slope) : 0.0;
   const double dfv[2] = {-cg * nx - dgv * n1x, -cg * ny - dgv * n1y};
   // the friction f_t and its gradients, by the stick law or the regularised one
   double ft = 0.0, dftq[2] = {0.0, 0.0}, dftv[2] = {0.0, 0.0};
@@ -1341,24 +1367,15 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
   if (!(std::max({start.g, end.g, g}) > 0.0)) return c;
   const DiscreteGradient dgr =
       discrete_gradient([&](double gap) { return seat_elastic(w, gap); }, start.g, end.g);
-  // The damper over the step too: f_d = (C(g₁) − C(g₀))/h, C(g) = ∫₀^g c(s) ds the integral of
-  // the ramped coefficient c(g) = c_c min(1, g/ε) (0 for g ≤ 0): c_c (g₁ − g₀)/h once both ends
-  // are past ε. Its ∂f_d/∂g₁ = c(g₁)/h is never negative, and its work −f_d Δg = −c̄ Δg²/h ≤ 0
-  // (c̄ the mean of c over [g₀, g₁]). The θ point's c(g_θ) ġ_θ falls as the roller goes deeper
-  // while it leaves (∂f/∂g = c_c ġ/ε < 0 within the ramp): at θ = ½ the rollers rattling across
-  // their seats (|ġ| ≈ 0.16 m/s) made the residual's slope along n negative there, hθ c_c|ġ|/ε
-  // beyond m/(hθ) + c_c + h ∂f_e/∂g₁, and Newton stalled at g_θ = ε.
-  const double eps = w.contact_smoothing, cseat = w.contact_damping;
-  auto potential = [&](double gap) {
-    if (!(gap > 0.0)) return 0.0;
-    return gap < eps ? 0.5 * cseat * gap * gap / eps : cseat * (gap - 0.5 * eps);
-  };
+  // The damper over the step too (step_damper): at θ = ½ the θ point's damper made the rollers
+  // rattling across their seats (|ġ| ≈ 0.16 m/s) fold the residual along n, hθ c_c|ġ|/ε beyond
+  // m/(hθ) + c_c + h ∂f_e/∂g₁, and Newton stalled at g_θ = ε.
   const double h = step->h, dg = end.g - start.g;
   const double elastic = dgr.force;
-  const double damper = (potential(end.g) - potential(start.g)) / h;
-  c.force = std::max(0.0, elastic + damper);
+  const StepDamper damper = step_damper(w.contact_damping, w.contact_smoothing, start.g, end.g, h);
+  c.force = std::max(0.0, elastic + damper.force);
   c.damping = c.stiffness = 0.0;  // nothing at the θ point: f depends on g₁ alone
-  c.gap_slope = c.force > 0.0 ? dgr.slope + cseat * std::clamp(end.g / eps, 0.0, 1.0) / h : 0.0;
+  c.gap_slope = c.force > 0.0 ? dgr.slope + damper.slope : 0.0;
   // the damper's share f − f_e (−f_e where clamped) against the step's Δg: its work −(f − f_e) Δg
   c.damping_power = -(c.force - elastic) * dg / h;
   c.energy = seat_elastic(w, g).energy;  // the θ point's, as without the gradient
