@@ -691,6 +691,18 @@ TEST(DynamicsCli, DiscreteGradientKeyTakesTheSeatsForceOverTheStep) {
   EXPECT_FALSE(pocket_plain.contains("discrete_gradient"));
   EXPECT_EQ(pocket_on["discrete_gradient"], true);
   EXPECT_NE(pocket_on["span"], pocket_plain["span"]);
+  // below θ = 0.6 on the pocket wheel the warning does not promise the seats' balance at ½ (the
+  // example there stops at step 474): a 10 ms run is enough to read it
+  std::string pocket_short = pocket_text;
+  const std::string one_second = "duration = \"1 s\"";
+  ASSERT_NE(pocket_short.find(one_second), std::string::npos);
+  pocket_short.replace(pocket_short.find(one_second), one_second.size(), "duration = \"10 ms\"");
+  const std::string pocket_half =
+      with_dynamics_key(pocket_short, "discrete_gradient = true\ntheta = 0.5");
+  const std::string pocket_warning = theta_warning(json_run("dg_pocket_half.toml", pocket_half));
+  EXPECT_NE(pocket_warning.find("pocket-wheel runs below 0.6 may stop"), std::string::npos)
+      << pocket_warning;
+  EXPECT_EQ(pocket_warning.find("damped or not"), std::string::npos) << pocket_warning;
 }
 
 // `catena report` on the example: the time series (each curve's extremes those of the JSON),

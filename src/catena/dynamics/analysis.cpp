@@ -137,7 +137,8 @@ std::vector<Parameter> table_fields() {
       text("discrete_gradient",
            "true or false: the ISO seats', the pocket wheels' pockets' and the guides' rails' "
            "elastic force as the discrete gradient of the contact's energy over each step "
-           "(conserving, for theta = 0.5) instead of at the theta point (default true with "
+           "(conserving, for theta = 0.5, on ISO seats and rails, whose dampers it takes over "
+           "the step too) instead of at the theta point (default true with "
            "contact_law = \"line\", false with \"linear\" and with wheel = \"pocket\")"),
       // the round-link chain on pocket wheels (docs/models/dynamics.md, "Pocket wheel")
       text("wheel",
@@ -2820,19 +2821,25 @@ Result run(const analysis::Inputs& in) {
            d.hinge_law.stick_stiffness, warn, "N m/rad"});
   }
   // with the discrete gradient (the seats' elastic force and damper over the step) drives close
-  // their work balance at θ = ½, damped or not (docs, "Sprockets: the discrete gradient")
-  if (d.theta < 0.6)
-    out.diagnostics.push_back(
-        {Diagnostic::Severity::kWarning, "dynamics.theta_below_0_6",
-         "theta = " + format_g(d.theta, 4) +
-             (d.discrete_gradient
-                  ? " < 0.6: with discrete_gradient = true drives with roller-seat contact, "
-                    "damped or not, keep their work balance down to 0.5 (the seats' elastic "
-                    "force and damper taken over the step; docs/models/dynamics.md, "
-                    "\"Sprockets: the discrete gradient\")"
-                  : " < 0.6: drives with roller-seat contact diverged below 0.6 "
-                    "(docs/models/dynamics.md)"),
-         d.theta, 0.6});
+  // their work balance at θ = ½, damped or not (docs, "Sprockets: the discrete gradient"); on
+  // pocket wheels the sharp mouth's energy jump and the tension-only links stay outside it, and
+  // the pocket example at ½ stops ("Pocket wheel: the discrete gradient")
+  if (d.theta < 0.6) {
+    const char* why =
+        !d.discrete_gradient ? " < 0.6: drives with roller-seat contact diverged below 0.6 "
+                               "(docs/models/dynamics.md)"
+        : d.pocket
+            ? " < 0.6: with discrete_gradient = true the pockets' force is taken over the step, "
+              "but the sharp mouth's energy jump and the tension-only links are not: pocket-"
+              "wheel runs below 0.6 may stop (docs/models/dynamics.md, \"Pocket wheel: the "
+              "discrete gradient\")"
+            : " < 0.6: with discrete_gradient = true drives with roller-seat contact, damped or "
+              "not, keep their work balance down to 0.5 (the seats' elastic force and damper "
+              "taken over the step; docs/models/dynamics.md, \"Sprockets: the discrete "
+              "gradient\")";
+    out.diagnostics.push_back({Diagnostic::Severity::kWarning, "dynamics.theta_below_0_6",
+                               "theta = " + format_g(d.theta, 4) + why, d.theta, 0.6});
+  }
   return out;
 }
 
