@@ -181,6 +181,47 @@ HingeDriveRun run_drive(double arm, double band, double duration, double step,
   return out;
 }
 
+// The scatter of a figure averaged over the whole tooth periods after t0 (six on these runs),
+// printed for the docs from the samples at hand: the mean of `series` over the window's halves and
+// thirds and over the whole periods after 0.1 s, each against the closed form's 2 e ω (T_tight +
+// T_slack) (`per` its share: 1 for a power, 1/ω for a torque) with the run's mean mid-span
+// tensions over the same stretch.
+struct WindowMeans {
+  double halves[2], thirds[3], from_early;
+};
+
+WindowMeans window_means(const HingeDriveRun& run, const std::vector<double>& series, double arm,
+                         double per, double t0, double period) {
+  const std::vector<double>& time = run.time;
+  auto ratio = [&](double a, double b) {
+    const double expected =
+        2.0 * arm * kOmega *
+        (mean_between(time, run.tight, a, b) + mean_between(time, run.slack, a, b));
+    return mean_between(time, series, a, b) / (per * expected);
+  };
+  const double whole = std::floor((time.back() - t0) / period) * period;
+  WindowMeans w{};
+  for (int k = 0; k < 2; ++k) w.halves[k] = ratio(t0 + k * whole / 2, t0 + (k + 1) * whole / 2);
+  for (int k = 0; k < 3; ++k) w.thirds[k] = ratio(t0 + k * whole / 3, t0 + (k + 1) * whole / 3);
+  const double early = 0.1;
+  w.from_early = ratio(early, early + std::floor((time.back() - early) / period) * period);
+  return w;
+}
+
+// The driver's torque rise over `without` (both runs sample the same steps), against P/ω.
+WindowMeans torque_rise_windows(const HingeDriveRun& with, const HingeDriveRun& without, double arm,
+                                double t0, double period) {
+  std::vector<double> rise(with.time.size());
+  for (std::size_t k = 0; k < rise.size(); ++k)
+    rise[k] = without.driver_torque.at(k) - with.driver_torque[k];
+  return window_means(with, rise, arm, 1.0 / kOmega, t0, period);
+}
+
+void print_windows(const char* what, const WindowMeans& w) {
+  std::printf("%s: halves %.3f / %.3f, thirds %.3f / %.3f / %.3f, from 0.1 s %.3f\n", what,
+              w.halves[0], w.halves[1], w.thirds[0], w.thirds[1], w.thirds[2], w.from_early);
+}
+
 TEST(DynamicsHinge, DriveLosesTheClosedFormPowerInItsHinges) {
   constexpr double arm = 0.1 * 0.00572 / 2;  // μ = 0.1 on the 12B pin (d2 = 5.72 mm)
   constexpr double duration = 0.5, step = 1e-4, period = 2 * kPi / (12 * 13.0);
@@ -220,6 +261,14 @@ TEST(DynamicsHinge, DriveLosesTheClosedFormPowerInItsHinges) {
       "\nhinges at |w| < 2 w_e: %.4f W (%.3f); all hinges with a 20 rad/s band %.4f W of %.4f W "
       "(%.3f)\n",
       slow, slow / expected, wide_power, wide_expected, wide_power / wide_expected);
+  // the figures' scatter over the averaging window (the same runs' samples)
+  print_windows("zone 1 pitch", window_means(with, with.zone_power[0], arm, -1.0, t0, period));
+  print_windows("zone 2.5 pitches", window_means(with, with.zone_power[3], arm, -1.0, t0, period));
+  print_windows("hinges at |w| < 2 w_e",
+                window_means(with, with.slow_power, arm, -1.0, t0, period));
+  print_windows("all hinges, 20 rad/s band",
+                window_means(wide, wide.hinge_power, arm, -1.0, t0, period));
+  print_windows("torque rise / (P/w)", torque_rise_windows(with, without, arm, t0, period));
   // The entering and leaving hinges against the closed form: 0.999 measured on the old seat form,
   // a cancellation: 21 % more articulation than 2π/z a point (0.163 of the closed form 1–1.5
   // pitches into the span) against the lower pin load and the rate band (the factors:
@@ -228,8 +277,8 @@ TEST(DynamicsHinge, DriveLosesTheClosedFormPowerInItsHinges) {
   EXPECT_NEAR(engaging / expected, 1.0, 0.05);
   // The zone's radius matters on this form, so the 5 % is the tolerance of the 1.5-pitch choice:
   // 0.836 at 1 pitch (part of the articulation missed), 1.047 at 2.5 (span vibration comes in);
-  // measured 0.836 / 0.999 / 1.016 / 1.047 / 1.061 at 1, 1.5, 2, 2.5, 3 pitches, each within
-  // 0.011 between the two halves of the averaging window (0.839 / 0.828, 1.051 / 1.040).
+  // measured 0.836 / 0.999 / 1.016 / 1.047 / 1.061 at 1, 1.5, 2, 2.5, 3 pitches; over the
+  // averaging window's halves 0.836 / 0.836 and 1.047 / 1.046 (printed above).
   EXPECT_NEAR(zone[0], 0.836, 0.02);
   EXPECT_NEAR(zone[3], 1.047, 0.02);
   // All hinges: more, by the spans' transverse vibration and the rollers' motion in their seats,
@@ -237,10 +286,10 @@ TEST(DynamicsHinge, DriveLosesTheClosedFormPowerInItsHinges) {
   EXPECT_GT(power, engaging);
   EXPECT_LT(power / expected, 1.25);
   // of which the hinges turning slowly (|ω| < 2 ω_ε, any hinge) take 2.55 W, 0.284 of the closed
-  // form (0.287 / 0.279 over the window's halves)
+  // form (0.283 / 0.284 over the window's halves)
   EXPECT_NEAR(slow / expected, 0.284, 0.02);
   // A wider band trades that for the other error: at ω_ε = 20 rad/s all hinges take 0.802 of the
-  // closed form (0.81 / 0.79 over the halves): the fast articulations no longer reach Coulomb's
+  // closed form (0.803 / 0.801 over the halves): the fast articulations no longer reach Coulomb's
   // torque.
   EXPECT_NEAR(wide_power / wide_expected, 0.80, 0.03);
   // The driver's torque rises by less than P/ω: the hinges' friction damps the seat impacts and
@@ -365,7 +414,9 @@ TEST(DynamicsHinge, ToothTipDriveArticulatesAsTheClosedFormUnderALowerPinLoad) {
   EXPECT_LT(std::abs(t.zone[4] - t.zone[0]), 0.02);
   EXPECT_GT(o.zone[4] - o.zone[0], 0.2);
   // all hinges: 0.843 of the closed form with the tip (the engaging 0.820 and 0.023 outside the
-  // zone; 0.8436 / 0.8433 over the window's halves), against 1.162 on the old form
+  // zone; 0.8439 / 0.8429 over the window's halves), against 1.162 on the old form
+  const WindowMeans all = window_means(tip, tip.hinge_power, arm, -1.0, 0.5 * duration, period);
+  std::printf("all hinges with the tip: halves %.4f / %.4f\n", all.halves[0], all.halves[1]);
   EXPECT_NEAR(t.all, 0.843, 0.01);
 }
 
@@ -390,6 +441,16 @@ TEST(DynamicsHinge, StickLawTakesTheRateBandsShareOffTheToothTipDrive) {
   const double stick_rise = torque_rise_ratio(stick, none, s.expected, 0.5 * duration, period);
   std::printf("torque rise over the frictionless run: %.3f of P/w (regularised), %.3f (stick)\n",
               band_rise, stick_rise);
+  const WindowMeans band_w = torque_rise_windows(band, none, arm, 0.5 * duration, period);
+  const WindowMeans stick_w = torque_rise_windows(stick, none, arm, 0.5 * duration, period);
+  print_windows("torque rise, regularised", band_w);
+  print_windows("torque rise, stick law", stick_w);
+  std::printf("their difference: halves %.3f / %.3f, thirds %.3f / %.3f / %.3f\n",
+              stick_w.halves[0] - band_w.halves[0], stick_w.halves[1] - band_w.halves[1],
+              stick_w.thirds[0] - band_w.thirds[0], stick_w.thirds[1] - band_w.thirds[1],
+              stick_w.thirds[2] - band_w.thirds[2]);
+  std::printf("frictionless run with the tip: Newton %.2f a step (max %d)\n", none.mean_iterations,
+              none.max_iterations);
   // Coulomb's torque at the articulating hinges' rates, where the band took 10 %
   EXPECT_NEAR(s.band, 1.0, 0.01);
   EXPECT_LT(b.band, 0.95);
@@ -401,7 +462,7 @@ TEST(DynamicsHinge, StickLawTakesTheRateBandsShareOffTheToothTipDrive) {
   EXPECT_GT(s.engaging / s.expected, b.engaging / b.expected + 0.05);
   // The driver's torque rise over the frictionless run (as in
   // DriveLosesTheClosedFormPowerInItsHinges), against P/ω: 0.784 regularised, 0.878 with the stick
-  // law. Each is noisy (over the window's halves 0.851 / 0.717 and 0.954 / 0.803; nine periods
+  // law. Each is noisy (over the window's halves 0.851 / 0.717 and 0.953 / 0.803; nine periods
   // from 0.1 s give 0.796 and 0.872), held to ± 0.15 (twice the six periods' standard error);
   // the regularised one is the hinges' whole power (0.843) within that scatter. Their difference
   // is not noisy (0.102 / 0.086 over the halves, 0.108 / 0.089 / 0.086 over the thirds): the
