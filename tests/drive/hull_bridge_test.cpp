@@ -2,7 +2,8 @@
 // the reference: every vertex's dot product with the bridge's outward normal (the first largest
 // wins), then the walk to the neighbours outside the line, each vertex's sine and cosine taken
 // afresh. The library finds the extreme vertex from the direction's angle and takes each
-// vertex's sine and cosine once; the indices must be the same for every input, ties included.
+// vertex's sine and cosine once; the indices must be the same for every valid input, ties
+// included. Input outside the valid range is refused, every bad field named in one message.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "catena/drive/layout.hpp"
 
@@ -200,20 +202,18 @@ TEST(HullBridge, SameIndicesAsTheScanAtTiesAcrossVertexZero) {
   EXPECT_GT(exact_ties, 300) << "the constructed ties must be exact";
 }
 
-// Where the angle cannot locate the vertex (a huge phase or centre, the centres coinciding,
-// non-finite numbers, extreme scales, one vertex: at z = 1 the gap 2 sin²(π/z) is rounding), the
-// same indices still; so too for 2–7 teeth and 10⁵ teeth, which the angle locates.
+// Where the angle cannot locate the vertex (a huge phase or centre, extreme scales, one vertex:
+// at z = 1 the gap 2 sin²(π/z) is rounding), within the valid input, the same indices still; so
+// too for 2–6 teeth and 10⁵ teeth, which the angle locates.
 TEST(HullBridge, SameIndicesAsTheScanOnDegenerateInput) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const double inf = std::numeric_limits<double>::infinity();
   const PitchPolygon base1{0, 0, 0.05, 0.3, 17}, base2{0.4, 0, 0.1, 1.1, 34};
   int bad = 0;
-  for (double phase : {1e6, 1e10, 1e13, 1e15, 1e17, 1e300, -1e17, nan, inf}) {
+  for (double phase : {1e6, 1e10, 1e13, 1e15, 1e17, 1e300, -1e17}) {
     PitchPolygon p1 = base1;
     p1.phase = phase;
     bad += mismatches(p1, base2);
   }
-  for (double shift : {1e8, 1e12, 1e14, 1e16, 1e20}) {
+  for (double shift : {1e8, 1e12, 1e14, 1e15}) {
     PitchPolygon p1 = base1, p2 = base2;
     p1.x += shift;
     p2.x += shift;
@@ -221,18 +221,12 @@ TEST(HullBridge, SameIndicesAsTheScanOnDegenerateInput) {
     p2.y -= shift;
     bad += mismatches(p1, p2);
   }
-  for (double scale : {1e-300, 1e-200, 1e-150, 1e150, 1e200}) {
+  // scaled within the valid range: the scan's bridge, and the unscaled drive's
+  for (double scale : {1e-90, 1e-50, 1e50, 1e90}) {
     const PitchPolygon p1{0, 0, 0.05 * scale, 0.3, 17}, p2{0.4 * scale, 0, 0.1 * scale, 1.1, 34};
     bad += mismatches(p1, p2);
-  }
-  bad += mismatches(base1, base1);  // coincident centres: no normal
-  for (double value : {nan, inf, -inf, 0.0, -0.05}) {
-    PitchPolygon p1 = base1, p2 = base2;
-    p1.radius = value;
-    bad += mismatches(p1, p2);
-    p1 = base1;
-    p2.x = value;
-    bad += mismatches(p1, p2);
+    EXPECT_EQ(hull_bridge(p1, p2), hull_bridge(base1, base2)) << scale;
+    EXPECT_EQ(hull_bridge(p2, p1), hull_bridge(base2, base1)) << scale;
   }
   for (int z = 1; z <= 6; ++z) {
     for (double phase = -3; phase < 3; phase += 0.37) {
@@ -240,14 +234,12 @@ TEST(HullBridge, SameIndicesAsTheScanOnDegenerateInput) {
       bad += mismatches(p1, p2);
     }
   }
-  // a radius of either sign on equal sprockets in line, their near and far edges parallel to the
-  // line of centres within rounding: where the walk starts decides which end of the edge it keeps
+  // equal sprockets in line, their near and far edges parallel to the line of centres within
+  // rounding: where the walk starts decides which end of the edge it keeps
   for (int z = 6; z <= 30; ++z) {
-    for (double sign : {1.0, -1.0}) {
-      for (double phase : {kPi / 2 - kPi / z, -kPi / 2 - kPi / z, kPi / 2, -kPi / 2 + 1e-15}) {
-        const PitchPolygon p1{0, 0, sign * 0.05, phase, z}, p2{0.3, 0, sign * 0.05, phase, z};
-        bad += mismatches(p1, p2);
-      }
+    for (double phase : {kPi / 2 - kPi / z, -kPi / 2 - kPi / z, kPi / 2, -kPi / 2 + 1e-15}) {
+      const PitchPolygon p1{0, 0, 0.05, phase, z}, p2{0.3, 0, 0.05, phase, z};
+      bad += mismatches(p1, p2);
     }
   }
   const PitchPolygon many1{0, 0, 30.0, 0.7, 100000}, many2{70.0, 1.0, 20.0, -0.2, 65000};
@@ -255,13 +247,121 @@ TEST(HullBridge, SameIndicesAsTheScanOnDegenerateInput) {
   EXPECT_EQ(bad, 0);
 }
 
-TEST(HullBridge, RefusesPolygonsWithoutVertices) {
-  const PitchPolygon ok{0, 0, 0.05, 0.3, 17};
-  for (int z : {0, -3, 1000001}) {
-    const PitchPolygon bad{0.4, 0, 0.1, 0, z};
-    EXPECT_THROW((void)hull_bridge(ok, bad), std::invalid_argument) << z;
-    EXPECT_THROW((void)hull_bridge(bad, ok), std::invalid_argument) << z;
+// The valid range's ends are accepted and bridged as the scan bridges them.
+TEST(HullBridge, SameIndicesAsTheScanAtTheValidRangesEnds) {
+  int bad = 0;
+  bad += mismatches({0, 0, 30.0, 0.7, 1000000}, {70.0, 1.0, 20.0, -0.2, 1});
+  bad += mismatches({-1e100, 1e100, 4e99, 0.3, 17}, {1e100, -1e100, 1e100, 1.1, 34});
+  bad += mismatches({0, 0, 1e-100, 0.3, 17}, {3e-100, 1e-100, 1e-100, 1.1, 34});
+  // the centres apart by the least double more than the radii
+  bad += mismatches({0, 0, 0.25, 0.3, 17}, {std::nextafter(0.5, 1.0), 0, 0.25, 1.1, 34});
+  EXPECT_EQ(bad, 0);
+}
+
+// hull_bridge's message for input it must refuse; empty if it returned.
+std::string refusal(const PitchPolygon& a, const PitchPolygon& b) {
+  try {
+    (void)hull_bridge(a, b);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
   }
+  return "";
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// Each bad field alone, in either polygon: refused, the one problem named with its valid range.
+TEST(HullBridge, RefusesEachBadField) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const PitchPolygon ok1{0, 0, 0.05, 0.3, 17}, ok2{0.4, 0, 0.1, 1.1, 34};
+  struct Case {
+    const char* field;
+    const char* range;
+    void (*set)(PitchPolygon&, double);
+    std::vector<double> values;
+  };
+  const Case cases[] = {
+      {"x",
+       "a finite value within ±1e+100 m",
+       [](PitchPolygon& p, double v) { p.x = v; },
+       {nan, inf, -inf, 2e100, -2e100}},
+      {"y",
+       "a finite value within ±1e+100 m",
+       [](PitchPolygon& p, double v) { p.y = v; },
+       {nan, inf, -inf, 2e100}},
+      {"radius",
+       "1e-100 m to 1e+100 m",
+       [](PitchPolygon& p, double v) { p.radius = v; },
+       {nan, inf, -inf, 0.0, -0.05, 1e-101, 2e100}},
+      {"phase", "a finite value", [](PitchPolygon& p, double v) { p.phase = v; }, {nan, inf, -inf}},
+      {"teeth",
+       "1 to 1000000",
+       [](PitchPolygon& p, double v) { p.teeth = static_cast<int>(v); },
+       {0, -3, 1000001, -2147483648.0}},
+  };
+  int refused = 0;
+  for (const Case& c : cases) {
+    for (double value : c.values) {
+      for (int which = 0; which < 2; ++which) {
+        PitchPolygon a = ok1, b = ok2;
+        c.set(which == 0 ? a : b, value);
+        const std::string name = std::string(which == 0 ? "a." : "b.") + c.field;
+        const std::string text = refusal(a, b);
+        EXPECT_TRUE(contains(text, "1 invalid argument(s)"))
+            << name << " " << value << ": " << text;
+        EXPECT_TRUE(contains(text, "\n  " + name + " = ")) << name << " " << value << ": " << text;
+        EXPECT_TRUE(contains(text, ": expected " + std::string(c.range)))
+            << name << " " << value << ": " << text;
+        refused += !text.empty();
+      }
+    }
+  }
+  EXPECT_EQ(refused, 46);
+}
+
+// Coincident, overlapping and touching circles: no bridge of disjoint polygons exists.
+TEST(HullBridge, RefusesPolygonsNotApart) {
+  const PitchPolygon a{0, 0, 0.25, 0.3, 17};
+  for (const auto& [x, y] : {std::pair{0.0, 0.0}, std::pair{0.1, 0.2}, std::pair{-0.3, 0.0},
+                             std::pair{0.5, 0.0}, std::pair{0.3, -0.4}}) {
+    const PitchPolygon b{x, y, 0.25, 1.1, 34};
+    for (const std::string& text : {refusal(a, b), refusal(b, a)}) {
+      EXPECT_TRUE(contains(text, "1 invalid argument(s)")) << x << ", " << y << ": " << text;
+      EXPECT_TRUE(contains(text, "|(b.x, b.y) - (a.x, a.y)| = ")) << x << ", " << y << ": " << text;
+      EXPECT_TRUE(contains(text, "expected more than a.radius + b.radius = 0.5 m"))
+          << x << ", " << y << ": " << text;
+    }
+  }
+  // 0.4 m apart, moved 1e16 m or more off: the centres coincide as rounded
+  for (double shift : {1e16, 1e20}) {
+    const PitchPolygon p1{shift, -shift, 0.05, 0.3, 17}, p2{shift + 0.4, -shift, 0.1, 1.1, 34};
+    EXPECT_TRUE(contains(refusal(p1, p2), "|(b.x, b.y) - (a.x, a.y)| = 0 m")) << shift;
+  }
+}
+
+// Every problem at once, one message: bad fields of both polygons, in the polygons' order.
+TEST(HullBridge, RefusesEveryBadFieldAtOnce) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const PitchPolygon a{nan, 0, -1.0, inf, 0}, b{0.4, inf, 0.1, 1.1, 2000000};
+  const std::string text = refusal(a, b);
+  EXPECT_TRUE(contains(text, "hull_bridge: 6 invalid argument(s):")) << text;
+  std::size_t at = 0;
+  for (const char* field : {"a.x", "a.radius", "a.phase", "a.teeth", "b.y", "b.teeth"}) {
+    const std::size_t next = text.find(std::string("\n  ") + field + " = ", at);
+    EXPECT_NE(next, std::string::npos) << field << ": " << text;
+    if (next != std::string::npos) at = next;
+  }
+  EXPECT_FALSE(contains(text, "a.y")) << text;
+  EXPECT_FALSE(contains(text, "b.radius")) << text;
+  // polygons not apart, with a bad phase and tooth count: all three
+  const std::string three = refusal({0, 0, 0.25, nan, 17}, {0.3, 0, 0.25, 1.1, 0});
+  EXPECT_TRUE(contains(three, "hull_bridge: 3 invalid argument(s):")) << three;
+  for (const char* field : {"a.phase = ", "b.teeth = ", "|(b.x, b.y) - (a.x, a.y)| = 0.3 m"})
+    EXPECT_TRUE(contains(three, field)) << field << ": " << three;
 }
 
 }  // namespace

@@ -51,8 +51,13 @@ struct PitchPolygon {
 };
 
 /// The bridge of the convex hull of two disjoint pitch polygons from `a` to `b`, both polygons
-/// on its left (polygon_hull's spans): (vertex index in a, vertex index in b). Throws
-/// std::invalid_argument unless both have 1 to 10⁶ teeth.
+/// on its left (polygon_hull's spans): (vertex index in a, vertex index in b). Valid input:
+/// x, y finite within ±1e100 m, radius 1e-100 to 1e100 m, phase finite, 1 to 10⁶ teeth (beyond,
+/// the walk's rounding tolerance hides a vertex's neighbours), and the centres apart by more than
+/// a.radius + b.radius. Otherwise throws one std::invalid_argument naming every bad field
+/// (`a.radius`, `b.teeth`, …) with its valid range. The vertices are computed in double: a phase
+/// or centre so large that its rounding nears a pitch blurs them (the indices are the computed
+/// vertices').
 std::pair<int, int> hull_bridge(const PitchPolygon& a, const PitchPolygon& b);
 
 /// The taut wrap of `links` rigid links for the driver at `phase1`: centre distance and the

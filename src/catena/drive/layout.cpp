@@ -11,7 +11,10 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "catena/core/error.hpp"
 #include "catena/core/progress.hpp"
 
 namespace catena::drive {
@@ -211,11 +214,46 @@ PolygonWrap polygon_hull(double pitch, int z1, int z2, double a, double phase1, 
 }
 
 std::pair<int, int> hull_bridge(const PitchPolygon& a, const PitchPolygon& b) {
+  // Lengths bounded so that the walk's tolerance 1e-14 (|b − a| + r_a + r_b)² and the dot and
+  // cross products of coordinates stay finite and normal (no overflow, no digits lost to
+  // underflow).
+  constexpr double kMaxLength = 1e100, kMinRadius = 1e-100;  // [m]
+  // The walk tells a vertex's neighbours from the bridge's line by their offset, about
+  // 2π² r |b − a| / z² in the cross product, against its tolerance: at 10⁶ teeth the offset is
+  // about 250 times the tolerance with the centres a diameter apart, only twice it with them a
+  // thousand radii apart. Beyond, the walk could not tell the polygon from its circle.
   constexpr int kMaxTeeth = 1000000;
-  for (const PitchPolygon* p : {&a, &b})
-    if (p->teeth < 1 || p->teeth > kMaxTeeth)
-      throw std::invalid_argument("hull_bridge: teeth " + std::to_string(p->teeth) +
-                                  " outside 1 to 1000000");
+  std::vector<Issue> issues;
+  bool placed = true;  // every centre coordinate and radius in range
+  auto polygon = [&](const std::string& name, const PitchPolygon& p) {
+    for (const auto& [field, value] : {std::pair{".x", p.x}, std::pair{".y", p.y}})
+      if (!(std::abs(value) <= kMaxLength)) {
+        placed = false;
+        issues.push_back(
+            {name + field, check::format_si(value, "m"), "a finite value within ±1e+100 m"});
+      }
+    if (!(p.radius >= kMinRadius && p.radius <= kMaxLength)) {
+      placed = false;
+      issues.push_back({name + ".radius", check::format_si(p.radius, "m"), "1e-100 m to 1e+100 m"});
+    }
+    check::finite(issues, (name + ".phase").c_str(), p.phase, "rad");
+    if (p.teeth < 1 || p.teeth > kMaxTeeth)
+      issues.push_back({name + ".teeth", std::to_string(p.teeth),
+                        "1 to 1000000 (beyond, the walk cannot tell a polygon from its circle)"});
+  };
+  polygon("a", a);
+  polygon("b", b);
+  if (placed) {  // disjoint polygons: the centres apart by more than the radii
+    const double apart = std::hypot(b.x - a.x, b.y - a.y), touch = a.radius + b.radius;
+    if (!(apart > touch))
+      issues.push_back({"|(b.x, b.y) - (a.x, a.y)|", check::format_si(apart, "m"),
+                        "more than a.radius + b.radius = " + check::format_si(touch, "m")});
+  }
+  if (!issues.empty()) {
+    std::string text = "hull_bridge: " + std::to_string(issues.size()) + " invalid argument(s):";
+    for (const Issue& issue : issues) text += "\n  " + to_string(issue);
+    throw std::invalid_argument(text);
+  }
   const Bridge r =
       bridge({{a.x, a.y}, a.radius, a.phase, a.teeth}, {{b.x, b.y}, b.radius, b.phase, b.teeth});
   return {r.ia, r.ib};
