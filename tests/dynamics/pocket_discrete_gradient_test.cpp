@@ -152,19 +152,27 @@ TEST(DynamicsPocketDiscreteGradient, WorkOverAStepIsTheEnergysChange) {
 // mouth 3c off its vertex (E jumps from E₀(g) to 0), and one crossing the body's capture (10c
 // from the vertex) 20 µm below the mouth, within its radial band (the pocket's E₀(9c) against the
 // body's blended depth); a step across the capture straight below the vertex, beyond the band
-// (10c) from the mouth (no jump there), is corrected.
+// (10c) from the mouth (no jump there), is corrected. With the release a joint not held that
+// enters over the mouth 3c off its vertex, from 10 µm above to 20 µm below it, jumps from 0 to
+// E₀(g) S(u) as over the sharp mouth (held, it stays in the pocket's law beyond the mouth: the
+// release's case of the work test).
 TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheForceIsTheThetaPoints) {
-  const Sprocket on = wheel8(true), off = wheel8(false);
+  Sprocket release_on = wheel8(true), release_off = wheel8(false);
+  release_on.pocket_release = release_off.pocket_release = true;
   const double c = kClearance, psi = 0.4, turn = 1e-3;
   struct Across {
     const char* what;
     double along0, below0, along1, below1;
-    bool corrected;
+    bool corrected, release;
   };
-  const Across steps[] = {{"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -2e-6, false},
-                          {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, false},
-                          {"capture deep", 0.0, 10.4 * c, 0.0, 10.6 * c, true}};
+  const Across steps[] = {
+      {"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -2e-6, false, false},
+      {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, false, false},
+      {"capture deep", 0.0, 10.4 * c, 0.0, 10.6 * c, true, false},
+      {"the release's mouth, not held", 3.0 * c, -10e-6, 3.0 * c, 20e-6, false, true}};
   for (const Across& a : steps) {
+    const Sprocket on = a.release ? release_on : wheel8(true);
+    const Sprocket off = a.release ? release_off : wheel8(false);
     const Point p0 = near_vertex(on, psi, 2, a.along0, a.below0);
     const Point p1 = near_vertex(on, psi + turn, 2, a.along1, a.below1);
     const SeatContact with = step_contact(on, p0, p1, psi, psi + turn);

@@ -430,9 +430,10 @@ Piece piece_of(const Sprocket& w, double rx, double ry, double angle, int k, boo
 }
 
 // E_k is continuous between the pieces of the step's three points unless the path crosses one
-// of its two jumps: the sharp mouth (pocket_mouth = 0, no release) out of the pocket's own law,
-// and the body's capture `from` within its radial band of the mouth (or with the release, whose
-// energy E₀ S(u) there is not the body's)
+// of its two jumps: the sharp mouth (pocket_mouth = 0) out of the pocket's own law — with the
+// release too, where a joint not held goes out over the mouth from E₀(g) S(u) > 0 (held, it
+// stays in the pocket's law beyond: out ⇔ not held) — and the body's capture `from` within its
+// radial band of the mouth (or with the release, whose energy E₀ S(u) there is not the body's)
 bool jumps(const Sprocket& w, const Piece (&p)[3], const double (&rho)[3]) {
   bool pocket = false, body = false, out = false;
   for (const Piece q : p) {
@@ -440,8 +441,7 @@ bool jumps(const Sprocket& w, const Piece (&p)[3], const double (&rho)[3]) {
     body = body || q == Piece::kBody;
     out = out || q == Piece::kOut;
   }
-  const bool sharp = !(w.pocket_mouth > 0.0) && !w.pocket_release;
-  if (pocket && out && sharp) return true;
+  if (pocket && out && !(w.pocket_mouth > 0.0)) return true;
   if (pocket && body) {
     if (w.pocket_release) return true;
     const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance, band = body_capture(w).band;
