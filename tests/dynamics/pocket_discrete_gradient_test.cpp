@@ -16,6 +16,7 @@
 
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/pocket_wheel.hpp"
+#include "pocket_setups.hpp"
 #include "residual_difference.hpp"
 
 namespace catena::dynamics {
@@ -193,38 +194,19 @@ TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheForceIsTheThetaPoints) {
   }
 }
 
-// A link's two joints falling radially onto a pocket wheel at `inward` [m/s], the leading one
-// `off` [m] along the pitch circle from vertex 1 and 10 µm above the mouth, both turning with the
-// wheel at `spin` [rad/s] and sliding along it at `slip` [m/s]; the wheel driven (inertia 0.2
-// kg·m², its angle an unknown) or a driver.
-struct Fall {
-  Model model;
-  State state;
-};
-Fall fall_onto(double off, double inward, double spin, double slip, bool driven, double damping,
-               bool gradient) {
-  Model m = uniform_chain(2, false, 0.064, 0.42, 1e8, 0.0, false);
-  m.alternation = 0.018;
-  Sprocket w = pocket_wheel(0.064, 0.018, 8, 0.0, 0.0, kClearance, kStiffness, damping);
-  w.discrete_gradient = gradient;
-  w.driver = !driven;
-  w.inertia = 0.2;
-  w.speed = spin;
-  m.sprockets = {w};
-  State s(2, 1);
-  s.angle = {0.0};
-  s.speed = {spin};
-  const double polar = w.pocket_angle + off / w.pitch_radius;
-  const double start = w.pitch_radius + 0.5 * kClearance + 10e-6;
-  for (int i = 0; i < 2; ++i) {
-    const double rho = start + i * m.rest_length(0);
-    const double cx = std::cos(polar), sn = std::sin(polar);
-    s.x[i] = rho * cx;
-    s.y[i] = rho * sn;
-    s.vx[i] = -inward * cx - spin * s.y[i] - slip * sn;
-    s.vy[i] = -inward * sn + spin * s.x[i] + slip * cx;
-  }
-  return {m, s};
+// A link's two joints falling radially onto a driven pocket wheel at `inward` [m/s], the leading
+// one `off` [m] along the pitch circle from vertex 1 and 10 µm above the mouth, both turning with
+// the wheel at `spin` [rad/s] and sliding along it at `slip` [m/s]; the links undamped.
+testing::PocketSetup fall_onto(double off, double inward, double spin, double slip, double damping,
+                               bool gradient) {
+  return testing::fall_setup({.off = off,
+                              .above = 10e-6,
+                              .inward = inward,
+                              .spin = spin,
+                              .slip = slip,
+                              .driven = true,
+                              .contact_damping = damping,
+                              .discrete_gradient = gradient});
 }
 
 // (2) The step's Newton matrix with the discrete gradient against central differences of its
@@ -257,8 +239,8 @@ TEST(DynamicsPocketDiscreteGradient, NewtonMatrixMatchesTheResidualsDifferences)
                         {0.0, 1.0, 0.0, 0.6, 2000.0, At::kClamp, 1e-4}};
   const double h = 1e-5;
   for (const Case& k : cases) {
-    Fall f = fall_onto(k.off, k.inward, 5.0, k.slip, true, k.damping, true);
-    const Fall plain = fall_onto(k.off, k.inward, 5.0, k.slip, true, k.damping, false);
+    testing::PocketSetup f = fall_onto(k.off, k.inward, 5.0, k.slip, k.damping, true);
+    const testing::PocketSetup plain = fall_onto(k.off, k.inward, 5.0, k.slip, k.damping, false);
     const Model& m = f.model;
     State& s = f.state;
     const Sprocket& w = m.sprockets[0];
@@ -356,45 +338,10 @@ struct WrapRun {
   int steps = 0;  // completed
 };
 WrapRun wrap_run(bool gradient, double mouth, int steps) {
-  const double t = 0.064, d = 0.018, k = 1e8, tight = 1000.0, slack = 200.0, spin = -5.0;
-  Sprocket w = pocket_wheel(t, d, 8, 0.0, 0.0, kClearance, kStiffness, 0.0);
-  w.pocket_mouth = mouth;
-  w.discrete_gradient = gradient;
-  w.driver = true;
-  w.speed = spin;
-  const double r = w.pitch_radius, d1 = w.pocket_angle, d2 = 2 * kPi / 8 - d1;
-  const int c = 21, wrap = 8, bottom = 20;  // node c at the top vertex; link c is t − d (odd)
-  const auto n = static_cast<std::size_t>(c + wrap + bottom + 1);
-  Model m = uniform_chain(n, false, t, 0.42, k, 0.0, false);
-  m.alternation = d;
-  m.sprockets = {w};
-  m.loads = {{.node = 0, .fx = -tight, .fy = 0.0}, {.node = n - 1, .fx = -slack, .fy = 0.0}};
-  State s(n, 1);
-  s.angle = {kPi / 2};  // vertex 0 at the top
-  s.speed = {spin};
-  double x = 0.0;
-  for (int i = c; i >= 0; --i) {  // the tight strand
-    s.x[i] = x;
-    s.y[i] = r;
-    s.vx[i] = -spin * r;
-    if (i > 0) x -= m.rest_length(static_cast<std::size_t>(i - 1)) + tight / k;
-  }
-  double polar = kPi / 2;
-  for (int j = 1; j <= wrap; ++j) {  // half a turn: δ2, δ1, … down to the bottom vertex
-    polar -= (j % 2 == 1) ? d2 : d1;
-    const auto i = static_cast<std::size_t>(c + j);
-    s.x[i] = r * std::cos(polar);
-    s.y[i] = r * std::sin(polar);
-    s.vx[i] = -spin * s.y[i];
-    s.vy[i] = spin * s.x[i];
-  }
-  x = s.x[c + wrap];
-  for (std::size_t i = c + wrap + 1; i < n; ++i) {  // the slack strand
-    x -= m.rest_length(i - 1) + slack / k;
-    s.x[i] = x;
-    s.y[i] = -r;
-    s.vx[i] = spin * r;
-  }
+  testing::PocketSetup setup =
+      testing::unwinding_setup({.slack = 200.0, .mouth = mouth, .discrete_gradient = gradient});
+  const Model& m = setup.model;
+  State& s = setup.state;
   Integrator integ(m, {.step = 1e-4, .theta = 0.5});
   WrapRun out;
   const Energy e0 = energy(m, s);
