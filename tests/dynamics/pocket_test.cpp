@@ -15,6 +15,7 @@
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/pocket_wheel.hpp"
 #include "catena/pocketwheel/geometry.hpp"
+#include "pocket_setups.hpp"
 #include "residual_difference.hpp"
 
 namespace catena::dynamics {
@@ -542,55 +543,9 @@ struct Unwinding {
   double largest_drop = 0.0;  // [N] the largest fall of a leaving joint's force in one step
   bool converged = true;
 };
-struct UnwindingSetup {
-  Sprocket wheel;
-  Model model;
-  State state;
-};
-UnwindingSetup unwinding_setup(double slack, bool release, double damping) {
-  const double t = 0.064, d = 0.018, k = 1e8, ft = 1000.0;
-  Sprocket w = pocket_wheel(t, d, 8, 0.0, 0.0, 1e-4, 1e8, damping);
-  w.pocket_release = release;
-  w.driver = true;
-  w.speed = -5.0;  // clockwise: the top runs along +x
-  const double r = w.pitch_radius, d1 = w.pocket_angle, d2 = 2 * kPi / 8 - d1;
-  const int c = 21, wrap = 8, bottom = 20;  // node c at the top vertex; link c is t − d (odd)
-  const auto n = static_cast<std::size_t>(c + wrap + bottom + 1);
-  Model m = uniform_chain(n, false, t, 0.42, k, 2000.0, false);
-  m.alternation = d;
-  m.sprockets = {w};
-  m.loads = {{.node = 0, .fx = -ft, .fy = 0.0}, {.node = n - 1, .fx = -slack, .fy = 0.0}};
-  State s(n, 1);
-  s.angle = {kPi / 2};  // vertex 0 at the top
-  s.speed = {-5.0};
-  double x = 0.0;
-  for (int i = c; i >= 0; --i) {  // the tight strand, level through the top vertex
-    s.x[i] = x;
-    s.y[i] = r;
-    s.vx[i] = 5 * r;
-    if (i > 0) x -= m.rest_length(static_cast<std::size_t>(i - 1)) + ft / k;
-  }
-  double polar = kPi / 2;
-  for (int j = 1; j <= wrap; ++j) {  // half a turn: δ2, δ1, … down to the bottom vertex
-    polar -= (j % 2 == 1) ? d2 : d1;
-    const auto i = static_cast<std::size_t>(c + j);
-    s.x[i] = r * std::cos(polar);
-    s.y[i] = r * std::sin(polar);
-    s.vx[i] = 5 * s.y[i];
-    s.vy[i] = -5 * s.x[i];
-  }
-  x = s.x[c + wrap];
-  for (std::size_t i = c + wrap + 1; i < n; ++i) {  // the slack strand, level towards −x
-    x -= m.rest_length(i - 1) + slack / k;
-    s.x[i] = x;
-    s.y[i] = -r;
-    s.vx[i] = -5 * r;
-  }
-  return {w, m, s};
-}
-
 Unwinding unwind(double slack, bool release = false, double damping = 2000.0) {
-  UnwindingSetup setup = unwinding_setup(slack, release, damping);
+  testing::PocketSetup setup = testing::unwinding_setup(
+      {.slack = slack, .release = release, .contact_damping = damping, .link_damping = 2000.0});
   const Sprocket& w = setup.wheel;
   const Model& m = setup.model;
   State& s = setup.state;
@@ -748,7 +703,8 @@ TEST(DynamicsPocket, ReleaseNewtonBlocksIncludeTheDamper) {
 // blocks of the joints in contact with the wheel — they carry the release's dq_extra and
 // dv_extra. (Before the fix the stalled joint's block was off by a third.)
 TEST(DynamicsPocket, ReleaseNewtonMatrixMatchesTheResidualsDifferences) {
-  UnwindingSetup setup = unwinding_setup(1000.0, true, 2000.0);
+  testing::PocketSetup setup = testing::unwinding_setup(
+      {.slack = 1000.0, .release = true, .contact_damping = 2000.0, .link_damping = 2000.0});
   const Model& m = setup.model;
   State& s = setup.state;
   const Sprocket& w = setup.wheel;
@@ -810,7 +766,8 @@ TEST(DynamicsPocket, ReleaseNewtonMatrixMatchesTheResidualsDifferences) {
 // the angle's 4.3e-3.
 TEST(DynamicsPocket, NewtonMatrixCarriesTheSeatDampersRotation) {
   for (const bool driven : {false, true}) {
-    UnwindingSetup setup = unwinding_setup(1000.0, false, 2000.0);
+    testing::PocketSetup setup = testing::unwinding_setup(
+        {.slack = 1000.0, .contact_damping = 2000.0, .link_damping = 2000.0});
     Model& m = setup.model;
     State& s = setup.state;
     if (driven) {  // the same wheel free to turn, its inertia a disc's, no load
@@ -1411,39 +1368,21 @@ struct Throw {
   double rho = 0.0;       // [m] its distance from the centre at the end
   bool converged = true;
 };
-struct ThrowSetup {
-  Model model;
-  State state;
-  double polar = 0.0;  // [rad] the leading joint's
-};
 // `friction` the pockets' μ and `across` [m/s] a speed along the pitch circle added to the throw
-ThrowSetup throw_setup(double off, bool body, bool driven, double friction = 0.0,
-                       double across = 0.0) {
-  Model m = uniform_chain(2, false, 0.064, 0.42, 1e8, 2000.0, false);
-  m.alternation = 0.018;
-  Sprocket w = pocket_wheel(0.064, 0.018, 8, 0.0, 0.0, 1e-4, 1e8, 2000.0);
-  w.pocket_body = body;
-  w.friction = friction;
-  w.driver = !driven;
-  w.inertia = 0.2;
-  w.speed = 0.0;
-  m.sprockets = {w};
-  State s(2, 1);
-  s.angle = {0.0};  // vertex 1 at δ1, vertex 2 at 2π/8
-  s.speed = {0.0};
-  const double polar = w.pocket_angle + off / w.pitch_radius;
-  const double start = w.pitch_radius + 0.5 * w.pocket_clearance + 1e-3;
-  for (int i = 0; i < 2; ++i) {
-    const double rho = start + i * m.rest_length(0);
-    s.x[i] = rho * std::cos(polar);
-    s.y[i] = rho * std::sin(polar);
-    s.vx[i] = -20.0 * std::cos(polar) - across * std::sin(polar);
-    s.vy[i] = -20.0 * std::sin(polar) + across * std::cos(polar);
-  }
-  return {m, s, polar};
+testing::PocketSetup throw_setup(double off, bool body, bool driven, double friction = 0.0,
+                                 double across = 0.0) {
+  return testing::fall_setup({.off = off,
+                              .above = 1e-3,
+                              .inward = 20.0,
+                              .slip = across,
+                              .driven = driven,
+                              .contact_damping = 2000.0,
+                              .link_damping = 2000.0,
+                              .body = body,
+                              .friction = friction});
 }
 Throw throw_onto_wheel(double off, bool body) {
-  ThrowSetup t = throw_setup(off, body, false);
+  testing::PocketSetup t = throw_setup(off, body, false);
   Integrator integ(t.model, {.step = 1e-5, .theta = 0.6});
   Throw out;
   const double r0 = t.model.sprockets[0].pitch_radius;
@@ -1496,8 +1435,8 @@ TEST(DynamicsPocket, JointThrownBetweenThePocketsIsPushedOutByTheBody) {
 // column and own entry, each to `tolerance` of h θ k_c, at every other step; with `blend` at every
 // step in the capture's blend (10c–20c from the vertex) only. Returns the largest misfit; `blocks`
 // the steps checked.
-double body_newton_misfit(ThrowSetup t, bool driven, bool blend, double tolerance, int& blocks,
-                          double* friction_work = nullptr) {
+double body_newton_misfit(testing::PocketSetup t, bool driven, bool blend, double tolerance,
+                          int& blocks, double* friction_work = nullptr) {
   const Model& m = t.model;
   State& s = t.state;
   const Sprocket& w = m.sprockets[0];

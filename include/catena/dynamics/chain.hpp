@@ -828,11 +828,11 @@ struct PocketStep {
 /// ΔE − ∇E_θ·Δz back along the step z = (q − O, R ψ), metric (1, R²): the skew fields as the
 /// seats' (the joint gains −S Δ, the torque −S R² Δψ, S = (ΔE − ∇E_θ·Δz)/|Δz|²), so that the
 /// elastic work over the step is −ΔE_k. Not where |Δz| < 1e-9 R, nor where the step's points lie
-/// across one of E_k's jumps (the sharp mouth out of the pocket; the body's capture within its
-/// radial band of the mouth, or with the release): there the θ point's force alone. The damper,
-/// friction and the release's hold stay at the θ point; where the θ point's force is 0 (out of
-/// contact, or the damper's clamp) its derivative fields are 0 and the contact is active with
-/// the correction alone.
+/// across one of E_k's jumps (the sharp mouth out of the pocket, with the release for a joint not
+/// held; the body's capture within its radial band of the mouth, or with the release): there the
+/// θ point's force alone. The damper, friction and the release's hold stay at the θ point; where
+/// the θ point's force is 0 (out of contact, or the damper's clamp) its derivative fields are 0
+/// and the contact is active with the correction alone.
 SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx, double vy,
                                 double angle, double speed, int held, const PocketStep& step);
 /// At the start and the end of a step (Integrator::step; the same flags for the same state, so

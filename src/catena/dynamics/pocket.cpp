@@ -71,6 +71,14 @@ void set_friction_rest(const double jq[4], const double jv[4], double wx, double
   }
 }
 
+// The ∂F/∂q (row-major) the contact's fields give, −[k m mᵀ + f κ (I − m mᵀ)], from the normal
+// stiffness `kn`, ft = f κ and the force's direction m: what dq_extra adds to
+void fields_jacobian(double kn, double ft, double mx, double my, double out[4]) {
+  out[0] = -(kn * mx * mx + ft * (1 - mx * mx));
+  out[1] = out[2] = -(kn - ft) * mx * my;
+  out[3] = -(kn * my * my + ft * (1 - my * my));
+}
+
 // The angle of pocket vertex k (even k: ψ + (k/2) τ; odd: ψ + ((k − 1)/2) τ + δ1).
 double vertex_angle(const Sprocket& w, int k, double angle) {
   const double tau = 2.0 * std::numbers::pi / w.teeth;
@@ -152,9 +160,9 @@ void apply_release(const Sprocket& w, double g, double dist, double rx, double r
       exact[2 * i + j] = -n[i] * dA[j] - A * pn / dist - gu[i] * dB[j] - B * dgu;
     }
   }
-  const double ft = c.force * c.curvature, kn = c.stiffness, mx = c.nx, my = c.ny;
-  const double fields[4] = {-(kn * mx * mx + ft * (1 - mx * mx)), -(kn - ft) * mx * my,
-                            -(kn - ft) * mx * my, -(kn * my * my + ft * (1 - my * my))};
+  const double mx = c.nx, my = c.ny;
+  double fields[4];
+  fields_jacobian(c.stiffness, c.force * c.curvature, mx, my, fields);
   for (int i = 0; i < 4; ++i) c.dq_extra[i] = exact[i] - fields[i];
   // ∂F/∂v = −S c n nᵀ; the fields give −(S c) m mᵀ, m the force's direction
   const double cn = sv * cf;
@@ -190,8 +198,9 @@ Capture body_capture(const Sprocket& w) {
   return {from, std::min(kCaptureTo * w.pocket_clearance, share), from};
 }
 
-bool in_body(const Sprocket& w, double dist) {
-  return w.pocket_body && dist > body_capture(w).from;
+// `cap` the wheel's body_capture when the caller has it (else computed here, only with the body)
+bool in_body(const Sprocket& w, const Capture* cap, double dist) {
+  return w.pocket_body && dist > (cap != nullptr ? cap->from : body_capture(w).from);
 }
 
 // The body between the pockets on a contact whose seat and n = e/|e| are set, the joint within
@@ -204,9 +213,8 @@ bool in_body(const Sprocket& w, double dist) {
 // force's direction and size; stiffness, damping and curvature are 0 and the exact ∂F/∂q and
 // ∂F/∂v are dq_extra and dv_extra. surface = 3; its seat friction is the pocket's times P
 // (friction_weight).
-void apply_body(const Sprocket& w, double dist, double rx, double ry, double vx, double vy,
-                double speed, SeatContact& c) {
-  const Capture cap = body_capture(w);
+void apply_body(const Sprocket& w, const Capture& cap, double dist, double rx, double ry, double vx,
+                double vy, double speed, SeatContact& c) {
   const double cl = w.pocket_clearance, rho = std::hypot(rx, ry);
   const double g = dist - cl, h = w.pitch_radius + 0.5 * cl - rho, dd = g - h;
   const Step b = smooth_step(dist, cap.from, cap.to);
@@ -285,9 +293,10 @@ ReleaseBand release_band(const Sprocket& w) {
 
 namespace {
 // pocket_contact with its vertex given: `forced` (kNoPocket: the nearest within the mouth, the
-// held one beyond it), the discrete gradient's ends in the θ point's pocket (pocket_step_contact)
+// held one beyond it), the discrete gradient's ends in the θ point's pocket (pocket_step_contact);
+// `cap` the wheel's body_capture if the caller has it, else nullptr
 SeatContact contact_with(const Sprocket& w, double x, double y, double vx, double vy, double angle,
-                         double speed, int held, int forced) {
+                         double speed, int held, int forced, const Capture* cap) {
   SeatContact c;
   const double rx = x - w.centre_x, ry = y - w.centre_y;
   const double reach = contact_reach(w);  // the mouth R + c/2, or its ramp's top
@@ -308,9 +317,9 @@ SeatContact contact_with(const Sprocket& w, double x, double y, double vx, doubl
   c.ny = ny;
   c.curvature = 1.0 / dist;
   const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance;
-  if (!beyond && in_body(w, dist)) {  // between the pockets, within the mouth: the wheel's body
+  if (!beyond && in_body(w, cap, dist)) {  // between the pockets, within the mouth: the body
     if (rho2 <= mouth * mouth)
-      apply_body(w, dist, rx, ry, vx, vy, speed, c);
+      apply_body(w, cap != nullptr ? *cap : body_capture(w), dist, rx, ry, vx, vy, speed, c);
     else
       c = SeatContact{};  // over a ramp (its W is 0 from 3c on)
     return c;
@@ -378,9 +387,8 @@ SeatContact contact_with(const Sprocket& w, double x, double y, double vx, doubl
                          pe * (id - n[i] * n[j]) - phi * s2 * u[i] * u[j] + pr * (id - u[i] * u[j]);
     }
   }
-  const double ft = c.force * c.curvature, kn = c.stiffness, mx = c.nx, my = c.ny;
-  const double fields[4] = {-(kn * mx * mx + ft * (1 - mx * mx)), -(kn - ft) * mx * my,
-                            -(kn - ft) * mx * my, -(kn * my * my + ft * (1 - my * my))};
+  double fields[4];
+  fields_jacobian(c.stiffness, c.force * c.curvature, c.nx, c.ny, fields);
   for (int i = 0; i < 4; ++i) c.dq_extra[i] = exact[i] - fields[i];
   // For the friction, the whole ∂F/∂q: `exact` is the elastic part, with the force's A = s Φ';
   // the actual A = s (W f₀ + E₀ W') differs by Q = s W (f₀ − f_el) (the damper's c ġ, or −f_el
@@ -408,7 +416,7 @@ SeatContact contact_with(const Sprocket& w, double x, double y, double vx, doubl
 
 SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, double vy,
                            double angle, double speed, int held) {
-  return contact_with(w, x, y, vx, vy, angle, speed, held, kNoPocket);
+  return contact_with(w, x, y, vx, vy, angle, speed, held, kNoPocket, nullptr);
 }
 
 // The pocket's discrete gradient (docs/models/dynamics.md, "Pocket wheel: the discrete
@@ -418,35 +426,38 @@ namespace {
 // Where a point is for pocket k, for the jumps of E_k: in the pocket's own law (its mouth's ramp
 // or release included), on the body between the pockets within the mouth, or out of both (E = 0)
 enum class Piece { kPocket, kBody, kOut };
-Piece piece_of(const Sprocket& w, double rx, double ry, double angle, int k, bool held) {
+Piece piece_of(const Sprocket& w, const Capture& cap, double rx, double ry, double angle, int k,
+               bool held) {
   const double rho2 = rx * rx + ry * ry, reach = contact_reach(w);
   if (rho2 > reach * reach) return w.pocket_release && held ? Piece::kPocket : Piece::kOut;
   double vx = 0.0, vy = 0.0;
   vertex_point(w, vertex_angle(w, k, angle), vx, vy);
   const double dist = std::hypot(rx + w.centre_x - vx, ry + w.centre_y - vy);
-  if (!in_body(w, dist)) return Piece::kPocket;
+  if (!in_body(w, &cap, dist)) return Piece::kPocket;
   const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance;
   return rho2 <= mouth * mouth ? Piece::kBody : Piece::kOut;
 }
 
 // E_k is continuous between the pieces of the step's three points unless the path crosses one
-// of its two jumps: the sharp mouth (pocket_mouth = 0, no release) out of the pocket's own law,
-// and the body's capture `from` within its radial band of the mouth (or with the release, whose
-// energy E₀ S(u) there is not the body's)
-bool jumps(const Sprocket& w, const Piece (&p)[3], const double (&rho)[3]) {
+// of its two jumps: the sharp mouth (pocket_mouth = 0) out of the pocket's own law — with the
+// release too, where a joint not held goes out over the mouth from E₀(g) S(u) > 0 (held, it
+// stays in the pocket's law beyond: out ⇔ not held) — and the body's capture `from` within its
+// radial band of the mouth (or with the release, whose energy E₀ S(u) there is not the body's)
+// (the points (px, py) relative to the wheel's centre)
+bool jumps(const Sprocket& w, const Capture& cap, const Piece (&p)[3], const double (&px)[3],
+           const double (&py)[3]) {
   bool pocket = false, body = false, out = false;
   for (const Piece q : p) {
     pocket = pocket || q == Piece::kPocket;
     body = body || q == Piece::kBody;
     out = out || q == Piece::kOut;
   }
-  const bool sharp = !(w.pocket_mouth > 0.0) && !w.pocket_release;
-  if (pocket && out && sharp) return true;
+  if (pocket && out && !(w.pocket_mouth > 0.0)) return true;
   if (pocket && body) {
     if (w.pocket_release) return true;
-    const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance, band = body_capture(w).band;
-    for (const double r : rho)
-      if (mouth - r < band) return true;
+    const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance, band = cap.band;
+    for (int i = 0; i < 3; ++i)
+      if (mouth - std::hypot(px[i], py[i]) < band) return true;
   }
   return false;
 }
@@ -454,10 +465,7 @@ bool jumps(const Sprocket& w, const Piece (&p)[3], const double (&rho)[3]) {
 // The elastic ∂F/∂q (row-major) of an elastic contact (no velocity): the fields' and dq_extra
 void elastic_jacobian(const SeatContact& e, double out[4]) {
   const double f = e.active ? e.force : 0.0;
-  const double kn = e.active ? e.stiffness : 0.0, ft = f * e.curvature, nx = e.nx, ny = e.ny;
-  out[0] = -(kn * nx * nx + ft * (1 - nx * nx));
-  out[1] = out[2] = -(kn - ft) * nx * ny;
-  out[3] = -(kn * ny * ny + ft * (1 - ny * ny));
+  fields_jacobian(e.active ? e.stiffness : 0.0, f * e.curvature, e.nx, e.ny, out);
   if (e.active)
     for (int i = 0; i < 4; ++i) out[i] += e.dq_extra[i];
 }
@@ -465,8 +473,10 @@ void elastic_jacobian(const SeatContact& e, double out[4]) {
 
 SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx, double vy,
                                 double angle, double speed, int held, const PocketStep& step) {
-  SeatContact c = contact_with(w, x, y, vx, vy, angle, speed, held, kNoPocket);
-  if (!w.discrete_gradient) return c;
+  if (!w.discrete_gradient)
+    return contact_with(w, x, y, vx, vy, angle, speed, held, kNoPocket, nullptr);
+  const Capture cap = body_capture(w);  // once for the step's four contacts and three pieces
+  SeatContact c = contact_with(w, x, y, vx, vy, angle, speed, held, kNoPocket, &cap);
   const double rx = x - w.centre_x, ry = y - w.centre_y, reach = contact_reach(w);
   const bool beyond = rx * rx + ry * ry > reach * reach;
   // the θ point's pocket k (the nearest, or the held one beyond the mouth); E_k at the ends with
@@ -482,16 +492,16 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   const double den = dx * dx + dy * dy + r2 * dpsi * dpsi;
   // below |Δz| = 1e-9 R the mismatch is the ends' rounding over |Δz|² (as the seats')
   if (!(den > 1e-18 * r2)) return c;
-  const Piece pieces[3] = {piece_of(w, q0x, q0y, step.angle0, k, hk != kNoPocket),
-                           piece_of(w, rx, ry, angle, k, hk != kNoPocket),
-                           piece_of(w, q1x, q1y, step.angle1, k, hk != kNoPocket)};
-  const double rho[3] = {std::hypot(q0x, q0y), std::hypot(rx, ry), std::hypot(q1x, q1y)};
-  if (jumps(w, pieces, rho)) return c;  // E_k's jump: the θ point's force (docs)
+  const Piece pieces[3] = {piece_of(w, cap, q0x, q0y, step.angle0, k, hk != kNoPocket),
+                           piece_of(w, cap, rx, ry, angle, k, hk != kNoPocket),
+                           piece_of(w, cap, q1x, q1y, step.angle1, k, hk != kNoPocket)};
+  const double ends_x[3] = {q0x, rx, q1x}, ends_y[3] = {q0y, ry, q1y};
+  if (jumps(w, cap, pieces, ends_x, ends_y)) return c;  // E_k's jump: the θ point's force (docs)
   const SeatContact e0 =
-      contact_with(w, q0x + w.centre_x, q0y + w.centre_y, 0.0, 0.0, step.angle0, 0.0, hk, k);
+      contact_with(w, q0x + w.centre_x, q0y + w.centre_y, 0.0, 0.0, step.angle0, 0.0, hk, k, &cap);
   const SeatContact e1 =
-      contact_with(w, q1x + w.centre_x, q1y + w.centre_y, 0.0, 0.0, step.angle1, 0.0, hk, k);
-  const SeatContact et = contact_with(w, x, y, 0.0, 0.0, angle, 0.0, hk, k);
+      contact_with(w, q1x + w.centre_x, q1y + w.centre_y, 0.0, 0.0, step.angle1, 0.0, hk, k, &cap);
+  const SeatContact et = contact_with(w, x, y, 0.0, 0.0, angle, 0.0, hk, k, &cap);
   const double en0 = e0.active ? e0.energy : 0.0, en1 = e1.active ? e1.energy : 0.0;
   // ∇E at the θ point: G_q = f n, G_ψ = −τ (the elastic force −∇_q E, torque −∂E/∂ψ)
   const double gx = et.active ? et.force * et.nx : 0.0, gy = et.active ? et.force * et.ny : 0.0;
@@ -555,7 +565,7 @@ void update_held(const Model& model, State& s) {
         const PocketVertex v = nearest_pocket(wheel, std::atan2(ry, rx), s.angle[w]);
         double vx = 0.0, vy = 0.0;
         vertex_point(wheel, v.angle, vx, vy);
-        if (!in_body(wheel, std::hypot(s.x[i] - vx, s.y[i] - vy))) {
+        if (!in_body(wheel, nullptr, std::hypot(s.x[i] - vx, s.y[i] - vy))) {
           s.held_wheel[i] = wi;
           s.held_pocket[i] = v.index;
         } else if (s.held_wheel[i] == wi) {
