@@ -244,6 +244,8 @@ TEST(DynamicsSeatDiscreteGradient, ForceIsContinuousWhereTheContactSwitches) {
     ASSERT_GT(theta_point.penetration, 2e-6);
     const SeatContact c = step_contact(tip, p0, p1, 0.0, 0.0, true);
     force[j] = c.force;
+    // with both ends clear it is no contact at all: no force, and no depth for max_penetration
+    EXPECT_EQ(c.active, j == 1) << "g1 = " << g1;
   }
   std::printf("seat discrete gradient: the tip's force at g1 = -/+ 1e-10 m: %.6g / %.6g N\n",
               force[0], force[1]);
@@ -329,7 +331,7 @@ TEST(DynamicsSeatDiscreteGradient, DamperWorkOverAStepIsNeverPositive) {
     const double fe = (penalty_energy(k.g1) - penalty_energy(k.g0)) / dg;
     ASSERT_GT(fe + damper, 0.0) << k.g0 << " -> " << k.g1 << ": not clamped";
     const double dissipated = -damper * dg;  // the damper's work, −c̄ Δg²/h
-    EXPECT_LE(dissipated, 0.0);
+    EXPECT_LE(h * sc.damping_power, 0.0) << k.g0 << " -> " << k.g1;
     const double err = std::abs(work - (-change + dissipated));
     const double scale = std::abs(change) + std::abs(dissipated);
     EXPECT_LE(err, 1e-8 * scale) << k.g0 << " -> " << k.g1 << ": work " << work << ", -dE "
@@ -342,6 +344,21 @@ TEST(DynamicsSeatDiscreteGradient, DamperWorkOverAStepIsNeverPositive) {
       "seat discrete gradient, damped (800 N s/m): |work - (-dE + damper's)| worst %.2e of the "
       "step's |dE| + |damper's|; the reported damper's work %.2e\n",
       worst, worst_damper);
+  // The clamp: a fast exit (3 → 0.5 µm in a step) against a heavy damper (2e5 N s/m) pulls
+  // f_e + f_d below 0. No force, no correction along the step, and the damper's reported work is
+  // f_e Δg < 0: the contact does no work, so the damper took all of the elastic energy released.
+  const double heavy_c = 2e5, g0 = 3e-6, g1 = 0.5e-6;
+  Sprocket heavy = wheel17(true);
+  heavy.contact_damping = heavy_c;
+  const SeatContact clamped = step_contact(heavy, in_seat(heavy, psi, g0, 0.0, 0.8e-3),
+                                           in_seat(heavy, psi, g1, 0.0, 0.9e-3), psi, psi, true, h);
+  const double fe = (penalty_energy(g1) - penalty_energy(g0)) / (g1 - g0);
+  ASSERT_LT(fe + (damper_potential(g1, heavy_c) - damper_potential(g0, heavy_c)) / h, 0.0)
+      << "the case must clamp";
+  EXPECT_EQ(clamped.force, 0.0);
+  EXPECT_EQ(clamped.skew, 0.0);
+  EXPECT_LT(h * clamped.damping_power, 0.0);
+  EXPECT_NEAR(h * clamped.damping_power, fe * (g1 - g0), 1e-8 * std::abs(fe * (g1 - g0)));
 }
 
 // (2) The Newton matrix with the discrete gradient against central differences of the step's

@@ -1362,9 +1362,10 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
       seat_gap(w, t, step->x0, step->y0, step->cx0, step->cy0, step->cs0, step->sn0);
   const SeatGap end =
       seat_gap(w, t, step->x1, step->y1, step->cx1, step->cy1, step->cs1, step->sn1);
-  // active where either end or the θ point is in contact: on a convex surface (a tooth's tip) the
-  // θ point can be inside with both ends clear; then f_e = 0 and the damper acts alone
-  if (!(std::max({start.g, end.g, g}) > 0.0)) return c;
+  // active where either end is in contact: the elastic part and the damper both come from the
+  // ends' gaps, so on a convex surface (a tooth's tip) a θ point inside with both ends clear
+  // carries no force, and it is not a contact (no depth into max_penetration)
+  if (!(std::max(start.g, end.g) > 0.0)) return c;
   const DiscreteGradient dgr =
       discrete_gradient([&](double gap) { return seat_elastic(w, gap); }, start.g, end.g);
   // The damper over the step too (step_damper): at θ = ½ the θ point's damper made the rollers
