@@ -15,6 +15,7 @@
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/pocket_wheel.hpp"
 #include "catena/pocketwheel/geometry.hpp"
+#include "penalty_ramp.hpp"
 #include "residual_difference.hpp"
 
 namespace catena::dynamics {
@@ -410,7 +411,7 @@ TEST(DynamicsPocket, RampReportsTheForceEquivalentDepth) {
   ramped.pocket_mouth = 0.5 * ramped.pocket_clearance;
   const double c = ramped.pocket_clearance, r = ramped.pitch_radius, w = ramped.pocket_mouth;
   const double eps = ramped.contact_smoothing, kc = ramped.contact_stiffness;
-  auto law = [&](double g) { return g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps); };
+  auto law = [&](double g) { return testing::penalty_ramp_force(kc, eps, g); };
   int on_ramp = 0, in_mouth = 0;
   // the smallest and largest depth/g on the ramp (above 1 where the ramp's radial push, E₀ W s′,
   // exceeds the unramped force); measured over these 400 trials (337 on the ramp): 0.00208 to 2.04
@@ -689,7 +690,7 @@ TEST(DynamicsPocket, ReleaseNewtonBlocksIncludeTheDamper) {
     if (std::abs(len - c - eps) < 1e-8) continue;
     const SeatContact el = at(x, y, 0.0, 0.0);
     const double g = len - c;
-    const double fel = g < eps ? 0.5 * 1e8 * g * g / eps : 1e8 * (g - 0.5 * eps);
+    const double fel = testing::penalty_ramp_force(1e8, eps, g);
     const double rate = (vx + omega * (y - w.centre_y)) * std::cos(a + beta) +
                         (vy - omega * (x - w.centre_x)) * std::sin(a + beta);
     const double cg = 2000.0 * std::min(1.0, g / eps);
