@@ -15,6 +15,7 @@
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/pocket_wheel.hpp"
 #include "catena/pocketwheel/geometry.hpp"
+#include "penalty_ramp.hpp"
 #include "pocket_setups.hpp"
 #include "residual_difference.hpp"
 
@@ -411,7 +412,7 @@ TEST(DynamicsPocket, RampReportsTheForceEquivalentDepth) {
   ramped.pocket_mouth = 0.5 * ramped.pocket_clearance;
   const double c = ramped.pocket_clearance, r = ramped.pitch_radius, w = ramped.pocket_mouth;
   const double eps = ramped.contact_smoothing, kc = ramped.contact_stiffness;
-  auto law = [&](double g) { return g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps); };
+  auto law = [&](double g) { return testing::penalty_ramp_force(kc, eps, g); };
   int on_ramp = 0, in_mouth = 0;
   // the smallest and largest depth/g on the ramp (above 1 where the ramp's radial push, E₀ W s′,
   // exceeds the unramped force); measured over these 400 trials (337 on the ramp): 0.00208 to 2.04
@@ -644,7 +645,7 @@ TEST(DynamicsPocket, ReleaseNewtonBlocksIncludeTheDamper) {
     if (std::abs(len - c - eps) < 1e-8) continue;
     const SeatContact el = at(x, y, 0.0, 0.0);
     const double g = len - c;
-    const double fel = g < eps ? 0.5 * 1e8 * g * g / eps : 1e8 * (g - 0.5 * eps);
+    const double fel = testing::penalty_ramp_force(1e8, eps, g);
     const double rate = (vx + omega * (y - w.centre_y)) * std::cos(a + beta) +
                         (vy - omega * (x - w.centre_x)) * std::sin(a + beta);
     const double cg = 2000.0 * std::min(1.0, g / eps);
@@ -1063,6 +1064,27 @@ TEST(DynamicsPocket, BodyBetweenThePocketsIsTheGradientOfItsEnergyWithExactDeriv
   EXPECT_GT(rim, 200);
 }
 
+// A ray out of a pocket's vertex, the wheel at ψ = 0: the vertex (x, y) and the direction (ux, uy).
+struct VertexRay {
+  double x = 0.0, y = 0.0, ux = 0.0, uy = 0.0;
+};
+
+// `count` rays out of each of the vertices 0 and 1 (ψ = 0), at the angles 2π (r + offset)/count
+// (r = 0 … count − 1), vertex 0's first: the sweeps' set-up of the body's blend below.
+std::vector<VertexRay> vertex_rays(const Sprocket& w, int count, double offset) {
+  std::vector<VertexRay> rays;
+  for (int m = 0; m < 2; ++m) {
+    const double a = m * w.pocket_angle;
+    const double x = w.centre_x + w.pitch_radius * std::cos(a);
+    const double y = w.centre_y + w.pitch_radius * std::sin(a);
+    for (int r = 0; r < count; ++r) {
+      const double dir = 2 * kPi * (r + offset) / count;
+      rays.push_back({x, y, std::cos(dir), std::sin(dir)});
+    }
+  }
+  return rays;
+}
+
 // The switch from the pocket to the body is continuous: along rays out of a vertex (every
 // direction, the wheel at rest) the force's step between points 0.1 µm apart, over the distance
 // 9.9c–20.1c, is the smooth change only — at most (largest slope along the ray) × 0.1 µm — across
@@ -1078,44 +1100,37 @@ TEST(DynamicsPocket, BodyTakesOverFromThePocketWithoutAJump) {
   double largest_step = 0.0, largest_force = 0.0, largest_slope = 0.0, corner_step = 0.0;
   double leaving_step = 0.0;
   int rays = 0, leaving = 0, corners = 0;
-  for (int m = 0; m < 2; ++m) {
-    const double a = m * w.pocket_angle;  // vertices 0 and 1, ψ = 0
-    const double vx = w.centre_x + w.pitch_radius * std::cos(a);
-    const double vy = w.centre_y + w.pitch_radius * std::sin(a);
-    for (int r = 0; r < 72; ++r) {
-      const double dir = 2 * kPi * r / 72.0;
-      double prev[2] = {NAN, NAN};
-      bool was_inside = true, left = false, corner = false;
-      int last = 0;  // the pocket's law (0) or the body's (3)
-      for (double s = 9.9 * c; s <= 20.1 * c; s += step) {
-        const double x = vx + s * std::cos(dir), y = vy + s * std::sin(dir);
-        const double rho = std::hypot(x - w.centre_x, y - w.centre_y);
-        const bool inside = rho <= mouth;
-        const SeatContact k = pocket_contact(w, x, y, 0.0, 0.0, 0.0, 0.0);
-        double f[2];
-        total_force(w, k, x, y, f);
-        const double jump = std::hypot(f[0] - prev[0], f[1] - prev[1]);
-        if (k.surface != last && mouth - rho < 10.0 * c) {
-          corner = true;  // 10c crossed within the band (or outside the mouth: both 0)
-          corner_step = std::max(corner_step, jump);
-        } else if (!std::isnan(prev[0]) && (inside || s > 10.0 * c)) {  // not the sharp mouth
-          largest_step = std::max(largest_step, jump);
-          if (was_inside && !inside) leaving_step = std::max(leaving_step, jump), left = true;
-        }
-        prev[0] = f[0], prev[1] = f[1];
-        was_inside = inside;
-        last = k.surface;
-        largest_force = std::max(largest_force, std::hypot(f[0], f[1]));
-        double dq[4];
-        total_dq(w, k, x, y, 0.0, 0.0, 0.0, dq);
-        largest_slope =
-            std::max(largest_slope, std::hypot(dq[0] * std::cos(dir) + dq[1] * std::sin(dir),
-                                               dq[2] * std::cos(dir) + dq[3] * std::sin(dir)));
+  for (const VertexRay& ray : vertex_rays(w, 72, 0.0)) {
+    double prev[2] = {NAN, NAN};
+    bool was_inside = true, left = false, corner = false;
+    int last = 0;  // the pocket's law (0) or the body's (3)
+    for (double s = 9.9 * c; s <= 20.1 * c; s += step) {
+      const double x = ray.x + s * ray.ux, y = ray.y + s * ray.uy;
+      const double rho = std::hypot(x - w.centre_x, y - w.centre_y);
+      const bool inside = rho <= mouth;
+      const SeatContact k = pocket_contact(w, x, y, 0.0, 0.0, 0.0, 0.0);
+      double f[2];
+      total_force(w, k, x, y, f);
+      const double jump = std::hypot(f[0] - prev[0], f[1] - prev[1]);
+      if (k.surface != last && mouth - rho < 10.0 * c) {
+        corner = true;  // 10c crossed within the band (or outside the mouth: both 0)
+        corner_step = std::max(corner_step, jump);
+      } else if (!std::isnan(prev[0]) && (inside || s > 10.0 * c)) {  // not the sharp mouth
+        largest_step = std::max(largest_step, jump);
+        if (was_inside && !inside) leaving_step = std::max(leaving_step, jump), left = true;
       }
-      rays += was_inside ? 1 : 0;
-      leaving += left ? 1 : 0;
-      corners += corner ? 1 : 0;
+      prev[0] = f[0], prev[1] = f[1];
+      was_inside = inside;
+      last = k.surface;
+      largest_force = std::max(largest_force, std::hypot(f[0], f[1]));
+      double dq[4];
+      total_dq(w, k, x, y, 0.0, 0.0, 0.0, dq);
+      largest_slope = std::max(largest_slope, std::hypot(dq[0] * ray.ux + dq[1] * ray.uy,
+                                                         dq[2] * ray.ux + dq[3] * ray.uy));
     }
+    rays += was_inside ? 1 : 0;
+    leaving += left ? 1 : 0;
+    corners += corner ? 1 : 0;
   }
   // and radially out over the mouth (from 6c within it to c beyond) at 10.5c–20c along the pitch
   // circle from either vertex
@@ -1253,48 +1268,43 @@ TEST(DynamicsPocket, PocketFrictionFadesOverTheBodysBlendWithoutAJump) {
   const double kc = w.contact_stiffness;
   double largest_step = 0.0, largest_slope = 0.0, old = 0.0, largest = 0.0, corner = 0.0;
   int rays = 0, faded = 0, rim = 0;
-  for (int m = 0; m < 2; ++m) {
-    const double a = m * w.pocket_angle;  // vertices 0 and 1, ψ = 0
-    const double vx = w.centre_x + w.pitch_radius * std::cos(a);
-    const double vy = w.centre_y + w.pitch_radius * std::sin(a);
-    for (int r = 0; r < 36; ++r) {
-      const double dir = 2 * kPi * (r + 0.5) / 36.0, ux = std::cos(dir), uy = std::sin(dir);
-      const double jx = -0.2 * uy, jy = 0.2 * ux;  // slipping across the ray
-      double prev[2] = {NAN, NAN};
-      bool crossed = false;
-      int last = 0;  // the pocket's law (0) or the body's (3)
-      for (double s = 9.9 * c; s <= 20.1 * c; s += step) {
-        const double x = vx + s * ux, y = vy + s * uy;
-        const double rho = std::hypot(x - w.centre_x, y - w.centre_y);
-        const bool inside = rho <= mouth;
-        const SeatContact k = pocket_contact(w, x, y, jx, jy, 0.0, 0.0);
-        const SeatFriction f = seat_friction(w, k, x, y, jx, jy, 0.0);
-        const bool rubs = k.friction_weight > 0.0;  // as the integrator
-        const double fx = rubs ? f.fx : 0.0, fy = rubs ? f.fy : 0.0;
-        const double size = std::hypot(fx, fy);
-        if (s < 10.0 * c) old = std::max(old, size);
-        if (s > 20.0 * c && k.active) {
-          EXPECT_EQ(size, 0.0) << "the rim is frictionless";
-          ++rim;
-        }
-        if (k.active && k.surface == 3 && s < 19.0 * c && size > 0.0) crossed = true;
-        largest = std::max(largest, size);
-        const double jump = std::hypot(fx - prev[0], fy - prev[1]);
-        if (k.active && k.surface != last && mouth - rho < 10.0 * c) {
-          corner = std::max(corner, jump);  // 10c crossed within the band of the mouth
-        } else if (!std::isnan(prev[0]) && (inside || s > 10.0 * c)) {  // not the sharp mouth
-          largest_step = std::max(largest_step, jump);
-        }
-        prev[0] = fx, prev[1] = fy;
-        last = k.active ? k.surface : last;
-        if (rubs) {
-          largest_slope = std::max(
-              largest_slope, std::hypot(f.dq[0] * ux + f.dq[1] * uy, f.dq[2] * ux + f.dq[3] * uy));
-        }
+  for (const VertexRay& ray : vertex_rays(w, 36, 0.5)) {
+    const double ux = ray.ux, uy = ray.uy;
+    const double jx = -0.2 * uy, jy = 0.2 * ux;  // slipping across the ray
+    double prev[2] = {NAN, NAN};
+    bool crossed = false;
+    int last = 0;  // the pocket's law (0) or the body's (3)
+    for (double s = 9.9 * c; s <= 20.1 * c; s += step) {
+      const double x = ray.x + s * ux, y = ray.y + s * uy;
+      const double rho = std::hypot(x - w.centre_x, y - w.centre_y);
+      const bool inside = rho <= mouth;
+      const SeatContact k = pocket_contact(w, x, y, jx, jy, 0.0, 0.0);
+      const SeatFriction f = seat_friction(w, k, x, y, jx, jy, 0.0);
+      const bool rubs = k.friction_weight > 0.0;  // as the integrator
+      const double fx = rubs ? f.fx : 0.0, fy = rubs ? f.fy : 0.0;
+      const double size = std::hypot(fx, fy);
+      if (s < 10.0 * c) old = std::max(old, size);
+      if (s > 20.0 * c && k.active) {
+        EXPECT_EQ(size, 0.0) << "the rim is frictionless";
+        ++rim;
       }
-      ++rays;
-      faded += crossed ? 1 : 0;
+      if (k.active && k.surface == 3 && s < 19.0 * c && size > 0.0) crossed = true;
+      largest = std::max(largest, size);
+      const double jump = std::hypot(fx - prev[0], fy - prev[1]);
+      if (k.active && k.surface != last && mouth - rho < 10.0 * c) {
+        corner = std::max(corner, jump);  // 10c crossed within the band of the mouth
+      } else if (!std::isnan(prev[0]) && (inside || s > 10.0 * c)) {  // not the sharp mouth
+        largest_step = std::max(largest_step, jump);
+      }
+      prev[0] = fx, prev[1] = fy;
+      last = k.active ? k.surface : last;
+      if (rubs) {
+        largest_slope = std::max(
+            largest_slope, std::hypot(f.dq[0] * ux + f.dq[1] * uy, f.dq[2] * ux + f.dq[3] * uy));
+      }
     }
+    ++rays;
+    faded += crossed ? 1 : 0;
   }
   std::printf(
       "the pocket's friction over the body's blend: %d rays (%d rubbing on the body), "

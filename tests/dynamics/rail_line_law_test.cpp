@@ -19,6 +19,7 @@
 
 #include "catena/dynamics/integrator.hpp"
 #include "log_simpson.hpp"
+#include "penalty_ramp.hpp"
 #include "residual_difference.hpp"
 
 namespace catena::dynamics {
@@ -521,7 +522,8 @@ TEST(DynamicsRailLineLaw, DiscreteGradientsWorkIsTheEnergysChange) {
 // (5b) The discrete gradient of the penalty (contact_law "penalty" with discrete_gradient set:
 // through the API only, the case file sets it with the line law): over steps on a straight rail
 // across the ramp's ε, past it and out of contact, the elastic force's work is −ΔE of the
-// penalty's energy written out here, kc g³/(6ε) within the ramp, kc (g²/2 − ε g/2 + ε²/6) past it.
+// penalty's energy (penalty_ramp.hpp), kc g³/(6ε) within the ramp, kc (g²/2 − ε g/2 + ε²/6) past
+// it.
 TEST(DynamicsRailLineLaw, PenaltysDiscreteGradientsWorkIsTheEnergysChange) {
   Guide g = rail(Guide::Kind::kStraight, false);
   g.line_law = false;
@@ -529,11 +531,7 @@ TEST(DynamicsRailLineLaw, PenaltysDiscreteGradientsWorkIsTheEnergysChange) {
   g.contact_smoothing = 1e-6;
   const double kc = g.contact_stiffness, eps = g.contact_smoothing;
   const GuideFrame f = guide_frame(g);
-  auto penalty_energy = [&](double gap) {
-    if (!(gap > 0.0)) return 0.0;
-    return gap < eps ? kc * gap * gap * gap / (6.0 * eps)
-                     : kc * (0.5 * gap * gap - 0.5 * eps * gap + eps * eps / 6.0);
-  };
+  auto penalty_energy = [&](double gap) { return testing::penalty_ramp_energy(kc, eps, gap); };
   struct Step {
     double g0, g1;  // [m] the gaps at the step's ends
   };
@@ -650,9 +648,9 @@ TEST(DynamicsRailLineLaw, DiscreteGradientsNewtonMatrixOnEntryAndExit) {
 
 // (8) The damper over the step (Guide::discrete_gradient; docs "Guides: the discrete gradient",
 // the seats' "The damper over the step"): f_d = (C(g₁) − C(g₀))/h, C(g) = ∫₀^g c_c min(1, s/ε) ds
-// written out here. On a penalty rail (1e7 N/m, ε = 1 µm, c_c = 200 N s/m, h = 0.1 ms) over steps
-// entering from 2 µm above, pressing within the ramp and past it, lifting, leaving within the
-// ramp and out of contact: the contact's work on the roller is −ΔE − (C(g₁) − C(g₀)) Δg/h, the
+// (penalty_ramp.hpp). On a penalty rail (1e7 N/m, ε = 1 µm, c_c = 200 N s/m, h = 0.1 ms) over
+// steps entering from 2 µm above, pressing within the ramp and past it, lifting, leaving within
+// the ramp and out of contact: the contact's work on the roller is −ΔE − (C(g₁) − C(g₀)) Δg/h, the
 // damper's share is never positive and `damping_power` h books it. Straight (exact to rounding)
 // and outside an arc (R = 0.25 m, 0.1 mm along it: the gap is not affine there, the miss
 // measured). A step leaving fast clamps the force at 0: no work, the damper's share f_e Δg ≤ 0.
@@ -673,14 +671,9 @@ TEST(DynamicsRailLineLaw, DamperOverTheStepWorkIsNeverPositive) {
     g.contact_damping = kDamper;
     const double kc = g.contact_stiffness, eps = g.contact_smoothing;
     const GuideFrame f = guide_frame(g);
-    auto penalty_energy = [&](double gap) {
-      if (!(gap > 0.0)) return 0.0;
-      return gap < eps ? kc * gap * gap * gap / (6.0 * eps)
-                       : kc * (0.5 * gap * gap - 0.5 * eps * gap + eps * eps / 6.0);
-    };
+    auto penalty_energy = [&](double gap) { return testing::penalty_ramp_energy(kc, eps, gap); };
     auto damper_potential = [&](double gap) {  // C(g)
-      if (!(gap > 0.0)) return 0.0;
-      return gap < eps ? 0.5 * kDamper * gap * gap / eps : kDamper * (gap - 0.5 * eps);
+      return testing::penalty_ramp_force(kDamper, eps, gap);
     };
     // the gap as the rail takes it: r − y on the straight rail, R + r − |q| outside the arc
     auto gap_at = [&](const Touch& t) {

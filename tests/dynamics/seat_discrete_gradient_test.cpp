@@ -2,10 +2,10 @@
 // "Sprockets: the discrete gradient"): the seat's elastic force over a step is
 // (E(g₁) − E(g₀))/(g₁ − g₀) between the gaps in the θ point's seat at the step's ends. Its work on
 // roller and wheel over one step against the change of the contact's energy (the penalty's,
-// written out here), the Newton matrix against central differences of the step's residual, and a
-// roller-chain drive at θ = ½ whose work balance closes with it and not without it; the force's
-// continuity where the contact switches, and the integrator's reach test for a roller entering
-// over a tooth's tip.
+// written out in penalty_ramp.hpp), the Newton matrix against central differences of the step's
+// residual, and a roller-chain drive at θ = ½ whose work balance closes with it and not without
+// it; the force's continuity where the contact switches, and the integrator's reach test for a
+// roller entering over a tooth's tip.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "catena/dynamics/integrator.hpp"
+#include "penalty_ramp.hpp"
 #include "pressed_loop.hpp"
 #include "residual_difference.hpp"
 #include "two_wheel_loops.hpp"
@@ -28,14 +29,9 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kPitch = 0.01905, kRoller = 0.01207, kWidth = 0.01168;
 constexpr double kStiffness = 2e8, kSmoothing = 1e-6;  // [N/m], [m] the seats' penalty
 
-// The penalty's energy at the gap g, written out: k_c g³/(6ε) within the ramp, k_c (g²/2 − ε g/2
-// + ε²/6) past it, 0 out of contact.
-double penalty_energy(double g) {
-  if (!(g > 0.0)) return 0.0;
-  return g < kSmoothing
-             ? kStiffness * g * g * g / (6.0 * kSmoothing)
-             : kStiffness * (0.5 * g * g - 0.5 * kSmoothing * g + kSmoothing * kSmoothing / 6.0);
-}
+// The seats' penalty's energy at the gap g (penalty_ramp.hpp): k_c g³/(6ε) within the ramp,
+// k_c (g²/2 − ε g/2 + ε²/6) past it, 0 out of contact.
+double penalty_energy(double g) { return testing::penalty_ramp_energy(kStiffness, kSmoothing, g); }
 
 Sprocket wheel17(bool straight_flank) {
   Sprocket w = iso606_sprocket(kPitch, kRoller, kWidth, 17, 0.0, 0.0, kStiffness, 0.0);
@@ -280,15 +276,14 @@ TEST(DynamicsSeatDiscreteGradient, ForceIsContinuousWhereTheContactSwitches) {
 }
 
 // (1b) The damper over the step: f_d = (C(g₁) − C(g₀))/h with C(g) = ∫₀^g c(s) ds, c(s) = c_c
-// min(1, s/ε), written out here. Over one step the contact's work on roller and wheel is
-// −ΔE − (C(g₁) − C(g₀)) Δg/h (the damper's −c̄ Δg²/h ≤ 0), and the reported damper's work
+// min(1, s/ε), written out in penalty_ramp.hpp. Over one step the contact's work on roller and
+// wheel is −ΔE − (C(g₁) − C(g₀)) Δg/h (the damper's −c̄ Δg²/h ≤ 0), and the reported damper's work
 // h·damping_power is that share, ≤ 0: on the held straight flank entering from 2 µm out, pressing
 // within the ramp and past it, lifting and leaving; on the seating arc swinging, and on a wheel
 // turning 3e-3 rad over the step (the correction along the step carries the damper's share too).
 // The θ point's damper c(g_θ) ġ_θ differs within the ramp and its work misses Δg on a curved path.
 double damper_potential(double g, double c) {
-  if (!(g > 0.0)) return 0.0;
-  return g < kSmoothing ? 0.5 * c * g * g / kSmoothing : c * (g - 0.5 * kSmoothing);
+  return testing::penalty_ramp_force(c, kSmoothing, g);
 }
 
 TEST(DynamicsSeatDiscreteGradient, DamperWorkOverAStepIsNeverPositive) {

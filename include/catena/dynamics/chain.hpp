@@ -37,6 +37,23 @@ struct LineForce {
 };
 LineForce line_force(const LineLaw& l, double g);
 
+namespace detail {
+/// The penalty's C¹ ramp over the first ε (docs/models/dynamics.md, "Contact law"), the one
+/// written-out form the seats, the rails and the take-up's stops share: at the gap g with the
+/// stiffness k, the force k g²/2ε within the ramp (g < ε) and k (g − ε/2) past it, its slope
+/// k g/ε | k and its energy k g³/6ε | k (g²/2 − ε g/2 + ε²/6). With the damping c_c for k the
+/// force is the ramped damper's integral C(g) = ∫₀^g c_c min(1, s/ε) ds. For g > 0 only: the
+/// caller keeps g ≤ 0 out (the formulas are not 0 there).
+inline LineForce penalty_ramp(double k, double eps, double g) {
+  LineForce e;
+  e.force = g < eps ? 0.5 * k * g * g / eps : k * (g - 0.5 * eps);
+  e.stiffness = g < eps ? k * g / eps : k;
+  e.energy =
+      g < eps ? k * g * g * g / (6.0 * eps) : k * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
+  return e;
+}
+}  // namespace detail
+
 /// A rigid sprocket: its rollers' seats on the ISO 606 tooth form (seat i's centre on the pitch
 /// circle at the angle ψ + 2π i/z, the seating arc of radius ri about it). Roller–seat contact is a
 /// unilateral linear penalty with damping (or, with line_law, the Hertz line contact's law). A
@@ -166,15 +183,13 @@ inline SlideStop slide_stop(const Sprocket& w, double s, double rate) {
   const double g = out.penetration, eps = w.contact_smoothing, k = w.contact_stiffness;
   const double c = w.contact_damping, gdot = -dir * rate;  // the penetration's rate
   const bool ramp = g < eps;
-  const double elastic = ramp ? k * g * g / (2.0 * eps) : k * (g - 0.5 * eps);
-  const double kel = ramp ? k * g / eps : k;
+  const LineForce el = detail::penalty_ramp(k, eps, g);  // g > 0 here
   const double r = ramp ? g / eps : 1.0, dr = ramp ? 1.0 / eps : 0.0;
-  out.energy =
-      ramp ? k * g * g * g / (6.0 * eps) : k * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
-  const double f = elastic + c * r * gdot;
+  out.energy = el.energy;
+  const double f = el.force + c * r * gdot;
   if (!(f > 0.0)) return out;  // separating faster than the spring pushes: no force
   out.force = dir * f;
-  out.stiffness = kel + c * dr * gdot;
+  out.stiffness = el.stiffness + c * dr * gdot;
   out.damping = c * r;
   out.damping_power = -c * r * gdot * gdot;
   return out;

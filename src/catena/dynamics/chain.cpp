@@ -627,13 +627,8 @@ namespace {
 // C¹ ramp over the first ε. A rail's and a seat's.
 LineForce contact_elastic(bool line_law, const LineLaw& line, double kc, double eps, double g) {
   if (line_law) return line_force(line, g);
-  LineForce e;
-  if (!(g > 0.0)) return e;
-  e.force = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
-  e.stiffness = g < eps ? kc * g / eps : kc;
-  e.energy =
-      g < eps ? kc * g * g * g / (6.0 * eps) : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
-  return e;
+  if (!(g > 0.0)) return {};
+  return detail::penalty_ramp(kc, eps, g);
 }
 LineForce rail_elastic(const Guide& gd, double g) {
   return contact_elastic(gd.line_law, gd.line, gd.contact_stiffness, gd.contact_smoothing, g);
@@ -699,8 +694,7 @@ struct StepDamper {
 };
 StepDamper step_damper(double cc, double eps, double g0, double g1, double h) {
   auto potential = [&](double gap) {
-    if (!(gap > 0.0)) return 0.0;
-    return gap < eps ? 0.5 * cc * gap * gap / eps : cc * (gap - 0.5 * eps);
+    return gap > 0.0 ? detail::penalty_ramp(cc, eps, gap).force : 0.0;
   };
   return {(potential(g1) - potential(g0)) / h, cc * std::clamp(g1 / eps, 0.0, 1.0) / h};
 }
@@ -1021,18 +1015,10 @@ void apply_seat_law(const Sprocket& w, double g, double rx, double ry, double vx
   // rate of penetration: the roller's velocity relative to the wheel's material point under it
   const double rate = (vx + speed * ry) * c.nx + (vy - speed * rx) * c.ny;
   const double eps = w.contact_smoothing, kc = w.contact_stiffness;
-  double elastic = 0.0;
-  if (w.line_law) {
-    const LineForce lf = line_force(w.line, g);
-    elastic = lf.force;
-    c.stiffness = lf.stiffness;
-    c.energy = lf.energy;
-  } else {
-    elastic = g < eps ? 0.5 * kc * g * g / eps : kc * (g - 0.5 * eps);
-    c.stiffness = g < eps ? kc * g / eps : kc;
-    c.energy = g < eps ? kc * g * g * g / (6.0 * eps)
-                       : kc * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
-  }
+  const LineForce lf = w.line_law ? line_force(w.line, g) : detail::penalty_ramp(kc, eps, g);
+  const double elastic = lf.force;
+  c.stiffness = lf.stiffness;
+  c.energy = lf.energy;
   c.damping = w.contact_damping * std::min(1.0, g / eps);
   c.force = std::max(0.0, elastic + c.damping * rate);
   // ∂f/∂g: the elastic slope, and the damping's ramp over the first ε
