@@ -136,6 +136,18 @@ TEST(HullBridge, SameIndicesAsTheScanOnRandomDrives) {
   EXPECT_EQ(bad, 0);
 }
 
+// Two sprockets of 6–150 teeth on a 12.7 mm pitch drawn from rng: their teeth and pitch radii.
+struct ToothPair {
+  int z1, z2;
+  double r1, r2;
+};
+ToothPair random_teeth(std::mt19937& rng) {
+  std::uniform_int_distribution<int> teeth(6, 150);
+  const int z1 = teeth(rng), z2 = teeth(rng);
+  constexpr double pitch = 0.0127;
+  return {z1, z2, pitch_radius(pitch, z1), pitch_radius(pitch, z2)};
+}
+
 // Two vertices equally far from the bridge's normal: the first (lower index) of equal dot
 // products wins, then the walk's tolerance decides. The phase −π/z puts vertices 0 and 1 at
 // exactly ∓π/z (2π/z is computed as twice π/z), equal in x to the last bit: a tie of both
@@ -143,13 +155,10 @@ TEST(HullBridge, SameIndicesAsTheScanOnRandomDrives) {
 // 1e-9 rad off.
 TEST(HullBridge, SameIndicesAsTheScanAtTies) {
   std::mt19937 rng(7);
-  std::uniform_int_distribution<int> teeth(6, 150);
   std::uniform_real_distribution<double> unit(0, 1);
   int bad = 0, exact_ties = 0;
   for (int trial = 0; trial < 3000 && bad < 10; ++trial) {
-    const double pitch = 0.0127;
-    const int z1 = teeth(rng), z2 = teeth(rng);
-    const double r1 = pitch_radius(pitch, z1), r2 = pitch_radius(pitch, z2);
+    const auto [z1, z2, r1, r2] = random_teeth(rng);
     const double a = (r1 + r2) * (trial % 3 == 0 ? 1 + 1e-9 : 1 + 20 * unit(rng));
     PitchPolygon p1{0, 0, r1, -(kPi / z1), z1}, p2{0, a, r2, -(kPi / z2), z2};
     if (trial % 2 == 0) {
@@ -176,13 +185,10 @@ TEST(HullBridge, SameIndicesAsTheScanAtTies) {
 // centre's term rounds the dot products, and pairs within a few ulps of symmetric tie exactly.
 TEST(HullBridge, SameIndicesAsTheScanAtTiesAcrossVertexZero) {
   std::mt19937 rng(5);
-  std::uniform_int_distribution<int> teeth(6, 150);
   std::uniform_real_distribution<double> unit(0, 1);
   int bad = 0, exact_ties = 0;
   for (int trial = 0; trial < 3000 && bad < 10; ++trial) {
-    const double pitch = 0.0127;
-    const int z1 = teeth(rng), z2 = teeth(rng);
-    const double r1 = pitch_radius(pitch, z1), r2 = pitch_radius(pitch, z2);
+    const auto [z1, z2, r1, r2] = random_teeth(rng);
     const double a = (r1 + r2) * (1 + 20 * unit(rng)), angle = 2 * kPi * unit(rng);
     const double nudge[] = {0, 1e-16, -1e-16, 1e-15, -1e-15};
     const double e = nudge[trial % 5];
