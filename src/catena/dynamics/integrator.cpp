@@ -634,8 +634,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
           pull_y += sc.skew * sc.skew_y;
         }
       }
-      // separating: no force, no stiffness (a pocket's discrete gradient may still correct)
-      if (!jacobian || (sc.force <= 0.0 && !(wheel.pocket && sc.skew != 0.0))) continue;
+      // separating: no force, no stiffness, unless a discrete gradient's correction along the
+      // step acts (a pocket's may without the θ point's force; a seat's is f cc, 0 with f)
+      if (!jacobian || (sc.force <= 0.0 && sc.skew == 0.0)) continue;
       // D = ∂(h f n)/∂u = normal n nᵀ + tangent (I − n nᵀ), from
       // ∂(f n)/∂q = (∂f/∂g + c/(θh)) n nᵀ + (f/s)(I − n nᵀ), q = x_θ, ∂q/∂u = θ.
       // The damper's rate ġ = v_rel·n, v_rel = v − ω perp(q − c), also turns with the roller's
