@@ -88,6 +88,39 @@ TEST(DriveCli, RefusalsNameTheFlag) {
   EXPECT_NE(r.err.find("--strands"), std::string::npos) << r.err;
 }
 
+// A centre distance that needs more links than --links allows (100000) is refused as that flag
+// would be: before, 1e12 mm came out as 696057022 links (the count of 1.05e14 cut to an int) and
+// 1e9 mm solved a 10⁸-link wrap for minutes.
+TEST(DriveCli, CentreDistanceBeyondTheLinkCountIsRefused) {
+  for (const char* a : {"1e12mm", "1e9mm", "1e300mm"}) {
+    const CliRun r = run(kDrive + "--center-distance " + a + " --service-factor 1");
+    EXPECT_EQ(r.status, 2) << a << ": " << r.out;
+    EXPECT_NE(r.err.find("--center-distance"), std::string::npos) << a << ": " << r.err;
+    EXPECT_NE(r.err.find("at most 100000 links: at most "), std::string::npos)
+        << a << ": " << r.err;
+  }
+}
+
+// Tensions that overflow (a speed of 1e-310 rad/s: the effective pull P/v is infinite) leave the
+// shaft loads infinite, reported as not finite, the analysis run (the layout's shaft_loads
+// refuses such tensions); at 1e-300 rad/s (P/v = 9.7e304 N) they are computed.
+TEST(DriveCli, OverflowingTensionsLeaveTheShaftLoadsInfinite) {
+  const std::string drive = "drive --chain 12B --teeth 17,34 --links 100 --power 5kW --speed ";
+  CliRun r = run(drive + "1e-310 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["tension"]["tight"].is_null());
+  EXPECT_TRUE(j["shaft_load"]["driver"].is_null());
+  EXPECT_TRUE(j["shaft_load"]["driven"].is_null());
+  EXPECT_NE(r.err.find("'shaft_load.driver' is not finite (+inf)"), std::string::npos) << r.err;
+  EXPECT_TRUE(j["center_distance"].is_number());
+  r = run(drive + "1e-300 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["shaft_load"]["driver"].get<double>(), j["tension"]["tight"].get<double>(),
+              1e-12 * j["tension"]["tight"].get<double>());
+}
+
 TEST(DriveCli, BSeriesIsNotRatedAndSaysSo) {
   const CliRun r =
       run("drive --chain 12B --teeth 17,34 --speed 500rpm --power 5kW --mass-per-metre 1.2kg/m "

@@ -18,8 +18,6 @@ using analysis::Value;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kGravity = 9.80665;  // [m/s²] standard gravity
-constexpr int kMaxTeeth = 1000;
-constexpr int kMaxLinks = 100000;
 
 std::string chain_names() {
   std::string names;
@@ -35,7 +33,7 @@ std::optional<std::pair<int, int>> teeth_of(const Inputs& in) {
   const std::vector<double>& z = in.list("teeth");
   if (z.size() != 2) return std::nullopt;
   for (double v : z)
-    if (!(v >= 3 && v <= kMaxTeeth) || v != std::round(v)) return std::nullopt;
+    if (!(v >= kMinTeeth && v <= kMaxTeeth) || v != std::round(v)) return std::nullopt;
   return std::pair<int, int>{static_cast<int>(z[0]), static_cast<int>(z[1])};
 }
 
@@ -114,6 +112,12 @@ DriveResult drive_run(const Inputs& in) {
 
   if (in.given("center_distance")) {
     const double a = in.number("center_distance");
+    // the longest chain the link count allows (links_for and round_up_even need a count in range)
+    const double longest = center_distance_formula(p, z1, z2, kMaxLinks);
+    if (!(a <= longest))
+      throw InputError({{"center_distance", in.text("center_distance"),
+                         "a centre distance that needs at most " + std::to_string(kMaxLinks) +
+                             " links: at most " + format_g(longest * 1e3, 6) + " mm"}});
     r.given_center_distance = a;
     r.links_exact = links_for(p, z1, z2, a);
     r.links = round_up_even(*r.links_exact);
@@ -172,7 +176,15 @@ DriveResult drive_run(const Inputs& in) {
   if (in.given("slack_tension")) r.horizontal_tension = h;
   r.slack_tension = r.centrifugal_tension + h;
   r.tight_tension = r.effective_tension + r.slack_tension;
-  r.shaft = shaft_loads(p, z1, z2, a, r.tight_tension, r.slack_tension, r.centrifugal_tension);
+  const auto valid = [](double tension) { return std::abs(tension) <= kMaxTension; };
+  if (valid(r.tight_tension) && valid(r.slack_tension) && valid(r.centrifugal_tension)) {
+    r.shaft = shaft_loads(p, z1, z2, a, r.tight_tension, r.slack_tension, r.centrifugal_tension);
+  } else {  // tensions that overflow (an extreme power or speed): so do the loads along the
+            // line of centres, the sum of the spans' pulls (the result check reports them)
+    const double pull =
+        (r.tight_tension - r.centrifugal_tension) + (r.slack_tension - r.centrifugal_tension);
+    r.shaft = {pull, 0.0, -pull, 0.0};
+  }
   const double weight = r.mass_per_metre * kGravity;
   if (r.horizontal_tension)
     r.sag_from_tension = weight * r.span_length * r.span_length / (8 * *r.horizontal_tension);

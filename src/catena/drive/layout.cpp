@@ -170,32 +170,75 @@ double upper_offset(const PolygonWrap& w, double pitch) {
   return n - std::round(n);
 }
 
-}  // namespace
+// Input validation of the public functions: each check appends the issues of its arguments,
+// `refuse` throws them all at once. The public functions validate at entry, then call the
+// unchecked functions below them, which call each other (the solvers call them many times).
 
-double pitch_radius(double pitch, int teeth) { return pitch / (2 * std::sin(kPi / teeth)); }
-
-double links_for(double pitch, int z1, int z2, double a) {
-  const double delta = (z2 - z1) / (2 * kPi);
-  return 2 * a / pitch + (z1 + z2) / 2.0 + delta * delta * pitch / a;
+void refuse(const char* function, const std::vector<Issue>& issues) {
+  if (issues.empty()) return;
+  std::string text =
+      std::string(function) + ": " + std::to_string(issues.size()) + " invalid argument(s):";
+  for (const Issue& issue : issues) text += "\n  " + to_string(issue);
+  throw std::invalid_argument(text);
 }
 
-int round_up_even(double links) {
-  const double up = std::ceil(links - 1e-9);  // a whole count computed a few ulps high stays
-  const auto n = static_cast<std::int64_t>(up);
-  return static_cast<int>(n % 2 == 0 ? n : n + 1);
+bool check_pitch(std::vector<Issue>& issues, double pitch) {
+  if (pitch >= kMinPitch && pitch <= kMaxPitch) return true;
+  issues.push_back({"pitch", check::format_si(pitch, "m"), "1e-90 m to 1e+90 m"});
+  return false;
 }
 
-double center_distance_formula(double pitch, int z1, int z2, double links) {
-  const double sigma = z1 + z2, delta = (z2 - z1) / (2 * kPi);
-  const double m = links - sigma / 2;
-  const double disc = m * m - 8 * delta * delta;
-  if (!(disc >= 0) || !(m > 0)) return NAN;
-  return pitch / 4 * (m + std::sqrt(disc));
+bool check_teeth(std::vector<Issue>& issues, const char* name, int z) {
+  if (z >= kMinTeeth && z <= kMaxTeeth) return true;
+  issues.push_back({name, std::to_string(z),
+                    std::to_string(kMinTeeth) + " to " + std::to_string(kMaxTeeth) + " teeth"});
+  return false;
 }
 
-PolygonWrap polygon_hull(double pitch, int z1, int z2, double a, double phase1, double phase2) {
-  const Polygon p1{{0, 0}, pitch_radius(pitch, z1), phase1, z1};
-  const Polygon p2{{a, 0}, pitch_radius(pitch, z2), phase2, z2};
+// The pitch and both tooth counts; whether all three are valid (the pitch radii computable).
+bool check_sprockets(std::vector<Issue>& issues, double pitch, int z1, int z2) {
+  const bool p = check_pitch(issues, pitch);
+  const bool t1 = check_teeth(issues, "z1", z1);
+  const bool t2 = check_teeth(issues, "z2", z2);
+  return p && t1 && t2;
+}
+
+double radius_of(double pitch, int teeth) { return pitch / (2 * std::sin(kPi / teeth)); }
+
+double angle_of(double pitch, int z1, int z2, double a) {
+  return std::asin((radius_of(pitch, z2) - radius_of(pitch, z1)) / a);
+}
+
+// A centre distance at which the pitch circles are apart (when the sprockets are valid; else
+// only its own range is known).
+void check_apart(std::vector<Issue>& issues, const char* name, double a, bool sprockets,
+                 double pitch, int z1, int z2) {
+  if (sprockets) {
+    const double touch = radius_of(pitch, z1) + radius_of(pitch, z2);
+    if (!(a > touch && a <= kMaxCenterDistance))
+      issues.push_back({name, check::format_si(a, "m"),
+                        "more than r1 + r2 = " + check::format_si(touch, "m") +
+                            " (the pitch circles apart), at most 1e+100 m"});
+  } else if (!(a > 0 && a <= kMaxCenterDistance)) {
+    issues.push_back({name, check::format_si(a, "m"),
+                      "more than r1 + r2 (the pitch circles apart), at most 1e+100 m"});
+  }
+}
+
+void check_links(std::vector<Issue>& issues, int links) {
+  if (!(links >= kMinLinks && links <= kMaxLinks))
+    issues.push_back({"links", std::to_string(links),
+                      std::to_string(kMinLinks) + " to " + std::to_string(kMaxLinks) + " links"});
+}
+
+void check_tension(std::vector<Issue>& issues, const char* name, double value) {
+  if (!(std::abs(value) <= kMaxTension))
+    issues.push_back({name, check::format_si(value, "N"), "a finite value within ±1e+307 N"});
+}
+
+PolygonWrap hull_of(double pitch, int z1, int z2, double a, double phase1, double phase2) {
+  const Polygon p1{{0, 0}, radius_of(pitch, z1), phase1, z1};
+  const Polygon p2{{a, 0}, radius_of(pitch, z2), phase2, z2};
   PolygonWrap w;
   w.center_distance = a;
   w.phase1 = phase1;
@@ -213,6 +256,61 @@ PolygonWrap polygon_hull(double pitch, int z1, int z2, double a, double phase1, 
   return w;
 }
 
+}  // namespace
+
+double pitch_radius(double pitch, int teeth) {
+  std::vector<Issue> issues;
+  check_pitch(issues, pitch);
+  check_teeth(issues, "teeth", teeth);
+  refuse("pitch_radius", issues);
+  return radius_of(pitch, teeth);
+}
+
+double links_for(double pitch, int z1, int z2, double a) {
+  std::vector<Issue> issues;
+  check_sprockets(issues, pitch, z1, z2);
+  if (!(a > 0 && a <= kMaxCenterDistance))
+    issues.push_back(
+        {"center_distance", check::format_si(a, "m"), "more than 0 m, at most 1e+100 m"});
+  refuse("links_for", issues);
+  const double delta = (z2 - z1) / (2 * kPi);
+  return 2 * a / pitch + (z1 + z2) / 2.0 + delta * delta * pitch / a;
+}
+
+int round_up_even(double links) {
+  constexpr double kMax = std::numeric_limits<int>::max() - 1;  // the largest even int
+  // (a count within 1e-9 of a whole one is that one: 1e-9 and less would round to 0)
+  if (!(links > 1e-9 && links <= kMax))
+    refuse("round_up_even",
+           {{"links", check::format_si(links, ""), "more than 1e-9, at most 2147483646"}});
+  const double up = std::ceil(links - 1e-9);  // a whole count computed a few ulps high stays
+  const auto n = static_cast<std::int64_t>(up);
+  return static_cast<int>(n % 2 == 0 ? n : n + 1);
+}
+
+double center_distance_formula(double pitch, int z1, int z2, double links) {
+  std::vector<Issue> issues;
+  check_sprockets(issues, pitch, z1, z2);
+  if (!(links > 0 && links <= 1e100))
+    issues.push_back({"links", check::format_si(links, ""), "more than 0, at most 1e+100"});
+  refuse("center_distance_formula", issues);
+  const double sigma = z1 + z2, delta = (z2 - z1) / (2 * kPi);
+  const double m = links - sigma / 2;
+  const double disc = m * m - 8 * delta * delta;
+  if (!(disc >= 0) || !(m > 0)) return NAN;
+  return pitch / 4 * (m + std::sqrt(disc));
+}
+
+PolygonWrap polygon_hull(double pitch, int z1, int z2, double a, double phase1, double phase2) {
+  std::vector<Issue> issues;
+  const bool sprockets = check_sprockets(issues, pitch, z1, z2);
+  check_apart(issues, "center_distance", a, sprockets, pitch, z1, z2);
+  check::finite(issues, "phase1", phase1, "rad");
+  check::finite(issues, "phase2", phase2, "rad");
+  refuse("polygon_hull", issues);
+  return hull_of(pitch, z1, z2, a, phase1, phase2);
+}
+
 std::pair<int, int> hull_bridge(const PitchPolygon& a, const PitchPolygon& b) {
   // Lengths bounded so that the walk's tolerance 1e-14 (|b − a| + r_a + r_b)² and the dot and
   // cross products of coordinates stay finite and normal (no overflow, no digits lost to
@@ -222,7 +320,7 @@ std::pair<int, int> hull_bridge(const PitchPolygon& a, const PitchPolygon& b) {
   // 2π² r |b − a| / z² in the cross product, against its tolerance: at 10⁶ teeth the offset is
   // about 250 times the tolerance with the centres a diameter apart, only twice it with them a
   // thousand radii apart. Beyond, the walk could not tell the polygon from its circle.
-  constexpr int kMaxTeeth = 1000000;
+  constexpr int kMaxBridgeTeeth = 1000000;
   std::vector<Issue> issues;
   bool placed = true;  // every centre coordinate and radius in range
   auto polygon = [&](const std::string& name, const PitchPolygon& p) {
@@ -237,7 +335,7 @@ std::pair<int, int> hull_bridge(const PitchPolygon& a, const PitchPolygon& b) {
       issues.push_back({name + ".radius", check::format_si(p.radius, "m"), "1e-100 m to 1e+100 m"});
     }
     check::finite(issues, (name + ".phase").c_str(), p.phase, "rad");
-    if (p.teeth < 1 || p.teeth > kMaxTeeth)
+    if (p.teeth < 1 || p.teeth > kMaxBridgeTeeth)
       issues.push_back({name + ".teeth", std::to_string(p.teeth),
                         "1 to 1000000 (beyond, the walk cannot tell a polygon from its circle)"});
   };
@@ -249,23 +347,21 @@ std::pair<int, int> hull_bridge(const PitchPolygon& a, const PitchPolygon& b) {
       issues.push_back({"|(b.x, b.y) - (a.x, a.y)|", check::format_si(apart, "m"),
                         "more than a.radius + b.radius = " + check::format_si(touch, "m")});
   }
-  if (!issues.empty()) {
-    std::string text = "hull_bridge: " + std::to_string(issues.size()) + " invalid argument(s):";
-    for (const Issue& issue : issues) text += "\n  " + to_string(issue);
-    throw std::invalid_argument(text);
-  }
+  refuse("hull_bridge", issues);
   const Bridge r =
       bridge({{a.x, a.y}, a.radius, a.phase, a.teeth}, {{b.x, b.y}, b.radius, b.phase, b.teeth});
   return {r.ia, r.ib};
 }
 
-PolygonWrap polygon_wrap(double pitch, int z1, int z2, int links, double phase1) {
-  const double r1 = pitch_radius(pitch, z1), r2 = pitch_radius(pitch, z2);
+namespace {
+
+PolygonWrap wrap_of(double pitch, int z1, int z2, int links, double phase1) {
+  const double r1 = radius_of(pitch, z1), r2 = radius_of(pitch, z2);
   const double a_lo = (r1 + r2) * (1 + 1e-9), a_hi = links * pitch / 2;
   // the centre distance at which the hull is `links` pitches round, for the driven phase φ2
   auto taut = [&](double phase2) -> double {
     auto excess = [&](double a) {
-      return perimeter(polygon_hull(pitch, z1, z2, a, phase1, phase2), pitch) / pitch - links;
+      return perimeter(hull_of(pitch, z1, z2, a, phase1, phase2), pitch) / pitch - links;
     };
     if (excess(a_lo) > 0 || !(a_hi > a_lo))
       throw std::domain_error("the chain is too short to pass round both sprockets");
@@ -276,7 +372,7 @@ PolygonWrap polygon_wrap(double pitch, int z1, int z2, int links, double phase1)
     return (lo + hi) / 2;
   };
   auto offset = [&](double phase2) {
-    return upper_offset(polygon_hull(pitch, z1, z2, taut(phase2), phase1, phase2), pitch);
+    return upper_offset(hull_of(pitch, z1, z2, taut(phase2), phase1, phase2), pitch);
   };
   const double period = 2 * kPi / z2;
   std::vector<double> phases, offsets;
@@ -313,7 +409,7 @@ PolygonWrap polygon_wrap(double pitch, int z1, int z2, int links, double phase1)
                                                               g1, tol, iterations);
       phase2 = (lo + hi) / 2;
     }
-    PolygonWrap w = polygon_hull(pitch, z1, z2, taut(phase2), phase1, phase2);
+    PolygonWrap w = hull_of(pitch, z1, z2, taut(phase2), phase1, phase2);
     w.span_upper = static_cast<int>(std::lround(w.upper_length / pitch));
     w.span_lower = links - w.wrap1 - w.wrap2 - w.span_upper;
     if (w.span_upper < 1 || w.span_lower < 1) continue;
@@ -324,11 +420,24 @@ PolygonWrap polygon_wrap(double pitch, int z1, int z2, int links, double phase1)
   return best;
 }
 
+}  // namespace
+
+PolygonWrap polygon_wrap(double pitch, int z1, int z2, int links, double phase1) {
+  std::vector<Issue> issues;
+  check_sprockets(issues, pitch, z1, z2);
+  check_links(issues, links);
+  check::finite(issues, "phase1", phase1, "rad");
+  refuse("polygon_wrap", issues);
+  return wrap_of(pitch, z1, z2, links, phase1);
+}
+
 ExactCenterDistance exact_center_distance(double pitch, int z1, int z2, int links) {
+  std::vector<Issue> issues;
+  check_sprockets(issues, pitch, z1, z2);
+  check_links(issues, links);
+  refuse("exact_center_distance", issues);
   const double period = 2 * kPi / z1;
-  auto a_at = [&](double phase1) {
-    return polygon_wrap(pitch, z1, z2, links, phase1).center_distance;
-  };
+  auto a_at = [&](double phase1) { return wrap_of(pitch, z1, z2, links, phase1).center_distance; };
   // the driver phases sampled, then the two refinements (1000 teeth, 10⁵ links: 20 s)
   constexpr auto kSteps = static_cast<std::size_t>(kDriverSamples) + 2;
   ProgressLoop loop(kSteps, "driver phases");
@@ -354,11 +463,10 @@ ExactCenterDistance exact_center_distance(double pitch, int z1, int z2, int link
   ExactCenterDistance e;
   for (int k = 0; k < kDriverSamples; ++k) e.phases.push_back(period * k / kDriverSamples);
   e.values = values;
-  e.at_min = polygon_wrap(pitch, z1, z2, links, at_min.first);
+  e.at_min = wrap_of(pitch, z1, z2, links, at_min.first);
   e.min = std::min(e.at_min.center_distance, values[static_cast<std::size_t>(lo)]);
   if (values[static_cast<std::size_t>(lo)] < e.at_min.center_distance) {
-    e.at_min =
-        polygon_wrap(pitch, z1, z2, links, period * static_cast<double>(lo) / kDriverSamples);
+    e.at_min = wrap_of(pitch, z1, z2, links, period * static_cast<double>(lo) / kDriverSamples);
     e.min = e.at_min.center_distance;
   }
   e.max = std::max(-at_max.second, values[static_cast<std::size_t>(hi)]);
@@ -366,12 +474,23 @@ ExactCenterDistance exact_center_distance(double pitch, int z1, int z2, int link
 }
 
 double span_angle(double pitch, int z1, int z2, double a) {
-  return std::asin((pitch_radius(pitch, z2) - pitch_radius(pitch, z1)) / a);
+  std::vector<Issue> issues;
+  const bool sprockets = check_sprockets(issues, pitch, z1, z2);
+  check_apart(issues, "center_distance", a, sprockets, pitch, z1, z2);
+  refuse("span_angle", issues);
+  return angle_of(pitch, z1, z2, a);
 }
 
 ShaftLoads shaft_loads(double pitch, int z1, int z2, double a, double tight, double slack,
                        double centrifugal) {
-  const double g = span_angle(pitch, z1, z2, a);
+  std::vector<Issue> issues;
+  const bool sprockets = check_sprockets(issues, pitch, z1, z2);
+  check_apart(issues, "center_distance", a, sprockets, pitch, z1, z2);
+  check_tension(issues, "tight", tight);
+  check_tension(issues, "slack", slack);
+  check_tension(issues, "centrifugal", centrifugal);
+  refuse("shaft_loads", issues);
+  const double g = angle_of(pitch, z1, z2, a);
   const double t = tight - centrifugal, s = slack - centrifugal;
   ShaftLoads l;
   l.driver_x = (t + s) * std::cos(g);  // the spans pull the driver towards the driven sprocket
@@ -383,8 +502,47 @@ ShaftLoads shaft_loads(double pitch, int z1, int z2, double a, double tight, dou
 
 std::vector<std::pair<double, double>> wrap_pins(const PolygonWrap& w, double pitch, int z1,
                                                  int z2) {
-  const Polygon p1{{0, 0}, pitch_radius(pitch, z1), w.phase1, z1};
-  const Polygon p2{{w.center_distance, 0}, pitch_radius(pitch, z2), w.phase2, z2};
+  std::vector<Issue> issues;
+  const bool sprockets = check_sprockets(issues, pitch, z1, z2);
+  check_apart(issues, "w.center_distance", w.center_distance, sprockets, pitch, z1, z2);
+  check::finite(issues, "w.phase1", w.phase1, "rad");
+  check::finite(issues, "w.phase2", w.phase2, "rad");
+  // each sprocket's seats and wrap: in range for its tooth count, the wrap ending at the seat out
+  auto wrap = [&](const std::string& n, int z, int in, int out, int count) {
+    const bool valid = z >= kMinTeeth && z <= kMaxTeeth;
+    const std::string last = valid ? std::to_string(z - 1) : "z" + n + " - 1";
+    bool ok = true;
+    for (const auto& [field, value] :
+         {std::pair{"w.seat" + n + "_in", in}, std::pair{"w.seat" + n + "_out", out},
+          std::pair{"w.wrap" + n, count}})
+      if (!(value >= 0 && (!valid || value < z))) {
+        ok = false;
+        issues.push_back({field, std::to_string(value), "0 to " + last});
+      }
+    if (valid && ok && out != (in + count) % z)
+      issues.push_back({"w.seat" + n + "_out", std::to_string(out),
+                        "(w.seat" + n + "_in + w.wrap" + n + ") mod z" + n + " = " +
+                            std::to_string((in + count) % z) + ", where the wrap ends"});
+  };
+  wrap("1", z1, w.seat1_in, w.seat1_out, w.wrap1);
+  wrap("2", z2, w.seat2_in, w.seat2_out, w.wrap2);
+  const std::string spans = "1 to " + std::to_string(kMaxLinks) + " links";
+  bool counted = true;
+  for (const auto& [field, value] :
+       {std::pair{"w.span_lower", w.span_lower}, std::pair{"w.span_upper", w.span_upper}})
+    if (!(value >= 1 && value <= kMaxLinks)) {
+      counted = false;
+      issues.push_back({field, std::to_string(value), spans});
+    }
+  if (counted && w.wrap1 >= 0 && w.wrap1 <= kMaxTeeth && w.wrap2 >= 0 && w.wrap2 <= kMaxTeeth) {
+    const int links = w.wrap1 + w.wrap2 + w.span_lower + w.span_upper;
+    if (links > kMaxLinks)
+      issues.push_back({"w.wrap1 + w.wrap2 + w.span_lower + w.span_upper", std::to_string(links),
+                        "at most " + std::to_string(kMaxLinks) + " links"});
+  }
+  refuse("wrap_pins", issues);
+  const Polygon p1{{0, 0}, radius_of(pitch, z1), w.phase1, z1};
+  const Polygon p2{{w.center_distance, 0}, radius_of(pitch, z2), w.phase2, z2};
   std::vector<std::pair<double, double>> pins;
   auto add = [&](Point q) { pins.emplace_back(q.x, q.y); };
   auto span = [&](Point from, Point to, int n) {
