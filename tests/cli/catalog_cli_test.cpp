@@ -24,6 +24,14 @@ TEST(CatalogCli, ShowsOneChainPositionallyOrByFlag) {
   // a cell no source gives is null, not a number
   const auto a08 = nlohmann::json::parse(run("catalog 08A --format json").out);
   EXPECT_TRUE(a08["transverse_pitch"].is_null());
+  // the link's axial stiffness: the A rows' (12 k lbf / p from the source's k, README
+  // CALCULATORS_K: 12A 38794.33465), null on a B row
+  EXPECT_TRUE(j.at("axial_stiffness").is_null());
+  const auto a12 = nlohmann::json::parse(run("catalog 12A --format json").out);
+  EXPECT_NEAR(a12.at("axial_stiffness").get<double>(), 12 * 38794.33465 * 4.4482216152605 / 0.01905,
+              1.0);
+  EXPECT_EQ(a12["units"]["axial_stiffness"], "N/m");
+  EXPECT_NE(a12["source"].get<std::string>().find("CALCULATORS_K"), std::string::npos);
 }
 
 TEST(CatalogCli, ListsAndSearches) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -482,6 +483,100 @@ TEST(DynamicsCli, SummaryOfTooSparseSamplesIsTheLastSample) {
   EXPECT_EQ(s["window_samples"], 1);
   EXPECT_EQ(s["window_start"], s["window_end"]);
   EXPECT_EQ(s["span_0"]["mean_tension"], j["span"][0]["tension"][1]);
+}
+
+// The example's text with its `key = ...` line replaced by `replacement` (empty: removed).
+std::string example_with(const std::string& key, const std::string& replacement) {
+  std::string out = read_text(kExample);
+  const std::size_t at = out.find(key + " = ");
+  if (at == std::string::npos) {
+    ADD_FAILURE() << "the example has no " << key;
+    return out;
+  }
+  const std::size_t end = out.find('\n', at) + 1;
+  out.replace(at, end - at, replacement.empty() ? "" : replacement + "\n");
+  return out;
+}
+
+// axial_stiffness omitted with a chain whose catalogue row has one (the A series, issue 21): the
+// row's value, 12 k lbf / p from the source's stretch factor k (12A: 38794.33465, written here
+// from jordanrobot/Calculators xml/ansi_chain_specs.xml at b6f5c7e5), reported with its source
+// and an info diagnostic; the same run as one giving that number; a B row or no chain: missing,
+// naming the rows that have one; the inputs' bounds hold for it too.
+TEST(DynamicsCli, AxialStiffnessFromTheCatalogueWhereARowHasOne) {
+  std::string a12 = example_with("axial_stiffness", "");
+  a12.replace(a12.find("chain = \"12B\""), 13, "chain = \"12A\"");
+  const CliRun r =
+      run("dynamics " + write("stiff_12A.toml", a12) + " --duration 5ms --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto omitted = nlohmann::json::parse(r.out);
+  const double k = 12 * 38794.33465 * 4.4482216152605 / 0.01905;  // 1.08703e8 N/m
+  EXPECT_NEAR(omitted["axial_stiffness"].get<double>(), k, 1e-12 * k);
+  EXPECT_EQ(omitted["units"]["axial_stiffness"], "N/m");
+  EXPECT_NE(omitted["axial_stiffness_source"].get<std::string>().find("CALCULATORS_K"),
+            std::string::npos);
+  ASSERT_EQ(omitted["diagnostics"].size(), 1u) << omitted["diagnostics"].dump();
+  const auto& info = omitted["diagnostics"][0];
+  EXPECT_EQ(info["severity"], "info");
+  EXPECT_EQ(info["code"], "dynamics.axial_stiffness_from_catalogue");
+  for (const char* part : {"12A", "order of magnitude", "Tsubaki", "CALCULATORS_K"})
+    EXPECT_NE(info["message"].get<std::string>().find(part), std::string::npos) << part;
+
+  // the catalogue's number given: the same run, without the added fields and the diagnostic
+  char value[64];
+  std::snprintf(value, sizeof value, "axial_stiffness = \"%.17g N/m\"", k);
+  std::string given_text = a12;
+  given_text.replace(given_text.find("axial_damping"), 0, std::string(value) + "\n");
+  const CliRun g = run("dynamics " + write("stiff_12A_given.toml", given_text) +
+                       " --duration 5ms --format json");
+  ASSERT_EQ(g.status, 0) << g.err;
+  auto given = nlohmann::json::parse(g.out);
+  EXPECT_FALSE(given.contains("axial_stiffness"));
+  EXPECT_FALSE(given["units"].contains("axial_stiffness"));
+  EXPECT_TRUE(given["diagnostics"].empty()) << given["diagnostics"].dump();
+  for (auto* j : {&omitted, &given}) {
+    j->erase("axial_stiffness");
+    j->erase("axial_stiffness_source");
+    (*j)["units"].erase("axial_stiffness");
+    j->erase("diagnostics");
+    (*j)["summary"].erase("wall_time");
+    (*j)["summary"].erase("real_time_factor");
+  }
+  EXPECT_EQ(omitted, given);
+  // a different number given wins over the catalogue's
+  std::string soft = a12;
+  soft.replace(soft.find("axial_damping"), 0, "axial_stiffness = \"5e7 N/m\"\n");
+  const auto j5 = nlohmann::json::parse(
+      run("dynamics " + write("stiff_12A_soft.toml", soft) + " --duration 5ms --format json").out);
+  EXPECT_FALSE(j5.contains("axial_stiffness"));
+  EXPECT_NE(j5["span"][0]["tension"], given["span"][0]["tension"]);
+
+  const std::string rows = "08A, 10A, 12A, 16A, 20A, 24A, 28A, 32A";
+  const CliRun b12 =
+      run("dynamics " + write("stiff_12B.toml", example_with("axial_stiffness", "")));
+  EXPECT_EQ(b12.status, 2);
+  EXPECT_NE(b12.err.find("dynamics.axial_stiffness = (missing)"), std::string::npos) << b12.err;
+  EXPECT_NE(b12.err.find("the catalogue has no axial stiffness for 12B"), std::string::npos)
+      << b12.err;
+  EXPECT_NE(b12.err.find(rows), std::string::npos) << b12.err;
+  std::string bare = example_with("axial_stiffness", "");  // explicit chain data, no `chain`
+  bare.replace(bare.find("chain = \"12B\""), 13,
+               "pitch = \"19.05 mm\"\nmass_per_metre = 1.244\nroller_diameter = \"12.07 mm\"\n"
+               "inner_width = \"11.68 mm\"");
+  const CliRun none = run("dynamics " + write("stiff_bare.toml", bare));
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.err.find("dynamics.axial_stiffness = (missing)"), std::string::npos) << none.err;
+  EXPECT_NE(none.err.find("chain = an ISO 606 designation that has it: " + rows), std::string::npos)
+      << none.err;
+
+  // the inputs' bounds apply to the catalogue's value: k (theta h)^2 / m <= 1e6 breaks at a 30 ms
+  // step (m = 1.506 kg/m x 19.05 mm)
+  const CliRun coarse =
+      run("dynamics " + write("stiff_12A.toml", a12) + " --step 30ms --duration 0.3s");
+  EXPECT_EQ(coarse.status, 2);
+  EXPECT_NE(coarse.err.find("dynamics.axial_stiffness = 1.08703e+08 N/m (the catalogue's, 12A)"),
+            std::string::npos)
+      << coarse.err;
 }
 
 // contact_stiffness omitted: the Hertz default, the secant Q0/δ(Q0) of the plane-strain line

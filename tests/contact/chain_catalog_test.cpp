@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace catena::contact {
 namespace {
 
@@ -46,6 +51,39 @@ TEST(ChainCatalog, TransversePitchAndMassWhereSourced) {
     EXPECT_FALSE(c->source.empty()) << name;
     if (c->transverse_pitch) {
       EXPECT_GT(*c->transverse_pitch, *c->inner_width) << name;
+    }
+  }
+}
+
+// The link's axial stiffness (issue 21), a transcription check: the source's stretch factor k
+// per ANSI size, `elongation_factor_in` of the single-strand rows 40-1 … 160-1 in
+// jordanrobot/Calculators, xml/ansi_chain_specs.xml at commit
+// b6f5c7e53719d495feab40e06c26b2e1c65b1a26 (lbf per in of stretch per ft of chain; its
+// formulas/chain_ansi.md: l = (L/12) T/k), so EA = 12 k lbf and one link's k = EA/p. Every other
+// row has none (no source found: data/catalog/iso606/README.md).
+TEST(ChainCatalog, AxialStiffnessOfTheARowsFromTheSourcesStretchFactor) {
+  const std::vector<std::pair<std::string, double>> source = {
+      {"08A", 17889.01714}, {"10A", 29022.23096}, {"12A", 38794.33465}, {"16A", 79685.84238},
+      {"20A", 106981.5296}, {"24A", 165746.0851}, {"28A", 193680.1803}, {"32A", 245243.8539}};
+  const double inch = 25.4e-3, lbf = 4.4482216152605;  // [m], [N] (exact)
+  const std::vector<double> pitch_in = {0.5, 0.625, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0};
+  for (std::size_t i = 0; i < source.size(); ++i) {
+    const auto& [name, k] = source[i];
+    const auto c = iso606_chain(name);
+    ASSERT_TRUE(c && c->axial_stiffness) << name;
+    const double expected = 12 * k * lbf / (pitch_in[i] * inch);
+    EXPECT_NEAR(*c->axial_stiffness, expected, 1e-12 * expected) << name;
+    EXPECT_NE(c->source.find("CALCULATORS_K"), std::string::npos) << name;
+  }
+  // the order of magnitude the research derived: 12A 1.09e8 N/m, 32A 2.58e8 N/m
+  EXPECT_NEAR(*iso606_chain("12A")->axial_stiffness, 1.09e8, 0.01e8);
+  EXPECT_NEAR(*iso606_chain("32A")->axial_stiffness, 2.58e8, 0.01e8);
+  for (const std::string& name : iso606_names()) {
+    const bool sourced = std::any_of(source.begin(), source.end(),
+                                     [&](const auto& row) { return row.first == name; });
+    if (!sourced) {
+      EXPECT_FALSE(iso606_chain(name)->axial_stiffness.has_value()) << name;
+      EXPECT_EQ(iso606_chain(name)->source.find("CALCULATORS_K"), std::string::npos) << name;
     }
   }
 }

@@ -19,7 +19,11 @@ struct ChainDimensions {
   std::optional<double> tensile_strength;  ///< [N] simplex, minimum
   std::optional<double> transverse_pitch;  ///< [m] pt (multi-strand chains)
   std::optional<double> mass_per_metre;    ///< [kg/m] q, simplex
-  std::string source;                      ///< source ids (README)
+  /// [N/m] axial stiffness of one link (one pitch), simplex: EA/p with EA = 12 k lbf from the
+  /// source's stretch factor k (README, `CALCULATORS_K`; a secondary source, an order of
+  /// magnitude); the A rows 08A … 32A only
+  std::optional<double> axial_stiffness;
+  std::string source;  ///< source ids (README)
 };
 
 /// The chain of that name (case-insensitive), or nothing.

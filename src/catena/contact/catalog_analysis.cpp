@@ -42,6 +42,7 @@ Value chain_value(const ChainDimensions& c) {
                         {"tensile_strength", Value(c.tensile_strength)},
                         {"transverse_pitch", Value(c.transverse_pitch)},
                         {"mass_per_metre", Value(c.mass_per_metre)},
+                        {"axial_stiffness", Value(c.axial_stiffness)},
                         {"source", c.source}});
 }
 
@@ -53,7 +54,8 @@ Value units() {
                                 {"plate_depth", "m"},
                                 {"tensile_strength", "N"},
                                 {"transverse_pitch", "m"},
-                                {"mass_per_metre", "kg/m"}});
+                                {"mass_per_metre", "kg/m"},
+                                {"axial_stiffness", "N/m"}});
 }
 
 std::string cell(const std::optional<double>& v, double scale) {

@@ -14,6 +14,17 @@ std::optional<double> cell(const std::string& text, double scale) {
   return std::stod(text) * scale;
 }
 
+// The newton per pound-force (exact, by the definitions of the pound and of g_n).
+constexpr double kNewtonPerPoundForce = 4.4482216152605;
+
+// The link's axial stiffness [N/m] from the source's stretch factor k [lbf per (in of stretch per
+// ft of chain)] (README, `CALCULATORS_K`) and the pitch p [m]: the source's elongation
+// l = (L/12) T/k (L, l in inches, T in lbf) is a strain T/(12 k), so EA = 12 k lbf, and one link
+// (one pitch long) has k_link = EA/p.
+double stretch_factor_stiffness(double k_lbf, double pitch) {
+  return 12.0 * k_lbf * kNewtonPerPoundForce / pitch;
+}
+
 std::vector<ChainDimensions> load() {
   std::vector<ChainDimensions> out;
   std::istringstream in(iso606_csv());
@@ -24,7 +35,7 @@ std::vector<ChainDimensions> load() {
     std::vector<std::string> f;
     std::stringstream row(line);
     for (std::string c; std::getline(row, c, ',');) f.push_back(c);
-    f.resize(10);
+    f.resize(11);
     ChainDimensions c;
     c.name = f[0];
     c.pitch = std::stod(f[1]) * 1e-3;
@@ -35,7 +46,8 @@ std::vector<ChainDimensions> load() {
     c.tensile_strength = cell(f[6], 1e3);
     c.transverse_pitch = cell(f[7], 1e-3);
     c.mass_per_metre = cell(f[8], 1.0);
-    c.source = f[9];
+    if (const auto k = cell(f[9], 1.0)) c.axial_stiffness = stretch_factor_stiffness(*k, c.pitch);
+    c.source = f[10];
     out.push_back(c);
   }
   return out;

@@ -356,6 +356,8 @@ struct Setup {
   double pitch = NAN, mass_per_metre = NAN, roller = NAN, width = NAN;
   int links = 0;
   double stiffness = NAN, damping = 0.0, pretension = 0.0;
+  // axial_stiffness omitted: the catalogue row's (contact::ChainDimensions::axial_stiffness)
+  bool catalogue_stiffness = false;
   double contact_stiffness = NAN, contact_damping = NAN;
   double seat_friction = 0.0;  // μ of the roller-seat contact
   // wheel = "pocket": a round-link chain (pitch t, wire d) on two equal pocket wheels
@@ -559,7 +561,10 @@ void check_scales(const Setup& s, const std::vector<SprocketInput>& wheels, cons
     const std::string link = kLinkScale;
     std::string why = scale_bound(s, kMaxLinkRatio, 2, "N/m", most);
     if (valid(s.stiffness) && s.stiffness > most)
-      issues.push_back({at("axial_stiffness"), shown(s.stiffness) + " N/m", why + link});
+      issues.push_back({at("axial_stiffness"),
+                        shown(s.stiffness) + " N/m" +
+                            (s.catalogue_stiffness ? " (the catalogue's, " + s.chain + ")" : ""),
+                        why + link});
     why = scale_bound(s, kMaxLinkRatio, 1, "N s/m", most);
     if (s.damping > most && std::isfinite(s.damping))
       issues.push_back({at("axial_damping"), shown(s.damping) + " N s/m", why + link});
@@ -1549,7 +1554,25 @@ Setup parse(const analysis::Inputs& in) {
   }
   const double links = layout ? optional("links", NAN)
                               : required("links", "the number of links in the loop, an integer");
-  s.stiffness = required("axial_stiffness", "the axial stiffness k of one link, e.g. \"5e7 N/m\"");
+  // axial_stiffness omitted: the catalogue row's where it has one (the A series, a secondary
+  // source: data/catalog/iso606/README.md, CALCULATORS_K); missing otherwise, naming the rows
+  // that have one
+  if (!value.count("axial_stiffness") && !line.count("axial_stiffness") && row_found &&
+      row_found->axial_stiffness) {
+    s.stiffness = *row_found->axial_stiffness;
+    s.catalogue_stiffness = true;
+  } else {
+    std::string what = "the axial stiffness k of one link, e.g. \"5e7 N/m\"";
+    if (!s.pocket) {
+      std::string rows;
+      for (const std::string& name : contact::iso606_names())
+        if (contact::iso606_chain(name)->axial_stiffness) rows += (rows.empty() ? "" : ", ") + name;
+      what += row_found ? " (the catalogue has no axial stiffness for " + row_found->name +
+                              "; it has one for " + rows + ")"
+                        : " (or chain = an ISO 606 designation that has it: " + rows + ")";
+    }
+    s.stiffness = required("axial_stiffness", what.c_str());
+  }
   s.contact_stiffness = s.pocket ? required("contact_stiffness",
                                             "the joint-pocket penalty k_c with wheel = \"pocket\" "
                                             "(no Hertz default), e.g. \"1e8 N/m\"")
@@ -2943,10 +2966,26 @@ PeriodSpread period_spread(const std::vector<double>& time, const std::vector<do
 // as not settled: the issue's 1 % (docs/models/dynamics.md, "Pocket wheel: the example's means").
 constexpr double kSettledMeans = 0.01;
 
+// Where a catalogue axial stiffness comes from (data/catalog/iso606/README.md, CALCULATORS_K).
+constexpr const char* kCatalogueStiffnessSource =
+    "ISO 606 catalogue (data/catalog/iso606/README.md, CALCULATORS_K): EA = 12 k lbf from a "
+    "third party's stretch factor k, interpolated from an unnamed Tsubaki elastic-elongation "
+    "chart; k_link = EA/p";
+
 Record describe(const Result& r, const analysis::Inputs&) {
   const Setup& d = r.setup;
   Record rec;
   rec.diagnostics = r.diagnostics;
+  if (d.catalogue_stiffness)
+    rec.diagnostics.push_back(
+        {Diagnostic::Severity::kInfo, "dynamics.axial_stiffness_from_catalogue",
+         "axial_stiffness omitted: k = " + format_g(d.stiffness, 4) + " N/m per link, " + d.chain +
+             "'s from the catalogue (a secondary source: a third party's linear interpolation "
+             "of an unnamed Tsubaki elastic-elongation chart, single strand, no load range, no "
+             "second source to check it against; data/catalog/iso606/README.md, "
+             "CALCULATORS_K): an order of magnitude, not a design value; give axial_stiffness "
+             "for a measured one",
+         d.stiffness, 0.0, "N/m"});
   const double simulated = r.steps * d.step;
   const double rtf = r.wall_time > 0.0 ? simulated / r.wall_time : 0.0;
   Value j = Value::object();
@@ -3040,6 +3079,11 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (d.hertz_stiffness) {
     j["contact_stiffness"] = d.contact_stiffness;
     j["contact_load"] = d.expected_load;
+  }
+  // axial_stiffness omitted: the catalogue's value used and where it comes from
+  if (d.catalogue_stiffness) {
+    j["axial_stiffness"] = d.stiffness;
+    j["axial_stiffness_source"] = kCatalogueStiffnessSource;
   }
   if (!d.guides.empty()) {
     j["guides"] = static_cast<int>(d.guides.size());
@@ -3353,6 +3397,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["units"]["contact_stiffness"] = "N/m";
     j["units"]["contact_load"] = "N";
   }
+  if (d.catalogue_stiffness) j["units"]["axial_stiffness"] = "N/m";
   if (!d.guides.empty()) j["units"]["friction_work"] = "J";
   if (any_seat_friction(d)) j["units"]["seat_friction_work"] = "J";
   if (d.work_balance) j["units"]["work_balance"] = "J";
