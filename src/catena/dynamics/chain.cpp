@@ -737,7 +737,7 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   // f's work is −f Δg, the elastic part's −ΔE (to the gaps' rounding, ~1e-16 ρ each: f_e stays the
   // secant of the rounded gaps, smooth however small Δg). `bend` = s/ρ̄ (∂ν/∂q_θ = bend I); 0 on a
   // straight rail (ν = n).
-  const bool radial = gradient && gd.kind != Guide::Kind::kStraight;
+  bool radial = gradient && gd.kind != Guide::Kind::kStraight;
   double bend = 0.0;
   DiscreteGradient dgr;
   StepDamper damper;
@@ -749,9 +749,11 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
     if (radial) {
       const double r0x = step->x0 - gd.centre_x, r0y = step->y0 - gd.centre_y;
       const double r1x = step->x1 - gd.centre_x, r1y = step->y1 - gd.centre_y;
-      // ρ₀ + ρ₁ > 0: the θ point, on the segment x₀x₁, is off the centre (tested above)
+      // ρ₀ + ρ₁ > 0 where the θ point lies on the segment x₀x₁ (the integrator's), being off the
+      // centre (tested above); a step with both ends at the centre keeps n
       const double rho = std::sqrt(r0x * r0x + r0y * r0y) + std::sqrt(r1x * r1x + r1y * r1y);
-      bend = 2.0 * (gd.inside ? -1.0 : 1.0) / rho;
+      radial = rho > 0.0;
+      bend = radial ? 2.0 * (gd.inside ? -1.0 : 1.0) / rho : 0.0;
     }
     dgr = discrete_gradient([&](double gap) { return rail_elastic(gd, gap); }, g0, g1);
     damper = step_damper(gd.contact_damping, gd.contact_smoothing, g0, g1, step->h);
