@@ -279,7 +279,8 @@ struct Guide {
   /// The normal force's elastic part over a step (docs/models/dynamics.md, "Guides: the discrete
   /// gradient"): true, the discrete gradient f_e = (E(g₁) − E(g₀))/(g₁ − g₀) of the contact's
   /// energy between the gaps at the step's start and end (guide_contact with a GuideStep), so that
-  /// on a straight rail its work over the step is exactly −ΔE, and the damper over the step,
+  /// its work over the step is −ΔE (on a straight rail at any θ; on an arc at θ = ½, the force
+  /// along the radial ν, to the gaps' rounding), and the damper over the step,
   /// (C(g₁) − C(g₀))/h (C the integral of the ramped damping coefficient; its work never
   /// positive); false: the force and the damper at the θ point.
   /// use_line_law sets it (the line law's default); the linear penalty keeps the θ point's.
@@ -300,7 +301,8 @@ inline constexpr double kMaxRailLoad = 1e4;
 inline constexpr double kMaxLoadSpeed = 100.0;
 
 /// One roller's contact with one guide at position q and velocity v: the force on the roller,
-/// F = f n + f_t t (n the rail's normal to the free side, t = (−n_y, n_x)), and its derivatives
+/// F = f n + f_t t (n the rail's normal to the free side, t = (−n_y, n_x); f ν in place of f n on
+/// an arc with the discrete gradient, guide_contact with a GuideStep), and its derivatives
 /// ∂F/∂q and ∂F/∂v (2×2, row-major [[a, b], [c, d]]) for the Newton matrix.
 struct GuideContact {
   bool active = false;
@@ -358,11 +360,15 @@ struct GuideStep {
 /// the same rail's geometry (no end test; E = 0 for g ≤ 0), E'((g₀ + g₁)/2) where |g₁ − g₀| is
 /// below 1e-6 of the larger gap; the damper is taken over the step too, f_d = (C(g₁) − C(g₀))/h
 /// with C(g) = ∫₀^g c(s) ds, c(g) = c_c min(1, g/ε) (0 for g ≤ 0), the seats' (∂f_d/∂g₁ = c(g₁)/h
-/// ≥ 0, its work −c̄ Δg²/h ≤ 0), f = max(0, f_e + f_d); the direction n, the ends' test and the
-/// far side's (g < 2r) stay at the θ point (x, y). It is active while the larger of g₀ and g₁ is
-/// positive (a roller dropping in from g₀ ≤ 0 is pushed on the step it enters; `penetration` is
-/// the θ point's gap, then ≤ 0 possibly). ∂f/∂x₁ = −(∂f_e/∂g₁ + ∂f_d/∂g₁) n₁ enters dv as
-/// h ∂f/∂x₁ (the velocity is (x₁ − x₀)/h), so that −(hθ dq + dv) is still the step's exact block.
+/// ≥ 0, its work −c̄ Δg²/h ≤ 0), f = max(0, f_e + f_d); the ends' test and the far side's
+/// (g < 2r) stay at the θ point (x, y), and so does the direction n on a straight rail. On an arc
+/// f acts along ν = s (q_θ − C)/ρ̄, ρ̄ = (ρ₀ + ρ₁)/2 (ρ = |q − C| at x₀ and x₁, s = ±1 as
+/// n = s (q − C)/|q − C|): at θ = ½ ν·(x₁ − x₀) = −Δg, its work −f Δg to the gaps' rounding
+/// (`nx`, `ny` still report n; ∂(f ν)/∂q_θ = f (s/ρ̄) I, ∂ν/∂x₁ = −(s/2ρ̄) ν ⊗ n₁). It is active
+/// while the larger of g₀ and g₁ is positive (a roller dropping in from g₀ ≤ 0 is pushed on the
+/// step it enters; `penetration` is the θ point's gap, then ≤ 0 possibly). ∂f/∂x₁ = −(∂f_e/∂g₁ +
+/// ∂f_d/∂g₁) n₁ enters dv as h ∂f/∂x₁ (the velocity is (x₁ − x₀)/h), so that −(hθ dq + dv) is still
+/// the step's exact block.
 GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, double y, double vx,
                            double vy, double anchor, const GuideStep* step);
 /// [m] s, the tangential position along the contact's tangent t = (−n_y, n_x): on a straight rail

@@ -730,6 +730,15 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   // step too (step_damper, as the seats')
   const bool gradient = step != nullptr && gd.discrete_gradient;
   double g1 = 0.0, n1x = 0.0, n1y = 0.0, dg = 0.0;
+  // On an arc the gap is ±(R ± r − ρ), ρ = |q − C|: a function of ρ alone, so the discrete
+  // gradient is the links' (Simo–Tarnow): the normal force f acts along ν = s (q_θ − C)/ρ̄,
+  // ρ̄ = (ρ₀ + ρ₁)/2, s = ±1 as n = s (q − C)/|q − C| (docs "Guides: the discrete gradient", "On an
+  // arc"). At θ = ½, q_θ − C = (r₀ + r₁)/2 and ν·(x₁ − x₀) = s (ρ₁² − ρ₀²)/(ρ₀ + ρ₁) = −Δg exactly:
+  // f's work is −f Δg, the elastic part's −ΔE (to the gaps' rounding, ~1e-16 ρ each: f_e stays the
+  // secant of the rounded gaps, smooth however small Δg). `bend` = s/ρ̄ (∂ν/∂q_θ = bend I); 0 on a
+  // straight rail (ν = n).
+  bool radial = gradient && gd.kind != Guide::Kind::kStraight;
+  double bend = 0.0;
   DiscreteGradient dgr;
   StepDamper damper;
   if (gradient) {
@@ -737,12 +746,25 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
     const double g0 = rail_gap(gd, frame, step->x0, step->y0, n0x, n0y);
     g1 = rail_gap(gd, frame, step->x1, step->y1, n1x, n1y);
     if (!(std::max(g0, g1) > 0.0)) return c;
+    if (radial) {
+      const double r0x = step->x0 - gd.centre_x, r0y = step->y0 - gd.centre_y;
+      const double r1x = step->x1 - gd.centre_x, r1y = step->y1 - gd.centre_y;
+      // ρ₀ + ρ₁ > 0 where the θ point lies on the segment x₀x₁ (the integrator's), being off the
+      // centre (tested above); a step with both ends at the centre keeps n
+      const double rho = std::sqrt(r0x * r0x + r0y * r0y) + std::sqrt(r1x * r1x + r1y * r1y);
+      radial = rho > 0.0;
+      bend = radial ? 2.0 * (gd.inside ? -1.0 : 1.0) / rho : 0.0;
+    }
     dgr = discrete_gradient([&](double gap) { return rail_elastic(gd, gap); }, g0, g1);
     damper = step_damper(gd.contact_damping, gd.contact_smoothing, g0, g1, step->h);
     dg = g1 - g0;
   } else if (!(g > 0.0)) {
     return c;
   }
+  // ν, the normal force's direction: n, or on an arc with the discrete gradient s (q_θ − C)/ρ̄
+  // (|ν| = |q_θ − C|/ρ̄, within ~(Δx/ρ)²/8 of 1)
+  const double ux = radial ? bend * (x - gd.centre_x) : nx;
+  const double uy = radial ? bend * (y - gd.centre_y) : ny;
   const double tx = -ny, ty = nx;
   const double vn = vx * nx + vy * ny, vt = vx * tx + vy * ty;
   const double rate = -vn;  // ġ
@@ -840,8 +862,8 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   }
   c.normal_force = f;
   c.friction_force = ft;
-  c.fx = f * nx + ft * tx;
-  c.fy = f * ny + ft * ty;
+  c.fx = f * ux + ft * tx;
+  c.fy = f * uy + ft * ty;
   // ∂F/∂q = n ⊗ ∂f/∂q + f κ t tᵀ + t ⊗ ∂f_t/∂q − f_t κ n tᵀ  (∂t/∂q = −κ n tᵀ; κ = 0 straight)
   c.dq[0] = nx * dfq[0] + f * kappa * tx * tx + tx * dftq[0] - ft * kappa * nx * tx;
   c.dq[1] = nx * dfq[1] + f * kappa * tx * ty + tx * dftq[1] - ft * kappa * nx * ty;
@@ -851,6 +873,21 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   c.dv[1] = nx * dfv[1] + tx * dftv[1];
   c.dv[2] = ny * dfv[0] + ty * dftv[0];
   c.dv[3] = ny * dfv[1] + ty * dftv[1];
+  if (radial) {
+    // f ν in place of f n (∂f/∂q is 0 there: the step's f depends on x₁ alone), ∂ν/∂q_θ = bend I
+    // in place of ∂n/∂q = κ t tᵀ, and ∂ν/∂x₁ = −(bend/2) ν ⊗ n₁ (through ρ₁ in ρ̄) besides
+    // ∂f/∂x₁ = −(∂f_e/∂g₁ + ∂f_d/∂g₁) n₁ (dfv/h): h ∂(f ν)/∂x₁ = ν ⊗ (dfv − h f (bend/2) n₁)
+    const double wx = dfv[0] - 0.5 * step->h * f * bend * n1x;
+    const double wy = dfv[1] - 0.5 * step->h * f * bend * n1y;
+    c.dq[0] = ux * dfq[0] + f * bend + tx * dftq[0] - ft * kappa * nx * tx;
+    c.dq[1] = ux * dfq[1] + tx * dftq[1] - ft * kappa * nx * ty;
+    c.dq[2] = uy * dfq[0] + ty * dftq[0] - ft * kappa * ny * tx;
+    c.dq[3] = uy * dfq[1] + f * bend + ty * dftq[1] - ft * kappa * ny * ty;
+    c.dv[0] = ux * wx + tx * dftv[0];
+    c.dv[1] = ux * wy + tx * dftv[1];
+    c.dv[2] = uy * wx + ty * dftv[0];
+    c.dv[3] = uy * wy + ty * dftv[1];
+  }
   return c;
 }
 
