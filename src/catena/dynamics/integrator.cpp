@@ -206,8 +206,10 @@ void Integrator::prepare_seats(const Model& model) {
   seat_geometry_.resize(wheels);
   seat_psi_.assign(wheels, NAN);
   seat_direction_.resize(wheels);
+  pocket_start_.resize(wheels);
   for (std::size_t w = 0; w < wheels; ++w) {
     const Sprocket& wheel = model.sprockets[w];
+    if (wheel.pocket && wheel.discrete_gradient) pocket_start_[w].assign(model.nodes(), {});
     if (wheel.pocket) continue;
     seat_geometry_[w] = seat_geometry(wheel);
     seat_direction_[w].assign(static_cast<std::size_t>(std::max(wheel.teeth, 1)), SeatDirection{});
@@ -550,7 +552,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
                              .cy1 = ends.cy1,
                              .angle0 = s.angle[w],
                              .angle1 = psi1_[w],
-                             .theta = th};
+                             .theta = th,
+                             .start = i < pocket_start_[w].size() ? &pocket_start_[w][i] : nullptr};
           return pocket_step_contact(wheel, qx, qy, vx, vy, psi, omega, held, e);
         }
         // seat_contact, its seat's direction from the step's table when there
