@@ -341,10 +341,12 @@ bool free_of(const Sprocket& w, const Where& p, int held) {
 }
 
 // The contact of (x, y) at `p` (not free_of the wheel) with pocket `index` whose vertex is
-// (sx, sy): what `need` asks; `cap` the wheel's body_capture if the caller has it, else nullptr
-SeatContact contact_at(const Sprocket& w, double x, double y, double vx, double vy, double speed,
-                       const Where& p, int index, double sx, double sy, const Capture* cap,
-                       Need need) {
+// (sx, sy): what `need` asks; `cap` the wheel's body_capture if the caller has it, else nullptr.
+// Inlined: a call of its own cost pocket_contact 1.7 % more instructions on the example.
+[[gnu::always_inline]] inline SeatContact contact_at(const Sprocket& w, double x, double y,
+                                                     double vx, double vy, double speed,
+                                                     const Where& p, int index, double sx,
+                                                     double sy, const Capture* cap, Need need) {
   SeatContact c;
   const double rx = p.rx, ry = p.ry, rho2 = p.rho2;
   const bool beyond = p.beyond;
