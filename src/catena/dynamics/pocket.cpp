@@ -59,7 +59,8 @@ namespace {
 // What an evaluation of the contact sets: its energy and `active` alone (the discrete gradient's
 // step start), with the elastic force's size, direction and torque (its end), with its ∂F/∂q as
 // well (stiffness, curvature, dq_extra: the θ point's elastic contact), or everything (depth,
-// dv_extra and the friction's blocks too). The fields it sets are the same numbers in every mode.
+// dv_extra and the friction's blocks too). The fields a mode names are the same numbers as kAll's;
+// the others it may leave half done, not to be read.
 enum class Need { kEnergy, kForce, kJacobian, kAll };
 
 // The pocket's elastic law at the gap g > 0: the seats' penalty with its ramp (force, slope,
