@@ -352,6 +352,68 @@ testing::PocketSetup fall_onto(double off, double inward, double spin, double sl
                               .discrete_gradient = gradient});
 }
 
+// A take-up's pocket wheel (driven, its slide along e = (0.6, 0.8) pushed by 500 N against
+// 1e5 N/m, 2 kg): the step's Newton matrix against central differences of its residual, every
+// column (the joints', the angle's and the slide's), with the leading joint on the body between
+// the pockets — on the blend 1.5 mm off its vertex and on the rim 14 mm off, where the contact's
+// whole ∂F/∂q is its dq_extra — with and without the discrete gradient, θ = 0.6, c_c = 2000.
+TEST(DynamicsPocketDiscreteGradient, TakeupsNewtonMatrixOnTheBodyMatchesTheDifferences) {
+  const double h = 1e-5;
+  for (const double off : {1.5e-3, 14e-3}) {
+    for (const bool gradient : {false, true}) {
+      testing::PocketSetup f = testing::fall_setup({.off = off,
+                                                    .above = 10e-6,
+                                                    .inward = 2.0,
+                                                    .spin = 5.0,
+                                                    .driven = true,
+                                                    .contact_damping = 2000.0,
+                                                    .discrete_gradient = gradient});
+      Model& m = f.model;
+      State& s = f.state;
+      Sprocket& w = m.sprockets[0];
+      w.takeup = true;
+      w.takeup_dx = 0.6;
+      w.takeup_dy = 0.8;
+      w.takeup_force = 500.0;
+      w.takeup_stiffness = 1e5;
+      w.takeup_mass = 2.0;
+      Integrator integ(m, {.step = h, .theta = 0.6});
+      const std::size_t n = s.nodes(), nu = integ.unknowns();
+      ASSERT_EQ(nu, 2 * n + 2);  // the angle, then the slide
+      const double r = w.pitch_radius;
+      int checked = 0;
+      double worst = 0.0;
+      for (int step = 0; step < 120 && checked < 3; ++step) {
+        ASSERT_TRUE(integ.step(m, s).converged) << step;
+        const Sprocket here = at_slide(w, s.slide[0]);
+        const SeatContact c =
+            pocket_contact(here, s.x[0], s.y[0], s.vx[0] - s.slide_speed[0] * 0.6,
+                           s.vy[0] - s.slide_speed[0] * 0.8, s.angle[0], s.speed[0]);
+        if (!c.active || c.surface != 3 || !(c.force > 1.0) || step % 3) continue;
+        std::vector<double> u(nu);
+        for (std::size_t i = 0; i < n; ++i) {
+          u[2 * i] = s.x[i] + h * s.vx[i];
+          u[2 * i + 1] = s.y[i] + h * s.vy[i];
+        }
+        u[2 * n] = s.angle[0] + h * s.speed[0];
+        u[2 * n + 1] = s.slide[0] + h * s.slide_speed[0];
+        std::vector<double> res, jac;
+        integ.newton_system(m, s, u, res, &jac);
+        const testing::ColumnsAgainstDifferences d = testing::expect_columns_match_differences(
+            integ, m, s, u, jac, {},
+            [&](std::size_t col) { return col >= 2 * n ? 1e-10 / r : 1e-10; }, 1e-5);
+        worst = std::max(worst, d.worst);
+        ++checked;
+      }
+      std::printf(
+          "pocket take-up's Newton matrix on the body (%.1f mm off, discrete gradient %d): %d "
+          "iterates, worst |J - FD| / column scale %.2e\n",
+          off * 1e3, gradient ? 1 : 0, checked, worst);
+      EXPECT_GE(checked, 2) << off;
+    }
+  }
+}
+
 // (2) The step's Newton matrix with the discrete gradient against central differences of its
 // residual, every column (the joints' and the driven wheel's angle), while the leading joint is in
 // contact: in its pocket (falling in at 1 m/s), on the body's blend (1.5 mm off the vertex) and on

@@ -755,6 +755,12 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
         dall = {dall.a - (ht * sf.dq[0] + sf.dv[0]), dall.b - (ht * sf.dq[1] + sf.dv[1]),
                 dall.c - (ht * sf.dq[2] + sf.dv[2]), dall.d - (ht * sf.dq[3] + sf.dv[3])};
       }
+      if (wheel.pocket) {  // a pocket's own blocks, as on the diagonal (the body's whole ∂F/∂q)
+        const double* e = sc.dq_extra;
+        const double* ev = sc.dv_extra;
+        dall = {dall.a - (ht * e[0] + ev[0]), dall.b - (ht * e[1] + ev[1]),
+                dall.c - (ht * e[2] + ev[2]), dall.d - (ht * e[3] + ev[3])};
+      }
       const Vec2 de{dall.a * ex + dall.b * ey, dall.c * ex + dall.d * ey};
       border_rows_[is].push_back(i);
       bcol_[is][i] = {-de.x, -de.y};
