@@ -148,6 +148,149 @@ TEST(DynamicsPocketDiscreteGradient, WorkOverAStepIsTheEnergysChange) {
   EXPECT_GT(theta_best, 1e-4);
 }
 
+// The step's ends are taken cheaper than the θ point's contact (the start's energy alone, once a
+// step; the end's energy and force without the derivative blocks; the θ point's elastic contact
+// without the friction's): the same numbers as pocket_contact's. At θ = 0 the correction is
+// S = (E₁ − E₀ − ∇E_θ·Δz)/|Δz|² and ∂S/∂x₁ = (∇_q E₁ − ∇_q E_θ − 2 S Δq)/|Δz|² (∂S/∂ψ₁ likewise)
+// with no Hessian term, so pocket_contact's energies and forces at the ends and at the θ point
+// (zero velocity) give them bit for bit, over a sweep through the pocket, the body's blend and rim,
+// the mouth's ramp and the release (held), the wheel held and turning.
+TEST(DynamicsPocketDiscreteGradient, EndsAreTheContactsEnergyAndForceBitForBit) {
+  const double c = kClearance, psi = 0.4;
+  Sprocket body = wheel8(true), ramp = wheel8(true), release = wheel8(true);
+  ramp.pocket_mouth = c;
+  release.pocket_release = true;
+  struct Sweep {
+    const char* where;
+    const Sprocket* w;
+    double along0, below0, along1, below1;  // the ends; at `steps` points between, as the work's
+    int held;
+  };
+  const Sweep sweeps[] = {
+      {"pocket", &body, -0.8 * c, 1.5 * c + 10e-6, 1.2 * c, 1.5 * c + 60e-6, kNoPocket},
+      {"blend", &body, 11.0 * c, 15e-6, 19.0 * c, 35e-6, kNoPocket},
+      {"rim", &body, 25.0 * c, 10e-6, 35.0 * c, 40e-6, kNoPocket},
+      {"ramp", &ramp, 0.5 * c, -5e-6, 2.5 * c, -90e-6, kNoPocket},
+      {"release", &release, 1.0 * c, -20e-6, 2.0 * c, -60e-6, 3}};
+  const int steps = 8;
+  int checked = 0;
+  for (const Sweep& sw : sweeps) {
+    const Sprocket& w = *sw.w;
+    for (int i = 0; i + 1 < steps; ++i) {
+      for (const double turn : {0.0, 3e-3}) {
+        auto at = [&](int j, double angle) {
+          const double t = static_cast<double>(j) / (steps - 1);
+          return near_vertex(w, angle, 3, sw.along0 + t * (sw.along1 - sw.along0),
+                             sw.below0 + t * (sw.below1 - sw.below0));
+        };
+        const double psi1 = psi + turn;
+        const Point p0 = at(i, psi), p1 = at(i + 1, psi1), pt = at(i, psi);  // θ = 0
+        const PocketStep step{.x0 = p0.x,
+                              .y0 = p0.y,
+                              .x1 = p1.x,
+                              .y1 = p1.y,
+                              .cx0 = w.centre_x,
+                              .cy0 = w.centre_y,
+                              .cx1 = w.centre_x,
+                              .cy1 = w.centre_y,
+                              .angle0 = psi,
+                              .angle1 = psi1,
+                              .theta = 0.0};
+        const SeatContact s =
+            pocket_step_contact(w, pt.x, pt.y, 0.01, -0.02, psi, 5.0, sw.held, step);
+        // pocket_contact at the ends (about the centre as pocket_step_contact puts them) and at
+        // the θ point, at zero velocity
+        const double q0x = step.x0 - step.cx0, q0y = step.y0 - step.cy0;
+        const double q1x = step.x1 - step.cx1, q1y = step.y1 - step.cy1;
+        const SeatContact e0 =
+            pocket_contact(w, q0x + w.centre_x, q0y + w.centre_y, 0.0, 0.0, psi, 0.0, sw.held);
+        const SeatContact e1 =
+            pocket_contact(w, q1x + w.centre_x, q1y + w.centre_y, 0.0, 0.0, psi1, 0.0, sw.held);
+        const SeatContact et = pocket_contact(w, pt.x, pt.y, 0.0, 0.0, psi, 0.0, sw.held);
+        ASSERT_TRUE(e0.active || e1.active || et.active) << sw.where << " " << i;
+        ASSERT_NE(s.skew, 0.0) << sw.where << " " << i;  // corrected: no jump, a step
+        for (const SeatContact* e : {&e0, &e1, &et}) {
+          if (e->active) {
+            ASSERT_EQ(e->seat, 3) << sw.where << " " << i;  // the θ point's pocket
+          }
+        }
+        const double en0 = e0.active ? e0.energy : 0.0, en1 = e1.active ? e1.energy : 0.0;
+        const double gx = et.active ? et.force * et.nx : 0.0;
+        const double gy = et.active ? et.force * et.ny : 0.0;
+        const double gpsi = et.active ? -et.torque : 0.0;
+        const double f1x = e1.active ? e1.force * e1.nx : 0.0;
+        const double f1y = e1.active ? e1.force * e1.ny : 0.0;
+        const double f1psi = e1.active ? -e1.torque : 0.0;
+        const double dx = q1x - q0x, dy = q1y - q0y, dpsi = psi1 - psi;
+        const double r2 = w.pitch_radius * w.pitch_radius;
+        const double den = dx * dx + dy * dy + r2 * dpsi * dpsi;
+        const double cc = (en1 - en0 - (gx * dx + gy * dy) - gpsi * dpsi) / den;
+        EXPECT_EQ(s.skew, cc) << sw.where << " " << i << " turn " << turn;
+        EXPECT_EQ(s.skew_dx, (f1x - gx - 2.0 * cc * dx) / den) << sw.where << " " << i;
+        EXPECT_EQ(s.skew_dy, (f1y - gy - 2.0 * cc * dy) / den) << sw.where << " " << i;
+        EXPECT_EQ(s.skew_dpsi, (f1psi - gpsi - 2.0 * cc * r2 * dpsi) / den) << sw.where << " " << i;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 70);
+}
+
+// The caller's memo of the step's start (PocketStep::start, kept by the integrator over a step's
+// Newton iterations) gives the contact bit for bit as without it: filled by one step and read by
+// the next with another start, pocket or wheel centre (a take-up's), it is taken afresh.
+TEST(DynamicsPocketDiscreteGradient, StartsMemoGivesTheSameContact) {
+  const double c = kClearance, psi = 0.4, turn = 2e-3;
+  const Sprocket w = wheel8(true);
+  Sprocket moved = w;  // a take-up's wheel a little along its slide
+  moved.centre_x += 3e-5;
+  moved.centre_y -= 2e-5;
+  const Point a0 = near_vertex(w, psi, 3, 0.3 * c, 1.7 * c + 20e-6);
+  const Point b0 = near_vertex(w, psi, 3, 0.3 * c, 1.7 * c + 45e-6);  // the same pocket, deeper
+  const Point d0 = near_vertex(w, psi, 4, 12.0 * c, 20e-6);           // pocket 4's blend
+  struct Call {
+    const Sprocket* w;
+    Point p0;
+    int k;
+  };
+  const Call calls[] = {{&w, a0, 3}, {&w, a0, 3},     {&w, b0, 3}, {&w, d0, 4},
+                        {&w, a0, 3}, {&moved, a0, 3}, {&w, a0, 3}};
+  PocketStart memo;
+  int corrected = 0;
+  for (const Call& call : calls) {
+    const Sprocket& wh = *call.w;
+    const Point p1 = near_vertex(w, psi + turn, call.k, call.k == 3 ? 0.1 * c : 12.4 * c,
+                                 call.k == 3 ? 1.5 * c + 60e-6 : 30e-6);
+    PocketStep step{.x0 = call.p0.x,
+                    .y0 = call.p0.y,
+                    .x1 = p1.x,
+                    .y1 = p1.y,
+                    .cx0 = w.centre_x,
+                    .cy0 = w.centre_y,
+                    .cx1 = w.centre_x,
+                    .cy1 = w.centre_y,
+                    .angle0 = psi,
+                    .angle1 = psi + turn,
+                    .theta = 0.5};
+    const double qx = 0.5 * (call.p0.x + p1.x), qy = 0.5 * (call.p0.y + p1.y);
+    const SeatContact without =
+        pocket_step_contact(wh, qx, qy, 0.1, 0.2, psi + 0.5 * turn, 20.0, kNoPocket, step);
+    step.start = &memo;
+    const SeatContact with =
+        pocket_step_contact(wh, qx, qy, 0.1, 0.2, psi + 0.5 * turn, 20.0, kNoPocket, step);
+    EXPECT_TRUE(memo.set);
+    EXPECT_EQ(memo.pocket, call.k);
+    EXPECT_EQ(with.skew, without.skew) << call.k;
+    EXPECT_EQ(with.skew_dx, without.skew_dx) << call.k;
+    EXPECT_EQ(with.skew_dy, without.skew_dy) << call.k;
+    EXPECT_EQ(with.skew_dpsi, without.skew_dpsi) << call.k;
+    EXPECT_EQ(with.force, without.force) << call.k;
+    EXPECT_EQ(with.torque, without.torque) << call.k;
+    corrected += without.skew != 0.0;
+  }
+  EXPECT_EQ(corrected, 7);
+}
+
 // Where the step's points lie across one of E_k's jumps the correction would be the jump over
 // |Δz|² (kN per µm of step): there the force is the θ point's. A joint leaving over the sharp
 // mouth 3c off its vertex (E jumps from E₀(g) to 0), and one crossing the body's capture (10c
@@ -207,6 +350,68 @@ testing::PocketSetup fall_onto(double off, double inward, double spin, double sl
                               .driven = true,
                               .contact_damping = damping,
                               .discrete_gradient = gradient});
+}
+
+// A take-up's pocket wheel (driven, its slide along e = (0.6, 0.8) pushed by 500 N against
+// 1e5 N/m, 2 kg): the step's Newton matrix against central differences of its residual, every
+// column (the joints', the angle's and the slide's), with the leading joint on the body between
+// the pockets — on the blend 1.5 mm off its vertex and on the rim 14 mm off, where the contact's
+// whole ∂F/∂q is its dq_extra — with and without the discrete gradient, θ = 0.6, c_c = 2000.
+TEST(DynamicsPocketDiscreteGradient, TakeupsNewtonMatrixOnTheBodyMatchesTheDifferences) {
+  const double h = 1e-5;
+  for (const double off : {1.5e-3, 14e-3}) {
+    for (const bool gradient : {false, true}) {
+      testing::PocketSetup f = testing::fall_setup({.off = off,
+                                                    .above = 10e-6,
+                                                    .inward = 2.0,
+                                                    .spin = 5.0,
+                                                    .driven = true,
+                                                    .contact_damping = 2000.0,
+                                                    .discrete_gradient = gradient});
+      Model& m = f.model;
+      State& s = f.state;
+      Sprocket& w = m.sprockets[0];
+      w.takeup = true;
+      w.takeup_dx = 0.6;
+      w.takeup_dy = 0.8;
+      w.takeup_force = 500.0;
+      w.takeup_stiffness = 1e5;
+      w.takeup_mass = 2.0;
+      Integrator integ(m, {.step = h, .theta = 0.6});
+      const std::size_t n = s.nodes(), nu = integ.unknowns();
+      ASSERT_EQ(nu, 2 * n + 2);  // the angle, then the slide
+      const double r = w.pitch_radius;
+      int checked = 0;
+      double worst = 0.0;
+      for (int step = 0; step < 120 && checked < 3; ++step) {
+        ASSERT_TRUE(integ.step(m, s).converged) << step;
+        const Sprocket here = at_slide(w, s.slide[0]);
+        const SeatContact c =
+            pocket_contact(here, s.x[0], s.y[0], s.vx[0] - s.slide_speed[0] * 0.6,
+                           s.vy[0] - s.slide_speed[0] * 0.8, s.angle[0], s.speed[0]);
+        if (!c.active || c.surface != 3 || !(c.force > 1.0) || step % 3) continue;
+        std::vector<double> u(nu);
+        for (std::size_t i = 0; i < n; ++i) {
+          u[2 * i] = s.x[i] + h * s.vx[i];
+          u[2 * i + 1] = s.y[i] + h * s.vy[i];
+        }
+        u[2 * n] = s.angle[0] + h * s.speed[0];
+        u[2 * n + 1] = s.slide[0] + h * s.slide_speed[0];
+        std::vector<double> res, jac;
+        integ.newton_system(m, s, u, res, &jac);
+        const testing::ColumnsAgainstDifferences d = testing::expect_columns_match_differences(
+            integ, m, s, u, jac, {},
+            [&](std::size_t col) { return col >= 2 * n ? 1e-10 / r : 1e-10; }, 1e-5);
+        worst = std::max(worst, d.worst);
+        ++checked;
+      }
+      std::printf(
+          "pocket take-up's Newton matrix on the body (%.1f mm off, discrete gradient %d): %d "
+          "iterates, worst |J - FD| / column scale %.2e\n",
+          off * 1e3, gradient ? 1 : 0, checked, worst);
+      EXPECT_GE(checked, 2) << off;
+    }
+  }
 }
 
 // (2) The step's Newton matrix with the discrete gradient against central differences of its

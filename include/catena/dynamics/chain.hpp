@@ -832,14 +832,29 @@ ReleaseBand release_band(const Sprocket& w);
 inline constexpr int kNoPocket = -2147483647 - 1;
 SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, double vy,
                            double angle, double speed, int held = kNoPocket);
+/// pocket_step_contact's memo of a step's start (x₀, ψ₀ do not move within a step): the start's
+/// place for the jumps and its energy E_k, for the pocket k, the hold and the inputs it was taken
+/// with (the wheel's centre included: a take-up's moves with the iterate). A call whose inputs
+/// differ from these in any bit takes the start afresh and keeps it here, so the result is the
+/// same with the memo or without.
+struct PocketStart {
+  bool set = false;
+  double x0 = 0.0, y0 = 0.0, cx0 = 0.0, cy0 = 0.0, angle0 = 0.0, centre_x = 0.0, centre_y = 0.0;
+  int pocket = 0, held = 0;
+  int piece = 0;        ///< where the start is for the pocket (pocket.cpp's Piece)
+  double energy = 0.0;  ///< [J] E_k(x₀, ψ₀), 0 out of contact
+};
 /// A step's ends for the pocket's discrete gradient (Sprocket::discrete_gradient on a pocket
 /// wheel): the joint at the step's start x₀ and end x₁ [m], the wheel's centre there [m] (they
 /// differ on a take-up's sliding wheel), its angles ψ₀ and ψ₁ [rad], and the θ point's weight.
+/// `start`, optional: the caller's memo of the step's start for this joint and wheel, kept over
+/// the step's Newton iterations.
 struct PocketStep {
   double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
   double cx0 = 0.0, cy0 = 0.0, cx1 = 0.0, cy1 = 0.0;
   double angle0 = 0.0, angle1 = 0.0;
   double theta = 0.5;
+  PocketStart* start = nullptr;
 };
 /// pocket_contact at the θ point (x, y, angle, its speeds) over the step `step` (docs/models/
 /// dynamics.md, "Pocket wheel: the discrete gradient"). Without Sprocket::discrete_gradient the

@@ -234,6 +234,9 @@ class Integrator {
   // has it)
   double seat_travel_ = 0.0;
   std::vector<std::vector<SeatDirection>> seat_direction_;  // per wheel: by k mod z
+  // per pocket wheel with the discrete gradient, per node: the memo of the step's start
+  // (PocketStart: its energy is taken once a step, not in every Newton iteration)
+  std::vector<std::vector<PocketStart>> pocket_start_;
   // the nodes' θ points x_θ of the iterate (assemble's; the wheels' and the guides' one set)
   std::vector<double> qx_, qy_;
   // Each wheel's candidates: the nodes within (1 + kCandidateMargin) · reach of its centre at

@@ -206,8 +206,10 @@ void Integrator::prepare_seats(const Model& model) {
   seat_geometry_.resize(wheels);
   seat_psi_.assign(wheels, NAN);
   seat_direction_.resize(wheels);
+  pocket_start_.resize(wheels);
   for (std::size_t w = 0; w < wheels; ++w) {
     const Sprocket& wheel = model.sprockets[w];
+    if (wheel.pocket && wheel.discrete_gradient) pocket_start_[w].assign(model.nodes(), {});
     if (wheel.pocket) continue;
     seat_geometry_[w] = seat_geometry(wheel);
     seat_direction_[w].assign(static_cast<std::size_t>(std::max(wheel.teeth, 1)), SeatDirection{});
@@ -550,7 +552,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
                              .cy1 = ends.cy1,
                              .angle0 = s.angle[w],
                              .angle1 = psi1_[w],
-                             .theta = th};
+                             .theta = th,
+                             .start = i < pocket_start_[w].size() ? &pocket_start_[w][i] : nullptr};
           return pocket_step_contact(wheel, qx, qy, vx, vy, psi, omega, held, e);
         }
         // seat_contact, its seat's direction from the step's table when there
@@ -751,6 +754,12 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       if (rubs) {
         dall = {dall.a - (ht * sf.dq[0] + sf.dv[0]), dall.b - (ht * sf.dq[1] + sf.dv[1]),
                 dall.c - (ht * sf.dq[2] + sf.dv[2]), dall.d - (ht * sf.dq[3] + sf.dv[3])};
+      }
+      if (wheel.pocket) {  // a pocket's own blocks, as on the diagonal (the body's whole ∂F/∂q)
+        const double* e = sc.dq_extra;
+        const double* ev = sc.dv_extra;
+        dall = {dall.a - (ht * e[0] + ev[0]), dall.b - (ht * e[1] + ev[1]),
+                dall.c - (ht * e[2] + ev[2]), dall.d - (ht * e[3] + ev[3])};
       }
       const Vec2 de{dall.a * ex + dall.b * ey, dall.c * ex + dall.d * ey};
       border_rows_[is].push_back(i);
