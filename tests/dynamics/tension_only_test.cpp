@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "catena/dynamics/integrator.hpp"
@@ -253,6 +254,217 @@ TEST(DynamicsTensionOnlyLinks, BouncingOnASlackLinkClosesItsWorkBalance) {
   EXPECT_LT(std::abs(rest), 1e-3 * std::abs(s.damper_work));
 }
 
+// With Model::links_discrete_gradient the same bouncing mass closes its work balance to rounding:
+// the links' force over the step (link_step_force) does exactly −ΔE of its spring at θ = ½, also
+// on the steps that enter, cross or leave the ramp (the θ point's force leaves +8.1e-8 J there
+// with Newton to the same 1e-13; +9.9e-8 J at the default, the test above). The damper over the
+// step dissipates as much as the θ point's (within 1 %).
+TEST(DynamicsTensionOnlyLinks, BouncingWithTheDiscreteGradientClosesItsBalanceToRounding) {
+  double rest[2] = {0.0, 0.0}, damper[2] = {0.0, 0.0};
+  for (const bool gradient : {false, true}) {
+    Model m = tension_only(2);
+    m.pinned = {1, 0};
+    m.gravity_x = 9.81;
+    m.links_discrete_gradient = gradient;
+    State s(2, 0);
+    s.x[1] = kPitch;
+    s.vx[1] = 0.1;
+    const double e0 = energy(m, s).total();
+    // Newton to 1e-13 of the pitch: at the default 1e-10 its stopping leaves 1.8e-8 J here
+    Integrator integ(m, {.step = 2e-6, .tolerance = 1e-13, .theta = 0.5});
+    std::vector<double> t(1);
+    double lowest = INFINITY, shortest = INFINITY;
+    for (int k = 0; k < 20000; ++k) {  // 40 ms
+      ASSERT_TRUE(integ.step(m, s).converged) << k;
+      link_tensions(m, s, t);
+      lowest = std::min(lowest, t[0]);
+      shortest = std::min(shortest, s.x[1] - s.x[0]);
+    }
+    const double de = energy(m, s).total() - e0;
+    rest[gradient] = de - s.damper_work;
+    damper[gradient] = s.damper_work;
+    std::printf("bouncing (%s): dE %.6e J, damper %.6e J, numerical %.2e J\n",
+                gradient ? "discrete gradient" : "theta point", de, s.damper_work, rest[gradient]);
+    EXPECT_GE(lowest, 0.0);
+    EXPECT_LT(shortest - kPitch, -10 * m.link_smoothing);  // it goes slack: through the ramp
+  }
+  EXPECT_GT(std::abs(rest[0]), 1e-8);  // the θ point's: the ramp's steps
+  EXPECT_LT(std::abs(rest[1]), 1e-10);
+  EXPECT_LT(std::abs(rest[1]), 1e-3 * std::abs(rest[0]));
+  EXPECT_LT(damper[1], -1e-4);
+  EXPECT_NEAR(damper[1], damper[0], 1e-2 * std::abs(damper[0]));
+}
+
+// One step of a link at θ = ½ through the integrator's assembly (Integrator::newton_system at
+// the step's end as the iterate, massless nodes moving at Δx/h: the residual is −h × the link's
+// force), undamped, the link turning 0.3 rad: with Model::links_discrete_gradient its work on the
+// two nodes is −(E(s₁) − E(s₀)) to rounding on a step that enters the ramp, crosses it, leaves
+// it either way, stays within it, or comes down into it from beyond; the θ point's force misses.
+TEST(DynamicsTensionOnlyLinks, OneStepsWorkIsMinusTheEnergysChangeWithTheDiscreteGradient) {
+  const double eps = 1e-6, h = 1e-5;
+  struct Case {
+    const char* name;
+    double s0, s1;  // [ε]
+  };
+  const Case cases[] = {{"entering", -0.8, -0.1}, {"crossing", -0.8, 1.4},
+                        {"leaving", 0.3, -0.9},   {"leaving up", 0.1, 2.0},
+                        {"inside", -0.3, 0.35},   {"from beyond", 3.0, 0.2},
+                        {"beyond", 2.0, 40.0}};
+  for (const Case& c : cases) {
+    double misfit[2] = {0.0, 0.0};
+    double de = 0.0, rounding = 0.0;
+    for (const bool gradient : {false, true}) {
+      Model m = uniform_chain(2, false, kPitch, 1e-12, kStiffness, 0.0, false);
+      m.links_carry_compression = false;
+      m.links_discrete_gradient = gradient;
+      State s(2, 0);
+      const double l0 = kPitch + c.s0 * eps, l1 = kPitch + c.s1 * eps;
+      const double a0 = 0.4, a1 = 0.7;  // the link turns 0.3 rad over the step
+      const double x0[4] = {0.0, 0.0, l0 * std::cos(a0), l0 * std::sin(a0)};
+      const double x1[4] = {2e-4, -1e-4, 2e-4 + l1 * std::cos(a1), -1e-4 + l1 * std::sin(a1)};
+      std::vector<double> u(4);
+      for (std::size_t i = 0; i < 2; ++i) {
+        s.x[i] = x0[2 * i];
+        s.y[i] = x0[2 * i + 1];
+        s.vx[i] = (x1[2 * i] - x0[2 * i]) / h;
+        s.vy[i] = (x1[2 * i + 1] - x0[2 * i + 1]) / h;
+        u[2 * i] = x1[2 * i];
+        u[2 * i + 1] = x1[2 * i + 1];
+      }
+      Integrator integ(m, {.step = h, .theta = 0.5});
+      std::vector<double> r;
+      integ.newton_system(m, s, u, r, nullptr);
+      double work = 0.0, terms = 0.0;  // Σ F·Δx, F = −r/h; Σ |F·Δx| (the sum's rounding)
+      for (std::size_t a = 0; a < 4; ++a) {
+        work -= r[a] / h * (x1[a] - x0[a]);
+        terms += std::abs(r[a] / h * (x1[a] - x0[a]));
+      }
+      de = link_force(m, c.s1 * eps, 0.0).energy - link_force(m, c.s0 * eps, 0.0).energy;
+      misfit[gradient] = work + de;
+      if (gradient) rounding = 1e-14 * terms;
+    }
+    std::printf("%-12s dE %+.6e J: work + dE %+.2e J (theta point %+.2e J; rounding %.1e J)\n",
+                c.name, de, misfit[1], misfit[0], rounding);
+    EXPECT_LT(std::abs(misfit[1]), rounding) << c.name;
+    if (std::string(c.name) != "beyond") {  // beyond the ramp the θ point's is exact too
+      EXPECT_GT(std::abs(misfit[0]), 1e-4 * std::abs(de)) << c.name;
+    }
+  }
+}
+
+// The damper over the step (link_step_force, damped, spring off): f_d = (C(u₁) − C(u₀))/h against
+// Simpson's rule for ∫ c min(1, u/ε) du over [u₀, u₁] (0 for u ≤ 0), and the whole force's
+// damper share T − T_dg does the work −(T − T_dg)(s₁ − s₀) ≤ 0 on random steps, clamped or not
+// (the spring on); its slope ∂T/∂s₁ against central differences where T is not clamped.
+TEST(DynamicsTensionOnlyLinks, DamperOverTheStepIsTheRampsIntegralAndNeverDoesWork) {
+  const double eps = 1e-6;
+  Model m = tension_only(2);
+  Model damper_only = m;
+  damper_only.axial_stiffness = 0.0;  // (unvalidated: the law alone)
+  unsigned seed = 12345u;
+  auto uniform = [&seed]() {  // a small LCG: the same steps on every platform
+    seed = seed * 1664525u + 1013904223u;
+    return (seed >> 8) * (1.0 / 16777216.0);
+  };
+  int clamped = 0, checked = 0;
+  double worst_integral = 0.0;
+  for (int k = 0; k < 20000; ++k) {
+    const double s0 = (-3.0 + 8.0 * uniform()) * eps;
+    const double s1 = k % 2 == 0 ? (-3.0 + 8.0 * uniform()) * eps : s0 + (uniform() - 0.5) * eps;
+    const double h = std::pow(10.0, -7.0 + 3.0 * uniform());  // 0.1 µs .. 0.1 ms
+    // Simpson's rule on the ramped coefficient, with the ramp's kinks as nodes
+    auto coefficient = [&](double v) { return kDamping * std::clamp(v / eps, 0.0, 1.0); };
+    const double u0 = s0 + 0.5 * eps, u1 = s1 + 0.5 * eps;
+    std::vector<double> knots{u0, u1};
+    for (const double kink : {0.0, eps})
+      if ((kink - u0) * (kink - u1) < 0.0) knots.push_back(kink);
+    std::sort(knots.begin(), knots.end());
+    double integral = 0.0;
+    for (std::size_t i = 0; i + 1 < knots.size(); ++i) {
+      const double a = knots[i], b = knots[i + 1];
+      integral +=
+          (b - a) / 6.0 * (coefficient(a) + 4.0 * coefficient(0.5 * (a + b)) + coefficient(b));
+    }
+    if (u1 < u0) integral = -integral;
+    const LinkStep d = link_step_force(damper_only, s0, s1, h);
+    EXPECT_EQ(d.elastic, 0.0);
+    const double fd = integral / h;
+    // (the spring off, the clamp keeps only the damper's pull)
+    EXPECT_NEAR(d.tension, std::max(0.0, fd), 1e-9 * kDamping * eps / h + 1e-12 * std::abs(fd))
+        << s0 << " " << s1 << " " << h;
+    worst_integral =
+        std::max(worst_integral, std::abs(d.tension - std::max(0.0, fd)) * h / (kDamping * eps));
+    const LinkStep f = link_step_force(m, s0, s1, h);
+    EXPECT_GE(f.tension, 0.0);
+    EXPECT_GE(f.elastic, 0.0);
+    const double work = -(f.tension - f.elastic) * (s1 - s0);
+    EXPECT_LE(work, 0.0) << s0 << " " << s1 << " " << h;
+    if (f.tension == 0.0 && f.elastic > 0.0) ++clamped;
+    // ∂T/∂s₁, where the difference stays on one side of the clamp and of the threshold
+    const double ds = 1e-6 * eps;
+    const LinkStep p = link_step_force(m, s0, s1 + ds, h), q = link_step_force(m, s0, s1 - ds, h);
+    if ((p.tension > 0.0) == (q.tension > 0.0) && (p.tension > 0.0) == (f.tension > 0.0) &&
+        std::abs(s1 - s0) > 10 * ds) {
+      ++checked;
+      EXPECT_NEAR(f.slope, (p.tension - q.tension) / (2 * ds), 1e-5 * (kStiffness + kDamping / h))
+          << s0 << " " << s1 << " " << h;
+    }
+  }
+  std::printf("damper over the step: %d clamped, %d slopes checked, integral within %.2e\n",
+              clamped, checked, worst_integral);
+  EXPECT_GT(clamped, 100);
+  EXPECT_GT(checked, 10000);
+}
+
+// The integrator's Newton matrix with Model::links_discrete_gradient at θ = ½ against central
+// differences of its residual: at the iterate the links go slack → slack, ramp → ramp,
+// slack → ramp, taut → taut and taut → ramp shortening so fast that the damper over the step
+// clamps T at 0 (h = 10 µs: c/h = 2e8 N/m > k).
+TEST(DynamicsTensionOnlyLinks, NewtonMatrixWithTheDiscreteGradientMatchesTheDifferences) {
+  Model m = tension_only(6);
+  m.links_discrete_gradient = true;
+  const double eps = m.link_smoothing, h = 1e-5, th = 0.5;
+  const double s0[5] = {-3e-6, 0.1 * eps, -0.8 * eps, 20e-6, 6e-6};
+  const double s1[5] = {-2.5e-6, 0.3 * eps, 0.2 * eps, 20.5e-6, 3e-6};
+  const double a0[5] = {0.2, -0.4, 0.5, 1.1, -0.9}, turn = 0.01;
+  State s(6, 0);
+  std::vector<double> u(12);
+  u[0] = 1e-6;
+  u[1] = -2e-6;
+  for (std::size_t j = 0; j < 5; ++j) {
+    s.x[j + 1] = s.x[j] + (kPitch + s0[j]) * std::cos(a0[j]);
+    s.y[j + 1] = s.y[j] + (kPitch + s0[j]) * std::sin(a0[j]);
+    u[2 * j + 2] = u[2 * j] + (kPitch + s1[j]) * std::cos(a0[j] + turn);
+    u[2 * j + 3] = u[2 * j + 1] + (kPitch + s1[j]) * std::sin(a0[j] + turn);
+  }
+  for (std::size_t j = 0; j < 5; ++j) {
+    const LinkStep law = link_step_force(m, s0[j], s1[j], h);
+    if (j == 0) {
+      EXPECT_EQ(law.elastic, 0.0);
+    } else if (j < 4) {
+      EXPECT_GT(law.tension, 0.0) << j;
+    } else {
+      EXPECT_GT(law.elastic, 100.0);
+      EXPECT_EQ(law.tension, 0.0);
+    }
+  }
+  Integrator integ(m, {.step = h, .theta = th});
+  std::vector<double> r, jac, point;
+  integ.newton_system(m, s, u, r, &jac);
+  Model theta_point = m;
+  theta_point.links_discrete_gradient = false;
+  Integrator other(theta_point, {.step = h, .theta = th});
+  other.newton_system(theta_point, s, u, r, &point);
+  const double scale = h * th * kStiffness;
+  const testing::ColumnsAgainstDifferences found = testing::expect_columns_match_differences(
+      integ, m, s, u, jac, point, [](std::size_t) { return 1e-11; }, 1e-7);
+  std::printf(
+      "discrete-gradient links' Newton matrix: largest misfit %.2e of the column, the theta "
+      "point's matrix %.2e of h theta k away\n",
+      found.worst, found.differs / scale);
+  EXPECT_GT(found.differs, 0.1 * scale);  // a law of its own
+}
+
 // Hinge friction takes the links' bilateral tension: with tension-only links it is refused, and
 // a bad ε is named.
 TEST(DynamicsTensionOnlyLinks, BadFieldsAreNamed) {
@@ -266,9 +478,13 @@ TEST(DynamicsTensionOnlyLinks, BadFieldsAreNamed) {
   };
   EXPECT_TRUE(named("link_smoothing"));
   EXPECT_TRUE(named("links_carry_compression"));
+  EXPECT_FALSE(named("links_discrete_gradient"));
   m.links_carry_compression = true;  // the bilateral links take neither
   m.hinge.arm = 0.0;
   EXPECT_TRUE(validate(m).empty());
+  m.links_discrete_gradient = true;  // nor the discrete gradient (theirs at θ = ½ already)
+  EXPECT_EQ(validate(m).size(), 1u);
+  EXPECT_EQ(validate(m)[0].field, "links_discrete_gradient");
 }
 
 }  // namespace

@@ -493,6 +493,13 @@ struct Model {
   /// −ε/2 < s < ε/2 (s = l − rest length) and is k s beyond, 0 below, and its damper ramps in
   /// over the same ε (link_force); unused with links_carry_compression
   double link_smoothing = 1e-6;
+  /// A tension-only link's force over a step (docs/models/dynamics.md, "Tension-only links: the
+  /// discrete gradient"): true, link_step_force (the discrete gradient of its energy between the
+  /// stretches at the step's ends, and its damper over the step), so that at θ = ½ its spring's
+  /// work over the step is exactly −ΔE; false, the default: link_force at the θ point. The case
+  /// key discrete_gradient sets it with wheel = "pocket". Only with tension-only links
+  /// (validated: the bilateral link's θ = ½ force is that discrete gradient already).
+  bool links_discrete_gradient = false;
 
   std::size_t nodes() const { return mass.size(); }
   /// Links: N in a closed loop, N − 1 in an open chain.
@@ -551,6 +558,22 @@ inline LinkForce link_force(const Model& model, double s, double rate) {
   out.damping = c * r;
   return out;
 }
+
+/// A tension-only link's force over a step (Model::links_discrete_gradient).
+struct LinkStep {
+  double tension = 0.0;  ///< [N] T = max(0, T_dg + f_d)
+  double elastic = 0.0;  ///< [N] T_dg, the discrete gradient of E (T − T_dg is the damper's)
+  double slope = 0.0;    ///< [N/m] ∂T/∂s₁ (0 where T is clamped at 0)
+};
+
+/// A tension-only link's force over the step from the stretch s₀ to s₁ (s = l − rest length) in
+/// the time h (docs/models/dynamics.md, "Tension-only links: the discrete gradient"): the spring's
+/// T_dg = (E(s₁) − E(s₀))/(s₁ − s₀) of link_force's energy E (its T_e at the mean stretch for
+/// |s₁ − s₀| ≤ 1e-6 max(ε, |s₀|, |s₁|)), the damper f_d = (C(u₁) − C(u₀))/h with C(u) = ∫ c r
+/// the ramped damper's integral (u = s + ε/2, as the seats'), and T = max(0, T_dg + f_d). Along
+/// d_θ/l_θ at θ = ½ the spring's work over the step is −(E(s₁) − E(s₀)) and the damper's
+/// −(T − T_dg)(s₁ − s₀) ≤ 0.
+LinkStep link_step_force(const Model& model, double s0, double s1, double h);
 
 /// N nodes of equal mass; an open chain gets its two end nodes pinned when `pin_ends`.
 Model uniform_chain(std::size_t nodes, bool closed, double pitch, double node_mass,

@@ -138,8 +138,9 @@ std::vector<Parameter> table_fields() {
            "true or false: the ISO seats', the pocket wheels' pockets' and the guides' rails' "
            "elastic force as the discrete gradient of the contact's energy over each step "
            "(conserving, for theta = 0.5, on ISO seats and rails, whose dampers it takes over "
-           "the step too) instead of at the theta point (default true with "
-           "contact_law = \"line\", false with \"linear\" and with wheel = \"pocket\")"),
+           "the step too; with wheel = \"pocket\" the tension-only links' force and damper too) "
+           "instead of at the theta point (default true with contact_law = \"line\", false "
+           "with \"linear\" and with wheel = \"pocket\")"),
       // the round-link chain on pocket wheels (docs/models/dynamics.md, "Pocket wheel")
       text("wheel",
            "iso606 (roller chain on ISO 606 sprockets, the default) or pocket (round-link chain "
@@ -2586,6 +2587,9 @@ Result run(const analysis::Inputs& in) {
     // round links: the next link slides inside the ring, no compression (docs/models/dynamics.md,
     // "Tension-only links")
     model.links_carry_compression = false;
+    // discrete_gradient: the links' force over the step too ("Tension-only links: the discrete
+    // gradient")
+    model.links_discrete_gradient = d.discrete_gradient;
   }
   const double centre = (d.pocket ? 2 * m : m) * d.pitch;
   std::vector<Sprocket> wheels;
@@ -2845,17 +2849,18 @@ Result run(const analysis::Inputs& in) {
   }
   // with the discrete gradient (the seats' elastic force and damper over the step) drives close
   // their work balance at θ = ½, damped or not (docs, "Sprockets: the discrete gradient"); on
-  // pocket wheels the sharp mouth's energy jump and the tension-only links stay outside it, and
-  // the pocket example at ½ stops ("Pocket wheel: the discrete gradient")
+  // pocket wheels the sharp mouth's energy jump stays outside it (the tension-only links are
+  // in: "Tension-only links: the discrete gradient"), and the pocket example at ½ undamped stops
+  // ("Pocket wheel: the discrete gradient")
   if (d.theta < 0.6) {
     const char* why =
         !d.discrete_gradient ? " < 0.6: drives with roller-seat contact diverged below 0.6 "
                                "(docs/models/dynamics.md)"
         : d.pocket
-            ? " < 0.6: with discrete_gradient = true the pockets' force is taken over the step, "
-              "but the sharp mouth's energy jump and the tension-only links are not: pocket-"
-              "wheel runs below 0.6 may stop (docs/models/dynamics.md, \"Pocket wheel: the "
-              "discrete gradient\")"
+            ? " < 0.6: with discrete_gradient = true the pockets' and the links' force is "
+              "taken over the step, but the sharp mouth's energy jump is not: pocket-wheel runs "
+              "below 0.6 may stop (docs/models/dynamics.md, \"Pocket wheel: the discrete "
+              "gradient\")"
             : " < 0.6: with discrete_gradient = true drives with roller-seat contact, damped or "
               "not, keep their work balance down to 0.5 (the seats' elastic force and damper "
               "taken over the step; docs/models/dynamics.md, \"Sprockets: the discrete "

@@ -153,6 +153,11 @@ std::vector<Issue> validate(const Model& model) {
     out.push_back({"axial_damping", check::format_si(model.axial_damping, "N*s/m"),
                    "a finite value >= 0 N*s/m"});
   }
+  if (model.links_carry_compression && model.links_discrete_gradient) {
+    out.push_back({"links_discrete_gradient", "true",
+                   "false with links_carry_compression (the bilateral link's force at theta = "
+                   "0.5 is the discrete gradient of its energy already)"});
+  }
   if (!model.links_carry_compression) {
     check::finite_positive(out, "link_smoothing", model.link_smoothing, "m");
     if (model.hinge.active())
@@ -664,13 +669,15 @@ double rail_gap(const Guide& gd, const GuideFrame& frame, double x, double y, do
 struct DiscreteGradient {
   double force = 0.0, slope = 0.0;
 };
+// `floor` [m]: the smallest scale of the threshold (a tension-only link's ε, whose stretch
+// passes through 0 in the middle of its ramp; 0 for the contacts, whose energy is 0 at g = 0).
 template <class Law>
-DiscreteGradient discrete_gradient(const Law& elastic, double g0, double g1) {
+DiscreteGradient discrete_gradient(const Law& elastic, double g0, double g1, double floor = 0.0) {
   DiscreteGradient out;
   const double dg = g1 - g0;
   // the quotient's rounding is ~1e-16 g/|dg| of the force: past 1e-6 of the gap, 1e-10; below it
   // the midpoint's force, within (dg/g)² ~ 1e-12 of the quotient
-  if (std::abs(dg) > 1e-6 * std::max(std::abs(g0), std::abs(g1))) {
+  if (std::abs(dg) > 1e-6 * std::max(std::max(std::abs(g0), std::abs(g1)), floor)) {
     const LineForce e0 = elastic(g0), e1 = elastic(g1);
     out.force = (e1.energy - e0.energy) / dg;
     out.slope = (e1.force - out.force) / dg;
@@ -699,6 +706,32 @@ StepDamper step_damper(double cc, double eps, double g0, double g1, double h) {
   return {(potential(g1) - potential(g0)) / h, cc * std::clamp(g1 / eps, 0.0, 1.0) / h};
 }
 }  // namespace
+
+LinkStep link_step_force(const Model& model, double s0, double s1, double h) {
+  const double eps = model.link_smoothing;
+  // The spring: the quotient of link_force's own energy (the one energy() reports), with the
+  // threshold's scale at least ε. Beyond the ramp E is quadratic and the mean stretch's T_e is the
+  // quotient exactly; within it E''' = k/ε and the mean's force misses the quotient by
+  // k Δs²/24ε ≤ 4e-14 k ε at |Δs| ≤ 1e-6 ε (across a ramp's end, where E''' jumps, by no more),
+  // a work of < 1e-19 k ε² a step; the quotient's rounding, ~2e-16 E/|Δs|, stays below ~1e-10
+  // of k max(ε, |s|) past the threshold.
+  const DiscreteGradient spring = discrete_gradient(
+      [&](double s) {
+        const LinkForce f = link_force(model, s, 0.0);
+        return LineForce{f.elastic, f.stiffness, f.energy};
+      },
+      s0, s1, eps);
+  // the damper over the step: C(u) = ∫₀^u c min(1, v/ε) dv, the seats' (its work never positive)
+  const StepDamper damper =
+      step_damper(model.axial_damping, eps, s0 + 0.5 * eps, s1 + 0.5 * eps, h);
+  LinkStep out;
+  out.elastic = spring.force;
+  const double tension = spring.force + damper.force;
+  if (!(tension > 0.0)) return out;  // shortening faster than the spring pulls: slack
+  out.tension = tension;
+  out.slope = spring.slope + damper.slope;
+  return out;
+}
 
 GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, double y, double vx,
                            double vy, double anchor) {

@@ -334,13 +334,25 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     double phi = 0.0, dtension = 0.0;
     if (!model.links_carry_compression) {
       // A tension-only link (docs/models/dynamics.md, "Tension-only links"): link_force's T at the
-      // θ point's stretch and the step's rate; the damper's share T − T_e does the work
-      // −(T − T_e) d_θ·(d₁ − d₀)/l_θ (−T_e there where T is clamped at 0, as the seats' damper).
-      const LinkForce law = link_force(model, lt - p, (l1 - l0) / h);
-      damper_work -= (law.tension - law.elastic) * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
+      // θ point's stretch and the step's rate, or with Model::links_discrete_gradient T over the
+      // step (link_step_force: at θ = ½ its spring's work is −ΔE, since d_θ·(d₁ − d₀)/l_θ =
+      // l₁ − l₀ there); the damper's share T − T_e does the work −(T − T_e) d_θ·(d₁ − d₀)/l_θ
+      // (−T_e there where T is clamped at 0, as the seats' damper).
+      double tension = 0.0, elastic = 0.0;
+      if (model.links_discrete_gradient) {
+        const LinkStep law = link_step_force(model, l0 - p, l1 - p, h);
+        tension = law.tension;
+        elastic = law.elastic;
+        dtension = law.slope;  // ∂T/∂l₁ = ∂T/∂s₁; 0 on a slack link
+      } else {
+        const LinkForce law = link_force(model, lt - p, (l1 - l0) / h);
+        tension = law.tension;
+        elastic = law.elastic;
+        dtension = th * law.stiffness + law.damping / h;  // 0 on a slack link
+      }
+      damper_work -= (tension - elastic) * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
       if (report_only) return;  // (no hinges: validated)
-      phi = law.tension / lt;
-      dtension = th * law.stiffness + law.damping / h;  // 0 on a slack link
+      phi = tension / lt;
     } else {
       // the damper's share of φ d_θ does the work −c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ on the two
       // nodes (d_θ·(d₁ − d₀) = l̄ (l₁ − l₀) + (θ − ½)|d₁ − d₀|²: −c (l₁ − l₀)²/h at θ = ½)
