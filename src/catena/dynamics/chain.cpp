@@ -1316,6 +1316,22 @@ SeatGap seat_gap(const Sprocket& w, const SeatGeometry& t, double x, double y, d
   out.normal = true;
   return out;
 }
+
+// seat_gap in the nearest seat of a wheel turned to `angle` (nearest_seat at (x, y)), counted
+// from the θ point's seat k: k + m, m the offset reduced to within half a turn (an angle past ±π
+// gives the same seat's index a turn apart), so that an end within k's mid-tooth lines is measured
+// in seat k bit for bit (σ = angle + k τ). Past a mid-tooth line the θ point's seat's surfaces
+// are not the wheel's (a roller in the next seat read in them is millimetres deep in the tooth);
+// on the line the two seats' gaps are equal (the tooth is symmetric about it), so the gap taken
+// in each point's nearest seat is continuous.
+SeatGap seat_gap_nearest(const Sprocket& w, const SeatGeometry& t, double x, double y, double cx,
+                         double cy, double angle, double k) {
+  const double z = static_cast<double>(w.teeth);
+  double m = nearest_seat(x - cx, y - cy, angle, t.tau) - k;
+  m -= z * std::nearbyint(m / z);
+  const double sigma = angle + (k + m) * t.tau;
+  return seat_gap(w, t, x, y, cx, cy, std::cos(sigma), std::sin(sigma));
+}
 }  // namespace
 
 SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
@@ -1343,11 +1359,12 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
     apply_seat_law(w, g, rx, ry, vx, vy, speed, c);
     return c;
   }
-  // the discrete gradient over the step: the gaps at its ends in the same seat k
+  // the discrete gradient over the step: the gaps at its ends, each in its own nearest seat (the
+  // θ point's k unless the end is past one of k's mid-tooth lines)
   const SeatGap start =
-      seat_gap(w, t, step->x0, step->y0, step->cx0, step->cy0, step->cs0, step->sn0);
+      seat_gap_nearest(w, t, step->x0, step->y0, step->cx0, step->cy0, step->angle0, k);
   const SeatGap end =
-      seat_gap(w, t, step->x1, step->y1, step->cx1, step->cy1, step->cs1, step->sn1);
+      seat_gap_nearest(w, t, step->x1, step->y1, step->cx1, step->cy1, step->angle1, k);
   // active where either end is in contact: the elastic part and the damper both come from the
   // ends' gaps, so on a convex surface (a tooth's tip) a θ point inside with both ends clear
   // carries no force, and it is not a contact (no depth into max_penetration)
