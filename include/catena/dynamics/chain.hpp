@@ -743,8 +743,11 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
 /// alone (not its centre): computed once per wheel and step by the integrator instead of once per
 /// roller in reach (two sine/cosine pairs, an arctangent and two hypotenuses on a flank).
 struct SeatGeometry {
-  double reach = 0.0;         ///< [m] contact_reach(w)
-  double tau = 0.0;           ///< [rad] the seat spacing 2π/z
+  double reach = 0.0;  ///< [m] contact_reach(w)
+  double tau = 0.0;    ///< [rad] the seat spacing 2π/z
+  /// tan(τ/2) (1 − 1e-9): a point q with |(q − c) × u| ≤ it (q − c)·u, u the seat's direction, lies
+  /// within the seat's mid-tooth lines (0: no point is taken to)
+  double sector_tan = 0.0;
   double ch = 0.0, sh = 0.0;  ///< cos and sin of half the seating angle α/2
   double fa = 0.0, fb = 0.0;  ///< [m] the flank arc's centre F in the seat's mirrored frame
   bool has_corner = false;    ///< the flank ends at a corner K (the tip circle or the apex)

@@ -1083,6 +1083,7 @@ SeatGeometry seat_geometry(const Sprocket& w) {
   t.reach = contact_reach(w);
   const double tau = 2.0 * std::numbers::pi / w.teeth;
   t.tau = tau;
+  t.sector_tan = std::tan(0.5 * tau) * (1.0 - 1e-9);
   const double half = 0.5 * w.seating_angle;
   const double ch = std::cos(half), sh_abs = std::sin(half);
   t.ch = ch;
@@ -1317,20 +1318,29 @@ SeatGap seat_gap(const Sprocket& w, const SeatGeometry& t, double x, double y, d
   return out;
 }
 
-// seat_gap in the nearest seat of a wheel turned to `angle` (nearest_seat at (x, y)), counted
-// from the θ point's seat k: k + m, m the offset reduced to within half a turn (an angle past ±π
-// gives the same seat's index a turn apart), so that an end within k's mid-tooth lines is measured
-// in seat k bit for bit (σ = angle + k τ). Past a mid-tooth line the θ point's seat's surfaces
-// are not the wheel's (a roller in the next seat read in them is millimetres deep in the tooth);
-// on the line the two seats' gaps are equal (the tooth is symmetric about it), so the gap taken
-// in each point's nearest seat is continuous.
+// seat_gap in the nearest seat of a wheel turned to `angle`, counted from the θ point's seat k:
+// seat k (σ = angle + k τ, as the θ point's, bit for bit) while (x, y) lies within k's mid-tooth
+// lines (SeatGeometry::sector_tan, no arctangent), else k + m, m = nearest_seat's index less k
+// reduced to within half a turn (an angle past ±π gives the same seat's index a turn apart). Past a
+// mid-tooth line the θ point's seat's surfaces are not the wheel's (a roller in the next seat read
+// in them is millimetres deep in the tooth); on the line the two seats' gaps are equal (the tooth
+// is symmetric about it), so the gap taken in each point's nearest seat is continuous.
 SeatGap seat_gap_nearest(const Sprocket& w, const SeatGeometry& t, double x, double y, double cx,
                          double cy, double angle, double k) {
-  const double z = static_cast<double>(w.teeth);
-  double m = nearest_seat(x - cx, y - cy, angle, t.tau) - k;
-  m -= z * std::nearbyint(m / z);
-  const double sigma = angle + (k + m) * t.tau;
-  return seat_gap(w, t, x, y, cx, cy, std::cos(sigma), std::sin(sigma));
+  double sigma = angle + k * t.tau;
+  double cs = std::cos(sigma), sn = std::sin(sigma);
+  const double ex = x - cx, ey = y - cy;
+  if (!(std::abs(ex * sn - ey * cs) <= t.sector_tan * (ex * cs + ey * sn))) {
+    const double z = static_cast<double>(w.teeth);
+    double m = nearest_seat(ex, ey, angle, t.tau) - k;
+    m -= z * std::nearbyint(m / z);
+    if (m != 0.0) {
+      sigma = angle + (k + m) * t.tau;
+      cs = std::cos(sigma);
+      sn = std::sin(sigma);
+    }
+  }
+  return seat_gap(w, t, x, y, cx, cy, cs, sn);
 }
 }  // namespace
 
