@@ -1,11 +1,12 @@
 // The ISO seats' discrete gradient (Sprocket::discrete_gradient; docs/models/dynamics.md,
 // "Sprockets: the discrete gradient"): the seat's elastic force over a step is
-// (E(g₁) − E(g₀))/(g₁ − g₀) between the gaps in the θ point's seat at the step's ends. Its work on
-// roller and wheel over one step against the change of the contact's energy (the penalty's,
-// written out in penalty_ramp.hpp), the Newton matrix against central differences of the step's
-// residual, and a roller-chain drive at θ = ½ whose work balance closes with it and not without
-// it; the force's continuity where the contact switches, and the integrator's reach test for a
-// roller entering over a tooth's tip.
+// (E(g₁) − E(g₀))/(g₁ − g₀) between the gaps at the step's ends, each in its own nearest seat (the
+// θ point's within its mid-tooth lines). Its work on roller and wheel over one step against the
+// change of the contact's energy (the penalty's, written out in penalty_ramp.hpp), also on a step
+// across a mid-tooth line; the Newton matrix against central differences of the step's residual,
+// and a roller-chain drive at θ = ½ whose work balance closes with it and not without it; the
+// force's continuity where the contact switches, and the integrator's reach test for a roller
+// entering over a tooth's tip.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -280,7 +281,7 @@ TEST(DynamicsSeatDiscreteGradient, ForceIsContinuousWhereTheContactSwitches) {
 // radial and the tangent) and ends at the mirror point across the tooth's centre line, touching
 // seat 0's corner, turned a little further (2e-5 rad) so that the θ point, on the chord over the
 // tip, is seat 0's. Read in seat 0 (the rule until 2026-11-27) the start is on the tip circle
-// continued past K, 1.8 mm deep: the force (E(g₁) − E(g₀))/(g₁ − g₀) was hundreds of kN and the
+// continued past K, 1.58 mm deep: the force (E(g₁) − E(g₀))/(g₁ − g₀) was 1.6e5 N and the
 // work −ΔE of an energy the contact does not have. With each end in its own seat the work is −ΔE
 // of the contact's energy (seat_contact's, the nearest seat) at the ends. The gap is continuous
 // across the line: there both seats' gaps are equal (the tooth is symmetric about it), checked on
