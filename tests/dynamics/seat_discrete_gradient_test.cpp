@@ -1,11 +1,12 @@
 // The ISO seats' discrete gradient (Sprocket::discrete_gradient; docs/models/dynamics.md,
 // "Sprockets: the discrete gradient"): the seat's elastic force over a step is
-// (E(g₁) − E(g₀))/(g₁ − g₀) between the gaps in the θ point's seat at the step's ends. Its work on
-// roller and wheel over one step against the change of the contact's energy (the penalty's,
-// written out in penalty_ramp.hpp), the Newton matrix against central differences of the step's
-// residual, and a roller-chain drive at θ = ½ whose work balance closes with it and not without
-// it; the force's continuity where the contact switches, and the integrator's reach test for a
-// roller entering over a tooth's tip.
+// (E(g₁) − E(g₀))/(g₁ − g₀) between the gaps at the step's ends, each in its own nearest seat (the
+// θ point's within its mid-tooth lines). Its work on roller and wheel over one step against the
+// change of the contact's energy (the penalty's, written out in penalty_ramp.hpp), also on a step
+// across a mid-tooth line; the Newton matrix against central differences of the step's residual,
+// and a roller-chain drive at θ = ½ whose work balance closes with it and not without it; the
+// force's continuity where the contact switches, and the integrator's reach test for a roller
+// entering over a tooth's tip.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -82,10 +83,8 @@ SeatContact step_contact(const Sprocket& w, Point p0, Point p1, double psi0, dou
                       .y0 = p0.y,
                       .x1 = p1.x,
                       .y1 = p1.y,
-                      .cs0 = std::cos(psi0 + k * t.tau),
-                      .sn0 = std::sin(psi0 + k * t.tau),
-                      .cs1 = std::cos(psi1 + k * t.tau),
-                      .sn1 = std::sin(psi1 + k * t.tau),
+                      .angle0 = psi0,
+                      .angle1 = psi1,
                       .h = h,
                       .turn = psi1 - psi0,
                       .theta = theta};
@@ -273,6 +272,93 @@ TEST(DynamicsSeatDiscreteGradient, ForceIsContinuousWhereTheContactSwitches) {
       clamp_at, correction, std::hypot(fa.x - fb.x, fa.y - fb.y));
   EXPECT_GT(correction, 0.1);
   EXPECT_LT(std::hypot(fa.x - fb.x, fa.y - fb.y), 1e-6 * correction + 1e-6);
+}
+
+// (1c) A step whose ends straddle a mid-tooth line (the roller travelling millimetres relative to
+// the wheel in a step: thrown over a tooth, a coarse step, a far Newton iterate): each end's gap
+// is taken in its own nearest seat. On a z = 12 wheel (12B, held or turning 3e-3 rad) the roller
+// starts touching the corner K of seat 1's tooth from outside (g₀ = 3 µm, 45° between the outward
+// radial and the tangent) and ends at the mirror point across the tooth's centre line, touching
+// seat 0's corner, turned a little further (2e-5 rad) so that the θ point, on the chord over the
+// tip, is seat 0's. Read in seat 0 (the rule until 2026-11-27) the start is on the tip circle
+// continued past K, 1.58 mm deep: the force (E(g₁) − E(g₀))/(g₁ − g₀) was 1.6e5 N and the
+// work −ΔE of an energy the contact does not have. With each end in its own seat the work is −ΔE
+// of the contact's energy (seat_contact's, the nearest seat) at the ends. The gap is continuous
+// across the line: there both seats' gaps are equal (the tooth is symmetric about it), checked on
+// the line from the tip circle into the tooth for z = 12 and 17, with the ISO flank and straight.
+TEST(DynamicsSeatDiscreteGradient, StepAcrossAMidToothLineTakesEachEndInItsOwnSeat) {
+  for (const int z : {12, 17}) {
+    for (const bool straight : {false, true}) {
+      Sprocket w = iso606_sprocket(kPitch, kRoller, kWidth, z, 0.0, 0.0, kStiffness, 0.0);
+      if (straight) w.flank_radius = 0.0;
+      const SeatGeometry t = seat_geometry(w);
+      const double line = 0.5 * t.tau;  // between seats 0 and 1 at ψ = 0
+      for (const double depth : {-1e-6, 1e-6, 1e-5, 1e-4, 1e-3, 3e-3}) {
+        const double rho = w.tip_radius + w.roller_radius - depth;
+        const double x = rho * std::cos(line), y = rho * std::sin(line);
+        double gap[2] = {0.0, 0.0};
+        for (int k = 0; k < 2; ++k) {
+          const SeatContact c = seat_contact_at(w, t, x, y, 0.0, 0.0, 0.0, k, std::cos(k * t.tau),
+                                                std::sin(k * t.tau));
+          gap[k] = c.active ? c.penetration : 0.0;
+        }
+        EXPECT_NEAR(gap[0], gap[1], 1e-15)
+            << "z " << z << " straight " << straight << " depth " << depth;
+        if (depth > 0.0) {
+          EXPECT_GT(gap[0], 0.0);
+        }
+      }
+    }
+  }
+  Sprocket w12 = iso606_sprocket(kPitch, kRoller, kWidth, 12, 0.0, 0.0, kStiffness, 0.0);
+  w12.discrete_gradient = true;
+  const SeatGeometry t = seat_geometry(w12);
+  ASSERT_TRUE(t.has_corner);
+  const double tau = t.tau, r = w12.roller_radius, g0 = 3e-6;
+  // K in seat 1's frame: its polar angle from seat 1's radial towards seat 0, and its radius
+  const double phi_k = std::atan2(t.kb, w12.pitch_radius - t.ka);
+  const double rho_k = std::hypot(w12.pitch_radius - t.ka, t.kb);
+  double worst = 0.0, old_depth = 0.0, old_force = 0.0, old_error = 0.0;
+  for (const double turn : {0.0, 3e-3}) {
+    // at ψ₀ = 0: the start touching seat 1's corner from outside, the end its mirror about the
+    // tooth's centre line τ/2 turned on by 2e-5 rad, then carried with the wheel by `turn`
+    const double ak = tau - phi_k;
+    const double ux = std::cos(ak) - std::sin(ak), uy = std::sin(ak) + std::cos(ak);
+    const Point p0{rho_k * std::cos(ak) + (r - g0) * ux / std::sqrt(2.0),
+                   rho_k * std::sin(ak) + (r - g0) * uy / std::sqrt(2.0)};
+    const double polar0 = std::atan2(p0.y, p0.x), rho0 = std::hypot(p0.x, p0.y);
+    const double polar1 = tau - polar0 - 2e-5 + turn;
+    const Point p1{rho0 * std::cos(polar1), rho0 * std::sin(polar1)};
+    const SeatContact start = seat_contact(w12, p0.x, p0.y, 0.0, 0.0, 0.0, 0.0);
+    const SeatContact end = seat_contact(w12, p1.x, p1.y, 0.0, 0.0, turn, 0.0);
+    ASSERT_TRUE(start.active && end.active);
+    EXPECT_EQ(start.seat, 1);
+    EXPECT_EQ(end.seat, 0);
+    EXPECT_NEAR(start.penetration, g0, 1e-9);  // the corner's gap, as built
+    const SeatContact c = step_contact(w12, p0, p1, 0.0, turn, true);
+    ASSERT_TRUE(c.active);
+    EXPECT_EQ(c.seat, 0) << "the theta point's seat";
+    const double change = end.energy - start.energy;
+    const double work = step_work(w12, p0, p1, 0.0, turn, true);
+    const double scale = std::max(start.energy, end.energy);
+    worst = std::max(worst, std::abs(work + change) / scale);
+    EXPECT_LE(std::abs(work + change), 1e-9 * scale) << "turn " << turn;
+    // the force stays of the ends' size (k_c g, 600 N at 3 µm)
+    EXPECT_LT(std::hypot(roller_force(c).x, roller_force(c).y), 10.0 * kStiffness * g0);
+    // the start read in seat 0 (the θ point's), as the rule until 2026-11-27 took it
+    const SeatContact misread = seat_contact_at(w12, t, p0.x, p0.y, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
+    ASSERT_TRUE(misread.active);
+    EXPECT_GT(misread.penetration, 1e-3);
+    old_depth = std::max(old_depth, misread.penetration);
+    const double old_change = penalty_energy(end.penetration) - penalty_energy(misread.penetration);
+    old_force = std::max(old_force, std::abs(old_change / (end.penetration - misread.penetration)));
+    old_error = std::max(old_error, std::abs(old_change - change) / scale);
+  }
+  std::printf(
+      "seat discrete gradient across a mid-tooth line (z = 12): |work + dE| / E worst %.2e; the "
+      "start read in the theta point's seat: %.3g mm deep, the force %.3g N, the energy's change "
+      "off by %.3g times E\n",
+      worst, 1e3 * old_depth, old_force, old_error);
 }
 
 // (1b) The damper over the step: f_d = (C(g₁) − C(g₀))/h with C(g) = ∫₀^g c(s) ds, c(s) = c_c

@@ -772,8 +772,11 @@ SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, doubl
 /// alone (not its centre): computed once per wheel and step by the integrator instead of once per
 /// roller in reach (two sine/cosine pairs, an arctangent and two hypotenuses on a flank).
 struct SeatGeometry {
-  double reach = 0.0;         ///< [m] contact_reach(w)
-  double tau = 0.0;           ///< [rad] the seat spacing 2π/z
+  double reach = 0.0;  ///< [m] contact_reach(w)
+  double tau = 0.0;    ///< [rad] the seat spacing 2π/z
+  /// tan(τ/2) (1 − 1e-9): a point q with |(q − c) × u| ≤ it (q − c)·u, u the seat's direction, lies
+  /// within the seat's mid-tooth lines (0: no point is taken to)
+  double sector_tan = 0.0;
   double ch = 0.0, sh = 0.0;  ///< cos and sin of half the seating angle α/2
   double fa = 0.0, fb = 0.0;  ///< [m] the flank arc's centre F in the seat's mirrored frame
   bool has_corner = false;    ///< the flank ends at a corner K (the tip circle or the apex)
@@ -792,12 +795,13 @@ SeatContact seat_contact(const Sprocket& w, const SeatGeometry& t, double x, dou
 SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
                             double vy, double speed, double k, double cs, double sn);
 /// A step's ends for the seats' discrete gradient (Sprocket::discrete_gradient): the roller's
-/// centre at the step's start x₀ and end x₁ [m], the seat's direction (cos σ, sin σ) at the
-/// wheel's angles there (σ = ψ + k τ, the θ point's seat k), the wheel's centre there [m] (they
-/// differ on a take-up's sliding wheel), and the step h [s].
+/// centre at the step's start x₀ and end x₁ [m], the wheel's angles ψ₀, ψ₁ [rad] and its centre
+/// there [m] (they differ on a take-up's sliding wheel), and the step h [s]. Each end is measured
+/// in its own nearest seat (nearest_seat at that end: the θ point's seat k while it lies within
+/// k's mid-tooth lines).
 struct SeatStep {
   double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
-  double cs0 = 1.0, sn0 = 0.0, cs1 = 1.0, sn1 = 0.0;
+  double angle0 = 0.0, angle1 = 0.0;
   double cx0 = 0.0, cy0 = 0.0, cx1 = 0.0, cy1 = 0.0;
   double h = 0.0;
   double turn = 0.0;   ///< [rad] the wheel's turn over the step, ψ₁ − ψ₀
@@ -806,7 +810,8 @@ struct SeatStep {
 /// seat_contact_at over the step `step` (nullptr, or a wheel without Sprocket::discrete_gradient:
 /// the θ point's force above, bit for bit). With it the elastic part is the discrete gradient
 /// (E(g₁) − E(g₀))/(g₁ − g₀) of the law's energy between the gaps g₀ at (x₀, ψ₀) and g₁ at
-/// (x₁, ψ₁), both in seat k by the same surfaces (arc, flank, corner, tip), E = 0 for g ≤ 0,
+/// (x₁, ψ₁), each in its own nearest seat by the same surfaces (arc, flank, corner, tip; the gap
+/// is continuous across a mid-tooth line, where the two seats' gaps are equal), E = 0 for g ≤ 0,
 /// E'((g₀ + g₁)/2) where |g₁ − g₀| is below 1e-6 of the larger gap; the damper (C(g₁) − C(g₀))/h
 /// over the step too, C(g) = ∫₀^g c_c min(1, s/ε) ds; the direction n and the torque's arm stay
 /// at the θ point; the work's miss on a curved surface or a turning wheel, f (Δg − the θ point's

@@ -1153,6 +1153,7 @@ SeatGeometry seat_geometry(const Sprocket& w) {
   t.reach = contact_reach(w);
   const double tau = 2.0 * std::numbers::pi / w.teeth;
   t.tau = tau;
+  t.sector_tan = std::tan(0.5 * tau) * (1.0 - 1e-9);
   const double half = 0.5 * w.seating_angle;
   const double ch = std::cos(half), sh_abs = std::sin(half);
   t.ch = ch;
@@ -1386,6 +1387,31 @@ SeatGap seat_gap(const Sprocket& w, const SeatGeometry& t, double x, double y, d
   out.normal = true;
   return out;
 }
+
+// seat_gap in the nearest seat of a wheel turned to `angle`, counted from the θ point's seat k:
+// seat k (σ = angle + k τ, as the θ point's, bit for bit) while (x, y) lies within k's mid-tooth
+// lines (SeatGeometry::sector_tan, no arctangent), else k + m, m = nearest_seat's index less k
+// reduced to within half a turn (an angle past ±π gives the same seat's index a turn apart). Past a
+// mid-tooth line the θ point's seat's surfaces are not the wheel's (a roller in the next seat read
+// in them is millimetres deep in the tooth); on the line the two seats' gaps are equal (the tooth
+// is symmetric about it), so the gap taken in each point's nearest seat is continuous.
+SeatGap seat_gap_nearest(const Sprocket& w, const SeatGeometry& t, double x, double y, double cx,
+                         double cy, double angle, double k) {
+  double sigma = angle + k * t.tau;
+  double cs = std::cos(sigma), sn = std::sin(sigma);
+  const double ex = x - cx, ey = y - cy;
+  if (!(std::abs(ex * sn - ey * cs) <= t.sector_tan * (ex * cs + ey * sn))) {
+    const double z = static_cast<double>(w.teeth);
+    double m = nearest_seat(ex, ey, angle, t.tau) - k;
+    m -= z * std::nearbyint(m / z);
+    if (m != 0.0) {
+      sigma = angle + (k + m) * t.tau;
+      cs = std::cos(sigma);
+      sn = std::sin(sigma);
+    }
+  }
+  return seat_gap(w, t, x, y, cx, cy, cs, sn);
+}
 }  // namespace
 
 SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
@@ -1413,11 +1439,12 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
     apply_seat_law(w, g, rx, ry, vx, vy, speed, c);
     return c;
   }
-  // the discrete gradient over the step: the gaps at its ends in the same seat k
+  // the discrete gradient over the step: the gaps at its ends, each in its own nearest seat (the
+  // θ point's k unless the end is past one of k's mid-tooth lines)
   const SeatGap start =
-      seat_gap(w, t, step->x0, step->y0, step->cx0, step->cy0, step->cs0, step->sn0);
+      seat_gap_nearest(w, t, step->x0, step->y0, step->cx0, step->cy0, step->angle0, k);
   const SeatGap end =
-      seat_gap(w, t, step->x1, step->y1, step->cx1, step->cy1, step->cs1, step->sn1);
+      seat_gap_nearest(w, t, step->x1, step->y1, step->cx1, step->cy1, step->angle1, k);
   // active where either end is in contact: the elastic part and the damper both come from the
   // ends' gaps, so on a convex surface (a tooth's tip) a θ point inside with both ends clear
   // carries no force, and it is not a contact (no depth into max_penetration)

@@ -582,18 +582,14 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
           }
           if (!stepped)
             return seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn);
-          // the same seat k at the step's start and end angles
+          // the step's ends, each measured in its own nearest seat at the wheel's angle there
           SeatStep e = ends;
           e.x0 = s.x[i];
           e.y0 = s.y[i];
           e.x1 = ux_[i];
           e.y1 = uy_[i];
-          const double sigma0 = s.angle[w] + kseat * geometry.tau;
-          const double sigma1 = psi1_[w] + kseat * geometry.tau;
-          e.cs0 = std::cos(sigma0);
-          e.sn0 = std::sin(sigma0);
-          e.cs1 = std::cos(sigma1);
-          e.sn1 = std::sin(sigma1);
+          e.angle0 = s.angle[w];
+          e.angle1 = psi1_[w];
           e.turn = psi1_[w] - s.angle[w];
           e.theta = th;
           return seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn, &e);
