@@ -88,16 +88,49 @@ TEST(DriveCli, RefusalsNameTheFlag) {
   EXPECT_NE(r.err.find("--strands"), std::string::npos) << r.err;
 }
 
-// A centre distance that needs more links than --links allows (100000) is refused as that flag
-// would be: before, 1e12 mm came out as 696057022 links (the count of 1.05e14 cut to an int) and
-// 1e9 mm solved a 10⁸-link wrap for minutes.
-TEST(DriveCli, CentreDistanceBeyondTheLinkCountIsRefused) {
-  for (const char* a : {"1e12mm", "1e9mm", "1e300mm"}) {
+// 08A (p = 12.7 mm), 17/51 teeth: the pitch circles touch at r1 + r2 [mm].
+double touching_08a_17_51() {
+  const double pi = std::acos(-1.0);
+  return 12.7 / (2 * std::sin(pi / 17)) + 12.7 / (2 * std::sin(pi / 51));
+}
+
+// The valid centre distances are a window: the pitch circles apart (more than r1 + r2) and at
+// most the 100000 links --links allows. Beyond it, a centre distance is refused as that flag
+// would be, with the window named: before, 1e12 mm asked X = 1.05e11 links (cut to an int:
+// 1907661562) and 1e9 mm solved a 10⁸-link wrap for minutes; a tiny one, whose Δ²p/a term
+// grows without bound, exited 1 (1e-3 mm: 139482 links beyond the exact solver's range; 1e-9 mm:
+// 1.39e11 beyond round_up_even's; 1e-320 m: an infinite count).
+TEST(DriveCli, CentreDistanceOutsideItsWindowIsRefused) {
+  for (const char* a : {"1e12mm", "1e9mm", "1e300mm", "1e-3mm", "1e-9mm", "1e-320m", "100mm"}) {
     const CliRun r = run(kDrive + "--center-distance " + a + " --service-factor 1");
-    EXPECT_EQ(r.status, 2) << a << ": " << r.out;
+    EXPECT_EQ(r.status, 2) << a << ": " << r.out << r.err;
     EXPECT_NE(r.err.find("--center-distance"), std::string::npos) << a << ": " << r.err;
-    EXPECT_NE(r.err.find("at most 100000 links: at most "), std::string::npos)
-        << a << ": " << r.err;
+    const std::string window = "that needs at most 100000 links: more than r1 + r2 = ";
+    const std::size_t at = r.err.find(window);
+    ASSERT_NE(at, std::string::npos) << a << ": " << r.err;
+    const double touch = std::stod(r.err.substr(at + window.size()));
+    EXPECT_NEAR(touch, touching_08a_17_51(), 1e-5 * touch) << a << ": " << r.err;
+    EXPECT_NE(r.err.find(" mm, at most ", at), std::string::npos) << a << ": " << r.err;
+  }
+  // just apart: the least chain round both sprockets, solved
+  char apart[64];
+  std::snprintf(apart, sizeof apart, "%.9gmm", touching_08a_17_51() * (1 + 1e-6));
+  const CliRun ok = run(kDrive + "--center-distance " + apart + " --service-factor 1");
+  EXPECT_EQ(ok.status, 0) << ok.err;
+}
+
+// The window is checked with the other inputs: every problem reported at once.
+TEST(DriveCli, LayoutProblemsAreReportedWithTheOthers) {
+  for (const char* length :
+       {"--center-distance 1e12mm", "--center-distance 1e-3mm", "--links 20"}) {
+    const CliRun r =
+        run("drive --chain 08A --teeth 17,51 --speed 1000rpm --power=-3kW "
+            "--mass-per-metre 0.6kg/m --service-factor 1 " +
+            std::string(length));
+    EXPECT_EQ(r.status, 2) << length << ": " << r.err;
+    EXPECT_NE(r.err.find("--power"), std::string::npos) << length << ": " << r.err;
+    const std::string flag = std::string(length).substr(0, std::string(length).find(' '));
+    EXPECT_NE(r.err.find(flag + " = "), std::string::npos) << length << ": " << r.err;
   }
 }
 
@@ -119,6 +152,30 @@ TEST(DriveCli, OverflowingTensionsLeaveTheShaftLoadsInfinite) {
   j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["shaft_load"]["driver"].get<double>(), j["tension"]["tight"].get<double>(),
               1e-12 * j["tension"]["tight"].get<double>());
+}
+
+// Finite tensions beyond the layout's ±1e307 N (a slack tension of 2e307 N): the shaft load is
+// still the formula's, |((t + s) cos γ, (t − s) sin γ)| with t and s the spans' pulls less the
+// centrifugal tension and γ = asin((r2 − r1)/a) — recomputed here from the output's tensions and
+// centre distance. (A pull along the line of centres, t + s, missed it by 0.18 %.)
+TEST(DriveCli, HugeFiniteTensionsKeepTheShaftLoadFormula) {
+  const CliRun r =
+      run("drive --chain 12B --teeth 17,34 --links 100 --power 5kW --slack-tension 2e307N "
+          "--speed 2e-303 --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const double pi = std::acos(-1.0), p = 0.01905;
+  const double r1 = p / (2 * std::sin(pi / 17)), r2 = p / (2 * std::sin(pi / 34));
+  ASSERT_EQ(j["units"]["center_distance"], "m");
+  const double a = j["center_distance"].get<double>();
+  const double gamma = std::asin((r2 - r1) / a);
+  const double c = j["tension"]["centrifugal"].get<double>();
+  const double t = j["tension"]["tight"].get<double>() - c,
+               s = j["tension"]["slack"].get<double>() - c;
+  ASSERT_GT(t, 1e307);
+  const double load = std::hypot((t + s) * std::cos(gamma), (t - s) * std::sin(gamma));
+  EXPECT_NEAR(j["shaft_load"]["driver"].get<double>(), load, 1e-12 * load);
+  EXPECT_EQ(j["shaft_load"]["driven"], j["shaft_load"]["driver"]);
 }
 
 TEST(DriveCli, BSeriesIsNotRatedAndSaysSo) {

@@ -502,7 +502,8 @@ std::string example_with(const std::string& key, const std::string& replacement)
 // row's value, 12 k lbf / p from the source's stretch factor k (12A: 38794.33465, written here
 // from jordanrobot/Calculators xml/ansi_chain_specs.xml at b6f5c7e5), reported with its source
 // and an info diagnostic; the same run as one giving that number; a B row or no chain: missing,
-// naming the rows that have one; the inputs' bounds hold for it too.
+// naming the rows that have one; an A row with a pitch of its own, or a pocket wheel: missing;
+// the inputs' bounds hold for it too.
 TEST(DynamicsCli, AxialStiffnessFromTheCatalogueWhereARowHasOne) {
   std::string a12 = example_with("axial_stiffness", "");
   a12.replace(a12.find("chain = \"12B\""), 13, "chain = \"12A\"");
@@ -568,6 +569,32 @@ TEST(DynamicsCli, AxialStiffnessFromTheCatalogueWhereARowHasOne) {
   EXPECT_NE(none.err.find("dynamics.axial_stiffness = (missing)"), std::string::npos) << none.err;
   EXPECT_NE(none.err.find("chain = an ISO 606 designation that has it: " + rows), std::string::npos)
       << none.err;
+
+  // a pitch given with an A row makes another chain: the row's k = EA/p is for 19.05 mm, so
+  // axial_stiffness is required (it was taken as 12A's, 1.087e8 N/m, at 25.4 mm too)
+  std::string pitched = a12;
+  pitched.replace(pitched.find("chain = \"12A\""), 13, "chain = \"12A\"\npitch = \"25.4 mm\"");
+  const CliRun other = run("dynamics " + write("stiff_12A_pitch.toml", pitched));
+  EXPECT_EQ(other.status, 2) << other.out;
+  EXPECT_NE(other.err.find("dynamics.axial_stiffness = (missing)"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("the catalogue's k for 12A is for its own pitch 19.05 mm"),
+            std::string::npos)
+      << other.err;
+  pitched.replace(pitched.find("axial_damping"), 0, "axial_stiffness = \"5e7 N/m\"\n");
+  const CliRun pitched_given =
+      run("dynamics " + write("stiff_12A_pitch_k.toml", pitched) + " --duration 5ms");
+  EXPECT_EQ(pitched_given.status, 0) << pitched_given.err;
+
+  // a pocket wheel's chain has no catalogue row: missing, no rows named
+  std::string pocket = read_text(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_pocketwheel.toml");
+  const std::size_t k_at = pocket.find("axial_stiffness = ");
+  ASSERT_NE(k_at, std::string::npos);
+  pocket.erase(k_at, pocket.find('\n', k_at) + 1 - k_at);
+  const CliRun wheel = run("dynamics " + write("stiff_pocket.toml", pocket));
+  EXPECT_EQ(wheel.status, 2);
+  EXPECT_NE(wheel.err.find("dynamics.axial_stiffness = (missing)"), std::string::npos) << wheel.err;
+  EXPECT_EQ(wheel.err.find("08A"), std::string::npos) << wheel.err;
+  EXPECT_EQ(wheel.err.find("catalogue"), std::string::npos) << wheel.err;
 
   // the inputs' bounds apply to the catalogue's value: k (theta h)^2 / m <= 1e6 breaks at a 30 ms
   // step (m = 1.506 kg/m x 19.05 mm)

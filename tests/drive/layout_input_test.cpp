@@ -121,14 +121,17 @@ TEST(DriveLayoutInput, RefusesABadPitchOrToothCount) {
   EXPECT_EQ(refused, 7 * 9 + 6 * 17);
 }
 
-// The centre distance: links_for takes any 0 < a ≤ 1e100 m; the others need the pitch circles
-// apart (12B, 17/34 teeth: r1 + r2 = 155.1 mm).
+// The centre distance: links_for takes any 1e-9 p ≤ a ≤ 1e100 m (below, Δ²p/a grows to
+// infinity: 1e-320 m gave inf); the others need the pitch circles apart (12B, 17/34 teeth:
+// r1 + r2 = 155.1 mm).
 TEST(DriveLayoutInput, RefusesABadCentreDistance) {
   const double touch = pitch_radius(kP, 17) + pitch_radius(kP, 34);
-  for (double a : {kNan, kInf, -kInf, 0.0, -0.5, 2e100}) {
+  for (double a : {kNan, kInf, -kInf, 0.0, -0.5, 2e100, 1e-320, 1e-12, 0.999e-9 * kP}) {
     expect_one(refusal([&] { (void)links_for(kP, 17, 34, a); }), "links_for", "center_distance",
-               "more than 0 m, at most 1e+100 m", std::to_string(a));
+               "at least 1e-9 pitch = 1.905e-11 m, at most 1e+100 m", std::to_string(a));
   }
+  EXPECT_TRUE(std::isfinite(links_for(kP, 17, 34, 1e-9 * kP)));
+  EXPECT_TRUE(std::isfinite(links_for(kMaxPitch, 3, kMaxTeeth, 1e-9 * kMaxPitch)));
   const std::string apart =
       "more than r1 + r2 = 0.155068 m (the pitch circles apart), at most "
       "1e+100 m";

@@ -10,7 +10,8 @@
 // - teeth, z1, z2: 3 to 1000 (the `drive` analysis's range);
 // - links (a whole count): 2 to 100000 (the `drive` analysis's range; odd counts allowed);
 // - center_distance: finite, at most 1e100 m, and more than r1 + r2 (the pitch circles apart)
-//   where the sprockets are placed (polygon_hull, span_angle, shaft_loads; links_for: any a > 0);
+//   where the sprockets are placed (polygon_hull, span_angle, shaft_loads; links_for: any
+//   1e-9 pitch ≤ a ≤ 1e100 m, its count then finite);
 // - phases finite; tensions finite within ±1e307 N (their sums and differences stay finite).
 // hull_bridge has its own ranges (below).
 // Valid input of a design that cannot be built (too short a chain) is not an argument error:
@@ -33,8 +34,9 @@ inline constexpr double kMaxTension =
 double pitch_radius(double pitch, int teeth);
 
 /// The link count for centre distance a (not rounded):
-/// X = 2a/p + (z1 + z2)/2 + ((z2 − z1)/2π)² p/a. Any 0 < a ≤ 1e100 m (touching or overlapping
-/// pitch circles too: the count of the textbook formula).
+/// X = 2a/p + (z1 + z2)/2 + ((z2 − z1)/2π)² p/a. Any 1e-9 p ≤ a ≤ 1e100 m (touching or
+/// overlapping pitch circles too: the count of the textbook formula), where X is finite (at most
+/// about 2.5e13 below, 2e190 above); it is not a count the drive can use beyond kMaxLinks.
 double links_for(double pitch, int z1, int z2, double center_distance);
 
 /// `links` rounded up to the next even whole number (a count within 1e-9 above a whole one is

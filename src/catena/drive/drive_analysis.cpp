@@ -46,6 +46,29 @@ void positive(const Inputs& in, const char* key, const char* expected, std::vect
     issues.push_back({key, in.text(key), expected});
 }
 
+// The layout's own problems, once chain and teeth are valid: a centre distance with the pitch
+// circles apart (more than r1 + r2) that needs at most kMaxLinks links (its window in mm), or a
+// link count long enough to pass round both sprockets.
+std::vector<Issue> layout_issues(const Inputs& in, double p, int z1, int z2) {
+  const double r1 = pitch_radius(p, z1), r2 = pitch_radius(p, z2);
+  if (in.given("center_distance")) {
+    const double a = in.number("center_distance");
+    const double longest = center_distance_formula(p, z1, z2, kMaxLinks);
+    if (a > r1 + r2 && a <= longest) return {};
+    return {{"center_distance", in.text("center_distance"),
+             "a centre distance with the pitch circles apart that needs at most " +
+                 std::to_string(kMaxLinks) +
+                 " links: more than r1 + r2 = " + format_g((r1 + r2) * 1e3, 6) + " mm, at most " +
+                 format_g(longest * 1e3, 6) + " mm"}};
+  }
+  // the least chain that passes round both pitch polygons without them touching
+  const double least = links_for(p, z1, z2, r1 + r2);
+  if (in.integer("links") >= least) return {};
+  return {{"links", in.text("links"),
+           "a chain long enough to pass round both sprockets: more than " + format_g(least, 6) +
+               " links (pitch circles touching)"}};
+}
+
 const std::vector<std::string> kOrder = {
     "chain",          "teeth",   "center_distance", "links",         "speed", "power",
     "service_factor", "strands", "mass_per_metre",  "slack_tension", "slack"};
@@ -91,6 +114,11 @@ void check_drive(const Inputs& in, std::vector<Issue>& issues) {
   positive(in, "mass_per_metre", "a mass per metre q > 0", added);
   positive(in, "slack_tension", "a horizontal slack-span tension H > 0", added);
   positive(in, "slack", "an extra chain length ΔL > 0 over the taut length", added);
+  const auto teeth = teeth_of(in);
+  const bool length = a ? in.number("center_distance") > 0 : in.integer("links") <= kMaxLinks;
+  if (chain && teeth && a != x && length)
+    for (Issue& i : layout_issues(in, chain->pitch, teeth->first, teeth->second))
+      added.push_back(std::move(i));
   issues = analysis::in_read_order(issues, added, kOrder, [](const std::string&) { return true; });
 }
 
@@ -110,14 +138,10 @@ DriveResult drive_run(const Inputs& in) {
   r.power = in.number("power");
   const int z1 = r.z1, z2 = r.z2;
 
+  if (const std::vector<Issue> bad = layout_issues(in, p, z1, z2); !bad.empty())
+    throw InputError(bad);  // (the check phase reports them with the other inputs' problems)
   if (in.given("center_distance")) {
     const double a = in.number("center_distance");
-    // the longest chain the link count allows (links_for and round_up_even need a count in range)
-    const double longest = center_distance_formula(p, z1, z2, kMaxLinks);
-    if (!(a <= longest))
-      throw InputError({{"center_distance", in.text("center_distance"),
-                         "a centre distance that needs at most " + std::to_string(kMaxLinks) +
-                             " links: at most " + format_g(longest * 1e3, 6) + " mm"}});
     r.given_center_distance = a;
     r.links_exact = links_for(p, z1, z2, a);
     r.links = round_up_even(*r.links_exact);
@@ -137,15 +161,6 @@ DriveResult drive_run(const Inputs& in) {
                                static_cast<double>(r.links), 0.0});
   }
   r.center_distance_formula = center_distance_formula(p, z1, z2, r.links);
-  const double r1 = pitch_radius(p, z1), r2 = pitch_radius(p, z2);
-  // the least chain that passes round both pitch polygons without them touching
-  const double least = links_for(p, z1, z2, r1 + r2);
-  if (!std::isfinite(r.center_distance_formula) || r.links < least) {
-    throw InputError({{in.given("links") ? "links" : "center_distance",
-                       in.given("links") ? in.text("links") : in.text("center_distance"),
-                       "a chain long enough to pass round both sprockets: more than " +
-                           format_g(least, 6) + " links (pitch circles touching)"}});
-  }
   try {
     r.exact = exact_center_distance(p, z1, z2, r.links);
   } catch (const std::domain_error& e) {
@@ -177,10 +192,20 @@ DriveResult drive_run(const Inputs& in) {
   r.slack_tension = r.centrifugal_tension + h;
   r.tight_tension = r.effective_tension + r.slack_tension;
   const auto valid = [](double tension) { return std::abs(tension) <= kMaxTension; };
+  const auto finite = [](double tension) { return std::isfinite(tension); };
   if (valid(r.tight_tension) && valid(r.slack_tension) && valid(r.centrifugal_tension)) {
     r.shaft = shaft_loads(p, z1, z2, a, r.tight_tension, r.slack_tension, r.centrifugal_tension);
-  } else {  // tensions that overflow (an extreme power or speed): so do the loads along the
-            // line of centres, the sum of the spans' pulls (the result check reports them)
+  } else if (finite(r.tight_tension) && finite(r.slack_tension) && finite(r.centrifugal_tension)) {
+    // finite tensions beyond shaft_loads' ±1e307 N (an extreme power, speed or slack tension):
+    // the same formula on the tensions × 2⁻⁵ (≤ 5.6e306 N), the loads × 2⁵. Powers of two scale
+    // exactly, so the bits are those of the formula on the tensions themselves where that stays
+    // finite; a load beyond the largest double is +inf (the result check reports it)
+    constexpr double kDown = 0x1p-5, kUp = 0x1p5;
+    const ShaftLoads l = shaft_loads(p, z1, z2, a, r.tight_tension * kDown, r.slack_tension * kDown,
+                                     r.centrifugal_tension * kDown);
+    r.shaft = {l.driver_x * kUp, l.driver_y * kUp, l.driven_x * kUp, l.driven_y * kUp};
+  } else {  // an infinite tension (the effective pull P/v or q v² overflowed): so do the loads,
+            // the spans' pulls along the line of centres (+inf, or NaN for inf − inf)
     const double pull =
         (r.tight_tension - r.centrifugal_tension) + (r.slack_tension - r.centrifugal_tension);
     r.shaft = {pull, 0.0, -pull, 0.0};

@@ -266,12 +266,18 @@ double pitch_radius(double pitch, int teeth) {
   return radius_of(pitch, teeth);
 }
 
+// links_for's least centre distance, in pitches (Δ²p/a then stays finite, at most 2.5e13)
+constexpr double kLeastDistance = 1e-9;
+
 double links_for(double pitch, int z1, int z2, double a) {
   std::vector<Issue> issues;
-  check_sprockets(issues, pitch, z1, z2);
-  if (!(a > 0 && a <= kMaxCenterDistance))
+  const bool sprockets = check_sprockets(issues, pitch, z1, z2);
+  if (!(a <= kMaxCenterDistance && (sprockets ? a >= kLeastDistance * pitch : a > 0)))
     issues.push_back(
-        {"center_distance", check::format_si(a, "m"), "more than 0 m, at most 1e+100 m"});
+        {"center_distance", check::format_si(a, "m"),
+         "at least 1e-9 pitch" +
+             (sprockets ? " = " + check::format_si(kLeastDistance * pitch, "m") : std::string()) +
+             ", at most 1e+100 m"});
   refuse("links_for", issues);
   const double delta = (z2 - z1) / (2 * kPi);
   return 2 * a / pitch + (z1 + z2) / 2.0 + delta * delta * pitch / a;

@@ -60,6 +60,15 @@ constexpr double kMaxSamples = 200'000;  // samples of the series
 constexpr double kMaxPositions = 500'000;
 constexpr analysis::Work kWork{.cap = 50'000'000, .seconds = 0.5e-6, .bytes = 0.0};
 
+// Where a catalogue axial stiffness comes from (data/catalog/iso606/README.md, CALCULATORS_K),
+// and what it is worth: the help, the diagnostic and the JSON say it in these words.
+constexpr const char* kCatalogueStiffnessSource =
+    "ISO 606 catalogue (data/catalog/iso606/README.md, CALCULATORS_K): EA = 12 k lbf from a "
+    "third party's stretch factor k, \"interpolated from a data from Tsubaki\" (which chart is "
+    "not stated); k_link = EA/p";
+constexpr const char* kCatalogueStiffnessQuality =
+    "a secondary source: an order of magnitude, not a design value";
+
 std::vector<Parameter> table_fields() {
   using analysis::number;
   using analysis::quantity;
@@ -67,7 +76,7 @@ std::vector<Parameter> table_fields() {
   return {
       text("chain",
            "ISO 606 designation (\"12B\"): pitch, roller, width and mass from the "
-           "catalogue"),
+           "catalogue, and for 08A … 32A the axial stiffness"),
       quantity("pitch", K::kLength, "pitch p (overrides the catalogue's)"),
       quantity("mass_per_metre", K::kMassPerLength, "chain mass per metre q"),
       quantity("roller_diameter", K::kLength, "roller diameter d1"),
@@ -75,7 +84,10 @@ std::vector<Parameter> table_fields() {
       number("links",
              "links in the closed loop, an integer z + 2m with m >= 2, at most 10000; with "
              "centres: optional, a count the belt path fits (default: the nearest that fits)"),
-      quantity("axial_stiffness", K::kForcePerLength, "axial stiffness k of one link [N/m]"),
+      quantity("axial_stiffness", K::kForcePerLength,
+               std::string("axial stiffness k of one link [N/m] (default with chain = 08A … 32A "
+                           "and no pitch given: the catalogue's, ") +
+                   kCatalogueStiffnessQuality + "; required otherwise)"),
       number("axial_damping", "axial damping c of one link [N s/m], >= 0 (default 0)"),
       quantity("pretension", K::kForce, "the loop's tension at rest, >= 0 (default 0)"),
       quantity("contact_stiffness", K::kForcePerLength,
@@ -282,8 +294,9 @@ const Parameter& table_parameter() {
         "file works); in a case file, its own [dynamics] table";
     t.required = true;
     t.expected =
-        "a [dynamics] table (chain, links, axial_stiffness, contact_stiffness, duration, step) and "
-        "two or more [[dynamics.sprocket]] tables (docs/models/dynamics.md)";
+        "a [dynamics] table (chain, links, axial_stiffness unless chain is 08A … 32A, "
+        "contact_stiffness, duration, step) and two or more [[dynamics.sprocket]] tables "
+        "(docs/models/dynamics.md)";
     t.fields = table_fields();
     t.rows_name = "sprocket";
     t.row_fields = sprocket_fields();
@@ -1556,15 +1569,21 @@ Setup parse(const analysis::Inputs& in) {
   const double links = layout ? optional("links", NAN)
                               : required("links", "the number of links in the loop, an integer");
   // axial_stiffness omitted: the catalogue row's where it has one (the A series, a secondary
-  // source: data/catalog/iso606/README.md, CALCULATORS_K); missing otherwise, naming the rows
-  // that have one
+  // source: data/catalog/iso606/README.md, CALCULATORS_K) and the row's pitch is the chain's;
+  // missing otherwise, naming the rows that have one (a pitch given makes another chain: the
+  // row's k = EA/p is for its own pitch)
+  const bool pitch_given = value.count("pitch") || line.count("pitch");
   if (!value.count("axial_stiffness") && !line.count("axial_stiffness") && row_found &&
-      row_found->axial_stiffness) {
+      row_found->axial_stiffness && !pitch_given) {
     s.stiffness = *row_found->axial_stiffness;
     s.catalogue_stiffness = true;
   } else {
     std::string what = "the axial stiffness k of one link, e.g. \"5e7 N/m\"";
-    if (!s.pocket) {
+    if (!s.pocket && row_found && row_found->axial_stiffness) {  // with pitch given
+      what += " (the catalogue's k for " + row_found->name + " is for its own pitch " +
+              format_g(row_found->pitch * 1e3) +
+              " mm; a pitch given makes another chain, whose k the catalogue does not know)";
+    } else if (!s.pocket) {
       std::string rows;
       for (const std::string& name : contact::iso606_names())
         if (contact::iso606_chain(name)->axial_stiffness) rows += (rows.empty() ? "" : ", ") + name;
@@ -2971,12 +2990,6 @@ PeriodSpread period_spread(const std::vector<double>& time, const std::vector<do
 // as not settled: the 1 % (docs/models/dynamics.md, "Pocket wheel: the example's means").
 constexpr double kSettledMeans = 0.01;
 
-// Where a catalogue axial stiffness comes from (data/catalog/iso606/README.md, CALCULATORS_K).
-constexpr const char* kCatalogueStiffnessSource =
-    "ISO 606 catalogue (data/catalog/iso606/README.md, CALCULATORS_K): EA = 12 k lbf from a "
-    "third party's stretch factor k, interpolated from an unnamed Tsubaki elastic-elongation "
-    "chart; k_link = EA/p";
-
 Record describe(const Result& r, const analysis::Inputs&) {
   const Setup& d = r.setup;
   Record rec;
@@ -2985,11 +2998,9 @@ Record describe(const Result& r, const analysis::Inputs&) {
     rec.diagnostics.push_back(
         {Diagnostic::Severity::kInfo, "dynamics.axial_stiffness_from_catalogue",
          "axial_stiffness omitted: k = " + format_g(d.stiffness, 4) + " N/m per link, " + d.chain +
-             "'s from the catalogue (a secondary source: a third party's linear interpolation "
-             "of an unnamed Tsubaki elastic-elongation chart, single strand, no load range, no "
-             "second source to check it against; data/catalog/iso606/README.md, "
-             "CALCULATORS_K): an order of magnitude, not a design value; give axial_stiffness "
-             "for a measured one",
+             "'s from the " + kCatalogueStiffnessSource + " (" + kCatalogueStiffnessQuality +
+             "; single strand, no load range, no second source to check it against); give "
+             "axial_stiffness for a measured one",
          d.stiffness, 0.0, "N/m"});
   const double simulated = r.steps * d.step;
   const double rtf = r.wall_time > 0.0 ? simulated / r.wall_time : 0.0;
