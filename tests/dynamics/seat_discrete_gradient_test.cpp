@@ -280,36 +280,54 @@ TEST(DynamicsSeatDiscreteGradient, ForceIsContinuousWhereTheContactSwitches) {
 // starts touching the corner K of seat 1's tooth from outside (g₀ = 3 µm, 45° between the outward
 // radial and the tangent) and ends at the mirror point across the tooth's centre line, touching
 // seat 0's corner, turned a little further (2e-5 rad) so that the θ point, on the chord over the
-// tip, is seat 0's. Read in seat 0 (the rule until 2026-11-27) the start is on the tip circle
-// continued past K, 1.58 mm deep: the force (E(g₁) − E(g₀))/(g₁ − g₀) was 1.6e5 N and the
-// work −ΔE of an energy the contact does not have. With each end in its own seat the work is −ΔE
-// of the contact's energy (seat_contact's, the nearest seat) at the ends. The gap is continuous
-// across the line: there both seats' gaps are equal (the tooth is symmetric about it), checked on
-// the line from the tip circle into the tooth for z = 12 and 17, with the ISO flank and straight.
+// tip, is seat 0's; the same turned by π − τ/2, so that the tooth's centre line lies on the
+// arctangent's cut at ±π and the start's nearest_seat index is 1 − z (seat 1 a turn back). Read
+// in seat 0 (the rule until 2026-11-27) the start is on the tip circle continued past K, 1.58 mm
+// deep: the elastic force (E(g₁) − E(g₀))/(g₁ − g₀) between the penalty's energies was 1.58e5 N
+// (printed below; the roller's whole force, with the correction along the step, 1.59e5 N, the
+// old rule put back) and the work −ΔE of an energy the contact does not have. With each end in its
+// own seat the work is −ΔE of the contact's energy (seat_contact's, the nearest seat) at the
+// ends. The gap is continuous across the line: there both seats' gaps are equal (the tooth is
+// symmetric about it), checked on the line from 0.2 R to 2 R for z = 6 … 25 (z ≤ 10 with the
+// tip lowered by iso606_sprocket), with the ISO flank arc and the straight flank, each with its
+// tip circle and without one (each form set before seat_geometry is taken). An end just inside
+// seat k's mid-tooth line (within the sector test's 1e-9 margin) whose nearest_seat index is
+// k − z, past the cut, is read with seat k's direction bit for bit (the half-turn reduction).
 TEST(DynamicsSeatDiscreteGradient, StepAcrossAMidToothLineTakesEachEndInItsOwnSeat) {
-  for (const int z : {12, 17}) {
+  int lines = 0, touching = 0;
+  double worst_line = 0.0;
+  for (const int z : {6, 8, 9, 10, 12, 17, 25}) {
     for (const bool straight : {false, true}) {
-      Sprocket w = iso606_sprocket(kPitch, kRoller, kWidth, z, 0.0, 0.0, kStiffness, 0.0);
-      if (straight) w.flank_radius = 0.0;
-      const SeatGeometry t = seat_geometry(w);
-      const double line = 0.5 * t.tau;  // between seats 0 and 1 at ψ = 0
-      for (const double depth : {-1e-6, 1e-6, 1e-5, 1e-4, 1e-3, 3e-3}) {
-        const double rho = w.tip_radius + w.roller_radius - depth;
-        const double x = rho * std::cos(line), y = rho * std::sin(line);
-        double gap[2] = {0.0, 0.0};
-        for (int k = 0; k < 2; ++k) {
-          const SeatContact c = seat_contact_at(w, t, x, y, 0.0, 0.0, 0.0, k, std::cos(k * t.tau),
-                                                std::sin(k * t.tau));
-          gap[k] = c.active ? c.penetration : 0.0;
-        }
-        EXPECT_NEAR(gap[0], gap[1], 1e-15)
-            << "z " << z << " straight " << straight << " depth " << depth;
-        if (depth > 0.0) {
-          EXPECT_GT(gap[0], 0.0);
+      for (const bool tip : {true, false}) {
+        Sprocket w = iso606_sprocket(kPitch, kRoller, kWidth, z, 0.0, 0.0, kStiffness, 0.0);
+        if (straight) w.flank_radius = 0.0;
+        if (!tip) w.tip_radius = 0.0;
+        const SeatGeometry t = seat_geometry(w);
+        EXPECT_EQ(t.has_corner, tip) << "z " << z;  // the form taken
+        const double line = 0.5 * t.tau;            // between seats 0 and 1 at ψ = 0
+        for (int i = 0; i <= 360; ++i) {
+          const double rho = (0.2 + 0.005 * i) * w.pitch_radius;
+          const double x = rho * std::cos(line), y = rho * std::sin(line);
+          double gap[2] = {0.0, 0.0};
+          for (int k = 0; k < 2; ++k) {
+            const SeatContact c = seat_contact_at(w, t, x, y, 0.0, 0.0, 0.0, k, std::cos(k * t.tau),
+                                                  std::sin(k * t.tau));
+            gap[k] = c.active ? c.penetration : 0.0;
+          }
+          EXPECT_NEAR(gap[0], gap[1], 1e-15)
+              << "z " << z << " straight " << straight << " tip " << tip << " rho " << rho;
+          worst_line = std::max(worst_line, std::abs(gap[0] - gap[1]));
+          ++lines;
+          if (gap[0] > 0.0) ++touching;
         }
       }
     }
   }
+  std::printf(
+      "seat discrete gradient: the two seats' gaps on the mid-tooth line, %d points (%d in "
+      "contact): largest difference %.2e m\n",
+      lines, touching, worst_line);
+  EXPECT_GT(touching, lines / 2);
   Sprocket w12 = iso606_sprocket(kPitch, kRoller, kWidth, 12, 0.0, 0.0, kStiffness, 0.0);
   w12.discrete_gradient = true;
   const SeatGeometry t = seat_geometry(w12);
@@ -318,47 +336,80 @@ TEST(DynamicsSeatDiscreteGradient, StepAcrossAMidToothLineTakesEachEndInItsOwnSe
   // K in seat 1's frame: its polar angle from seat 1's radial towards seat 0, and its radius
   const double phi_k = std::atan2(t.kb, w12.pitch_radius - t.ka);
   const double rho_k = std::hypot(w12.pitch_radius - t.ka, t.kb);
-  double worst = 0.0, old_depth = 0.0, old_force = 0.0, old_error = 0.0;
-  for (const double turn : {0.0, 3e-3}) {
-    // at ψ₀ = 0: the start touching seat 1's corner from outside, the end its mirror about the
-    // tooth's centre line τ/2 turned on by 2e-5 rad, then carried with the wheel by `turn`
-    const double ak = tau - phi_k;
-    const double ux = std::cos(ak) - std::sin(ak), uy = std::sin(ak) + std::cos(ak);
-    const Point p0{rho_k * std::cos(ak) + (r - g0) * ux / std::sqrt(2.0),
-                   rho_k * std::sin(ak) + (r - g0) * uy / std::sqrt(2.0)};
-    const double polar0 = std::atan2(p0.y, p0.x), rho0 = std::hypot(p0.x, p0.y);
-    const double polar1 = tau - polar0 - 2e-5 + turn;
-    const Point p1{rho0 * std::cos(polar1), rho0 * std::sin(polar1)};
-    const SeatContact start = seat_contact(w12, p0.x, p0.y, 0.0, 0.0, 0.0, 0.0);
-    const SeatContact end = seat_contact(w12, p1.x, p1.y, 0.0, 0.0, turn, 0.0);
-    ASSERT_TRUE(start.active && end.active);
-    EXPECT_EQ(start.seat, 1);
-    EXPECT_EQ(end.seat, 0);
-    EXPECT_NEAR(start.penetration, g0, 1e-9);  // the corner's gap, as built
-    const SeatContact c = step_contact(w12, p0, p1, 0.0, turn, true);
-    ASSERT_TRUE(c.active);
-    EXPECT_EQ(c.seat, 0) << "the theta point's seat";
-    const double change = end.energy - start.energy;
-    const double work = step_work(w12, p0, p1, 0.0, turn, true);
-    const double scale = std::max(start.energy, end.energy);
-    worst = std::max(worst, std::abs(work + change) / scale);
-    EXPECT_LE(std::abs(work + change), 1e-9 * scale) << "turn " << turn;
-    // the force stays of the ends' size (k_c g, 600 N at 3 µm)
-    EXPECT_LT(std::hypot(roller_force(c).x, roller_force(c).y), 10.0 * kStiffness * g0);
-    // the start read in seat 0 (the θ point's), as the rule until 2026-11-27 took it
-    const SeatContact misread = seat_contact_at(w12, t, p0.x, p0.y, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0);
-    ASSERT_TRUE(misread.active);
-    EXPECT_GT(misread.penetration, 1e-3);
-    old_depth = std::max(old_depth, misread.penetration);
-    const double old_change = penalty_energy(end.penetration) - penalty_energy(misread.penetration);
-    old_force = std::max(old_force, std::abs(old_change / (end.penetration - misread.penetration)));
-    old_error = std::max(old_error, std::abs(old_change - change) / scale);
+  double worst[2] = {0.0, 0.0}, old_depth = 0.0, old_force = 0.0, old_error = 0.0;
+  const double cut = kPi - 0.5 * tau;  // the tooth's centre line on the cut at ±π
+  for (const double at : {0.0, cut}) {
+    for (const double turn : {0.0, 3e-3}) {
+      // at ψ₀ = 0: the start touching seat 1's corner from outside, the end its mirror about the
+      // tooth's centre line τ/2 turned on by 2e-5 rad, then carried with the wheel by `turn`; all
+      // turned by `at` (the wheel at ψ₀ = at)
+      const double ak = tau - phi_k;
+      const double ux = std::cos(ak) - std::sin(ak), uy = std::sin(ak) + std::cos(ak);
+      const Point q0{rho_k * std::cos(ak) + (r - g0) * ux / std::sqrt(2.0),
+                     rho_k * std::sin(ak) + (r - g0) * uy / std::sqrt(2.0)};
+      const double polar0 = std::atan2(q0.y, q0.x), rho0 = std::hypot(q0.x, q0.y);
+      const double polar1 = tau - polar0 - 2e-5 + turn;
+      const Point p0{rho0 * std::cos(polar0 + at), rho0 * std::sin(polar0 + at)};
+      const Point p1{rho0 * std::cos(polar1 + at), rho0 * std::sin(polar1 + at)};
+      const SeatContact start = seat_contact(w12, p0.x, p0.y, 0.0, 0.0, at, 0.0);
+      const SeatContact end = seat_contact(w12, p1.x, p1.y, 0.0, 0.0, at + turn, 0.0);
+      ASSERT_TRUE(start.active && end.active);
+      EXPECT_EQ(start.seat, at == 0.0 ? 1 : 1 - 12) << "past the cut: seat 1 a turn back";
+      EXPECT_EQ(end.seat, 0);
+      EXPECT_NEAR(start.penetration, g0, 1e-9);  // the corner's gap, as built
+      const SeatContact c = step_contact(w12, p0, p1, at, at + turn, true);
+      ASSERT_TRUE(c.active);
+      EXPECT_EQ((c.seat + 12) % 12, 0) << "the theta point's seat (−12 past the cut)";
+      const double change = end.energy - start.energy;
+      const double work = step_work(w12, p0, p1, at, at + turn, true);
+      const double scale = std::max(start.energy, end.energy);
+      worst[at != 0.0] = std::max(worst[at != 0.0], std::abs(work + change) / scale);
+      EXPECT_LE(std::abs(work + change), 1e-9 * scale) << "at " << at << " turn " << turn;
+      // the force stays of the ends' size (k_c g, 600 N at 3 µm)
+      EXPECT_LT(std::hypot(roller_force(c).x, roller_force(c).y), 10.0 * kStiffness * g0);
+      // the start read in seat 0 (the θ point's), as the rule until 2026-11-27 took it
+      const SeatContact misread =
+          seat_contact_at(w12, t, p0.x, p0.y, 0.0, 0.0, 0.0, 0.0, std::cos(at), std::sin(at));
+      ASSERT_TRUE(misread.active);
+      EXPECT_GT(misread.penetration, 1e-3);
+      old_depth = std::max(old_depth, misread.penetration);
+      const double old_change =
+          penalty_energy(end.penetration) - penalty_energy(misread.penetration);
+      old_force =
+          std::max(old_force, std::abs(old_change / (end.penetration - misread.penetration)));
+      old_error = std::max(old_error, std::abs(old_change - change) / scale);
+    }
   }
   std::printf(
-      "seat discrete gradient across a mid-tooth line (z = 12): |work + dE| / E worst %.2e; the "
-      "start read in the theta point's seat: %.3g mm deep, the force %.3g N, the energy's change "
-      "off by %.3g times E\n",
-      worst, 1e3 * old_depth, old_force, old_error);
+      "seat discrete gradient across a mid-tooth line (z = 12): |work + dE| / E worst %.2e "
+      "(turned onto the cut: %.2e); the "
+      "start read in the theta point's seat: %.3g mm deep, the elastic force %.4g N, the energy's "
+      "change off by %.3g times E\n",
+      worst[0], worst[1], 1e3 * old_depth, old_force, old_error);
+  // The half-turn reduction: seat 6 of the held z = 12 wheel at ψ = −0.2 (its radial at π − 0.2,
+  // short of the cut; its mid-tooth line towards seat 7 at π + 0.06, past it), a roller seated
+  // 3 µm deep moving onto the tooth towards seat 7 and ending on the tip (2 µm in) just inside
+  // seat 6's mid-tooth line: within the sector test's margin (1e-9 of tan(τ/2): 2.5e-10 rad), so
+  // the test sends it to nearest_seat, which gives −6 past the cut. k + m is seat 6 whether m is
+  // reduced or not; reduced (m = 0) the end is read with seat 6's own (cos σ, sin σ), bit for bit,
+  // not those of σ − 2π.
+  const double psi = -0.2, k6 = 6.0, sigma6 = psi + k6 * tau;
+  const Point seated = in_seat(w12, sigma6, 3e-6, 0.0);
+  const double rho_tip = w12.tip_radius + r - 2e-6, polar_end = sigma6 + 0.5 * tau - 1e-11;
+  const Point on_tip{rho_tip * std::cos(polar_end), rho_tip * std::sin(polar_end)};
+  ASSERT_EQ(nearest_seat(on_tip.x, on_tip.y, psi, tau), k6 - 12.0);
+  const SeatContact sliver = step_contact(w12, seated, on_tip, psi, psi, true);
+  ASSERT_TRUE(sliver.active);
+  ASSERT_EQ(sliver.seat, 6) << "the theta point's seat";
+  const SeatContact own = seat_contact_at(w12, t, on_tip.x, on_tip.y, 0.0, 0.0, 0.0, k6,
+                                          std::cos(sigma6), std::sin(sigma6));
+  ASSERT_TRUE(own.active);
+  EXPECT_NEAR(own.penetration, 2e-6, 1e-9);
+  EXPECT_EQ(sliver.step_nx, own.nx);
+  EXPECT_EQ(sliver.step_ny, own.ny);
+  const double sliver_change = energy_at(w12, on_tip, psi) - energy_at(w12, seated, psi);
+  const double sliver_work = step_work(w12, seated, on_tip, psi, psi, true);
+  EXPECT_LE(std::abs(sliver_work + sliver_change), 1e-9 * std::abs(sliver_change));
 }
 
 // (1b) The damper over the step: f_d = (C(g₁) − C(g₀))/h with C(g) = ∫₀^g c(s) ds, c(s) = c_c

@@ -416,6 +416,66 @@ TEST(DynamicsTensionOnlyLinks, DamperOverTheStepIsTheRampsIntegralAndNeverDoesWo
   EXPECT_GT(checked, 10000);
 }
 
+// The spring over a step shorter than the threshold |s₁ − s₀| ≤ 1e-6 max(ε, |s₀|, |s₁|)
+// (link_step_force's fallback, undamped): T_e at the mean stretch, against the quotient of E
+// written out piece by piece (0 slack, k u³/6ε in the ramp, ½ k s² + k ε²/24 beyond: each piece's
+// mean force k (u_a² + u_a u_b + u_b²)/6ε, k (s_a + s_b)/2, weighted by its length, no
+// cancellation) within k Δs²/24ε plus rounding, and its slope ½ ∂T_e/∂s at the mean against
+// central differences. In the ramp's middle (s₀ = −s₁ = 1e-13 ε, T = k ε/8) the threshold's scale
+// is ε (`floor`), not |s| ≈ 1e-13 ε: the quotient there would be E's rounding over Δs; then across
+// the ramp's upper end (s = ε/2, where E''' jumps), near its lower end, and far beyond it.
+TEST(DynamicsTensionOnlyLinks, ShortStepsTakeTheMeanStretchsForceWithTheScaleOfTheRamp) {
+  const Model m = tension_only(2, 0.0);
+  const double eps = m.link_smoothing, k = kStiffness, h = 1e-5;
+  auto quotient = [&](double s0, double s1) {  // (E(s₁) − E(s₀))/(s₁ − s₀), s₀ < s₁
+    double sum = 0.0;
+    std::vector<double> knots{s0, s1};
+    for (const double kink : {-0.5 * eps, 0.5 * eps})
+      if (kink > s0 && kink < s1) knots.push_back(kink);
+    std::sort(knots.begin(), knots.end());
+    for (std::size_t i = 0; i + 1 < knots.size(); ++i) {
+      const double a = knots[i], b = knots[i + 1], ua = a + 0.5 * eps, ub = b + 0.5 * eps;
+      const double mid = 0.5 * (ua + ub);
+      double mean = 0.0;
+      if (mid >= eps) {
+        mean = 0.5 * k * (a + b);
+      } else if (mid > 0.0) {
+        mean = k * (ua * ua + ua * ub + ub * ub) / (6.0 * eps);
+      }
+      sum += (b - a) * mean;
+    }
+    return sum / (s1 - s0);
+  };
+  struct Case {
+    const char* name;
+    double s0, s1, ds;  // [ε] the step's ends and the central difference's half-width
+  };
+  const Case cases[] = {{"ramp's middle", -1e-13, 1e-13, 1e-8},
+                        {"upper end", 0.5 - 2e-8, 0.5 + 3e-8, 1e-9},
+                        {"lower end", -0.5 - 1e-8, -0.5 + 5e-7, 1e-8},
+                        {"far beyond", 40.0, 40.0 + 2e-5, 1e-7}};
+  for (const Case& c : cases) {
+    const double s0 = c.s0 * eps, s1 = c.s1 * eps, ds = c.ds * eps;
+    ASSERT_LE(std::abs(s1 - s0), 1e-6 * std::max({eps, std::abs(s0), std::abs(s1)}));
+    const LinkStep f = link_step_force(m, s0, s1, h);
+    const double q = quotient(s0, s1), mean = 0.5 * (s0 + s1);
+    const double bound = k * (s1 - s0) * (s1 - s0) / (24.0 * eps) + 1e-15 * std::abs(q);
+    ASSERT_GT(f.tension, 0.0) << c.name;
+    EXPECT_EQ(f.tension, f.elastic) << c.name;
+    EXPECT_NEAR(f.tension, q, bound) << c.name;
+    // ½ ∂T_e/∂s at the mean: ½ k u/ε in the ramp, ½ k beyond
+    const double u = mean + 0.5 * eps;
+    EXPECT_NEAR(f.slope, 0.5 * k * std::min(u / eps, 1.0), 1e-9 * k) << c.name;
+    const LinkStep p = link_step_force(m, s0, s1 + ds, h), n = link_step_force(m, s0, s1 - ds, h);
+    const double difference = (p.tension - n.tension) / (2.0 * ds);
+    EXPECT_NEAR(f.slope, difference, 1e-6 * k) << c.name;
+    std::printf(
+        "%-14s T %.15g N, quotient %.15g N (bound %.1e N); slope %.6e N/m, differences %.6e "
+        "N/m\n",
+        c.name, f.tension, q, bound, f.slope, difference);
+  }
+}
+
 // The integrator's Newton matrix with Model::links_discrete_gradient at θ = ½ against central
 // differences of its residual: at the iterate the links go slack → slack, ramp → ramp,
 // slack → ramp, taut → taut and taut → ramp shortening so fast that the damper over the step

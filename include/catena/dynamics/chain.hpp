@@ -775,7 +775,8 @@ struct SeatGeometry {
   double reach = 0.0;  ///< [m] contact_reach(w)
   double tau = 0.0;    ///< [rad] the seat spacing 2π/z
   /// tan(τ/2) (1 − 1e-9): a point q with |(q − c) × u| ≤ it (q − c)·u, u the seat's direction, lies
-  /// within the seat's mid-tooth lines (0: no point is taken to)
+  /// within the seat's mid-tooth lines (with 0, a default SeatGeometry's, only a point on the
+  /// line through c along u, where the cross product is 0, passes)
   double sector_tan = 0.0;
   double ch = 0.0, sh = 0.0;  ///< cos and sin of half the seating angle α/2
   double fa = 0.0, fb = 0.0;  ///< [m] the flank arc's centre F in the seat's mirrored frame
@@ -817,10 +818,11 @@ struct SeatStep {
 /// at the θ point; the work's miss on a curved surface or a turning wheel, f (Δg − the θ point's
 /// linear change), is put back along the step (Gonzalez's discrete gradient: the force −f ∇̄g with
 /// ∇̄g = ∇g_θ + (Δg − ∇g_θ·Δz) Δz/|Δz|², z = (x − c, R ψ); the skew fields). Active while the
-/// largest of g₀, g₁ and g_θ is positive (`penetration` and `depth` are then
-/// the θ point's gap, ≤ 0 possibly); `stiffness` and `damping` are 0 (nothing at the θ point):
-/// gap_slope (∂f/∂g₁) and the step_ fields carry ∂f/∂x₁ and ∂f/∂ψ₁, and friction_dv holds
-/// −h (∂f/∂g₁) n n₁ᵀ so that seat_friction's derivatives see the force's dependence on x₁.
+/// larger of g₀ and g₁ is positive, the θ point's normal being defined (`penetration` and `depth`
+/// are then the θ point's gap, ≤ 0 possibly; a θ point inside with both ends clear is no contact);
+/// `stiffness` and `damping` are 0 (nothing at the θ point): gap_slope (∂f/∂g₁) and the step_
+/// fields carry ∂f/∂x₁ and ∂f/∂ψ₁, and friction_dv holds −h (∂f/∂g₁) n n₁ᵀ so that seat_friction's
+/// derivatives see the force's dependence on x₁.
 SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
                             double vy, double speed, double k, double cs, double sn,
                             const SeatStep* step);

@@ -1391,7 +1391,10 @@ SeatGap seat_gap(const Sprocket& w, const SeatGeometry& t, double x, double y, d
 // seat_gap in the nearest seat of a wheel turned to `angle`, counted from the θ point's seat k:
 // seat k (σ = angle + k τ, as the θ point's, bit for bit) while (x, y) lies within k's mid-tooth
 // lines (SeatGeometry::sector_tan, no arctangent), else k + m, m = nearest_seat's index less k
-// reduced to within half a turn (an angle past ±π gives the same seat's index a turn apart). Past a
+// reduced to within half a turn (an angle past ±π gives the same seat's index a turn apart). The
+// reduction is not needed for the seat (k + m and k + m ± z are the same one); it keeps seat k's
+// own (cos σ, sin σ), bit for bit, for a point within the sector test's 1e-9 margin inside k's
+// line whose index comes back as k ± z (m = 0, not σ ± 2π with its rounding). Past a
 // mid-tooth line the θ point's seat's surfaces are not the wheel's (a roller in the next seat read
 // in them is millimetres deep in the tooth); on the line the two seats' gaps are equal (the tooth
 // is symmetric about it), so the gap taken in each point's nearest seat is continuous.
