@@ -291,6 +291,8 @@ TEST(DynamicsPocketDiscreteGradient, StartsMemoGivesTheSameContact) {
   const Point d0 = near_vertex(w, psi, 4, 12.0 * c, 20e-6);           // pocket 4's blend
   const Point a1 = near_vertex(w, psi + turn, 3, 0.1 * c, 1.5 * c + 60e-6);
   const Point d1 = near_vertex(w, psi + turn, 4, 12.4 * c, 30e-6);
+  // from a0 to pocket 5's vertex: the θ point (the chord's middle) nearest pocket 4
+  const Point e1 = near_vertex(w, psi + turn, 5, 0.0, 1.5 * c + 20e-6);
   // beyond the mouth (2c off vertex 3, 10 → 30 µm above it): in the pocket's law held, free not
   const Point r0 = near_vertex(w, psi, 3, 2.0 * c, -10e-6);
   const Point r1 = near_vertex(w, psi + turn, 3, 2.0 * c, -30e-6);
@@ -312,6 +314,8 @@ TEST(DynamicsPocketDiscreteGradient, StartsMemoGivesTheSameContact) {
                         {&w, a0, a1, 3, 5e-4},
                         {&w, a0, a1, 3},
                         {&w, a0, a1, 3, 0.0, 2e-5},
+                        {&w, a0, a1, 3},
+                        {&w, a0, e1, 4},
                         {&release, r0, r1, 3, 0.0, 0.0, kNoPocket, false},
                         {&release, r0, r1, 3, 0.0, 0.0, 3}};
   PocketStart memo;
@@ -346,7 +350,7 @@ TEST(DynamicsPocketDiscreteGradient, StartsMemoGivesTheSameContact) {
     EXPECT_EQ(without.skew != 0.0, call.corrected) << call.k;
     corrected += without.skew != 0.0;
   }
-  EXPECT_EQ(corrected, 11);
+  EXPECT_EQ(corrected, 13);
 }
 
 // Where the step's points lie across one of E_k's jumps the correction would be the jump over
