@@ -982,7 +982,8 @@ TEST(DynamicsRailLineLaw, ArcDiscreteGradientsNewtonMatrix) {
 // one over them), thrown across it at ±0.3 m/s, damped (800 N s/m) with friction μ = 0.3, in
 // 0.2 ms steps over 40 ms (a turn of Δφ ≈ 0.01 a step), on the penalty (1e7 N/m) and the line
 // law: the work balance, ΔE = the dampers' + the friction's work, closes to the Newton tolerance's
-// level. Along the θ point's n (before) each contact step missed (Δφ)²/8 of its |ΔE| + |damper's|.
+// level (held at 1e-11 of the kinetic energy). Along the θ point's n (before) each contact step
+// missed (Δφ)²/8 of its |ΔE| + |damper's|.
 TEST(DynamicsRailLineLaw, ArcRailsAtThetaHalfKeepTheirWorkBalance) {
   constexpr double kR = 0.05, kSpeed = 3.0;
   for (const bool line : {false, true}) {
@@ -1027,9 +1028,38 @@ TEST(DynamicsRailLineLaw, ArcRailsAtThetaHalfKeepTheirWorkBalance) {
         "%.2e J (kinetic %.3g J)\n",
         line ? "line law" : "penalty", change, s.contact_damping_work, s.friction_work, balance,
         e0.kinetic);
-    EXPECT_LT(std::abs(balance), 1e-9 * e0.kinetic);
+    EXPECT_LT(std::abs(balance), 1e-11 * e0.kinetic);
     EXPECT_LT(s.contact_damping_work, -1e-3 * e0.kinetic);
     EXPECT_LT(s.friction_work, -1e-3 * e0.kinetic);
+  }
+}
+
+// (14) A step whose ends are both at the arc's centre (ρ₀ + ρ₁ = 0, ρ̄ = 0: ν = s (q_θ − C)/ρ̄ has
+// no direction) with the θ point off it, as a caller other than the integrator may pass (its θ
+// point lies on the segment x₀x₁): the force keeps the θ point's n, finite, on the penalty (the
+// gaps at the centre R + r) and with the line law.
+TEST(DynamicsRailLineLaw, ArcStepWithBothEndsAtTheCentreKeepsTheNormal) {
+  for (const bool line : {false, true}) {
+    Guide g = rail(Guide::Kind::kArc, false);
+    if (!line) {
+      g.line_law = false;
+      g.discrete_gradient = true;
+    }
+    const GuideStep step{0.0, 0.0, 0.0, 0.0, 1e-4};  // the arc's centre is the origin
+    const double rho = kArcRadius + kRoller - 1e-6, phi = 1.0;
+    const double qx = rho * std::cos(phi), qy = rho * std::sin(phi);
+    const GuideContact c = guide_contact(g, guide_frame(g), qx, qy, 0.0, 0.0, NAN, &step);
+    const char* law = line ? "line law" : "penalty";
+    ASSERT_TRUE(c.active) << law;
+    ASSERT_TRUE(std::isfinite(c.fx) && std::isfinite(c.fy)) << law << ": " << c.fx << ", " << c.fy;
+    EXPECT_GT(c.normal_force, 0.0) << law;
+    EXPECT_DOUBLE_EQ(c.fx, c.normal_force * c.nx) << law;
+    EXPECT_DOUBLE_EQ(c.fy, c.normal_force * c.ny) << law;
+    EXPECT_NEAR(c.nx, std::cos(phi), 1e-12) << law;
+    EXPECT_NEAR(c.ny, std::sin(phi), 1e-12) << law;
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_TRUE(std::isfinite(c.dq[i]) && std::isfinite(c.dv[i])) << law << " " << i;
+    }
   }
 }
 

@@ -865,8 +865,12 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
 /// pocket_step_contact's memo of a step's start (x₀, ψ₀ do not move within a step): the start's
 /// place for the jumps and its energy E_k, for the pocket k, the hold and the inputs it was taken
 /// with (the wheel's centre included: a take-up's moves with the iterate). A call whose inputs
-/// differ from these in any bit takes the start afresh and keeps it here, so the result is the
-/// same with the memo or without.
+/// differ from these in any bit takes the start afresh and keeps it here. Valid for one wheel
+/// within one step: the key leaves out the wheel's own parameters (stiffness, smoothing,
+/// clearance, radius, pocket angle, mouth, release, body, teeth), so a memo must not be carried
+/// to another wheel or to a wheel whose parameters changed (the integrator keeps one per joint
+/// and wheel and clears them every step). Used so, the result is the same with the memo or
+/// without.
 struct PocketStart {
   bool set = false;
   double x0 = 0.0, y0 = 0.0, cx0 = 0.0, cy0 = 0.0, angle0 = 0.0, centre_x = 0.0, centre_y = 0.0;

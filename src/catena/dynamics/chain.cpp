@@ -897,29 +897,21 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
   c.friction_force = ft;
   c.fx = f * ux + ft * tx;
   c.fy = f * uy + ft * ty;
-  // ∂F/∂q = n ⊗ ∂f/∂q + f κ t tᵀ + t ⊗ ∂f_t/∂q − f_t κ n tᵀ  (∂t/∂q = −κ n tᵀ; κ = 0 straight)
-  c.dq[0] = nx * dfq[0] + f * kappa * tx * tx + tx * dftq[0] - ft * kappa * nx * tx;
-  c.dq[1] = nx * dfq[1] + f * kappa * tx * ty + tx * dftq[1] - ft * kappa * nx * ty;
-  c.dq[2] = ny * dfq[0] + f * kappa * ty * tx + ty * dftq[0] - ft * kappa * ny * tx;
-  c.dq[3] = ny * dfq[1] + f * kappa * ty * ty + ty * dftq[1] - ft * kappa * ny * ty;
-  c.dv[0] = nx * dfv[0] + tx * dftv[0];
-  c.dv[1] = nx * dfv[1] + tx * dftv[1];
-  c.dv[2] = ny * dfv[0] + ty * dftv[0];
-  c.dv[3] = ny * dfv[1] + ty * dftv[1];
-  if (radial) {
-    // f ν in place of f n (∂f/∂q is 0 there: the step's f depends on x₁ alone), ∂ν/∂q_θ = bend I
-    // in place of ∂n/∂q = κ t tᵀ, and ∂ν/∂x₁ = −(bend/2) ν ⊗ n₁ (through ρ₁ in ρ̄) besides
-    // ∂f/∂x₁ = −(∂f_e/∂g₁ + ∂f_d/∂g₁) n₁ (dfv/h): h ∂(f ν)/∂x₁ = ν ⊗ (dfv − h f (bend/2) n₁)
-    const double wx = dfv[0] - 0.5 * step->h * f * bend * n1x;
-    const double wy = dfv[1] - 0.5 * step->h * f * bend * n1y;
-    c.dq[0] = ux * dfq[0] + f * bend + tx * dftq[0] - ft * kappa * nx * tx;
-    c.dq[1] = ux * dfq[1] + tx * dftq[1] - ft * kappa * nx * ty;
-    c.dq[2] = uy * dfq[0] + ty * dftq[0] - ft * kappa * ny * tx;
-    c.dq[3] = uy * dfq[1] + f * bend + ty * dftq[1] - ft * kappa * ny * ty;
-    c.dv[0] = ux * wx + tx * dftv[0];
-    c.dv[1] = ux * wy + tx * dftv[1];
-    c.dv[2] = uy * wx + ty * dftv[0];
-    c.dv[3] = uy * wy + ty * dftv[1];
+  // ∂F/∂q = ν ⊗ ∂f/∂q + f ∂ν/∂q + t ⊗ ∂f_t/∂q − f_t κ n tᵀ (∂t/∂q = −κ n tᵀ; κ = 0 straight),
+  // ∂F/∂v = ν ⊗ w + t ⊗ ∂f_t/∂v. Along n (ν = n): ∂n/∂q = κ t tᵀ and w = ∂f/∂v. On an arc with
+  // the discrete gradient (`radial`): ∂ν/∂q_θ = bend I (∂f/∂q is 0 there: the step's f depends on
+  // x₁ alone), and ∂ν/∂x₁ = −(bend/2) ν ⊗ n₁ (through ρ₁ in ρ̄) besides
+  // ∂f/∂x₁ = −(∂f_e/∂g₁ + ∂f_d/∂g₁) n₁ (dfv/h): w = dfv − h f (bend/2) n₁
+  const double u[2] = {ux, uy}, t[2] = {tx, ty}, n[2] = {nx, ny};
+  const double half = radial ? 0.5 * step->h * f * bend : 0.0;
+  const double w[2] = {radial ? dfv[0] - half * n1x : dfv[0],
+                       radial ? dfv[1] - half * n1y : dfv[1]};
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      const double turn = radial ? (i == j ? f * bend : 0.0) : f * kappa * t[i] * t[j];
+      c.dq[2 * i + j] = u[i] * dfq[j] + turn + t[i] * dftq[j] - ft * kappa * n[i] * t[j];
+      c.dv[2 * i + j] = u[i] * w[j] + t[i] * dftv[j];
+    }
   }
   return c;
 }

@@ -508,6 +508,30 @@ bool same(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
+// A step's end q (relative to the wheel's centre there, put about w's centre) for pocket k
+// (held: hk ≠ kNoPocket) with the wheel at `angle`: the point, where it is, whether it is free of
+// the wheel, pocket k's vertex there (read only where its piece or its contact reads it) and its
+// piece
+struct End {
+  double x = 0.0, y = 0.0;
+  Where at;
+  bool free = true;
+  double sx = 0.0, sy = 0.0;
+  Piece piece = Piece::kOut;
+};
+End end_of(const Sprocket& w, const Capture& cap, double qx, double qy, double angle, int k,
+           int hk) {
+  End e;
+  e.x = qx + w.centre_x;
+  e.y = qy + w.centre_y;
+  const Where about = where_rel(w, qx, qy);
+  e.at = where(w, e.x, e.y);
+  e.free = free_of(w, e.at, hk);
+  if (!about.beyond || !e.free) vertex_point(w, vertex_angle(w, k, angle), e.sx, e.sy);
+  e.piece = piece_of(w, cap, about, e.sx, e.sy, hk != kNoPocket);
+  return e;
+}
+
 // The step's start for pocket k (held: hk ≠ kNoPocket) from the memo `m`, taken afresh there
 // unless it holds this start, wheel's centre, pocket and hold: its piece and its energy E_k
 // (the contact at zero velocity, its energy alone). The start does not move within a step, so
@@ -528,15 +552,11 @@ const PocketStart& step_start(const Sprocket& w, const Capture& cap, const Pocke
                   .centre_y = w.centre_y,
                   .pocket = k,
                   .held = hk};
-  const double q0x = step.x0 - step.cx0, q0y = step.y0 - step.cy0;
-  const double x = q0x + w.centre_x, y = q0y + w.centre_y;
-  const Where about = where_rel(w, q0x, q0y), at = where(w, x, y);
-  const bool free = free_of(w, at, hk);
-  double sx = 0.0, sy = 0.0;  // pocket k's vertex at ψ₀, where the piece or the contact reads it
-  if (!about.beyond || !free) vertex_point(w, vertex_angle(w, k, step.angle0), sx, sy);
-  m.piece = static_cast<int>(piece_of(w, cap, about, sx, sy, hk != kNoPocket));
-  if (!free) {
-    const SeatContact e = contact_at(w, x, y, 0.0, 0.0, 0.0, at, k, sx, sy, &cap, Need::kEnergy);
+  const End s = end_of(w, cap, step.x0 - step.cx0, step.y0 - step.cy0, step.angle0, k, hk);
+  m.piece = static_cast<int>(s.piece);
+  if (!s.free) {
+    const SeatContact e =
+        contact_at(w, s.x, s.y, 0.0, 0.0, 0.0, s.at, k, s.sx, s.sy, &cap, Need::kEnergy);
     m.energy = e.active ? e.energy : 0.0;
   }
   return m;
@@ -604,21 +624,15 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   if (!(den > 1e-18 * r2)) return c;
   PocketStart own;  // without the caller's memo, this call's
   const PocketStart& start = step_start(w, cap, step, k, hk, step.start ? *step.start : own);
-  // the end: pocket k's vertex at ψ₁ where its piece or its contact reads it
-  const double x1 = q1x + w.centre_x, y1 = q1y + w.centre_y;
-  const Where about1 = where_rel(w, q1x, q1y), at1 = where(w, x1, y1);
-  const bool free1 = free_of(w, at1, hk);
-  double s1x = 0.0, s1y = 0.0;
-  if (!about1.beyond || !free1) vertex_point(w, vertex_angle(w, k, step.angle1), s1x, s1y);
+  const End end = end_of(w, cap, q1x, q1y, step.angle1, k, hk);
   const Piece pieces[3] = {static_cast<Piece>(start.piece),
-                           piece_of(w, cap, p, sx, sy, hk != kNoPocket),
-                           piece_of(w, cap, about1, s1x, s1y, hk != kNoPocket)};
+                           piece_of(w, cap, p, sx, sy, hk != kNoPocket), end.piece};
   const double ends_x[3] = {q0x, rx, q1x}, ends_y[3] = {q0y, ry, q1y};
   if (jumps(w, cap, pieces, ends_x, ends_y)) return c;  // E_k's jump: the θ point's force (docs)
   // the end's energy and elastic force, the θ point's elastic force and ∂F/∂q (zero velocity)
-  const SeatContact e1 =
-      free1 ? SeatContact{}
-            : contact_at(w, x1, y1, 0.0, 0.0, 0.0, at1, k, s1x, s1y, &cap, Need::kForce);
+  const SeatContact e1 = end.free ? SeatContact{}
+                                  : contact_at(w, end.x, end.y, 0.0, 0.0, 0.0, end.at, k, end.sx,
+                                               end.sy, &cap, Need::kForce);
   const SeatContact et =
       free ? SeatContact{}
            : contact_at(w, x, y, 0.0, 0.0, 0.0, p, k, sx, sy, &cap, Need::kJacobian);
