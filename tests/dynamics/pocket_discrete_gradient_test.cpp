@@ -48,21 +48,27 @@ double energy_at(const Sprocket& w, Point q, double angle, int held = kNoPocket)
   return pocket_contact(w, q.x, q.y, 0.0, 0.0, angle, 0.0, held).energy;
 }
 
+// The step p0 → p1 with the wheel turning ψ₀ → ψ₁ about its centre, which stays put, at θ
+PocketStep step_over(const Sprocket& w, Point p0, Point p1, double psi0, double psi1,
+                     double theta) {
+  return {.x0 = p0.x,
+          .y0 = p0.y,
+          .x1 = p1.x,
+          .y1 = p1.y,
+          .cx0 = w.centre_x,
+          .cy0 = w.centre_y,
+          .cx1 = w.centre_x,
+          .cy1 = w.centre_y,
+          .angle0 = psi0,
+          .angle1 = psi1,
+          .theta = theta};
+}
+
 // The contact over the step p0 → p1 (wheel ψ₀ → ψ₁, h = 0.1 ms, θ = ½)
 SeatContact step_contact(const Sprocket& w, Point p0, Point p1, double psi0, double psi1,
                          int held = kNoPocket) {
   const double h = 1e-4, th = 0.5;
-  const PocketStep step{.x0 = p0.x,
-                        .y0 = p0.y,
-                        .x1 = p1.x,
-                        .y1 = p1.y,
-                        .cx0 = w.centre_x,
-                        .cy0 = w.centre_y,
-                        .cx1 = w.centre_x,
-                        .cy1 = w.centre_y,
-                        .angle0 = psi0,
-                        .angle1 = psi1,
-                        .theta = th};
+  const PocketStep step = step_over(w, p0, p1, psi0, psi1, th);
   const double qx = p0.x + th * (p1.x - p0.x), qy = p0.y + th * (p1.y - p0.y);
   return pocket_step_contact(w, qx, qy, (p1.x - p0.x) / h, (p1.y - p0.y) / h,
                              psi0 + th * (psi1 - psi0), (psi1 - psi0) / h, held, step);
@@ -188,17 +194,7 @@ void check_ends_bit_for_bit(double theta) {
         const double psi1 = psi + turn, psit = psi + theta * turn;
         const Point p0 = at(i, psi), p1 = at(i + 1, psi1);
         const Point pt{p0.x + theta * (p1.x - p0.x), p0.y + theta * (p1.y - p0.y)};
-        const PocketStep step{.x0 = p0.x,
-                              .y0 = p0.y,
-                              .x1 = p1.x,
-                              .y1 = p1.y,
-                              .cx0 = w.centre_x,
-                              .cy0 = w.centre_y,
-                              .cx1 = w.centre_x,
-                              .cy1 = w.centre_y,
-                              .angle0 = psi,
-                              .angle1 = psi1,
-                              .theta = theta};
+        const PocketStep step = step_over(w, p0, p1, psi, psi1, theta);
         const SeatContact s =
             pocket_step_contact(w, pt.x, pt.y, 0.01, -0.02, psit, 5.0, sw.held, step);
         // pocket_contact at the ends (about the centre as pocket_step_contact puts them) and at
@@ -322,17 +318,9 @@ TEST(DynamicsPocketDiscreteGradient, StartsMemoGivesTheSameContact) {
   int corrected = 0;
   for (const Call& call : calls) {
     const Sprocket& wh = *call.w;
-    PocketStep step{.x0 = call.p0.x,
-                    .y0 = call.p0.y,
-                    .x1 = call.p1.x,
-                    .y1 = call.p1.y,
-                    .cx0 = w.centre_x + call.dcx,
-                    .cy0 = w.centre_y - 0.5 * call.dcx,
-                    .cx1 = w.centre_x,
-                    .cy1 = w.centre_y,
-                    .angle0 = psi + call.dpsi0,
-                    .angle1 = psi + turn,
-                    .theta = 0.5};
+    PocketStep step = step_over(w, call.p0, call.p1, psi + call.dpsi0, psi + turn, 0.5);
+    step.cx0 += call.dcx;  // the start's centre moved alone
+    step.cy0 -= 0.5 * call.dcx;
     const double qx = 0.5 * (call.p0.x + call.p1.x), qy = 0.5 * (call.p0.y + call.p1.y);
     const SeatContact without =
         pocket_step_contact(wh, qx, qy, 0.1, 0.2, psi + 0.5 * turn, 20.0, call.held, step);
@@ -537,17 +525,7 @@ TEST(DynamicsPocketDiscreteGradient, NewtonMatrixMatchesTheResidualsDifferences)
       const bool wanted = k.at == At::kAlone ? !at.active && end.active && end.energy > 0.0
                                              : at.active && !(at.force > 0.0);
       if (!wanted) return false;
-      const PocketStep e{.x0 = s.x[0],
-                         .y0 = s.y[0],
-                         .x1 = u[0],
-                         .y1 = u[1],
-                         .cx0 = w.centre_x,
-                         .cy0 = w.centre_y,
-                         .cx1 = w.centre_x,
-                         .cy1 = w.centre_y,
-                         .angle0 = s.angle[0],
-                         .angle1 = u[2 * n],
-                         .theta = th};
+      const PocketStep e = step_over(w, {s.x[0], s.y[0]}, {u[0], u[1]}, s.angle[0], u[2 * n], th);
       return pocket_step_contact(w, qx, qy, vx, vy, psi, om, kNoPocket, e).skew != 0.0;
     };
     int checked = 0;
