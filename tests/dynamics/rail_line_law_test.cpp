@@ -874,6 +874,20 @@ TEST(DynamicsRailLineLaw, ArcDiscreteGradientsWorkIsTheEnergysChange) {
   EXPECT_GT(theta_point_fast, 1e-6);
 }
 
+// The soft penalty arc of (11) and (12): 5 cm, the penalty with the discrete gradient (1e4 N/m,
+// ε = 0.5 mm, 5 N s/m, μ = 0.3), the rollers outside or inside it
+Guide soft_arc(bool inside) {
+  Guide g = rail(Guide::Kind::kArc, inside);
+  g.radius = 0.05;
+  g.line_law = false;
+  g.discrete_gradient = true;
+  g.contact_stiffness = 1e4;
+  g.contact_smoothing = 0.5e-3;
+  g.contact_damping = 5.0;
+  g.friction = 0.3;
+  return g;
+}
+
 // (11) The arc's discrete gradient's blocks at the contact: dq = ∂F/∂q_θ (ν's turn, bend I with
 // bend = s/ρ̄, besides the friction's t turning) and dv = ∂F/∂v with x₁ = x₀ + h v (f through g₁,
 // ν through ρ₁ in ρ̄, the friction), against central differences of the contact's force, outside
@@ -882,20 +896,13 @@ TEST(DynamicsRailLineLaw, ArcDiscreteGradientsWorkIsTheEnergysChange) {
 // f κ t tᵀ in place of f bend I misses dq's n n entry by all of it, and dv without ν's −(bend/2)
 // ν ⊗ n₁ misses by ~1 % of its column.
 TEST(DynamicsRailLineLaw, ArcDiscreteGradientsBlocksMatchDifferences) {
-  constexpr double kH = 1e-3, kR = 0.05;
+  constexpr double kH = 1e-3;
   double worst = 0.0;
   for (const bool inside : {false, true}) {
-    Guide g = rail(Guide::Kind::kArc, inside);
-    g.radius = kR;
-    g.line_law = false;
-    g.discrete_gradient = true;
-    g.contact_stiffness = 1e4;
-    g.contact_smoothing = 0.5e-3;
-    g.contact_damping = 5.0;
-    g.friction = 0.3;
+    const Guide g = soft_arc(inside);
     const GuideFrame f = guide_frame(g);
     const Touch a = touch(g, 1e-3, 0.5);
-    const Touch b = touch(g, 2e-3, 0.5 + 2e-3 / (kR * (g.end_angle - g.start_angle)));
+    const Touch b = touch(g, 2e-3, 0.5 + 2e-3 / (g.radius * (g.end_angle - g.start_angle)));
     const double vx = (b.x - a.x) / kH, vy = (b.y - a.y) / kH;
     for (const double theta : {0.5, 0.6}) {
       // the force at the θ point (qx, qy), velocity (wx, wy), the step's end x₀ + h w
@@ -938,17 +945,10 @@ TEST(DynamicsRailLineLaw, ArcDiscreteGradientsBlocksMatchDifferences) {
 // central differences of the step's residual. The blocks f bend I and −(bend/2) ν ⊗ n₁ of (11) are
 // checked through the integrator's assembly.
 TEST(DynamicsRailLineLaw, ArcDiscreteGradientsNewtonMatrix) {
-  constexpr double kH = 1e-3, kR = 0.05;
+  constexpr double kH = 1e-3;
   for (const bool inside : {false, true}) {
     for (const double theta : {0.5, 0.6}) {
-      Guide g = rail(Guide::Kind::kArc, inside);
-      g.radius = kR;
-      g.line_law = false;
-      g.discrete_gradient = true;
-      g.contact_stiffness = 1e4;
-      g.contact_smoothing = 0.5e-3;
-      g.contact_damping = 5.0;
-      g.friction = 0.3;
+      const Guide g = soft_arc(inside);
       Model m = uniform_chain(2, false, kPitch, kMass, 1e3, 0.0, false);
       m.guides = {g};
       State s(2, 0);
