@@ -814,7 +814,8 @@ TEST(DynamicsCli, DiscreteGradientKeyTakesTheSeatsForceOverTheStep) {
   EXPECT_EQ(pocket_on["discrete_gradient"], true);
   EXPECT_NE(pocket_on["span"], pocket_plain["span"]);
   // below θ = 0.6 on the pocket wheel the warning does not promise the seats' balance at ½ (the
-  // example there stops at step 474): a 10 ms run is enough to read it
+  // undamped example there stops, docs "Pocket wheel: the discrete gradient"): a 10 ms run is
+  // enough to read it
   std::string pocket_short = pocket_text;
   const std::string one_second = "duration = \"1 s\"";
   ASSERT_NE(pocket_short.find(one_second), std::string::npos);

@@ -61,7 +61,7 @@ constexpr double kMaxPositions = 500'000;
 constexpr analysis::Work kWork{.cap = 50'000'000, .seconds = 0.5e-6, .bytes = 0.0};
 
 // Where a catalogue axial stiffness comes from (data/catalog/iso606/README.md, CALCULATORS_K),
-// and what it is worth: the help, the diagnostic and the JSON say it in these words.
+// and what it is worth: the help says the quality, the diagnostic both, the JSON the source.
 constexpr const char* kCatalogueStiffnessSource =
     "ISO 606 catalogue (data/catalog/iso606/README.md, CALCULATORS_K): EA = 12 k lbf from a "
     "third party's stretch factor k, \"interpolated from a data from Tsubaki\" (which chart is "
@@ -76,7 +76,7 @@ std::vector<Parameter> table_fields() {
   return {
       text("chain",
            "ISO 606 designation (\"12B\"): pitch, roller, width and mass from the "
-           "catalogue, and for 08A … 32A the axial stiffness"),
+           "catalogue, and for 08A … 32A (no pitch given) the axial stiffness"),
       quantity("pitch", K::kLength, "pitch p (overrides the catalogue's)"),
       quantity("mass_per_metre", K::kMassPerLength, "chain mass per metre q"),
       quantity("roller_diameter", K::kLength, "roller diameter d1"),
@@ -294,7 +294,8 @@ const Parameter& table_parameter() {
         "file works); in a case file, its own [dynamics] table";
     t.required = true;
     t.expected =
-        "a [dynamics] table (chain, links, axial_stiffness unless chain is 08A … 32A, "
+        "a [dynamics] table (chain, links, axial_stiffness unless chain is 08A … 32A and no "
+        "pitch is given, "
         "contact_stiffness, duration, step) and two or more [[dynamics.sprocket]] tables "
         "(docs/models/dynamics.md)";
     t.fields = table_fields();
