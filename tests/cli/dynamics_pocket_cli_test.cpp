@@ -386,4 +386,21 @@ TEST(DynamicsPocketCli, FieldsThatDoNotFitAPocketWheelAreNamedAtOnce) {
   named(r, {"dynamics.wire_diameter", "dynamics.pocket_clearance", "only with wheel = \"pocket\""});
 }
 
+// Without a [dynamics] table the message lists what the table needs: contact_stiffness with
+// wheel = "pocket" only (the ISO 606 seats default to the Hertz stiffness at the expected load),
+// contact_damping always.
+TEST(DynamicsPocketCli, MissingTableSaysContactStiffnessIsThePocketsOnly) {
+  const fs::path p =
+      fs::temp_directory_path() / "catena_dynamics_pocket_cli_test" / "no_table.toml";
+  fs::create_directories(p.parent_path());
+  std::ofstream(p) << "[chain]\ntype = \"round-link\"\npitch = \"64 mm\"\nwire = \"18 mm\"\n";
+  const CliRun r = run("dynamics " + p.string());
+  EXPECT_EQ(r.status, 2);
+  named(r, {"dynamics = (missing): expected a [dynamics] table (chain, links, axial_stiffness "
+            "unless chain is 08A … 32A and no pitch is given, contact_damping, duration, step; "
+            "with wheel = \"pocket\" pitch, wire_diameter and mass_per_metre instead of chain, "
+            "and contact_stiffness, which the ISO 606 seats default to the Hertz stiffness at "
+            "the expected load)"});
+}
+
 }  // namespace
