@@ -386,6 +386,95 @@ TEST(DynamicsPocketCli, FieldsThatDoNotFitAPocketWheelAreNamedAtOnce) {
   named(r, {"dynamics.wire_diameter", "dynamics.pocket_clearance", "only with wheel = \"pocket\""});
 }
 
+// The pockets' mouth ramp and release as keys (docs/models/dynamics.md, "Pocket wheel in the
+// command"): `pocket_mouth` (a length in [0, pocket_clearance]) and `pocket_release` (true or
+// false) reach both wheels, are echoed (the ramp with its unit) and change the run against the
+// same run without them; their defaults given explicitly leave the output as it was, every field
+// but the wall time equal and neither echoed.
+TEST(DynamicsPocketCli, MouthRampAndReleaseKeysReachTheWheelsAndAreEchoed) {
+  auto json_run = [](const std::string& name, const std::string& keys) {
+    const std::string path = keys.empty() ? kExample : example_with(name, {{"", keys}});
+    const CliRun r = run("dynamics " + path + " --duration 50ms --format json");
+    EXPECT_EQ(r.status, 0) << name << "\n" << r.err;
+    auto j = r.status == 0 ? nlohmann::json::parse(r.out) : nlohmann::json::object();
+    if (j.contains("summary")) {
+      j["summary"].erase("wall_time");
+      j["summary"].erase("real_time_factor");
+    }
+    return j;
+  };
+  const auto plain = json_run("", "");
+  ASSERT_TRUE(plain.contains("span"));
+  for (const char* key : {"pocket_mouth", "pocket_release"}) {
+    EXPECT_FALSE(plain.contains(key)) << key;
+    EXPECT_FALSE(plain["units"].contains(key)) << key;
+  }
+  const auto ramp = json_run("ramp.toml", "pocket_mouth = \"0.05 mm\"");
+  ASSERT_TRUE(ramp.contains("pocket_mouth")) << ramp.dump().substr(0, 2000);
+  EXPECT_DOUBLE_EQ(ramp["pocket_mouth"].get<double>(), 5e-5);
+  EXPECT_EQ(ramp["units"]["pocket_mouth"], "m");
+  EXPECT_FALSE(ramp.contains("pocket_release"));
+  EXPECT_TRUE(ramp["span"] != plain["span"]) << "the ramp left the spans' tensions as they were";
+  const auto release = json_run("release.toml", "pocket_release = true");
+  EXPECT_EQ(release["pocket_release"], true);
+  EXPECT_FALSE(release.contains("pocket_mouth"));
+  EXPECT_TRUE(release["span"] != plain["span"])
+      << "the release left the spans' tensions as they were";
+  EXPECT_TRUE(release["span"] != ramp["span"]) << "the release ran as the ramp";
+  // a bare length is in mm, as every length of the table
+  const auto bare = json_run("bare.toml", "pocket_mouth = 0.05");
+  EXPECT_TRUE(bare["span"] == ramp["span"]) << "a bare 0.05 is not 0.05 mm";
+  // the defaults written out: the sharp mouth, the output as without them
+  const auto defaults =
+      json_run("defaults.toml", "pocket_mouth = \"0 mm\"\npocket_release = false");
+  EXPECT_TRUE(defaults == plain) << nlohmann::json::diff(plain, defaults).dump().substr(0, 2000);
+}
+
+// Out of range, together and each named with its range: the ramp beyond the clearance (the range
+// following a clearance given), a negative ramp, a release that is not true or false, with the
+// table's other problems at once; the ramp with the release is refused naming both keys.
+TEST(DynamicsPocketCli, MouthRampAndReleaseOutOfRangeAreNamed) {
+  const CliRun wide = bad("mouth_wide.toml", {{"", "pocket_mouth = \"0.2 mm\""},
+                                              {"", "pocket_release = \"yes\""},
+                                              {"wire_diameter", "wire_diameter = \"70 mm\""}});
+  named(wide, {"dynamics.pocket_mouth (line ",
+               ") = 0.0002: expected in [0, pocket_clearance] = "
+               "[0, 0.0001] m",
+               "dynamics.pocket_release (line ", ") = 'yes': expected true or false",
+               "dynamics.wire_diameter"});
+  const CliRun tight = bad("mouth_tight.toml", {{"", "pocket_mouth = \"0.06 mm\""},
+                                                {"pocket_clearance", "pocket_clearance = 0.05"}});
+  named(tight, {"dynamics.pocket_mouth", "in [0, pocket_clearance] = [0, 5e-05] m"});
+  const CliRun negative = bad("mouth_negative.toml", {{"", "pocket_mouth = \"-0.01 mm\""}});
+  named(negative, {"dynamics.pocket_mouth", "= -1e-05: expected in [0, pocket_clearance]"});
+  const CliRun both =
+      bad("mouth_release.toml", {{"", "pocket_mouth = \"0.05 mm\"\npocket_release = true"}});
+  named(both, {"dynamics.pocket_mouth (line ", "expected 0 while dynamics.pocket_release (line ",
+               ") is true: the ramp is the sharp mouth's option",
+               "a ramp in [0, pocket_clearance] = [0, 0.0001] m needs pocket_release = false"});
+}
+
+// On ISO 606 sprockets the two keys are refused by name, each with its value, as the pocket's
+// other keys are.
+TEST(DynamicsPocketCli, MouthRampAndReleaseAreRefusedOnARollerChain) {
+  const std::string text = read_text(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_12B.toml");
+  const fs::path p =
+      fs::temp_directory_path() / "catena_dynamics_pocket_cli_test" / "roller_mouth.toml";
+  fs::create_directories(p.parent_path());
+  std::ofstream(p) << with_dynamics_key(text, "pocket_mouth = \"0.05 mm\"\npocket_release = true");
+  const CliRun r = run("dynamics " + p.string() + " --format json");
+  EXPECT_EQ(r.status, 2);
+  named(r, {") = 5e-05: expected only with wheel = \"pocket\"",
+            ") = true: expected only with wheel = \"pocket\""});
+  for (const char* key : {"dynamics.pocket_mouth (line ", "dynamics.pocket_release (line "}) {
+    const std::size_t at = r.err.find(key);
+    ASSERT_NE(at, std::string::npos) << key << "\n" << r.err;
+    const std::size_t end = r.err.find('\n', at);
+    EXPECT_NE(r.err.substr(at, end - at).find("only with wheel = \"pocket\""), std::string::npos)
+        << r.err.substr(at, end - at);
+  }
+}
+
 // Without a [dynamics] table the message lists what the table needs: contact_stiffness with
 // wheel = "pocket" only (the ISO 606 seats default to the Hertz stiffness at the expected load),
 // contact_damping always.

@@ -162,7 +162,13 @@ std::vector<Parameter> table_fields() {
                "pocket: the links' wire diameter d, in (0, pitch) (as catena pocketwheel's wire)"),
       quantity("pocket_clearance", K::kLength,
                "pocket: a joint's free play about its pocket's vertex, in (0, 0.1 pitch] "
-               "(default 0.1 mm)")};
+               "(default 0.1 mm)"),
+      quantity("pocket_mouth", K::kLength,
+               "pocket: the pockets' mouth ramp w, in [0, pocket_clearance] (default 0: the sharp "
+               "mouth; not with pocket_release = true)"),
+      text("pocket_release",
+           "pocket: true to let a joint leaving its pocket go continuously over the release band "
+           "(default false: the sharp mouth's cut; not with pocket_mouth > 0)")};
 }
 
 // [[dynamics.guide]]: a rail the rollers slide on (docs/models/dynamics.md, "Guides"), in the
@@ -379,6 +385,10 @@ struct Setup {
   // wheel = "pocket": a round-link chain (pitch t, wire d) on two equal pocket wheels
   bool pocket = false;
   double wire = NAN, clearance = NAN;
+  // the pockets' mouth ramp w [m] (0: the sharp mouth) and release (Sprocket::pocket_mouth,
+  // pocket_release; docs/models/dynamics.md, "Pocket wheel: the mouth's ramp", "unwinding")
+  double mouth = 0.0;
+  bool release = false;
   double pocket_radius = NAN, pocket_angle = NAN;  // R and δ1 of seed 003
   // per sprocket (in the input's order, the model's): its own μ, NaN = seat_friction
   std::vector<double> wheel_friction;
@@ -1229,6 +1239,7 @@ Setup parse(const analysis::Inputs& in) {
   std::string wheel = "iso606";
   bool line_law = false;                  // contact_law = "line"
   std::optional<bool> discrete_gradient;  // given, else the law's default
+  std::optional<bool> pocket_release;     // given (with wheel = "pocket" only)
   // a [dynamics] key that is true or false: its line kept, `out` set, or the value refused
   auto read_flag = [&](const Entry& v, const std::string& key, auto& out) {
     line[key] = v.line;
@@ -1406,6 +1417,10 @@ Setup parse(const analysis::Inputs& in) {
       read_flag(v, key, discrete_gradient);
       continue;
     }
+    if (key == "pocket_release") {
+      read_flag(v, key, pocket_release);
+      continue;
+    }
     if (key == "positions") {
       read_flag(v, key, positions);
       continue;
@@ -1468,10 +1483,14 @@ Setup parse(const analysis::Inputs& in) {
                             " (where a rail carries a round link's joints is not built)"});
     has_chain = false;  // reported; the catalogue is not consulted
   } else {
-    for (const char* key : {"wire_diameter", "pocket_clearance"})
-      if (line.count(key))
-        issues.push_back({at(key), value.count(key) ? shown(value[key]) : "(given)",
-                          std::string("only with wheel = \"pocket\"")});
+    for (const char* key :
+         {"wire_diameter", "pocket_clearance", "pocket_mouth", "pocket_release"}) {
+      if (!line.count(key)) continue;
+      std::string given = value.count(key) ? shown(value[key]) : "(given)";
+      if (key == std::string("pocket_release") && pocket_release)
+        given = *pocket_release ? "true" : "false";
+      issues.push_back({at(key), given, "only with wheel = \"pocket\""});
+    }
   }
   // the case file's chain.type (or --chain-type) and the wheel agree: a round-link chain runs on
   // pocket wheels, a roller chain on ISO 606 sprockets; neither is implied
@@ -1540,6 +1559,27 @@ Setup parse(const analysis::Inputs& in) {
           {at("pocket_clearance"), shown(s.clearance),
            "in (0, 0.1 pitch]" +
                (s.pitch > 0.0 ? " = (0, " + shown(0.1 * s.pitch) + "] m" : std::string())});
+    // the mouth's ramp within the clearance (the model's range: pocket_issues), and not with the
+    // release, which replaces the sharp mouth's cut the ramp smooths
+    s.release = pocket_release.value_or(false);
+    if (value.count("pocket_mouth")) {
+      s.mouth = value["pocket_mouth"];
+      const bool clearance_known = s.clearance > 0.0 && std::isfinite(s.clearance);
+      if (!(s.mouth >= 0.0 && std::isfinite(s.mouth) &&
+            !(clearance_known && s.mouth > s.clearance)))
+        issues.push_back(
+            {at("pocket_mouth"), shown(s.mouth),
+             "in [0, pocket_clearance]" +
+                 (clearance_known ? " = [0, " + shown(s.clearance) + "] m" : std::string()) +
+                 " (the mouth's ramp; 0 the sharp mouth)"});
+      else if (s.mouth > 0.0 && s.release)
+        issues.push_back(
+            {at("pocket_mouth"), shown(s.mouth),
+             "0 while " + at("pocket_release") +
+                 " is true: the ramp is the sharp mouth's option, the release replaces "
+                 "the mouth's cut; a ramp in [0, pocket_clearance] = [0, " +
+                 shown(s.clearance) + "] m needs pocket_release = false"});
+    }
   }
 
   auto required = [&](const char* key, const char* what) -> double {
@@ -2621,6 +2661,10 @@ Result run(const analysis::Inputs& in) {
                           : iso606_sprocket(d.pitch, d.roller, d.width, z, w == 0 ? 0.0 : centre,
                                             0.0, d.contact_stiffness, d.contact_damping);
     set_seat_law(d, s);  // on a pocket wheel its discrete gradient alone (line law refused)
+    if (d.pocket) {      // the mouth's ramp and the release (0 and false: the sharp mouth)
+      s.pocket_mouth = d.mouth;
+      s.pocket_release = d.release;
+    }
     s.friction = wheel_mu(d, w);
     if (w == d.driver) {
       s.driver = true;
@@ -3085,6 +3129,9 @@ Record describe(const Result& r, const analysis::Inputs&) {
     j["wheel"] = "pocket";
     j["wire_diameter"] = d.wire;
     j["pocket_clearance"] = d.clearance;
+    // the mouth's ramp and the release only when not the sharp mouth's defaults (0, false)
+    if (d.mouth > 0.0) j["pocket_mouth"] = d.mouth;
+    if (d.release) j["pocket_release"] = true;
     j["pitch_radius"] = d.pocket_radius;
     j["pocket_angle"] = d.pocket_angle;
   }
@@ -3406,6 +3453,7 @@ Record describe(const Result& r, const analysis::Inputs&) {
   if (d.pocket)
     for (const char* key : {"wire_diameter", "pocket_clearance", "pitch_radius", "pocket_angle"})
       j["units"][key] = key == std::string("pocket_angle") ? "rad" : "m";
+  if (d.pocket && d.mouth > 0.0) j["units"]["pocket_mouth"] = "m";
   if (d.layout())
     for (const char* key : {"path_length", "laid_pitch", "centre_x", "centre_y"})
       j["units"][key] = "m";
