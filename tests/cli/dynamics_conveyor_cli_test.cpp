@@ -222,9 +222,9 @@ colour = "red"
   EXPECT_NE(r.err.find("straight or arc"), std::string::npos) << r.err;
 }
 
-// The lead-in keys of a straight guide: every bad value named at once, with its line and range
-// (a radius not > 0, a sweep past 90 deg, an unknown end, lead-in keys on an arc, a sweep without
-// a radius); and a good lead-in runs, its arcs counted among the guides.
+// The lead-in keys of a guide: every bad value named at once, with its line and range (a radius
+// not > 0, a sweep past 90 deg, an unknown end, a lead-in on an arc as large as the arc, a sweep
+// without a radius); and a good lead-in runs, its arcs counted among the guides.
 TEST(DynamicsConveyorCli, LeadInKeysCheckedAndRun) {
   const fs::path dir = fs::temp_directory_path() / "catena_dynamics_conveyor_cli_test";
   fs::create_directories(dir);
@@ -250,7 +250,7 @@ lead_in_radius = "50 mm"
         "dynamics.guide[0].lead_in_end (line 26)", "dynamics.guide[1].lead_in_radius (line 34)",
         "dynamics.guide[2].lead_in_radius"})
     EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
-  for (const char* range : {"[0.1, 90] deg", "start, end or both", "no lead_in_radius on an arc"})
+  for (const char* range : {"[0.1, 90] deg", "start, end or both", "the arc's surface radius"})
     EXPECT_NE(r.err.find(range), std::string::npos) << range << "\n" << r.err;
 
   // an unreadable lead-in value does not hide the rail's own range problems: both at once
@@ -271,6 +271,78 @@ lead_in_radius = "50 mm"
   const CliRun ok = run("dynamics " + good.string() + " --format json");
   ASSERT_EQ(ok.status, 0) << ok.err;
   EXPECT_EQ(nlohmann::json::parse(ok.out)["guides"], 5);  // two rails, one arc, two arcs
+}
+
+// Lead-ins on arc guides (docs/models/dynamics.md, "Lead-ins", "On an arc rail") on the lead-in
+// loop (two z = 12 wheels at x = 0 and 190.5 mm, the upper run 36.80 mm high): a flat convex arc
+// under the upper run (radius 5 m, its top at 31.2 mm, its ends 60 mm either side of the middle
+// and 30.84 mm high, 5.96 mm under the run: the run is a span the arc carries) and an inside ring
+// 7 mm outside the chain wrapped on sprocket[1] (−60° to 60°), each with 20 mm, 30° lead-ins at
+// both ends: accepted and run, the JSON counting 2 guides and 4 arcs. A 0.3 m lead-in on the flat
+// arc bends down into the chains wrapped on both wheels and is refused naming them and the
+// largest clear radius, which runs. Refused with both named at once: a convex arc's lead-in as
+// large as the arc (lead_in_radius), and the ring opened only 20° (−170° to 170°), where the two
+// lead-ins' contacts, 17.5° each round the ring's centre, would meet (lead_in_angle, not written:
+// the default 30°).
+TEST(DynamicsConveyorCli, LeadInsOnArcGuidesCheckedAndRun) {
+  const fs::path dir = fs::temp_directory_path() / "catena_dynamics_conveyor_cli_arc_lead_in";
+  fs::create_directories(dir);
+  const std::string flat =
+      "[[dynamics.guide]]\nkind = \"arc\"\ncentre_x = \"95.25 mm\"\ncentre_y = \"-4968.8 mm\"\n"
+      "radius = \"5 m\"\nstart_angle = \"89.3124 deg\"\nend_angle = \"90.6876 deg\"\n";
+  const auto ring = [](const std::string& from, const std::string& to) {
+    return "[[dynamics.guide]]\nkind = \"arc\"\ncentre_x = \"190.5 mm\"\ncentre_y = 0\n"
+           "radius = \"43.8 mm\"\ninside = true\nstart_angle = \"" +
+           from + " deg\"\nend_angle = \"" + to + " deg\"\n";
+  };
+  const fs::path good = dir / "arc_lead_ins.toml";
+  std::ofstream(good) << kLeadInLoopHead << flat << "lead_in_radius = \"20 mm\"\n"
+                      << ring("-60", "60") << "lead_in_radius = \"20 mm\"\n";
+  const CliRun ok = run("dynamics " + good.string() + " --format json");
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  EXPECT_EQ(ok.err.find("error"), std::string::npos) << ok.err;
+  EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
+  EXPECT_EQ(nlohmann::json::parse(ok.out)["guides"], 6);  // two arcs, four lead-in arcs
+
+  const fs::path far = dir / "arc_lead_in_far.toml";
+  std::ofstream(far) << kLeadInLoopHead << flat << "lead_in_radius = \"0.3 m\"\n";
+  const CliRun cut = run("dynamics " + far.string());
+  EXPECT_EQ(cut.status, 2) << cut.err;
+  EXPECT_NE(cut.err.find("dynamics.guide[0].lead_in_radius (line 25)"), std::string::npos)
+      << cut.err;
+  // the arc's start (89.31 deg) is its right end, towards sprocket[1]
+  for (const char* into : {"the lead-in at the start of guide[0] would run into the chain on "
+                           "sprocket[1]",
+                           "the lead-in at the end of guide[0] would run into the chain on "
+                           "sprocket[0]"})
+    EXPECT_NE(cut.err.find(into), std::string::npos) << into << "\n" << cut.err;
+  const double most = named_after(cut.err, "0 < R <= ");
+  EXPECT_GT(most, 0.02) << cut.err;
+  EXPECT_LT(most, 0.3) << cut.err;
+  std::ostringstream at_limit;
+  at_limit << kLeadInLoopHead << flat << "lead_in_radius = \"" << most << " m\"\n";
+  const fs::path limit = dir / "arc_lead_in_limit.toml";
+  std::ofstream(limit) << at_limit.str();
+  const CliRun limited = run("dynamics " + limit.string() + " --format json");
+  EXPECT_EQ(limited.status, 0) << limited.err;
+  EXPECT_EQ(limited.out.find("dynamics.not_converged"), std::string::npos);
+
+  const fs::path bad = dir / "arc_lead_ins_bad.toml";
+  std::ofstream(bad) << kLeadInLoopHead
+                     << "[[dynamics.guide]]\nkind = \"arc\"\ncentre_x = 0\ncentre_y = 0\n"
+                        "radius = \"50 mm\"\nstart_angle = \"10 deg\"\nend_angle = \"50 deg\"\n"
+                        "lead_in_radius = \"50 mm\"\n"
+                     << ring("-170", "170") << "lead_in_radius = \"20 mm\"\n";
+  const CliRun r = run("dynamics " + bad.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(r.out.empty());
+  for (const char* field :
+       {"dynamics.guide[0].lead_in_radius (line 25)", "dynamics.guide[1].lead_in_angle (line 27)"})
+    EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
+  for (const char* text : {"0 < R < 0.05 m, the arc's surface radius", "17.51",
+                           "fits the arc's open part", "= 20 deg"})
+    EXPECT_NE(r.err.find(text), std::string::npos) << text << "\n" << r.err;
+  fs::remove_all(dir);
 }
 
 // The report's animation draws the guides, fixed, in every frame: four rails as the example gives

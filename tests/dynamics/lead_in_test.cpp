@@ -50,6 +50,31 @@ Total total(const std::vector<Guide>& guides, double x, double y, double vx, dou
   return t;
 }
 
+// ∂F/∂q and ∂F/∂v of the guides together (one of them in contact at (x, y)) against central
+// differences with the steps dx and 1e-7 m/s
+void expect_blocks_match_differences(const std::vector<Guide>& guides, double x, double y,
+                                     double vx, double vy, double dx) {
+  const Total c = total(guides, x, y, vx, vy);
+  ASSERT_EQ(c.active, 1) << x << " " << y;
+  const double dv = 1e-7;
+  for (int col = 0; col < 2; ++col) {
+    double qp[2] = {x, y}, qm[2] = {x, y};
+    qp[col] += dx;
+    qm[col] -= dx;
+    const Total a = total(guides, qp[0], qp[1], vx, vy), b = total(guides, qm[0], qm[1], vx, vy);
+    const double scale = 1e-4 * (std::abs(c.dq[col]) + std::abs(c.dq[2 + col])) + 1e-2;
+    EXPECT_NEAR(c.dq[col], (a.fx - b.fx) / (2 * dx), scale) << "dq x" << col << " at " << x;
+    EXPECT_NEAR(c.dq[2 + col], (a.fy - b.fy) / (2 * dx), scale) << "dq y" << col << " at " << x;
+    double vp[2] = {vx, vy}, vm[2] = {vx, vy};
+    vp[col] += dv;
+    vm[col] -= dv;
+    const Total e = total(guides, x, y, vp[0], vp[1]), g = total(guides, x, y, vm[0], vm[1]);
+    const double vscale = 1e-5 * (std::abs(c.dv[col]) + std::abs(c.dv[2 + col])) + 1e-6;
+    EXPECT_NEAR(c.dv[col], (e.fx - g.fx) / (2 * dv), vscale) << "dv x" << col << " at " << x;
+    EXPECT_NEAR(c.dv[2 + col], (e.fy - g.fy) / (2 * dv), vscale) << "dv y" << col << " at " << x;
+  }
+}
+
 TEST(DynamicsLeadIn, ArcsAreTangentToTheRailAtItsEnds) {
   for (const double angle : {0.1, 0.5, kPi / 3, kPi / 2}) {
     for (const double radius : {0.01, 0.05, 2.0}) {
@@ -147,27 +172,7 @@ TEST(DynamicsLeadIn, ForceContinuousAndNewtonBlocksMatchCentralDifferencesAcross
         // elastic force's: no clamp at f = 0 within the differences)
         const double slide = 0.1 * u(rng);
         const double wx = vx + slide * ux, wy = vy + slide * uy;
-        const Total c = total(with, x, y, wx, wy);
-        ASSERT_EQ(c.active, 1) << s;
-        const double dx = 1e-3 * std::abs(s), dv = 1e-7;
-        for (int col = 0; col < 2; ++col) {
-          double qp[2] = {x, y}, qm[2] = {x, y};
-          qp[col] += dx;
-          qm[col] -= dx;
-          const Total a = total(with, qp[0], qp[1], wx, wy), b = total(with, qm[0], qm[1], wx, wy);
-          const double scale = 1e-4 * (std::abs(c.dq[col]) + std::abs(c.dq[2 + col])) + 1e-2;
-          EXPECT_NEAR(c.dq[col], (a.fx - b.fx) / (2 * dx), scale) << "dq x" << col << " s " << s;
-          EXPECT_NEAR(c.dq[2 + col], (a.fy - b.fy) / (2 * dx), scale)
-              << "dq y" << col << " s " << s;
-          double vp[2] = {wx, wy}, vm[2] = {wx, wy};
-          vp[col] += dv;
-          vm[col] -= dv;
-          const Total e = total(with, x, y, vp[0], vp[1]), g = total(with, x, y, vm[0], vm[1]);
-          const double vscale = 1e-5 * (std::abs(c.dv[col]) + std::abs(c.dv[2 + col])) + 1e-6;
-          EXPECT_NEAR(c.dv[col], (e.fx - g.fx) / (2 * dv), vscale) << "dv x" << col << " s " << s;
-          EXPECT_NEAR(c.dv[2 + col], (e.fy - g.fy) / (2 * dv), vscale)
-              << "dv y" << col << " s " << s;
-        }
+        expect_blocks_match_differences(with, x, y, wx, wy, 1e-3 * std::abs(s));
         ++checked;
       }
     }
@@ -192,7 +197,7 @@ TEST(DynamicsLeadIn, ValuesOutOfRangeAreNamed) {
   ASSERT_EQ(tiny.size(), 1U);
   EXPECT_EQ(tiny[0].field, "lead_in_angle");
   EXPECT_TRUE(validate(LeadIn{0.05, 0.1 * kPi / 180.0, true, true}).empty());
-  // none on an arc, none for a lead-in out of range
+  // none on an arc whose geometry is invalid (radius 0 here), none for a lead-in out of range
   Guide arc = inclined_rail(0.0);
   arc.kind = Guide::Kind::kArc;
   EXPECT_TRUE(lead_in_arcs(arc, {0.05, 0.5, true, true}).empty());
@@ -416,6 +421,323 @@ TEST(DynamicsLeadIn, ClearanceMatchesABruteForceOnRandomLeadIns) {
   EXPECT_GE(accepted, 50);
   EXPECT_GE(by_path, 30);
   EXPECT_GE(by_post, 8);
+}
+
+// Lead-ins on arc rails (docs/models/dynamics.md, "Lead-ins", "On an arc rail"): an arc rail of
+// surface radius 0.2 m about (0.1, −0.05) from 0.4 to 2.1 rad, the rollers outside it (convex) or
+// inside; its frame at an end: the end point P = C + ρ e, the free side's normal n (e outside, −e
+// inside) and the direction past the end (the counter-clockwise tangent t at the end angle, −t at
+// the start angle).
+Guide arc_rail(bool inside) {
+  Guide g = inclined_rail(0.3);
+  g.kind = Guide::Kind::kArc;
+  g.x0 = g.y0 = g.x1 = g.y1 = 0.0;
+  g.centre_x = 0.1;
+  g.centre_y = -0.05;
+  g.radius = 0.2;
+  g.start_angle = 0.4;
+  g.end_angle = 2.1;
+  g.inside = inside;
+  return g;
+}
+struct ArcEnd {
+  double px, py, nx, ny, ox, oy;  // the end point, the free side's normal, past the end
+};
+ArcEnd arc_end(const Guide& rail, bool at_end) {
+  const double a = at_end ? rail.end_angle : rail.start_angle;
+  const double ex = std::cos(a), ey = std::sin(a), side = rail.inside ? -1.0 : 1.0;
+  const double past = at_end ? 1.0 : -1.0;
+  return {rail.centre_x + rail.radius * ex,
+          rail.centre_y + rail.radius * ey,
+          side * ex,
+          side * ey,
+          -past * ey,
+          past * ex};
+}
+double point_x(const Guide& a, double phi) { return a.centre_x + a.radius * std::cos(phi); }
+double point_y(const Guide& a, double phi) { return a.centre_y + a.radius * std::sin(phi); }
+
+// Each lead-in joins its end of the arc rail: one of its ends is the rail's end point, with the
+// rail's normal on the free side, running on in the rail's direction past the end; every other
+// point of it lies on the rail's far side of the rail's extended circle (inside it, |Q − C| < ρ,
+// with the rollers outside; outside it with the rollers inside), at the distance from C the
+// triangle C, C_L, Q gives (|Q − C|² = d² + R² ± 2 d R cos θ, d = |C_L − C| = ρ ∓ R, θ its angle
+// along the lead-in from the joint), and round C beyond the rail's end (off the rail's sweep).
+TEST(DynamicsLeadIn, ArcRailLeadInsJoinTheRailAndBendAwayFromItsCircle) {
+  int checked = 0;
+  for (const bool inside : {false, true}) {
+    const Guide rail = arc_rail(inside);
+    const double rho = rail.radius;
+    const std::vector<double> radii =
+        inside ? std::vector<double>{0.01, 0.05, 0.15, 1.0} : std::vector<double>{0.01, 0.05, 0.15};
+    for (const double big : radii) {
+      for (const double angle : {0.1, 0.5, kPi / 3, kPi / 2}) {
+        const LeadIn lead{big, angle, true, true};
+        ASSERT_TRUE(validate(lead, rail).empty()) << inside << " " << big << " " << angle;
+        const std::vector<Guide> arcs = lead_in_arcs(rail, lead);
+        ASSERT_EQ(arcs.size(), 2U);
+        for (int k = 0; k < 2; ++k) {
+          const bool at_end = k == 1;
+          const Guide& a = arcs[static_cast<std::size_t>(k)];
+          const ArcEnd e = arc_end(rail, at_end);
+          EXPECT_EQ(a.kind, Guide::Kind::kArc);
+          EXPECT_FALSE(a.inside);
+          EXPECT_EQ(a.radius, big);
+          EXPECT_NEAR(a.end_angle - a.start_angle, angle, 1e-14);
+          // which of its ends is the joint: the one at the rail's end
+          const double tol = 1e-15 * 4.0 * (1.0 + rho + big);
+          const bool joint_first =
+              std::hypot(point_x(a, a.start_angle) - e.px, point_y(a, a.start_angle) - e.py) < tol;
+          const double joint = joint_first ? a.start_angle : a.end_angle;
+          EXPECT_NEAR(point_x(a, joint), e.px, tol) << inside << at_end;
+          EXPECT_NEAR(point_y(a, joint), e.py, tol) << inside << at_end;
+          // the lead-in's free side's normal there (outward: its rollers ride outside) is the
+          // rail's
+          EXPECT_NEAR(std::cos(joint), e.nx, 1e-14) << inside << at_end;
+          EXPECT_NEAR(std::sin(joint), e.ny, 1e-14) << inside << at_end;
+          // its direction from the joint into the lead-in: the rail's past its end
+          const double into = joint_first ? 1.0 : -1.0;
+          EXPECT_NEAR(-into * std::sin(joint), e.ox, 1e-14) << inside << at_end;
+          EXPECT_NEAR(into * std::cos(joint), e.oy, 1e-14) << inside << at_end;
+          // every other point on the rail's far side of its circle, and off the rail's sweep
+          const double d = inside ? rho + big : rho - big;
+          for (int j = 1; j <= 16; ++j) {
+            const double theta = angle * j / 16.0;
+            const double phi = joint + into * theta;
+            const double qx = point_x(a, phi) - rail.centre_x, qy = point_y(a, phi) - rail.centre_y;
+            const double dist = std::hypot(qx, qy);
+            const double expected =
+                std::sqrt(d * d + big * big + (inside ? -2.0 : 2.0) * d * big * std::cos(theta));
+            EXPECT_NEAR(dist, expected, 1e-14 * (rho + big));
+            if (inside)
+              EXPECT_GT(dist, rho) << big << " " << angle << " " << theta;
+            else
+              EXPECT_LT(dist, rho) << big << " " << angle << " " << theta;
+            double off = std::atan2(qy, qx) - rail.start_angle;
+            off -= 2.0 * kPi * std::floor(off / (2.0 * kPi));
+            EXPECT_GT(off, rail.end_angle - rail.start_angle) << big << " " << angle;
+            ++checked;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(checked, (3 + 4) * 4 * 2 * 16);
+}
+
+// At each end of the arc rail, outside and inside, a roller 2 µm or 50 µm into the surface at ±δ
+// from the joint (along the direction past the end): the rail's contact on one side, the
+// lead-in's alone on the other. The gap (penetration) and its gradient (central differences of the
+// penetration over δ/10) of the lead-in equal the rail's to the order δ/R of the curvatures'
+// difference, both −n; the force is continuous (its change of order (f + k_c δ) δ/R), while the
+// bare arc's square end drops it; and the Newton blocks of rail and lead-ins together match central
+// differences approaching the joint from both sides.
+TEST(DynamicsLeadIn, ArcRailLeadInsCarryTheRailsGapAndForceAcrossTheJoint) {
+  int checked = 0;
+  for (const bool inside : {false, true}) {
+    const Guide rail = arc_rail(inside);
+    const double big = 0.05;
+    const std::vector<Guide> arcs = lead_in_arcs(rail, {big, kPi / 4, true, true});
+    ASSERT_EQ(arcs.size(), 2U);
+    std::vector<Guide> with{rail};
+    with.insert(with.end(), arcs.begin(), arcs.end());
+    const double k = rail.contact_stiffness, r = rail.roller_radius;
+    const double curve = 1.0 / big + 1.0 / rail.radius;  // the two curvatures' difference at most
+    for (int end = 0; end < 2; ++end) {
+      const ArcEnd e = arc_end(rail, end == 1);
+      const Guide& lead = arcs[static_cast<std::size_t>(end)];
+      for (const double depth : {2e-6, 5e-5}) {
+        const auto point = [&](double s, double& x, double& y) {  // s past the end
+          x = e.px + (r - depth) * e.nx + s * e.ox;
+          y = e.py + (r - depth) * e.ny + s * e.oy;
+        };
+        const double vx = 0.3 * e.ox + 1e-4 * e.nx, vy = 0.3 * e.oy + 1e-4 * e.ny;
+        for (const double delta : {1e-5, 1e-7}) {
+          double xa = 0, ya = 0, xb = 0, yb = 0;
+          point(-delta, xa, ya);
+          point(delta, xb, yb);
+          const GuideContact on_rail = guide_contact(rail, xa, ya, vx, vy);
+          const GuideContact on_lead = guide_contact(lead, xb, yb, vx, vy);
+          ASSERT_TRUE(on_rail.active);
+          ASSERT_TRUE(on_lead.active);
+          EXPECT_FALSE(guide_contact(lead, xa, ya, vx, vy).active);  // the joint parts them
+          EXPECT_FALSE(guide_contact(rail, xb, yb, vx, vy).active);
+          // the gap: depth on both sides, to δ²/2 × the curvatures
+          EXPECT_NEAR(on_rail.penetration, depth, delta * delta * curve);
+          EXPECT_NEAR(on_lead.penetration, on_rail.penetration, delta * delta * curve);
+          // its gradient by central differences: −n on both sides, to δ × the curvatures
+          const double h = 0.1 * delta;
+          auto gradient = [&](const Guide& g, double x, double y, double& gx, double& gy) {
+            gx = (guide_contact(g, x + h, y, vx, vy).penetration -
+                  guide_contact(g, x - h, y, vx, vy).penetration) /
+                 (2 * h);
+            gy = (guide_contact(g, x, y + h, vx, vy).penetration -
+                  guide_contact(g, x, y - h, vx, vy).penetration) /
+                 (2 * h);
+          };
+          double rgx = 0, rgy = 0, lgx = 0, lgy = 0;
+          gradient(rail, xa, ya, rgx, rgy);
+          gradient(lead, xb, yb, lgx, lgy);
+          const double slope = 2.0 * delta * curve + 1e-6 * (1.0 + 1e-7 / delta);
+          EXPECT_NEAR(rgx, -e.nx, slope);
+          EXPECT_NEAR(rgy, -e.ny, slope);
+          EXPECT_NEAR(lgx, rgx, 2.0 * slope) << inside << end << depth << delta;
+          EXPECT_NEAR(lgy, rgy, 2.0 * slope) << inside << end << depth << delta;
+          // the force: continuous across the joint; the bare rail's end drops it
+          const Total in = total(with, xa, ya, vx, vy), past = total(with, xb, yb, vx, vy);
+          ASSERT_EQ(in.active, 1);
+          ASSERT_EQ(past.active, 1);
+          const double f = std::hypot(in.fx, in.fy);
+          EXPECT_GT(f, 0.5 * k * depth);
+          EXPECT_LT(std::hypot(past.fx - in.fx, past.fy - in.fy),
+                    4.0 * (f + k * delta) * delta * curve)
+              << inside << " end " << end << " depth " << depth << " delta " << delta;
+          EXPECT_EQ(total({rail}, xb, yb, vx, vy).active, 0);
+        }
+        for (const double s : {-1e-4, -1e-5, -1e-6, 1e-6, 1e-5, 1e-4}) {
+          double x = 0, y = 0;
+          point(s, x, y);
+          expect_blocks_match_differences(with, x, y, vx, vy, 1e-3 * std::abs(s));
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(checked, 2 * 2 * 2 * 6);
+}
+
+// lead_in_cover against a brute force: roller centres sampled over each lead-in's contact band (its
+// sweep within its ends, R − r to R + r from its centre), those guide_contact finds active measured
+// round the rail's centre from its end: their farthest is the cover, to the sampling (from below).
+// A lead-in that validates shares no contact point with the rail or the other lead-in; on an arc
+// whose open part is narrower than the two covers (an inside ring from −170° to 170°) the lead-in
+// is refused on lead_in_angle, and the brute force finds points in two contacts at once there.
+// Outside an arc the lead-in's radius must be below the arc's: R = ρ is refused on lead_in_radius.
+TEST(DynamicsLeadIn, ArcRailLeadInsCoverNoContactOfTheRail) {
+  struct Sampled {
+    double farthest = 0.0;  // [rad] round C from the end
+    int shared = 0;         // points in more than one contact
+  };
+  const auto sample = [](const Guide& rail, const LeadIn& lead, const std::vector<Guide>& arcs) {
+    Sampled out;
+    std::vector<Guide> all{rail};
+    all.insert(all.end(), arcs.begin(), arcs.end());
+    const double r = rail.roller_radius;
+    for (std::size_t k = 0; k < arcs.size(); ++k) {
+      const Guide& a = arcs[k];
+      const bool at_end = k == 1 || !lead.at_start;
+      const double end = at_end ? rail.end_angle : rail.start_angle;
+      // (off its ends: the joint's line bounds both the rail's contact and the lead-in's, where
+      // the rounding of either angle may count a point in both)
+      for (int i = 1; i < 400; ++i)
+        for (int j = 0; j <= 200; ++j) {
+          const double phi = a.start_angle + (a.end_angle - a.start_angle) * i / 400.0;
+          const double dist = a.radius - r + 2.0 * r * j / 200.0;
+          const double x = a.centre_x + dist * std::cos(phi), y = a.centre_y + dist * std::sin(phi);
+          int on = 0;
+          for (const Guide& g : all) on += guide_contact(g, x, y, 0.0, 0.0).active ? 1 : 0;
+          out.shared += on > 1 ? 1 : 0;
+          if (!guide_contact(a, x, y, 0.0, 0.0).active) continue;
+          double turn = std::atan2(y - rail.centre_y, x - rail.centre_x) - end;
+          turn -= 2.0 * kPi * std::floor(turn / (2.0 * kPi) + 0.5);
+          out.farthest = std::max(out.farthest, std::abs(turn));
+        }
+    }
+    return out;
+  };
+  for (const bool inside : {false, true}) {
+    const Guide rail = arc_rail(inside);
+    for (const double big : {0.004, 0.05, 0.15}) {
+      for (const double angle : {0.2, 1.0, kPi / 2}) {
+        const LeadIn lead{big, angle, true, true};
+        const double cover = lead_in_cover(rail, lead);
+        const Sampled found = sample(rail, lead, lead_in_arcs(rail, lead));
+        EXPECT_LE(found.farthest, cover + 1e-12) << inside << " " << big << " " << angle;
+        EXPECT_GT(found.farthest, cover * (1.0 - 2e-2)) << inside << " " << big << " " << angle;
+        EXPECT_EQ(found.shared, 0) << inside << " " << big << " " << angle;
+      }
+    }
+  }
+  // the ring round a wheel, open 20°: a 20 mm, 30° lead-in covers 17.5° round its centre at each
+  // end (the tangent's angle from C)
+  Guide ring = arc_rail(true);
+  ring.radius = 0.0438;
+  ring.start_angle = -170.0 * kPi / 180.0;
+  ring.end_angle = 170.0 * kPi / 180.0;
+  const LeadIn both{0.02, kPi / 6, true, true}, one{0.02, kPi / 6, false, true};
+  EXPECT_NEAR(lead_in_cover(ring, both) * 180.0 / kPi, 17.5, 0.05);
+  const std::vector<Issue> refused = validate(both, ring);
+  ASSERT_EQ(refused.size(), 1U);
+  EXPECT_EQ(refused[0].field, "lead_in_angle");
+  EXPECT_NE(refused[0].expected.find("open part"), std::string::npos) << refused[0].expected;
+  EXPECT_TRUE(lead_in_arcs(ring, both).empty());
+  // the same lead-ins laid regardless: contact points shared by the two lead-ins
+  Guide open = ring;
+  open.end_angle = 100.0 * kPi / 180.0;  // (their geometry is the ends', not the sweep's)
+  std::vector<Guide> forced = lead_in_arcs(open, {0.02, kPi / 6, true, false});
+  Guide open_end = ring;
+  open_end.start_angle = -100.0 * kPi / 180.0;
+  for (const Guide& a : lead_in_arcs(open_end, one)) forced.push_back(a);
+  ASSERT_EQ(forced.size(), 2U);
+  EXPECT_GT(sample(ring, both, forced).shared, 0);
+  EXPECT_TRUE(validate(one, ring).empty());  // one end: 17.5° fits
+  // a closed ring has no end to lead in from
+  Guide closed = ring;
+  closed.end_angle = closed.start_angle + 2.0 * kPi;
+  EXPECT_TRUE(lead_in_arcs(closed, one).empty());
+  EXPECT_EQ(validate(one, closed).size(), 1U);
+  // outside an arc: R < ρ
+  const Guide convex = arc_rail(false);
+  for (const double big : {0.2, 0.5}) {
+    const std::vector<Issue> flat = validate(LeadIn{big, 0.5, true, true}, convex);
+    ASSERT_EQ(flat.size(), 1U) << big;
+    EXPECT_EQ(flat[0].field, "lead_in_radius");
+    EXPECT_TRUE(lead_in_arcs(convex, {big, 0.5, true, true}).empty());
+  }
+  EXPECT_TRUE(validate(LeadIn{0.5, 0.5, true, true}, arc_rail(true)).empty());  // inside: any R
+}
+
+// A roller pressed 0.3 mm into the arc rail's surface (its centre on the circle ρ ± r ∓ 0.3 mm
+// about C) passing from 0.3 rad beyond an end onto the rail at 0.5 m/s, sampled every 50 µm of
+// its path: with the bare arc the force jumps at the square end from nothing to k_c × 0.3 mm at
+// once; with a 50 mm, 30° lead-in its largest step between samples is a few per cent of that jump.
+TEST(DynamicsLeadIn, ARollerArrivingBelowAnArcRailsEndIsCaughtGradually) {
+  for (const bool inside : {false, true}) {
+    const Guide rail = arc_rail(inside);
+    std::vector<Guide> with{rail};
+    for (const Guide& a : lead_in_arcs(rail, {0.05, kPi / 6, true, true})) with.push_back(a);
+    ASSERT_EQ(with.size(), 3U);
+    const double depth = 3e-4, r = rail.roller_radius;
+    const double line = inside ? rail.radius - r + depth : rail.radius + r - depth;
+    for (const bool at_end : {false, true}) {
+      const double end = at_end ? rail.end_angle : rail.start_angle;
+      const double toward = at_end ? -1.0 : 1.0;  // from past the end onto the rail
+      const int samples = static_cast<int>(0.4 * line / 5e-5);
+      const auto largest_step = [&](const std::vector<Guide>& guides) {
+        double last = 0.0, most = 0.0, peak = 0.0;
+        for (int j = 0; j <= samples; ++j) {
+          const double phi = end - toward * 0.3 + toward * 0.4 * j / samples;
+          const double x = rail.centre_x + line * std::cos(phi);
+          const double y = rail.centre_y + line * std::sin(phi);
+          const double vx = -toward * 0.5 * std::sin(phi), vy = toward * 0.5 * std::cos(phi);
+          const Total t = total(guides, x, y, vx, vy);
+          const double f = std::hypot(t.fx, t.fy);
+          if (j > 0) most = std::max(most, std::abs(f - last));
+          last = f;
+          peak = std::max(peak, f);
+        }
+        EXPECT_GT(peak, 0.9 * rail.contact_stiffness * depth);
+        return most;
+      };
+      const double bare = largest_step({rail}), led = largest_step(with);
+      EXPECT_GT(bare, 0.9 * rail.contact_stiffness * depth) << inside << at_end;
+      EXPECT_LT(led, 0.05 * bare) << inside << at_end;
+      std::printf(
+          "arc rail, rollers %s, %s: the force's largest step over the pass %.4g N bare, "
+          "%.4g N with the lead-in\n",
+          inside ? "inside" : "outside", at_end ? "end" : "start", bare, led);
+    }
+  }
 }
 
 }  // namespace

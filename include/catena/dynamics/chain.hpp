@@ -447,23 +447,42 @@ inline bool guide_touch_possible(const GuideBounds& b, double x, double y) {
   return x >= b.x_lo && x <= b.x_hi && y >= b.y_lo && y <= b.y_hi;
 }
 
-/// A lead-in at the ends of a straight guide (docs/models/dynamics.md, "Lead-ins"): an arc rail of
-/// surface radius R and sweep α tangent to the rail at its end, bending away from the free side, so
-/// that a roller arriving a little below the rail's surface meets the arc's gentle slope instead of
-/// the rail's square end. At the joint the arc's surface point, its normal and so the contact's
-/// penetration and force are those of the rail (the contact's stiffness jumps by f/R across it,
-/// the curvature's share); the arc ends R (1 − cos α) below the surface, R sin α past the end.
+/// A lead-in at the ends of a guide, straight or arc (docs/models/dynamics.md, "Lead-ins"): an arc
+/// rail of surface radius R and sweep α tangent to the rail at its end, bending away from the free
+/// side, so that a roller arriving a little below the rail's surface meets the arc's gentle slope
+/// instead of the rail's square end. At the joint the arc's surface point, its normal and so the
+/// contact's penetration and force are those of the rail (the contact's stiffness jumps by the
+/// curvatures' share, f/R against the rail's, across it); on a straight rail the arc ends
+/// R (1 − cos α) below the surface, R sin α past the end. On an arc rail of surface radius ρ and
+/// centre C the lead-in's centre lies on the line from C through the end, at C + (ρ − R) e with
+/// the rollers outside the rail (R < ρ: inside the rail's circle), C + (ρ + R) e with the rollers
+/// `inside` (outside the rail's circle), e the end's direction from C; the rollers ride outside
+/// the lead-in in both.
 struct LeadIn {
   double radius = 0.0;   ///< [m] R > 0: the arc's surface radius
   double angle = 0.0;    ///< [rad] α in (0, π/2]: the arc's sweep
-  bool at_start = true;  ///< at (x0, y0)
-  bool at_end = true;    ///< at (x1, y1)
+  bool at_start = true;  ///< at (x0, y0), or an arc's start_angle
+  bool at_end = true;    ///< at (x1, y1), or an arc's end_angle
 };
 /// The lead-in's values out of range, named "lead_in_radius" and "lead_in_angle".
 std::vector<Issue> validate(const LeadIn& lead);
-/// The arc guides of the lead-in on a straight rail (first the start's, then the end's, as asked),
-/// with the rail's contact law, roller radius and friction. None for an arc or a lead-in that does
-/// not validate.
+/// The lead-in's problems on `rail`: validate(lead)'s, then an arc rail's (when its centre, radius
+/// and sweep are valid; else its own checks name them): with the rollers outside it R < ρ
+/// ("lead_in_radius": the lead-in bends away from the rail's circle only curving more sharply),
+/// and the lead-in's reach round C (lead_in_cover) at each end it is laid at within the arc's open
+/// part 2π − (end_angle − start_angle) ("lead_in_angle": no roller meets the rail and its lead-in,
+/// or both lead-ins, at once).
+std::vector<Issue> validate(const LeadIn& lead, const Guide& rail);
+/// [rad] The angle round an arc rail's centre C, from the rail's end, that a lead-in's contact
+/// covers: the roller centres it touches lie within R + r of its centre, in its sweep (r the
+/// roller radius), and seen from C they span, outside (R < ρ),
+/// atan2((R + r) sin α, ρ − R + (R + r) cos α); inside, atan2((R + r) sin α, ρ + R − (R + r) cos α)
+/// up to the tangent from C, asin((R + r)/(ρ + R)), where α passes acos((R + r)/(ρ + R)). NaN
+/// for a straight rail or one where these do not apply (outside R ≥ ρ, inside ρ ≤ r).
+double lead_in_cover(const Guide& rail, const LeadIn& lead);
+/// The arc guides of the lead-in on a rail (first the start's, then the end's, as asked), with the
+/// rail's contact law, roller radius and friction. None for a lead-in that does not validate on
+/// the rail (validate(lead, rail)), or a rail whose geometry is invalid.
 std::vector<Guide> lead_in_arcs(const Guide& rail, const LeadIn& lead);
 
 struct Model {

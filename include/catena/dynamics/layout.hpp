@@ -140,13 +140,13 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
                        const std::vector<Circle>& circles, const std::vector<double>& tip,
                        const std::vector<Guide>& guides, double roller, double pitch);
 
-/// What the lead-in arc `arc` laid at an end of the straight guide `rail` (`lead_in_arcs`) runs
+/// What the lead-in arc `arc` laid at an end of the guide `rail` (`lead_in_arcs`) runs
 /// into, as a name; empty when clear (docs/models/dynamics.md, "Lead-ins"). Sampled along the
 /// arc's surface (at least 512 samples, at most a quarter roller apart): the chain's path `path`
 /// closer than `roller`/2 (a roller's centre on it would be in the arc's contact), a wheel's wrap
 /// named "the chain on sprocket[w]", a span "the span sprocket[a] -> sprocket[b]", but for the
-/// spans the rail carries (a point within `roller` of its segment: the arc bends away from
-/// them); where the rail's end itself is nearer a piece than `roller`/2 (a rail that runs to a
+/// spans the rail carries (a point within `roller` of its segment or arc: the lead-in bends away
+/// from them); where the rail's end itself is nearer a piece than `roller`/2 (a rail that runs to a
 /// wheel's tangent point), the arc may come no closer to that piece than the rail's end is; and a
 /// guide of `guides` closer than `roller`/2 ("guide[g]"), but for those whose index is in `skip`
 /// (the rail and its own arcs). Only the pieces and guides whose bounding box comes within

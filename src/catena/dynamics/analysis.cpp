@@ -224,14 +224,15 @@ std::vector<Parameter> guide_fields() {
       number("contact_damping",
              "roller-rail damping [N s/m], >= 0 (default: dynamics.contact_damping)"),
       quantity("lead_in_radius", K::kLength,
-               "straight: a lead-in, the surface radius of an arc tangent to the rail at its end "
-               "and bending away from the rollers, > 0 (default: none, the rail's end is square)"),
+               "straight or arc: a lead-in, the surface radius of an arc tangent to the rail at "
+               "its end and bending away from the rollers, > 0 (on an arc with the rollers "
+               "outside, below its radius; default: none, the rail's end is square)"),
       quantity("lead_in_angle", K::kAngle,
-               "straight: the lead-in arc's sweep, in [0.1, 90] deg (default 30 deg; with "
-               "lead_in_radius)"),
+               "straight or arc: the lead-in arc's sweep, in [0.1, 90] deg (default 30 deg; with "
+               "lead_in_radius; on an arc its lead-ins fit between the arc's ends)"),
       text("lead_in_end",
-           "straight: where the lead-ins go: start (at x0, y0), end (at x1, y1) or both "
-           "(default both; with lead_in_radius)")};
+           "straight or arc: where the lead-ins go: start (at x0, y0; an arc's start_angle), end "
+           "(at x1, y1; its end_angle) or both (default both; with lead_in_radius)")};
 }
 
 std::vector<Parameter> sprocket_fields() {
@@ -2044,8 +2045,7 @@ Setup parse(const analysis::Inputs& in) {
     const std::vector<std::string> theirs =
         straight ? std::vector<std::string>{"centre_x",    "centre_y",  "radius",
                                             "start_angle", "end_angle", "inside"}
-                 : std::vector<std::string>{
-                       "x0", "y0", "x1", "y1", "lead_in_radius", "lead_in_angle", "lead_in_end"};
+                 : std::vector<std::string>{"x0", "y0", "x1", "y1"};
     bool complete = true;
     for (const std::string& key : mine) {
       if (g.value.count(key)) continue;
@@ -2134,17 +2134,17 @@ Setup parse(const analysis::Inputs& in) {
       if (key != "kind" && key != "inside" && key != "load_inertia" &&
           key.rfind("lead_in_", 0) != 0 && !g.value.count(key))
         readable = false;  // the rail's own values (an unreadable lead-in value is the lead-in's)
-    // a lead-in (straight rails only; an arc's lead-in keys are refused above): its values'
-    // checks, named per field, with the rail's
+    // a lead-in (a straight rail's or an arc's): its values' checks, named per field, with the
+    // rail's
     std::vector<Guide> lead_ins;
     bool lead_ins_at_start = false;
-    if (straight && (g.seen.count("lead_in_angle") || g.seen.count("lead_in_end")) &&
+    if ((g.seen.count("lead_in_angle") || g.seen.count("lead_in_end")) &&
         !g.seen.count("lead_in_radius")) {
       issues.push_back({field("lead_in_radius"), "(missing)",
                         "a lead-in's radius, > 0 m (lead_in_angle and lead_in_end set a lead-in's "
                         "sweep and ends)"});
     }
-    if (straight && g.seen.count("lead_in_radius")) {
+    if (g.seen.count("lead_in_radius")) {
       LeadIn lead;
       lead.radius = get("lead_in_radius", NAN);
       lead.angle = get("lead_in_angle", 30.0 * std::numbers::pi / 180.0);
@@ -2157,12 +2157,21 @@ Setup parse(const analysis::Inputs& in) {
         if (!g.value.count(issue.field)) continue;  // not read: reported already
         issues.push_back({field(issue.field), issue.value, issue.expected});
       }
+      // on an arc rail whose own values are read whole (else they are named, and no lead-in is
+      // laid): its radius and the room between its ends (validate(LeadIn, Guide)), named whether
+      // or not the user wrote the lead-in's sweep
+      bool on_rail = true;  // no problem of the lead-in on this rail
+      if (lead_issues.empty() && readable && complete)
+        for (const Issue& issue : validate(lead, guide)) {
+          issues.push_back({field(issue.field), issue.value, issue.expected});
+          on_rail = false;
+        }
       // the bound (docs/models/dynamics.md, "Lead-ins"): a closed chain of length N p spans no
       // chord longer than N p / 2 (the way back is at least as long), so an arc whose chord
       // 2 R sin(α/2) is longer cannot be a run of this chain: at most R = N p / (4 sin(α/2))
       const double chain_length = s.links * s.pitch;
       bool bounded = false;  // within the bound (then checked against the path below)
-      if (lead_issues.empty() && chain_length > 0.0 && std::isfinite(chain_length)) {
+      if (lead_issues.empty() && on_rail && chain_length > 0.0 && std::isfinite(chain_length)) {
         const double most = chain_length / (4.0 * std::sin(0.5 * lead.angle));
         bounded = !(lead.radius > most);
         if (!bounded)

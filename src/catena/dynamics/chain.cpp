@@ -455,26 +455,78 @@ std::vector<Issue> validate(const LeadIn& lead) {
   return out;
 }
 
+namespace {
+// An arc rail whose centre, radius and sweep validate would accept (else its own checks name them
+// and no lead-in is laid on it)
+bool arc_rail_valid(const Guide& rail) {
+  const double sweep = rail.end_angle - rail.start_angle;
+  return rail.kind == Guide::Kind::kArc && std::isfinite(rail.centre_x) &&
+         std::isfinite(rail.centre_y) && std::isfinite(rail.radius) && rail.radius > 0.0 &&
+         std::isfinite(rail.start_angle) && std::isfinite(rail.end_angle) && sweep > 0.0 &&
+         sweep <= 2.0 * std::numbers::pi;
+}
+}  // namespace
+
+double lead_in_cover(const Guide& rail, const LeadIn& lead) {
+  if (rail.kind != Guide::Kind::kArc) return NAN;
+  const double rho = rail.radius, big = lead.radius, alpha = lead.angle;
+  const double reach = big + rail.roller_radius;  // the roller centres' farthest from its centre
+  // in the end's frame (x along e from C, y past the end) the lead-in's centre is at
+  // (ρ ∓ R, 0) and the roller centres it touches at (ρ ∓ R ± s cos θ, s sin θ), s ≤ R + r,
+  // θ ≤ α ≤ π/2: their angle from C grows with s, and with θ outside (its derivative
+  // ∝ s ((ρ − R) cos θ + s)); inside it peaks where the line from C touches the circle of R + r
+  if (!rail.inside) {
+    if (!(big < rho)) return NAN;
+    return std::atan2(reach * std::sin(alpha), rho - big + reach * std::cos(alpha));
+  }
+  if (!(rho > rail.roller_radius)) return NAN;
+  const double far = rho + big;  // |C_L − C|
+  if (std::cos(alpha) <= reach / far) return std::asin(reach / far);
+  return std::atan2(reach * std::sin(alpha), far - reach * std::cos(alpha));
+}
+
+std::vector<Issue> validate(const LeadIn& lead, const Guide& rail) {
+  std::vector<Issue> out = validate(lead);
+  if (!out.empty() || !arc_rail_valid(rail)) return out;
+  const double deg = 180.0 / std::numbers::pi;
+  if (!rail.inside && !(lead.radius < rail.radius)) {
+    out.push_back({"lead_in_radius", check::format_si(lead.radius, "m"),
+                   "a lead-in radius 0 < R < " + check::format_si(rail.radius, "m") +
+                       ", the arc's surface radius (rollers outside an arc: the lead-in bends "
+                       "away from the rail's circle only curving more sharply; R = the radius "
+                       "continues the rail, a larger R rises above its circle)"});
+    return out;
+  }
+  const double cover = lead_in_cover(rail, lead);
+  if (!std::isfinite(cover)) return out;  // inside an arc no wider than a roller: its own check
+  const int ends = (lead.at_start ? 1 : 0) + (lead.at_end ? 1 : 0);
+  const double open = 2.0 * std::numbers::pi - (rail.end_angle - rail.start_angle);
+  if (ends * cover > open)
+    out.push_back(
+        {"lead_in_angle", check::format_si(lead.angle * deg, "deg"),
+         "a lead-in whose contact, " + check::format_si(cover * deg, "deg") +
+             " round the arc's centre at each of its " + std::to_string(ends) +
+             (ends == 1 ? " end" : " ends") +
+             ", fits the arc's open part, 360 deg - (end_angle - start_angle) = " +
+             check::format_si(open * deg, "deg") +
+             " (else a roller meets the rail and a lead-in at once): a smaller lead_in_angle or "
+             "lead_in_radius, or one lead_in_end"});
+  return out;
+}
+
 std::vector<Guide> lead_in_arcs(const Guide& rail, const LeadIn& lead) {
   std::vector<Guide> out;
-  if (rail.kind != Guide::Kind::kStraight || !validate(lead).empty()) return out;
-  const GuideFrame f = guide_frame(rail);
-  if (!(f.length > 0.0) || !std::isfinite(f.length)) return out;
-  // the free side's normal n = perp(u); the arc's centre R below the rail's end along −n, its
-  // surface point at the end's angle atan2(n); going on along the rail turns from n toward u
-  // (clockwise) at the second end, toward −u (counter-clockwise) at the first
-  const double nx = -f.uy, ny = f.ux;
-  const double up = std::atan2(ny, nx);
-  auto arc = [&](double ex, double ey, double from, double to) {
+  if (!validate(lead, rail).empty()) return out;
+  auto arc = [&](double cx, double cy, double from, double to) {
     Guide g = rail;
     g.kind = Guide::Kind::kArc;
     g.x0 = g.y0 = g.x1 = g.y1 = 0.0;
-    g.centre_x = ex - lead.radius * nx;
-    g.centre_y = ey - lead.radius * ny;
+    g.centre_x = cx;
+    g.centre_y = cy;
     g.radius = lead.radius;
     g.start_angle = from;
     g.end_angle = to;
-    g.inside = false;
+    g.inside = false;        // the rollers ride outside the lead-in, on a straight or arc rail
     g.load_per_metre = 0.0;  // the rail's load is the rail's (an arc carries none)
     g.load_inertia = false;
     g.load_speed = 0.0;
@@ -483,8 +535,45 @@ std::vector<Guide> lead_in_arcs(const Guide& rail, const LeadIn& lead) {
     if (rail.line_law) use_line_law(g, rail.line.width);  // the arc's own curvature
     out.push_back(g);
   };
-  if (lead.at_start) arc(rail.x0, rail.y0, up, up + lead.angle);
-  if (lead.at_end) arc(rail.x1, rail.y1, up - lead.angle, up);
+  if (rail.kind == Guide::Kind::kArc) {
+    if (!arc_rail_valid(rail)) return out;
+    // The lead-in's centre on the line from C through the end, R from the end on the rail's far
+    // side: C + (ρ − R) e outside (its surface point at the end at the end's angle a), C + (ρ + R)
+    // e inside (there at a + π). Past the end the rail runs on along its counter-clockwise tangent
+    // t at the end angle, past the start along −t. Outside, the lead-in's counter-clockwise tangent
+    // at a is t: its arc runs from a on to a + α at the end, from a − α to a at the start.
+    // Inside, it is −t at a + π: from a + π − α to a + π at the end, from a + π to a + π + α at the
+    // start.
+    const double pi = std::numbers::pi;
+    const double off = rail.inside ? rail.radius + lead.radius : rail.radius - lead.radius;
+    auto at = [&](double a, double from, double to) {
+      arc(rail.centre_x + off * std::cos(a), rail.centre_y + off * std::sin(a), from, to);
+    };
+    const double a0 = rail.start_angle, a1 = rail.end_angle;
+    if (lead.at_start) {
+      if (rail.inside)
+        at(a0, a0 + pi, a0 + pi + lead.angle);
+      else
+        at(a0, a0 - lead.angle, a0);
+    }
+    if (lead.at_end) {
+      if (rail.inside)
+        at(a1, a1 + pi - lead.angle, a1 + pi);
+      else
+        at(a1, a1, a1 + lead.angle);
+    }
+    return out;
+  }
+  const GuideFrame f = guide_frame(rail);
+  if (!(f.length > 0.0) || !std::isfinite(f.length)) return out;
+  // the free side's normal n = perp(u); the arc's centre R below the rail's end along −n, its
+  // surface point at the end's angle atan2(n); going on along the rail turns from n toward u
+  // (clockwise) at the second end, toward −u (counter-clockwise) at the first
+  const double nx = -f.uy, ny = f.ux;
+  const double up = std::atan2(ny, nx);
+  if (lead.at_start)
+    arc(rail.x0 - lead.radius * nx, rail.y0 - lead.radius * ny, up, up + lead.angle);
+  if (lead.at_end) arc(rail.x1 - lead.radius * nx, rail.y1 - lead.radius * ny, up - lead.angle, up);
   return out;
 }
 

@@ -839,16 +839,23 @@ LeadInReach lead_in_reach(const BeltPath& path, const Guide& rail, const Guide& 
                           double roller, bool keep_samples) {
   const double r = 0.5 * roller;
   LeadInReach out;
-  // the spans the rail carries: a point within a roller's diameter of its segment (the rollers
-  // riding on it); the arc bends away from them
+  // the spans the rail carries: a point within a roller's diameter of its surface (the rollers
+  // riding on it; a straight rail's segment or an arc's); the arc bends away from them
   std::vector<bool> carried(path.pieces.size(), false);
   for (std::size_t k = 0; k < path.pieces.size(); ++k) {
     const PathPiece& q = path.pieces[k];
     for (int j = 0; !q.arc && !carried[k] && j <= 256; ++j) {
       const PathPoint on = span_sample(q, j, 256);
-      carried[k] = segment_distance(on.x, on.y, rail.x0, rail.y0, rail.x1, rail.y1) < roller;
+      carried[k] = guide_distance(rail, on.x, on.y) < roller;
     }
   }
+  // the rail's ends: a straight rail's (x0, y0) and (x1, y1), an arc's surface points at its start
+  // and end angles
+  const bool straight = rail.kind == Guide::Kind::kStraight;
+  const double rx0 = straight ? rail.x0 : rail.centre_x + rail.radius * std::cos(rail.start_angle);
+  const double ry0 = straight ? rail.y0 : rail.centre_y + rail.radius * std::sin(rail.start_angle);
+  const double rx1 = straight ? rail.x1 : rail.centre_x + rail.radius * std::cos(rail.end_angle);
+  const double ry1 = straight ? rail.y1 : rail.centre_y + rail.radius * std::sin(rail.end_angle);
   // the rail's end the arc is laid at (the rail's end nearer one of the arc's ends)
   const double sx = arc.centre_x + arc.radius * std::cos(arc.start_angle);
   const double sy = arc.centre_y + arc.radius * std::sin(arc.start_angle);
@@ -857,8 +864,8 @@ LeadInReach lead_in_reach(const BeltPath& path, const Guide& rail, const Guide& 
   auto to_arc_ends = [&](double x, double y) {
     return std::min(std::hypot(x - sx, y - sy), std::hypot(x - fx, y - fy));
   };
-  const bool first = to_arc_ends(rail.x0, rail.y0) <= to_arc_ends(rail.x1, rail.y1);
-  const double ex = first ? rail.x0 : rail.x1, ey = first ? rail.y0 : rail.y1;
+  const bool first = to_arc_ends(rx0, ry0) <= to_arc_ends(rx1, ry1);
+  const double ex = first ? rx0 : rx1, ey = first ? ry0 : ry1;
   const double sweep = arc.end_angle - arc.start_angle;
   const int samples = arc_samples(arc.radius * sweep, roller);
   if (keep_samples) {
