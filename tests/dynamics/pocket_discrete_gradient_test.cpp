@@ -436,6 +436,52 @@ TEST(DynamicsPocketDiscreteGradient, AcrossTheMouthWithinTheClearanceIsCorrected
   EXPECT_GT(theta_best, 1e-2);
 }
 
+// The skip's threshold: a jump of the pocket's law's energy at a gap of one smoothing length ε,
+// k ε²/6 (1.7e-5 J here), or less is corrected, a larger one keeps the θ point's force. On the
+// mouth's ramp (w = c) the leftover jump (1 − W(g)) E₀(g) grows from 0 at g = c: a joint entering
+// from 2 µm above the mouth to 2 µm below it where g = 1.0126c on the mouth meets a jump of
+// 1e-5 J, corrected (its work −ΔE); where g = 1.03c, 1.4e-4 J, the θ point's force bit for bit.
+// (With no threshold the first fails; the pieces' test corrected both, and the second fails.)
+TEST(DynamicsPocketDiscreteGradient, AJumpBelowTheSmoothingsEnergyIsCorrected) {
+  Sprocket on = wheel8(true), off = wheel8(false);
+  const double c = kClearance, psi = 0.4;
+  on.pocket_mouth = off.pocket_mouth = c;
+  const double eps = on.contact_smoothing, threshold = kStiffness * eps * eps / 6.0;
+  for (const double x : {0.0126, 0.03}) {
+    // off the vertex so that g = (1 + x) c on the mouth: |e| = (2 + x) c, c/2 below it radially
+    const double along = std::sqrt((2.0 + x) * (2.0 + x) - 0.25) * c;
+    const double jump = energy_at(on, near_vertex(on, psi, 2, along, 1e-12), psi) -
+                        energy_at(on, near_vertex(on, psi, 2, along, -1e-12), psi);
+    const bool small = x < 0.02;
+    if (small) {
+      ASSERT_GT(jump, 0.3 * threshold);
+      ASSERT_LT(jump, threshold);
+    } else {
+      ASSERT_GT(jump, 3.0 * threshold);
+    }
+    for (const double turn : {0.0, 1e-3}) {
+      const Point p0 = near_vertex(on, psi, 2, along, -2e-6);
+      const Point p1 = near_vertex(on, psi + turn, 2, along, 2e-6);
+      const SeatContact with = step_contact(on, p0, p1, psi, psi + turn);
+      const SeatContact without = step_contact(off, p0, p1, psi, psi + turn);
+      const double change = energy_at(on, p1, psi + turn) - energy_at(on, p0, psi);
+      std::printf(
+          "pocket discrete gradient across the ramp's jump %.3g J (threshold %.3g J), "
+          "turn %g: dE %.4g J, S %.4g N/m\n",
+          jump, threshold, turn, change, with.skew);
+      if (small) {
+        EXPECT_NE(with.skew, 0.0) << turn;
+        const double work = step_work(on, p0, p1, psi, psi + turn, nullptr);
+        EXPECT_LT(std::abs(work + change), 1e-9 * std::abs(change)) << turn;
+      } else {
+        EXPECT_EQ(with.skew, 0.0) << turn;
+        EXPECT_EQ(with.force, without.force) << turn;
+        EXPECT_EQ(with.torque, without.torque) << turn;
+      }
+    }
+  }
+}
+
 // A link's two joints falling radially onto a driven pocket wheel at `inward` [m/s], the leading
 // one `off` [m] along the pitch circle from vertex 1 and 10 µm above the mouth, both turning with
 // the wheel at `spin` [rad/s] and sliding along it at `slip` [m/s]; the links undamped.
