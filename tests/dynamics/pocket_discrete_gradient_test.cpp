@@ -349,7 +349,11 @@ TEST(DynamicsPocketDiscreteGradient, StartsMemoGivesTheSameContact) {
 // (10c) from the mouth (no jump there), is corrected. With the release a joint not held that
 // enters over the mouth 3c off its vertex, from 10 µm above to 20 µm below it, jumps from 0 to
 // E₀(g) S(u) as over the sharp mouth (held, it stays in the pocket's law beyond the mouth: the
-// release's case of the work test).
+// release's case of the work test). Over the mouth's ramp (w = c) a joint entering 3.5c off its
+// vertex, from 2 µm above the mouth to 2 µm below it, meets the ramp's leftover jump E₀(g)(1 − W):
+// W = 0 from g = 2c on, so the whole E₀(2.54c) — ramp and pocket are one law's pieces there, and
+// the step was corrected with S = jump/|Δz|² before the jump was taken on the energy; 1.2c off
+// (g = 0.3c on the mouth, W = 1: no jump) it is corrected.
 TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheForceIsTheThetaPoints) {
   Sprocket release_on = wheel8(true), release_off = wheel8(false);
   release_on.pocket_release = release_off.pocket_release = true;
@@ -358,15 +362,19 @@ TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheForceIsTheThetaPoints) {
     const char* what;
     double along0, below0, along1, below1;
     bool corrected, release;
+    double mouth;  // the ramp's width w
   };
   const Across steps[] = {
-      {"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -2e-6, false, false},
-      {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, false, false},
-      {"capture deep", 0.0, 10.4 * c, 0.0, 10.6 * c, true, false},
-      {"the release's mouth, not held", 3.0 * c, -10e-6, 3.0 * c, 20e-6, false, true}};
+      {"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -2e-6, false, false, 0.0},
+      {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, false, false, 0.0},
+      {"capture deep", 0.0, 10.4 * c, 0.0, 10.6 * c, true, false, 0.0},
+      {"the release's mouth, not held", 3.0 * c, -10e-6, 3.0 * c, 20e-6, false, true, 0.0},
+      {"the ramp's leftover", 3.5 * c, -2e-6, 3.5 * c, 2e-6, false, false, c},
+      {"the ramp's mouth near the vertex", 1.2 * c, -2e-6, 1.2 * c, 2e-6, true, false, c}};
   for (const Across& a : steps) {
-    const Sprocket on = a.release ? release_on : wheel8(true);
-    const Sprocket off = a.release ? release_off : wheel8(false);
+    Sprocket on = a.release ? release_on : wheel8(true);
+    Sprocket off = a.release ? release_off : wheel8(false);
+    on.pocket_mouth = off.pocket_mouth = a.mouth;
     const Point p0 = near_vertex(on, psi, 2, a.along0, a.below0);
     const Point p1 = near_vertex(on, psi + turn, 2, a.along1, a.below1);
     const SeatContact with = step_contact(on, p0, p1, psi, psi + turn);
@@ -384,6 +392,93 @@ TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheForceIsTheThetaPoints) {
     EXPECT_EQ(with.skew, 0.0) << a.what;
     EXPECT_EQ(with.force, without.force) << a.what;
     EXPECT_EQ(with.torque, without.torque) << a.what;
+  }
+}
+
+// A step across the sharp mouth within about 0.87c of its vertex, where the pocket's E₀(g) is 0 on
+// the mouth (g ≤ 0: the energy has no jump there), is corrected like any other: a joint entering
+// from 5 µm above the mouth 0.3c off its vertex to 30 µm into its pocket (the θ point still within
+// the clearance: the correction acts alone), and one leaving its pocket from 10 µm in to end 3 µm
+// above the mouth within its clearance (the step the command's example stopped on at θ = ½), the
+// wheel held and turning 1e-3 rad: the work is −ΔE. (The pieces' test, before, kept the θ point's
+// force on both, the mouth being crossed between the pocket's law and out of contact.)
+TEST(DynamicsPocketDiscreteGradient, AcrossTheMouthWithinTheClearanceIsCorrected) {
+  const Sprocket on = wheel8(true), off = wheel8(false);
+  const double c = kClearance, psi = 0.4;
+  struct Across {
+    const char* what;
+    double along0, below0, along1, below1;
+  };
+  const Across steps[] = {{"entering", 0.3 * c, -5e-6, 0.1 * c, 1.5 * c + 30e-6},
+                          {"leaving", 0.1 * c, 1.5 * c + 10e-6, 0.2 * c, -3e-6}};
+  double worst = 0.0, theta_best = INFINITY;
+  for (const double turn : {0.0, 1e-3}) {
+    for (const Across& a : steps) {
+      const Point p0 = near_vertex(on, psi, 2, a.along0, a.below0);
+      const Point p1 = near_vertex(on, psi + turn, 2, a.along1, a.below1);
+      const double e0 = energy_at(on, p0, psi), e1 = energy_at(on, p1, psi + turn);
+      ASSERT_GT(std::max(e0, e1), 1e-3) << a.what;  // in contact at one end, out at the other
+      ASSERT_EQ(std::min(e0, e1), 0.0) << a.what;
+      const SeatContact with = step_contact(on, p0, p1, psi, psi + turn);
+      EXPECT_NE(with.skew, 0.0) << a.what << " turn " << turn;
+      const double work = step_work(on, p0, p1, psi, psi + turn, nullptr);
+      const double err = std::abs(work + e1 - e0) / std::abs(e1 - e0);
+      EXPECT_LT(err, 1e-9) << a.what << " turn " << turn << ": work " << work << " dE " << e1 - e0;
+      worst = std::max(worst, err);
+      const double theta_work = step_work(off, p0, p1, psi, psi + turn, nullptr);
+      theta_best = std::min(theta_best, std::abs(theta_work + e1 - e0) / std::abs(e1 - e0));
+    }
+  }
+  std::printf(
+      "pocket discrete gradient across the mouth within the clearance: |work + dE| / |dE| %.2e; "
+      "the theta point's force at best %.3g\n",
+      worst, theta_best);
+  EXPECT_GT(theta_best, 1e-2);
+}
+
+// The skip's threshold: a jump of the pocket's law's energy at a gap of one smoothing length ε,
+// k ε²/6 (1.7e-5 J here), or less is corrected, a larger one keeps the θ point's force. On the
+// mouth's ramp (w = c) the leftover jump (1 − W(g)) E₀(g) grows from 0 at g = c: a joint entering
+// from 2 µm above the mouth to 2 µm below it where g = 1.0126c on the mouth meets a jump of
+// 1e-5 J, corrected (its work −ΔE); where g = 1.03c, 1.4e-4 J, the θ point's force bit for bit.
+// (With no threshold the first fails; the pieces' test corrected both, and the second fails.)
+TEST(DynamicsPocketDiscreteGradient, AJumpBelowTheSmoothingsEnergyIsCorrected) {
+  Sprocket on = wheel8(true), off = wheel8(false);
+  const double c = kClearance, psi = 0.4;
+  on.pocket_mouth = off.pocket_mouth = c;
+  const double eps = on.contact_smoothing, threshold = kStiffness * eps * eps / 6.0;
+  for (const double x : {0.0126, 0.03}) {
+    // off the vertex so that g = (1 + x) c on the mouth: |e| = (2 + x) c, c/2 below it radially
+    const double along = std::sqrt((2.0 + x) * (2.0 + x) - 0.25) * c;
+    const double jump = energy_at(on, near_vertex(on, psi, 2, along, 1e-12), psi) -
+                        energy_at(on, near_vertex(on, psi, 2, along, -1e-12), psi);
+    const bool small = x < 0.02;
+    if (small) {
+      ASSERT_GT(jump, 0.3 * threshold);
+      ASSERT_LT(jump, threshold);
+    } else {
+      ASSERT_GT(jump, 3.0 * threshold);
+    }
+    for (const double turn : {0.0, 1e-3}) {
+      const Point p0 = near_vertex(on, psi, 2, along, -2e-6);
+      const Point p1 = near_vertex(on, psi + turn, 2, along, 2e-6);
+      const SeatContact with = step_contact(on, p0, p1, psi, psi + turn);
+      const SeatContact without = step_contact(off, p0, p1, psi, psi + turn);
+      const double change = energy_at(on, p1, psi + turn) - energy_at(on, p0, psi);
+      std::printf(
+          "pocket discrete gradient across the ramp's jump %.3g J (threshold %.3g J), "
+          "turn %g: dE %.4g J, S %.4g N/m\n",
+          jump, threshold, turn, change, with.skew);
+      if (small) {
+        EXPECT_NE(with.skew, 0.0) << turn;
+        const double work = step_work(on, p0, p1, psi, psi + turn, nullptr);
+        EXPECT_LT(std::abs(work + change), 1e-9 * std::abs(change)) << turn;
+      } else {
+        EXPECT_EQ(with.skew, 0.0) << turn;
+        EXPECT_EQ(with.force, without.force) << turn;
+        EXPECT_EQ(with.torque, without.torque) << turn;
+      }
+    }
   }
 }
 

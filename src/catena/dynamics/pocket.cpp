@@ -490,19 +490,6 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
 // gradient"), a block of its own: the θ point's contact, and the elastic energy E_k of its pocket
 // k at the step's ends, put back along the step z = (q − O, R ψ) in the metric (1, R²).
 namespace {
-// Where a point `p` (about the wheel's centre) is for pocket k, whose vertex there is (sx, sy)
-// (read only within the reach), for the jumps of E_k: in the pocket's own law (its mouth's ramp
-// or release included), on the body between the pockets within the mouth, or out of both (E = 0)
-enum class Piece { kPocket, kBody, kOut };
-Piece piece_of(const Sprocket& w, const Capture& cap, const Where& p, double sx, double sy,
-               bool held) {
-  if (p.beyond) return w.pocket_release && held ? Piece::kPocket : Piece::kOut;
-  const double dist = std::hypot(p.rx + w.centre_x - sx, p.ry + w.centre_y - sy);
-  if (!in_body(w, &cap, dist)) return Piece::kPocket;
-  const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance;
-  return p.rho2 <= mouth * mouth ? Piece::kBody : Piece::kOut;
-}
-
 // Whether two numbers are the same bit for bit (the start's memo: NaN and −0 as any other)
 bool same(double a, double b) {
   return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
@@ -510,32 +497,35 @@ bool same(double a, double b) {
 
 // A step's end q (relative to the wheel's centre there, put about w's centre) for pocket k
 // (held: hk ≠ kNoPocket) with the wheel at `angle`: the point, where it is, whether it is free of
-// the wheel, pocket k's vertex there (read only where its piece or its contact reads it) and its
-// piece
+// the wheel and pocket k's vertex there (read only where its contact reads it)
 struct End {
   double x = 0.0, y = 0.0;
   Where at;
   bool free = true;
   double sx = 0.0, sy = 0.0;
-  Piece piece = Piece::kOut;
 };
-End end_of(const Sprocket& w, const Capture& cap, double qx, double qy, double angle, int k,
-           int hk) {
+End end_of(const Sprocket& w, double qx, double qy, double angle, int k, int hk) {
   End e;
   e.x = qx + w.centre_x;
   e.y = qy + w.centre_y;
-  const Where about = where_rel(w, qx, qy);
   e.at = where(w, e.x, e.y);
   e.free = free_of(w, e.at, hk);
-  if (!about.beyond || !e.free) vertex_point(w, vertex_angle(w, k, angle), e.sx, e.sy);
-  e.piece = piece_of(w, cap, about, e.sx, e.sy, hk != kNoPocket);
+  if (!e.free) vertex_point(w, vertex_angle(w, k, angle), e.sx, e.sy);
   return e;
 }
 
+// E_k at an end `e`: the contact at zero velocity, its energy alone (0 free of the wheel)
+double energy_of(const Sprocket& w, const Capture& cap, const End& e, int k) {
+  if (e.free) return 0.0;
+  const SeatContact c =
+      contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kEnergy);
+  return c.active ? c.energy : 0.0;
+}
+
 // The step's start for pocket k (held: hk ≠ kNoPocket) from the memo `m`, taken afresh there
-// unless it holds this start, wheel's centre, pocket and hold: its piece and its energy E_k
-// (the contact at zero velocity, its energy alone). The start does not move within a step, so
-// the integrator's Newton iterations take it once a step, unless the θ point's pocket changes.
+// unless it holds this start, wheel's centre, pocket and hold: its energy E_k. The start does not
+// move within a step, so the integrator's Newton iterations take it once a step, unless the θ
+// point's pocket changes.
 const PocketStart& step_start(const Sprocket& w, const Capture& cap, const PocketStep& step, int k,
                               int hk, PocketStart& m) {
   if (m.set && m.pocket == k && m.held == hk && same(m.x0, step.x0) && same(m.y0, step.y0) &&
@@ -552,38 +542,82 @@ const PocketStart& step_start(const Sprocket& w, const Capture& cap, const Pocke
                   .centre_y = w.centre_y,
                   .pocket = k,
                   .held = hk};
-  const End s = end_of(w, cap, step.x0 - step.cx0, step.y0 - step.cy0, step.angle0, k, hk);
-  m.piece = static_cast<int>(s.piece);
-  if (!s.free) {
-    const SeatContact e =
-        contact_at(w, s.x, s.y, 0.0, 0.0, 0.0, s.at, k, s.sx, s.sy, &cap, Need::kEnergy);
-    m.energy = e.active ? e.energy : 0.0;
-  }
+  m.energy =
+      energy_of(w, cap, end_of(w, step.x0 - step.cx0, step.y0 - step.cy0, step.angle0, k, hk), k);
   return m;
 }
 
-// E_k is continuous between the pieces of the step's three points unless the path crosses one
-// of its two jumps: the sharp mouth (pocket_mouth = 0) out of the pocket's own law — with the
-// release too, where a joint not held goes out over the mouth from E₀(g) S(u) > 0 (held, it
-// stays in the pocket's law beyond: out ⇔ not held) — and the body's capture `from` within its
-// radial band of the mouth (or with the release, whose energy E₀ S(u) there is not the body's)
-// (the points (px, py) relative to the wheel's centre)
-bool jumps(const Sprocket& w, const Capture& cap, const Piece (&p)[3], const double (&px)[3],
-           const double (&py)[3]) {
-  bool pocket = false, body = false, out = false;
-  for (const Piece q : p) {
-    pocket = pocket || q == Piece::kPocket;
-    body = body || q == Piece::kBody;
-    out = out || q == Piece::kOut;
+// E_k's jumps (docs/models/dynamics.md, "Pocket wheel: the discrete gradient", "The jumps") lie
+// on two surfaces: the mouth's circle ρ = R + c/2 (the sharp mouth's E₀(g) against 0, the
+// release's E₀(g) S(u) for a joint not held, the ramp's leftover E₀(g) (1 − W(g)); 0 within
+// about 0.87c of the vertex, where g ≤ 0 on the mouth) and, with the body, the capture
+// |q − C_k| = `from` (the pocket's law against the body's blended depth: 0 beyond the body's
+// radial band of the mouth). The step's path in (q − O, ψ) is the straight one, q(t) = q₀ + t Δq,
+// ψ(t) = ψ₀ + t Δψ, its θ point at t = θ.
+struct Path {
+  double q0x = 0.0, q0y = 0.0, dx = 0.0, dy = 0.0, psi0 = 0.0, dpsi = 0.0, theta = 0.5;
+};
+
+// E_k at the path's point t
+double energy_along(const Sprocket& w, const Capture& cap, const Path& p, double t, int k, int hk) {
+  return energy_of(w, cap,
+                   end_of(w, p.q0x + t * p.dx, p.q0y + t * p.dy, p.psi0 + t * p.dpsi, k, hk), k);
+}
+
+// The jumps of E_k on the surface f(t) = 0 (f > 0 on its outer side) that the path crosses
+// between the sorted parameters ts[0..n) where f's side changes: each crossing bracketed by
+// bisection to `span` and E_k taken a `span` beyond the bracket on either side (its continuous
+// part's share there at most |∇E| · 3 span of the path's length), |E(after) − E(before)| summed
+template <class Side>
+double jumps_on(const Sprocket& w, const Capture& cap, const Path& p, int k, int hk,
+                const double* ts, int n, double span, Side outer) {
+  double sum = 0.0;
+  for (int i = 0; i + 1 < n; ++i) {
+    double a = ts[i], b = ts[i + 1];
+    const bool at = outer(a);
+    if (at == outer(b)) continue;
+    for (int it = 0; it < 200 && b - a > span; ++it) {
+      const double m = 0.5 * (a + b);
+      (outer(m) == at ? a : b) = m;
+    }
+    sum += std::abs(energy_along(w, cap, p, std::min(1.0, b + span), k, hk) -
+                    energy_along(w, cap, p, std::max(0.0, a - span), k, hk));
   }
-  if (pocket && out && !(w.pocket_mouth > 0.0)) return true;
-  if (pocket && body) {
-    if (w.pocket_release) return true;
-    const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance, band = cap.band;
-    for (int i = 0; i < 3; ++i)
-      if (mouth - std::hypot(px[i], py[i]) < band) return true;
+  return sum;
+}
+
+// The size of E_k's jumps the step's path crosses: Σ |E(after) − E(before)| over its crossings of
+// the mouth's circle and the capture, each crossing bracketed to 1e-9 c of the path (the mouth's
+// found among the ends, the θ point and the path's nearest approach to the centre, where ρ² is
+// least; the capture's among the ends and the θ point). `dist` the θ point's |q − C_k| if known
+// (else < 0): |q − C_k| moves by at most |Δq| + R |Δψ| over the path, so the capture is sought
+// only where that reaches `from` from it.
+double crossed_jump(const Sprocket& w, const Capture& cap, const Path& p, int k, int hk,
+                    double dist) {
+  const double r = w.pitch_radius, mouth = r + 0.5 * w.pocket_clearance;
+  const double len = std::hypot(p.dx, p.dy) + r * std::abs(p.dpsi);  // ≥ the points' |dz/dt|
+  const double span = 1e-9 * w.pocket_clearance / len;
+  const double dd = p.dx * p.dx + p.dy * p.dy;
+  double ts[4] = {0.0, p.theta, 1.0, 1.0};
+  int n = 3;
+  const double least = dd > 0.0 ? -(p.q0x * p.dx + p.q0y * p.dy) / dd : 0.0;
+  if (least > 0.0 && least < 1.0) ts[n++] = least;
+  std::sort(ts, ts + n);
+  double sum = jumps_on(w, cap, p, k, hk, ts, n, span, [&](double t) {
+    const double x = p.q0x + t * p.dx, y = p.q0y + t * p.dy;
+    return x * x + y * y > mouth * mouth;
+  });
+  const double from = cap.from;
+  const double reach = std::max(p.theta, 1.0 - p.theta) * len + 1e-9 * w.pocket_clearance;
+  if (w.pocket_body && (dist < 0.0 || std::abs(dist - from) <= reach)) {
+    const double tc[3] = {0.0, std::clamp(p.theta, 0.0, 1.0), 1.0};
+    sum += jumps_on(w, cap, p, k, hk, tc, 3, span, [&](double t) {
+      const double a = vertex_angle(w, k, p.psi0 + t * p.dpsi);
+      return std::hypot(p.q0x + t * p.dx - r * std::cos(a), p.q0y + t * p.dy - r * std::sin(a)) >
+             from;
+    });
   }
-  return false;
+  return sum;
 }
 
 // The elastic ∂F/∂q (row-major) of an elastic contact (no velocity): the fields' and dq_extra
@@ -598,11 +632,11 @@ void elastic_jacobian(const SeatContact& e, double out[4]) {
 SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx, double vy,
                                 double angle, double speed, int held, const PocketStep& step) {
   if (!w.discrete_gradient) return contact_with(w, x, y, vx, vy, angle, speed, held, nullptr);
-  const Capture cap = body_capture(w);  // once for the step's contacts and pieces
+  const Capture cap = body_capture(w);  // once for the step's contacts and jumps
   const Where p = where(w, x, y);
   const double rx = p.rx, ry = p.ry;
   // the θ point's pocket k (the nearest, or the held one beyond the mouth) and its vertex there,
-  // taken once for the θ point's contact, its elastic contact and its piece (none of which reads
+  // taken once for the θ point's contact and its elastic contact (neither of which reads
   // it where the point is free of the wheel); E_k at the ends with k held there too if it is held
   // at the θ point
   const PocketVertex v = p.beyond && held != kNoPocket
@@ -624,11 +658,7 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   if (!(den > 1e-18 * r2)) return c;
   PocketStart own;  // without the caller's memo, this call's
   const PocketStart& start = step_start(w, cap, step, k, hk, step.start ? *step.start : own);
-  const End end = end_of(w, cap, q1x, q1y, step.angle1, k, hk);
-  const Piece pieces[3] = {static_cast<Piece>(start.piece),
-                           piece_of(w, cap, p, sx, sy, hk != kNoPocket), end.piece};
-  const double ends_x[3] = {q0x, rx, q1x}, ends_y[3] = {q0y, ry, q1y};
-  if (jumps(w, cap, pieces, ends_x, ends_y)) return c;  // E_k's jump: the θ point's force (docs)
+  const End end = end_of(w, q1x, q1y, step.angle1, k, hk);
   // the end's energy and elastic force, the θ point's elastic force and ∂F/∂q (zero velocity)
   const SeatContact e1 = end.free ? SeatContact{}
                                   : contact_at(w, end.x, end.y, 0.0, 0.0, 0.0, end.at, k, end.sx,
@@ -642,6 +672,11 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   const double gpsi = et.active ? -et.torque : 0.0;
   const double mismatch = en1 - en0 - (gx * dx + gy * dy) - gpsi * dpsi;
   if (!(en0 > 0.0 || en1 > 0.0 || et.active)) return c;  // E_k = 0 at all three
+  // across jumps of E_k larger than the pocket's law's energy at a gap of one smoothing length ε
+  // the θ point's force alone (the correction would be the jump over |Δz|²: docs)
+  const Path path{q0x, q0y, dx, dy, step.angle0, dpsi, step.theta};
+  const double dist = free ? -1.0 : std::hypot(x - sx, y - sy);
+  if (crossed_jump(w, cap, path, k, hk, dist) > elastic(w, w.contact_smoothing).energy) return c;
   // E's Hessian at the θ point: H = −∂F/∂q; E(q, ψ) = E(Rq, ψ + δ) gives ∂E/∂ψ = −G_q·Jq
   // (Jq = perp q), so ∂²E/∂ψ∂q = a = −(H Jq + Jᵀ G_q) and ∂²E/∂ψ² = −a·Jq
   double jf[4];
