@@ -341,6 +341,92 @@ TEST(DynamicsPocketDiscreteGradient, StartsMemoGivesTheSameContact) {
   EXPECT_EQ(corrected, 13);
 }
 
+// A call for the step's residual alone (PocketStep::jacobian false: the integrator's line search
+// and report) gives the contact bit for bit as the call for the Newton matrix but for the
+// correction's derivatives (the θ point's Hessian), left 0, and the same seat friction, over a
+// sweep through the pocket, the body's blend and rim, the mouth's ramp and the release (held),
+// damped, with friction, the wheel held and turning, with the discrete gradient and without it
+// (the θ point's contact alone).
+TEST(DynamicsPocketDiscreteGradient, ResidualOnlyCallsGiveTheSameResidual) {
+  const double c = kClearance, psi = 0.4, th = 0.5;
+  int calls = 0, blocks = 0, corrected = 0;
+  for (const bool gradient : {true, false}) {
+    Sprocket body = wheel8(gradient, 2000.0), ramp = body, release = body;
+    body.friction = ramp.friction = release.friction = 0.2;
+    ramp.pocket_mouth = c;
+    release.pocket_release = true;
+    struct Sweep {
+      const Sprocket* w;
+      double along0, below0, along1, below1;
+      int held;
+    };
+    const Sweep sweeps[] = {{&body, -0.8 * c, 1.5 * c + 10e-6, 1.2 * c, 1.5 * c + 60e-6, kNoPocket},
+                            {&body, 11.0 * c, 15e-6, 19.0 * c, 35e-6, kNoPocket},
+                            {&body, 25.0 * c, 10e-6, 35.0 * c, 40e-6, kNoPocket},
+                            {&ramp, 0.5 * c, -5e-6, 2.5 * c, -90e-6, kNoPocket},
+                            {&release, 1.0 * c, -20e-6, 2.0 * c, -60e-6, 3}};
+    const int steps = 8;
+    for (const Sweep& sw : sweeps) {
+      const Sprocket& w = *sw.w;
+      for (int i = 0; i + 1 < steps; ++i) {
+        for (const double turn : {0.0, 3e-3}) {
+          auto at = [&](int j, double angle) {
+            const double t = static_cast<double>(j) / (steps - 1);
+            return near_vertex(w, angle, 3, sw.along0 + t * (sw.along1 - sw.along0),
+                               sw.below0 + t * (sw.below1 - sw.below0));
+          };
+          const double psi1 = psi + turn, psit = psi + th * turn, h = 1e-4;
+          const Point p0 = at(i, psi), p1 = at(i + 1, psi1);
+          const Point pt{p0.x + th * (p1.x - p0.x), p0.y + th * (p1.y - p0.y)};
+          const double vx = (p1.x - p0.x) / h + 0.01, vy = (p1.y - p0.y) / h - 0.02;
+          PocketStep step = step_over(w, p0, p1, psi, psi1, th);
+          const SeatContact full =
+              pocket_step_contact(w, pt.x, pt.y, vx, vy, psit, turn / h, sw.held, step);
+          step.jacobian = false;
+          const SeatContact r =
+              pocket_step_contact(w, pt.x, pt.y, vx, vy, psit, turn / h, sw.held, step);
+          ++calls;
+          EXPECT_EQ(r.active, full.active) << calls;
+          EXPECT_EQ(r.force, full.force) << calls;
+          EXPECT_EQ(r.nx, full.nx) << calls;
+          EXPECT_EQ(r.ny, full.ny) << calls;
+          EXPECT_EQ(r.torque, full.torque) << calls;
+          EXPECT_EQ(r.energy, full.energy) << calls;
+          EXPECT_EQ(r.depth, full.depth) << calls;
+          EXPECT_EQ(r.damping_power, full.damping_power) << calls;
+          EXPECT_EQ(r.friction_weight, full.friction_weight) << calls;
+          EXPECT_EQ(r.skew, full.skew) << calls;
+          EXPECT_EQ(r.skew_x, full.skew_x) << calls;
+          EXPECT_EQ(r.skew_y, full.skew_y) << calls;
+          const SeatFriction fr = seat_friction(w, r, pt.x, pt.y, vx, vy, turn / h);
+          const SeatFriction ff = seat_friction(w, full, pt.x, pt.y, vx, vy, turn / h);
+          EXPECT_EQ(fr.fx, ff.fx) << calls;
+          EXPECT_EQ(fr.fy, ff.fy) << calls;
+          EXPECT_EQ(fr.power, ff.power) << calls;
+          EXPECT_EQ(fr.torque, ff.torque) << calls;
+          for (int j = 0; j < 4; ++j) {  // the θ point's contact's own blocks are kept
+            EXPECT_EQ(r.dq_extra[j], full.dq_extra[j]) << calls;
+            EXPECT_EQ(r.dv_extra[j], full.dv_extra[j]) << calls;
+            EXPECT_EQ(r.friction_dq[j], full.friction_dq[j]) << calls;
+            EXPECT_EQ(r.friction_dv[j], full.friction_dv[j]) << calls;
+          }
+          blocks += full.skew_dx != 0.0 || full.skew_dy != 0.0 || full.skew_dpsi != 0.0;
+          EXPECT_EQ(r.skew_dx, 0.0) << calls;
+          EXPECT_EQ(r.skew_dy, 0.0) << calls;
+          EXPECT_EQ(r.skew_dpsi, 0.0) << calls;
+          corrected += full.skew != 0.0;
+        }
+      }
+    }
+  }
+  std::printf(
+      "pocket residual-only calls: %d calls, %d corrected, %d with the correction's derivatives "
+      "in the full call\n",
+      calls, corrected, blocks);
+  EXPECT_GT(corrected, calls / 4);
+  EXPECT_EQ(blocks, corrected);
+}
+
 // Where the step's points lie across one of E_k's jumps the correction would be the jump over
 // |Δz|² (kN per µm of step): there the force is the θ point's. A joint leaving over the sharp
 // mouth 3c off its vertex (E jumps from E₀(g) to 0), and one crossing the body's capture (10c

@@ -493,6 +493,98 @@ TEST(DynamicsSeatDiscreteGradient, DamperWorkOverAStepIsNeverPositive) {
   EXPECT_NEAR(h * clamped.damping_power, fe * (g1 - g0), 1e-8 * std::abs(fe * (g1 - g0)));
 }
 
+// The caller's memo of the step's start (SeatStep::start, kept by the integrator over a step's
+// Newton iterations) gives the contact bit for bit as without it: filled by one call and read by
+// the next that differs in one of its key's inputs alone — the start x₀, the start's angle ψ₀,
+// the start's wheel centre (a take-up's), the θ point's seat index (seat 0 as k = −z, as
+// nearest_seat gives it past the cut at ±π: the same seat, its direction rounded otherwise) — it
+// is taken afresh (each fails with that key's comparison dropped), and a call with the key it
+// holds reads it (a memo whose gap is altered under the same key moves the force). A call for the
+// residual alone (SeatStep::jacobian false, the integrator's line search and report) gives the
+// same contact bit for bit but for the derivatives, left 0.
+TEST(DynamicsSeatDiscreteGradient, StartsMemoGivesTheSameContact) {
+  Sprocket w = wheel17(false);
+  w.contact_damping = 800.0;  // [N·s/m] the damper's integral C(g₀) kept too
+  const SeatGeometry t = seat_geometry(w);
+  const double psi = 0.3, turn = 2e-3, h = 1e-4, z = 17.0;
+  const Point a0 = in_seat(w, psi, 2e-6, 0.10), a1 = in_seat(w, psi + turn, 3.5e-6, 0.16);
+  const Point b0 = in_seat(w, psi, 5e-6, 0.12);  // another start, deeper
+  struct Call {
+    Point p0;
+    double k = 0.0;                 // the θ point's seat index
+    double dpsi0 = 0.0, dcx = 0.0;  // ψ₀ and the start's centre (cx0, cy0) moved alone
+  };
+  const Call calls[] = {{a0}, {a0},     {b0}, {a0}, {a0, 0.0, 4e-4}, {a0}, {a0, 0.0, 0.0, 2e-5},
+                        {a0}, {a0, -z}, {a0}};
+  auto contact = [&](const Call& call, SeatStart* memo, bool jacobian = true) {
+    const double psi0 = psi + call.dpsi0, psi1 = psi + turn, th = 0.5;
+    const SeatStep step{.x0 = call.p0.x,
+                        .y0 = call.p0.y,
+                        .x1 = a1.x,
+                        .y1 = a1.y,
+                        .angle0 = psi0,
+                        .angle1 = psi1,
+                        .cx0 = call.dcx,
+                        .cy0 = -0.5 * call.dcx,
+                        .h = h,
+                        .turn = psi1 - psi0,
+                        .theta = th,
+                        .start = memo,
+                        .jacobian = jacobian};
+    const double qx = call.p0.x + th * (a1.x - call.p0.x), qy = call.p0.y + th * (a1.y - call.p0.y);
+    const double psit = psi0 + th * (psi1 - psi0), sigma = psit + call.k * t.tau;
+    return seat_contact_at(w, t, qx, qy, (a1.x - call.p0.x) / h, (a1.y - call.p0.y) / h,
+                           (psi1 - psi0) / h, call.k, std::cos(sigma), std::sin(sigma), &step);
+  };
+  SeatStart memo;
+  double force[std::size(calls)];
+  for (std::size_t i = 0; i < std::size(calls); ++i) {
+    const Call& call = calls[i];
+    const SeatContact without = contact(call, nullptr);
+    const SeatContact with = contact(call, &memo);
+    ASSERT_TRUE(without.active) << i;
+    EXPECT_NE(without.skew, 0.0) << i;  // a turning wheel on the seating arc: corrected
+    EXPECT_TRUE(memo.set);
+    EXPECT_EQ(memo.seat, call.k) << i;
+    EXPECT_EQ(with.force, without.force) << i;
+    EXPECT_EQ(with.torque, without.torque) << i;
+    EXPECT_EQ(with.damping_power, without.damping_power) << i;
+    EXPECT_EQ(with.skew, without.skew) << i;
+    EXPECT_EQ(with.skew_dx, without.skew_dx) << i;
+    EXPECT_EQ(with.skew_dy, without.skew_dy) << i;
+    EXPECT_EQ(with.skew_dpsi, without.skew_dpsi) << i;
+    EXPECT_EQ(with.gap_slope, without.gap_slope) << i;
+    force[i] = without.force;
+    const SeatContact residual = contact(call, &memo, false);
+    EXPECT_EQ(residual.force, without.force) << i;
+    EXPECT_EQ(residual.nx, without.nx) << i;
+    EXPECT_EQ(residual.ny, without.ny) << i;
+    EXPECT_EQ(residual.torque, without.torque) << i;
+    EXPECT_EQ(residual.damping_power, without.damping_power) << i;
+    EXPECT_EQ(residual.depth, without.depth) << i;
+    EXPECT_EQ(residual.skew, without.skew) << i;
+    EXPECT_EQ(residual.skew_x, without.skew_x) << i;
+    EXPECT_EQ(residual.skew_y, without.skew_y) << i;
+    EXPECT_NE(without.skew_dx, 0.0) << i;
+    EXPECT_EQ(residual.skew_dx, 0.0) << i;
+    EXPECT_EQ(residual.skew_dy, 0.0) << i;
+    EXPECT_EQ(residual.skew_dpsi, 0.0) << i;
+    EXPECT_EQ(residual.friction_dv[0], 0.0) << i;
+  }
+  // each key's change moves the contact (else its case would not test its comparison)
+  for (const std::size_t i : {2, 4, 6, 8}) EXPECT_NE(force[i], force[0]) << i;
+  // the memo is read: the start's gap, its damper's integral and (the quotient took it) energy
+  // as taken, and an altered gap under the same key moves the force
+  EXPECT_NEAR(memo.gap, seat_contact(w, a0.x, a0.y, 0.0, 0.0, psi, 0.0).penetration, 1e-15);
+  EXPECT_TRUE(memo.energy_set);
+  EXPECT_DOUBLE_EQ(memo.energy, penalty_energy(memo.gap));
+  EXPECT_DOUBLE_EQ(memo.damper, damper_potential(memo.gap, w.contact_damping));
+  SeatStart altered = memo;
+  altered.gap += 1e-7;
+  altered.energy_set = false;
+  EXPECT_NE(contact(calls[0], &altered).force, force[0]);
+}
+
 // (2) The Newton matrix with the discrete gradient against central differences of the step's
 // residual, every column: θ = 0.6 with the seats' damper and frictionless, the driven wheel's
 // angle an unknown, the iterate jittered by ±1 µm so that rollers enter and leave their seats

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <limits>
 #include <span>
@@ -38,6 +39,11 @@ struct LineForce {
 LineForce line_force(const LineLaw& l, double g);
 
 namespace detail {
+/// Whether two numbers are the same bit for bit (the step starts' memos, PocketStart and
+/// SeatStart, compare their keys so: NaN and −0 as any other number)
+inline bool same_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
 /// The penalty's C¹ ramp over the first ε (docs/models/dynamics.md, "Contact law"), the one
 /// written-out form the seats, the rails and the take-up's stops share: at the gap g with the
 /// stiffness k, the force k g²/2ε within the ramp (g < ε) and k (g − ε/2) past it, its slope
@@ -51,6 +57,11 @@ inline LineForce penalty_ramp(double k, double eps, double g) {
   e.energy =
       g < eps ? k * g * g * g / (6.0 * eps) : k * (0.5 * g * g - 0.5 * eps * g + eps * eps / 6.0);
   return e;
+}
+/// The ramped damper's integral C(g) = ∫₀^g c min(1, s/ε) ds with c the damping for k: the
+/// penalty's force with c for k, 0 for g ≤ 0 (the seats' and links' dampers over a step)
+inline double damper_integral(double c, double eps, double g) {
+  return g > 0.0 ? penalty_ramp(c, eps, g).force : 0.0;
 }
 }  // namespace detail
 
@@ -593,6 +604,21 @@ struct LinkStep {
 /// d_θ/l_θ at θ = ½ the spring's work over the step is −(E(s₁) − E(s₀)) and the damper's
 /// −(T − T_dg)(s₁ − s₀) ≤ 0.
 LinkStep link_step_force(const Model& model, double s0, double s1, double h);
+/// What link_step_force reads of the step's start stretch s₀ alone: the energy E(s₀) and the
+/// damper's integral C(u₀) (u₀ = s₀ + ε/2), which do not move within a step.
+struct LinkStart {
+  double energy = 0.0;  ///< [J] E(s₀)
+  double damper = 0.0;  ///< [N] C(u₀), 0 for u₀ ≤ 0
+};
+inline LinkStart link_step_start(const Model& model, double s0) {
+  const double eps = model.link_smoothing;
+  return {link_force(model, s0, 0.0).energy,
+          detail::damper_integral(model.axial_damping, eps, s0 + 0.5 * eps)};
+}
+/// link_step_force with the start's `start` = link_step_start(model, s0) given (the integrator
+/// takes it once a step for each link): the same result, bit for bit.
+LinkStep link_step_force(const Model& model, double s0, double s1, double h,
+                         const LinkStart& start);
 
 /// N nodes of equal mass; an open chain gets its two end nodes pinned when `pin_ends`.
 Model uniform_chain(std::size_t nodes, bool closed, double pitch, double node_mass,
@@ -814,11 +840,28 @@ SeatContact seat_contact(const Sprocket& w, const SeatGeometry& t, double x, dou
 /// driver's angle is the same in every Newton iteration). No reach test: the caller's.
 SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
                             double vy, double speed, double k, double cs, double sn);
+/// seat_contact_at's memo of a step's start (x₀, ψ₀ do not move within a step): the start's gap
+/// g₀ in its own nearest seat (the sector test and the seat's sine and cosine included), the
+/// damper's integral C(g₀) and, once the quotient has read it, the law's energy E(g₀), for the θ
+/// point's seat k and the inputs they were taken with. A call whose inputs differ from these in
+/// any bit takes the start afresh and keeps it here. Valid for one wheel within one step, as
+/// PocketStart: the key leaves out the wheel's own parameters and its tooth geometry (the
+/// integrator keeps one per roller and wheel and clears them every step). Used so, the result is
+/// the same with the memo or without.
+struct SeatStart {
+  bool set = false;
+  double x0 = 0.0, y0 = 0.0, cx0 = 0.0, cy0 = 0.0, angle0 = 0.0, seat = 0.0;
+  double gap = 0.0;     ///< [m] g₀
+  double damper = 0.0;  ///< [N] C(g₀), the damper's integral (0 for g₀ ≤ 0)
+  bool energy_set = false;
+  double energy = 0.0;  ///< [J] E(g₀), the law's energy (when energy_set)
+};
 /// A step's ends for the seats' discrete gradient (Sprocket::discrete_gradient): the roller's
 /// centre at the step's start x₀ and end x₁ [m], the wheel's angles ψ₀, ψ₁ [rad] and its centre
 /// there [m] (they differ on a take-up's sliding wheel), and the step h [s]. Each end is measured
 /// in its own nearest seat (nearest_seat at that end: the θ point's seat k while it lies within
-/// k's mid-tooth lines).
+/// k's mid-tooth lines). `start`, optional: the caller's memo of the step's start for this roller
+/// and wheel, kept over the step's Newton iterations.
 struct SeatStep {
   double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
   double angle0 = 0.0, angle1 = 0.0;
@@ -826,6 +869,11 @@ struct SeatStep {
   double h = 0.0;
   double turn = 0.0;   ///< [rad] the wheel's turn over the step, ψ₁ − ψ₀
   double theta = 0.5;  ///< the θ point's weight (the θ point's angle ψ₀ + θ (ψ₁ − ψ₀))
+  SeatStart* start = nullptr;
+  /// false: a call for the step's residual alone (no Newton matrix): the correction's derivatives
+  /// skew_dx, skew_dy, skew_dpsi and friction_dv are left 0 and not to be read; every other field
+  /// is the same, bit for bit.
+  bool jacobian = true;
 };
 /// seat_contact_at over the step `step` (nullptr, or a wheel without Sprocket::discrete_gradient:
 /// the θ point's force above, bit for bit). With it the elastic part is the discrete gradient
@@ -907,6 +955,10 @@ struct PocketStep {
   double angle0 = 0.0, angle1 = 0.0;
   double theta = 0.5;
   PocketStart* start = nullptr;
+  /// false: a call for the step's residual alone (no Newton matrix): the correction's
+  /// derivatives skew_dx, skew_dy, skew_dpsi (the θ point's Hessian) are left 0 and not to be
+  /// read; every other field is the same, bit for bit (the θ point's contact keeps its blocks).
+  bool jacobian = true;
 };
 /// pocket_contact at the θ point (x, y, angle, its speeds) over the step `step` (docs/models/
 /// dynamics.md, "Pocket wheel: the discrete gradient"). Without Sprocket::discrete_gradient the

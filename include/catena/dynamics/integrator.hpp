@@ -227,6 +227,11 @@ class Integrator {
     double cs = 0.0, sn = 0.0;
   };
   void prepare_seats(const Model& model);
+  // The tension-only links' step starts (Model::links_discrete_gradient): link_step_start of
+  // each link's stretch l0_ − p, taken once a step when l0_ is (link_step_force reads them in
+  // every Newton iteration)
+  void prepare_links(const Model& model);
+  std::vector<LinkStart> link_start_;
   std::vector<SeatGeometry> seat_geometry_;
   std::vector<double> seat_psi_;  // per wheel: the angle of its directions
   // [m] max(θ, 1 − θ) max |u − x₀| (∞-norm) over the nodes: how far a node's x₀ or iterate is from
@@ -237,6 +242,9 @@ class Integrator {
   // per pocket wheel with the discrete gradient, per node: the memo of the step's start
   // (PocketStart: its energy is taken once a step, not in every Newton iteration)
   std::vector<std::vector<PocketStart>> pocket_start_;
+  // per ISO wheel with the discrete gradient, per node: the memo of the step's start (SeatStart:
+  // its gap, taken once a step, not in every Newton iteration)
+  std::vector<std::vector<SeatStart>> seat_start_;
   // the nodes' θ points x_θ of the iterate (assemble's; the wheels' and the guides' one set)
   std::vector<double> qx_, qy_;
   // Each wheel's candidates: the nodes within (1 + kCandidateMargin) · reach of its centre at

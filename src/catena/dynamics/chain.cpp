@@ -760,15 +760,19 @@ struct DiscreteGradient {
 };
 // `floor` [m]: the smallest scale of the threshold (a tension-only link's ε, whose stretch
 // passes through 0 in the middle of its ramp; 0 for the contacts, whose energy is 0 at g = 0).
-template <class Law>
-DiscreteGradient discrete_gradient(const Law& elastic, double g0, double g1, double floor = 0.0) {
+// `start_energy()` gives elastic(g0).energy (called only where the quotient reads it: a caller
+// that keeps the step's start may give it from its memo).
+template <class Law, class StartEnergy>
+DiscreteGradient discrete_gradient(const Law& elastic, const StartEnergy& start_energy, double g0,
+                                   double g1, double floor) {
   DiscreteGradient out;
   const double dg = g1 - g0;
   // the quotient's rounding is ~1e-16 g/|dg| of the force: past 1e-6 of the gap, 1e-10; below it
   // the midpoint's force, within (dg/g)² ~ 1e-12 of the quotient
   if (std::abs(dg) > 1e-6 * std::max(std::max(std::abs(g0), std::abs(g1)), floor)) {
-    const LineForce e0 = elastic(g0), e1 = elastic(g1);
-    out.force = (e1.energy - e0.energy) / dg;
+    const double e0 = start_energy();
+    const LineForce e1 = elastic(g1);
+    out.force = (e1.energy - e0) / dg;
     out.slope = (e1.force - out.force) / dg;
   } else {
     const LineForce m = elastic(0.5 * (g0 + g1));
@@ -776,6 +780,11 @@ DiscreteGradient discrete_gradient(const Law& elastic, double g0, double g1, dou
     out.slope = 0.5 * m.stiffness;
   }
   return out;
+}
+template <class Law>
+DiscreteGradient discrete_gradient(const Law& elastic, double g0, double g1, double floor = 0.0) {
+  return discrete_gradient(
+      elastic, [&] { return elastic(g0).energy; }, g0, g1, floor);
 }
 
 // A contact's damper over the step from the gap g0 to g1 (the discrete gradient's; docs
@@ -788,15 +797,29 @@ DiscreteGradient discrete_gradient(const Law& elastic, double g0, double g1, dou
 struct StepDamper {
   double force = 0.0, slope = 0.0;
 };
+// the damper from the start's integral c0 = C(g₀) (a caller's memo of the step's start) to g1
+StepDamper step_damper_from(double cc, double eps, double c0, double g1, double h) {
+  return {(detail::damper_integral(cc, eps, g1) - c0) / h, cc * std::clamp(g1 / eps, 0.0, 1.0) / h};
+}
 StepDamper step_damper(double cc, double eps, double g0, double g1, double h) {
-  auto potential = [&](double gap) {
-    return gap > 0.0 ? detail::penalty_ramp(cc, eps, gap).force : 0.0;
-  };
-  return {(potential(g1) - potential(g0)) / h, cc * std::clamp(g1 / eps, 0.0, 1.0) / h};
+  return step_damper_from(cc, eps, detail::damper_integral(cc, eps, g0), g1, h);
+}
+}  // namespace
+
+namespace {
+// link_force's energy, the elastic force and its slope as a law for discrete_gradient
+LineForce link_elastic(const Model& model, double s) {
+  const LinkForce f = link_force(model, s, 0.0);
+  return LineForce{f.elastic, f.stiffness, f.energy};
 }
 }  // namespace
 
 LinkStep link_step_force(const Model& model, double s0, double s1, double h) {
+  return link_step_force(model, s0, s1, h, link_step_start(model, s0));
+}
+
+LinkStep link_step_force(const Model& model, double s0, double s1, double h,
+                         const LinkStart& start) {
   const double eps = model.link_smoothing;
   // The spring: the quotient of link_force's own energy (the one energy() reports), with the
   // threshold's scale at least ε. Beyond the ramp E is quadratic and the mean stretch's T_e is the
@@ -805,14 +828,10 @@ LinkStep link_step_force(const Model& model, double s0, double s1, double h) {
   // a work of < 1e-19 k ε² a step; the quotient's rounding, ~2e-16 E/|Δs|, stays below ~1e-10
   // of k max(ε, |s|) past the threshold.
   const DiscreteGradient spring = discrete_gradient(
-      [&](double s) {
-        const LinkForce f = link_force(model, s, 0.0);
-        return LineForce{f.elastic, f.stiffness, f.energy};
-      },
-      s0, s1, eps);
+      [&](double s) { return link_elastic(model, s); }, [&] { return start.energy; }, s0, s1, eps);
   // the damper over the step: C(u) = ∫₀^u c min(1, v/ε) dv, the seats' (its work never positive)
   const StepDamper damper =
-      step_damper(model.axial_damping, eps, s0 + 0.5 * eps, s1 + 0.5 * eps, h);
+      step_damper_from(model.axial_damping, eps, start.damper, s1 + 0.5 * eps, h);
   LinkStep out;
   out.elastic = spring.force;
   const double tension = spring.force + damper.force;
@@ -1496,6 +1515,29 @@ SeatGap seat_gap_nearest(const Sprocket& w, const SeatGeometry& t, double x, dou
   }
   return seat_gap(w, t, x, y, cx, cy, cs, sn);
 }
+
+// The step's start for the θ point's seat k from the memo `m`, taken afresh there unless it holds
+// this start (x₀, its centre, ψ₀) and seat: g₀ in its own nearest seat and C(g₀); E(g₀) is left
+// for the quotient to take when it reads it (energy_set). The start does not move within a step,
+// so the integrator's Newton iterations take it once a step, unless the θ point's seat changes.
+SeatStart& step_start(const Sprocket& w, const SeatGeometry& t, const SeatStep& step, double k,
+                      SeatStart& m) {
+  using detail::same_bits;
+  if (m.set && same_bits(m.seat, k) && same_bits(m.x0, step.x0) && same_bits(m.y0, step.y0) &&
+      same_bits(m.cx0, step.cx0) && same_bits(m.cy0, step.cy0) && same_bits(m.angle0, step.angle0))
+    return m;
+  const double g0 = seat_gap_nearest(w, t, step.x0, step.y0, step.cx0, step.cy0, step.angle0, k).g;
+  m = SeatStart{.set = true,
+                .x0 = step.x0,
+                .y0 = step.y0,
+                .cx0 = step.cx0,
+                .cy0 = step.cy0,
+                .angle0 = step.angle0,
+                .seat = k,
+                .gap = g0,
+                .damper = detail::damper_integral(w.contact_damping, w.contact_smoothing, g0)};
+  return m;
+}
 }  // namespace
 
 SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, double y, double vx,
@@ -1525,22 +1567,34 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
   }
   // the discrete gradient over the step: the gaps at its ends, each in its own nearest seat (the
   // θ point's k unless the end is past one of k's mid-tooth lines)
-  const SeatGap start =
-      seat_gap_nearest(w, t, step->x0, step->y0, step->cx0, step->cy0, step->angle0, k);
+  // (the start, which does not move within a step, from the caller's memo when it holds this
+  // start and seat: step_start)
+  SeatStart own;  // without the caller's memo, this call's
+  SeatStart& start = step_start(w, t, *step, k, step->start != nullptr ? *step->start : own);
   const SeatGap end =
       seat_gap_nearest(w, t, step->x1, step->y1, step->cx1, step->cy1, step->angle1, k);
   // active where either end is in contact: the elastic part and the damper both come from the
   // ends' gaps, so on a convex surface (a tooth's tip) a θ point inside with both ends clear
   // carries no force, and it is not a contact (no depth into max_penetration)
-  if (!(std::max(start.g, end.g) > 0.0)) return c;
-  const DiscreteGradient dgr =
-      discrete_gradient([&](double gap) { return seat_elastic(w, gap); }, start.g, end.g);
+  if (!(std::max(start.gap, end.g) > 0.0)) return c;
+  auto law = [&](double gap) { return seat_elastic(w, gap); };
+  const DiscreteGradient dgr = discrete_gradient(
+      law,
+      [&] {
+        if (!start.energy_set) {
+          start.energy = law(start.gap).energy;
+          start.energy_set = true;
+        }
+        return start.energy;
+      },
+      start.gap, end.g, 0.0);
   // The damper over the step too (step_damper): at θ = ½ the θ point's damper made the rollers
   // rattling across their seats (|ġ| ≈ 0.16 m/s) fold the residual along n, hθ c_c|ġ|/ε beyond
   // m/(hθ) + c_c + h ∂f_e/∂g₁, and Newton stalled at g_θ = ε.
-  const double h = step->h, dg = end.g - start.g;
+  const double h = step->h, dg = end.g - start.gap;
   const double elastic = dgr.force;
-  const StepDamper damper = step_damper(w.contact_damping, w.contact_smoothing, start.g, end.g, h);
+  const StepDamper damper =
+      step_damper_from(w.contact_damping, w.contact_smoothing, start.damper, end.g, h);
   c.force = std::max(0.0, elastic + damper.force);
   c.damping = c.stiffness = 0.0;  // nothing at the θ point: f depends on g₁ alone
   c.gap_slope = c.force > 0.0 ? dgr.slope + damper.slope : 0.0;
@@ -1575,11 +1629,15 @@ SeatContact seat_contact_at(const Sprocket& w, const SeatGeometry& t, double x, 
   // work it would restore, f (Δg − lin), is the rounding's.
   const double den_floor = 1e-18 * r2;
   if (c.force > 0.0 && den > den_floor) {
-    const double cc = (end.g - start.g - lin) / den;
+    const double cc = (end.g - start.gap - lin) / den;
     c.skew = c.force * cc;
     c.skew_x = dx;
     c.skew_y = dy;
     c.torque -= c.skew * r2 * dpsi;
+  }
+  if (!step->jacobian) return c;  // the residual alone: no derivatives
+  if (c.force > 0.0 && den > den_floor) {
+    const double cc = (end.g - start.gap - lin) / den;
     // ∂n/∂q = κ t tᵀ, ∂n/∂ψ = (1 − κ t·perp ρ) t, ∂a/∂q = (κ t·perp ρ − 1) t,
     // ∂a/∂ψ = (t·perp ρ)(1 − κ t·perp ρ); the θ point moves by θ with x₁ and ψ₁
     const double th = step->theta, kap = c.curvature;

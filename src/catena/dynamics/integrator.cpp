@@ -201,16 +201,25 @@ void Integrator::refresh_guide_hint(const Model& model) {
   guide_hint_.update(model.guides, qx_, qy_);
 }
 
+void Integrator::prepare_links(const Model& model) {
+  if (model.links_carry_compression || !model.links_discrete_gradient) return;
+  link_start_.resize(model.links());
+  for (std::size_t j = 0; j < model.links(); ++j)
+    link_start_[j] = link_step_start(model, l0_[j] - model.rest_length(j));
+}
+
 void Integrator::prepare_seats(const Model& model) {
   const std::size_t wheels = model.sprockets.size();
   seat_geometry_.resize(wheels);
   seat_psi_.assign(wheels, NAN);
   seat_direction_.resize(wheels);
   pocket_start_.resize(wheels);
+  seat_start_.resize(wheels);
   for (std::size_t w = 0; w < wheels; ++w) {
     const Sprocket& wheel = model.sprockets[w];
     if (wheel.pocket && wheel.discrete_gradient) pocket_start_[w].assign(model.nodes(), {});
     if (wheel.pocket) continue;
+    if (wheel.discrete_gradient) seat_start_[w].assign(model.nodes(), {});
     seat_geometry_[w] = seat_geometry(wheel);
     seat_direction_[w].assign(static_cast<std::size_t>(std::max(wheel.teeth, 1)), SeatDirection{});
   }
@@ -320,6 +329,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   Mat2* lower = solver_.lower.data();
   double damper_work = 0.0;
   const bool hinges = !hinge_links_.empty();  // (read once: the stores below may alias it)
+  const LinkStart* link_start = link_start_.data();
   for_each_link(n, links, [&](std::size_t j, std::size_t a, std::size_t b) {
     const double d0x = sx[b] - sx[a], d0y = sy[b] - sy[a];
     const double d1x = ux[b] - ux[a], d1y = uy[b] - uy[a];
@@ -340,7 +350,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       // (−T_e there where T is clamped at 0, as the seats' damper).
       double tension = 0.0, elastic = 0.0;
       if (model.links_discrete_gradient) {
-        const LinkStep law = link_step_force(model, l0 - p, l1 - p, h);
+        const LinkStep law = link_step_force(model, l0 - p, l1 - p, h, link_start[j]);
         tension = law.tension;
         elastic = law.elastic;
         dtension = law.slope;  // ∂T/∂l₁ = ∂T/∂s₁; 0 on a slack link
@@ -565,7 +575,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
                              .angle0 = s.angle[w],
                              .angle1 = psi1_[w],
                              .theta = th,
-                             .start = i < pocket_start_[w].size() ? &pocket_start_[w][i] : nullptr};
+                             .start = i < pocket_start_[w].size() ? &pocket_start_[w][i] : nullptr,
+                             .jacobian = jacobian};
           return pocket_step_contact(wheel, qx, qy, vx, vy, psi, omega, held, e);
         }
         // seat_contact, its seat's direction from the step's table when there
@@ -592,6 +603,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
           e.angle1 = psi1_[w];
           e.turn = psi1_[w] - s.angle[w];
           e.theta = th;
+          e.start = i < seat_start_[w].size() ? &seat_start_[w][i] : nullptr;
+          e.jacobian = jacobian;
           return seat_contact_at(wheel, geometry, qx, qy, vx, vy, omega, kseat, d.cs, d.sn, &e);
         }
         // a non-finite iterate: as seat_contact (no table slot)
@@ -1095,6 +1108,7 @@ StepReport Integrator::step(const Model& model, State& s) {
     const double dx = s.x[b] - s.x[j], dy = s.y[b] - s.y[j];
     l0_[j] = std::sqrt(dx * dx + dy * dy);
   }
+  prepare_links(model);
   load_mass0_set_ = false;
   prepare_seats(model);
   // Newton from the predictor x₁ = x₀ + h v₀ + ht Δv: with ht = hθ, the velocities (and wheel
@@ -1610,6 +1624,7 @@ void Integrator::newton_system(const Model& model, const State& s, std::span<con
     const std::size_t b = (j + 1) % n;
     l0_[j] = std::hypot(s.x[b] - s.x[j], s.y[b] - s.y[j]);
   }
+  prepare_links(model);
   load_mass0_set_ = false;
   prepare_seats(model);
   for (std::size_t i = 0; i < n; ++i) {

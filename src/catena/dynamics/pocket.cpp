@@ -1,8 +1,6 @@
 // The pocket wheel's joint contact (docs/models/dynamics.md, "Pocket wheel").
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <numbers>
 
 #include "catena/dynamics/chain.hpp"
@@ -490,11 +488,6 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
 // gradient"), a block of its own: the θ point's contact, and the elastic energy E_k of its pocket
 // k at the step's ends, put back along the step z = (q − O, R ψ) in the metric (1, R²).
 namespace {
-// Whether two numbers are the same bit for bit (the start's memo: NaN and −0 as any other)
-bool same(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
-
 // A step's end q (relative to the wheel's centre there, put about w's centre) for pocket k
 // (held: hk ≠ kNoPocket) with the wheel at `angle`: the point, where it is, whether it is free of
 // the wheel and pocket k's vertex there (read only where its contact reads it)
@@ -528,9 +521,11 @@ double energy_of(const Sprocket& w, const Capture& cap, const End& e, int k) {
 // point's pocket changes.
 const PocketStart& step_start(const Sprocket& w, const Capture& cap, const PocketStep& step, int k,
                               int hk, PocketStart& m) {
-  if (m.set && m.pocket == k && m.held == hk && same(m.x0, step.x0) && same(m.y0, step.y0) &&
-      same(m.cx0, step.cx0) && same(m.cy0, step.cy0) && same(m.angle0, step.angle0) &&
-      same(m.centre_x, w.centre_x) && same(m.centre_y, w.centre_y))
+  using detail::same_bits;
+  if (m.set && m.pocket == k && m.held == hk && same_bits(m.x0, step.x0) &&
+      same_bits(m.y0, step.y0) && same_bits(m.cx0, step.cx0) && same_bits(m.cy0, step.cy0) &&
+      same_bits(m.angle0, step.angle0) && same_bits(m.centre_x, w.centre_x) &&
+      same_bits(m.centre_y, w.centre_y))
     return m;
   m = PocketStart{.set = true,
                   .x0 = step.x0,
@@ -677,14 +672,6 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   const Path path{q0x, q0y, dx, dy, step.angle0, dpsi, step.theta};
   const double dist = free ? -1.0 : std::hypot(x - sx, y - sy);
   if (crossed_jump(w, cap, path, k, hk, dist) > elastic(w, w.contact_smoothing).energy) return c;
-  // E's Hessian at the θ point: H = −∂F/∂q; E(q, ψ) = E(Rq, ψ + δ) gives ∂E/∂ψ = −G_q·Jq
-  // (Jq = perp q), so ∂²E/∂ψ∂q = a = −(H Jq + Jᵀ G_q) and ∂²E/∂ψ² = −a·Jq
-  double jf[4];
-  elastic_jacobian(et, jf);
-  const double hq[4] = {-jf[0], -jf[1], -jf[2], -jf[3]};
-  const double px = -ry, py = rx;
-  const double ax = -(hq[0] * px + hq[1] * py + gy), ay = -(hq[2] * px + hq[3] * py - gx);
-  const double hpp = -(ax * px + ay * py);
   const double cc = mismatch / den;
   // the damper's clamp: where the θ point's force is 0 its blocks are 0 (only the correction's)
   if (!c.active) {
@@ -700,6 +687,16 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   c.skew_x = dx;
   c.skew_y = dy;
   c.torque -= cc * r2 * dpsi;
+  // a call for the residual alone (PocketStep::jacobian false): not the correction's derivatives
+  if (!step.jacobian) return c;
+  // E's Hessian at the θ point: H = −∂F/∂q; E(q, ψ) = E(Rq, ψ + δ) gives ∂E/∂ψ = −G_q·Jq
+  // (Jq = perp q), so ∂²E/∂ψ∂q = a = −(H Jq + Jᵀ G_q) and ∂²E/∂ψ² = −a·Jq
+  double jf[4];
+  elastic_jacobian(et, jf);
+  const double hq[4] = {-jf[0], -jf[1], -jf[2], -jf[3]};
+  const double px = -ry, py = rx;
+  const double ax = -(hq[0] * px + hq[1] * py + gy), ay = -(hq[2] * px + hq[3] * py - gx);
+  const double hpp = -(ax * px + ay * py);
   // ∂cc = (∂mismatch − cc ∂den)/den; the θ point moves by θ with x₁ and ψ₁:
   // ∂mismatch/∂x₁ = ∇_q E₁ − G_q − θ (H Δq + a Δψ), ∂/∂ψ₁ = ∂E₁/∂ψ − G_ψ − θ (a·Δq + E_ψψ Δψ)
   const double th = step.theta;
