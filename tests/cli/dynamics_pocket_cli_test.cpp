@@ -359,7 +359,7 @@ TEST(DynamicsPocketCli, FieldsThatDoNotFitAPocketWheelAreNamedAtOnce) {
                                             {"contact_stiffness", "# no contact stiffness"},
                                             {"links", "links = 30"}});
   named(values,
-        {"dynamics.wire_diameter", "in (0, pitch) = (0, 0.064) m", "dynamics.pocket_clearance",
+        {"dynamics.wire_diameter", "in (0, pitch/2) = (0, 0.032) m", "dynamics.pocket_clearance",
          "in (0, 0.1 pitch] = (0, 0.0064] m", "dynamics.contact_stiffness", "(no Hertz default)",
          "dynamics.links", "2z + 4m with m >= 1"});
   const CliRun teeth = bad("teeth.toml", {{"teeth = 8", "teeth = 7"}});
@@ -370,6 +370,12 @@ TEST(DynamicsPocketCli, FieldsThatDoNotFitAPocketWheelAreNamedAtOnce) {
                                         {"wire_diameter", "wire_diameter = \"60 mm\""},
                                         {"links", "links = 12"}});
   named(wide, {"dynamics.sprocket[0].teeth", "pocket angle delta1 < 60 deg"});
+  // a wire of half the pitch: the link's inner length cannot hold its two neighbours' wires (its
+  // jam, at d, would be at its rest length t − d; docs/models/dynamics.md "Tension-only links:
+  // the jam")
+  const CliRun thick = bad("thick.toml", {{"wire_diameter", "wire_diameter = \"32 mm\""}});
+  named(thick, {"dynamics.wire_diameter", "in (0, pitch/2) = (0, 0.032) m",
+                "holds its two neighbours' wires"});
   const CliRun missing = bad("missing.toml", {{"wire_diameter", "# no wire"}});
   named(missing, {"dynamics.wire_diameter", "(missing)"});
   const CliRun kind = bad("kind.toml", {{"wheel", "wheel = \"sprocket\""}});

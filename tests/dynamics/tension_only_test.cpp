@@ -184,7 +184,8 @@ TEST(DynamicsTensionOnlyLinks, NewtonMatrixMatchesTheResidualsDifferences) {
 // 3.5 kHz, pushing with −9 kN); every tension 0, the energy unchanged.
 TEST(DynamicsTensionOnlyLinks, NodesPushedTogetherFeelNoForce) {
   for (const bool compression : {false, true}) {
-    Model m = tension_only(2, 0.0);  // undamped: the bilateral link rings, never lets them pass
+    Model m = tension_only(2, 0.0);   // undamped: the bilateral link rings, never lets them pass
+    ASSERT_EQ(m.jam_length(0), 0.0);  // no jam (NodesThrownTogetherBounceOffTheJam: with one)
     m.links_carry_compression = compression;
     State s(2, 0);
     s.x[1] = kPitch - 1e-6;  // just slack (at l = p the ramp still pulls k ε/8 = 12.5 N)
@@ -525,6 +526,311 @@ TEST(DynamicsTensionOnlyLinks, NewtonMatrixWithTheDiscreteGradientMatchesTheDiff
   EXPECT_GT(found.differs, 0.1 * scale);  // a law of its own
 }
 
+// The jam (Model::link_jam_length; docs/models/dynamics.md, "Tension-only links: the jam"): links
+// that jam at l_jam = 50 mm, s_j = l_jam − p = −14 mm (both parities).
+constexpr double kJam = 0.05;
+
+Model jamming(std::size_t nodes, double damping = kDamping) {
+  Model m = tension_only(nodes, damping);
+  m.link_jam_length = {kJam, kJam};
+  return m;
+}
+
+// The law over the jam, at rates from fast shortening to fast lengthening: T ≤ 0 everywhere,
+// T = E = 0 above the jam's ramp (slack), the bilateral law about l_jam, k (s − s_j) + c ṡ, beyond
+// it where it pushes (0 where it would pull: a jammed link lengthening fast comes free), E =
+// ½ k (s − s_j)² + k ε²/24 there, ∂T/∂s and ∂T/∂ṡ against central differences, T_e = dE/ds, and
+// C¹ at the ramp's ends. Without the jam the same stretches are slack: T = E = 0.
+TEST(DynamicsTensionOnlyLinks, JamPushesBelowItsLengthWithExactDerivativesAndEnergy) {
+  const Model m = jamming(2);
+  const double eps = m.link_smoothing, k = kStiffness, sj = kJam - kPitch;
+  int jammed = 0, ramp = 0, slack = 0, clamped = 0;
+  for (int i = -300; i <= 300; ++i) {
+    const double s = sj + i * 0.01 * eps + 0.003 * eps;  // off the ramp's ends by a little
+    for (const double rate : {-0.5, -0.02, -1e-4, 0.0, 1e-4, 0.02, 0.5}) {
+      const LinkForce f = link_force(m, s, rate);
+      EXPECT_LE(f.tension, 0.0) << s << " " << rate;
+      const double v = sj - s + 0.5 * eps;  // the ramp's depth
+      if (v <= 0.0) {
+        ++slack;
+        EXPECT_EQ(f.tension, 0.0);
+        EXPECT_EQ(f.energy, 0.0);
+        EXPECT_EQ(f.stiffness, 0.0);
+        EXPECT_EQ(f.damping, 0.0);
+      } else if (v < eps) {
+        ++ramp;
+        EXPECT_LT(f.elastic, 0.0);
+        EXPECT_GT(f.elastic, -k * eps / 2 * (1 + 1e-9));
+      } else {
+        ++jammed;
+        EXPECT_NEAR(f.elastic, k * (s - sj), 1e-9 * k * eps);
+        EXPECT_NEAR(f.tension, std::min(0.0, k * (s - sj) + kDamping * rate), 1e-9 * k * eps);
+        EXPECT_NEAR(f.energy, 0.5 * k * (s - sj) * (s - sj) + k * eps * eps / 24, 1e-9 * f.energy);
+      }
+      if (f.tension == 0.0 && f.elastic < 0.0) ++clamped;
+      const double ds = 1e-4 * eps, dr = 1e-7;
+      const LinkForce sp = link_force(m, s + ds, rate), sm = link_force(m, s - ds, rate);
+      const LinkForce rp = link_force(m, s, rate + dr), rm = link_force(m, s, rate - dr);
+      const double scale = k + kDamping * std::abs(rate) / eps;
+      if ((sp.tension < 0.0) == (sm.tension < 0.0) && (sp.tension < 0.0) == (f.tension < 0.0)) {
+        EXPECT_NEAR(f.stiffness, (sp.tension - sm.tension) / (2 * ds), 1e-6 * scale)
+            << s << " " << rate;
+      }
+      if ((rp.tension < 0.0) == (rm.tension < 0.0) && (rp.tension < 0.0) == (f.tension < 0.0)) {
+        EXPECT_NEAR(f.damping, (rp.tension - rm.tension) / (2 * dr), 1e-6 * kDamping)
+            << s << " " << rate;
+      }
+      EXPECT_NEAR(f.elastic, (sp.energy - sm.energy) / (2 * ds), 1e-6 * k * eps) << s;
+      const LinkForce none = link_force(tension_only(2), s, rate);  // no jam: slack
+      EXPECT_EQ(none.tension, 0.0);
+      EXPECT_EQ(none.energy, 0.0);
+    }
+  }
+  // C¹ at both ends of the ramp (v = 0 and v = ε): T_e, its slope and E meet
+  for (const double v : {0.0, eps}) {
+    const double s = sj + 0.5 * eps - v, d = 1e-9 * eps;
+    const LinkForce lo = link_force(m, s - d, 0.0), hi = link_force(m, s + d, 0.0);
+    EXPECT_NEAR(lo.elastic, hi.elastic, 1e-6 * k * eps);
+    EXPECT_NEAR(lo.stiffness, hi.stiffness, 1e-6 * k);
+    EXPECT_NEAR(lo.energy, hi.energy, 1e-6 * k * eps * eps);
+  }
+  EXPECT_GT(jammed, 1000);
+  EXPECT_GT(ramp, 500);
+  EXPECT_GT(slack, 1000);
+  EXPECT_GT(clamped, 50);  // lengthening fast out of the jam: free, the spring still pressed
+}
+
+// Each link jams at its parity's l_jam (Model::jam_length): with alternation (rest lengths
+// p + a, p − a, p + a; l_jam 70 mm for the even links, 18 mm for the odd) link 0 is 5 µm inside
+// its jam, link 1 in its jam's ramp and link 2 slack (between its jam and its rest length, but
+// well inside the odd links' rest length). The tensions, each node's force from them against
+// −∂E/∂q of energy(), and against the integrator's residual at rest (−h × the force: the inertia's
+// part is 0 at the predictor).
+TEST(DynamicsTensionOnlyLinks, EachLinkJamsAtItsParitysLengthAndItsForceIsTheEnergysGradient) {
+  Model m = tension_only(4);
+  m.alternation = 0.018;
+  m.link_jam_length = {0.070, 0.018};
+  ASSERT_TRUE(validate(m).empty());
+  const double eps = m.link_smoothing;
+  State s(4, 0);
+  const double len[3] = {0.070 - 5e-6, 0.018 - 0.2 * eps, 0.076};
+  const double ang[3] = {0.1, -0.3, 0.7};
+  for (std::size_t j = 0; j < 3; ++j) {
+    s.x[j + 1] = s.x[j] + len[j] * std::cos(ang[j]);
+    s.y[j + 1] = s.y[j] + len[j] * std::sin(ang[j]);
+  }
+  std::vector<double> t(3);
+  link_tensions(m, s, t);
+  EXPECT_NEAR(t[0], -kStiffness * 5e-6, 1e-6);                 // −500 N
+  EXPECT_NEAR(t[1], -kStiffness * 0.7 * 0.7 * eps / 2, 1e-6);  // v = 0.7 ε: −24.5 N
+  EXPECT_EQ(t[2], 0.0);
+  const double h = 1e-5;
+  Integrator integ(m, {.step = h, .theta = 0.5});
+  std::vector<double> u(8), r;
+  for (std::size_t i = 0; i < 4; ++i) u[2 * i] = s.x[i], u[2 * i + 1] = s.y[i];
+  integ.newton_system(m, s, u, r, nullptr);
+  for (std::size_t i = 0; i < 4; ++i) {
+    double f[2] = {0.0, 0.0};
+    if (i < 3) f[0] += t[i] * std::cos(ang[i]), f[1] += t[i] * std::sin(ang[i]);
+    if (i > 0) f[0] -= t[i - 1] * std::cos(ang[i - 1]), f[1] -= t[i - 1] * std::sin(ang[i - 1]);
+    for (int axis = 0; axis < 2; ++axis) {
+      const double d = 1e-4 * eps;
+      State p = s, q = s;
+      (axis == 0 ? p.x : p.y)[i] += d;
+      (axis == 0 ? q.x : q.y)[i] -= d;
+      const double grad = (energy(m, p).elastic - energy(m, q).elastic) / (2 * d);
+      EXPECT_NEAR(f[axis], -grad, 1e-3 * kStiffness * eps) << i << " " << axis;
+      EXPECT_NEAR(-r[2 * i + axis] / h, f[axis], 1e-9 * kStiffness * eps) << i << " " << axis;
+    }
+  }
+}
+
+// The integrator's Newton matrix against central differences of its residual with jammed links:
+// at the θ point (θ = 0.6, h = 10 µs) a link 20 µm inside its jam, one in the jam's ramp, one 6 µm
+// inside but lengthening at 0.5 m/s (c ṡ = 1000 N against its push: free by the clamp) and a slack
+// one; with Model::links_discrete_gradient (θ = ½) over steps deeper into the jam, from slack into
+// its ramp, within it lengthening slowly, out of the jam so fast that the damper over the step
+// clamps T at 0 (c/h = 2e8 N/m > k), and slack.
+TEST(DynamicsTensionOnlyLinks, NewtonMatrixWithJammedLinksMatchesTheResidualsDifferences) {
+  const double eps = 1e-6, h = 1e-5;
+  {
+    const Model m = jamming(5);
+    const double th = 0.6;
+    State s(5, 0);
+    const double len[4] = {kJam - 20e-6, kJam + 0.1 * eps, kJam - 6e-6, kJam + 3e-6};
+    const double ang[4] = {0.2, -0.4, 0.5, 1.1};
+    const double rate[4] = {-1e-3, 1e-4, 0.5, 0.0};
+    for (std::size_t j = 0; j < 4; ++j) {
+      s.x[j + 1] = s.x[j] + len[j] * std::cos(ang[j]);
+      s.y[j + 1] = s.y[j] + len[j] * std::sin(ang[j]);
+      s.vx[j + 1] = s.vx[j] + rate[j] * std::cos(ang[j]) - 0.3 * std::sin(ang[j]);
+      s.vy[j + 1] = s.vy[j] + rate[j] * std::sin(ang[j]) + 0.3 * std::cos(ang[j]);
+    }
+    std::vector<double> t(4);
+    link_tensions(m, s, t);
+    EXPECT_LT(t[0], -1000.0);
+    EXPECT_LT(t[1], 0.0);
+    EXPECT_EQ(t[2], 0.0);
+    EXPECT_EQ(t[3], 0.0);
+    Integrator integ(m, {.step = h, .theta = th});
+    std::vector<double> u(integ.unknowns()), r, jac;
+    for (std::size_t i = 0; i < 5; ++i) {
+      u[2 * i] = s.x[i] + h * s.vx[i];
+      u[2 * i + 1] = s.y[i] + h * s.vy[i];
+    }
+    integ.newton_system(m, s, u, r, &jac);
+    const testing::ColumnsAgainstDifferences found = testing::expect_columns_match_differences(
+        integ, m, s, u, jac, {}, [](std::size_t) { return 1e-11; }, 1e-6);
+    std::printf("jammed links' Newton matrix (theta point): largest misfit %.2e of the column\n",
+                found.worst);
+  }
+  {
+    Model m = jamming(6);
+    m.links_discrete_gradient = true;
+    const double sj = kJam - kPitch;
+    const double s0[5] = {sj - 20e-6, sj + 0.8 * eps, sj - 0.1 * eps, sj - 6e-6, sj + 3e-6};
+    const double s1[5] = {sj - 20.5e-6, sj + 0.2 * eps, sj - 0.09 * eps, sj - 3e-6, sj + 2.5e-6};
+    const double a0[5] = {0.2, -0.4, 0.5, 1.1, -0.9}, turn = 0.01;
+    State s(6, 0);
+    std::vector<double> u(12);
+    u[0] = 1e-6;
+    u[1] = -2e-6;
+    for (std::size_t j = 0; j < 5; ++j) {
+      s.x[j + 1] = s.x[j] + (kPitch + s0[j]) * std::cos(a0[j]);
+      s.y[j + 1] = s.y[j] + (kPitch + s0[j]) * std::sin(a0[j]);
+      u[2 * j + 2] = u[2 * j] + (kPitch + s1[j]) * std::cos(a0[j] + turn);
+      u[2 * j + 3] = u[2 * j + 1] + (kPitch + s1[j]) * std::sin(a0[j] + turn);
+    }
+    for (std::size_t j = 0; j < 5; ++j) {
+      const LinkStep law = link_step_force(m, s0[j], s1[j], h);
+      if (j < 3) {
+        EXPECT_LT(law.tension, 0.0) << j;
+      } else if (j == 3) {
+        EXPECT_LT(law.elastic, -100.0);
+        EXPECT_EQ(law.tension, 0.0);
+      } else {
+        EXPECT_EQ(law.elastic, 0.0);
+      }
+    }
+    Integrator integ(m, {.step = h, .theta = 0.5});
+    std::vector<double> r, jac;
+    integ.newton_system(m, s, u, r, &jac);
+    const testing::ColumnsAgainstDifferences found = testing::expect_columns_match_differences(
+        integ, m, s, u, jac, {}, [](std::size_t) { return 1e-11; }, 1e-6);
+    std::printf("jammed links' Newton matrix (discrete gradient): largest misfit %.2e\n",
+                found.worst);
+  }
+}
+
+// Two free nodes on one link jamming at 50 mm, thrown together at 1 m/s each from just slack (as
+// NodesPushedTogetherFeelNoForce, where without a jam they pass through each other): 7 ms later
+// the joints reach l_jam, the link pushes them apart (undamped: up to 2 √(k m/2) = 9.2 kN) and
+// they fly apart at their speeds reversed, never closer than the jam less the push's depth
+// (2/√(2k/m) = 92 µm). At the θ point and with the discrete gradient: the energy kept to Newton's
+// tolerance with the discrete gradient, within 1 % at the θ point (its steps into and out of the
+// jam are not a discrete gradient).
+TEST(DynamicsTensionOnlyLinks, NodesThrownTogetherBounceOffTheJam) {
+  for (const bool gradient : {false, true}) {
+    Model m = jamming(2, 0.0);
+    m.links_discrete_gradient = gradient;
+    State s(2, 0);
+    s.x[1] = kPitch - 1e-6;
+    s.vx[0] = 1.0;
+    s.vx[1] = -1.0;
+    const double e0 = energy(m, s).total();
+    Integrator integ(m, {.step = 1e-5, .tolerance = 1e-13, .theta = 0.5});
+    std::vector<double> t(1);
+    double lowest = 0.0, shortest = INFINITY;
+    for (int k = 0; k < 1000; ++k) {  // 10 ms
+      ASSERT_TRUE(integ.step(m, s).converged) << k;
+      link_tensions(m, s, t);
+      lowest = std::min(lowest, t[0]);
+      shortest = std::min(shortest, s.x[1] - s.x[0]);
+    }
+    const double de = energy(m, s).total() - e0;
+    std::printf(
+        "thrown together (%s): v %.9f %.9f m/s, lowest tension %.1f N, shortest l - l_jam "
+        "%.2f um, dE %.2e J of %.3f J\n",
+        gradient ? "discrete gradient" : "theta point", s.vx[0], s.vx[1], lowest,
+        (shortest - kJam) * 1e6, de, e0);
+    EXPECT_LT(lowest, -8000.0);
+    EXPECT_GT(shortest, kJam - 100e-6);
+    EXPECT_LT(shortest, kJam - 80e-6);
+    // the θ point's steps into and out of the jam (20 µm each, the ramp 1 µm) are not a discrete
+    // gradient: they lose 0.75 % of the energy here
+    EXPECT_NEAR(s.vx[0], -1.0, gradient ? 1e-8 : 1e-2);
+    EXPECT_NEAR(s.vx[1], 1.0, gradient ? 1e-8 : 1e-2);
+    EXPECT_GT(s.x[1] - s.x[0], kJam);  // apart again
+    EXPECT_NEAR(de, 0.0, (gradient ? 1e-10 : 1e-2) * e0);
+  }
+}
+
+// One step at θ = ½ through the integrator's residual, as
+// OneStepsWorkIsMinusTheEnergysChangeWithTheDiscreteGradient, across the jam (s = s_j + x ε):
+// with Model::links_discrete_gradient the link's work is −(E(s₁) − E(s₀)) to rounding on steps
+// entering the jam's ramp from slack, crossing it, leaving it to slack, going deeper, inside it,
+// coming up into it from beyond, beyond it, and a step of 0.01 ε across its inner end (the
+// threshold's scale from s_j: from s, 1.4e-8 m, the mean's force would miss the quotient by
+// k Δs²/24ε); the θ point's force misses.
+TEST(DynamicsTensionOnlyLinks, OneStepsWorkAcrossTheJamIsMinusTheEnergysChange) {
+  const double eps = 1e-6, h = 1e-5;
+  struct Case {
+    const char* name;
+    double x0, x1;  // [ε] the stretches' offsets from s_j
+  };
+  const Case cases[] = {{"entering", 0.8, 0.1},  {"crossing", 0.8, -1.4},
+                        {"leaving", -0.3, 0.9},  {"deeper", -0.1, -2.0},
+                        {"inside", 0.3, -0.35},  {"from beyond", -3.0, -0.2},
+                        {"beyond", -2.0, -40.0}, {"short", -0.496, -0.506}};
+  for (const Case& c : cases) {
+    double misfit[2] = {0.0, 0.0};
+    double de = 0.0, rounding = 0.0;
+    for (const bool gradient : {false, true}) {
+      Model m = uniform_chain(2, false, kPitch, 1e-12, kStiffness, 0.0, false);
+      m.links_carry_compression = false;
+      m.link_jam_length = {kJam, kJam};
+      m.links_discrete_gradient = gradient;
+      State s(2, 0);
+      const double l0 = kJam + c.x0 * eps, l1 = kJam + c.x1 * eps;
+      const double a0 = 0.4, a1 = 0.7;
+      const double x0[4] = {0.0, 0.0, l0 * std::cos(a0), l0 * std::sin(a0)};
+      const double x1[4] = {2e-4, -1e-4, 2e-4 + l1 * std::cos(a1), -1e-4 + l1 * std::sin(a1)};
+      std::vector<double> u(4);
+      for (std::size_t i = 0; i < 2; ++i) {
+        s.x[i] = x0[2 * i];
+        s.y[i] = x0[2 * i + 1];
+        s.vx[i] = (x1[2 * i] - x0[2 * i]) / h;
+        s.vy[i] = (x1[2 * i + 1] - x0[2 * i + 1]) / h;
+        u[2 * i] = x1[2 * i];
+        u[2 * i + 1] = x1[2 * i + 1];
+      }
+      Integrator integ(m, {.step = h, .theta = 0.5});
+      std::vector<double> r;
+      integ.newton_system(m, s, u, r, nullptr);
+      double work = 0.0, terms = 0.0;
+      for (std::size_t a = 0; a < 4; ++a) {
+        work -= r[a] / h * (x1[a] - x0[a]);
+        terms += std::abs(r[a] / h * (x1[a] - x0[a]));
+      }
+      // E at the lengths of the step's ends as newton_system takes them (hypot, sqrt)
+      const double d1x = x1[2] - x1[0], d1y = x1[3] - x1[1];
+      const double e0 = link_force(m, std::hypot(x0[2], x0[3]) - kPitch, 0.0).energy;
+      const double e1 = link_force(m, std::sqrt(d1x * d1x + d1y * d1y) - kPitch, 0.0).energy;
+      de = e1 - e0;
+      misfit[gradient] = work + de;
+      if (gradient) rounding = 1e-14 * terms;
+    }
+    std::printf("jam %-12s dE %+.6e J: work + dE %+.2e J (theta point %+.2e J; rounding %.1e J)\n",
+                c.name, de, misfit[1], misfit[0], rounding);
+    // the jam's energy, not 0 (without the jam every one of these stretches is slack)
+    EXPECT_GT(std::abs(de), 1e-9 * kStiffness * eps * eps) << c.name;
+    EXPECT_LT(std::abs(misfit[1]), rounding) << c.name;
+    if (std::string(c.name) != "beyond") {
+      EXPECT_GT(std::abs(misfit[0]), 1e-6 * std::abs(de)) << c.name;
+    }
+  }
+}
+
 // Hinge friction takes the links' bilateral tension: with tension-only links it is refused, and
 // a bad ε is named.
 TEST(DynamicsTensionOnlyLinks, BadFieldsAreNamed) {
@@ -545,6 +851,31 @@ TEST(DynamicsTensionOnlyLinks, BadFieldsAreNamed) {
   m.links_discrete_gradient = true;  // nor the discrete gradient (theirs at θ = ½ already)
   EXPECT_EQ(validate(m).size(), 1u);
   EXPECT_EQ(validate(m)[0].field, "links_discrete_gradient");
+}
+
+// A jam length is 0 (none) or in (0, rest length − ε] of its parity's links (its ramp below the
+// tension's), named with its index; the bilateral links take none.
+TEST(DynamicsTensionOnlyLinks, BadJamLengthsAreNamed) {
+  Model m = tension_only(3);
+  m.alternation = 0.018;  // rest lengths 82 and 46 mm
+  const double eps = m.link_smoothing;
+  auto fields = [&] {
+    std::vector<std::string> out;
+    for (const Issue& i : validate(m)) out.push_back(i.field);
+    return out;
+  };
+  using V = std::vector<std::string>;
+  m.link_jam_length = {0.082 - eps, 0.018};  // the even links' largest: ramps touching
+  EXPECT_EQ(fields(), V{});
+  m.link_jam_length = {0.082 - 0.5 * eps, -0.018};
+  EXPECT_EQ(fields(), (V{"link_jam_length[0]", "link_jam_length[1]"}));
+  m.link_jam_length = {NAN, 0.050};  // the odd links' above their rest length
+  EXPECT_EQ(fields(), (V{"link_jam_length[0]", "link_jam_length[1]"}));
+  m.link_jam_length = {0.0, INFINITY};
+  EXPECT_EQ(fields(), V{"link_jam_length[1]"});
+  m.link_jam_length = {0.0, 0.018};
+  m.links_carry_compression = true;  // a bilateral link pushes already
+  EXPECT_EQ(fields(), V{"link_jam_length[1]"});
 }
 
 }  // namespace

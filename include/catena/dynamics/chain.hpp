@@ -530,6 +530,15 @@ struct Model {
   /// key discrete_gradient sets it with wheel = "pocket". Only with tension-only links
   /// (validated: the bilateral link's θ = ½ force is that discrete gradient already).
   bool links_discrete_gradient = false;
+  /// [m] l_jam of a tension-only link: the joint-to-joint distance below which it pushes back
+  /// (docs/models/dynamics.md, "Tension-only links: the jam"): [0] for the even links (rest
+  /// length p + a), [1] for the odd (p − a); 0 = no jam (the joints close and pass each other
+  /// unchecked). Below l_jam the link pushes with k (l − l_jam), C¹-smoothed over the same ε as
+  /// the tension side (link_force). A round-link chain on a pocket wheel (a = d): the odd link
+  /// jams at d (its neighbours' wires meet inside it), the even link is one rigid link's own
+  /// tips (p + a − ε). Each 0 or in (0, rest length − ε] (validated: the jam's ramp below the
+  /// tension's); 0 with links_carry_compression (validated).
+  std::array<double, 2> link_jam_length{0.0, 0.0};
 
   std::size_t nodes() const { return mass.size(); }
   /// Links: N in a closed loop, N − 1 in an open chain.
@@ -539,12 +548,14 @@ struct Model {
   double rest_length(std::size_t j) const {
     return j % 2 == 0 ? pitch + alternation : pitch - alternation;
   }
+  /// [m] the jam length of link j (link_jam_length by its parity; 0 = none)
+  double jam_length(std::size_t j) const { return link_jam_length[j % 2]; }
 };
 
 /// Every problem with the model, fields "nodes", "pitch", "axial_stiffness", "axial_damping",
 /// "drag", "gravity", "mass", "pinned", "sprocket[i].<field>", "guide[i].<field>",
 /// "load[i].node", "load[i].force", "hinge.arm", "hinge.rate_band", "hinge.stick_stiffness",
-/// "hinge.stick_damping", "link_smoothing",
+/// "hinge.stick_damping", "link_smoothing", "link_jam_length[0]", "link_jam_length[1]",
 /// "links_carry_compression", "links" (an odd closed loop with the pin link's hinge load).
 std::vector<Issue> validate(const Model& model);
 
@@ -563,8 +574,13 @@ struct LinkForce {
 /// k u²/2ε for 0 < u < ε, k s for u ≥ ε — C¹, ≥ 0, and equal to the bilateral spring in tension
 /// beyond s = ε/2 — with E = k u³/6ε, then ½ k s² + k ε²/24; the damper c r ṡ with r = u/ε
 /// ramped in over the same ε (the seats' gating), and T = 0 wherever T_e + c r ṡ ≤ 0 (a link
-/// shortening faster than its spring pulls goes slack: it never pushes).
-inline LinkForce link_force(const Model& model, double s, double rate) {
+/// shortening faster than its spring pulls goes slack: it never pushes) — unless it jams
+/// (Model::jam_length(link) > 0): with s_j = l_jam − rest length and v = s_j − s + ε/2, the
+/// mirror image below s_j: T_e = −k v²/2ε for 0 < v < ε, −k (s_j − s) for v ≥ ε, E = k v³/6ε, then
+/// ½ k (s_j − s)² + k ε²/24, the damper c (v/ε) ṡ ramped in over the same ε, and T = 0 wherever
+/// T_e + c r ṡ ≥ 0 (a jammed link lengthening faster than it pushes comes free: it never pulls).
+/// `link` picks the jam length (its parity).
+inline LinkForce link_force(const Model& model, double s, double rate, std::size_t link = 0) {
   const double k = model.axial_stiffness, c = model.axial_damping;
   LinkForce out;
   if (model.links_carry_compression) {
@@ -576,7 +592,24 @@ inline LinkForce link_force(const Model& model, double s, double rate) {
     return out;
   }
   const double eps = model.link_smoothing, u = s + 0.5 * eps;
-  if (!(u > 0.0)) return out;  // slack: the joints closer than the rest length less ε/2
+  if (!(u > 0.0)) {
+    const double jam = model.jam_length(link);
+    if (!(jam > 0.0)) return out;  // slack: the joints closer than the rest length less ε/2
+    // the jam (validated below the tension's ramp): w = s_j − s, how far the joints are inside
+    // l_jam, and v = w + ε/2 its ramp's depth
+    const double w = (jam - model.rest_length(link)) - s, v = w + 0.5 * eps;
+    if (!(v > 0.0)) return out;  // slack: between the jam and the tension's ramp
+    const bool ramp = v < eps;
+    out.elastic = ramp ? -k * v * v / (2.0 * eps) : -k * w;
+    out.energy = ramp ? k * v * v * v / (6.0 * eps) : 0.5 * k * w * w + k * eps * eps / 24.0;
+    const double r = ramp ? v / eps : 1.0;
+    const double tension = out.elastic + c * r * rate;
+    if (!(tension < 0.0)) return out;  // lengthening faster than the jam pushes: free
+    out.tension = tension;
+    out.stiffness = ramp ? k * v / eps - c * rate / eps : k;
+    out.damping = c * r;
+    return out;
+  }
   const bool ramp = u < eps;
   out.elastic = ramp ? k * u * u / (2.0 * eps) : k * s;
   out.energy = ramp ? k * u * u * u / (6.0 * eps) : 0.5 * k * s * s + k * eps * eps / 24.0;
@@ -591,7 +624,7 @@ inline LinkForce link_force(const Model& model, double s, double rate) {
 
 /// A tension-only link's force over a step (Model::links_discrete_gradient).
 struct LinkStep {
-  double tension = 0.0;  ///< [N] T = max(0, T_dg + f_d)
+  double tension = 0.0;  ///< [N] T = max(0, T_dg + f_d) (with a jam, see link_step_force)
   double elastic = 0.0;  ///< [N] T_dg, the discrete gradient of E (T − T_dg is the damper's)
   double slope = 0.0;    ///< [N/m] ∂T/∂s₁ (0 where T is clamped at 0)
 };
@@ -602,22 +635,30 @@ struct LinkStep {
 /// |s₁ − s₀| ≤ 1e-6 max(ε, |s₀|, |s₁|)), the damper f_d = (C(u₁) − C(u₀))/h with C(u) = ∫ c r
 /// the ramped damper's integral (u = s + ε/2, as the seats'), and T = max(0, T_dg + f_d). Along
 /// d_θ/l_θ at θ = ½ the spring's work over the step is −(E(s₁) − E(s₀)) and the damper's
-/// −(T − T_dg)(s₁ − s₀) ≤ 0.
-LinkStep link_step_force(const Model& model, double s0, double s1, double h);
-/// What link_step_force reads of the step's start stretch s₀ alone: the energy E(s₀) and the
-/// damper's integral C(u₀) (u₀ = s₀ + ε/2), which do not move within a step.
+/// −(T − T_dg)(s₁ − s₀) ≤ 0. With a jam (Model::jam_length(link) > 0) E is link_force's over
+/// the jam too, the jam's damper over the step is the mirror image's (its C of v = s_j − s + ε/2),
+/// the threshold's |s| is measured from s_j when the step's mean is nearer the jam, and T may
+/// push only on a step that touches the jam's ramp, pull only on one that touches the tension's
+/// (else T = 0).
+LinkStep link_step_force(const Model& model, double s0, double s1, double h, std::size_t link = 0);
+/// What link_step_force reads of the step's start stretch s₀ alone: the energy E(s₀), the
+/// damper's integral C(u₀) (u₀ = s₀ + ε/2) and, with a jam, the jam's C(v₀) (v₀ = s_j − s₀ + ε/2),
+/// which do not move within a step.
 struct LinkStart {
-  double energy = 0.0;  ///< [J] E(s₀)
-  double damper = 0.0;  ///< [N] C(u₀), 0 for u₀ ≤ 0
+  double energy = 0.0;      ///< [J] E(s₀)
+  double damper = 0.0;      ///< [N] C(u₀), 0 for u₀ ≤ 0
+  double jam_damper = 0.0;  ///< [N] C(v₀), 0 for v₀ ≤ 0 or without a jam
 };
-inline LinkStart link_step_start(const Model& model, double s0) {
-  const double eps = model.link_smoothing;
-  return {link_force(model, s0, 0.0).energy,
-          detail::damper_integral(model.axial_damping, eps, s0 + 0.5 * eps)};
+inline LinkStart link_step_start(const Model& model, double s0, std::size_t link = 0) {
+  const double eps = model.link_smoothing, jam = model.jam_length(link);
+  const double sj = jam > 0.0 ? jam - model.rest_length(link) : 0.0;
+  return {link_force(model, s0, 0.0, link).energy,
+          detail::damper_integral(model.axial_damping, eps, s0 + 0.5 * eps),
+          jam > 0.0 ? detail::damper_integral(model.axial_damping, eps, sj - s0 + 0.5 * eps) : 0.0};
 }
-/// link_step_force with the start's `start` = link_step_start(model, s0) given (the integrator
-/// takes it once a step for each link): the same result, bit for bit.
-LinkStep link_step_force(const Model& model, double s0, double s1, double h,
+/// link_step_force with the start's `start` = link_step_start(model, s0, link) given (the
+/// integrator takes it once a step for each link): the same result, bit for bit.
+LinkStep link_step_force(const Model& model, double s0, double s1, double h, std::size_t link,
                          const LinkStart& start);
 
 /// N nodes of equal mass; an open chain gets its two end nodes pinned when `pin_ends`.

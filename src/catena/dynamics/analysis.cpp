@@ -159,7 +159,8 @@ std::vector<Parameter> table_fields() {
            "on pocket wheels, seed 003: pitch = the link's inner length t, wire_diameter d, "
            "teeth = pockets z)"),
       quantity("wire_diameter", K::kLength,
-               "pocket: the links' wire diameter d, in (0, pitch) (as catena pocketwheel's wire)"),
+               "pocket: the links' wire diameter d, in (0, pitch/2) (as catena pocketwheel's "
+               "wire; a link holds its two neighbours' wires)"),
       quantity("pocket_clearance", K::kLength,
                "pocket: a joint's free play about its pocket's vertex, in (0, 0.1 pitch] "
                "(default 0.1 mm)"),
@@ -1543,10 +1544,14 @@ Setup parse(const analysis::Inputs& in) {
   if (s.pocket) {
     if (value.count("wire_diameter")) {
       s.wire = value["wire_diameter"];
-      if (!(s.wire > 0.0 && std::isfinite(s.wire) && !(s.wire >= s.pitch)))
-        issues.push_back({at("wire_diameter"), shown(s.wire),
-                          "in (0, pitch)" + (s.pitch > 0.0 ? " = (0, " + shown(s.pitch) + ") m"
-                                                           : std::string())});
+      // a link's inner length t holds its two neighbours' wires end to end: t > 2d (the jam,
+      // docs/models/dynamics.md "Tension-only links: the jam")
+      if (!(s.wire > 0.0 && std::isfinite(s.wire) && !(2.0 * s.wire >= s.pitch)))
+        issues.push_back(
+            {at("wire_diameter"), shown(s.wire),
+             "in (0, pitch/2)" +
+                 (s.pitch > 0.0 ? " = (0, " + shown(0.5 * s.pitch) + ") m" : std::string()) +
+                 " (a round link's inner length holds its two neighbours' wires)"});
     } else if (!line.count("wire_diameter")) {
       issues.push_back({"dynamics.wire_diameter", "(missing)",
                         "the links' wire diameter d with wheel = \"pocket\", e.g. \"18 mm\""});
@@ -2660,6 +2665,10 @@ Result run(const analysis::Inputs& in) {
     // discrete_gradient: the links' force over the step too ("Tension-only links: the discrete
     // gradient")
     model.links_discrete_gradient = d.discrete_gradient;
+    // the jam ("Tension-only links: the jam"): a t − d link pushes once its neighbours' wires meet
+    // inside it, its joints d apart. A t + d link is one link's own two tips, rigid (its jam is its
+    // rest length); that is not set: it changes the example's output (docs, "Not built yet")
+    model.link_jam_length = {0.0, d.wire};
   }
   const double centre = (d.pocket ? 2 * m : m) * d.pitch;
   std::vector<Sprocket> wheels;

@@ -158,6 +158,23 @@ std::vector<Issue> validate(const Model& model) {
                    "false with links_carry_compression (the bilateral link's force at theta = "
                    "0.5 is the discrete gradient of its energy already)"});
   }
+  for (std::size_t q = 0; q < 2; ++q) {
+    const double jam = model.link_jam_length[q];
+    const std::string field = "link_jam_length[" + std::to_string(q) + "]";
+    if (model.links_carry_compression) {
+      if (jam != 0.0)
+        out.push_back({field, check::format_si(jam, "m"),
+                       "0 with links_carry_compression (a bilateral link pushes already)"});
+      continue;
+    }
+    // the jam's ramp below the tension's: s_j + ε/2 ≤ −ε/2
+    const double top = model.rest_length(q) - model.link_smoothing;
+    if (jam != 0.0 && !(std::isfinite(jam) && jam > 0.0 && jam <= top)) {
+      out.push_back({field, check::format_si(jam, "m"),
+                     "0 (no jam) or in (0, " + check::format_si(top, "m") +
+                         "] (the link's rest length less link_smoothing)"});
+    }
+  }
   if (!model.links_carry_compression) {
     check::finite_positive(out, "link_smoothing", model.link_smoothing, "m");
     if (model.hinge.active())
@@ -761,15 +778,17 @@ struct DiscreteGradient {
 // `floor` [m]: the smallest scale of the threshold (a tension-only link's ε, whose stretch
 // passes through 0 in the middle of its ramp; 0 for the contacts, whose energy is 0 at g = 0).
 // `start_energy()` gives elastic(g0).energy (called only where the quotient reads it: a caller
-// that keeps the step's start may give it from its memo).
+// that keeps the step's start may give it from its memo). `centre` [m]: where the threshold's |g|
+// is measured from (a jammed link's s_j; else 0).
 template <class Law, class StartEnergy>
 DiscreteGradient discrete_gradient(const Law& elastic, const StartEnergy& start_energy, double g0,
-                                   double g1, double floor) {
+                                   double g1, double floor, double centre = 0.0) {
   DiscreteGradient out;
   const double dg = g1 - g0;
   // the quotient's rounding is ~1e-16 g/|dg| of the force: past 1e-6 of the gap, 1e-10; below it
   // the midpoint's force, within (dg/g)² ~ 1e-12 of the quotient
-  if (std::abs(dg) > 1e-6 * std::max(std::max(std::abs(g0), std::abs(g1)), floor)) {
+  if (std::abs(dg) >
+      1e-6 * std::max(std::max(std::abs(g0 - centre), std::abs(g1 - centre)), floor)) {
     const double e0 = start_energy();
     const LineForce e1 = elastic(g1);
     out.force = (e1.energy - e0) / dg;
@@ -808,34 +827,53 @@ StepDamper step_damper(double cc, double eps, double g0, double g1, double h) {
 
 namespace {
 // link_force's energy, the elastic force and its slope as a law for discrete_gradient
-LineForce link_elastic(const Model& model, double s) {
-  const LinkForce f = link_force(model, s, 0.0);
+LineForce link_elastic(const Model& model, double s, std::size_t link) {
+  const LinkForce f = link_force(model, s, 0.0, link);
   return LineForce{f.elastic, f.stiffness, f.energy};
 }
 }  // namespace
 
-LinkStep link_step_force(const Model& model, double s0, double s1, double h) {
-  return link_step_force(model, s0, s1, h, link_step_start(model, s0));
+LinkStep link_step_force(const Model& model, double s0, double s1, double h, std::size_t link) {
+  return link_step_force(model, s0, s1, h, link, link_step_start(model, s0, link));
 }
 
-LinkStep link_step_force(const Model& model, double s0, double s1, double h,
+LinkStep link_step_force(const Model& model, double s0, double s1, double h, std::size_t link,
                          const LinkStart& start) {
   const double eps = model.link_smoothing;
+  const double jam = model.jam_length(link);
+  const double sj = jam > 0.0 ? jam - model.rest_length(link) : 0.0;  // s_j, the jam's stretch
   // The spring: the quotient of link_force's own energy (the one energy() reports), with the
   // threshold's scale at least ε. Beyond the ramp E is quadratic and the mean stretch's T_e is the
   // quotient exactly; within it E''' = k/ε and the mean's force misses the quotient by
   // k Δs²/24ε ≤ 4e-14 k ε at |Δs| ≤ 1e-6 ε (across a ramp's end, where E''' jumps, by no more),
   // a work of < 1e-19 k ε² a step; the quotient's rounding, ~2e-16 E/|Δs|, stays below ~1e-10
-  // of k max(ε, |s|) past the threshold.
-  const DiscreteGradient spring = discrete_gradient(
-      [&](double s) { return link_elastic(model, s); }, [&] { return start.energy; }, s0, s1, eps);
+  // of k max(ε, |s|) past the threshold. Near the jam the same holds with |s − s_j| (its ramp is
+  // centred there): the scale is measured from the nearer ramp's centre.
+  const DiscreteGradient spring =
+      discrete_gradient([&](double s) { return link_elastic(model, s, link); },
+                        [&] { return start.energy; }, s0, s1, eps, s0 + s1 < sj ? sj : 0.0);
   // the damper over the step: C(u) = ∫₀^u c min(1, v/ε) dv, the seats' (its work never positive)
-  const StepDamper damper =
-      step_damper_from(model.axial_damping, eps, start.damper, s1 + 0.5 * eps, h);
+  const double u0 = s0 + 0.5 * eps, u1 = s1 + 0.5 * eps;
+  StepDamper damper = step_damper_from(model.axial_damping, eps, start.damper, u1, h);
+  // the jam's, the mirror image's: its tension −(C(v₁) − C(v₀))/h with v = s_j − s + ε/2 (v falls
+  // as s grows: its work is never positive either), ∂/∂s₁ = +c min(1, v₁/ε)/h
+  bool pushes = false;
+  if (jam > 0.0) {
+    const double v0 = sj - s0 + 0.5 * eps, v1 = sj - s1 + 0.5 * eps;
+    const StepDamper d = step_damper_from(model.axial_damping, eps, start.jam_damper, v1, h);
+    damper.force -= d.force;
+    damper.slope += d.slope;
+    pushes = v0 > 0.0 || v1 > 0.0;
+  }
   LinkStep out;
   out.elastic = spring.force;
   const double tension = spring.force + damper.force;
-  if (!(tension > 0.0)) return out;  // shortening faster than the spring pulls: slack
+  // It pulls only on a step that touches the tension's ramp (shortening faster than the spring
+  // pulls: slack; without a jam T > 0 needs that), pushes only on one that touches the jam's
+  // (lengthening faster than it pushes: free). Where clamped the damper's share −T_dg does the
+  // work T_dg (s₁ − s₀) ≤ 0: T_dg ≥ 0 and s₁ < s₀, or T_dg ≤ 0 and s₁ > s₀.
+  const bool pulls = u0 > 0.0 || u1 > 0.0;
+  if (!((tension > 0.0 && pulls) || (tension < 0.0 && pushes))) return out;
   out.tension = tension;
   out.slope = spring.slope + damper.slope;
   return out;
@@ -1929,7 +1967,7 @@ Energy energy(const Model& model, const State& state) {
     const std::size_t b = (j + 1) % n;
     const double stretch =
         std::hypot(state.x[b] - state.x[j], state.y[b] - state.y[j]) - model.rest_length(j);
-    e.elastic += link_force(model, stretch, 0.0).energy;
+    e.elastic += link_force(model, stretch, 0.0, j).energy;
   }
   // the hinges' stick springs ½ k_t d² (HingeFriction::stick_stiffness; State::hinge_deflection,
   // empty until a step sizes it: every hinge then anchored where it is)
@@ -1947,7 +1985,7 @@ void link_tensions(const Model& model, const State& state, std::span<double> ten
     const double dx = state.x[b] - state.x[j], dy = state.y[b] - state.y[j];
     const double l = std::hypot(dx, dy);
     const double rate = (dx * (state.vx[b] - state.vx[j]) + dy * (state.vy[b] - state.vy[j])) / l;
-    tension[j] = link_force(model, l - model.rest_length(j), rate).tension;
+    tension[j] = link_force(model, l - model.rest_length(j), rate, j).tension;
   }
 }
 

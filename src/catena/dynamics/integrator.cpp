@@ -205,7 +205,7 @@ void Integrator::prepare_links(const Model& model) {
   if (model.links_carry_compression || !model.links_discrete_gradient) return;
   link_start_.resize(model.links());
   for (std::size_t j = 0; j < model.links(); ++j)
-    link_start_[j] = link_step_start(model, l0_[j] - model.rest_length(j));
+    link_start_[j] = link_step_start(model, l0_[j] - model.rest_length(j), j);
 }
 
 void Integrator::prepare_seats(const Model& model) {
@@ -350,12 +350,12 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       // (−T_e there where T is clamped at 0, as the seats' damper).
       double tension = 0.0, elastic = 0.0;
       if (model.links_discrete_gradient) {
-        const LinkStep law = link_step_force(model, l0 - p, l1 - p, h, link_start[j]);
+        const LinkStep law = link_step_force(model, l0 - p, l1 - p, h, j, link_start[j]);
         tension = law.tension;
         elastic = law.elastic;
         dtension = law.slope;  // ∂T/∂l₁ = ∂T/∂s₁; 0 on a slack link
       } else {
-        const LinkForce law = link_force(model, lt - p, (l1 - l0) / h);
+        const LinkForce law = link_force(model, lt - p, (l1 - l0) / h, j);
         tension = law.tension;
         elastic = law.elastic;
         dtension = th * law.stiffness + law.damping / h;  // 0 on a slack link
