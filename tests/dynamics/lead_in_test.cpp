@@ -429,16 +429,7 @@ TEST(DynamicsLeadIn, ClearanceMatchesABruteForceOnRandomLeadIns) {
 // inside) and the direction past the end (the counter-clockwise tangent t at the end angle, −t at
 // the start angle).
 Guide arc_rail(bool inside) {
-  Guide g = inclined_rail(0.3);
-  g.kind = Guide::Kind::kArc;
-  g.x0 = g.y0 = g.x1 = g.y1 = 0.0;
-  g.centre_x = 0.1;
-  g.centre_y = -0.05;
-  g.radius = 0.2;
-  g.start_angle = 0.4;
-  g.end_angle = 2.1;
-  g.inside = inside;
-  return g;
+  return testing::arc_rail(inclined_rail(0.3), 0.1, -0.05, 0.2, 0.4, 2.1, inside);
 }
 struct ArcEnd {
   double px, py, nx, ny, ox, oy;  // the end point, the free side's normal, past the end
