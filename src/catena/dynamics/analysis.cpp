@@ -26,6 +26,7 @@
 #include "catena/contact/chain_catalog.hpp"
 #include "catena/contact/roller_tooth.hpp"
 #include "catena/core/progress.hpp"
+#include "catena/core/round.hpp"
 #include "catena/drive/sprocket.hpp"
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/layout.hpp"
@@ -510,12 +511,7 @@ constexpr const char* kContactScale =
     " (the seat's or rail's spring or damper over a step against a roller's mass; a smaller step "
     "allows more)";
 
-// x rounded down to `digits` significant digits (a limit named so that the value named is inside).
-double down_to(double x, int digits) {
-  if (!(x > 0.0) || !std::isfinite(x)) return x;
-  const double unit = std::pow(10.0, std::floor(std::log10(x)) - (digits - 1));
-  return std::floor(x / unit * (1.0 + 1e-12)) * unit;
-}
+using check::down_to;  // (a limit named so that the value named is inside)
 
 // x rounded up to `digits` significant digits (a lower limit named so that the value named is
 // inside).
@@ -2152,6 +2148,9 @@ Setup parse(const analysis::Inputs& in) {
       const std::string which = ends == g.text.end() ? "both" : ends->second;
       lead.at_start = which != "end";
       lead.at_end = which != "start";
+      // a lead_in_end not read (named when read) leaves the ends unknown: no check on the rail
+      // or the path from a guessed count
+      const bool ends_known = !g.seen.count("lead_in_end") || ends != g.text.end();
       const std::vector<Issue> lead_issues = validate(lead);
       for (const Issue& issue : lead_issues) {
         if (!g.value.count(issue.field)) continue;  // not read: reported already
@@ -2161,7 +2160,7 @@ Setup parse(const analysis::Inputs& in) {
       // laid): its radius and the room between its ends (validate(LeadIn, Guide)), named whether
       // or not the user wrote the lead-in's sweep
       bool on_rail = true;  // no problem of the lead-in on this rail
-      if (lead_issues.empty() && readable && complete)
+      if (lead_issues.empty() && readable && complete && ends_known)
         for (const Issue& issue : validate(lead, guide)) {
           issues.push_back({field(issue.field), issue.value, issue.expected});
           on_rail = false;
@@ -2184,7 +2183,7 @@ Setup parse(const analysis::Inputs& in) {
                    format_g(0.5 * chain_length, 4) +
                    " m (a closed loop spans no longer chord: the way back is as long)"});
       }
-      lead_ins = lead_in_arcs(guide, lead);
+      if (ends_known) lead_ins = lead_in_arcs(guide, lead);
       lead_ins_at_start = lead.at_start;
       if (!lead_ins.empty() && bounded)
         lead_rails.push_back({field("lead_in_radius"), i, 0, 0, 0, false, lead});
