@@ -452,6 +452,13 @@ TEST(DynamicsPocketCli, MouthRampAndReleaseOutOfRangeAreNamed) {
   named(both, {"dynamics.pocket_mouth (line ", "expected 0 while dynamics.pocket_release (line ",
                ") is true: the ramp is the sharp mouth's option",
                "a ramp in [0, pocket_clearance] = [0, 0.0001] m needs pocket_release = false"});
+  // an unreadable clearance: the ramp's range named without a number
+  const CliRun unread =
+      bad("mouth_release_unread.toml", {{"pocket_clearance", "pocket_clearance = \"abc\""},
+                                        {"", "pocket_mouth = \"0.05 mm\"\npocket_release = true"}});
+  named(unread, {"dynamics.pocket_clearance", "dynamics.pocket_mouth (line ",
+                 "a ramp in [0, pocket_clearance] needs pocket_release = false"});
+  EXPECT_EQ(unread.err.find("nan"), std::string::npos) << unread.err;
 }
 
 // On ISO 606 sprockets the two keys are refused by name, each with its value, as the pocket's

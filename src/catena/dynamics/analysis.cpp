@@ -1574,8 +1574,9 @@ Setup parse(const analysis::Inputs& in) {
             {at("pocket_mouth"), shown(s.mouth),
              "0 while " + at("pocket_release") +
                  " is true: the ramp is the sharp mouth's option, the release replaces "
-                 "the mouth's cut; a ramp in [0, pocket_clearance] = [0, " +
-                 shown(s.clearance) + "] m needs pocket_release = false"});
+                 "the mouth's cut; a ramp in [0, pocket_clearance]" +
+                 (clearance_known ? " = [0, " + shown(s.clearance) + "] m" : std::string()) +
+                 " needs pocket_release = false"});
     }
   }
 
