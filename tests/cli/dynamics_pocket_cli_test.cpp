@@ -492,7 +492,8 @@ TEST(DynamicsPocketCli, MissingTableSaysContactStiffnessIsThePocketsOnly) {
   std::ofstream(p) << "[chain]\ntype = \"round-link\"\npitch = \"64 mm\"\nwire = \"18 mm\"\n";
   const CliRun r = run("dynamics " + p.string());
   EXPECT_EQ(r.status, 2);
-  named(r, {"dynamics = (missing): expected a [dynamics] table (chain, links, axial_stiffness "
+  named(r, {"dynamics = (missing): expected a [dynamics] table (chain, links unless a free "
+            "layout chooses it, axial_stiffness "
             "unless chain is 08A … 32A and no pitch is given, contact_damping, duration, step; "
             "with wheel = \"pocket\" pitch, wire_diameter and mass_per_metre instead of chain, "
             "and contact_stiffness, which the ISO 606 seats default to the Hertz stiffness at "

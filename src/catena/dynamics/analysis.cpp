@@ -302,11 +302,11 @@ const Parameter& table_parameter() {
         "file works); in a case file, its own [dynamics] table";
     t.required = true;
     t.expected =
-        "a [dynamics] table (chain, links, axial_stiffness unless chain is 08A … 32A and no "
-        "pitch is given, contact_damping, duration, step; with wheel = \"pocket\" pitch, "
-        "wire_diameter and mass_per_metre instead of chain, and contact_stiffness, which the "
-        "ISO 606 seats default to the Hertz stiffness at the expected load) and two or more "
-        "[[dynamics.sprocket]] tables (docs/models/dynamics.md)";
+        "a [dynamics] table (chain, links unless a free layout chooses it, axial_stiffness "
+        "unless chain is 08A … 32A and no pitch is given, contact_damping, duration, step; with "
+        "wheel = \"pocket\" pitch, wire_diameter and mass_per_metre instead of chain, and "
+        "contact_stiffness, which the ISO 606 seats default to the Hertz stiffness at the expected "
+        "load) and two or more [[dynamics.sprocket]] tables (docs/models/dynamics.md)";
     t.fields = table_fields();
     t.rows_name = "sprocket";
     t.row_fields = sprocket_fields();
