@@ -340,8 +340,22 @@ TEST(DynamicsConveyorCli, LeadInsOnArcGuidesCheckedAndRun) {
        {"dynamics.guide[0].lead_in_radius (line 25)", "dynamics.guide[1].lead_in_angle (line 27)"})
     EXPECT_NE(r.err.find(field), std::string::npos) << field << "\n" << r.err;
   for (const char* text : {"0 < R < 0.05 m, the arc's surface radius", "17.51",
-                           "fits the arc's open part", "= 20 deg"})
+                           "at each of its 2 ends, fits the arc's open part", "= 20 deg",
+                           ": lead_in_angle <= 15.18 deg at this lead_in_radius, or "
+                           "lead_in_radius <= ",
+                           " m at this lead_in_angle, or one lead_in_end"})
     EXPECT_NE(r.err.find(text), std::string::npos) << text << "\n" << r.err;
+
+  // an unknown lead_in_end is named alone: no cover check from a guessed count of ends (with
+  // "end" the lead-in's 17.5° fits the 20°)
+  const fs::path middle = dir / "arc_lead_in_middle.toml";
+  std::ofstream(middle) << kLeadInLoopHead << ring("-170", "170")
+                        << "lead_in_radius = \"20 mm\"\nlead_in_end = \"middle\"\n";
+  const CliRun m = run("dynamics " + middle.string());
+  EXPECT_EQ(m.status, 2);
+  EXPECT_NE(m.err.find("dynamics.guide[0].lead_in_end (line "), std::string::npos) << m.err;
+  EXPECT_NE(m.err.find("expected start, end or both"), std::string::npos) << m.err;
+  EXPECT_EQ(m.err.find("lead_in_angle"), std::string::npos) << m.err;
   fs::remove_all(dir);
 }
 

@@ -458,6 +458,13 @@ TEST(DynamicsPocketCli, MouthRampAndReleaseOutOfRangeAreNamed) {
   named(both, {"dynamics.pocket_mouth (line ", "expected 0 while dynamics.pocket_release (line ",
                ") is true: the ramp is the sharp mouth's option",
                "a ramp in [0, pocket_clearance] = [0, 0.0001] m needs pocket_release = false"});
+  // an unreadable clearance: the ramp's range named without a number
+  const CliRun unread =
+      bad("mouth_release_unread.toml", {{"pocket_clearance", "pocket_clearance = \"abc\""},
+                                        {"", "pocket_mouth = \"0.05 mm\"\npocket_release = true"}});
+  named(unread, {"dynamics.pocket_clearance", "dynamics.pocket_mouth (line ",
+                 "a ramp in [0, pocket_clearance] needs pocket_release = false"});
+  EXPECT_EQ(unread.err.find("nan"), std::string::npos) << unread.err;
 }
 
 // On ISO 606 sprockets the two keys are refused by name, each with its value, as the pocket's
@@ -491,7 +498,8 @@ TEST(DynamicsPocketCli, MissingTableSaysContactStiffnessIsThePocketsOnly) {
   std::ofstream(p) << "[chain]\ntype = \"round-link\"\npitch = \"64 mm\"\nwire = \"18 mm\"\n";
   const CliRun r = run("dynamics " + p.string());
   EXPECT_EQ(r.status, 2);
-  named(r, {"dynamics = (missing): expected a [dynamics] table (chain, links, axial_stiffness "
+  named(r, {"dynamics = (missing): expected a [dynamics] table (chain, links unless a free "
+            "layout chooses it, axial_stiffness "
             "unless chain is 08A … 32A and no pitch is given, contact_damping, duration, step; "
             "with wheel = \"pocket\" pitch, wire_diameter and mass_per_metre instead of chain, "
             "and contact_stiffness, which the ISO 606 seats default to the Hertz stiffness at "

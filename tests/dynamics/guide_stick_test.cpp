@@ -631,14 +631,7 @@ TEST(GuideStick, ARollerComingOffALeadInIsAnchoredOnArrival) {
 // An arc guide of radius R about the origin from `start` to `end` [rad], the rollers outside it
 // or `inside`, otherwise the level rail's (μ, k_t, its penalty and damper).
 Guide arc_rail(double radius, double start, double end, bool inside, double mu, double stick) {
-  Guide g = level_rail(mu, stick);
-  g.kind = Guide::Kind::kArc;
-  g.x0 = g.x1 = 0.0;
-  g.radius = radius;
-  g.start_angle = start;
-  g.end_angle = end;
-  g.inside = inside;
-  return g;
+  return testing::arc_rail(level_rail(mu, stick), 0.0, 0.0, radius, start, end, inside);
 }
 
 // Two rollers one link apart on the arc `g` under the gravity −y, node 0 at the angle `at` and

@@ -22,19 +22,7 @@ constexpr double kRoller = 0.006035;  // [m] 12B roller radius
 Guide straight_rail(double mu) { return testing::inclined_rail(mu); }
 
 Guide arc_rail(bool inside, double mu) {
-  Guide g;
-  g.kind = Guide::Kind::kArc;
-  g.centre_x = 0.1;
-  g.centre_y = -0.05;
-  g.radius = 0.25;
-  g.start_angle = -0.5;
-  g.end_angle = 2.0;
-  g.inside = inside;
-  g.roller_radius = kRoller;
-  g.contact_stiffness = 1e7;
-  g.contact_damping = 200.0;
-  g.friction = mu;
-  return g;
+  return testing::arc_rail(straight_rail(mu), 0.1, -0.05, 0.25, -0.5, 2.0, inside);
 }
 
 // A roller position pressed `depth` into the rail at a fraction `s` along it.

@@ -429,16 +429,7 @@ TEST(DynamicsLeadIn, ClearanceMatchesABruteForceOnRandomLeadIns) {
 // inside) and the direction past the end (the counter-clockwise tangent t at the end angle, −t at
 // the start angle).
 Guide arc_rail(bool inside) {
-  Guide g = inclined_rail(0.3);
-  g.kind = Guide::Kind::kArc;
-  g.x0 = g.y0 = g.x1 = g.y1 = 0.0;
-  g.centre_x = 0.1;
-  g.centre_y = -0.05;
-  g.radius = 0.2;
-  g.start_angle = 0.4;
-  g.end_angle = 2.1;
-  g.inside = inside;
-  return g;
+  return testing::arc_rail(inclined_rail(0.3), 0.1, -0.05, 0.2, 0.4, 2.1, inside);
 }
 struct ArcEnd {
   double px, py, nx, ny, ox, oy;  // the end point, the free side's normal, past the end
@@ -695,6 +686,90 @@ TEST(DynamicsLeadIn, ArcRailLeadInsCoverNoContactOfTheRail) {
     EXPECT_TRUE(lead_in_arcs(convex, {big, 0.5, true, true}).empty());
   }
   EXPECT_TRUE(validate(LeadIn{0.5, 0.5, true, true}, arc_rail(true)).empty());  // inside: any R
+}
+
+// The cover refusal names what fits (docs/models/dynamics.md, "On an arc rail"). The largest
+// sweep at a radius, lead_in_angle_limit's closed forms, against lead_in_cover itself: the α found
+// covers the β asked to rounding, and a sweep 1e-6 larger covers more; where it gives π/2 every
+// sweep fits. The ring opened 20° (−170° to 170°, a 20 mm, 30° lead-in at both ends, 17.5° each):
+// the message names the angle and the radius, each of which fits as printed and not one unit of
+// its fourth digit beyond, and one end; at one end of a ring opened 10° it names no "one
+// lead_in_end"; opened 0.05° nothing fits at all; a closed ring is refused on lead_in_radius.
+TEST(DynamicsLeadIn, ArcRailCoverRefusalNamesWhatFits) {
+  for (const bool inside : {false, true}) {
+    const Guide rail = arc_rail(inside);
+    for (const double big : {0.004, 0.05, 0.15}) {
+      const double most = lead_in_cover(rail, {big, kPi / 2, true, true});
+      for (const double share : {1e-3, 0.1, 0.5, 0.9, 0.999, 1.0, 1.5}) {
+        const double beta = share * most;
+        const double alpha = lead_in_angle_limit(rail, {big, 0.0, true, true}, beta);
+        ASSERT_TRUE(alpha >= 0.0 && alpha <= kPi / 2) << inside << " " << big << " " << share;
+        const double got = lead_in_cover(rail, {big, alpha, true, true});
+        if (alpha < kPi / 2) {
+          EXPECT_NEAR(got, beta, 1e-12 * most) << inside << " " << big << " " << share;
+          EXPECT_GT(lead_in_cover(rail, {big, alpha * (1.0 + 1e-6), true, true}), beta)
+              << inside << " " << big << " " << share;
+        } else {
+          EXPECT_LE(got, beta * (1.0 + 1e-12)) << inside << " " << big << " " << share;
+        }
+      }
+    }
+  }
+  // outside, ρ = 0.2 m, R = 50 mm, r = 6 mm: 5° of cover at α = 18.50°
+  Guide convex = arc_rail(false);
+  convex.roller_radius = 0.006;
+  EXPECT_NEAR(lead_in_angle_limit(convex, {0.05, 0.0, true, true}, 5.0 * kPi / 180.0) * 180.0 / kPi,
+              18.50, 0.005);
+
+  const auto after = [](const std::string& text, const std::string& key) {
+    const std::size_t at = text.find(key);
+    return at == std::string::npos ? NAN : std::stod(text.substr(at + key.size()));
+  };
+  Guide ring = arc_rail(true);
+  ring.radius = 0.0438;
+  ring.start_angle = -170.0 * kPi / 180.0;
+  ring.end_angle = 170.0 * kPi / 180.0;
+  const LeadIn both{0.02, kPi / 6, true, true};
+  const std::vector<Issue> refused = validate(both, ring);
+  ASSERT_EQ(refused.size(), 1U);
+  const std::string& text = refused[0].expected;
+  EXPECT_NE(text.find("at each of its 2 ends"), std::string::npos) << text;
+  EXPECT_NE(text.find("or one lead_in_end"), std::string::npos) << text;
+  const double angle = after(text, "lead_in_angle <= "), radius = after(text, "lead_in_radius <= ");
+  EXPECT_NEAR(angle, 15.18, 1e-9) << text;  // the closed form: 10° of cover each
+  ASSERT_TRUE(radius > 0.0 && radius < 0.02) << text;
+  const double deg = kPi / 180.0;
+  EXPECT_TRUE(validate(LeadIn{0.02, angle * deg, true, true}, ring).empty()) << angle;
+  EXPECT_FALSE(validate(LeadIn{0.02, (angle + 0.01) * deg, true, true}, ring).empty()) << angle;
+  EXPECT_TRUE(validate(LeadIn{radius, kPi / 6, true, true}, ring).empty()) << radius;
+  const double unit = std::pow(10.0, std::floor(std::log10(radius)) - 3.0);
+  EXPECT_FALSE(validate(LeadIn{radius + unit, kPi / 6, true, true}, ring).empty()) << radius;
+  // one end, a ring opened 10°: less than one lead-in's 17.5°
+  Guide narrow = ring;
+  narrow.start_angle = -175.0 * deg;
+  narrow.end_angle = 175.0 * deg;
+  const std::vector<Issue> one = validate(LeadIn{0.02, kPi / 6, false, true}, narrow);
+  ASSERT_EQ(one.size(), 1U);
+  EXPECT_NE(one[0].expected.find("at its end,"), std::string::npos) << one[0].expected;
+  EXPECT_EQ(one[0].expected.find("one lead_in_end"), std::string::npos) << one[0].expected;
+  EXPECT_FALSE(std::isnan(after(one[0].expected, "lead_in_angle <= "))) << one[0].expected;
+  // opened 0.05°: no sweep of 0.1° or more, and no radius (a roller alone covers 4.5°)
+  Guide shut = ring;
+  shut.start_angle = -179.975 * deg;
+  shut.end_angle = 179.975 * deg;
+  const std::vector<Issue> none = validate(LeadIn{0.02, kPi / 6, false, true}, shut);
+  ASSERT_EQ(none.size(), 1U);
+  EXPECT_NE(none[0].expected.find("no lead-in of 0.1 deg or more fits it at any radius"),
+            std::string::npos)
+      << none[0].expected;
+  // closed: no end to lead in from, whatever the lead-in
+  Guide closed = ring;
+  closed.end_angle = closed.start_angle + 2.0 * kPi;
+  const std::vector<Issue> ringed = validate(LeadIn{0.02, kPi / 6, false, true}, closed);
+  ASSERT_EQ(ringed.size(), 1U);
+  EXPECT_EQ(ringed[0].field, "lead_in_radius");
+  EXPECT_NE(ringed[0].expected.find("no lead-in on a closed ring"), std::string::npos)
+      << ringed[0].expected;
 }
 
 // A roller pressed 0.3 mm into the arc rail's surface (its centre on the circle ρ ± r ∓ 0.3 mm

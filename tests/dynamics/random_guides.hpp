@@ -30,6 +30,23 @@ inline Guide inclined_rail(double mu) {
   return g;
 }
 
+// `rail`'s contact (roller radius, penalty, damper, friction, stick) on an arc guide: of surface
+// `radius` about (cx, cy) from `start` to `end` [rad] counter-clockwise, the rollers outside it or
+// `inside`. The fixed arcs of the guides', stick and lead-in tests.
+inline Guide arc_rail(const Guide& rail, double cx, double cy, double radius, double start,
+                      double end, bool inside) {
+  Guide g = rail;
+  g.kind = Guide::Kind::kArc;
+  g.x0 = g.y0 = g.x1 = g.y1 = 0.0;
+  g.centre_x = cx;
+  g.centre_y = cy;
+  g.radius = radius;
+  g.start_angle = start;
+  g.end_angle = end;
+  g.inside = inside;
+  return g;
+}
+
 // The ranges the guides are drawn from (uniform in each).
 struct GuideRanges {
   double roller_lo = 1e-3, roller_hi = 2e-2;  // [m] roller radius r

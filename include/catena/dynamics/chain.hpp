@@ -482,7 +482,8 @@ std::vector<Issue> validate(const LeadIn& lead);
 /// ("lead_in_radius": the lead-in bends away from the rail's circle only curving more sharply),
 /// and the lead-in's reach round C (lead_in_cover) at each end it is laid at within the arc's open
 /// part 2π − (end_angle − start_angle) ("lead_in_angle": no roller meets the rail and its lead-in,
-/// or both lead-ins, at once).
+/// or both lead-ins, at once; the message names the largest lead_in_angle at this radius and
+/// lead_in_radius at this angle that fit, rounded down), none on a closed ring ("lead_in_radius").
 std::vector<Issue> validate(const LeadIn& lead, const Guide& rail);
 /// [rad] The angle round an arc rail's centre C, from the rail's end, that a lead-in's contact
 /// covers: the roller centres it touches lie within R + r of its centre, in its sweep (r the
@@ -491,6 +492,11 @@ std::vector<Issue> validate(const LeadIn& lead, const Guide& rail);
 /// up to the tangent from C, asin((R + r)/(ρ + R)), where α passes acos((R + r)/(ρ + R)). NaN
 /// for a straight rail or one where these do not apply (outside R ≥ ρ, inside ρ ≤ r).
 double lead_in_cover(const Guide& rail, const LeadIn& lead);
+/// [rad] The largest sweep α in [0, π/2] whose lead_in_cover at lead.radius on `rail` is at most
+/// `cover` (lead.angle unused): lead_in_cover solved for α, outside α = β + asin((ρ − R) sin β /
+/// (R + r)), inside α = asin((ρ + R) sin β / (R + r)) − β, β = `cover`; π/2 when every sweep
+/// fits. NaN where lead_in_cover is, or for a negative `cover`.
+double lead_in_angle_limit(const Guide& rail, const LeadIn& lead, double cover);
 /// The arc guides of the lead-in on a rail (first the start's, then the end's, as asked), with the
 /// rail's contact law, roller radius and friction. None for a lead-in that does not validate on
 /// the rail (validate(lead, rail)), or a rail whose geometry is invalid.

@@ -26,6 +26,7 @@
 #include "catena/contact/chain_catalog.hpp"
 #include "catena/contact/roller_tooth.hpp"
 #include "catena/core/progress.hpp"
+#include "catena/core/round.hpp"
 #include "catena/drive/sprocket.hpp"
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/layout.hpp"
@@ -302,11 +303,11 @@ const Parameter& table_parameter() {
         "file works); in a case file, its own [dynamics] table";
     t.required = true;
     t.expected =
-        "a [dynamics] table (chain, links, axial_stiffness unless chain is 08A … 32A and no "
-        "pitch is given, contact_damping, duration, step; with wheel = \"pocket\" pitch, "
-        "wire_diameter and mass_per_metre instead of chain, and contact_stiffness, which the "
-        "ISO 606 seats default to the Hertz stiffness at the expected load) and two or more "
-        "[[dynamics.sprocket]] tables (docs/models/dynamics.md)";
+        "a [dynamics] table (chain, links unless a free layout chooses it, axial_stiffness "
+        "unless chain is 08A … 32A and no pitch is given, contact_damping, duration, step; with "
+        "wheel = \"pocket\" pitch, wire_diameter and mass_per_metre instead of chain, and "
+        "contact_stiffness, which the ISO 606 seats default to the Hertz stiffness at the expected "
+        "load) and two or more [[dynamics.sprocket]] tables (docs/models/dynamics.md)";
     t.fields = table_fields();
     t.rows_name = "sprocket";
     t.row_fields = sprocket_fields();
@@ -511,12 +512,7 @@ constexpr const char* kContactScale =
     " (the seat's or rail's spring or damper over a step against a roller's mass; a smaller step "
     "allows more)";
 
-// x rounded down to `digits` significant digits (a limit named so that the value named is inside).
-double down_to(double x, int digits) {
-  if (!(x > 0.0) || !std::isfinite(x)) return x;
-  const double unit = std::pow(10.0, std::floor(std::log10(x)) - (digits - 1));
-  return std::floor(x / unit * (1.0 + 1e-12)) * unit;
-}
+using check::down_to;  // (a limit named so that the value named is inside)
 
 // x rounded up to `digits` significant digits (a lower limit named so that the value named is
 // inside).
@@ -1583,8 +1579,9 @@ Setup parse(const analysis::Inputs& in) {
             {at("pocket_mouth"), shown(s.mouth),
              "0 while " + at("pocket_release") +
                  " is true: the ramp is the sharp mouth's option, the release replaces "
-                 "the mouth's cut; a ramp in [0, pocket_clearance] = [0, " +
-                 shown(s.clearance) + "] m needs pocket_release = false"});
+                 "the mouth's cut; a ramp in [0, pocket_clearance]" +
+                 (clearance_known ? " = [0, " + shown(s.clearance) + "] m" : std::string()) +
+                 " needs pocket_release = false"});
     }
   }
 
@@ -2157,6 +2154,9 @@ Setup parse(const analysis::Inputs& in) {
       const std::string which = ends == g.text.end() ? "both" : ends->second;
       lead.at_start = which != "end";
       lead.at_end = which != "start";
+      // a lead_in_end not read (named when read) leaves the ends unknown: no check on the rail
+      // or the path from a guessed count
+      const bool ends_known = !g.seen.count("lead_in_end") || ends != g.text.end();
       const std::vector<Issue> lead_issues = validate(lead);
       for (const Issue& issue : lead_issues) {
         if (!g.value.count(issue.field)) continue;  // not read: reported already
@@ -2166,7 +2166,7 @@ Setup parse(const analysis::Inputs& in) {
       // laid): its radius and the room between its ends (validate(LeadIn, Guide)), named whether
       // or not the user wrote the lead-in's sweep
       bool on_rail = true;  // no problem of the lead-in on this rail
-      if (lead_issues.empty() && readable && complete)
+      if (lead_issues.empty() && readable && complete && ends_known)
         for (const Issue& issue : validate(lead, guide)) {
           issues.push_back({field(issue.field), issue.value, issue.expected});
           on_rail = false;
@@ -2189,7 +2189,7 @@ Setup parse(const analysis::Inputs& in) {
                    format_g(0.5 * chain_length, 4) +
                    " m (a closed loop spans no longer chord: the way back is as long)"});
       }
-      lead_ins = lead_in_arcs(guide, lead);
+      if (ends_known) lead_ins = lead_in_arcs(guide, lead);
       lead_ins_at_start = lead.at_start;
       if (!lead_ins.empty() && bounded)
         lead_rails.push_back({field("lead_in_radius"), i, 0, 0, 0, false, lead});

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <string>
 
+#include "catena/core/round.hpp"
 #include "catena/drive/sprocket.hpp"
 #include "catena/dynamics/guide_hint.hpp"
 #include "catena/dynamics/pocket_wheel.hpp"
@@ -502,6 +503,25 @@ double lead_in_cover(const Guide& rail, const LeadIn& lead) {
   return std::atan2(reach * std::sin(alpha), far - reach * std::cos(alpha));
 }
 
+double lead_in_angle_limit(const Guide& rail, const LeadIn& lead, double cover) {
+  if (rail.kind != Guide::Kind::kArc || !(cover >= 0.0)) return NAN;
+  const double rho = rail.radius, big = lead.radius, reach = big + rail.roller_radius;
+  const double most = 0.5 * std::numbers::pi;
+  // lead_in_cover's β set to `cover` and solved for α: outside tan β = reach sin α / (ρ − R +
+  // reach cos α), i.e. reach sin(α − β) = (ρ − R) sin β, β growing with α up to α = π/2; inside
+  // tan β = reach sin α / (ρ + R − reach cos α), i.e. reach sin(α + β) = (ρ + R) sin β, β growing
+  // up to the tangent from C, where α + β = π/2 (beyond it β stays there, up to α = π/2)
+  if (!rail.inside) {
+    if (!(big < rho)) return NAN;
+    if (cover >= std::atan2(reach, rho - big)) return most;
+    return std::min(most, cover + std::asin((rho - big) * std::sin(cover) / reach));
+  }
+  if (!(rho > rail.roller_radius)) return NAN;
+  const double far = rho + big;
+  if (cover >= std::asin(reach / far)) return most;
+  return std::min(most, std::asin(far * std::sin(cover) / reach) - cover);
+}
+
 std::vector<Issue> validate(const LeadIn& lead, const Guide& rail) {
   std::vector<Issue> out = validate(lead);
   if (!out.empty() || !arc_rail_valid(rail)) return out;
@@ -514,20 +534,49 @@ std::vector<Issue> validate(const LeadIn& lead, const Guide& rail) {
                        "continues the rail, a larger R rises above its circle)"});
     return out;
   }
+  const double open = 2.0 * std::numbers::pi - (rail.end_angle - rail.start_angle);
+  if (!(open > 1e-9)) {  // a closed ring (to the angles' rounding): no angle or radius helps
+    out.push_back({"lead_in_radius", check::format_si(lead.radius, "m"),
+                   "no lead-in on a closed ring (end_angle - start_angle = 360 deg): it has no "
+                   "end to lead in from"});
+    return out;
+  }
   const double cover = lead_in_cover(rail, lead);
   if (!std::isfinite(cover)) return out;  // inside an arc no wider than a roller: its own check
   const int ends = (lead.at_start ? 1 : 0) + (lead.at_end ? 1 : 0);
-  const double open = 2.0 * std::numbers::pi - (rail.end_angle - rail.start_angle);
-  if (ends * cover > open)
-    out.push_back(
-        {"lead_in_angle", check::format_si(lead.angle * deg, "deg"),
-         "a lead-in whose contact, " + check::format_si(cover * deg, "deg") +
-             " round the arc's centre at each of its " + std::to_string(ends) +
-             (ends == 1 ? " end" : " ends") +
-             ", fits the arc's open part, 360 deg - (end_angle - start_angle) = " +
-             check::format_si(open * deg, "deg") +
-             " (else a roller meets the rail and a lead-in at once): a smaller lead_in_angle or "
-             "lead_in_radius, or one lead_in_end"});
+  if (!(ends * cover > open)) return out;
+  // what fits, rounded down so that the value named fits: the angle at this radius (closed form,
+  // lead_in_angle_limit), the radius at this angle (bisected: the cover grows with R), one end
+  const double each = open / ends;
+  constexpr double kLeast = 0.1 * std::numbers::pi / 180.0;  // validate(LeadIn)'s
+  std::vector<std::string> fits;
+  const double angle = check::down_to(lead_in_angle_limit(rail, lead, each) * deg, 4);
+  if (angle >= kLeast * deg)
+    fits.push_back("lead_in_angle <= " + check::format_si(angle, "deg") +
+                   " at this lead_in_radius");
+  if (lead_in_cover(rail, {0.0, lead.angle, true, true}) <= each) {
+    double lo = 0.0, hi = lead.radius;  // cover(lo) fits, cover(hi) does not
+    for (int i = 0; i < 200 && lo < hi && std::nextafter(lo, hi) < hi; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (lead_in_cover(rail, {mid, lead.angle, true, true}) <= each ? lo : hi) = mid;
+    }
+    const double radius = check::down_to(lo, 4);
+    if (radius > 0.0)
+      fits.push_back("lead_in_radius <= " + check::format_si(radius, "m") +
+                     " at this lead_in_angle");
+  }
+  if (ends == 2 && cover <= open) fits.push_back("one lead_in_end");
+  std::string remedy;
+  for (const std::string& f : fits) remedy += (remedy.empty() ? "" : ", or ") + f;
+  if (remedy.empty())
+    remedy = "no lead-in of 0.1 deg or more fits it at any radius (a shorter arc would)";
+  out.push_back({"lead_in_angle", check::format_si(lead.angle * deg, "deg"),
+                 "a lead-in whose contact, " + check::format_si(cover * deg, "deg") +
+                     " round the arc's centre at " +
+                     (ends == 1 ? std::string("its end") : "each of its 2 ends") +
+                     ", fits the arc's open part, 360 deg - (end_angle - start_angle) = " +
+                     check::format_si(open * deg, "deg") +
+                     " (else a roller meets the rail and a lead-in at once): " + remedy});
   return out;
 }
 
