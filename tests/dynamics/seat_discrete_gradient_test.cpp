@@ -501,10 +501,12 @@ TEST(DynamicsSeatDiscreteGradient, DamperWorkOverAStepIsNeverPositive) {
 // is taken afresh (each fails with that key's comparison dropped), and a call with the key it
 // holds reads it (a memo whose gap is altered under the same key moves the force). A call for the
 // residual alone (SeatStep::jacobian false, the integrator's line search and report) gives the
-// same contact bit for bit but for the derivatives, left 0.
+// same contact bit for bit but for the derivatives, left 0, and the same seat friction (μ = 0.2:
+// seat_friction's force, power and torque, the residual's).
 TEST(DynamicsSeatDiscreteGradient, StartsMemoGivesTheSameContact) {
   Sprocket w = wheel17(false);
   w.contact_damping = 800.0;  // [N·s/m] the damper's integral C(g₀) kept too
+  w.friction = 0.2;
   const SeatGeometry t = seat_geometry(w);
   const double psi = 0.3, turn = 2e-3, h = 1e-4, z = 17.0;
   const Point a0 = in_seat(w, psi, 2e-6, 0.10), a1 = in_seat(w, psi + turn, 3.5e-6, 0.16);
@@ -570,6 +572,18 @@ TEST(DynamicsSeatDiscreteGradient, StartsMemoGivesTheSameContact) {
     EXPECT_EQ(residual.skew_dy, 0.0) << i;
     EXPECT_EQ(residual.skew_dpsi, 0.0) << i;
     EXPECT_EQ(residual.friction_dv[0], 0.0) << i;
+    // the θ point and its velocities, as `contact` takes them
+    const double psi0 = psi + call.dpsi0, speed = (psi + turn - psi0) / h;
+    const double qx = call.p0.x + 0.5 * (a1.x - call.p0.x),
+                 qy = call.p0.y + 0.5 * (a1.y - call.p0.y);
+    const double vx = (a1.x - call.p0.x) / h, vy = (a1.y - call.p0.y) / h;
+    const SeatFriction fr = seat_friction(w, residual, qx, qy, vx, vy, speed);
+    const SeatFriction ff = seat_friction(w, without, qx, qy, vx, vy, speed);
+    EXPECT_NE(std::hypot(ff.fx, ff.fy), 0.0) << i;
+    EXPECT_EQ(fr.fx, ff.fx) << i;
+    EXPECT_EQ(fr.fy, ff.fy) << i;
+    EXPECT_EQ(fr.power, ff.power) << i;
+    EXPECT_EQ(fr.torque, ff.torque) << i;
   }
   // each key's change moves the contact (else its case would not test its comparison)
   for (const std::size_t i : {2, 4, 6, 8}) EXPECT_NE(force[i], force[0]) << i;

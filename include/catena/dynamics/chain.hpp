@@ -1014,13 +1014,13 @@ struct PocketStep {
 /// release or body as the point's own place decides) at the step's ends puts the work's miss
 /// ΔE − ∇E_θ·Δz back along the step z = (q − O, R ψ), metric (1, R²): the skew fields as the
 /// seats' (the joint gains −S Δ, the torque −S R² Δψ, S = (ΔE − ∇E_θ·Δz)/|Δz|²), so that the
-/// elastic work over the step is −ΔE_k. Not where |Δz| < 1e-9 R, nor where the step's straight
-/// path crosses jumps of E_k (the mouth's circle: sharp, with the release for a joint not held,
-/// the ramp's leftover (1 − W) E₀; the body's capture) that add up to more than the pocket law's
-/// energy at a gap of one smoothing length: there the θ point's force alone. The damper, friction
-/// and the release's hold stay at the θ point; where the θ point's force is 0 (out of contact, or
-/// the damper's clamp) its derivative fields are 0 and the contact is active with the correction
-/// alone.
+/// elastic work over the step is −ΔE_k. Not where |Δz| < 1e-9 R, nor where the step's two ends
+/// lie on opposite sides of surfaces where E_k jumps (the mouth's circle: sharp, with the release
+/// for a joint not held, the ramp's leftover (1 − W) E₀; the body's capture) by more in all than
+/// the pocket law's energy at a gap of one smoothing length: there the θ point's force alone. The
+/// damper, friction and the release's hold stay at the θ point; where the θ point's force is 0 (out
+/// of contact, or the damper's clamp) its derivative fields are 0 and the contact is active with
+/// the correction alone.
 SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx, double vy,
                                 double angle, double speed, int held, const PocketStep& step);
 /// At the start and the end of a step (Integrator::step; the same flags for the same state, so

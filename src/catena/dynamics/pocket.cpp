@@ -553,65 +553,64 @@ struct Path {
   double q0x = 0.0, q0y = 0.0, dx = 0.0, dy = 0.0, psi0 = 0.0, dpsi = 0.0, theta = 0.5;
 };
 
-// E_k at the path's point t
-double energy_along(const Sprocket& w, const Capture& cap, const Path& p, double t, int k, int hk) {
-  return energy_of(w, cap,
-                   end_of(w, p.q0x + t * p.dx, p.q0y + t * p.dy, p.psi0 + t * p.dpsi, k, hk), k);
+// E_k and its rate dE/dt at the path's point t: the contact at zero velocity, whose elastic force
+// gives ∇_q E = f n and whose torque ∂E/∂ψ = −τ (0 free of the wheel)
+struct Slope {
+  double e = 0.0, de = 0.0;
+};
+Slope slope_along(const Sprocket& w, const Capture& cap, const Path& p, double t, int k, int hk) {
+  const End e = end_of(w, p.q0x + t * p.dx, p.q0y + t * p.dy, p.psi0 + t * p.dpsi, k, hk);
+  if (e.free) return {};
+  const SeatContact c =
+      contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kForce);
+  if (!c.active) return {};
+  return {c.energy, c.force * (c.nx * p.dx + c.ny * p.dy) - c.torque * p.dpsi};
 }
 
-// The jumps of E_k on the surface f(t) = 0 (f > 0 on its outer side) that the path crosses
-// between the sorted parameters ts[0..n) where f's side changes: each crossing bracketed by
-// bisection to `span` and E_k taken a `span` beyond the bracket on either side (its continuous
-// part's share there at most |∇E| · 3 span of the path's length), |E(after) − E(before)| summed
+// The jump of E_k on the surface f(t) = 0 (f > 0 on its outer side) where the step's two ends lie
+// on its opposite sides (else 0: E at both ends is then one continuous branch's, and a dip across
+// the surface and back, which ΔE never sees, needs no skip): the crossing bracketed by bisection
+// to [a, b], b − a ≤ `span`, and each side's E, taken a `span` beyond the bracket, carried to the
+// bracket's middle m along its own slope, |E(b⁺) − E'(b⁺)(b⁺ − m) − E(a⁻) − E'(a⁻)(m − a⁻)|. The
+// continuous part's share is then E''s over the 3 spans (and a jump of the slope alone over half
+// a span), not |∇E| over 3 spans: a crossing with no jump reads as none at any c and ε.
 template <class Side>
-double jumps_on(const Sprocket& w, const Capture& cap, const Path& p, int k, int hk,
-                const double* ts, int n, double span, Side outer) {
-  double sum = 0.0;
-  for (int i = 0; i + 1 < n; ++i) {
-    double a = ts[i], b = ts[i + 1];
-    const bool at = outer(a);
-    if (at == outer(b)) continue;
-    for (int it = 0; it < 200 && b - a > span; ++it) {
-      const double m = 0.5 * (a + b);
-      (outer(m) == at ? a : b) = m;
-    }
-    sum += std::abs(energy_along(w, cap, p, std::min(1.0, b + span), k, hk) -
-                    energy_along(w, cap, p, std::max(0.0, a - span), k, hk));
+double jump_on(const Sprocket& w, const Capture& cap, const Path& p, int k, int hk, double span,
+               Side outer) {
+  const bool at = outer(0.0);
+  if (at == outer(1.0)) return 0.0;
+  double a = 0.0, b = 1.0;
+  for (int it = 0; it < 200 && b - a > span; ++it) {
+    const double m = 0.5 * (a + b);
+    (outer(m) == at ? a : b) = m;
   }
-  return sum;
+  const double ta = std::max(0.0, a - span), tb = std::min(1.0, b + span), m = 0.5 * (a + b);
+  const Slope ea = slope_along(w, cap, p, ta, k, hk), eb = slope_along(w, cap, p, tb, k, hk);
+  return std::abs(eb.e - eb.de * (tb - m) - ea.e - ea.de * (m - ta));
 }
 
-// The size of E_k's jumps the step's path crosses: Σ |E(after) − E(before)| over its crossings of
-// the mouth's circle and the capture, each crossing bracketed to 1e-9 c of the path (the mouth's
-// found among the ends, the θ point and the path's nearest approach to the centre, where ρ² is
-// least; the capture's among the ends and the θ point). `dist` the θ point's |q − C_k| if known
-// (else < 0): |q − C_k| moves by at most |Δq| + R |Δψ| over the path, so the capture is sought
-// only where that reaches `from` from it.
+// The size of E_k's jumps the step crosses end to end: the mouth's circle's and the capture's,
+// each where the ends lie on its opposite sides, bracketed to 1e-9 c of the path (the mouth, a
+// convex disc, is then crossed once; the capture an odd number of times, of which bisection finds
+// one). `dist` the θ point's |q − C_k| if known (else < 0): |q − C_k| moves by at most
+// |Δq| + R |Δψ| over the path, so the capture is sought only where that reaches `from` from it.
 double crossed_jump(const Sprocket& w, const Capture& cap, const Path& p, int k, int hk,
                     double dist) {
   const double r = w.pitch_radius, mouth = r + 0.5 * w.pocket_clearance;
   const double len = std::hypot(p.dx, p.dy) + r * std::abs(p.dpsi);  // ≥ the points' |dz/dt|
   const double span = 1e-9 * w.pocket_clearance / len;
-  const double dd = p.dx * p.dx + p.dy * p.dy;
-  double ts[4] = {0.0, p.theta, 1.0, 1.0};
-  int n = 3;
-  const double least = dd > 0.0 ? -(p.q0x * p.dx + p.q0y * p.dy) / dd : 0.0;
-  if (least > 0.0 && least < 1.0) ts[n++] = least;
-  std::sort(ts, ts + n);
-  double sum = jumps_on(w, cap, p, k, hk, ts, n, span, [&](double t) {
+  double sum = jump_on(w, cap, p, k, hk, span, [&](double t) {
     const double x = p.q0x + t * p.dx, y = p.q0y + t * p.dy;
     return x * x + y * y > mouth * mouth;
   });
   const double from = cap.from;
   const double reach = std::max(p.theta, 1.0 - p.theta) * len + 1e-9 * w.pocket_clearance;
-  if (w.pocket_body && (dist < 0.0 || std::abs(dist - from) <= reach)) {
-    const double tc[3] = {0.0, std::clamp(p.theta, 0.0, 1.0), 1.0};
-    sum += jumps_on(w, cap, p, k, hk, tc, 3, span, [&](double t) {
+  if (w.pocket_body && (dist < 0.0 || std::abs(dist - from) <= reach))
+    sum += jump_on(w, cap, p, k, hk, span, [&](double t) {
       const double a = vertex_angle(w, k, p.psi0 + t * p.dpsi);
       return std::hypot(p.q0x + t * p.dx - r * std::cos(a), p.q0y + t * p.dy - r * std::sin(a)) >
              from;
     });
-  }
   return sum;
 }
 
