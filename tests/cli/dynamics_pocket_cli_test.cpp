@@ -358,10 +358,9 @@ TEST(DynamicsPocketCli, FieldsThatDoNotFitAPocketWheelAreNamedAtOnce) {
                                             {"pocket_clearance", "pocket_clearance = \"9 mm\""},
                                             {"contact_stiffness", "# no contact stiffness"},
                                             {"links", "links = 30"}});
-  named(values,
-        {"dynamics.wire_diameter", "in (0, pitch/2) = (0, 0.032) m", "dynamics.pocket_clearance",
-         "in (0, 0.1 pitch] = (0, 0.0064] m", "dynamics.contact_stiffness", "(no Hertz default)",
-         "dynamics.links", "2z + 4m with m >= 1"});
+  named(values, {"dynamics.wire_diameter", "= (0, 0.0319945] m", "dynamics.pocket_clearance",
+                 "in (0, 0.1 pitch] = (0, 0.0064] m", "dynamics.contact_stiffness",
+                 "(no Hertz default)", "dynamics.links", "2z + 4m with m >= 1"});
   const CliRun teeth = bad("teeth.toml", {{"teeth = 8", "teeth = 7"}});
   named(teeth, {"dynamics.sprocket[0].teeth", "an even integer in [4, 150]"});
   // z = 4 with a thick wire: δ1 above 60 deg, the pocket cannot hold the crank
@@ -374,8 +373,7 @@ TEST(DynamicsPocketCli, FieldsThatDoNotFitAPocketWheelAreNamedAtOnce) {
   // jam, at d, would be at its rest length t − d; docs/models/dynamics.md "Tension-only links:
   // the jam")
   const CliRun thick = bad("thick.toml", {{"wire_diameter", "wire_diameter = \"32 mm\""}});
-  named(thick, {"dynamics.wire_diameter", "in (0, pitch/2) = (0, 0.032) m",
-                "holds its two neighbours' wires"});
+  named(thick, {"dynamics.wire_diameter", "= (0, 0.0319945] m", "holds its two neighbours' wires"});
   const CliRun missing = bad("missing.toml", {{"wire_diameter", "# no wire"}});
   named(missing, {"dynamics.wire_diameter", "(missing)"});
   const CliRun kind = bad("kind.toml", {{"wheel", "wheel = \"sprocket\""}});
@@ -390,6 +388,40 @@ TEST(DynamicsPocketCli, FieldsThatDoNotFitAPocketWheelAreNamedAtOnce) {
   const CliRun r = run("dynamics " + p.string() + " --format json");
   EXPECT_EQ(r.status, 2);
   named(r, {"dynamics.wire_diameter", "dynamics.pocket_clearance", "only with wheel = \"pocket\""});
+}
+
+// A pocket wheel's wire against the upright link's jam (docs/models/dynamics.md, "Tension-only
+// links: the jam"): d is the jam, at most ε = 1 µm below the link's rest length
+// t − pretension/k − d, so 2d ≤ t − pretension/k − ε. With the example's 1000 N (pretension/k =
+// 10 µm) the bound is 31.9945 mm: 31.994 mm runs, 31.995 mm is refused on dynamics.wire_diameter
+// with the bound, and with dynamics.pretension, which is what refuses it (without it the bound is
+// 31.9995 mm); 50 kN (0.5 mm) refuses 31.8 mm the same way; 32 mm is refused without the
+// pretension named. The model's internal link_jam_length is never named.
+TEST(DynamicsPocketCli, WireIsCheckedAgainstTheJamWithThePretension) {
+  const std::string inside =
+      example_with("inside.toml", {{"wire_diameter", "wire_diameter = \"31.994 mm\""}});
+  const CliRun ok = run("dynamics " + inside + " --duration 0.01s --format json");
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  auto unnamed = [](const CliRun& r) {
+    EXPECT_EQ(r.err.find("link_jam_length"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("link-jam-length"), std::string::npos) << r.err;
+  };
+  const CliRun out = bad("outside.toml", {{"wire_diameter", "wire_diameter = \"31.995 mm\""}});
+  named(out, {"dynamics.wire_diameter", "0.031995",
+              "(0, (pitch - pretension/axial_stiffness - 1e-06 m)/2] = (0, 0.0319945] m",
+              "dynamics.pretension",
+              "1000 N shortens the links by pretension/axial_stiffness = 1e-05 m: without it the "
+              "bound is 0.0319995 m"});
+  unnamed(out);
+  const CliRun pulled = bad("pulled.toml", {{"wire_diameter", "wire_diameter = \"31.8 mm\""},
+                                            {"pretension =", "pretension = \"50000 N\""}});
+  named(pulled,
+        {"dynamics.wire_diameter", "= (0, 0.0317495] m", "dynamics.pretension", "0.0005 m"});
+  unnamed(pulled);
+  const CliRun thick = bad("thick32.toml", {{"wire_diameter", "wire_diameter = \"32 mm\""}});
+  named(thick, {"dynamics.wire_diameter", "= (0, 0.0319945] m"});
+  EXPECT_EQ(thick.err.find("dynamics.pretension"), std::string::npos) << thick.err;
+  unnamed(thick);
 }
 
 // The pockets' mouth ramp and release as keys (docs/models/dynamics.md, "Pocket wheel in the

@@ -643,6 +643,93 @@ TEST(DynamicsTensionOnlyLinks, EachLinkJamsAtItsParitysLengthAndItsForceIsTheEne
       EXPECT_NEAR(-r[2 * i + axis] / h, f[axis], 1e-9 * kStiffness * eps) << i << " " << axis;
     }
   }
+  // With Model::links_discrete_gradient (θ = ½), one step with u ≠ x: link 0 going 0.5 µm deeper
+  // into its jam, link 1 deeper into its jam's ramp, link 2 slack, each turning by 0.01 rad. The
+  // start's velocities carry the nodes to u (the inertia's part of the residual is 0), so −r/h is
+  // the links' force: each link's link_step_force(…, j) along d_θ/l_θ. Link 1 pushes: with link
+  // 0's jam (70 mm, of an 82 mm link) it would push by 1.6 MN, without one not at all.
+  m.links_discrete_gradient = true;
+  const double len1[3] = {len[0] - 0.5e-6, len[1] - 0.4 * eps, len[2] + 1e-4};
+  double step[3], dtx[3], dty[3], ltheta[3];
+  for (std::size_t i = 0; i < 4; ++i) {
+    double x = 0.0, y = 0.0;
+    for (std::size_t j = 0; j < i; ++j) {
+      x += len1[j] * std::cos(ang[j] + 0.01);
+      y += len1[j] * std::sin(ang[j] + 0.01);
+    }
+    u[2 * i] = x, u[2 * i + 1] = y;
+    s.vx[i] = (x - s.x[i]) / h, s.vy[i] = (y - s.y[i]) / h;
+  }
+  for (std::size_t j = 0; j < 3; ++j) {
+    const double d0x = s.x[j + 1] - s.x[j], d0y = s.y[j + 1] - s.y[j];
+    const double d1x = u[2 * j + 2] - u[2 * j], d1y = u[2 * j + 3] - u[2 * j + 1];
+    const double l0 = std::sqrt(d0x * d0x + d0y * d0y), l1 = std::sqrt(d1x * d1x + d1y * d1y);
+    step[j] = link_step_force(m, l0 - m.rest_length(j), l1 - m.rest_length(j), h, j).tension;
+    dtx[j] = 0.5 * (d0x + d1x), dty[j] = 0.5 * (d0y + d1y), ltheta[j] = 0.5 * (l0 + l1);
+  }
+  EXPECT_LT(step[0], -500.0);
+  EXPECT_LT(step[1], -24.5);  // deeper than the θ point's v = 0.7 ε, and its damper pushing
+  EXPECT_EQ(step[2], 0.0);
+  Integrator gradient(m, {.step = h, .theta = 0.5});
+  gradient.newton_system(m, s, u, r, nullptr);
+  for (std::size_t i = 0; i < 4; ++i) {
+    double f[2] = {0.0, 0.0};
+    if (i < 3) f[0] += step[i] * dtx[i] / ltheta[i], f[1] += step[i] * dty[i] / ltheta[i];
+    if (i > 0)
+      f[0] -= step[i - 1] * dtx[i - 1] / ltheta[i - 1],
+          f[1] -= step[i - 1] * dty[i - 1] / ltheta[i - 1];
+    for (int axis = 0; axis < 2; ++axis)
+      EXPECT_NEAR(-r[2 * i + axis] / h, f[axis], 1e-9 * kStiffness * eps)
+          << "discrete gradient " << i << " " << axis;
+  }
+}
+
+// The step's start as the integrator keeps it (link_step_start, once a step for each link) gives
+// link_step_force's result bit for bit, over steps of an odd link (jam d = 18 mm on a 46 mm link,
+// damped) entering its jam's ramp, crossing it, leaving it, going deeper, inside it, from beyond
+// it, beyond it deeper and beyond it lengthening slowly. The start is the link's own: with link
+// 0's (no jam: E(s₀) = C(v₀) = 0) or without the jam's damper C(v₀) every step within the jam
+// changes; and beyond the ramp T is the closed form k (s̄ − s_j) + c (s₁ − s₀)/h (the
+// quotient of ½ k (s − s_j)², the damper c ṡ over the step), which a start of the wrong link or
+// without C(v₀) misses by far.
+TEST(DynamicsTensionOnlyLinks, LinkStepStartIsItsOwnLinksAndCarriesTheJamsDamper) {
+  Model m = tension_only(3);
+  m.alternation = 0.018;
+  m.link_jam_length = {0.0, 0.018};
+  ASSERT_TRUE(validate(m).empty());
+  const double eps = m.link_smoothing, h = 1e-5, k = kStiffness;
+  const double sj = m.jam_length(1) - m.rest_length(1);  // −28 mm
+  const double x[][2] = {{0.8, 0.1},   {0.8, -1.4},  {-0.3, 0.9},  {-0.1, -2.0},
+                         {0.3, -0.35}, {-3.0, -0.2}, {-3.0, -4.0}, {-10.0, -9.5}};
+  int within = 0, beyond = 0;
+  for (const auto& c : x) {
+    const double s0 = sj + c[0] * eps, s1 = sj + c[1] * eps;
+    const LinkStep plain = link_step_force(m, s0, s1, h, 1);
+    const LinkStep kept = link_step_force(m, s0, s1, h, 1, link_step_start(m, s0, 1));
+    EXPECT_EQ(kept.tension, plain.tension) << c[0] << " " << c[1];
+    EXPECT_EQ(kept.elastic, plain.elastic) << c[0] << " " << c[1];
+    EXPECT_EQ(kept.slope, plain.slope) << c[0] << " " << c[1];
+    // a step within the jam: v₀ > 0 and v₁ > 0 (leaving it, the start's E(s₀) and C(v₀) are
+    // all of T, clamped at 0 with either start)
+    if (sj - s0 + 0.5 * eps > 0.0 && sj - s1 + 0.5 * eps > 0.0) {
+      ++within;
+      const LinkStep other = link_step_force(m, s0, s1, h, 1, link_step_start(m, s0, 0));
+      LinkStart undamped = link_step_start(m, s0, 1);
+      EXPECT_GT(undamped.jam_damper, 0.0);
+      undamped.jam_damper = 0.0;
+      const LinkStep dropped = link_step_force(m, s0, s1, h, 1, undamped);
+      EXPECT_GT(std::abs(other.tension - plain.tension), 1.0) << c[0] << " " << c[1];
+      EXPECT_GT(std::abs(dropped.tension - plain.tension), 1.0) << c[0] << " " << c[1];
+    }
+    if (c[0] <= -1.5 && c[1] <= -1.5) {  // both ends beyond the ramp (v ≥ ε)
+      ++beyond;
+      const double closed = k * (0.5 * (s0 + s1) - sj) + kDamping * (s1 - s0) / h;
+      EXPECT_NEAR(plain.tension, closed, 1e-9 * k * eps) << c[0] << " " << c[1];
+      EXPECT_NEAR(plain.slope, 0.5 * k + kDamping / h, 1e-9 * k) << c[0] << " " << c[1];
+    }
+  }
+  EXPECT_EQ(within, 5);
+  EXPECT_EQ(beyond, 2);
 }
 
 // The integrator's Newton matrix against central differences of its residual with jammed links:
@@ -876,6 +963,10 @@ TEST(DynamicsTensionOnlyLinks, BadJamLengthsAreNamed) {
   m.link_jam_length = {0.0, 0.018};
   m.links_carry_compression = true;  // a bilateral link pushes already
   EXPECT_EQ(fields(), V{"link_jam_length[1]"});
+  // a bad ε is named alone: the jam's bound (rest length − ε) is not read with it
+  m.links_carry_compression = false;
+  m.link_smoothing = NAN;
+  EXPECT_EQ(fields(), V{"link_smoothing"});
 }
 
 }  // namespace

@@ -541,9 +541,10 @@ struct Model {
   /// length p + a), [1] for the odd (p − a); 0 = no jam (the joints close and pass each other
   /// unchecked). Below l_jam the link pushes with k (l − l_jam), C¹-smoothed over the same ε as
   /// the tension side (link_force). A round-link chain on a pocket wheel (a = d): the odd link
-  /// jams at d (its neighbours' wires meet inside it), the even link is one rigid link's own
-  /// tips (p + a − ε). Each 0 or in (0, rest length − ε] (validated: the jam's ramp below the
-  /// tension's); 0 with links_carry_compression (validated).
+  /// jams at d (its neighbours' wires meet inside it); the even link, one rigid link's own tips,
+  /// would be rigid, but not by a jam here (at p + a − ε the two ramps meet with no stiffness at
+  /// zero tension: docs/models/dynamics.md, "Not built yet"). Each 0 or in (0, jam_length_bound]
+  /// (validated: the jam's ramp below the tension's); 0 with links_carry_compression (validated).
   std::array<double, 2> link_jam_length{0.0, 0.0};
 
   std::size_t nodes() const { return mass.size(); }
@@ -556,6 +557,9 @@ struct Model {
   }
   /// [m] the jam length of link j (link_jam_length by its parity; 0 = none)
   double jam_length(std::size_t j) const { return link_jam_length[j % 2]; }
+  /// [m] the largest jam length of link j: its rest length less ε (the jam's ramp below the
+  /// tension's, validated)
+  double jam_length_bound(std::size_t j) const { return rest_length(j) - link_smoothing; }
 };
 
 /// Every problem with the model, fields "nodes", "pitch", "axial_stiffness", "axial_damping",

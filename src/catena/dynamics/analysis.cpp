@@ -160,8 +160,9 @@ std::vector<Parameter> table_fields() {
            "on pocket wheels, seed 003: pitch = the link's inner length t, wire_diameter d, "
            "teeth = pockets z)"),
       quantity("wire_diameter", K::kLength,
-               "pocket: the links' wire diameter d, in (0, pitch/2) (as catena pocketwheel's "
-               "wire; a link holds its two neighbours' wires)"),
+               "pocket: the links' wire diameter d, in (0, (pitch - pretension/axial_stiffness "
+               "- 1e-06 m)/2] (a link holds its two neighbours' wires; narrower than catena "
+               "pocketwheel's --wire, which takes (0, pitch))"),
       quantity("pocket_clearance", K::kLength,
                "pocket: a joint's free play about its pocket's vertex, in (0, 0.1 pitch] "
                "(default 0.1 mm)"),
@@ -547,6 +548,41 @@ bool scales_known(const Setup& s) {
   auto valid = [](double x) { return x > 0.0 && std::isfinite(x); };
   return valid(s.mass_per_metre) && s.mass_per_metre <= kMaxMassPerMetre && valid(s.pitch) &&
          valid(s.step) && s.step >= kMinStep && s.theta >= 0.5 && s.theta <= 1.0;
+}
+
+// A round link's wire against its jam (docs/models/dynamics.md, "Tension-only links: the jam"):
+// the upright link's jam, d, lies at most ε (Model::link_smoothing) below its rest length
+// t − pretension/k − d, the model's own bound (Model::jam_length_bound, validated), i.e.
+// 2d ≤ t − pretension/k − ε: a link's inner length holds its two neighbours' wires. Out of it the
+// wire is named with that bound, and the pretension where it is what refuses the wire. The wire
+// and the pitch are valid; an invalid pretension or stiffness (named already) counts as none.
+template <class At>
+void check_wire_fits_its_jam(const Setup& s, const At& at, std::vector<Issue>& issues) {
+  auto shown = [](double x) { return format_g(x, 6); };
+  const bool pretension = s.pretension > 0.0 && std::isfinite(s.pretension) && s.stiffness > 0.0 &&
+                          std::isfinite(s.stiffness) && s.pretension / s.stiffness < 0.1 * s.pitch;
+  auto fits = [&](double rest) {  // as run() builds the model
+    Model chain;
+    chain.pitch = rest;
+    chain.alternation = s.wire;
+    return s.wire <= chain.jam_length_bound(1);
+  };
+  const double eps = Model{}.link_smoothing;
+  const double rest = pretension ? s.pitch - s.pretension / s.stiffness : s.pitch;
+  if (fits(rest)) return;
+  std::string why = std::string("in (0, (pitch") +
+                    (pretension ? " - pretension/axial_stiffness" : "") + " - " + shown(eps) +
+                    " m)/2] = (0, " + shown(0.5 * (rest - eps)) +
+                    "] m (a round link's inner length holds its two neighbours' wires: its jam, "
+                    "at d, at most the links' " +
+                    shown(eps) + " m smoothing below its rest length" +
+                    (pretension ? " pitch - pretension/axial_stiffness - d)" : " pitch - d)");
+  if (pretension && fits(s.pitch))
+    why += "; " + at("pretension") + " = " + shown(s.pretension) +
+           " N shortens the links by pretension/axial_stiffness = " +
+           shown(s.pretension / s.stiffness) + " m: without it the bound is " +
+           shown(0.5 * (s.pitch - eps)) + " m";
+  issues.push_back({at("wire_diameter"), shown(s.wire), why});
 }
 
 // The seats' contact bounds (kMaxContactRatio, kMaxContactDampingRatio; the scales known): a
@@ -1540,14 +1576,9 @@ Setup parse(const analysis::Inputs& in) {
   if (s.pocket) {
     if (value.count("wire_diameter")) {
       s.wire = value["wire_diameter"];
-      // a link's inner length t holds its two neighbours' wires end to end: t > 2d (the jam,
-      // docs/models/dynamics.md "Tension-only links: the jam")
-      if (!(s.wire > 0.0 && std::isfinite(s.wire) && !(2.0 * s.wire >= s.pitch)))
-        issues.push_back(
-            {at("wire_diameter"), shown(s.wire),
-             "in (0, pitch/2)" +
-                 (s.pitch > 0.0 ? " = (0, " + shown(0.5 * s.pitch) + ") m" : std::string()) +
-                 " (a round link's inner length holds its two neighbours' wires)"});
+      // its upper bound, the jam's, is checked below with the pretension
+      if (!(s.wire > 0.0 && std::isfinite(s.wire)))
+        issues.push_back({at("wire_diameter"), shown(s.wire), "> 0"});
     } else if (!line.count("wire_diameter")) {
       issues.push_back({"dynamics.wire_diameter", "(missing)",
                         "the links' wire diameter d with wheel = \"pocket\", e.g. \"18 mm\""});
@@ -1696,6 +1727,8 @@ Setup parse(const analysis::Inputs& in) {
     issues.push_back({at("pretension"), shown(s.pretension),
                       "below 0.1 k p = " + shown(0.1 * s.stiffness * s.pitch) +
                           " N (a stretch under 10 % of the pitch)"});
+  if (s.pocket && s.wire > 0.0 && std::isfinite(s.wire) && s.pitch > 0.0 && std::isfinite(s.pitch))
+    check_wire_fits_its_jam(s, at, issues);
 
   // the sprockets: exactly two, one driver and one driven, equal and even teeth
   if (!layout && wheels.size() != 2) {

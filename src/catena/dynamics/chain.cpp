@@ -168,8 +168,10 @@ std::vector<Issue> validate(const Model& model) {
                        "0 with links_carry_compression (a bilateral link pushes already)"});
       continue;
     }
-    // the jam's ramp below the tension's: s_j + ε/2 ≤ −ε/2
-    const double top = model.rest_length(q) - model.link_smoothing;
+    // the jam's ramp below the tension's: s_j + ε/2 ≤ −ε/2 (its bound read only with a valid ε,
+    // named below otherwise)
+    if (!(std::isfinite(model.link_smoothing) && model.link_smoothing > 0.0)) continue;
+    const double top = model.jam_length_bound(q);
     if (jam != 0.0 && !(std::isfinite(jam) && jam > 0.0 && jam <= top)) {
       out.push_back({field, check::format_si(jam, "m"),
                      "0 (no jam) or in (0, " + check::format_si(top, "m") +
