@@ -659,7 +659,7 @@ struct LinkStart {
   double damper = 0.0;      ///< [N] C(u₀), 0 for u₀ ≤ 0
   double jam_damper = 0.0;  ///< [N] C(v₀), 0 for v₀ ≤ 0 or without a jam
 };
-inline LinkStart link_step_start(const Model& model, double s0, std::size_t link = 0) {
+inline LinkStart link_step_start(const Model& model, double s0, std::size_t link) {
   const double eps = model.link_smoothing, jam = model.jam_length(link);
   const double sj = jam > 0.0 ? jam - model.rest_length(link) : 0.0;
   return {link_force(model, s0, 0.0, link).energy,
