@@ -154,6 +154,54 @@ TEST(DynamicsPocketDiscreteGradient, WorkOverAStepIsTheEnergysChange) {
   EXPECT_GT(theta_best, 1e-4);
 }
 
+// The pieces of pocket 3 a step sweeps through, each from (along0, below0) to (along1, below1)
+// [m] (near_vertex's) at 8 points, 7 steps: the pocket, the body's blend and rim on `body`, the
+// mouth's ramp on `body` with pocket_mouth = c, and the release, held, on `body` with
+// pocket_release; each step with the wheel held (ψ₀ = ψ₁ = psi) and turning 3e-3 rad from psi.
+// `visit` gets each step; the sweep stops at a fatal failure (an ASSERT in `visit`).
+struct SweptStep {
+  const char* where;
+  const Sprocket* w;
+  int held;
+  int i;         // the step's first point
+  double turn;   // ψ₁ − ψ₀ [rad]
+  Point p0, p1;  // the joint at the step's ends, at ψ₀ and ψ₁
+};
+template <class Visit>
+void sweep_pocket_pieces(const Sprocket& body, double psi, Visit visit) {
+  const double c = kClearance;
+  Sprocket ramp = body, release = body;
+  ramp.pocket_mouth = c;
+  release.pocket_release = true;
+  struct Sweep {
+    const char* where;
+    const Sprocket* w;
+    double along0, below0, along1, below1;  // the ends; at `steps` points between
+    int held;
+  };
+  const Sweep sweeps[] = {
+      {"pocket", &body, -0.8 * c, 1.5 * c + 10e-6, 1.2 * c, 1.5 * c + 60e-6, kNoPocket},
+      {"blend", &body, 11.0 * c, 15e-6, 19.0 * c, 35e-6, kNoPocket},
+      {"rim", &body, 25.0 * c, 10e-6, 35.0 * c, 40e-6, kNoPocket},
+      {"ramp", &ramp, 0.5 * c, -5e-6, 2.5 * c, -90e-6, kNoPocket},
+      {"release", &release, 1.0 * c, -20e-6, 2.0 * c, -60e-6, 3}};
+  const int steps = 8;
+  for (const Sweep& sw : sweeps) {
+    const Sprocket& w = *sw.w;
+    for (int i = 0; i + 1 < steps; ++i) {
+      for (const double turn : {0.0, 3e-3}) {
+        auto at = [&](int j, double angle) {
+          const double t = static_cast<double>(j) / (steps - 1);
+          return near_vertex(w, angle, 3, sw.along0 + t * (sw.along1 - sw.along0),
+                             sw.below0 + t * (sw.below1 - sw.below0));
+        };
+        visit(SweptStep{sw.where, &w, sw.held, i, turn, at(i, psi), at(i + 1, psi + turn)});
+        if (::testing::Test::HasFatalFailure()) return;
+      }
+    }
+  }
+}
+
 // The step's ends are taken cheaper than the θ point's contact (the start's energy alone, once a
 // step; the end's energy and force without the derivative blocks; the θ point's elastic contact
 // with its ∂F/∂q but without the friction's): the same numbers as pocket_contact's. The
@@ -164,91 +212,68 @@ TEST(DynamicsPocketDiscreteGradient, WorkOverAStepIsTheEnergysChange) {
 // give them bit for bit, over a sweep through the pocket, the body's blend and rim, the mouth's
 // ramp and the release (held), the wheel held and turning. At θ = 0 the Hessian's terms drop out.
 void check_ends_bit_for_bit(double theta) {
-  const double c = kClearance, psi = 0.4;
-  Sprocket body = wheel8(true), ramp = wheel8(true), release = wheel8(true);
-  ramp.pocket_mouth = c;
-  release.pocket_release = true;
-  struct Sweep {
-    const char* where;
-    const Sprocket* w;
-    double along0, below0, along1, below1;  // the ends; at `steps` points between, as the work's
-    int held;
-  };
-  const Sweep sweeps[] = {
-      {"pocket", &body, -0.8 * c, 1.5 * c + 10e-6, 1.2 * c, 1.5 * c + 60e-6, kNoPocket},
-      {"blend", &body, 11.0 * c, 15e-6, 19.0 * c, 35e-6, kNoPocket},
-      {"rim", &body, 25.0 * c, 10e-6, 35.0 * c, 40e-6, kNoPocket},
-      {"ramp", &ramp, 0.5 * c, -5e-6, 2.5 * c, -90e-6, kNoPocket},
-      {"release", &release, 1.0 * c, -20e-6, 2.0 * c, -60e-6, 3}};
-  const int steps = 8;
+  const double psi = 0.4;
   int checked = 0, hessian = 0;
-  for (const Sweep& sw : sweeps) {
+  sweep_pocket_pieces(wheel8(true), psi, [&](const SweptStep& sw) {
     const Sprocket& w = *sw.w;
-    for (int i = 0; i + 1 < steps; ++i) {
-      for (const double turn : {0.0, 3e-3}) {
-        auto at = [&](int j, double angle) {
-          const double t = static_cast<double>(j) / (steps - 1);
-          return near_vertex(w, angle, 3, sw.along0 + t * (sw.along1 - sw.along0),
-                             sw.below0 + t * (sw.below1 - sw.below0));
-        };
-        const double psi1 = psi + turn, psit = psi + theta * turn;
-        const Point p0 = at(i, psi), p1 = at(i + 1, psi1);
-        const Point pt{p0.x + theta * (p1.x - p0.x), p0.y + theta * (p1.y - p0.y)};
-        const PocketStep step = step_over(w, p0, p1, psi, psi1, theta);
-        const SeatContact s =
-            pocket_step_contact(w, pt.x, pt.y, 0.01, -0.02, psit, 5.0, sw.held, step);
-        // pocket_contact at the ends (about the centre as pocket_step_contact puts them) and at
-        // the θ point, at zero velocity
-        const double q0x = step.x0 - step.cx0, q0y = step.y0 - step.cy0;
-        const double q1x = step.x1 - step.cx1, q1y = step.y1 - step.cy1;
-        const SeatContact e0 =
-            pocket_contact(w, q0x + w.centre_x, q0y + w.centre_y, 0.0, 0.0, psi, 0.0, sw.held);
-        const SeatContact e1 =
-            pocket_contact(w, q1x + w.centre_x, q1y + w.centre_y, 0.0, 0.0, psi1, 0.0, sw.held);
-        const SeatContact et = pocket_contact(w, pt.x, pt.y, 0.0, 0.0, psit, 0.0, sw.held);
-        ASSERT_TRUE(e0.active || e1.active || et.active) << sw.where << " " << i;
-        ASSERT_NE(s.skew, 0.0) << sw.where << " " << i;  // corrected: no jump, a step
-        for (const SeatContact* e : {&e0, &e1, &et}) {
-          if (e->active) {
-            ASSERT_EQ(e->seat, 3) << sw.where << " " << i;  // the θ point's pocket
-          }
-        }
-        const double en0 = e0.active ? e0.energy : 0.0, en1 = e1.active ? e1.energy : 0.0;
-        const double gx = et.active ? et.force * et.nx : 0.0;
-        const double gy = et.active ? et.force * et.ny : 0.0;
-        const double gpsi = et.active ? -et.torque : 0.0;
-        const double f1x = e1.active ? e1.force * e1.nx : 0.0;
-        const double f1y = e1.active ? e1.force * e1.ny : 0.0;
-        const double f1psi = e1.active ? -e1.torque : 0.0;
-        const double dx = q1x - q0x, dy = q1y - q0y, dpsi = psi1 - psi;
-        const double r2 = w.pitch_radius * w.pitch_radius;
-        const double den = dx * dx + dy * dy + r2 * dpsi * dpsi;
-        const double cc = (en1 - en0 - (gx * dx + gy * dy) - gpsi * dpsi) / den;
-        // H = −∂F/∂q of the θ point's elastic contact: −(fields' block + dq_extra), the fields'
-        // −k m mᵀ − f κ (I − m mᵀ) along its force's direction m
-        const double kn = et.active ? et.stiffness : 0.0;
-        const double ft = (et.active ? et.force : 0.0) * et.curvature, mx = et.nx, my = et.ny;
-        double jf[4] = {-(kn * mx * mx + ft * (1 - mx * mx)), -(kn - ft) * mx * my,
-                        -(kn - ft) * mx * my, -(kn * my * my + ft * (1 - my * my))};
-        if (et.active) {
-          for (int k = 0; k < 4; ++k) jf[k] += et.dq_extra[k];
-        }
-        const double hq[4] = {-jf[0], -jf[1], -jf[2], -jf[3]};
-        const double px = -(pt.y - w.centre_y), py = pt.x - w.centre_x;  // Jq
-        const double ax = -(hq[0] * px + hq[1] * py + gy), ay = -(hq[2] * px + hq[3] * py - gx);
-        const double hpp = -(ax * px + ay * py);
-        const double mqx = f1x - gx - theta * (hq[0] * dx + hq[1] * dy + ax * dpsi);
-        const double mqy = f1y - gy - theta * (hq[2] * dx + hq[3] * dy + ay * dpsi);
-        const double mpsi = f1psi - gpsi - theta * (ax * dx + ay * dy + hpp * dpsi);
-        EXPECT_EQ(s.skew, cc) << sw.where << " " << i << " turn " << turn;
-        EXPECT_EQ(s.skew_dx, (mqx - 2.0 * cc * dx) / den) << sw.where << " " << i;
-        EXPECT_EQ(s.skew_dy, (mqy - 2.0 * cc * dy) / den) << sw.where << " " << i;
-        EXPECT_EQ(s.skew_dpsi, (mpsi - 2.0 * cc * r2 * dpsi) / den) << sw.where << " " << i;
-        hessian += et.active && (et.dq_extra[0] != 0.0 || et.dq_extra[3] != 0.0);
-        ++checked;
+    const int i = sw.i;
+    const double turn = sw.turn;
+    const Point p0 = sw.p0, p1 = sw.p1;
+    const double psi1 = psi + turn, psit = psi + theta * turn;
+    const Point pt{p0.x + theta * (p1.x - p0.x), p0.y + theta * (p1.y - p0.y)};
+    const PocketStep step = step_over(w, p0, p1, psi, psi1, theta);
+    const SeatContact s = pocket_step_contact(w, pt.x, pt.y, 0.01, -0.02, psit, 5.0, sw.held, step);
+    // pocket_contact at the ends (about the centre as pocket_step_contact puts them) and at
+    // the θ point, at zero velocity
+    const double q0x = step.x0 - step.cx0, q0y = step.y0 - step.cy0;
+    const double q1x = step.x1 - step.cx1, q1y = step.y1 - step.cy1;
+    const SeatContact e0 =
+        pocket_contact(w, q0x + w.centre_x, q0y + w.centre_y, 0.0, 0.0, psi, 0.0, sw.held);
+    const SeatContact e1 =
+        pocket_contact(w, q1x + w.centre_x, q1y + w.centre_y, 0.0, 0.0, psi1, 0.0, sw.held);
+    const SeatContact et = pocket_contact(w, pt.x, pt.y, 0.0, 0.0, psit, 0.0, sw.held);
+    ASSERT_TRUE(e0.active || e1.active || et.active) << sw.where << " " << i;
+    ASSERT_NE(s.skew, 0.0) << sw.where << " " << i;  // corrected: no jump, a step
+    for (const SeatContact* e : {&e0, &e1, &et}) {
+      if (e->active) {
+        ASSERT_EQ(e->seat, 3) << sw.where << " " << i;  // the θ point's pocket
       }
     }
-  }
+    const double en0 = e0.active ? e0.energy : 0.0, en1 = e1.active ? e1.energy : 0.0;
+    const double gx = et.active ? et.force * et.nx : 0.0;
+    const double gy = et.active ? et.force * et.ny : 0.0;
+    const double gpsi = et.active ? -et.torque : 0.0;
+    const double f1x = e1.active ? e1.force * e1.nx : 0.0;
+    const double f1y = e1.active ? e1.force * e1.ny : 0.0;
+    const double f1psi = e1.active ? -e1.torque : 0.0;
+    const double dx = q1x - q0x, dy = q1y - q0y, dpsi = psi1 - psi;
+    const double r2 = w.pitch_radius * w.pitch_radius;
+    const double den = dx * dx + dy * dy + r2 * dpsi * dpsi;
+    const double cc = (en1 - en0 - (gx * dx + gy * dy) - gpsi * dpsi) / den;
+    // H = −∂F/∂q of the θ point's elastic contact: −(fields' block + dq_extra), the fields'
+    // −k m mᵀ − f κ (I − m mᵀ) along its force's direction m
+    const double kn = et.active ? et.stiffness : 0.0;
+    const double ft = (et.active ? et.force : 0.0) * et.curvature, mx = et.nx, my = et.ny;
+    double jf[4] = {-(kn * mx * mx + ft * (1 - mx * mx)), -(kn - ft) * mx * my,
+                    -(kn - ft) * mx * my, -(kn * my * my + ft * (1 - my * my))};
+    if (et.active) {
+      for (int k = 0; k < 4; ++k) jf[k] += et.dq_extra[k];
+    }
+    const double hq[4] = {-jf[0], -jf[1], -jf[2], -jf[3]};
+    const double px = -(pt.y - w.centre_y), py = pt.x - w.centre_x;  // Jq
+    const double ax = -(hq[0] * px + hq[1] * py + gy), ay = -(hq[2] * px + hq[3] * py - gx);
+    const double hpp = -(ax * px + ay * py);
+    const double mqx = f1x - gx - theta * (hq[0] * dx + hq[1] * dy + ax * dpsi);
+    const double mqy = f1y - gy - theta * (hq[2] * dx + hq[3] * dy + ay * dpsi);
+    const double mpsi = f1psi - gpsi - theta * (ax * dx + ay * dy + hpp * dpsi);
+    EXPECT_EQ(s.skew, cc) << sw.where << " " << i << " turn " << turn;
+    EXPECT_EQ(s.skew_dx, (mqx - 2.0 * cc * dx) / den) << sw.where << " " << i;
+    EXPECT_EQ(s.skew_dy, (mqy - 2.0 * cc * dy) / den) << sw.where << " " << i;
+    EXPECT_EQ(s.skew_dpsi, (mpsi - 2.0 * cc * r2 * dpsi) / den) << sw.where << " " << i;
+    hessian += et.active && (et.dq_extra[0] != 0.0 || et.dq_extra[3] != 0.0);
+    ++checked;
+  });
+  if (::testing::Test::HasFatalFailure()) return;  // an ASSERT stopped the sweep
   EXPECT_EQ(checked, 70);
   std::printf(
       "pocket discrete gradient's ends at theta = %g: %d steps bit for bit (%d with the "
@@ -348,76 +373,55 @@ TEST(DynamicsPocketDiscreteGradient, StartsMemoGivesTheSameContact) {
 // damped, with friction, the wheel held and turning, with the discrete gradient and without it
 // (the θ point's contact alone).
 TEST(DynamicsPocketDiscreteGradient, ResidualOnlyCallsGiveTheSameResidual) {
-  const double c = kClearance, psi = 0.4, th = 0.5;
+  const double psi = 0.4, th = 0.5;
   int calls = 0, blocks = 0, corrected = 0;
   for (const bool gradient : {true, false}) {
-    Sprocket body = wheel8(gradient, 2000.0), ramp = body, release = body;
-    body.friction = ramp.friction = release.friction = 0.2;
-    ramp.pocket_mouth = c;
-    release.pocket_release = true;
-    struct Sweep {
-      const Sprocket* w;
-      double along0, below0, along1, below1;
-      int held;
-    };
-    const Sweep sweeps[] = {{&body, -0.8 * c, 1.5 * c + 10e-6, 1.2 * c, 1.5 * c + 60e-6, kNoPocket},
-                            {&body, 11.0 * c, 15e-6, 19.0 * c, 35e-6, kNoPocket},
-                            {&body, 25.0 * c, 10e-6, 35.0 * c, 40e-6, kNoPocket},
-                            {&ramp, 0.5 * c, -5e-6, 2.5 * c, -90e-6, kNoPocket},
-                            {&release, 1.0 * c, -20e-6, 2.0 * c, -60e-6, 3}};
-    const int steps = 8;
-    for (const Sweep& sw : sweeps) {
+    Sprocket body = wheel8(gradient, 2000.0);
+    body.friction = 0.2;
+    sweep_pocket_pieces(body, psi, [&](const SweptStep& sw) {
       const Sprocket& w = *sw.w;
-      for (int i = 0; i + 1 < steps; ++i) {
-        for (const double turn : {0.0, 3e-3}) {
-          auto at = [&](int j, double angle) {
-            const double t = static_cast<double>(j) / (steps - 1);
-            return near_vertex(w, angle, 3, sw.along0 + t * (sw.along1 - sw.along0),
-                               sw.below0 + t * (sw.below1 - sw.below0));
-          };
-          const double psi1 = psi + turn, psit = psi + th * turn, h = 1e-4;
-          const Point p0 = at(i, psi), p1 = at(i + 1, psi1);
-          const Point pt{p0.x + th * (p1.x - p0.x), p0.y + th * (p1.y - p0.y)};
-          const double vx = (p1.x - p0.x) / h + 0.01, vy = (p1.y - p0.y) / h - 0.02;
-          PocketStep step = step_over(w, p0, p1, psi, psi1, th);
-          const SeatContact full =
-              pocket_step_contact(w, pt.x, pt.y, vx, vy, psit, turn / h, sw.held, step);
-          step.jacobian = false;
-          const SeatContact r =
-              pocket_step_contact(w, pt.x, pt.y, vx, vy, psit, turn / h, sw.held, step);
-          ++calls;
-          EXPECT_EQ(r.active, full.active) << calls;
-          EXPECT_EQ(r.force, full.force) << calls;
-          EXPECT_EQ(r.nx, full.nx) << calls;
-          EXPECT_EQ(r.ny, full.ny) << calls;
-          EXPECT_EQ(r.torque, full.torque) << calls;
-          EXPECT_EQ(r.energy, full.energy) << calls;
-          EXPECT_EQ(r.depth, full.depth) << calls;
-          EXPECT_EQ(r.damping_power, full.damping_power) << calls;
-          EXPECT_EQ(r.friction_weight, full.friction_weight) << calls;
-          EXPECT_EQ(r.skew, full.skew) << calls;
-          EXPECT_EQ(r.skew_x, full.skew_x) << calls;
-          EXPECT_EQ(r.skew_y, full.skew_y) << calls;
-          const SeatFriction fr = seat_friction(w, r, pt.x, pt.y, vx, vy, turn / h);
-          const SeatFriction ff = seat_friction(w, full, pt.x, pt.y, vx, vy, turn / h);
-          EXPECT_EQ(fr.fx, ff.fx) << calls;
-          EXPECT_EQ(fr.fy, ff.fy) << calls;
-          EXPECT_EQ(fr.power, ff.power) << calls;
-          EXPECT_EQ(fr.torque, ff.torque) << calls;
-          for (int j = 0; j < 4; ++j) {  // the θ point's contact's own blocks are kept
-            EXPECT_EQ(r.dq_extra[j], full.dq_extra[j]) << calls;
-            EXPECT_EQ(r.dv_extra[j], full.dv_extra[j]) << calls;
-            EXPECT_EQ(r.friction_dq[j], full.friction_dq[j]) << calls;
-            EXPECT_EQ(r.friction_dv[j], full.friction_dv[j]) << calls;
-          }
-          blocks += full.skew_dx != 0.0 || full.skew_dy != 0.0 || full.skew_dpsi != 0.0;
-          EXPECT_EQ(r.skew_dx, 0.0) << calls;
-          EXPECT_EQ(r.skew_dy, 0.0) << calls;
-          EXPECT_EQ(r.skew_dpsi, 0.0) << calls;
-          corrected += full.skew != 0.0;
-        }
+      const double turn = sw.turn;
+      const Point p0 = sw.p0, p1 = sw.p1;
+      const double psi1 = psi + turn, psit = psi + th * turn, h = 1e-4;
+      const Point pt{p0.x + th * (p1.x - p0.x), p0.y + th * (p1.y - p0.y)};
+      const double vx = (p1.x - p0.x) / h + 0.01, vy = (p1.y - p0.y) / h - 0.02;
+      PocketStep step = step_over(w, p0, p1, psi, psi1, th);
+      const SeatContact full =
+          pocket_step_contact(w, pt.x, pt.y, vx, vy, psit, turn / h, sw.held, step);
+      step.jacobian = false;
+      const SeatContact r =
+          pocket_step_contact(w, pt.x, pt.y, vx, vy, psit, turn / h, sw.held, step);
+      ++calls;
+      EXPECT_EQ(r.active, full.active) << calls;
+      EXPECT_EQ(r.force, full.force) << calls;
+      EXPECT_EQ(r.nx, full.nx) << calls;
+      EXPECT_EQ(r.ny, full.ny) << calls;
+      EXPECT_EQ(r.torque, full.torque) << calls;
+      EXPECT_EQ(r.energy, full.energy) << calls;
+      EXPECT_EQ(r.depth, full.depth) << calls;
+      EXPECT_EQ(r.damping_power, full.damping_power) << calls;
+      EXPECT_EQ(r.friction_weight, full.friction_weight) << calls;
+      EXPECT_EQ(r.skew, full.skew) << calls;
+      EXPECT_EQ(r.skew_x, full.skew_x) << calls;
+      EXPECT_EQ(r.skew_y, full.skew_y) << calls;
+      const SeatFriction fr = seat_friction(w, r, pt.x, pt.y, vx, vy, turn / h);
+      const SeatFriction ff = seat_friction(w, full, pt.x, pt.y, vx, vy, turn / h);
+      EXPECT_EQ(fr.fx, ff.fx) << calls;
+      EXPECT_EQ(fr.fy, ff.fy) << calls;
+      EXPECT_EQ(fr.power, ff.power) << calls;
+      EXPECT_EQ(fr.torque, ff.torque) << calls;
+      for (int j = 0; j < 4; ++j) {  // the θ point's contact's own blocks are kept
+        EXPECT_EQ(r.dq_extra[j], full.dq_extra[j]) << calls;
+        EXPECT_EQ(r.dv_extra[j], full.dv_extra[j]) << calls;
+        EXPECT_EQ(r.friction_dq[j], full.friction_dq[j]) << calls;
+        EXPECT_EQ(r.friction_dv[j], full.friction_dv[j]) << calls;
       }
-    }
+      blocks += full.skew_dx != 0.0 || full.skew_dy != 0.0 || full.skew_dpsi != 0.0;
+      EXPECT_EQ(r.skew_dx, 0.0) << calls;
+      EXPECT_EQ(r.skew_dy, 0.0) << calls;
+      EXPECT_EQ(r.skew_dpsi, 0.0) << calls;
+      corrected += full.skew != 0.0;
+    });
   }
   std::printf(
       "pocket residual-only calls: %d calls, %d corrected, %d with the correction's derivatives "

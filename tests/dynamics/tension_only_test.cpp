@@ -296,6 +296,43 @@ TEST(DynamicsTensionOnlyLinks, BouncingWithTheDiscreteGradientClosesItsBalanceTo
   EXPECT_NEAR(damper[1], damper[0], 1e-2 * std::abs(damper[0]));
 }
 
+// One step h at θ = ½ of a link between two massless nodes through the integrator's assembly
+// (Integrator::newton_system at the step's end as the iterate, the nodes moving at Δx/h: the
+// residual is −h × the link's force): the link goes from l0 to l1 long [m] while it turns 0.3 rad
+// (0.4 → 0.7) and its first node moves by (2e-4, −1e-4) m.
+struct LinkStepWork {
+  double work = 0.0;                    // Σ F·Δx over the nodes [J], F = −r/h
+  double terms = 0.0;                   // Σ |F·Δx| [J]: the sum's rounding
+  double length0 = 0.0, length1 = 0.0;  // the ends' lengths as newton_system takes them [m]
+};
+LinkStepWork one_link_step(const Model& m, double l0, double l1, double h) {
+  State s(2, 0);
+  const double a0 = 0.4, a1 = 0.7;
+  const double x0[4] = {0.0, 0.0, l0 * std::cos(a0), l0 * std::sin(a0)};
+  const double x1[4] = {2e-4, -1e-4, 2e-4 + l1 * std::cos(a1), -1e-4 + l1 * std::sin(a1)};
+  std::vector<double> u(4);
+  for (std::size_t i = 0; i < 2; ++i) {
+    s.x[i] = x0[2 * i];
+    s.y[i] = x0[2 * i + 1];
+    s.vx[i] = (x1[2 * i] - x0[2 * i]) / h;
+    s.vy[i] = (x1[2 * i + 1] - x0[2 * i + 1]) / h;
+    u[2 * i] = x1[2 * i];
+    u[2 * i + 1] = x1[2 * i + 1];
+  }
+  Integrator integ(m, {.step = h, .theta = 0.5});
+  std::vector<double> r;
+  integ.newton_system(m, s, u, r, nullptr);
+  LinkStepWork out;
+  for (std::size_t a = 0; a < 4; ++a) {
+    out.work -= r[a] / h * (x1[a] - x0[a]);
+    out.terms += std::abs(r[a] / h * (x1[a] - x0[a]));
+  }
+  const double d1x = x1[2] - x1[0], d1y = x1[3] - x1[1];
+  out.length0 = std::hypot(x0[2], x0[3]);
+  out.length1 = std::sqrt(d1x * d1x + d1y * d1y);
+  return out;
+}
+
 // One step of a link at θ = ½ through the integrator's assembly (Integrator::newton_system at
 // the step's end as the iterate, massless nodes moving at Δx/h: the residual is −h × the link's
 // force), undamped, the link turning 0.3 rad: with Model::links_discrete_gradient its work on the
@@ -318,31 +355,10 @@ TEST(DynamicsTensionOnlyLinks, OneStepsWorkIsMinusTheEnergysChangeWithTheDiscret
       Model m = uniform_chain(2, false, kPitch, 1e-12, kStiffness, 0.0, false);
       m.links_carry_compression = false;
       m.links_discrete_gradient = gradient;
-      State s(2, 0);
-      const double l0 = kPitch + c.s0 * eps, l1 = kPitch + c.s1 * eps;
-      const double a0 = 0.4, a1 = 0.7;  // the link turns 0.3 rad over the step
-      const double x0[4] = {0.0, 0.0, l0 * std::cos(a0), l0 * std::sin(a0)};
-      const double x1[4] = {2e-4, -1e-4, 2e-4 + l1 * std::cos(a1), -1e-4 + l1 * std::sin(a1)};
-      std::vector<double> u(4);
-      for (std::size_t i = 0; i < 2; ++i) {
-        s.x[i] = x0[2 * i];
-        s.y[i] = x0[2 * i + 1];
-        s.vx[i] = (x1[2 * i] - x0[2 * i]) / h;
-        s.vy[i] = (x1[2 * i + 1] - x0[2 * i + 1]) / h;
-        u[2 * i] = x1[2 * i];
-        u[2 * i + 1] = x1[2 * i + 1];
-      }
-      Integrator integ(m, {.step = h, .theta = 0.5});
-      std::vector<double> r;
-      integ.newton_system(m, s, u, r, nullptr);
-      double work = 0.0, terms = 0.0;  // Σ F·Δx, F = −r/h; Σ |F·Δx| (the sum's rounding)
-      for (std::size_t a = 0; a < 4; ++a) {
-        work -= r[a] / h * (x1[a] - x0[a]);
-        terms += std::abs(r[a] / h * (x1[a] - x0[a]));
-      }
+      const LinkStepWork step = one_link_step(m, kPitch + c.s0 * eps, kPitch + c.s1 * eps, h);
       de = link_force(m, c.s1 * eps, 0.0).energy - link_force(m, c.s0 * eps, 0.0).energy;
-      misfit[gradient] = work + de;
-      if (gradient) rounding = 1e-14 * terms;
+      misfit[gradient] = step.work + de;
+      if (gradient) rounding = 1e-14 * step.terms;
     }
     std::printf("%-12s dE %+.6e J: work + dE %+.2e J (theta point %+.2e J; rounding %.1e J)\n",
                 c.name, de, misfit[1], misfit[0], rounding);
@@ -877,35 +893,13 @@ TEST(DynamicsTensionOnlyLinks, OneStepsWorkAcrossTheJamIsMinusTheEnergysChange) 
       m.links_carry_compression = false;
       m.link_jam_length = {kJam, kJam};
       m.links_discrete_gradient = gradient;
-      State s(2, 0);
-      const double l0 = kJam + c.x0 * eps, l1 = kJam + c.x1 * eps;
-      const double a0 = 0.4, a1 = 0.7;
-      const double x0[4] = {0.0, 0.0, l0 * std::cos(a0), l0 * std::sin(a0)};
-      const double x1[4] = {2e-4, -1e-4, 2e-4 + l1 * std::cos(a1), -1e-4 + l1 * std::sin(a1)};
-      std::vector<double> u(4);
-      for (std::size_t i = 0; i < 2; ++i) {
-        s.x[i] = x0[2 * i];
-        s.y[i] = x0[2 * i + 1];
-        s.vx[i] = (x1[2 * i] - x0[2 * i]) / h;
-        s.vy[i] = (x1[2 * i + 1] - x0[2 * i + 1]) / h;
-        u[2 * i] = x1[2 * i];
-        u[2 * i + 1] = x1[2 * i + 1];
-      }
-      Integrator integ(m, {.step = h, .theta = 0.5});
-      std::vector<double> r;
-      integ.newton_system(m, s, u, r, nullptr);
-      double work = 0.0, terms = 0.0;
-      for (std::size_t a = 0; a < 4; ++a) {
-        work -= r[a] / h * (x1[a] - x0[a]);
-        terms += std::abs(r[a] / h * (x1[a] - x0[a]));
-      }
+      const LinkStepWork step = one_link_step(m, kJam + c.x0 * eps, kJam + c.x1 * eps, h);
       // E at the lengths of the step's ends as newton_system takes them (hypot, sqrt)
-      const double d1x = x1[2] - x1[0], d1y = x1[3] - x1[1];
-      const double e0 = link_force(m, std::hypot(x0[2], x0[3]) - kPitch, 0.0).energy;
-      const double e1 = link_force(m, std::sqrt(d1x * d1x + d1y * d1y) - kPitch, 0.0).energy;
+      const double e0 = link_force(m, step.length0 - kPitch, 0.0).energy;
+      const double e1 = link_force(m, step.length1 - kPitch, 0.0).energy;
       de = e1 - e0;
-      misfit[gradient] = work + de;
-      if (gradient) rounding = 1e-14 * terms;
+      misfit[gradient] = step.work + de;
+      if (gradient) rounding = 1e-14 * step.terms;
     }
     std::printf("jam %-12s dE %+.6e J: work + dE %+.2e J (theta point %+.2e J; rounding %.1e J)\n",
                 c.name, de, misfit[1], misfit[0], rounding);
