@@ -579,6 +579,10 @@ struct LinkForce {
   double energy = 0.0;     ///< [J] E(s), the spring's energy
 };
 
+/// link_force's side below the tension's ramp with a jam (Model::jam_length(link) > 0): out of
+/// line, so that link_force stays small enough to be inlined where the links run.
+LinkForce link_jam_force(const Model& model, double s, double rate, std::size_t link);
+
 /// The bilateral link (Model::links_carry_compression): T = k s + c ṡ, E = ½ k s². The
 /// tension-only link: with u = s + ε/2 (ε = Model::link_smoothing), T_e = 0 for u ≤ 0,
 /// k u²/2ε for 0 < u < ε, k s for u ≥ ε — C¹, ≥ 0, and equal to the bilateral spring in tension
@@ -603,22 +607,9 @@ inline LinkForce link_force(const Model& model, double s, double rate, std::size
   }
   const double eps = model.link_smoothing, u = s + 0.5 * eps;
   if (!(u > 0.0)) {
-    const double jam = model.jam_length(link);
-    if (!(jam > 0.0)) return out;  // slack: the joints closer than the rest length less ε/2
-    // the jam (validated below the tension's ramp): w = s_j − s, how far the joints are inside
-    // l_jam, and v = w + ε/2 its ramp's depth
-    const double w = (jam - model.rest_length(link)) - s, v = w + 0.5 * eps;
-    if (!(v > 0.0)) return out;  // slack: between the jam and the tension's ramp
-    const bool ramp = v < eps;
-    out.elastic = ramp ? -k * v * v / (2.0 * eps) : -k * w;
-    out.energy = ramp ? k * v * v * v / (6.0 * eps) : 0.5 * k * w * w + k * eps * eps / 24.0;
-    const double r = ramp ? v / eps : 1.0;
-    const double tension = out.elastic + c * r * rate;
-    if (!(tension < 0.0)) return out;  // lengthening faster than the jam pushes: free
-    out.tension = tension;
-    out.stiffness = ramp ? k * v / eps - c * rate / eps : k;
-    out.damping = c * r;
-    return out;
+    // slack (the joints closer than the rest length less ε/2), unless the link jams there
+    if (!(model.jam_length(link) > 0.0)) return out;
+    return link_jam_force(model, s, rate, link);
   }
   const bool ramp = u < eps;
   out.elastic = ramp ? k * u * u / (2.0 * eps) : k * s;

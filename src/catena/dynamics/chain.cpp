@@ -884,6 +884,25 @@ LineForce link_elastic(const Model& model, double s, std::size_t link) {
 }
 }  // namespace
 
+LinkForce link_jam_force(const Model& model, double s, double rate, std::size_t link) {
+  const double k = model.axial_stiffness, c = model.axial_damping, eps = model.link_smoothing;
+  LinkForce out;
+  // the jam (validated below the tension's ramp): w = s_j − s, how far the joints are inside
+  // l_jam, and v = w + ε/2 its ramp's depth
+  const double w = (model.jam_length(link) - model.rest_length(link)) - s, v = w + 0.5 * eps;
+  if (!(v > 0.0)) return out;  // slack: between the jam and the tension's ramp
+  const bool ramp = v < eps;
+  out.elastic = ramp ? -k * v * v / (2.0 * eps) : -k * w;
+  out.energy = ramp ? k * v * v * v / (6.0 * eps) : 0.5 * k * w * w + k * eps * eps / 24.0;
+  const double r = ramp ? v / eps : 1.0;
+  const double tension = out.elastic + c * r * rate;
+  if (!(tension < 0.0)) return out;  // lengthening faster than the jam pushes: free
+  out.tension = tension;
+  out.stiffness = ramp ? k * v / eps - c * rate / eps : k;
+  out.damping = c * r;
+  return out;
+}
+
 LinkStep link_step_force(const Model& model, double s0, double s1, double h, std::size_t link) {
   return link_step_force(model, s0, s1, h, link, link_step_start(model, s0, link));
 }
