@@ -497,6 +497,21 @@ TEST(DynamicsTensionOnlyLinks, ShortStepsTakeTheMeanStretchsForceWithTheScaleOfT
 // differences of its residual: at the iterate the links go slack → slack, ramp → ramp,
 // slack → ramp, taut → taut and taut → ramp shortening so fast that the damper over the step
 // clamps T at 0 (h = 10 µs: c/h = 2e8 N/m > k).
+// A step of a 6-node chain: its links j from kPitch + s0[j] long at the angles a0[j] (node 0 at
+// the origin) to kPitch + s1[j], each turned by `turn`, node 0 moved by (1, −2) µm: the start's
+// positions in `s`, the step's end in `u`
+void five_link_step(const double (&s0)[5], const double (&s1)[5], const double (&a0)[5],
+                    double turn, State& s, std::vector<double>& u) {
+  u[0] = 1e-6;
+  u[1] = -2e-6;
+  for (std::size_t j = 0; j < 5; ++j) {
+    s.x[j + 1] = s.x[j] + (kPitch + s0[j]) * std::cos(a0[j]);
+    s.y[j + 1] = s.y[j] + (kPitch + s0[j]) * std::sin(a0[j]);
+    u[2 * j + 2] = u[2 * j] + (kPitch + s1[j]) * std::cos(a0[j] + turn);
+    u[2 * j + 3] = u[2 * j + 1] + (kPitch + s1[j]) * std::sin(a0[j] + turn);
+  }
+}
+
 TEST(DynamicsTensionOnlyLinks, NewtonMatrixWithTheDiscreteGradientMatchesTheDifferences) {
   Model m = tension_only(6);
   m.links_discrete_gradient = true;
@@ -506,14 +521,7 @@ TEST(DynamicsTensionOnlyLinks, NewtonMatrixWithTheDiscreteGradientMatchesTheDiff
   const double a0[5] = {0.2, -0.4, 0.5, 1.1, -0.9}, turn = 0.01;
   State s(6, 0);
   std::vector<double> u(12);
-  u[0] = 1e-6;
-  u[1] = -2e-6;
-  for (std::size_t j = 0; j < 5; ++j) {
-    s.x[j + 1] = s.x[j] + (kPitch + s0[j]) * std::cos(a0[j]);
-    s.y[j + 1] = s.y[j] + (kPitch + s0[j]) * std::sin(a0[j]);
-    u[2 * j + 2] = u[2 * j] + (kPitch + s1[j]) * std::cos(a0[j] + turn);
-    u[2 * j + 3] = u[2 * j + 1] + (kPitch + s1[j]) * std::sin(a0[j] + turn);
-  }
+  five_link_step(s0, s1, a0, turn, s, u);
   for (std::size_t j = 0; j < 5; ++j) {
     const LinkStep law = link_step_force(m, s0[j], s1[j], h);
     if (j == 0) {
@@ -796,14 +804,7 @@ TEST(DynamicsTensionOnlyLinks, NewtonMatrixWithJammedLinksMatchesTheResidualsDif
     const double a0[5] = {0.2, -0.4, 0.5, 1.1, -0.9}, turn = 0.01;
     State s(6, 0);
     std::vector<double> u(12);
-    u[0] = 1e-6;
-    u[1] = -2e-6;
-    for (std::size_t j = 0; j < 5; ++j) {
-      s.x[j + 1] = s.x[j] + (kPitch + s0[j]) * std::cos(a0[j]);
-      s.y[j + 1] = s.y[j] + (kPitch + s0[j]) * std::sin(a0[j]);
-      u[2 * j + 2] = u[2 * j] + (kPitch + s1[j]) * std::cos(a0[j] + turn);
-      u[2 * j + 3] = u[2 * j + 1] + (kPitch + s1[j]) * std::sin(a0[j] + turn);
-    }
+    five_link_step(s0, s1, a0, turn, s, u);
     for (std::size_t j = 0; j < 5; ++j) {
       const LinkStep law = link_step_force(m, s0[j], s1[j], h);
       if (j < 3) {
