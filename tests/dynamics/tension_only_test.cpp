@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -95,28 +96,26 @@ TEST(DynamicsTensionOnlyLinks, LawNeverPushesAndItsDerivativesAndEnergyAreExact)
   EXPECT_GT(clamped, 50);  // shortening fast in tension: slack, the spring still stretched
 }
 
-// energy() and link_tensions() read the law: on a 4-node chain at rest (one link slack, one in the
-// ramp, one taut), each node's force from the tensions against −∂E/∂q, the central difference of
-// energy().elastic.
-TEST(DynamicsTensionOnlyLinks, ForceIsMinusTheGradientOfTheChainsEnergy) {
-  const Model m = tension_only(4);
-  const double eps = m.link_smoothing;
+// A 4-node chain at rest, node 0 at the origin, its link j len[j] long at the angle ang[j]
+State three_link_chain(const double (&len)[3], const double (&ang)[3]) {
   State s(4, 0);
-  // link 0 slack (2 µm short), link 1 in the ramp (0.2 ε), link 2 taut (30 µm)
-  const double len[3] = {kPitch - 2e-6, kPitch + 0.2 * eps, kPitch + 30e-6};
-  const double ang[3] = {0.1, -0.3, 0.7};
   for (std::size_t j = 0; j < 3; ++j) {
     s.x[j + 1] = s.x[j] + len[j] * std::cos(ang[j]);
     s.y[j + 1] = s.y[j] + len[j] * std::sin(ang[j]);
   }
-  std::vector<double> t(3);
-  link_tensions(m, s, t);
-  EXPECT_EQ(t[0], 0.0);  // the bilateral law: −200 N
-  EXPECT_GT(t[1], 0.0);
-  EXPECT_NEAR(t[2], kStiffness * 30e-6, 1e-6);
+  return s;
+}
+
+using NodeForce = std::array<double, 2>;
+// Each node's force of that chain from its links' tensions t (+T_j e_j from the link j = i it
+// starts, −T_j e_j from link i − 1) against −∂E/∂q, the central difference of energy().elastic;
+// the forces, for further checks
+std::vector<NodeForce> expect_node_forces_are_minus_the_energys_gradient(
+    const Model& m, const State& s, const std::vector<double>& t, const double (&ang)[3]) {
+  const double eps = m.link_smoothing;
+  std::vector<NodeForce> forces(4, NodeForce{0.0, 0.0});
   for (std::size_t i = 0; i < 4; ++i) {
-    // the force on node i: +T_j e_j from the link j = i it starts, −T_j e_j from link i − 1
-    double f[2] = {0.0, 0.0};
+    NodeForce& f = forces[i];
     if (i < 3) f[0] += t[i] * std::cos(ang[i]), f[1] += t[i] * std::sin(ang[i]);
     if (i > 0) f[0] -= t[i - 1] * std::cos(ang[i - 1]), f[1] -= t[i - 1] * std::sin(ang[i - 1]);
     for (int axis = 0; axis < 2; ++axis) {
@@ -128,6 +127,25 @@ TEST(DynamicsTensionOnlyLinks, ForceIsMinusTheGradientOfTheChainsEnergy) {
       EXPECT_NEAR(f[axis], -grad, 1e-3 * kStiffness * eps) << i << " " << axis;
     }
   }
+  return forces;
+}
+
+// energy() and link_tensions() read the law: on a 4-node chain at rest (one link slack, one in the
+// ramp, one taut), each node's force from the tensions against −∂E/∂q, the central difference of
+// energy().elastic.
+TEST(DynamicsTensionOnlyLinks, ForceIsMinusTheGradientOfTheChainsEnergy) {
+  const Model m = tension_only(4);
+  const double eps = m.link_smoothing;
+  // link 0 slack (2 µm short), link 1 in the ramp (0.2 ε), link 2 taut (30 µm)
+  const double len[3] = {kPitch - 2e-6, kPitch + 0.2 * eps, kPitch + 30e-6};
+  const double ang[3] = {0.1, -0.3, 0.7};
+  const State s = three_link_chain(len, ang);
+  std::vector<double> t(3);
+  link_tensions(m, s, t);
+  EXPECT_EQ(t[0], 0.0);  // the bilateral law: −200 N
+  EXPECT_GT(t[1], 0.0);
+  EXPECT_NEAR(t[2], kStiffness * 30e-6, 1e-6);
+  expect_node_forces_are_minus_the_energys_gradient(m, s, t, ang);
 }
 
 // The integrator's Newton matrix (Integrator::newton_system) against central differences of its
@@ -636,13 +654,9 @@ TEST(DynamicsTensionOnlyLinks, EachLinkJamsAtItsParitysLengthAndItsForceIsTheEne
   m.link_jam_length = {0.070, 0.018};
   ASSERT_TRUE(validate(m).empty());
   const double eps = m.link_smoothing;
-  State s(4, 0);
   const double len[3] = {0.070 - 5e-6, 0.018 - 0.2 * eps, 0.076};
   const double ang[3] = {0.1, -0.3, 0.7};
-  for (std::size_t j = 0; j < 3; ++j) {
-    s.x[j + 1] = s.x[j] + len[j] * std::cos(ang[j]);
-    s.y[j + 1] = s.y[j] + len[j] * std::sin(ang[j]);
-  }
+  State s = three_link_chain(len, ang);
   std::vector<double> t(3);
   link_tensions(m, s, t);
   EXPECT_NEAR(t[0], -kStiffness * 5e-6, 1e-6);                 // −500 N
@@ -653,20 +667,12 @@ TEST(DynamicsTensionOnlyLinks, EachLinkJamsAtItsParitysLengthAndItsForceIsTheEne
   std::vector<double> u(8), r;
   for (std::size_t i = 0; i < 4; ++i) u[2 * i] = s.x[i], u[2 * i + 1] = s.y[i];
   integ.newton_system(m, s, u, r, nullptr);
-  for (std::size_t i = 0; i < 4; ++i) {
-    double f[2] = {0.0, 0.0};
-    if (i < 3) f[0] += t[i] * std::cos(ang[i]), f[1] += t[i] * std::sin(ang[i]);
-    if (i > 0) f[0] -= t[i - 1] * std::cos(ang[i - 1]), f[1] -= t[i - 1] * std::sin(ang[i - 1]);
-    for (int axis = 0; axis < 2; ++axis) {
-      const double d = 1e-4 * eps;
-      State p = s, q = s;
-      (axis == 0 ? p.x : p.y)[i] += d;
-      (axis == 0 ? q.x : q.y)[i] -= d;
-      const double grad = (energy(m, p).elastic - energy(m, q).elastic) / (2 * d);
-      EXPECT_NEAR(f[axis], -grad, 1e-3 * kStiffness * eps) << i << " " << axis;
-      EXPECT_NEAR(-r[2 * i + axis] / h, f[axis], 1e-9 * kStiffness * eps) << i << " " << axis;
-    }
-  }
+  const std::vector<NodeForce> at_rest =
+      expect_node_forces_are_minus_the_energys_gradient(m, s, t, ang);
+  for (std::size_t i = 0; i < 4; ++i)
+    for (int axis = 0; axis < 2; ++axis)
+      EXPECT_NEAR(-r[2 * i + axis] / h, at_rest[i][axis], 1e-9 * kStiffness * eps)
+          << i << " " << axis;
   // With Model::links_discrete_gradient (θ = ½), one step with u ≠ x: link 0 going 0.5 µm deeper
   // into its jam, link 1 deeper into its jam's ramp, link 2 slack, each turning by 0.01 rad. The
   // start's velocities carry the nodes to u (the inertia's part of the residual is 0), so −r/h is
