@@ -414,9 +414,10 @@ double next_node(const BeltPath& path, double s, double h) {
   return 0.5 * (lo + hi);
 }
 
-// The arc lengths of nodes 0..N (node N where the walk would put the next one after N − 1).
-std::vector<double> walk(const BeltPath& path, double h, int nodes) {
-  std::vector<double> s(static_cast<std::size_t>(nodes) + 1, 0.0);
+// The arc lengths of nodes 0..N from node 0 at `start` (node N where the walk would put the next
+// one after N − 1).
+std::vector<double> walk(const BeltPath& path, double h, int nodes, double start = 0.0) {
+  std::vector<double> s(static_cast<std::size_t>(nodes) + 1, start);
   for (std::size_t k = 1; k < s.size(); ++k) s[k] = next_node(path, s[k - 1], h);
   return s;
 }
@@ -435,12 +436,16 @@ double path_links(const BeltPath& path, double spacing) {
   return NAN;
 }
 
-LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circles,
-                         const std::vector<int>& teeth, int nodes, double pitch) {
+namespace {
+
+// `place_loop` with node 0 at arc length `start` (the slack start's phase, `slack_solve`).
+LoopPlacement place_loop_from(const BeltPath& path, const std::vector<Circle>& circles,
+                              const std::vector<int>& teeth, int nodes, double pitch,
+                              double start) {
   LoopPlacement out;
   if (path.pieces.empty() || nodes < 3 || !(pitch > 0.0)) return out;
   const double length = path.length;
-  auto miss = [&](double h) { return walk(path, h, nodes).back() - length; };
+  auto miss = [&](double h) { return walk(path, h, nodes, start).back() - start - length; };
   // secant on the chord: the walk's end moves with it almost in proportion
   double h0 = pitch, g0 = miss(h0);
   double h1 = h0 * length / (g0 + length), g1 = miss(h1);
@@ -455,7 +460,7 @@ LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circle
   }
   if (!(std::abs(g1) <= 1e-9 * length)) return out;
   out.spacing = h1;
-  out.s = walk(path, h1, nodes);
+  out.s = walk(path, h1, nodes, start);
   out.s.pop_back();
   // each wheel: the wrapped rollers' angles along its arc; the seats (2π/z apart) placed so that
   // the largest offset either way is the same
@@ -489,6 +494,13 @@ LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circle
     out.seat_offset[w] = 2.0 * circles[w].radius * std::sin(0.25 * (hi[w] - lo[w]));
   }
   return out;
+}
+
+}  // namespace
+
+LoopPlacement place_loop(const BeltPath& path, const std::vector<Circle>& circles,
+                         const std::vector<int>& teeth, int nodes, double pitch) {
+  return place_loop_from(path, circles, teeth, nodes, pitch, 0.0);
 }
 
 std::size_t slack_span(const BeltPath& path) {
@@ -1015,12 +1027,62 @@ LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& 
   return place_slack_loop(path, circles, teeth, nodes, pitch, laid, {span});
 }
 
-double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
-                   double pitch) {
+namespace {
+
+// The slack solve's answer: the extra length e and the arc length of node 0 (0 but where the
+// walk from the path's start closes for no e, below).
+struct SlackSolve {
+  double extra = NAN;
+  double start = 0.0;
+};
+
+// The phase at which N nodes walked at chord `pitch` close the loop on `sagging`: node 0's arc
+// length over the first link from the path's start, scanned in 64 steps and each change of sign
+// of the miss bisected; NAN when none closes. The miss is continuous in the phase but where a
+// node passes a fold of the path (below, `slack_solve`), where it jumps back up by the span the
+// fold skips; between those jumps it falls across every value of that span.
+double closing_phase(const BeltPath& sagging, int nodes, double pitch, double tolerance) {
+  auto miss = [&](double start) {
+    return walk(sagging, pitch, nodes, start).back() - start - sagging.length;
+  };
+  const double first = next_node(sagging, 0.0, pitch);
+  if (!(first > 0.0)) return NAN;
+  const int steps = 64;
+  double before = 0.0, at_before = miss(0.0);
+  for (int j = 1; j <= steps; ++j) {
+    const double here = first * j / steps, at_here = miss(here);
+    if (std::isfinite(at_before) && std::isfinite(at_here) &&
+        (at_before > 0.0) != (at_here > 0.0)) {
+      // bisected to the last bit (the miss there a rounding: place_loop's chord solve then
+      // moves the chord by no more than that over the walk's N links), then taken when it is
+      // within `tolerance`, not a jump
+      double lo = before, hi = here, best = NAN, least = INFINITY;
+      const bool falls = at_before > 0.0;
+      for (int it = 0; it < 200; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        if (!(mid > lo && mid < hi)) break;
+        const double g = miss(mid);
+        if (!std::isfinite(g)) break;
+        if (std::abs(g) < least) {
+          least = std::abs(g);
+          best = mid;
+        }
+        ((g > 0.0) == falls ? lo : hi) = mid;
+      }
+      if (least <= tolerance) return best;
+    }
+    before = here;
+    at_before = at_here;
+  }
+  return NAN;
+}
+
+SlackSolve slack_solve(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
+                       double pitch) {
   const double chain = nodes * pitch;
   if (path.pieces.empty() || nodes < 3 || !(pitch > 0.0) || pieces.empty() ||
       !(chain > path.length))
-    return NAN;
+    return {};
   // the walk's miss at chord `pitch` with the spans sagging by `extra`: the end of node N's walk
   // against the laid path's length
   auto miss = [&](double extra) -> double {
@@ -1049,7 +1111,7 @@ double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces,
     if (!(e1 > 0.0)) break;
     g1 = miss(e1);
   }
-  if (e1 > 0.0 && std::abs(g1) <= 1e-11 * chain) return e1;
+  if (e1 > 0.0 && std::abs(g1) <= 1e-11 * chain) return {e1, 0.0};
   // the secant missed (it cycles where the miss bends sharply, e.g. 344 links on a notched path):
   // bisection between `least`, where the miss is not negative, and the half circle
   double lo = least, hi = most;
@@ -1060,31 +1122,49 @@ double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces,
     lo = std::max(least, (0.5 * kPi - 1.0) * spans * (1.0 + 1e-9));
     hi = kCatenaryMostExtra * spans * (1.0 - 1e-9);  // a hair inside, as the half circle
     at_lo = miss(lo);
-    if (!std::isfinite(at_lo)) return INFINITY;
+    if (!std::isfinite(at_lo)) return {INFINITY, 0.0};
     at_hi = miss(hi);
-    if (at_hi > 0.0) return INFINITY;  // overshoots even at the longest catenary
+    if (at_hi > 0.0) return {INFINITY, 0.0};  // overshoots even at the longest catenary
   }
-  if (!(at_lo >= 0.0 && at_hi <= 0.0)) return NAN;
+  if (!(at_lo >= 0.0 && at_hi <= 0.0)) return {};
   for (int it = 0; it < 200; ++it) {
     const double mid = 0.5 * (lo + hi);
-    if (!(mid > lo && mid < hi)) break;
+    if (!(mid > lo && mid < hi)) {
+      // the bracket closed on a jump of the miss over 0: a node there passes a fold of the path
+      // (a sloped catenary climbing into its far wheel while the wrap leaves along the chord,
+      // the path turning back by more than 90°), where the first point a pitch on leaves the
+      // curve just short of the kink for one past it on the wheel. Every rule that picks one
+      // such point per node jumps somewhere, so the walk from the path's start closes for no e;
+      // node 0's phase is the freedom left: at this e the miss, over the phase, falls across
+      // the whole jump, 0 included
+      const double start = closing_phase(sag_spans(path, pieces, lo), nodes, pitch, 1e-11 * chain);
+      if (std::isfinite(start)) return {lo, start};
+      break;
+    }
     const double g = miss(mid);
-    if (std::abs(g) <= 1e-11 * chain) return mid;
+    if (std::abs(g) <= 1e-11 * chain) return {mid, 0.0};
     if (!std::isfinite(g)) break;
     (g > 0.0 ? lo : hi) = mid;
   }
-  return NAN;
+  return {};
+}
+
+}  // namespace
+
+double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
+                   double pitch) {
+  return slack_solve(path, pieces, nodes, pitch).extra;
 }
 
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid, const std::vector<std::size_t>& pieces) {
   laid = BeltPath{};
-  const double extra = slack_extra(path, pieces, nodes, pitch);
-  if (!std::isfinite(extra)) return {};
-  const BeltPath sagging = sag_spans(path, pieces, extra);
+  const SlackSolve solved = slack_solve(path, pieces, nodes, pitch);
+  if (!std::isfinite(solved.extra)) return {};
+  const BeltPath sagging = sag_spans(path, pieces, solved.extra);
   // the wheels' seats as on a taut path: place_loop's chord solve lands on `pitch` itself here
-  LoopPlacement out = place_loop(sagging, circles, teeth, nodes, pitch);
+  LoopPlacement out = place_loop_from(sagging, circles, teeth, nodes, pitch, solved.start);
   if (out.s.empty()) return out;
   // every link one pitch (the closing one too), 1e-9 relative: a walk that found no point a
   // pitch on, or a link cut short, is not laid
