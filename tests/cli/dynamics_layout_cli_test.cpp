@@ -689,6 +689,38 @@ TEST(DynamicsLayoutCli, SlackBeyondTheHalfCircleStartsAsTheCatenary) {
   std::printf("105 links: start sag %.6f m, catenary %.6f m\n", start_sag, sag);
 }
 
+// A sloped catenary whose walk from the path's start closes for no e, through the command: the
+// driven wheel at (200, −400) mm from the driver, z 17 both. 80 links start (before: refused,
+// "need an e that was not found"), every link one pitch (`laid_pitch` the pitch, `slack` N p less
+// the path's length); 300 links, beyond the longest catenary, are refused naming "at most 297
+// links start so", found by the scan down from the limit (before, every count from 77 up closed
+// for no e and the search bisected to 76).
+TEST(DynamicsLayoutCli, AKinkedSlopedCatenaryStarts) {
+  auto with_links = [](int links) {
+    return write("kinked" + std::to_string(links) + ".toml",
+                 "[dynamics]\nchain = \"12B\"\naxial_stiffness = \"5e7 N/m\"\naxial_damping = "
+                 "100\npretension = \"100 N\"\ncontact_stiffness = \"2e8 N/m\"\n"
+                 "contact_damping = 800\nduration = \"0.2 ms\"\nstep = \"0.1 ms\"\n"
+                 "output_interval = \"0.1 ms\"\ntheta = 0.6\ngravity = true\nlinks = " +
+                     std::to_string(links) +
+                     "\n\n[[dynamics.sprocket]]\nteeth = 17\nrole = \"driver\"\nspeed = "
+                     "\"0.1 rad/s\"\ncentre_x = \"0 mm\"\ncentre_y = \"0 mm\"\n\n"
+                     "[[dynamics.sprocket]]\nteeth = 17\nrole = \"driven\"\ninertia = 0.02\n"
+                     "load_torque = 0\ncentre_x = \"200 mm\"\ncentre_y = \"-400 mm\"\n");
+  };
+  const CliRun r = run("dynamics " + with_links(80) + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["links"], 80);
+  EXPECT_NEAR(j["laid_pitch"].get<double>(), kPitch, 1e-12 * kPitch);
+  EXPECT_NEAR(j["slack"].get<double>(), 80 * kPitch - j["path_length"].get<double>(), 1e-12);
+  EXPECT_TRUE(j["diagnostics"].empty()) << j["diagnostics"].dump();
+  const CliRun longer = run("dynamics " + with_links(300) + " --format json");
+  EXPECT_EQ(longer.status, 2);
+  EXPECT_NE(longer.err.find("dynamics.links"), std::string::npos) << longer.err;
+  EXPECT_NE(longer.err.find("at most 297 links start so"), std::string::npos) << longer.err;
+}
+
 // A start with slack through the command: examples/dynamics_three_wheels.toml (55 links fit its
 // path) given 56 links and gravity starts with the extra 17 mm sagging in the span facing down
 // (idler -> driven), every link one pitch: `laid_pitch` the pitch, `slack` = 56 p − the path's
