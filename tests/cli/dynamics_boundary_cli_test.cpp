@@ -639,10 +639,11 @@ TEST(DynamicsBoundaryCli, AnErrorDiagnosticIsNamedOnStderrWithTheOutputWritten) 
 // hold the start's rollers in its contact no deeper than its surface. The inside ring of 43.8 mm
 // round sprocket[1] from -170 to 170 deg crosses the spans leaving that wheel (they pass its
 // surface at ±122.84 deg): refused on dynamics.guide[0] naming the span, how far past the surface
-// and the part of the ring clear of them, which typed back is accepted; the same ring from -60 to
-// 60 deg and a flat convex arc carrying the upper run are accepted and run. At the rule's edge: a
-// straight rail and the flat arc with their surface 0.02 mm below the upper run's roller centres
-// (6.015 mm into the rollers) are accepted, 0.02 mm above it refused, naming the move that clears.
+// and the part of the ring clear of them, which typed back is accepted and runs; the same ring from
+// -60 to 60 deg and a flat convex arc carrying the upper run are accepted and run. At the rule's
+// edge: a straight rail and the flat arc with their surface 0.02 mm below the upper run's roller
+// centres (6.015 mm into the rollers) are accepted, 0.02 mm above it refused, naming the move that
+// clears, which typed back is accepted.
 TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_rail_path";
@@ -682,6 +683,7 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
       run("dynamics " + write("ring_part.toml", ring(at.str(), bt.str())) + " --format json");
   EXPECT_EQ(typed.status, 0) << typed.err;
   EXPECT_EQ(typed.err.find("dynamics.guide[0]"), std::string::npos) << typed.err;
+  EXPECT_EQ(typed.out.find("dynamics.not_converged"), std::string::npos);  // and runs its 2 ms
 
   // lying on the chain: accepted and run
   const std::string flat =
