@@ -7,9 +7,11 @@
 // each named with its range (docs/models/dynamics.md, "The inputs' bounds").
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -630,6 +632,119 @@ TEST(DynamicsBoundaryCli, AnErrorDiagnosticIsNamedOnStderrWithTheOutputWritten) 
   EXPECT_EQ(h.status, 0) << h.err;
   EXPECT_NE(h.err.find("catena: error: analyses.dynamics: step 3"), std::string::npos) << h.err;
   EXPECT_TRUE(written);
+}
+
+// A guide against the chain's starting path (docs/models/dynamics.md, "Guides against the starting
+// path") on the lead-in loop (the upper run 36.80 mm high, sprocket[1] at x = 190.5 mm): a rail may
+// hold the start's rollers in its contact no deeper than its surface. The inside ring of 43.8 mm
+// round sprocket[1] from -170 to 170 deg crosses the spans leaving that wheel (they pass its
+// surface at ±122.84 deg): refused on dynamics.guide[0] naming the span, how far past the surface
+// and the part of the ring clear of them, which typed back is accepted and runs; the same ring from
+// -60 to 60 deg and a flat convex arc carrying the upper run are accepted and run. At the rule's
+// edge: a straight rail and the flat arc with their surface 0.02 mm below the upper run's roller
+// centres (6.015 mm into the rollers) are accepted, 0.02 mm above it refused, naming the move that
+// clears, which typed back is accepted.
+TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_rail_path";
+  std::filesystem::create_directories(dir);
+  const auto ring = [](const std::string& from, const std::string& to) {
+    return "[[dynamics.guide]]\nkind = \"arc\"\ncentre_x = \"190.5 mm\"\ncentre_y = 0\n"
+           "radius = \"43.8 mm\"\ninside = true\nstart_angle = \"" +
+           from + " deg\"\nend_angle = \"" + to + " deg\"\n";
+  };
+  const auto write = [&](const std::string& name, const std::string& text) {
+    const std::filesystem::path file = dir / name;
+    std::ofstream(file) << kLeadInLoopHead << text;
+    return file.string();
+  };
+  const CliRun cut =
+      run("dynamics " +
+          write("ring_across.toml", ring("-170", "170") + "lead_in_radius = \"20 mm\"\n"
+                                                          "lead_in_angle = \"15.18 deg\"\n"));
+  EXPECT_EQ(cut.status, 2) << cut.err;
+  EXPECT_TRUE(cut.out.empty());
+  for (const char* text :
+       {"dynamics.guide[0] (line 19) = the span sprocket[", " mm past its surface at ",
+        "at most the roller radius (6.035 mm) into it",
+        "start_angle >= ", " deg and end_angle <= "})
+    EXPECT_NE(cut.err.find(text), std::string::npos) << text << "\n" << cut.err;
+  // the clear part named lies within ±122.84 deg, where the spans pass the ring's surface
+  const double from = named_after(cut.err, "start_angle >= ");
+  const double to = named_after(cut.err, "end_angle <= ");
+  EXPECT_GT(from, -122.84) << cut.err;
+  EXPECT_LT(from, -118.0) << cut.err;
+  EXPECT_LT(to, 122.84) << cut.err;
+  EXPECT_GT(to, 118.0) << cut.err;
+  std::ostringstream at, bt;
+  at << from;
+  bt << to;
+  const CliRun typed =
+      run("dynamics " + write("ring_part.toml", ring(at.str(), bt.str())) + " --format json");
+  EXPECT_EQ(typed.status, 0) << typed.err;
+  EXPECT_EQ(typed.err.find("dynamics.guide[0]"), std::string::npos) << typed.err;
+  EXPECT_EQ(typed.out.find("dynamics.not_converged"), std::string::npos);  // and runs its 2 ms
+
+  // lying on the chain: accepted and run
+  const std::string flat =
+      "[[dynamics.guide]]\nkind = \"arc\"\ncentre_x = \"95.25 mm\"\ncentre_y = \"-4968.8 mm\"\n"
+      "radius = \"5 m\"\nstart_angle = \"89.3124 deg\"\nend_angle = \"90.6876 deg\"\n";
+  for (const std::string& text : {ring("-60", "60"), flat}) {
+    const CliRun ok = run("dynamics " + write("on_chain.toml", text) + " --format json");
+    ASSERT_EQ(ok.status, 0) << text << ok.err;
+    EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos) << text;
+  }
+
+  // the rule's edge: the upper run's roller centres at the pitch radius, 36.8017 mm; a straight
+  // rail's surface and the flat arc's top (centre_y + 5 m) 0.02 mm below or above them
+  const double run_height = 0.5 * 19.05 / std::sin(std::numbers::pi / 12.0);  // [mm]
+  for (const double off : {-0.02, 0.02}) {
+    std::ostringstream height, centre;
+    height.precision(10);
+    centre.precision(10);
+    height << run_height + off << " mm";
+    centre << run_height + off - 5000.0 << " mm";
+    const std::string rail = lead_in_rail(height.str(), "");
+    const std::string arc =
+        "[[dynamics.guide]]\nkind = \"arc\"\ncentre_x = \"95.25 mm\"\ncentre_y = \"" +
+        centre.str() +
+        "\"\nradius = \"5 m\"\nstart_angle = \"89.3124 deg\"\nend_angle = \"90.6876 deg\"\n";
+    for (const std::string& text : {rail, arc}) {
+      const CliRun r = run("dynamics " + write("edge.toml", text) + " --duration \"0.1 ms\"");
+      if (off < 0.0) {
+        EXPECT_EQ(r.status, 0) << text << r.err;
+        continue;
+      }
+      EXPECT_EQ(r.status, 2) << text << r.err;
+      const std::string named =
+          "dynamics.guide[0] (line 19) = the span sprocket[1] -> sprocket[0] ";
+      EXPECT_NE(r.err.find(named), std::string::npos) << text << r.err;
+      const double past = named_after(r.err, named);  // [mm] past the surface
+      EXPECT_GT(past, 0.0199) << r.err;
+      EXPECT_LT(past, 0.0201) << r.err;
+      // the move named, typed back: accepted
+      const bool straight = text == rail;
+      const double moved = named_after(r.err, straight ? "the rail moved " : "radius <= ");
+      std::ostringstream back;
+      back.precision(12);
+      if (straight) {
+        EXPECT_GE(moved, 0.02) << r.err;
+        EXPECT_LT(moved, 0.0201) << r.err;
+        back << run_height + off - moved << " mm";
+      } else {
+        EXPECT_GE(moved, 5.0 - 0.0201e-3) << r.err;
+        EXPECT_LE(moved, 5.0 - 0.02e-3) << r.err;
+      }
+      if (!straight) back << moved << " m";
+      const std::string fixed = straight ? lead_in_rail(back.str(), "")
+                                         : std::regex_replace(text, std::regex("radius = \"5 m\""),
+                                                              "radius = \"" + back.str() + "\"");
+      const CliRun ok =
+          run("dynamics " + write("edge_moved.toml", fixed) + " --duration \"0.1 ms\"");
+      EXPECT_EQ(ok.status, 0) << fixed << ok.err;
+    }
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

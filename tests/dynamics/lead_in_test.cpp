@@ -816,4 +816,118 @@ TEST(DynamicsLeadIn, ARollerArrivingBelowAnArcRailsEndIsCaughtGradually) {
 }
 
 }  // namespace
+// A rail against the chain's starting path (rail_cut; docs/models/dynamics.md, "Guides against the
+// starting path") against a brute force on the lead-in tests' loop (two z = 12 wheels ten pitches
+// apart): 400 random rails — straight, 10-150 mm long in any direction, or arcs of 10-120 mm,
+// outside or inside, sweeping 10-350° — about the loop. The brute force walks the path every
+// 0.02 mm through guide_contact: a rail is cut where a point in its contact lies past its surface,
+// g > r. rail_cut (an eighth of a roller radius between its samples) must refuse every rail cut
+// over at least 1.5 mm of the path and accept every rail with no point past the surface (those cut
+// over less, a crossing at a rail's very end, are left out and counted); the clear part it names
+// has no point past the surface, and the rail moved by the shift it names none past it by more
+// than 5 µm (the bisection's edge, sampled: the sagitta between samples on the wraps is 2 µm).
+TEST(DynamicsRailCut, MatchesABruteForceOnRandomRails) {
+  const double p = 0.01905, r = kRoller, step = 2e-5;
+  const double radius = 0.5 * p / std::sin(kPi / 12);
+  const BeltPath path = belt_path({{0.0, 0.0, radius}, {10 * p, 0.0, radius}}, 0);
+  ASSERT_FALSE(path.pieces.empty());
+  std::vector<PathPoint> points;
+  for (double s = 0.0; s < path.length; s += step) points.push_back(path_point(path, s));
+  struct Brute {
+    double deepest = 0.0;  // the largest g in the contact
+    int past = 0;          // points past the surface
+  };
+  auto brute = [&](const Guide& g) {
+    Brute b;
+    for (const PathPoint& q : points) {
+      const GuideContact c = guide_contact(g, q.x, q.y, 0.0, 0.0);
+      if (!c.active) continue;
+      b.deepest = std::max(b.deepest, c.penetration);
+      if (c.penetration > r) ++b.past;
+    }
+    return b;
+  };
+  std::mt19937_64 rng(2111);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  int refused = 0, accepted = 0, left_out = 0, parts = 0, shifts = 0;
+  double most_in_part = 0.0, most_moved = 0.0, deepest_moved = 0.0;  // [m]
+  for (int trial = 0; trial < 400; ++trial) {
+    Guide g = inclined_rail(0.0);
+    const double x = -0.05 + 0.29 * u01(rng), y = -0.05 + 0.1 * u01(rng);
+    if (trial % 2 == 0) {
+      const double length = 0.01 + 0.14 * u01(rng), direction = 2 * kPi * u01(rng);
+      g.x0 = x;
+      g.y0 = y;
+      g.x1 = x + length * std::cos(direction);
+      g.y1 = y + length * std::sin(direction);
+    } else {
+      const double start = 2 * kPi * u01(rng) - kPi;
+      g = testing::arc_rail(g, x, y, 0.01 + 0.11 * u01(rng), start,
+                            start + (10.0 + 340.0 * u01(rng)) * kPi / 180.0, u01(rng) < 0.5);
+    }
+    const Brute b = brute(g);
+    const RailCut cut = rail_cut(path, g);
+    if (b.past * step >= 1.5e-3) {
+      ++refused;
+      EXPECT_FALSE(cut.piece.empty()) << trial << " cut over " << b.past * step << " m";
+      EXPECT_GT(cut.depth, r) << trial;
+      EXPECT_LE(cut.depth, b.deepest + step) << trial;
+    } else if (b.past == 0) {
+      ++accepted;
+      EXPECT_TRUE(cut.piece.empty()) << trial << " " << cut.piece << " " << cut.depth;
+    } else {
+      ++left_out;
+    }
+    if (cut.piece.empty()) continue;
+    if (std::isfinite(cut.clear_from)) {
+      ++parts;
+      Guide part = g;
+      if (g.kind == Guide::Kind::kStraight) {
+        const double len = std::hypot(g.x1 - g.x0, g.y1 - g.y0);
+        const double ux = (g.x1 - g.x0) / len, uy = (g.y1 - g.y0) / len;
+        part.x0 = g.x0 + cut.clear_from * ux;
+        part.y0 = g.y0 + cut.clear_from * uy;
+        part.x1 = g.x0 + cut.clear_to * ux;
+        part.y1 = g.y0 + cut.clear_to * uy;
+      } else {
+        part.start_angle = g.start_angle + cut.clear_from;
+        part.end_angle = g.start_angle + cut.clear_to;
+      }
+      const Brute in_part = brute(part);
+      EXPECT_LT(in_part.past * step, 1.5e-3) << trial;
+      most_in_part = std::max(most_in_part, in_part.past * step);
+      EXPECT_TRUE(rail_cut(path, part).piece.empty()) << trial;
+    }
+    if (std::isfinite(cut.shift)) {
+      ++shifts;
+      EXPECT_GT(cut.shift, 0.0) << trial;
+      EXPECT_LE(cut.shift, 2 * r) << trial;
+      Guide moved = g;
+      if (g.kind == Guide::Kind::kStraight) {
+        const double len = std::hypot(g.x1 - g.x0, g.y1 - g.y0);
+        const double nx = -(g.y1 - g.y0) / len, ny = (g.x1 - g.x0) / len;
+        moved.x0 -= cut.shift * nx;
+        moved.y0 -= cut.shift * ny;
+        moved.x1 -= cut.shift * nx;
+        moved.y1 -= cut.shift * ny;
+      } else {
+        moved.radius += g.inside ? cut.shift : -cut.shift;
+      }
+      const Brute m = brute(moved);
+      EXPECT_LT(m.past * step, 1.5e-3) << trial;
+      most_moved = std::max(most_moved, m.past * step);
+      deepest_moved = std::max(deepest_moved, m.deepest);
+      EXPECT_TRUE(rail_cut(path, moved).piece.empty()) << trial;
+    }
+  }
+  std::printf(
+      "rail_cut: %d refused, %d accepted, %d left out; %d clear parts (cut over at most %.3g mm), "
+      "%d moves (cut over at most %.3g mm, at most %.4g mm in)\n",
+      refused, accepted, left_out, parts, most_in_part * 1e3, shifts, most_moved * 1e3,
+      deepest_moved * 1e3);
+  EXPECT_GT(refused, 40);
+  EXPECT_GT(accepted, 40);
+  EXPECT_LT(left_out, 40);
+}
+
 }  // namespace catena::dynamics

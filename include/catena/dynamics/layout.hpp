@@ -155,6 +155,27 @@ std::string lead_in_obstacle(const BeltPath& path, const Guide& rail, const Guid
                              const std::vector<Guide>& guides, const std::vector<std::size_t>& skip,
                              double roller);
 
+/// How the chain's starting path `path` lies in the contact of the guide `rail` (docs/models/
+/// dynamics.md, "Guides against the starting path"): sampled along the path (a quarter roller
+/// apart, at least 512 and at most 1e6 samples), a point in the rail's contact (`guide_contact`:
+/// between its ends, 0 < g < 2r) deeper than its surface, g > r (the roller's centre past the
+/// surface: the path crosses the rail or lies in it, not on it), is a cut. The deepest cut's
+/// piece ("the chain on sprocket[w]", "the span sprocket[a] -> sprocket[b]"; empty when there is
+/// none), its depth g and point, where it is along the rail (from `start_angle` round an arc's
+/// centre [rad], from (x0, y0) along a straight rail [m]); the longest part of the rail over no cut
+/// (the same measure; NaN when none) and the least move of the rail's surface away from its
+/// rollers' side (a straight rail along −n, an arc's radius smaller outside, larger inside) that
+/// leaves no cut, within a roller's diameter (NaN when none does).
+struct RailCut {
+  std::string piece;
+  double depth = 0.0;       ///< [m]
+  double x = 0.0, y = 0.0;  ///< [m]
+  double along = 0.0;
+  double clear_from = NAN, clear_to = NAN;
+  double shift = NAN;  ///< [m]
+};
+RailCut rail_cut(const BeltPath& path, const Guide& rail);
+
 /// The distances `lead_in_obstacle` measures for `arc` (its samples times the pieces and guides
 /// its prefilter keeps): the work of one check, which `lead_in_limit`'s bisections repeat at most
 /// kLeadInPasses times in all (their arcs lie within the given arc's bounding box).

@@ -2059,6 +2059,9 @@ Setup parse(const analysis::Inputs& in) {
     LeadIn lead;
   };
   std::vector<LeadInRail> lead_rails;
+  // each rail as given, read whole and passing the core's checks: checked against the chain's
+  // starting path once every guide is read (its name with the table's line, its index in s.guides)
+  std::vector<std::pair<std::string, std::size_t>> given_rails;
   for (std::size_t i = 0; i < guides.size(); ++i) {
     const GuideInput& g = guides[i];
     const std::string base = "dynamics.guide[" + std::to_string(i) + "].";
@@ -2237,6 +2240,9 @@ Setup parse(const analysis::Inputs& in) {
     if (s.pitch > 0.0) probe.pitch = s.pitch;  // a loaded arc's rollers' line: at least a pitch
     const bool weightless = guide.load_per_metre > 0.0 && !(s.gravity > 0.0);
     const std::vector<Issue> found = validate(probe);
+    const bool rail_valid = std::none_of(found.begin(), found.end(), [](const Issue& x) {
+      return x.field.rfind("guide[0].", 0) == 0;
+    });
     const bool bad_material = std::any_of(found.begin(), found.end(), [](const Issue& x) {
       return x.field == "guide[0].rail_modulus" || x.field == "guide[0].rail_poisson";
     });
@@ -2270,6 +2276,8 @@ Setup parse(const analysis::Inputs& in) {
         lead_rails.back().count = lead_ins.size();
         lead_rails.back().placed = true;
       }
+      if (rail_valid)
+        given_rails.emplace_back("dynamics.guide[" + std::to_string(i) + "]" + l, s.guides.size());
       s.guides.push_back(guide);
       s.guide_names.push_back("guide[" + std::to_string(i) + "]");
       lead_arcs.insert(lead_arcs.end(), lead_ins.begin(), lead_ins.end());
@@ -2287,7 +2295,64 @@ Setup parse(const analysis::Inputs& in) {
   s.guide_names.insert(s.guide_names.end(), lead_names.begin(), lead_names.end());
   // a lead-in's arcs clear of the chain's path and of the other guides (docs/models/dynamics.md,
   // "Lead-ins"): refused naming what they run into and the largest radius (and sweep) that clears
-  const BeltPath chain_path = lead_rails.empty() ? BeltPath{} : starting_path(s);
+  const BeltPath chain_path =
+      lead_rails.empty() && given_rails.empty() ? BeltPath{} : starting_path(s);
+  // a rail carries the chain on its rollers' side: the starting path may lie in its contact no
+  // deeper than its surface (docs/models/dynamics.md, "Guides against the starting path"); a
+  // path that crosses the rail or lies in it is refused naming where, how deep and what clears it
+  for (const auto& [name, index] : given_rails) {
+    const Guide& rail = s.guides[index];
+    const RailCut cut = rail_cut(chain_path, rail);
+    if (cut.piece.empty()) continue;
+    const bool arc = rail.kind == Guide::Kind::kArc;
+    const double deg = 180.0 / std::numbers::pi;
+    const double r = rail.roller_radius;
+    auto mm = [](double v) { return format_g(v * 1e3, 4) + " mm"; };
+    std::string where =
+        arc ? format_g((rail.start_angle + cut.along) * deg, 4) + " deg round its centre"
+            : mm(cut.along) + " along it from (x0, y0)";
+    std::string remedy;
+    if (std::isfinite(cut.clear_from) && cut.clear_to > cut.clear_from) {
+      if (arc) {
+        // rounded inwards to 0.01 deg: a part of a clear part is clear
+        const double a0 = std::ceil((rail.start_angle + cut.clear_from) * deg * 100.0) / 100.0;
+        const double a1 = std::floor((rail.start_angle + cut.clear_to) * deg * 100.0) / 100.0;
+        if (a1 > a0)
+          remedy = "start_angle >= " + format_g(a0, 6) +
+                   " deg and end_angle <= " + format_g(a1, 6) + " deg";
+      } else {
+        // rounded inwards to 1 µm
+        const double f = std::ceil(cut.clear_from * 1e6) / 1e3,
+                     t = std::floor(cut.clear_to * 1e6) / 1e3;
+        if (t > f)
+          remedy = "the rail from " + format_g(f, 6) + " mm to " + format_g(t, 6) +
+                   " mm along it from (x0, y0)";
+      }
+    }
+    if (std::isfinite(cut.shift)) {
+      const double shift = up_to(cut.shift, 4);
+      // an arc's radius moved by it, to the shift's fourth digit (outwards from the chain)
+      const double unit = std::pow(10.0, std::floor(std::log10(shift)) - 3.0);
+      const double moved = rail.inside ? std::ceil((rail.radius + shift) / unit) * unit
+                                       : std::floor((rail.radius - shift) / unit) * unit;
+      const int digits =
+          static_cast<int>(std::floor(std::log10(moved)) - std::floor(std::log10(unit))) + 1;
+      remedy += std::string(remedy.empty() ? "" : ", or ") +
+                (arc ? std::string(rail.inside ? "radius >= " : "radius <= ") +
+                           format_g(moved, std::max(digits, 1)) + " m (its surface " + mm(shift) +
+                           " farther from the chain)"
+                     : "the rail moved " + mm(shift) +
+                           " away from its rollers' side (along its right-hand normal)");
+    }
+    if (remedy.empty()) remedy = "no part of it nor a move within a roller's diameter clears it";
+    issues.push_back(
+        {name, cut.piece + " " + mm(cut.depth - r) + " past its surface at " + where,
+         "a rail the chain's starting path lies on, not across or in: in its contact (between "
+         "its ends, within a roller's diameter of its surface) no roller's centre past its "
+         "surface, at most the roller radius (" +
+             mm(r) + ") into it (here " + cut.piece + " at (" + format_g(cut.x * 1e3, 4) + ", " +
+             format_g(cut.y * 1e3, 4) + ") mm, " + mm(cut.depth) + " in): " + remedy});
+  }
   // the check's work bounded (docs/models/dynamics.md, "Lead-ins"): the distances it may measure,
   // each arc's check repeated by the bisections, at most kMaxLeadInWork
   // a rail's arcs are not checked against the rail itself nor its own arcs

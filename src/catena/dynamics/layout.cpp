@@ -983,6 +983,180 @@ LeadInLimit lead_in_limit(const BeltPath& path, const Guide& rail, const LeadIn&
   return out;
 }
 
+namespace {
+
+// Where (x, y) is along a rail: the angle from its start round an arc's centre (in [0, 2π)), the
+// distance from (x0, y0) along a straight rail.
+double rail_along(const Guide& rail, double x, double y) {
+  if (rail.kind == Guide::Kind::kStraight) {
+    const GuideFrame f = guide_frame(rail);
+    return (x - rail.x0) * f.ux + (y - rail.y0) * f.uy;
+  }
+  const double a = std::atan2(y - rail.centre_y, x - rail.centre_x) - rail.start_angle;
+  return a - kTwoPi * std::floor(a / kTwoPi);
+}
+
+// The path's samples for the cuts: an eighth of a roller radius apart (arc_samples's quarter of
+// half the roller radius), at least 512, at most kMaxSagSamples.
+int cut_samples(const BeltPath& path, const Guide& rail) {
+  return arc_samples(path.length, 0.5 * rail.roller_radius);
+}
+
+// Each sample of the path in the rail's contact deeper than its surface: `cut(point, g)`. The
+// samples are the path's at arc lengths L j/n; only those of the pieces that may enter the rail's
+// box are visited (of a straight span, the stretch of it within the box, clipped as Liang and
+// Barsky clip a line: the samples outside the box cannot be in the contact), the same verdicts
+// with a fraction of the work on a long loop.
+template <class Cut>
+void for_each_cut(const BeltPath& path, const Guide& rail, Cut&& cut) {
+  const GuideFrame frame = guide_frame(rail);
+  const GuideBounds box = guide_bounds(rail);
+  const int n = cut_samples(path, rail);
+  const double per = n / path.length;  // samples per metre
+  for (const PathPiece& q : path.pieces) {
+    double t0 = 0.0, t1 = 1.0;  // the share of the piece to visit
+    if (!q.arc && !q.sag && !q.catenary) {
+      const double d[2] = {q.x1 - q.x0, q.y1 - q.y0}, o[2] = {q.x0, q.y0};
+      const double lo[2] = {box.x_lo, box.y_lo}, hi[2] = {box.x_hi, box.y_hi};
+      for (int k = 0; k < 2 && t0 <= t1; ++k) {
+        if (d[k] == 0.0) {
+          if (!(o[k] >= lo[k] && o[k] <= hi[k])) t1 = -1.0;
+          continue;
+        }
+        const double a = (lo[k] - o[k]) / d[k], b = (hi[k] - o[k]) / d[k];
+        t0 = std::max(t0, std::min(a, b));
+        t1 = std::min(t1, std::max(a, b));
+      }
+      if (!(t0 <= t1)) continue;
+    }
+    // a sample either side more, for the rounding
+    const double from = std::floor((q.start + t0 * q.length) * per) - 1.0;
+    const double to = std::ceil((q.start + t1 * q.length) * per) + 1.0;
+    for (double j = std::max(from, 0.0); j <= to && j < n; ++j) {
+      const PathPoint p = path_point(path, path.length * j / n);
+      if (p.piece != static_cast<std::size_t>(&q - path.pieces.data())) continue;  // its own
+      if (!guide_touch_possible(box, p.x, p.y)) continue;
+      const GuideContact c = guide_contact(rail, frame, p.x, p.y, 0.0, 0.0);
+      if (c.active && c.penetration > rail.roller_radius) cut(p, c.penetration);
+    }
+  }
+}
+
+bool cut_free(const BeltPath& path, const Guide& rail) {
+  bool free = true;
+  for_each_cut(path, rail, [&](const PathPoint&, double) { free = false; });
+  return free;
+}
+
+// The rail's part between `from` and `to` along it (rail_along's measure).
+Guide rail_part(const Guide& rail, double from, double to) {
+  Guide out = rail;
+  if (rail.kind == Guide::Kind::kStraight) {
+    const GuideFrame f = guide_frame(rail);
+    out.x0 = rail.x0 + from * f.ux;
+    out.y0 = rail.y0 + from * f.uy;
+    out.x1 = rail.x0 + to * f.ux;
+    out.y1 = rail.y0 + to * f.uy;
+  } else {
+    out.start_angle = rail.start_angle + from;
+    out.end_angle = rail.start_angle + to;
+  }
+  return out;
+}
+
+// The rail with its surface moved by `shift` away from its rollers' side.
+Guide rail_moved(const Guide& rail, double shift) {
+  Guide out = rail;
+  if (rail.kind == Guide::Kind::kStraight) {
+    const GuideFrame f = guide_frame(rail);  // the free side's normal n = (−u_y, u_x)
+    out.x0 += shift * f.uy;
+    out.y0 -= shift * f.ux;
+    out.x1 += shift * f.uy;
+    out.y1 -= shift * f.ux;
+  } else {
+    out.radius += rail.inside ? shift : -shift;
+  }
+  return out;
+}
+
+}  // namespace
+
+RailCut rail_cut(const BeltPath& path, const Guide& rail) {
+  RailCut out;
+  if (path.pieces.empty() || !(path.length > 0.0) || !(rail.roller_radius > 0.0)) return out;
+  std::vector<double> cuts;  // along the rail
+  for_each_cut(path, rail, [&](const PathPoint& p, double g) {
+    cuts.push_back(rail_along(rail, p.x, p.y));
+    if (!(g > out.depth)) return;
+    const PathPiece& q = path.pieces[p.piece];
+    out.piece = q.arc ? "the chain on " + wheel_name(q.wheel)
+                      : "the span " + wheel_name(q.wheel) + " -> " + wheel_name(q.next);
+    out.depth = g;
+    out.x = p.x;
+    out.y = p.y;
+    out.along = cuts.back();
+  });
+  if (cuts.empty()) return out;
+  // the longest part over no cut: between two cuts' samples (or a cut and an end), a sample's
+  // reach inside them; again within it while cuts are left under it (a cut between the path's
+  // samples lies a little beyond them)
+  const double length = rail.kind == Guide::Kind::kStraight ? guide_frame(rail).length
+                                                            : rail.end_angle - rail.start_angle;
+  // a cut may lie up to a sample's spacing beyond its sample along the path: along a straight
+  // rail that far, round an arc that far at the contact's least distance from its centre
+  const double spacing = path.length / cut_samples(path, rail);
+  const double inner = rail.radius - rail.roller_radius;
+  const double hair = rail.kind == Guide::Kind::kStraight ? spacing
+                      : inner > 0.0                       ? spacing / inner
+                                                          : length;
+  double from = 0.0, to = length;
+  for (int pass = 0; pass < 64 && !cuts.empty(); ++pass) {
+    std::sort(cuts.begin(), cuts.end());
+    double best_from = from, best_to = from;
+    for (std::size_t k = 0; k <= cuts.size(); ++k) {
+      const double a = k == 0 ? from : cuts[k - 1] + hair;
+      const double b = k == cuts.size() ? to : cuts[k] - hair;
+      if (b - a > best_to - best_from) {
+        best_from = a;
+        best_to = b;
+      }
+    }
+    from = best_from;
+    to = best_to;
+    cuts.clear();
+    if (!(to > from)) break;
+    const Guide part = rail_part(rail, from, to);
+    for_each_cut(path, part, [&](const PathPoint& p, double) {
+      cuts.push_back(from + rail_along(part, p.x, p.y));
+    });
+  }
+  if (cuts.empty() && to > from) {
+    out.clear_from = from;
+    out.clear_to = to;
+  }
+  // the least move within a roller's diameter: scanned in eighths of a roller radius, the first
+  // clear one bisected back towards the last cut one (an arc kept larger than the roller)
+  const double r = rail.roller_radius;
+  double cut_at = 0.0;
+  for (int k = 1; k <= 16; ++k) {
+    const double shift = k * r / 8.0;
+    const Guide moved = rail_moved(rail, shift);
+    if (rail.kind == Guide::Kind::kArc && !(moved.radius > r)) break;
+    if (!cut_free(path, moved)) {
+      cut_at = shift;
+      continue;
+    }
+    double clear = shift;
+    for (int i = 0; i < 30; ++i) {
+      const double mid = 0.5 * (cut_at + clear);
+      (cut_free(path, rail_moved(rail, mid)) ? clear : cut_at) = mid;
+    }
+    out.shift = clear;
+    break;
+  }
+  return out;
+}
+
 std::vector<std::size_t> sagging_spans(const BeltPath& path) {
   std::vector<std::size_t> back, out;
   for (const PathPiece& q : path.pieces)
