@@ -275,8 +275,8 @@ TEST(DynamicsHingeCli, StickLawKeysReachTheModelAndAreChecked) {
 
 // The stick law's bounds over the step (docs/models/dynamics.md, "Hinges: sticking"): on the 12B
 // example (m = 0.0237 kg, p = 19.05 mm, theta 0.6, h = 0.1 ms) k_t above 100 m p^2/(theta h)^2 =
-// 2.388e5 N m/rad is refused, the limit named; above 10 m p^2/(theta h)^2 = 2.388e4 N m/rad a run
-// is warned, and k_t = 1e5 (ratio 42) stops at its third step with advice naming the key; the
+// 2.388e5 N m/rad is refused, the limit named; above 14 m p^2/(theta h)^2 = 3.344e4 N m/rad a run
+// is warned, and k_t = 1e5 (ratio 42) stops at its sixth step with advice naming the key; the
 // damper c_t above 5e3 m p^2/(theta h) (the seats' damper ratio) = 716.6 N m s/rad is refused.
 TEST(DynamicsHingeCli, StickLawBoundsFollowTheStep) {
   const std::string sliding = "hinge = \"sliding\"\nhinge_friction = 0.1\n";
@@ -297,7 +297,7 @@ TEST(DynamicsHingeCli, StickLawBoundsFollowTheStep) {
     if (d["code"] == "dynamics.hinge_stick_stiffness_high") {
       warning = true;
       EXPECT_EQ(d["severity"], "warning");
-      EXPECT_NE(d["message"].get<std::string>().find("2.388e+04 N m/rad"), std::string::npos)
+      EXPECT_NE(d["message"].get<std::string>().find("3.344e+04 N m/rad"), std::string::npos)
           << d.dump();
     }
     if (d["code"] == "dynamics.not_converged")
@@ -335,6 +335,28 @@ TEST(DynamicsHingeCli, StickLawBoundsFollowTheStep) {
                                                      "hinge_stick_damping = 716\n") +
           " --duration 0.0002s --format json");
   EXPECT_EQ(under.status, 0) << under.err;
+}
+
+// Ratios where the stick law stopped converging before the line search's crossing cut
+// (docs/models/dynamics.md, "Hinges: sticking"): the 12B example at k_t = 7e4 N m/rad, h = 0.1 ms
+// (ratio 29; stopped at step 6 without the cut) and at k_t = 1.5e4, h = 0.2 ms (ratio 25; stopped
+// at step 3 without the cut, and at step 1 with the cut but without the last start from constant
+// velocity with the halvings alone) run 2 ms, warned.
+TEST(DynamicsHingeCli, StickLawRunsPastTheRatiosThatStoppedBeforeTheCrossingCut) {
+  const std::string sliding = "hinge = \"sliding\"\nhinge_friction = 0.1\n";
+  for (const auto& [kt, step] : {std::pair<std::string, std::string>{"7e4", "0.1ms"},
+                                 std::pair<std::string, std::string>{"1.5e4", "0.2ms"}}) {
+    const auto out = run_json(
+        example_with("stick_" + kt + ".toml", sliding + "hinge_stick_stiffness = " + kt + "\n"),
+        "--step " + step + " --duration 0.002s");
+    bool warned = false;
+    for (const auto& d : out["diagnostics"]) {
+      EXPECT_NE(d["code"], "dynamics.not_converged") << kt << " " << d.dump();
+      warned = warned || d["code"] == "dynamics.hinge_stick_stiffness_high";
+    }
+    EXPECT_TRUE(warned) << kt;
+    EXPECT_EQ(out["summary"]["steps"].get<int>(), step == "0.1ms" ? 20 : 10) << kt;
+  }
 }
 
 }  // namespace

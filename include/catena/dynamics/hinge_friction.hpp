@@ -83,6 +83,10 @@ struct HingeCouple {
   double work = 0.0;    ///< [J] M Δβ (≤ 0 but with the stick law, whose spring stores energy)
   /// the stick law's spring holds (|−k_t d_θ − c_t ω| ≤ e F; HingeFriction::stick_stiffness)
   bool sticking = false;
+  /// [N·m] the stick law's trial torque −k_t d_θ − c_t ω, before the projection onto
+  /// |M| ≤ e F (0 without the stick law): the integrator's line search cuts a step at a hinge
+  /// whose trial crosses from one slide over the whole stick band to the other
+  double trial = 0.0;
   double gx[3] = {0, 0, 0}, gy[3] = {0, 0, 0};  ///< [1/m] g = ∂β/∂x_k at the θ point
   double fx[3] = {0, 0, 0}, fy[3] = {0, 0, 0};  ///< [N] M g_k
   /// [N·m·s/rad] −∂M/∂ω ≥ 0 at the fixed load: e F s'(ω) (the regularised law), k_t θ h + c_t
@@ -209,6 +213,7 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
     // else e F against them (sliding); ∂M/∂Δβ = −(k_t θ + c_t/h) sticking, ∂M/∂F = ±e sliding
     const double kt = hinge.stick_stiffness, ct = hinge.stick_damping;
     const double spring = -kt * (deflection + theta * hc.turn) - ct * hc.rate;
+    hc.trial = spring;
     hc.sticking = std::abs(spring) <= limit;
     if (hc.sticking) {
       hc.torque = spring;
@@ -223,6 +228,7 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
     const double band = hinge.rate_band;
     const double root = std::sqrt(hc.rate * hc.rate + band * band);
     hc.sticking = false;
+    hc.trial = 0.0;
     hc.torque = -limit * hc.rate / root;
     hc.rate_stiffness = limit * band * band / (root * root * root);
     load_factor = -hinge.arm * (hc.rate / root) * loaded;  // −e s(ω)

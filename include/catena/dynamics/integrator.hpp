@@ -55,7 +55,9 @@ struct StepReport {
   int iterations = 0;  ///< Newton iterations taken (over every start)
   /// Newton runs from a starting point: 2 when the first (the predictor that extrapolates the
   /// velocities, or the last step's factors with hinge friction) did not converge and Newton ran
-  /// again from constant velocity with fresh factors; each run takes at most max_iterations
+  /// again from constant velocity with fresh factors; one more with the hinges' stick law when
+  /// those failed with the line search's crossing cut (again from constant velocity, the halvings
+  /// alone); each run takes at most max_iterations
   int starts = 1;
   int factorizations = 0;        ///< fresh Newton matrices factored (over every start)
   double last_correction = 0.0;  ///< [m] max |Δx| of the last Newton iteration
@@ -169,8 +171,15 @@ class Integrator {
   std::vector<double> l0_;                   // link lengths at the start of the step
   std::vector<double> l1_;                   // link lengths at the iterate (assemble's)
   std::vector<HingeLink> hinge_links_;       // each link's share of its hinges' couples
-  std::vector<Vec2> delta_;                  // Newton correction
-  std::vector<double> psi1_;                 // sprocket angles at the end of the step (iterate)
+  // The stick law's hinges (HingeFriction::sticks) per node: the trial torque and the limit e F
+  // at the last assembly's iterate (trial_), and at the iterate a Newton correction started from
+  // (trial_base_): the line search's crossing cut (Integrator::step)
+  struct HingeTrial {
+    double trial = 0.0, limit = 0.0;
+  };
+  std::vector<HingeTrial> trial_, trial_base_;
+  std::vector<Vec2> delta_;     // Newton correction
+  std::vector<double> psi1_;    // sprocket angles at the end of the step (iterate)
   std::vector<double> slide1_;  // take-ups' slides at the end of the step (iterate), per wheel
   // per node: the conveyed load's mass m_L at x₀ (Guide::load_inertia), fixed for the step: taken
   // at the step's first assembly (its guides' frames then current), unset with l0_

@@ -126,6 +126,8 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
       l0_(model.links()),
       l1_(model.links()),
       hinge_links_(model.hinge.active() ? model.links() : 0),
+      trial_(model.hinge.sticks() ? model.nodes() : 0),
+      trial_base_(trial_.size()),
       delta_(model.nodes()),
       psi1_(model.sprockets.size()),
       slide1_(model.sprockets.size()),
@@ -430,6 +432,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
           },
           i, th, deflection != nullptr ? deflection[i] : 0.0);
       hinge_work += hc.work;
+      if (deflection != nullptr && i < trial_.size())
+        trial_[i] = {hc.trial, model.hinge.arm * hc.load};
       rhs[ha].x += h * hc.fx[0];
       rhs[ha].y += h * hc.fy[0];
       rhs[i].x += h * hc.fx[1];
@@ -1126,11 +1130,39 @@ StepReport Integrator::step(const Model& model, State& s) {
     for (std::size_t a = 0; a < nd; ++a)
       (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] -= lambda * dx_[a];
   };
-  // Backtracking: from the full step (its residual `next`), halve the step while the residual
-  // grows past `norm2`, assembling the residual (and with `jacobian` the Newton matrix) at each
-  // point; returns the accepted point's residual.
+  // The hinges' stick law's crossing cut. A hinge that slid at the correction's start and slides
+  // the other way at its full step has crossed its whole stick band (its trial torque changed
+  // sign and left the band): the correction took it as free (the slide's tangent has no spring)
+  // and the spring's trial moved k_t θ Δβ past the band, so the next correction, free again,
+  // sends it back past the band the other way: Newton cycles between the two slides and never
+  // lands where it sticks (a node of inertia a on a spring k_t θ ≫ a cycles so exactly). The cut
+  // retreats along the correction to where the first such hinge's trial, linear in the step to
+  // first order, is 0 (its band's middle: it sticks there, and the next correction has its
+  // spring), whether or not the residual rose. Returns the fraction of the correction kept,
+  // 1 with no crossing (or without the stick law).
+  bool cut_crossings = !trial_.empty();  // off for the last start (below)
+  auto crossing_cut = [&] {
+    double cut = 1.0;
+    for (std::size_t i = 0; i < trial_.size(); ++i) {
+      const HingeTrial a = trial_base_[i], b = trial_[i];
+      if (std::abs(a.trial) > a.limit && std::abs(b.trial) > b.limit &&
+          (a.trial > 0.0) != (b.trial > 0.0))
+        cut = std::min(cut, a.trial / (a.trial - b.trial));  // in (0, 1): the signs differ
+    }
+    return std::max(cut, std::ldexp(1.0, -kMaxBacktracks));
+  };
+  // Backtracking: from the full step (its residual `next`), first the crossing cut where a hinge
+  // crossed its stick band, then halve the step while the residual grows past `norm2`,
+  // assembling the residual (and with `jacobian` the Newton matrix) at each point; returns the
+  // accepted point's residual.
   auto backtrack = [&](double next, double norm2, bool jacobian, StepReport& report) {
     double lambda = 1.0;
+    if (const double cut = cut_crossings ? crossing_cut() : 1.0; cut < 1.0) {
+      retreat(1.0 - cut);
+      lambda = cut;
+      next = assemble(model, s, jacobian);
+      ++report.backtracks;
+    }
     for (int b = 0; b < kMaxBacktracks && !(next < norm2); ++b) {
       lambda *= 0.5;
       retreat(lambda);
@@ -1265,6 +1297,7 @@ StepReport Integrator::step(const Model& model, State& s) {
         finish_bordered();
       }
       double correction = 0.0;
+      trial_base_ = trial_;  // the stick law's trials where this correction starts (crossing_cut)
       for (std::size_t i = 0; i < n; ++i) {
         if (!std::isfinite(delta_[i].x) || !std::isfinite(delta_[i].y)) {
           report.solve = SolveStatus::kSingularPivot;
@@ -1400,6 +1433,19 @@ StepReport Integrator::step(const Model& model, State& s) {
     report = newton(0.0, false);
     report.iterations += first.iterations;
     report.starts = 2;
+    report.factorizations += first.factorizations;
+    report.backtracks += first.backtracks;
+  }
+  if (!report.converged && cut_crossings) {
+    // The crossing cut lands each crossing hinge in its band, which can cost more iterations
+    // than the plain halvings where many hinges cross at once (larger steps): again from constant
+    // velocity with fresh factors and the halvings alone, the iterations and backtracks of all
+    // starts counted.
+    const StepReport first = report;
+    cut_crossings = false;
+    report = newton(0.0, false);
+    report.iterations += first.iterations;
+    report.starts = first.starts + 1;
     report.factorizations += first.factorizations;
     report.backtracks += first.backtracks;
   }
