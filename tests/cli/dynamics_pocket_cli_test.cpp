@@ -131,10 +131,13 @@ TEST(DynamicsPocketCli, ExampleRunsOnSeed003sWheelAndBalancesTheDrivenWheel) {
             "time,angle_0,speed_0,torque_0,angle_1,speed_1,torque_1,tension_upper,tension_lower");
 }
 
-// Round links carry no compression (docs/models/dynamics.md, "Tension-only links"): over the
-// whole 1 s example (h = 0.1 ms) and at h = 0.05 ms every sampled span tension is ≥ 0 and so is
-// the summary's minimum. With the bilateral links the series went down to −954 N and −889 N, and
-// the h = 0.05 ms run's lower span's summary minimum to −159.5 N.
+// Round links carry no compression (docs/models/dynamics.md, "Tension-only links"): the upright
+// links are tension-only, the flat links rigid ("The flat links": bilateral), and a span's
+// sampled link (the one nearest its middle, of either kind) pushes only as a flat link pressed
+// by a hair. Over the whole 1 s example (h = 0.1 ms) and at h = 0.05 ms every sampled span
+// tension and the summary's minimum are ≥ −1 N (measured: ≥ 0 at these samples; −0.033 N at the
+// lowest sampling the example at every step). With the bilateral links everywhere the series went
+// down to −954 N and −889 N, and the h = 0.05 ms run's lower span's summary minimum to −159.5 N.
 TEST(DynamicsPocketCli, SpanTensionsAreNeverNegative) {
   for (const char* step : {"", " --step 0.05ms"}) {
     const CliRun r = run("dynamics " + kExample + step + " --format json");
@@ -143,9 +146,9 @@ TEST(DynamicsPocketCli, SpanTensionsAreNeverNegative) {
     double lowest = INFINITY;
     for (const auto& span : j["span"])
       for (const auto& t : span["tension"]) lowest = std::min(lowest, t.get<double>());
-    EXPECT_GE(lowest, 0.0) << step;
+    EXPECT_GE(lowest, -1.0) << step;
     for (const char* span : {"span_0", "span_1"})
-      EXPECT_GE(j["summary"][span]["min_tension"].get<double>(), 0.0) << step << " " << span;
+      EXPECT_GE(j["summary"][span]["min_tension"].get<double>(), -1.0) << step << " " << span;
     std::printf("pocket example%s: lowest sampled span tension %.3g N\n", step, lowest);
   }
 }
