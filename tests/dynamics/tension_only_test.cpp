@@ -970,5 +970,190 @@ TEST(DynamicsTensionOnlyLinks, BadJamLengthsAreNamed) {
   EXPECT_EQ(fields(), V{"link_smoothing"});
 }
 
+// The flat links (Model::link_bilateral; docs/models/dynamics.md, "Tension-only links: the jam",
+// "The flat links"): the even links bilateral, the odd tension-only with their jam (a round-link
+// chain on a pocket wheel: rest lengths p ± a, a = 18 mm, the odd links jamming at 18 mm).
+Model flat_links(std::size_t nodes, double damping = kDamping) {
+  Model m = tension_only(nodes, damping);
+  m.alternation = 0.018;
+  m.link_jam_length = {0.0, 0.018};
+  m.link_bilateral = {true, false};
+  return m;
+}
+
+// The flagged even link is the bilateral law at every stretch and rate — T = k s + c ṡ, pushing
+// in compression with k through s = 0 (no ε ramp), E = ½ k s² — while the odd link's law is the
+// unflagged model's bit for bit (slack, its tension ramp, taut, its jam's ramp and the jam), as
+// is link_step_force's over steps of the odd link; the even link's step force is the quotient of
+// ½ k s², k (s₀ + s₁)/2 + c (s₁ − s₀)/h, with the slope ½ k + c/h.
+TEST(DynamicsTensionOnlyLinks, FlatLinksAreBilateralAndTheOddLinksUnchanged) {
+  const Model m = flat_links(3);
+  ASSERT_TRUE(validate(m).empty());
+  Model plain = m;
+  plain.link_bilateral = {false, false};
+  const double eps = m.link_smoothing, k = kStiffness, c = kDamping, h = 1e-5;
+  const double sj = m.jam_length(1) - m.rest_length(1);  // the odd links' jam, −28 mm
+  int pushes = 0;
+  for (int i = -300; i <= 300; ++i) {
+    for (const double base : {0.0, sj}) {
+      const double s = base + i * 0.01 * eps + 0.003 * eps;
+      for (const double rate : {-0.5, -0.02, 0.0, 0.02, 0.5}) {
+        const LinkForce even = link_force(m, s, rate, 0);
+        EXPECT_EQ(even.tension, k * s + c * rate) << s << " " << rate;
+        EXPECT_EQ(even.elastic, k * s);
+        EXPECT_EQ(even.stiffness, k);
+        EXPECT_EQ(even.damping, c);
+        EXPECT_EQ(even.energy, 0.5 * k * s * s);
+        if (even.tension < 0.0) ++pushes;
+        const LinkForce odd = link_force(m, s, rate, 1), before = link_force(plain, s, rate, 1);
+        EXPECT_EQ(odd.tension, before.tension) << s << " " << rate;
+        EXPECT_EQ(odd.elastic, before.elastic);
+        EXPECT_EQ(odd.stiffness, before.stiffness);
+        EXPECT_EQ(odd.damping, before.damping);
+        EXPECT_EQ(odd.energy, before.energy);
+      }
+      const double s1 = s - 0.37 * eps;
+      const LinkStep even = link_step_force(m, s, s1, h, 0);
+      EXPECT_NEAR(even.elastic, 0.5 * k * (s + s1), 1e-12 * k * std::max(std::abs(s), eps));
+      EXPECT_NEAR(even.tension, even.elastic + c * (s1 - s) / h, 1e-12 * k * eps);
+      EXPECT_EQ(even.slope, 0.5 * k + c / h);
+      const LinkStep odd = link_step_force(m, s, s1, h, 1),
+                     before = link_step_force(plain, s, s1, h, 1);
+      EXPECT_EQ(odd.tension, before.tension) << s;
+      EXPECT_EQ(odd.elastic, before.elastic);
+      EXPECT_EQ(odd.slope, before.slope);
+    }
+  }
+  EXPECT_GT(pushes, 1000);  // the even link in compression (tension-only: none)
+}
+
+// A flagged parity takes no jam (a bilateral link pushes already), named with its index; the
+// flag is harmless with links_carry_compression (every link bilateral already).
+TEST(DynamicsTensionOnlyLinks, FlatLinksTakeNoJam) {
+  Model m = flat_links(3);
+  auto fields = [&] {
+    std::vector<std::string> out;
+    for (const Issue& i : validate(m)) out.push_back(i.field);
+    return out;
+  };
+  using V = std::vector<std::string>;
+  m.link_jam_length = {0.070, 0.018};  // valid for tension-only even links
+  ASSERT_EQ(fields(), V{"link_jam_length[0]"});
+  EXPECT_NE(validate(m)[0].expected.find("link_bilateral[0]"), std::string::npos);
+  m.link_bilateral = {true, true};
+  EXPECT_EQ(fields(), (V{"link_jam_length[0]", "link_jam_length[1]"}));
+  m.link_jam_length = {0.0, 0.0};
+  EXPECT_EQ(fields(), V{});
+  m.links_carry_compression = true;
+  EXPECT_EQ(fields(), V{});
+  for (const double s : {-3e-6, 0.0, 5e-6}) {
+    Model bilateral = m;
+    bilateral.link_bilateral = {false, false};
+    EXPECT_EQ(link_force(m, s, 0.1, 1).tension, link_force(bilateral, s, 0.1, 1).tension);
+  }
+}
+
+// On a 4-node chain at rest, the flagged even links 0 and 2 pushing 5 µm short and pulling
+// 3 µm long, the odd link 1 in its jam's ramp: the tensions, each node's force from them against
+// −∂E/∂q of energy(), and against the integrator's residual at rest (−h × the force).
+TEST(DynamicsTensionOnlyLinks, FlatLinksForceIsMinusTheEnergysGradient) {
+  const Model m = flat_links(4);
+  const double eps = m.link_smoothing;
+  const double len[3] = {0.082 - 5e-6, 0.018 - 0.2 * eps, 0.082 + 3e-6};
+  const double ang[3] = {0.1, -0.3, 0.7};
+  const State s = three_link_chain(len, ang);
+  std::vector<double> t(3);
+  link_tensions(m, s, t);
+  EXPECT_NEAR(t[0], -kStiffness * 5e-6, 1e-6);  // −500 N: the flat link pushes
+  EXPECT_NEAR(t[1], -kStiffness * 0.7 * 0.7 * eps / 2, 1e-6);
+  EXPECT_NEAR(t[2], kStiffness * 3e-6, 1e-6);  // 300 N: k s, no ramp's k ε²/24 offset in E
+  EXPECT_NEAR(
+      energy(m, s).elastic,
+      0.5 * kStiffness * (25e-12 + 9e-12) + link_force(m, 0.018 - 0.2 * eps - 0.046, 0.0, 1).energy,
+      1e-12);
+  const double h = 1e-5;
+  Integrator integ(m, {.step = h, .theta = 0.5});
+  std::vector<double> u(8), r;
+  for (std::size_t i = 0; i < 4; ++i) u[2 * i] = s.x[i], u[2 * i + 1] = s.y[i];
+  integ.newton_system(m, s, u, r, nullptr);
+  const std::vector<NodeForce> at_rest =
+      expect_node_forces_are_minus_the_energys_gradient(m, s, t, ang);
+  for (std::size_t i = 0; i < 4; ++i)
+    for (int axis = 0; axis < 2; ++axis)
+      EXPECT_NEAR(-r[2 * i + axis] / h, at_rest[i][axis], 1e-9 * kStiffness * eps)
+          << i << " " << axis;
+}
+
+// The integrator's Newton matrix with flat links against central differences of its residual:
+// the even links 0, 2, 4 pushing (3 µm short, 20 µm short and shortening at 0.5 m/s, and crossing
+// s = 0), the odd links slack and taut; at the θ point (θ = 0.6) and with
+// Model::links_discrete_gradient (θ = ½).
+TEST(DynamicsTensionOnlyLinks, NewtonMatrixWithFlatLinksMatchesTheResidualsDifferences) {
+  const double eps = 1e-6, h = 1e-5;
+  for (const bool gradient : {false, true}) {
+    Model m = flat_links(6);
+    m.alternation = 0.0;  // (five_link_step's links are kPitch + s long)
+    m.link_jam_length = {0.0, 0.0};
+    m.links_discrete_gradient = gradient;
+    ASSERT_TRUE(validate(m).empty());
+    const double s0[5] = {-3e-6, -2e-6, -20e-6, 6e-6, 0.3 * eps};
+    const double s1[5] = {-3.5e-6, -2.5e-6, -25e-6, 6.5e-6, -0.4 * eps};
+    const double a0[5] = {0.2, -0.4, 0.5, 1.1, -0.9}, turn = 0.01;
+    State s(6, 0);
+    std::vector<double> u(12);
+    five_link_step(s0, s1, a0, turn, s, u);
+    for (std::size_t j = 0; j < 5; ++j) {
+      const LinkStep law = link_step_force(m, s0[j], s1[j], h, j);
+      if (j == 0 || j == 2) {
+        EXPECT_LT(law.tension, -100.0) << j;  // the flat links push
+      } else if (j == 1) {
+        EXPECT_EQ(law.tension, 0.0);  // slack
+      }
+    }
+    Integrator integ(m, {.step = h, .theta = gradient ? 0.5 : 0.6});
+    std::vector<double> r, jac;
+    integ.newton_system(m, s, u, r, &jac);
+    const testing::ColumnsAgainstDifferences found = testing::expect_columns_match_differences(
+        integ, m, s, u, jac, {}, [](std::size_t) { return 1e-11; }, 1e-6);
+    std::printf("flat links' Newton matrix (%s): largest misfit %.2e of the column\n",
+                gradient ? "discrete gradient" : "theta point", found.worst);
+  }
+}
+
+// One step at θ = ½ through the integrator's residual (as
+// OneStepsWorkIsMinusTheEnergysChangeWithTheDiscreteGradient) of a flagged even link, undamped,
+// with Model::links_discrete_gradient: its work is −(E(s₁) − E(s₀)) to rounding with E = ½ k s²
+// (the bilateral link's, no ramp) on steps in compression, across s = 0 either way, through the
+// tension-only law's ramp and in tension.
+TEST(DynamicsTensionOnlyLinks, OneStepsWorkOfAFlatLinkIsMinusTheEnergysChange) {
+  const double eps = 1e-6, h = 1e-5, k = kStiffness;
+  struct Case {
+    const char* name;
+    double s0, s1;  // [m]
+  };
+  const Case cases[] = {{"compressed", -3e-6, -5e-6},
+                        {"opening", -5e-6, 4e-6},
+                        {"closing", 2e-6, -6e-6},
+                        {"in the ramp", -0.3 * eps, 0.2 * eps},
+                        {"stretched", 20e-6, 22e-6}};
+  for (const Case& c : cases) {
+    Model m = uniform_chain(2, false, kPitch, 1e-12, kStiffness, 0.0, false);
+    m.links_carry_compression = false;
+    m.link_bilateral = {true, false};
+    m.links_discrete_gradient = true;
+    const LinkStepWork step = one_link_step(m, kPitch + c.s0, kPitch + c.s1, h);
+    const double e0 = link_force(m, step.length0 - kPitch, 0.0).energy;
+    const double e1 = link_force(m, step.length1 - kPitch, 0.0).energy;
+    const double de = e1 - e0;
+    EXPECT_NEAR(de, 0.5 * k * (c.s1 * c.s1 - c.s0 * c.s0), 1e-6 * std::abs(de)) << c.name;
+    // the sum's rounding, and the lengths' (each a few ulp of the pitch, times the force)
+    const double rounding =
+        1e-14 * step.terms + 1e-15 * kPitch * k * std::max(std::abs(c.s0), std::abs(c.s1));
+    std::printf("flat link %-12s dE %+.6e J: work + dE %+.2e J (rounding %.1e J)\n", c.name, de,
+                step.work + de, rounding);
+    EXPECT_LT(std::abs(step.work + de), rounding) << c.name;
+  }
+}
+
 }  // namespace
 }  // namespace catena::dynamics

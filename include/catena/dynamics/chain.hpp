@@ -542,10 +542,18 @@ struct Model {
   /// unchecked). Below l_jam the link pushes with k (l − l_jam), C¹-smoothed over the same ε as
   /// the tension side (link_force). A round-link chain on a pocket wheel (a = d): the odd link
   /// jams at d (its neighbours' wires meet inside it); the even link, one rigid link's own tips,
-  /// would be rigid, but not by a jam here (at p + a − ε the two ramps meet with no stiffness at
-  /// zero tension: docs/models/dynamics.md, "Not built yet"). Each 0 or in (0, jam_length_bound]
-  /// (validated: the jam's ramp below the tension's); 0 with links_carry_compression (validated).
+  /// is rigid, but not by a jam here (at p + a − ε the two ramps meet with no stiffness at zero
+  /// tension): link_bilateral. Each 0 or in (0, jam_length_bound] (validated: the jam's ramp below
+  /// the tension's); 0 with links_carry_compression or with its parity's link_bilateral
+  /// (validated).
   std::array<double, 2> link_jam_length{0.0, 0.0};
+  /// With links_carry_compression false: [0] makes the even links (rest length p + a), [1] the
+  /// odd (p − a), the bilateral spring–damper (link_force's T = k s + c ṡ, E = ½ k s²: k through
+  /// s = 0, no ε ramps, no jam) while the other parity stays tension-only (docs/models/dynamics.md,
+  /// "Tension-only links: the jam", "The flat links"). A round-link chain on a pocket wheel: the
+  /// even (t + d) link is one flat link between its own two tips, rigid. Harmless with
+  /// links_carry_compression (every link bilateral already).
+  std::array<bool, 2> link_bilateral{false, false};
 
   std::size_t nodes() const { return mass.size(); }
   /// Links: N in a closed loop, N − 1 in an open chain.
@@ -557,6 +565,9 @@ struct Model {
   }
   /// [m] the jam length of link j (link_jam_length by its parity; 0 = none)
   double jam_length(std::size_t j) const { return link_jam_length[j % 2]; }
+  /// link j is the bilateral spring–damper (links_carry_compression, or its parity's
+  /// link_bilateral)
+  bool bilateral(std::size_t j) const { return links_carry_compression || link_bilateral[j % 2]; }
   /// [m] the largest jam length of link j: its rest length less ε (the jam's ramp below the
   /// tension's, validated)
   double jam_length_bound(std::size_t j) const { return rest_length(j) - link_smoothing; }
@@ -583,7 +594,7 @@ struct LinkForce {
 /// line, so that link_force stays small enough to be inlined where the links run.
 LinkForce link_jam_force(const Model& model, double s, double rate, std::size_t link);
 
-/// The bilateral link (Model::links_carry_compression): T = k s + c ṡ, E = ½ k s². The
+/// The bilateral link (Model::bilateral(link)): T = k s + c ṡ, E = ½ k s². The
 /// tension-only link: with u = s + ε/2 (ε = Model::link_smoothing), T_e = 0 for u ≤ 0,
 /// k u²/2ε for 0 < u < ε, k s for u ≥ ε — C¹, ≥ 0, and equal to the bilateral spring in tension
 /// beyond s = ε/2 — with E = k u³/6ε, then ½ k s² + k ε²/24; the damper c r ṡ with r = u/ε
@@ -593,18 +604,16 @@ LinkForce link_jam_force(const Model& model, double s, double rate, std::size_t 
 /// mirror image below s_j: T_e = −k v²/2ε for 0 < v < ε, −k (s_j − s) for v ≥ ε, E = k v³/6ε, then
 /// ½ k (s_j − s)² + k ε²/24, the damper c (v/ε) ṡ ramped in over the same ε, and T = 0 wherever
 /// T_e + c r ṡ ≥ 0 (a jammed link lengthening faster than it pushes comes free: it never pulls).
-/// `link` picks the jam length (its parity).
-inline LinkForce link_force(const Model& model, double s, double rate, std::size_t link = 0) {
+/// `link` picks the jam length (its parity) and whether it is bilateral (its parity's
+/// Model::link_bilateral).
+inline LinkForce link_force(const Model& model, double s, double rate, std::size_t link = 0);
+
+/// link_force of a link that is not bilateral (!Model::bilateral(link)): the tension-only law
+/// alone, small enough to be inlined where the links run (the integrator's tension-only branch).
+inline LinkForce tension_only_link_force(const Model& model, double s, double rate,
+                                         std::size_t link) {
   const double k = model.axial_stiffness, c = model.axial_damping;
   LinkForce out;
-  if (model.links_carry_compression) {
-    out.elastic = k * s;
-    out.tension = k * s + c * rate;
-    out.stiffness = k;
-    out.damping = c;
-    out.energy = 0.5 * k * s * s;
-    return out;
-  }
   const double eps = model.link_smoothing, u = s + 0.5 * eps;
   if (!(u > 0.0)) {
     // slack (the joints closer than the rest length less ε/2), unless the link jams there
@@ -620,6 +629,18 @@ inline LinkForce link_force(const Model& model, double s, double rate, std::size
   out.tension = tension;
   out.stiffness = (ramp ? k * u / eps : k) + (ramp ? c * rate / eps : 0.0);
   out.damping = c * r;
+  return out;
+}
+
+inline LinkForce link_force(const Model& model, double s, double rate, std::size_t link) {
+  if (!model.bilateral(link)) return tension_only_link_force(model, s, rate, link);
+  const double k = model.axial_stiffness, c = model.axial_damping;
+  LinkForce out;
+  out.elastic = k * s;
+  out.tension = k * s + c * rate;
+  out.stiffness = k;
+  out.damping = c;
+  out.energy = 0.5 * k * s * s;
   return out;
 }
 
@@ -640,7 +661,8 @@ struct LinkStep {
 /// the jam too, the jam's damper over the step is the mirror image's (its C of v = s_j − s + ε/2),
 /// the threshold's |s| is measured from s_j when the step's mean is nearer the jam, and T may
 /// push only on a step that touches the jam's ramp, pull only on one that touches the tension's
-/// (else T = 0).
+/// (else T = 0). A bilateral link (Model::bilateral(link)): T_dg = k (s₀ + s₁)/2, the quotient of
+/// ½ k s² exactly, and T = T_dg + c (s₁ − s₀)/h, never clamped.
 LinkStep link_step_force(const Model& model, double s0, double s1, double h, std::size_t link = 0);
 /// What link_step_force reads of the step's start stretch s₀ alone: the energy E(s₀), the
 /// damper's integral C(u₀) (u₀ = s₀ + ε/2) and, with a jam, the jam's C(v₀) (v₀ = s_j − s₀ + ε/2),

@@ -2765,9 +2765,10 @@ Result run(const analysis::Inputs& in) {
     // gradient")
     model.links_discrete_gradient = d.discrete_gradient;
     // the jam ("Tension-only links: the jam"): a t − d link pushes once its neighbours' wires meet
-    // inside it, its joints d apart. A t + d link is one link's own two tips, rigid (its jam is its
-    // rest length); that is not set: it changes the example's output (docs, "Not built yet")
+    // inside it, its joints d apart. A t + d link is one link's own two tips, rigid: bilateral
+    // ("The flat links")
     model.link_jam_length = {0.0, d.wire};
+    model.link_bilateral = {true, false};
   }
   const double centre = (d.pocket ? 2 * m : m) * d.pitch;
   std::vector<Sprocket> wheels;

@@ -206,8 +206,9 @@ void Integrator::refresh_guide_hint(const Model& model) {
 void Integrator::prepare_links(const Model& model) {
   if (model.links_carry_compression || !model.links_discrete_gradient) return;
   link_start_.resize(model.links());
-  for (std::size_t j = 0; j < model.links(); ++j)
-    link_start_[j] = link_step_start(model, l0_[j] - model.rest_length(j), j);
+  for (std::size_t j = 0; j < model.links(); ++j)  // (a bilateral link reads no start)
+    if (!model.bilateral(j))
+      link_start_[j] = link_step_start(model, l0_[j] - model.rest_length(j), j);
 }
 
 void Integrator::prepare_seats(const Model& model) {
@@ -344,7 +345,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     const double p = model.rest_length(j);  // p ± a (round-link chain), else p
     // φ and ∂(φ l_θ)/∂l₁ = θ ∂T/∂s + (∂T/∂ṡ)/h of the link's law
     double phi = 0.0, dtension = 0.0;
-    if (!model.links_carry_compression) {
+    if (!model.bilateral(j)) {
       // A tension-only link (docs/models/dynamics.md, "Tension-only links"): link_force's T at the
       // θ point's stretch and the step's rate, or with Model::links_discrete_gradient T over the
       // step (link_step_force: at θ = ½ its spring's work is −ΔE, since d_θ·(d₁ − d₀)/l_θ =
@@ -357,7 +358,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
         elastic = law.elastic;
         dtension = law.slope;  // ∂T/∂l₁ = ∂T/∂s₁; 0 on a slack link
       } else {
-        const LinkForce law = link_force(model, lt - p, (l1 - l0) / h, j);
+        const LinkForce law = tension_only_link_force(model, lt - p, (l1 - l0) / h, j);
         tension = law.tension;
         elastic = law.elastic;
         dtension = th * law.stiffness + law.damping / h;  // 0 on a slack link
@@ -366,7 +367,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       if (report_only) return;  // (no hinges: validated)
       phi = tension / lt;
     } else {
-      // the damper's share of φ d_θ does the work −c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ on the two
+      // A bilateral link (every link with Model::links_carry_compression, or its parity's with
+      // Model::link_bilateral: at θ = ½ its force is the discrete gradient link_step_force takes).
+      // The damper's share of φ d_θ does the work −c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ on the two
       // nodes (d_θ·(d₁ − d₀) = l̄ (l₁ − l₀) + (θ − ½)|d₁ − d₀|²: −c (l₁ − l₀)²/h at θ = ½)
       if (c > 0.0) {
         damper_work -= c * (l1 - l0) / h * (mx * (d1x - d0x) + my * (d1y - d0y)) / lt;
