@@ -1298,7 +1298,14 @@ SlackSolve slack_solve(const BeltPath& path, const std::vector<std::size_t>& pie
     at_lo = miss(lo);
     if (!std::isfinite(at_lo)) return {INFINITY, 0.0};
     at_hi = miss(hi);
-    if (at_hi > 0.0) return {INFINITY, 0.0};  // overshoots even at the longest catenary
+    if (at_hi > 0.0) {
+      // the walk from the path's start overshoots even at the longest catenary, but node 0's
+      // phase may still close it there (at a fold of the path the miss, over the phase, falls
+      // by up to the span the fold skips)
+      const double start = closing_phase(sag_spans(path, pieces, hi), nodes, pitch, 1e-11 * chain);
+      if (std::isfinite(start)) return {hi, start};
+      return {INFINITY, 0.0};
+    }
   }
   if (!(at_lo >= 0.0 && at_hi <= 0.0)) return {};
   for (int it = 0; it < 200; ++it) {
