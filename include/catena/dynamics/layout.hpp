@@ -67,6 +67,15 @@ struct BeltPath {
   std::vector<Fault> faults;
 };
 
+/// Whether the segments p0p1 and q0q1 cross (a proper crossing or a touch). Two segments on one
+/// line (every end within 1e-12 of the longer one's length of the other's line, where the side
+/// tests' signs are rounding) cross only if they overlap along it.
+bool segments_cross(double px0, double py0, double px1, double py1, double qx0, double qy0,
+                    double qx1, double qy1);
+
+/// The distance from (x, y) to the segment from (x0, y0) to (x1, y1).
+double segment_distance(double x, double y, double x0, double y0, double x1, double y1);
+
 /// The belt path round the circles (at least two; no circle may contain another), starting at the
 /// point where it arrives on circle `first`. Without a circle on the back: the hull of the circles
 /// (gift wrapping). With one: the serpentine path through the circles in their given order,

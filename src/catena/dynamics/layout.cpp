@@ -53,9 +53,8 @@ double signed_tangent_normal(const Circle& a, const Circle& b) {
   return std::atan2(dy, dx) - std::acos(c);
 }
 
-// Whether the segments p0p1 and q0q1 cross (a proper crossing or a touch). Two segments on one
-// line (every end within 1e-12 of the longer one's length of the other's line, where the side
-// tests' signs are rounding) cross only if they overlap along it.
+}  // namespace
+
 bool segments_cross(double px0, double py0, double px1, double py1, double qx0, double qy0,
                     double qx1, double qy1) {
   auto side = [](double ax, double ay, double bx, double by, double cx, double cy) {
@@ -76,12 +75,13 @@ bool segments_cross(double px0, double py0, double px1, double py1, double qx0, 
   return d1 * d2 <= 0.0 && d3 * d4 <= 0.0;
 }
 
-// The distance from (x, y) to the segment from (x0, y0) to (x1, y1).
 double segment_distance(double x, double y, double x0, double y0, double x1, double y1) {
   const double ux = x1 - x0, uy = y1 - y0, l2 = ux * ux + uy * uy;
   const double t = l2 > 0.0 ? std::clamp(((x - x0) * ux + (y - y0) * uy) / l2, 0.0, 1.0) : 0.0;
   return std::hypot(x - x0 - t * ux, y - y0 - t * uy);
 }
+
+namespace {
 
 std::string wheel_name(std::size_t i) { return "sprocket[" + std::to_string(i) + "]"; }
 
