@@ -422,6 +422,12 @@ std::vector<double> walk(const BeltPath& path, double h, int nodes, double start
   return s;
 }
 
+// How far past node 0 once round the loop the walk's node N lands (`walk` at chord `h` from node 0
+// at `start`): 0 where the N links close the loop, positive where they overshoot.
+double walk_miss(const BeltPath& path, double h, int nodes, double start) {
+  return walk(path, h, nodes, start).back() - start - path.length;
+}
+
 }  // namespace
 
 double path_links(const BeltPath& path, double spacing) {
@@ -445,7 +451,7 @@ LoopPlacement place_loop_from(const BeltPath& path, const std::vector<Circle>& c
   LoopPlacement out;
   if (path.pieces.empty() || nodes < 3 || !(pitch > 0.0)) return out;
   const double length = path.length;
-  auto miss = [&](double h) { return walk(path, h, nodes, start).back() - start - length; };
+  auto miss = [&](double h) { return walk_miss(path, h, nodes, start); };
   // secant on the chord: the walk's end moves with it almost in proportion
   double h0 = pitch, g0 = miss(h0);
   double h1 = h0 * length / (g0 + length), g1 = miss(h1);
@@ -1216,9 +1222,7 @@ struct SlackSolve {
 // node passes a fold of the path (below, `slack_solve`), where it jumps back up by the span the
 // fold skips; between those jumps it falls across every value of that span.
 double closing_phase(const BeltPath& sagging, int nodes, double pitch, double tolerance) {
-  auto miss = [&](double start) {
-    return walk(sagging, pitch, nodes, start).back() - start - sagging.length;
-  };
+  auto miss = [&](double start) { return walk_miss(sagging, pitch, nodes, start); };
   const double first = next_node(sagging, 0.0, pitch);
   if (!(first > 0.0)) return NAN;
   const int steps = 64;
@@ -1262,7 +1266,7 @@ SlackSolve slack_solve(const BeltPath& path, const std::vector<std::size_t>& pie
   auto miss = [&](double extra) -> double {
     const BeltPath p = sag_spans(path, pieces, extra);
     if (p.pieces.empty()) return NAN;
-    return walk(p, pitch, nodes).back() - p.length;
+    return walk_miss(p, pitch, nodes, 0.0);
   };
   // the most extra the spans take, every share a half circle (sag_span refuses beyond): a secant
   // step past it is pulled back half-way from the last iterate, so that a sag near its half
