@@ -691,10 +691,12 @@ TEST(DynamicsLayoutCli, SlackBeyondTheHalfCircleStartsAsTheCatenary) {
 
 // A sloped catenary whose walk from the path's start closes for no e, through the command: the
 // driven wheel at (200, −400) mm from the driver, z 17 both. 80 links start (before: refused,
-// "need an e that was not found"), every link one pitch (`laid_pitch` the pitch, `slack` N p less
-// the path's length); 300 links, beyond the longest catenary, are refused naming "at most 297
-// links start so", found by the scan down from the limit (before, every count from 77 up closed
-// for no e and the search bisected to 76).
+// "need an e that was not found"), every link one pitch (`laid_pitch` the pitch). A chord spans at
+// least its pitch of the path, so N p ≤ L + e ≤ L + 10 c (the longest catenary, 10 chords of
+// extra; the span c is the centre distance, the wheels alike): N ≤ 298 here. That bound starts
+// (at the longest catenary, at node 0's phase: the walk from the path's start overshoots there),
+// and 299 and 300 links are refused naming "at most 298 links start so" (before: the bound was
+// refused and 297 named).
 TEST(DynamicsLayoutCli, AKinkedSlopedCatenaryStarts) {
   auto with_links = [](int links) {
     return write("kinked" + std::to_string(links) + ".toml",
@@ -713,12 +715,24 @@ TEST(DynamicsLayoutCli, AKinkedSlopedCatenaryStarts) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["links"], 80);
   EXPECT_NEAR(j["laid_pitch"].get<double>(), kPitch, 1e-12 * kPitch);
-  EXPECT_NEAR(j["slack"].get<double>(), 80 * kPitch - j["path_length"].get<double>(), 1e-12);
   EXPECT_TRUE(j["diagnostics"].empty()) << j["diagnostics"].dump();
-  const CliRun longer = run("dynamics " + with_links(300) + " --format json");
-  EXPECT_EQ(longer.status, 2);
-  EXPECT_NE(longer.err.find("dynamics.links"), std::string::npos) << longer.err;
-  EXPECT_NE(longer.err.find("at most 297 links start so"), std::string::npos) << longer.err;
+  const double span = std::hypot(0.2, 0.4);
+  const int bound =
+      static_cast<int>(std::floor((j["path_length"].get<double>() + 10.0 * span) / kPitch));
+  EXPECT_EQ(bound, 298);
+  const CliRun most = run("dynamics " + with_links(bound) + " --format json");
+  ASSERT_EQ(most.status, 0) << most.err;
+  const auto m = nlohmann::json::parse(most.out);
+  EXPECT_EQ(m["links"], bound);
+  EXPECT_NEAR(m["laid_pitch"].get<double>(), kPitch, 1e-12 * kPitch);
+  EXPECT_TRUE(m["diagnostics"].empty()) << m["diagnostics"].dump();
+  const std::string named = "at most " + std::to_string(bound) + " links start so";
+  for (const int links : {bound + 1, bound + 2}) {
+    const CliRun longer = run("dynamics " + with_links(links) + " --format json");
+    EXPECT_EQ(longer.status, 2) << links;
+    EXPECT_NE(longer.err.find("dynamics.links"), std::string::npos) << longer.err;
+    EXPECT_NE(longer.err.find(named), std::string::npos) << longer.err;
+  }
 }
 
 // A start with slack through the command: examples/dynamics_three_wheels.toml (55 links fit its

@@ -67,6 +67,15 @@ struct BeltPath {
   std::vector<Fault> faults;
 };
 
+/// Whether the segments p0p1 and q0q1 cross (a proper crossing or a touch). Two segments on one
+/// line (every end within 1e-12 of the longer one's length of the other's line, where the side
+/// tests' signs are rounding) cross only if they overlap along it.
+bool segments_cross(double px0, double py0, double px1, double py1, double qx0, double qy0,
+                    double qx1, double qy1);
+
+/// The distance from (x, y) to the segment from (x0, y0) to (x1, y1).
+double segment_distance(double x, double y, double x0, double y0, double x1, double y1);
+
 /// The belt path round the circles (at least two; no circle may contain another), starting at the
 /// point where it arrives on circle `first`. Without a circle on the back: the hull of the circles
 /// (gift wrapping). With one: the serpentine path through the circles in their given order,
@@ -223,9 +232,9 @@ PathPoint sag_point(const PathPiece& q, double along);
 /// (`slack_extra`). `laid` gets that path. Node 0 is at the path's start but where the walk from
 /// there closes for no e (a node passing a fold of the path, a sloped catenary's kink at its far
 /// wheel): then at the phase over the first link that closes it at the e where the walk's end
-/// jumps over the closure. Empty placement if N·pitch does not exceed the path's length, the sag
-/// cannot be solved, or any link's chord (the closing one too) is off `pitch` by more than 1e-9
-/// of it.
+/// jumps over the closure, or at the longest catenary where the walk still overshoots. Empty
+/// placement if N·pitch does not exceed the path's length, the sag cannot be solved, or any link's
+/// chord (the closing one too) is off `pitch` by more than 1e-9 of it.
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid);
@@ -243,11 +252,14 @@ BeltPath sag_spans(const BeltPath& path, const std::vector<std::size_t>& pieces,
 /// secant on the walk's miss, and where the secant does not converge (the miss, continuous and
 /// falling in e, bends sharply where a node passes a sag's kink at a wheel, and the secant can
 /// cycle) by bisection between N·pitch less the path's length (where the miss is not negative: a
-/// chord spans at least its own length of the path) and every span's half circle. INFINITY when
-/// the walk still overshoots at the half circle (the count needs more), NAN when no e is found
-/// (or N·pitch does not exceed the path's length). Where the bisection closes on a jump of the
-/// miss over 0 (a node passing a fold of the path), that e when node 0's phase over the first
-/// link closes the walk there (`place_slack_loop`).
+/// chord spans at least its own length of the path) and every span's half circle (beyond it, for
+/// spans that hang, the longest catenary, kCatenaryMostExtra chords). Where the bisection closes
+/// on a jump of the miss over 0 (a node passing a fold of the path), that e when node 0's phase
+/// over the first link closes the walk there (`place_slack_loop`); where the walk from the
+/// path's start still overshoots at the longest catenary, that catenary's e when a phase closes
+/// it there. INFINITY when the walk overshoots at the most e the spans take, at the longest
+/// catenary at every phase of node 0 the phase search tries (the count needs more), NAN when no e
+/// is found (or N·pitch does not exceed the path's length).
 double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
                    double pitch);
 

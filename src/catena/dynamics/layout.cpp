@@ -53,9 +53,8 @@ double signed_tangent_normal(const Circle& a, const Circle& b) {
   return std::atan2(dy, dx) - std::acos(c);
 }
 
-// Whether the segments p0p1 and q0q1 cross (a proper crossing or a touch). Two segments on one
-// line (every end within 1e-12 of the longer one's length of the other's line, where the side
-// tests' signs are rounding) cross only if they overlap along it.
+}  // namespace
+
 bool segments_cross(double px0, double py0, double px1, double py1, double qx0, double qy0,
                     double qx1, double qy1) {
   auto side = [](double ax, double ay, double bx, double by, double cx, double cy) {
@@ -76,12 +75,13 @@ bool segments_cross(double px0, double py0, double px1, double py1, double qx0, 
   return d1 * d2 <= 0.0 && d3 * d4 <= 0.0;
 }
 
-// The distance from (x, y) to the segment from (x0, y0) to (x1, y1).
 double segment_distance(double x, double y, double x0, double y0, double x1, double y1) {
   const double ux = x1 - x0, uy = y1 - y0, l2 = ux * ux + uy * uy;
   const double t = l2 > 0.0 ? std::clamp(((x - x0) * ux + (y - y0) * uy) / l2, 0.0, 1.0) : 0.0;
   return std::hypot(x - x0 - t * ux, y - y0 - t * uy);
 }
+
+namespace {
 
 std::string wheel_name(std::size_t i) { return "sprocket[" + std::to_string(i) + "]"; }
 
@@ -422,6 +422,12 @@ std::vector<double> walk(const BeltPath& path, double h, int nodes, double start
   return s;
 }
 
+// How far past node 0 once round the loop the walk's node N lands (`walk` at chord `h` from node 0
+// at `start`): 0 where the N links close the loop, positive where they overshoot.
+double walk_miss(const BeltPath& path, double h, int nodes, double start) {
+  return walk(path, h, nodes, start).back() - start - path.length;
+}
+
 }  // namespace
 
 double path_links(const BeltPath& path, double spacing) {
@@ -445,7 +451,7 @@ LoopPlacement place_loop_from(const BeltPath& path, const std::vector<Circle>& c
   LoopPlacement out;
   if (path.pieces.empty() || nodes < 3 || !(pitch > 0.0)) return out;
   const double length = path.length;
-  auto miss = [&](double h) { return walk(path, h, nodes, start).back() - start - length; };
+  auto miss = [&](double h) { return walk_miss(path, h, nodes, start); };
   // secant on the chord: the walk's end moves with it almost in proportion
   double h0 = pitch, g0 = miss(h0);
   double h1 = h0 * length / (g0 + length), g1 = miss(h1);
@@ -1216,9 +1222,7 @@ struct SlackSolve {
 // node passes a fold of the path (below, `slack_solve`), where it jumps back up by the span the
 // fold skips; between those jumps it falls across every value of that span.
 double closing_phase(const BeltPath& sagging, int nodes, double pitch, double tolerance) {
-  auto miss = [&](double start) {
-    return walk(sagging, pitch, nodes, start).back() - start - sagging.length;
-  };
+  auto miss = [&](double start) { return walk_miss(sagging, pitch, nodes, start); };
   const double first = next_node(sagging, 0.0, pitch);
   if (!(first > 0.0)) return NAN;
   const int steps = 64;
@@ -1262,7 +1266,7 @@ SlackSolve slack_solve(const BeltPath& path, const std::vector<std::size_t>& pie
   auto miss = [&](double extra) -> double {
     const BeltPath p = sag_spans(path, pieces, extra);
     if (p.pieces.empty()) return NAN;
-    return walk(p, pitch, nodes).back() - p.length;
+    return walk_miss(p, pitch, nodes, 0.0);
   };
   // the most extra the spans take, every share a half circle (sag_span refuses beyond): a secant
   // step past it is pulled back half-way from the last iterate, so that a sag near its half
@@ -1298,7 +1302,14 @@ SlackSolve slack_solve(const BeltPath& path, const std::vector<std::size_t>& pie
     at_lo = miss(lo);
     if (!std::isfinite(at_lo)) return {INFINITY, 0.0};
     at_hi = miss(hi);
-    if (at_hi > 0.0) return {INFINITY, 0.0};  // overshoots even at the longest catenary
+    if (at_hi > 0.0) {
+      // the walk from the path's start overshoots even at the longest catenary, but node 0's
+      // phase may still close it there (at a fold of the path the miss, over the phase, falls
+      // by up to the span the fold skips)
+      const double start = closing_phase(sag_spans(path, pieces, hi), nodes, pitch, 1e-11 * chain);
+      if (std::isfinite(start)) return {hi, start};
+      return {INFINITY, 0.0};
+    }
   }
   if (!(at_lo >= 0.0 && at_hi <= 0.0)) return {};
   for (int it = 0; it < 200; ++it) {
