@@ -639,11 +639,14 @@ TEST(DynamicsBoundaryCli, AnErrorDiagnosticIsNamedOnStderrWithTheOutputWritten) 
 // hold the start's rollers in its contact no deeper than its surface. The inside ring of 43.8 mm
 // round sprocket[1] from -170 to 170 deg crosses the spans leaving that wheel (they pass its
 // surface at ±122.84 deg): refused on dynamics.guide[0] naming the span, how far past the surface
-// and the part of the ring clear of them, which typed back is accepted and runs; the same ring from
+// and the part of the ring clear of them, which typed back is accepted (it clears the check only:
+// at its ends the spans lie a roller radius into the ring's surface, on the edge of the rule, which
+// need not run), and the part of it clear of its contact, which typed back runs; the same ring from
 // -60 to 60 deg and a flat convex arc carrying the upper run are accepted and run. At the rule's
 // edge: a straight rail and the flat arc with their surface 0.02 mm below the upper run's roller
 // centres (6.015 mm into the rollers) are accepted, 0.02 mm above it refused, naming the move that
-// clears, which typed back is accepted.
+// clears, which typed back is accepted, and the move to touching the rollers (6.055 mm), which
+// typed back runs.
 TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_rail_path";
@@ -667,7 +670,8 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
   for (const char* text :
        {"dynamics.guide[0] (line 19) = the span sprocket[", " mm past its surface at ",
         "at most the roller radius (6.035 mm) into it",
-        "start_angle >= ", " deg and end_angle <= "})
+        "start_angle >= ", " deg and end_angle <= ", " deg clears this check only",
+        "; clear of its contact (its surface at most touching the rollers): start_angle >= "})
     EXPECT_NE(cut.err.find(text), std::string::npos) << text << "\n" << cut.err;
   // the clear part named lies within ±122.84 deg, where the spans pass the ring's surface
   const double from = named_after(cut.err, "start_angle >= ");
@@ -683,7 +687,21 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
       run("dynamics " + write("ring_part.toml", ring(at.str(), bt.str())) + " --format json");
   EXPECT_EQ(typed.status, 0) << typed.err;
   EXPECT_EQ(typed.err.find("dynamics.guide[0]"), std::string::npos) << typed.err;
-  EXPECT_EQ(typed.out.find("dynamics.not_converged"), std::string::npos);  // and runs its 2 ms
+  // the part clear of its contact: inside the one that clears the check, and it runs its 2 ms
+  const std::string touch = "at most touching the rollers): start_angle >= ";
+  const std::size_t at_touch = cut.err.find(touch);
+  ASSERT_NE(at_touch, std::string::npos) << cut.err;
+  const double touch_from = named_after(cut.err.substr(at_touch), touch);
+  const double touch_to = named_after(cut.err.substr(at_touch), "end_angle <= ");
+  EXPECT_GT(touch_from, from) << cut.err;
+  EXPECT_LT(touch_to, to) << cut.err;
+  std::ostringstream ct, dt;
+  ct << touch_from;
+  dt << touch_to;
+  const CliRun clear =
+      run("dynamics " + write("ring_clear.toml", ring(ct.str(), dt.str())) + " --format json");
+  EXPECT_EQ(clear.status, 0) << clear.err;
+  EXPECT_EQ(clear.out.find("dynamics.not_converged"), std::string::npos) << clear.err;
 
   // lying on the chain: accepted and run
   const std::string flat =
@@ -742,6 +760,73 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
       const CliRun ok =
           run("dynamics " + write("edge_moved.toml", fixed) + " --duration \"0.1 ms\"");
       EXPECT_EQ(ok.status, 0) << fixed << ok.err;
+      // the move to touching the rollers (the surface a roller radius above their centres, 0.02
+      // mm higher than now), typed back: accepted and runs its 2 ms
+      const std::string touching = "at most touching the rollers): ";
+      const std::size_t at_lift = r.err.find(touching);
+      ASSERT_NE(at_lift, std::string::npos) << r.err;
+      const std::string tail = r.err.substr(at_lift);
+      const double lifted = named_after(tail, straight ? "the rail moved " : "radius <= ");
+      std::ostringstream up;
+      up.precision(12);
+      if (straight) {
+        EXPECT_GE(lifted, 6.055) << r.err;
+        EXPECT_LT(lifted, 6.057) << r.err;
+        up << run_height + off - lifted << " mm";
+      } else {
+        EXPECT_GE(lifted, 5.0 - 6.057e-3) << r.err;
+        EXPECT_LE(lifted, 5.0 - 6.055e-3) << r.err;
+        up << lifted << " m";
+      }
+      const std::string lifted_text = straight
+                                          ? lead_in_rail(up.str(), "")
+                                          : std::regex_replace(text, std::regex("radius = \"5 m\""),
+                                                               "radius = \"" + up.str() + "\"");
+      const CliRun runs =
+          run("dynamics " + write("edge_touching.toml", lifted_text) + " --format json");
+      EXPECT_EQ(runs.status, 0) << lifted_text << runs.err;
+      EXPECT_EQ(runs.out.find("dynamics.not_converged"), std::string::npos) << lifted_text;
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// The check of the rails against the starting path bounded (docs/models/dynamics.md, "The
+// check's work"): the lead-in loop with 10000 links (its path 190 m) and straight rails from 30 mm
+// to 95 m along the upper run, 0.02 mm above its roller centres (each cut), each visiting some
+// 1.26e5 of the path's samples. 200 rails (2.5e7 samples) are refused on dynamics.guide naming the
+// count and the cap before any is checked; 20 (2.5e6) are checked, each refused on its own line.
+TEST(DynamicsBoundaryCli, TheRailsCheckAgainstTheStartingPathIsBounded) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_rail_work";
+  std::filesystem::create_directories(dir);
+  const std::string head =
+      std::regex_replace(kLeadInLoopHead, std::regex("links = 32"), "links = 10000");
+  const double run_height = 0.5 * 19.05 / std::sin(std::numbers::pi / 12.0);  // [mm]
+  std::ostringstream y;
+  y.precision(10);
+  y << run_height + 0.02 << " mm";
+  const std::string rail = "[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"30 mm\"\ny0 = \"" +
+                           y.str() + "\"\nx1 = \"95000 mm\"\ny1 = \"" + y.str() + "\"\n";
+  for (const int rails : {200, 20}) {
+    const std::filesystem::path file = dir / ("rails" + std::to_string(rails) + ".toml");
+    std::string text = head;
+    for (int k = 0; k < rails; ++k) text += rail;
+    std::ofstream(file) << text;
+    const CliRun r = run("dynamics " + file.string() + " --duration \"0.1 ms\"");
+    EXPECT_EQ(r.status, 2) << r.err.substr(0, 600);
+    const std::string capped = "dynamics.guide = " + std::to_string(rails) + " rails, ";
+    if (rails == 200) {
+      EXPECT_NE(r.err.find(capped), std::string::npos) << r.err.substr(0, 600);
+      EXPECT_NE(r.err.find("samples of the chain's starting path to check against them: "
+                           "expected at most 2e+07"),
+                std::string::npos)
+          << r.err.substr(0, 600);
+      EXPECT_EQ(r.err.find("past its surface"), std::string::npos) << r.err.substr(0, 600);
+    } else {
+      EXPECT_EQ(r.err.find(capped), std::string::npos) << r.err.substr(0, 600);
+      EXPECT_NE(r.err.find("dynamics.guide[19] (line "), std::string::npos) << r.err.substr(0, 600);
+      EXPECT_NE(r.err.find("0.02 mm past its surface"), std::string::npos) << r.err.substr(0, 600);
     }
   }
   std::filesystem::remove_all(dir);

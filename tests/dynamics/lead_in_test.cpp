@@ -823,9 +823,13 @@ TEST(DynamicsLeadIn, ARollerArrivingBelowAnArcRailsEndIsCaughtGradually) {
 // 0.02 mm through guide_contact: a rail is cut where a point in its contact lies past its surface,
 // g > r. rail_cut (an eighth of a roller radius between its samples) must refuse every rail cut
 // over at least 1.5 mm of the path and accept every rail with no point past the surface (those cut
-// over less, a crossing at a rail's very end, are left out and counted); the clear part it names
-// has no point past the surface, and the rail moved by the shift it names none past it by more
-// than 5 µm (the bisection's edge, sampled: the sagitta between samples on the wraps is 2 µm).
+// over less, a crossing at a rail's very end, are left out and counted). The clear part it names
+// is cut over less than 1.5 mm of the path and no shorter than the brute force's longest stretch
+// of the rail over no cut less two samples' reach; the rail moved by the shift it names is cut
+// over less than 1.5 mm and no point past the surface by more than 5 µm (the sagitta between
+// samples on the wraps is 2 µm), and the shift is the least: at least the brute force's own least
+// (the same intervals on its points) less 5 µm, at most one rail_cut sample's spacing more. The
+// move to touching leaves no point of the brute force's deeper than 5 µm in the contact.
 TEST(DynamicsRailCut, MatchesABruteForceOnRandomRails) {
   const double p = 0.01905, r = kRoller, step = 2e-5;
   const double radius = 0.5 * p / std::sin(kPi / 12);
@@ -836,21 +840,49 @@ TEST(DynamicsRailCut, MatchesABruteForceOnRandomRails) {
   struct Brute {
     double deepest = 0.0;  // the largest g in the contact
     int past = 0;          // points past the surface
+    double shift = 0.0;    // [m] the least move leaving no point past the surface
+    double clear = 0.0;    // the longest stretch of the rail over no such point
+  };
+  // the least s ≥ 0 in none of the open intervals (lo, hi)
+  auto least = [](std::vector<std::pair<double, double>> v) {
+    std::sort(v.begin(), v.end());
+    double s = 0.0;
+    for (const auto& [lo, hi] : v)
+      if (lo < s) s = std::max(s, hi);
+    return s;
   };
   auto brute = [&](const Guide& g) {
     Brute b;
+    const GuideFrame frame = guide_frame(g);
+    std::vector<std::pair<double, double>> moves;
+    std::vector<double> along;
     for (const PathPoint& q : points) {
+      // a move s lowers the gap by s: past the surface for s in (g − 2r, g − r)
+      const GuideSpot at = guide_spot(g, frame, q.x, q.y);
+      if (at.between && at.gap > r) moves.emplace_back(at.gap - 2 * r, at.gap - r);
       const GuideContact c = guide_contact(g, q.x, q.y, 0.0, 0.0);
       if (!c.active) continue;
       b.deepest = std::max(b.deepest, c.penetration);
-      if (c.penetration > r) ++b.past;
+      if (c.penetration > r) {
+        ++b.past;
+        along.push_back(at.along);
+      }
     }
+    b.shift = least(moves);
+    std::sort(along.begin(), along.end());
+    const double length =
+        g.kind == Guide::Kind::kStraight ? frame.length : g.end_angle - g.start_angle;
+    for (std::size_t k = 0; k <= along.size(); ++k)
+      b.clear = std::max(b.clear,
+                         (k == along.size() ? length : along[k]) - (k == 0 ? 0.0 : along[k - 1]));
     return b;
   };
+  // one rail_cut sample's spacing, and its reach along the rail
+  const double spacing = path.length / std::max(512.0, std::ceil(path.length / (0.125 * r)));
   std::mt19937_64 rng(2111);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
-  int refused = 0, accepted = 0, left_out = 0, parts = 0, shifts = 0;
-  double most_in_part = 0.0, most_moved = 0.0, deepest_moved = 0.0;  // [m]
+  int refused = 0, accepted = 0, left_out = 0, parts = 0, shifts = 0, touchings = 0;
+  double most_in_part = 0.0, most_moved = 0.0, deepest_moved = 0.0, most_touching = 0.0;  // [m]
   for (int trial = 0; trial < 400; ++trial) {
     Guide g = inclined_rail(0.0);
     const double x = -0.05 + 0.29 * u01(rng), y = -0.05 + 0.1 * u01(rng);
@@ -897,6 +929,9 @@ TEST(DynamicsRailCut, MatchesABruteForceOnRandomRails) {
       EXPECT_LT(in_part.past * step, 1.5e-3) << trial;
       most_in_part = std::max(most_in_part, in_part.past * step);
       EXPECT_TRUE(rail_cut(path, part).piece.empty()) << trial;
+      // the longest: no shorter than the brute force's less two samples' reach each side
+      const double reach = g.kind == Guide::Kind::kStraight ? spacing : spacing / (g.radius - r);
+      EXPECT_GE(cut.clear_to - cut.clear_from, b.clear - 4 * reach) << trial;
     }
     if (std::isfinite(cut.shift)) {
       ++shifts;
@@ -917,14 +952,36 @@ TEST(DynamicsRailCut, MatchesABruteForceOnRandomRails) {
       EXPECT_LT(m.past * step, 1.5e-3) << trial;
       most_moved = std::max(most_moved, m.past * step);
       deepest_moved = std::max(deepest_moved, m.deepest);
+      EXPECT_LT(m.deepest, r + 5e-6) << trial;
       EXPECT_TRUE(rail_cut(path, moved).piece.empty()) << trial;
+      // the least: not below the brute force's own least, at most a sample's spacing above it
+      EXPECT_GE(cut.shift, b.shift - 5e-6) << trial;
+      EXPECT_LE(cut.shift, b.shift + spacing) << trial;
+    }
+    if (std::isfinite(cut.touching)) {
+      ++touchings;
+      Guide moved = g;
+      if (g.kind == Guide::Kind::kStraight) {
+        const double len = std::hypot(g.x1 - g.x0, g.y1 - g.y0);
+        const double nx = -(g.y1 - g.y0) / len, ny = (g.x1 - g.x0) / len;
+        moved.x0 -= cut.touching * nx;
+        moved.y0 -= cut.touching * ny;
+        moved.x1 -= cut.touching * nx;
+        moved.y1 -= cut.touching * ny;
+      } else {
+        moved.radius += g.inside ? cut.touching : -cut.touching;
+      }
+      const Brute m = brute(moved);
+      EXPECT_LT(m.deepest, 5e-6) << trial;
+      most_touching = std::max(most_touching, m.deepest);
     }
   }
   std::printf(
       "rail_cut: %d refused, %d accepted, %d left out; %d clear parts (cut over at most %.3g mm), "
-      "%d moves (cut over at most %.3g mm, at most %.4g mm in)\n",
+      "%d moves (cut over at most %.3g mm, at most %.4g mm in); %d moves to touching (at most "
+      "%.3g mm in)\n",
       refused, accepted, left_out, parts, most_in_part * 1e3, shifts, most_moved * 1e3,
-      deepest_moved * 1e3);
+      deepest_moved * 1e3, touchings, most_touching * 1e3);
   EXPECT_GT(refused, 40);
   EXPECT_GT(accepted, 40);
   EXPECT_LT(left_out, 40);

@@ -388,6 +388,16 @@ GuideContact guide_contact(const Guide& g, const GuideFrame& frame, double x, do
 /// load's place along the roller centres' line (rail_load: φ from start_angle, within π of the
 /// arc's middle, ρ_c = R ± r).
 double guide_position(const Guide& g, const GuideFrame& frame, double x, double y);
+/// Where (x, y) lies against the guide g, with no test of its sides: whether it is between the
+/// rail's ends (guide_contact's test), its place along the rail (from (x0, y0) along a straight
+/// rail [m], the angle from start_angle round an arc's centre in [0, 2π) [rad]) and its gap g
+/// [m] (guide_contact's penetration, which is active between the ends at 0 < g < 2r).
+struct GuideSpot {
+  bool between = false;
+  double along = 0.0;
+  double gap = 0.0;
+};
+GuideSpot guide_spot(const Guide& g, const GuideFrame& frame, double x, double y);
 /// [m] the stick spring's stretch s − a: on a straight rail s − a; on an arc taken within half
 /// the circumference 2π ρ_c of the rollers' line (a closed arc's seam, where s jumps by 2π ρ_c, is
 /// no slip), s − a itself when it is within that.

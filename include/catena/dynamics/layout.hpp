@@ -165,25 +165,37 @@ std::string lead_in_obstacle(const BeltPath& path, const Guide& rail, const Guid
                              double roller);
 
 /// How the chain's starting path `path` lies in the contact of the guide `rail` (docs/models/
-/// dynamics.md, "Guides against the starting path"): sampled along the path (a quarter roller
-/// apart, at least 512 and at most 1e6 samples), a point in the rail's contact (`guide_contact`:
-/// between its ends, 0 < g < 2r) deeper than its surface, g > r (the roller's centre past the
-/// surface: the path crosses the rail or lies in it, not on it), is a cut. The deepest cut's
-/// piece ("the chain on sprocket[w]", "the span sprocket[a] -> sprocket[b]"; empty when there is
-/// none), its depth g and point, where it is along the rail (from `start_angle` round an arc's
-/// centre [rad], from (x0, y0) along a straight rail [m]); the longest part of the rail over no cut
-/// (the same measure; NaN when none) and the least move of the rail's surface away from its
-/// rollers' side (a straight rail along −n, an arc's radius smaller outside, larger inside) that
-/// leaves no cut, within a roller's diameter (NaN when none does).
+/// dynamics.md, "Guides against the starting path"): sampled along the path (an eighth of a roller
+/// radius apart, at least 512 and at most 1e6 samples), a point in the rail's contact
+/// (`guide_contact`: between its ends, 0 < g < 2r) deeper than its surface, g > r (the roller's
+/// centre past the surface: the path crosses the rail or lies in it, not on it), is a cut. The
+/// deepest cut's piece ("the chain on sprocket[w]", "the span sprocket[a] -> sprocket[b]"; empty
+/// when there is none), its depth g and point, where it is along the rail (from `start_angle`
+/// round an arc's centre [rad], from (x0, y0) along a straight rail [m]). With a cut also: the
+/// longest part of the rail over no cut, and over no point in its contact at all (the same
+/// measure, a sample's reach inside the samples; NaN when none), and the least moves of the
+/// rail's surface away from its rollers' side (a straight rail along −n, an arc's radius smaller
+/// outside, larger inside) that leave no cut, within a roller's diameter, and that leave no point
+/// in its contact (the surface just touching the rollers, g ≤ 0), within kRailCutReach roller
+/// radii (NaN when none does). A move lowers every sample's gap by itself and keeps the rail's
+/// ends, so the least is exact from the samples' gaps (each widened by their spacing, for the
+/// path between them): one pass over the samples.
 struct RailCut {
   std::string piece;
   double depth = 0.0;       ///< [m]
   double x = 0.0, y = 0.0;  ///< [m]
   double along = 0.0;
   double clear_from = NAN, clear_to = NAN;
-  double shift = NAN;  ///< [m]
+  double touch_from = NAN, touch_to = NAN;
+  double shift = NAN;     ///< [m] the least move that leaves no cut
+  double touching = NAN;  ///< [m] the least move that leaves no point in the contact
 };
 RailCut rail_cut(const BeltPath& path, const Guide& rail);
+/// [roller radii] the largest move rail_cut names (to touching).
+inline constexpr double kRailCutReach = 4.0;
+/// The samples rail_cut visits for `rail` (those of the pieces whose box meets the rail's, over
+/// its moves): the work of one check.
+double rail_cut_work(const BeltPath& path, const Guide& rail);
 
 /// The distances `lead_in_obstacle` measures for `arc` (its samples times the pieces and guides
 /// its prefilter keeps): the work of one check, which `lead_in_limit`'s bisections repeat at most

@@ -697,6 +697,9 @@ bool is_integer(double x) { return std::isfinite(x) && x == std::floor(x); }
 constexpr std::size_t kMaxWheels = 20;  // sprockets of the free layout
 // the distances the lead-in check may measure (docs/models/dynamics.md, "Lead-ins")
 constexpr double kMaxLeadInWork = 5e8;
+// the path's samples the check of the rails against the starting path may visit (docs/models/
+// dynamics.md, "Guides against the starting path")
+constexpr double kMaxRailCutWork = 2e7;
 constexpr int kMinWrapTeeth = 3;  // a wheel's wrap, in teeth (docs/models/dynamics.md)
 
 constexpr const char* kTakeupKeys[] = {
@@ -2301,7 +2304,20 @@ Setup parse(const analysis::Inputs& in) {
   // a rail carries the chain on its rollers' side: the starting path may lie in its contact no
   // deeper than its surface (docs/models/dynamics.md, "Guides against the starting path"); a
   // path that crosses the rail or lies in it is refused naming where, how deep and what clears it
+  // its work bounded (docs/models/dynamics.md, "Guides against the starting path"): the path's
+  // samples it visits for each rail, at most kMaxRailCutWork in all
+  double rail_work = 0.0;
+  for (const auto& given : given_rails)
+    rail_work += rail_cut_work(chain_path, s.guides[given.second]);
+  if (rail_work > kMaxRailCutWork)
+    issues.push_back({"dynamics.guide",
+                      std::to_string(given_rails.size()) + " rails, " + format_g(rail_work, 3) +
+                          " samples of the chain's starting path to check against them",
+                      "at most " + format_g(kMaxRailCutWork, 3) +
+                          " (the path's samples, an eighth of a roller radius apart, within each "
+                          "rail's box): fewer or shorter rails, or fewer links"});
   for (const auto& [name, index] : given_rails) {
+    if (rail_work > kMaxRailCutWork) break;
     const Guide& rail = s.guides[index];
     const RailCut cut = rail_cut(chain_path, rail);
     if (cut.piece.empty()) continue;
@@ -2312,40 +2328,59 @@ Setup parse(const analysis::Inputs& in) {
     std::string where =
         arc ? format_g((rail.start_angle + cut.along) * deg, 4) + " deg round its centre"
             : mm(cut.along) + " along it from (x0, y0)";
-    std::string remedy;
-    if (std::isfinite(cut.clear_from) && cut.clear_to > cut.clear_from) {
+    // the rail's part from `from` to `to` along it, as its keys
+    auto part = [&](double from, double to) -> std::string {
+      if (!std::isfinite(from) || !(to > from)) return {};
       if (arc) {
         // rounded inwards to 0.01 deg: a part of a clear part is clear
-        const double a0 = std::ceil((rail.start_angle + cut.clear_from) * deg * 100.0) / 100.0;
-        const double a1 = std::floor((rail.start_angle + cut.clear_to) * deg * 100.0) / 100.0;
-        if (a1 > a0)
-          remedy = "start_angle >= " + format_g(a0, 6) +
-                   " deg and end_angle <= " + format_g(a1, 6) + " deg";
-      } else {
-        // rounded inwards to 1 µm
-        const double f = std::ceil(cut.clear_from * 1e6) / 1e3,
-                     t = std::floor(cut.clear_to * 1e6) / 1e3;
-        if (t > f)
-          remedy = "the rail from " + format_g(f, 6) + " mm to " + format_g(t, 6) +
-                   " mm along it from (x0, y0)";
+        const double a0 = std::ceil((rail.start_angle + from) * deg * 100.0) / 100.0;
+        const double a1 = std::floor((rail.start_angle + to) * deg * 100.0) / 100.0;
+        if (!(a1 > a0)) return {};
+        return "start_angle >= " + format_g(a0, 6) + " deg and end_angle <= " + format_g(a1, 6) +
+               " deg";
       }
-    }
-    if (std::isfinite(cut.shift)) {
-      const double shift = up_to(cut.shift, 4);
+      // its ends rounded inwards along it to 1 µm, then each coordinate to 1 µm (well within
+      // the sample's reach it is trimmed by)
+      const double f = std::ceil(from * 1e6) / 1e6, t = std::floor(to * 1e6) / 1e6;
+      if (!(t > f)) return {};
+      const GuideFrame u = guide_frame(rail);
+      auto key_mm = [](double v) {
+        char text[64];
+        std::snprintf(text, sizeof text, "\"%.3f mm\"", v * 1e3);
+        return std::string(text);
+      };
+      return "x0 = " + key_mm(rail.x0 + f * u.ux) + ", y0 = " + key_mm(rail.y0 + f * u.uy) +
+             ", x1 = " + key_mm(rail.x0 + t * u.ux) + ", y1 = " + key_mm(rail.y0 + t * u.uy);
+    };
+    // the rail moved by `by` away from its rollers' side
+    auto move = [&](double by) -> std::string {
+      if (!std::isfinite(by)) return {};
+      const double shift = up_to(by, 4);
+      if (!arc)
+        return "the rail moved " + mm(shift) +
+               " away from its rollers' side (along its right-hand normal)";
       // an arc's radius moved by it, to the shift's fourth digit (outwards from the chain)
       const double unit = std::pow(10.0, std::floor(std::log10(shift)) - 3.0);
       const double moved = rail.inside ? std::ceil((rail.radius + shift) / unit) * unit
                                        : std::floor((rail.radius - shift) / unit) * unit;
       const int digits =
           static_cast<int>(std::floor(std::log10(moved)) - std::floor(std::log10(unit))) + 1;
-      remedy += std::string(remedy.empty() ? "" : ", or ") +
-                (arc ? std::string(rail.inside ? "radius >= " : "radius <= ") +
-                           format_g(moved, std::max(digits, 1)) + " m (its surface " + mm(shift) +
-                           " farther from the chain)"
-                     : "the rail moved " + mm(shift) +
-                           " away from its rollers' side (along its right-hand normal)");
-    }
-    if (remedy.empty()) remedy = "no part of it nor a move within a roller's diameter clears it";
+      return std::string(rail.inside ? "radius >= " : "radius <= ") +
+             format_g(moved, std::max(digits, 1)) + " m (its surface " + mm(shift) +
+             " farther from the chain)";
+    };
+    auto either = [](const std::string& a, const std::string& b) {
+      return a.empty() ? b : b.empty() ? a : a + ", or " + b;
+    };
+    const std::string passes = either(part(cut.clear_from, cut.clear_to), move(cut.shift));
+    const std::string touches = either(part(cut.touch_from, cut.touch_to), move(cut.touching));
+    std::string remedy =
+        passes.empty() ? "no part of it nor a move within a roller's diameter clears it"
+                       : passes +
+                             " clears this check only (the rollers may still lie up to the roller "
+                             "radius into its surface, which need not run)";
+    if (!touches.empty())
+      remedy += "; clear of its contact (its surface at most touching the rollers): " + touches;
     issues.push_back(
         {name, cut.piece + " " + mm(cut.depth - r) + " past its surface at " + where,
          "a rail the chain's starting path lies on, not across or in: in its contact (between "

@@ -828,6 +828,24 @@ double rail_gap(const Guide& gd, const GuideFrame& frame, double x, double y, do
   return gd.inside ? d - (gd.radius - r) : gd.radius + r - d;
 }
 
+// The rail's ends: (x, y) along the straight rail's length, within the arc's angles (and off its
+// centre); `along` gets its place, from (x0, y0) along the straight rail, the angle from
+// start_angle round the arc's centre in [0, 2π) (GuideSpot).
+inline bool between_rail_ends(const Guide& gd, const GuideFrame& frame, double x, double y,
+                              double& along) {
+  if (gd.kind == Guide::Kind::kStraight) {
+    along = (x - gd.x0) * frame.ux + (y - gd.y0) * frame.uy;
+    return along >= 0.0 && along <= frame.length;
+  }
+  const double rx = x - gd.centre_x, ry = y - gd.centre_y;
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  double a = std::atan2(ry, rx) - gd.start_angle;
+  a -= kTwoPi * std::floor(a / kTwoPi);
+  along = a;
+  if (!(rx * rx + ry * ry > 0.0)) return false;  // at the centre: no normal
+  return !(a > gd.end_angle - gd.start_angle);
+}
+
 // The discrete gradient of a contact's energy between the gaps g0 and g1: f_e and ∂f_e/∂g₁.
 // `elastic(g)` is the law (rail_elastic, seat_elastic).
 struct DiscreteGradient {
@@ -966,6 +984,14 @@ LinkStep link_step_force(const Model& model, double s0, double s1, double h, std
   return out;
 }
 
+GuideSpot guide_spot(const Guide& g, const GuideFrame& frame, double x, double y) {
+  GuideSpot out;
+  out.between = between_rail_ends(g, frame, x, y, out.along);
+  double nx = 0.0, ny = 0.0;
+  out.gap = rail_gap(g, frame, x, y, nx, ny);
+  return out;
+}
+
 GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, double y, double vx,
                            double vy, double anchor) {
   return guide_contact(gd, frame, x, y, vx, vy, anchor, nullptr);
@@ -975,18 +1001,8 @@ GuideContact guide_contact(const Guide& gd, const GuideFrame& frame, double x, d
                            double vy, double anchor, const GuideStep* step) {
   GuideContact c;
   const double r = gd.roller_radius;
-  // the rail's ends: along the straight rail's length, within the arc's angles (and off its centre)
-  if (gd.kind == Guide::Kind::kStraight) {
-    const double along = (x - gd.x0) * frame.ux + (y - gd.y0) * frame.uy;
-    if (!(along >= 0.0) || !(along <= frame.length)) return c;  // off the rail's ends
-  } else {
-    const double rx = x - gd.centre_x, ry = y - gd.centre_y;
-    if (!(rx * rx + ry * ry > 0.0)) return c;  // at the centre: no normal
-    constexpr double kTwoPi = 2.0 * std::numbers::pi;
-    double a = std::atan2(ry, rx) - gd.start_angle;
-    a -= kTwoPi * std::floor(a / kTwoPi);
-    if (a > gd.end_angle - gd.start_angle) return c;  // off the arc's ends
-  }
+  double along = 0.0;
+  if (!between_rail_ends(gd, frame, x, y, along)) return c;
   double nx = 0.0, ny = 0.0, kappa = 0.0;
   const double g = rail_gap(gd, frame, x, y, nx, ny, &kappa);
   // One-sided: a roller whose centre is past the rail's surface is on its far side, not pressed

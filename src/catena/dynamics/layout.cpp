@@ -676,6 +676,31 @@ void sag_box(const PathPiece& q, double& x0, double& y0, double& x1, double& y1)
                                                 : std::min(q.y0, q.y1);
 }
 
+// A piece's bounding box: a wrap's whole circle, a sagging piece's sag_box, a straight span's
+// ends (either first).
+void piece_box(const PathPiece& q, double& x0, double& y0, double& x1, double& y1) {
+  x0 = q.x0;
+  y0 = q.y0;
+  x1 = q.x1;
+  y1 = q.y1;
+  if (q.arc) {
+    x0 = q.cx - q.radius;
+    y0 = q.cy - q.radius;
+    x1 = q.cx + q.radius;
+    y1 = q.cy + q.radius;
+  } else if (q.sag) {
+    sag_box(q, x0, y0, x1, y1);
+  }
+}
+
+// Whether the box of the corners (x0, y0) and (x1, y1) (either first) comes within `margin` of
+// the box [lo_x, hi_x] × [lo_y, hi_y].
+bool boxes_near(double x0, double y0, double x1, double y1, double lo_x, double lo_y, double hi_x,
+                double hi_y, double margin) {
+  return std::min(x0, x1) <= hi_x + margin && std::max(x0, x1) >= lo_x - margin &&
+         std::min(y0, y1) <= hi_y + margin && std::max(y0, y1) >= lo_y - margin;
+}
+
 }  // namespace
 
 std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
@@ -905,8 +930,7 @@ LeadInReach lead_in_reach(const BeltPath& path, const Guide& rail, const Guide& 
     hi_y = std::max(hi_y, y);
   }
   auto near_box = [&](double x0, double y0, double x1, double y1) {
-    return std::min(x0, x1) <= hi_x + r && std::max(x0, x1) >= lo_x - r &&
-           std::min(y0, y1) <= hi_y + r && std::max(y0, y1) >= lo_y - r;
+    return boxes_near(x0, y0, x1, y1, lo_x, lo_y, hi_x, hi_y, r);
   };
   auto near_circle = [&](double cx, double cy, double radius) {
     return near_box(cx - radius, cy - radius, cx + radius, cy + radius);
@@ -917,9 +941,9 @@ LeadInReach lead_in_reach(const BeltPath& path, const Guide& rail, const Guide& 
   for (std::size_t k = 0; k < path.pieces.size(); ++k) {
     const PathPiece& q = path.pieces[k];
     if (carried[k]) continue;
-    double bx0 = q.x0, by0 = q.y0, bx1 = q.x1, by1 = q.y1;
-    if (q.sag) sag_box(q, bx0, by0, bx1, by1);
-    if (!(q.arc ? near_circle(q.cx, q.cy, q.radius) : near_box(bx0, by0, bx1, by1))) continue;
+    double bx0 = 0.0, by0 = 0.0, bx1 = 0.0, by1 = 0.0;
+    piece_box(q, bx0, by0, bx1, by1);
+    if (!near_box(bx0, by0, bx1, by1)) continue;
     out.pieces.push_back(k);
     // (the arc's first sample is the rail's end: a hair below it, for its rounding)
     const double end = piece_gap(q, ex, ey);
@@ -991,83 +1015,10 @@ LeadInLimit lead_in_limit(const BeltPath& path, const Guide& rail, const LeadIn&
 
 namespace {
 
-// Where (x, y) is along a rail: the angle from its start round an arc's centre (in [0, 2π)), the
-// distance from (x0, y0) along a straight rail.
-double rail_along(const Guide& rail, double x, double y) {
-  if (rail.kind == Guide::Kind::kStraight) {
-    const GuideFrame f = guide_frame(rail);
-    return (x - rail.x0) * f.ux + (y - rail.y0) * f.uy;
-  }
-  const double a = std::atan2(y - rail.centre_y, x - rail.centre_x) - rail.start_angle;
-  return a - kTwoPi * std::floor(a / kTwoPi);
-}
-
 // The path's samples for the cuts: an eighth of a roller radius apart (arc_samples's quarter of
 // half the roller radius), at least 512, at most kMaxSagSamples.
 int cut_samples(const BeltPath& path, const Guide& rail) {
   return arc_samples(path.length, 0.5 * rail.roller_radius);
-}
-
-// Each sample of the path in the rail's contact deeper than its surface: `cut(point, g)`. The
-// samples are the path's at arc lengths L j/n; only those of the pieces that may enter the rail's
-// box are visited (of a straight span, the stretch of it within the box, clipped as Liang and
-// Barsky clip a line: the samples outside the box cannot be in the contact), the same verdicts
-// with a fraction of the work on a long loop.
-template <class Cut>
-void for_each_cut(const BeltPath& path, const Guide& rail, Cut&& cut) {
-  const GuideFrame frame = guide_frame(rail);
-  const GuideBounds box = guide_bounds(rail);
-  const int n = cut_samples(path, rail);
-  const double per = n / path.length;  // samples per metre
-  for (const PathPiece& q : path.pieces) {
-    double t0 = 0.0, t1 = 1.0;  // the share of the piece to visit
-    if (!q.arc && !q.sag && !q.catenary) {
-      const double d[2] = {q.x1 - q.x0, q.y1 - q.y0}, o[2] = {q.x0, q.y0};
-      const double lo[2] = {box.x_lo, box.y_lo}, hi[2] = {box.x_hi, box.y_hi};
-      for (int k = 0; k < 2 && t0 <= t1; ++k) {
-        if (d[k] == 0.0) {
-          if (!(o[k] >= lo[k] && o[k] <= hi[k])) t1 = -1.0;
-          continue;
-        }
-        const double a = (lo[k] - o[k]) / d[k], b = (hi[k] - o[k]) / d[k];
-        t0 = std::max(t0, std::min(a, b));
-        t1 = std::min(t1, std::max(a, b));
-      }
-      if (!(t0 <= t1)) continue;
-    }
-    // a sample either side more, for the rounding
-    const double from = std::floor((q.start + t0 * q.length) * per) - 1.0;
-    const double to = std::ceil((q.start + t1 * q.length) * per) + 1.0;
-    for (double j = std::max(from, 0.0); j <= to && j < n; ++j) {
-      const PathPoint p = path_point(path, path.length * j / n);
-      if (p.piece != static_cast<std::size_t>(&q - path.pieces.data())) continue;  // its own
-      if (!guide_touch_possible(box, p.x, p.y)) continue;
-      const GuideContact c = guide_contact(rail, frame, p.x, p.y, 0.0, 0.0);
-      if (c.active && c.penetration > rail.roller_radius) cut(p, c.penetration);
-    }
-  }
-}
-
-bool cut_free(const BeltPath& path, const Guide& rail) {
-  bool free = true;
-  for_each_cut(path, rail, [&](const PathPoint&, double) { free = false; });
-  return free;
-}
-
-// The rail's part between `from` and `to` along it (rail_along's measure).
-Guide rail_part(const Guide& rail, double from, double to) {
-  Guide out = rail;
-  if (rail.kind == Guide::Kind::kStraight) {
-    const GuideFrame f = guide_frame(rail);
-    out.x0 = rail.x0 + from * f.ux;
-    out.y0 = rail.y0 + from * f.uy;
-    out.x1 = rail.x0 + to * f.ux;
-    out.y1 = rail.y0 + to * f.uy;
-  } else {
-    out.start_angle = rail.start_angle + from;
-    out.end_angle = rail.start_angle + to;
-  }
-  return out;
 }
 
 // The rail with its surface moved by `shift` away from its rollers' side.
@@ -1085,81 +1036,166 @@ Guide rail_moved(const Guide& rail, double shift) {
   return out;
 }
 
+// The box rail_cut visits: the rail's (guide_bounds) for every move of it up to kRailCutReach
+// roller radii (a straight rail's at both ends of the move; an arc's larger circle), padded by
+// `pad` (the samples' spacing: a sample's reach beyond the rail's ends and past the band).
+GuideBounds cut_box(const Guide& rail, double pad) {
+  const GuideBounds a = guide_bounds(rail);
+  const Guide far = rail_moved(rail, kRailCutReach * rail.roller_radius);
+  const bool grows = rail.kind == Guide::Kind::kStraight || rail.inside;
+  const GuideBounds b = grows ? guide_bounds(far) : a;  // outside: the circle shrinks within a
+  return {std::min(a.x_lo, b.x_lo) - pad, std::max(a.x_hi, b.x_hi) + pad,
+          std::min(a.y_lo, b.y_lo) - pad, std::max(a.y_hi, b.y_hi) + pad};
+}
+
+// The samples of the path rail_cut visits, as `visit(piece, first, last)` (the sample indices
+// j in [first, last] of the path's n at arc lengths L j/n, a sample either side more for the
+// rounding): of each piece whose box (piece_box) meets `box`, those of a straight span within
+// the box (clipped as Liang and Barsky clip a line), of a wrap or a sagging piece all of them.
+// The samples outside are nowhere near the rail's contact.
+template <class Visit>
+void cut_ranges(const BeltPath& path, const GuideBounds& box, int n, Visit&& visit) {
+  const double per = n / path.length;  // samples per metre
+  for (std::size_t k = 0; k < path.pieces.size(); ++k) {
+    const PathPiece& q = path.pieces[k];
+    double t0 = 0.0, t1 = 1.0;  // the share of the piece to visit
+    if (!q.arc && !q.sag) {
+      const double d[2] = {q.x1 - q.x0, q.y1 - q.y0}, o[2] = {q.x0, q.y0};
+      const double lo[2] = {box.x_lo, box.y_lo}, hi[2] = {box.x_hi, box.y_hi};
+      for (int i = 0; i < 2 && t0 <= t1; ++i) {
+        if (d[i] == 0.0) {
+          if (!(o[i] >= lo[i] && o[i] <= hi[i])) t1 = -1.0;
+          continue;
+        }
+        const double a = (lo[i] - o[i]) / d[i], b = (hi[i] - o[i]) / d[i];
+        t0 = std::max(t0, std::min(a, b));
+        t1 = std::min(t1, std::max(a, b));
+      }
+      if (!(t0 <= t1)) continue;
+    } else {
+      double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
+      piece_box(q, x0, y0, x1, y1);
+      if (!boxes_near(x0, y0, x1, y1, box.x_lo, box.y_lo, box.x_hi, box.y_hi, 0.0)) continue;
+    }
+    const double from = std::max(std::floor((q.start + t0 * q.length) * per) - 1.0, 0.0);
+    const double to = std::min(std::ceil((q.start + t1 * q.length) * per) + 1.0, n - 1.0);
+    if (from <= to) visit(k, from, to);
+  }
+}
+
+// The least s ≥ 0 in none of the open intervals (lo, hi): exact.
+double least_clear(std::vector<std::pair<double, double>>& intervals) {
+  std::sort(intervals.begin(), intervals.end());
+  double s = 0.0;
+  for (const auto& [lo, hi] : intervals) {
+    if (!(lo < s)) break;  // s lies before this interval and every later one
+    s = std::max(s, hi);
+  }
+  return s;
+}
+
+// The longest stretch of [0, length] a `hair` clear of each of `cuts` (sorted): its ends in
+// `from`, `to` (to ≤ from: none).
+void longest_clear(const std::vector<double>& cuts, double length, double hair, double& from,
+                   double& to) {
+  from = to = 0.0;
+  for (std::size_t k = 0; k <= cuts.size(); ++k) {
+    const double a = k == 0 ? 0.0 : cuts[k - 1] + hair;
+    const double b = k == cuts.size() ? length : cuts[k] - hair;
+    if (b - a > to - from) {
+      from = a;
+      to = b;
+    }
+  }
+}
+
 }  // namespace
+
+double rail_cut_work(const BeltPath& path, const Guide& rail) {
+  if (path.pieces.empty() || !(path.length > 0.0) || !(rail.roller_radius > 0.0)) return 0.0;
+  const int n = cut_samples(path, rail);
+  double work = 0.0;
+  cut_ranges(path, cut_box(rail, path.length / n), n,
+             [&](std::size_t, double from, double to) { work += to - from + 1.0; });
+  return work;
+}
 
 RailCut rail_cut(const BeltPath& path, const Guide& rail) {
   RailCut out;
   if (path.pieces.empty() || !(path.length > 0.0) || !(rail.roller_radius > 0.0)) return out;
-  std::vector<double> cuts;  // along the rail
-  for_each_cut(path, rail, [&](const PathPoint& p, double g) {
-    cuts.push_back(rail_along(rail, p.x, p.y));
-    if (!(g > out.depth)) return;
-    const PathPiece& q = path.pieces[p.piece];
-    out.piece = q.arc ? "the chain on " + wheel_name(q.wheel)
-                      : "the span " + wheel_name(q.wheel) + " -> " + wheel_name(q.next);
-    out.depth = g;
-    out.x = p.x;
-    out.y = p.y;
-    out.along = cuts.back();
+  const double r = rail.roller_radius;
+  const int n = cut_samples(path, rail);
+  const double spacing = path.length / n;
+  const GuideFrame frame = guide_frame(rail);
+  const bool straight = rail.kind == Guide::Kind::kStraight;
+  const double length = straight ? frame.length : rail.end_angle - rail.start_angle;
+  // a point of the path lies within a sample's spacing of a sample (along the path); so its place
+  // along the rail within that along a straight rail, and round an arc within that at the
+  // contact's least distance from its centre (R − r; every point in a contact of the rail moved
+  // away is farther): `hair`
+  const double inner = rail.radius - r;
+  const double hair = straight ? spacing : inner > 0.0 ? spacing / inner : kTwoPi;
+
+  std::vector<double> cuts, touches;                    // along the rail
+  std::vector<std::pair<double, double>> clear, touch;  // the moves that cut, that touch
+  // the rail moved by s lowers every gap by s and keeps its ends: a point lies in its contact for
+  // s in (g − 2r, g) and past its surface for s in (g − 2r, g − r); between two samples the gap
+  // takes every value between theirs (to the path's curvature over a spacing, µm), so each
+  // stretch between neighbouring samples with either between the rail's ends adds the intervals
+  // of both gaps' range (a stretch across an end: at most a spacing's gap more than the least)
+  auto moves = [&](double lo, double hi) {
+    if (hi > 0.0) touch.emplace_back(lo - 2.0 * r, hi);
+    if (hi - r > 0.0) clear.emplace_back(lo - 2.0 * r, hi - r);
+  };
+  cut_ranges(path, cut_box(rail, spacing), n, [&](std::size_t, double from, double to) {
+    double last_gap = NAN;
+    bool last_between = false;
+    for (double j = from; j <= to; ++j) {
+      const PathPoint p = path_point(path, path.length * j / n);
+      const GuideSpot at = guide_spot(rail, frame, p.x, p.y);
+      const double g = at.gap;
+      if (at.between || last_between)
+        moves(j > from ? std::min(g, last_gap) : g, j > from ? std::max(g, last_gap) : g);
+      last_gap = g;
+      last_between = at.between;
+      if (!at.between || !(g < 2.0 * r) || !(g > 0.0)) continue;
+      touches.push_back(at.along);
+      if (!(g > r)) continue;
+      cuts.push_back(at.along);
+      if (!(g > out.depth)) continue;
+      const PathPiece& q = path.pieces[p.piece];
+      out.piece = q.arc ? "the chain on " + wheel_name(q.wheel)
+                        : "the span " + wheel_name(q.wheel) + " -> " + wheel_name(q.next);
+      out.depth = g;
+      out.x = p.x;
+      out.y = p.y;
+      out.along = at.along;
+    }
   });
   if (cuts.empty()) return out;
-  // the longest part over no cut: between two cuts' samples (or a cut and an end), a sample's
-  // reach inside them; again within it while cuts are left under it (a cut between the path's
-  // samples lies a little beyond them)
-  const double length = rail.kind == Guide::Kind::kStraight ? guide_frame(rail).length
-                                                            : rail.end_angle - rail.start_angle;
-  // a cut may lie up to a sample's spacing beyond its sample along the path: along a straight
-  // rail that far, round an arc that far at the contact's least distance from its centre
-  const double spacing = path.length / cut_samples(path, rail);
-  const double inner = rail.radius - rail.roller_radius;
-  const double hair = rail.kind == Guide::Kind::kStraight ? spacing
-                      : inner > 0.0                       ? spacing / inner
-                                                          : length;
-  double from = 0.0, to = length;
-  for (int pass = 0; pass < 64 && !cuts.empty(); ++pass) {
-    std::sort(cuts.begin(), cuts.end());
-    double best_from = from, best_to = from;
-    for (std::size_t k = 0; k <= cuts.size(); ++k) {
-      const double a = k == 0 ? from : cuts[k - 1] + hair;
-      const double b = k == cuts.size() ? to : cuts[k] - hair;
-      if (b - a > best_to - best_from) {
-        best_from = a;
-        best_to = b;
-      }
-    }
-    from = best_from;
-    to = best_to;
-    cuts.clear();
-    if (!(to > from)) break;
-    const Guide part = rail_part(rail, from, to);
-    for_each_cut(path, part, [&](const PathPoint& p, double) {
-      cuts.push_back(from + rail_along(part, p.x, p.y));
-    });
-  }
-  if (cuts.empty() && to > from) {
+  // the longest part over no cut, and over no contact: between two samples (or one and an end),
+  // a hair inside them (a cut between the samples lies up to a hair beyond them)
+  std::sort(cuts.begin(), cuts.end());
+  std::sort(touches.begin(), touches.end());
+  double from = 0.0, to = 0.0;
+  longest_clear(cuts, length, hair, from, to);
+  if (to > from) {
     out.clear_from = from;
     out.clear_to = to;
   }
-  // the least move within a roller's diameter: scanned in eighths of a roller radius, the first
-  // clear one bisected back towards the last cut one (an arc kept larger than the roller)
-  const double r = rail.roller_radius;
-  double cut_at = 0.0;
-  for (int k = 1; k <= 16; ++k) {
-    const double shift = k * r / 8.0;
-    const Guide moved = rail_moved(rail, shift);
-    if (rail.kind == Guide::Kind::kArc && !(moved.radius > r)) break;
-    if (!cut_free(path, moved)) {
-      cut_at = shift;
-      continue;
-    }
-    double clear = shift;
-    for (int i = 0; i < 30; ++i) {
-      const double mid = 0.5 * (cut_at + clear);
-      (cut_free(path, rail_moved(rail, mid)) ? clear : cut_at) = mid;
-    }
-    out.shift = clear;
-    break;
+  longest_clear(touches, length, hair, from, to);
+  if (to > from) {
+    out.touch_from = from;
+    out.touch_to = to;
   }
+  // the least moves, within a roller's diameter and two (an arc kept larger than the roller)
+  auto within = [&](double shift, double most) {
+    return shift <= most * r && (straight || rail_moved(rail, shift).radius > r);
+  };
+  // (a nanometre's hair beyond the interval's open end, for the moved rail's rounding)
+  const double shift = least_clear(clear) + 1e-9, touching = least_clear(touch) + 1e-9;
+  if (within(shift, 2.0)) out.shift = shift;
+  if (within(touching, kRailCutReach)) out.touching = touching;
   return out;
 }
 
