@@ -131,14 +131,19 @@ TEST(DynamicsPocketCli, ExampleRunsOnSeed003sWheelAndBalancesTheDrivenWheel) {
             "time,angle_0,speed_0,torque_0,angle_1,speed_1,torque_1,tension_upper,tension_lower");
 }
 
-// Round links carry no compression (docs/models/dynamics.md, "Tension-only links"): the upright
-// links are tension-only, the flat links rigid ("The flat links": bilateral), and a span's
-// sampled link (the one nearest its middle, of either kind) pushes only as a flat link pressed
-// by a hair. Over the whole 1 s example (h = 0.1 ms) and at h = 0.05 ms every sampled span
-// tension and the summary's minimum are ≥ −1 N (measured: ≥ 0 at these samples; −0.033 N at the
-// lowest sampling the example at every step). With the bilateral links everywhere the series went
-// down to −954 N and −889 N, and the h = 0.05 ms run's lower span's summary minimum to −159.5 N.
-TEST(DynamicsPocketCli, SpanTensionsAreNeverNegative) {
+// Round links carry no compression (docs/models/dynamics.md, "Tension-only links"; the exact
+// invariant, that the upright links never push, is FlatLinksJointsDoNotPassEachOther's): a span's
+// sampled link (the one nearest its middle) is of either kind, and a flat link is rigid ("The flat
+// links": bilateral), so a sampled tension may be a flat link's push. How far it may push: a flat
+// link whose upright neighbours have gone slack is a dumbbell of two joints, μ = m/2 = 0.211 kg
+// (6.6 kg/m × 64 mm / 2), on k = 1e8 N/m and c = 2000 N·s/m: ζ = c/(2√(kμ)) = 0.22, and released
+// from a tension T_r it overshoots into compression by exp(−πζ/√(1 − ζ²)) = 0.50 T_r. Over 41
+// draws of the example (the pretension changed by 1-40 µN) the deepest push was −16.1 N at these
+// 1 ms samples and −47.7 N at every step, so releases of up to 96 N; held to −100 N, the overshoot
+// of a 200 N release (twice the largest seen: a bound from the ensemble and the ringing, not a
+// proof). With the bilateral links everywhere the series went down to −954 N and −889 N, and the
+// h = 0.05 ms run's lower span's summary minimum to −159.5 N.
+TEST(DynamicsPocketCli, SpanTensionsPushOnlyAsAFlatLinksRinging) {
   for (const char* step : {"", " --step 0.05ms"}) {
     const CliRun r = run("dynamics " + kExample + step + " --format json");
     ASSERT_EQ(r.status, 0) << r.err;
@@ -146,9 +151,9 @@ TEST(DynamicsPocketCli, SpanTensionsAreNeverNegative) {
     double lowest = INFINITY;
     for (const auto& span : j["span"])
       for (const auto& t : span["tension"]) lowest = std::min(lowest, t.get<double>());
-    EXPECT_GE(lowest, -1.0) << step;
+    EXPECT_GE(lowest, -100.0) << step;
     for (const char* span : {"span_0", "span_1"})
-      EXPECT_GE(j["summary"][span]["min_tension"].get<double>(), -1.0) << step << " " << span;
+      EXPECT_GE(j["summary"][span]["min_tension"].get<double>(), -100.0) << step << " " << span;
     std::printf("pocket example%s: lowest sampled span tension %.3g N\n", step, lowest);
   }
 }
@@ -158,7 +163,9 @@ TEST(DynamicsPocketCli, SpanTensionsAreNeverNegative) {
 // link's joints come closer than its rest length p + d (p the pitch less pretension/k) less
 // 30 µm, a push of k × 30 µm = 3 kN. Measured: 7.02 µm at the closest (702 N); with the flat
 // links tension-only (the command before) their joints passed freely, by up to 57.7 µm. The
-// upright (t − d) links stay tension-only and close by more (107.8 µm), far from their jam at d.
+// upright (t − d) links stay tension-only and close by more (107.8 µm), far from their jam at d:
+// no upright link comes within ε of it, so by the law (tension_only_link_force: T = max(0, k s +
+// c ṡ) above the jam's ramp) no upright link ever pushes, T ≥ 0 exactly (measured: 27.9 mm clear).
 TEST(DynamicsPocketCli, FlatLinksJointsDoNotPassEachOther) {
   const CliRun r =
       run("dynamics " +
@@ -172,6 +179,7 @@ TEST(DynamicsPocketCli, FlatLinksJointsDoNotPassEachOther) {
   ASSERT_EQ(xs.size(), 10001u);
   const double rest = 0.064 - 1000.0 / 1e8, d = 0.018;
   double flat = INFINITY, upright = INFINITY;  // the least l − rest length of each kind
+  double upright_length = INFINITY;            // the least l of an upright link
   for (std::size_t k = 0; k < xs.size(); ++k) {
     const std::size_t n = xs[k].size();
     ASSERT_EQ(n, 32u);
@@ -183,6 +191,7 @@ TEST(DynamicsPocketCli, FlatLinksJointsDoNotPassEachOther) {
         flat = std::min(flat, l - (rest + d));
       } else {
         upright = std::min(upright, l - (rest - d));
+        upright_length = std::min(upright_length, l);
       }
     }
   }
@@ -190,6 +199,8 @@ TEST(DynamicsPocketCli, FlatLinksJointsDoNotPassEachOther) {
               -flat * 1e6, -upright * 1e6);
   EXPECT_GT(flat, -30e-6);
   EXPECT_LT(upright, -30e-6);  // the upright links are not rigid: their joints close freely
+  // ... but never onto their jam (l_jam = d, its ramp ε/2 above it): they never push
+  EXPECT_GT(upright_length, d + 1e-6) << upright_length;  // ε = 1 µm, link_smoothing
 }
 
 TEST(DynamicsPocketCli, ShortRunHasNoMeanErrorAndSaysSo) {
