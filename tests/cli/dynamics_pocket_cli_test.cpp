@@ -282,11 +282,12 @@ TEST(DynamicsPocketCli, SparseSamplesGiveNoMeanErrorAndNameTheOutputInterval) {
 }
 
 // A slack span whose mean is near zero against the loop's: no pretension and 800 N m on the
-// driven wheel (measured 5089.7 ± 24.3 N tight, 162.2 ± 16.6 N slack over the 3 periods: the
-// slack span 3.2 % of the tight span's mean). Against the largest span mean the means are settled
-// (0.48 %), no warning; against the slack span's own mean (10 %) the run would have been told to
-// last about 98 s (313 periods), for 17 N of a 5 kN loop. (With the bilateral links, before the
-// tension-only ones: 4997.6 ± 4.6 and 65.3 ± 12.7 N, 355 s.)
+// driven wheel (measured with the flat links rigid 5035.3 ± 12.9 N tight, 102.5 ± 18.4 N slack
+// over the 3 periods: the slack span 2.0 % of the tight span's mean). Against the largest span
+// mean the means are settled (0.37 %), no warning; against the slack span's own mean (18 %) the
+// run would have been told to last far longer, for 18 N of a 5 kN loop (with every round link
+// tension-only: 5089.7 ± 24.3 and 162.2 ± 16.6 N, about 98 s; with the bilateral links
+// everywhere: 4997.6 ± 4.6 and 65.3 ± 12.7 N, 355 s).
 TEST(DynamicsPocketCli, SlackSpanNearZeroDoesNotAskForAnAbsurdDuration) {
   const std::string path = example_with("slack.toml", {{"pretension =", "pretension = \"0 N\""},
                                                        {"load_torque =", "load_torque = 800"}});
@@ -303,14 +304,15 @@ TEST(DynamicsPocketCli, SlackSpanNearZeroDoesNotAskForAnAbsurdDuration) {
             0.01 * std::abs(slack["mean_tension"].get<double>()));
   for (const auto* span : {&tight, &slack})
     EXPECT_LT((*span)["mean_tension_error"].get<double>(), 0.01 * scale);
-  // no means' warning; the one diagnostic is the deep joint's: 0.391 mm into a pocket's wall,
-  // 4.9c from its vertex (not the load's: 4.9 kN / k_c is 49 µm), so within the pocket's capture
-  // of 10c (docs/models/dynamics.md, "Pocket wheel: the body between the pockets"). The warning
-  // says the forces "are not to be trusted" while the means above are pinned to 1 %: the deep
-  // event is a transient in the slack span (a joint with next to no tension landing off its vertex
-  // as it seats), a contact force at one joint for the steps it takes to seat; the means are the
-  // spans' tensions averaged over the 3 whole periods, which that short event's impulse barely
-  // moves, and the tight span's 5 kN is carried by joints seated at their vertices
+  // no means' warning; the one diagnostic is the deep joint's: 0.312 mm into a pocket's wall
+  // (0.391 mm, 4.9c from its vertex, with every round link tension-only; not the load's: 4.9 kN /
+  // k_c is 49 µm), so within the pocket's capture of 10c (docs/models/dynamics.md, "Pocket wheel:
+  // the body between the pockets"). The warning says the forces "are not to be trusted" while the
+  // means above are pinned to 1 %: the deep event is a transient in the slack span (a joint with
+  // next to no tension landing off its vertex as it seats), a contact force at one joint for the
+  // steps it takes to seat; the means are the spans' tensions averaged over the 3 whole periods,
+  // which that short event's impulse barely moves, and the tight span's 5 kN is carried by joints
+  // seated at their vertices
   ASSERT_EQ(j["diagnostics"].size(), 1u) << j["diagnostics"].dump();
   EXPECT_EQ(j["diagnostics"][0]["code"], "dynamics.pocket_penetration_deep");
   EXPECT_GT(j["summary"]["max_penetration"].get<double>(), 1e-4);
