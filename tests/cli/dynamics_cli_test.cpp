@@ -858,7 +858,9 @@ TEST(DynamicsCli, DiscreteGradientKeyTakesThePocketChainsLinksOverTheStep) {
   std::printf("pocket example, theta = 0.5 undamped, 10 ms: numerical %.3g J (key), %.3g J\n", on,
               off);
   EXPECT_LT(std::abs(on), 1e-6);
-  EXPECT_GT(std::abs(off), 0.1);
+  // the contrast, not the size: without the key the ramp's steps leave an error (measured
+  // 0.111 J, 0.27 J before the flat links were rigid) three orders above the key's bound
+  EXPECT_GT(std::abs(off), 1e-3);
 }
 
 // `catena report` on the example: the time series (each curve's extremes those of the JSON),

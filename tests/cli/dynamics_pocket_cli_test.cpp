@@ -131,14 +131,19 @@ TEST(DynamicsPocketCli, ExampleRunsOnSeed003sWheelAndBalancesTheDrivenWheel) {
             "time,angle_0,speed_0,torque_0,angle_1,speed_1,torque_1,tension_upper,tension_lower");
 }
 
-// Round links carry no compression (docs/models/dynamics.md, "Tension-only links"): the upright
-// links are tension-only, the flat links rigid ("The flat links": bilateral), and a span's
-// sampled link (the one nearest its middle, of either kind) pushes only as a flat link pressed
-// by a hair. Over the whole 1 s example (h = 0.1 ms) and at h = 0.05 ms every sampled span
-// tension and the summary's minimum are ≥ −1 N (measured: ≥ 0 at these samples; −0.033 N at the
-// lowest sampling the example at every step). With the bilateral links everywhere the series went
-// down to −954 N and −889 N, and the h = 0.05 ms run's lower span's summary minimum to −159.5 N.
-TEST(DynamicsPocketCli, SpanTensionsAreNeverNegative) {
+// Round links carry no compression (docs/models/dynamics.md, "Tension-only links"; the exact
+// invariant, that the upright links never push, is FlatLinksJointsDoNotPassEachOther's): a span's
+// sampled link (the one nearest its middle) is of either kind, and a flat link is rigid ("The flat
+// links": bilateral), so a sampled tension may be a flat link's push. How far it may push: a flat
+// link whose upright neighbours have gone slack is a dumbbell of two joints, μ = m/2 = 0.211 kg
+// (6.6 kg/m × 64 mm / 2), on k = 1e8 N/m and c = 2000 N·s/m: ζ = c/(2√(kμ)) = 0.22, and released
+// from a tension T_r it overshoots into compression by exp(−πζ/√(1 − ζ²)) = 0.50 T_r. Over 41
+// draws of the example (the pretension changed by 1-40 µN) the deepest push was −16.1 N at these
+// 1 ms samples and −47.7 N at every step, so releases of up to 96 N; held to −100 N, the overshoot
+// of a 200 N release (twice the largest seen: a bound from the ensemble and the ringing, not a
+// proof). With the bilateral links everywhere the series went down to −954 N and −889 N, and the
+// h = 0.05 ms run's lower span's summary minimum to −159.5 N.
+TEST(DynamicsPocketCli, SpanTensionsPushOnlyAsAFlatLinksRinging) {
   for (const char* step : {"", " --step 0.05ms"}) {
     const CliRun r = run("dynamics " + kExample + step + " --format json");
     ASSERT_EQ(r.status, 0) << r.err;
@@ -146,9 +151,9 @@ TEST(DynamicsPocketCli, SpanTensionsAreNeverNegative) {
     double lowest = INFINITY;
     for (const auto& span : j["span"])
       for (const auto& t : span["tension"]) lowest = std::min(lowest, t.get<double>());
-    EXPECT_GE(lowest, -1.0) << step;
+    EXPECT_GE(lowest, -100.0) << step;
     for (const char* span : {"span_0", "span_1"})
-      EXPECT_GE(j["summary"][span]["min_tension"].get<double>(), -1.0) << step << " " << span;
+      EXPECT_GE(j["summary"][span]["min_tension"].get<double>(), -100.0) << step << " " << span;
     std::printf("pocket example%s: lowest sampled span tension %.3g N\n", step, lowest);
   }
 }
@@ -158,7 +163,11 @@ TEST(DynamicsPocketCli, SpanTensionsAreNeverNegative) {
 // link's joints come closer than its rest length p + d (p the pitch less pretension/k) less
 // 30 µm, a push of k × 30 µm = 3 kN. Measured: 7.02 µm at the closest (702 N); with the flat
 // links tension-only (the command before) their joints passed freely, by up to 57.7 µm. The
-// upright (t − d) links stay tension-only and close by more (107.8 µm), far from their jam at d.
+// upright (t − d) links stay tension-only and close by more (107.8 µm), 28 mm short of their jam
+// at d, so they never push: at every sample whose span link (span_middle_links: of the links
+// above (below) the axis, the one whose middle is nearest x = centre_distance/2) is an upright
+// one, the span's tension is ≥ 0 exactly (tension_only_link_force: T = max(0, k s + c ṡ) above
+// the jam's ramp); the flat links' samples may push (SpanTensionsPushOnlyAsAFlatLinksRinging).
 TEST(DynamicsPocketCli, FlatLinksJointsDoNotPassEachOther) {
   const CliRun r =
       run("dynamics " +
@@ -170,8 +179,13 @@ TEST(DynamicsPocketCli, FlatLinksJointsDoNotPassEachOther) {
   const auto& xs = j["positions"]["x"];
   const auto& ys = j["positions"]["y"];
   ASSERT_EQ(xs.size(), 10001u);
+  ASSERT_EQ(j["span"].size(), 2u);
+  for (const auto& span : j["span"]) ASSERT_EQ(span["tension"].size(), xs.size());
   const double rest = 0.064 - 1000.0 / 1e8, d = 0.018;
   double flat = INFINITY, upright = INFINITY;  // the least l − rest length of each kind
+  const double half = 0.5 * j["centre_distance"].get<double>();
+  double upright_sampled = INFINITY, flat_sampled = INFINITY;  // the least span tension by kind
+  std::size_t upright_samples = 0;
   for (std::size_t k = 0; k < xs.size(); ++k) {
     const std::size_t n = xs[k].size();
     ASSERT_EQ(n, 32u);
@@ -185,11 +199,36 @@ TEST(DynamicsPocketCli, FlatLinksJointsDoNotPassEachOther) {
         upright = std::min(upright, l - (rest - d));
       }
     }
+    for (std::size_t w = 0; w < 2; ++w) {  // span 0 above the axis, span 1 below
+      std::size_t link = n;
+      double gap = INFINITY;
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t b = (i + 1) % n;
+        const double xm = 0.5 * (xs[k][i].get<double>() + xs[k][b].get<double>());
+        const double ym = 0.5 * (ys[k][i].get<double>() + ys[k][b].get<double>());
+        if (ym == 0.0 || (ym > 0.0) != (w == 0)) continue;
+        if (std::abs(xm - half) < gap) gap = std::abs(xm - half), link = i;
+      }
+      ASSERT_LT(link, n) << k;
+      const double tension = j["span"][w]["tension"][k].get<double>();
+      if (link % 2 == 1) {
+        upright_sampled = std::min(upright_sampled, tension);
+        ++upright_samples;
+      } else {
+        flat_sampled = std::min(flat_sampled, tension);
+      }
+    }
   }
   std::printf("pocket example: flat links at most %.2f um short, upright links %.2f um\n",
               -flat * 1e6, -upright * 1e6);
   EXPECT_GT(flat, -30e-6);
   EXPECT_LT(upright, -30e-6);  // the upright links are not rigid: their joints close freely
+  // ... but never push; the sampled links are of both kinds
+  std::printf("pocket example: %zu upright span samples, lowest %.3g N; flat lowest %.3g N\n",
+              upright_samples, upright_sampled, flat_sampled);
+  EXPECT_GT(upright_samples, 1000u);
+  EXPECT_LT(upright_samples, 2 * xs.size() - 1000u);
+  EXPECT_GE(upright_sampled, 0.0);
 }
 
 TEST(DynamicsPocketCli, ShortRunHasNoMeanErrorAndSaysSo) {
@@ -243,11 +282,12 @@ TEST(DynamicsPocketCli, SparseSamplesGiveNoMeanErrorAndNameTheOutputInterval) {
 }
 
 // A slack span whose mean is near zero against the loop's: no pretension and 800 N m on the
-// driven wheel (measured 5089.7 ± 24.3 N tight, 162.2 ± 16.6 N slack over the 3 periods: the
-// slack span 3.2 % of the tight span's mean). Against the largest span mean the means are settled
-// (0.48 %), no warning; against the slack span's own mean (10 %) the run would have been told to
-// last about 98 s (313 periods), for 17 N of a 5 kN loop. (With the bilateral links, before the
-// tension-only ones: 4997.6 ± 4.6 and 65.3 ± 12.7 N, 355 s.)
+// driven wheel (measured with the flat links rigid 5035.3 ± 12.9 N tight, 102.5 ± 18.4 N slack
+// over the 3 periods: the slack span 2.0 % of the tight span's mean). Against the largest span
+// mean the means are settled (0.37 %), no warning; against the slack span's own mean (18 %) the
+// run would have been told to last far longer, for 18 N of a 5 kN loop (with every round link
+// tension-only: 5089.7 ± 24.3 and 162.2 ± 16.6 N, about 98 s; with the bilateral links
+// everywhere: 4997.6 ± 4.6 and 65.3 ± 12.7 N, 355 s).
 TEST(DynamicsPocketCli, SlackSpanNearZeroDoesNotAskForAnAbsurdDuration) {
   const std::string path = example_with("slack.toml", {{"pretension =", "pretension = \"0 N\""},
                                                        {"load_torque =", "load_torque = 800"}});
@@ -264,14 +304,15 @@ TEST(DynamicsPocketCli, SlackSpanNearZeroDoesNotAskForAnAbsurdDuration) {
             0.01 * std::abs(slack["mean_tension"].get<double>()));
   for (const auto* span : {&tight, &slack})
     EXPECT_LT((*span)["mean_tension_error"].get<double>(), 0.01 * scale);
-  // no means' warning; the one diagnostic is the deep joint's: 0.391 mm into a pocket's wall,
-  // 4.9c from its vertex (not the load's: 4.9 kN / k_c is 49 µm), so within the pocket's capture
-  // of 10c (docs/models/dynamics.md, "Pocket wheel: the body between the pockets"). The warning
-  // says the forces "are not to be trusted" while the means above are pinned to 1 %: the deep
-  // event is a transient in the slack span (a joint with next to no tension landing off its vertex
-  // as it seats), a contact force at one joint for the steps it takes to seat; the means are the
-  // spans' tensions averaged over the 3 whole periods, which that short event's impulse barely
-  // moves, and the tight span's 5 kN is carried by joints seated at their vertices
+  // no means' warning; the one diagnostic is the deep joint's: 0.312 mm into a pocket's wall
+  // (0.391 mm, 4.9c from its vertex, with every round link tension-only; not the load's: 4.9 kN /
+  // k_c is 49 µm), so within the pocket's capture of 10c (docs/models/dynamics.md, "Pocket wheel:
+  // the body between the pockets"). The warning says the forces "are not to be trusted" while the
+  // means above are pinned to 1 %: the deep event is a transient in the slack span (a joint with
+  // next to no tension landing off its vertex as it seats), a contact force at one joint for the
+  // steps it takes to seat; the means are the spans' tensions averaged over the 3 whole periods,
+  // which that short event's impulse barely moves, and the tight span's 5 kN is carried by joints
+  // seated at their vertices
   ASSERT_EQ(j["diagnostics"].size(), 1u) << j["diagnostics"].dump();
   EXPECT_EQ(j["diagnostics"][0]["code"], "dynamics.pocket_penetration_deep");
   EXPECT_GT(j["summary"]["max_penetration"].get<double>(), 1e-4);

@@ -141,10 +141,20 @@ TEST(DynamicsPocketMeansCli, MeansAgreeInTheStepWithinTheirStandardError) {
 TEST(DynamicsPocketMeansCli, ExampleMovesWithAPretensionFarBelowTheTolerance) {
   // the 1 s example and the same with the pretension 1e-9 larger (1 µN): the 3-period means move
   // by more than 1 % (measured 1887.4 → 2341.0 N, 1264.2 → 1720.9 N; with every round link
-  // tension-only 2031.1 → 1904.6 N, 1401.7 → 1282.8 N), of the order of their standard error:
-  // within three of the two samples' combined errors (124.1 and 96.4 N, 121.8 and 92.7 N), each
-  // inflated by 1.5 for the correlation of the periods that 3 periods cannot estimate (the 10 s
-  // runs above measure it: 1.48-1.70). Their difference is 2.9 combined errors uninflated.
+  // tension-only 2031.1 → 1904.6 N, 1401.7 → 1282.8 N), of the order of their scatter: within
+  // three of the two samples' combined errors (124.1 and 96.4 N, 121.8 and 92.7 N), each scaled by
+  // f, the true standard deviation of a 3-period mean over the expected reported error s/√3. With
+  // the periods' lag-1 correlation ρ (AR(1)), Var(mean) = σ²/3 · (1 + 2(2ρ/3 + ρ²/3)) while
+  // E[s²] = σ² (1 − (2ρ + ρ²)/3), and E[s] = c₄ √E[s²] with c₄ = Γ(3/2)/Γ(1) = 0.886 (2 degrees
+  // of freedom). ρ = 0.48, the largest the 10 s runs above measure (0.37-0.48; 3 periods cannot
+  // estimate it): f = 1.72/0.886 = 1.95. Over 41 draws of the example (the pretension changed by
+  // 1-40 µN) the ensemble's standard deviation of the 3-period means was 1.83 × the rms reported
+  // error, inside f. The bound is about 2.5 σ of the move, and the chaotic scatter has heavy tails:
+  // a rounding change on the pocket path can fail it (see dynamics.md, "Pocket wheel: the
+  // example's means").
+  const double rho = 0.48, c4 = std::tgamma(1.5) / std::tgamma(1.0);
+  const double f =
+      std::sqrt((1 + 2 * (2 * rho / 3 + rho * rho / 3)) / (1 - (2 * rho + rho * rho) / 3)) / c4;
   const auto a = dynamics(kExample, "");
   const auto b = dynamics(perturbed_example(), "");
   ASSERT_FALSE(a.is_null() || b.is_null());
@@ -155,7 +165,7 @@ TEST(DynamicsPocketMeansCli, ExampleMovesWithAPretensionFarBelowTheTolerance) {
     EXPECT_GT(std::abs(ma - mb), 0.01 * ma) << key;
     const double combined = std::hypot(a["summary"][key]["mean_tension_error"].get<double>(),
                                        b["summary"][key]["mean_tension_error"].get<double>());
-    EXPECT_LT(std::abs(ma - mb), 3 * 1.5 * combined) << key;
+    EXPECT_LT(std::abs(ma - mb), 3 * f * combined) << key << " f = " << f;
   }
 }
 

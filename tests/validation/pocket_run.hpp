@@ -24,7 +24,8 @@ struct PocketRun {
   int periods = 4;
   int skip_periods = 1;
   // round links carry no compression (Model::links_carry_compression; docs/models/dynamics.md,
-  // "Tension-only links"), as in the command
+  // "Tension-only links"): every link tension-only with no jam, unlike the command, whose flat
+  // links are bilateral (Model::link_bilateral) and whose upright links jam at d
   bool tension_only = true;
   bool rails = true;  // the forced run-on's guide (false: the same strand, unguided)
   // [N] the forced run-on's slack side: the chain's downstream end pulled down (−y), so that it

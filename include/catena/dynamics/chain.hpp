@@ -562,7 +562,11 @@ struct Model {
   /// s = 0, no ε ramps, no jam) while the other parity stays tension-only (docs/models/dynamics.md,
   /// "Tension-only links: the jam", "The flat links"). A round-link chain on a pocket wheel: the
   /// even (t + d) link is one flat link between its own two tips, rigid. Harmless with
-  /// links_carry_compression (every link bilateral already).
+  /// links_carry_compression (every link bilateral already). Parity is the link's index j % 2,
+  /// so on a closed loop of an odd number of links links N − 1 and 0 are both even and the flag
+  /// (as link_jam_length) does not alternate across the seam. Such a loop is refused with
+  /// alternation > 0 (validated: alternation), so a round-link chain's loop (alternation d) is
+  /// even; with alternation 0 the flag is accepted and means the link's index parity only.
   std::array<bool, 2> link_bilateral{false, false};
 
   std::size_t nodes() const { return mass.size(); }
@@ -654,7 +658,8 @@ inline LinkForce link_force(const Model& model, double s, double rate, std::size
   return out;
 }
 
-/// A tension-only link's force over a step (Model::links_discrete_gradient).
+/// A link's force over a step (Model::links_discrete_gradient): a tension-only link's, or a
+/// bilateral link's (Model::bilateral).
 struct LinkStep {
   double tension = 0.0;  ///< [N] T = max(0, T_dg + f_d) (with a jam, see link_step_force)
   double elastic = 0.0;  ///< [N] T_dg, the discrete gradient of E (T − T_dg is the damper's)
@@ -672,7 +677,10 @@ struct LinkStep {
 /// the threshold's |s| is measured from s_j when the step's mean is nearer the jam, and T may
 /// push only on a step that touches the jam's ramp, pull only on one that touches the tension's
 /// (else T = 0). A bilateral link (Model::bilateral(link)): T_dg = k (s₀ + s₁)/2, the quotient of
-/// ½ k s² exactly, and T = T_dg + c (s₁ − s₀)/h, never clamped.
+/// ½ k s² exactly, and T = T_dg + c (s₁ − s₀)/h, never clamped. The integrator does not call it
+/// for a bilateral link: its own bilateral branch at θ = ½ is this force already; the branch
+/// keeps the step law defined for every link the model holds
+/// (tests/dynamics/tension_only_test.cpp).
 LinkStep link_step_force(const Model& model, double s0, double s1, double h, std::size_t link = 0);
 /// What link_step_force reads of the step's start stretch s₀ alone: the energy E(s₀), the
 /// damper's integral C(u₀) (u₀ = s₀ + ε/2) and, with a jam, the jam's C(v₀) (v₀ = s_j − s₀ + ε/2),
