@@ -431,57 +431,57 @@ TEST(DynamicsPocketDiscreteGradient, ResidualOnlyCallsGiveTheSameResidual) {
   EXPECT_EQ(blocks, corrected);
 }
 
-// Where the step's points lie across one of E_k's jumps the correction would be the jump over
-// |Δz|² (kN per µm of step): there the force is the θ point's. A joint leaving over the sharp
-// mouth 3c off its vertex (E jumps from E₀(g) to 0), and one crossing the body's capture (10c
-// from the vertex) 20 µm below the mouth, within its radial band (the pocket's E₀(9c) against the
-// body's blended depth); a step across the capture straight below the vertex, beyond the band
-// (10c) from the mouth (no jump there), is corrected. With the release a joint not held that
-// enters over the mouth 3c off its vertex, from 10 µm above to 20 µm below it, jumps from 0 to
-// E₀(g) S(u) as over the sharp mouth (held, it stays in the pocket's law beyond the mouth: the
-// release's case of the work test). Over the mouth's ramp (w = c) a joint entering 3.5c off its
-// vertex, from 2 µm above the mouth to 2 µm below it, meets the ramp's leftover jump E₀(g)(1 − W):
-// W = 0 from g = 2c on, so the whole E₀(2.54c) — ramp and pocket are one law's pieces there, and
-// the step was corrected with S = jump/|Δz|² before the jump was taken on the energy; 1.2c off
-// (g = 0.3c on the mouth, W = 1: no jump) it is corrected.
-TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheForceIsTheThetaPoints) {
+// Across one of E_k's jumps the jump is taken over the step as the rest of ΔE (a force J/|Δz|
+// along it, up to r = |J| / (|Δz| k c) = 1): the work is −ΔE. A joint leaving over the sharp mouth
+// 3c off its vertex (E jumps from E₀(g) to 0), and one crossing the body's capture (10c from the
+// vertex) 20 µm below the mouth, within its radial band (the pocket's E₀(9c) against the body's
+// blended depth: 39 J, so the wheel turns 0.03 rad over the step, |Δz| ≈ 7 mm, for r < 1); across
+// the capture straight below the vertex, beyond the band (10c) from the mouth (no jump there).
+// With the release a joint not held that enters over the mouth 3c off its vertex, from 10 µm above
+// to 20 µm below it, jumps from 0 to E₀(g) S(u) as over the sharp mouth. Over the mouth's ramp
+// (w = c) a joint entering 3.5c off its vertex, from 2 µm above the mouth to 2 µm below it, meets
+// the ramp's leftover jump E₀(g)(1 − W) (W = 0 from g = 2c on: the whole E₀(2.54c), 3.2 J; the
+// wheel turning 3e-3 rad for r < 1); 1.2c off
+// (g = 0.3c on the mouth, W = 1: no jump). (Before, the steps across a jump above k ε²/6 kept the
+// θ point's force: their work missed ΔE by the jump, 1.4 J and more here.)
+TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheWorkIsTheEnergysChange) {
   Sprocket release_on = wheel8(true), release_off = wheel8(false);
   release_on.pocket_release = release_off.pocket_release = true;
-  const double c = kClearance, psi = 0.4, turn = 1e-3;
+  const double c = kClearance, psi = 0.4;
   struct Across {
     const char* what;
     double along0, below0, along1, below1;
-    bool corrected, release;
+    bool jump, release;
     double mouth;  // the ramp's width w
+    double turn;   // over the step [rad]
   };
   const Across steps[] = {
-      {"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -2e-6, false, false, 0.0},
-      {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, false, false, 0.0},
-      {"capture deep", 0.0, 10.4 * c, 0.0, 10.6 * c, true, false, 0.0},
-      {"the release's mouth, not held", 3.0 * c, -10e-6, 3.0 * c, 20e-6, false, true, 0.0},
-      {"the ramp's leftover", 3.5 * c, -2e-6, 3.5 * c, 2e-6, false, false, c},
-      {"the ramp's mouth near the vertex", 1.2 * c, -2e-6, 1.2 * c, 2e-6, true, false, c}};
+      {"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -2e-6, true, false, 0.0, 1e-3},
+      {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, true, false, 0.0, 0.03},
+      {"capture deep", 0.0, 10.4 * c, 0.0, 10.6 * c, false, false, 0.0, 1e-3},
+      {"the release's mouth, not held", 3.0 * c, -10e-6, 3.0 * c, 20e-6, true, true, 0.0, 1e-3},
+      {"the ramp's leftover", 3.5 * c, -2e-6, 3.5 * c, 2e-6, true, false, c, 3e-3},
+      {"the ramp's mouth near the vertex", 1.2 * c, -2e-6, 1.2 * c, 2e-6, false, false, c, 1e-3}};
   for (const Across& a : steps) {
     Sprocket on = a.release ? release_on : wheel8(true);
     Sprocket off = a.release ? release_off : wheel8(false);
     on.pocket_mouth = off.pocket_mouth = a.mouth;
     const Point p0 = near_vertex(on, psi, 2, a.along0, a.below0);
-    const Point p1 = near_vertex(on, psi + turn, 2, a.along1, a.below1);
-    const SeatContact with = step_contact(on, p0, p1, psi, psi + turn);
-    const SeatContact without = step_contact(off, p0, p1, psi, psi + turn);
-    const double change = energy_at(on, p1, psi + turn) - energy_at(on, p0, psi);
-    std::printf("pocket discrete gradient across %s: dE %.4g J, S %.4g N/m\n", a.what, change,
-                with.skew);
-    if (a.corrected) {
-      EXPECT_NE(with.skew, 0.0) << a.what;
-      const double work = step_work(on, p0, p1, psi, psi + turn, nullptr);
-      EXPECT_LT(std::abs(work + change), 1e-9 * std::abs(change)) << a.what;
-      continue;
+    const Point p1 = near_vertex(on, psi + a.turn, 2, a.along1, a.below1);
+    const SeatContact with = step_contact(on, p0, p1, psi, psi + a.turn);
+    const double change = energy_at(on, p1, psi + a.turn) - energy_at(on, p0, psi);
+    const double work = step_work(on, p0, p1, psi, psi + a.turn, nullptr);
+    const double theta_work = step_work(off, p0, p1, psi, psi + a.turn, nullptr);
+    std::printf(
+        "pocket discrete gradient across %s: dE %.4g J, S %.4g N/m, |work + dE| / |dE| %.2e (the "
+        "theta point's force: %.3g J off)\n",
+        a.what, change, with.skew, std::abs(work + change) / std::abs(change),
+        std::abs(theta_work + change));
+    if (a.jump) {
+      EXPECT_GT(std::abs(change), 1.0) << a.what;  // the jump
     }
-    EXPECT_GT(std::abs(change), 1.0) << a.what;  // the jump
-    EXPECT_EQ(with.skew, 0.0) << a.what;
-    EXPECT_EQ(with.force, without.force) << a.what;
-    EXPECT_EQ(with.torque, without.torque) << a.what;
+    EXPECT_NE(with.skew, 0.0) << a.what;
+    EXPECT_LT(std::abs(work + change), 1e-9 * std::abs(change)) << a.what;
   }
 }
 
@@ -526,64 +526,102 @@ TEST(DynamicsPocketDiscreteGradient, AcrossTheMouthWithinTheClearanceIsCorrected
   EXPECT_GT(theta_best, 1e-2);
 }
 
-// The skip's threshold: a jump of the pocket's law's energy at a gap of one smoothing length ε,
-// k ε²/6 (1.7e-5 J here), or less is corrected, a larger one keeps the θ point's force. On the
-// mouth's ramp (w = c) the leftover jump (1 − W(g)) E₀(g) grows from 0 at g = c: a joint entering
-// from 2 µm above the mouth to 2 µm below it where g = 1.0126c on the mouth meets a jump of
-// 1e-5 J, corrected (its work −ΔE); where g = 1.03c, 1.4e-4 J, the θ point's force bit for bit;
-// and where the jump is 0.9 and 1.1 of the threshold (g found by bisection on the jump measured
-// across the mouth), corrected and kept: the threshold is pinned to within 10 % from both sides.
-// (With no threshold the first fails; the pieces' test corrected both, and the second fails.)
-TEST(DynamicsPocketDiscreteGradient, AJumpBelowTheSmoothingsEnergyIsCorrected) {
-  Sprocket on = wheel8(true), off = wheel8(false);
+// The jump's force is bounded: where r = |J| / (|Δz| k c) passes 1 the step leaves the share
+// s(r) J of the jump to the work balance's numerical term (s a C² step from 0 at r = 1 to 1 at
+// r = 2), so that the correction's force |S| |Δz| stays below 2 k c (2e4 N here) however slow the
+// step. A joint entering radially over the mouth's ramp (w = c) where its leftover jump is 0.9 of
+// k ε²/6 (1.5e-5 J; g found by bisection on the jump measured across the mouth), and one over the
+// sharp mouth 3c off its vertex (2.07 J), from |Δz|/2 above the mouth to |Δz|/2 below it, the
+// wheel held, for |Δz| from 0.4 mm down to 0.4 nm: the work is −ΔE to rounding while r ≤ 1, and
+// the force below 2 k c at every |Δz|. (With the threshold at k ε²/6 the ramp's jump was corrected
+// in full, J/|Δz| = 3.7e4 N at |Δz| = 0.4 nm; the sharp mouth's kept the θ point's force.)
+TEST(DynamicsPocketDiscreteGradient, ASlowCrossingsJumpForceIsBounded) {
+  Sprocket ramp = wheel8(true);
+  const Sprocket sharp = wheel8(true);
   const double c = kClearance, psi = 0.4;
-  on.pocket_mouth = off.pocket_mouth = c;
-  const double eps = on.contact_smoothing, threshold = kStiffness * eps * eps / 6.0;
+  ramp.pocket_mouth = c;
+  const double eps = ramp.contact_smoothing, small = kStiffness * eps * eps / 6.0;
+  const double bound = 2.0 * kStiffness * c;
   // off the vertex so that g = (1 + x) c on the mouth: |e| = (2 + x) c, c/2 below it radially
   auto along_of = [&](double x) { return std::sqrt((2.0 + x) * (2.0 + x) - 0.25) * c; };
   auto jump_at = [&](double x) {
     const double along = along_of(x);
-    return energy_at(on, near_vertex(on, psi, 2, along, 1e-12), psi) -
-           energy_at(on, near_vertex(on, psi, 2, along, -1e-12), psi);
+    return energy_at(ramp, near_vertex(ramp, psi, 2, along, 1e-12), psi) -
+           energy_at(ramp, near_vertex(ramp, psi, 2, along, -1e-12), psi);
   };
-  // x where the jump is `share` of the threshold (the jump grows with x over [0.0126, 0.03])
-  auto x_for = [&](double share) {
-    double lo = 0.0126, hi = 0.03;
-    for (int it = 0; it < 60; ++it) {
-      const double m = 0.5 * (lo + hi);
-      (jump_at(m) < share * threshold ? lo : hi) = m;
-    }
-    return 0.5 * (lo + hi);
+  double lo = 0.0126, hi = 0.03;  // the jump grows with x over [0.0126, 0.03]
+  for (int it = 0; it < 60; ++it) {
+    const double m = 0.5 * (lo + hi);
+    (jump_at(m) < 0.9 * small ? lo : hi) = m;
+  }
+  struct Across {
+    const char* what;
+    const Sprocket* w;
+    double along;
   };
-  for (const double x : {0.0126, x_for(0.9), x_for(1.1), 0.03}) {
-    const double along = along_of(x), jump = jump_at(x);
-    const bool small = jump < threshold;
-    if (small) {
-      ASSERT_GT(jump, 0.3 * threshold);
-      ASSERT_LT(jump, 0.91 * threshold);
-    } else {
-      ASSERT_GT(jump, 1.09 * threshold);
-    }
-    for (const double turn : {0.0, 1e-3}) {
-      const Point p0 = near_vertex(on, psi, 2, along, -2e-6);
-      const Point p1 = near_vertex(on, psi + turn, 2, along, 2e-6);
-      const SeatContact with = step_contact(on, p0, p1, psi, psi + turn);
-      const SeatContact without = step_contact(off, p0, p1, psi, psi + turn);
-      const double change = energy_at(on, p1, psi + turn) - energy_at(on, p0, psi);
-      std::printf(
-          "pocket discrete gradient across the ramp's jump %.3g J (threshold %.3g J), "
-          "turn %g: dE %.4g J, S %.4g N/m\n",
-          jump, threshold, turn, change, with.skew);
-      if (small) {
-        EXPECT_NE(with.skew, 0.0) << x << " turn " << turn;
-        const double work = step_work(on, p0, p1, psi, psi + turn, nullptr);
-        EXPECT_LT(std::abs(work + change), 1e-9 * std::abs(change)) << x << " turn " << turn;
-      } else {
-        EXPECT_EQ(with.skew, 0.0) << x << " turn " << turn;
-        EXPECT_EQ(with.force, without.force) << x << " turn " << turn;
-        EXPECT_EQ(with.torque, without.torque) << x << " turn " << turn;
+  const Across cases[] = {{"the ramp's leftover", &ramp, along_of(0.5 * (lo + hi))},
+                          {"the sharp mouth", &sharp, 3.0 * c}};
+  for (const Across& a : cases) {
+    const double jump = std::abs(energy_at(*a.w, near_vertex(*a.w, psi, 2, a.along, 1e-12), psi) -
+                                 energy_at(*a.w, near_vertex(*a.w, psi, 2, a.along, -1e-12), psi));
+    ASSERT_GT(jump, 0.0) << a.what;
+    double largest = 0.0;
+    for (double dz = 4e-4; dz > 3e-10; dz *= 0.1) {
+      const Point p0 = near_vertex(*a.w, psi, 2, a.along, -0.5 * dz);
+      const Point p1 = near_vertex(*a.w, psi, 2, a.along, 0.5 * dz);
+      const SeatContact with = step_contact(*a.w, p0, p1, psi, psi);
+      const double force = std::abs(with.skew) * dz;
+      largest = std::max(largest, force);
+      EXPECT_LT(force, bound) << a.what << " |dz| " << dz;
+      if (jump / (dz * kStiffness * c) <= 1.0) {
+        const double change = energy_at(*a.w, p1, psi) - energy_at(*a.w, p0, psi);
+        const double work = step_work(*a.w, p0, p1, psi, psi, nullptr);
+        EXPECT_LT(std::abs(work + change), 1e-9 * std::abs(change)) << a.what << " |dz| " << dz;
       }
     }
+    std::printf(
+        "pocket discrete gradient across %s (jump %.3g J) from |dz| 0.4 mm to 0.4 nm: the "
+        "correction's force at most %.4g N (bound 2 k c = %.3g N)\n",
+        a.what, jump, largest, bound);
+  }
+}
+
+// The correction's derivatives across a jump where its rule is smooth (r ≤ 1: the jump taken in
+// full): ∂S/∂x₁, ∂S/∂ψ₁ against central differences of S over the step's end (the θ point moving
+// with it), for a joint leaving over the sharp mouth 3c off its vertex and one crossing the
+// capture near the mouth (the wheel turning 1e-3 and 0.03 rad over the step).
+TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheCorrectionsSlopeMatchesTheDifferences) {
+  const Sprocket on = wheel8(true);
+  const double c = kClearance, psi = 0.4;
+  struct Across {
+    const char* what;
+    double along0, below0, along1, below1, turn;
+  };
+  const Across steps[] = {{"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -2e-6, 1e-3},
+                          {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, 0.03}};
+  for (const Across& a : steps) {
+    const Point p0 = near_vertex(on, psi, 2, a.along0, a.below0);
+    const Point p1 = near_vertex(on, psi + a.turn, 2, a.along1, a.below1);
+    const double psi1 = psi + a.turn;
+    const SeatContact with = step_contact(on, p0, p1, psi, psi1);
+    ASSERT_NE(with.skew, 0.0) << a.what;
+    const double hx = 1e-10, hp = 1e-10 / on.pitch_radius;
+    const double fx = (step_contact(on, p0, {p1.x + hx, p1.y}, psi, psi1).skew -
+                       step_contact(on, p0, {p1.x - hx, p1.y}, psi, psi1).skew) /
+                      (2.0 * hx);
+    const double fy = (step_contact(on, p0, {p1.x, p1.y + hx}, psi, psi1).skew -
+                       step_contact(on, p0, {p1.x, p1.y - hx}, psi, psi1).skew) /
+                      (2.0 * hx);
+    const double fp = (step_contact(on, p0, p1, psi, psi1 + hp).skew -
+                       step_contact(on, p0, p1, psi, psi1 - hp).skew) /
+                      (2.0 * hp);
+    const double scale = std::hypot(fx, fy, fp / on.pitch_radius);
+    const double miss =
+        std::hypot(with.skew_dx - fx, with.skew_dy - fy, (with.skew_dpsi - fp) / on.pitch_radius);
+    std::printf(
+        "pocket discrete gradient across %s: S %.4g N/m, |dS - FD| / |FD| %.2e (|FD| %.3g)\n",
+        a.what, with.skew, miss / scale, scale);
+    EXPECT_LT(miss, 1e-5 * scale) << a.what;
   }
 }
 
@@ -710,7 +748,9 @@ TEST(DynamicsPocketDiscreteGradient, ACrossingWithNoJumpIsCorrectedAtAnySmoothin
 // reach of `from` (max(θ, 1 − θ) (|Δq| + R |Δψ|)): a held wheel's joint 20 µm below the mouth
 // from 9.82c to 10.02c off its vertex, its θ point 0.75 of the reach short of `from` = 10c
 // and its end across it, where the pocket's energy jumps to the body's: the θ point's force is
-// kept bit for bit (with the capture sought only within 0.6 of the reach, it is corrected).
+// left out of the correction (r = |J| / (|Δz| k c) ≫ 2 on this 20 µm step: the share left is the
+// whole jump, and S |Δz|² is the continuous part's 0.2 J against ΔE = 39 J); with the capture
+// sought only within 0.6 of the reach, the jump is not seen and S |Δz|² is all of ΔE.
 TEST(DynamicsPocketDiscreteGradient, CaptureIsSoughtWithinThePathsReachOfTheThetaPoint) {
   const Sprocket on = wheel8(true), off = wheel8(false);
   const double c = kClearance, psi = 0.4, from = 10.0 * c;
@@ -732,9 +772,9 @@ TEST(DynamicsPocketDiscreteGradient, CaptureIsSoughtWithinThePathsReachOfTheThet
       "it: dE %.4g J, S %.4g N/m\n",
       (from - dist(pt)) / reach, change, with.skew);
   EXPECT_GT(std::abs(change), 1.0);  // the jump
-  EXPECT_EQ(with.skew, 0.0);
+  const double den = (p1.x - p0.x) * (p1.x - p0.x) + (p1.y - p0.y) * (p1.y - p0.y);
+  EXPECT_LT(std::abs(with.skew) * den, 0.05 * std::abs(change));
   EXPECT_EQ(with.force, without.force);
-  EXPECT_EQ(with.torque, without.torque);
 }
 
 // A link's two joints falling radially onto a driven pocket wheel at `inward` [m/s], the leading
@@ -927,7 +967,7 @@ TEST(DynamicsPocketDiscreteGradient, NewtonMatrixMatchesTheResidualsDifferences)
 // strands' ends pulled by constant forces, h = 0.1 ms over `steps` steps. The work balance: the
 // driver's work Σ −τ Δψ against the change of the energy (kinetic, links', contacts', the end
 // forces' potential). The mouth's ramp `mouth` (0: the sharp mouth, E's jump where a joint leaves
-// across it).
+// across it, taken over the step as the rest of ΔE).
 struct WrapRun {
   double kinetic0 = 0.0, worst = 0.0;
   int steps = 0;  // completed
@@ -969,6 +1009,10 @@ TEST(DynamicsPocketDiscreteGradient, WrapAtThetaHalfKeepsItsWorkBalance) {
   EXPECT_EQ(kept.steps, steps);
   EXPECT_LT(kept.worst, 1e-6 * kept.kinetic0);
   EXPECT_TRUE(theta.steps < steps || theta.worst > 100.0 * kept.worst);
+  // the sharp mouth's exits: their jumps taken over the step (9.8e-3 when they kept the θ point's
+  // force)
+  EXPECT_EQ(sharp.steps, steps);
+  EXPECT_LT(sharp.worst, 1e-6 * sharp.kinetic0);
 }
 
 }  // namespace

@@ -569,9 +569,10 @@ Slope slope_along(const Sprocket& w, const Capture& cap, const Path& p, double t
 
 // The jump of E_k on the surface f(t) = 0 (f > 0 on its outer side) where the step's two ends lie
 // on its opposite sides (else 0: E at both ends is then one continuous branch's, and a dip across
-// the surface and back, which ΔE never sees, needs no skip): the crossing bracketed by bisection
-// to [a, b], b − a ≤ `span`, and each side's E, taken a `span` beyond the bracket, carried to the
-// bracket's middle m along its own slope, |E(b⁺) − E'(b⁺)(b⁺ − m) − E(a⁻) − E'(a⁻)(m − a⁻)|. The
+// the surface and back, which ΔE never sees, needs no share of its own): the crossing bracketed by
+// bisection to [a, b], b − a ≤ `span`, and each side's E, taken a `span` beyond the bracket,
+// carried to the bracket's middle m along its own slope, E(b⁺) − E'(b⁺)(b⁺ − m) − E(a⁻) −
+// E'(a⁻)(m − a⁻), signed as the path crosses (from the start's side to the end's). The
 // continuous part's share is then E''s over the 3 spans (and a jump of the slope alone over half
 // a span), not |∇E| over 3 spans: a crossing with no jump reads as none at any c and ε.
 template <class Side>
@@ -586,31 +587,41 @@ double jump_on(const Sprocket& w, const Capture& cap, const Path& p, int k, int 
   }
   const double ta = std::max(0.0, a - span), tb = std::min(1.0, b + span), m = 0.5 * (a + b);
   const Slope ea = slope_along(w, cap, p, ta, k, hk), eb = slope_along(w, cap, p, tb, k, hk);
-  return std::abs(eb.e - eb.de * (tb - m) - ea.e - ea.de * (m - ta));
+  return eb.e - eb.de * (tb - m) - ea.e - ea.de * (m - ta);
 }
 
-// The size of E_k's jumps the step crosses end to end: the mouth's circle's and the capture's,
+// The jumps a step crosses end to end: their sum as ΔE holds it (signed) and their sizes' sum
+struct Jumps {
+  double sum = 0.0, size = 0.0;
+  void add(double j) {
+    sum += j;
+    size += std::abs(j);
+  }
+};
+
+// E_k's jumps the step crosses end to end: the mouth's circle's and the capture's,
 // each where the ends lie on its opposite sides, bracketed to 1e-9 c of the path (the mouth, a
 // convex disc, is then crossed once; the capture an odd number of times, of which bisection finds
 // one). `dist` the θ point's |q − C_k| if known (else < 0): |q − C_k| moves by at most
 // |Δq| + R |Δψ| over the path, so the capture is sought only where that reaches `from` from it.
-double crossed_jump(const Sprocket& w, const Capture& cap, const Path& p, int k, int hk,
-                    double dist) {
+Jumps crossed_jump(const Sprocket& w, const Capture& cap, const Path& p, int k, int hk,
+                   double dist) {
   const double r = w.pitch_radius, mouth = r + 0.5 * w.pocket_clearance;
   const double len = std::hypot(p.dx, p.dy) + r * std::abs(p.dpsi);  // ≥ the points' |dz/dt|
   const double span = 1e-9 * w.pocket_clearance / len;
-  double sum = jump_on(w, cap, p, k, hk, span, [&](double t) {
+  Jumps sum;
+  sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) {
     const double x = p.q0x + t * p.dx, y = p.q0y + t * p.dy;
     return x * x + y * y > mouth * mouth;
-  });
+  }));
   const double from = cap.from;
   const double reach = std::max(p.theta, 1.0 - p.theta) * len + 1e-9 * w.pocket_clearance;
   if (w.pocket_body && (dist < 0.0 || std::abs(dist - from) <= reach))
-    sum += jump_on(w, cap, p, k, hk, span, [&](double t) {
+    sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) {
       const double a = vertex_angle(w, k, p.psi0 + t * p.dpsi);
       return std::hypot(p.q0x + t * p.dx - r * std::cos(a), p.q0y + t * p.dy - r * std::sin(a)) >
              from;
-    });
+    }));
   return sum;
 }
 
@@ -666,12 +677,17 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   const double gpsi = et.active ? -et.torque : 0.0;
   const double mismatch = en1 - en0 - (gx * dx + gy * dy) - gpsi * dpsi;
   if (!(en0 > 0.0 || en1 > 0.0 || et.active)) return c;  // E_k = 0 at all three
-  // across jumps of E_k larger than the pocket's law's energy at a gap of one smoothing length ε
-  // the θ point's force alone (the correction would be the jump over |Δz|²: docs)
+  // the jumps of E_k the step crosses, J, are taken over it as the rest of ΔE is, a force J/|Δz|
+  // along the step, up to r = |J| / (|Δz| k c) = 1 (k c the pocket law's force at a depth of one
+  // clearance); from r = 1 to 2 a C² step s(r) leaves the share s J of it to the work balance's
+  // numerical term (all of it from r = 2 on), so that the jump's force stays below 2 k c on a
+  // slow step and no threshold switches it (docs)
   const Path path{q0x, q0y, dx, dy, step.angle0, dpsi, step.theta};
   const double dist = free ? -1.0 : std::hypot(x - sx, y - sy);
-  if (crossed_jump(w, cap, path, k, hk, dist) > elastic(w, w.contact_smoothing).energy) return c;
-  const double cc = mismatch / den;
+  const Jumps jumps = crossed_jump(w, cap, path, k, hk, dist);
+  const double ratio = jumps.size / (std::sqrt(den) * w.contact_stiffness * w.pocket_clearance);
+  const Step left = smooth_step(ratio, 1.0, 2.0);
+  const double cc = (mismatch - left.s * jumps.sum) / den;
   // the damper's clamp: where the θ point's force is 0 its blocks are 0 (only the correction's)
   if (!c.active) {
     c = SeatContact{};
@@ -701,9 +717,12 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   const double th = step.theta;
   const double f1x = e1.active ? e1.force * e1.nx : 0.0, f1y = e1.active ? e1.force * e1.ny : 0.0;
   const double f1psi = e1.active ? -e1.torque : 0.0;
-  const double mx = f1x - gx - th * (hq[0] * dx + hq[1] * dy + ax * dpsi);
-  const double my = f1y - gy - th * (hq[2] * dx + hq[3] * dy + ay * dpsi);
-  const double mpsi = f1psi - gpsi - th * (ax * dx + ay * dy + hpp * dpsi);
+  // and the share left, s(r) J, by r ∝ 1/|Δz| (J's own change with the crossing's place is not
+  // taken: exact for r ≤ 1, where no share is left, quasi-Newton beyond)
+  const double dleft = left.ds * jumps.sum * ratio / den;
+  const double mx = f1x - gx - th * (hq[0] * dx + hq[1] * dy + ax * dpsi) + dleft * dx;
+  const double my = f1y - gy - th * (hq[2] * dx + hq[3] * dy + ay * dpsi) + dleft * dy;
+  const double mpsi = f1psi - gpsi - th * (ax * dx + ay * dy + hpp * dpsi) + dleft * r2 * dpsi;
   c.skew_dx = (mx - 2.0 * cc * dx) / den;
   c.skew_dy = (my - 2.0 * cc * dy) / den;
   c.skew_dpsi = (mpsi - 2.0 * cc * r2 * dpsi) / den;
