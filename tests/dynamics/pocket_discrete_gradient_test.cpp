@@ -48,6 +48,23 @@ double energy_at(const Sprocket& w, Point q, double angle, int held = kNoPocket)
   return pocket_contact(w, q.x, q.y, 0.0, 0.0, angle, 0.0, held).energy;
 }
 
+// Ẽ, the energy the discrete gradient takes (docs/models/dynamics.md, "Pocket wheel: the discrete
+// gradient", "The mouth's band"): within c/2 inside the mouth, E less (1 − φ) of E's jump on the
+// mouth along the point's ray (1e-14 m either side), φ = x³(10 − 15x + 6x²), x the depth below
+// the mouth over c/2; E elsewhere
+double banded_at(const Sprocket& w, Point q, double angle, int held = kNoPocket) {
+  const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance;
+  const double rx = q.x - w.centre_x, ry = q.y - w.centre_y, rho = std::hypot(rx, ry);
+  const double x = (mouth - rho) / (0.5 * w.pocket_clearance);
+  const double e = energy_at(w, q, angle, held);
+  if (!(x >= 0.0 && x < 1.0)) return e;
+  auto on = [&](double d) {
+    const double a = (mouth + d) / rho;
+    return energy_at(w, {w.centre_x + a * rx, w.centre_y + a * ry}, angle, held);
+  };
+  return e - (1.0 - x * x * x * (10.0 - 15.0 * x + 6.0 * x * x)) * (on(-1e-14) - on(1e-14));
+}
+
 // The step p0 → p1 with the wheel turning ψ₀ → ψ₁ about its centre, which stays put, at θ
 PocketStep step_over(const Sprocket& w, Point p0, Point p1, double psi0, double psi1,
                      double theta) {
@@ -431,19 +448,19 @@ TEST(DynamicsPocketDiscreteGradient, ResidualOnlyCallsGiveTheSameResidual) {
   EXPECT_EQ(blocks, corrected);
 }
 
-// Across one of E_k's jumps the jump is taken over the step as the rest of ΔE (a force J/|Δz|
-// along it, up to r = |J| / (|Δz| k c) = 1): the work is −ΔE. A joint leaving over the sharp mouth
-// 3c off its vertex (E jumps from E₀(g) to 0), and one crossing the body's capture (10c from the
-// vertex) 20 µm below the mouth, within its radial band (the pocket's E₀(9c) against the body's
-// blended depth: 39 J, so the wheel turns 0.03 rad over the step, |Δz| ≈ 7 mm, for r < 1); across
-// the capture straight below the vertex, beyond the band (10c) from the mouth (no jump there).
-// With the release a joint not held that enters over the mouth 3c off its vertex, from 10 µm above
-// to 20 µm below it, jumps from 0 to E₀(g) S(u) as over the sharp mouth. Over the mouth's ramp
+// Across one of E_k's jumps the work is −ΔẼ, Ẽ the energy the step takes (banded_at): the
+// mouth's jump spread over its band, the capture's taken over the step as the rest of ΔẼ (a force
+// J/|Δz| along it, up to r = |J| / (|Δz| k c) = 1). A joint leaving over the sharp mouth 3c off
+// its vertex (E jumps from E₀(g) to 0), and one crossing the body's capture (10c from the vertex)
+// 20 µm below the mouth, within its radial band (the pocket's E₀(9c) against the body's blended
+// depth, 39 J; the wheel turning 0.03 rad over the step, |Δz| ≈ 7 mm, for r < 1); across the
+// capture straight below the vertex, beyond the band (10c) from the mouth (no jump there). With
+// the release a joint not held that enters over the mouth 3c off its vertex, from 10 µm above to
+// 20 µm below it, jumps from 0 to E₀(g) S(u) as over the sharp mouth. Over the mouth's ramp
 // (w = c) a joint entering 3.5c off its vertex, from 2 µm above the mouth to 2 µm below it, meets
-// the ramp's leftover jump E₀(g)(1 − W) (W = 0 from g = 2c on: the whole E₀(2.54c), 3.2 J; the
-// wheel turning 3e-3 rad for r < 1); 1.2c off
-// (g = 0.3c on the mouth, W = 1: no jump). (Before, the steps across a jump above k ε²/6 kept the
-// θ point's force: their work missed ΔE by the jump, 1.4 J and more here.)
+// the ramp's leftover jump E₀(g)(1 − W) (W = 0 from g = 2c on: the whole E₀(2.54c), 3.2 J); 1.2c
+// off (g = 0.3c on the mouth, W = 1: no jump). (Before, the steps across a jump above k ε²/6 kept
+// the θ point's force: their work missed ΔE by the jump, 1.4 J and more here.)
 TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheWorkIsTheEnergysChange) {
   Sprocket release_on = wheel8(true), release_off = wheel8(false);
   release_on.pocket_release = release_off.pocket_release = true;
@@ -460,7 +477,7 @@ TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheWorkIsTheEnergysChange) {
       {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, true, false, 0.0, 0.03},
       {"capture deep", 0.0, 10.4 * c, 0.0, 10.6 * c, false, false, 0.0, 1e-3},
       {"the release's mouth, not held", 3.0 * c, -10e-6, 3.0 * c, 20e-6, true, true, 0.0, 1e-3},
-      {"the ramp's leftover", 3.5 * c, -2e-6, 3.5 * c, 2e-6, true, false, c, 3e-3},
+      {"the ramp's leftover", 3.5 * c, -2e-6, 3.5 * c, 2e-6, true, false, c, 1e-3},
       {"the ramp's mouth near the vertex", 1.2 * c, -2e-6, 1.2 * c, 2e-6, false, false, c, 1e-3}};
   for (const Across& a : steps) {
     Sprocket on = a.release ? release_on : wheel8(true);
@@ -470,18 +487,18 @@ TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheWorkIsTheEnergysChange) {
     const Point p1 = near_vertex(on, psi + a.turn, 2, a.along1, a.below1);
     const SeatContact with = step_contact(on, p0, p1, psi, psi + a.turn);
     const double change = energy_at(on, p1, psi + a.turn) - energy_at(on, p0, psi);
+    const double banded = banded_at(on, p1, psi + a.turn) - banded_at(on, p0, psi);
     const double work = step_work(on, p0, p1, psi, psi + a.turn, nullptr);
     const double theta_work = step_work(off, p0, p1, psi, psi + a.turn, nullptr);
     std::printf(
-        "pocket discrete gradient across %s: dE %.4g J, S %.4g N/m, |work + dE| / |dE| %.2e (the "
-        "theta point's force: %.3g J off)\n",
-        a.what, change, with.skew, std::abs(work + change) / std::abs(change),
-        std::abs(theta_work + change));
+        "pocket discrete gradient across %s: dE %.4g J, dE~ %.4g J, S %.4g N/m, |work + dE~| "
+        "%.2e J (the theta point's force: %.3g J off)\n",
+        a.what, change, banded, with.skew, std::abs(work + banded), std::abs(theta_work + banded));
     if (a.jump) {
       EXPECT_GT(std::abs(change), 1.0) << a.what;  // the jump
     }
     EXPECT_NE(with.skew, 0.0) << a.what;
-    EXPECT_LT(std::abs(work + change), 1e-9 * std::abs(change)) << a.what;
+    EXPECT_LT(std::abs(work + banded), 1e-8 * std::abs(change)) << a.what;
   }
 }
 
@@ -526,22 +543,22 @@ TEST(DynamicsPocketDiscreteGradient, AcrossTheMouthWithinTheClearanceIsCorrected
   EXPECT_GT(theta_best, 1e-2);
 }
 
-// The jump's force is bounded: where r = |J| / (|Δz| k c) passes 1 the step leaves the share
-// s(r) J of the jump to the work balance's numerical term (s a C² step from 0 at r = 1 to 1 at
-// r = 2), so that the correction's force |S| |Δz| stays below 2 k c (2e4 N here) however slow the
-// step. A joint entering radially over the mouth's ramp (w = c) where its leftover jump is 0.9 of
-// k ε²/6 (1.5e-5 J; g found by bisection on the jump measured across the mouth), and one over the
-// sharp mouth 3c off its vertex (2.07 J), from |Δz|/2 above the mouth to |Δz|/2 below it, the
-// wheel held, for |Δz| from 0.4 mm down to 0.4 nm: the work is −ΔE to rounding while r ≤ 1, and
-// the force below 2 k c at every |Δz|. (With the threshold at k ε²/6 the ramp's jump was corrected
-// in full, J/|Δz| = 3.7e4 N at |Δz| = 0.4 nm; the sharp mouth's kept the θ point's force.)
-TEST(DynamicsPocketDiscreteGradient, ASlowCrossingsJumpForceIsBounded) {
+// A slow crossing of the mouth: its jump is spread over the band (Ẽ continuous there), so the
+// correction's force does not grow as the step shrinks — at most the band's steepest, 1.875 |J|/ℓ
+// (ℓ = c/2), with the capture's share bound 2 k c — and the work is −ΔẼ at every |Δz|. A joint
+// entering radially over the mouth's ramp (w = c) where its leftover jump is 0.9 of k ε²/6
+// (1.5e-5 J; g found by bisection on the jump measured across the mouth), and one over the sharp
+// mouth 3c off its vertex (2.07 J), from |Δz|/2 above the mouth to |Δz|/2 below it, the wheel
+// held, for |Δz| from 0.4 mm down to 0.4 nm. (With the threshold at k ε²/6 the ramp's jump was
+// corrected in full, J/|Δz| = 3.7e4 N at |Δz| = 0.4 nm; with the jump taken over the step and a
+// share of it left from r = |J|/(|Δz| k c) = 1 on, 5151 N, the work missing ΔẼ by up to J.)
+TEST(DynamicsPocketDiscreteGradient, ASlowCrossingOfTheMouthsBandIsBoundedAndExact) {
   Sprocket ramp = wheel8(true);
   const Sprocket sharp = wheel8(true);
   const double c = kClearance, psi = 0.4;
   ramp.pocket_mouth = c;
   const double eps = ramp.contact_smoothing, small = kStiffness * eps * eps / 6.0;
-  const double bound = 2.0 * kStiffness * c;
+  const double spread = 1.875 / (0.5 * c), bound = 2.0 * kStiffness * c;
   // off the vertex so that g = (1 + x) c on the mouth: |e| = (2 + x) c, c/2 below it radially
   auto along_of = [&](double x) { return std::sqrt((2.0 + x) * (2.0 + x) - 0.25) * c; };
   auto jump_at = [&](double x) {
@@ -572,17 +589,16 @@ TEST(DynamicsPocketDiscreteGradient, ASlowCrossingsJumpForceIsBounded) {
       const SeatContact with = step_contact(*a.w, p0, p1, psi, psi);
       const double force = std::abs(with.skew) * dz;
       largest = std::max(largest, force);
-      EXPECT_LT(force, bound) << a.what << " |dz| " << dz;
-      if (jump / (dz * kStiffness * c) <= 1.0) {
-        const double change = energy_at(*a.w, p1, psi) - energy_at(*a.w, p0, psi);
-        const double work = step_work(*a.w, p0, p1, psi, psi, nullptr);
-        EXPECT_LT(std::abs(work + change), 1e-9 * std::abs(change)) << a.what << " |dz| " << dz;
-      }
+      EXPECT_LT(force, spread * jump + bound) << a.what << " |dz| " << dz;
+      const double change = banded_at(*a.w, p1, psi) - banded_at(*a.w, p0, psi);
+      const double work = step_work(*a.w, p0, p1, psi, psi, nullptr);
+      EXPECT_LT(std::abs(work + change), 1e-9 + 1e-9 * std::abs(change))
+          << a.what << " |dz| " << dz;
     }
     std::printf(
         "pocket discrete gradient across %s (jump %.3g J) from |dz| 0.4 mm to 0.4 nm: the "
-        "correction's force at most %.4g N (bound 2 k c = %.3g N)\n",
-        a.what, jump, largest, bound);
+        "correction's force at most %.4g N (bound 1.875 J/l + 2 k c = %.4g N)\n",
+        a.what, jump, largest, spread * jump + bound);
   }
 }
 
@@ -1009,10 +1025,11 @@ TEST(DynamicsPocketDiscreteGradient, WrapAtThetaHalfKeepsItsWorkBalance) {
   EXPECT_EQ(kept.steps, steps);
   EXPECT_LT(kept.worst, 1e-6 * kept.kinetic0);
   EXPECT_TRUE(theta.steps < steps || theta.worst > 100.0 * kept.worst);
-  // the sharp mouth's exits: their jumps taken over the step (9.8e-3 when they kept the θ point's
-  // force)
+  // the sharp mouth's exits: their jumps spread over the mouth's band, the balance off by the
+  // band's share of the joints within it at the time (2.5e-3 of the kinetic; 9.8e-3 when the
+  // steps across kept the θ point's force, the jumps adding up)
   EXPECT_EQ(sharp.steps, steps);
-  EXPECT_LT(sharp.worst, 1e-6 * sharp.kinetic0);
+  EXPECT_LT(sharp.worst, 4e-3 * sharp.kinetic0);
 }
 
 }  // namespace

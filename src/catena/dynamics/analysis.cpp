@@ -2974,9 +2974,9 @@ Result run(const analysis::Inputs& in) {
                                "(docs/models/dynamics.md)"
         : d.pocket
             ? " < 0.6: with discrete_gradient = true the pockets' and the links' force is "
-              "taken over the step, the sharp mouth's energy jumps too, but a step that cannot "
-              "pay a jump into a pocket has no solution: pocket-wheel runs below 0.6 may stop "
-              "(docs/models/dynamics.md, \"Pocket wheel: the discrete gradient\")"
+              "taken over the step, and the pockets' energy jumps too (the mouth's spread over "
+              "a band), but pocket-wheel runs below 0.6 may stop (docs/models/dynamics.md, "
+              "\"Pocket wheel: the discrete gradient\")"
             : " < 0.6: with discrete_gradient = true drives with roller-seat contact, damped or "
               "not, keep their work balance down to 0.5 (the seats' elastic force and damper "
               "taken over the step; docs/models/dynamics.md, \"Sprockets: the discrete "

@@ -486,7 +486,8 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
 
 // The pocket's discrete gradient (docs/models/dynamics.md, "Pocket wheel: the discrete
 // gradient"), a block of its own: the θ point's contact, and the elastic energy E_k of its pocket
-// k at the step's ends, put back along the step z = (q − O, R ψ) in the metric (1, R²).
+// k at the step's ends (Ẽ_k, the mouth's jump spread over its band), put back along the step
+// z = (q − O, R ψ) in the metric (1, R²).
 namespace {
 // A step's end q (relative to the wheel's centre there, put about w's centre) for pocket k
 // (held: hk ≠ kNoPocket) with the wheel at `angle`: the point, where it is, whether it is free of
@@ -515,8 +516,42 @@ double energy_of(const Sprocket& w, const Capture& cap, const End& e, int k) {
   return c.active ? c.energy : 0.0;
 }
 
+// The mouth's jump spread over a band (docs/models/dynamics.md, "Pocket wheel: the discrete
+// gradient", "The mouth's band"): the energy the step takes at its ends, Ẽ_k = E_k − (1 − φ) J
+// within ℓ = c/2 inside the mouth ρ = R + c/2, φ the C² step from 0 on the mouth to 1 at depth ℓ
+// (the pitch circle), J = E_k's jump on the mouth on the end's radial ray (each side 1e-9 c off,
+// carried to the mouth along its radial slope): Ẽ_k is E_k's outer side's on the mouth, so it has
+// no jump there, and E_k itself from ℓ in. With Ẽ's ∇_q of the band's weight, −φ′ J q/ρ (not J's
+// own slope along the mouth: quasi-Newton within the band).
+struct Banded {
+  double e = 0.0, gx = 0.0, gy = 0.0;
+};
+Banded banded_energy(const Sprocket& w, const Capture& cap, double qx, double qy, double angle,
+                     int k, int hk) {
+  Banded b{energy_of(w, cap, end_of(w, qx, qy, angle, k, hk), k)};
+  const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance, band = 0.5 * w.pocket_clearance;
+  const double rho = std::hypot(qx, qy);
+  if (!(rho <= mouth && rho > mouth - band)) return b;
+  // each side's E and radial slope 1e-9 c off the mouth, carried to it (as jump_on does)
+  const double del = 1e-9 * w.pocket_clearance;
+  auto side = [&](double at) {
+    const End e = end_of(w, qx * at / rho, qy * at / rho, angle, k, hk);
+    if (e.free) return 0.0;
+    const SeatContact c =
+        contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kForce);
+    if (!c.active) return 0.0;
+    return c.energy + (mouth - at) * c.force * (c.nx * qx + c.ny * qy) / rho;
+  };
+  const double jump = side(mouth - del) - side(mouth + del);
+  const Step phi = smooth_step(mouth - rho, 0.0, band);
+  b.e -= (1.0 - phi.s) * jump;
+  b.gx = -phi.ds * jump * qx / rho;
+  b.gy = -phi.ds * jump * qy / rho;
+  return b;
+}
+
 // The step's start for pocket k (held: hk ≠ kNoPocket) from the memo `m`, taken afresh there
-// unless it holds this start, wheel's centre, pocket and hold: its energy E_k. The start does not
+// unless it holds this start, wheel's centre, pocket and hold: its energy Ẽ_k. The start does not
 // move within a step, so the integrator's Newton iterations take it once a step, unless the θ
 // point's pocket changes.
 const PocketStart& step_start(const Sprocket& w, const Capture& cap, const PocketStep& step, int k,
@@ -537,34 +572,38 @@ const PocketStart& step_start(const Sprocket& w, const Capture& cap, const Pocke
                   .centre_y = w.centre_y,
                   .pocket = k,
                   .held = hk};
-  m.energy =
-      energy_of(w, cap, end_of(w, step.x0 - step.cx0, step.y0 - step.cy0, step.angle0, k, hk), k);
+  m.energy = banded_energy(w, cap, step.x0 - step.cx0, step.y0 - step.cy0, step.angle0, k, hk).e;
   return m;
 }
 
 // E_k's jumps (docs/models/dynamics.md, "Pocket wheel: the discrete gradient", "The jumps") lie
 // on two surfaces: the mouth's circle ρ = R + c/2 (the sharp mouth's E₀(g) against 0, the
 // release's E₀(g) S(u) for a joint not held, the ramp's leftover E₀(g) (1 − W(g)); 0 within
-// about 0.87c of the vertex, where g ≤ 0 on the mouth) and, with the body, the capture
-// |q − C_k| = `from` (the pocket's law against the body's blended depth: 0 beyond the body's
-// radial band of the mouth). The step's path in (q − O, ψ) is the straight one, q(t) = q₀ + t Δq,
-// ψ(t) = ψ₀ + t Δψ, its θ point at t = θ.
+// about 0.87c of the vertex, where g ≤ 0 on the mouth), spread over the mouth's band in the
+// energy the step takes (Ẽ_k, above), and, with the body, the capture |q − C_k| = `from` (the
+// pocket's law against the body's blended depth: 0 beyond the body's radial band of the mouth). The
+// step's path in (q − O, ψ) is the straight one, q(t) = q₀ + t Δq, ψ(t) = ψ₀ + t Δψ, its θ point at
+// t = θ.
 struct Path {
   double q0x = 0.0, q0y = 0.0, dx = 0.0, dy = 0.0, psi0 = 0.0, dpsi = 0.0, theta = 0.5;
 };
 
-// E_k and its rate dE/dt at the path's point t: the contact at zero velocity, whose elastic force
-// gives ∇_q E = f n and whose torque ∂E/∂ψ = −τ (0 free of the wheel)
+// Ẽ_k (E_k beyond the mouth's band) and its rate at the path's point t: the contact at zero
+// velocity, whose elastic force gives ∇_q E = f n and whose torque ∂E/∂ψ = −τ (0 free of the wheel)
 struct Slope {
   double e = 0.0, de = 0.0;
 };
 Slope slope_along(const Sprocket& w, const Capture& cap, const Path& p, double t, int k, int hk) {
-  const End e = end_of(w, p.q0x + t * p.dx, p.q0y + t * p.dy, p.psi0 + t * p.dpsi, k, hk);
+  const double qx = p.q0x + t * p.dx, qy = p.q0y + t * p.dy, psi = p.psi0 + t * p.dpsi;
+  const End e = end_of(w, qx, qy, psi, k, hk);
   if (e.free) return {};
   const SeatContact c =
       contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kForce);
   if (!c.active) return {};
-  return {c.energy, c.force * (c.nx * p.dx + c.ny * p.dy) - c.torque * p.dpsi};
+  // within the mouth's band, Ẽ_k and its band weight's rate (J's own is not taken)
+  const Banded b = banded_energy(w, cap, qx, qy, psi, k, hk);
+  return {b.e,
+          c.force * (c.nx * p.dx + c.ny * p.dy) - c.torque * p.dpsi + b.gx * p.dx + b.gy * p.dy};
 }
 
 // The jump of E_k on the surface f(t) = 0 (f > 0 on its outer side) where the step's two ends lie
@@ -599,21 +638,17 @@ struct Jumps {
   }
 };
 
-// E_k's jumps the step crosses end to end: the mouth's circle's and the capture's,
-// each where the ends lie on its opposite sides, bracketed to 1e-9 c of the path (the mouth, a
-// convex disc, is then crossed once; the capture an odd number of times, of which bisection finds
-// one). `dist` the θ point's |q − C_k| if known (else < 0): |q − C_k| moves by at most
-// |Δq| + R |Δψ| over the path, so the capture is sought only where that reaches `from` from it.
+// Ẽ_k's jumps the step crosses end to end: the capture's (the mouth's is spread over its band),
+// where the ends lie on its opposite sides, bracketed to 1e-9 c of the path (crossed an odd
+// number of times, of which bisection finds one). `dist` the θ point's |q − C_k| if known (else <
+// 0): |q − C_k| moves by at most |Δq| + R |Δψ| over the path, so the capture is sought only where
+// that reaches `from` from it.
 Jumps crossed_jump(const Sprocket& w, const Capture& cap, const Path& p, int k, int hk,
                    double dist) {
-  const double r = w.pitch_radius, mouth = r + 0.5 * w.pocket_clearance;
+  const double r = w.pitch_radius;
   const double len = std::hypot(p.dx, p.dy) + r * std::abs(p.dpsi);  // ≥ the points' |dz/dt|
   const double span = 1e-9 * w.pocket_clearance / len;
   Jumps sum;
-  sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) {
-    const double x = p.q0x + t * p.dx, y = p.q0y + t * p.dy;
-    return x * x + y * y > mouth * mouth;
-  }));
   const double from = cap.from;
   const double reach = std::max(p.theta, 1.0 - p.theta) * len + 1e-9 * w.pocket_clearance;
   if (w.pocket_body && (dist < 0.0 || std::abs(dist - from) <= reach))
@@ -622,6 +657,16 @@ Jumps crossed_jump(const Sprocket& w, const Capture& cap, const Path& p, int k, 
       return std::hypot(p.q0x + t * p.dx - r * std::cos(a), p.q0y + t * p.dy - r * std::sin(a)) >
              from;
     }));
+  // and the capture's shadow in the mouth's band: J jumps where the point's ray meets the mouth
+  // at `from` (a jump of Ẽ only within the band; its ends' sides decide, as above)
+  if (w.pocket_body) {
+    const double mouth = r + 0.5 * w.pocket_clearance;
+    sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) {
+      const double a = vertex_angle(w, k, p.psi0 + t * p.dpsi);
+      const double x = p.q0x + t * p.dx, y = p.q0y + t * p.dy, s = mouth / std::hypot(x, y);
+      return std::hypot(s * x - r * std::cos(a), s * y - r * std::sin(a)) > from;
+    }));
+  }
   return sum;
 }
 
@@ -671,13 +716,15 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   const SeatContact et =
       free ? SeatContact{}
            : contact_at(w, x, y, 0.0, 0.0, 0.0, p, k, sx, sy, &cap, Need::kJacobian);
-  const double en0 = start.energy, en1 = e1.active ? e1.energy : 0.0;
+  const Banded b1 = banded_energy(w, cap, q1x, q1y, step.angle1, k, hk);
+  const double en0 = start.energy, en1 = b1.e;
   // ∇E at the θ point: G_q = f n, G_ψ = −τ (the elastic force −∇_q E, torque −∂E/∂ψ)
   const double gx = et.active ? et.force * et.nx : 0.0, gy = et.active ? et.force * et.ny : 0.0;
   const double gpsi = et.active ? -et.torque : 0.0;
   const double mismatch = en1 - en0 - (gx * dx + gy * dy) - gpsi * dpsi;
-  if (!(en0 > 0.0 || en1 > 0.0 || et.active)) return c;  // E_k = 0 at all three
-  // the jumps of E_k the step crosses, J, are taken over it as the rest of ΔE is, a force J/|Δz|
+  if (!(en0 != 0.0 || en1 != 0.0 || et.active)) return c;  // E_k = 0 at all three
+  // the jumps of Ẽ_k the step crosses (the capture's and its shadow's in the mouth's band; the
+  // mouth's own is spread over the band), J, are taken over it as the rest of ΔE is, a force J/|Δz|
   // along the step, up to r = |J| / (|Δz| k c) = 1 (k c the pocket law's force at a depth of one
   // clearance); from r = 1 to 2 a C² step s(r) leaves the share s J of it to the work balance's
   // numerical term (all of it from r = 2 on), so that the jump's force stays below 2 k c on a
@@ -715,7 +762,8 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   // ∂cc = (∂mismatch − cc ∂den)/den; the θ point moves by θ with x₁ and ψ₁:
   // ∂mismatch/∂x₁ = ∇_q E₁ − G_q − θ (H Δq + a Δψ), ∂/∂ψ₁ = ∂E₁/∂ψ − G_ψ − θ (a·Δq + E_ψψ Δψ)
   const double th = step.theta;
-  const double f1x = e1.active ? e1.force * e1.nx : 0.0, f1y = e1.active ? e1.force * e1.ny : 0.0;
+  const double f1x = (e1.active ? e1.force * e1.nx : 0.0) + b1.gx,
+               f1y = (e1.active ? e1.force * e1.ny : 0.0) + b1.gy;
   const double f1psi = e1.active ? -e1.torque : 0.0;
   // and the share left, s(r) J, by r ∝ 1/|Δz| (J's own change with the crossing's place is not
   // taken: exact for r ≤ 1, where no share is left, quasi-Newton beyond)
