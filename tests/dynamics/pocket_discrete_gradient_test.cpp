@@ -51,13 +51,16 @@ double energy_at(const Sprocket& w, Point q, double angle, int held = kNoPocket)
 // Ẽ, the energy the discrete gradient takes (docs/models/dynamics.md, "Pocket wheel: the discrete
 // gradient", "The mouth's band"): within c/2 inside the mouth, E less (1 − φ) of E's jump on the
 // mouth along the point's ray (1e-14 m either side), φ = x³(10 − 15x + 6x²), x the depth below
-// the mouth over c/2; E elsewhere
-double banded_at(const Sprocket& w, Point q, double angle, int held = kNoPocket) {
+// the mouth over c/2; E elsewhere. The jump with the hold the point gets within the mouth,
+// `holds` (update_held's with the release: the pocket, off the body), else `held`.
+double banded_at(const Sprocket& w, Point q, double angle, int held = kNoPocket,
+                 int holds = kNoPocket) {
   const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance;
   const double rx = q.x - w.centre_x, ry = q.y - w.centre_y, rho = std::hypot(rx, ry);
   const double x = (mouth - rho) / (0.5 * w.pocket_clearance);
   const double e = energy_at(w, q, angle, held);
   if (!(x >= 0.0 && x < 1.0)) return e;
+  if (holds != kNoPocket) held = holds;
   auto on = [&](double d) {
     const double a = (mouth + d) / rho;
     return energy_at(w, {w.centre_x + a * rx, w.centre_y + a * ry}, angle, held);
@@ -98,8 +101,8 @@ double step_work(const Sprocket& w, Point p0, Point p1, double psi0, double psi1
   if (surface != nullptr) *surface = c.surface;
   if (!c.active) return 0.0;
   const double dx = p1.x - p0.x, dy = p1.y - p0.y;
-  return -c.force * (c.nx * dx + c.ny * dy) - c.skew * (c.skew_x * dx + c.skew_y * dy) +
-         c.torque * (psi1 - psi0);
+  return -c.force * (c.nx * dx + c.ny * dy) - c.skew * (c.skew_x * dx + c.skew_y * dy) -
+         (c.band_x * dx + c.band_y * dy) + c.torque * (psi1 - psi0);
 }
 
 // (1) One step's work is −ΔE: in the pocket (pressing in 20 → 60 µm and swinging sideways),
@@ -456,11 +459,13 @@ TEST(DynamicsPocketDiscreteGradient, ResidualOnlyCallsGiveTheSameResidual) {
 // depth, 39 J; the wheel turning 0.03 rad over the step, |Δz| ≈ 7 mm, for r < 1); across the
 // capture straight below the vertex, beyond the band (10c) from the mouth (no jump there). With
 // the release a joint not held that enters over the mouth 3c off its vertex, from 10 µm above to
-// 20 µm below it, jumps from 0 to E₀(g) S(u) as over the sharp mouth. Over the mouth's ramp
-// (w = c) a joint entering 3.5c off its vertex, from 2 µm above the mouth to 2 µm below it, meets
-// the ramp's leftover jump E₀(g)(1 − W) (W = 0 from g = 2c on: the whole E₀(2.54c), 3.2 J); 1.2c
-// off (g = 0.3c on the mouth, W = 1: no jump). (Before, the steps across a jump above k ε²/6 kept
-// the θ point's force: their work missed ΔE by the jump, 1.4 J and more here.)
+// 20 µm below it (the wheel turning 0.03 rad, for r < 1), jumps from 0 to E₀(g) S(u): held
+// within the mouth, its Ẽ there is E (J = 0 on the release's law), so the jump is crossed. Over the
+// mouth's ramp (w = c) a joint entering 3.5c off its vertex, from 2 µm above the mouth to 2 µm
+// below it, meets the ramp's leftover jump E₀(g)(1 − W) (W = 0 from g = 2c on: the whole
+// E₀(2.54c), 3.2 J); 1.2c off (g = 0.3c on the mouth, W = 1: no jump). (Before, the steps across a
+// jump above k ε²/6 kept the θ point's force: their work missed ΔE by the jump, 1.4 J and more
+// here.)
 TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheWorkIsTheEnergysChange) {
   Sprocket release_on = wheel8(true), release_off = wheel8(false);
   release_on.pocket_release = release_off.pocket_release = true;
@@ -476,7 +481,7 @@ TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheWorkIsTheEnergysChange) {
       {"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -2e-6, true, false, 0.0, 1e-3},
       {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, true, false, 0.0, 0.03},
       {"capture deep", 0.0, 10.4 * c, 0.0, 10.6 * c, false, false, 0.0, 1e-3},
-      {"the release's mouth, not held", 3.0 * c, -10e-6, 3.0 * c, 20e-6, true, true, 0.0, 1e-3},
+      {"the release's mouth, not held", 3.0 * c, -10e-6, 3.0 * c, 20e-6, true, true, 0.0, 0.03},
       {"the ramp's leftover", 3.5 * c, -2e-6, 3.5 * c, 2e-6, true, false, c, 1e-3},
       {"the ramp's mouth near the vertex", 1.2 * c, -2e-6, 1.2 * c, 2e-6, false, false, c, 1e-3}};
   for (const Across& a : steps) {
@@ -487,7 +492,8 @@ TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheWorkIsTheEnergysChange) {
     const Point p1 = near_vertex(on, psi + a.turn, 2, a.along1, a.below1);
     const SeatContact with = step_contact(on, p0, p1, psi, psi + a.turn);
     const double change = energy_at(on, p1, psi + a.turn) - energy_at(on, p0, psi);
-    const double banded = banded_at(on, p1, psi + a.turn) - banded_at(on, p0, psi);
+    const double banded = banded_at(on, p1, psi + a.turn, kNoPocket, a.release ? 2 : kNoPocket) -
+                          banded_at(on, p0, psi);
     const double work = step_work(on, p0, p1, psi, psi + a.turn, nullptr);
     const double theta_work = step_work(off, p0, p1, psi, psi + a.turn, nullptr);
     std::printf(
@@ -500,6 +506,109 @@ TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheWorkIsTheEnergysChange) {
     EXPECT_NE(with.skew, 0.0) << a.what;
     EXPECT_LT(std::abs(work + banded), 1e-8 * std::abs(change)) << a.what;
   }
+}
+
+// With the release, a joint not held that enters its pocket 3c off the vertex (10 µm above the
+// mouth to 20 µm below it, in the band) is held from there on (update_held: within the mouth, off
+// the body), and its next step goes 40 µm deeper, past the band; the wheel turns 0.03 rad a step
+// (r < 1: no share left). Over the two steps the work is −(E at the end − 0): the end of the first
+// step and the start of the second take the same Ẽ. (With J taken with the hold the step is called
+// with, the entry's end took E − (1 − φ) J, the next start E: the two steps' work missed by that,
+// 1.4 J here, once per entry.)
+TEST(DynamicsPocketDiscreteGradient, TheReleasesEntryOverTwoStepsIsTheEnergysChange) {
+  Sprocket on = wheel8(true);
+  on.pocket_release = true;
+  const double c = kClearance, psi = 0.4, turn = 0.03;
+  const Point p0 = near_vertex(on, psi, 2, 3.0 * c, -10e-6);
+  const Point p1 = near_vertex(on, psi + turn, 2, 3.0 * c, 20e-6);
+  const Point p2 = near_vertex(on, psi + 2.0 * turn, 2, 3.0 * c, 60e-6);
+  const double work = step_work(on, p0, p1, psi, psi + turn, nullptr) +
+                      step_work(on, p1, p2, psi + turn, psi + 2.0 * turn, nullptr, 2);
+  const double change = energy_at(on, p2, psi + 2.0 * turn, 2) - energy_at(on, p0, psi);
+  std::printf(
+      "pocket discrete gradient, the release's entry over two steps: dE %.4g J, "
+      "|work + dE| %.2e J\n",
+      change, std::abs(work + change));
+  EXPECT_GT(change, 1.0);
+  EXPECT_LT(std::abs(work + change), 1e-8 * change);
+}
+
+// Within the mouth's band the θ point's force is −∇Ẽ as the step shrinks, whatever its direction:
+// steps of |Δq| = L centred on a point 3c off the vertex, 25 µm below the sharp mouth (φ ≈ ½),
+// radial and tangential, the wheel held, at θ = ½; L from 1 µm to 0.1 nm (below the 1e-9 R floor,
+// where S is not taken). The force on the joint, −f n − S Δ − ∇B, against −∇Ẽ from central
+// differences of banded_at (1 nm), and the torque against −∂Ẽ/∂ψ (1e-9 rad). (With ∇E alone at the
+// θ point, S Δ took only ∇B's part along the step: 7.8e4 N off across a tangential step, 1e4 N
+// along a radial one, all of it below the floor.)
+TEST(DynamicsPocketDiscreteGradient, WithinTheBandTheForceIsTheBandedEnergysGradient) {
+  const Sprocket on = wheel8(true);
+  const double c = kClearance, psi = 0.4, h = 1e-9;
+  const Point q = near_vertex(on, psi, 2, 3.0 * c, 25e-6);
+  const double gx =
+      (banded_at(on, {q.x + h, q.y}, psi) - banded_at(on, {q.x - h, q.y}, psi)) / (2.0 * h);
+  const double gy =
+      (banded_at(on, {q.x, q.y + h}, psi) - banded_at(on, {q.x, q.y - h}, psi)) / (2.0 * h);
+  const double gpsi = (banded_at(on, q, psi + h) - banded_at(on, q, psi - h)) / (2.0 * h);
+  const double rx = q.x - on.centre_x, ry = q.y - on.centre_y, rho = std::hypot(rx, ry);
+  const double scale = std::hypot(gx, gy);
+  double worst = 0.0;
+  for (const bool radial : {true, false}) {
+    const double ux = radial ? rx / rho : -ry / rho, uy = radial ? ry / rho : rx / rho;
+    for (const double len : {1e-6, 1e-8, 1e-10}) {
+      const Point p0{q.x - 0.5 * len * ux, q.y - 0.5 * len * uy};
+      const Point p1{q.x + 0.5 * len * ux, q.y + 0.5 * len * uy};
+      const SeatContact s = step_contact(on, p0, p1, psi, psi);
+      ASSERT_TRUE(s.active);
+      const double fx = -s.force * s.nx - s.skew * s.skew_x - s.band_x;
+      const double fy = -s.force * s.ny - s.skew * s.skew_y - s.band_y;
+      const double off = std::hypot(fx + gx, fy + gy) / scale;
+      worst = std::max(worst, off);
+      EXPECT_LT(off, 1e-3) << (radial ? "radial" : "tangential") << " L " << len;
+      EXPECT_LT(std::abs(s.torque + gpsi), 1e-3 * std::abs(gpsi))
+          << (radial ? "radial" : "tangential") << " L " << len;
+    }
+  }
+  std::printf(
+      "pocket discrete gradient within the band: |grad E~| %.3g N, the force's worst "
+      "miss of -grad E~ %.2e of it\n",
+      scale, worst);
+}
+
+// Ẽ has no jump but the ones crossed_jump takes: tiny steps (0.1 µm, the wheel held) scanned
+// radially across the mouth and the band's inner edge, 3c, 6c and 9.9c off the vertex (J 2 J to
+// 40 J). Each step's work is −(ΔẼ − s J), s = 1 for any real jump over so short a step (r > 2), so
+// a jump crossed_jump does not find shows as work far above the force's scale: each step's |work|
+// stays below 2.5e6 N (the band's force, J's slope 9.9c off included) times its length, 0.25 J.
+// (A scan along the band, chords of 0.2c from −12c to 12c at 0 to 49 µm below the mouth, finds
+// single points 9.6c–10c off the vertex, on the chords' ends, where Ẽ stands 2.5–39 J off its
+// neighbours 0.1 µm away: not diagnosed, docs "Not built yet".)
+TEST(DynamicsPocketDiscreteGradient, TheBandedEnergyJumpsOnlyWhereItsJumpsAreTaken) {
+  const Sprocket on = wheel8(true);
+  const double c = kClearance, psi = 0.4, step = 1e-7, bound = 2.5e6 * step;
+  double worst = 0.0;
+  auto scan = [&](const char* what, Point a, Point b) {
+    const int n = static_cast<int>(std::hypot(b.x - a.x, b.y - a.y) / step) + 1;
+    Point p0 = a;
+    for (int i = 1; i <= n; ++i) {
+      const double t = static_cast<double>(i) / n;
+      const Point p1{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+      const double work = std::abs(step_work(on, p0, p1, psi, psi, nullptr));
+      worst = std::max(worst, work);
+      if (!(work < bound)) {
+        ADD_FAILURE() << what << " at " << i << " of " << n << " from (" << a.x << ", " << a.y
+                      << "): work " << work << " J";
+        return;
+      }
+      p0 = p1;
+    }
+  };
+  for (const double along : {3.0 * c, 6.0 * c, 9.9 * c})
+    scan("across the band", near_vertex(on, psi, 2, along, -5e-6),
+         near_vertex(on, psi, 2, along, 0.5 * c + 5e-6));
+  std::printf(
+      "pocket discrete gradient, tiny steps along and across the band: the largest work "
+      "%.3g J (bound %.3g J)\n",
+      worst, bound);
 }
 
 // A step across the sharp mouth within about 0.87c of its vertex, where the pocket's E₀(g) is 0 on
@@ -604,8 +713,13 @@ TEST(DynamicsPocketDiscreteGradient, ASlowCrossingOfTheMouthsBandIsBoundedAndExa
 
 // The correction's derivatives across a jump where its rule is smooth (r ≤ 1: the jump taken in
 // full): ∂S/∂x₁, ∂S/∂ψ₁ against central differences of S over the step's end (the θ point moving
-// with it), for a joint leaving over the sharp mouth 3c off its vertex and one crossing the
-// capture near the mouth (the wheel turning 1e-3 and 0.03 rad over the step).
+// with it), for a joint leaving over the sharp mouth 3c off its vertex (2 µm in to 30 µm out:
+// the θ point beyond the mouth), one crossing the
+// capture near the mouth (the wheel turning 1e-3 and 0.03 rad over the step), and one entering
+// the sharp mouth 3c off its vertex to end 20 µm below it, in the band where J ≠ 0 (the θ point
+// 5 µm above the mouth: J's own Hessian at a θ point in the band is not taken). (Without J's slope,
+// −(1 − φ)∇J and ∂J/∂ψ, in the end's gradient, the entering step's slope missed by about a
+// quarter.)
 TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheCorrectionsSlopeMatchesTheDifferences) {
   const Sprocket on = wheel8(true);
   const double c = kClearance, psi = 0.4;
@@ -613,8 +727,9 @@ TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheCorrectionsSlopeMatchesTheDif
     const char* what;
     double along0, below0, along1, below1, turn;
   };
-  const Across steps[] = {{"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -2e-6, 1e-3},
-                          {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, 0.03}};
+  const Across steps[] = {{"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -30e-6, 1e-3},
+                          {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, 0.03},
+                          {"entering the sharp mouth", 3.0 * c, -30e-6, 3.2 * c, 20e-6, 1e-3}};
   for (const Across& a : steps) {
     const Point p0 = near_vertex(on, psi, 2, a.along0, a.below0);
     const Point p1 = near_vertex(on, psi + a.turn, 2, a.along1, a.below1);
@@ -986,7 +1101,8 @@ TEST(DynamicsPocketDiscreteGradient, NewtonMatrixMatchesTheResidualsDifferences)
 // across it, taken over the step as the rest of ΔE).
 struct WrapRun {
   double kinetic0 = 0.0, worst = 0.0;
-  int steps = 0;  // completed
+  double settled = INFINITY;  // the least |balance| over the last 200 steps
+  int steps = 0;              // completed
 };
 WrapRun wrap_run(bool gradient, double mouth, int steps) {
   testing::PocketSetup setup =
@@ -1005,6 +1121,7 @@ WrapRun wrap_run(bool gradient, double mouth, int steps) {
     const double balance = energy(m, s).total() - e0.total() - work;
     if (!std::isfinite(balance)) break;
     out.worst = std::max(out.worst, std::abs(balance));
+    if (step >= steps - 200) out.settled = std::min(out.settled, std::abs(balance));
     out.steps = step + 1;
   }
   return out;
@@ -1018,18 +1135,21 @@ TEST(DynamicsPocketDiscreteGradient, WrapAtThetaHalfKeepsItsWorkBalance) {
   std::printf(
       "pocket wrap at theta = 1/2 over 0.1 s (kinetic %.4g J), mouth's ramp c: work balance worst "
       "%.2e of the kinetic with the discrete gradient (%d steps), %.3g with the theta point's "
-      "force (%d steps); sharp mouth: %.3g (%d steps), %.3g (%d steps)\n",
+      "force (%d steps); sharp mouth: %.3g (%d steps; %.2e when no joint is in a band), %.3g "
+      "(%d steps)\n",
       kept.kinetic0, kept.worst / kept.kinetic0, kept.steps, theta.worst / theta.kinetic0,
-      theta.steps, sharp.worst / sharp.kinetic0, sharp.steps, sharp_theta.worst / sharp.kinetic0,
-      sharp_theta.steps);
+      theta.steps, sharp.worst / sharp.kinetic0, sharp.steps, sharp.settled / sharp.kinetic0,
+      sharp_theta.worst / sharp.kinetic0, sharp_theta.steps);
   EXPECT_EQ(kept.steps, steps);
   EXPECT_LT(kept.worst, 1e-6 * kept.kinetic0);
   EXPECT_TRUE(theta.steps < steps || theta.worst > 100.0 * kept.worst);
   // the sharp mouth's exits: their jumps spread over the mouth's band, the balance off by the
-  // band's share of the joints within it at the time (2.5e-3 of the kinetic; 9.8e-3 when the
-  // steps across kept the θ point's force, the jumps adding up)
+  // band's share (1 − φ) J of the joints within it at the time (up to 5.0e-2 of the kinetic with
+  // the band's force −∇B), back to 2.7e-7 of it when none is (the least over the last 200 steps;
+  // 9.8e-3 and growing when the steps across kept the θ point's force, the jumps adding up)
   EXPECT_EQ(sharp.steps, steps);
-  EXPECT_LT(sharp.worst, 4e-3 * sharp.kinetic0);
+  EXPECT_LT(sharp.worst, 0.1 * sharp.kinetic0);
+  EXPECT_LT(sharp.settled, 1e-5 * sharp.kinetic0);
 }
 
 }  // namespace

@@ -508,46 +508,76 @@ End end_of(const Sprocket& w, double qx, double qy, double angle, int k, int hk)
   return e;
 }
 
-// E_k at an end `e`: the contact at zero velocity, its energy alone (0 free of the wheel)
-double energy_of(const Sprocket& w, const Capture& cap, const End& e, int k) {
-  if (e.free) return 0.0;
-  const SeatContact c =
-      contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kEnergy);
-  return c.active ? c.energy : 0.0;
-}
-
 // The mouth's jump spread over a band (docs/models/dynamics.md, "Pocket wheel: the discrete
-// gradient", "The mouth's band"): the energy the step takes at its ends, Ẽ_k = E_k − (1 − φ) J
-// within ℓ = c/2 inside the mouth ρ = R + c/2, φ the C² step from 0 on the mouth to 1 at depth ℓ
-// (the pitch circle), J = E_k's jump on the mouth on the end's radial ray (each side 1e-9 c off,
-// carried to the mouth along its radial slope): Ẽ_k is E_k's outer side's on the mouth, so it has
-// no jump there, and E_k itself from ℓ in. With Ẽ's ∇_q of the band's weight, −φ′ J q/ρ (not J's
-// own slope along the mouth: quasi-Newton within the band).
-struct Banded {
-  double e = 0.0, gx = 0.0, gy = 0.0;
+// gradient", "The mouth's band"): the energy the step takes at a point is Ẽ_k = E_k + B,
+// B = −(1 − φ) J within ℓ = c/2 inside the mouth ρ = R + c/2, φ the C² step from 0 on the mouth to
+// 1 at depth ℓ (the pitch circle), J = E_k's jump on the mouth on the point's radial ray (each side
+// 1e-9 c off, carried to the mouth along its radial slope): Ẽ_k is E_k's outer side's on the
+// mouth, so it has no jump there, and E_k itself from ℓ in. J is taken with the hold the point
+// gets (update_held): with the release, a point within the mouth and off the body is held by
+// pocket k, so J = 0 there and a joint's entry is a jump crossed on the mouth (crossed_jump).
+// B's gradient, ∇_q B = −φ′ J q/ρ − (1 − φ) ∇_q J and ∂B/∂ψ = −(1 − φ) ∂J/∂ψ, with J's from the
+// two sides' forces and torques: ∇_q J = (M/ρ)(I − q̂q̂ᵀ)(f n|in − f n|out), ∂J/∂ψ = −(τ_in − τ_out)
+// (the carry's own slope, O(1e-9 c), not taken). 0 outside the band.
+struct Band {
+  double e = 0.0, gx = 0.0, gy = 0.0, gpsi = 0.0;
+  double hxx = 0.0, hxy = 0.0, hyy = 0.0;  // ∇_q²B without J's own Hessian (Newton's, below)
 };
-Banded banded_energy(const Sprocket& w, const Capture& cap, double qx, double qy, double angle,
-                     int k, int hk) {
-  Banded b{energy_of(w, cap, end_of(w, qx, qy, angle, k, hk), k)};
+Band band_at(const Sprocket& w, const Capture& cap, double qx, double qy, double angle, int k,
+             int hk) {
   const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance, band = 0.5 * w.pocket_clearance;
   const double rho = std::hypot(qx, qy);
-  if (!(rho <= mouth && rho > mouth - band)) return b;
-  // each side's E and radial slope 1e-9 c off the mouth, carried to it (as jump_on does)
-  const double del = 1e-9 * w.pocket_clearance;
+  if (!(rho <= mouth && rho > mouth - band)) return {};
+  int hold = hk;
+  if (w.pocket_release) {
+    const End at = end_of(w, qx, qy, angle, k, k);
+    double vx = 0.0, vy = 0.0;
+    vertex_point(w, vertex_angle(w, k, angle), vx, vy);
+    if (!in_body(w, &cap, std::hypot(at.x - vx, at.y - vy))) hold = k;
+  }
+  const double ux = qx / rho, uy = qy / rho, del = 1e-9 * w.pocket_clearance;
+  // each side's E carried to the mouth (as jump_on does), and its ∇_q E = f n, ∂E/∂ψ = −τ
   auto side = [&](double at) {
-    const End e = end_of(w, qx * at / rho, qy * at / rho, angle, k, hk);
-    if (e.free) return 0.0;
+    const End e = end_of(w, ux * at, uy * at, angle, k, hold);
+    if (e.free) return Band{};
     const SeatContact c =
         contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kForce);
-    if (!c.active) return 0.0;
-    return c.energy + (mouth - at) * c.force * (c.nx * qx + c.ny * qy) / rho;
+    if (!c.active) return Band{};
+    return Band{c.energy + (mouth - at) * c.force * (c.nx * ux + c.ny * uy), c.force * c.nx,
+                c.force * c.ny, -c.torque};
   };
-  const double jump = side(mouth - del) - side(mouth + del);
+  const Band in = side(mouth - del), out = side(mouth + del);
+  const double jump = in.e - out.e, dgx = in.gx - out.gx, dgy = in.gy - out.gy;
+  // no jump within the sides' own error, O(k del²) and their rounding (one law on both sides: a
+  // held joint's release, the body, whose energy is 0 on the mouth)
+  const double floor = 4.0 * w.contact_stiffness * del * del;
+  if (!(std::abs(jump) > std::max(1e-9 * (std::abs(in.e) + std::abs(out.e)), floor))) return {};
+  const double along = ux * dgx + uy * dgy, scale = mouth / rho;
   const Step phi = smooth_step(mouth - rho, 0.0, band);
-  b.e -= (1.0 - phi.s) * jump;
-  b.gx = -phi.ds * jump * qx / rho;
-  b.gy = -phi.ds * jump * qy / rho;
-  return b;
+  const double keep = 1.0 - phi.s;
+  const double jx = scale * (dgx - along * ux), jy = scale * (dgy - along * uy);
+  // ∇²B = φ″ J q̂q̂ᵀ − φ′ (q̂ ∇Jᵀ + ∇J q̂ᵀ) − φ′ J (I − q̂q̂ᵀ)/ρ − (1 − φ) ∇²J, the last not taken
+  const double a = phi.dds * jump, t = phi.ds * jump / rho;
+  return {-keep * jump,
+          -phi.ds * jump * ux - keep * jx,
+          -phi.ds * jump * uy - keep * jy,
+          -keep * (in.gpsi - out.gpsi),
+          a * ux * ux - 2.0 * phi.ds * ux * jx - t * (1.0 - ux * ux),
+          a * ux * uy - phi.ds * (ux * jy + jx * uy) + t * ux * uy,
+          a * uy * uy - 2.0 * phi.ds * uy * jy - t * (1.0 - uy * uy)};
+}
+
+// Ẽ_k at an end q: E_k (the contact at zero velocity, 0 free of the wheel) and B
+double banded_energy(const Sprocket& w, const Capture& cap, double qx, double qy, double angle,
+                     int k, int hk) {
+  const End e = end_of(w, qx, qy, angle, k, hk);
+  double en = 0.0;
+  if (!e.free) {
+    const SeatContact c =
+        contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kEnergy);
+    if (c.active) en = c.energy;
+  }
+  return en + band_at(w, cap, qx, qy, angle, k, hk).e;
 }
 
 // The step's start for pocket k (held: hk ≠ kNoPocket) from the memo `m`, taken afresh there
@@ -572,7 +602,7 @@ const PocketStart& step_start(const Sprocket& w, const Capture& cap, const Pocke
                   .centre_y = w.centre_y,
                   .pocket = k,
                   .held = hk};
-  m.energy = banded_energy(w, cap, step.x0 - step.cx0, step.y0 - step.cy0, step.angle0, k, hk).e;
+  m.energy = banded_energy(w, cap, step.x0 - step.cx0, step.y0 - step.cy0, step.angle0, k, hk);
   return m;
 }
 
@@ -596,14 +626,15 @@ struct Slope {
 Slope slope_along(const Sprocket& w, const Capture& cap, const Path& p, double t, int k, int hk) {
   const double qx = p.q0x + t * p.dx, qy = p.q0y + t * p.dy, psi = p.psi0 + t * p.dpsi;
   const End e = end_of(w, qx, qy, psi, k, hk);
-  if (e.free) return {};
-  const SeatContact c =
-      contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kForce);
-  if (!c.active) return {};
-  // within the mouth's band, Ẽ_k and its band weight's rate (J's own is not taken)
-  const Banded b = banded_energy(w, cap, qx, qy, psi, k, hk);
-  return {b.e,
-          c.force * (c.nx * p.dx + c.ny * p.dy) - c.torque * p.dpsi + b.gx * p.dx + b.gy * p.dy};
+  Slope out;
+  if (!e.free) {
+    const SeatContact c =
+        contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kForce);
+    if (c.active) out = {c.energy, c.force * (c.nx * p.dx + c.ny * p.dy) - c.torque * p.dpsi};
+  }
+  // within the mouth's band, Ẽ_k and its rate
+  const Band b = band_at(w, cap, qx, qy, psi, k, hk);
+  return {out.e + b.e, out.de + b.gx * p.dx + b.gy * p.dy + b.gpsi * p.dpsi};
 }
 
 // The jump of E_k on the surface f(t) = 0 (f > 0 on its outer side) where the step's two ends lie
@@ -649,24 +680,30 @@ Jumps crossed_jump(const Sprocket& w, const Capture& cap, const Path& p, int k, 
   const double len = std::hypot(p.dx, p.dy) + r * std::abs(p.dpsi);  // ≥ the points' |dz/dt|
   const double span = 1e-9 * w.pocket_clearance / len;
   Jumps sum;
-  const double from = cap.from;
+  const double from = cap.from, mouth = r + 0.5 * w.pocket_clearance;
+  auto radius = [&](double t) { return std::hypot(p.q0x + t * p.dx, p.q0y + t * p.dy); };
+  // whether the path's point at t, or its ray's point on the mouth (`on_mouth`), lies beyond the
+  // capture, |q − C_k| > from
+  auto beyond = [&](double t, bool on_mouth) {
+    const double a = vertex_angle(w, k, p.psi0 + t * p.dpsi);
+    const double s = on_mouth ? mouth / radius(t) : 1.0;
+    return std::hypot(s * (p.q0x + t * p.dx) - r * std::cos(a),
+                      s * (p.q0y + t * p.dy) - r * std::sin(a)) > from;
+  };
   const double reach = std::max(p.theta, 1.0 - p.theta) * len + 1e-9 * w.pocket_clearance;
   if (w.pocket_body && (dist < 0.0 || std::abs(dist - from) <= reach))
-    sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) {
-      const double a = vertex_angle(w, k, p.psi0 + t * p.dpsi);
-      return std::hypot(p.q0x + t * p.dx - r * std::cos(a), p.q0y + t * p.dy - r * std::sin(a)) >
-             from;
-    }));
+    sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) { return beyond(t, false); }));
+  // the release's mouth for a joint not held: free beyond it, held within it (band_at), so Ẽ_k
+  // jumps there by E_k's inner side's
+  if (w.pocket_release && hk == kNoPocket)
+    sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) { return radius(t) > mouth; }));
   // and the capture's shadow in the mouth's band: J jumps where the point's ray meets the mouth
-  // at `from` (a jump of Ẽ only within the band; its ends' sides decide, as above)
-  if (w.pocket_body) {
-    const double mouth = r + 0.5 * w.pocket_clearance;
-    sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) {
-      const double a = vertex_angle(w, k, p.psi0 + t * p.dpsi);
-      const double x = p.q0x + t * p.dx, y = p.q0y + t * p.dy, s = mouth / std::hypot(x, y);
-      return std::hypot(s * x - r * std::cos(a), s * y - r * std::sin(a)) > from;
-    }));
-  }
+  // at `from` (a jump of Ẽ only within the band; its ends' sides decide, as above), sought only
+  // where the path's |q| range, [its distance from O, the ends' larger], meets the band (R, M]
+  const double foot = -(p.q0x * p.dx + p.q0y * p.dy) / std::max(p.dx * p.dx + p.dy * p.dy, 1e-300);
+  if (w.pocket_body && radius(std::clamp(foot, 0.0, 1.0)) <= mouth &&
+      std::max(radius(0.0), radius(1.0)) > r)
+    sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) { return beyond(t, true); }));
   return sum;
 }
 
@@ -704,6 +741,20 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   const double dx = q1x - q0x, dy = q1y - q0y, dpsi = step.angle1 - step.angle0;
   const double r = w.pitch_radius, r2 = r * r;
   const double den = dx * dx + dy * dy + r2 * dpsi * dpsi;
+  // the band's B = Ẽ_k − E_k at the θ point: its force −∇_q B on the joint (band_x, band_y) and
+  // torque −∂B/∂ψ on the wheel, at any |Δz| (the θ point's force is −∇Ẽ_k)
+  const Band bt = band_at(w, cap, rx, ry, angle, k, hk);
+  const bool banded = bt.gx != 0.0 || bt.gy != 0.0 || bt.gpsi != 0.0;
+  if (banded) {
+    if (!c.active) {
+      c = SeatContact{};
+      c.active = true;
+      c.seat = k;
+    }
+    c.band_x = bt.gx;
+    c.band_y = bt.gy;
+    c.torque -= bt.gpsi;
+  }
   // below |Δz| = 1e-9 R the mismatch is the ends' rounding over |Δz|² (as the seats')
   if (!(den > 1e-18 * r2)) return c;
   PocketStart own;  // without the caller's memo, this call's
@@ -716,13 +767,15 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   const SeatContact et =
       free ? SeatContact{}
            : contact_at(w, x, y, 0.0, 0.0, 0.0, p, k, sx, sy, &cap, Need::kJacobian);
-  const Banded b1 = banded_energy(w, cap, q1x, q1y, step.angle1, k, hk);
-  const double en0 = start.energy, en1 = b1.e;
-  // ∇E at the θ point: G_q = f n, G_ψ = −τ (the elastic force −∇_q E, torque −∂E/∂ψ)
-  const double gx = et.active ? et.force * et.nx : 0.0, gy = et.active ? et.force * et.ny : 0.0;
-  const double gpsi = et.active ? -et.torque : 0.0;
+  const Band b1 = band_at(w, cap, q1x, q1y, step.angle1, k, hk);
+  const double en0 = start.energy, en1 = (e1.active ? e1.energy : 0.0) + b1.e;
+  // ∇Ẽ at the θ point: G_q = f n + ∇_q B, G_ψ = −τ + ∂B/∂ψ (the elastic force −∇_q E, torque
+  // −∂E/∂ψ, and the band's, above)
+  const double gx = (et.active ? et.force * et.nx : 0.0) + bt.gx,
+               gy = (et.active ? et.force * et.ny : 0.0) + bt.gy;
+  const double gpsi = (et.active ? -et.torque : 0.0) + bt.gpsi;
   const double mismatch = en1 - en0 - (gx * dx + gy * dy) - gpsi * dpsi;
-  if (!(en0 != 0.0 || en1 != 0.0 || et.active)) return c;  // E_k = 0 at all three
+  if (!(en0 != 0.0 || en1 != 0.0 || et.active || banded)) return c;  // Ẽ_k = 0 at all three
   // the jumps of Ẽ_k the step crosses (the capture's and its shadow's in the mouth's band; the
   // mouth's own is spread over the band), J, are taken over it as the rest of ΔE is, a force J/|Δz|
   // along the step, up to r = |J| / (|Δz| k c) = 1 (k c the pocket law's force at a depth of one
@@ -745,6 +798,12 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
     for (int i = 0; i < 4; ++i)
       c.dq_extra[i] = c.dv_extra[i] = c.friction_dq[i] = c.friction_dv[i] = 0.0;
   }
+  // the band's force's ∂F/∂q = −∇²B at the θ point on the node's block (J's own Hessian and the
+  // coupling to the wheel's angle left out: quasi-Newton)
+  c.dq_extra[0] -= bt.hxx;
+  c.dq_extra[1] -= bt.hxy;
+  c.dq_extra[2] -= bt.hxy;
+  c.dq_extra[3] -= bt.hyy;
   c.skew = cc;
   c.skew_x = dx;
   c.skew_y = dy;
@@ -764,7 +823,7 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   const double th = step.theta;
   const double f1x = (e1.active ? e1.force * e1.nx : 0.0) + b1.gx,
                f1y = (e1.active ? e1.force * e1.ny : 0.0) + b1.gy;
-  const double f1psi = e1.active ? -e1.torque : 0.0;
+  const double f1psi = (e1.active ? -e1.torque : 0.0) + b1.gpsi;
   // and the share left, s(r) J, by r ∝ 1/|Δz| (J's own change with the crossing's place is not
   // taken: exact for r ≤ 1, where no share is left, quasi-Newton beyond)
   const double dleft = left.ds * jumps.sum * ratio / den;
