@@ -2965,9 +2965,9 @@ Result run(const analysis::Inputs& in) {
   }
   // with the discrete gradient (the seats' elastic force and damper over the step) drives close
   // their work balance at θ = ½, damped or not (docs, "Sprockets: the discrete gradient"); on
-  // pocket wheels the sharp mouth's energy jump stays outside it (the tension-only links are
-  // in: "Tension-only links: the discrete gradient"), and the pocket example at ½ undamped stops
-  // ("Pocket wheel: the discrete gradient")
+  // pocket wheels the energy jumps are taken over the step too, the mouth's spread over a band
+  // (the tension-only links are in: "Tension-only links: the discrete gradient"), and the pocket
+  // example at ½ undamped stops ("Pocket wheel: the discrete gradient")
   if (d.theta < 0.6) {
     const char* why =
         !d.discrete_gradient ? " < 0.6: drives with roller-seat contact diverged below 0.6 "
