@@ -852,11 +852,6 @@ struct SeatContact {
   double skew = 0.0;
   double skew_x = 0.0, skew_y = 0.0;
   double skew_dx = 0.0, skew_dy = 0.0, skew_dpsi = 0.0;
-  /// The pocket's discrete gradient within the mouth's band (pocket_step_contact; zero elsewhere):
-  /// ∇_q B [N] at the θ point, B = Ẽ_k − E_k the band's share of the energy the step takes, whose
-  /// force −(band_x, band_y) acts on the roller (its torque −∂B/∂ψ is in `torque`); its own
-  /// derivatives are not given (quasi-Newton).
-  double band_x = 0.0, band_y = 0.0;
 };
 SeatContact seat_contact(const Sprocket& w, double x, double y, double vx, double vy, double angle,
                          double speed);
@@ -1013,17 +1008,18 @@ struct PocketStep {
 /// pocket k (the nearest, or the held one beyond the mouth; the same law at every point: pocket,
 /// mouth's ramp, release or body as the point's own place decides): E_k less (1 − φ) of E_k's
 /// jump J on the mouth within the mouth's band (c/2 inside it; J with the hold the point gets,
-/// 0 for a joint the release holds), whose force −∇B (B = Ẽ_k − E_k) at the θ point is in band_x,
-/// band_y and `torque`. Ẽ_k at the step's ends puts the work's miss ΔẼ − ∇Ẽ_θ·Δz back along the
+/// 0 for a joint the release holds). Ẽ_k at the step's ends puts the work's miss ΔẼ − ∇E_θ·Δz
+/// back along the
 /// step z = (q − O, R ψ), metric (1, R²): the skew fields as the seats' (the joint gains −S Δ,
-/// the torque −S R² Δψ, S = (ΔẼ − ∇Ẽ_θ·Δz − s J)/|Δz|²), so that the elastic work over the
+/// the torque −S R² Δψ, S = (ΔẼ − ∇E_θ·Δz − s J)/|Δz|²), so that the elastic work over the
 /// step is −(ΔẼ_k − s J). J the signed sum of the jumps of Ẽ_k the step's ends lie across (the
 /// body's capture, its shadow in the band, the release's mouth for a joint not held), s(r) a C²
 /// step from 0 at r = |J| / (|Δz| k c) = 1 to 1 at r = 2 (the share left to the work balance's
-/// numerical term, so that the jump's force stays below 2 k c). Not where |Δz| < 1e-9 R (the θ
-/// point's force, −∇Ẽ_θ, alone). The damper, friction and the release's hold stay at the θ point;
-/// where the θ point's force is 0 (out of contact, or the damper's clamp) its derivative fields
-/// are 0 and the contact is active with the correction alone.
+/// numerical term, so that the jump's force stays below 2 k c). Within the band the force is
+/// not −∇Ẽ_k: S Δz carries the band's gradient's part along the step alone (docs). Not where
+/// |Δz| < 1e-9 R (the θ point's force, −∇E_θ, alone). The damper, friction and the release's hold
+/// stay at the θ point; where the θ point's force is 0 (out of contact, or the damper's clamp) its
+/// derivative fields are 0 and the contact is active with the correction alone.
 SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx, double vy,
                                 double angle, double speed, int held, const PocketStep& step);
 /// At the start and the end of a step (Integrator::step; the same flags for the same state, so

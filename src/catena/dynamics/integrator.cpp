@@ -620,8 +620,6 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
         solver_.rhs[i].x -= h * sc.skew * sc.skew_x;
         solver_.rhs[i].y -= h * sc.skew * sc.skew_y;
       }
-      solver_.rhs[i].x -= h * sc.band_x;  // a pocket's band, −∇B (0 elsewhere)
-      solver_.rhs[i].y -= h * sc.band_y;
       if (wheel.pocket && jacobian) {
         // the pocket's mouth ramp: the rest of the elastic ∂F/∂q on the diagonal block (its
         // coupling to the wheel's angle and the damping's are left out: quasi-Newton, the residual
@@ -659,8 +657,6 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
           pull_x += sc.skew * sc.skew_x;
           pull_y += sc.skew * sc.skew_y;
         }
-        pull_x += sc.band_x;
-        pull_y += sc.band_y;
       }
       // separating: no force, no stiffness, unless a discrete gradient's correction along the
       // step acts (a pocket's may without the θ point's force; a seat's is f cc, 0 with f)

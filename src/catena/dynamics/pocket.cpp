@@ -521,7 +521,6 @@ End end_of(const Sprocket& w, double qx, double qy, double angle, int k, int hk)
 // (the carry's own slope, O(1e-9 c), not taken). 0 outside the band.
 struct Band {
   double e = 0.0, gx = 0.0, gy = 0.0, gpsi = 0.0;
-  double hxx = 0.0, hxy = 0.0, hyy = 0.0;  // ∇_q²B without J's own Hessian (Newton's, below)
 };
 Band band_at(const Sprocket& w, const Capture& cap, double qx, double qy, double angle, int k,
              int hk) {
@@ -556,15 +555,8 @@ Band band_at(const Sprocket& w, const Capture& cap, double qx, double qy, double
   const Step phi = smooth_step(mouth - rho, 0.0, band);
   const double keep = 1.0 - phi.s;
   const double jx = scale * (dgx - along * ux), jy = scale * (dgy - along * uy);
-  // ∇²B = φ″ J q̂q̂ᵀ − φ′ (q̂ ∇Jᵀ + ∇J q̂ᵀ) − φ′ J (I − q̂q̂ᵀ)/ρ − (1 − φ) ∇²J, the last not taken
-  const double a = phi.dds * jump, t = phi.ds * jump / rho;
-  return {-keep * jump,
-          -phi.ds * jump * ux - keep * jx,
-          -phi.ds * jump * uy - keep * jy,
-          -keep * (in.gpsi - out.gpsi),
-          a * ux * ux - 2.0 * phi.ds * ux * jx - t * (1.0 - ux * ux),
-          a * ux * uy - phi.ds * (ux * jy + jx * uy) + t * ux * uy,
-          a * uy * uy - 2.0 * phi.ds * uy * jy - t * (1.0 - uy * uy)};
+  return {-keep * jump, -phi.ds * jump * ux - keep * jx, -phi.ds * jump * uy - keep * jy,
+          -keep * (in.gpsi - out.gpsi)};
 }
 
 // Ẽ_k at an end q: E_k (the contact at zero velocity, 0 free of the wheel) and B
@@ -741,20 +733,6 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   const double dx = q1x - q0x, dy = q1y - q0y, dpsi = step.angle1 - step.angle0;
   const double r = w.pitch_radius, r2 = r * r;
   const double den = dx * dx + dy * dy + r2 * dpsi * dpsi;
-  // the band's B = Ẽ_k − E_k at the θ point: its force −∇_q B on the joint (band_x, band_y) and
-  // torque −∂B/∂ψ on the wheel, at any |Δz| (the θ point's force is −∇Ẽ_k)
-  const Band bt = band_at(w, cap, rx, ry, angle, k, hk);
-  const bool banded = bt.gx != 0.0 || bt.gy != 0.0 || bt.gpsi != 0.0;
-  if (banded) {
-    if (!c.active) {
-      c = SeatContact{};
-      c.active = true;
-      c.seat = k;
-    }
-    c.band_x = bt.gx;
-    c.band_y = bt.gy;
-    c.torque -= bt.gpsi;
-  }
   // below |Δz| = 1e-9 R the mismatch is the ends' rounding over |Δz|² (as the seats')
   if (!(den > 1e-18 * r2)) return c;
   PocketStart own;  // without the caller's memo, this call's
@@ -769,13 +747,12 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
            : contact_at(w, x, y, 0.0, 0.0, 0.0, p, k, sx, sy, &cap, Need::kJacobian);
   const Band b1 = band_at(w, cap, q1x, q1y, step.angle1, k, hk);
   const double en0 = start.energy, en1 = (e1.active ? e1.energy : 0.0) + b1.e;
-  // ∇Ẽ at the θ point: G_q = f n + ∇_q B, G_ψ = −τ + ∂B/∂ψ (the elastic force −∇_q E, torque
-  // −∂E/∂ψ, and the band's, above)
-  const double gx = (et.active ? et.force * et.nx : 0.0) + bt.gx,
-               gy = (et.active ? et.force * et.ny : 0.0) + bt.gy;
-  const double gpsi = (et.active ? -et.torque : 0.0) + bt.gpsi;
+  // ∇E at the θ point: G_q = f n, G_ψ = −τ (the elastic force −∇_q E, torque −∂E/∂ψ; not the
+  // band's ∇B: within the band S Δz takes ∇B's part along the step alone, docs)
+  const double gx = et.active ? et.force * et.nx : 0.0, gy = et.active ? et.force * et.ny : 0.0;
+  const double gpsi = et.active ? -et.torque : 0.0;
   const double mismatch = en1 - en0 - (gx * dx + gy * dy) - gpsi * dpsi;
-  if (!(en0 != 0.0 || en1 != 0.0 || et.active || banded)) return c;  // Ẽ_k = 0 at all three
+  if (!(en0 != 0.0 || en1 != 0.0 || et.active)) return c;  // Ẽ_k = 0 at all three
   // the jumps of Ẽ_k the step crosses (the capture's and its shadow's in the mouth's band; the
   // mouth's own is spread over the band), J, are taken over it as the rest of ΔE is, a force J/|Δz|
   // along the step, up to r = |J| / (|Δz| k c) = 1 (k c the pocket law's force at a depth of one
@@ -798,12 +775,6 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
     for (int i = 0; i < 4; ++i)
       c.dq_extra[i] = c.dv_extra[i] = c.friction_dq[i] = c.friction_dv[i] = 0.0;
   }
-  // the band's force's ∂F/∂q = −∇²B at the θ point on the node's block (J's own Hessian and the
-  // coupling to the wheel's angle left out: quasi-Newton)
-  c.dq_extra[0] -= bt.hxx;
-  c.dq_extra[1] -= bt.hxy;
-  c.dq_extra[2] -= bt.hxy;
-  c.dq_extra[3] -= bt.hyy;
   c.skew = cc;
   c.skew_x = dx;
   c.skew_y = dy;
