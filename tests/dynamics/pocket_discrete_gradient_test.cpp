@@ -48,6 +48,26 @@ double energy_at(const Sprocket& w, Point q, double angle, int held = kNoPocket)
   return pocket_contact(w, q.x, q.y, 0.0, 0.0, angle, 0.0, held).energy;
 }
 
+// Ẽ, the energy the discrete gradient takes (docs/models/dynamics.md, "Pocket wheel: the discrete
+// gradient", "The mouth's band"): within c/2 inside the mouth, E less (1 − φ) of E's jump on the
+// mouth along the point's ray (1e-14 m either side), φ = x³(10 − 15x + 6x²), x the depth below
+// the mouth over c/2; E elsewhere. The jump with the hold the point gets within the mouth,
+// `holds` (update_held's with the release: the pocket, off the body), else `held`.
+double banded_at(const Sprocket& w, Point q, double angle, int held = kNoPocket,
+                 int holds = kNoPocket) {
+  const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance;
+  const double rx = q.x - w.centre_x, ry = q.y - w.centre_y, rho = std::hypot(rx, ry);
+  const double x = (mouth - rho) / (0.5 * w.pocket_clearance);
+  const double e = energy_at(w, q, angle, held);
+  if (!(x >= 0.0 && x < 1.0)) return e;
+  if (holds != kNoPocket) held = holds;
+  auto on = [&](double d) {
+    const double a = (mouth + d) / rho;
+    return energy_at(w, {w.centre_x + a * rx, w.centre_y + a * ry}, angle, held);
+  };
+  return e - (1.0 - x * x * x * (10.0 - 15.0 * x + 6.0 * x * x)) * (on(-1e-14) - on(1e-14));
+}
+
 // The step p0 → p1 with the wheel turning ψ₀ → ψ₁ about its centre, which stays put, at θ
 PocketStep step_over(const Sprocket& w, Point p0, Point p1, double psi0, double psi1,
                      double theta) {
@@ -431,58 +451,165 @@ TEST(DynamicsPocketDiscreteGradient, ResidualOnlyCallsGiveTheSameResidual) {
   EXPECT_EQ(blocks, corrected);
 }
 
-// Where the step's points lie across one of E_k's jumps the correction would be the jump over
-// |Δz|² (kN per µm of step): there the force is the θ point's. A joint leaving over the sharp
-// mouth 3c off its vertex (E jumps from E₀(g) to 0), and one crossing the body's capture (10c
-// from the vertex) 20 µm below the mouth, within its radial band (the pocket's E₀(9c) against the
-// body's blended depth); a step across the capture straight below the vertex, beyond the band
-// (10c) from the mouth (no jump there), is corrected. With the release a joint not held that
-// enters over the mouth 3c off its vertex, from 10 µm above to 20 µm below it, jumps from 0 to
-// E₀(g) S(u) as over the sharp mouth (held, it stays in the pocket's law beyond the mouth: the
-// release's case of the work test). Over the mouth's ramp (w = c) a joint entering 3.5c off its
-// vertex, from 2 µm above the mouth to 2 µm below it, meets the ramp's leftover jump E₀(g)(1 − W):
-// W = 0 from g = 2c on, so the whole E₀(2.54c) — ramp and pocket are one law's pieces there, and
-// the step was corrected with S = jump/|Δz|² before the jump was taken on the energy; 1.2c off
-// (g = 0.3c on the mouth, W = 1: no jump) it is corrected.
-TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheForceIsTheThetaPoints) {
+// Across one of E_k's jumps the work is −ΔẼ, Ẽ the energy the step takes (banded_at): the
+// mouth's jump spread over its band, the capture's taken over the step as the rest of ΔẼ (a force
+// J/|Δz| along it, up to r = |J| / (|Δz| k c) = 1). A joint leaving over the sharp mouth 3c off
+// its vertex (E jumps from E₀(g) to 0), and one crossing the body's capture (10c from the vertex)
+// 20 µm below the mouth, within its radial band (the pocket's E₀(9c) against the body's blended
+// depth, 39 J; the wheel turning 0.03 rad over the step, |Δz| ≈ 7 mm, for r < 1); across the
+// capture straight below the vertex, beyond the band (10c) from the mouth (no jump there). With
+// the release a joint not held that enters over the mouth 3c off its vertex, from 10 µm above to
+// 20 µm below it (the wheel turning 0.03 rad, for r < 1), jumps from 0 to E₀(g) S(u): held
+// within the mouth, its Ẽ there is E (J = 0 on the release's law), so the jump is crossed. Over the
+// mouth's ramp (w = c) a joint entering 3.5c off its vertex, from 2 µm above the mouth to 2 µm
+// below it, meets the ramp's leftover jump E₀(g)(1 − W) (W = 0 from g = 2c on: the whole
+// E₀(2.54c), 3.2 J); 1.2c off (g = 0.3c on the mouth, W = 1: no jump). (Before, the steps across a
+// jump above k ε²/6 kept the θ point's force: their work missed ΔE by the jump, 1.4 J and more
+// here.)
+TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheWorkIsTheEnergysChange) {
   Sprocket release_on = wheel8(true), release_off = wheel8(false);
   release_on.pocket_release = release_off.pocket_release = true;
-  const double c = kClearance, psi = 0.4, turn = 1e-3;
+  const double c = kClearance, psi = 0.4;
   struct Across {
     const char* what;
     double along0, below0, along1, below1;
-    bool corrected, release;
+    bool jump, release;
     double mouth;  // the ramp's width w
+    double turn;   // over the step [rad]
   };
   const Across steps[] = {
-      {"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -2e-6, false, false, 0.0},
-      {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, false, false, 0.0},
-      {"capture deep", 0.0, 10.4 * c, 0.0, 10.6 * c, true, false, 0.0},
-      {"the release's mouth, not held", 3.0 * c, -10e-6, 3.0 * c, 20e-6, false, true, 0.0},
-      {"the ramp's leftover", 3.5 * c, -2e-6, 3.5 * c, 2e-6, false, false, c},
-      {"the ramp's mouth near the vertex", 1.2 * c, -2e-6, 1.2 * c, 2e-6, true, false, c}};
+      {"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -2e-6, true, false, 0.0, 1e-3},
+      {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, true, false, 0.0, 0.03},
+      {"capture deep", 0.0, 10.4 * c, 0.0, 10.6 * c, false, false, 0.0, 1e-3},
+      {"the release's mouth, not held", 3.0 * c, -10e-6, 3.0 * c, 20e-6, true, true, 0.0, 0.03},
+      {"the ramp's leftover", 3.5 * c, -2e-6, 3.5 * c, 2e-6, true, false, c, 1e-3},
+      {"the ramp's mouth near the vertex", 1.2 * c, -2e-6, 1.2 * c, 2e-6, false, false, c, 1e-3}};
   for (const Across& a : steps) {
     Sprocket on = a.release ? release_on : wheel8(true);
     Sprocket off = a.release ? release_off : wheel8(false);
     on.pocket_mouth = off.pocket_mouth = a.mouth;
     const Point p0 = near_vertex(on, psi, 2, a.along0, a.below0);
-    const Point p1 = near_vertex(on, psi + turn, 2, a.along1, a.below1);
-    const SeatContact with = step_contact(on, p0, p1, psi, psi + turn);
-    const SeatContact without = step_contact(off, p0, p1, psi, psi + turn);
-    const double change = energy_at(on, p1, psi + turn) - energy_at(on, p0, psi);
-    std::printf("pocket discrete gradient across %s: dE %.4g J, S %.4g N/m\n", a.what, change,
-                with.skew);
-    if (a.corrected) {
-      EXPECT_NE(with.skew, 0.0) << a.what;
-      const double work = step_work(on, p0, p1, psi, psi + turn, nullptr);
-      EXPECT_LT(std::abs(work + change), 1e-9 * std::abs(change)) << a.what;
-      continue;
+    const Point p1 = near_vertex(on, psi + a.turn, 2, a.along1, a.below1);
+    const SeatContact with = step_contact(on, p0, p1, psi, psi + a.turn);
+    const double change = energy_at(on, p1, psi + a.turn) - energy_at(on, p0, psi);
+    const double banded = banded_at(on, p1, psi + a.turn, kNoPocket, a.release ? 2 : kNoPocket) -
+                          banded_at(on, p0, psi);
+    const double work = step_work(on, p0, p1, psi, psi + a.turn, nullptr);
+    const double theta_work = step_work(off, p0, p1, psi, psi + a.turn, nullptr);
+    std::printf(
+        "pocket discrete gradient across %s: dE %.4g J, dE~ %.4g J, S %.4g N/m, |work + dE~| "
+        "%.2e J (the theta point's force: %.3g J off)\n",
+        a.what, change, banded, with.skew, std::abs(work + banded), std::abs(theta_work + banded));
+    if (a.jump) {
+      EXPECT_GT(std::abs(change), 1.0) << a.what;  // the jump
     }
-    EXPECT_GT(std::abs(change), 1.0) << a.what;  // the jump
-    EXPECT_EQ(with.skew, 0.0) << a.what;
-    EXPECT_EQ(with.force, without.force) << a.what;
-    EXPECT_EQ(with.torque, without.torque) << a.what;
+    EXPECT_NE(with.skew, 0.0) << a.what;
+    EXPECT_LT(std::abs(work + banded), 1e-8 * std::abs(change)) << a.what;
   }
+}
+
+// With the release, a joint not held that enters its pocket 3c off the vertex (10 µm above the
+// mouth to 20 µm below it, in the band) is held from there on (update_held: within the mouth, off
+// the body), and its next step goes 40 µm deeper, past the band; the wheel turns 0.03 rad a step
+// (r < 1: no share left). Over the two steps the work is −(E at the end − 0): the end of the first
+// step and the start of the second take the same Ẽ. (With J taken with the hold the step is called
+// with, the entry's end took E − (1 − φ) J, the next start E: the two steps' work missed by that,
+// 1.4 J here, once per entry.)
+TEST(DynamicsPocketDiscreteGradient, TheReleasesEntryOverTwoStepsIsTheEnergysChange) {
+  Sprocket on = wheel8(true);
+  on.pocket_release = true;
+  const double c = kClearance, psi = 0.4, turn = 0.03;
+  const Point p0 = near_vertex(on, psi, 2, 3.0 * c, -10e-6);
+  const Point p1 = near_vertex(on, psi + turn, 2, 3.0 * c, 20e-6);
+  const Point p2 = near_vertex(on, psi + 2.0 * turn, 2, 3.0 * c, 60e-6);
+  const double work = step_work(on, p0, p1, psi, psi + turn, nullptr) +
+                      step_work(on, p1, p2, psi + turn, psi + 2.0 * turn, nullptr, 2);
+  const double change = energy_at(on, p2, psi + 2.0 * turn, 2) - energy_at(on, p0, psi);
+  std::printf(
+      "pocket discrete gradient, the release's entry over two steps: dE %.4g J, "
+      "|work + dE| %.2e J\n",
+      change, std::abs(work + change));
+  EXPECT_GT(change, 1.0);
+  EXPECT_LT(std::abs(work + change), 1e-8 * change);
+}
+
+// Within the mouth's band the θ point's force along the step is −∇Ẽ's as the step shrinks,
+// whatever its direction, and across it −∇E's (the band's ∇B across the step is not taken, docs):
+// steps of |Δq| = L centred on a point 3c off the vertex, 25 µm below the sharp mouth (φ ≈ ½),
+// radial and tangential, the wheel held, at θ = ½; L 1 µm and 10 nm. The force on the joint,
+// −f n − S Δ, against central differences of banded_at (1 nm) and of pocket_contact's energy.
+TEST(DynamicsPocketDiscreteGradient, WithinTheBandTheForceAlongTheStepIsTheBandedEnergys) {
+  const Sprocket on = wheel8(true);
+  const double c = kClearance, psi = 0.4, h = 1e-9;
+  const Point q = near_vertex(on, psi, 2, 3.0 * c, 25e-6);
+  auto grad = [&](auto f) {
+    return Point{(f(Point{q.x + h, q.y}) - f(Point{q.x - h, q.y})) / (2.0 * h),
+                 (f(Point{q.x, q.y + h}) - f(Point{q.x, q.y - h})) / (2.0 * h)};
+  };
+  const Point gb = grad([&](Point p) { return banded_at(on, p, psi); });
+  const Point ge = grad([&](Point p) { return energy_at(on, p, psi); });
+  const double rx = q.x - on.centre_x, ry = q.y - on.centre_y, rho = std::hypot(rx, ry);
+  const double scale = std::hypot(gb.x, gb.y);
+  double worst = 0.0, across = 0.0;
+  for (const bool radial : {true, false}) {
+    const double ux = radial ? rx / rho : -ry / rho, uy = radial ? ry / rho : rx / rho;
+    for (const double len : {1e-6, 1e-8}) {
+      const Point p0{q.x - 0.5 * len * ux, q.y - 0.5 * len * uy};
+      const Point p1{q.x + 0.5 * len * ux, q.y + 0.5 * len * uy};
+      const SeatContact s = step_contact(on, p0, p1, psi, psi);
+      ASSERT_TRUE(s.active);
+      const double fx = -s.force * s.nx - s.skew * s.skew_x;
+      const double fy = -s.force * s.ny - s.skew * s.skew_y;
+      const double along = std::abs((fx + gb.x) * ux + (fy + gb.y) * uy) / scale;
+      const double off = std::abs((fx + ge.x) * -uy + (fy + ge.y) * ux) / scale;
+      worst = std::max(worst, along);
+      across = std::max(across, off);
+      EXPECT_LT(along, 1e-3) << (radial ? "radial" : "tangential") << " L " << len;
+      EXPECT_LT(off, 1e-3) << (radial ? "radial" : "tangential") << " L " << len;
+    }
+  }
+  std::printf(
+      "pocket discrete gradient within the band: |grad E~| %.3g N, |grad E~ - grad E| "
+      "%.3g N; the force along the step misses -grad E~'s by %.2e of it, across it "
+      "-grad E's by %.2e\n",
+      scale, std::hypot(gb.x - ge.x, gb.y - ge.y), worst, across);
+}
+
+// Ẽ has no jump but the ones crossed_jump takes: tiny steps (0.1 µm, the wheel held) scanned
+// radially across the mouth and the band's inner edge, 3c, 6c and 9.9c off the vertex (J 2 J to
+// 40 J). Each step's work is −(ΔẼ − s J), s = 1 for any real jump over so short a step (r > 2), so
+// a jump crossed_jump does not find shows as work far above the force's scale: each step's |work|
+// stays below 2.5e6 N (the band's force, J's slope 9.9c off included) times its length, 0.25 J.
+// (A scan along the band, chords of 0.2c from −12c to 12c at 0 to 49 µm below the mouth, finds
+// single points 9.6c–10c off the vertex, on the chords' ends, where Ẽ stands 2.5–39 J off its
+// neighbours 0.1 µm away: not diagnosed, docs "Not built yet".)
+TEST(DynamicsPocketDiscreteGradient, TheBandedEnergyJumpsOnlyWhereItsJumpsAreTaken) {
+  const Sprocket on = wheel8(true);
+  const double c = kClearance, psi = 0.4, step = 1e-7, bound = 2.5e6 * step;
+  double worst = 0.0;
+  auto scan = [&](const char* what, Point a, Point b) {
+    const int n = static_cast<int>(std::hypot(b.x - a.x, b.y - a.y) / step) + 1;
+    Point p0 = a;
+    for (int i = 1; i <= n; ++i) {
+      const double t = static_cast<double>(i) / n;
+      const Point p1{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+      const double work = std::abs(step_work(on, p0, p1, psi, psi, nullptr));
+      worst = std::max(worst, work);
+      if (!(work < bound)) {
+        ADD_FAILURE() << what << " at " << i << " of " << n << " from (" << a.x << ", " << a.y
+                      << "): work " << work << " J";
+        return;
+      }
+      p0 = p1;
+    }
+  };
+  for (const double along : {3.0 * c, 6.0 * c, 9.9 * c})
+    scan("across the band", near_vertex(on, psi, 2, along, -5e-6),
+         near_vertex(on, psi, 2, along, 0.5 * c + 5e-6));
+  std::printf(
+      "pocket discrete gradient, tiny steps along and across the band: the largest work "
+      "%.3g J (bound %.3g J)\n",
+      worst, bound);
 }
 
 // A step across the sharp mouth within about 0.87c of its vertex, where the pocket's E₀(g) is 0 on
@@ -526,64 +653,107 @@ TEST(DynamicsPocketDiscreteGradient, AcrossTheMouthWithinTheClearanceIsCorrected
   EXPECT_GT(theta_best, 1e-2);
 }
 
-// The skip's threshold: a jump of the pocket's law's energy at a gap of one smoothing length ε,
-// k ε²/6 (1.7e-5 J here), or less is corrected, a larger one keeps the θ point's force. On the
-// mouth's ramp (w = c) the leftover jump (1 − W(g)) E₀(g) grows from 0 at g = c: a joint entering
-// from 2 µm above the mouth to 2 µm below it where g = 1.0126c on the mouth meets a jump of
-// 1e-5 J, corrected (its work −ΔE); where g = 1.03c, 1.4e-4 J, the θ point's force bit for bit;
-// and where the jump is 0.9 and 1.1 of the threshold (g found by bisection on the jump measured
-// across the mouth), corrected and kept: the threshold is pinned to within 10 % from both sides.
-// (With no threshold the first fails; the pieces' test corrected both, and the second fails.)
-TEST(DynamicsPocketDiscreteGradient, AJumpBelowTheSmoothingsEnergyIsCorrected) {
-  Sprocket on = wheel8(true), off = wheel8(false);
+// A slow crossing of the mouth: its jump is spread over the band (Ẽ continuous there), so the
+// correction's force does not grow as the step shrinks — at most the band's steepest, 1.875 |J|/ℓ
+// (ℓ = c/2), with the capture's share bound 2 k c — and the work is −ΔẼ at every |Δz|. A joint
+// entering radially over the mouth's ramp (w = c) where its leftover jump is 0.9 of k ε²/6
+// (1.5e-5 J; g found by bisection on the jump measured across the mouth), and one over the sharp
+// mouth 3c off its vertex (2.07 J), from |Δz|/2 above the mouth to |Δz|/2 below it, the wheel
+// held, for |Δz| from 0.4 mm down to 0.4 nm. (With the threshold at k ε²/6 the ramp's jump was
+// corrected in full, J/|Δz| = 3.7e4 N at |Δz| = 0.4 nm; with the jump taken over the step and a
+// share of it left from r = |J|/(|Δz| k c) = 1 on, 5151 N, the work missing ΔẼ by up to J.)
+TEST(DynamicsPocketDiscreteGradient, ASlowCrossingOfTheMouthsBandIsBoundedAndExact) {
+  Sprocket ramp = wheel8(true);
+  const Sprocket sharp = wheel8(true);
   const double c = kClearance, psi = 0.4;
-  on.pocket_mouth = off.pocket_mouth = c;
-  const double eps = on.contact_smoothing, threshold = kStiffness * eps * eps / 6.0;
+  ramp.pocket_mouth = c;
+  const double eps = ramp.contact_smoothing, small = kStiffness * eps * eps / 6.0;
+  const double spread = 1.875 / (0.5 * c), bound = 2.0 * kStiffness * c;
   // off the vertex so that g = (1 + x) c on the mouth: |e| = (2 + x) c, c/2 below it radially
   auto along_of = [&](double x) { return std::sqrt((2.0 + x) * (2.0 + x) - 0.25) * c; };
   auto jump_at = [&](double x) {
     const double along = along_of(x);
-    return energy_at(on, near_vertex(on, psi, 2, along, 1e-12), psi) -
-           energy_at(on, near_vertex(on, psi, 2, along, -1e-12), psi);
+    return energy_at(ramp, near_vertex(ramp, psi, 2, along, 1e-12), psi) -
+           energy_at(ramp, near_vertex(ramp, psi, 2, along, -1e-12), psi);
   };
-  // x where the jump is `share` of the threshold (the jump grows with x over [0.0126, 0.03])
-  auto x_for = [&](double share) {
-    double lo = 0.0126, hi = 0.03;
-    for (int it = 0; it < 60; ++it) {
-      const double m = 0.5 * (lo + hi);
-      (jump_at(m) < share * threshold ? lo : hi) = m;
-    }
-    return 0.5 * (lo + hi);
+  double lo = 0.0126, hi = 0.03;  // the jump grows with x over [0.0126, 0.03]
+  for (int it = 0; it < 60; ++it) {
+    const double m = 0.5 * (lo + hi);
+    (jump_at(m) < 0.9 * small ? lo : hi) = m;
+  }
+  struct Across {
+    const char* what;
+    const Sprocket* w;
+    double along;
   };
-  for (const double x : {0.0126, x_for(0.9), x_for(1.1), 0.03}) {
-    const double along = along_of(x), jump = jump_at(x);
-    const bool small = jump < threshold;
-    if (small) {
-      ASSERT_GT(jump, 0.3 * threshold);
-      ASSERT_LT(jump, 0.91 * threshold);
-    } else {
-      ASSERT_GT(jump, 1.09 * threshold);
+  const Across cases[] = {{"the ramp's leftover", &ramp, along_of(0.5 * (lo + hi))},
+                          {"the sharp mouth", &sharp, 3.0 * c}};
+  for (const Across& a : cases) {
+    const double jump = std::abs(energy_at(*a.w, near_vertex(*a.w, psi, 2, a.along, 1e-12), psi) -
+                                 energy_at(*a.w, near_vertex(*a.w, psi, 2, a.along, -1e-12), psi));
+    ASSERT_GT(jump, 0.0) << a.what;
+    double largest = 0.0;
+    for (double dz = 4e-4; dz > 3e-10; dz *= 0.1) {
+      const Point p0 = near_vertex(*a.w, psi, 2, a.along, -0.5 * dz);
+      const Point p1 = near_vertex(*a.w, psi, 2, a.along, 0.5 * dz);
+      const SeatContact with = step_contact(*a.w, p0, p1, psi, psi);
+      const double force = std::abs(with.skew) * dz;
+      largest = std::max(largest, force);
+      EXPECT_LT(force, spread * jump + bound) << a.what << " |dz| " << dz;
+      const double change = banded_at(*a.w, p1, psi) - banded_at(*a.w, p0, psi);
+      const double work = step_work(*a.w, p0, p1, psi, psi, nullptr);
+      EXPECT_LT(std::abs(work + change), 1e-9 + 1e-9 * std::abs(change))
+          << a.what << " |dz| " << dz;
     }
-    for (const double turn : {0.0, 1e-3}) {
-      const Point p0 = near_vertex(on, psi, 2, along, -2e-6);
-      const Point p1 = near_vertex(on, psi + turn, 2, along, 2e-6);
-      const SeatContact with = step_contact(on, p0, p1, psi, psi + turn);
-      const SeatContact without = step_contact(off, p0, p1, psi, psi + turn);
-      const double change = energy_at(on, p1, psi + turn) - energy_at(on, p0, psi);
-      std::printf(
-          "pocket discrete gradient across the ramp's jump %.3g J (threshold %.3g J), "
-          "turn %g: dE %.4g J, S %.4g N/m\n",
-          jump, threshold, turn, change, with.skew);
-      if (small) {
-        EXPECT_NE(with.skew, 0.0) << x << " turn " << turn;
-        const double work = step_work(on, p0, p1, psi, psi + turn, nullptr);
-        EXPECT_LT(std::abs(work + change), 1e-9 * std::abs(change)) << x << " turn " << turn;
-      } else {
-        EXPECT_EQ(with.skew, 0.0) << x << " turn " << turn;
-        EXPECT_EQ(with.force, without.force) << x << " turn " << turn;
-        EXPECT_EQ(with.torque, without.torque) << x << " turn " << turn;
-      }
-    }
+    std::printf(
+        "pocket discrete gradient across %s (jump %.3g J) from |dz| 0.4 mm to 0.4 nm: the "
+        "correction's force at most %.4g N (bound 1.875 J/l + 2 k c = %.4g N)\n",
+        a.what, jump, largest, spread * jump + bound);
+  }
+}
+
+// The correction's derivatives across a jump where its rule is smooth (r ≤ 1: the jump taken in
+// full): ∂S/∂x₁, ∂S/∂ψ₁ against central differences of S over the step's end (the θ point moving
+// with it), for a joint leaving over the sharp mouth 3c off its vertex (2 µm in to 30 µm out:
+// the θ point beyond the mouth), one crossing the
+// capture near the mouth (the wheel turning 1e-3 and 0.03 rad over the step), and one entering
+// the sharp mouth 3c off its vertex to end 20 µm below it, in the band where J ≠ 0 (the θ point
+// 5 µm above the mouth: J's own Hessian at a θ point in the band is not taken). (Without J's slope,
+// −(1 − φ)∇J and ∂J/∂ψ, in the end's gradient, the entering step's slope missed by about a
+// quarter.)
+TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheCorrectionsSlopeMatchesTheDifferences) {
+  const Sprocket on = wheel8(true);
+  const double c = kClearance, psi = 0.4;
+  struct Across {
+    const char* what;
+    double along0, below0, along1, below1, turn;
+  };
+  const Across steps[] = {{"sharp mouth", 3.0 * c, 2e-6, 3.0 * c, -30e-6, 1e-3},
+                          {"capture near the mouth", 9.9 * c, 20e-6, 10.1 * c, 20e-6, 0.03},
+                          {"entering the sharp mouth", 3.0 * c, -30e-6, 3.2 * c, 20e-6, 1e-3}};
+  for (const Across& a : steps) {
+    const Point p0 = near_vertex(on, psi, 2, a.along0, a.below0);
+    const Point p1 = near_vertex(on, psi + a.turn, 2, a.along1, a.below1);
+    const double psi1 = psi + a.turn;
+    const SeatContact with = step_contact(on, p0, p1, psi, psi1);
+    ASSERT_NE(with.skew, 0.0) << a.what;
+    const double hx = 1e-10, hp = 1e-10 / on.pitch_radius;
+    const double fx = (step_contact(on, p0, {p1.x + hx, p1.y}, psi, psi1).skew -
+                       step_contact(on, p0, {p1.x - hx, p1.y}, psi, psi1).skew) /
+                      (2.0 * hx);
+    const double fy = (step_contact(on, p0, {p1.x, p1.y + hx}, psi, psi1).skew -
+                       step_contact(on, p0, {p1.x, p1.y - hx}, psi, psi1).skew) /
+                      (2.0 * hx);
+    const double fp = (step_contact(on, p0, p1, psi, psi1 + hp).skew -
+                       step_contact(on, p0, p1, psi, psi1 - hp).skew) /
+                      (2.0 * hp);
+    const double scale = std::hypot(fx, fy, fp / on.pitch_radius);
+    const double miss =
+        std::hypot(with.skew_dx - fx, with.skew_dy - fy, (with.skew_dpsi - fp) / on.pitch_radius);
+    std::printf(
+        "pocket discrete gradient across %s: S %.4g N/m, |dS - FD| / |FD| %.2e (|FD| %.3g)\n",
+        a.what, with.skew, miss / scale, scale);
+    EXPECT_LT(miss, 1e-5 * scale) << a.what;
   }
 }
 
@@ -710,7 +880,9 @@ TEST(DynamicsPocketDiscreteGradient, ACrossingWithNoJumpIsCorrectedAtAnySmoothin
 // reach of `from` (max(θ, 1 − θ) (|Δq| + R |Δψ|)): a held wheel's joint 20 µm below the mouth
 // from 9.82c to 10.02c off its vertex, its θ point 0.75 of the reach short of `from` = 10c
 // and its end across it, where the pocket's energy jumps to the body's: the θ point's force is
-// kept bit for bit (with the capture sought only within 0.6 of the reach, it is corrected).
+// left out of the correction (r = |J| / (|Δz| k c) ≫ 2 on this 20 µm step: the share left is the
+// whole jump, and S |Δz|² is the continuous part's 0.2 J against ΔE = 39 J); with the capture
+// sought only within 0.6 of the reach, the jump is not seen and S |Δz|² is all of ΔE.
 TEST(DynamicsPocketDiscreteGradient, CaptureIsSoughtWithinThePathsReachOfTheThetaPoint) {
   const Sprocket on = wheel8(true), off = wheel8(false);
   const double c = kClearance, psi = 0.4, from = 10.0 * c;
@@ -732,9 +904,9 @@ TEST(DynamicsPocketDiscreteGradient, CaptureIsSoughtWithinThePathsReachOfTheThet
       "it: dE %.4g J, S %.4g N/m\n",
       (from - dist(pt)) / reach, change, with.skew);
   EXPECT_GT(std::abs(change), 1.0);  // the jump
-  EXPECT_EQ(with.skew, 0.0);
+  const double den = (p1.x - p0.x) * (p1.x - p0.x) + (p1.y - p0.y) * (p1.y - p0.y);
+  EXPECT_LT(std::abs(with.skew) * den, 0.05 * std::abs(change));
   EXPECT_EQ(with.force, without.force);
-  EXPECT_EQ(with.torque, without.torque);
 }
 
 // A link's two joints falling radially onto a driven pocket wheel at `inward` [m/s], the leading
@@ -927,10 +1099,11 @@ TEST(DynamicsPocketDiscreteGradient, NewtonMatrixMatchesTheResidualsDifferences)
 // strands' ends pulled by constant forces, h = 0.1 ms over `steps` steps. The work balance: the
 // driver's work Σ −τ Δψ against the change of the energy (kinetic, links', contacts', the end
 // forces' potential). The mouth's ramp `mouth` (0: the sharp mouth, E's jump where a joint leaves
-// across it).
+// across it, taken over the step as the rest of ΔE).
 struct WrapRun {
   double kinetic0 = 0.0, worst = 0.0;
-  int steps = 0;  // completed
+  double settled = INFINITY;  // the least |balance| over the last 200 steps
+  int steps = 0;              // completed
 };
 WrapRun wrap_run(bool gradient, double mouth, int steps) {
   testing::PocketSetup setup =
@@ -949,6 +1122,7 @@ WrapRun wrap_run(bool gradient, double mouth, int steps) {
     const double balance = energy(m, s).total() - e0.total() - work;
     if (!std::isfinite(balance)) break;
     out.worst = std::max(out.worst, std::abs(balance));
+    if (step >= steps - 200) out.settled = std::min(out.settled, std::abs(balance));
     out.steps = step + 1;
   }
   return out;
@@ -962,13 +1136,21 @@ TEST(DynamicsPocketDiscreteGradient, WrapAtThetaHalfKeepsItsWorkBalance) {
   std::printf(
       "pocket wrap at theta = 1/2 over 0.1 s (kinetic %.4g J), mouth's ramp c: work balance worst "
       "%.2e of the kinetic with the discrete gradient (%d steps), %.3g with the theta point's "
-      "force (%d steps); sharp mouth: %.3g (%d steps), %.3g (%d steps)\n",
+      "force (%d steps); sharp mouth: %.3g (%d steps; %.2e when no joint is in a band), %.3g "
+      "(%d steps)\n",
       kept.kinetic0, kept.worst / kept.kinetic0, kept.steps, theta.worst / theta.kinetic0,
-      theta.steps, sharp.worst / sharp.kinetic0, sharp.steps, sharp_theta.worst / sharp.kinetic0,
-      sharp_theta.steps);
+      theta.steps, sharp.worst / sharp.kinetic0, sharp.steps, sharp.settled / sharp.kinetic0,
+      sharp_theta.worst / sharp.kinetic0, sharp_theta.steps);
   EXPECT_EQ(kept.steps, steps);
   EXPECT_LT(kept.worst, 1e-6 * kept.kinetic0);
   EXPECT_TRUE(theta.steps < steps || theta.worst > 100.0 * kept.worst);
+  // the sharp mouth's exits: their jumps spread over the mouth's band, the balance off by the
+  // band's share (1 − φ) J of the joints within it at the time (4.8e-3 of the kinetic at worst),
+  // back to 8.9e-8 of it when none is (the least over the last 200 steps; 9.8e-3 and growing
+  // when the steps across kept the θ point's force, the jumps adding up)
+  EXPECT_EQ(sharp.steps, steps);
+  EXPECT_LT(sharp.worst, 1e-2 * sharp.kinetic0);
+  EXPECT_LT(sharp.settled, 1e-5 * sharp.kinetic0);
 }
 
 }  // namespace

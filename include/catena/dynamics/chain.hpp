@@ -1024,7 +1024,7 @@ struct PocketStart {
   bool set = false;
   double x0 = 0.0, y0 = 0.0, cx0 = 0.0, cy0 = 0.0, angle0 = 0.0, centre_x = 0.0, centre_y = 0.0;
   int pocket = 0, held = 0;
-  double energy = 0.0;  ///< [J] E_k(x₀, ψ₀), 0 out of contact
+  double energy = 0.0;  ///< [J] Ẽ_k(x₀, ψ₀), E_k with the mouth's band's share, 0 out of it
 };
 /// A step's ends for the pocket's discrete gradient (Sprocket::discrete_gradient on a pocket
 /// wheel): the joint at the step's start x₀ and end x₁ [m], the wheel's centre there [m] (they
@@ -1044,18 +1044,22 @@ struct PocketStep {
 };
 /// pocket_contact at the θ point (x, y, angle, its speeds) over the step `step` (docs/models/
 /// dynamics.md, "Pocket wheel: the discrete gradient"). Without Sprocket::discrete_gradient the
-/// θ point's contact, bit for bit. With it, the elastic energy E_k of the θ point's pocket k (the
-/// nearest, or the held one beyond the mouth; the same law at every point: pocket, mouth's ramp,
-/// release or body as the point's own place decides) at the step's ends puts the work's miss
-/// ΔE − ∇E_θ·Δz back along the step z = (q − O, R ψ), metric (1, R²): the skew fields as the
-/// seats' (the joint gains −S Δ, the torque −S R² Δψ, S = (ΔE − ∇E_θ·Δz)/|Δz|²), so that the
-/// elastic work over the step is −ΔE_k. Not where |Δz| < 1e-9 R, nor where the step's two ends
-/// lie on opposite sides of surfaces where E_k jumps (the mouth's circle: sharp, with the release
-/// for a joint not held, the ramp's leftover (1 − W) E₀; the body's capture) by more in all than
-/// the pocket law's energy at a gap of one smoothing length: there the θ point's force alone. The
-/// damper, friction and the release's hold stay at the θ point; where the θ point's force is 0 (out
-/// of contact, or the damper's clamp) its derivative fields are 0 and the contact is active with
-/// the correction alone.
+/// θ point's contact, bit for bit. With it, the energy Ẽ_k the step takes for the θ point's
+/// pocket k (the nearest, or the held one beyond the mouth; the same law at every point: pocket,
+/// mouth's ramp, release or body as the point's own place decides): E_k less (1 − φ) of E_k's
+/// jump J on the mouth within the mouth's band (c/2 inside it; J with the hold the point gets,
+/// 0 for a joint the release holds). Ẽ_k at the step's ends puts the work's miss ΔẼ − ∇E_θ·Δz
+/// back along the
+/// step z = (q − O, R ψ), metric (1, R²): the skew fields as the seats' (the joint gains −S Δ,
+/// the torque −S R² Δψ, S = (ΔẼ − ∇E_θ·Δz − s J)/|Δz|²), so that the elastic work over the
+/// step is −(ΔẼ_k − s J). J the signed sum of the jumps of Ẽ_k the step's ends lie across (the
+/// body's capture, its shadow in the band, the release's mouth for a joint not held), s(r) a C²
+/// step from 0 at r = |J| / (|Δz| k c) = 1 to 1 at r = 2 (the share left to the work balance's
+/// numerical term, so that the jump's force stays below 2 k c). Within the band the force is
+/// not −∇Ẽ_k: S Δz carries the band's gradient's part along the step alone (docs). Not where
+/// |Δz| < 1e-9 R (the θ point's force, −∇E_θ, alone). The damper, friction and the release's hold
+/// stay at the θ point; where the θ point's force is 0 (out of contact, or the damper's clamp) its
+/// derivative fields are 0 and the contact is active with the correction alone.
 SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx, double vy,
                                 double angle, double speed, int held, const PocketStep& step);
 /// At the start and the end of a step (Integrator::step; the same flags for the same state, so

@@ -3067,18 +3067,18 @@ Result run(const analysis::Inputs& in) {
   }
   // with the discrete gradient (the seats' elastic force and damper over the step) drives close
   // their work balance at θ = ½, damped or not (docs, "Sprockets: the discrete gradient"); on
-  // pocket wheels the sharp mouth's energy jump stays outside it (the tension-only links are
-  // in: "Tension-only links: the discrete gradient"), and the pocket example at ½ undamped stops
-  // ("Pocket wheel: the discrete gradient")
+  // pocket wheels the energy jumps are taken over the step too, the mouth's spread over a band
+  // (the tension-only links are in: "Tension-only links: the discrete gradient"), and the pocket
+  // example at ½ undamped stops ("Pocket wheel: the discrete gradient")
   if (d.theta < 0.6) {
     const char* why =
         !d.discrete_gradient ? " < 0.6: drives with roller-seat contact diverged below 0.6 "
                                "(docs/models/dynamics.md)"
         : d.pocket
             ? " < 0.6: with discrete_gradient = true the pockets' and the links' force is "
-              "taken over the step, but the sharp mouth's energy jump is not: pocket-wheel runs "
-              "below 0.6 may stop (docs/models/dynamics.md, \"Pocket wheel: the discrete "
-              "gradient\")"
+              "taken over the step, and the pockets' energy jumps too (the mouth's spread over "
+              "a band), but pocket-wheel runs below 0.6 may stop (docs/models/dynamics.md, "
+              "\"Pocket wheel: the discrete gradient\")"
             : " < 0.6: with discrete_gradient = true drives with roller-seat contact, damped or "
               "not, keep their work balance down to 0.5 (the seats' elastic force and damper "
               "taken over the step; docs/models/dynamics.md, \"Sprockets: the discrete "

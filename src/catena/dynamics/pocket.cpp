@@ -486,7 +486,8 @@ SeatContact pocket_contact(const Sprocket& w, double x, double y, double vx, dou
 
 // The pocket's discrete gradient (docs/models/dynamics.md, "Pocket wheel: the discrete
 // gradient"), a block of its own: the θ point's contact, and the elastic energy E_k of its pocket
-// k at the step's ends, put back along the step z = (q − O, R ψ) in the metric (1, R²).
+// k at the step's ends (Ẽ_k, the mouth's jump spread over its band), put back along the step
+// z = (q − O, R ψ) in the metric (1, R²).
 namespace {
 // A step's end q (relative to the wheel's centre there, put about w's centre) for pocket k
 // (held: hk ≠ kNoPocket) with the wheel at `angle`: the point, where it is, whether it is free of
@@ -507,16 +508,72 @@ End end_of(const Sprocket& w, double qx, double qy, double angle, int k, int hk)
   return e;
 }
 
-// E_k at an end `e`: the contact at zero velocity, its energy alone (0 free of the wheel)
-double energy_of(const Sprocket& w, const Capture& cap, const End& e, int k) {
-  if (e.free) return 0.0;
-  const SeatContact c =
-      contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kEnergy);
-  return c.active ? c.energy : 0.0;
+// The mouth's jump spread over a band (docs/models/dynamics.md, "Pocket wheel: the discrete
+// gradient", "The mouth's band"): the energy the step takes at a point is Ẽ_k = E_k + B,
+// B = −(1 − φ) J within ℓ = c/2 inside the mouth ρ = R + c/2, φ the C² step from 0 on the mouth to
+// 1 at depth ℓ (the pitch circle), J = E_k's jump on the mouth on the point's radial ray (each side
+// 1e-9 c off, carried to the mouth along its radial slope): Ẽ_k is E_k's outer side's on the
+// mouth, so it has no jump there, and E_k itself from ℓ in. J is taken with the hold the point
+// gets (update_held): with the release, a point within the mouth and off the body is held by
+// pocket k, so J = 0 there and a joint's entry is a jump crossed on the mouth (crossed_jump).
+// B's gradient, ∇_q B = −φ′ J q/ρ − (1 − φ) ∇_q J and ∂B/∂ψ = −(1 − φ) ∂J/∂ψ, with J's from the
+// two sides' forces and torques: ∇_q J = (M/ρ)(I − q̂q̂ᵀ)(f n|in − f n|out), ∂J/∂ψ = −(τ_in − τ_out)
+// (the carry's own slope, O(1e-9 c), not taken). 0 outside the band.
+struct Band {
+  double e = 0.0, gx = 0.0, gy = 0.0, gpsi = 0.0;
+};
+Band band_at(const Sprocket& w, const Capture& cap, double qx, double qy, double angle, int k,
+             int hk) {
+  const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance, band = 0.5 * w.pocket_clearance;
+  const double rho = std::hypot(qx, qy);
+  if (!(rho <= mouth && rho > mouth - band)) return {};
+  int hold = hk;
+  if (w.pocket_release) {
+    const End at = end_of(w, qx, qy, angle, k, k);
+    double vx = 0.0, vy = 0.0;
+    vertex_point(w, vertex_angle(w, k, angle), vx, vy);
+    if (!in_body(w, &cap, std::hypot(at.x - vx, at.y - vy))) hold = k;
+  }
+  const double ux = qx / rho, uy = qy / rho, del = 1e-9 * w.pocket_clearance;
+  // each side's E carried to the mouth (as jump_on does), and its ∇_q E = f n, ∂E/∂ψ = −τ
+  auto side = [&](double at) {
+    const End e = end_of(w, ux * at, uy * at, angle, k, hold);
+    if (e.free) return Band{};
+    const SeatContact c =
+        contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kForce);
+    if (!c.active) return Band{};
+    return Band{c.energy + (mouth - at) * c.force * (c.nx * ux + c.ny * uy), c.force * c.nx,
+                c.force * c.ny, -c.torque};
+  };
+  const Band in = side(mouth - del), out = side(mouth + del);
+  const double jump = in.e - out.e, dgx = in.gx - out.gx, dgy = in.gy - out.gy;
+  // no jump within the sides' own error, O(k del²) and their rounding (one law on both sides: a
+  // held joint's release, the body, whose energy is 0 on the mouth)
+  const double floor = 4.0 * w.contact_stiffness * del * del;
+  if (!(std::abs(jump) > std::max(1e-9 * (std::abs(in.e) + std::abs(out.e)), floor))) return {};
+  const double along = ux * dgx + uy * dgy, scale = mouth / rho;
+  const Step phi = smooth_step(mouth - rho, 0.0, band);
+  const double keep = 1.0 - phi.s;
+  const double jx = scale * (dgx - along * ux), jy = scale * (dgy - along * uy);
+  return {-keep * jump, -phi.ds * jump * ux - keep * jx, -phi.ds * jump * uy - keep * jy,
+          -keep * (in.gpsi - out.gpsi)};
+}
+
+// Ẽ_k at an end q: E_k (the contact at zero velocity, 0 free of the wheel) and B
+double banded_energy(const Sprocket& w, const Capture& cap, double qx, double qy, double angle,
+                     int k, int hk) {
+  const End e = end_of(w, qx, qy, angle, k, hk);
+  double en = 0.0;
+  if (!e.free) {
+    const SeatContact c =
+        contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kEnergy);
+    if (c.active) en = c.energy;
+  }
+  return en + band_at(w, cap, qx, qy, angle, k, hk).e;
 }
 
 // The step's start for pocket k (held: hk ≠ kNoPocket) from the memo `m`, taken afresh there
-// unless it holds this start, wheel's centre, pocket and hold: its energy E_k. The start does not
+// unless it holds this start, wheel's centre, pocket and hold: its energy Ẽ_k. The start does not
 // move within a step, so the integrator's Newton iterations take it once a step, unless the θ
 // point's pocket changes.
 const PocketStart& step_start(const Sprocket& w, const Capture& cap, const PocketStep& step, int k,
@@ -537,41 +594,47 @@ const PocketStart& step_start(const Sprocket& w, const Capture& cap, const Pocke
                   .centre_y = w.centre_y,
                   .pocket = k,
                   .held = hk};
-  m.energy =
-      energy_of(w, cap, end_of(w, step.x0 - step.cx0, step.y0 - step.cy0, step.angle0, k, hk), k);
+  m.energy = banded_energy(w, cap, step.x0 - step.cx0, step.y0 - step.cy0, step.angle0, k, hk);
   return m;
 }
 
 // E_k's jumps (docs/models/dynamics.md, "Pocket wheel: the discrete gradient", "The jumps") lie
 // on two surfaces: the mouth's circle ρ = R + c/2 (the sharp mouth's E₀(g) against 0, the
 // release's E₀(g) S(u) for a joint not held, the ramp's leftover E₀(g) (1 − W(g)); 0 within
-// about 0.87c of the vertex, where g ≤ 0 on the mouth) and, with the body, the capture
-// |q − C_k| = `from` (the pocket's law against the body's blended depth: 0 beyond the body's
-// radial band of the mouth). The step's path in (q − O, ψ) is the straight one, q(t) = q₀ + t Δq,
-// ψ(t) = ψ₀ + t Δψ, its θ point at t = θ.
+// about 0.87c of the vertex, where g ≤ 0 on the mouth), spread over the mouth's band in the
+// energy the step takes (Ẽ_k, above), and, with the body, the capture |q − C_k| = `from` (the
+// pocket's law against the body's blended depth: 0 beyond the body's radial band of the mouth). The
+// step's path in (q − O, ψ) is the straight one, q(t) = q₀ + t Δq, ψ(t) = ψ₀ + t Δψ, its θ point at
+// t = θ.
 struct Path {
   double q0x = 0.0, q0y = 0.0, dx = 0.0, dy = 0.0, psi0 = 0.0, dpsi = 0.0, theta = 0.5;
 };
 
-// E_k and its rate dE/dt at the path's point t: the contact at zero velocity, whose elastic force
-// gives ∇_q E = f n and whose torque ∂E/∂ψ = −τ (0 free of the wheel)
+// Ẽ_k (E_k beyond the mouth's band) and its rate at the path's point t: the contact at zero
+// velocity, whose elastic force gives ∇_q E = f n and whose torque ∂E/∂ψ = −τ (0 free of the wheel)
 struct Slope {
   double e = 0.0, de = 0.0;
 };
 Slope slope_along(const Sprocket& w, const Capture& cap, const Path& p, double t, int k, int hk) {
-  const End e = end_of(w, p.q0x + t * p.dx, p.q0y + t * p.dy, p.psi0 + t * p.dpsi, k, hk);
-  if (e.free) return {};
-  const SeatContact c =
-      contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kForce);
-  if (!c.active) return {};
-  return {c.energy, c.force * (c.nx * p.dx + c.ny * p.dy) - c.torque * p.dpsi};
+  const double qx = p.q0x + t * p.dx, qy = p.q0y + t * p.dy, psi = p.psi0 + t * p.dpsi;
+  const End e = end_of(w, qx, qy, psi, k, hk);
+  Slope out;
+  if (!e.free) {
+    const SeatContact c =
+        contact_at(w, e.x, e.y, 0.0, 0.0, 0.0, e.at, k, e.sx, e.sy, &cap, Need::kForce);
+    if (c.active) out = {c.energy, c.force * (c.nx * p.dx + c.ny * p.dy) - c.torque * p.dpsi};
+  }
+  // within the mouth's band, Ẽ_k and its rate
+  const Band b = band_at(w, cap, qx, qy, psi, k, hk);
+  return {out.e + b.e, out.de + b.gx * p.dx + b.gy * p.dy + b.gpsi * p.dpsi};
 }
 
 // The jump of E_k on the surface f(t) = 0 (f > 0 on its outer side) where the step's two ends lie
 // on its opposite sides (else 0: E at both ends is then one continuous branch's, and a dip across
-// the surface and back, which ΔE never sees, needs no skip): the crossing bracketed by bisection
-// to [a, b], b − a ≤ `span`, and each side's E, taken a `span` beyond the bracket, carried to the
-// bracket's middle m along its own slope, |E(b⁺) − E'(b⁺)(b⁺ − m) − E(a⁻) − E'(a⁻)(m − a⁻)|. The
+// the surface and back, which ΔE never sees, needs no share of its own): the crossing bracketed by
+// bisection to [a, b], b − a ≤ `span`, and each side's E, taken a `span` beyond the bracket,
+// carried to the bracket's middle m along its own slope, E(b⁺) − E'(b⁺)(b⁺ − m) − E(a⁻) −
+// E'(a⁻)(m − a⁻), signed as the path crosses (from the start's side to the end's). The
 // continuous part's share is then E''s over the 3 spans (and a jump of the slope alone over half
 // a span), not |∇E| over 3 spans: a crossing with no jump reads as none at any c and ε.
 template <class Side>
@@ -586,31 +649,53 @@ double jump_on(const Sprocket& w, const Capture& cap, const Path& p, int k, int 
   }
   const double ta = std::max(0.0, a - span), tb = std::min(1.0, b + span), m = 0.5 * (a + b);
   const Slope ea = slope_along(w, cap, p, ta, k, hk), eb = slope_along(w, cap, p, tb, k, hk);
-  return std::abs(eb.e - eb.de * (tb - m) - ea.e - ea.de * (m - ta));
+  return eb.e - eb.de * (tb - m) - ea.e - ea.de * (m - ta);
 }
 
-// The size of E_k's jumps the step crosses end to end: the mouth's circle's and the capture's,
-// each where the ends lie on its opposite sides, bracketed to 1e-9 c of the path (the mouth, a
-// convex disc, is then crossed once; the capture an odd number of times, of which bisection finds
-// one). `dist` the θ point's |q − C_k| if known (else < 0): |q − C_k| moves by at most
-// |Δq| + R |Δψ| over the path, so the capture is sought only where that reaches `from` from it.
-double crossed_jump(const Sprocket& w, const Capture& cap, const Path& p, int k, int hk,
-                    double dist) {
-  const double r = w.pitch_radius, mouth = r + 0.5 * w.pocket_clearance;
+// The jumps a step crosses end to end: their sum as ΔE holds it (signed) and their sizes' sum
+struct Jumps {
+  double sum = 0.0, size = 0.0;
+  void add(double j) {
+    sum += j;
+    size += std::abs(j);
+  }
+};
+
+// Ẽ_k's jumps the step crosses end to end: the capture's (the mouth's is spread over its band),
+// where the ends lie on its opposite sides, bracketed to 1e-9 c of the path (crossed an odd
+// number of times, of which bisection finds one). `dist` the θ point's |q − C_k| if known (else <
+// 0): |q − C_k| moves by at most |Δq| + R |Δψ| over the path, so the capture is sought only where
+// that reaches `from` from it.
+Jumps crossed_jump(const Sprocket& w, const Capture& cap, const Path& p, int k, int hk,
+                   double dist) {
+  const double r = w.pitch_radius;
   const double len = std::hypot(p.dx, p.dy) + r * std::abs(p.dpsi);  // ≥ the points' |dz/dt|
   const double span = 1e-9 * w.pocket_clearance / len;
-  double sum = jump_on(w, cap, p, k, hk, span, [&](double t) {
-    const double x = p.q0x + t * p.dx, y = p.q0y + t * p.dy;
-    return x * x + y * y > mouth * mouth;
-  });
-  const double from = cap.from;
+  Jumps sum;
+  const double from = cap.from, mouth = r + 0.5 * w.pocket_clearance;
+  auto radius = [&](double t) { return std::hypot(p.q0x + t * p.dx, p.q0y + t * p.dy); };
+  // whether the path's point at t, or its ray's point on the mouth (`on_mouth`), lies beyond the
+  // capture, |q − C_k| > from
+  auto beyond = [&](double t, bool on_mouth) {
+    const double a = vertex_angle(w, k, p.psi0 + t * p.dpsi);
+    const double s = on_mouth ? mouth / radius(t) : 1.0;
+    return std::hypot(s * (p.q0x + t * p.dx) - r * std::cos(a),
+                      s * (p.q0y + t * p.dy) - r * std::sin(a)) > from;
+  };
   const double reach = std::max(p.theta, 1.0 - p.theta) * len + 1e-9 * w.pocket_clearance;
   if (w.pocket_body && (dist < 0.0 || std::abs(dist - from) <= reach))
-    sum += jump_on(w, cap, p, k, hk, span, [&](double t) {
-      const double a = vertex_angle(w, k, p.psi0 + t * p.dpsi);
-      return std::hypot(p.q0x + t * p.dx - r * std::cos(a), p.q0y + t * p.dy - r * std::sin(a)) >
-             from;
-    });
+    sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) { return beyond(t, false); }));
+  // the release's mouth for a joint not held: free beyond it, held within it (band_at), so Ẽ_k
+  // jumps there by E_k's inner side's
+  if (w.pocket_release && hk == kNoPocket)
+    sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) { return radius(t) > mouth; }));
+  // and the capture's shadow in the mouth's band: J jumps where the point's ray meets the mouth
+  // at `from` (a jump of Ẽ only within the band; its ends' sides decide, as above), sought only
+  // where the path's |q| range, [its distance from O, the ends' larger], meets the band (R, M]
+  const double foot = -(p.q0x * p.dx + p.q0y * p.dy) / std::max(p.dx * p.dx + p.dy * p.dy, 1e-300);
+  if (w.pocket_body && radius(std::clamp(foot, 0.0, 1.0)) <= mouth &&
+      std::max(radius(0.0), radius(1.0)) > r)
+    sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) { return beyond(t, true); }));
   return sum;
 }
 
@@ -660,18 +745,26 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   const SeatContact et =
       free ? SeatContact{}
            : contact_at(w, x, y, 0.0, 0.0, 0.0, p, k, sx, sy, &cap, Need::kJacobian);
-  const double en0 = start.energy, en1 = e1.active ? e1.energy : 0.0;
-  // ∇E at the θ point: G_q = f n, G_ψ = −τ (the elastic force −∇_q E, torque −∂E/∂ψ)
+  const Band b1 = band_at(w, cap, q1x, q1y, step.angle1, k, hk);
+  const double en0 = start.energy, en1 = (e1.active ? e1.energy : 0.0) + b1.e;
+  // ∇E at the θ point: G_q = f n, G_ψ = −τ (the elastic force −∇_q E, torque −∂E/∂ψ; not the
+  // band's ∇B: within the band S Δz takes ∇B's part along the step alone, docs)
   const double gx = et.active ? et.force * et.nx : 0.0, gy = et.active ? et.force * et.ny : 0.0;
   const double gpsi = et.active ? -et.torque : 0.0;
   const double mismatch = en1 - en0 - (gx * dx + gy * dy) - gpsi * dpsi;
-  if (!(en0 > 0.0 || en1 > 0.0 || et.active)) return c;  // E_k = 0 at all three
-  // across jumps of E_k larger than the pocket's law's energy at a gap of one smoothing length ε
-  // the θ point's force alone (the correction would be the jump over |Δz|²: docs)
+  if (!(en0 != 0.0 || en1 != 0.0 || et.active)) return c;  // Ẽ_k = 0 at all three
+  // the jumps of Ẽ_k the step crosses (the capture's and its shadow's in the mouth's band; the
+  // mouth's own is spread over the band), J, are taken over it as the rest of ΔE is, a force J/|Δz|
+  // along the step, up to r = |J| / (|Δz| k c) = 1 (k c the pocket law's force at a depth of one
+  // clearance); from r = 1 to 2 a C² step s(r) leaves the share s J of it to the work balance's
+  // numerical term (all of it from r = 2 on), so that the jump's force stays below 2 k c on a
+  // slow step and no threshold switches it (docs)
   const Path path{q0x, q0y, dx, dy, step.angle0, dpsi, step.theta};
   const double dist = free ? -1.0 : std::hypot(x - sx, y - sy);
-  if (crossed_jump(w, cap, path, k, hk, dist) > elastic(w, w.contact_smoothing).energy) return c;
-  const double cc = mismatch / den;
+  const Jumps jumps = crossed_jump(w, cap, path, k, hk, dist);
+  const double ratio = jumps.size / (std::sqrt(den) * w.contact_stiffness * w.pocket_clearance);
+  const Step left = smooth_step(ratio, 1.0, 2.0);
+  const double cc = (mismatch - left.s * jumps.sum) / den;
   // the damper's clamp: where the θ point's force is 0 its blocks are 0 (only the correction's)
   if (!c.active) {
     c = SeatContact{};
@@ -699,11 +792,15 @@ SeatContact pocket_step_contact(const Sprocket& w, double x, double y, double vx
   // ∂cc = (∂mismatch − cc ∂den)/den; the θ point moves by θ with x₁ and ψ₁:
   // ∂mismatch/∂x₁ = ∇_q E₁ − G_q − θ (H Δq + a Δψ), ∂/∂ψ₁ = ∂E₁/∂ψ − G_ψ − θ (a·Δq + E_ψψ Δψ)
   const double th = step.theta;
-  const double f1x = e1.active ? e1.force * e1.nx : 0.0, f1y = e1.active ? e1.force * e1.ny : 0.0;
-  const double f1psi = e1.active ? -e1.torque : 0.0;
-  const double mx = f1x - gx - th * (hq[0] * dx + hq[1] * dy + ax * dpsi);
-  const double my = f1y - gy - th * (hq[2] * dx + hq[3] * dy + ay * dpsi);
-  const double mpsi = f1psi - gpsi - th * (ax * dx + ay * dy + hpp * dpsi);
+  const double f1x = (e1.active ? e1.force * e1.nx : 0.0) + b1.gx,
+               f1y = (e1.active ? e1.force * e1.ny : 0.0) + b1.gy;
+  const double f1psi = (e1.active ? -e1.torque : 0.0) + b1.gpsi;
+  // and the share left, s(r) J, by r ∝ 1/|Δz| (J's own change with the crossing's place is not
+  // taken: exact for r ≤ 1, where no share is left, quasi-Newton beyond)
+  const double dleft = left.ds * jumps.sum * ratio / den;
+  const double mx = f1x - gx - th * (hq[0] * dx + hq[1] * dy + ax * dpsi) + dleft * dx;
+  const double my = f1y - gy - th * (hq[2] * dx + hq[3] * dy + ay * dpsi) + dleft * dy;
+  const double mpsi = f1psi - gpsi - th * (ax * dx + ay * dy + hpp * dpsi) + dleft * r2 * dpsi;
   c.skew_dx = (mx - 2.0 * cc * dx) / den;
   c.skew_dy = (my - 2.0 * cc * dy) / den;
   c.skew_dpsi = (mpsi - 2.0 * cc * r2 * dpsi) / den;
