@@ -1144,6 +1144,7 @@ StepReport Integrator::step(const Model& model, State& s) {
   // spring), whether or not the residual rose. Returns the fraction of the correction kept,
   // 1 with no crossing (or without the stick law).
   bool cut_crossings = !trial_.empty();  // off for the last start (below)
+  bool cut_acted = false;                // a crossing cut shortened a correction in this step
   auto crossing_cut = [&] {
     double cut = 1.0;
     for (std::size_t i = 0; i < trial_.size(); ++i) {
@@ -1165,6 +1166,7 @@ StepReport Integrator::step(const Model& model, State& s) {
       lambda = cut;
       next = assemble(model, s, jacobian);
       ++report.backtracks;
+      cut_acted = true;
     }
     for (int b = 0; b < kMaxBacktracks && !(next < norm2); ++b) {
       lambda *= 0.5;
@@ -1441,11 +1443,11 @@ StepReport Integrator::step(const Model& model, State& s) {
     report.factorizations += first.factorizations;
     report.backtracks += first.backtracks;
   }
-  if (!report.converged && cut_crossings) {
+  if (!report.converged && cut_acted) {
     // The crossing cut lands each crossing hinge in its band, which can cost more iterations
     // than the plain halvings where many hinges cross at once (larger steps): again from constant
     // velocity with fresh factors and the halvings alone, the iterations and backtracks of all
-    // starts counted.
+    // starts counted. Only where a cut acted: otherwise this run would repeat the last one.
     const StepReport first = report;
     cut_crossings = false;
     report = newton(0.0, false);
