@@ -144,7 +144,7 @@ BENCHMARK(BM_DynamicsTwoSprocketDriveHingeFrictionPinLink)
     ->MinTime(3.0);
 // the same with the hinges' stick law, k_t = the argument [N·m/rad], no damper: the ratio
 // k_t (θh)²/(m p²) that the stick law's convergence follows is 0.042, 0.42 and 4.2 (m p²/(θh)² =
-// 2399 N·m/rad here; `catena dynamics` warns above 10), all three within the warning
+// 2399 N·m/rad here; `catena dynamics` warns above 14), all three within the warning
 void BM_DynamicsTwoSprocketDriveHingeStick(benchmark::State& bs) {
   two_sprocket_drive(bs, 0.1 * 5.72e-3 / 2, PinLoad::kMean, static_cast<double>(bs.range(0)));
 }

@@ -276,7 +276,8 @@ TEST(DynamicsHingeCli, StickLawKeysReachTheModelAndAreChecked) {
 // The stick law's bounds over the step (docs/models/dynamics.md, "Hinges: sticking"): on the 12B
 // example (m = 0.0237 kg, p = 19.05 mm, theta 0.6, h = 0.1 ms) k_t above 100 m p^2/(theta h)^2 =
 // 2.388e5 N m/rad is refused, the limit named; above 14 m p^2/(theta h)^2 = 3.344e4 N m/rad a run
-// is warned, and k_t = 1e5 (ratio 42) stops at its sixth step with advice naming the key; the
+// is warned, and k_t = 2.3e5 (ratio 96, well past the failures from 40) stops at its sixth step
+// with advice naming the key; the
 // damper c_t above 5e3 m p^2/(theta h) (the seats' damper ratio) = 716.6 N m s/rad is refused.
 TEST(DynamicsHingeCli, StickLawBoundsFollowTheStep) {
   const std::string sliding = "hinge = \"sliding\"\nhinge_friction = 0.1\n";
@@ -290,7 +291,7 @@ TEST(DynamicsHingeCli, StickLawBoundsFollowTheStep) {
             std::string::npos)
       << refused.err;
   const auto warned =
-      run_json(example_with("stick_1e5.toml", sliding + "hinge_stick_stiffness = 1e5\n"),
+      run_json(example_with("stick_2.3e5.toml", sliding + "hinge_stick_stiffness = 2.3e5\n"),
                "--duration 0.002s");
   bool warning = false, advice = false;
   for (const auto& d : warned["diagnostics"]) {

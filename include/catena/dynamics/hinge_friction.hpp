@@ -227,8 +227,7 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
   } else {
     const double band = hinge.rate_band;
     const double root = std::sqrt(hc.rate * hc.rate + band * band);
-    hc.sticking = false;
-    hc.trial = 0.0;
+    hc.sticking = false;  // trial stays 0: only the stick law writes it, and reads it
     hc.torque = -limit * hc.rate / root;
     hc.rate_stiffness = limit * band * band / (root * root * root);
     load_factor = -hinge.arm * (hc.rate / root) * loaded;  // −e s(ω)

@@ -56,12 +56,12 @@ struct StepReport {
   /// Newton runs from a starting point: 2 when the first (the predictor that extrapolates the
   /// velocities, or the last step's factors with hinge friction) did not converge and Newton ran
   /// again from constant velocity with fresh factors; one more with the hinges' stick law when
-  /// those failed with the line search's crossing cut (again from constant velocity, the halvings
-  /// alone); each run takes at most max_iterations
+  /// those failed after the line search's crossing cut acted (again from constant velocity, as the
+  /// second, with the halvings alone); each run takes at most max_iterations
   int starts = 1;
   int factorizations = 0;        ///< fresh Newton matrices factored (over every start)
   double last_correction = 0.0;  ///< [m] max |Δx| of the last Newton iteration
-  int backtracks = 0;            ///< line-search halvings taken
+  int backtracks = 0;            ///< line-search points taken (the crossing cut's and halvings')
   double max_penetration = 0.0;  ///< [m] deepest roller–seat penetration at the step's θ point
   double friction_work = 0.0;    ///< [J] the guides' friction work over the step (≤ 0)
   /// [J] the links' dampers' work over the step: −Σ c (l₁ − l₀)/h · d_θ·(d₁ − d₀)/l_θ, which is

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace catena::dynamics {
 
@@ -420,6 +421,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
     const double* deflection = model.hinge.sticks() && s.hinge_deflection.size() == n
                                    ? s.hinge_deflection.data()
                                    : nullptr;
+    // where the stick law's trials go (the crossing cut's; none without the stick law)
+    HingeTrial* const trials =
+        deflection != nullptr && trial_.size() == n ? trial_.data() : nullptr;
     for_each_hinge(n, model.closed, [&](std::size_t ha, std::size_t i, std::size_t hb) {
       // links ha (ha → i) and i (i → hb), their terms from the links' loop above; −h × the
       // couple's Jacobian block (r, q) of the three nodes ha, i, hb into the band (node offsets
@@ -435,8 +439,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
           },
           i, th, deflection != nullptr ? deflection[i] : 0.0);
       hinge_work += hc.work;
-      if (deflection != nullptr && i < trial_.size())
-        trial_[i] = {hc.trial, model.hinge.arm * hc.load};
+      if (trials != nullptr) trials[i] = {hc.trial, model.hinge.arm * hc.load};
       rhs[ha].x += h * hc.fx[0];
       rhs[ha].y += h * hc.fy[0];
       rhs[i].x += h * hc.fx[1];
@@ -1144,6 +1147,7 @@ StepReport Integrator::step(const Model& model, State& s) {
   // spring), whether or not the residual rose. Returns the fraction of the correction kept,
   // 1 with no crossing (or without the stick law).
   bool cut_crossings = !trial_.empty();  // off for the last start (below)
+  bool cut_acted = false;                // a crossing cut shortened a correction in this step
   auto crossing_cut = [&] {
     double cut = 1.0;
     for (std::size_t i = 0; i < trial_.size(); ++i) {
@@ -1165,6 +1169,7 @@ StepReport Integrator::step(const Model& model, State& s) {
       lambda = cut;
       next = assemble(model, s, jacobian);
       ++report.backtracks;
+      cut_acted = true;
     }
     for (int b = 0; b < kMaxBacktracks && !(next < norm2); ++b) {
       lambda *= 0.5;
@@ -1300,7 +1305,9 @@ StepReport Integrator::step(const Model& model, State& s) {
         finish_bordered();
       }
       double correction = 0.0;
-      trial_base_ = trial_;  // the stick law's trials where this correction starts (crossing_cut)
+      // the stick law's trials where this correction starts (crossing_cut); a swap, as every
+      // assembly rewrites each hinge's entry of trial_ (and the others stay {0, 0} in both)
+      std::swap(trial_base_, trial_);
       for (std::size_t i = 0; i < n; ++i) {
         if (!std::isfinite(delta_[i].x) || !std::isfinite(delta_[i].y)) {
           report.solve = SolveStatus::kSingularPivot;
@@ -1439,11 +1446,11 @@ StepReport Integrator::step(const Model& model, State& s) {
     report.factorizations += first.factorizations;
     report.backtracks += first.backtracks;
   }
-  if (!report.converged && cut_crossings) {
+  if (!report.converged && cut_acted) {
     // The crossing cut lands each crossing hinge in its band, which can cost more iterations
     // than the plain halvings where many hinges cross at once (larger steps): again from constant
     // velocity with fresh factors and the halvings alone, the iterations and backtracks of all
-    // starts counted.
+    // starts counted. Only where a cut acted: otherwise this run would repeat the last one.
     const StepReport first = report;
     cut_crossings = false;
     report = newton(0.0, false);
