@@ -743,20 +743,25 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
       // the move named, typed back: accepted
       const bool straight = text == rail;
       const double moved = named_after(r.err, straight ? "the rail moved " : "radius <= ");
-      std::ostringstream back;
-      back.precision(12);
+      // the case with the rail moved as named (a straight rail by `named` mm down, an arc to the
+      // radius `named` m)
+      auto typed_back = [&](double named) {
+        std::ostringstream value;
+        value.precision(12);
+        if (straight) value << run_height + off - named << " mm";
+        if (!straight) value << named << " m";
+        return straight ? lead_in_rail(value.str(), "")
+                        : std::regex_replace(text, std::regex("radius = \"5 m\""),
+                                             "radius = \"" + value.str() + "\"");
+      };
       if (straight) {
         EXPECT_GE(moved, 0.02) << r.err;
         EXPECT_LT(moved, 0.0201) << r.err;
-        back << run_height + off - moved << " mm";
       } else {
         EXPECT_GE(moved, 5.0 - 0.0201e-3) << r.err;
         EXPECT_LE(moved, 5.0 - 0.02e-3) << r.err;
       }
-      if (!straight) back << moved << " m";
-      const std::string fixed = straight ? lead_in_rail(back.str(), "")
-                                         : std::regex_replace(text, std::regex("radius = \"5 m\""),
-                                                              "radius = \"" + back.str() + "\"");
+      const std::string fixed = typed_back(moved);
       const CliRun ok =
           run("dynamics " + write("edge_moved.toml", fixed) + " --duration \"0.1 ms\"");
       EXPECT_EQ(ok.status, 0) << fixed << ok.err;
@@ -767,21 +772,14 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
       ASSERT_NE(at_lift, std::string::npos) << r.err;
       const std::string tail = r.err.substr(at_lift);
       const double lifted = named_after(tail, straight ? "the rail moved " : "radius <= ");
-      std::ostringstream up;
-      up.precision(12);
       if (straight) {
         EXPECT_GE(lifted, 6.055) << r.err;
         EXPECT_LT(lifted, 6.057) << r.err;
-        up << run_height + off - lifted << " mm";
       } else {
         EXPECT_GE(lifted, 5.0 - 6.057e-3) << r.err;
         EXPECT_LE(lifted, 5.0 - 6.055e-3) << r.err;
-        up << lifted << " m";
       }
-      const std::string lifted_text = straight
-                                          ? lead_in_rail(up.str(), "")
-                                          : std::regex_replace(text, std::regex("radius = \"5 m\""),
-                                                               "radius = \"" + up.str() + "\"");
+      const std::string lifted_text = typed_back(lifted);
       const CliRun runs =
           run("dynamics " + write("edge_touching.toml", lifted_text) + " --format json");
       EXPECT_EQ(runs.status, 0) << lifted_text << runs.err;

@@ -647,6 +647,23 @@ int named_count(const std::string& err) {
 }
 double named_limit_mm(const std::string& err) { return named_mm(err, "of at most about "); }
 
+// Two 12B wheels z 17 under gravity, the driven one at (cx, cy) from the driver, `links` links: the
+// free layout's catenary cases, written to `name`N.toml; `extra` ends the [dynamics] table
+std::string two_wheel_catenary(const std::string& name, int links, const std::string& cx,
+                               const std::string& cy, const std::string& extra = "") {
+  return write(name + std::to_string(links) + ".toml",
+               "[dynamics]\nchain = \"12B\"\naxial_stiffness = \"5e7 N/m\"\naxial_damping = "
+               "100\npretension = \"100 N\"\ncontact_stiffness = \"2e8 N/m\"\n"
+               "contact_damping = 800\nduration = \"0.2 ms\"\nstep = \"0.1 ms\"\n"
+               "output_interval = \"0.1 ms\"\ntheta = 0.6\ngravity = true\n" +
+                   extra + "links = " + std::to_string(links) +
+                   "\n\n[[dynamics.sprocket]]\nteeth = 17\nrole = \"driver\"\nspeed = "
+                   "\"0.1 rad/s\"\ncentre_x = \"0 mm\"\ncentre_y = \"0 mm\"\n\n"
+                   "[[dynamics.sprocket]]\nteeth = 17\nrole = \"driven\"\ninertia = 0.02\n"
+                   "load_torque = 0\ncentre_x = \"" +
+                   cx + "\"\ncentre_y = \"" + cy + "\"\n");
+}
+
 }  // namespace
 
 // Slack beyond a half circle of its span starts as the catenary of the span's length (before:
@@ -658,17 +675,7 @@ double named_limit_mm(const std::string& err) { return named_mm(err, "of at most
 // their tangents), and the lowest node is within (p/2)²/2a of the vertex; measured +0.81 %.
 TEST(DynamicsLayoutCli, SlackBeyondTheHalfCircleStartsAsTheCatenary) {
   auto with_links = [](int links) {
-    return write("catenary" + std::to_string(links) + ".toml",
-                 "[dynamics]\nchain = \"12B\"\naxial_stiffness = \"5e7 N/m\"\naxial_damping = "
-                 "100\npretension = \"100 N\"\ncontact_stiffness = \"2e8 N/m\"\n"
-                 "contact_damping = 800\nduration = \"0.2 ms\"\nstep = \"0.1 ms\"\n"
-                 "output_interval = \"0.1 ms\"\ntheta = 0.6\ngravity = true\npositions = true\n"
-                 "links = " +
-                     std::to_string(links) +
-                     "\n\n[[dynamics.sprocket]]\nteeth = 17\nrole = \"driver\"\nspeed = "
-                     "\"0.1 rad/s\"\ncentre_x = \"0 mm\"\ncentre_y = \"0 mm\"\n\n"
-                     "[[dynamics.sprocket]]\nteeth = 17\nrole = \"driven\"\ninertia = 0.02\n"
-                     "load_torque = 0\ncentre_x = \"600 mm\"\ncentre_y = \"0 mm\"\n");
+    return two_wheel_catenary("catenary", links, "600 mm", "0 mm", "positions = true\n");
   };
   const CliRun r = run("dynamics " + with_links(105) + " --format json");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -699,16 +706,7 @@ TEST(DynamicsLayoutCli, SlackBeyondTheHalfCircleStartsAsTheCatenary) {
 // refused and 297 named).
 TEST(DynamicsLayoutCli, AKinkedSlopedCatenaryStarts) {
   auto with_links = [](int links) {
-    return write("kinked" + std::to_string(links) + ".toml",
-                 "[dynamics]\nchain = \"12B\"\naxial_stiffness = \"5e7 N/m\"\naxial_damping = "
-                 "100\npretension = \"100 N\"\ncontact_stiffness = \"2e8 N/m\"\n"
-                 "contact_damping = 800\nduration = \"0.2 ms\"\nstep = \"0.1 ms\"\n"
-                 "output_interval = \"0.1 ms\"\ntheta = 0.6\ngravity = true\nlinks = " +
-                     std::to_string(links) +
-                     "\n\n[[dynamics.sprocket]]\nteeth = 17\nrole = \"driver\"\nspeed = "
-                     "\"0.1 rad/s\"\ncentre_x = \"0 mm\"\ncentre_y = \"0 mm\"\n\n"
-                     "[[dynamics.sprocket]]\nteeth = 17\nrole = \"driven\"\ninertia = 0.02\n"
-                     "load_torque = 0\ncentre_x = \"200 mm\"\ncentre_y = \"-400 mm\"\n");
+    return two_wheel_catenary("kinked", links, "200 mm", "-400 mm");
   };
   const CliRun r = run("dynamics " + with_links(80) + " --format json");
   ASSERT_EQ(r.status, 0) << r.err;

@@ -877,6 +877,21 @@ TEST(DynamicsRailCut, MatchesABruteForceOnRandomRails) {
                          (k == along.size() ? length : along[k]) - (k == 0 ? 0.0 : along[k - 1]));
     return b;
   };
+  // the rail with its surface moved `shift` away from the rollers (the sense rail_cut's moves take)
+  auto surface_moved = [](const Guide& g, double shift) {
+    Guide moved = g;
+    if (g.kind == Guide::Kind::kStraight) {
+      const double len = std::hypot(g.x1 - g.x0, g.y1 - g.y0);
+      const double nx = -(g.y1 - g.y0) / len, ny = (g.x1 - g.x0) / len;
+      moved.x0 -= shift * nx;
+      moved.y0 -= shift * ny;
+      moved.x1 -= shift * nx;
+      moved.y1 -= shift * ny;
+    } else {
+      moved.radius += g.inside ? shift : -shift;
+    }
+    return moved;
+  };
   // one rail_cut sample's spacing, and its reach along the rail
   const double spacing = path.length / std::max(512.0, std::ceil(path.length / (0.125 * r)));
   std::mt19937_64 rng(2111);
@@ -937,17 +952,7 @@ TEST(DynamicsRailCut, MatchesABruteForceOnRandomRails) {
       ++shifts;
       EXPECT_GT(cut.shift, 0.0) << trial;
       EXPECT_LE(cut.shift, 2 * r) << trial;
-      Guide moved = g;
-      if (g.kind == Guide::Kind::kStraight) {
-        const double len = std::hypot(g.x1 - g.x0, g.y1 - g.y0);
-        const double nx = -(g.y1 - g.y0) / len, ny = (g.x1 - g.x0) / len;
-        moved.x0 -= cut.shift * nx;
-        moved.y0 -= cut.shift * ny;
-        moved.x1 -= cut.shift * nx;
-        moved.y1 -= cut.shift * ny;
-      } else {
-        moved.radius += g.inside ? cut.shift : -cut.shift;
-      }
+      const Guide moved = surface_moved(g, cut.shift);
       const Brute m = brute(moved);
       EXPECT_LT(m.past * step, 1.5e-3) << trial;
       most_moved = std::max(most_moved, m.past * step);
@@ -960,17 +965,7 @@ TEST(DynamicsRailCut, MatchesABruteForceOnRandomRails) {
     }
     if (std::isfinite(cut.touching)) {
       ++touchings;
-      Guide moved = g;
-      if (g.kind == Guide::Kind::kStraight) {
-        const double len = std::hypot(g.x1 - g.x0, g.y1 - g.y0);
-        const double nx = -(g.y1 - g.y0) / len, ny = (g.x1 - g.x0) / len;
-        moved.x0 -= cut.touching * nx;
-        moved.y0 -= cut.touching * ny;
-        moved.x1 -= cut.touching * nx;
-        moved.y1 -= cut.touching * ny;
-      } else {
-        moved.radius += g.inside ? cut.touching : -cut.touching;
-      }
+      const Guide moved = surface_moved(g, cut.touching);
       const Brute m = brute(moved);
       EXPECT_LT(m.deepest, 5e-6) << trial;
       most_touching = std::max(most_touching, m.deepest);

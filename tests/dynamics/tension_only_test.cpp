@@ -130,6 +130,24 @@ std::vector<NodeForce> expect_node_forces_are_minus_the_energys_gradient(
   return forces;
 }
 
+// That chain's residual in the integrator at rest (θ = ½, the step h): the inertia's part is 0 at
+// the predictor, so −r/h is each node's force, checked against expect_node_forces_are_minus_the_
+// energys_gradient's forces (and through it against −∂E/∂q)
+void expect_rest_residual_is_minus_the_energys_gradient(const Model& m, const State& s,
+                                                        const std::vector<double>& t,
+                                                        const double (&ang)[3], double h) {
+  Integrator integ(m, {.step = h, .theta = 0.5});
+  std::vector<double> u(8), r;
+  for (std::size_t i = 0; i < 4; ++i) u[2 * i] = s.x[i], u[2 * i + 1] = s.y[i];
+  integ.newton_system(m, s, u, r, nullptr);
+  const std::vector<NodeForce> at_rest =
+      expect_node_forces_are_minus_the_energys_gradient(m, s, t, ang);
+  for (std::size_t i = 0; i < 4; ++i)
+    for (int axis = 0; axis < 2; ++axis)
+      EXPECT_NEAR(-r[2 * i + axis] / h, at_rest[i][axis], 1e-9 * kStiffness * m.link_smoothing)
+          << i << " " << axis;
+}
+
 // energy() and link_tensions() read the law: on a 4-node chain at rest (one link slack, one in the
 // ramp, one taut), each node's force from the tensions against −∂E/∂q, the central difference of
 // energy().elastic.
@@ -663,16 +681,8 @@ TEST(DynamicsTensionOnlyLinks, EachLinkJamsAtItsParitysLengthAndItsForceIsTheEne
   EXPECT_NEAR(t[1], -kStiffness * 0.7 * 0.7 * eps / 2, 1e-6);  // v = 0.7 ε: −24.5 N
   EXPECT_EQ(t[2], 0.0);
   const double h = 1e-5;
-  Integrator integ(m, {.step = h, .theta = 0.5});
+  expect_rest_residual_is_minus_the_energys_gradient(m, s, t, ang, h);
   std::vector<double> u(8), r;
-  for (std::size_t i = 0; i < 4; ++i) u[2 * i] = s.x[i], u[2 * i + 1] = s.y[i];
-  integ.newton_system(m, s, u, r, nullptr);
-  const std::vector<NodeForce> at_rest =
-      expect_node_forces_are_minus_the_energys_gradient(m, s, t, ang);
-  for (std::size_t i = 0; i < 4; ++i)
-    for (int axis = 0; axis < 2; ++axis)
-      EXPECT_NEAR(-r[2 * i + axis] / h, at_rest[i][axis], 1e-9 * kStiffness * eps)
-          << i << " " << axis;
   // With Model::links_discrete_gradient (θ = ½), one step with u ≠ x: link 0 going 0.5 µm deeper
   // into its jam, link 1 deeper into its jam's ramp, link 2 slack, each turning by 0.01 rad. The
   // start's velocities carry the nodes to u (the inertia's part of the residual is 0), so −r/h is
@@ -1071,17 +1081,7 @@ TEST(DynamicsTensionOnlyLinks, FlatLinksForceIsMinusTheEnergysGradient) {
       energy(m, s).elastic,
       0.5 * kStiffness * (25e-12 + 9e-12) + link_force(m, 0.018 - 0.2 * eps - 0.046, 0.0, 1).energy,
       1e-12);
-  const double h = 1e-5;
-  Integrator integ(m, {.step = h, .theta = 0.5});
-  std::vector<double> u(8), r;
-  for (std::size_t i = 0; i < 4; ++i) u[2 * i] = s.x[i], u[2 * i + 1] = s.y[i];
-  integ.newton_system(m, s, u, r, nullptr);
-  const std::vector<NodeForce> at_rest =
-      expect_node_forces_are_minus_the_energys_gradient(m, s, t, ang);
-  for (std::size_t i = 0; i < 4; ++i)
-    for (int axis = 0; axis < 2; ++axis)
-      EXPECT_NEAR(-r[2 * i + axis] / h, at_rest[i][axis], 1e-9 * kStiffness * eps)
-          << i << " " << axis;
+  expect_rest_residual_is_minus_the_energys_gradient(m, s, t, ang, 1e-5);
 }
 
 // The integrator's Newton matrix with flat links against central differences of its residual:
