@@ -831,9 +831,10 @@ TEST(DynamicsCli, DiscreteGradientKeyTakesTheSeatsForceOverTheStep) {
 // discrete_gradient = true with wheel = "pocket" takes the tension-only links' force over the step
 // too (docs/models/dynamics.md, "Tension-only links: the discrete gradient"): the pocket example at
 // θ = ½, undamped, its first 10 ms (the joints seated, the slack strand's links through their
-// ramp) closes its work balance to Newton's tolerance, −9.2e-9 J (+0.30 J with the pockets' force
-// over the step alone, before the links'; +0.111 J without the key, +0.27 J before the flat links
-// were bilateral: their ramp's steps were part of it; −7.6e-9 J with the key then).
+// ramp) closes its work balance to Newton's tolerance, −1.4e-8 J (−9.2e-9 J before the mouth's
+// band; +0.30 J with the pockets' force over the step alone, before the links'; +0.111 J without
+// the key, +0.27 J before the flat links were bilateral: their ramp's steps were part of it;
+// −7.6e-9 J with the key then).
 TEST(DynamicsCli, DiscreteGradientKeyTakesThePocketChainsLinksOverTheStep) {
   std::string text = read_text(std::string(CATENA_EXAMPLES_DIR) + "/dynamics_pocketwheel.toml");
   for (const auto& [from, to] :
