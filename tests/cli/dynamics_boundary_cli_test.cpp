@@ -743,13 +743,13 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
       // the move named, typed back: accepted
       const bool straight = text == rail;
       const double moved = named_after(r.err, straight ? "the rail moved " : "radius <= ");
-      // the case with the rail moved as named (a straight rail by `named` mm down, an arc to the
-      // radius `named` m)
-      auto typed_back = [&](double named) {
+      // the case with the rail moved as named (a straight rail by `given` mm down, an arc to the
+      // radius `given` m)
+      auto typed_back = [&](double given) {
         std::ostringstream value;
         value.precision(12);
-        if (straight) value << run_height + off - named << " mm";
-        if (!straight) value << named << " m";
+        if (straight) value << run_height + off - given << " mm";
+        if (!straight) value << given << " m";
         return straight ? lead_in_rail(value.str(), "")
                         : std::regex_replace(text, std::regex("radius = \"5 m\""),
                                              "radius = \"" + value.str() + "\"");
