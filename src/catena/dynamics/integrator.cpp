@@ -1435,29 +1435,25 @@ StepReport Integrator::step(const Model& model, State& s) {
   // friction and guides together)
   const bool stale =
       pentadiagonal_ && factors_kept_ && s.time == history_time_ && model.guides.empty();
+  // Newton again from constant velocity with fresh factors, the iterations, factorisations and
+  // backtracks of the starts before (`before`) counted with its own
+  auto restart = [&](const StepReport& before) {
+    StepReport again = newton(0.0, false);
+    again.iterations += before.iterations;
+    again.starts = before.starts + 1;
+    again.factorizations += before.factorizations;
+    again.backtracks += before.backtracks;
+    return again;
+  };
   StepReport report = newton(extrapolate, stale);
-  if (!report.converged && (extrapolate > 0.0 || stale)) {
-    // the extrapolation can start Newton worse off than constant velocity (a large step, a
-    // whip): again from there, the iterations and backtracks of both counted
-    const StepReport first = report;
-    report = newton(0.0, false);
-    report.iterations += first.iterations;
-    report.starts = 2;
-    report.factorizations += first.factorizations;
-    report.backtracks += first.backtracks;
-  }
+  // the extrapolation can start Newton worse off than constant velocity (a large step, a whip)
+  if (!report.converged && (extrapolate > 0.0 || stale)) report = restart(report);
   if (!report.converged && cut_acted) {
     // The crossing cut lands each crossing hinge in its band, which can cost more iterations
-    // than the plain halvings where many hinges cross at once (larger steps): again from constant
-    // velocity with fresh factors and the halvings alone, the iterations and backtracks of all
-    // starts counted. Only where a cut acted: otherwise this run would repeat the last one.
-    const StepReport first = report;
+    // than the plain halvings where many hinges cross at once (larger steps): again with the
+    // halvings alone. Only where a cut acted: otherwise this run would repeat the last one.
     cut_crossings = false;
-    report = newton(0.0, false);
-    report.iterations += first.iterations;
-    report.starts = first.starts + 1;
-    report.factorizations += first.factorizations;
-    report.backtracks += first.backtracks;
+    report = restart(report);
   }
   // Converged on the estimate, the last assembly is one correction (≤ √tolerance·p or so) off the
   // accepted iterate: the step's works and torques are taken there again (residual only).
