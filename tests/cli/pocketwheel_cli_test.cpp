@@ -107,6 +107,11 @@ TEST(PocketwheelCli, InfeasibleGeometryStatesTheLimit) {
   CliRun r = run("pocketwheel --pitch 18mm --wire 18mm --teeth 8 --omega 5");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("greater than the wire diameter"), std::string::npos) << r.err;
+  r = run("pocketwheel --pitch 64mm --wire 40mm --teeth 8 --omega 5");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--wire = 0.04 m: expected a wire diameter d at most t/2 = 0.032 m"),
+            std::string::npos)
+      << r.err;
   r = run(std::string(kPaper) + " --guide tangential --guide-end 100mm");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(

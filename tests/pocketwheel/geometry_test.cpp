@@ -16,7 +16,7 @@ constexpr double kAngleTol = 1e-12;   // [rad]
 TEST(WheelGeometry, PitchRadiusEq6IsTheRootOfThePolygonClosure) {
   std::mt19937 rng(6);
   std::uniform_real_distribution<double> pitch(0.01, 0.3);
-  std::uniform_real_distribution<double> ratio(0.05, 0.95);
+  std::uniform_real_distribution<double> ratio(0.05, 0.5);
   std::uniform_int_distribution<int> teeth(3, 40);
   for (int i = 0; i < 500; ++i) {
     PocketWheel wheel{pitch(rng), 0.0, teeth(rng)};
@@ -51,6 +51,21 @@ TEST(WheelGeometry, ValidateReportsAllProblemsAtOnce) {
   EXPECT_EQ(issues[1].field, "teeth");
   EXPECT_EQ(validate(PocketWheel{NAN, -1.0, 8}).size(), 2u);
   EXPECT_THROW(wheel_geometry(PocketWheel{0.064, 0.064, 8}), InputError);
+}
+
+TEST(WheelGeometry, AWireThickerThanHalfThePitchIsRefusedOnTheWire) {
+  // 2d ≤ t: a link's inner length holds its two neighbours' wires. t/2 itself is laid; above it,
+  // though t − d > 0 keeps the joint polygon's formulas finite, the chain cannot be assembled.
+  EXPECT_TRUE(validate(PocketWheel{0.064, 0.032, 8}).empty());
+  const auto issues = validate(PocketWheel{0.064, 0.040, 8});
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_EQ(issues[0].field, "wire");
+  EXPECT_NE(issues[0].expected.find("at most t/2 = 0.032 m"), std::string::npos)
+      << issues[0].expected;
+  // d ≥ t keeps its own message on the pitch, not a second one on the wire
+  const auto both = validate(PocketWheel{0.018, 0.064, 8});
+  ASSERT_EQ(both.size(), 1u);
+  EXPECT_EQ(both[0].field, "pitch");
 }
 
 }  // namespace

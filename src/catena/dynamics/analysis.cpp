@@ -161,8 +161,8 @@ std::vector<Parameter> table_fields() {
            "teeth = pockets z)"),
       quantity("wire_diameter", K::kLength,
                "pocket: the links' wire diameter d, in (0, (pitch - pretension/axial_stiffness "
-               "- 1e-06 m)/2] (a link holds its two neighbours' wires; narrower than catena "
-               "pocketwheel's --wire, which takes (0, pitch))"),
+               "- 1e-06 m)/2] (a link holds its two neighbours' wires; catena pocketwheel's --wire "
+               "takes (0, pitch/2])"),
       quantity("pocket_clearance", K::kLength,
                "pocket: a joint's free play about its pocket's vertex, in (0, 0.1 pitch] "
                "(default 0.1 mm)"),

@@ -18,6 +18,13 @@ std::vector<Issue> validate(const PocketWheel& wheel) {
         {"pitch", check::format_si(wheel.pitch, "m"),
          "a pitch t greater than the wire diameter d = " + check::format_si(wheel.wire, "m") +
              " (the t − d side of the joint polygon must be positive)"});
+  } else if (std::isfinite(wheel.pitch) && std::isfinite(wheel.wire) && wheel.pitch > 0.0 &&
+             wheel.wire > 0.5 * wheel.pitch) {
+    // a link's inner length t holds its two neighbours' wires, one at each end: 2d ≤ t
+    issues.push_back(
+        {"wire", check::format_si(wheel.wire, "m"),
+         "a wire diameter d at most t/2 = " + check::format_si(0.5 * wheel.pitch, "m") +
+             " (a link's inner length t holds its two neighbours' wires)"});
   }
   if (wheel.teeth < 3) {
     issues.push_back({"teeth", std::to_string(wheel.teeth), "an integer z ≥ 3"});

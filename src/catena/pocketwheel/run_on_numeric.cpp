@@ -10,8 +10,7 @@ namespace catena::pocketwheel::numeric {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr int kScanSteps = 4000;     // scan resolution for seating events over one period
-constexpr double kEventTol = 1e-12;  // [rad]
+constexpr int kScanSteps = 4000;  // scan resolution for seating events over one period
 
 Vec2 rotate(Vec2 p, double angle) {  // counter-clockwise by `angle`
   const double c = std::cos(angle);
