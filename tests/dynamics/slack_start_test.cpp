@@ -868,5 +868,19 @@ TEST(DynamicsSlackStart, EveryCountOnTheKinkedSlopeIsLaidTangent) {
   }
 }
 
+// A span index beyond the path's pieces is refused (NAN, nothing laid), not read: the tangent
+// solve, tried where the lay between the tangent points does not close, looked up the span's
+// length before any check (a read past the pieces, seen by valgrind's memcheck).
+TEST(DynamicsSlackStart, ASpanBeyondThePathIsRefused) {
+  const std::vector<Circle> circles{{0.0, 0.0, pitch_radius(17)}, {0.2, -0.4, pitch_radius(17)}};
+  const BeltPath path = belt_path(circles, 0);
+  for (const std::size_t k : {path.pieces.size(), path.pieces.size() + 7}) {
+    EXPECT_TRUE(std::isnan(slack_extra(path, {k}, 80, kPitch))) << k;
+    BeltPath laid;
+    EXPECT_TRUE(place_slack_loop(path, circles, {17, 17}, 80, kPitch, laid, {k}).s.empty()) << k;
+    EXPECT_TRUE(laid.pieces.empty()) << k;
+  }
+}
+
 }  // namespace
 }  // namespace catena::dynamics

@@ -1556,6 +1556,7 @@ bool folds(const BeltPath& taut, const BeltPath& laid, const std::vector<std::si
 // longest catenary's e, bisected to the last bit and taken when the least miss is within 1e-11
 // of N p; NAN when not found.
 SlackSolve tangent_solve(const BeltPath& path, std::size_t piece, int nodes, double pitch) {
+  if (piece >= path.pieces.size()) return {};
   const double chain = nodes * pitch;
   auto miss = [&](double extra) {
     const BeltPath p = tangent_span(path, piece, extra);
