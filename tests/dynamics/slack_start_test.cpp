@@ -617,6 +617,45 @@ double joint_turn(const BeltPath& laid, std::size_t j) {
   return std::atan2(u.tx * v.ty - u.ty * v.tx, u.tx * v.tx + u.ty * v.ty);
 }
 
+// How far span k of `laid` is from tangent to both its wheels, by plain geometry (not the
+// tangency conditions the code solves, nor its tangents cut at θ = atan sinh t): the catenary's
+// ends (sag_point, from its a and u) against the wraps' ends on the circles given (`gap`), their
+// distances to the centres against the radii (`radius`), and the catenary's direction there
+// against the circle's counter-clockwise tangent, taken from the radius vector (`angle`).
+struct TangentFit {
+  double gap = 0.0, radius = 0.0;  // [m]
+  double angle = 0.0;              // [rad]
+};
+TangentFit tangent_fit(const BeltPath& laid, std::size_t k, const std::vector<Circle>& circles) {
+  const PathPiece& q = laid.pieces[k];
+  const PathPiece& w0 = laid.pieces[k - 1];
+  const PathPiece& w1 = laid.pieces[(k + 1) % laid.pieces.size()];
+  TangentFit fit;
+  auto at_end = [&](const PathPoint& p, const Circle& c, double wrap_end) {
+    fit.gap = std::max(fit.gap, std::hypot(p.x - (c.x + c.radius * std::cos(wrap_end)),
+                                           p.y - (c.y + c.radius * std::sin(wrap_end))));
+    const double rx = p.x - c.x, ry = p.y - c.y, d = std::hypot(rx, ry);
+    fit.radius = std::max(fit.radius, std::abs(d - c.radius));
+    const double tx = -ry / d, ty = rx / d;
+    fit.angle =
+        std::max(fit.angle, std::abs(std::atan2(tx * p.ty - ty * p.tx, tx * p.tx + ty * p.ty)));
+  };
+  at_end(sag_point(q, 0.0), circles[w0.wheel], w0.to);
+  at_end(sag_point(q, q.length), circles[w1.wheel], w1.from);
+  return fit;
+}
+void expect_tangent_fit(const BeltPath& laid, std::size_t k, const std::vector<Circle>& circles,
+                        const std::string& what) {
+  const TangentFit fit = tangent_fit(laid, k, circles);
+  EXPECT_LT(fit.gap, 1e-12) << what;
+  EXPECT_LT(fit.radius, 1e-12) << what;
+  EXPECT_LT(fit.angle, 1e-9) << what;
+  std::printf(
+      "%s: tangent fit: ends off the wraps' %.3g m, off the circles %.3g m, off their "
+      "tangents %.3g rad\n",
+      what.c_str(), fit.gap, fit.radius, fit.angle);
+}
+
 // A sloped lower run (the second wheel below and to the right of the first, z 17 both, 80 links):
 // its catenary meets the lower wheel at a kink, where the path nearly folds back (about 146° on
 // the 45° span), and on a steep span its lowest point is tight. The start is laid with every link
@@ -718,9 +757,12 @@ TangentCatenary tangent_catenary(double dx, double dy, double r, double c, doubl
 // both, 80 links): laid between the span's tangent points the catenary climbs into the wheel at
 // 143° to the wrap, a link jumped across the fold and node 0's phase was searched for a closing
 // start. Now laid tangent to both wheels (tangent_span): the path turns at each tangent point by
-// less than 1e-9 rad (against the fold's 143°); the laid catenary against the test's own solve of
-// the two tangency conditions and the length condition (tangent_catenary): a and both tangent
-// points within 1e-9; the curve clear of both wheels' pitch circles, touching them at its ends;
+// less than 1e-9 rad (against the fold's 143°); by plain geometry (tangent_fit) the catenary's
+// ends on the wraps' ends and on the circles within 1e-12 m, along the circles' tangents within
+// 1e-9 rad; the laid catenary against the test's own solve of the two tangency conditions and
+// the length condition (tangent_catenary, the same equations for equal wheels: it checks the
+// root chosen and the solve, the geometry the equations): a and both tangent points within 1e-9;
+// the curve clear of both wheels' pitch circles, touching them at its ends;
 // node 0 at the path's start; every link one pitch (1e-11), no two links crossing, none nearer a
 // wheel's centre than a wrapped link's chord, no two links turning by more than a wrap's 2π/z
 // (before: the link across the fold). Started under gravity (the model of validation (2)) every
@@ -745,6 +787,7 @@ TEST(DynamicsSlackStart, AKinkedSlopedCatenaryIsLaidTangentToItsWheels) {
   const double into = joint_turn(laid, k - 1), out = joint_turn(laid, k);
   EXPECT_LT(std::abs(into), 1e-9);
   EXPECT_LT(std::abs(out), 1e-9);
+  expect_tangent_fit(laid, k, circles, "kinked");
   const double extra = laid.length - path.length;
   const TangentCatenary own = tangent_catenary(
       circles[1].x - circles[0].x, circles[1].y - circles[0].y, r, path.pieces[k].length, extra);
@@ -866,6 +909,38 @@ TEST(DynamicsSlackStart, EveryCountOnTheKinkedSlopeIsLaidTangent) {
     expect_every_link_one_pitch(loop_state(laid, circles, place, 0.0), links, std::to_string(links),
                                 1e-11 * links * kPitch);
   }
+}
+
+// Unequal wheels (z 17 and, below and to its right, z 34 at (200, −400) mm): the tangent lay of
+// e = 0.1, 1 and 3 chords by plain geometry (tangent_fit: the catenary's ends on the wraps' ends
+// and on both circles within 1e-12 m, along their tangents within 1e-9 rad), its length the taut
+// path's plus e (1e-12 relative): with the two radii swapped in the code's tangency conditions
+// the lay is refused, in its length condition the length misses e. And a start of 112 links laid
+// so (the lay between the tangent points folds), a roller on each wheel, every link one pitch.
+TEST(DynamicsSlackStart, AnUnequalPairIsLaidTangentToBothWheels) {
+  const std::vector<Circle> circles{{0.0, 0.0, pitch_radius(17)}, {0.2, -0.4, pitch_radius(34)}};
+  const BeltPath path = belt_path(circles, 0);
+  const std::size_t k = slack_span(path);
+  const double chord = path.pieces[k].length;
+  for (const double share : {0.1, 1.0, 3.0}) {
+    const std::string what = "z 17/34, e " + std::to_string(share) + " c";
+    const BeltPath laid = tangent_span(path, k, share * chord);
+    ASSERT_FALSE(laid.pieces.empty()) << what;
+    ASSERT_TRUE(laid.pieces[k].catenary) << what;
+    expect_tangent_fit(laid, k, circles, what);
+    EXPECT_NEAR(laid.length, path.length + share * chord, 1e-12 * laid.length) << what;
+  }
+  const int links = 112;
+  BeltPath laid;
+  const LoopPlacement place = place_slack_loop(path, circles, {17, 34}, links, kPitch, laid);
+  ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links));
+  ASSERT_TRUE(laid.pieces[k].catenary);
+  EXPECT_LT(laid.pieces[k - 1].length, path.pieces[k - 1].length);  // laid tangent: wrap shortened
+  EXPECT_GT(place.wrapped[0], 0);
+  EXPECT_GT(place.wrapped[1], 0);
+  expect_tangent_fit(laid, k, circles, "z 17/34, 112 links");
+  expect_every_link_one_pitch(loop_state(laid, circles, place, 0.0), links, "z 17/34",
+                              1e-11 * links * kPitch);
 }
 
 // A span index beyond the path's pieces is refused (NAN, nothing laid), not read: the tangent
