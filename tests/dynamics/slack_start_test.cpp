@@ -943,6 +943,44 @@ TEST(DynamicsSlackStart, AnUnequalPairIsLaidTangentToBothWheels) {
                               1e-11 * links * kPitch);
 }
 
+// Where the longest catenary (e = 10 c) cannot be laid tangent but the one that closes can: z 11 at
+// the origin, z 41 at 671 mm and 82.9° above it (c 664.9 mm). At 10 c the tangent lay leaves a
+// wheel more curved than the wheel or uses a wrap up; the solve's bracket now ends at the longest
+// e it lays (stepped down from 10 c). Before, the solve gave up there and the lay between the
+// tangent points was kept, folding at the far wheel by 162–164° at 137, 177 and 217 links. Now
+// each is laid tangent: the path turning by less than 1e-9 rad at every joint, tangent by plain
+// geometry (tangent_fit), a roller on each wheel (one on z 11, whose wrap is cut to a sliver),
+// node 0 at the path's start, every link one pitch.
+TEST(DynamicsSlackStart, AFoldIsLaidTangentWhereTheLongestCatenaryIsNot) {
+  const double slope = 82.9 * kPi / 180.0, d = 0.671;
+  const std::vector<Circle> circles{{0.0, 0.0, pitch_radius(11)},
+                                    {d * std::cos(slope), d * std::sin(slope), pitch_radius(41)}};
+  const BeltPath path = belt_path(circles, 0);
+  const std::size_t k = slack_span(path);
+  EXPECT_TRUE(tangent_span(path, k, kCatenaryMostExtra * path.pieces[k].length * (1.0 - 1e-9))
+                  .pieces.empty());
+  for (const int links : {137, 217}) {
+    const std::string what = "z 11/41, " + std::to_string(links) + " links";
+    BeltPath laid;
+    const LoopPlacement place = place_slack_loop(path, circles, {11, 41}, links, kPitch, laid);
+    ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links)) << what;
+    ASSERT_TRUE(laid.pieces[k].catenary) << what;
+    EXPECT_EQ(place.s[0], 0.0) << what;
+    double turn = 0.0;
+    for (std::size_t j = 0; j < laid.pieces.size(); ++j)
+      turn = std::max(turn, std::abs(joint_turn(laid, j)));
+    EXPECT_LT(turn, 1e-9) << what;
+    expect_tangent_fit(laid, k, circles, what);
+    EXPECT_GT(place.wrapped[0], 0) << what;
+    EXPECT_GT(place.wrapped[1], 0) << what;
+    std::printf("%s: a %.3f mm, e %.3f mm, largest turn at a joint %.3g rad, wrapped %d and %d\n",
+                what.c_str(), laid.pieces[k].hang_a * 1e3, (laid.length - path.length) * 1e3, turn,
+                place.wrapped[0], place.wrapped[1]);
+    expect_every_link_one_pitch(loop_state(laid, circles, place, 0.0), links, what,
+                                1e-11 * links * kPitch);
+  }
+}
+
 // A span index beyond the path's pieces is refused (NAN, nothing laid), not read: the tangent
 // solve, tried where the lay between the tangent points does not close, looked up the span's
 // length before any check (a read past the pieces, seen by valgrind's memcheck).

@@ -1266,7 +1266,10 @@ double tangency_residual(double t0, double t1, double dx, double dy, double r0, 
 }
 
 // The steps of the tangent lay's bracketing scans: t_c ± kTangentStep · 2^(k/4), k = 0 .. up to
-// kTangentSteps (beyond the steepest slope a path of metres takes: sinh 40 is 1e17)
+// kTangentSteps (an offset of 1e5: in practice a scan ends before, where cosh overflows, at an
+// offset of about 710, k ≈ 91, through its non-finite return; a slope sinh 40 = 1e17 is already
+// steeper than any path of metres takes). Two roots within one step are not told apart: the
+// least-sag root is the least within the scan's resolution.
 constexpr double kTangentStep = 1e-4;
 constexpr int kTangentSteps = 120;
 double tangent_offset(int k) { return kTangentStep * std::exp2(0.25 * k); }
@@ -1553,8 +1556,8 @@ bool folds(const BeltPath& taut, const BeltPath& laid, const std::vector<std::si
 // The extra e at which N nodes walked at chord `pitch` close the loop on the path with span
 // `piece` laid tangent to both its wheels (`tangent_span`): bisection between N p less the
 // path's length (the miss not negative: a chord spans at least its pitch of the path) and the
-// longest catenary's e, bisected to the last bit and taken when the least miss is within 1e-11
-// of N p; NAN when not found.
+// longest e the tangent lay takes (below), bisected to the last bit and taken when the least miss
+// is within 1e-11 of N p; NAN when not found.
 SlackSolve tangent_solve(const BeltPath& path, std::size_t piece, int nodes, double pitch) {
   if (piece >= path.pieces.size()) return {};
   const double chain = nodes * pitch;
@@ -1564,7 +1567,35 @@ SlackSolve tangent_solve(const BeltPath& path, std::size_t piece, int nodes, dou
   };
   double lo = chain - path.length,
          hi = kCatenaryMostExtra * path.pieces[piece].length * (1.0 - 1e-9);
-  if (!(lo > 0.0 && lo < hi) || !(miss(lo) >= 0.0) || !(miss(hi) <= 0.0)) return {};
+  if (!(lo > 0.0 && lo < hi) || !(miss(lo) >= 0.0)) return {};
+  // the bracket's upper end: the longest catenary's e where the tangent lay takes it, else (it
+  // leaves a wheel more curved than the wheel, or uses a wrap up, short of it: z 11 and 41 at
+  // 671 mm and 82.9°) stepped down towards `lo` by 2^(1/4) of the distance until laid, then
+  // bisected between that and the step above to the last e laid
+  double at_hi = miss(hi);
+  if (!std::isfinite(at_hi)) {
+    const double top = hi;
+    double above = top;
+    for (int k = 1; k <= kTangentSteps && !std::isfinite(at_hi); ++k) {  // to 2^-30 of it
+      above = hi;
+      hi = lo + (top - lo) * std::exp2(-0.25 * k);
+      if (!(hi > lo)) return {};
+      at_hi = miss(hi);
+    }
+    if (!std::isfinite(at_hi)) return {};
+    for (int it = 0; it < 200 && at_hi > 0.0; ++it) {
+      const double mid = 0.5 * (hi + above);
+      if (!(mid > hi && mid < above)) break;
+      const double g = miss(mid);
+      if (std::isfinite(g)) {
+        hi = mid;
+        at_hi = g;
+      } else {
+        above = mid;
+      }
+    }
+  }
+  if (!(at_hi <= 0.0)) return {};
   // to the last bit (a miss at the tolerance would leave place_loop's chord solve moving the
   // links' chord off the pitch by up to 1e-11 of it), the least miss taken
   double best = NAN, least = INFINITY;
