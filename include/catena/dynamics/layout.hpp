@@ -258,8 +258,9 @@ PathPoint sag_point(const PathPiece& q, double along);
 /// closes. Node 0 is at the path's start but where neither closes from there (a node passing a
 /// fold of the path): then at the phase over the first link that closes it at the e where the
 /// walk's end jumps over the closure, or at the longest catenary where the walk still overshoots.
-/// Empty placement if N·pitch does not exceed the path's length, the sag cannot be solved, or any
-/// link's chord (the closing one too) is off `pitch` by more than 1e-9 of it.
+/// Empty placement if N·pitch does not exceed the path's length, the sag cannot be solved, any
+/// link's chord (the closing one too) is off `pitch` by more than 1e-9 of it, or a wheel is left
+/// without a roller on it (a tangent lay's shortened wrap).
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid);

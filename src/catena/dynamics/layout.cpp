@@ -1646,6 +1646,11 @@ LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& 
   // the wheels' seats as on a taut path: place_loop's chord solve lands on `pitch` itself here
   LoopPlacement out = place_loop_from(sagging, circles, teeth, nodes, pitch, solved.start);
   if (out.s.empty()) return out;
+  // every wheel with a roller on it (the tangent lay shortens its two wheels' wraps: at (30, −400)
+  // mm, z 17 both, 80 links, the driven wheel's to 0.37 of a pitch, none seated on it), the
+  // command's own rule for a start (analysis.cpp, slack_starts)
+  for (const int w : out.wrapped)
+    if (w == 0) return {};
   // every link one pitch (the closing one too), 1e-9 relative: a walk that found no point a
   // pitch on, or a link cut short, is not laid
   for (std::size_t i = 0; i < out.s.size(); ++i) {
