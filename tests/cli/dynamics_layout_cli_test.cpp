@@ -696,14 +696,15 @@ TEST(DynamicsLayoutCli, SlackBeyondTheHalfCircleStartsAsTheCatenary) {
   std::printf("105 links: start sag %.6f m, catenary %.6f m\n", start_sag, sag);
 }
 
-// A sloped catenary whose walk from the path's start closes for no e, through the command: the
-// driven wheel at (200, −400) mm from the driver, z 17 both. 80 links start (before: refused,
-// "need an e that was not found"), every link one pitch (`laid_pitch` the pitch). A chord spans at
-// least its pitch of the path, so N p ≤ L + e ≤ L + 10 c (the longest catenary, 10 chords of
-// extra; the span c is the centre distance, the wheels alike): N ≤ 298 here. That bound starts
-// (at the longest catenary, at node 0's phase: the walk from the path's start overshoots there),
-// and 299 and 300 links are refused naming "at most 298 links start so" (before: the bound was
-// refused and 297 named).
+// A sloped catenary that folds at its far wheel when laid between the span's tangent points, so
+// that the walk from the path's start closes for no e, through the command: the driven wheel at
+// (200, −400) mm from the driver, z 17 both. 80 links start (laid tangent to the wheels; before,
+// at node 0's phase, and before that refused, "need an e that was not found"), every link one
+// pitch (`laid_pitch` the pitch). A chord spans at least its pitch of the path, so N p ≤ L + e ≤
+// L + 10 c (the longest catenary, 10 chords of extra; the span c is the centre distance, the
+// wheels alike): N ≤ 298 here. That bound starts (laid tangent), and 299 and 300 links are
+// refused naming "at most 298 links start so" (before the phase: the bound was refused and 297
+// named).
 TEST(DynamicsLayoutCli, AKinkedSlopedCatenaryStarts) {
   auto with_links = [](int links) {
     return two_wheel_catenary("kinked", links, "200 mm", "-400 mm");

@@ -227,6 +227,17 @@ BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra);
 /// The most extra length a sag is laid with, in its chord c: a catenary of 11 c.
 inline constexpr double kCatenaryMostExtra = 10.0;
 
+/// The path with span `piece` (between two wheels wrapped counter-clockwise, travelling towards
+/// +x) laid as the catenary tangent to both wheels' pitch circles, hanging below them (the free
+/// chain leaving a wheel where its slope is the wheel's tangent): each wrap shortened to its
+/// tangent point, the path `extra` [m] longer than `path`. The tangent points' slope parameters
+/// t0, t1 and the catenary's a from the two tangency conditions and the length condition,
+/// bracketed and bisected (docs/models/dynamics.md, "The fold at the far wheel: the tangent
+/// lay"). Empty when it cannot be laid: no tangent catenary of that extra within the longest
+/// scan, the chain more curved where it leaves a wheel than the wheel, a wrap used up, or the
+/// curve cutting into its own wheels.
+BeltPath tangent_span(const BeltPath& path, std::size_t piece, double extra);
+
 /// The catenary through two points a horizontal distance h > 0 and a height v apart, of length
 /// `length` (more than the chord): its parameter a [m] (from √(S² − v²) = 2 a sinh(h / 2a), by
 /// bisection on h / 2a) and its lowest point's horizontal distance u [m] from the first point
@@ -241,12 +252,15 @@ PathPoint sag_point(const PathPiece& q, double along);
 
 /// A start with slack: N nodes at chord exactly `pitch` (so the chain is N·pitch long) on the path
 /// with its slack span (`slack_span`) sagging by the extra length that closes the loop
-/// (`slack_extra`). `laid` gets that path. Node 0 is at the path's start but where the walk from
-/// there closes for no e (a node passing a fold of the path, a sloped catenary's kink at its far
-/// wheel): then at the phase over the first link that closes it at the e where the walk's end
-/// jumps over the closure, or at the longest catenary where the walk still overshoots. Empty
-/// placement if N·pitch does not exceed the path's length, the sag cannot be solved, or any link's
-/// chord (the closing one too) is off `pitch` by more than 1e-9 of it.
+/// (`slack_extra`). `laid` gets that path: the span sagging between its tangent points
+/// (`sag_spans`), but where that lay folds (a catenary turning back by more than 90° at a wheel)
+/// or closes for no e, the one slack span laid tangent to its wheels (`tangent_span`) when that
+/// closes. Node 0 is at the path's start but where neither closes from there (a node passing a
+/// fold of the path): then at the phase over the first link that closes it at the e where the
+/// walk's end jumps over the closure, or at the longest catenary where the walk still overshoots.
+/// Empty placement if N·pitch does not exceed the path's length, the sag cannot be solved, any
+/// link's chord (the closing one too) is off `pitch` by more than 1e-9 of it, or a wheel is left
+/// without a roller on it (a tangent lay's shortened wrap).
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid);
@@ -271,7 +285,9 @@ BeltPath sag_spans(const BeltPath& path, const std::vector<std::size_t>& pieces,
 /// path's start still overshoots at the longest catenary, that catenary's e when a phase closes
 /// it there. INFINITY when the walk overshoots at the most e the spans take, at the longest
 /// catenary at every phase of node 0 the phase search tries (the count needs more), NAN when no e
-/// is found (or N·pitch does not exceed the path's length).
+/// is found (or N·pitch does not exceed the path's length). Where that lay folds or closes for no
+/// e, the e of the tangent lay (`tangent_span`, one span: the path's extra over the taut path)
+/// when that closes, bisected between N·pitch less the path's length and the longest catenary.
 double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
                    double pitch);
 

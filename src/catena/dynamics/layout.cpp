@@ -1245,11 +1245,179 @@ LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& 
 
 namespace {
 
+// The tangent lay of a catenary span (`tangent_span`): its slope parameters t0, t1 where it leaves
+// wheel 0 and meets wheel 1, and its parameter a. NAN when not laid.
+struct TangentCatenary {
+  double a = NAN, t0 = NAN, t1 = NAN;
+};
+
+// A catenary of parameter a touching two circles (centres d = (dx, dy) apart, radii r0, r1), both
+// on its upper side (the left of its travel towards +x), at the slope parameters t0 (circle 0)
+// and t1 (circle 1): the point of slope sinh t is c + r (tanh t, −1/cosh t) on each, and the
+// catenary from one to the other rises a (t1 − t0) along x and a (cosh t1 − cosh t0) along y, so
+//   x:  a (t1 − t0) = dx + r1 tanh t1 − r0 tanh t0,
+//   y:  a (cosh t1 − cosh t0) = dy − r1 / cosh t1 + r0 / cosh t0.
+// `a` from x; returns y's residual (NAN where a is not positive).
+double tangency_residual(double t0, double t1, double dx, double dy, double r0, double r1,
+                         double& a) {
+  a = (dx + r1 * std::tanh(t1) - r0 * std::tanh(t0)) / (t1 - t0);
+  if (!(a > 0.0) || !std::isfinite(a)) return NAN;
+  return a * (std::cosh(t1) - std::cosh(t0)) - dy + r1 / std::cosh(t1) - r0 / std::cosh(t0);
+}
+
+// The steps of the tangent lay's bracketing scans: t_c ± kTangentStep · 2^(k/4), k = 0 .. up to
+// kTangentSteps (an offset of 1e5: in practice a scan ends before, where cosh overflows, at an
+// offset of about 710, k ≈ 91, through its non-finite return; a slope sinh 40 = 1e17 is already
+// steeper than any path of metres takes). Two roots within one step are not told apart: the
+// least-sag root is the least within the scan's resolution.
+constexpr double kTangentStep = 1e-4;
+constexpr int kTangentSteps = 120;
+double tangent_offset(int k) { return kTangentStep * std::exp2(0.25 * k); }
+
+// The catenary tangent to both circles leaving circle 0 at the slope parameter t0 (< tc, the
+// common tangent's): t1 the first root of the y residual above tc (the least sag: scanned up
+// from tc in the steps above, then bisected to the last bit); NAN when none.
+TangentCatenary tangent_from(double t0, double tc, double dx, double dy, double r0, double r1) {
+  TangentCatenary out;
+  double a = NAN;
+  double lo = tc, at_lo = tangency_residual(t0, tc, dx, dy, r0, r1, a);
+  if (!std::isfinite(at_lo)) return out;
+  for (int k = 0; k <= kTangentSteps; ++k) {
+    const double hi = tc + tangent_offset(k);
+    const double at_hi = tangency_residual(t0, hi, dx, dy, r0, r1, a);
+    if (!std::isfinite(at_hi)) return out;
+    if ((at_lo > 0.0) != (at_hi > 0.0)) {
+      double l = lo, h = hi;
+      for (int it = 0; it < 200; ++it) {
+        const double mid = 0.5 * (l + h);
+        if (!(mid > l && mid < h)) break;
+        const double g = tangency_residual(t0, mid, dx, dy, r0, r1, a);
+        if (!std::isfinite(g)) return out;
+        ((g > 0.0) == (at_lo > 0.0) ? l : h) = mid;
+      }
+      out.t0 = t0;
+      out.t1 = 0.5 * (l + h);
+      tangency_residual(t0, out.t1, dx, dy, r0, r1, out.a);
+      return out;
+    }
+    lo = hi;
+    at_lo = at_hi;
+  }
+  return out;
+}
+
+}  // namespace
+
+BeltPath tangent_span(const BeltPath& path, std::size_t piece, double extra) {
+  BeltPath out = path;
+  out.pieces.clear();
+  const std::size_t n = path.pieces.size();
+  if (piece >= n || piece == 0 || path.pieces[piece].arc || path.pieces[piece].sag ||
+      !(extra > 0.0))
+    return out;
+  const PathPiece& q = path.pieces[piece];
+  const PathPiece& before = path.pieces[piece - 1];
+  const PathPiece& after = path.pieces[(piece + 1) % n];
+  // both wheels wrapped counter-clockwise (a span touching a back-side wheel does not sag), the
+  // span travelling towards +x (its outward side down: the catenary hangs below it)
+  if (!before.arc || !after.arc || before.sense < 0.0 || after.sense < 0.0 ||
+      before.wheel != q.wheel || after.wheel != q.next || !(q.x1 > q.x0) || !(q.length > 0.0))
+    return out;
+  const double r0 = before.radius, r1 = after.radius;
+  const double dx = after.cx - before.cx, dy = after.cy - before.cy;
+  const double chord = q.length, theta_c = std::atan2(q.y1 - q.y0, q.x1 - q.x0);
+  const double tc = std::asinh(std::tan(theta_c));
+  // the length condition: the path's extra over the taut path, the catenary's length less the
+  // chord and the two wraps' shortening r0 (θc − θ0) + r1 (θ1 − θc), θ = atan sinh t the slope's
+  // angle; it grows as t0 falls from tc (the lay sagging deeper)
+  auto extra_of = [&](const TangentCatenary& c) {
+    return c.a * (std::sinh(c.t1) - std::sinh(c.t0)) - chord -
+           r0 * (theta_c - std::atan(std::sinh(c.t0))) -
+           r1 * (std::atan(std::sinh(c.t1)) - theta_c);
+  };
+  // bracketed by the scan down from tc, then bisected on t0 to the last bit
+  double hi = tc, lo = NAN;
+  for (int k = 0; k <= kTangentSteps; ++k) {
+    const double t0 = tc - tangent_offset(k);
+    const TangentCatenary c = tangent_from(t0, tc, dx, dy, r0, r1);
+    if (!std::isfinite(c.a)) return out;
+    if (extra_of(c) >= extra) {
+      lo = t0;
+      break;
+    }
+    hi = t0;
+  }
+  if (!std::isfinite(lo)) return out;
+  TangentCatenary laid;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;
+    const TangentCatenary c = tangent_from(mid, tc, dx, dy, r0, r1);
+    if (!std::isfinite(c.a)) return out;
+    (extra_of(c) >= extra ? lo : hi) = mid;
+  }
+  laid = tangent_from(lo, tc, dx, dy, r0, r1);
+  if (!std::isfinite(laid.a)) return out;
+  // the lay's own extra within 1e-9 of the one asked (a jump of the least-sag root is not laid)
+  if (!(std::abs(extra_of(laid) - extra) <= 1e-9 * (chord + extra))) return out;
+  // the free chain no more curved where it leaves a wheel than the wheel (a cosh² t ≥ r: else it
+  // would cut into it) and each wrap kept (the shortening within it)
+  const double shrink0 = theta_c - std::atan(std::sinh(laid.t0));
+  const double shrink1 = std::atan(std::sinh(laid.t1)) - theta_c;
+  const double wrap0 = before.to - before.from, wrap1 = after.to - after.from;
+  if (!(laid.a * std::cosh(laid.t0) * std::cosh(laid.t0) >= r0) ||
+      !(laid.a * std::cosh(laid.t1) * std::cosh(laid.t1) >= r1) || !(shrink0 >= 0.0) ||
+      !(shrink1 >= 0.0) || !(shrink0 < wrap0) || !(shrink1 < wrap1))
+    return out;
+  out.pieces = path.pieces;
+  PathPiece& w0 = out.pieces[piece - 1];
+  PathPiece& span = out.pieces[piece];
+  PathPiece& w1 = out.pieces[(piece + 1) % n];
+  w0.to -= shrink0;
+  w0.x1 = w0.cx + r0 * std::cos(w0.to);
+  w0.y1 = w0.cy + r0 * std::sin(w0.to);
+  w0.length = r0 * (w0.to - w0.from);
+  w1.from += shrink1;
+  w1.x0 = w1.cx + r1 * std::cos(w1.from);
+  w1.y0 = w1.cy + r1 * std::sin(w1.from);
+  w1.length = r1 * (w1.to - w1.from);
+  span.x0 = w0.x1;
+  span.y0 = w0.y1;
+  span.x1 = w1.x0;
+  span.y1 = w1.y0;
+  span.sag = true;
+  span.catenary = true;
+  span.hang_a = laid.a;
+  span.hang_u = -laid.a * laid.t0;
+  span.length = laid.a * (std::sinh(laid.t1) - std::sinh(laid.t0));
+  // the curve clear of its own two wheels' pitch circles (it touches them at its ends)
+  const int samples = 4096;
+  for (int j = 1; j < samples; ++j) {
+    const PathPoint p = sag_point(span, span.length * j / samples);
+    if (std::hypot(p.x - w0.cx, p.y - w0.cy) < r0 * (1.0 - 1e-9) ||
+        std::hypot(p.x - w1.cx, p.y - w1.cy) < r1 * (1.0 - 1e-9)) {
+      out.pieces.clear();
+      return out;
+    }
+  }
+  double along = 0.0;
+  for (PathPiece& r : out.pieces) {
+    r.start = along;
+    along += r.length;
+  }
+  out.length = along;
+  return out;
+}
+
+namespace {
+
 // The slack solve's answer: the extra length e and the arc length of node 0 (0 but where the
 // walk from the path's start closes for no e, below).
 struct SlackSolve {
   double extra = NAN;
   double start = 0.0;
+  bool tangent =
+      false;  // laid tangent to both wheels (`tangent_span`), not between the tangent points
 };
 
 // The phase at which N nodes walked at chord `pitch` close the loop on `sagging`: node 0's arc
@@ -1291,8 +1459,8 @@ double closing_phase(const BeltPath& sagging, int nodes, double pitch, double to
   return NAN;
 }
 
-SlackSolve slack_solve(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
-                       double pitch) {
+SlackSolve chord_end_solve(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
+                           double pitch) {
   const double chain = nodes * pitch;
   if (path.pieces.empty() || nodes < 3 || !(pitch > 0.0) || pieces.empty() ||
       !(chain > path.length))
@@ -1370,6 +1538,96 @@ SlackSolve slack_solve(const BeltPath& path, const std::vector<std::size_t>& pie
   return {};
 }
 
+// Whether a catenary laid between its span's tangent points (`sag_spans`) folds there: its
+// tangent at either end and the wrap's (the chord's direction) more than 90° apart, the path
+// turning back on itself (the walk's link then jumps across the fold).
+bool folds(const BeltPath& taut, const BeltPath& laid, const std::vector<std::size_t>& pieces) {
+  for (const std::size_t k : pieces) {
+    const PathPiece& q = laid.pieces[k];
+    if (!q.catenary) continue;
+    const PathPiece& t = taut.pieces[k];
+    const double ux = t.x1 - t.x0, uy = t.y1 - t.y0;
+    const PathPoint a = sag_point(q, 0.0), b = sag_point(q, q.length);
+    if (a.tx * ux + a.ty * uy < 0.0 || b.tx * ux + b.ty * uy < 0.0) return true;
+  }
+  return false;
+}
+
+// The extra e at which N nodes walked at chord `pitch` close the loop on the path with span
+// `piece` laid tangent to both its wheels (`tangent_span`): bisection between N p less the
+// path's length (the miss not negative: a chord spans at least its pitch of the path) and the
+// longest e the tangent lay takes (below), bisected to the last bit and taken when the least miss
+// is within 1e-11 of N p; NAN when not found.
+SlackSolve tangent_solve(const BeltPath& path, std::size_t piece, int nodes, double pitch) {
+  if (piece >= path.pieces.size()) return {};
+  const double chain = nodes * pitch;
+  auto miss = [&](double extra) {
+    const BeltPath p = tangent_span(path, piece, extra);
+    return p.pieces.empty() ? NAN : walk_miss(p, pitch, nodes, 0.0);
+  };
+  double lo = chain - path.length,
+         hi = kCatenaryMostExtra * path.pieces[piece].length * (1.0 - 1e-9);
+  if (!(lo > 0.0 && lo < hi) || !(miss(lo) >= 0.0)) return {};
+  // the bracket's upper end: the longest catenary's e where the tangent lay takes it, else (it
+  // leaves a wheel more curved than the wheel, or uses a wrap up, short of it: z 11 and 41 at
+  // 671 mm and 82.9°) stepped down towards `lo` by 2^(1/4) of the distance until laid, then
+  // bisected between that and the step above to the last e laid
+  double at_hi = miss(hi);
+  if (!std::isfinite(at_hi)) {
+    const double top = hi;
+    double above = top;
+    for (int k = 1; k <= kTangentSteps && !std::isfinite(at_hi); ++k) {  // to 2^-30 of it
+      above = hi;
+      hi = lo + (top - lo) * std::exp2(-0.25 * k);
+      if (!(hi > lo)) return {};
+      at_hi = miss(hi);
+    }
+    if (!std::isfinite(at_hi)) return {};
+    for (int it = 0; it < 200 && at_hi > 0.0; ++it) {
+      const double mid = 0.5 * (hi + above);
+      if (!(mid > hi && mid < above)) break;
+      const double g = miss(mid);
+      if (std::isfinite(g)) {
+        hi = mid;
+        at_hi = g;
+      } else {
+        above = mid;
+      }
+    }
+  }
+  if (!(at_hi <= 0.0)) return {};
+  // to the last bit (a miss at the tolerance would leave place_loop's chord solve moving the
+  // links' chord off the pitch by up to 1e-11 of it), the least miss taken
+  double best = NAN, least = INFINITY;
+  for (int it = 0; it < 200 && least > 1e-15 * chain; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;
+    const double g = miss(mid);
+    if (!std::isfinite(g)) break;
+    if (std::abs(g) < least) {
+      least = std::abs(g);
+      best = mid;
+    }
+    (g > 0.0 ? lo : hi) = mid;
+  }
+  if (least <= 1e-11 * chain) return {best, 0.0, true};
+  return {};
+}
+
+// The slack solve: between the tangent points (`chord_end_solve`) where that closes without a
+// fold (every start laid so before is laid the same), else, for one span, tangent to its wheels
+// (`tangent_solve`) where that closes, else the answer between the tangent points as it is (at
+// node 0's phase, or refused).
+SlackSolve slack_solve(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
+                       double pitch) {
+  const SlackSolve chord = chord_end_solve(path, pieces, nodes, pitch);
+  if (pieces.size() != 1 || path.pieces.empty()) return chord;
+  const bool closed = std::isfinite(chord.extra) && chord.start == 0.0;
+  if (closed && !folds(path, sag_spans(path, pieces, chord.extra), pieces)) return chord;
+  const SlackSolve tangent = tangent_solve(path, pieces[0], nodes, pitch);
+  return std::isfinite(tangent.extra) ? tangent : chord;
+}
+
 }  // namespace
 
 double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
@@ -1383,10 +1641,16 @@ LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& 
   laid = BeltPath{};
   const SlackSolve solved = slack_solve(path, pieces, nodes, pitch);
   if (!std::isfinite(solved.extra)) return {};
-  const BeltPath sagging = sag_spans(path, pieces, solved.extra);
+  const BeltPath sagging = solved.tangent ? tangent_span(path, pieces[0], solved.extra)
+                                          : sag_spans(path, pieces, solved.extra);
   // the wheels' seats as on a taut path: place_loop's chord solve lands on `pitch` itself here
   LoopPlacement out = place_loop_from(sagging, circles, teeth, nodes, pitch, solved.start);
   if (out.s.empty()) return out;
+  // every wheel with a roller on it (the tangent lay shortens its two wheels' wraps: at (30, −400)
+  // mm, z 17 both, 80 links, the driven wheel's to 0.37 of a pitch, none seated on it), the
+  // command's own rule for a start (analysis.cpp, slack_starts)
+  for (const int w : out.wrapped)
+    if (w == 0) return {};
   // every link one pitch (the closing one too), 1e-9 relative: a walk that found no point a
   // pitch on, or a link cut short, is not laid
   for (std::size_t i = 0; i < out.s.size(); ++i) {
