@@ -577,17 +577,25 @@ TEST(DynamicsPocketDiscreteGradient, WithinTheBandTheForceAlongTheStepIsTheBande
 
 // Ẽ has no jump but the ones crossed_jump takes: tiny steps (0.1 µm, the wheel held) scanned
 // radially across the mouth and the band's inner edge, 3c, 6c and 9.9c off the vertex (J 2 J to
-// 40 J). Each step's work is −(ΔẼ − s J), s = 1 for any real jump over so short a step (r > 2), so
-// a jump crossed_jump does not find shows as work far above the force's scale: each step's |work|
-// stays below 2.5e6 N (the band's force, J's slope 9.9c off included) times its length, 0.25 J.
-// (A scan along the band, chords of 0.2c from −12c to 12c at 0 to 49 µm below the mouth, finds
-// single points 9.6c–10c off the vertex, on the chords' ends, where Ẽ stands 2.5–39 J off its
-// neighbours 0.1 µm away: not diagnosed, docs "Not built yet".)
+// 40 J), and along the band, chords of 0.2c from −12c to 12c off the vertex on the mouth and 25 µm
+// below it (across the capture and its shadow), on the sharp mouth, the mouth's ramp (w = c) and
+// with the release (a joint not held: its entry is a jump crossed_jump takes). Each step's work is
+// −(ΔẼ − s J), s = 1 for any real jump over so short a step (r > 2), so a jump crossed_jump does
+// not find shows as work far above the force's scale: each step's |work| stays below 2.5e6 N (the
+// band's force, J's slope 9.9c off included) times its length, 0.25 J. (The chords' ends lie on the
+// mouth to rounding: where the band's side was decided by ρ's own rounding and the contact's by
+// ρ²'s, a point the contact put beyond the mouth (E = 0) took Ẽ = −J, 0.37–37 J off its
+// neighbours 1.6c– 9.8c off the vertex; with the release, the ends' sides of the mouth were decided
+// on q₀ + 1·Δq and by ρ's rounding, and a step leaving a chord's end at a grazing 1.3e-4 rad stayed
+// within the mouth's rounding a span beyond the crossing's bracket, the jump read 0: work up to 37
+// J.)
 TEST(DynamicsPocketDiscreteGradient, TheBandedEnergyJumpsOnlyWhereItsJumpsAreTaken) {
-  const Sprocket on = wheel8(true);
+  Sprocket release = wheel8(true), ramp = wheel8(true);
+  release.pocket_release = true;
+  ramp.pocket_mouth = kClearance;
   const double c = kClearance, psi = 0.4, step = 1e-7, bound = 2.5e6 * step;
   double worst = 0.0;
-  auto scan = [&](const char* what, Point a, Point b) {
+  auto scan = [&](const Sprocket& on, const char* what, Point a, Point b) {
     const int n = static_cast<int>(std::hypot(b.x - a.x, b.y - a.y) / step) + 1;
     Point p0 = a;
     for (int i = 1; i <= n; ++i) {
@@ -598,14 +606,31 @@ TEST(DynamicsPocketDiscreteGradient, TheBandedEnergyJumpsOnlyWhereItsJumpsAreTak
       if (!(work < bound)) {
         ADD_FAILURE() << what << " at " << i << " of " << n << " from (" << a.x << ", " << a.y
                       << "): work " << work << " J";
-        return;
+        return false;
       }
       p0 = p1;
     }
+    return true;
   };
+  const Sprocket sharp = wheel8(true);
   for (const double along : {3.0 * c, 6.0 * c, 9.9 * c})
-    scan("across the band", near_vertex(on, psi, 2, along, -5e-6),
-         near_vertex(on, psi, 2, along, 0.5 * c + 5e-6));
+    scan(sharp, "across the band", near_vertex(sharp, psi, 2, along, -5e-6),
+         near_vertex(sharp, psi, 2, along, 0.5 * c + 5e-6));
+  const struct {
+    const Sprocket* on;
+    const char* what;
+  } wheels[] = {{&sharp, "along the band"},
+                {&release, "along the band, the release"},
+                {&ramp, "along the band, the ramp"}};
+  for (const auto& [on, what] : wheels) {
+    for (const double below : {0.0, 25e-6}) {
+      for (int j = -60; j < 60; ++j) {
+        if (!scan(*on, what, near_vertex(*on, psi, 2, j * 0.2 * c, below),
+                  near_vertex(*on, psi, 2, (j + 1) * 0.2 * c, below)))
+          break;
+      }
+    }
+  }
   std::printf(
       "pocket discrete gradient, tiny steps along and across the band: the largest work "
       "%.3g J (bound %.3g J)\n",
