@@ -12,6 +12,8 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "catena/dynamics/integrator.hpp"
@@ -780,6 +782,90 @@ TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheCorrectionsSlopeMatchesTheDif
         a.what, with.skew, miss / scale, scale);
     EXPECT_LT(miss, 1e-5 * scale) << a.what;
   }
+}
+
+// The share s(r) J of a jump left to the numerical term between r = |J| / (|Δz| k c) = 1 and 2
+// (docs/models/dynamics.md, "The capture"): a joint crossing the body's capture 60 µm below the
+// mouth (past the band: no shadow, Ẽ = E) from 9.9c to 10.1c off its vertex, the wheel turning
+// by Δψ chosen so that r takes 0.8, 1.2, 1.5, 1.8 and 2.2. J is found here by bisection on
+// pocket_contact's energy along the step's straight path in (q, ψ) (the half whose ends differ by
+// more than 1 J holds it, to 1e-13 of the path), s(r) = x³(10 − 15x + 6x²), x = r − 1 clamped
+// to [0, 1]: the work is −(ΔE − s J) to 1e-7 of J. And the correction's slope along the step,
+// ∂S/∂x₁·Δq + ∂S/∂ψ₁ Δψ, against the central difference of S with the end moved along the
+// step's own line (the crossing's place, so J, does not move; the share's slope `dleft` is then
+// the whole of J's part): within 1e-4 of it (5.3e-5 at r = 2.2, where the code's J, bracketed
+// to 1e-9 c of each moved step, enters S whole; 2.3e-6 to 5e-6 within (1, 2); dleft dropped
+// 1.0–1.5, mis-signed 2.0–3.0). (Across the line J moves with the crossing's place, which ∂S does
+// not take: quasi-Newton there, not tested.)
+TEST(DynamicsPocketDiscreteGradient, TheJumpsShareLeftBetweenRatiosOneAndTwo) {
+  const Sprocket on = wheel8(true);
+  const double c = kClearance, psi = 0.4, below = 60e-6, kc = kStiffness * c;
+  auto ends = [&](double turn) {
+    return std::pair{near_vertex(on, psi, 2, 9.9 * c, below),
+                     near_vertex(on, psi + turn, 2, 10.1 * c, below)};
+  };
+  // the jump on the path (q₀ + t Δq, ψ₀ + t Δψ)
+  auto jump_on_path = [&](Point p0, Point p1, double turn) {
+    auto e = [&](double t) {
+      return energy_at(on, {p0.x + t * (p1.x - p0.x), p0.y + t * (p1.y - p0.y)}, psi + t * turn);
+    };
+    double a = 0.0, b = 1.0, ea = e(a), eb = e(b);
+    while (b - a > 1e-13) {
+      const double m = 0.5 * (a + b), em = e(m);
+      if (std::abs(em - ea) > 1.0)
+        b = m, eb = em;
+      else
+        a = m, ea = em;
+    }
+    return eb - ea;
+  };
+  double worst_work = 0.0, worst_slope = 0.0;
+  for (const double target : {0.8, 1.2, 1.5, 1.8, 2.2}) {
+    // Δψ for r = |J| / (|Δz| k c) (the end turns with the wheel: |Δz| grows with Δψ, r falls),
+    // by bisection
+    auto ratio = [&](double turn, Point& p0, Point& p1, double& jump) {
+      std::tie(p0, p1) = ends(turn);
+      jump = jump_on_path(p0, p1, turn);
+      const double dx = p1.x - p0.x, dy = p1.y - p0.y, rdpsi = on.pitch_radius * turn;
+      return std::abs(jump) / (std::sqrt(dx * dx + dy * dy + rdpsi * rdpsi) * kc);
+    };
+    double lo = 0.0, hi = 0.1, jump = 0.0;
+    Point p0, p1;
+    for (int it = 0; it < 50; ++it) {
+      const double m = 0.5 * (lo + hi);
+      (ratio(m, p0, p1, jump) > target ? lo : hi) = m;
+    }
+    const double turn = 0.5 * (lo + hi), r = ratio(turn, p0, p1, jump);
+    const double dx = p1.x - p0.x, dy = p1.y - p0.y;
+    ASSERT_NEAR(r, target, 1e-3 * target);
+    ASSERT_GT(std::abs(jump), 10.0);  // the capture's jump
+    const double x = std::clamp(r - 1.0, 0.0, 1.0),
+                 share = x * x * x * (10.0 - 15.0 * x + 6.0 * x * x);
+    const double change = energy_at(on, p1, psi + turn) - energy_at(on, p0, psi);
+    const double work = step_work(on, p0, p1, psi, psi + turn, nullptr);
+    const double miss = std::abs(work + change - share * jump) / std::abs(jump);
+    worst_work = std::max(worst_work, miss);
+    EXPECT_LT(miss, 1e-7) << "r " << r;
+    // S's slope along the step's line
+    const SeatContact with = step_contact(on, p0, p1, psi, psi + turn);
+    const double along = with.skew_dx * dx + with.skew_dy * dy + with.skew_dpsi * turn;
+    const double h = 1e-7;  // of the step
+    auto skew_at = [&](double f) {
+      return step_contact(on, p0, {p1.x + f * dx, p1.y + f * dy}, psi, psi + turn * (1.0 + f)).skew;
+    };
+    const double fd = (skew_at(h) - skew_at(-h)) / (2.0 * h);
+    const double slope_miss = std::abs(along - fd) / std::abs(fd);
+    worst_slope = std::max(worst_slope, slope_miss);
+    EXPECT_LT(slope_miss, 1e-4) << "r " << r << ": dS along " << along << ", FD " << fd;
+    std::printf(
+        "pocket discrete gradient, the jump's share at r %.3g (J %.4g J, turn %.4g rad): s %.4g, "
+        "|work + dE - s J| / |J| %.2e; S's slope along the step %.4g against FD %.4g (%.2e)\n",
+        r, jump, turn, share, miss, along, fd, slope_miss);
+  }
+  std::printf(
+      "pocket discrete gradient, the jump's share: work misses -(dE - s J) by %.2e of J, S's slope "
+      "along the step its differences by %.2e\n",
+      worst_work, worst_slope);
 }
 
 // Only a step whose two ends lie on opposite sides of one of E_k's jump surfaces has a jump in
