@@ -583,21 +583,27 @@ TEST(DynamicsPocketDiscreteGradient, WithinTheBandTheForceAlongTheStepIsTheBande
 // below it (across the capture and its shadow), on the sharp mouth, the mouth's ramp (w = c) and
 // with the release (a joint not held: its entry is a jump crossed_jump takes). Each step's work is
 // −(ΔẼ − s J), s = 1 for any real jump over so short a step (r > 2), so a jump crossed_jump does
-// not find shows as work far above the force's scale: each step's |work| stays below 2.5e6 N (the
-// band's force, J's slope 9.9c off included) times its length, 0.25 J. (The chords' ends lie on the
-// mouth to rounding: where the band's side was decided by ρ's own rounding and the contact's by
-// ρ²'s, a point the contact put beyond the mouth (E = 0) took Ẽ = −J, 0.37–37 J off its
-// neighbours 1.6c– 9.8c off the vertex; with the release, the ends' sides of the mouth were decided
-// on q₀ + 1·Δq and by ρ's rounding, and a step leaving a chord's end at a grazing 1.3e-4 rad stayed
-// within the mouth's rounding a span beyond the crossing's bracket, the jump read 0: work up to 37
-// J.)
+// not find shows as work far above the force's scale. Across the band each step's |work| stays
+// below 2.5e6 N (the band's force φ′ J, (15/8)/(c/2) · 40 J = 1.5e6 N 9.9c off, J's slope
+// included) times its length, 0.25 J; along it, where φ′ J is across the step, below 5e5 N times
+// it, 0.05 J: five times the pocket law's force k g at the capture (g < 10c: 1e5 N), the largest
+// force met along the band (measured 9e-3 J on the sharp mouth and the ramp, 1.3e-2 J with the
+// release). (The chords' ends lie on the mouth to rounding: where the band's side was decided by
+// ρ's own rounding and the contact's by ρ²'s, a point the contact put beyond the mouth (E = 0)
+// took Ẽ = −J, 0.37–37 J off its neighbours 1.6c–9.8c off the vertex; with the release, the
+// ends' sides of the mouth were decided by the path's own radius (hypot), not the contact's ρ²,
+// and a step leaving a chord's end at a grazing 1.3e-4 rad stayed within the mouth's rounding a
+// span beyond the crossing's bracket, the jump read 0: work up to 37 J. The path's end is still
+// taken at q₀ + 1·Δq, not q₁: of 4e6 steps ending on the mouth near the y axis, 180951 have
+// q₀ + 1·Δq ≠ q₁ and none a side of its own.)
 TEST(DynamicsPocketDiscreteGradient, TheBandedEnergyJumpsOnlyWhereItsJumpsAreTaken) {
   Sprocket release = wheel8(true), ramp = wheel8(true);
   release.pocket_release = true;
   ramp.pocket_mouth = kClearance;
-  const double c = kClearance, psi = 0.4, step = 1e-7, bound = 2.5e6 * step;
-  double worst = 0.0;
-  auto scan = [&](const Sprocket& on, const char* what, Point a, Point b) {
+  const double c = kClearance, psi = 0.4, step = 1e-7;
+  const double across = 2.5e6 * step, along = 5e5 * step;  // the bounds [J]
+  auto scan = [&](const Sprocket& on, const char* what, Point a, Point b, double bound,
+                  double& worst) {
     const int n = static_cast<int>(std::hypot(b.x - a.x, b.y - a.y) / step) + 1;
     Point p0 = a;
     for (int i = 1; i <= n; ++i) {
@@ -607,7 +613,7 @@ TEST(DynamicsPocketDiscreteGradient, TheBandedEnergyJumpsOnlyWhereItsJumpsAreTak
       worst = std::max(worst, work);
       if (!(work < bound)) {
         ADD_FAILURE() << what << " at " << i << " of " << n << " from (" << a.x << ", " << a.y
-                      << "): work " << work << " J";
+                      << "): work " << work << " J (bound " << bound << " J)";
         return false;
       }
       p0 = p1;
@@ -615,28 +621,31 @@ TEST(DynamicsPocketDiscreteGradient, TheBandedEnergyJumpsOnlyWhereItsJumpsAreTak
     return true;
   };
   const Sprocket sharp = wheel8(true);
-  for (const double along : {3.0 * c, 6.0 * c, 9.9 * c})
-    scan(sharp, "across the band", near_vertex(sharp, psi, 2, along, -5e-6),
-         near_vertex(sharp, psi, 2, along, 0.5 * c + 5e-6));
-  const struct {
+  double worst_across = 0.0;
+  for (const double off : {3.0 * c, 6.0 * c, 9.9 * c})
+    scan(sharp, "across the band", near_vertex(sharp, psi, 2, off, -5e-6),
+         near_vertex(sharp, psi, 2, off, 0.5 * c + 5e-6), across, worst_across);
+  struct Chords {
     const Sprocket* on;
     const char* what;
+    double worst = 0.0;
   } wheels[] = {{&sharp, "along the band"},
-                {&release, "along the band, the release"},
-                {&ramp, "along the band, the ramp"}};
-  for (const auto& [on, what] : wheels) {
+                {&ramp, "along the band, the ramp"},
+                {&release, "along the band, the release"}};
+  for (Chords& w : wheels) {
     for (const double below : {0.0, 25e-6}) {
       for (int j = -60; j < 60; ++j) {
-        if (!scan(*on, what, near_vertex(*on, psi, 2, j * 0.2 * c, below),
-                  near_vertex(*on, psi, 2, (j + 1) * 0.2 * c, below)))
+        if (!scan(*w.on, w.what, near_vertex(*w.on, psi, 2, j * 0.2 * c, below),
+                  near_vertex(*w.on, psi, 2, (j + 1) * 0.2 * c, below), along, w.worst))
           break;
       }
     }
   }
   std::printf(
-      "pocket discrete gradient, tiny steps along and across the band: the largest work "
-      "%.3g J (bound %.3g J)\n",
-      worst, bound);
+      "pocket discrete gradient, tiny steps across the band: the largest work %.3g J (bound %.3g "
+      "J); along it %.3g J on the sharp mouth, %.3g J on the ramp, %.3g J with the release (bound "
+      "%.3g J)\n",
+      worst_across, across, wheels[0].worst, wheels[1].worst, wheels[2].worst, along);
 }
 
 // A step across the sharp mouth within about 0.87c of its vertex, where the pocket's E₀(g) is 0 on
