@@ -648,6 +648,52 @@ TEST(DynamicsPocketDiscreteGradient, TheBandedEnergyJumpsOnlyWhereItsJumpsAreTak
       worst_across, across, wheels[0].worst, wheels[1].worst, wheels[2].worst, along);
 }
 
+// A point on the mouth that the contact puts within it by its squared radius about the wheel's
+// centre (ρ² ≤ (R + c/2)², E the pocket's inner side's) while its radius's own rounding puts it
+// beyond (hypot > R + c/2) takes the band's −J too: band_at lets its own radius rule a point out
+// only from 1e-9 c beyond the mouth. Such points lie near the axes (19 in 2e6 points on the mouth
+// all round the test wheel); one is found by stepping 1 nm at a time along the mouth from 6c off a
+// vertex placed 0.035 rad below the y axis (J ≈ 12.6 J there). Steps of 0.1 µm from it radially in
+// and out, along the mouth, and back into it do the work of the force's scale (below 0.05 J, as
+// along the band above); with the band deciding by its own radius alone, Ẽ there is E's inner
+// side, J off its neighbours.
+TEST(DynamicsPocketDiscreteGradient, APointOnTheMouthWithinItBySquaredRadiusTakesTheBand) {
+  Sprocket sharp = wheel8(true), ramp = wheel8(true);
+  ramp.pocket_mouth = kClearance;
+  const double c = kClearance, psi = 0.75, step = 1e-7, bound = 5e5 * step;
+  const double mouth = sharp.pitch_radius + 0.5 * c, cx = sharp.centre_x, cy = sharp.centre_y;
+  double off = 6.0 * c;
+  bool found = false;
+  for (int i = 0; i < 100000 && !found; ++i) {
+    off = 6.0 * c + i * 1e-9;
+    const Point p = near_vertex(sharp, psi, 2, off, 0.0);
+    const double qx = p.x - cx, qy = p.y - cy;  // as the step's end about the wheel's centre
+    const double rx = (qx + cx) - cx, ry = (qy + cy) - cy;  // put back about it (where())
+    found = std::hypot(qx, qy) > mouth && rx * rx + ry * ry <= mouth * mouth;
+  }
+  ASSERT_TRUE(found);
+  double worst = 0.0;
+  for (const Sprocket* on : {&sharp, &ramp}) {
+    const Point p = near_vertex(*on, psi, 2, off, 0.0);
+    ASSERT_GT(energy_at(*on, p, psi), 1.0);  // the contact takes the inner side's E there
+    const Point to[] = {near_vertex(*on, psi, 2, off, step), near_vertex(*on, psi, 2, off, -step),
+                        near_vertex(*on, psi, 2, off + step, 0.0)};
+    for (const Point& q : to) {
+      for (const auto& [a, b] : {std::pair{p, q}, std::pair{q, p}}) {
+        const double work = std::abs(step_work(*on, a, b, psi, psi, nullptr));
+        worst = std::max(worst, work);
+        EXPECT_LT(work, bound) << (on == &ramp ? "the ramp" : "the sharp mouth") << ", from ("
+                               << a.x << ", " << a.y << ") to (" << b.x << ", " << b.y << ")";
+      }
+    }
+  }
+  std::printf(
+      "pocket discrete gradient, a point on the mouth %.6gc off the vertex within it by rho^2 "
+      "and beyond it by hypot: the largest work of a 0.1 um step from or to it %.3g J (bound %.3g "
+      "J)\n",
+      off / c, worst, bound);
+}
+
 // A step across the sharp mouth within about 0.87c of its vertex, where the pocket's E₀(g) is 0 on
 // the mouth (g ≤ 0: the energy has no jump there), is corrected like any other: a joint entering
 // from 5 µm above the mouth 0.3c off its vertex to 30 µm into its pocket (the θ point still within
