@@ -846,12 +846,14 @@ TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheCorrectionsSlopeMatchesTheDif
 // pocket_contact's energy along the step's straight path in (q, ψ) (the half whose ends differ by
 // more than 1 J holds it, to 1e-13 of the path), s(r) = x³(10 − 15x + 6x²), x = r − 1 clamped
 // to [0, 1]: the work is −(ΔE − s J) to 1e-7 of J. And the correction's slope along the step,
-// ∂S/∂x₁·Δq + ∂S/∂ψ₁ Δψ, against the central difference of S with the end moved along the
-// step's own line (the crossing's place, so J, does not move; the share's slope `dleft` is then
-// the whole of J's part): within 1e-4 of it (5.3e-5 at r = 2.2, where the code's J, bracketed
-// to 1e-9 c of each moved step, enters S whole; 2.3e-6 to 5e-6 within (1, 2); dleft dropped
-// 1.0–1.5, mis-signed 2.0–3.0). (Across the line J moves with the crossing's place, which ∂S does
-// not take: quasi-Newton there, not tested.)
+// ∂S/∂x₁·Δq + ∂S/∂ψ₁ Δψ, against the central difference of S with the end moved by ±1e-5 of the
+// step along its own line (the crossing's place, so J, does not move; the share's slope `dleft` is
+// then the whole of J's part): within 1e-4 of it (6.5e-7 at r = 2.2, where the code's J,
+// bracketed to 1e-9 c of each moved step, enters S whole; 2.7e-8 to 6.3e-8 within (1, 2); dleft
+// dropped 1.0–1.5, mis-signed 2.0–3.0). The differences' error is J's rounding over 2h (5.3e-5
+// at r = 2.2 with h = 1e-7, 5.5e-4 with h = 1e-8), their truncation, O(h²), below 3e-9 (all
+// misses below 3.8e-8 with h = 4e-5). (Across the line J moves with the crossing's place, which ∂S
+// does not take: quasi-Newton there, not tested.)
 TEST(DynamicsPocketDiscreteGradient, TheJumpsShareLeftBetweenRatiosOneAndTwo) {
   const Sprocket on = wheel8(true);
   const double c = kClearance, psi = 0.4, below = 60e-6, kc = kStiffness * c;
@@ -904,7 +906,7 @@ TEST(DynamicsPocketDiscreteGradient, TheJumpsShareLeftBetweenRatiosOneAndTwo) {
     // S's slope along the step's line
     const SeatContact with = step_contact(on, p0, p1, psi, psi + turn);
     const double along = with.skew_dx * dx + with.skew_dy * dy + with.skew_dpsi * turn;
-    const double h = 1e-7;  // of the step
+    const double h = 1e-5;  // of the step
     auto skew_at = [&](double f) {
       return step_contact(on, p0, {p1.x + f * dx, p1.y + f * dy}, psi, psi + turn * (1.0 + f)).skew;
     };
