@@ -339,6 +339,14 @@ bool free_of(const Sprocket& w, const Where& p, int held) {
   return p.beyond && !(w.pocket_release && held != kNoPocket);
 }
 
+// Whether a point `p` is within the mouth R + c/2 as the pocket's law takes it (contact_at: within
+// the reach by ρ², and with the mouth's ramp by ρ within the mouth): the band's side (band_at)
+// decided by the same rounding, so that a point on the mouth has one side for both
+bool within_mouth(const Sprocket& w, const Where& p) {
+  return !p.beyond && (!(w.pocket_mouth > 0.0) ||
+                       std::sqrt(p.rho2) <= w.pitch_radius + 0.5 * w.pocket_clearance);
+}
+
 // The contact of (x, y) at `p` (not free_of the wheel) with pocket `index` whose vertex is
 // (sx, sy): what `need` asks; `cap` the wheel's body_capture if the caller has it, else nullptr.
 // Inlined: a call of its own cost pocket_contact 1.7 % more instructions on the example.
@@ -372,8 +380,7 @@ bool free_of(const Sprocket& w, const Where& p, int held) {
     apply_release(w, g, dist, rx, ry, vx, vy, speed, need, c);
     return c;
   }
-  const double rho = std::sqrt(rho2);
-  if (!(w.pocket_mouth > 0.0) || rho <= mouth) {     // within the mouth: the pocket as it was
+  if (within_mouth(w, p)) {                          // within the mouth: the pocket as it was
     apply_seat_law(w, g, rx, ry, vx, vy, speed, c);  // the seats' force law
     return c;
   }
@@ -381,7 +388,7 @@ bool free_of(const Sprocket& w, const Where& p, int held) {
   // s the C² step from 0 at the ramp's top to 1 at the mouth, W the C² step from 1 at g ≤ c to 0
   // at g ≥ 2c (a joint more than 3c from its vertex is not held over the mouth: bounded forces).
   // With Φ = E₀ W (Φ' = f_el W + E₀ W'), ∇g = n, ∇h = −r̂: F = −[s (Φ' + damping)] n + Φ s' r̂.
-  const double cl = w.pocket_clearance;
+  const double cl = w.pocket_clearance, rho = std::sqrt(rho2);
   const Step ws = smooth_step(g, cl, 2.0 * cl);
   const double wg = 1.0 - ws.s, dwg = -ws.ds, ddwg = -ws.dds;
   if (!(wg > 0.0)) return c;
@@ -526,7 +533,12 @@ Band band_at(const Sprocket& w, const Capture& cap, double qx, double qy, double
              int hk) {
   const double mouth = w.pitch_radius + 0.5 * w.pocket_clearance, band = 0.5 * w.pocket_clearance;
   const double rho = std::hypot(qx, qy);
-  if (!(rho <= mouth && rho > mouth - band)) return {};
+  // within the mouth as the point's contact takes it (its ρ² about the wheel's centre, end_of's):
+  // with ρ's own rounding a point on the mouth that the contact puts beyond it (E = 0) took
+  // Ẽ = −J, J off its neighbours (up to 37 J 9.8c off the vertex). ρ, within rounding of the
+  // contact's, first decides the points 1e-9 c or more beyond the mouth (most of the calls)
+  if (!(rho > mouth - band && rho <= mouth + 1e-9 * w.pocket_clearance)) return {};
+  if (!within_mouth(w, where(w, qx + w.centre_x, qy + w.centre_y))) return {};
   int hold = hk;
   if (w.pocket_release) {
     const End at = end_of(w, qx, qy, angle, k, k);
@@ -647,7 +659,14 @@ double jump_on(const Sprocket& w, const Capture& cap, const Path& p, int k, int 
     const double m = 0.5 * (a + b);
     (outer(m) == at ? a : b) = m;
   }
-  const double ta = std::max(0.0, a - span), tb = std::min(1.0, b + span), m = 0.5 * (a + b);
+  double ta = std::max(0.0, a - span), tb = std::min(1.0, b + span);
+  // a path meeting the surface at a grazing angle stays within its rounding a span beyond the
+  // bracket (a chord of 0.2c from a point on the mouth: 1e-13 m along it, 1e-17 m across), where
+  // both points took the outer side's E and the jump read 0 (37 J on the release's mouth): each
+  // point is taken farther out until its side is its own (at worst the end, whose side is)
+  for (double d = 2.0 * span; outer(tb) == at && tb < 1.0; d *= 2.0) tb = std::min(1.0, b + d);
+  for (double d = 2.0 * span; outer(ta) != at && ta > 0.0; d *= 2.0) ta = std::max(0.0, a - d);
+  const double m = 0.5 * (a + b);
   const Slope ea = slope_along(w, cap, p, ta, k, hk), eb = slope_along(w, cap, p, tb, k, hk);
   return eb.e - eb.de * (tb - m) - ea.e - ea.de * (m - ta);
 }
@@ -665,9 +684,11 @@ struct Jumps {
 // where the ends lie on its opposite sides, bracketed to 1e-9 c of the path (crossed an odd
 // number of times, of which bisection finds one). `dist` the θ point's |q − C_k| if known (else <
 // 0): |q − C_k| moves by at most |Δq| + R |Δψ| over the path, so the capture is sought only where
-// that reaches `from` from it.
-Jumps crossed_jump(const Sprocket& w, const Capture& cap, const Path& p, int k, int hk,
-                   double dist) {
+// that reaches `from` from it. Inlined: out of line it cost pocket_step_contact 0.39 % more
+// instructions on the keyed example, 0.15 % of the run's (docs/performance.md, "The pocket
+// mouth's side at rounding").
+[[gnu::always_inline]] inline Jumps crossed_jump(const Sprocket& w, const Capture& cap,
+                                                 const Path& p, int k, int hk, double dist) {
   const double r = w.pitch_radius;
   const double len = std::hypot(p.dx, p.dy) + r * std::abs(p.dpsi);  // ≥ the points' |dz/dt|
   const double span = 1e-9 * w.pocket_clearance / len;
@@ -682,13 +703,18 @@ Jumps crossed_jump(const Sprocket& w, const Capture& cap, const Path& p, int k, 
     return std::hypot(s * (p.q0x + t * p.dx) - r * std::cos(a),
                       s * (p.q0y + t * p.dy) - r * std::sin(a)) > from;
   };
+  // whether it lies beyond the mouth as its energy takes it (the ends' contacts and band_at:
+  // where() and within_mouth(); by ρ's own rounding a step from a point on the mouth took a 37 J
+  // jump on the release's mouth for none)
+  auto outside = [&](double t) {
+    return !within_mouth(w, where(w, p.q0x + t * p.dx + w.centre_x, p.q0y + t * p.dy + w.centre_y));
+  };
   const double reach = std::max(p.theta, 1.0 - p.theta) * len + 1e-9 * w.pocket_clearance;
   if (w.pocket_body && (dist < 0.0 || std::abs(dist - from) <= reach))
     sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) { return beyond(t, false); }));
   // the release's mouth for a joint not held: free beyond it, held within it (band_at), so Ẽ_k
   // jumps there by E_k's inner side's
-  if (w.pocket_release && hk == kNoPocket)
-    sum.add(jump_on(w, cap, p, k, hk, span, [&](double t) { return radius(t) > mouth; }));
+  if (w.pocket_release && hk == kNoPocket) sum.add(jump_on(w, cap, p, k, hk, span, outside));
   // and the capture's shadow in the mouth's band: J jumps where the point's ray meets the mouth
   // at `from` (a jump of Ẽ only within the band; its ends' sides decide, as above), sought only
   // where the path's |q| range, [its distance from O, the ends' larger], meets the band (R, M]
