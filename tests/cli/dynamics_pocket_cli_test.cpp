@@ -446,10 +446,11 @@ TEST(DynamicsPocketCli, FieldsThatDoNotFitAPocketWheelAreNamedAtOnce) {
                  "(no Hertz default)", "dynamics.links", "2z + 4m with m >= 1"});
   const CliRun teeth = bad("teeth.toml", {{"teeth = 8", "teeth = 7"}});
   named(teeth, {"dynamics.sprocket[0].teeth", "an even integer in [4, 150]"});
-  // z = 4 with a thick wire: δ1 above 60 deg, the pocket cannot hold the crank
+  // z = 4 with a thick wire: δ1 above 60 deg, the pocket cannot hold the crank (25 mm: a wire
+  // the link can hold, 2d ≤ t, with δ1 = 63.4 deg; 20 mm gives 59.8 deg)
   const CliRun wide = bad("wide.toml", {{"teeth = 8", "teeth = 4"},
                                         {"teeth = 8", "teeth = 4"},
-                                        {"wire_diameter", "wire_diameter = \"60 mm\""},
+                                        {"wire_diameter", "wire_diameter = \"25 mm\""},
                                         {"links", "links = 12"}});
   named(wide, {"dynamics.sprocket[0].teeth", "pocket angle delta1 < 60 deg"});
   // a wire of half the pitch: the link's inner length cannot hold its two neighbours' wires (its

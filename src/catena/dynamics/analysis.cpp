@@ -1824,7 +1824,7 @@ Setup parse(const analysis::Inputs& in) {
   }
   // the pocket wheel's geometry (seed 003 eqs. (6)-(7)) once t, d and z are valid; delta1 below
   // 60 deg for the pocket's mouth to hold the crank (docs/models/dynamics.md, "Pocket wheel")
-  if (s.pocket && s.teeth && s.pitch > 0.0 && s.wire > 0.0 && s.wire < s.pitch) {
+  if (s.pocket && s.teeth && s.pitch > 0.0 && s.wire > 0.0 && s.wire <= 0.5 * s.pitch) {
     const pocketwheel::WheelGeometry g =
         pocketwheel::wheel_geometry({.pitch = s.pitch, .wire = s.wire, .teeth = s.teeth});
     s.pocket_radius = g.pitch_radius;
