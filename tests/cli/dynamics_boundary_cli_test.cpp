@@ -639,14 +639,15 @@ TEST(DynamicsBoundaryCli, AnErrorDiagnosticIsNamedOnStderrWithTheOutputWritten) 
 // hold the start's rollers in its contact no deeper than its surface. The inside ring of 43.8 mm
 // round sprocket[1] from -170 to 170 deg crosses the spans leaving that wheel (they pass its
 // surface at ±122.84 deg): refused on dynamics.guide[0] naming the span, how far past the surface
-// and the part of the ring clear of them, which typed back is accepted (it clears the check only:
-// at its ends the spans lie a roller radius into the ring's surface, on the edge of the rule, which
-// need not run), and the part of it clear of its contact, which typed back runs; the same ring from
-// -60 to 60 deg and a flat convex arc carrying the upper run are accepted and run. At the rule's
-// edge: a straight rail and the flat arc with their surface 0.02 mm below the upper run's roller
-// centres (6.015 mm into the rollers) are accepted, 0.02 mm above it refused, naming the move that
-// clears, which typed back is accepted, and the move to touching the rollers (6.055 mm), which
-// typed back runs.
+// and the part of the ring clear of them, which typed back passes this check (at its ends the
+// spans lie a roller radius into the ring's surface, on the edge of the rule) but is refused at
+// its square entry end ("the square ends"), and the part of it clear of its contact, which typed
+// back runs; the same ring from -60 to 60 deg and a flat convex arc carrying the upper run (with
+// lead-ins: its entry end is 0.07275 mm into the run) are accepted and run. At the rule's edge: a
+// straight rail and the flat arc with their surface 0.02 mm below the upper run's roller centres
+// (6.015 mm into the rollers) pass this check but are refused at their square entry ends, 0.02 mm
+// above it refused, naming the move that clears this check (typed back: refused at the square end
+// alone), and the move to touching the rollers (6.055 mm), which typed back runs.
 TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_rail_path";
@@ -685,8 +686,13 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
   bt << to;
   const CliRun typed =
       run("dynamics " + write("ring_part.toml", ring(at.str(), bt.str())) + " --format json");
-  EXPECT_EQ(typed.status, 0) << typed.err;
-  EXPECT_EQ(typed.err.find("dynamics.guide[0]"), std::string::npos) << typed.err;
+  // it passes this check, but its square entry end then holds the spans a roller radius deep
+  // ("the square ends")
+  EXPECT_EQ(typed.status, 2) << typed.err;
+  EXPECT_EQ(typed.err.find(" past its surface"), std::string::npos) << typed.err;
+  EXPECT_NE(typed.err.find("dynamics.guide[0] (line 19) = its square end at start_angle"),
+            std::string::npos)
+      << typed.err;
   // the part clear of its contact: inside the one that clears the check, and it runs its 2 ms
   const std::string touch = "at most touching the rollers): start_angle >= ";
   const std::size_t at_touch = cut.err.find(touch);
@@ -703,11 +709,13 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
   EXPECT_EQ(clear.status, 0) << clear.err;
   EXPECT_EQ(clear.out.find("dynamics.not_converged"), std::string::npos) << clear.err;
 
-  // lying on the chain: accepted and run
+  // lying on the chain: accepted and run (the flat arc, its entry end 0.07275 mm into the upper
+  // run, with lead-ins: "the square ends")
   const std::string flat =
       "[[dynamics.guide]]\nkind = \"arc\"\ncentre_x = \"95.25 mm\"\ncentre_y = \"-4968.8 mm\"\n"
       "radius = \"5 m\"\nstart_angle = \"89.3124 deg\"\nend_angle = \"90.6876 deg\"\n";
-  for (const std::string& text : {ring("-60", "60"), flat}) {
+  const std::string flat_led = flat + "lead_in_radius = \"20 mm\"\nlead_in_angle = \"30 deg\"\n";
+  for (const std::string& text : {ring("-60", "60"), flat_led}) {
     const CliRun ok = run("dynamics " + write("on_chain.toml", text) + " --format json");
     ASSERT_EQ(ok.status, 0) << text << ok.err;
     EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos) << text;
@@ -729,8 +737,13 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
         "\"\nradius = \"5 m\"\nstart_angle = \"89.3124 deg\"\nend_angle = \"90.6876 deg\"\n";
     for (const std::string& text : {rail, arc}) {
       const CliRun r = run("dynamics " + write("edge.toml", text) + " --duration \"0.1 ms\"");
+      // below the edge the check passes, but the square entry end holds the run 6.015 mm deep:
+      // refused by that rule alone ("the square ends")
+      const std::string square = "dynamics.guide[0] (line 19) = its square end at ";
       if (off < 0.0) {
-        EXPECT_EQ(r.status, 0) << text << r.err;
+        EXPECT_EQ(r.status, 2) << text << r.err;
+        EXPECT_EQ(r.err.find(" past its surface"), std::string::npos) << text << r.err;
+        EXPECT_NE(r.err.find(square), std::string::npos) << text << r.err;
         continue;
       }
       EXPECT_EQ(r.status, 2) << text << r.err;
@@ -740,7 +753,7 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
       const double past = named_after(r.err, named);  // [mm] past the surface
       EXPECT_GT(past, 0.0199) << r.err;
       EXPECT_LT(past, 0.0201) << r.err;
-      // the move named, typed back: accepted
+      // the move named, typed back: not cut
       const bool straight = text == rail;
       const double moved = named_after(r.err, straight ? "the rail moved " : "radius <= ");
       // the case with the rail moved as named (a straight rail by `given` mm down, an arc to the
@@ -764,7 +777,10 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
       const std::string fixed = typed_back(moved);
       const CliRun ok =
           run("dynamics " + write("edge_moved.toml", fixed) + " --duration \"0.1 ms\"");
-      EXPECT_EQ(ok.status, 0) << fixed << ok.err;
+      // it clears this check (no cut named), the square entry end still refused
+      EXPECT_EQ(ok.status, 2) << fixed << ok.err;
+      EXPECT_EQ(ok.err.find(" past its surface"), std::string::npos) << fixed << ok.err;
+      EXPECT_NE(ok.err.find(square), std::string::npos) << fixed << ok.err;
       // the move to touching the rollers (the surface a roller radius above their centres, 0.02
       // mm higher than now), typed back: accepted and runs its 2 ms
       const std::string touching = "at most touching the rollers): ";
@@ -785,6 +801,54 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
       EXPECT_EQ(runs.status, 0) << lifted_text << runs.err;
       EXPECT_EQ(runs.out.find("dynamics.not_converged"), std::string::npos) << lifted_text;
     }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// A rail's square entry end against the chain's starting path (docs/models/dynamics.md, "Guides
+// against the starting path: the square ends") on the lead-in loop: a straight rail from 30 to 150
+// mm under the upper run (which runs towards -x, onto the rail at x = 150 mm), its surface set so
+// that the run lies 4 mm into its contact (of the roller radius 6.035 mm), stopped at step 43 with
+// "did not converge" before: now refused on dynamics.guide[0] naming its entry end (x1, y1), the
+// 4 mm and the remedies, and not its exit end (x0, y0). The remedies typed back run 10 ms (past the
+// old step 43) without a diagnostic: the rail with 50 mm, 30 deg lead-ins, and the rail moved away
+// from its rollers by the depth named (rounded up).
+TEST(DynamicsBoundaryCli, ARailsSquareEntryEndMayNotBePressedIntoTheStartingPath) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_square_end";
+  std::filesystem::create_directories(dir);
+  const auto write = [&](const std::string& name, const std::string& text) {
+    const std::filesystem::path file = dir / name;
+    std::ofstream(file) << kLeadInLoopHead << text;
+    return file.string();
+  };
+  // the upper run's roller centres at the pitch radius; the surface a roller radius below them
+  // less `depth`
+  const double run_height = 0.5 * 19.05 / std::sin(std::numbers::pi / 12.0);  // [mm]
+  const auto rail_at = [&](double depth, const std::string& keys) {
+    std::ostringstream height;
+    height.precision(12);
+    height << run_height - 6.035 + depth << " mm";
+    return lead_in_rail(height.str(), keys);
+  };
+  const CliRun pressed = run("dynamics " + write("pressed.toml", rail_at(4.0, "")));
+  EXPECT_EQ(pressed.status, 2) << pressed.err;
+  const std::string named = "dynamics.guide[0] (line 19) = its square end at (x1, y1) (150, ";
+  EXPECT_NE(pressed.err.find(named), std::string::npos) << pressed.err;
+  EXPECT_EQ(pressed.err.find("its square end at (x0, y0)"), std::string::npos) << pressed.err;
+  for (const char* text :
+       {"the chain's starting path crossing it 4 mm into its contact",
+        "at most its contact's ramp (0.001 mm) deep", "lead_in_end = \"end\" or \"both\"",
+        "or move the rail away from its rollers' side by 4 mm"})
+    EXPECT_NE(pressed.err.find(text), std::string::npos) << text << "\n" << pressed.err;
+  const std::string led = rail_at(4.0, "lead_in_radius = \"50 mm\"\nlead_in_angle = \"30 deg\"\n");
+  const std::string moved = rail_at(4.0 - named_after(pressed.err, "rollers' side by "), "");
+  for (const std::string& text : {led, moved}) {
+    const CliRun ok =
+        run("dynamics " + write("fixed.toml", text) + " --duration \"10 ms\" --format json");
+    EXPECT_EQ(ok.status, 0) << text << ok.err;
+    EXPECT_TRUE(ok.err.empty()) << text << ok.err;
+    EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos) << text;
   }
   std::filesystem::remove_all(dir);
 }

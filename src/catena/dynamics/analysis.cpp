@@ -1247,6 +1247,110 @@ BeltPath starting_path(const Setup& s) {
   return belt_path({{0.0, 0.0, radius}, {m * s.pitch, 0.0, radius}}, 0);
 }
 
+// A rail's end with no guide laid on from it (a lead-in's arc, a hand-laid arc or rail whose end
+// lies within the contact's ramp ε of it) is square: a roller crossing it below the rail's
+// surface takes the contact force of its whole depth at once (docs/models/dynamics.md, "Guides
+// against the starting path: the square ends"). How deep the chain's starting path crosses each
+// square end: the path, sampled an eighth of a roller radius apart (at least 512, at most 1e6
+// samples, as rail_cut samples it) as a polyline, against the end's normal from the roller line's
+// point (the surface's end plus r n, where a roller touching the end has its centre) to r behind
+// the surface (g from 0 to 2r: the contact's depth there). Each end's box lists the samples
+// near it (GuideHint over the ends' boxes: O(samples + ends + pairs)). Only where the chain
+// enters the rail: `travel` +1 when it runs along the path's direction (counter-clockwise), −1
+// against it, 0 unknown (both ways counted); a roller leaving a square end sheds its force at
+// once instead, which the conveyor example's lower rail does at its exit end 0.31 mm deep.
+struct SquareEnd {
+  std::size_t rail = 0;  // index into the rails given
+  bool at_start = true;
+  double x = 0.0, y = 0.0;  // [m] the end of the rail's surface
+  double depth = 0.0;       // [m] the deepest crossing's g (0: the path does not cross its contact)
+};
+std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide>& guides,
+                                   const std::vector<std::size_t>& rails, double travel) {
+  std::vector<SquareEnd> ends;
+  // each end's surface point, its free side's unit normal and the rail's direction into it
+  std::vector<std::array<double, 6>> at;
+  auto end_of = [](const Guide& g, bool start) {
+    if (g.kind == Guide::Kind::kStraight) {
+      const GuideFrame f = guide_frame(g);
+      const double in = start ? 1.0 : -1.0;
+      return std::array<double, 6>{
+          start ? g.x0 : g.x1, start ? g.y0 : g.y1, -f.uy, f.ux, in * f.ux, in * f.uy};
+    }
+    const double a = start ? g.start_angle : g.end_angle;
+    const double c = std::cos(a), s = std::sin(a), sgn = g.inside ? -1.0 : 1.0;
+    const double in = start ? 1.0 : -1.0;  // counter-clockwise from start_angle
+    return std::array<double, 6>{
+        g.centre_x + g.radius * c, g.centre_y + g.radius * s, sgn * c, sgn * s, -in * s, in * c};
+  };
+  for (std::size_t k = 0; k < rails.size(); ++k) {
+    const Guide& rail = guides[rails[k]];
+    for (const bool start : {true, false}) {
+      const std::array<double, 6> e = end_of(rail, start);
+      bool joined = false;
+      for (std::size_t o = 0; o < guides.size() && !joined; ++o) {
+        if (o == rails[k]) continue;
+        for (const bool os : {true, false}) {
+          const std::array<double, 6> f = end_of(guides[o], os);
+          joined = joined || std::hypot(f[0] - e[0], f[1] - e[1]) <= rail.contact_smoothing;
+        }
+      }
+      if (joined) continue;
+      ends.push_back({k, start, e[0], e[1], 0.0});
+      at.push_back(e);
+    }
+  }
+  if (ends.empty() || path.pieces.empty() || !(path.length > 0.0)) return ends;
+  double r = 0.0;
+  for (const std::size_t g : rails) r = std::max(r, guides[g].roller_radius);
+  const auto n =
+      static_cast<std::size_t>(std::clamp(std::ceil(path.length / (r / 8.0)), 512.0, 1e6));
+  std::vector<double> px(n), py(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const PathPoint p =
+        path_point(path, path.length * static_cast<double>(j) / static_cast<double>(n));
+    px[j] = p.x;
+    py[j] = p.y;
+  }
+  // the ends' segments, from g = 0 (the roller line) to g = 2r, their boxes padded by a sample's
+  // spacing (a chord crossing a segment has an end within that of it)
+  const double pad = path.length / static_cast<double>(n);
+  std::vector<GuideBounds> boxes(ends.size());
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    const double rr = guides[rails[ends[k].rail]].roller_radius;
+    const auto& e = at[k];
+    const double ax = e[0] + rr * e[2], ay = e[1] + rr * e[3];
+    const double bx = e[0] - rr * e[2], by = e[1] - rr * e[3];
+    boxes[k] = {std::min(ax, bx) - pad, std::max(ax, bx) + pad, std::min(ay, by) - pad,
+                std::max(ay, by) + pad};
+  }
+  GuideHint hint(0.0);
+  hint.update(std::span<const GuideBounds>(boxes), px, py);
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    const double rr = guides[rails[ends[k].rail]].roller_radius;
+    const auto& e = at[k];
+    // the segment A + t (B − A), t in [0, 1]: A the roller line's point (g = 0), B 2r along −n
+    const double ax = e[0] + rr * e[2], ay = e[1] + rr * e[3];
+    const double dx = -2.0 * rr * e[2], dy = -2.0 * rr * e[3];
+    for (const std::uint32_t j : hint.nodes(k)) {
+      for (const std::size_t i : {(j + n - 1) % n, static_cast<std::size_t>(j)}) {
+        const std::size_t i1 = (i + 1) % n;
+        const double cx = px[i1] - px[i], cy = py[i1] - py[i];
+        const double den = cx * dy - cy * dx;
+        if (den == 0.0) continue;  // parallel: it meets the normal at no single depth
+        // A + t d = P_i + u c
+        const double qx = px[i] - ax, qy = py[i] - ay;
+        const double t = (qy * cx - qx * cy) / den;
+        const double u = (qy * dx - qx * dy) / den;
+        if (t < 0.0 || t > 1.0 || u < 0.0 || u > 1.0) continue;
+        if (travel * (cx * e[4] + cy * e[5]) < 0.0) continue;  // leaving the rail there
+        ends[k].depth = std::max(ends[k].depth, 2.0 * rr * t);
+      }
+    }
+  }
+  return ends;
+}
+
 Setup parse(const analysis::Inputs& in) {
   const InputValue& file = in.at("dynamics");
   std::vector<Issue> issues;
@@ -2388,6 +2492,49 @@ Setup parse(const analysis::Inputs& in) {
          "surface, at most the roller radius (" +
              mm(r) + ") into it (here " + cut.piece + " at (" + format_g(cut.x * 1e3, 4) + ", " +
              format_g(cut.y * 1e3, 4) + ") mm, " + mm(cut.depth) + " in): " + remedy});
+  }
+  // a rail's square end may hold the starting path no deeper than its contact's ramp ε: a roller
+  // crossing it deeper takes that depth's force at once, and Newton's step fails at the first
+  // roller to enter, whatever the step (docs/models/dynamics.md, "Guides against the starting
+  // path: the square ends"); refused naming the end, the depth and what clears it
+  if (rail_work <= kMaxRailCutWork && !given_rails.empty() && !chain_path.pieces.empty()) {
+    std::vector<std::size_t> rails;
+    for (const auto& given : given_rails) rails.push_back(given.second);
+    // the chain runs counter-clockwise round the path when the driver turns so (on the back of
+    // the chain, clockwise); a driver at rest or not read: both ways
+    double travel = 0.0;
+    auto turning = [](double w, bool back) {
+      return std::isfinite(w) && w != 0.0 ? (w > 0.0) == !back ? 1.0 : -1.0 : 0.0;
+    };
+    if (!s.layout()) travel = turning(s.speed, false);
+    for (const LayoutWheel& w : s.wheels)
+      if (w.role == "driver") travel = turning(w.speed, w.back);
+    for (const SquareEnd& end : square_ends(chain_path, s.guides, rails, travel)) {
+      const Guide& rail = s.guides[rails[end.rail]];
+      if (!(end.depth > rail.contact_smoothing)) continue;
+      const bool arc = rail.kind == Guide::Kind::kArc;
+      auto mm = [](double v) { return format_g(v * 1e3, 4) + " mm"; };
+      const std::string which = arc ? std::string(end.at_start ? "start_angle" : "end_angle")
+                                    : std::string(end.at_start ? "(x0, y0)" : "(x1, y1)");
+      issues.push_back(
+          {given_rails[end.rail].first,
+           "its square end at " + which + " (" + format_g(end.x * 1e3, 4) + ", " +
+               format_g(end.y * 1e3, 4) + ") mm, where the chain runs onto it, the chain's " +
+               "starting path crossing it " + mm(end.depth) + " into its contact",
+           "an entry end without a lead-in the starting path crosses at most its contact's ramp (" +
+               mm(rail.contact_smoothing) +
+               ") deep: a roller crossing it deeper is struck by that depth's force at once" +
+               (rail.line_law
+                    ? std::string()
+                    : " (here " + format_g(rail.contact_stiffness * end.depth, 3) + " N)") +
+               ", on which a step need not converge however small; give it a lead-in "
+               "(lead_in_radius, "
+               "lead_in_end = \"" +
+               (end.at_start ? "start" : "end") + "\" or \"both\"), or move " +
+               (arc ? std::string(rail.inside ? "its radius up by " : "its radius down by ")
+                    : std::string("the rail away from its rollers' side by ")) +
+               mm(up_to(end.depth, 4))});
+    }
   }
   // the check's work bounded (docs/models/dynamics.md, "Lead-ins"): the distances it may measure,
   // each arc's check repeated by the bisections, at most kMaxLeadInWork
