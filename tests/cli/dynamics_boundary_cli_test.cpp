@@ -853,6 +853,40 @@ TEST(DynamicsBoundaryCli, ARailsSquareEntryEndMayNotBePressedIntoTheStartingPath
   std::filesystem::remove_all(dir);
 }
 
+// Two rails whose lifts of the start disagree (docs/models/dynamics.md, "Guides against the
+// starting path: several rails") on the lead-in loop: guide[0] under the upper run from 30 to 150
+// mm, 3 mm into it, with 50 mm, 30 deg lead-ins; guide[1], facing up too, 9.5 mm above guide[0]'s
+// surface from 60 to 120 mm: the run lies 12.5 mm behind its surface, out of its contact (its
+// checks pass), until guide[0]'s lift sets the rollers 9.5 mm into it, past its surface. Accepted
+// before, the chain pulled up through guide[1]; now refused naming both rails, the 3 nodes and the
+// depth.
+TEST(DynamicsBoundaryCli, ARollerLiftedOntoOneRailMayNotLandBehindAnother) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_two_rails";
+  std::filesystem::create_directories(dir);
+  const double run_height = 0.5 * 19.05 / std::sin(std::numbers::pi / 12.0);  // [mm]
+  std::ostringstream low, high;
+  low.precision(12);
+  high.precision(12);
+  low << run_height - 6.035 + 3.0 << " mm";
+  high << run_height - 6.035 + 12.5 << " mm";
+  const std::string upper = "[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"60 mm\"\ny0 = \"" +
+                            high.str() + "\"\nx1 = \"120 mm\"\ny1 = \"" + high.str() + "\"\n";
+  const std::filesystem::path file = dir / "two.toml";
+  std::ofstream(file) << kLeadInLoopHead
+                      << lead_in_rail(low.str(),
+                                      "lead_in_radius = \"50 mm\"\nlead_in_angle = \"30 deg\"\n")
+                      << upper;
+  const CliRun r = run("dynamics " + file.string() + " --duration \"0.1 ms\"");
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("dynamics.guide = 3 nodes of the chain's start lifted onto guide[0] then "
+                       "lay behind the surface of guide[1] (node "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find(" 9.5 mm deep in it"), std::string::npos) << r.err;
+}
+
 // The check of the rails against the starting path bounded (docs/models/dynamics.md, "The
 // check's work"): the lead-in loop with 10000 links (its path 190 m) and straight rails from 30 mm
 // to 95 m along the upper run, 0.02 mm above its roller centres (each cut), each visiting some

@@ -22,6 +22,7 @@
 #include <optional>
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 #include "catena/contact/chain_catalog.hpp"
 #include "catena/contact/roller_tooth.hpp"
@@ -2986,8 +2987,42 @@ Result run(const analysis::Inputs& in) {
   // A roller that starts inside a rail is moved out along the rail's normal to touch it (the
   // spans start straight at the wheels' pitch-line height; a guide may sit a little higher): the
   // guides in order, each node against the guides near it, O(N + G + pairs)
-  lift_onto_guides(model.guides, std::span<double>(s.x.data(), n),
-                   std::span<double>(s.y.data(), n));
+  const std::vector<LiftConflict> conflicts = lift_onto_guides(
+      model.guides, std::span<double>(s.x.data(), n), std::span<double>(s.y.data(), n));
+  // two rails whose lifts disagree (docs/models/dynamics.md, "Guides against the starting path:
+  // several rails"): one issue per pair and kind, its nodes counted, the deepest named
+  std::vector<Issue> lift_issues;
+  {
+    std::map<std::tuple<std::size_t, std::size_t, bool>, std::pair<std::size_t, LiftConflict>>
+        pairs;
+    for (const LiftConflict& c : conflicts) {
+      auto [it, fresh] = pairs.try_emplace({c.first, c.second, c.through}, 0, c);
+      ++it->second.first;
+      if (!fresh && c.depth > it->second.second.depth) it->second.second = c;
+    }
+    auto name = [&](std::size_t g) {
+      return g < d.guide_names.size() ? d.guide_names[g] : "guide[" + std::to_string(g) + "]";
+    };
+    for (const auto& [key, found] : pairs) {
+      const LiftConflict& c = found.second;
+      const std::string nodes =
+          std::to_string(found.first) + (found.first == 1 ? " node" : " nodes");
+      lift_issues.push_back(
+          {"dynamics.guide",
+           nodes + " of the chain's start lifted onto " + name(c.first) +
+               (c.through ? " then lay behind the surface of "
+                          : " are left inside the contact of ") +
+               name(c.second) + " (node " + std::to_string(c.node) + " " +
+               format_g(c.depth * 1e3, 4) + " mm deep in it, of the roller radius " +
+               format_g(model.guides[c.second].roller_radius * 1e3, 4) + " mm)",
+           std::string("guides whose lifts of the starting path agree: a roller one lifts ") +
+               (c.through ? "may not land past another's surface (it would be pulled through it)"
+                          : "may not be left in another's contact") +
+               "; move one of the two so that the rollers the first lifts lie on the free side of "
+               "the second or clear of it"});
+    }
+  }
+  throw_if_any(lift_issues);
   throw_if_any(validate(model, s));
 
   Integrator integ(model, {.step = d.step, .theta = d.theta});
