@@ -1257,9 +1257,12 @@ BeltPath starting_path(const Setup& s) {
 // point (the surface's end plus r n, where a roller touching the end has its centre) to r behind
 // the surface (g from 0 to 2r: the contact's depth there). Each end's box lists the samples
 // near it (GuideHint over the ends' boxes: O(samples + ends + pairs)). Only where the chain
-// enters the rail: `travel` +1 when it runs along the path's direction (counter-clockwise), −1
-// against it, 0 unknown (both ways counted); a roller leaving a square end sheds its force at
-// once instead, which the conveyor example's lower rail does at its exit end 0.31 mm deep.
+// enters the rail: it runs along the path's direction (counter-clockwise) whichever side its
+// driver is on (a driver's speed is positive; one on the chain's back turns clockwise, driving
+// the loop counter-clockwise); a roller leaving a square end sheds its force at once instead,
+// which the conveyor example's lower rail does at its exit end 0.31 mm deep. An end within ε of
+// another guide's end, or of the rail's own other end (a full ring has no ends), is joined:
+// every guide's two ends found once and matched in x order, O(G log G + matches).
 struct SquareEnd {
   std::size_t rail = 0;  // index into the rails given
   bool at_start = true;
@@ -1267,7 +1270,7 @@ struct SquareEnd {
   double depth = 0.0;       // [m] the deepest crossing's g (0: the path does not cross its contact)
 };
 std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide>& guides,
-                                   const std::vector<std::size_t>& rails, double travel) {
+                                   const std::vector<std::size_t>& rails) {
   std::vector<SquareEnd> ends;
   // each end's surface point, its free side's unit normal and the rail's direction into it
   std::vector<std::array<double, 6>> at;
@@ -1284,18 +1287,28 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
     return std::array<double, 6>{
         g.centre_x + g.radius * c, g.centre_y + g.radius * s, sgn * c, sgn * s, -in * s, in * c};
   };
+  // every guide's two ends once (2 g its start, 2 g + 1 its end), in x order
+  std::vector<std::array<double, 6>> all(2 * guides.size());
+  for (std::size_t g = 0; g < guides.size(); ++g) {
+    all[2 * g] = end_of(guides[g], true);
+    all[2 * g + 1] = end_of(guides[g], false);
+  }
+  std::vector<std::size_t> by_x;  // the finite ones (a strict order)
+  for (std::size_t j = 0; j < all.size(); ++j)
+    if (std::isfinite(all[j][0]) && std::isfinite(all[j][1])) by_x.push_back(j);
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) {
+    return all[a][0] < all[b][0] || (all[a][0] == all[b][0] && a < b);
+  });
   for (std::size_t k = 0; k < rails.size(); ++k) {
-    const Guide& rail = guides[rails[k]];
+    const double eps = guides[rails[k]].contact_smoothing;
     for (const bool start : {true, false}) {
-      const std::array<double, 6> e = end_of(rail, start);
+      const std::size_t self = 2 * rails[k] + (start ? 0 : 1);
+      const std::array<double, 6>& e = all[self];
       bool joined = false;
-      for (std::size_t o = 0; o < guides.size() && !joined; ++o) {
-        if (o == rails[k]) continue;
-        for (const bool os : {true, false}) {
-          const std::array<double, 6> f = end_of(guides[o], os);
-          joined = joined || std::hypot(f[0] - e[0], f[1] - e[1]) <= rail.contact_smoothing;
-        }
-      }
+      auto o = std::lower_bound(by_x.begin(), by_x.end(), e[0] - eps,
+                                [&](std::size_t j, double x) { return all[j][0] < x; });
+      for (; o != by_x.end() && all[*o][0] <= e[0] + eps && !joined; ++o)
+        joined = *o != self && std::hypot(all[*o][0] - e[0], all[*o][1] - e[1]) <= eps;
       if (joined) continue;
       ends.push_back({k, start, e[0], e[1], 0.0});
       at.push_back(e);
@@ -1344,7 +1357,7 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
         const double t = (qy * cx - qx * cy) / den;
         const double u = (qy * dx - qx * dy) / den;
         if (t < 0.0 || t > 1.0 || u < 0.0 || u > 1.0) continue;
-        if (travel * (cx * e[4] + cy * e[5]) < 0.0) continue;  // leaving the rail there
+        if (cx * e[4] + cy * e[5] < 0.0) continue;  // leaving the rail there
         ends[k].depth = std::max(ends[k].depth, 2.0 * rr * t);
       }
     }
@@ -2483,7 +2496,8 @@ Setup parse(const analysis::Inputs& in) {
         passes.empty() ? "no part of it nor a move within a roller's diameter clears it"
                        : passes +
                              " clears this check only (the rollers may still lie up to the roller "
-                             "radius into its surface, which need not run)";
+                             "radius into its surface, which need not run, and is refused at an "
+                             "entry end without a lead-in: give that end one)";
     if (!touches.empty())
       remedy += "; clear of its contact (its surface at most touching the rollers): " + touches;
     issues.push_back(
@@ -2495,22 +2509,14 @@ Setup parse(const analysis::Inputs& in) {
              format_g(cut.y * 1e3, 4) + ") mm, " + mm(cut.depth) + " in): " + remedy});
   }
   // a rail's square end may hold the starting path no deeper than its contact's ramp ε: a roller
-  // crossing it deeper takes that depth's force at once, and Newton's step fails at the first
-  // roller to enter, whatever the step (docs/models/dynamics.md, "Guides against the starting
-  // path: the square ends"); refused naming the end, the depth and what clears it
+  // crossing it deeper takes that depth's force at once (docs/models/dynamics.md, "Guides against
+  // the starting path: the square ends"). This catches the start's worst case only: a bare entry
+  // end near the path may stop a step at a roller's entry at any depth, so the message names the
+  // lead-in, the one remedy that runs, not a move
   if (rail_work <= kMaxRailCutWork && !given_rails.empty() && !chain_path.pieces.empty()) {
     std::vector<std::size_t> rails;
     for (const auto& given : given_rails) rails.push_back(given.second);
-    // the chain runs counter-clockwise round the path when the driver turns so (on the back of
-    // the chain, clockwise); a driver at rest or not read: both ways
-    double travel = 0.0;
-    auto turning = [](double w, bool back) {
-      return std::isfinite(w) && w != 0.0 ? (w > 0.0) == !back ? 1.0 : -1.0 : 0.0;
-    };
-    if (!s.layout()) travel = turning(s.speed, false);
-    for (const LayoutWheel& w : s.wheels)
-      if (w.role == "driver") travel = turning(w.speed, w.back);
-    for (const SquareEnd& end : square_ends(chain_path, s.guides, rails, travel)) {
+    for (const SquareEnd& end : square_ends(chain_path, s.guides, rails)) {
       const Guide& rail = s.guides[rails[end.rail]];
       if (!(end.depth > rail.contact_smoothing)) continue;
       const bool arc = rail.kind == Guide::Kind::kArc;
@@ -2529,12 +2535,11 @@ Setup parse(const analysis::Inputs& in) {
                     ? std::string()
                     : " (here " + format_g(rail.contact_stiffness * end.depth, 3) + " N)") +
                ", on which a step need not converge however small; give it a lead-in "
-               "(lead_in_radius, "
-               "lead_in_end = \"" +
-               (end.at_start ? "start" : "end") + "\" or \"both\"), or move " +
-               (arc ? std::string(rail.inside ? "its radius up by " : "its radius down by ")
-                    : std::string("the rail away from its rollers' side by ")) +
-               mm(up_to(end.depth, 4))});
+               "(lead_in_radius, lead_in_end = \"" +
+               (end.at_start ? "start" : "end") +
+               "\" or \"both\"), the only remedy: a bare entry end near the chain's path may "
+               "stop the run at a roller's entry whatever its depth, clear of the rollers or "
+               "pressed in"});
     }
   }
   // the check's work bounded (docs/models/dynamics.md, "Lead-ins"): the distances it may measure,
