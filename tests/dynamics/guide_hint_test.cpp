@@ -325,6 +325,37 @@ TEST(DynamicsGuideHint, LiftNamesANodePulledThroughOrLeftInsideAnotherRail) {
   }
 }
 
+// The conflict's kind from its depth, not from the rails' order: the stacked rails of the test
+// above given the other way round (B first). A lifts the node 9.5 mm into B, past its surface
+// (more than the roller radius), and B, earlier in the order, no longer moves it: named as behind
+// B's surface (pulled through it), as when B comes after A, not as left inside B's contact.
+TEST(DynamicsGuideHint, LiftNamesTheConflictsKindByDepthWhateverTheOrder) {
+  const double r = 0.006035;
+  const auto rail = [&](double x0, double y0, double x1, double y1) {
+    Guide g;
+    g.kind = Guide::Kind::kStraight;
+    g.x0 = x0;
+    g.y0 = y0;
+    g.x1 = x1;
+    g.y1 = y1;
+    g.roller_radius = r;
+    return g;
+  };
+  const std::vector<Guide> swapped{rail(0.02, 0.0095, 0.08, 0.0095), rail(0.0, 0.0, 0.1, 0.0)};
+  std::vector<double> x{0.05}, y{r - 0.003};
+  std::vector<double> ex = x, ey = y;
+  lift_every_pair(swapped, ex, ey);
+  const std::vector<LiftConflict> found = lift_onto_guides(swapped, x, y);
+  EXPECT_TRUE(same_bits(x, ex) && same_bits(y, ey));
+  ASSERT_EQ(found.size(), 1U);
+  EXPECT_EQ(found[0].node, 0U);
+  EXPECT_EQ(found[0].first, 1U);
+  EXPECT_EQ(found[0].second, 0U);
+  EXPECT_TRUE(found[0].through);
+  EXPECT_NEAR(found[0].depth, 0.0095, 1e-12);
+  EXPECT_NEAR(y[0], r, 1e-12);  // on A's surface, behind B's
+}
+
 // The many-guide conveyor's start, its spans laid a third of a roller radius into the rails, and
 // energy() at it and after lifting: the rails' elastic energy is the every-pair sum (summed in the
 // same order, then the links', as energy() sums them), bit for bit.

@@ -81,9 +81,10 @@ class GuideHint {
 
 /// Where the lift of a node by one guide disagrees with another (docs/models/dynamics.md, "Guides
 /// against the starting path: several rails"): the node `node`, moved last by guide `first`, either
-/// then pulled through guide `second` from behind its surface (`through`: it lay `depth` past the
+/// then pulled through a later guide `second` from behind its surface (it lay `depth` into the
 /// second's contact, more than a roller radius, when the second lifted it) or left `depth` inside
-/// an earlier guide `second`'s contact (deeper than its ramp ε) by the moves after it.
+/// an earlier guide `second`'s contact (deeper than its ramp ε) by the moves after it. `through`
+/// when `depth` is more than the second's roller radius (behind its surface, whatever the order).
 struct LiftConflict {
   std::size_t node = 0, first = 0, second = 0;
   bool through = false;

@@ -3015,8 +3015,9 @@ Result run(const analysis::Inputs& in) {
       lift_issues.push_back(
           {"dynamics.guide",
            nodes + " of the chain's start lifted onto " + name(c.first) +
-               (c.through ? " then lay behind the surface of "
-                          : " are left inside the contact of ") +
+               (c.through          ? " then lay behind the surface of "
+                : found.first == 1 ? " is left inside the contact of "
+                                   : " are left inside the contact of ") +
                name(c.second) + " (node " + std::to_string(c.node) + " " +
                format_g(c.depth * 1e3, 4) + " mm deep in it, of the roller radius " +
                format_g(model.guides[c.second].roller_radius * 1e3, 4) + " mm)",
@@ -3027,8 +3028,9 @@ Result run(const analysis::Inputs& in) {
                "the second or clear of it"});
     }
   }
+  // reported with the start's other problems, one list
+  for (Issue& issue : validate(model, s)) lift_issues.push_back(std::move(issue));
   throw_if_any(lift_issues);
-  throw_if_any(validate(model, s));
 
   Integrator integ(model, {.step = d.step, .theta = d.theta});
   std::vector<double> tension(model.links());

@@ -225,13 +225,15 @@ std::vector<LiftConflict> lift_onto_guides(std::span<const Guide> guides, std::s
       }
     }
     if (!lifted) continue;
-    // an earlier guide the later moves left it inside (beyond the contact's ramp)
+    // an earlier guide the later moves left it inside (beyond the contact's ramp): behind its
+    // surface (deeper than a roller radius, pulled through it) or in front of it, by depth
+    // whatever the guides' order
     hint.guides_near(x[i], y[i], near);
     for (const std::uint32_t g : near) {
       if (g >= last) break;
       const GuideContact c = guide_contact(guides[g], x[i], y[i], 0.0, 0.0);
       if (c.active && c.penetration > guides[g].contact_smoothing)
-        conflicts.push_back({i, last, g, false, c.penetration});
+        conflicts.push_back({i, last, g, c.penetration > guides[g].roller_radius, c.penetration});
     }
   }
   return conflicts;
