@@ -643,11 +643,12 @@ TEST(DynamicsBoundaryCli, AnErrorDiagnosticIsNamedOnStderrWithTheOutputWritten) 
 // spans lie a roller radius into the ring's surface, on the edge of the rule) but is refused at
 // its square entry end ("the square ends"; the message says so), and the part of it clear of its
 // contact, which typed back runs; the same ring from -60 to 60 deg and a flat convex arc carrying
-// the upper run (with lead-ins: its entry end is 0.07275 mm into the run) are accepted and run. At
-// the rule's edge: a straight rail and the flat arc with their surface 0.02 mm below the upper
-// run's roller centres (6.015 mm into the rollers) pass this check but are refused at their square
-// entry ends, 0.02 mm above it refused, naming the move that clears this check (typed back: refused
-// at the square end alone), and the move to touching the rollers (6.055 mm), which typed back runs.
+// the upper run (with lead-ins: bare, refused at its entry end 0.07275 mm into the run) are
+// accepted and run. At the rule's edge: a straight rail and the flat arc with their surface 0.02 mm
+// below the upper run's roller centres (6.015 mm into the rollers) pass this check but are refused
+// at their square entry ends, 0.02 mm above it refused, naming the move that clears this check
+// (typed back: refused at the square end alone), and the move to touching the rollers (6.055 mm),
+// which typed back runs.
 TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_rail_path";
@@ -721,6 +722,15 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
     ASSERT_EQ(ok.status, 0) << text << ok.err;
     EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos) << text;
   }
+  // the bare flat arc: refused at its entry end (start_angle: the upper run moves towards -x),
+  // 0.07275 mm into its contact
+  const CliRun bare = run("dynamics " + write("bare_flat.toml", flat) + " --format json");
+  EXPECT_EQ(bare.status, 2) << bare.err;
+  EXPECT_NE(bare.err.find("its square end at start_angle (155.3, 30.84) mm"), std::string::npos)
+      << bare.err;
+  EXPECT_NE(bare.err.find("crossing it 0.07275 mm into its contact"), std::string::npos)
+      << bare.err;
+  EXPECT_EQ(bare.err.find("its square end at end_angle"), std::string::npos) << bare.err;
 
   // the rule's edge: the upper run's roller centres at the pitch radius, 36.8017 mm; a straight
   // rail's surface and the flat arc's top (centre_y + 5 m) 0.02 mm below or above them
