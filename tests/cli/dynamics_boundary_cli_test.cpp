@@ -639,14 +639,16 @@ TEST(DynamicsBoundaryCli, AnErrorDiagnosticIsNamedOnStderrWithTheOutputWritten) 
 // hold the start's rollers in its contact no deeper than its surface. The inside ring of 43.8 mm
 // round sprocket[1] from -170 to 170 deg crosses the spans leaving that wheel (they pass its
 // surface at ±122.84 deg): refused on dynamics.guide[0] naming the span, how far past the surface
-// and the part of the ring clear of them, which typed back is accepted (it clears the check only:
-// at its ends the spans lie a roller radius into the ring's surface, on the edge of the rule, which
-// need not run), and the part of it clear of its contact, which typed back runs; the same ring from
-// -60 to 60 deg and a flat convex arc carrying the upper run are accepted and run. At the rule's
-// edge: a straight rail and the flat arc with their surface 0.02 mm below the upper run's roller
-// centres (6.015 mm into the rollers) are accepted, 0.02 mm above it refused, naming the move that
-// clears, which typed back is accepted, and the move to touching the rollers (6.055 mm), which
-// typed back runs.
+// and the part of the ring clear of them, which typed back passes this check (at its ends the
+// spans lie a roller radius into the ring's surface, on the edge of the rule) but is refused at
+// its square entry end ("the square ends"; the message says so), and the part of it clear of its
+// contact, which typed back runs; the same ring from -60 to 60 deg and a flat convex arc carrying
+// the upper run (with lead-ins: bare, refused at its entry end 0.07275 mm into the run) are
+// accepted and run. At the rule's edge: a straight rail and the flat arc with their surface 0.02 mm
+// below the upper run's roller centres (6.015 mm into the rollers) pass this check but are refused
+// at their square entry ends, 0.02 mm above it refused, naming the move that clears this check
+// (typed back: refused at the square end alone), and the move to touching the rollers (6.055 mm),
+// which typed back runs.
 TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_rail_path";
@@ -671,6 +673,7 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
        {"dynamics.guide[0] (line 19) = the span sprocket[", " mm past its surface at ",
         "at most the roller radius (6.035 mm) into it",
         "start_angle >= ", " deg and end_angle <= ", " deg clears this check only",
+        "and is refused at an entry end without a lead-in: give that end one)",
         "; clear of its contact (its surface at most touching the rollers): start_angle >= "})
     EXPECT_NE(cut.err.find(text), std::string::npos) << text << "\n" << cut.err;
   // the clear part named lies within ±122.84 deg, where the spans pass the ring's surface
@@ -685,8 +688,13 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
   bt << to;
   const CliRun typed =
       run("dynamics " + write("ring_part.toml", ring(at.str(), bt.str())) + " --format json");
-  EXPECT_EQ(typed.status, 0) << typed.err;
-  EXPECT_EQ(typed.err.find("dynamics.guide[0]"), std::string::npos) << typed.err;
+  // it passes this check, but its square entry end then holds the spans a roller radius deep
+  // ("the square ends")
+  EXPECT_EQ(typed.status, 2) << typed.err;
+  EXPECT_EQ(typed.err.find(" past its surface"), std::string::npos) << typed.err;
+  EXPECT_NE(typed.err.find("dynamics.guide[0] (line 19) = its square end at start_angle"),
+            std::string::npos)
+      << typed.err;
   // the part clear of its contact: inside the one that clears the check, and it runs its 2 ms
   const std::string touch = "at most touching the rollers): start_angle >= ";
   const std::size_t at_touch = cut.err.find(touch);
@@ -703,15 +711,26 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
   EXPECT_EQ(clear.status, 0) << clear.err;
   EXPECT_EQ(clear.out.find("dynamics.not_converged"), std::string::npos) << clear.err;
 
-  // lying on the chain: accepted and run
+  // lying on the chain: accepted and run (the flat arc, its entry end 0.07275 mm into the upper
+  // run, with lead-ins: "the square ends")
   const std::string flat =
       "[[dynamics.guide]]\nkind = \"arc\"\ncentre_x = \"95.25 mm\"\ncentre_y = \"-4968.8 mm\"\n"
       "radius = \"5 m\"\nstart_angle = \"89.3124 deg\"\nend_angle = \"90.6876 deg\"\n";
-  for (const std::string& text : {ring("-60", "60"), flat}) {
+  const std::string flat_led = flat + "lead_in_radius = \"20 mm\"\nlead_in_angle = \"30 deg\"\n";
+  for (const std::string& text : {ring("-60", "60"), flat_led}) {
     const CliRun ok = run("dynamics " + write("on_chain.toml", text) + " --format json");
     ASSERT_EQ(ok.status, 0) << text << ok.err;
     EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos) << text;
   }
+  // the bare flat arc: refused at its entry end (start_angle: the upper run moves towards -x),
+  // 0.07275 mm into its contact
+  const CliRun bare = run("dynamics " + write("bare_flat.toml", flat) + " --format json");
+  EXPECT_EQ(bare.status, 2) << bare.err;
+  EXPECT_NE(bare.err.find("its square end at start_angle (155.3, 30.84) mm"), std::string::npos)
+      << bare.err;
+  EXPECT_NE(bare.err.find("crossing it 0.07275 mm into its contact"), std::string::npos)
+      << bare.err;
+  EXPECT_EQ(bare.err.find("its square end at end_angle"), std::string::npos) << bare.err;
 
   // the rule's edge: the upper run's roller centres at the pitch radius, 36.8017 mm; a straight
   // rail's surface and the flat arc's top (centre_y + 5 m) 0.02 mm below or above them
@@ -729,8 +748,13 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
         "\"\nradius = \"5 m\"\nstart_angle = \"89.3124 deg\"\nend_angle = \"90.6876 deg\"\n";
     for (const std::string& text : {rail, arc}) {
       const CliRun r = run("dynamics " + write("edge.toml", text) + " --duration \"0.1 ms\"");
+      // below the edge the check passes, but the square entry end holds the run 6.015 mm deep:
+      // refused by that rule alone ("the square ends")
+      const std::string square = "dynamics.guide[0] (line 19) = its square end at ";
       if (off < 0.0) {
-        EXPECT_EQ(r.status, 0) << text << r.err;
+        EXPECT_EQ(r.status, 2) << text << r.err;
+        EXPECT_EQ(r.err.find(" past its surface"), std::string::npos) << text << r.err;
+        EXPECT_NE(r.err.find(square), std::string::npos) << text << r.err;
         continue;
       }
       EXPECT_EQ(r.status, 2) << text << r.err;
@@ -740,7 +764,7 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
       const double past = named_after(r.err, named);  // [mm] past the surface
       EXPECT_GT(past, 0.0199) << r.err;
       EXPECT_LT(past, 0.0201) << r.err;
-      // the move named, typed back: accepted
+      // the move named, typed back: not cut
       const bool straight = text == rail;
       const double moved = named_after(r.err, straight ? "the rail moved " : "radius <= ");
       // the case with the rail moved as named (a straight rail by `given` mm down, an arc to the
@@ -764,7 +788,10 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
       const std::string fixed = typed_back(moved);
       const CliRun ok =
           run("dynamics " + write("edge_moved.toml", fixed) + " --duration \"0.1 ms\"");
-      EXPECT_EQ(ok.status, 0) << fixed << ok.err;
+      // it clears this check (no cut named), the square entry end still refused
+      EXPECT_EQ(ok.status, 2) << fixed << ok.err;
+      EXPECT_EQ(ok.err.find(" past its surface"), std::string::npos) << fixed << ok.err;
+      EXPECT_NE(ok.err.find(square), std::string::npos) << fixed << ok.err;
       // the move to touching the rollers (the surface a roller radius above their centres, 0.02
       // mm higher than now), typed back: accepted and runs its 2 ms
       const std::string touching = "at most touching the rollers): ";
@@ -787,6 +814,180 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
     }
   }
   std::filesystem::remove_all(dir);
+}
+
+// A rail's square entry end against the chain's starting path (docs/models/dynamics.md, "Guides
+// against the starting path: the square ends") on the lead-in loop: a straight rail from 30 to 150
+// mm under the upper run (which runs towards -x, onto the rail at x = 150 mm), its surface set so
+// that the run lies 4 mm into its contact (of the roller radius 6.035 mm), stopped at step 43 with
+// "did not converge" before: now refused on dynamics.guide[0] naming its entry end (x1, y1), the
+// 4 mm and the lead-in, the only remedy (a bare entry end clear of the rollers stops as often:
+// no move is named), and not its exit end (x0, y0). The lead-in typed back (50 mm, 30 deg at both
+// ends) runs 10 ms (past the old step 43) without a diagnostic.
+TEST(DynamicsBoundaryCli, ARailsSquareEntryEndMayNotBePressedIntoTheStartingPath) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_square_end";
+  std::filesystem::create_directories(dir);
+  const auto write = [&](const std::string& name, const std::string& text) {
+    const std::filesystem::path file = dir / name;
+    std::ofstream(file) << kLeadInLoopHead << text;
+    return file.string();
+  };
+  // the upper run's roller centres at the pitch radius; the surface a roller radius below them
+  // less `depth`
+  const double run_height = 0.5 * 19.05 / std::sin(std::numbers::pi / 12.0);  // [mm]
+  const auto rail_at = [&](double depth, const std::string& keys) {
+    std::ostringstream height;
+    height.precision(12);
+    height << run_height - 6.035 + depth << " mm";
+    return lead_in_rail(height.str(), keys);
+  };
+  const CliRun pressed = run("dynamics " + write("pressed.toml", rail_at(4.0, "")));
+  EXPECT_EQ(pressed.status, 2) << pressed.err;
+  const std::string named = "dynamics.guide[0] (line 19) = its square end at (x1, y1) (150, ";
+  EXPECT_NE(pressed.err.find(named), std::string::npos) << pressed.err;
+  EXPECT_EQ(pressed.err.find("its square end at (x0, y0)"), std::string::npos) << pressed.err;
+  for (const char* text : {"the chain's starting path crossing it 4 mm into its contact",
+                           "at most its contact's ramp (0.001 mm) deep",
+                           "lead_in_end = \"end\" or \"both\"), the only remedy"})
+    EXPECT_NE(pressed.err.find(text), std::string::npos) << text << "\n" << pressed.err;
+  EXPECT_EQ(pressed.err.find("move"), std::string::npos) << pressed.err;
+  const std::string led = rail_at(4.0, "lead_in_radius = \"50 mm\"\nlead_in_angle = \"30 deg\"\n");
+  const CliRun ok =
+      run("dynamics " + write("fixed.toml", led) + " --duration \"10 ms\" --format json");
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_TRUE(ok.err.empty()) << ok.err;
+  EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+// The chain runs counter-clockwise round its path whichever side its driver is on (docs/models/
+// dynamics.md, "Guides against the starting path: the square ends"): the serpentine layout of
+// examples/dynamics_serpentine.toml (z 12 at the origin, z 18 on the chain's back at (275, -27)
+// mm, z 18 at (400, 0) mm) with a straight rail under its upper span, from a quarter to three
+// quarters of it, 4 mm into it. The upper span runs towards -x, onto the rail at (x1, y1), with
+// the driver inside (the first wheel) and with the driver on the chain's back (turning clockwise):
+// both refused naming (x1, y1) and a lead-in at "end", neither naming (x0, y0). The driver on the
+// back named (x0, y0) before, and a lead-in there, typed back, was accepted and stopped at 88 ms.
+TEST(DynamicsBoundaryCli, ARailsEntryEndFollowsTheChainWhicheverSideTheDriverIsOn) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_back_driver";
+  std::filesystem::create_directories(dir);
+  const auto serpentine = [&](bool back) {
+    return std::string(R"([dynamics]
+chain = "12B"
+axial_stiffness = "5e7 N/m"
+axial_damping = 100
+contact_stiffness = "2e8 N/m"
+contact_damping = 800
+duration = "0.1 ms"
+step = "0.1 ms"
+theta = 0.6
+gravity = true
+[[dynamics.sprocket]]
+teeth = 12
+)") +
+           (back ? "role = \"driven\"\ninertia = 0.02\nload_torque = 1\n"
+                 : "role = \"driver\"\nspeed = \"13 rad/s\"\n") +
+           R"(centre_x = "0 mm"
+centre_y = "0 mm"
+[[dynamics.sprocket]]
+teeth = 18
+side = "outside"
+)" + (back ? "role = \"driver\"\nspeed = \"13 rad/s\"\n" : "role = \"idler\"\ninertia = 0.002\n") +
+           R"(centre_x = "275 mm"
+centre_y = "-27 mm"
+[[dynamics.sprocket]]
+teeth = 18
+role = "driven"
+inertia = 0.02
+load_torque = 10
+centre_x = "400 mm"
+centre_y = "0 mm"
+[[dynamics.guide]]
+kind = "straight"
+x0 = "98.227466394 mm"
+y0 = "39.239388387 mm"
+x1 = "297.820190035 mm"
+y1 = "48.255451705 mm"
+)";
+  };
+  for (const bool back : {false, true}) {
+    const std::filesystem::path file = dir / (back ? "back.toml" : "inside.toml");
+    std::ofstream(file) << serpentine(back);
+    const CliRun r = run("dynamics " + file.string());
+    EXPECT_EQ(r.status, 2) << back << r.err;
+    EXPECT_NE(r.err.find("its square end at (x1, y1) (297.8, 48.26) mm, where the chain runs onto "
+                         "it, the chain's starting path crossing it 4"),
+              std::string::npos)
+        << back << r.err;
+    EXPECT_NE(r.err.find("lead_in_end = \"end\" or \"both\")"), std::string::npos) << back << r.err;
+    EXPECT_EQ(r.err.find("its square end at (x0, y0)"), std::string::npos) << back << r.err;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// A full ring has no ends (docs/models/dynamics.md, "Guides against the starting path: the square
+// ends"): an outside ring of 20 mm under the lead-in loop's upper run, 0.5 mm into it, from 90 to
+// 450 deg (its seam at the top, in the run's contact) and from -90 to 270 deg (its seam at the
+// bottom): both accepted and run without a diagnostic. The seam at the top was refused as a square
+// entry end before, naming a lead-in that a full ring cannot have.
+TEST(DynamicsBoundaryCli, AFullRingHasNoSquareEnds) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_full_ring";
+  std::filesystem::create_directories(dir);
+  const double run_height = 0.5 * 19.05 / std::sin(std::numbers::pi / 12.0);  // [mm]
+  std::ostringstream centre;
+  centre.precision(12);
+  centre << run_height - 6.035 + 0.5 - 20.0 << " mm";
+  for (const auto& [from, to] : {std::pair{"90", "450"}, std::pair{"-90", "270"}}) {
+    const std::string ring =
+        "[[dynamics.guide]]\nkind = \"arc\"\ncentre_x = \"95.25 mm\"\n"
+        "centre_y = \"" +
+        centre.str() + "\"\nradius = \"20 mm\"\nstart_angle = \"" + from +
+        " deg\"\nend_angle = \"" + to + " deg\"\n";
+    const std::filesystem::path file = dir / "ring.toml";
+    std::ofstream(file) << kLeadInLoopHead << ring;
+    const CliRun r = run("dynamics " + file.string() + " --format json");
+    EXPECT_EQ(r.status, 0) << from << r.err;
+    EXPECT_TRUE(r.err.empty()) << from << r.err;
+    EXPECT_EQ(r.out.find("dynamics.not_converged"), std::string::npos) << from;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// Two rails whose lifts of the start disagree (docs/models/dynamics.md, "Guides against the
+// starting path: several rails") on the lead-in loop: guide[0] under the upper run from 30 to 150
+// mm, 3 mm into it, with 50 mm, 30 deg lead-ins; guide[1], facing up too, 9.5 mm above guide[0]'s
+// surface from 60 to 120 mm: the run lies 12.5 mm behind its surface, out of its contact (its
+// checks pass), until guide[0]'s lift sets the rollers 9.5 mm into it, past its surface. Accepted
+// before, the chain pulled up through guide[1]; now refused naming both rails, the 3 nodes and the
+// depth.
+TEST(DynamicsBoundaryCli, ARollerLiftedOntoOneRailMayNotLandBehindAnother) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_two_rails";
+  std::filesystem::create_directories(dir);
+  const double run_height = 0.5 * 19.05 / std::sin(std::numbers::pi / 12.0);  // [mm]
+  std::ostringstream low, high;
+  low.precision(12);
+  high.precision(12);
+  low << run_height - 6.035 + 3.0 << " mm";
+  high << run_height - 6.035 + 12.5 << " mm";
+  const std::string upper = "[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"60 mm\"\ny0 = \"" +
+                            high.str() + "\"\nx1 = \"120 mm\"\ny1 = \"" + high.str() + "\"\n";
+  const std::filesystem::path file = dir / "two.toml";
+  std::ofstream(file) << kLeadInLoopHead
+                      << lead_in_rail(low.str(),
+                                      "lead_in_radius = \"50 mm\"\nlead_in_angle = \"30 deg\"\n")
+                      << upper;
+  const CliRun r = run("dynamics " + file.string() + " --duration \"0.1 ms\"");
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("dynamics.guide = 3 nodes of the chain's start lifted onto guide[0] then "
+                       "lay behind the surface of guide[1] (node "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find(" 9.5 mm deep in it"), std::string::npos) << r.err;
 }
 
 // The check of the rails against the starting path bounded (docs/models/dynamics.md, "The

@@ -274,6 +274,88 @@ TEST(DynamicsGuideHint, LiftOntoGuidesBitIdenticalToEveryPair) {
   EXPECT_GT(twice, 100);
 }
 
+// Two rails whose lifts disagree (docs/models/dynamics.md, "Guides against the starting path:
+// several rails"), 12B rollers (r = 6.035 mm): a rail A along y = 0 (x from 0 to 0.1 m, rollers
+// above) and a rail B, 9.5 mm above it (x from 0.02 to 0.08 m, rollers above): a node 3 mm into A
+// is 12.5 mm behind B's surface, out of its contact, until A lifts it onto its surface, 9.5 mm
+// into B's (past its surface): B pulls it through, named. With B facing down 10 mm above A (a
+// channel narrower than a roller), a node 4.035 mm into A lifted onto it is 2.07 mm into B, which
+// pushes it back 2.07 mm into A, named. Each node's moves as the loop over every guide makes them;
+// a node on one rail alone and nodes clear of both give no conflict.
+TEST(DynamicsGuideHint, LiftNamesANodePulledThroughOrLeftInsideAnotherRail) {
+  const double r = 0.006035;
+  const auto rail = [&](double x0, double y0, double x1, double y1) {
+    Guide g;
+    g.kind = Guide::Kind::kStraight;
+    g.x0 = x0;
+    g.y0 = y0;
+    g.x1 = x1;
+    g.y1 = y1;
+    g.roller_radius = r;
+    return g;
+  };
+  const std::vector<Guide> stacked{rail(0.0, 0.0, 0.1, 0.0), rail(0.02, 0.0095, 0.08, 0.0095)};
+  // node 0 under B, 3 mm into A; node 1 into A beyond B's ends; node 2 clear of both
+  std::vector<double> x{0.05, 0.09, 0.05}, y{r - 0.003, r - 0.003, 0.05};
+  std::vector<double> ex = x, ey = y;
+  lift_every_pair(stacked, ex, ey);
+  const std::vector<LiftConflict> through = lift_onto_guides(stacked, x, y);
+  EXPECT_TRUE(same_bits(x, ex) && same_bits(y, ey));
+  ASSERT_EQ(through.size(), 1U);
+  EXPECT_EQ(through[0].node, 0U);
+  EXPECT_EQ(through[0].first, 0U);
+  EXPECT_EQ(through[0].second, 1U);
+  EXPECT_TRUE(through[0].through);
+  EXPECT_NEAR(through[0].depth, 0.0095, 1e-12);
+  EXPECT_NEAR(y[0], 0.0095 + r, 1e-12);  // pulled through B onto its top
+
+  const std::vector<Guide> channel{rail(0.0, 0.0, 0.1, 0.0), rail(0.1, 0.01, 0.0, 0.01)};
+  std::vector<double> cx{0.05, 0.05}, cy{0.002, 0.005};
+  std::vector<double> fx = cx, fy = cy;
+  lift_every_pair(channel, fx, fy);
+  const std::vector<LiftConflict> inside = lift_onto_guides(channel, cx, cy);
+  EXPECT_TRUE(same_bits(cx, fx) && same_bits(cy, fy));
+  ASSERT_EQ(inside.size(), 2U);  // both nodes end 10 mm − r from B's surface, inside A
+  for (std::size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(inside[k].node, k);
+    EXPECT_EQ(inside[k].first, 1U);
+    EXPECT_EQ(inside[k].second, 0U);
+    EXPECT_FALSE(inside[k].through);
+    EXPECT_NEAR(inside[k].depth, 2.0 * r - 0.01, 1e-12);
+  }
+}
+
+// The conflict's kind from its depth, not from the rails' order: the stacked rails of the test
+// above given the other way round (B first). A lifts the node 9.5 mm into B, past its surface
+// (more than the roller radius), and B, earlier in the order, no longer moves it: named as behind
+// B's surface (pulled through it), as when B comes after A, not as left inside B's contact.
+TEST(DynamicsGuideHint, LiftNamesTheConflictsKindByDepthWhateverTheOrder) {
+  const double r = 0.006035;
+  const auto rail = [&](double x0, double y0, double x1, double y1) {
+    Guide g;
+    g.kind = Guide::Kind::kStraight;
+    g.x0 = x0;
+    g.y0 = y0;
+    g.x1 = x1;
+    g.y1 = y1;
+    g.roller_radius = r;
+    return g;
+  };
+  const std::vector<Guide> swapped{rail(0.02, 0.0095, 0.08, 0.0095), rail(0.0, 0.0, 0.1, 0.0)};
+  std::vector<double> x{0.05}, y{r - 0.003};
+  std::vector<double> ex = x, ey = y;
+  lift_every_pair(swapped, ex, ey);
+  const std::vector<LiftConflict> found = lift_onto_guides(swapped, x, y);
+  EXPECT_TRUE(same_bits(x, ex) && same_bits(y, ey));
+  ASSERT_EQ(found.size(), 1U);
+  EXPECT_EQ(found[0].node, 0U);
+  EXPECT_EQ(found[0].first, 1U);
+  EXPECT_EQ(found[0].second, 0U);
+  EXPECT_TRUE(found[0].through);
+  EXPECT_NEAR(found[0].depth, 0.0095, 1e-12);
+  EXPECT_NEAR(y[0], r, 1e-12);  // on A's surface, behind B's
+}
+
 // The many-guide conveyor's start, its spans laid a third of a roller radius into the rails, and
 // energy() at it and after lifting: the rails' elastic energy is the every-pair sum (summed in the
 // same order, then the links', as energy() sums them), bit for bit.

@@ -79,12 +79,28 @@ class GuideHint {
   std::size_t rebuilds_ = 0;
 };
 
+/// Where the lift of a node by one guide disagrees with another (docs/models/dynamics.md, "Guides
+/// against the starting path: several rails"): the node `node`, moved last by guide `first`, either
+/// then pulled through a later guide `second` from behind its surface (it lay `depth` into the
+/// second's contact, more than a roller radius, when the second lifted it) or left `depth` inside
+/// an earlier guide `second`'s contact (deeper than its ramp ε) by the moves after it. `through`
+/// when `depth` is more than the second's roller radius (behind its surface, whatever the order).
+struct LiftConflict {
+  std::size_t node = 0, first = 0, second = 0;
+  bool through = false;
+  double depth = 0.0;  ///< [m] the node's gap g in the second guide
+};
+
 /// Moves every node that starts inside a guide out along the rail's normal to touch it: for each
 /// guide in order, each node it is active on (guide_contact at rest) moves by penetration · n. The
 /// result is bit-identical to that loop over every guide and every node, in O(N + G + pairs): a
 /// node's moves depend only on its own position and the guides in order, so each node is taken
 /// through the guides near it (GuideHint's grid, asked again after each move). x and y have one
-/// entry per node.
-void lift_onto_guides(std::span<const Guide> guides, std::span<double> x, std::span<double> y);
+/// entry per node. Returns the nodes whose moves disagree (LiftConflict), in node order: a node
+/// one guide moved and a later one then pulled through its surface, or one left inside an earlier
+/// guide's contact; none where the lift leaves every node out of every contact but the last
+/// mover's without crossing a surface.
+std::vector<LiftConflict> lift_onto_guides(std::span<const Guide> guides, std::span<double> x,
+                                           std::span<double> y);
 
 }  // namespace catena::dynamics

@@ -197,6 +197,24 @@ inline constexpr double kRailCutReach = 4.0;
 /// its moves): the work of one check.
 double rail_cut_work(const BeltPath& path, const Guide& rail);
 
+/// A rail's end with no guide laid on from it (a lead-in's arc, a hand-laid arc or rail whose end
+/// lies within the contact's ramp ε of it; a full ring's own other end) is square: a roller
+/// crossing it below the rail's surface takes the contact force of its whole depth at once
+/// (docs/models/dynamics.md, "Guides against the starting path: the square ends"). For each
+/// square end of the rails `rails` (indices into `guides`): how deep the chain's starting path
+/// crosses it where the chain runs onto the rail (along the path's direction, counter-clockwise,
+/// whichever side the driver is on), its g in [0, 2r] (0: not crossing its contact); the path
+/// sampled as rail_cut samples it, as a polyline, against the end's normal from the roller line
+/// to r behind the surface.
+struct SquareEnd {
+  std::size_t rail = 0;  ///< index into `rails`
+  bool at_start = true;
+  double x = 0.0, y = 0.0;  ///< [m] the end of the rail's surface
+  double depth = 0.0;       ///< [m] the deepest crossing's g
+};
+std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide>& guides,
+                                   const std::vector<std::size_t>& rails);
+
 /// The distances `lead_in_obstacle` measures for `arc` (its samples times the pieces and guides
 /// its prefilter keeps): the work of one check, which `lead_in_limit`'s bisections repeat at most
 /// kLeadInPasses times in all (their arcs lie within the given arc's bounding box).

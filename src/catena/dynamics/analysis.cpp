@@ -22,6 +22,7 @@
 #include <optional>
 #include <regex>
 #include <sstream>
+#include <tuple>
 
 #include "catena/contact/chain_catalog.hpp"
 #include "catena/contact/roller_tooth.hpp"
@@ -2378,7 +2379,8 @@ Setup parse(const analysis::Inputs& in) {
         passes.empty() ? "no part of it nor a move within a roller's diameter clears it"
                        : passes +
                              " clears this check only (the rollers may still lie up to the roller "
-                             "radius into its surface, which need not run)";
+                             "radius into its surface, which need not run, and is refused at an "
+                             "entry end without a lead-in: give that end one)";
     if (!touches.empty())
       remedy += "; clear of its contact (its surface at most touching the rollers): " + touches;
     issues.push_back(
@@ -2388,6 +2390,40 @@ Setup parse(const analysis::Inputs& in) {
          "surface, at most the roller radius (" +
              mm(r) + ") into it (here " + cut.piece + " at (" + format_g(cut.x * 1e3, 4) + ", " +
              format_g(cut.y * 1e3, 4) + ") mm, " + mm(cut.depth) + " in): " + remedy});
+  }
+  // a rail's square end may hold the starting path no deeper than its contact's ramp ε: a roller
+  // crossing it deeper takes that depth's force at once (docs/models/dynamics.md, "Guides against
+  // the starting path: the square ends"). This catches the start's worst case only: a bare entry
+  // end near the path may stop a step at a roller's entry at any depth, so the message names the
+  // lead-in, the one remedy that runs, not a move
+  if (rail_work <= kMaxRailCutWork && !given_rails.empty() && !chain_path.pieces.empty()) {
+    std::vector<std::size_t> rails;
+    for (const auto& given : given_rails) rails.push_back(given.second);
+    for (const SquareEnd& end : square_ends(chain_path, s.guides, rails)) {
+      const Guide& rail = s.guides[rails[end.rail]];
+      if (!(end.depth > rail.contact_smoothing)) continue;
+      const bool arc = rail.kind == Guide::Kind::kArc;
+      auto mm = [](double v) { return format_g(v * 1e3, 4) + " mm"; };
+      const std::string which = arc ? std::string(end.at_start ? "start_angle" : "end_angle")
+                                    : std::string(end.at_start ? "(x0, y0)" : "(x1, y1)");
+      issues.push_back(
+          {given_rails[end.rail].first,
+           "its square end at " + which + " (" + format_g(end.x * 1e3, 4) + ", " +
+               format_g(end.y * 1e3, 4) + ") mm, where the chain runs onto it, the chain's " +
+               "starting path crossing it " + mm(end.depth) + " into its contact",
+           "an entry end without a lead-in the starting path crosses at most its contact's ramp (" +
+               mm(rail.contact_smoothing) +
+               ") deep: a roller crossing it deeper is struck by that depth's force at once" +
+               (rail.line_law
+                    ? std::string()
+                    : " (here " + format_g(rail.contact_stiffness * end.depth, 3) + " N)") +
+               ", on which a step need not converge however small; give it a lead-in "
+               "(lead_in_radius, lead_in_end = \"" +
+               (end.at_start ? "start" : "end") +
+               "\" or \"both\"), the only remedy: a bare entry end near the chain's path may "
+               "stop the run at a roller's entry whatever its depth, clear of the rollers or "
+               "pressed in"});
+    }
   }
   // the check's work bounded (docs/models/dynamics.md, "Lead-ins"): the distances it may measure,
   // each arc's check repeated by the bisections, at most kMaxLeadInWork
@@ -2839,9 +2875,45 @@ Result run(const analysis::Inputs& in) {
   // A roller that starts inside a rail is moved out along the rail's normal to touch it (the
   // spans start straight at the wheels' pitch-line height; a guide may sit a little higher): the
   // guides in order, each node against the guides near it, O(N + G + pairs)
-  lift_onto_guides(model.guides, std::span<double>(s.x.data(), n),
-                   std::span<double>(s.y.data(), n));
-  throw_if_any(validate(model, s));
+  const std::vector<LiftConflict> conflicts = lift_onto_guides(
+      model.guides, std::span<double>(s.x.data(), n), std::span<double>(s.y.data(), n));
+  // two rails whose lifts disagree (docs/models/dynamics.md, "Guides against the starting path:
+  // several rails"): one issue per pair and kind, its nodes counted, the deepest named
+  std::vector<Issue> lift_issues;
+  {
+    std::map<std::tuple<std::size_t, std::size_t, bool>, std::pair<std::size_t, LiftConflict>>
+        pairs;
+    for (const LiftConflict& c : conflicts) {
+      auto [it, fresh] = pairs.try_emplace({c.first, c.second, c.through}, 0, c);
+      ++it->second.first;
+      if (!fresh && c.depth > it->second.second.depth) it->second.second = c;
+    }
+    auto name = [&](std::size_t g) {
+      return g < d.guide_names.size() ? d.guide_names[g] : "guide[" + std::to_string(g) + "]";
+    };
+    for (const auto& [key, found] : pairs) {
+      const LiftConflict& c = found.second;
+      const std::string nodes =
+          std::to_string(found.first) + (found.first == 1 ? " node" : " nodes");
+      lift_issues.push_back(
+          {"dynamics.guide",
+           nodes + " of the chain's start lifted onto " + name(c.first) +
+               (c.through          ? " then lay behind the surface of "
+                : found.first == 1 ? " is left inside the contact of "
+                                   : " are left inside the contact of ") +
+               name(c.second) + " (node " + std::to_string(c.node) + " " +
+               format_g(c.depth * 1e3, 4) + " mm deep in it, of the roller radius " +
+               format_g(model.guides[c.second].roller_radius * 1e3, 4) + " mm)",
+           std::string("guides whose lifts of the starting path agree: a roller one lifts ") +
+               (c.through ? "may not land past another's surface (it would be pulled through it)"
+                          : "may not be left in another's contact") +
+               "; move one of the two so that the rollers the first lifts lie on the free side of "
+               "the second or clear of it"});
+    }
+  }
+  // reported with the start's other problems, one list
+  for (Issue& issue : validate(model, s)) lift_issues.push_back(std::move(issue));
+  throw_if_any(lift_issues);
 
   Integrator integ(model, {.step = d.step, .theta = d.theta});
   std::vector<double> tension(model.links());

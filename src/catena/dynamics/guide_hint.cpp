@@ -190,8 +190,10 @@ void GuideHint::guides_near(double x, double y, std::vector<std::uint32_t>& out)
   std::inplace_merge(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(mid), out.end());
 }
 
-void lift_onto_guides(std::span<const Guide> guides, std::span<double> x, std::span<double> y) {
-  if (guides.empty()) return;
+std::vector<LiftConflict> lift_onto_guides(std::span<const Guide> guides, std::span<double> x,
+                                           std::span<double> y) {
+  std::vector<LiftConflict> conflicts;
+  if (guides.empty()) return conflicts;
   GuideHint hint(0.0);  // the boxes themselves: nothing moves while the grid is in use
   hint.update(guides, x, y);
   std::vector<std::uint32_t> near;
@@ -201,6 +203,8 @@ void lift_onto_guides(std::span<const Guide> guides, std::span<double> x, std::s
     // the node's current position moves it (the guides between were not active there, as in the
     // loop over every guide), and the guides near its new position are asked again
     std::size_t next = 0;
+    bool lifted = false;
+    std::size_t last = 0;  // the guide that moved it last (when lifted)
     for (bool moved = true; moved;) {
       moved = false;
       hint.guides_near(x[i], y[i], near);
@@ -208,14 +212,31 @@ void lift_onto_guides(std::span<const Guide> guides, std::span<double> x, std::s
         if (g < next) continue;
         const GuideContact c = guide_contact(guides[g], x[i], y[i], 0.0, 0.0);
         if (!c.active) continue;
+        // a node another guide moved, now behind this one's surface: pulled through it
+        if (lifted && c.penetration > guides[g].roller_radius)
+          conflicts.push_back({i, last, g, true, c.penetration});
         x[i] += c.penetration * c.nx;
         y[i] += c.penetration * c.ny;
         next = static_cast<std::size_t>(g) + 1;
+        lifted = true;
+        last = g;
         moved = true;
         break;
       }
     }
+    if (!lifted) continue;
+    // an earlier guide the later moves left it inside (beyond the contact's ramp): behind its
+    // surface (deeper than a roller radius, pulled through it) or in front of it, by depth
+    // whatever the guides' order
+    hint.guides_near(x[i], y[i], near);
+    for (const std::uint32_t g : near) {
+      if (g >= last) break;
+      const GuideContact c = guide_contact(guides[g], x[i], y[i], 0.0, 0.0);
+      if (c.active && c.penetration > guides[g].contact_smoothing)
+        conflicts.push_back({i, last, g, c.penetration > guides[g].roller_radius, c.penetration});
+    }
   }
+  return conflicts;
 }
 
 }  // namespace catena::dynamics

@@ -3,6 +3,7 @@
 #include "catena/dynamics/layout.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -1197,6 +1198,94 @@ RailCut rail_cut(const BeltPath& path, const Guide& rail) {
   if (within(shift, 2.0)) out.shift = shift;
   if (within(touching, kRailCutReach)) out.touching = touching;
   return out;
+}
+
+// The square ends (layout.hpp): every guide's two ends found once and matched in x order,
+// O(G log G + matches); then each end's segment, from the roller line's point (the surface's end
+// plus r n, where a roller touching the end has its centre) to r behind the surface (g from 0 to
+// 2r), against the chords between the path's samples near it (cut_ranges over the segment's box
+// padded by a sample's spacing: a chord crossing it has an end within that of it), a chord counted
+// only where it runs into the rail; a roller leaving a square end sheds its force at once
+// instead, which the conveyor example's lower rail does at its exit end 0.31 mm deep.
+std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide>& guides,
+                                   const std::vector<std::size_t>& rails) {
+  std::vector<SquareEnd> ends;
+  // each end's surface point, its free side's unit normal and the rail's direction into it
+  std::vector<std::array<double, 6>> at;
+  auto end_of = [](const Guide& g, bool start) {
+    if (g.kind == Guide::Kind::kStraight) {
+      const GuideFrame f = guide_frame(g);
+      const double in = start ? 1.0 : -1.0;
+      return std::array<double, 6>{
+          start ? g.x0 : g.x1, start ? g.y0 : g.y1, -f.uy, f.ux, in * f.ux, in * f.uy};
+    }
+    const double a = start ? g.start_angle : g.end_angle;
+    const double c = std::cos(a), s = std::sin(a), sgn = g.inside ? -1.0 : 1.0;
+    const double in = start ? 1.0 : -1.0;  // counter-clockwise from start_angle
+    return std::array<double, 6>{
+        g.centre_x + g.radius * c, g.centre_y + g.radius * s, sgn * c, sgn * s, -in * s, in * c};
+  };
+  // every guide's two ends once (2 g its start, 2 g + 1 its end), in x order
+  std::vector<std::array<double, 6>> all(2 * guides.size());
+  for (std::size_t g = 0; g < guides.size(); ++g) {
+    all[2 * g] = end_of(guides[g], true);
+    all[2 * g + 1] = end_of(guides[g], false);
+  }
+  std::vector<std::size_t> by_x;  // the finite ones (a strict order)
+  for (std::size_t j = 0; j < all.size(); ++j)
+    if (std::isfinite(all[j][0]) && std::isfinite(all[j][1])) by_x.push_back(j);
+  std::sort(by_x.begin(), by_x.end(), [&](std::size_t a, std::size_t b) {
+    return all[a][0] < all[b][0] || (all[a][0] == all[b][0] && a < b);
+  });
+  for (std::size_t k = 0; k < rails.size(); ++k) {
+    const double eps = guides[rails[k]].contact_smoothing;
+    for (const bool start : {true, false}) {
+      const std::size_t self = 2 * rails[k] + (start ? 0 : 1);
+      const std::array<double, 6>& e = all[self];
+      bool joined = false;
+      auto o = std::lower_bound(by_x.begin(), by_x.end(), e[0] - eps,
+                                [&](std::size_t j, double x) { return all[j][0] < x; });
+      for (; o != by_x.end() && all[*o][0] <= e[0] + eps && !joined; ++o)
+        joined = *o != self && std::hypot(all[*o][0] - e[0], all[*o][1] - e[1]) <= eps;
+      if (joined) continue;
+      ends.push_back({k, start, e[0], e[1], 0.0});
+      at.push_back(e);
+    }
+  }
+  if (ends.empty() || path.pieces.empty() || !(path.length > 0.0)) return ends;
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    const Guide& rail = guides[rails[ends[k].rail]];
+    const double rr = rail.roller_radius;
+    if (!(rr > 0.0)) continue;
+    const int n = cut_samples(path, rail);
+    const double pad = path.length / n;
+    const auto& e = at[k];
+    // the segment A + t d, t in [0, 1]: A the roller line's point (g = 0), d 2r along −n
+    const double ax = e[0] + rr * e[2], ay = e[1] + rr * e[3];
+    const double dx = -2.0 * rr * e[2], dy = -2.0 * rr * e[3];
+    const GuideBounds box{std::min(ax, ax + dx) - pad, std::max(ax, ax + dx) + pad,
+                          std::min(ay, ay + dy) - pad, std::max(ay, ay + dy) + pad};
+    auto sample = [&](double j) { return path_point(path, path.length * j / n); };
+    cut_ranges(path, box, n, [&](std::size_t, double from, double to) {
+      // the chords from the sample before `from` to the one after `to` (round the closed path)
+      PathPoint p = sample(from > 0.0 ? from - 1.0 : n - 1.0);
+      for (double j = from; j <= to + 1.0; ++j) {
+        const PathPoint q = sample(j < n ? j : j - n);
+        const double cx = q.x - p.x, cy = q.y - p.y;
+        const double qx = p.x - ax, qy = p.y - ay;
+        p = q;
+        const double den = cx * dy - cy * dx;
+        if (den == 0.0) continue;  // parallel: it meets the normal at no single depth
+        // A + t d = P + u c
+        const double t = (qy * cx - qx * cy) / den;
+        const double u = (qy * dx - qx * dy) / den;
+        if (!(t >= 0.0 && t <= 1.0 && u >= 0.0 && u <= 1.0)) continue;
+        if (cx * e[4] + cy * e[5] < 0.0) continue;  // leaving the rail there
+        ends[k].depth = std::max(ends[k].depth, 2.0 * rr * t);
+      }
+    });
+  }
+  return ends;
 }
 
 std::vector<std::size_t> sagging_spans(const BeltPath& path) {
