@@ -734,6 +734,33 @@ TEST(DynamicsLayoutCli, AKinkedSlopedCatenaryStarts) {
   }
 }
 
+// A steep sloped catenary whose tangent lay leaves a wheel bare starts as it did before the
+// tangent lay, through the command: the driven wheel at (60, −400) mm from the driver, z 17 both,
+// 80 links. Laid tangent to its wheels the driven wheel keeps 0.62 of a pitch of wrap and no
+// roller, not a start (refused for it: "at most 70 links start so"); laid between the span's
+// tangent points, across its fold (a = 6.3 mm), every link is one pitch and each wheel has a
+// roller, as before. 120 links are refused as before: laid so, the catenary's a (5.3 mm) is under
+// the roller's radius, named with the e of that lay (1175.73 mm; the tangent lay's, 1153.63 mm,
+// left the driven wheel bare), and the most that start, 86 (before the fallback: 70), start.
+TEST(DynamicsLayoutCli, ASteepSlopeBareOnTheTangentLayStartsAcrossItsFold) {
+  auto with_links = [](int links) {
+    return two_wheel_catenary("steep", links, "60 mm", "-400 mm");
+  };
+  for (const int links : {80, 86}) {
+    const CliRun r = run("dynamics " + with_links(links) + " --format json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["links"], links);
+    EXPECT_NEAR(j["laid_pitch"].get<double>(), kPitch, 1e-12 * kPitch);
+    EXPECT_NEAR(j["slack"].get<double>(), links * kPitch - j["path_length"].get<double>(), 1e-12);
+  }
+  const CliRun longer = run("dynamics " + with_links(120) + " --format json");
+  EXPECT_EQ(longer.status, 2);
+  EXPECT_NE(longer.err.find("its own other strand"), std::string::npos) << longer.err;
+  EXPECT_EQ(named_count(longer.err), 86) << longer.err;
+  EXPECT_NEAR(named_mm(longer.err, "need e = "), 1175.73, 0.005) << longer.err;
+}
+
 // A start with slack through the command: examples/dynamics_three_wheels.toml (55 links fit its
 // path) given 56 links and gravity starts with the extra 17 mm sagging in the span facing down
 // (idler -> driven), every link one pitch: `laid_pitch` the pitch, `slack` = 56 p − the path's

@@ -851,9 +851,10 @@ TEST(DynamicsPocketDiscreteGradient, AcrossAJumpTheCorrectionsSlopeMatchesTheDif
 // then the whole of J's part): within 1e-4 of it (6.5e-7 at r = 2.2, where the code's J,
 // bracketed to 1e-9 c of each moved step, enters S whole; 2.7e-8 to 6.3e-8 within (1, 2); dleft
 // dropped 1.0–1.5, mis-signed 2.0–3.0). The differences' error is J's rounding over 2h (5.3e-5
-// at r = 2.2 with h = 1e-7, 5.5e-4 with h = 1e-8), their truncation, O(h²), below 3e-9 (all
-// misses below 3.8e-8 with h = 4e-5). (Across the line J moves with the crossing's place, which ∂S
-// does not take: quasi-Newton there, not tested.)
+// at r = 2.2 with h = 1e-7, 5.5e-4 with h = 1e-8), their truncation, O(h²), below 3e-9 (the
+// misses within (1, 2) below 3.8e-8 with h = 4e-5; 8.3e-8 at r = 2.2, J's rounding). (Across the
+// line J moves with the crossing's place, which ∂S does not take: quasi-Newton there, not
+// tested.)
 TEST(DynamicsPocketDiscreteGradient, TheJumpsShareLeftBetweenRatiosOneAndTwo) {
   const Sprocket on = wheel8(true);
   const double c = kClearance, psi = 0.4, below = 60e-6, kc = kStiffness * c;

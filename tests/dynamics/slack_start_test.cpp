@@ -665,16 +665,21 @@ void expect_tangent_fit(const BeltPath& laid, std::size_t k, const std::vector<C
 // one of them folds so (the turn at its far wheel over 90°) and is laid tangent to its wheels
 // instead (AKinkedSlopedCatenaryIsLaidTangentToItsWheels): the path turning by less than 1e-9 rad
 // at every joint of its pieces, a roller on each wheel. Laid: (300, -300) and (200, -400) (before
-// at its node 0's phase, refused before that). Not laid: (60, -400) and (30, -400) (refused
-// before, the catenary between the tangent points tighter than a roller): tangent to its wheels
-// (a = 22.4 and 17.0 mm) each leaves the driven wheel 0.62 and 0.37 of a pitch of wrap and no
-// roller on it, not a start.
+// at its node 0's phase, refused before that). Tangent to its wheels (a = 22.4 and 17.0 mm)
+// (60, -400) and (30, -400) leave the driven wheel 0.62 and 0.37 of a pitch of wrap and no roller
+// on it, not a start: they are laid between the tangent points as before the tangent lay, across
+// the fold. (60, -400) is laid so (a = 6.3 mm, above the roller's 6.035 mm), a roller on each
+// wheel; (30, -400) is not (refused before too: that catenary tighter than a roller, a = 2.7 mm).
+// The e a refusal names (`laid_slack_extra`) is the laid path's: at (60, -400) not the tangent
+// lay's `slack_extra`.
 TEST(DynamicsSlackStart, ASlopedCatenaryIsLaidAtOnePitchOrRefused) {
   struct Case {
-    double x, y;  // [m] the second wheel's centre
+    double x, y;   // [m] the second wheel's centre
+    bool tangent;  // laid tangent to its wheels (else, when laid, between the tangent points)
   };
   int laid_count = 0;
-  for (const Case c : {Case{0.3, -0.3}, Case{0.2, -0.4}, Case{0.06, -0.4}, Case{0.03, -0.4}}) {
+  for (const Case c : {Case{0.3, -0.3, true}, Case{0.2, -0.4, true}, Case{0.06, -0.4, false},
+                       Case{0.03, -0.4, false}}) {
     const std::string what = std::to_string(c.x) + ", " + std::to_string(c.y);
     const std::vector<Circle> circles{{0.0, 0.0, pitch_radius(17)}, {c.x, c.y, pitch_radius(17)}};
     const std::vector<double> tip(2, pitch_radius(17) + 0.01);
@@ -683,6 +688,19 @@ TEST(DynamicsSlackStart, ASlopedCatenaryIsLaidAtOnePitchOrRefused) {
     BeltPath laid;
     const int links = 80;
     const LoopPlacement place = place_slack_loop(path, circles, {17, 17}, links, kPitch, laid);
+    // the e the command names for the count (`laid_slack_extra`): the laid path's extra over the
+    // taut path where laid (between the tangent points: not the tangent lay's `slack_extra`),
+    // else the solve's
+    const double named = laid_slack_extra(path, circles, {17, 17}, links, kPitch, {k});
+    const double solved = slack_extra(path, {k}, links, kPitch);
+    if (place.s.empty()) {
+      EXPECT_EQ(named, solved) << what;
+    } else {
+      EXPECT_NEAR(named, laid.length - path.length, 1e-12) << what;
+      EXPECT_EQ(std::abs(named - solved) > 1e-3, !c.tangent) << what << ": " << named;
+    }
+    std::printf("sloped (%s): e named %.6f mm, the solve's %.6f mm\n", what.c_str(), named * 1e3,
+                solved * 1e3);
     // the catenary of the chain's own extra (about the e a start needs): below a = d1/2 the sag
     // check names its other strand
     const BeltPath hang = sag_span(path, k, links * kPitch - path.length);
@@ -697,11 +715,10 @@ TEST(DynamicsSlackStart, ASlopedCatenaryIsLaidAtOnePitchOrRefused) {
         fold * 180.0 / kPi, strand.c_str());
     EXPECT_EQ(hang.pieces[k].hang_a < 0.5 * kRoller, strand.rfind("its own other strand", 0) == 0)
         << what << ": " << strand;
-    if (place.s.empty()) {
-      EXPECT_TRUE(laid.pieces.empty()) << what;
+    if (place.s.empty() || !c.tangent) {
+      EXPECT_TRUE(place.s.empty() == laid.pieces.empty()) << what;
       // the tangent lay that closes: less than a pitch of wrap left on the driven wheel
-      const double e = slack_extra(path, {k}, links, kPitch);
-      const BeltPath tangent = tangent_span(path, k, e);
+      const BeltPath tangent = tangent_span(path, k, solved);
       ASSERT_FALSE(tangent.pieces.empty()) << what;
       const PathPiece& w1 = tangent.pieces[(k + 1) % tangent.pieces.size()];
       EXPECT_LT(w1.to - w1.from, 2.0 * kPi / 17) << what;
@@ -709,7 +726,7 @@ TEST(DynamicsSlackStart, ASlopedCatenaryIsLaidAtOnePitchOrRefused) {
           "sloped (%s): tangent to its wheels a %.3f mm, the driven wheel's wrap %.3f of "
           "a pitch\n",
           what.c_str(), tangent.pieces[k].hang_a * 1e3, (w1.to - w1.from) / (2.0 * kPi / 17));
-      continue;
+      if (place.s.empty()) continue;
     }
     ++laid_count;
     ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links)) << what;
@@ -719,13 +736,24 @@ TEST(DynamicsSlackStart, ASlopedCatenaryIsLaidAtOnePitchOrRefused) {
     double turn = 0.0;
     for (std::size_t j = 0; j < laid.pieces.size(); ++j)
       turn = std::max(turn, std::abs(joint_turn(laid, j)));
-    EXPECT_LT(turn, 1e-9) << what;
-    std::printf("sloped (%s): tangent to its wheels a %.3f mm, largest turn at a joint %.3g rad\n",
-                what.c_str(), laid.pieces[k].hang_a * 1e3, turn);
+    if (c.tangent) {
+      EXPECT_LT(turn, 1e-9) << what;
+    } else {
+      // between the tangent points: the span's ends on the taut path's, across the fold
+      EXPECT_GT(turn, 0.5 * kPi) << what;
+      EXPECT_LT(
+          std::hypot(laid.pieces[k].x0 - path.pieces[k].x0, laid.pieces[k].y0 - path.pieces[k].y0),
+          1e-12)
+          << what;
+      EXPECT_GT(laid.pieces[k].hang_a, 0.5 * kRoller) << what;
+    }
+    std::printf("sloped (%s): %s a %.3f mm, largest turn at a joint %.3g rad\n", what.c_str(),
+                c.tangent ? "tangent to its wheels" : "between the tangent points",
+                laid.pieces[k].hang_a * 1e3, turn);
     expect_every_link_one_pitch(loop_state(laid, circles, place, 0.0), links, what,
                                 1e-11 * links * kPitch);
   }
-  EXPECT_EQ(laid_count, 2);
+  EXPECT_EQ(laid_count, 3);  // (0.3, -0.3) and (0.2, -0.4) m tangent, (0.06, -0.4) m between
 }
 
 // The catenary tangent from below to two circles of radius r, centres d = (dx, dy) apart, with

@@ -272,13 +272,13 @@ PathPoint sag_point(const PathPiece& q, double along);
 /// with its slack span (`slack_span`) sagging by the extra length that closes the loop
 /// (`slack_extra`). `laid` gets that path: the span sagging between its tangent points
 /// (`sag_spans`), but where that lay folds (a catenary turning back by more than 90° at a wheel)
-/// or closes for no e, the one slack span laid tangent to its wheels (`tangent_span`) when that
-/// closes. Node 0 is at the path's start but where neither closes from there (a node passing a
-/// fold of the path): then at the phase over the first link that closes it at the e where the
-/// walk's end jumps over the closure, or at the longest catenary where the walk still overshoots.
-/// Empty placement if N·pitch does not exceed the path's length, the sag cannot be solved, any
-/// link's chord (the closing one too) is off `pitch` by more than 1e-9 of it, or a wheel is left
-/// without a roller on it (a tangent lay's shortened wrap).
+/// or closes for no e, the one slack span tangent to its wheels (`tangent_span`) when that closes
+/// and is laid (else the lay between the tangent points as it is). Node 0 is at the path's start
+/// but where neither closes from there (a node passing a fold of the path): then at the phase
+/// over the first link that closes it at the e where the walk's end jumps over the closure, or at
+/// the longest catenary where the walk still overshoots. Empty placement if N·pitch does not
+/// exceed the path's length, the sag cannot be solved, any link's chord (the closing one too) is
+/// off `pitch` by more than 1e-9 of it, or a wheel is left without a roller on it.
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid);
@@ -304,8 +304,8 @@ BeltPath sag_spans(const BeltPath& path, const std::vector<std::size_t>& pieces,
 /// it there. INFINITY when the walk overshoots at the most e the spans take, at the longest
 /// catenary at every phase of node 0 the phase search tries (the count needs more), NAN when no e
 /// is found (or N·pitch does not exceed the path's length). Where that lay folds or closes for no
-/// e, the e of the tangent lay (`tangent_span`, one span: the path's extra over the taut path)
-/// when that closes, bisected between N·pitch less the path's length and the longest catenary.
+/// e, the tangent lay's e (`tangent_span`: the path's extra over the taut path) when that closes,
+/// bisected up to the longest catenary (given also where `place_slack_loop` lays the other).
 double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
                    double pitch);
 
@@ -314,6 +314,13 @@ double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces,
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid, const std::vector<std::size_t>& pieces);
+
+/// The extra length e of the lay `place_slack_loop` lays for N = `nodes` (with `pieces`): the
+/// tangent lay's, or where that is not laid the lay between the tangent points' it lays instead;
+/// `slack_extra` where it lays none.
+double laid_slack_extra(const BeltPath& path, const std::vector<Circle>& circles,
+                        const std::vector<int>& teeth, int nodes, double pitch,
+                        const std::vector<std::size_t>& pieces);
 
 /// How many counts the search for the most links that start tries one by one before it bisects
 /// (`longest_count`'s and `links_that_start_phrase`'s default, one number for the search and the

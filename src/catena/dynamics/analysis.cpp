@@ -848,15 +848,16 @@ std::string links_that_start_text(const Setup& s, const std::vector<std::size_t>
 
 // What a refused slack is measured by, like with like: the sag's extra length e (the arcs' length
 // beyond their chords) the spans `pieces` take at most (`most`, with `guides`), against the e the
-// count given needs (`slack_extra`), and apart from them N p less the path's length, the chain's
-// own extra (less than e, said only when that e was found: a link's chord spans a little more than
-// a pitch of a curved path). Ends with "(here ...", for the caller to close.
+// count given needs (`laid_slack_extra`: the lay laid, else the solve's), and apart from them N p
+// less the path's length, the chain's own extra (less than e, said only when that e was found: a
+// link's chord spans a little more than a pitch of a curved path). Ends with "(here ...", for the
+// caller to close.
 std::string slack_measure_text(const Setup& s, const std::vector<std::size_t>& pieces, double most,
                                bool half_circle, const std::vector<Guide>& guides, int given) {
   auto shown = [](double x) { return format_g(x, 6); };
   auto mm = [](double x) { return format_g(x * 1e3, 6) + " mm"; };
   const double over = given * s.pitch - s.path.length;
-  const double need = slack_extra(s.path, pieces, given, s.pitch);
+  const double need = laid_slack_extra(s.path, s.circles, s.layout_teeth, given, s.pitch, pieces);
   double spans = 0.0;
   for (const std::size_t k : pieces) spans += s.path.pieces[k].length;
   const double half = (0.5 * kPi - 1.0) * spans;

@@ -1706,10 +1706,11 @@ SlackSolve tangent_solve(const BeltPath& path, std::size_t piece, int nodes, dou
 // The slack solve: between the tangent points (`chord_end_solve`) where that closes without a
 // fold (every start laid so before is laid the same), else, for one span, tangent to its wheels
 // (`tangent_solve`) where that closes, else the answer between the tangent points as it is (at
-// node 0's phase, or refused).
+// node 0's phase, or refused). `between`, when given, gets the answer between the tangent points.
 SlackSolve slack_solve(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
-                       double pitch) {
+                       double pitch, SlackSolve* between = nullptr) {
   const SlackSolve chord = chord_end_solve(path, pieces, nodes, pitch);
+  if (between != nullptr) *between = chord;
   if (pieces.size() != 1 || path.pieces.empty()) return chord;
   const bool closed = std::isfinite(chord.extra) && chord.start == 0.0;
   if (closed && !folds(path, sag_spans(path, pieces, chord.extra), pieces)) return chord;
@@ -1717,23 +1718,12 @@ SlackSolve slack_solve(const BeltPath& path, const std::vector<std::size_t>& pie
   return std::isfinite(tangent.extra) ? tangent : chord;
 }
 
-}  // namespace
-
-double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
-                   double pitch) {
-  return slack_solve(path, pieces, nodes, pitch).extra;
-}
-
-LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
-                               const std::vector<int>& teeth, int nodes, double pitch,
-                               BeltPath& laid, const std::vector<std::size_t>& pieces) {
-  laid = BeltPath{};
-  const SlackSolve solved = slack_solve(path, pieces, nodes, pitch);
-  if (!std::isfinite(solved.extra)) return {};
-  const BeltPath sagging = solved.tangent ? tangent_span(path, pieces[0], solved.extra)
-                                          : sag_spans(path, pieces, solved.extra);
+// The start of N nodes on `sagging` from node 0 at arc length `start`, or an empty placement where
+// it leaves a wheel with no roller or a link off the pitch (below).
+LoopPlacement lay_slack_loop(const BeltPath& sagging, const std::vector<Circle>& circles,
+                             const std::vector<int>& teeth, int nodes, double pitch, double start) {
   // the wheels' seats as on a taut path: place_loop's chord solve lands on `pitch` itself here
-  LoopPlacement out = place_loop_from(sagging, circles, teeth, nodes, pitch, solved.start);
+  LoopPlacement out = place_loop_from(sagging, circles, teeth, nodes, pitch, start);
   if (out.s.empty()) return out;
   // every wheel with a roller on it (the tangent lay shortens its two wheels' wraps: at (30, −400)
   // mm, z 17 both, 80 links, the driven wheel's to 0.37 of a pitch, none seated on it), the
@@ -1747,8 +1737,65 @@ LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& 
     const PathPoint b = path_point(sagging, out.s[(i + 1) % out.s.size()]);
     if (!(std::abs(std::hypot(b.x - a.x, b.y - a.y) - pitch) <= 1e-9 * pitch)) return {};
   }
-  laid = sagging;
   return out;
+}
+
+// A start with slack (`place_slack_loop`) and the e of its lay: `solved`'s, or (`solved` a
+// tangent lay not laid) `between`'s; `extra` NAN where none is laid.
+struct SlackLay {
+  LoopPlacement placement;
+  double extra = NAN;
+};
+SlackLay slack_lay(const BeltPath& path, const std::vector<Circle>& circles,
+                   const std::vector<int>& teeth, int nodes, double pitch, BeltPath& laid,
+                   const std::vector<std::size_t>& pieces, SlackSolve solved,
+                   const SlackSolve& between) {
+  laid = BeltPath{};
+  if (!std::isfinite(solved.extra)) return {};
+  if (solved.tangent) {
+    const BeltPath sagging = tangent_span(path, pieces[0], solved.extra);
+    LoopPlacement out = lay_slack_loop(sagging, circles, teeth, nodes, pitch, solved.start);
+    if (!out.s.empty()) {
+      laid = sagging;
+      return {out, solved.extra};
+    }
+    // the tangent lay not laid (a wheel left with no roller: at (60, −400) mm, z 17 both, 80
+    // links, the driven wheel's wrap cut to 0.62 of a pitch): the lay between the tangent points
+    // as it is, across its fold or at node 0's phase, laid as before the tangent lay (a = 6.3 mm
+    // there), so that no start laid so before is refused
+    solved = between;
+    if (!std::isfinite(solved.extra)) return {};
+  }
+  const BeltPath sagging = sag_spans(path, pieces, solved.extra);
+  LoopPlacement out = lay_slack_loop(sagging, circles, teeth, nodes, pitch, solved.start);
+  if (out.s.empty()) return {out, NAN};
+  laid = sagging;
+  return {out, solved.extra};
+}
+
+}  // namespace
+
+double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
+                   double pitch) {
+  return slack_solve(path, pieces, nodes, pitch).extra;
+}
+
+LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
+                               const std::vector<int>& teeth, int nodes, double pitch,
+                               BeltPath& laid, const std::vector<std::size_t>& pieces) {
+  SlackSolve between;
+  const SlackSolve solved = slack_solve(path, pieces, nodes, pitch, &between);
+  return slack_lay(path, circles, teeth, nodes, pitch, laid, pieces, solved, between).placement;
+}
+
+double laid_slack_extra(const BeltPath& path, const std::vector<Circle>& circles,
+                        const std::vector<int>& teeth, int nodes, double pitch,
+                        const std::vector<std::size_t>& pieces) {
+  SlackSolve between;
+  const SlackSolve solved = slack_solve(path, pieces, nodes, pitch, &between);
+  BeltPath laid;
+  const SlackLay lay = slack_lay(path, circles, teeth, nodes, pitch, laid, pieces, solved, between);
+  return lay.placement.s.empty() ? solved.extra : lay.extra;
 }
 
 LongestCount longest_count(int lo, int hi, const std::function<bool(int)>& starts, int scan) {
