@@ -674,7 +674,9 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
         "at most the roller radius (6.035 mm) into it",
         "start_angle >= ", " deg and end_angle <= ", " deg clears this check only",
         "and is refused at an entry end without a lead-in: give that end one)",
-        "; clear of its contact (its surface at most touching the rollers): start_angle >= "})
+        "; clear of its contact (its surface at most touching the rollers): start_angle >= ",
+        " (with a lead-in at an entry end that has none: a bare entry end near the path may stop "
+        "the run)"})
     EXPECT_NE(cut.err.find(text), std::string::npos) << text << "\n" << cut.err;
   // the clear part named lies within ±122.84 deg, where the spans pass the ring's surface
   const double from = named_after(cut.err, "start_angle >= ");
@@ -858,6 +860,21 @@ TEST(DynamicsBoundaryCli, ARailsSquareEntryEndMayNotBePressedIntoTheStartingPath
   EXPECT_EQ(ok.status, 0) << ok.err;
   EXPECT_TRUE(ok.err.empty()) << ok.err;
   EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
+  // a sliver 0.5 µm long, shorter than the contact's ramp, pressed 4 mm in: its two ends lie
+  // within ε of each other but close no ring (a straight rail), so both are square
+  std::ostringstream sliver_y;
+  sliver_y.precision(12);
+  sliver_y << run_height - 6.035 + 4.0 << " mm";
+  const CliRun sliver =
+      run("dynamics " + write("sliver.toml",
+                              "[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"100 mm\"\n"
+                              "y0 = \"" +
+                                  sliver_y.str() + "\"\nx1 = \"100.0005 mm\"\ny1 = \"" +
+                                  sliver_y.str() + "\"\n"));
+  EXPECT_EQ(sliver.status, 2) << sliver.err;
+  EXPECT_NE(sliver.err.find("dynamics.guide[0] (line 19) = its square end at (x1, y1)"),
+            std::string::npos)
+      << sliver.err;
   std::filesystem::remove_all(dir);
 }
 

@@ -2383,7 +2383,9 @@ Setup parse(const analysis::Inputs& in) {
                              "radius into its surface, which need not run, and is refused at an "
                              "entry end without a lead-in: give that end one)";
     if (!touches.empty())
-      remedy += "; clear of its contact (its surface at most touching the rollers): " + touches;
+      remedy += "; clear of its contact (its surface at most touching the rollers): " + touches +
+                " (with a lead-in at an entry end that has none: a bare entry end near the path "
+                "may stop the run)";
     issues.push_back(
         {name, cut.piece + " " + mm(cut.depth - r) + " past its surface at " + where,
          "a rail the chain's starting path lies on, not across or in: in its contact (between "

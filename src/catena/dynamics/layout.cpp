@@ -1245,8 +1245,13 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
       bool joined = false;
       auto o = std::lower_bound(by_x.begin(), by_x.end(), e[0] - eps,
                                 [&](std::size_t j, double x) { return all[j][0] < x; });
+      // the rail's own other end closes it only as a ring (an arc sweeping more than a half
+      // turn): a rail shorter than ε is a sliver with two square ends, not a closed rail
+      const Guide& g = guides[rails[k]];
+      const bool ring = g.kind != Guide::Kind::kStraight && g.end_angle - g.start_angle > kPi;
       for (; o != by_x.end() && all[*o][0] <= e[0] + eps && !joined; ++o)
-        joined = *o != self && std::hypot(all[*o][0] - e[0], all[*o][1] - e[1]) <= eps;
+        joined = *o != self && (ring || *o != (self ^ 1)) &&
+                 std::hypot(all[*o][0] - e[0], all[*o][1] - e[1]) <= eps;
       if (joined) continue;
       ends.push_back({k, start, e[0], e[1], 0.0});
       at.push_back(e);
