@@ -274,6 +274,18 @@ TEST(DynamicsGuideHint, LiftOntoGuidesBitIdenticalToEveryPair) {
   EXPECT_GT(twice, 100);
 }
 
+// A straight rail from (x0, y0) to (x1, y1), the rollers of radius r on its left.
+Guide straight_rail(double x0, double y0, double x1, double y1, double r) {
+  Guide g;
+  g.kind = Guide::Kind::kStraight;
+  g.x0 = x0;
+  g.y0 = y0;
+  g.x1 = x1;
+  g.y1 = y1;
+  g.roller_radius = r;
+  return g;
+}
+
 // Two rails whose lifts disagree (docs/models/dynamics.md, "Guides against the starting path:
 // several rails"), 12B rollers (r = 6.035 mm): a rail A along y = 0 (x from 0 to 0.1 m, rollers
 // above) and a rail B, 9.5 mm above it (x from 0.02 to 0.08 m, rollers above): a node 3 mm into A
@@ -285,14 +297,7 @@ TEST(DynamicsGuideHint, LiftOntoGuidesBitIdenticalToEveryPair) {
 TEST(DynamicsGuideHint, LiftNamesANodePulledThroughOrLeftInsideAnotherRail) {
   const double r = 0.006035;
   const auto rail = [&](double x0, double y0, double x1, double y1) {
-    Guide g;
-    g.kind = Guide::Kind::kStraight;
-    g.x0 = x0;
-    g.y0 = y0;
-    g.x1 = x1;
-    g.y1 = y1;
-    g.roller_radius = r;
-    return g;
+    return straight_rail(x0, y0, x1, y1, r);
   };
   const std::vector<Guide> stacked{rail(0.0, 0.0, 0.1, 0.0), rail(0.02, 0.0095, 0.08, 0.0095)};
   // node 0 under B, 3 mm into A; node 1 into A beyond B's ends; node 2 clear of both
@@ -332,14 +337,7 @@ TEST(DynamicsGuideHint, LiftNamesANodePulledThroughOrLeftInsideAnotherRail) {
 TEST(DynamicsGuideHint, LiftNamesTheConflictsKindByDepthWhateverTheOrder) {
   const double r = 0.006035;
   const auto rail = [&](double x0, double y0, double x1, double y1) {
-    Guide g;
-    g.kind = Guide::Kind::kStraight;
-    g.x0 = x0;
-    g.y0 = y0;
-    g.x1 = x1;
-    g.y1 = y1;
-    g.roller_radius = r;
-    return g;
+    return straight_rail(x0, y0, x1, y1, r);
   };
   const std::vector<Guide> swapped{rail(0.02, 0.0095, 0.08, 0.0095), rail(0.0, 0.0, 0.1, 0.0)};
   std::vector<double> x{0.05}, y{r - 0.003};

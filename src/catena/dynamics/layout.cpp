@@ -9,12 +9,24 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <utility>
 
 namespace catena::dynamics {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// The path with each piece's start at the sum of the lengths before it, and its length the sum.
+BeltPath with_starts(BeltPath out) {
+  double along = 0.0;
+  for (PathPiece& r : out.pieces) {
+    r.start = along;
+    along += r.length;
+  }
+  out.length = along;
+  return out;
+}
 
 // x reduced to [0, 2π), with values within `eps` below 2π taken as 0 (a tangent that coincides
 // with the current one up to rounding).
@@ -558,13 +570,7 @@ BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra) {
     q.hang_a = hang.a;
     q.hang_u = hang.u;
     q.length = arc;
-    double along = 0.0;
-    for (PathPiece& r : out.pieces) {
-      r.start = along;
-      along += r.length;
-    }
-    out.length = along;
-    return out;
+    return with_starts(std::move(out));
   }
   double lo = 1e-12, hi = 0.5 * kPi;
   for (int it = 0; it < 200; ++it) {
@@ -585,13 +591,7 @@ BeltPath sag_span(const BeltPath& path, std::size_t piece, double extra) {
   q.from = std::atan2(q.y0 - q.cy, q.x0 - q.cx);
   q.to = q.from + 2.0 * phi;
   q.length = 2.0 * rho * phi;
-  double along = 0.0;
-  for (PathPiece& r : out.pieces) {
-    r.start = along;
-    along += r.length;
-  }
-  out.length = along;
-  return out;
+  return with_starts(std::move(out));
 }
 
 // the most points the sag check samples along one arc (bounded work: sag_limit bisects over it)
@@ -1494,13 +1494,7 @@ BeltPath tangent_span(const BeltPath& path, std::size_t piece, double extra) {
       return out;
     }
   }
-  double along = 0.0;
-  for (PathPiece& r : out.pieces) {
-    r.start = along;
-    along += r.length;
-  }
-  out.length = along;
-  return out;
+  return with_starts(std::move(out));
 }
 
 namespace {
@@ -1513,6 +1507,29 @@ struct SlackSolve {
   bool tangent =
       false;  // laid tangent to both wheels (`tangent_span`), not between the tangent points
 };
+
+// `miss` bisected over (lo, hi) to the last bit (`falls`: it is positive at lo), stopping at a
+// non-finite miss or once the least |miss| met is at most `enough`: where that least was met.
+struct LeastMiss {
+  double at = NAN;
+  double miss = INFINITY;
+};
+template <class Miss>
+LeastMiss bisect_least(const Miss& miss, double lo, double hi, bool falls, double enough) {
+  LeastMiss out;
+  for (int it = 0; it < 200 && out.miss > enough; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;
+    const double g = miss(mid);
+    if (!std::isfinite(g)) break;
+    if (std::abs(g) < out.miss) {
+      out.miss = std::abs(g);
+      out.at = mid;
+    }
+    ((g > 0.0) == falls ? lo : hi) = mid;
+  }
+  return out;
+}
 
 // The phase at which N nodes walked at chord `pitch` close the loop on `sagging`: node 0's arc
 // length over the first link from the path's start, scanned in 64 steps and each change of sign
@@ -1532,20 +1549,9 @@ double closing_phase(const BeltPath& sagging, int nodes, double pitch, double to
       // bisected to the last bit (the miss there a rounding: place_loop's chord solve then
       // moves the chord by no more than that over the walk's N links), then taken when it is
       // within `tolerance`, not a jump
-      double lo = before, hi = here, best = NAN, least = INFINITY;
-      const bool falls = at_before > 0.0;
-      for (int it = 0; it < 200; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        if (!(mid > lo && mid < hi)) break;
-        const double g = miss(mid);
-        if (!std::isfinite(g)) break;
-        if (std::abs(g) < least) {
-          least = std::abs(g);
-          best = mid;
-        }
-        ((g > 0.0) == falls ? lo : hi) = mid;
-      }
-      if (least <= tolerance) return best;
+      // (stopping at an exact 0 leaves the least and its place as the full run would)
+      const LeastMiss least = bisect_least(miss, before, here, at_before > 0.0, 0.0);
+      if (least.miss <= tolerance) return least.at;
     }
     before = here;
     at_before = at_here;
@@ -1692,19 +1698,8 @@ SlackSolve tangent_solve(const BeltPath& path, std::size_t piece, int nodes, dou
   if (!(at_hi <= 0.0)) return {};
   // to the last bit (a miss at the tolerance would leave place_loop's chord solve moving the
   // links' chord off the pitch by up to 1e-11 of it), the least miss taken
-  double best = NAN, least = INFINITY;
-  for (int it = 0; it < 200 && least > 1e-15 * chain; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    if (!(mid > lo && mid < hi)) break;
-    const double g = miss(mid);
-    if (!std::isfinite(g)) break;
-    if (std::abs(g) < least) {
-      least = std::abs(g);
-      best = mid;
-    }
-    (g > 0.0 ? lo : hi) = mid;
-  }
-  if (least <= 1e-11 * chain) return {best, 0.0, true};
+  const LeastMiss least = bisect_least(miss, lo, hi, true, 1e-15 * chain);
+  if (least.miss <= 1e-11 * chain) return {least.at, 0.0, true};
   return {};
 }
 
