@@ -33,10 +33,13 @@ using chordal::simulated_profile;
 using chordal::variation_of;
 constexpr double kPi = std::numbers::pi;
 
-// The two pitch polygons: radii, centre distance (driven wheel at (c, 0)), pitch [m], teeth.
+// The two pitch polygons: radii, centre distance (driven wheel at (c, 0)), pitch [m], teeth; and
+// the play of the span's end rollers in their seats (`seat_play`; 0: the rollers at the seat
+// centres, the rigid chain's classical four-bar).
 struct Polygons {
   double r1, r2, c, p;
   int z1, z2;
+  double play = 0.0;  // [m] the two end rollers' shifts along the span, towards each other
 };
 
 // Wheel w's vertex i (any integer) at θ + 2π i/z on its pitch circle.
@@ -74,14 +77,16 @@ Tangent upper_tangent(const Polygons& g, double t1, double t2) {
   return {};
 }
 
-// The four-bar's closure f = |AB| − n p. A seated roller keeps its vertex, so the span's link
-// count is n = i − j + k, k fixed by the start (the driver's vertex index falls towards the span,
-// the driven's rises away from it). f is continuous through the seat switches — a roller seats on
-// the driver as A, A', B come in line: n and |AB| drop by one and p; one leaves the driven wheel
-// as A, B, B' come in line: both grow — and falls as θ2 grows (B moves towards A), by p a tooth.
+// The four-bar's closure f = |AB| − play − n p (the rollers' centres on the line AB, the end
+// rollers `play` in from their seats' centres together). A seated roller keeps its vertex, so the
+// span's link count is n = i − j + k, k fixed by the start (on both wheels the vertex index falls
+// towards the span and rises away from it). f is continuous through the seat switches — a roller
+// seats on the driver as A, A', B come in line: n and |AB| drop by one and p; one leaves the driven
+// wheel as A, B, B' come in line: both grow — and falls as θ2 grows (B moves towards A), by p a
+// tooth.
 double closure(const Polygons& g, double t1, double t2, int k) {
   const Tangent t = upper_tangent(g, t1, t2);
-  return t.length - (t.i - t.j + k) * g.p;
+  return t.length - g.play - (t.i - t.j + k) * g.p;
 }
 
 // θ2 with f(θ1, θ2) = 0 by bisection, bracketed from half a driven tooth either side of `guess`
@@ -147,6 +152,19 @@ Polygons polygons(const FarWheel& d) {
           d.driven_teeth};
 }
 
+// The end rollers' play in their seats, both ends together [m]. A roller of radius r in a seating
+// arc of radius r_i ≥ r (ISO 606), pulled along the span's direction û, rests where the contact's
+// normal is along the pull: its centre at the seat's centre + (r_i − r) û. The driver's end roller
+// A is pulled towards B and the driven wheel's B towards A, so both centres lie on the line AB,
+// (r_i − r) in from their vertices. The seats' dimensions are the model's (iso606_sprocket).
+double seat_play(const FarWheel& d) {
+  auto gap = [&](int teeth) {
+    const Sprocket w = iso606_sprocket(d.pitch, d.roller, d.width, teeth, 0.0, 0.0, 1.0, 0.0);
+    return w.seat_radius - w.roller_radius;
+  };
+  return gap(d.driver_teeth) + gap(d.driven_teeth);
+}
+
 // the span's length between the pitch circles' tangent points [m]
 double tangent_length(const Polygons& g) {
   return std::sqrt(g.c * g.c - (g.r2 - g.r1) * (g.r2 - g.r1));
@@ -159,13 +177,15 @@ int count_constant(const Polygons& g) {
 }
 
 // T1 such that the tight span's first transverse mode (a string fixed at the two wheels, f_n =
-// n c/2L, c = √(T1/q)) is f1 = 4.75 tooth frequencies (v/p): f1, f2, f3 = 4.75, 9.5, 14.25 v/p,
-// each at least a quarter of the tooth frequency from a tooth harmonic, as the far end on rails
-// places them (dynamics_chordal_slow_test.cpp). The polygons move the span's ends across at the
-// tooth frequency; at f1 = 5 v/p (T1 = 500 N at 0.1 m/s and 20 pitches) the swing resonates with
-// the 5th harmonic and the driven speed carries its foreshortening at 2 f1, growing over the run
-// (measured with J = 0.01 kg·m²: the speed's standard deviation 0.5 % of its mean at 0.5 s, 3 % at
-// 2 s).
+// n c/2L, c = √(T1/q)) is f1 = 4.75 tooth frequencies (v/p): between the 4th and 5th tooth
+// harmonics, so that f1, f2, f3 = 4.75, 9.5, 14.25 v/p each lie a quarter of the tooth frequency
+// from the nearest harmonic, the free span's modes off every harmonic as the far end on rails
+// places them (dynamics_chordal_slow_test.cpp, there 3.75). The instance matters: 3.75 and 5.75
+// meet the same criterion and fail (the doc's "A second wheel as the far end"). The polygons move
+// the span's ends across at the tooth frequency; at f1 = 5 v/p (T1 = 500 N at 0.1 m/s and 20
+// pitches) the swing resonates with the 5th harmonic and the driven speed carries its
+// foreshortening at 2 f1, growing over the run (measured with J = 0.01 kg·m²: the speed's
+// standard deviation 0.5 % of its mean at 0.5 s, 3 % at 2 s).
 FarWheel tight_off_harmonics(FarWheel d) {
   const double wave = 2 * 4.75 * d.chain_speed * tangent_length(polygons(d)) / d.pitch;
   d.tight = d.node_mass / d.pitch * wave * wave;
@@ -235,6 +255,9 @@ chordal::Result run(const FarWheel& d, int k) {
   }
   s.angle = {t1, t2};
   s.speed = {omega1, omega2};
+  // the driver's cut end, pulled along the bottom towards the driven wheel, must not reach its
+  // teeth within the run (at 0.05 m/s, 12/25 at 20 p: about 4.9 s; the run is 3.15 s)
+  const double reach = contact_reach(w2);
   Integrator integ(model, {.step = d.step, .theta = 0.6});
   chordal::Result out;
   const double tooth = 2 * kPi / d.driver_teeth;
@@ -242,6 +265,12 @@ chordal::Result run(const FarWheel& d, int k) {
   for (int q = 0; q < steps; ++q) {
     if (!integ.step(model, s).converged) {
       ADD_FAILURE() << "step " << q << " did not converge";
+      out.converged = false;
+      break;
+    }
+    if (std::hypot(s.x[0] - g.c, s.y[0]) < reach) {
+      ADD_FAILURE() << "the driver's cut end reaches the driven wheel's teeth at " << s.time
+                    << " s: shorten the run";
       out.converged = false;
       break;
     }
@@ -262,9 +291,10 @@ double largest_difference(const std::vector<double>& a, const std::vector<double
 }
 
 // The reference against its known limits (the header): the parallelogram's constant ratio, the
-// half-integer span's sin²(π/z) (2000 bins: the profile's slope between the jumps loses under
-// 1e-4 of it to the binning; the span's tilt, (1 − cos(π/z)) R/L ≈ 2e-3 rad, moves it by its
-// square), and the mean z1/z2 (a tooth of the driver turns the driven wheel by a tooth).
+// half-integer span's sin²(π/z) (the ratio is continuous at a seat switch, its slope jumps: the
+// extremes are kinks, and 2000 bins' means flatten them by about 7e-4 of the variation; the
+// span's tilt takes about 5e-5), and the mean z1/z2 (a tooth of the driver turns the driven wheel
+// by a tooth).
 TEST(DynamicsChordalDrive, FourBarReferenceHasTheKnownLimits) {
   for (int z : {9, 17, 25}) {
     FarWheel d;
@@ -291,32 +321,50 @@ TEST(DynamicsChordalDrive, FourBarReferenceHasTheKnownLimits) {
 
 // Validation (1) with a second wheel as the far end: the driven wheel's speed ω2/ω1, averaged
 // synchronously over 20, 40, 80 bins of the driver's tooth phase, against the four-bar's bin means
-// (kinematic_ratio), at z1 = z2 = 17 with the span 20 pitches (the parallelogram: constant
-// ratio) and 20.5 (the largest variation, sin²(π/z) = 0.0338 unbinned), and z1 = 12, z2 = 25 at
-// 20 pitches (no closed form: the four-bar only). 0.05 m/s (why, and the measured table: the
-// doc's "A second wheel as the far end"). Tolerances: where the four-bar varies, its variation
-// 1 − min/max within validation (1)'s 2 % and every bin within 5 % of its range (max − min) —
-// the profile's shape and phase; at the integer span, where it is constant, the driven wheel's
-// variation under a tenth of the half-integer span's, sin²(π/z). What would fail: the single
-// wheel's form (the level span's, binned; 1 − cos(π/z) unbinned) and the four-bar half a tooth
-// off — each checked below to lie outside the tolerance it replaces.
+// (kinematic_ratio) with the end rollers' seat play (seat_play), at z1 = z2 = 17 with the span 20
+// pitches (nearly a parallelogram: near-constant ratio), 20.25 (where the variation is most
+// sensitive to the span) and 20.5 (the largest variation, sin²(π/z) = 0.0338 unbinned, stationary
+// in the span), z1 = 12, z2 = 25 and the speed-up drive 25/12 at 20 pitches (no closed form: the
+// four-bar only). 0.05 m/s (why, and the measured table: the doc's "A second wheel as the far
+// end"). Tolerances: where the four-bar varies, its variation 1 − min/max within validation (1)'s
+// 2 % and every bin within 5 % of its range (max − min) — the profile's shape and phase; at the
+// integer span of equal wheels the driven wheel's variation under a tenth of the half-integer
+// span's, sin²(π/z). Two known misses are asserted as such (sign and size; `miss`, the largest
+// excess allowed): 17/17 at 20.75 pitches is over the four-bar by up to 2.1 %, 9/9 at 20.5 rings
+// at 80 bins (7.5 % over). What would fail: the single wheel's form (the level span's, binned;
+// 1 − cos(π/z) unbinned) and the four-bar half a tooth off — each checked below to lie outside the
+// tolerance it replaces.
 TEST(DynamicsChordalDrive, DrivenSpeedFollowsTheFourBar) {
   constexpr double kTol = 0.02, kShape = 0.05, kParallel = 0.1;
   struct Case {
     int z1, z2;
     double centre;
+    double miss = 0.0;    // a known miss: the variation over the four-bar's by more than kTol at
+                          // some bin count, by at most `miss`, and never under it by kTol
+    int shape_bins = 80;  // the largest bin count whose shape is asserted
   };
-  for (const Case c : {Case{17, 17, 20.0}, Case{17, 17, 20.5}, Case{12, 25, 20.0}}) {
+  // 25/12's 80-bin shape is not converged in the step (4.5 % of the range at 1e-4 s, 9.3 % at
+  // 5e-5 s: the bins after the driven wheel's seat switch)
+  const std::vector<Case> cases = {{17, 17, 20.0},   {17, 17, 20.25},         {17, 17, 20.5},
+                                   {12, 25, 20.0},   {25, 12, 20.0, 0.0, 40}, {17, 17, 20.75, 0.04},
+                                   {9, 9, 20.5, 0.1}};
+  for (const Case c : cases) {
     FarWheel d;
     d.driver_teeth = c.z1;
     d.driven_teeth = c.z2;
     d.centre = c.centre;
     d = tight_off_harmonics(d);
-    const Polygons g = polygons(d);
+    // the rule gives T1 ∝ v²: at a lower speed the "tight" span would be slacker than the cut
+    // slack side
+    ASSERT_GT(d.tight, d.slack) << "T1 under T2 at " << d.chain_speed << " m/s";
+    Polygons g = polygons(d);
+    g.play = seat_play(d);
     const int k = count_constant(g);
     const chordal::Result r = run(d, k);
     ASSERT_TRUE(r.converged) << c.z1 << "/" << c.z2 << " at " << c.centre;
     const double half = std::pow(std::sin(kPi / c.z1), 2);
+    const bool parallel = c.z1 == c.z2 && c.centre == std::floor(c.centre);
+    double over = -1.0;  // the largest var / four-bar − 1 over the bin counts
     for (int bins : {20, 40, 80}) {
       const std::vector<double> kin = kinematic_ratio(g, k, bins), sim = simulated_profile(r, bins);
       const std::vector<double> shifted = kinematic_ratio(g, k, bins, 0.5);
@@ -327,27 +375,38 @@ TEST(DynamicsChordalDrive, DrivenSpeedFollowsTheFourBar) {
       double mean = 0.0;
       for (const double v : sim) mean += v / bins;
       std::printf(
-          "z %d/%d, %.1f p, T1 %.1f N, %d bins: driven %.5f, four-bar %.5f (%.4f), single wheel "
+          "z %d/%d, %.2f p, T1 %.1f N, %d bins: driven %.5f, four-bar %.5f (%.4f), single wheel "
           "%.5f; largest difference %.2e (%.4f of the range), half a tooth off %.2e; mean %.6f "
           "(z1/z2 %.6f)\n",
-          c.z1, c.z2, c.centre, d.tight, bins, var, four_bar,
-          four_bar > 1e-9 ? var / four_bar : NAN, single, largest_difference(sim, kin),
-          largest_difference(sim, kin) / range, largest_difference(sim, shifted), mean,
-          double(c.z1) / c.z2);
+          c.z1, c.z2, c.centre, d.tight, bins, var, four_bar, var / four_bar, single,
+          largest_difference(sim, kin), parallel ? NAN : largest_difference(sim, kin) / range,
+          largest_difference(sim, shifted), mean, double(c.z1) / c.z2);
       const std::string where = std::to_string(c.z1) + "/" + std::to_string(c.z2) + " at " +
                                 std::to_string(c.centre) + " p, " + std::to_string(bins) + " bins";
       EXPECT_NEAR(mean * c.z2 / c.z1, 1.0, 1e-4) << where;
       // the single wheel's form would fail
       EXPECT_GT(std::abs(var / single - 1), kTol) << where;
-      if (four_bar < 1e-9) {  // the parallelogram
+      if (parallel) {
         EXPECT_LT(var, kParallel * half) << where;
         EXPECT_GT(single, kParallel * half) << where;
         continue;
       }
-      EXPECT_NEAR(var / four_bar, 1.0, kTol) << where;
-      EXPECT_LT(largest_difference(sim, kin), kShape * range) << where;
+      over = std::max(over, var / four_bar - 1);
       // half a tooth off would fail
       EXPECT_GT(largest_difference(sim, shifted), kShape * range) << where;
+      if (c.miss > 0) {
+        EXPECT_GT(var / four_bar - 1, -kTol) << where;
+        EXPECT_LT(var / four_bar - 1, c.miss) << where;
+        continue;
+      }
+      EXPECT_NEAR(var / four_bar, 1.0, kTol) << where;
+      if (bins <= c.shape_bins) {
+        EXPECT_LT(largest_difference(sim, kin), kShape * range) << where;
+      }
+    }
+    // still a miss: when it passes, it belongs with the cases above (and out of the doc's list)
+    if (c.miss > 0) {
+      EXPECT_GT(over, kTol) << c.z1 << "/" << c.z2 << " at " << c.centre << " p";
     }
   }
 }
