@@ -679,8 +679,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       // pockets alike; a pocket with the release (Sprocket::pocket_release) has it in its exact
       // blocks (dq_extra) already. On the mouth's ramp (Sprocket::pocket_mouth > 0, no release) the
       // term is approximate and untested: it takes the ramp's scaled damping as c and the force's
-      // direction as n, and the blocks there are quasi-Newton anyway (the ramp's own derivatives
-      // are left out); the command never sets a ramp.
+      // direction as n (the ramp's damper acts along the seat's n), so a damped ramp's blocks are
+      // quasi-Newton; its elastic blocks are exact (dq_extra, below and in the angle's coupling).
       const double normal = h * (th * sc.stiffness + sc.damping / h);
       const double tangent = h * th * sc.force * sc.curvature;
       const double rcx = qx - wheel.centre_x, rcy = qy - wheel.centre_y;
@@ -737,8 +737,9 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
         // entry −hθ tᵀE_q t − hθ tᵀE_v perp(v) − tᵀE_v t. The mouth's ramp the same way: its
         // dq_extra is the rest of its elastic ∂F/∂q beyond the fields (which the column above
         // takes), and its law turns with the wheel too (no dv_extra; 0 within the mouth, where
-        // its pockets' law is the fields'). Left out, Newton stalled on a driven wheel's joint on
-        // the ramp (docs/models/dynamics.md, "Pocket wheel: the discrete gradient").
+        // its pockets' law is the fields'). Left out, the matrix missed 1.65e-3 of a column
+        // (RampsNewtonMatrixOnADrivenWheelMatchesTheDifferences; docs/models/dynamics.md, "Pocket
+        // wheel: the discrete gradient").
         const double* eq = sc.dq_extra;
         const double* ev = sc.dv_extra;
         const double hq = h * th, px = -vy, py = vx;
