@@ -632,8 +632,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       }
       if (wheel.pocket && jacobian) {
         // the pocket's mouth ramp: the rest of the elastic ∂F/∂q on the diagonal block (its
-        // coupling to the wheel's angle and the damping's are left out: quasi-Newton, the residual
-        // is exact)
+        // coupling to a driven wheel's angle below, as the body's; the damping's is left out:
+        // quasi-Newton, the residual is exact)
         const double* e = sc.dq_extra;
         if (e[0] != 0.0 || e[1] != 0.0 || e[2] != 0.0 || e[3] != 0.0) {
           const double hq = h * th;
@@ -679,8 +679,8 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       // pockets alike; a pocket with the release (Sprocket::pocket_release) has it in its exact
       // blocks (dq_extra) already. On the mouth's ramp (Sprocket::pocket_mouth > 0, no release) the
       // term is approximate and untested: it takes the ramp's scaled damping as c and the force's
-      // direction as n, and the blocks there are quasi-Newton anyway (the ramp's own derivatives
-      // are left out); the command never sets a ramp.
+      // direction as n (the ramp's damper acts along the seat's n), so a damped ramp's blocks are
+      // quasi-Newton; its elastic blocks are exact (dq_extra, below and in the angle's coupling).
       const double normal = h * (th * sc.stiffness + sc.damping / h);
       const double tangent = h * th * sc.force * sc.curvature;
       const double rcx = qx - wheel.centre_x, rcy = qy - wheel.centre_y;
@@ -730,11 +730,16 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       brow_[ia][i] = {-dtt.x - hf * sc.ny, -dtt.y + hf * sc.nx};
       wdiag +=
           tx * dt.x + ty * dt.y - hf * (sc.nx * cx + sc.ny * cy) + spin * (tx * sc.nx + ty * sc.ny);
-      if (wheel.pocket && sc.surface == 3) {
+      if (wheel.pocket && (sc.surface == 3 || wheel.pocket_mouth > 0.0)) {
         // the body between the pockets: its whole ∂F/∂q and ∂F/∂v are dq_extra = E_q and
         // dv_extra = E_v (the fields give none), so by F(Rq, Rv, ψ + δ) = R F(q, v, ψ) the column
         // gains hθ E_q t + E_v t + hθ E_v perp(v), the row hθ tᵀE_q + tᵀE_v, and the wheel's own
-        // entry −hθ tᵀE_q t − hθ tᵀE_v perp(v) − tᵀE_v t
+        // entry −hθ tᵀE_q t − hθ tᵀE_v perp(v) − tᵀE_v t. The mouth's ramp the same way: its
+        // dq_extra is the rest of its elastic ∂F/∂q beyond the fields (which the column above
+        // takes), and its law turns with the wheel too (no dv_extra; 0 within the mouth, where
+        // its pockets' law is the fields'). Left out, the matrix missed 1.65e-3 of a column
+        // (RampsNewtonMatrixOnADrivenWheelMatchesTheDifferences; docs/models/dynamics.md, "Pocket
+        // wheel: the discrete gradient").
         const double* eq = sc.dq_extra;
         const double* ev = sc.dv_extra;
         const double hq = h * th, px = -vy, py = vx;
