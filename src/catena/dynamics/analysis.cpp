@@ -2819,6 +2819,51 @@ int output_every(const Setup& d) {
   return std::max(1, static_cast<int>(std::lround(d.interval / d.step)));
 }
 
+// A failed step whose roller crosses a rail's square end deeper than the contact's ramp ε
+// (docs/models/dynamics.md, "Guides against the starting path: the square ends", the run's
+// diagnostic): the guide as the case file counts it, the end, the node, its depth and the remedy,
+// the lead-in; none when no roller does (the step failed elsewhere: dynamics.not_converged).
+// The guides as given are the rails, the lead-in arcs (laid after them) close their ends.
+std::optional<Diagnostic> bare_end_struck(const Setup& d, const State& s,
+                                          const std::string& failed) {
+  std::vector<std::size_t> rails;
+  for (std::size_t g = 0; g < d.guides.size() && g < d.guide_names.size(); ++g)
+    if (d.guide_names[g].rfind("guide[", 0) == 0) rails.push_back(g);
+  const std::vector<SquareEnd> ends = square_ends(BeltPath{}, d.guides, rails);
+  const std::optional<EndStrike> hit =
+      square_end_strike(ends, d.guides, rails, s.x, s.y, s.vx, s.vy, d.step);
+  if (!hit) return std::nullopt;
+  const SquareEnd& end = ends[hit->end];
+  const Guide& rail = d.guides[rails[end.rail]];
+  const bool arc = rail.kind == Guide::Kind::kArc;
+  const std::string which = arc ? std::string(end.at_start ? "start_angle" : "end_angle")
+                                : std::string(end.at_start ? "(x0, y0)" : "(x1, y1)");
+  auto mm = [](double v) { return format_g(v * 1e3, 4) + " mm"; };
+  // a lead-in's arc ends R (1 − cos α) below the surface: past the roller's depth at the default
+  // 30° from R = g / (1 − cos 30°) (docs/cli.md, lead_in_angle), named rounded up
+  const double radius = up_to(hit->depth / (1.0 - std::cos(kPi / 6.0)) * 1e3, 3);
+  return Diagnostic{
+      Diagnostic::Severity::kError,
+      "dynamics.bare_rail_end",
+      failed + ": node " + std::to_string(hit->node) + " crosses the square end of dynamics." +
+          d.guide_names[rails[end.rail]] + " at " + which + " (" + format_g(end.x * 1e3, 4) + ", " +
+          format_g(end.y * 1e3, 4) + ") mm, where it runs onto the rail, " + mm(hit->depth) +
+          " into its contact, deeper than its contact's ramp (" + mm(rail.contact_smoothing) +
+          "): the roller is struck by that depth's force at once, on which a step need not "
+          "converge however small; the run stopped there. Give that end a lead-in "
+          "(lead_in_radius, lead_in_end = \"" +
+          (end.at_start ? "start" : "end") +
+          "\" or \"both\") whose arc ends deeper below the surface than the roller, "
+          "lead_in_radius (1 - cos lead_in_angle) > " +
+          mm(hit->depth) + " (at the default 30 deg, lead_in_radius >= " + format_g(radius, 3) +
+          " mm" +
+          "), or move the rail clear of the chain there (a bare entry end near the chain's path "
+          "may stop the run at any depth: the lead-in is the remedy that runs)",
+      hit->depth,
+      rail.contact_smoothing,
+      "m"};
+}
+
 Result run(const analysis::Inputs& in) {
   Result out;
   out.setup = parse(in);
@@ -3028,12 +3073,16 @@ Result run(const analysis::Inputs& in) {
     const StepReport rep = integ.step(model, s);
     out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
     if (!rep.converged) {
+      const std::string failed =
+          "step " + std::to_string(k + 1) + " (t = " + format_g(s.time + d.step, 6) +
+          " s) did not converge in " + newton_iterations_text(rep, integ.options().max_iterations);
+      if (std::optional<Diagnostic> struck = bare_end_struck(d, s, failed)) {
+        out.diagnostics.push_back(std::move(*struck));
+        break;
+      }
       out.diagnostics.push_back(
           {Diagnostic::Severity::kError, "dynamics.not_converged",
-           "step " + std::to_string(k + 1) + " (t = " + format_g(s.time + d.step, 6) +
-               " s) did not converge in " +
-               newton_iterations_text(rep, integ.options().max_iterations) +
-               "; the run stopped there (try a smaller step or theta nearer 1" +
+           failed + "; the run stopped there (try a smaller step or theta nearer 1" +
                (d.hinge_law.stick_stiffness > 0.0 ? ", or a smaller hinge_stick_stiffness" : "") +
                ")",
            s.time + d.step, d.duration});
