@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -187,6 +188,7 @@ TEST(DynamicsBoundaryCli, ALeadInRadiusIsBoundedByTheChainsLength) {
     EXPECT_EQ(ok.status, std::string(inside) == "0.1 m" ? 0 : 2) << inside << "\n" << ok.err;
     if (ok.status == 0) {
       EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
+      EXPECT_EQ(ok.out.find("dynamics.bare_rail_end"), std::string::npos);
     }
   }
   const CliRun over = run("dynamics " + write("over.toml", "0.6 m", ""));
@@ -246,6 +248,7 @@ TEST(DynamicsBoundaryCli, ALeadInMustClearTheChainsPathAndTheOtherGuides) {
   EXPECT_EQ(ok.status, 0) << ok.err;
   EXPECT_EQ(ok.err.find("error"), std::string::npos) << ok.err;
   EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
+  EXPECT_EQ(ok.out.find("dynamics.bare_rail_end"), std::string::npos);
   EXPECT_EQ(run("dynamics " + write("above.toml", above.str(), "")).status, 2);
   // the sweep named at the radius given clears too
   const double sweep = named_after(both.err, "lead_in_angle <= ");
@@ -308,6 +311,7 @@ TEST(DynamicsBoundaryCli, ALeadInAtARailRunningToTheTangentPointMayNotCloseInOnT
   EXPECT_EQ(ok.err.find("lead_in_radius"), std::string::npos) << ok.err;
   EXPECT_EQ(ok.out.find("\"error\""), std::string::npos) << ok.out;
   EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
+  EXPECT_EQ(ok.out.find("dynamics.bare_rail_end"), std::string::npos);
   const CliRun in = run("dynamics " + write("in.toml", "0.1 m"));
   EXPECT_EQ(in.status, 2) << in.err;
   EXPECT_NE(in.err.find("the lead-in at the end of guide[0] would run into the chain on "
@@ -504,6 +508,7 @@ TEST(DynamicsBoundaryCli, ScalesJustInsideTheirBoundsRun) {
                          " --duration 5ms --format json");
     EXPECT_EQ(r.status, 0) << key << "\n" << r.err;
     EXPECT_EQ(r.out.find("dynamics.not_converged"), std::string::npos) << key << "\n" << r.err;
+    EXPECT_EQ(r.out.find("dynamics.bare_rail_end"), std::string::npos) << key << "\n" << r.err;
     EXPECT_EQ(nlohmann::json::parse(r.out).at("summary").at("steps").get<int>(), 50) << key;
   }
   std::filesystem::remove_all(dir);
@@ -551,6 +556,7 @@ TEST(DynamicsBoundaryCli, ContactBoundsAcceptA06BAtCoarseSteps) {
     EXPECT_EQ(r.status, 0) << step << "\n" << r.err;
     EXPECT_EQ(r.err.find("contact_"), std::string::npos) << step << "\n" << r.err;
     EXPECT_EQ(r.out.find("dynamics.not_converged"), std::string::npos) << step;
+    EXPECT_EQ(r.out.find("dynamics.bare_rail_end"), std::string::npos) << step;
     if (r.status == 0) {
       EXPECT_EQ(nlohmann::json::parse(r.out).at("summary").at("steps").get<int>(), steps) << step;
     }
@@ -712,6 +718,7 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
       run("dynamics " + write("ring_clear.toml", ring(ct.str(), dt.str())) + " --format json");
   EXPECT_EQ(clear.status, 0) << clear.err;
   EXPECT_EQ(clear.out.find("dynamics.not_converged"), std::string::npos) << clear.err;
+  EXPECT_EQ(clear.out.find("dynamics.bare_rail_end"), std::string::npos) << clear.err;
 
   // lying on the chain: accepted and run (the flat arc, its entry end 0.07275 mm into the upper
   // run, with lead-ins: "the square ends")
@@ -723,6 +730,7 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
     const CliRun ok = run("dynamics " + write("on_chain.toml", text) + " --format json");
     ASSERT_EQ(ok.status, 0) << text << ok.err;
     EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos) << text;
+    EXPECT_EQ(ok.out.find("dynamics.bare_rail_end"), std::string::npos) << text;
   }
   // the bare flat arc: refused at its entry end (start_angle: the upper run moves towards -x),
   // 0.07275 mm into its contact
@@ -813,6 +821,7 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
           run("dynamics " + write("edge_touching.toml", lifted_text) + " --format json");
       EXPECT_EQ(runs.status, 0) << lifted_text << runs.err;
       EXPECT_EQ(runs.out.find("dynamics.not_converged"), std::string::npos) << lifted_text;
+      EXPECT_EQ(runs.out.find("dynamics.bare_rail_end"), std::string::npos) << lifted_text;
     }
   }
   std::filesystem::remove_all(dir);
@@ -860,6 +869,7 @@ TEST(DynamicsBoundaryCli, ARailsSquareEntryEndMayNotBePressedIntoTheStartingPath
   EXPECT_EQ(ok.status, 0) << ok.err;
   EXPECT_TRUE(ok.err.empty()) << ok.err;
   EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
+  EXPECT_EQ(ok.out.find("dynamics.bare_rail_end"), std::string::npos);
   // a sliver 0.5 µm long, shorter than the contact's ramp, pressed 4 mm in: its two ends lie
   // within ε of each other but close no ring (a straight rail), so both are square
   std::ostringstream sliver_y;
@@ -876,6 +886,93 @@ TEST(DynamicsBoundaryCli, ARailsSquareEntryEndMayNotBePressedIntoTheStartingPath
             std::string::npos)
       << sliver.err;
   std::filesystem::remove_all(dir);
+}
+
+// A roller striking a rail's bare entry end in the run (docs/models/dynamics.md, "Guides against
+// the starting path: the square ends", the run's diagnostic) on the lead-in loop: the straight rail
+// from 30 to 150 mm touching the upper run's rollers at the start (passing the start's check), in
+// ten copies k × 1e-10 mm higher (k = 0…9), run 0.1 s. A copy that stops (at least one: k = 2
+// stopped at step 451 with "did not converge … try a smaller step" before) ends with
+// dynamics.bare_rail_end, not dynamics.not_converged, naming the step, the roller's node,
+// dynamics.guide[0]'s entry end (x1, y1) (150, 30.77) mm, its depth (past ε, within the contact)
+// and the lead-in at "end" with the least radius at the default 30°; that lead-in typed back runs
+// the 0.1 s without a diagnostic; the copies that run through have none. A run that fails
+// elsewhere with the bare rail there (links of 1e10 N/m at a 2 ms step) keeps
+// dynamics.not_converged and its message byte for byte.
+TEST(DynamicsBoundaryCli, ARollerStrikingABareEntryEndIsNamedWithTheLeadIn) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_bare_end";
+  std::filesystem::create_directories(dir);
+  const auto write = [&](const std::string& name, const std::string& text) {
+    const std::filesystem::path file = dir / name;
+    std::ofstream(file) << kLeadInLoopHead << text;
+    return file.string();
+  };
+  const double run_height = 0.5 * 19.05 / std::sin(std::numbers::pi / 12.0);  // [mm]
+  const auto rail_at = [&](int k, const std::string& keys) {
+    char height[64];
+    std::snprintf(height, sizeof height, "%.12f mm", run_height - 6.035 + k * 1e-10);
+    return lead_in_rail(height, keys);
+  };
+  const auto codes = [](const CliRun& r) {
+    std::vector<std::string> found;
+    const auto j = nlohmann::json::parse(r.out);
+    for (const auto& g : j.at("diagnostics")) found.push_back(g.at("code").get<std::string>());
+    return found;
+  };
+  int stopped = 0;
+  for (int k = 0; k < 10; ++k) {
+    const CliRun r = run("dynamics " + write("bare.toml", rail_at(k, "")) +
+                         " --duration \"0.1 s\" --format json");
+    ASSERT_EQ(r.status, 0) << k << r.err;
+    if (r.err.empty()) {
+      EXPECT_TRUE(codes(r).empty()) << k;
+      continue;
+    }
+    ++stopped;
+    EXPECT_EQ(codes(r), std::vector<std::string>{"dynamics.bare_rail_end"}) << k << r.err;
+    for (const char* text :
+         {"catena: error: step ", " did not converge in ", " Newton iterations",
+          " crosses the square end of dynamics.guide[0] at (x1, y1) (150, 30.77) mm, where it "
+          "runs onto the rail, ",
+          "deeper than its contact's ramp (0.001 mm)", "the run stopped there",
+          "(lead_in_radius, lead_in_end = \"end\" or \"both\")"})
+      EXPECT_NE(r.err.find(text), std::string::npos) << k << text << "\n" << r.err;
+    EXPECT_EQ(r.err.find("try a smaller step"), std::string::npos) << k << r.err;
+    const double node = named_after(r.err, ": node ");
+    EXPECT_GE(node, 0.0) << r.err;
+    EXPECT_LT(node, 32.0) << r.err;
+    const double depth = named_after(r.err, "where it runs onto the rail, ");  // [mm]
+    EXPECT_GT(depth, 0.001) << r.err;
+    EXPECT_LE(depth, 2.0 * 6.035) << r.err;
+    // the lead-in named, typed back: R (1 - cos 30°) past the depth, and it runs
+    const double radius = named_after(r.err, "at the default 30 deg, lead_in_radius >= ");
+    EXPECT_GT(radius * (1.0 - std::cos(std::numbers::pi / 6.0)), depth) << r.err;
+    std::ostringstream keys;
+    keys << "lead_in_radius = \"" << radius << " mm\"\nlead_in_end = \"end\"\n";
+    const CliRun led = run("dynamics " + write("led.toml", rail_at(k, keys.str())) +
+                           " --duration \"0.1 s\" --format json");
+    EXPECT_EQ(led.status, 0) << led.err;
+    EXPECT_TRUE(led.err.empty()) << k << keys.str() << led.err;
+    EXPECT_TRUE(codes(led).empty()) << k;
+  }
+  EXPECT_GE(stopped, 1);
+  // a failure elsewhere, the bare end there: dynamics.not_converged as it was
+  std::string stiff = kLeadInLoopHead;
+  stiff = std::regex_replace(stiff, std::regex("axial_stiffness = [^\n]*"),
+                             "axial_stiffness = \"1e10 N/m\"");
+  stiff = std::regex_replace(stiff, std::regex("\nstep = [^\n]*"), "\nstep = \"2 ms\"");
+  const std::filesystem::path stiff_file = dir / "stiff.toml";
+  std::ofstream(stiff_file) << stiff << rail_at(0, "");
+  const CliRun other =
+      run("dynamics " + stiff_file.string() + " --duration \"0.05 s\" --format json");
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(other.status, 0) << other.err;
+  EXPECT_EQ(other.err,
+            "catena: error: step 4 (t = 0.008 s) did not converge in 50 Newton iterations in all, "
+            "from 2 starting points with at most 25 from each; the run stopped there (try a "
+            "smaller step or theta nearer 1)\n");
+  EXPECT_EQ(codes(other), std::vector<std::string>{"dynamics.not_converged"});
 }
 
 // The chain runs counter-clockwise round its path whichever side its driver is on (docs/models/
@@ -969,6 +1066,7 @@ TEST(DynamicsBoundaryCli, AFullRingHasNoSquareEnds) {
     EXPECT_EQ(r.status, 0) << from << r.err;
     EXPECT_TRUE(r.err.empty()) << from << r.err;
     EXPECT_EQ(r.out.find("dynamics.not_converged"), std::string::npos) << from;
+    EXPECT_EQ(r.out.find("dynamics.bare_rail_end"), std::string::npos) << from;
   }
   std::filesystem::remove_all(dir);
 }
