@@ -224,7 +224,7 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
 /// rails `rails`, indices into `guides`), the deepest crossing of an end's face, from outside the
 /// rail into it, by a node's straight move from (x, y) to (x + h vx, y + h vy) (the step's start
 /// and its constant-velocity predictor) more than the rail's contact ramp ε below the roller line
-/// (g in (ε, 2r]): the end (index into `ends`), the node and that g. None: no such crossing.
+/// (g in (ε, 2r), off from 2r): the end (index into `ends`), the node and that g. None: no such.
 struct EndStrike {
   std::size_t end = 0;   ///< index into `ends`
   std::size_t node = 0;  ///< the roller's node

@@ -1319,7 +1319,7 @@ std::optional<EndStrike> square_end_strike(const std::vector<SquareEnd>& ends,
       if (!(a0 <= 0.0 && a1 > 0.0)) continue;  // (a NaN fails too)
       const double f = -a0 / (a1 - a0);
       const double g = -((px + f * mx) * e.nx + (py + f * my) * e.ny);
-      if (!(g > eps && g <= 2.0 * r)) continue;
+      if (!(g > eps && g < 2.0 * r)) continue;  // the contact is off at g >= 2r
       if (!out || g > out->depth) out = EndStrike{k, i, g};
     }
   }
