@@ -889,30 +889,52 @@ TEST(DynamicsBoundaryCli, ARailsSquareEntryEndMayNotBePressedIntoTheStartingPath
 }
 
 // A roller striking a rail's bare entry end in the run (docs/models/dynamics.md, "Guides against
-// the starting path: the square ends", the run's diagnostic) on the lead-in loop: the straight rail
-// from 30 to 150 mm touching the upper run's rollers at the start (passing the start's check), in
-// ten copies k × 1e-10 mm higher (k = 0…9), run 0.1 s. A copy that stops (at least one: k = 2
-// stopped at step 451 with "did not converge … try a smaller step" before) ends with
-// dynamics.bare_rail_end, not dynamics.not_converged, naming the step, the roller's node,
-// dynamics.guide[0]'s entry end (x1, y1) (150, 30.77) mm, its depth (past ε, within the contact)
-// and the lead-in at "end" with the least radius at the default 30°; that lead-in typed back runs
-// the 0.1 s without a diagnostic; the copies that run through have none. A run that fails
-// elsewhere with the bare rail there (links of 1e10 N/m at a 2 ms step) keeps
-// dynamics.not_converged and its message byte for byte.
+// the starting path: the square ends", the run's diagnostic), on a case that reaches it whatever
+// the rounding: the lead-in loop's chain on the free layout, the driver at (0, 0) and the driven
+// wheel at (185, 0) mm on a take-up (1000 N along 0 deg, damping 3000 N s/m, travel up to 10 mm),
+// the lower run sagging with 8.4 mm of slack at the start; a straight rail over the lower run, its
+// free side down, from 130 to 60 mm at y = -R + r - 3 mm, 3 mm into where the straight lower run
+// would lie (the sag keeps the start's path clear of it). The take-up pulls the sag up onto the
+// rail's entry end (x1, y1), which the lower run's rollers (moving +x) cross from below the roller
+// line. Three copies, run 0.2 s: the rail k × 1e-10 mm up for k = 0 and 1, and k = 3 with a take-up
+// of 300 N damped by 1000 N s/m (its roller crosses the face in the step before the one that fails:
+// named from the last converged step's move), and k = 0 with a lead-in of 2 mm at 45 deg at the
+// rail's start (its exit end). Each stops with dynamics.bare_rail_end
+// alone, not dynamics.not_converged, naming the step, a node, dynamics.guide[0]'s (x1, y1)
+// (60, -33.77) mm, the depth (the JSON value g, past ε, within the contact) and the lead-in at
+// "end" with a sufficient radius, R (1 - cos α) past the depth, at the rail's own lead_in_angle
+// (45 deg) or else the default 30 deg; that lead-in typed back (at "end", or "both" at the rail's
+// angle) runs the 0.2 s without a diagnostic. The control: a failure elsewhere (links
+// of 1e10 N/m at a 2 ms step on the lead-in loop, which fails at step 4 without any rail) with a
+// rail 0.5 mm clear of the upper run's rollers ending at x1 = 149 mm, whose face node 24 crosses
+// in that step short of the ramp (g < ε: it fails the test if the strike's g > ε is dropped),
+// keeps dynamics.not_converged and its message byte for byte as they were.
 TEST(DynamicsBoundaryCli, ARollerStrikingABareEntryEndIsNamedWithTheLeadIn) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_bare_end";
   std::filesystem::create_directories(dir);
-  const auto write = [&](const std::string& name, const std::string& text) {
-    const std::filesystem::path file = dir / name;
-    std::ofstream(file) << kLeadInLoopHead << text;
-    return file.string();
+  const double R = 0.5 * 19.05 / std::sin(std::numbers::pi / 12.0), roller = 6.035;  // [mm]
+  struct Copy {
+    const char* force;
+    int damping, k;
+    int angle;  // [deg] the rail's lead-in at its start (exit) end at this lead_in_angle; 0: none
   };
-  const double run_height = 0.5 * 19.05 / std::sin(std::numbers::pi / 12.0);  // [mm]
-  const auto rail_at = [&](int k, const std::string& keys) {
-    char height[64];
-    std::snprintf(height, sizeof height, "%.12f mm", run_height - 6.035 + k * 1e-10);
-    return lead_in_rail(height, keys);
+  const auto takeup = [&](const Copy& c, const std::string& keys) {
+    std::string head = kLeadInLoopHead;
+    head = std::regex_replace(head, std::regex("speed = \"13 rad/s\"\n"),
+                              "speed = \"13 rad/s\"\ncentre_x = \"0 mm\"\ncentre_y = \"0 mm\"\n");
+    head +=
+        "centre_x = \"185 mm\"\ncentre_y = \"0 mm\"\ntakeup_direction = \"0 deg\"\n"
+        "takeup_force = \"" +
+        std::string(c.force) +
+        "\"\ntakeup_travel_max = \"10 mm\"\ntakeup_damping = " + std::to_string(c.damping) + "\n";
+    char y[64];
+    std::snprintf(y, sizeof y, "%.12f mm", -R + roller - 3.0 + c.k * 1e-10);
+    const std::filesystem::path file = dir / "takeup.toml";
+    std::ofstream(file) << head << "[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"130 mm\"\n"
+                        << "y0 = \"" << y << "\"\nx1 = \"60 mm\"\ny1 = \"" << y << "\"\n"
+                        << keys;
+    return run("dynamics " + file.string() + " --duration \"0.2 s\" --format json");
   };
   const auto codes = [](const CliRun& r) {
     std::vector<std::string> found;
@@ -920,20 +942,18 @@ TEST(DynamicsBoundaryCli, ARollerStrikingABareEntryEndIsNamedWithTheLeadIn) {
     for (const auto& g : j.at("diagnostics")) found.push_back(g.at("code").get<std::string>());
     return found;
   };
-  int stopped = 0;
-  for (int k = 0; k < 10; ++k) {
-    const CliRun r = run("dynamics " + write("bare.toml", rail_at(k, "")) +
-                         " --duration \"0.1 s\" --format json");
+  for (const Copy& c : {Copy{"1000 N", 3000, 0, 0}, Copy{"1000 N", 3000, 1, 0},
+                        Copy{"300 N", 1000, 3, 0}, Copy{"1000 N", 3000, 0, 45}}) {
+    const int k = c.k;
+    const std::string angle =
+        c.angle ? "lead_in_angle = \"" + std::to_string(c.angle) + " deg\"\n" : std::string();
+    const CliRun r =
+        takeup(c, c.angle ? "lead_in_radius = \"2 mm\"\nlead_in_end = \"start\"\n" + angle : "");
     ASSERT_EQ(r.status, 0) << k << r.err;
-    if (r.err.empty()) {
-      EXPECT_TRUE(codes(r).empty()) << k;
-      continue;
-    }
-    ++stopped;
-    EXPECT_EQ(codes(r), std::vector<std::string>{"dynamics.bare_rail_end"}) << k << r.err;
+    ASSERT_EQ(codes(r), std::vector<std::string>{"dynamics.bare_rail_end"}) << k << r.err;
     for (const char* text :
          {"catena: error: step ", " did not converge in ", " Newton iterations",
-          " crosses the square end of dynamics.guide[0] at (x1, y1) (150, 30.77) mm, where it "
+          " crosses the square end of dynamics.guide[0] at (x1, y1) (60, -33.77) mm, where it "
           "runs onto the rail, ",
           "deeper than its contact's ramp (0.001 mm)", "the run stopped there",
           "(lead_in_radius, lead_in_end = \"end\" or \"both\")"})
@@ -942,28 +962,48 @@ TEST(DynamicsBoundaryCli, ARollerStrikingABareEntryEndIsNamedWithTheLeadIn) {
     const double node = named_after(r.err, ": node ");
     EXPECT_GE(node, 0.0) << r.err;
     EXPECT_LT(node, 32.0) << r.err;
+    // the depth: the JSON's value g [m] (its limit ε), written to 4 digits in the message
+    const auto j = nlohmann::json::parse(r.out);
+    const double g = j.at("diagnostics").at(0).at("value").get<double>() * 1e3;  // [mm]
+    EXPECT_EQ(j.at("diagnostics").at(0).at("limit").get<double>(), 1e-6);
     const double depth = named_after(r.err, "where it runs onto the rail, ");  // [mm]
-    EXPECT_GT(depth, 0.001) << r.err;
-    EXPECT_LE(depth, 2.0 * 6.035) << r.err;
-    // the lead-in named, typed back: R (1 - cos 30°) past the depth, and it runs
-    const double radius = named_after(r.err, "at the default 30 deg, lead_in_radius >= ");
-    EXPECT_GT(radius * (1.0 - std::cos(std::numbers::pi / 6.0)), depth) << r.err;
+    EXPECT_NEAR(depth, g, 5e-4 * g) << r.err;
+    EXPECT_GT(g, 0.001) << r.err;
+    EXPECT_LT(g, 2.0 * roller) << r.err;
+    // the bound written rounded up: at or past g, by less than its last digit
+    const double bound = named_after(r.err, "lead_in_radius (1 - cos lead_in_angle) > ");
+    EXPECT_GE(bound, g) << r.err;
+    EXPECT_LT(bound - g, 1e-3 * g) << r.err;
+    // the lead-in named: R (1 - cos α) past the depth at the rail's lead_in_angle (else 30°),
+    // rounded up to 3 digits, and it runs
+    const double radius = named_after(
+        r.err, c.angle
+                   ? "at its lead_in_angle " + std::to_string(c.angle) + " deg, lead_in_radius >= "
+                   : std::string("at the default 30 deg, lead_in_radius >= "));
+    const double alpha = (c.angle ? c.angle : 30) * std::numbers::pi / 180.0;
+    const double least = g / (1.0 - std::cos(alpha));
+    EXPECT_GT(radius, least) << r.err;
+    EXPECT_LT(radius - least, 0.01 * least) << r.err;
     std::ostringstream keys;
-    keys << "lead_in_radius = \"" << radius << " mm\"\nlead_in_end = \"end\"\n";
-    const CliRun led = run("dynamics " + write("led.toml", rail_at(k, keys.str())) +
-                           " --duration \"0.1 s\" --format json");
+    keys << "lead_in_radius = \"" << radius << " mm\"\nlead_in_end = \""
+         << (c.angle ? "both" : "end") << "\"\n"
+         << angle;
+    const CliRun led = takeup(c, keys.str());
     EXPECT_EQ(led.status, 0) << led.err;
     EXPECT_TRUE(led.err.empty()) << k << keys.str() << led.err;
     EXPECT_TRUE(codes(led).empty()) << k;
   }
-  EXPECT_GE(stopped, 1);
-  // a failure elsewhere, the bare end there: dynamics.not_converged as it was
+  // a failure elsewhere, a bare end crossed in that step short of the ramp: not_converged as it was
   std::string stiff = kLeadInLoopHead;
   stiff = std::regex_replace(stiff, std::regex("axial_stiffness = [^\n]*"),
                              "axial_stiffness = \"1e10 N/m\"");
   stiff = std::regex_replace(stiff, std::regex("\nstep = [^\n]*"), "\nstep = \"2 ms\"");
+  char clear[64];
+  std::snprintf(clear, sizeof clear, "%.12f mm", R - roller - 0.5);
   const std::filesystem::path stiff_file = dir / "stiff.toml";
-  std::ofstream(stiff_file) << stiff << rail_at(0, "");
+  std::ofstream(stiff_file) << stiff << "[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"30 mm\"\n"
+                            << "y0 = \"" << clear << "\"\nx1 = \"149 mm\"\ny1 = \"" << clear
+                            << "\"\n";
   const CliRun other =
       run("dynamics " + stiff_file.string() + " --duration \"0.05 s\" --format json");
   std::filesystem::remove_all(dir);

@@ -822,10 +822,10 @@ TEST(DynamicsLeadIn, ARollerArrivingBelowAnArcRailsEndIsCaughtGradually) {
 // straight rail and the arc rail with the rollers outside and inside, at each end, a node moving
 // from 0.3 mm past the end onto the rail along it (0.5 mm over the step), g below the roller line
 // where it crosses the end's face: struck at g = 2 ε, 1 mm and 2r - 0.1 mm, named with that g
-// (to 1e-12 m), its node and its end; not at g = ε/2 (within the contact's ramp), g = 2r + 0.1 mm
-// (behind the contact), nor leaving the rail, nor stopping 0.1 mm short of the face. Of three
-// nodes the deepest crossing is named; with lead-ins at both ends no end is square and nothing is
-// struck.
+// (to 1e-12 m), its node and its end; an oblique move named with its g interpolated to where it
+// crosses the face; not at g = ε/2 (within the contact's ramp), g = 2r + 0.1 mm (behind the
+// contact), nor leaving the rail, nor stopping 0.1 mm short of the face. Of three nodes the deepest
+// crossing is named; with lead-ins at both ends no end is square and nothing is struck.
 TEST(DynamicsSquareEnd, ARollerCrossingABareEndDeeperThanTheRampIsNamed) {
   std::vector<Guide> rails{inclined_rail(0.0), arc_rail(false), arc_rail(true)};
   for (const Guide& rail : rails) {
@@ -871,6 +871,18 @@ TEST(DynamicsSquareEnd, ARollerCrossingABareEndDeeperThanTheRampIsNamed) {
       EXPECT_FALSE(strike({2.0 * r + 1e-4}).has_value()) << at_end;
       EXPECT_FALSE(strike({1e-3}, -2e-4, -0.5).has_value()) << "leaving " << at_end;
       EXPECT_FALSE(strike({1e-3}, 6e-4).has_value()) << "short " << at_end;
+      // an oblique move, from 0.5 mm below the roller line 0.3 mm before the face to 1.5 mm below
+      // it 0.2 mm past: g where it crosses, 0.5 + (1.5 - 0.5) 0.3/0.5 = 1.1 mm, not its start's
+      {
+        const double x0 = px + (r - 5e-4) * nx + 3e-4 * ox, y0 = py + (r - 5e-4) * ny + 3e-4 * oy;
+        const double x1 = px + (r - 1.5e-3) * nx - 2e-4 * ox,
+                     y1 = py + (r - 1.5e-3) * ny - 2e-4 * oy;
+        const std::vector<double> x{x0}, y{y0}, vx{(x1 - x0) / h}, vy{(y1 - y0) / h};
+        const std::optional<EndStrike> hit =
+            square_end_strike(ends, guides, given, x, y, vx, vy, h);
+        ASSERT_TRUE(hit.has_value()) << at_end;
+        EXPECT_NEAR(hit->depth, 1.1e-3, 1e-12) << "oblique " << at_end;
+      }
       // the deepest of three crossings
       const std::optional<EndStrike> deepest = strike({1e-3, 3e-3, 2e-3});
       ASSERT_TRUE(deepest.has_value());
