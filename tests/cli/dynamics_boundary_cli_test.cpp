@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -187,6 +188,7 @@ TEST(DynamicsBoundaryCli, ALeadInRadiusIsBoundedByTheChainsLength) {
     EXPECT_EQ(ok.status, std::string(inside) == "0.1 m" ? 0 : 2) << inside << "\n" << ok.err;
     if (ok.status == 0) {
       EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
+      EXPECT_EQ(ok.out.find("dynamics.bare_rail_end"), std::string::npos);
     }
   }
   const CliRun over = run("dynamics " + write("over.toml", "0.6 m", ""));
@@ -246,6 +248,7 @@ TEST(DynamicsBoundaryCli, ALeadInMustClearTheChainsPathAndTheOtherGuides) {
   EXPECT_EQ(ok.status, 0) << ok.err;
   EXPECT_EQ(ok.err.find("error"), std::string::npos) << ok.err;
   EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
+  EXPECT_EQ(ok.out.find("dynamics.bare_rail_end"), std::string::npos);
   EXPECT_EQ(run("dynamics " + write("above.toml", above.str(), "")).status, 2);
   // the sweep named at the radius given clears too
   const double sweep = named_after(both.err, "lead_in_angle <= ");
@@ -308,6 +311,7 @@ TEST(DynamicsBoundaryCli, ALeadInAtARailRunningToTheTangentPointMayNotCloseInOnT
   EXPECT_EQ(ok.err.find("lead_in_radius"), std::string::npos) << ok.err;
   EXPECT_EQ(ok.out.find("\"error\""), std::string::npos) << ok.out;
   EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
+  EXPECT_EQ(ok.out.find("dynamics.bare_rail_end"), std::string::npos);
   const CliRun in = run("dynamics " + write("in.toml", "0.1 m"));
   EXPECT_EQ(in.status, 2) << in.err;
   EXPECT_NE(in.err.find("the lead-in at the end of guide[0] would run into the chain on "
@@ -504,6 +508,7 @@ TEST(DynamicsBoundaryCli, ScalesJustInsideTheirBoundsRun) {
                          " --duration 5ms --format json");
     EXPECT_EQ(r.status, 0) << key << "\n" << r.err;
     EXPECT_EQ(r.out.find("dynamics.not_converged"), std::string::npos) << key << "\n" << r.err;
+    EXPECT_EQ(r.out.find("dynamics.bare_rail_end"), std::string::npos) << key << "\n" << r.err;
     EXPECT_EQ(nlohmann::json::parse(r.out).at("summary").at("steps").get<int>(), 50) << key;
   }
   std::filesystem::remove_all(dir);
@@ -551,6 +556,7 @@ TEST(DynamicsBoundaryCli, ContactBoundsAcceptA06BAtCoarseSteps) {
     EXPECT_EQ(r.status, 0) << step << "\n" << r.err;
     EXPECT_EQ(r.err.find("contact_"), std::string::npos) << step << "\n" << r.err;
     EXPECT_EQ(r.out.find("dynamics.not_converged"), std::string::npos) << step;
+    EXPECT_EQ(r.out.find("dynamics.bare_rail_end"), std::string::npos) << step;
     if (r.status == 0) {
       EXPECT_EQ(nlohmann::json::parse(r.out).at("summary").at("steps").get<int>(), steps) << step;
     }
@@ -712,6 +718,7 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
       run("dynamics " + write("ring_clear.toml", ring(ct.str(), dt.str())) + " --format json");
   EXPECT_EQ(clear.status, 0) << clear.err;
   EXPECT_EQ(clear.out.find("dynamics.not_converged"), std::string::npos) << clear.err;
+  EXPECT_EQ(clear.out.find("dynamics.bare_rail_end"), std::string::npos) << clear.err;
 
   // lying on the chain: accepted and run (the flat arc, its entry end 0.07275 mm into the upper
   // run, with lead-ins: "the square ends")
@@ -723,6 +730,7 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
     const CliRun ok = run("dynamics " + write("on_chain.toml", text) + " --format json");
     ASSERT_EQ(ok.status, 0) << text << ok.err;
     EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos) << text;
+    EXPECT_EQ(ok.out.find("dynamics.bare_rail_end"), std::string::npos) << text;
   }
   // the bare flat arc: refused at its entry end (start_angle: the upper run moves towards -x),
   // 0.07275 mm into its contact
@@ -813,6 +821,7 @@ TEST(DynamicsBoundaryCli, AGuideMayNotCrossTheChainsStartingPath) {
           run("dynamics " + write("edge_touching.toml", lifted_text) + " --format json");
       EXPECT_EQ(runs.status, 0) << lifted_text << runs.err;
       EXPECT_EQ(runs.out.find("dynamics.not_converged"), std::string::npos) << lifted_text;
+      EXPECT_EQ(runs.out.find("dynamics.bare_rail_end"), std::string::npos) << lifted_text;
     }
   }
   std::filesystem::remove_all(dir);
@@ -860,6 +869,7 @@ TEST(DynamicsBoundaryCli, ARailsSquareEntryEndMayNotBePressedIntoTheStartingPath
   EXPECT_EQ(ok.status, 0) << ok.err;
   EXPECT_TRUE(ok.err.empty()) << ok.err;
   EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
+  EXPECT_EQ(ok.out.find("dynamics.bare_rail_end"), std::string::npos);
   // a sliver 0.5 µm long, shorter than the contact's ramp, pressed 4 mm in: its two ends lie
   // within ε of each other but close no ring (a straight rail), so both are square
   std::ostringstream sliver_y;
@@ -876,6 +886,133 @@ TEST(DynamicsBoundaryCli, ARailsSquareEntryEndMayNotBePressedIntoTheStartingPath
             std::string::npos)
       << sliver.err;
   std::filesystem::remove_all(dir);
+}
+
+// A roller striking a rail's bare entry end in the run (docs/models/dynamics.md, "Guides against
+// the starting path: the square ends", the run's diagnostic), on a case that reaches it whatever
+// the rounding: the lead-in loop's chain on the free layout, the driver at (0, 0) and the driven
+// wheel at (185, 0) mm on a take-up (1000 N along 0 deg, damping 3000 N s/m, travel up to 10 mm),
+// the lower run sagging with 8.4 mm of slack at the start; a straight rail over the lower run, its
+// free side down, from 130 to 60 mm at y = -R + r - 3 mm, 3 mm into where the straight lower run
+// would lie (the sag keeps the start's path clear of it). The take-up pulls the sag up onto the
+// rail's entry end (x1, y1), which the lower run's rollers (moving +x) cross from below the roller
+// line. Three copies, run 0.2 s: the rail k × 1e-10 mm up for k = 0 and 1, and k = 3 with a take-up
+// of 300 N damped by 1000 N s/m (its roller crosses the face in the step before the one that fails:
+// named from the last converged step's move), and k = 0 with a lead-in of 2 mm at 45 deg at the
+// rail's start (its exit end). Each stops with dynamics.bare_rail_end
+// alone, not dynamics.not_converged, naming the step, a node, dynamics.guide[0]'s (x1, y1)
+// (60, -33.77) mm, the depth (the JSON value g, past ε, within the contact) and the lead-in at
+// "end" with a sufficient radius, R (1 - cos α) past the depth, at the rail's own lead_in_angle
+// (45 deg) or else the default 30 deg; that lead-in typed back (at "end", or "both" at the rail's
+// angle) runs the 0.2 s without a diagnostic. The control: a failure elsewhere (links
+// of 1e10 N/m at a 2 ms step on the lead-in loop, which fails at step 4 without any rail) with a
+// rail 0.5 mm clear of the upper run's rollers ending at x1 = 149 mm, whose face node 24 crosses
+// in that step short of the ramp (g < ε: it fails the test if the strike's g > ε is dropped),
+// keeps dynamics.not_converged and its message byte for byte as they were.
+TEST(DynamicsBoundaryCli, ARollerStrikingABareEntryEndIsNamedWithTheLeadIn) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_bare_end";
+  std::filesystem::create_directories(dir);
+  const double R = 0.5 * 19.05 / std::sin(std::numbers::pi / 12.0), roller = 6.035;  // [mm]
+  struct Copy {
+    const char* force;
+    int damping, k;
+    int angle;  // [deg] the rail's lead-in at its start (exit) end at this lead_in_angle; 0: none
+  };
+  const auto takeup = [&](const Copy& c, const std::string& keys) {
+    std::string head = kLeadInLoopHead;
+    head = std::regex_replace(head, std::regex("speed = \"13 rad/s\"\n"),
+                              "speed = \"13 rad/s\"\ncentre_x = \"0 mm\"\ncentre_y = \"0 mm\"\n");
+    head +=
+        "centre_x = \"185 mm\"\ncentre_y = \"0 mm\"\ntakeup_direction = \"0 deg\"\n"
+        "takeup_force = \"" +
+        std::string(c.force) +
+        "\"\ntakeup_travel_max = \"10 mm\"\ntakeup_damping = " + std::to_string(c.damping) + "\n";
+    char y[64];
+    std::snprintf(y, sizeof y, "%.12f mm", -R + roller - 3.0 + c.k * 1e-10);
+    const std::filesystem::path file = dir / "takeup.toml";
+    std::ofstream(file) << head << "[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"130 mm\"\n"
+                        << "y0 = \"" << y << "\"\nx1 = \"60 mm\"\ny1 = \"" << y << "\"\n"
+                        << keys;
+    return run("dynamics " + file.string() + " --duration \"0.2 s\" --format json");
+  };
+  const auto codes = [](const CliRun& r) {
+    std::vector<std::string> found;
+    const auto j = nlohmann::json::parse(r.out);
+    for (const auto& g : j.at("diagnostics")) found.push_back(g.at("code").get<std::string>());
+    return found;
+  };
+  for (const Copy& c : {Copy{"1000 N", 3000, 0, 0}, Copy{"1000 N", 3000, 1, 0},
+                        Copy{"300 N", 1000, 3, 0}, Copy{"1000 N", 3000, 0, 45}}) {
+    const int k = c.k;
+    const std::string angle =
+        c.angle ? "lead_in_angle = \"" + std::to_string(c.angle) + " deg\"\n" : std::string();
+    const CliRun r =
+        takeup(c, c.angle ? "lead_in_radius = \"2 mm\"\nlead_in_end = \"start\"\n" + angle : "");
+    ASSERT_EQ(r.status, 0) << k << r.err;
+    ASSERT_EQ(codes(r), std::vector<std::string>{"dynamics.bare_rail_end"}) << k << r.err;
+    for (const char* text :
+         {"catena: error: step ", " did not converge in ", " Newton iterations",
+          " crosses the square end of dynamics.guide[0] at (x1, y1) (60, -33.77) mm, where it "
+          "runs onto the rail, ",
+          "deeper than its contact's ramp (0.001 mm)", "the run stopped there",
+          "(lead_in_radius, lead_in_end = \"end\" or \"both\")"})
+      EXPECT_NE(r.err.find(text), std::string::npos) << k << text << "\n" << r.err;
+    EXPECT_EQ(r.err.find("try a smaller step"), std::string::npos) << k << r.err;
+    const double node = named_after(r.err, ": node ");
+    EXPECT_GE(node, 0.0) << r.err;
+    EXPECT_LT(node, 32.0) << r.err;
+    // the depth: the JSON's value g [m] (its limit ε), written to 4 digits in the message
+    const auto j = nlohmann::json::parse(r.out);
+    const double g = j.at("diagnostics").at(0).at("value").get<double>() * 1e3;  // [mm]
+    EXPECT_EQ(j.at("diagnostics").at(0).at("limit").get<double>(), 1e-6);
+    const double depth = named_after(r.err, "where it runs onto the rail, ");  // [mm]
+    EXPECT_NEAR(depth, g, 5e-4 * g) << r.err;
+    EXPECT_GT(g, 0.001) << r.err;
+    EXPECT_LT(g, 2.0 * roller) << r.err;
+    // the bound written rounded up: at or past g, by less than its last digit
+    const double bound = named_after(r.err, "lead_in_radius (1 - cos lead_in_angle) > ");
+    EXPECT_GE(bound, g) << r.err;
+    EXPECT_LT(bound - g, 1e-3 * g) << r.err;
+    // the lead-in named: R (1 - cos α) past the depth at the rail's lead_in_angle (else 30°),
+    // rounded up to 3 digits, and it runs
+    const double radius = named_after(
+        r.err, c.angle
+                   ? "at its lead_in_angle " + std::to_string(c.angle) + " deg, lead_in_radius >= "
+                   : std::string("at the default 30 deg, lead_in_radius >= "));
+    const double alpha = (c.angle ? c.angle : 30) * std::numbers::pi / 180.0;
+    const double least = g / (1.0 - std::cos(alpha));
+    EXPECT_GT(radius, least) << r.err;
+    EXPECT_LT(radius - least, 0.01 * least) << r.err;
+    std::ostringstream keys;
+    keys << "lead_in_radius = \"" << radius << " mm\"\nlead_in_end = \""
+         << (c.angle ? "both" : "end") << "\"\n"
+         << angle;
+    const CliRun led = takeup(c, keys.str());
+    EXPECT_EQ(led.status, 0) << led.err;
+    EXPECT_TRUE(led.err.empty()) << k << keys.str() << led.err;
+    EXPECT_TRUE(codes(led).empty()) << k;
+  }
+  // a failure elsewhere, a bare end crossed in that step short of the ramp: not_converged as it was
+  std::string stiff = kLeadInLoopHead;
+  stiff = std::regex_replace(stiff, std::regex("axial_stiffness = [^\n]*"),
+                             "axial_stiffness = \"1e10 N/m\"");
+  stiff = std::regex_replace(stiff, std::regex("\nstep = [^\n]*"), "\nstep = \"2 ms\"");
+  char clear[64];
+  std::snprintf(clear, sizeof clear, "%.12f mm", R - roller - 0.5);
+  const std::filesystem::path stiff_file = dir / "stiff.toml";
+  std::ofstream(stiff_file) << stiff << "[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"30 mm\"\n"
+                            << "y0 = \"" << clear << "\"\nx1 = \"149 mm\"\ny1 = \"" << clear
+                            << "\"\n";
+  const CliRun other =
+      run("dynamics " + stiff_file.string() + " --duration \"0.05 s\" --format json");
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(other.status, 0) << other.err;
+  EXPECT_EQ(other.err,
+            "catena: error: step 4 (t = 0.008 s) did not converge in 50 Newton iterations in all, "
+            "from 2 starting points with at most 25 from each; the run stopped there (try a "
+            "smaller step or theta nearer 1)\n");
+  EXPECT_EQ(codes(other), std::vector<std::string>{"dynamics.not_converged"});
 }
 
 // The chain runs counter-clockwise round its path whichever side its driver is on (docs/models/
@@ -969,6 +1106,7 @@ TEST(DynamicsBoundaryCli, AFullRingHasNoSquareEnds) {
     EXPECT_EQ(r.status, 0) << from << r.err;
     EXPECT_TRUE(r.err.empty()) << from << r.err;
     EXPECT_EQ(r.out.find("dynamics.not_converged"), std::string::npos) << from;
+    EXPECT_EQ(r.out.find("dynamics.bare_rail_end"), std::string::npos) << from;
   }
   std::filesystem::remove_all(dir);
 }

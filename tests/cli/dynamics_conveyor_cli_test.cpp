@@ -302,6 +302,7 @@ TEST(DynamicsConveyorCli, LeadInsOnArcGuidesCheckedAndRun) {
   ASSERT_EQ(ok.status, 0) << ok.err;
   EXPECT_EQ(ok.err.find("error"), std::string::npos) << ok.err;
   EXPECT_EQ(ok.out.find("dynamics.not_converged"), std::string::npos);
+  EXPECT_EQ(ok.out.find("dynamics.bare_rail_end"), std::string::npos);
   EXPECT_EQ(nlohmann::json::parse(ok.out)["guides"], 6);  // two arcs, four lead-in arcs
 
   const fs::path far = dir / "arc_lead_in_far.toml";
@@ -326,6 +327,7 @@ TEST(DynamicsConveyorCli, LeadInsOnArcGuidesCheckedAndRun) {
   const CliRun limited = run("dynamics " + limit.string() + " --format json");
   EXPECT_EQ(limited.status, 0) << limited.err;
   EXPECT_EQ(limited.out.find("dynamics.not_converged"), std::string::npos);
+  EXPECT_EQ(limited.out.find("dynamics.bare_rail_end"), std::string::npos);
 
   const fs::path bad = dir / "arc_lead_ins_bad.toml";
   std::ofstream(bad) << kLeadInLoopHead

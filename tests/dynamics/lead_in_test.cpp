@@ -11,8 +11,10 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "catena/dynamics/guide_hint.hpp"
 #include "catena/dynamics/integrator.hpp"
@@ -812,6 +814,85 @@ TEST(DynamicsLeadIn, ARollerArrivingBelowAnArcRailsEndIsCaughtGradually) {
           "%.4g N with the lead-in\n",
           inside ? "inside" : "outside", at_end ? "end" : "start", bare, led);
     }
+  }
+}
+
+// A roller striking a rail's square end in a step (square_end_strike; docs/models/dynamics.md,
+// "Guides against the starting path: the square ends", the run's diagnostic): on the inclined
+// straight rail and the arc rail with the rollers outside and inside, at each end, a node moving
+// from 0.3 mm past the end onto the rail along it (0.5 mm over the step), g below the roller line
+// where it crosses the end's face: struck at g = 2 ε, 1 mm and 2r - 0.1 mm, named with that g
+// (to 1e-12 m), its node and its end; an oblique move named with its g interpolated to where it
+// crosses the face; not at g = ε/2 (within the contact's ramp), g = 2r + 0.1 mm (behind the
+// contact), nor leaving the rail, nor stopping 0.1 mm short of the face. Of three nodes the deepest
+// crossing is named; with lead-ins at both ends no end is square and nothing is struck.
+TEST(DynamicsSquareEnd, ARollerCrossingABareEndDeeperThanTheRampIsNamed) {
+  std::vector<Guide> rails{inclined_rail(0.0), arc_rail(false), arc_rail(true)};
+  for (const Guide& rail : rails) {
+    const double r = rail.roller_radius, eps = rail.contact_smoothing, h = 1e-3;
+    const std::vector<Guide> guides{rail};
+    const std::vector<std::size_t> given{0};
+    const std::vector<SquareEnd> ends = square_ends(BeltPath{}, guides, given);
+    ASSERT_EQ(ends.size(), 2U);
+    for (const bool at_end : {false, true}) {
+      // the end's point, its free side's normal and the direction past it (out of the rail)
+      double px = 0.0, py = 0.0, nx = 0.0, ny = 0.0, ox = 0.0, oy = 0.0;
+      if (rail.kind == Guide::Kind::kArc) {
+        const ArcEnd e = arc_end(rail, at_end);
+        px = e.px, py = e.py, nx = e.nx, ny = e.ny, ox = e.ox, oy = e.oy;
+      } else {
+        const double len = std::hypot(rail.x1 - rail.x0, rail.y1 - rail.y0);
+        const double ux = (rail.x1 - rail.x0) / len, uy = (rail.y1 - rail.y0) / len;
+        px = at_end ? rail.x1 : rail.x0, py = at_end ? rail.y1 : rail.y0;
+        nx = -uy, ny = ux;
+        ox = at_end ? ux : -ux, oy = at_end ? uy : -uy;
+      }
+      // node i crosses the face g_i below the roller line, from `before` past it at `speed`
+      // towards the rail
+      const auto strike = [&](std::vector<double> g, double before = 3e-4, double speed = 0.5) {
+        std::vector<double> x, y, vx, vy;
+        for (const double gi : g) {
+          x.push_back(px + (r - gi) * nx + before * ox);
+          y.push_back(py + (r - gi) * ny + before * oy);
+          vx.push_back(-speed * ox);
+          vy.push_back(-speed * oy);
+        }
+        return square_end_strike(ends, guides, given, x, y, vx, vy, h);
+      };
+      for (const double g : {2.0 * eps, 1e-3, 2.0 * r - 1e-4}) {
+        const std::optional<EndStrike> hit = strike({g});
+        ASSERT_TRUE(hit.has_value()) << g << " " << at_end;
+        EXPECT_EQ(hit->node, 0U);
+        EXPECT_NEAR(hit->depth, g, 1e-12) << at_end;
+        EXPECT_EQ(ends[hit->end].at_start, !at_end);
+        EXPECT_EQ(ends[hit->end].rail, 0U);
+      }
+      EXPECT_FALSE(strike({0.5 * eps}).has_value()) << at_end;
+      EXPECT_FALSE(strike({2.0 * r + 1e-4}).has_value()) << at_end;
+      EXPECT_FALSE(strike({1e-3}, -2e-4, -0.5).has_value()) << "leaving " << at_end;
+      EXPECT_FALSE(strike({1e-3}, 6e-4).has_value()) << "short " << at_end;
+      // an oblique move, from 0.5 mm below the roller line 0.3 mm before the face to 1.5 mm below
+      // it 0.2 mm past: g where it crosses, 0.5 + (1.5 - 0.5) 0.3/0.5 = 1.1 mm, not its start's
+      {
+        const double x0 = px + (r - 5e-4) * nx + 3e-4 * ox, y0 = py + (r - 5e-4) * ny + 3e-4 * oy;
+        const double x1 = px + (r - 1.5e-3) * nx - 2e-4 * ox,
+                     y1 = py + (r - 1.5e-3) * ny - 2e-4 * oy;
+        const std::vector<double> x{x0}, y{y0}, vx{(x1 - x0) / h}, vy{(y1 - y0) / h};
+        const std::optional<EndStrike> hit =
+            square_end_strike(ends, guides, given, x, y, vx, vy, h);
+        ASSERT_TRUE(hit.has_value()) << at_end;
+        EXPECT_NEAR(hit->depth, 1.1e-3, 1e-12) << "oblique " << at_end;
+      }
+      // the deepest of three crossings
+      const std::optional<EndStrike> deepest = strike({1e-3, 3e-3, 2e-3});
+      ASSERT_TRUE(deepest.has_value());
+      EXPECT_EQ(deepest->node, 1U);
+      EXPECT_NEAR(deepest->depth, 3e-3, 1e-12);
+    }
+    // lead-ins at both ends: no square end, no strike
+    std::vector<Guide> led{rail};
+    for (const Guide& a : lead_in_arcs(rail, {0.05, kPi / 6, true, true})) led.push_back(a);
+    EXPECT_TRUE(square_ends(BeltPath{}, led, given).empty());
   }
 }
 

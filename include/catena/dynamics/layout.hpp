@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -209,11 +211,31 @@ double rail_cut_work(const BeltPath& path, const Guide& rail);
 struct SquareEnd {
   std::size_t rail = 0;  ///< index into `rails`
   bool at_start = true;
-  double x = 0.0, y = 0.0;  ///< [m] the end of the rail's surface
-  double depth = 0.0;       ///< [m] the deepest crossing's g
+  double x = 0.0, y = 0.0;    ///< [m] the end of the rail's surface
+  double depth = 0.0;         ///< [m] the deepest crossing's g
+  double nx = 0.0, ny = 0.0;  ///< the surface's unit normal there (towards its free side)
+  double tx = 0.0, ty = 0.0;  ///< the rail's unit direction there, from the end into the rail
 };
 std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide>& guides,
                                    const std::vector<std::size_t>& rails);
+
+/// A roller striking a square end in a step (docs/models/dynamics.md, "Guides against the starting
+/// path: the square ends", the run's diagnostic): of the square ends `ends` (square_ends' of the
+/// rails `rails`, indices into `guides`), the deepest crossing of an end's face, from outside the
+/// rail into it, by a node's straight move from (x, y) to (x + h vx, y + h vy) (the step's start
+/// and its constant-velocity predictor) more than the rail's contact ramp ε below the roller line
+/// (g in (ε, 2r), off from 2r): the end (index into `ends`), the node and that g. None: no such.
+struct EndStrike {
+  std::size_t end = 0;   ///< index into `ends`
+  std::size_t node = 0;  ///< the roller's node
+  double depth = 0.0;    ///< [m] its g where it crosses the end's face
+};
+std::optional<EndStrike> square_end_strike(const std::vector<SquareEnd>& ends,
+                                           const std::vector<Guide>& guides,
+                                           const std::vector<std::size_t>& rails,
+                                           std::span<const double> x, std::span<const double> y,
+                                           std::span<const double> vx, std::span<const double> vy,
+                                           double h);
 
 /// The distances `lead_in_obstacle` measures for `arc` (its samples times the pieces and guides
 /// its prefilter keeps): the work of one check, which `lead_in_limit`'s bisections repeat at most

@@ -407,6 +407,10 @@ struct Setup {
   // each of `guides` as a message names it: guide[i] as the file numbers it, a lead-in arc (laid
   // after the guides as given) as the lead-in at its rail's start or end
   std::vector<std::string> guide_names;
+  // the guides as given (read whole) are guides[0, given_guides), the lead-in arcs follow; each
+  // one's lead_in_angle [rad] (NaN: it has no lead-in)
+  std::size_t given_guides = 0;
+  std::vector<double> lead_in_angles;
   bool work_balance = false;  // summary.work_balance in the output
   // the free layout (docs/models/dynamics.md, "Command"): every sprocket with its centre; empty
   // `wheels` for the two equal wheels on a line
@@ -523,6 +527,20 @@ double up_to(double x, int digits) {
   if (!(x > 0.0) || !std::isfinite(x)) return x;
   const double unit = std::pow(10.0, std::floor(std::log10(x)) - (digits - 1));
   return std::ceil(x / unit * (1.0 - 1e-12)) * unit;
+}
+
+// A rail's square end as the messages name it, the start's check's and the run's (docs/cli.md,
+// "dynamics.guide"): its end's keys and point, "(x1, y1) (150, 30.77) mm", and the lead-in's keys
+// that close it, "(lead_in_radius, lead_in_end = \"end\" or \"both\")".
+std::string square_end_name(const Guide& rail, const SquareEnd& end) {
+  const bool arc = rail.kind == Guide::Kind::kArc;
+  return (arc ? std::string(end.at_start ? "start_angle" : "end_angle")
+              : std::string(end.at_start ? "(x0, y0)" : "(x1, y1)")) +
+         " (" + format_g(end.x * 1e3, 4) + ", " + format_g(end.y * 1e3, 4) + ") mm";
+}
+std::string square_end_lead_in(const SquareEnd& end) {
+  return std::string("(lead_in_radius, lead_in_end = \"") + (end.at_start ? "start" : "end") +
+         "\" or \"both\")";
 }
 
 // The most a stiffness (power 2) or a damping (power 1) over a step may be, `ratio` m/(θh)^power,
@@ -2182,6 +2200,7 @@ Setup parse(const analysis::Inputs& in) {
     // rail's
     std::vector<Guide> lead_ins;
     bool lead_ins_at_start = false;
+    double lead_angle = NAN;
     if ((g.seen.count("lead_in_angle") || g.seen.count("lead_in_end")) &&
         !g.seen.count("lead_in_radius")) {
       issues.push_back({field("lead_in_radius"), "(missing)",
@@ -2192,6 +2211,7 @@ Setup parse(const analysis::Inputs& in) {
       LeadIn lead;
       lead.radius = get("lead_in_radius", NAN);
       lead.angle = get("lead_in_angle", 30.0 * std::numbers::pi / 180.0);
+      lead_angle = lead.angle;
       const auto ends = g.text.find("lead_in_end");
       const std::string which = ends == g.text.end() ? "both" : ends->second;
       lead.at_start = which != "end";
@@ -2286,6 +2306,7 @@ Setup parse(const analysis::Inputs& in) {
         given_rails.emplace_back("dynamics.guide[" + std::to_string(i) + "]" + l, s.guides.size());
       s.guides.push_back(guide);
       s.guide_names.push_back("guide[" + std::to_string(i) + "]");
+      s.lead_in_angles.push_back(lead_angle);
       lead_arcs.insert(lead_arcs.end(), lead_ins.begin(), lead_ins.end());
       // lead_in_arcs lays the start's arc before the end's
       for (std::size_t k = 0; k < lead_ins.size(); ++k) {
@@ -2297,6 +2318,7 @@ Setup parse(const analysis::Inputs& in) {
   }
   // the lead-in arcs after the guides as given (which keep their numbers)
   const std::size_t given_guides = s.guides.size();
+  s.given_guides = given_guides;
   s.guides.insert(s.guides.end(), lead_arcs.begin(), lead_arcs.end());
   s.guide_names.insert(s.guide_names.end(), lead_names.begin(), lead_names.end());
   // a lead-in's arcs clear of the chain's path and of the other guides (docs/models/dynamics.md,
@@ -2405,25 +2427,20 @@ Setup parse(const analysis::Inputs& in) {
     for (const SquareEnd& end : square_ends(chain_path, s.guides, rails)) {
       const Guide& rail = s.guides[rails[end.rail]];
       if (!(end.depth > rail.contact_smoothing)) continue;
-      const bool arc = rail.kind == Guide::Kind::kArc;
       auto mm = [](double v) { return format_g(v * 1e3, 4) + " mm"; };
-      const std::string which = arc ? std::string(end.at_start ? "start_angle" : "end_angle")
-                                    : std::string(end.at_start ? "(x0, y0)" : "(x1, y1)");
       issues.push_back(
           {given_rails[end.rail].first,
-           "its square end at " + which + " (" + format_g(end.x * 1e3, 4) + ", " +
-               format_g(end.y * 1e3, 4) + ") mm, where the chain runs onto it, the chain's " +
-               "starting path crossing it " + mm(end.depth) + " into its contact",
+           "its square end at " + square_end_name(rail, end) + ", where the chain runs onto it, " +
+               "the chain's starting path crossing it " + mm(end.depth) + " into its contact",
            "an entry end without a lead-in the starting path crosses at most its contact's ramp (" +
                mm(rail.contact_smoothing) +
                ") deep: a roller crossing it deeper is struck by that depth's force at once" +
                (rail.line_law
                     ? std::string()
                     : " (here " + format_g(rail.contact_stiffness * end.depth, 3) + " N)") +
-               ", on which a step need not converge however small; give it a lead-in "
-               "(lead_in_radius, lead_in_end = \"" +
-               (end.at_start ? "start" : "end") +
-               "\" or \"both\"), the only remedy: a bare entry end near the chain's path may "
+               ", on which a step need not converge however small; give it a lead-in " +
+               square_end_lead_in(end) +
+               ", the only remedy: a bare entry end near the chain's path may "
                "stop the run at a roller's entry whatever its depth, clear of the rollers or "
                "pressed in"});
     }
@@ -2819,6 +2836,62 @@ int output_every(const Setup& d) {
   return std::max(1, static_cast<int>(std::lround(d.interval / d.step)));
 }
 
+// A failed step whose roller crosses a rail's square end deeper than the contact's ramp ε
+// (docs/models/dynamics.md, "Guides against the starting path: the square ends", the run's
+// diagnostic): the guide as the case file counts it, the end, the node, its depth and the remedy,
+// the lead-in; none when no roller does (the step failed elsewhere: dynamics.not_converged).
+// The guides as given are the rails, the lead-in arcs (laid after them) close their ends. The
+// move judged runs from x - h v to x + h v: the last converged step's, back-extrapolated, and the
+// failed one's predictor, since a roller struck in one step may fail the next; the strike named
+// coincides with the failure, which it need not have caused.
+std::optional<Diagnostic> bare_end_struck(const Setup& d, const State& s,
+                                          const std::string& failed) {
+  std::vector<std::size_t> rails;
+  for (std::size_t g = 0; g < d.given_guides && g < d.guides.size(); ++g) rails.push_back(g);
+  const std::vector<SquareEnd> ends = square_ends(BeltPath{}, d.guides, rails);
+  std::vector<double> back_x(s.x.size()), back_y(s.y.size());
+  for (std::size_t i = 0; i < back_x.size() && i < s.vx.size(); ++i)
+    back_x[i] = s.x[i] - d.step * s.vx[i];
+  for (std::size_t i = 0; i < back_y.size() && i < s.vy.size(); ++i)
+    back_y[i] = s.y[i] - d.step * s.vy[i];
+  const std::optional<EndStrike> hit =
+      square_end_strike(ends, d.guides, rails, back_x, back_y, s.vx, s.vy, 2.0 * d.step);
+  if (!hit) return std::nullopt;
+  const SquareEnd& end = ends[hit->end];
+  const std::size_t index = rails[end.rail];
+  const Guide& rail = d.guides[index];
+  auto mm = [](double v) { return format_g(v * 1e3, 4) + " mm"; };
+  // a lead-in's arc ends R (1 − cos α) below the end's tangent: deeper than the roller at the
+  // rail's own lead_in_angle, else the default 30° (docs/cli.md, lead_in_angle), from
+  // R = g / (1 − cos α), named rounded up: a sufficient radius, not the least (a roller on a path
+  // parallel to the tangent clears the arc's end from g <= (R + r)(1 − cos α))
+  const double own = index < d.lead_in_angles.size() ? d.lead_in_angles[index] : NAN;
+  const double angle = std::isnan(own) ? kPi / 6.0 : own;
+  const double radius = up_to(hit->depth / (1.0 - std::cos(angle)) * 1e3, 3);
+  const std::string at_angle =
+      std::isnan(own) ? std::string("at the default 30 deg")
+                      : "at its lead_in_angle " + format_g(own * 180.0 / kPi, 4) + " deg";
+  return Diagnostic{
+      Diagnostic::Severity::kError,
+      "dynamics.bare_rail_end",
+      failed + ": node " + std::to_string(hit->node) + " crosses the square end of dynamics." +
+          d.guide_names[index] + " at " + square_end_name(rail, end) +
+          ", where it runs onto the rail, " + mm(hit->depth) +
+          " into its contact, deeper than its contact's ramp (" + mm(rail.contact_smoothing) +
+          "): the roller is struck by that depth's force at once, on which a step need not "
+          "converge however small; the run stopped there. Give that end a lead-in " +
+          square_end_lead_in(end) +
+          " whose arc ends deeper below the surface than the roller, "
+          "lead_in_radius (1 - cos lead_in_angle) > " +
+          format_g(up_to(hit->depth * 1e3, 4), 4) + " mm (" + at_angle +
+          ", lead_in_radius >= " + format_g(radius, 3) + " mm" +
+          "), or move the rail clear of the chain there (a bare entry end near the chain's path "
+          "may stop the run at any depth: the lead-in is the remedy that runs)",
+      hit->depth,
+      rail.contact_smoothing,
+      "m"};
+}
+
 Result run(const analysis::Inputs& in) {
   Result out;
   out.setup = parse(in);
@@ -3028,12 +3101,16 @@ Result run(const analysis::Inputs& in) {
     const StepReport rep = integ.step(model, s);
     out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
     if (!rep.converged) {
+      const std::string failed =
+          "step " + std::to_string(k + 1) + " (t = " + format_g(s.time + d.step, 6) +
+          " s) did not converge in " + newton_iterations_text(rep, integ.options().max_iterations);
+      if (std::optional<Diagnostic> struck = bare_end_struck(d, s, failed)) {
+        out.diagnostics.push_back(std::move(*struck));
+        break;
+      }
       out.diagnostics.push_back(
           {Diagnostic::Severity::kError, "dynamics.not_converged",
-           "step " + std::to_string(k + 1) + " (t = " + format_g(s.time + d.step, 6) +
-               " s) did not converge in " +
-               newton_iterations_text(rep, integ.options().max_iterations) +
-               "; the run stopped there (try a smaller step or theta nearer 1" +
+           failed + "; the run stopped there (try a smaller step or theta nearer 1" +
                (d.hinge_law.stick_stiffness > 0.0 ? ", or a smaller hinge_stick_stiffness" : "") +
                ")",
            s.time + d.step, d.duration});

@@ -1253,7 +1253,7 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
         joined = *o != self && (ring || *o != (self ^ 1)) &&
                  std::hypot(all[*o][0] - e[0], all[*o][1] - e[1]) <= eps;
       if (joined) continue;
-      ends.push_back({k, start, e[0], e[1], 0.0});
+      ends.push_back({k, start, e[0], e[1], 0.0, e[2], e[3], e[4], e[5]});
       at.push_back(e);
     }
   }
@@ -1291,6 +1291,39 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
     });
   }
   return ends;
+}
+
+// The strike (layout.hpp): each end's roller-line point A = the surface's end + r n; a node's
+// move P0 -> P1 crosses the end's face (the line through A along n) into the rail where its
+// coordinate along the rail into it, (P - A)·t, goes from <= 0 to > 0; its g there is
+// -(P - A)·n at the crossing, interpolated along the move. O(ends × nodes), run once, when a step
+// has failed.
+std::optional<EndStrike> square_end_strike(const std::vector<SquareEnd>& ends,
+                                           const std::vector<Guide>& guides,
+                                           const std::vector<std::size_t>& rails,
+                                           std::span<const double> x, std::span<const double> y,
+                                           std::span<const double> vx, std::span<const double> vy,
+                                           double h) {
+  std::optional<EndStrike> out;
+  const std::size_t n = std::min({x.size(), y.size(), vx.size(), vy.size()});
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    const SquareEnd& e = ends[k];
+    if (e.rail >= rails.size() || rails[e.rail] >= guides.size()) continue;
+    const Guide& rail = guides[rails[e.rail]];
+    const double r = rail.roller_radius, eps = rail.contact_smoothing;
+    const double ax = e.x + r * e.nx, ay = e.y + r * e.ny;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double px = x[i] - ax, py = y[i] - ay;
+      const double mx = h * vx[i], my = h * vy[i];
+      const double a0 = px * e.tx + py * e.ty, a1 = a0 + mx * e.tx + my * e.ty;
+      if (!(a0 <= 0.0 && a1 > 0.0)) continue;  // (a NaN fails too)
+      const double f = -a0 / (a1 - a0);
+      const double g = -((px + f * mx) * e.nx + (py + f * my) * e.ny);
+      if (!(g > eps && g < 2.0 * r)) continue;  // the contact is off at g >= 2r
+      if (!out || g > out->depth) out = EndStrike{k, i, g};
+    }
+  }
+  return out;
 }
 
 std::vector<std::size_t> sagging_spans(const BeltPath& path) {
