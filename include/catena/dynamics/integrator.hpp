@@ -45,6 +45,11 @@ struct IntegratorOptions {
   /// Try each guide only against the nodes GuideHint lists near it (O(N + G + pairs) a step);
   /// false: every node against every guide (O(N·G)), for verification. Bit-identical results.
   bool guide_hint = true;
+  /// The stick law's chord iterations take up to four hinges' stick–slip switches into their
+  /// kept factors by a low-rank update (docs/models/dynamics.md, "Hinges: sticking"); false: the
+  /// kept factors alone, as before the update (for verification: the same root to the Newton
+  /// tolerance, with more factorisations). No effect without the stick law.
+  bool switch_update = true;
 };
 
 std::vector<Issue> validate(const IntegratorOptions& options);
@@ -178,6 +183,16 @@ class Integrator {
     double trial = 0.0, limit = 0.0;
   };
   std::vector<HingeTrial> trial_, trial_base_;
+  // The stick law's chord iterations across a stick–slip switch (Integrator::step): each hinge's
+  // branch where the kept factors were taken (0 sticking, ±1 sliding that way), and per switched
+  // hinge (at most kMaxSwitches) the update's column U = −h g, its solve W = A⁻¹ U with the
+  // kept factors (the nodes' part, then the extras' nd values each) and the small matrix
+  // I + Vᵀ W, V the switch's change of ∂M/∂x₁
+  static constexpr std::size_t kMaxSwitches = 4;
+  std::vector<signed char> kept_branch_;
+  std::vector<Vec2> switch_u_;
+  std::vector<std::vector<Vec2>> switch_w_;
+  std::vector<double> switch_wx_;
   std::vector<Vec2> delta_;     // Newton correction
   std::vector<double> psi1_;    // sprocket angles at the end of the step (iterate)
   std::vector<double> slide1_;  // take-ups' slides at the end of the step (iterate), per wheel
