@@ -173,6 +173,23 @@ inline void hinge_link(double d0x, double d0y, double d1x, double d1y, double le
   out.dp[3] = -s4 * mx * my;
 }
 
+/// The hinge's load F (unclamped) and its weights w₀, w₁ on ½ T₀, ½ T₁ at `node`
+/// (pin_link_side): the mean ½ (T₀ + T₁) with 1 and 1, or the pin link's T with 2 and 0 or 0 and
+/// 2 (exact, so the mean's arithmetic is the mean's). hinge_couple_blocks' and
+/// hinge_branch_moment_gradient's, so the two cannot disagree on the rule.
+struct PinLoadWeights {
+  double w0, w1, load;
+};
+inline PinLoadWeights pin_load_weights(const HingeFriction& hinge, std::size_t node,
+                                       const HingeLink& l0, const HingeLink& l1) {
+  const int side = pin_link_side(hinge, node);
+  const double w0 = side < 0 ? 1.0 : (side == 0 ? 2.0 : 0.0);
+  const double w1 = side < 0 ? 1.0 : 2.0 - w0;
+  const double load =
+      side < 0 ? 0.5 * (l0.tension + l1.tension) : (side == 0 ? l0.tension : l1.tension);
+  return {w0, w1, load};
+}
+
 /// ∂M/∂x₁ on the hinge's three nodes (dmx, dmy) from its links' HingeLink terms (with their
 /// derivatives), the load's weights w₀, w₁ (pin_link_side) and the torque's two partials:
 /// `load_factor` ∂M/∂F and `rate_factor` ∂M/∂Δβ. The turn Δβ = turn₁ − turn₀ has the node
@@ -201,11 +218,7 @@ inline void hinge_moment_gradient(const HingeLink& l0, const HingeLink& l1, doub
 inline void hinge_branch_moment_gradient(const HingeFriction& hinge, const HingeLink& l0,
                                          const HingeLink& l1, double step, std::size_t node,
                                          double theta, int branch, double dmx[3], double dmy[3]) {
-  const int side = pin_link_side(hinge, node);
-  const double w0 = side < 0 ? 1.0 : (side == 0 ? 2.0 : 0.0);
-  const double w1 = side < 0 ? 1.0 : 2.0 - w0;
-  const double load =
-      side < 0 ? 0.5 * (l0.tension + l1.tension) : (side == 0 ? l0.tension : l1.tension);
+  const auto [w0, w1, load] = pin_load_weights(hinge, node, l0, l1);
   const double loaded = load > 0.0 ? 1.0 : 0.0;
   const double load_factor = branch == 0 ? 0.0 : branch * hinge.arm * loaded;
   const double rate_factor =
@@ -230,11 +243,7 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
                                 Block&& block, std::size_t node, double theta, double deflection) {
   // F: ½ (T₀ + T₁) (the mean), or the pin link's T (weights w₀, w₁ of ½ T₀, ½ T₁: 1 and 1, or
   // 2 and 0, or 0 and 2; exact, so the mean's arithmetic is what it was)
-  const int side = pin_link_side(hinge, node);
-  const double w0 = side < 0 ? 1.0 : (side == 0 ? 2.0 : 0.0);
-  const double w1 = side < 0 ? 1.0 : 2.0 - w0;
-  const double load =
-      side < 0 ? 0.5 * (l0.tension + l1.tension) : (side == 0 ? l0.tension : l1.tension);
+  const auto [w0, w1, load] = pin_load_weights(hinge, node, l0, l1);
   hc.load = std::max(0.0, load);
   hc.turn = l1.turn - l0.turn;
   hc.rate = hc.turn / step;
