@@ -10,6 +10,7 @@
 #include <random>
 
 #include "catena/dynamics/integrator.hpp"
+#include "dense_solve.hpp"
 #include "residual_difference.hpp"
 #include "two_wheel_loops.hpp"
 
@@ -457,6 +458,196 @@ TEST(HingeStick, SwitchUpdateKeepsTheFactorsAcrossStickSlipSwitches) {
     EXPECT_LT(static_cast<double>(fa), 0.9 * static_cast<double>(fb)) << kt;
     EXPECT_LT(ia, ib) << kt;
   }
+}
+
+// The chord iterations' update across switches as a solve (Integrator::chord_solve_after_switch):
+// the Newton matrix factored at one state, the hinges' deflections then moved so that the chosen
+// hinges sit just inside their band on one side (trial (1 − 1e-9) e F) and just beyond it on the
+// other (1 + 1e-9, either way), the iterate unchanged, so that the two Newton matrices differ by
+// the switches alone (and the direction term's 2e-9 e F |∂g/∂x|). The kept factors' solve,
+// corrected, against a dense Gaussian elimination of the second state's Newton system
+// (Integrator::newton_system): the chain's and the wheels' parts each to 1e-8 of their largest
+// entry; the kept factors alone miss it by far more.
+struct SwitchCase {
+  Model model;
+  State state;
+  std::vector<double> u;  // the iterate: x + h v, a driven wheel's ψ + h ω
+};
+
+constexpr double kSwitchStep = 1e-4, kSwitchTheta = 0.6;
+
+// The unknowns at the constant-velocity predictor (newton_system's layout)
+std::vector<double> predictor(const Model& m, const State& s) {
+  std::vector<double> u;
+  for (std::size_t i = 0; i < m.nodes(); ++i) {
+    u.push_back(s.x[i] + kSwitchStep * s.vx[i]);
+    u.push_back(s.y[i] + kSwitchStep * s.vy[i]);
+  }
+  for (std::size_t w = 0; w < m.sprockets.size(); ++w)
+    if (!m.sprockets[w].driver) u.push_back(s.angle[w] + kSwitchStep * s.speed[w]);
+  return u;
+}
+
+// The free 12-link loop of the tests above, stretched 4e-4 and turning at 3 rad/s with a wobble
+// (`open`: the same nodes as an open chain, node 0 pinned)
+SwitchCase spinning_loop(bool open = false) {
+  const std::size_t n = 12;
+  SwitchCase c{uniform_chain(n, !open, kPitch, 0.02, kStiffness, 20.0, false), State(n, 0), {}};
+  c.model.hinge = HingeFriction{.arm = kArm, .rate_band = 5.0};
+  c.model.hinge.stick_stiffness = 30.0;
+  c.model.hinge.stick_damping = 0.002;
+  if (open) c.model.pinned.assign(n, 0), c.model.pinned[0] = 1;
+  const double radius = kPitch / (2 * std::sin(M_PI / static_cast<double>(n))) * 1.0004;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    c.state.x[i] = radius * std::cos(a);
+    c.state.y[i] = radius * std::sin(a);
+    c.state.vx[i] = -3.0 * c.state.y[i] + (i % 2 ? 0.01 : -0.01) * std::cos(a);
+    c.state.vy[i] = 3.0 * c.state.x[i] + (i % 2 ? 0.01 : -0.01) * std::sin(a);
+  }
+  if (open) c.state.vx[0] = c.state.vy[0] = 0.0;
+  c.u = predictor(c.model, c.state);
+  return c;
+}
+
+// The benchmarks' drive with the stick law (its driven wheel an unknown; `two_wheels`: the
+// driver made a driven wheel of the same inertia, two unknowns)
+SwitchCase stick_drive(bool two_wheels) {
+  testing::Loop drive = testing::benchmark_drive(kArm);
+  drive.model.hinge.stick_stiffness = 1000.0;
+  if (two_wheels) {
+    drive.model.sprockets[0].driver = false;
+    drive.model.sprockets[0].inertia = drive.model.sprockets[1].inertia;
+  }
+  // 100 steps on, the wheels in contact (at the seated start none presses: no coupling)
+  Integrator run(drive.model, {.step = kSwitchStep, .theta = kSwitchTheta});
+  for (int k = 0; k < 100; ++k) EXPECT_TRUE(run.step(drive.model, drive.state).converged);
+  SwitchCase c{drive.model, drive.state, {}};
+  c.u = predictor(c.model, c.state);
+  return c;
+}
+
+// The deflection that puts hinge i's trial torque at the iterate at `ratio` × its limit e F
+double deflection_at(const SwitchCase& c, std::size_t i, double ratio) {
+  const Model& m = c.model;
+  const std::size_t n = m.nodes();
+  const std::size_t ends[3] = {(i + n - 1) % n, i, (i + 1) % n};
+  HingeLink link[2];
+  for (int e = 0; e < 2; ++e) {
+    const std::size_t a = ends[e], b = ends[e + 1];
+    const double d0x = c.state.x[b] - c.state.x[a], d0y = c.state.y[b] - c.state.y[a];
+    const double d1x = c.u[2 * b] - c.u[2 * a], d1y = c.u[2 * b + 1] - c.u[2 * a + 1];
+    hinge_link(d0x, d0y, d1x, d1y, std::hypot(d0x, d0y), std::hypot(d1x, d1y), m.rest_length(a),
+               m.axial_stiffness, kSwitchTheta, link[e], true);
+  }
+  HingeCouple hc;
+  hinge_couple(m.hinge, link[0], link[1], kSwitchStep, hc, false, i, kSwitchTheta, 0.0);
+  const double limit = m.hinge.arm * hc.load;
+  EXPECT_GT(limit, 0.0) << "hinge " << i << " unloaded";
+  return (hc.trial - ratio * limit) / m.hinge.stick_stiffness;
+}
+
+constexpr double kIn = 1.0 - 1e-9, kOut = 1.0 + 1e-9;
+struct Switch {
+  std::size_t node;
+  double kept, now;  // the trial's ratio to e F where the factors are taken, and after
+};
+
+struct SwitchSolves {
+  std::vector<double> updated, plain, reference;
+};
+
+// max |δ − δ_ref| / max |δ_ref| over the entries [from, to)
+double part_error(const std::vector<double>& d, const std::vector<double>& ref, std::size_t from,
+                  std::size_t to) {
+  double worst = 0.0, largest = 0.0;
+  for (std::size_t k = from; k < to; ++k) {
+    worst = std::max(worst, std::abs(d[k] - ref[k]));
+    largest = std::max(largest, std::abs(ref[k]));
+  }
+  return worst / largest;
+}
+
+SwitchSolves solve_across(const SwitchCase& c, const std::vector<Switch>& switches) {
+  const std::size_t n = c.model.nodes();
+  State kept = c.state, now = c.state;
+  if (c.state.hinge_deflection.size() != n) {
+    kept.hinge_deflection.assign(n, 0.0);
+    now.hinge_deflection.assign(n, 0.0);
+  }
+  for (const Switch& sw : switches) {
+    kept.hinge_deflection[sw.node] = deflection_at(c, sw.node, sw.kept);
+    now.hinge_deflection[sw.node] = deflection_at(c, sw.node, sw.now);
+  }
+  Integrator integ(c.model, {.step = kSwitchStep, .theta = kSwitchTheta});
+  SwitchSolves out;
+  EXPECT_TRUE(integ.chord_solve_after_switch(c.model, kept, now, c.u, true, out.updated));
+  EXPECT_TRUE(integ.chord_solve_after_switch(c.model, kept, now, c.u, false, out.plain));
+  std::vector<double> r, j;
+  integ.newton_system(c.model, now, c.u, r, &j);
+  const std::size_t size = r.size();
+  testing::Dense a(size, std::vector<double>(size));
+  for (std::size_t row = 0; row < size; ++row) {
+    for (std::size_t col = 0; col < size; ++col) a[row][col] = j[row * size + col];
+    r[row] = -r[row];
+  }
+  out.reference = testing::dense_solve(a, r);
+  return out;
+}
+
+// Asserts the corrected solve is the switched system's and the kept factors' alone is not
+void expect_switched_solve(const SwitchCase& c, const std::vector<Switch>& switches,
+                           const char* what) {
+  const SwitchSolves s = solve_across(c, switches);
+  const std::size_t nodes = 2 * c.model.nodes(), size = s.reference.size();
+  const double chain = part_error(s.updated, s.reference, 0, nodes);
+  const double chain_plain = part_error(s.plain, s.reference, 0, nodes);
+  std::printf("%s: the chain's part %.2e (the kept factors alone %.2e)", what, chain, chain_plain);
+  EXPECT_LT(chain, 1e-8) << what;
+  EXPECT_GT(chain_plain, 1e-4) << what;
+  if (size > nodes) {
+    const double wheels = part_error(s.updated, s.reference, nodes, size);
+    const double wheels_plain = part_error(s.plain, s.reference, nodes, size);
+    std::printf(", the wheels' %.2e (%.2e)", wheels, wheels_plain);
+    EXPECT_LT(wheels, 1e-8) << what;
+    EXPECT_GT(wheels_plain, 1e-6) << what;
+  }
+  std::printf("\n");
+  for (std::size_t i = 0; i < c.model.nodes(); ++i) {
+    if (!c.model.is_pinned(i)) continue;
+    EXPECT_EQ(s.updated[2 * i], 0.0) << what;
+    EXPECT_EQ(s.updated[2 * i + 1], 0.0) << what;
+  }
+}
+
+TEST(HingeStick, SwitchUpdateSolvesTheSwitchedNewtonSystem) {
+  const SwitchCase loop = spinning_loop();
+  expect_switched_solve(loop, {{0, kIn, kOut}}, "loop, stick to +slide");
+  expect_switched_solve(loop, {{0, -kIn, -kOut}}, "loop, stick to -slide");
+  expect_switched_solve(loop, {{0, kOut, kIn}}, "loop, +slide to stick");
+  expect_switched_solve(loop, {{0, -kOut, -kIn}}, "loop, -slide to stick");
+  expect_switched_solve(loop, {{3, -kIn, -kOut}, {4, kOut, kIn}}, "loop, 2 adjacent hinges");
+  expect_switched_solve(loop, {{3, kIn, kOut}, {4, -kOut, -kIn}, {5, -kIn, -kOut}, {9, kOut, kIn}},
+                        "loop, 4 hinges (3 adjacent)");
+  SwitchCase pin_link = loop;
+  pin_link.model.hinge.pin_load = PinLoad::kPinLink;
+  expect_switched_solve(pin_link, {{4, -kIn, -kOut}, {7, kIn, kOut}},
+                        "loop, PinLoad::kPinLink at an even and an odd node");
+  expect_switched_solve(spinning_loop(true), {{1, -kIn, -kOut}, {2, kOut, kIn}},
+                        "open chain, node 0 pinned");
+  expect_switched_solve(stick_drive(false), {{100, -kIn, -kOut}, {101, kOut, kIn}},
+                        "drive, its driven wheel an unknown");
+  expect_switched_solve(stick_drive(true), {{100, kIn, kOut}, {150, -kOut, -kIn}},
+                        "drive, both wheels unknowns");
+}
+
+// More than kMaxSwitches switched hinges: the kept factors' solve alone, bit for bit.
+TEST(HingeStick, SwitchUpdateLeavesMoreThanFourSwitchesToTheKeptFactors) {
+  const SwitchSolves s = solve_across(
+      spinning_loop(),
+      {{0, kIn, kOut}, {2, kIn, kOut}, {4, -kIn, -kOut}, {6, kOut, kIn}, {8, kIn, kOut}});
+  EXPECT_EQ(s.updated, s.plain);
+  EXPECT_GT(part_error(s.plain, s.reference, 0, s.reference.size()), 1e-4);
 }
 
 // The last start from constant velocity with the halvings alone (Integrator::step) runs only
