@@ -1756,11 +1756,21 @@ bool Integrator::correct_for_switches(const Model& model, const State& s) {
       a[k][c] = e;
     }
   }
+  // a pivot below kPivotFloor of the matrix's largest row sum: I + Vᵀ W is singular to
+  // rounding, and its solve's coefficients would be noise (or overflow)
+  constexpr double kPivotFloor = 1e-12;
+  double scale = 0.0;
+  for (std::size_t k = 0; k < r; ++k) {
+    double row = 0.0;
+    for (std::size_t c = 0; c < r; ++c) row += std::abs(a[k][c]);
+    scale = std::max(scale, row);
+  }
+  if (!std::isfinite(scale)) return false;
   for (std::size_t c = 0; c < r; ++c) {
     std::size_t p = c;
     for (std::size_t k = c + 1; k < r; ++k)
       if (std::abs(a[k][c]) > std::abs(a[p][c])) p = k;
-    if (!(std::abs(a[p][c]) > 0.0) || !std::isfinite(a[p][c])) return false;
+    if (!(std::abs(a[p][c]) > kPivotFloor * scale)) return false;
     if (p != c) std::swap(a[p], a[c]);
     for (std::size_t k = c + 1; k < r; ++k) {
       const double f = a[k][c] / a[c][c];
@@ -1773,6 +1783,8 @@ bool Integrator::correct_for_switches(const Model& model, const State& s) {
     for (std::size_t e = c + 1; e < r; ++e) z -= a[c][e] * coef[e];
     coef[c] = z / a[c][c];
   }
+  for (std::size_t k = 0; k < r; ++k)
+    if (!std::isfinite(coef[k])) return false;
   for (std::size_t k = 0; k < r; ++k) {
     const std::vector<Vec2>& w = switch_w_[k];
     const double c = coef[k];
