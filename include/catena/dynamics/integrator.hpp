@@ -47,8 +47,8 @@ struct IntegratorOptions {
   bool guide_hint = true;
   /// The stick law's chord iterations take up to four hinges' stick–slip switches into their
   /// kept factors by a low-rank update (docs/models/dynamics.md, "Hinges: sticking"); false: the
-  /// kept factors alone, as before the update (for verification: the same root to the Newton
-  /// tolerance, with more factorisations). No effect without the stick law.
+  /// kept factors alone, as before the update (for verification: the same residual and stopping
+  /// tests, with more factorisations). No effect without the stick law.
   bool switch_update = true;
 };
 
