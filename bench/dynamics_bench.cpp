@@ -105,13 +105,13 @@ StepTally step_on(benchmark::State& bs, Integrator& integ, const Model& m, State
 // `pin_load`: the hinges' pin load rule (the mean of the two links' tensions, or the pin link's).
 // `stick_stiffness` > 0: the hinges' stick law with that k_t [N·m/rad] ("Hinges: sticking").
 void two_sprocket_drive(benchmark::State& bs, double hinge_arm, PinLoad pin_load = PinLoad::kMean,
-                        double stick_stiffness = 0.0) {
+                        double stick_stiffness = 0.0, bool switch_update = true) {
   testing::Loop drive = testing::benchmark_drive(hinge_arm);
   drive.model.hinge.pin_load = pin_load;
   drive.model.hinge.stick_stiffness = stick_stiffness;
   const Model& m = drive.model;
   State& s = drive.state;
-  Integrator integ(m, {.step = 1e-4, .theta = 0.6});
+  Integrator integ(m, {.step = 1e-4, .theta = 0.6, .switch_update = switch_update});
   const auto [iterations, steps, factorizations, backtracks, penetration] =
       step_on(bs, integ, m, s);
   bs.counters["newton_iterations"] =
@@ -159,6 +159,19 @@ BENCHMARK(BM_DynamicsTwoSprocketDriveHingeStick)
 // simulated time, which MinTime's runs of different lengths are not
 BENCHMARK(BM_DynamicsTwoSprocketDriveHingeStick)
     ->Arg(0)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Unit(benchmark::kMicrosecond)
+    ->Iterations(5000);
+// the same 5000 steps with the chord iterations' kept factors alone across stick–slip switches
+// (IntegratorOptions::switch_update false: as before the update; docs/performance.md, "The stick
+// law's factors across stick–slip switches")
+void BM_DynamicsTwoSprocketDriveHingeStickKeptFactors(benchmark::State& bs) {
+  two_sprocket_drive(bs, 0.1 * 5.72e-3 / 2, PinLoad::kMean, static_cast<double>(bs.range(0)),
+                     false);
+}
+BENCHMARK(BM_DynamicsTwoSprocketDriveHingeStickKeptFactors)
     ->Arg(100)
     ->Arg(1000)
     ->Arg(10000)

@@ -11,37 +11,15 @@
 #include <string>
 #include <vector>
 
+#include "dense_solve.hpp"
+
 namespace catena::dynamics {
 namespace {
 
 constexpr double kRelativeTol = 1e-10;  // max |x − x_dense| / max |x_dense|
 
-using Dense = std::vector<std::vector<double>>;
-
-// Dense n×n Gaussian elimination with partial pivoting: the independent reference.
-std::vector<double> dense_solve(Dense a, std::vector<double> b) {
-  const std::size_t n = b.size();
-  for (std::size_t col = 0; col < n; ++col) {
-    std::size_t piv = col;
-    for (std::size_t r = col + 1; r < n; ++r) {
-      if (std::abs(a[r][col]) > std::abs(a[piv][col])) piv = r;
-    }
-    std::swap(a[col], a[piv]);
-    std::swap(b[col], b[piv]);
-    for (std::size_t r = col + 1; r < n; ++r) {
-      const double f = a[r][col] / a[col][col];
-      for (std::size_t c = col; c < n; ++c) a[r][c] -= f * a[col][c];
-      b[r] -= f * b[col];
-    }
-  }
-  std::vector<double> x(n);
-  for (std::size_t r = n; r-- > 0;) {
-    double sum = b[r];
-    for (std::size_t c = r + 1; c < n; ++c) sum -= a[r][c] * x[c];
-    x[r] = sum / a[r][r];
-  }
-  return x;
-}
+using testing::Dense;
+using testing::dense_solve;
 
 void put(Dense& a, std::size_t bi, std::size_t bj, const Mat2& m) {
   a[2 * bi][2 * bj] += m.a;

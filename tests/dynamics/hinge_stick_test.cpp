@@ -10,6 +10,7 @@
 #include <random>
 
 #include "catena/dynamics/integrator.hpp"
+#include "dense_solve.hpp"
 #include "residual_difference.hpp"
 #include "two_wheel_loops.hpp"
 
@@ -328,6 +329,325 @@ TEST(HingeStick, CrossingCutSavesNewtonIterationsOnTheDrive) {
   EXPECT_LT(iterations, 2200);
   EXPECT_LT(factorizations, 1750);
   EXPECT_LT(backtracks, 1200);
+}
+
+// A stick–slip switch changes the step's Newton matrix by a rank-1 term: −h g ⊗ ΔM' on the
+// hinge's three nodes (g = ∂β/∂x at the θ point, ΔM' the change of ∂M/∂x₁ between the two
+// branches, hinge_branch_moment_gradient), which the chord iterations' update
+// (Integrator::step) adds to their kept factors. The free 12-link loop of the test above; hinge
+// 0's deflection set just inside its band (sticking, M = (1 − δ) e F) and just beyond it
+// (sliding, M = e F), δ = 1e-9: the two dense Newton matrices (Integrator::newton_system) differ
+// by that term, in every entry, to the direction term's δ e F |∂g/∂x| (and rounding).
+TEST(HingeStick, SwitchChangesTheNewtonMatrixByTheRankOneTerm) {
+  const std::size_t n = 12;
+  Model m = uniform_chain(n, true, kPitch, 0.02, kStiffness, 20.0, false);
+  m.hinge = HingeFriction{.arm = kArm, .rate_band = 5.0};
+  m.hinge.stick_stiffness = 30.0;
+  m.hinge.stick_damping = 0.002;
+  const double radius = kPitch / (2 * std::sin(M_PI / static_cast<double>(n))) * 1.0004;
+  State s(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    s.x[i] = radius * std::cos(a);
+    s.y[i] = radius * std::sin(a);
+    s.vx[i] = -3.0 * s.y[i] + (i % 2 ? 0.01 : -0.01) * std::cos(a);
+    s.vy[i] = 3.0 * s.x[i] + (i % 2 ? 0.01 : -0.01) * std::sin(a);
+  }
+  const double h = 1e-4, th = 0.6;
+  Integrator integ(m, {.step = h, .theta = th});
+  const std::size_t size = integ.unknowns();
+  std::vector<double> u(size);
+  for (std::size_t i = 0; i < n; ++i) {
+    u[2 * i] = s.x[i] + h * s.vx[i];
+    u[2 * i + 1] = s.y[i] + h * s.vy[i];
+  }
+  // hinge 0 between links 11 (node 11 → 0) and 0 (0 → 1): its trial at d₀ = 0, and e F
+  const std::size_t ends[3] = {n - 1, 0, 1};
+  HingeLink link[2];
+  for (int e = 0; e < 2; ++e) {
+    const std::size_t a = ends[e], b = ends[e + 1];
+    const double d0x = s.x[b] - s.x[a], d0y = s.y[b] - s.y[a];
+    const double d1x = u[2 * b] - u[2 * a], d1y = u[2 * b + 1] - u[2 * a + 1];
+    hinge_link(d0x, d0y, d1x, d1y, std::hypot(d0x, d0y), std::hypot(d1x, d1y), kPitch, kStiffness,
+               th, link[e], true);
+  }
+  HingeCouple hc;
+  hinge_couple(m.hinge, link[0], link[1], h, hc, false, 0, th, 0.0);
+  const double limit = m.hinge.arm * hc.load;
+  ASSERT_GT(limit, 0.0);
+  const double kt = m.hinge.stick_stiffness, delta = 1e-9;
+  std::vector<double> r, inside, beyond;
+  s.hinge_deflection.assign(n, 0.0);
+  s.hinge_deflection[0] = (hc.trial - (1.0 - delta) * limit) / kt;  // trial (1 − δ) e F: sticks
+  integ.newton_system(m, s, u, r, &inside);
+  s.hinge_deflection[0] = (hc.trial - (1.0 + delta) * limit) / kt;  // (1 + δ) e F: slides
+  integ.newton_system(m, s, u, r, &beyond);
+  hinge_couple(m.hinge, link[0], link[1], h, hc, false, 0, th, s.hinge_deflection[0]);
+  ASSERT_FALSE(hc.sticking);
+  double stick_x[3], stick_y[3], slide_x[3], slide_y[3];
+  hinge_branch_moment_gradient(m.hinge, link[0], link[1], h, 0, th, 0, stick_x, stick_y);
+  hinge_branch_moment_gradient(m.hinge, link[0], link[1], h, 0, th, +1, slide_x, slide_y);
+  std::vector<double> predicted(size * size, 0.0);
+  for (int k = 0; k < 3; ++k) {
+    for (int q = 0; q < 3; ++q) {
+      const std::size_t row = 2 * ends[k], col = 2 * ends[q];
+      const double dmx = stick_x[q] - slide_x[q], dmy = stick_y[q] - slide_y[q];
+      predicted[row * size + col] = -h * hc.gx[k] * dmx;
+      predicted[row * size + col + 1] = -h * hc.gx[k] * dmy;
+      predicted[(row + 1) * size + col] = -h * hc.gy[k] * dmx;
+      predicted[(row + 1) * size + col + 1] = -h * hc.gy[k] * dmy;
+    }
+  }
+  double worst = 0.0, largest = 0.0, matrix = 0.0;
+  for (std::size_t e = 0; e < size * size; ++e) {
+    worst = std::max(worst, std::abs(inside[e] - beyond[e] - predicted[e]));
+    largest = std::max(largest, std::abs(predicted[e]));
+    matrix = std::max(matrix, std::abs(inside[e]));
+  }
+  std::printf(
+      "switch at hinge 0: the matrices' difference against −h g ⊗ ΔM': worst %.2e of the "
+      "term's largest entry %.3e (the matrix's largest %.3e)\n",
+      worst / largest, largest, matrix);
+  EXPECT_GT(largest, 1e-8 * matrix);  // the switch's term is not lost in the matrix's rounding
+  EXPECT_LT(worst, 1e-6 * largest);
+}
+
+// The chord iterations' update across stick–slip switches (Integrator::step,
+// IntegratorOptions::switch_update): the 200-link drive of the benchmarks at k_t = 100 and 1e3
+// N·m/rad (ratios 0.042 and 0.42), 300 steps from the seated start with the update; each step is
+// taken again from the same state by an integrator with the kept factors alone (as before the
+// update), which has stepped along the same states, and by one at the tolerance 1e-13 p (the
+// root): both ends are as far from the root (measured at most 3.3e-10 m with the update and
+// 2.4e-10 m without over both k_t: the estimate stop's error, not the update's), and the update
+// takes fewer factorisations and Newton iterations over the run.
+TEST(HingeStick, SwitchUpdateKeepsTheFactorsAcrossStickSlipSwitches) {
+  for (const double kt : {100.0, 1000.0}) {
+    testing::Loop drive = testing::benchmark_drive(0.1 * 5.72e-3 / 2);
+    drive.model.hinge.stick_stiffness = kt;
+    Integrator a(drive.model, {.step = 1e-4, .tolerance = 1e-10, .theta = 0.6});
+    Integrator b(drive.model,
+                 {.step = 1e-4, .tolerance = 1e-10, .theta = 0.6, .switch_update = false});
+    Integrator c(drive.model, {.step = 1e-4, .tolerance = 1e-13, .theta = 0.6});
+    long fa = 0, fb = 0, ia = 0, ib = 0;
+    double worst_a = 0.0, worst_b = 0.0;
+    for (int k = 0; k < 300; ++k) {
+      State again = drive.state, root = drive.state;
+      const StepReport ra = a.step(drive.model, drive.state);
+      const StepReport rb = b.step(drive.model, again);
+      ASSERT_TRUE(ra.converged && rb.converged && c.step(drive.model, root).converged)
+          << "step " << k;
+      fa += ra.factorizations;
+      fb += rb.factorizations;
+      ia += ra.iterations;
+      ib += rb.iterations;
+      for (std::size_t i = 0; i < root.x.size(); ++i) {
+        worst_a = std::max({worst_a, std::abs(drive.state.x[i] - root.x[i]),
+                            std::abs(drive.state.y[i] - root.y[i])});
+        worst_b =
+            std::max({worst_b, std::abs(again.x[i] - root.x[i]), std::abs(again.y[i] - root.y[i])});
+      }
+    }
+    std::printf(
+        "k_t = %g: 300 steps with the update %ld factorisations, %ld Newton iterations; without "
+        "%ld, %ld; a step's end from the root (tolerance 1e-13 p) at most %.2e m with the "
+        "update, %.2e m without\n",
+        kt, fa, ia, fb, ib, worst_a, worst_b);
+    // both within the same bound: 5e-10 m, about twice the kept factors' worst (2.4e-10 m)
+    EXPECT_LT(worst_a, 5e-10) << kt;
+    EXPECT_LT(worst_b, 5e-10) << kt;
+    EXPECT_LT(static_cast<double>(fa), 0.9 * static_cast<double>(fb)) << kt;
+    EXPECT_LT(ia, ib) << kt;
+  }
+}
+
+// The chord iterations' update across switches as a solve (Integrator::chord_solve_after_switch):
+// the Newton matrix factored at one state, the hinges' deflections then moved so that the chosen
+// hinges sit just inside their band on one side (trial (1 − 1e-9) e F) and just beyond it on the
+// other (1 + 1e-9, either way), the iterate unchanged, so that the two Newton matrices differ by
+// the switches alone (and the direction term's 2e-9 e F |∂g/∂x|). The kept factors' solve,
+// corrected, against a dense Gaussian elimination of the second state's Newton system
+// (Integrator::newton_system): the chain's and the wheels' parts each to 1e-8 of their largest
+// entry; the kept factors alone miss it by far more.
+struct SwitchCase {
+  Model model;
+  State state;
+  std::vector<double> u;  // the iterate: x + h v, a driven wheel's ψ + h ω
+};
+
+constexpr double kSwitchStep = 1e-4, kSwitchTheta = 0.6;
+
+// The unknowns at the constant-velocity predictor (newton_system's layout)
+std::vector<double> predictor(const Model& m, const State& s) {
+  std::vector<double> u;
+  for (std::size_t i = 0; i < m.nodes(); ++i) {
+    u.push_back(s.x[i] + kSwitchStep * s.vx[i]);
+    u.push_back(s.y[i] + kSwitchStep * s.vy[i]);
+  }
+  for (std::size_t w = 0; w < m.sprockets.size(); ++w)
+    if (!m.sprockets[w].driver) u.push_back(s.angle[w] + kSwitchStep * s.speed[w]);
+  return u;
+}
+
+// The free 12-link loop of the tests above, stretched 4e-4 and turning at 3 rad/s with a wobble
+// (`open`: the same nodes as an open chain, node 0 pinned)
+SwitchCase spinning_loop(bool open = false) {
+  const std::size_t n = 12;
+  SwitchCase c{uniform_chain(n, !open, kPitch, 0.02, kStiffness, 20.0, false), State(n, 0), {}};
+  c.model.hinge = HingeFriction{.arm = kArm, .rate_band = 5.0};
+  c.model.hinge.stick_stiffness = 30.0;
+  c.model.hinge.stick_damping = 0.002;
+  if (open) c.model.pinned.assign(n, 0), c.model.pinned[0] = 1;
+  const double radius = kPitch / (2 * std::sin(M_PI / static_cast<double>(n))) * 1.0004;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    c.state.x[i] = radius * std::cos(a);
+    c.state.y[i] = radius * std::sin(a);
+    c.state.vx[i] = -3.0 * c.state.y[i] + (i % 2 ? 0.01 : -0.01) * std::cos(a);
+    c.state.vy[i] = 3.0 * c.state.x[i] + (i % 2 ? 0.01 : -0.01) * std::sin(a);
+  }
+  if (open) c.state.vx[0] = c.state.vy[0] = 0.0;
+  c.u = predictor(c.model, c.state);
+  return c;
+}
+
+// The benchmarks' drive with the stick law (its driven wheel an unknown; `two_wheels`: the
+// driver made a driven wheel of the same inertia, two unknowns)
+SwitchCase stick_drive(bool two_wheels) {
+  testing::Loop drive = testing::benchmark_drive(kArm);
+  drive.model.hinge.stick_stiffness = 1000.0;
+  if (two_wheels) {
+    drive.model.sprockets[0].driver = false;
+    drive.model.sprockets[0].inertia = drive.model.sprockets[1].inertia;
+  }
+  // 100 steps on, the wheels in contact (at the seated start none presses: no coupling)
+  Integrator run(drive.model, {.step = kSwitchStep, .theta = kSwitchTheta});
+  for (int k = 0; k < 100; ++k) EXPECT_TRUE(run.step(drive.model, drive.state).converged);
+  SwitchCase c{drive.model, drive.state, {}};
+  c.u = predictor(c.model, c.state);
+  return c;
+}
+
+// The deflection that puts hinge i's trial torque at the iterate at `ratio` × its limit e F
+double deflection_at(const SwitchCase& c, std::size_t i, double ratio) {
+  const Model& m = c.model;
+  const std::size_t n = m.nodes();
+  const std::size_t ends[3] = {(i + n - 1) % n, i, (i + 1) % n};
+  HingeLink link[2];
+  for (int e = 0; e < 2; ++e) {
+    const std::size_t a = ends[e], b = ends[e + 1];
+    const double d0x = c.state.x[b] - c.state.x[a], d0y = c.state.y[b] - c.state.y[a];
+    const double d1x = c.u[2 * b] - c.u[2 * a], d1y = c.u[2 * b + 1] - c.u[2 * a + 1];
+    hinge_link(d0x, d0y, d1x, d1y, std::hypot(d0x, d0y), std::hypot(d1x, d1y), m.rest_length(a),
+               m.axial_stiffness, kSwitchTheta, link[e], true);
+  }
+  HingeCouple hc;
+  hinge_couple(m.hinge, link[0], link[1], kSwitchStep, hc, false, i, kSwitchTheta, 0.0);
+  const double limit = m.hinge.arm * hc.load;
+  EXPECT_GT(limit, 0.0) << "hinge " << i << " unloaded";
+  return (hc.trial - ratio * limit) / m.hinge.stick_stiffness;
+}
+
+constexpr double kIn = 1.0 - 1e-9, kOut = 1.0 + 1e-9;
+struct Switch {
+  std::size_t node;
+  double kept, now;  // the trial's ratio to e F where the factors are taken, and after
+};
+
+struct SwitchSolves {
+  std::vector<double> updated, plain, reference;
+};
+
+// max |δ − δ_ref| / max |δ_ref| over the entries [from, to)
+double part_error(const std::vector<double>& d, const std::vector<double>& ref, std::size_t from,
+                  std::size_t to) {
+  double worst = 0.0, largest = 0.0;
+  for (std::size_t k = from; k < to; ++k) {
+    worst = std::max(worst, std::abs(d[k] - ref[k]));
+    largest = std::max(largest, std::abs(ref[k]));
+  }
+  return worst / largest;
+}
+
+SwitchSolves solve_across(const SwitchCase& c, const std::vector<Switch>& switches) {
+  const std::size_t n = c.model.nodes();
+  State kept = c.state, now = c.state;
+  if (c.state.hinge_deflection.size() != n) {
+    kept.hinge_deflection.assign(n, 0.0);
+    now.hinge_deflection.assign(n, 0.0);
+  }
+  for (const Switch& sw : switches) {
+    kept.hinge_deflection[sw.node] = deflection_at(c, sw.node, sw.kept);
+    now.hinge_deflection[sw.node] = deflection_at(c, sw.node, sw.now);
+  }
+  Integrator integ(c.model, {.step = kSwitchStep, .theta = kSwitchTheta});
+  SwitchSolves out;
+  EXPECT_TRUE(integ.chord_solve_after_switch(c.model, kept, now, c.u, true, out.updated));
+  EXPECT_TRUE(integ.chord_solve_after_switch(c.model, kept, now, c.u, false, out.plain));
+  std::vector<double> r, j;
+  integ.newton_system(c.model, now, c.u, r, &j);
+  const std::size_t size = r.size();
+  testing::Dense a(size, std::vector<double>(size));
+  for (std::size_t row = 0; row < size; ++row) {
+    for (std::size_t col = 0; col < size; ++col) a[row][col] = j[row * size + col];
+    r[row] = -r[row];
+  }
+  out.reference = testing::dense_solve(a, r);
+  return out;
+}
+
+// Asserts the corrected solve is the switched system's and the kept factors' alone is not
+void expect_switched_solve(const SwitchCase& c, const std::vector<Switch>& switches,
+                           const char* what) {
+  const SwitchSolves s = solve_across(c, switches);
+  const std::size_t nodes = 2 * c.model.nodes(), size = s.reference.size();
+  const double chain = part_error(s.updated, s.reference, 0, nodes);
+  const double chain_plain = part_error(s.plain, s.reference, 0, nodes);
+  std::printf("%s: the chain's part %.2e (the kept factors alone %.2e)", what, chain, chain_plain);
+  EXPECT_LT(chain, 1e-8) << what;
+  EXPECT_GT(chain_plain, 1e-4) << what;
+  if (size > nodes) {
+    const double wheels = part_error(s.updated, s.reference, nodes, size);
+    const double wheels_plain = part_error(s.plain, s.reference, nodes, size);
+    std::printf(", the wheels' %.2e (%.2e)", wheels, wheels_plain);
+    EXPECT_LT(wheels, 1e-8) << what;
+    EXPECT_GT(wheels_plain, 1e-6) << what;
+  }
+  std::printf("\n");
+  for (std::size_t i = 0; i < c.model.nodes(); ++i) {
+    if (!c.model.is_pinned(i)) continue;
+    EXPECT_EQ(s.updated[2 * i], 0.0) << what;
+    EXPECT_EQ(s.updated[2 * i + 1], 0.0) << what;
+  }
+}
+
+TEST(HingeStick, SwitchUpdateSolvesTheSwitchedNewtonSystem) {
+  const SwitchCase loop = spinning_loop();
+  expect_switched_solve(loop, {{0, kIn, kOut}}, "loop, stick to +slide");
+  expect_switched_solve(loop, {{0, -kIn, -kOut}}, "loop, stick to -slide");
+  expect_switched_solve(loop, {{0, kOut, kIn}}, "loop, +slide to stick");
+  expect_switched_solve(loop, {{0, -kOut, -kIn}}, "loop, -slide to stick");
+  expect_switched_solve(loop, {{3, -kIn, -kOut}, {4, kOut, kIn}}, "loop, 2 adjacent hinges");
+  expect_switched_solve(loop, {{3, kIn, kOut}, {4, -kOut, -kIn}, {5, -kIn, -kOut}, {9, kOut, kIn}},
+                        "loop, 4 hinges (3 adjacent)");
+  SwitchCase pin_link = loop;
+  pin_link.model.hinge.pin_load = PinLoad::kPinLink;
+  expect_switched_solve(pin_link, {{4, -kIn, -kOut}, {7, kIn, kOut}},
+                        "loop, PinLoad::kPinLink at an even and an odd node");
+  expect_switched_solve(spinning_loop(true), {{1, -kIn, -kOut}, {2, kOut, kIn}},
+                        "open chain, node 0 pinned");
+  expect_switched_solve(stick_drive(false), {{100, -kIn, -kOut}, {101, kOut, kIn}},
+                        "drive, its driven wheel an unknown");
+  expect_switched_solve(stick_drive(true), {{100, kIn, kOut}, {150, -kOut, -kIn}},
+                        "drive, both wheels unknowns");
+}
+
+// More than kMaxSwitches switched hinges: the kept factors' solve alone, bit for bit.
+TEST(HingeStick, SwitchUpdateLeavesMoreThanFourSwitchesToTheKeptFactors) {
+  const SwitchSolves s = solve_across(
+      spinning_loop(),
+      {{0, kIn, kOut}, {2, kIn, kOut}, {4, -kIn, -kOut}, {6, kOut, kIn}, {8, kIn, kOut}});
+  EXPECT_EQ(s.updated, s.plain);
+  EXPECT_GT(part_error(s.plain, s.reference, 0, s.reference.size()), 1e-4);
 }
 
 // The last start from constant velocity with the halvings alone (Integrator::step) runs only

@@ -173,6 +173,59 @@ inline void hinge_link(double d0x, double d0y, double d1x, double d1y, double le
   out.dp[3] = -s4 * mx * my;
 }
 
+/// The hinge's load F (unclamped) and its weights w₀, w₁ on ½ T₀, ½ T₁ at `node`
+/// (pin_link_side): the mean ½ (T₀ + T₁) with 1 and 1, or the pin link's T with 2 and 0 or 0 and
+/// 2 (exact, so the mean's arithmetic is the mean's). hinge_couple_blocks' and
+/// hinge_branch_moment_gradient's, so the two cannot disagree on the rule.
+struct PinLoadWeights {
+  double w0, w1, load;
+};
+inline PinLoadWeights pin_load_weights(const HingeFriction& hinge, std::size_t node,
+                                       const HingeLink& l0, const HingeLink& l1) {
+  const int side = pin_link_side(hinge, node);
+  const double w0 = side < 0 ? 1.0 : (side == 0 ? 2.0 : 0.0);
+  const double w1 = side < 0 ? 1.0 : 2.0 - w0;
+  const double load =
+      side < 0 ? 0.5 * (l0.tension + l1.tension) : (side == 0 ? l0.tension : l1.tension);
+  return {w0, w1, load};
+}
+
+/// ∂M/∂x₁ on the hinge's three nodes (dmx, dmy) from its links' HingeLink terms (with their
+/// derivatives), the load's weights w₀, w₁ (pin_link_side) and the torque's two partials:
+/// `load_factor` ∂M/∂F and `rate_factor` ∂M/∂Δβ. The turn Δβ = turn₁ − turn₀ has the node
+/// gradient (T₀, −T₀ − T₁, T₁) (as g); the load F = Σ w_j ½ k (l_θ − rest)_j has
+/// (−w₀ E₀, w₀ E₀ − w₁ E₁, w₁ E₁) (zero where the load is clamped at 0: load_factor 0 there).
+inline void hinge_moment_gradient(const HingeLink& l0, const HingeLink& l1, double w0, double w1,
+                                  double load_factor, double rate_factor, double dmx[3],
+                                  double dmy[3]) {
+  const double nturn_x[3] = {l0.tx, -l0.tx - l1.tx, l1.tx};
+  const double nturn_y[3] = {l0.ty, -l0.ty - l1.ty, l1.ty};
+  const double e0x = w0 * l0.ex, e0y = w0 * l0.ey, e1x = w1 * l1.ex, e1y = w1 * l1.ey;
+  const double nload_x[3] = {-e0x, e0x - e1x, e1x};
+  const double nload_y[3] = {-e0y, e0y - e1y, e1y};
+  for (int q = 0; q < 3; ++q) {
+    dmx[q] = load_factor * nload_x[q] + rate_factor * nturn_x[q];
+    dmy[q] = load_factor * nload_y[q] + rate_factor * nturn_y[q];
+  }
+}
+
+/// The stick law's ∂M/∂x₁ on the hinge's three nodes on a given branch, whichever branch the
+/// hinge is on: `branch` 0 sticking (∂M/∂Δβ = −(k_t θ h + c_t)/h), +1 or −1 sliding with
+/// M = ±e F (∂M/∂F = ±e on a loaded hinge); the links' terms with their derivatives (hinge_link
+/// with `jacobian`). hinge_couple_blocks' term on the hinge's own branch, bit for bit: the
+/// integrator's chord iterations correct their kept factors by the difference of two branches'
+/// at a hinge that switched (g ⊗ the difference, a rank-1 change of the Newton matrix).
+inline void hinge_branch_moment_gradient(const HingeFriction& hinge, const HingeLink& l0,
+                                         const HingeLink& l1, double step, std::size_t node,
+                                         double theta, int branch, double dmx[3], double dmy[3]) {
+  const auto [w0, w1, load] = pin_load_weights(hinge, node, l0, l1);
+  const double loaded = load > 0.0 ? 1.0 : 0.0;
+  const double load_factor = branch == 0 ? 0.0 : branch * hinge.arm * loaded;
+  const double rate_factor =
+      branch == 0 ? -(hinge.stick_stiffness * theta * step + hinge.stick_damping) / step : -0.0;
+  hinge_moment_gradient(l0, l1, w0, w1, load_factor, rate_factor, dmx, dmy);
+}
+
 /// The couple of the hinge between links `l0` (a → b) and `l1` (b → c) from their HingeLink
 /// terms, as hinge_couple below, with the Jacobian handed out block by block rather than stored:
 /// with `jacobian`, `block(k, q, a, b, c, d)` is called for each of the nine 2×2 blocks (k, q)
@@ -190,11 +243,7 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
                                 Block&& block, std::size_t node, double theta, double deflection) {
   // F: ½ (T₀ + T₁) (the mean), or the pin link's T (weights w₀, w₁ of ½ T₀, ½ T₁: 1 and 1, or
   // 2 and 0, or 0 and 2; exact, so the mean's arithmetic is what it was)
-  const int side = pin_link_side(hinge, node);
-  const double w0 = side < 0 ? 1.0 : (side == 0 ? 2.0 : 0.0);
-  const double w1 = side < 0 ? 1.0 : 2.0 - w0;
-  const double load =
-      side < 0 ? 0.5 * (l0.tension + l1.tension) : (side == 0 ? l0.tension : l1.tension);
+  const auto [w0, w1, load] = pin_load_weights(hinge, node, l0, l1);
   hc.load = std::max(0.0, load);
   hc.turn = l1.turn - l0.turn;
   hc.rate = hc.turn / step;
@@ -243,16 +292,8 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
   // (l_θ − rest)_j gives (−w₀ E₀, w₀ E₀ − w₁ E₁, w₁ E₁) (zero where the load is clamped at 0):
   // the pin link's alone with PinLoad::kPinLink.
   const double rate_factor = -hc.rate_stiffness / step;  // ∂M/∂Δβ (−e F s'/h regularised)
-  const double nturn_x[3] = {l0.tx, -l0.tx - l1.tx, l1.tx};
-  const double nturn_y[3] = {l0.ty, -l0.ty - l1.ty, l1.ty};
-  const double e0x = w0 * l0.ex, e0y = w0 * l0.ey, e1x = w1 * l1.ex, e1y = w1 * l1.ey;
-  const double nload_x[3] = {-e0x, e0x - e1x, e1x};
-  const double nload_y[3] = {-e0y, e0y - e1y, e1y};
-  double dmx[3], dmy[3];  // ∂M/∂x₁ per node
-  for (int q = 0; q < 3; ++q) {
-    dmx[q] = load_factor * nload_x[q] + rate_factor * nturn_x[q];
-    dmy[q] = load_factor * nload_y[q] + rate_factor * nturn_y[q];
-  }
+  double dmx[3], dmy[3];                                 // ∂M/∂x₁ per node
+  hinge_moment_gradient(l0, l1, w0, w1, load_factor, rate_factor, dmx, dmy);
   // The load and rate terms g_k ⊗ ∂M/∂x_q on every block, plus the direction term M ∂g_k/∂x_q:
   // g = (P₀, −P₀ − P₁, P₁), ∂P_j/∂x of its link's end node is DP_j, of its start node −DP_j, so
   // (blocks k, q) −DP₀ +DP₀ 0 / +DP₀ −DP₀+DP₁ −DP₁ / 0 −DP₁ +DP₁ (the blocks (0, 2) and (2, 0)

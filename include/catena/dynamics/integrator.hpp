@@ -45,6 +45,11 @@ struct IntegratorOptions {
   /// Try each guide only against the nodes GuideHint lists near it (O(N + G + pairs) a step);
   /// false: every node against every guide (O(N·G)), for verification. Bit-identical results.
   bool guide_hint = true;
+  /// The stick law's chord iterations take up to four hinges' stick–slip switches into their
+  /// kept factors by a low-rank update (docs/models/dynamics.md, "Hinges: sticking"); false: the
+  /// kept factors alone, as before the update (for verification: the same residual and stopping
+  /// tests, with more factorisations). No effect without the stick law.
+  bool switch_update = true;
 };
 
 std::vector<Issue> validate(const IntegratorOptions& options);
@@ -139,6 +144,17 @@ class Integrator {
   /// blocks too) and borders. Pinned nodes are not supported here.
   void newton_system(const Model& model, const State& state, std::span<const double> unknowns,
                      std::vector<double>& residual, std::vector<double>* jacobian);
+  /// For verification only: a stick-law chord iteration's Newton correction after its hinges
+  /// switched branch. Factors the Newton matrix at `unknowns` of the state `kept` (as a step's
+  /// fresh iteration, the bordered solve's elimination and the hinges' branches included), then
+  /// solves with those factors for the residual at the same unknowns of `now` (the chord solve)
+  /// and, with `update`, corrects that solve for the hinges that switched branch between the two
+  /// (IntegratorOptions::switch_update's correction). `delta` is laid out as `unknowns`
+  /// (newton_system's); the correction solves J δ = −R. False where the factorisation failed. The
+  /// next step factors afresh.
+  bool chord_solve_after_switch(const Model& model, const State& kept, const State& now,
+                                std::span<const double> unknowns, bool update,
+                                std::vector<double>& delta);
 
  private:
   // Fills the solver's rhs with −R(u) (and its blocks with J(u) when `jacobian`); returns |R|².
@@ -159,6 +175,23 @@ class Integrator {
   // the caller has filled them), O(N) + a rebuild when a node has moved more than its margin.
   void refresh_guide_hint(const Model& model);
   void substitute(std::span<const Vec2> b, std::span<Vec2> x);
+  // newton_system's and chord_solve_after_switch's setup: the links at the state s, and the
+  // iterate (nodes, then the driven wheels' angles and the take-ups' slides) from `unknowns`.
+  void load_iterate(const Model& model, const State& s, std::span<const double> unknowns);
+  // The Newton correction with fresh factors into delta_ (and dx_ with bordering unknowns): the
+  // bordered solve's elimination, whose W = A⁻¹ B and Schur factors the chord iterations keep.
+  SolveStatus solve_fresh();
+  // kept_branch_ from trial_ (the assembly the factors were taken from)
+  void keep_branches();
+  // The bordered solve's end: back substitution on the Schur complement's upper factor (its
+  // right-hand side in xx, already forward-eliminated), then δu = δu₀ − W δx (δu₀ in x).
+  void finish_bordered(std::vector<Vec2>& x, double* xx);
+  // The bordered solve with the kept factors (a chord iteration's): the chain's part of the
+  // right-hand side `b`, the extras' `bx` (null: zero), into x and xx.
+  void chord_solve(std::span<const Vec2> b, const double* bx, std::vector<Vec2>& x, double* xx);
+  // The stick law's chord iteration corrected for the hinges that switched branch since the
+  // kept factors were taken (delta_ and dx_ in place); false where it left them as they were.
+  bool correct_for_switches(const Model& model, const State& s);
   void substitute(std::span<const Vec2> b, std::span<Vec2> x, std::span<const Vec2> b2,
                   std::span<Vec2> x2);
 
@@ -178,6 +211,20 @@ class Integrator {
     double trial = 0.0, limit = 0.0;
   };
   std::vector<HingeTrial> trial_, trial_base_;
+  // a hinge's branch at its trial: 0 sticking, ±1 sliding that way
+  static int branch_of(const HingeTrial& t) {
+    return std::abs(t.trial) <= t.limit ? 0 : (t.trial > 0.0 ? 1 : -1);
+  }
+  // The stick law's chord iterations across a stick–slip switch (Integrator::step): each hinge's
+  // branch where the kept factors were taken (0 sticking, ±1 sliding that way), and per switched
+  // hinge (at most kMaxSwitches) the update's column U = −h g, its solve W = A⁻¹ U with the
+  // kept factors (the nodes' part, then the extras' nd values each) and the small matrix
+  // I + Vᵀ W, V the switch's change of ∂M/∂x₁
+  static constexpr std::size_t kMaxSwitches = 4;
+  std::vector<signed char> kept_branch_;
+  std::vector<Vec2> switch_u_;
+  std::vector<std::vector<Vec2>> switch_w_;
+  std::vector<double> switch_wx_;
   std::vector<Vec2> delta_;     // Newton correction
   std::vector<double> psi1_;    // sprocket angles at the end of the step (iterate)
   std::vector<double> slide1_;  // take-ups' slides at the end of the step (iterate), per wheel

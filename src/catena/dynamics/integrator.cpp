@@ -129,6 +129,9 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
       hinge_links_(model.hinge.active() ? model.links() : 0),
       trial_(model.hinge.sticks() ? model.nodes() : 0),
       trial_base_(trial_.size()),
+      kept_branch_(trial_.size()),
+      switch_u_(trial_.size()),
+      switch_w_(trial_.empty() ? 0 : kMaxSwitches, std::vector<Vec2>(trial_.size())),
       delta_(model.nodes()),
       psi1_(model.sprockets.size()),
       slide1_(model.sprockets.size()),
@@ -162,6 +165,7 @@ Integrator::Integrator(const Model& model, IntegratorOptions options)
   xres_.assign(m, 0.0);
   xjac_.assign(m * m, 0.0);
   dx_.assign(m, 0.0);
+  switch_wx_.assign(trial_.empty() ? 0 : kMaxSwitches * m, 0.0);
   schur_.assign(m * m, 0.0);
   bcol_.assign(m, std::vector<Vec2>(model.nodes()));
   brow_.assign(m, std::vector<Vec2>(model.nodes()));
@@ -1184,23 +1188,6 @@ StepReport Integrator::step(const Model& model, State& s) {
     }
     return next;
   };
-  // The bordered solve's end: back substitution on the Schur complement's upper factor (its
-  // right-hand side in dx_, already forward-eliminated), then δu = δu₀ − W δx.
-  auto finish_bordered = [&] {
-    for (std::size_t c = nd; c-- > 0;) {
-      double v = dx_[c];
-      for (std::size_t k = c + 1; k < nd; ++k) v -= schur_[c * nd + k] * dx_[k];
-      dx_[c] = v / schur_[c * nd + c];
-    }
-    for (std::size_t a = 0; a < nd; ++a) {
-      const std::vector<Vec2>& wa = wsol_[a];
-      const double d = dx_[a];
-      for (std::size_t i = 0; i < n; ++i) {
-        delta_[i].x -= wa[i].x * d;
-        delta_[i].y -= wa[i].y * d;
-      }
-    }
-  };
   auto newton = [&](double ht, bool stale) {
     for (std::size_t i = 0; i < n; ++i) {
       ux_[i] = s.x[i] + h * s.vx[i] + ht * dvx_[i];
@@ -1243,72 +1230,19 @@ StepReport Integrator::step(const Model& model, State& s) {
         ++report.factorizations;
         report.solve = factor();
         if (report.solve != SolveStatus::kSolved) return report;
+        keep_branches();
       }
       if (nd == 0) {
         substitute(solver_.rhs, delta_);
       } else if (fresh) {
-        // The driven wheels' angles and the take-ups' slides border the chain's matrix:
-        // [A B; Cᵀ D] [δu; δx] = [r; r_x]. Solve A W = B (one more O(N) substitution per extra
-        // unknown, same factors; the first rides along with δu₀'s), then the small Schur
-        // complement (D − Cᵀ W) δx = r_x − Cᵀ δu₀, and δu = δu₀ − W δx.
-        substitute(solver_.rhs, delta_, bcol_[0], wsol_[0]);
-        for (std::size_t a = 1; a < nd; ++a) substitute(bcol_[a], wsol_[a]);
-        for (std::size_t a = 0; a < nd; ++a) {
-          // the unknown's row, over the rows where it is not zero (in the same order: the same
-          // sums, the zero terms left out)
-          const std::vector<Vec2>& ba = brow_[a];
-          const std::vector<std::size_t>& rows = border_rows_[a];
-          double g = xres_[a];
-          for (const std::size_t i : rows) g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
-          dx_[a] = g;
-          for (std::size_t b = 0; b < nd; ++b) {
-            const std::vector<Vec2>& wb = wsol_[b];
-            double sab = xjac_[a * nd + b];
-            for (const std::size_t i : rows) sab -= ba[i].x * wb[i].x + ba[i].y * wb[i].y;
-            schur_[a * nd + b] = sab;
-          }
-        }
-        // Gaussian elimination on the nd × nd Schur complement (nd is the number of driven
-        // wheels and take-ups: small), right-hand side in dx_; the multipliers are kept below
-        // the diagonal for the chord iterations (they are not read again here).
-        for (std::size_t c = 0; c < nd; ++c) {
-          const double piv = schur_[c * nd + c];
-          if (!(std::abs(piv) > 0.0) || !std::isfinite(piv)) {
-            report.solve = SolveStatus::kSingularPivot;
-            return report;
-          }
-          for (std::size_t r = c + 1; r < nd; ++r) {
-            const double f = schur_[r * nd + c] / piv;
-            for (std::size_t k = c; k < nd; ++k) schur_[r * nd + k] -= f * schur_[c * nd + k];
-            schur_[r * nd + c] = f;
-            dx_[r] -= f * dx_[c];
-          }
-        }
-        finish_bordered();
+        report.solve = solve_fresh();
+        if (report.solve != SolveStatus::kSolved) return report;
       } else {
         // a chord iteration: the same bordered solve with the kept W = A⁻¹ B and the Schur
         // complement's factors, for the new right-hand sides
-        // The unknown's row over border_rows_ alone, as the fresh branch: brow_ and border_rows_
-        // are written together, only by a Jacobian assembly (its clear_border zeroes the rows it
-        // listed, +0.0, before it lists the new ones), and a chord iteration assembles the
-        // residual alone — so the rows outside border_rows_[a] are +0.0 here, and the rows inside
-        // it are visited in the same ascending order as the loop over every row visited them. The
-        // terms left out are (+0)·δ + (+0)·δ = ±0, and g − (±0) = g but for g = −0 exactly (then
-        // +0): at most the sign of an exactly zero correction (a non-finite δ is refused below
-        // either way).
-        substitute(solver_.rhs, delta_);
-        for (std::size_t a = 0; a < nd; ++a) {
-          const std::vector<Vec2>& ba = brow_[a];
-          double g = xres_[a];
-          for (const std::size_t i : border_rows_[a])
-            g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
-          dx_[a] = g;
-        }
-        for (std::size_t c = 0; c < nd; ++c) {
-          for (std::size_t r = c + 1; r < nd; ++r) dx_[r] -= schur_[r * nd + c] * dx_[c];
-        }
-        finish_bordered();
+        chord_solve(solver_.rhs, xres_.data(), delta_, dx_.data());
       }
+      if (!fresh && !trial_.empty() && options_.switch_update) correct_for_switches(model, s);
       double correction = 0.0;
       // the stick law's trials where this correction starts (crossing_cut); a swap, as every
       // assembly rewrites each hinge's entry of trial_ (and the others stay {0, 0} in both)
@@ -1676,24 +1610,7 @@ void Integrator::newton_system(const Model& model, const State& s, std::span<con
   throw_if_any(validate(model, s));
   // this assembly overwrites the bordered solve's rows and columns: the next step factors afresh
   factors_kept_ = false;
-  const double h = options_.step;
-  for (std::size_t j = 0; j < model.links(); ++j) {
-    const std::size_t b = (j + 1) % n;
-    l0_[j] = std::hypot(s.x[b] - s.x[j], s.y[b] - s.y[j]);
-  }
-  prepare_links(model);
-  load_mass0_set_ = false;
-  prepare_seats(model);
-  for (std::size_t i = 0; i < n; ++i) {
-    ux_[i] = unknowns[2 * i];
-    uy_[i] = unknowns[2 * i + 1];
-  }
-  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
-    psi1_[w] = s.angle[w] + h * model.sprockets[w].speed;  // a driver's; the others set below
-    slide1_[w] = 0.0;
-  }
-  for (std::size_t a = 0; a < m; ++a)
-    (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] = unknowns[2 * n + a];
+  load_iterate(model, s, unknowns);
   assemble(model, s, jacobian != nullptr);
   residual.assign(size, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
@@ -1734,6 +1651,263 @@ void Integrator::newton_system(const Model& model, const State& s, std::span<con
     }
     for (std::size_t b = 0; b < m; ++b) J[(2 * n + a) * size + 2 * n + b] = xjac_[a * m + b];
   }
+}
+
+// The bordered solve's end: back substitution on the Schur complement's upper factor (its
+// right-hand side in xx, already forward-eliminated), then δu = δu₀ − W δx (δu₀ in x).
+void Integrator::finish_bordered(std::vector<Vec2>& x, double* xx) {
+  const std::size_t n = ux_.size(), nd = extra_.size();
+  for (std::size_t c = nd; c-- > 0;) {
+    double v = xx[c];
+    for (std::size_t k = c + 1; k < nd; ++k) v -= schur_[c * nd + k] * xx[k];
+    xx[c] = v / schur_[c * nd + c];
+  }
+  for (std::size_t a = 0; a < nd; ++a) {
+    const std::vector<Vec2>& wa = wsol_[a];
+    const double d = xx[a];
+    for (std::size_t i = 0; i < n; ++i) {
+      x[i].x -= wa[i].x * d;
+      x[i].y -= wa[i].y * d;
+    }
+  }
+}
+// The bordered solve with the kept factors (a chord iteration's): the chain's part of the
+// right-hand side `b`, the extras' `bx` (null: zero), into x and xx. The unknown's row over
+// border_rows_ alone: brow_ and border_rows_ are written together, only by a Jacobian assembly
+// (its clear_border zeroes the rows it listed, +0.0, before it lists the new ones), and a chord
+// iteration assembles the residual alone — so the rows outside border_rows_[a] are +0.0 here,
+// and the rows inside it are visited in the same ascending order as the loop over every row
+// visited them. The terms left out are (+0)·δ + (+0)·δ = ±0, and g − (±0) = g but for g = −0
+// exactly (then +0): at most the sign of an exactly zero correction (a non-finite δ is refused
+// below either way).
+void Integrator::chord_solve(std::span<const Vec2> b, const double* bx, std::vector<Vec2>& x,
+                             double* xx) {
+  const std::size_t nd = extra_.size();
+  substitute(b, x);
+  for (std::size_t a = 0; a < nd; ++a) {
+    const std::vector<Vec2>& ba = brow_[a];
+    double g = bx != nullptr ? bx[a] : 0.0;
+    for (const std::size_t i : border_rows_[a]) g -= ba[i].x * x[i].x + ba[i].y * x[i].y;
+    xx[a] = g;
+  }
+  for (std::size_t c = 0; c < nd; ++c) {
+    for (std::size_t r = c + 1; r < nd; ++r) xx[r] -= schur_[r * nd + c] * xx[c];
+  }
+  finish_bordered(x, xx);
+}
+// The stick law's hinges that switched branch (sticking, sliding either way) since the kept
+// factors were taken: each changes the Newton matrix by −h g ⊗ ΔM' (g = ∂β/∂x at the θ point,
+// ΔM' the change of ∂M/∂x₁ between the two branches: hinge_branch_moment_gradient), a rank-1
+// change U Vᵀ that the chord iteration's solve y = A⁻¹ r takes in by the Sherman–Morrison–
+// Woodbury formula (Golub & Van Loan, §2.1): δ = y − W (I + Vᵀ W)⁻¹ Vᵀ y, W = A⁻¹ U (one
+// substitution a switched hinge), with the links' terms at the current iterate. Up to
+// kMaxSwitches hinges; with more (or a singular I + Vᵀ W) the kept factors alone, as before.
+// Without a switch nothing is done: the chord iteration is the same, bit for bit.
+bool Integrator::correct_for_switches(const Model& model, const State& s) {
+  const std::size_t n = ux_.size(), nd = extra_.size();
+  const double h = options_.step, th = options_.theta;
+  std::size_t nodes[kMaxSwitches];
+  int now[kMaxSwitches];
+  std::size_t r = 0;
+  for (std::size_t i = 0; i < trial_.size(); ++i) {
+    const int branch = branch_of(trial_[i]);
+    if (branch == kept_branch_[i]) continue;
+    if (r == kMaxSwitches) return false;
+    nodes[r] = i;
+    now[r] = branch;
+    ++r;
+  }
+  if (r == 0) return false;
+  double v[kMaxSwitches][6];        // ΔM' on the hinge's three nodes (x, y)
+  std::size_t at[kMaxSwitches][3];  // the three nodes
+  for (std::size_t k = 0; k < r; ++k) {
+    const std::size_t i = nodes[k];
+    const std::size_t ha = i == 0 ? n - 1 : i - 1, hb = i + 1 == n ? 0 : i + 1;
+    HingeLink link[2];
+    const std::size_t ends[3] = {ha, i, hb};
+    for (int e = 0; e < 2; ++e) {
+      const std::size_t j = ends[e], a = ends[e], b = ends[e + 1];
+      hinge_link(s.x[b] - s.x[a], s.y[b] - s.y[a], ux_[b] - ux_[a], uy_[b] - uy_[a], l0_[j], l1_[j],
+                 model.rest_length(j), model.axial_stiffness, th, link[e], true);
+    }
+    double mx[3], my[3], kx[3], ky[3];
+    hinge_branch_moment_gradient(model.hinge, link[0], link[1], h, i, th, now[k], mx, my);
+    hinge_branch_moment_gradient(model.hinge, link[0], link[1], h, i, th, kept_branch_[i], kx, ky);
+    const double gx[3] = {link[0].px, -link[0].px - link[1].px, link[1].px};
+    const double gy[3] = {link[0].py, -link[0].py - link[1].py, link[1].py};
+    // a pinned node's row and column are the identity's (assemble): no term there
+    for (int q = 0; q < 3; ++q) {
+      const double keep = model.is_pinned(ends[q]) ? 0.0 : 1.0;
+      at[k][q] = ends[q];
+      v[k][2 * q] = keep * (mx[q] - kx[q]);
+      v[k][2 * q + 1] = keep * (my[q] - ky[q]);
+      switch_u_[ends[q]] = {-h * gx[q] * keep, -h * gy[q] * keep};
+    }
+    chord_solve(switch_u_, nullptr, switch_w_[k], switch_wx_.data() + k * nd);
+    for (int q = 0; q < 3; ++q) switch_u_[ends[q]] = Vec2{};
+  }
+  // I + Vᵀ W and Vᵀ y, then Gaussian elimination with partial pivoting (r ≤ 4)
+  double a[kMaxSwitches][kMaxSwitches + 1];
+  for (std::size_t k = 0; k < r; ++k) {
+    double z = 0.0;
+    for (int q = 0; q < 3; ++q)
+      z += v[k][2 * q] * delta_[at[k][q]].x + v[k][2 * q + 1] * delta_[at[k][q]].y;
+    a[k][r] = z;
+    for (std::size_t c = 0; c < r; ++c) {
+      const std::vector<Vec2>& w = switch_w_[c];
+      double e = k == c ? 1.0 : 0.0;
+      for (int q = 0; q < 3; ++q)
+        e += v[k][2 * q] * w[at[k][q]].x + v[k][2 * q + 1] * w[at[k][q]].y;
+      a[k][c] = e;
+    }
+  }
+  // a pivot below kPivotFloor of the matrix's largest row sum: I + Vᵀ W is singular to
+  // rounding, and its solve's coefficients would be noise (or overflow)
+  constexpr double kPivotFloor = 1e-12;
+  double scale = 0.0;
+  for (std::size_t k = 0; k < r; ++k) {
+    double row = 0.0;
+    for (std::size_t c = 0; c < r; ++c) row += std::abs(a[k][c]);
+    scale = std::max(scale, row);
+  }
+  if (!std::isfinite(scale)) return false;
+  for (std::size_t c = 0; c < r; ++c) {
+    std::size_t p = c;
+    for (std::size_t k = c + 1; k < r; ++k)
+      if (std::abs(a[k][c]) > std::abs(a[p][c])) p = k;
+    if (!(std::abs(a[p][c]) > kPivotFloor * scale)) return false;
+    if (p != c) std::swap(a[p], a[c]);
+    for (std::size_t k = c + 1; k < r; ++k) {
+      const double f = a[k][c] / a[c][c];
+      for (std::size_t e = c; e <= r; ++e) a[k][e] -= f * a[c][e];
+    }
+  }
+  double coef[kMaxSwitches];
+  for (std::size_t c = r; c-- > 0;) {
+    double z = a[c][r];
+    for (std::size_t e = c + 1; e < r; ++e) z -= a[c][e] * coef[e];
+    coef[c] = z / a[c][c];
+  }
+  for (std::size_t k = 0; k < r; ++k)
+    if (!std::isfinite(coef[k])) return false;
+  for (std::size_t k = 0; k < r; ++k) {
+    const std::vector<Vec2>& w = switch_w_[k];
+    const double c = coef[k];
+    for (std::size_t i = 0; i < n; ++i) {
+      delta_[i].x -= w[i].x * c;
+      delta_[i].y -= w[i].y * c;
+    }
+    for (std::size_t e = 0; e < nd; ++e) dx_[e] -= switch_wx_[k * nd + e] * c;
+  }
+  return true;
+}
+
+void Integrator::load_iterate(const Model& model, const State& s,
+                              std::span<const double> unknowns) {
+  const std::size_t n = model.nodes(), m = extra_.size();
+  const double h = options_.step;
+  for (std::size_t j = 0; j < model.links(); ++j) {
+    const std::size_t b = (j + 1) % n;
+    l0_[j] = std::hypot(s.x[b] - s.x[j], s.y[b] - s.y[j]);
+  }
+  prepare_links(model);
+  load_mass0_set_ = false;
+  prepare_seats(model);
+  for (std::size_t i = 0; i < n; ++i) {
+    ux_[i] = unknowns[2 * i];
+    uy_[i] = unknowns[2 * i + 1];
+  }
+  for (std::size_t w = 0; w < model.sprockets.size(); ++w) {
+    psi1_[w] = s.angle[w] + h * model.sprockets[w].speed;  // a driver's; the others set below
+    slide1_[w] = 0.0;
+  }
+  for (std::size_t a = 0; a < m; ++a)
+    (extra_[a].slide ? slide1_ : psi1_)[extra_[a].wheel] = unknowns[2 * n + a];
+}
+
+bool Integrator::chord_solve_after_switch(const Model& model, const State& kept, const State& now,
+                                          std::span<const double> unknowns, bool update,
+                                          std::vector<double>& delta) {
+  const std::size_t n = model.nodes(), m = extra_.size(), size = 2 * n + m;
+  if (unknowns.size() != size || model.nodes() != solver_.size() ||
+      model.sprockets.size() != psi1_.size() ||
+      (model.hinge.active() && model.nodes() >= 3) != pentadiagonal_) {
+    throw InputError({{"unknowns", std::to_string(unknowns.size()),
+                       std::to_string(size) + " values for this integrator's model"}});
+  }
+  throw_if_any(validate(model, kept));
+  throw_if_any(validate(model, now));
+  factors_kept_ = false;  // the next step factors afresh
+  load_iterate(model, kept, unknowns);
+  assemble(model, kept, true);
+  if (factor() != SolveStatus::kSolved) return false;
+  keep_branches();
+  if (m == 0) {
+    substitute(solver_.rhs, delta_);
+  } else if (solve_fresh() != SolveStatus::kSolved) {
+    return false;
+  }
+  load_iterate(model, now, unknowns);
+  assemble(model, now, false);
+  if (m == 0)
+    substitute(solver_.rhs, delta_);
+  else
+    chord_solve(solver_.rhs, xres_.data(), delta_, dx_.data());
+  if (update && !trial_.empty()) correct_for_switches(model, now);
+  delta.assign(size, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    delta[2 * i] = delta_[i].x;
+    delta[2 * i + 1] = delta_[i].y;
+  }
+  for (std::size_t a = 0; a < m; ++a) delta[2 * n + a] = dx_[a];
+  return true;
+}
+
+void Integrator::keep_branches() {
+  for (std::size_t i = 0; i < trial_.size(); ++i)
+    kept_branch_[i] = static_cast<signed char>(branch_of(trial_[i]));
+}
+
+SolveStatus Integrator::solve_fresh() {
+  const std::size_t nd = extra_.size();
+  // The driven wheels' angles and the take-ups' slides border the chain's matrix:
+  // [A B; Cᵀ D] [δu; δx] = [r; r_x]. Solve A W = B (one more O(N) substitution per extra
+  // unknown, same factors; the first rides along with δu₀'s), then the small Schur
+  // complement (D − Cᵀ W) δx = r_x − Cᵀ δu₀, and δu = δu₀ − W δx.
+  substitute(solver_.rhs, delta_, bcol_[0], wsol_[0]);
+  for (std::size_t a = 1; a < nd; ++a) substitute(bcol_[a], wsol_[a]);
+  for (std::size_t a = 0; a < nd; ++a) {
+    // the unknown's row, over the rows where it is not zero (in the same order: the same
+    // sums, the zero terms left out)
+    const std::vector<Vec2>& ba = brow_[a];
+    const std::vector<std::size_t>& rows = border_rows_[a];
+    double g = xres_[a];
+    for (const std::size_t i : rows) g -= ba[i].x * delta_[i].x + ba[i].y * delta_[i].y;
+    dx_[a] = g;
+    for (std::size_t b = 0; b < nd; ++b) {
+      const std::vector<Vec2>& wb = wsol_[b];
+      double sab = xjac_[a * nd + b];
+      for (const std::size_t i : rows) sab -= ba[i].x * wb[i].x + ba[i].y * wb[i].y;
+      schur_[a * nd + b] = sab;
+    }
+  }
+  // Gaussian elimination on the nd × nd Schur complement (nd is the number of driven
+  // wheels and take-ups: small), right-hand side in dx_; the multipliers are kept below
+  // the diagonal for the chord iterations (they are not read again here).
+  for (std::size_t c = 0; c < nd; ++c) {
+    const double piv = schur_[c * nd + c];
+    if (!(std::abs(piv) > 0.0) || !std::isfinite(piv)) {
+      return SolveStatus::kSingularPivot;
+    }
+    for (std::size_t r = c + 1; r < nd; ++r) {
+      const double f = schur_[r * nd + c] / piv;
+      for (std::size_t k = c; k < nd; ++k) schur_[r * nd + k] -= f * schur_[c * nd + k];
+      schur_[r * nd + c] = f;
+      dx_[r] -= f * dx_[c];
+    }
+  }
+  finish_bordered(delta_, dx_.data());
+  return SolveStatus::kSolved;
 }
 
 }  // namespace catena::dynamics
