@@ -914,7 +914,7 @@ TEST(DynamicsSlackStart, AKinkedSlopedCatenaryIsLaidTangentToItsWheels) {
 // wheels (measured one by one: all 222, node 0 at the path's start; before, every one folded and
 // was laid at its node 0's phase), sampled here at 77, 150 and 298: the path turning by less than
 // 1e-9 rad at every joint, every link one pitch. 76 is laid as before, a circular arc (its kink
-// 87.5°, under the 90° of a fold: the lay between the tangent points kept), and 299 is not laid.
+// 87.5°: within its half circle, where the arc is kept), and 299 is not laid.
 TEST(DynamicsSlackStart, EveryCountOnTheKinkedSlopeIsLaidTangent) {
   const std::vector<Circle> circles{{0.0, 0.0, pitch_radius(17)}, {0.2, -0.4, pitch_radius(17)}};
   const BeltPath path = belt_path(circles, 0);
