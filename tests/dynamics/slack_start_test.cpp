@@ -411,6 +411,14 @@ double joint_turn(const BeltPath& laid, std::size_t j) {
   return std::atan2(u.tx * v.ty - u.ty * v.tx, u.tx * v.tx + u.ty * v.ty);
 }
 
+// The largest turn [rad] (its size) at any joint of the laid path (`joint_turn`).
+double largest_joint_turn(const BeltPath& laid) {
+  double turn = 0.0;
+  for (std::size_t j = 0; j < laid.pieces.size(); ++j)
+    turn = std::max(turn, std::abs(joint_turn(laid, j)));
+  return turn;
+}
+
 // How far span k of `laid` is from tangent to both its wheels, by plain geometry (not the
 // tangency conditions the code solves, nor its tangents cut at θ = atan sinh t): the catenary's
 // ends (sag_point, from its a and u) against the wraps' ends on the circles given (`gap`), their
@@ -575,9 +583,7 @@ TEST(DynamicsSlackStart, SlackBeyondTheHalfCircleIsLaidAsTheCatenary) {
   EXPECT_LT(s.laid.pieces[(k + 1) % s.laid.pieces.size()].length,
             s.path.pieces[(k + 1) % s.path.pieces.size()].length);
   expect_tangent_fit(s.laid, k, s.circles, "30 %");
-  double turn = 0.0;
-  for (std::size_t j = 0; j < s.laid.pieces.size(); ++j)
-    turn = std::max(turn, std::abs(joint_turn(s.laid, j)));
+  const double turn = largest_joint_turn(s.laid);
   EXPECT_LT(turn, 1e-9);
   const ClosedForm c = closed_form(q.x0, q.y0, q.x1, q.y1, q.length);
   const double d = q.x1 - q.x0, h = q.y1 - q.y0;
@@ -661,7 +667,10 @@ TEST(DynamicsSlackStart, ACatenaryIntoAWheelIsRefused) {
 // apart, 36 links, laid tangent to both (the path turning by under 1e-9 rad at every joint),
 // a = 11.1 mm = 0.59 p: every link still one pitch. (Before the tangent lay: z 8 70 mm apart, 46
 // links, laid between the tangent points with a = 7.9 mm and a kink at each wheel; tangent to
-// them that start's a is 15.6 mm, 0.82 p, no longer tight.)
+// them that start's a is 15.6 mm, 0.82 p, no longer tight.) z 6 is a case of the walker alone:
+// the command takes 8 to 150 teeth, and its level two-wheel starts laid tangent do not get this
+// tight (z 8 at 62, 65 and 70 mm, every count up to the longest catenary: a at least 14.0 mm,
+// 0.735 p).
 TEST(DynamicsSlackStart, ATightCatenaryIsWalkedAtOnePitch) {
   const std::vector<Circle> circles{{0.0, 0.0, pitch_radius(6)}, {0.05, 0.0, pitch_radius(6)}};
   const BeltPath path = belt_path(circles, 0);
@@ -672,9 +681,7 @@ TEST(DynamicsSlackStart, ATightCatenaryIsWalkedAtOnePitch) {
   const std::size_t k = slack_span(path);
   ASSERT_TRUE(laid.pieces[k].catenary);
   EXPECT_LT(laid.pieces[k].hang_a, 0.7 * kPitch);
-  double turn = 0.0;
-  for (std::size_t j = 0; j < laid.pieces.size(); ++j)
-    turn = std::max(turn, std::abs(joint_turn(laid, j)));
+  const double turn = largest_joint_turn(laid);
   EXPECT_LT(turn, 1e-9);
   std::printf("tight catenary: a %.6f m, e / c %.4f\n", laid.pieces[k].hang_a,
               (laid.pieces[k].length - path.pieces[k].length) / path.pieces[k].length);
@@ -765,9 +772,7 @@ TEST(DynamicsSlackStart, ASlopedCatenaryIsLaidAtOnePitchOrRefused) {
     EXPECT_GT(place.wrapped[0], 0) << what;
     EXPECT_GT(place.wrapped[1], 0) << what;
     EXPECT_TRUE(laid.pieces[k].catenary) << what;
-    double turn = 0.0;
-    for (std::size_t j = 0; j < laid.pieces.size(); ++j)
-      turn = std::max(turn, std::abs(joint_turn(laid, j)));
+    const double turn = largest_joint_turn(laid);
     if (c.tangent) {
       EXPECT_LT(turn, 1e-9) << what;
     } else {
@@ -928,9 +933,7 @@ TEST(DynamicsSlackStart, EveryCountOnTheKinkedSlopeIsLaidTangent) {
     }
     ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links)) << links;
     EXPECT_EQ(place.s[0], 0.0) << links;
-    double turn = 0.0;
-    for (std::size_t j = 0; j < laid.pieces.size(); ++j)
-      turn = std::max(turn, std::abs(joint_turn(laid, j)));
+    const double turn = largest_joint_turn(laid);
     if (links == 76) {
       EXPECT_FALSE(laid.pieces[k].catenary);
       EXPECT_NEAR(laid.pieces[k - 1].length, path.pieces[k - 1].length, 1e-15);  // wrap kept
@@ -972,9 +975,7 @@ TEST(DynamicsSlackStart, TheStartIsContinuousAsTheSlopeTurnsThroughAFold) {
     ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links)) << what;
     const PathPiece& span = laid.pieces[k];
     ASSERT_TRUE(span.catenary) << what;
-    double turn = 0.0;
-    for (std::size_t j = 0; j < laid.pieces.size(); ++j)
-      turn = std::max(turn, std::abs(joint_turn(laid, j)));
+    const double turn = largest_joint_turn(laid);
     EXPECT_LT(turn, 1e-9) << what;
     double low = INFINITY;
     for (int j = 0; j <= 10000; ++j) low = std::min(low, sag_point(span, span.length * j / 1e4).y);
@@ -1060,9 +1061,7 @@ TEST(DynamicsSlackStart, AFoldIsLaidTangentWhereTheLongestCatenaryIsNot) {
     ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links)) << what;
     ASSERT_TRUE(laid.pieces[k].catenary) << what;
     EXPECT_EQ(place.s[0], 0.0) << what;
-    double turn = 0.0;
-    for (std::size_t j = 0; j < laid.pieces.size(); ++j)
-      turn = std::max(turn, std::abs(joint_turn(laid, j)));
+    const double turn = largest_joint_turn(laid);
     EXPECT_LT(turn, 1e-9) << what;
     expect_tangent_fit(laid, k, circles, what);
     EXPECT_GT(place.wrapped[0], 0) << what;
