@@ -662,6 +662,60 @@ TEST(DynamicsSlackStart, ACatenaryIntoAWheelIsRefused) {
     }
 }
 
+// A count laid tangent at an e just below the half circle: z 17 both, level 0.6 m apart, 98 links.
+// Between the tangent points its lay would pass the half circle (the chord solve's e 346.531 mm
+// against (π/2 − 1) c = 342.478 mm), so it is laid tangent, where it closes at e = 342.414 mm,
+// below the half circle. A rail under the span between the half circle's lowest roller and the
+// tangent lay's at that e: the arc is clear all the way up to the half circle, the tangent lay
+// laid is not. The limit (`sag_limit`) checks the lay laid there: both the arc and the tangent
+// lay within a pitch below the half circle, so here 323.427 mm, that pitch's low end, below the
+// 98 links' e (before, it checked the arc alone there and named the half circle's 342.478 mm,
+// above the e of a count whose start runs into the rail).
+TEST(DynamicsSlackStart, TheLimitJustBelowTheHalfCircleChecksTheTangentLay) {
+  const Slack s = slack_loop(0.0);
+  const std::size_t k = slack_span(s.path);
+  const double c = s.path.pieces[k].length, r = pitch_radius(17);
+  const double half = (0.5 * kPi - 1.0) * c;
+  const int links = 98;
+  BeltPath laid;
+  const LoopPlacement place = place_slack_loop(s.path, s.circles, s.teeth, links, kPitch, laid);
+  ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links));
+  ASSERT_TRUE(laid.pieces[k].catenary);
+  EXPECT_LT(largest_joint_turn(laid), 1e-9);
+  const double e = laid.length - s.path.length;
+  EXPECT_LT(e, half);
+  EXPECT_GT(e, half - kPitch);
+  // the rail midway between the half circle's lowest point (c/2 below the tangent line) and the
+  // tangent lay's (the test's own solve), each a roller radius off it
+  const double arc_low = 0.5 * c,
+               hang_low = tangent_catenary_depth(tangent_catenary(c, 0.0, r, c, e), r) - r;
+  ASSERT_GT(hang_low - arc_low, 2.0 * kRoller);
+  Guide rail;
+  rail.x0 = 0.2;
+  rail.x1 = 0.4;
+  rail.y0 = rail.y1 = -r - 0.5 * (arc_low + hang_low);
+  rail.roller_radius = 0.5 * kRoller;
+  const std::vector<double> tip{r + 0.01, r + 0.01};
+  EXPECT_EQ(sag_obstacle(sag_span(s.path, k, half * (1.0 - 1e-9)), k, s.circles, tip, {rail},
+                         kRoller, kPitch),
+            "");
+  EXPECT_EQ(sag_obstacle(laid, k, s.circles, tip, {rail}, kRoller, kPitch), "guide[0]");
+  // the tangent lay runs into the rail across the whole pitch below the half circle (at its low
+  // end too), the arc below it is clear: the limit is that pitch's low end, below the 98 links' e
+  const BeltPath low = tangent_span(s.path, k, half - kPitch);
+  ASSERT_FALSE(low.pieces.empty());
+  EXPECT_EQ(sag_obstacle(low, k, s.circles, tip, {rail}, kRoller, kPitch), "guide[0]");
+  const double most = sag_limit(s.path, k, s.circles, tip, {rail}, kRoller, kPitch);
+  EXPECT_LT(most, e);
+  EXPECT_NEAR(most, half - kPitch, 1e-6 * c);
+  EXPECT_EQ(sag_obstacle(sag_span(s.path, k, most), k, s.circles, tip, {rail}, kRoller, kPitch),
+            "");
+  std::printf(
+      "98 links: e %.6f mm, half circle %.6f mm, limit %.6f mm; lowest arc %.3f, "
+      "tangent %.3f mm\n",
+      e * 1e3, half * 1e3, most * 1e3, arc_low * 1e3, hang_low * 1e3);
+}
+
 // A tight catenary (a under 0.7 p, where a circle of radius a would turn the chord over 1.6 p of
 // the curve short of p; the catenary is that tight only at its lowest point): wheels z 6 50 mm
 // apart, 36 links, laid tangent to both (the path turning by under 1e-9 rad at every joint),

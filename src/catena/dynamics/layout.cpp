@@ -837,8 +837,16 @@ double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circ
     // beyond the half circle the lay a start lays (`slack_lay`): tangent to both wheels
     // (`tangent_span`), else, where that is refused, between the tangent points; where the
     // tangent lay keeps less than a pitch of a wrap, both must be clear (which one a start lays
-    // there depends on where its rollers fall)
-    const BeltPath tangent = extra > half ? tangent_span(path, piece, extra) : BeltPath{};
+    // there depends on where its rollers fall). Within a pitch below the half circle a count
+    // whose lay between the tangent points would pass it is laid tangent at an e a little below
+    // it (level 600 mm, z 17 both, 98 links: 342.414 against the half circle's 342.478 mm):
+    // there both the arc and the tangent lay must be clear
+    const bool below = extra <= half;
+    const BeltPath tangent = extra > half - pitch ? tangent_span(path, piece, extra) : BeltPath{};
+    if (below) {
+      if (!clear_lay(sag_span(path, piece, extra))) return false;
+      return tangent.pieces.empty() || clear_lay(tangent);
+    }
     if (tangent.pieces.empty()) return clear_lay(sag_span(path, piece, extra));
     if (!clear_lay(tangent)) return false;
     return !(short_wrap(tangent.pieces[piece - 1]) ||
