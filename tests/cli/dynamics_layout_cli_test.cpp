@@ -847,8 +847,9 @@ TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
   const double chord =
       std::sqrt(std::pow(std::hypot(0.15, 0.175), 2) - std::pow(radius(18) - radius(15), 2));
   EXPECT_NEAR(named_limit_mm(refused.err), 10.0 * chord * 1e3, 0.01) << refused.err;
-  EXPECT_NE(refused.err.find("the most it can sag by as circular arcs of at most a half circle "
-                             "and, beyond a half circle, catenaries of at most 11 times the chord"),
+  EXPECT_NE(refused.err.find(
+                "the most it can sag by as circular arcs of at most a half circle "
+                "and, beyond a half circle, catenaries of an e of at most 10 times the chord"),
             std::string::npos)
       << refused.err;
   // 180 links need an e beyond the longest catenary (the limit named), and their N p - L is the
