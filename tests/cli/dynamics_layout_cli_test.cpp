@@ -696,7 +696,11 @@ TEST(DynamicsLayoutCli, SlackBeyondTheHalfCircleStartsAsTheCatenary) {
   double lowest = 0.0;
   for (const auto& y : j["positions"]["y"][0]) lowest = std::min(lowest, y.get<double>());
   const double start_sag = -radius(17) - lowest;
-  EXPECT_NEAR(start_sag / sag, 1.0, 0.005) << start_sag << " vs " << sag;
+  // the laid e is at least N p - L (a link's chord spans a little more than a pitch of a curved
+  // path), so the start sags at least the reference, and by under 0.5 % more (411.159 against
+  // 410.526 mm); between the tangent points it sagged 409.803 mm, 0.18 % less
+  EXPECT_GE(start_sag / sag, 1.0) << start_sag << " vs " << sag;
+  EXPECT_LT(start_sag / sag, 1.005) << start_sag << " vs " << sag;
   // no kink where the span meets a wheel: no two links of the start turn by more than a wrap's
   // 360°/17 (between the tangent points, a link across the 76° kink turned by more)
   const auto& xs = j["positions"]["x"][0];
