@@ -722,6 +722,29 @@ TEST(DynamicsLayoutCli, SlackBeyondTheHalfCircleStartsAsTheCatenary) {
       start_sag, sag, own.a, sharpest * 180.0 / kPi);
 }
 
+// Input accepted before the tangent lay is now refused: at the same e the tangent lay hangs deeper
+// mid-span than the lay between the tangent points (105 links level: 411.16 against 409.80 mm),
+// so a count close to a rail under the span can be refused. Two wheels z 17 on a level line 0.6 m
+// apart, a straight guide at y = -512 mm from x = 200 to 400 mm: 108 links start, 109 links
+// (which started between the tangent points) are refused, the sag running into the guide.
+TEST(DynamicsLayoutCli, ACountThatHangsTangentIntoARailIsRefused) {
+  const std::string guide =
+      "\n[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"200 mm\"\ny0 = \"-512 mm\"\n"
+      "x1 = \"400 mm\"\ny1 = \"-512 mm\"\n";
+  auto with_guide = [&](int links) {
+    const std::string body = read_text(two_wheel_catenary("hang", links, "600 mm", "0 mm"));
+    return write("hang_rail" + std::to_string(links) + ".toml", body + guide);
+  };
+  const CliRun fits = run("dynamics " + with_guide(108));
+  EXPECT_EQ(fits.status, 0) << fits.err;
+  const CliRun refused = run("dynamics " + with_guide(109));
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("(here 109 links need e = "), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("the sagging span would run into guide[0]"), std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("at most 108 links start so"), std::string::npos) << refused.err;
+}
+
 // A sloped catenary that folds at its far wheel when laid between the span's tangent points, so
 // that the walk from the path's start closes for no e, through the command: the driven wheel at
 // (200, −400) mm from the driver, z 17 both. 80 links start (laid tangent to the wheels; before,
