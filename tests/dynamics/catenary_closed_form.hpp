@@ -1,7 +1,9 @@
 // The catenary through two points with a given length, solved by the tests themselves (not by the
-// layout's catenary_through): the slack start's catenary tests and the command's.
+// layout's catenary_through): the slack start's catenary tests and the command's; and the
+// catenary tangent to two equal circles (not by the layout's tangent_span).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 // The catenary through (xa, ya) and (xb, yb) `length` long: bisection on a in
@@ -24,4 +26,51 @@ inline ClosedForm closed_form(double xa, double ya, double xb, double yb, double
   c.a = 0.5 * (lo + hi);
   c.x0 = 0.5 * (xa + xb) - c.a * std::atanh(h / length);
   return c;
+}
+
+// The catenary tangent from below to two circles of radius r, centres d = (dx, dy) apart, with
+// the path's extra `extra` (the catenary's length less the taut span's c and the two wraps'
+// shortening r (θc − θ0) + r (θ1 − θc), θ = atan sinh t): the tests' own solve, in a (the layout's
+// `tangent_span` solves in the slope t0 with a eliminated). At fixed a > r the centres' offsets
+// from the vertex, x(t) = a t − r tanh t and y(t) = a (cosh t − 1) + r / cosh t, rise along x: t1
+// from x(t1) − x(t0) = dx by bisection, then t0 from y(t1) − y(t0) = dy (rising in t0); then a from
+// the extra (falling in a). Returns {a, t0, t1}.
+struct TangentCatenary {
+  double a = NAN, t0 = NAN, t1 = NAN;
+};
+inline TangentCatenary tangent_catenary(double dx, double dy, double r, double c, double extra) {
+  const double theta_c = std::atan2(dy, dx), tc = std::asinh(std::tan(theta_c));
+  auto bisect = [](double lo, double hi, auto rising) {
+    for (int it = 0; it < 300 && hi - lo > 0.0; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      if (!(mid > lo && mid < hi)) break;
+      (rising(mid) < 0.0 ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  };
+  auto at = [&](double a) {
+    auto x = [&](double t) { return a * t - r * std::tanh(t); };
+    auto y = [&](double t) { return a * (std::cosh(t) - 1.0) + r / std::cosh(t); };
+    auto t1_of = [&](double t0) {
+      return bisect(tc, 30.0, [&](double t1) { return x(t1) - x(t0) - dx; });
+    };
+    TangentCatenary out;
+    out.a = a;
+    out.t0 = bisect(-30.0, tc, [&](double t0) { return y(t1_of(t0)) - y(t0) - dy; });
+    out.t1 = t1_of(out.t0);
+    return out;
+  };
+  auto extra_of = [&](const TangentCatenary& s) {
+    return s.a * (std::sinh(s.t1) - std::sinh(s.t0)) - c -
+           r * (theta_c - std::atan(std::sinh(s.t0))) - r * (std::atan(std::sinh(s.t1)) - theta_c);
+  };
+  return at(bisect(r * (1.0 + 1e-9), 100.0 * r, [&](double a) { return extra - extra_of(at(a)); }));
+}
+
+// The lowest point of that catenary below circle 0's centre: the point of slope sinh t0 on circle
+// 0 is r / cosh t0 below the centre, the curve's lowest point (its vertex, t = 0, where it lies
+// between the tangent points, else the nearer end) a (cosh t0 − cosh t) below that.
+inline double tangent_catenary_depth(const TangentCatenary& s, double r) {
+  const double lowest = std::clamp(0.0, s.t0, s.t1);
+  return r / std::cosh(s.t0) + s.a * (std::cosh(s.t0) - std::cosh(lowest));
 }

@@ -134,10 +134,14 @@ std::string sag_obstacle(const BeltPath& laid, std::size_t piece,
                          const std::vector<Circle>& circles, const std::vector<double>& tip,
                          const std::vector<Guide>& guides, double roller, double pitch);
 
-/// The largest extra length [m] span `piece` of the taut `path` can sag by (`sag_span`) with no
-/// obstacle (`sag_obstacle`): the half circle's (π/2 − 1) c at most (c the span's length), less
-/// where an obstacle is met, found by bisection to 1e-6 of c (taking the clear extras as an
-/// interval from 0). 0 if the span cannot sag at all.
+/// The largest extra length [m] span `piece` of the taut `path` can sag by with no obstacle
+/// (`sag_obstacle`): up to the half circle's (π/2 − 1) c (c the span's length) as a circular arc
+/// (`sag_span`), beyond it, where the span hangs, as the lay a start lays there (`tangent_span`,
+/// else, where that is refused, the catenary between the tangent points; where the tangent lay
+/// keeps less than a pitch of either wrap, both, a start there may find no roller on the wheel
+/// and lay the other), up to the longest
+/// catenary's kCatenaryMostExtra c; less where an obstacle is met, found by bisection to 1e-6 of c
+/// (taking the clear extras as an interval from 0). 0 if the span cannot sag at all.
 double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circle>& circles,
                  const std::vector<double>& tip, const std::vector<Guide>& guides, double roller,
                  double pitch);
@@ -293,14 +297,14 @@ PathPoint sag_point(const PathPiece& q, double along);
 /// A start with slack: N nodes at chord exactly `pitch` (so the chain is N·pitch long) on the path
 /// with its slack span (`slack_span`) sagging by the extra length that closes the loop
 /// (`slack_extra`). `laid` gets that path: the span sagging between its tangent points
-/// (`sag_spans`), but where that lay folds (a catenary turning back by more than 90° at a wheel)
-/// or closes for no e, the one slack span tangent to its wheels (`tangent_span`) when that closes
-/// and is laid (else the lay between the tangent points as it is). Node 0 is at the path's start
-/// but where neither closes from there (a node passing a fold of the path): then at the phase
-/// over the first link that closes it at the e where the walk's end jumps over the closure, or at
-/// the longest catenary where the walk still overshoots. Empty placement if N·pitch does not
-/// exceed the path's length, the sag cannot be solved, any link's chord (the closing one too) is
-/// off `pitch` by more than 1e-9 of it, or a wheel is left without a roller on it.
+/// (`sag_spans`) where that closes on circular arcs (up to the half circle), but where it would
+/// be a catenary or closes for no e, the one slack span tangent to its wheels (`tangent_span`)
+/// when that closes and is laid (else the lay between the tangent points as it is). Node 0 is at
+/// the path's start but where neither closes from there (a node passing a fold of the path): then
+/// at the phase over the first link that closes it at the e where the walk's end jumps over the
+/// closure, or at the longest catenary where the walk still overshoots. Empty placement if N·pitch
+/// does not exceed the path's length, the sag cannot be solved, any link's chord (the closing one
+/// too) is off `pitch` by more than 1e-9 of it, or a wheel is left without a roller on it.
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
                                const std::vector<int>& teeth, int nodes, double pitch,
                                BeltPath& laid);
@@ -325,9 +329,10 @@ BeltPath sag_spans(const BeltPath& path, const std::vector<std::size_t>& pieces,
 /// path's start still overshoots at the longest catenary, that catenary's e when a phase closes
 /// it there. INFINITY when the walk overshoots at the most e the spans take, at the longest
 /// catenary at every phase of node 0 the phase search tries (the count needs more), NAN when no e
-/// is found (or N·pitch does not exceed the path's length). Where that lay folds or closes for no
-/// e, the tangent lay's e (`tangent_span`: the path's extra over the taut path) when that closes,
-/// bisected up to the longest catenary (given also where `place_slack_loop` lays the other).
+/// is found (or N·pitch does not exceed the path's length). Where that lay is a catenary or closes
+/// for no e, for one span the tangent lay's e (`tangent_span`: the path's extra over the taut path)
+/// when that closes, bisected up to the longest catenary (given also where `place_slack_loop` lays
+/// the other).
 double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
                    double pitch);
 

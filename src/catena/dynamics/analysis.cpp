@@ -889,8 +889,8 @@ std::string slack_measure_text(const Setup& s, const std::vector<std::size_t>& p
          ") of at most about " + mm(most) + " (" + shown(most / s.path.length * 100.0) +
          " % of the path), the most " + (pieces.size() == 1 ? "it" : "they") +
          " can sag by as circular arcs" + (half_circle ? " of at most a half circle" : "") +
-         (hangs ? " and, beyond a half circle, catenaries of at most " +
-                      format_g(kCatenaryMostExtra + 1.0, 6) + " times the chord"
+         (hangs ? " and, beyond a half circle, catenaries of an e of at most " +
+                      format_g(kCatenaryMostExtra, 6) + " times the chord"
                 : "") +
          " clear of every other wheel's teeth and the other spans" +
          (guides.empty() ? "" : " and the guides") + " (here " + count +

@@ -822,13 +822,39 @@ double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circ
                  double pitch) {
   if (piece >= path.pieces.size() || path.pieces[piece].arc) return 0.0;
   const double c = path.pieces[piece].length;
-  auto clear = [&](double extra) {
-    const BeltPath laid = sag_span(path, piece, extra);
+  const double half = (0.5 * kPi - 1.0) * c;
+  const std::size_t n = path.pieces.size();
+  // whether a wrap of the tangent lay keeps less than a pitch of its wheel (2 asin(p / 2r)): a
+  // start may then find no roller on it and lay the span between the tangent points instead
+  auto short_wrap = [&](const PathPiece& w) {
+    return !(w.to - w.from >= 2.0 * std::asin(std::min(1.0, 0.5 * pitch / w.radius)));
+  };
+  auto clear_lay = [&](const BeltPath& laid) {
     return !laid.pieces.empty() &&
            sag_obstacle(laid, piece, circles, tip, guides, roller, pitch).empty();
   };
+  auto clear = [&](double extra) {
+    // beyond the half circle the lay a start lays (`slack_lay`): tangent to both wheels
+    // (`tangent_span`), else, where that is refused, between the tangent points; where the
+    // tangent lay keeps less than a pitch of a wrap, both must be clear (which one a start lays
+    // there depends on where its rollers fall). Within a pitch below the half circle a count
+    // whose lay between the tangent points would pass it is laid tangent at an e a little below
+    // it (level 600 mm, z 17 both, 98 links: 342.414 against the half circle's 342.478 mm):
+    // there both the arc and the tangent lay must be clear
+    const bool below = extra <= half;
+    const BeltPath tangent = extra > half - pitch ? tangent_span(path, piece, extra) : BeltPath{};
+    if (below) {
+      if (!clear_lay(sag_span(path, piece, extra))) return false;
+      return tangent.pieces.empty() || clear_lay(tangent);
+    }
+    if (tangent.pieces.empty()) return clear_lay(sag_span(path, piece, extra));
+    if (!clear_lay(tangent)) return false;
+    return !(short_wrap(tangent.pieces[piece - 1]) ||
+             short_wrap(tangent.pieces[(piece + 1) % n])) ||
+           clear_lay(sag_span(path, piece, extra));
+  };
   // the arcs up to the half circle, then the catenaries (sag_span refuses beyond the longest)
-  return largest_clear_sag((0.5 * kPi - 1.0) * c, kCatenaryMostExtra * c, c, clear);
+  return largest_clear_sag(half, kCatenaryMostExtra * c, c, clear);
 }
 
 double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pieces,
@@ -1671,21 +1697,6 @@ SlackSolve chord_end_solve(const BeltPath& path, const std::vector<std::size_t>&
   return {};
 }
 
-// Whether a catenary laid between its span's tangent points (`sag_spans`) folds there: its
-// tangent at either end and the wrap's (the chord's direction) more than 90° apart, the path
-// turning back on itself (the walk's link then jumps across the fold).
-bool folds(const BeltPath& taut, const BeltPath& laid, const std::vector<std::size_t>& pieces) {
-  for (const std::size_t k : pieces) {
-    const PathPiece& q = laid.pieces[k];
-    if (!q.catenary) continue;
-    const PathPiece& t = taut.pieces[k];
-    const double ux = t.x1 - t.x0, uy = t.y1 - t.y0;
-    const PathPoint a = sag_point(q, 0.0), b = sag_point(q, q.length);
-    if (a.tx * ux + a.ty * uy < 0.0 || b.tx * ux + b.ty * uy < 0.0) return true;
-  }
-  return false;
-}
-
 // The extra e at which N nodes walked at chord `pitch` close the loop on the path with span
 // `piece` laid tangent to both its wheels (`tangent_span`): bisection between N p less the
 // path's length (the miss not negative: a chord spans at least its pitch of the path) and the
@@ -1736,17 +1747,21 @@ SlackSolve tangent_solve(const BeltPath& path, std::size_t piece, int nodes, dou
   return {};
 }
 
-// The slack solve: between the tangent points (`chord_end_solve`) where that closes without a
-// fold (every start laid so before is laid the same), else, for one span, tangent to its wheels
-// (`tangent_solve`) where that closes, else the answer between the tangent points as it is (at
-// node 0's phase, or refused). `between`, when given, gets the answer between the tangent points.
+// The slack solve: between the tangent points (`chord_end_solve`) where that closes on a
+// circular arc (up to the half circle: every start laid so before is laid the same), else, for
+// one span, tangent to its wheels (`tangent_solve`: a hanging chain meets its wheels
+// tangentially, its rest shape) where that closes, else the answer between the tangent points as
+// it is (a catenary, across a fold or at node 0's phase, or refused). `between`, when given, gets
+// the answer between the tangent points.
 SlackSolve slack_solve(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
                        double pitch, SlackSolve* between = nullptr) {
   const SlackSolve chord = chord_end_solve(path, pieces, nodes, pitch);
   if (between != nullptr) *between = chord;
   if (pieces.size() != 1 || path.pieces.empty()) return chord;
-  const bool closed = std::isfinite(chord.extra) && chord.start == 0.0;
-  if (closed && !folds(path, sag_spans(path, pieces, chord.extra), pieces)) return chord;
+  if (std::isfinite(chord.extra) && chord.start == 0.0) {
+    const BeltPath arc = sag_spans(path, pieces, chord.extra);
+    if (!arc.pieces.empty() && !arc.pieces[pieces[0]].catenary) return chord;
+  }
   const SlackSolve tangent = tangent_solve(path, pieces[0], nodes, pitch);
   return std::isfinite(tangent.extra) ? tangent : chord;
 }
