@@ -242,37 +242,64 @@ TEST(HingeStick, WorkBalanceClosesWithTheStickSpringsEnergy) {
   }
 }
 
+// A state of a model with the stick law and the iterate a step takes from it (the tests below)
+struct SwitchCase {
+  Model model;
+  State state;
+  std::vector<double> u;  // the iterate: x + h v, a driven wheel's ψ + h ω
+};
+
+constexpr double kSwitchStep = 1e-4, kSwitchTheta = 0.6;
+
+// The unknowns at the constant-velocity predictor (newton_system's layout)
+std::vector<double> predictor(const Model& m, const State& s) {
+  std::vector<double> u;
+  for (std::size_t i = 0; i < m.nodes(); ++i) {
+    u.push_back(s.x[i] + kSwitchStep * s.vx[i]);
+    u.push_back(s.y[i] + kSwitchStep * s.vy[i]);
+  }
+  for (std::size_t w = 0; w < m.sprockets.size(); ++w)
+    if (!m.sprockets[w].driver) u.push_back(s.angle[w] + kSwitchStep * s.speed[w]);
+  return u;
+}
+
+// A free 12-link loop, stretched 4e-4 and turning at 3 rad/s with a wobble
+// (`open`: the same nodes as an open chain, node 0 pinned)
+SwitchCase spinning_loop(bool open = false) {
+  const std::size_t n = 12;
+  SwitchCase c{uniform_chain(n, !open, kPitch, 0.02, kStiffness, 20.0, false), State(n, 0), {}};
+  c.model.hinge = HingeFriction{.arm = kArm, .rate_band = 5.0};
+  c.model.hinge.stick_stiffness = 30.0;
+  c.model.hinge.stick_damping = 0.002;
+  if (open) c.model.pinned.assign(n, 0), c.model.pinned[0] = 1;
+  const double radius = kPitch / (2 * std::sin(M_PI / static_cast<double>(n))) * 1.0004;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    c.state.x[i] = radius * std::cos(a);
+    c.state.y[i] = radius * std::sin(a);
+    c.state.vx[i] = -3.0 * c.state.y[i] + (i % 2 ? 0.01 : -0.01) * std::cos(a);
+    c.state.vy[i] = 3.0 * c.state.x[i] + (i % 2 ? 0.01 : -0.01) * std::sin(a);
+  }
+  if (open) c.state.vx[0] = c.state.vy[0] = 0.0;
+  c.u = predictor(c.model, c.state);
+  return c;
+}
+
 // The step's Newton matrix (Integrator::newton_system) with the stick law against central
 // differences of its residual: a free 12-link loop spinning and wobbling, its hinges' deflections
 // set so that some stick and some slide, at θ = 0.6 with the damper.
 TEST(HingeStick, NewtonMatrixIsTheResidualsDerivative) {
-  const std::size_t n = 12;
-  Model m = uniform_chain(n, true, kPitch, 0.02, kStiffness, 20.0, false);
-  m.hinge = HingeFriction{.arm = kArm, .rate_band = 5.0};
-  m.hinge.stick_stiffness = 30.0;
-  m.hinge.stick_damping = 0.002;
-  const double radius = kPitch / (2 * std::sin(M_PI / static_cast<double>(n))) * 1.0004;
-  State s(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
-    s.x[i] = radius * std::cos(a);
-    s.y[i] = radius * std::sin(a);
-    const double radial = i % 2 ? 0.01 : -0.01;
-    s.vx[i] = -3.0 * s.y[i] + radial * std::cos(a);
-    s.vy[i] = 3.0 * s.x[i] + radial * std::sin(a);
-  }
-  const double h = 1e-4;
-  Integrator integ(m, {.step = h, .theta = 0.6});
+  SwitchCase c = spinning_loop();
+  const std::size_t n = c.model.nodes();
+  const Model& m = c.model;
+  State& s = c.state;
+  const double h = kSwitchStep;
+  Integrator integ(m, {.step = h, .theta = kSwitchTheta});
   // deflections: within the reach at every third hinge, far beyond it (both signs) at the others
   s.hinge_deflection.assign(n, 0.0);
   for (std::size_t i = 0; i < n; ++i)
     s.hinge_deflection[i] = i % 3 == 0 ? 1e-4 : (i % 3 == 1 ? 0.05 : -0.05);
-  const std::size_t size = integ.unknowns();
-  std::vector<double> u(size);
-  for (std::size_t i = 0; i < n; ++i) {
-    u[2 * i] = s.x[i] + h * s.vx[i];
-    u[2 * i + 1] = s.y[i] + h * s.vy[i];
-  }
+  const std::vector<double>& u = c.u;
   // which hinges stick at this iterate (the couple of each, as the step's assembly takes it)
   int sticking = 0, sliding = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -339,28 +366,14 @@ TEST(HingeStick, CrossingCutSavesNewtonIterationsOnTheDrive) {
 // (sliding, M = e F), δ = 1e-9: the two dense Newton matrices (Integrator::newton_system) differ
 // by that term, in every entry, to the direction term's δ e F |∂g/∂x| (and rounding).
 TEST(HingeStick, SwitchChangesTheNewtonMatrixByTheRankOneTerm) {
-  const std::size_t n = 12;
-  Model m = uniform_chain(n, true, kPitch, 0.02, kStiffness, 20.0, false);
-  m.hinge = HingeFriction{.arm = kArm, .rate_band = 5.0};
-  m.hinge.stick_stiffness = 30.0;
-  m.hinge.stick_damping = 0.002;
-  const double radius = kPitch / (2 * std::sin(M_PI / static_cast<double>(n))) * 1.0004;
-  State s(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
-    s.x[i] = radius * std::cos(a);
-    s.y[i] = radius * std::sin(a);
-    s.vx[i] = -3.0 * s.y[i] + (i % 2 ? 0.01 : -0.01) * std::cos(a);
-    s.vy[i] = 3.0 * s.x[i] + (i % 2 ? 0.01 : -0.01) * std::sin(a);
-  }
-  const double h = 1e-4, th = 0.6;
+  SwitchCase c = spinning_loop();
+  const std::size_t n = c.model.nodes();
+  const Model& m = c.model;
+  State& s = c.state;
+  const std::vector<double>& u = c.u;
+  const double h = kSwitchStep, th = kSwitchTheta;
   Integrator integ(m, {.step = h, .theta = th});
   const std::size_t size = integ.unknowns();
-  std::vector<double> u(size);
-  for (std::size_t i = 0; i < n; ++i) {
-    u[2 * i] = s.x[i] + h * s.vx[i];
-    u[2 * i + 1] = s.y[i] + h * s.vy[i];
-  }
   // hinge 0 between links 11 (node 11 → 0) and 0 (0 → 1): its trial at d₀ = 0, and e F
   const std::size_t ends[3] = {n - 1, 0, 1};
   HingeLink link[2];
@@ -468,48 +481,6 @@ TEST(HingeStick, SwitchUpdateKeepsTheFactorsAcrossStickSlipSwitches) {
 // corrected, against a dense Gaussian elimination of the second state's Newton system
 // (Integrator::newton_system): the chain's and the wheels' parts each to 1e-8 of their largest
 // entry; the kept factors alone miss it by far more.
-struct SwitchCase {
-  Model model;
-  State state;
-  std::vector<double> u;  // the iterate: x + h v, a driven wheel's ψ + h ω
-};
-
-constexpr double kSwitchStep = 1e-4, kSwitchTheta = 0.6;
-
-// The unknowns at the constant-velocity predictor (newton_system's layout)
-std::vector<double> predictor(const Model& m, const State& s) {
-  std::vector<double> u;
-  for (std::size_t i = 0; i < m.nodes(); ++i) {
-    u.push_back(s.x[i] + kSwitchStep * s.vx[i]);
-    u.push_back(s.y[i] + kSwitchStep * s.vy[i]);
-  }
-  for (std::size_t w = 0; w < m.sprockets.size(); ++w)
-    if (!m.sprockets[w].driver) u.push_back(s.angle[w] + kSwitchStep * s.speed[w]);
-  return u;
-}
-
-// The free 12-link loop of the tests above, stretched 4e-4 and turning at 3 rad/s with a wobble
-// (`open`: the same nodes as an open chain, node 0 pinned)
-SwitchCase spinning_loop(bool open = false) {
-  const std::size_t n = 12;
-  SwitchCase c{uniform_chain(n, !open, kPitch, 0.02, kStiffness, 20.0, false), State(n, 0), {}};
-  c.model.hinge = HingeFriction{.arm = kArm, .rate_band = 5.0};
-  c.model.hinge.stick_stiffness = 30.0;
-  c.model.hinge.stick_damping = 0.002;
-  if (open) c.model.pinned.assign(n, 0), c.model.pinned[0] = 1;
-  const double radius = kPitch / (2 * std::sin(M_PI / static_cast<double>(n))) * 1.0004;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double a = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
-    c.state.x[i] = radius * std::cos(a);
-    c.state.y[i] = radius * std::sin(a);
-    c.state.vx[i] = -3.0 * c.state.y[i] + (i % 2 ? 0.01 : -0.01) * std::cos(a);
-    c.state.vy[i] = 3.0 * c.state.x[i] + (i % 2 ? 0.01 : -0.01) * std::sin(a);
-  }
-  if (open) c.state.vx[0] = c.state.vy[0] = 0.0;
-  c.u = predictor(c.model, c.state);
-  return c;
-}
-
 // The benchmarks' drive with the stick law (its driven wheel an unknown; `two_wheels`: the
 // driver made a driven wheel of the same inertia, two unknowns)
 SwitchCase stick_drive(bool two_wheels) {

@@ -175,6 +175,9 @@ class Integrator {
   // the caller has filled them), O(N) + a rebuild when a node has moved more than its margin.
   void refresh_guide_hint(const Model& model);
   void substitute(std::span<const Vec2> b, std::span<Vec2> x);
+  // newton_system's and chord_solve_after_switch's check of their unknowns against this
+  // integrator's model (an InputError naming the count the model needs)
+  void check_unknowns(const Model& model, std::size_t count) const;
   // newton_system's and chord_solve_after_switch's setup: the links at the state s, and the
   // iterate (nodes, then the driven wheels' angles and the take-ups' slides) from `unknowns`.
   void load_iterate(const Model& model, const State& s, std::span<const double> unknowns);

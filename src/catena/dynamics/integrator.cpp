@@ -1598,15 +1598,19 @@ StepReport Integrator::step(const Model& model, State& s) {
   return report;
 }
 
+void Integrator::check_unknowns(const Model& model, std::size_t count) const {
+  const std::size_t size = 2 * model.nodes() + extra_.size();
+  if (count != size || model.nodes() != solver_.size() || model.sprockets.size() != psi1_.size() ||
+      (model.hinge.active() && model.nodes() >= 3) != pentadiagonal_) {
+    throw InputError({{"unknowns", std::to_string(count),
+                       std::to_string(size) + " values for this integrator's model"}});
+  }
+}
+
 void Integrator::newton_system(const Model& model, const State& s, std::span<const double> unknowns,
                                std::vector<double>& residual, std::vector<double>* jacobian) {
   const std::size_t n = model.nodes(), m = extra_.size(), size = 2 * n + m;
-  if (unknowns.size() != size || model.nodes() != solver_.size() ||
-      model.sprockets.size() != psi1_.size() ||
-      (model.hinge.active() && model.nodes() >= 3) != pentadiagonal_) {
-    throw InputError({{"unknowns", std::to_string(unknowns.size()),
-                       std::to_string(size) + " values for this integrator's model"}});
-  }
+  check_unknowns(model, unknowns.size());
   throw_if_any(validate(model, s));
   // this assembly overwrites the bordered solve's rows and columns: the next step factors afresh
   factors_kept_ = false;
@@ -1829,12 +1833,7 @@ bool Integrator::chord_solve_after_switch(const Model& model, const State& kept,
                                           std::span<const double> unknowns, bool update,
                                           std::vector<double>& delta) {
   const std::size_t n = model.nodes(), m = extra_.size(), size = 2 * n + m;
-  if (unknowns.size() != size || model.nodes() != solver_.size() ||
-      model.sprockets.size() != psi1_.size() ||
-      (model.hinge.active() && model.nodes() >= 3) != pentadiagonal_) {
-    throw InputError({{"unknowns", std::to_string(unknowns.size()),
-                       std::to_string(size) + " values for this integrator's model"}});
-  }
+  check_unknowns(model, unknowns.size());
   throw_if_any(validate(model, kept));
   throw_if_any(validate(model, now));
   factors_kept_ = false;  // the next step factors afresh
