@@ -13,6 +13,12 @@
 // span of an integer number of pitches turn at a constant ratio (the four-bar a parallelogram);
 // at a half-integer span the driven wheel lags half a tooth and ω2/ω1 runs between cos(π/z) and
 // 1/cos(π/z), the variation 1 − min/max → sin²(π/z); over a tooth period the mean is z1/z2.
+//
+// The elastic four-bar (`closure` with the span's compliance; the doc's "The elastic four-bar"):
+// the span's length follows its tension's once-per-tooth swing, T from the driven wheel's torque
+// balance, C from the span's links and the two seat contacts in series; checked against its own
+// limits (infinitely stiff: the rigid four-bar; a static stretch in closed form) and its
+// compliance against the model's, measured statically.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,6 +27,7 @@
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "catena/dynamics/integrator.hpp"
@@ -40,6 +47,11 @@ struct Polygons {
   double r1, r2, c, p;
   int z1, z2;
   double play = 0.0;  // [m] the two end rollers' shifts along the span, towards each other
+  // The elastic span (below, `closure`; `elastic` sets it): its end-to-end compliance C [m/N]
+  // (0: the rigid chain), the tension T1 at which its links are p long and the slack tail's
+  // tension T2 [N]
+  double compliance = 0.0;
+  double tight = 0.0, slack = 0.0;
 };
 
 // Wheel w's vertex i (any integer) at θ + 2π i/z on its pitch circle.
@@ -84,9 +96,34 @@ Tangent upper_tangent(const Polygons& g, double t1, double t2) {
 // seats on the driver as A, A', B come in line: n and |AB| drop by one and p; one leaves the driven
 // wheel as A, B, B' come in line: both grow — and falls as θ2 grows (B moves towards A), by p a
 // tooth.
+//
+// The elastic span (g.compliance = C > 0; the doc's "The elastic four-bar"): the links are p long
+// at T1 and the span stretches by C (T − T1), so f = |AB| − play − n p − C (T − T1). C is the
+// end-to-end compliance of the span's links and the two end rollers' seat contacts in series,
+// C = n̄/k + 2/k_c, with n̄ the tangent's length in pitches — the span's mean link count, held
+// through the tooth: with n itself f would jump by (T − T1)/k at every seat switch, where the link
+// that seats or leaves still carries most of the span's tension (the model's static compliance
+// is 6–12 % over C: `ModelStaticStretchIsTheSpansCompliance`). T is the driven wheel's torque
+// balance, quasi-static: the span pulls B along the line AB at the arm d2, the driven centre's
+// distance below the line; the slack tail, pulled along −x at T2 from the wheel's lowest vertex,
+// at the arm d2s, that vertex's depth below the centre; the load is (T1 − T2) R2, so
+// T d2 − T2 d2s = (T1 − T2) R2. T swings once a tooth by about (T1 + T2)(1 − cos(π/z2)) (T1 R2/d2,
+// and at odd z2 the tail's arm in the opposite phase). Left out: the inertia torque J_eff θ̈2
+// (0.5–1.2 % of the swing in the cases here) and so the wheel's torsional ring. C → 0 is the
+// rigid four-bar; C T1 ≪ p keeps f monotone in θ2.
 double closure(const Polygons& g, double t1, double t2, int k) {
   const Tangent t = upper_tangent(g, t1, t2);
-  return t.length - g.play - (t.i - t.j + k) * g.p;
+  double stretch = 0.0;
+  if (g.compliance > 0) {
+    const auto a = vertex(g, 0, t1, t.i), b = vertex(g, 1, t2, t.j);
+    const double ux = (b[0] - a[0]) / t.length, uy = (b[1] - a[1]) / t.length;
+    const double arm = ux * a[1] + uy * (g.c - a[0]);  // d2: (C2 − A) × û
+    double low = 0.0;                                  // d2s / R2
+    for (int j = 0; j < g.z2; ++j) low = std::max(low, -std::sin(t2 + 2 * kPi * j / g.z2));
+    const double tension = ((g.tight - g.slack) * g.r2 + g.slack * g.r2 * low) / arm;
+    stretch = g.compliance * (tension - g.tight);
+  }
+  return t.length - g.play - (t.i - t.j + k) * g.p - stretch;
 }
 
 // θ2 with f(θ1, θ2) = 0 by bisection, bracketed from half a driven tooth either side of `guess`
@@ -138,6 +175,7 @@ struct FarWheel {
   double inertia = 0.002;      // [kg·m²] the driven wheel
   double chain_speed = 0.05;   // [m/s]
   double seat_friction = 0.3;  // μ
+  double contact = 2e8;        // [N/m] k_c, the seats' contact stiffness
   double settle = 0.1;         // [s]
   int periods = 8;             // tooth periods measured after the settling time
   double step = 1e-4;          // [s]
@@ -170,6 +208,14 @@ double tangent_length(const Polygons& g) {
   return std::sqrt(g.c * g.c - (g.r2 - g.r1) * (g.r2 - g.r1));
 }
 
+// the polygons with the elastic span of the set-up (`closure`)
+Polygons elastic(const FarWheel& d, Polygons g) {
+  g.compliance = tangent_length(g) / g.p / d.stiffness + 2 / d.contact;
+  g.tight = d.tight;
+  g.slack = d.slack;
+  return g;
+}
+
 // k: the span's link count at the start (A at the top), the tangent's length in pitches rounded
 // down
 int count_constant(const Polygons& g) {
@@ -198,9 +244,16 @@ FarWheel tight_off_harmonics(FarWheel d) {
 // constant-tension take-up, so that the slack side's length changes take nothing from the tight
 // span, which the four-bar assumes; no gravity. Laid at the reference's start (θ1 = π/2, θ2 from
 // the closure), the tight span straight from A to B, each wheel wrapped to its vertex nearest the
-// bottom and a straight tail on from there. Returns the driver's tooth phase and ω2/ω1 at every
-// step after the settling time (chordal::Result's phase and span).
-chordal::Result run(const FarWheel& d, int k) {
+// bottom and a straight tail on from there. `run` returns the driver's tooth phase and ω2/ω1 at
+// every step after the settling time (chordal::Result's phase and span). `lay` builds the model and
+// its start, with the nodes of the span's end rollers A (on the driver) and B (on the driven
+// wheel); the chain's tails are long enough for `duration`.
+struct Laid {
+  Model model;
+  State state;
+  std::size_t a = 0, b = 0;
+};
+Laid lay(const FarWheel& d, int k, double duration) {
   const Polygons g = polygons(d);
   const double omega1 = d.chain_speed / g.r1, v = d.chain_speed;
   const double rest = d.pitch - d.tight / d.stiffness;  // the tight span's links at p
@@ -209,7 +262,6 @@ chordal::Result run(const FarWheel& d, int k) {
   const double omega2 = omega1 * (driven_angle(g, t1 + h, k, t2) - t2) / h;
   const Tangent tan = upper_tangent(g, t1, t2);
   const int n = tan.i - tan.j + k;
-  const double duration = d.settle + d.periods * d.pitch / v;
   const int tail = static_cast<int>(std::ceil(duration * v / d.pitch)) + 3;
   std::vector<std::array<double, 4>> nodes;  // x, y, vx, vy from the driver's cut end
   auto seated = [&](int wheel, double theta, double omega, int i) {
@@ -221,6 +273,9 @@ chordal::Result run(const FarWheel& d, int k) {
   const auto b1 = vertex(g, 0, t1, bottom1);
   for (int q = 3; q >= 1; --q) nodes.push_back({b1[0] + q * rest, b1[1], v, 0.0});
   for (int i = bottom1; i >= tan.i; --i) nodes.push_back(seated(0, t1, omega1, i));
+  Laid out;
+  out.a = nodes.size() - 1;
+  out.b = out.a + static_cast<std::size_t>(n);
   const auto a = seated(0, t1, omega1, tan.i), b = seated(1, t2, omega2, tan.j);
   for (int q = 1; q < n; ++q) {
     const double s = static_cast<double>(q) / n;
@@ -234,19 +289,22 @@ chordal::Result run(const FarWheel& d, int k) {
   for (int q = 1; q <= tail; ++q) nodes.push_back({b2[0] - q * rest, b2[1], v, 0.0});
 
   const std::size_t count = nodes.size();
-  Model model = uniform_chain(count, false, rest, d.node_mass, d.stiffness, d.damping, false);
-  Sprocket w1 = iso606_sprocket(d.pitch, d.roller, d.width, d.driver_teeth, 0.0, 0.0, 2e8, 800.0);
+  out.model = uniform_chain(count, false, rest, d.node_mass, d.stiffness, d.damping, false);
+  Sprocket w1 =
+      iso606_sprocket(d.pitch, d.roller, d.width, d.driver_teeth, 0.0, 0.0, d.contact, 800.0);
   w1.driver = true;
   w1.speed = omega1;
   w1.friction = d.seat_friction;
-  Sprocket w2 = iso606_sprocket(d.pitch, d.roller, d.width, d.driven_teeth, g.c, 0.0, 2e8, 800.0);
+  Sprocket w2 =
+      iso606_sprocket(d.pitch, d.roller, d.width, d.driven_teeth, g.c, 0.0, d.contact, 800.0);
   w2.inertia = d.inertia;
   w2.load_torque = (d.tight - d.slack) * g.r2;
   w2.friction = d.seat_friction;
-  model.sprockets = {w1, w2};
-  model.loads = {{.node = 0, .fx = d.slack, .fy = 0.0},
-                 {.node = count - 1, .fx = -d.slack, .fy = 0.0}};
-  State s(count, 2);
+  out.model.sprockets = {w1, w2};
+  out.model.loads = {{.node = 0, .fx = d.slack, .fy = 0.0},
+                     {.node = count - 1, .fx = -d.slack, .fy = 0.0}};
+  State& s = out.state;
+  s = State(count, 2);
   for (std::size_t i = 0; i < count; ++i) {
     s.x[i] = nodes[i][0];
     s.y[i] = nodes[i][1];
@@ -255,9 +313,19 @@ chordal::Result run(const FarWheel& d, int k) {
   }
   s.angle = {t1, t2};
   s.speed = {omega1, omega2};
+  return out;
+}
+
+chordal::Result run(const FarWheel& d, int k) {
+  const Polygons g = polygons(d);
+  const double omega1 = d.chain_speed / g.r1, v = d.chain_speed;
+  const double duration = d.settle + d.periods * d.pitch / v;
+  Laid laid = lay(d, k, duration);
+  Model& model = laid.model;
+  State& s = laid.state;
   // the driver's cut end, pulled along the bottom towards the driven wheel, must not reach its
   // teeth within the run (at 0.05 m/s, 12/25 at 20 p: about 4.9 s; the run is 3.15 s)
-  const double reach = contact_reach(w2);
+  const double reach = contact_reach(model.sprockets[1]);
   Integrator integ(model, {.step = d.step, .theta = 0.6});
   chordal::Result out;
   const double tooth = 2 * kPi / d.driver_teeth;
@@ -408,6 +476,165 @@ TEST(DynamicsChordalDrive, DrivenSpeedFollowsTheFourBar) {
     if (c.miss > 0) {
       EXPECT_GT(over, kTol) << c.z1 << "/" << c.z2 << " at " << c.centre << " p";
     }
+  }
+}
+
+TEST(DynamicsChordalDrive, ElasticFourBarHasItsLimits) {
+  for (const auto& [z1, z2, centre] : std::vector<std::tuple<int, int, double>>{
+           {17, 17, 20.25}, {17, 17, 20.75}, {12, 25, 20.5}, {25, 12, 20.0}}) {
+    FarWheel d;
+    d.driver_teeth = z1;
+    d.driven_teeth = z2;
+    d.centre = centre;
+    d.chain_speed = 0.1;
+    d = tight_off_harmonics(d);
+    Polygons g = polygons(d);
+    g.play = seat_play(d);
+    const int k = count_constant(g);
+    // infinitely stiff: the rigid four-bar
+    d.stiffness = d.contact = 1e18;
+    const std::vector<double> rigid = kinematic_ratio(g, k, 40);
+    EXPECT_LT(largest_difference(kinematic_ratio(elastic(d, g), k, 40), rigid), 1e-9)
+        << z1 << "/" << z2 << " at " << centre << " p";
+    // and as set up it differs: the span's stretch moves the ratio by a percent of the range
+    d.stiffness = FarWheel{}.stiffness;
+    d.contact = FarWheel{}.contact;
+    const double range = *std::max_element(rigid.begin(), rigid.end()) -
+                         *std::min_element(rigid.begin(), rigid.end());
+    EXPECT_GT(largest_difference(kinematic_ratio(elastic(d, g), k, 40), rigid), 0.005 * range)
+        << z1 << "/" << z2 << " at " << centre << " p";
+  }
+  // The static stretch in closed form: equal wheels at an integer span, A on the driver's top
+  // vertex (θ1 = π/2). With B on the driven wheel's top vertex the span is level and n p = C long;
+  // turned by δ, |AB| = C − R δ + O(δ²) and the arm d2 = R + O(δ); the lowest vertex of an odd
+  // wheel lies half a tooth off the bottom, d2s = R cos(π/z), so T = T1 − T2 (1 − cos(π/z)) and
+  // the closure gives δ = −C_s (T − T1)/R = C_s T2 (1 − cos(π/z))/R, C_s = n/k + 2/k_c: the span
+  // shorter than n p, the driven wheel ahead of the rigid four-bar's π/2.
+  for (int z : {9, 17, 25}) {
+    FarWheel d;
+    d.driver_teeth = d.driven_teeth = z;
+    d.tight = 485.0;
+    const Polygons g = elastic(d, polygons(d));
+    const int k = count_constant(g);
+    const Tangent t = upper_tangent(g, kPi / 2, kPi / 2);
+    ASSERT_EQ(t.i - t.j + k, 20) << "z " << z;
+    const double cs = 20 / d.stiffness + 2 / d.contact;
+    const double delta = cs * d.slack * (1 - std::cos(kPi / z)) / g.r2;
+    const double got = driven_angle(g, kPi / 2, k, kPi / 2) - kPi / 2;
+    std::printf("z %d: static turn %.6e rad, closed form %.6e\n", z, got, delta);
+    EXPECT_NEAR(got / delta, 1.0, 1e-3) << "z " << z;
+  }
+}
+
+// The model's own end-to-end compliance, measured statically: the driver held (ω1 = 0), the driven
+// wheel's load torque stepped from (T1 − T2) R2 to (T1 + 10 N − T2) R2, each run 0.4 s from the
+// lay (A on the driver's top vertex; the closure moves by under 1 % of the step's stretch from
+// 0.4 to 1.2 s); the stretch is the rigid four-bar's closure f = |AB| − play − n p at the settled
+// θ2 (the span's length beyond the rigid one's, its ends included). At the two tensions the
+// comparisons run at (the rule's T1 at 0.05 and 0.1 m/s, 17/17 at 20.75 pitches, n = 21 links at
+// the lay): the span's own links stretch as n/k; the whole is over the reference's compliance
+// C = n̄/k + 2/k_c (`elastic`, n̄ = 20.75) by 6–10 % (4.50e-7 and 4.65e-7 m/N against 4.25e-7;
+// 4.47–4.76e-7 over the tooth's phases, probed), and the two ends, the whole less the links,
+// take more than their contacts' 2/k_c (their wrap links share the step: 2.8e-8 and 4.4e-8 m/N
+// against 1e-8) — the parts the reference leaves out, within 15 % of it.
+TEST(DynamicsChordalDrive, ModelStaticStretchIsTheSpansCompliance) {
+  for (double speed : {0.05, 0.1}) {
+    FarWheel d;
+    d.centre = 20.75;
+    d.chain_speed = speed;
+    d = tight_off_harmonics(d);
+    Polygons g = polygons(d);
+    g.play = seat_play(d);
+    const int k = count_constant(g);
+    std::array<double, 2> stretch{}, links{};
+    std::size_t n = 0;
+    for (int q = 0; q < 2; ++q) {
+      Laid l = lay(d, k, 0.1);
+      n = l.b - l.a;
+      l.model.sprockets[0].speed = 0.0;
+      l.model.sprockets[1].load_torque = (d.tight + 10.0 * q - d.slack) * g.r2;
+      std::fill(l.state.vx.begin(), l.state.vx.end(), 0.0);
+      std::fill(l.state.vy.begin(), l.state.vy.end(), 0.0);
+      l.state.speed = {0.0, 0.0};
+      Integrator integ(l.model, {.step = d.step, .theta = 0.6});
+      for (int s = 0; s < 4000; ++s) ASSERT_TRUE(integ.step(l.model, l.state).converged);
+      stretch[q] = closure(g, l.state.angle[0], l.state.angle[1], k);
+      for (std::size_t i = l.a; i < l.b; ++i) {
+        links[q] += std::hypot(l.state.x[i + 1] - l.state.x[i], l.state.y[i + 1] - l.state.y[i]);
+      }
+    }
+    const double model = (stretch[1] - stretch[0]) / 10.0, span = (links[1] - links[0]) / 10.0;
+    const double links_only = static_cast<double>(n) / d.stiffness;
+    const double reference = elastic(d, g).compliance;
+    std::printf(
+        "T1 %.1f N, n %zu: the model's compliance %.4e m/N (its span's links %.4e, n/k "
+        "%.4e; the ends %.4e, 2/k_c %.4e), the reference's %.4e: %.4f\n",
+        d.tight, n, model, span, links_only, model - span, 2 / d.contact, reference,
+        model / reference);
+    EXPECT_NEAR(span / links_only, 1.0, 0.02) << speed;
+    EXPECT_GT(model - span, 2 / d.contact) << speed;
+    EXPECT_GT(model / reference, 1.0) << speed;
+    EXPECT_LT(model / reference, 1.15) << speed;
+  }
+}
+
+// The driven wheel's speed against the elastic four-bar (`closure` with the span's compliance):
+// the cases the rigid four-bar misses by more than 2 % that it brings within 2 % — the variation
+// at every bin count listed, and every bin within 5 % of the range up to `shape_bins` (the finer
+// profiles' shapes move with the step: at 5e-5 s 9/9's 40-bin shape goes from 3.7 to 5.9 % of the
+// range, 17/17's 80-bin ones from 2.3 and 3.9 to 4.4 and 4.8 %; the variations move by under
+// 0.7 %). 17/17 at 20.75 pitches at 0.05 m/s (rigid: 2.1 % over); at 0.1 m/s 17/17 at 20.5
+// pitches (rigid: 2.2–3.2 % over), and at 20 and 40 bins 17/17 at 20.25 pitches (rigid: 5.6 %
+// under at 20 bins) and 9/9 at 20.5 pitches (rigid: 2.2, 2.6 % over) — at 80 bins these two are
+// 3.9 and 5.4 % over the elastic four-bar: the torsional ring after the switches, which the
+// reference leaves out. Asserted for each: the rigid four-bar misses.
+TEST(DynamicsChordalDrive, DrivenSpeedFollowsTheElasticFourBar) {
+  constexpr double kTol = 0.02, kShape = 0.05;
+  struct Case {
+    int z1, z2;
+    double centre, speed;
+    std::vector<int> bins;
+    int shape_bins;  // the largest bin count whose shape is asserted
+  };
+  const std::vector<Case> cases = {{17, 17, 20.75, 0.05, {20, 40, 80}, 40},
+                                   {17, 17, 20.5, 0.1, {20, 40, 80}, 40},
+                                   {17, 17, 20.25, 0.1, {20, 40}, 40},
+                                   {9, 9, 20.5, 0.1, {20, 40}, 20}};
+  for (const Case& c : cases) {
+    FarWheel d;
+    d.driver_teeth = c.z1;
+    d.driven_teeth = c.z2;
+    d.centre = c.centre;
+    d.chain_speed = c.speed;
+    d = tight_off_harmonics(d);
+    Polygons g = polygons(d);
+    g.play = seat_play(d);
+    const Polygons ge = elastic(d, g);
+    const int k = count_constant(g);
+    const chordal::Result r = run(d, k);
+    const std::string name = std::to_string(c.z1) + "/" + std::to_string(c.z2) + " at " +
+                             std::to_string(c.centre) + " p, " + std::to_string(c.speed) + " m/s";
+    ASSERT_TRUE(r.converged) << name;
+    double rigid_off = 0.0;  // the largest |var / rigid four-bar − 1| over the bin counts
+    for (int bins : c.bins) {
+      const std::vector<double> sim = simulated_profile(r, bins),
+                                kel = kinematic_ratio(ge, k, bins);
+      const std::vector<double> kin = kinematic_ratio(g, k, bins);
+      const double range =
+          *std::max_element(kel.begin(), kel.end()) - *std::min_element(kel.begin(), kel.end());
+      const double var = variation_of(sim);
+      std::printf(
+          "%s, T1 %.1f N, %d bins: driven / elastic four-bar %.4f (rigid %.4f); largest "
+          "difference %.4f of the range (rigid %.4f)\n",
+          name.c_str(), d.tight, bins, var / variation_of(kel), var / variation_of(kin),
+          largest_difference(sim, kel) / range, largest_difference(sim, kin) / range);
+      EXPECT_NEAR(var / variation_of(kel), 1.0, kTol) << name << ", " << bins << " bins";
+      if (bins <= c.shape_bins) {
+        EXPECT_LT(largest_difference(sim, kel), kShape * range) << name << ", " << bins << " bins";
+      }
+      rigid_off = std::max(rigid_off, std::abs(var / variation_of(kin) - 1));
+    }
+    EXPECT_GT(rigid_off, kTol) << name << ": the rigid four-bar passes too";
   }
 }
 
