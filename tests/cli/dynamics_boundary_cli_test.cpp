@@ -993,6 +993,56 @@ TEST(DynamicsBoundaryCli, ARollerStrikingABareEntryEndIsNamedWithTheLeadIn) {
     EXPECT_TRUE(led.err.empty()) << k << keys.str() << led.err;
     EXPECT_TRUE(codes(led).empty()) << k;
   }
+  // a lead-in's own far end: the 300 N copy k = 0 with a lead-in of 0.3 mm (30 deg) at the entry
+  // end stops where its roller crosses the arc's far end, named with the depth G below the rail's
+  // roller line (rounded up, from the JSON's g: (R + r) - (R + r - g) cos 30 deg) and the exact
+  // clearance (R + r)(1 - cos α) >= G: the radius at 30 deg and the angle at 0.3 mm, each rounded
+  // up, each typed back running the 0.2 s without a diagnostic
+  {
+    const Copy c{"300 N", 1000, 0, 0};
+    const CliRun r = takeup(c, "lead_in_radius = \"0.3 mm\"\nlead_in_end = \"end\"\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_EQ(codes(r), std::vector<std::string>{"dynamics.bare_rail_end"}) << r.err;
+    for (const char* text :
+         {"catena: error: step ", " did not converge in ",
+          " crosses the far end of the lead-in at the end of dynamics.guide[0] (lead_in_radius "
+          "0.3 mm, lead_in_angle 30 deg) at (",
+          "where it runs onto the lead-in, ", "deeper than its contact's ramp (0.001 mm)",
+          "the run stopped there",
+          "(lead_in_radius + roller radius 6.035 mm) (1 - cos "
+          "lead_in_angle) >= ",
+          "(lead_in_end = \"end\" or \"both\""})
+      EXPECT_NE(r.err.find(text), std::string::npos) << text << "\n" << r.err;
+    EXPECT_EQ(r.err.find("try a smaller step"), std::string::npos) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const double g = j.at("diagnostics").at(0).at("value").get<double>() * 1e3;  // [mm]
+    EXPECT_GT(g, 0.001) << r.err;
+    EXPECT_LT(g, 2.0 * roller) << r.err;
+    EXPECT_NEAR(named_after(r.err, "where it runs onto the lead-in, "), g, 5e-4 * g) << r.err;
+    const double a = std::numbers::pi / 6.0, lead = 0.3;
+    const double G = (lead + roller) - (lead + roller - g) * std::cos(a);
+    const double named = named_after(r.err, "There the roller lies ");
+    EXPECT_GE(named, G) << r.err;
+    EXPECT_LT(named - G, 1e-3 * G) << r.err;
+    EXPECT_EQ(named_after(r.err, "(1 - cos lead_in_angle) >= "), named) << r.err;
+    const double radius = named_after(r.err, "at its lead_in_angle 30 deg, lead_in_radius >= ");
+    const double least = named / (1.0 - std::cos(a)) - roller;
+    EXPECT_GE(radius, least) << r.err;
+    EXPECT_LT(radius - least, 0.01 * least) << r.err;
+    const double angle = named_after(r.err, "at its lead_in_radius 0.3 mm, lead_in_angle >= ");
+    const double fewest = std::acos(1.0 - named / (lead + roller)) * 180.0 / std::numbers::pi;
+    EXPECT_GE(angle, fewest) << r.err;
+    EXPECT_LT(angle - fewest, 0.01 * fewest) << r.err;
+    std::ostringstream by_radius, by_angle;
+    by_radius << "lead_in_radius = \"" << radius << " mm\"\n";
+    by_angle << "lead_in_radius = \"0.3 mm\"\nlead_in_angle = \"" << angle << " deg\"\n";
+    for (const std::string& keys : {by_radius.str(), by_angle.str()}) {
+      const CliRun led = takeup(c, keys + "lead_in_end = \"end\"\n");
+      EXPECT_EQ(led.status, 0) << led.err;
+      EXPECT_TRUE(led.err.empty()) << keys << led.err;
+      EXPECT_TRUE(codes(led).empty()) << keys;
+    }
+  }
   // a failure elsewhere, a bare end crossed in that step short of the ramp: not_converged as it was
   std::string stiff = kLeadInLoopHead;
   stiff = std::regex_replace(stiff, std::regex("axial_stiffness = [^\n]*"),

@@ -896,6 +896,113 @@ TEST(DynamicsSquareEnd, ARollerCrossingABareEndDeeperThanTheRampIsNamed) {
   }
 }
 
+// A lead-in arc's own far end is square (square_ends of the rail and its lead-in; layout.hpp,
+// lead_in_rail_depth): on the inclined straight rail and the arc rail with the rollers outside and
+// inside, a lead-in of 2 mm at 30 deg at each end in turn. The far end is built here from the
+// rail's end, its normal n and the direction o past it: the arc's centre R behind the end along
+// −n, its far face the line from there along cos α n + sin α o. A roller running towards the rail
+// parallel to the end's tangent, G below the rail's roller line, meets that face d = (R + r − G)/
+// cos α from the centre, g = R + r − d into the arc's contact: named on the arc's far end (not the
+// joined near end) with that g (1e-12 m), and lead_in_rail_depth gives G back. The exact clearance:
+// at lead_in_clear_radius (at α) and at lead_in_clear_angle (at R) the face is met on the roller
+// line (g = 0 to 1e-12 m); 0.1 mm or 0.01 rad less is struck, as much more is not.
+TEST(DynamicsSquareEnd, ALeadInsOwnFarEndIsSquareAndItsExactClearanceHolds) {
+  for (const Guide& rail : {inclined_rail(0.0), arc_rail(false), arc_rail(true)}) {
+    const double r = rail.roller_radius, eps = rail.contact_smoothing, h = 1e-3;
+    for (const bool at_end : {false, true}) {
+      double px = 0.0, py = 0.0, nx = 0.0, ny = 0.0, ox = 0.0, oy = 0.0;
+      if (rail.kind == Guide::Kind::kArc) {
+        const ArcEnd e = arc_end(rail, at_end);
+        px = e.px, py = e.py, nx = e.nx, ny = e.ny, ox = e.ox, oy = e.oy;
+      } else {
+        const double len = std::hypot(rail.x1 - rail.x0, rail.y1 - rail.y0);
+        const double ux = (rail.x1 - rail.x0) / len, uy = (rail.y1 - rail.y0) / len;
+        px = at_end ? rail.x1 : rail.x0, py = at_end ? rail.y1 : rail.y0;
+        nx = -uy, ny = ux;
+        ox = at_end ? ux : -ux, oy = at_end ? uy : -uy;
+      }
+      // the lead-in (R, α) at this end; a roller G below the roller line, moving 0.5 mm towards
+      // the rail from 0.3 mm before the far face: the strike on the far end, if any
+      const auto strike = [&](double R, double a, double G) {
+        std::vector<Guide> guides{rail};
+        for (const Guide& arc : lead_in_arcs(rail, {R, a, !at_end, at_end})) guides.push_back(arc);
+        EXPECT_EQ(guides.size(), 2U);
+        const std::vector<std::size_t> all{0, 1};
+        const std::vector<SquareEnd> ends = square_ends(BeltPath{}, guides, all);
+        EXPECT_EQ(ends.size(), 2U);                  // the rail's other end and the arc's far end
+        const double s = (R + r - G) * std::tan(a);  // past the rail's end, the face's
+        const std::vector<double> x{px + (r - G) * nx + (s + 3e-4) * ox},
+            y{py + (r - G) * ny + (s + 3e-4) * oy}, vx{-0.5 * ox}, vy{-0.5 * oy};
+        const std::optional<EndStrike> hit = square_end_strike(ends, guides, all, x, y, vx, vy, h);
+        if (hit) {
+          EXPECT_EQ(ends[hit->end].rail, 1U);  // the arc's
+          // its far end: R (1 - cos α) behind the rail's surface, R sin α past the end
+          const double fx = px - R * nx + R * (std::cos(a) * nx + std::sin(a) * ox);
+          const double fy = py - R * ny + R * (std::cos(a) * ny + std::sin(a) * oy);
+          EXPECT_NEAR(ends[hit->end].x, fx, 1e-12);
+          EXPECT_NEAR(ends[hit->end].y, fy, 1e-12);
+        }
+        return hit;
+      };
+      const double R = 2e-3, a = kPi / 6.0;
+      const double clear = (R + r) * (1.0 - std::cos(a));  // 0.808 mm
+      for (const double G : {clear + 1e-4, clear + 1e-3, 2e-3}) {
+        const std::optional<EndStrike> hit = strike(R, a, G);
+        ASSERT_TRUE(hit.has_value()) << G << " " << at_end;
+        EXPECT_NEAR(hit->depth, R + r - (R + r - G) / std::cos(a), 1e-12);
+        EXPECT_NEAR(lead_in_rail_depth(R, a, r, hit->depth), G, 1e-12);
+      }
+      EXPECT_FALSE(strike(R, a, clear - 1e-4).has_value()) << at_end;
+      // G = 2 mm: the radius at 30 deg, the angle at 2 mm
+      const double G = 2e-3, least = lead_in_clear_radius(a, r, G);
+      const double most = lead_in_clear_angle(R, r, G);
+      EXPECT_NEAR(least + r, G / (1.0 - std::cos(a)), 1e-12);
+      EXPECT_NEAR(std::cos(most), 1.0 - G / (R + r), 1e-12);
+      for (const auto& [radius, angle] : {std::pair{least, a}, std::pair{R, most}}) {
+        EXPECT_FALSE(strike(radius, angle, G).has_value()) << at_end;  // g = 0: within ε
+        EXPECT_NEAR(radius + r - (radius + r - G) / std::cos(angle), 0.0, 1e-12);
+      }
+      const std::optional<EndStrike> small = strike(least - 1e-4, a, G);
+      ASSERT_TRUE(small.has_value()) << at_end;
+      EXPECT_GT(small->depth, eps);
+      EXPECT_FALSE(strike(least + 1e-4, a, G).has_value()) << at_end;
+      const std::optional<EndStrike> narrow = strike(R, most - 0.01, G);
+      ASSERT_TRUE(narrow.has_value()) << at_end;
+      EXPECT_GT(narrow->depth, eps);
+      EXPECT_FALSE(strike(R, most + 0.01, G).has_value()) << at_end;
+    }
+  }
+  EXPECT_TRUE(std::isnan(lead_in_clear_angle(1e-3, kRoller, 1e-3 + kRoller + 1e-6)));
+}
+
+// The strike's bound at the contact's far edge, decided by rule (layout.hpp, square_end_strike):
+// the contact is off at g >= 2r (guide_contact), so a roller crossing a square end exactly 2r below
+// the roller line carries no force and is not struck; the largest double below 2r is. A level rail
+// on y = 0 with its free side up: the roller line y = r, the node's level move at y = −r, g = 2r to
+// the last bit.
+TEST(DynamicsSquareEnd, ACrossingExactlyTwoRollerRadiiDeepIsNoStrike) {
+  Guide rail = inclined_rail(0.0);
+  rail.x0 = 0.0, rail.y0 = 0.0, rail.x1 = 0.25, rail.y1 = 0.0;
+  const double r = rail.roller_radius;
+  const std::vector<Guide> guides{rail};
+  const std::vector<std::size_t> given{0};
+  const std::vector<SquareEnd> ends = square_ends(BeltPath{}, guides, given);
+  ASSERT_EQ(ends.size(), 2U);
+  const auto strike = [&](double y) {
+    // from 0.3 mm before (x0, y0) onto the rail, 0.5 mm over the step
+    const std::vector<double> x{-3e-4}, ys{y}, vx{0.5}, vy{0.0};
+    return square_end_strike(ends, guides, given, x, ys, vx, vy, 1e-3);
+  };
+  ASSERT_EQ(r - (-r), 2.0 * r);  // the gap's arithmetic is exact here
+  EXPECT_FALSE(strike(-r).has_value());
+  const double under = std::nextafter(2.0 * r, 0.0);
+  ASSERT_EQ(r - (r - under), under);
+  const std::optional<EndStrike> below = strike(r - under);
+  ASSERT_TRUE(below.has_value());
+  EXPECT_EQ(below->depth, under);
+  EXPECT_TRUE(ends[below->end].at_start);
+}
+
 }  // namespace
 // A rail against the chain's starting path (rail_cut; docs/models/dynamics.md, "Guides against the
 // starting path") against a brute force on the lead-in tests' loop (two z = 12 wheels ten pitches

@@ -241,6 +241,18 @@ std::optional<EndStrike> square_end_strike(const std::vector<SquareEnd>& ends,
                                            std::span<const double> vx, std::span<const double> vy,
                                            double h);
 
+/// A lead-in arc's own far end (`lead_in_arcs`, radius R, sweep α, at a rail's end, its centre R
+/// behind the end along the end's normal) is square too: a roller crossing its face (the radial
+/// line at α) g into the arc's contact lies (R + r) − (R + r − g) cos α below the rail's roller
+/// line at the end's tangent (docs/models/dynamics.md, "Lead-ins", the far end). A roller running
+/// parallel to that tangent at that depth G meets the arc's roller line within its sweep, and so
+/// clears its far end, exactly when (R + r)(1 − cos α) >= G: at a sweep α from the radius
+/// G / (1 − cos α) − r on, at a radius R from the sweep acos(1 − G / (R + r)) on (NaN when
+/// G > R + r: none up to a quarter turn).
+double lead_in_rail_depth(double radius, double angle, double roller, double g);
+double lead_in_clear_radius(double angle, double roller, double depth);
+double lead_in_clear_angle(double radius, double roller, double depth);
+
 /// The distances `lead_in_obstacle` measures for `arc` (its samples times the pieces and guides
 /// its prefilter keeps): the work of one check, which `lead_in_limit`'s bisections repeat at most
 /// kLeadInPasses times in all (their arcs lie within the given arc's bounding box).

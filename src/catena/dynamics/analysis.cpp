@@ -411,6 +411,9 @@ struct Setup {
   // one's lead_in_angle [rad] (NaN: it has no lead-in)
   std::size_t given_guides = 0;
   std::vector<double> lead_in_angles;
+  // each lead-in arc's (guides[given_guides + k]) rail, an index into guides, and whether it is
+  // laid at the rail's start
+  std::vector<std::pair<std::size_t, bool>> lead_in_rails;
   bool work_balance = false;  // summary.work_balance in the output
   // the free layout (docs/models/dynamics.md, "Command"): every sprocket with its centre; empty
   // `wheels` for the two equal wheels on a line
@@ -2311,6 +2314,7 @@ Setup parse(const analysis::Inputs& in) {
       // lead_in_arcs lays the start's arc before the end's
       for (std::size_t k = 0; k < lead_ins.size(); ++k) {
         const bool start = k == 0 && lead_ins_at_start;
+        s.lead_in_rails.emplace_back(s.guides.size() - 1, start);
         lead_names.push_back("the lead-in at the " + std::string(start ? "start" : "end") +
                              " of guide[" + std::to_string(i) + "]");
       }
@@ -2840,14 +2844,15 @@ int output_every(const Setup& d) {
 // (docs/models/dynamics.md, "Guides against the starting path: the square ends", the run's
 // diagnostic): the guide as the case file counts it, the end, the node, its depth and the remedy,
 // the lead-in; none when no roller does (the step failed elsewhere: dynamics.not_converged).
-// The guides as given are the rails, the lead-in arcs (laid after them) close their ends. The
-// move judged runs from x - h v to x + h v: the last converged step's, back-extrapolated, and the
-// failed one's predictor, since a roller struck in one step may fail the next; the strike named
+// Every guide is checked: a rail as given has the ends no guide closes, a lead-in arc (laid after
+// them) its far end, its near end joining its rail's ("A lead-in's own far end"). The move judged
+// runs from x - h v to x + h v: the last converged step's, back-extrapolated, and the failed one's
+// predictor, since a roller struck in one step may fail the next; the strike named
 // coincides with the failure, which it need not have caused.
 std::optional<Diagnostic> bare_end_struck(const Setup& d, const State& s,
                                           const std::string& failed) {
   std::vector<std::size_t> rails;
-  for (std::size_t g = 0; g < d.given_guides && g < d.guides.size(); ++g) rails.push_back(g);
+  for (std::size_t g = 0; g < d.guides.size(); ++g) rails.push_back(g);
   const std::vector<SquareEnd> ends = square_ends(BeltPath{}, d.guides, rails);
   std::vector<double> back_x(s.x.size()), back_y(s.y.size());
   for (std::size_t i = 0; i < back_x.size() && i < s.vx.size(); ++i)
@@ -2861,6 +2866,44 @@ std::optional<Diagnostic> bare_end_struck(const Setup& d, const State& s,
   const std::size_t index = rails[end.rail];
   const Guide& rail = d.guides[index];
   auto mm = [](double v) { return format_g(v * 1e3, 4) + " mm"; };
+  const std::string struck = failed + ": node " + std::to_string(hit->node) + " crosses ";
+  const std::string ramp = "deeper than its contact's ramp (" + mm(rail.contact_smoothing) +
+                           "): the roller is struck by that depth's force at once, on which a "
+                           "step need not converge however small; the run stopped there. ";
+  if (index >= d.given_guides) {
+    // a lead-in arc's own far end (its near end joins its rail's): the lead-in named by its rail,
+    // the exact clearance (R + r)(1 − cos α) >= G of a roller parallel to the end's tangent at
+    // the depth G it has there (layout.hpp, lead_in_rail_depth), G rounded up and the radius at
+    // its sweep, the sweep at its radius, from it rounded up
+    const auto [of, at_start] = d.lead_in_rails[index - d.given_guides];  // laid with the arcs
+    const double R = rail.radius, r = rail.roller_radius, a = rail.end_angle - rail.start_angle;
+    const double G = up_to(lead_in_rail_depth(R, a, r, hit->depth) * 1e3, 4);  // [mm]
+    const double radius = up_to(lead_in_clear_radius(a, r * 1e3, G), 3);       // [mm]
+    const double angle = lead_in_clear_angle(R * 1e3, r * 1e3, G) * 180.0 / kPi;
+    const std::string end_word = at_start ? "start" : "end";
+    return Diagnostic{
+        Diagnostic::Severity::kError,
+        "dynamics.bare_rail_end",
+        struck + "the far end of the lead-in at the " + end_word + " of dynamics." +
+            d.guide_names[of] + " (lead_in_radius " + mm(R) + ", lead_in_angle " +
+            format_g(a * 180.0 / kPi, 4) + " deg) at (" + format_g(end.x * 1e3, 4) + ", " +
+            format_g(end.y * 1e3, 4) + ") mm, where it runs onto the lead-in, " + mm(hit->depth) +
+            " into its contact, " + ramp + "There the roller lies " + format_g(G, 4) +
+            " mm below the rail's roller line at its end; give that end a lead-in a roller "
+            "running parallel to the rail there clears, (lead_in_radius + roller radius " +
+            mm(r) + ") (1 - cos lead_in_angle) >= " + format_g(G, 4) +
+            " mm: at its lead_in_angle " + format_g(a * 180.0 / kPi, 4) +
+            " deg, lead_in_radius >= " + format_g(radius, 3) + " mm, or at its lead_in_radius " +
+            mm(R) + ", " +
+            (std::isnan(angle) ? std::string("no lead_in_angle up to 90 deg")
+                               : "lead_in_angle >= " + format_g(up_to(angle, 3), 3) + " deg") +
+            " (lead_in_end = \"" + end_word +
+            "\" or \"both\"; a bare entry end near the chain's "
+            "path may stop the run at any depth)",
+        hit->depth,
+        rail.contact_smoothing,
+        "m"};
+  }
   // a lead-in's arc ends R (1 − cos α) below the end's tangent: deeper than the roller at the
   // rail's own lead_in_angle, else the default 30° (docs/cli.md, lead_in_angle), from
   // R = g / (1 − cos α), named rounded up: a sufficient radius, not the least (a roller on a path
@@ -2874,13 +2917,9 @@ std::optional<Diagnostic> bare_end_struck(const Setup& d, const State& s,
   return Diagnostic{
       Diagnostic::Severity::kError,
       "dynamics.bare_rail_end",
-      failed + ": node " + std::to_string(hit->node) + " crosses the square end of dynamics." +
-          d.guide_names[index] + " at " + square_end_name(rail, end) +
-          ", where it runs onto the rail, " + mm(hit->depth) +
-          " into its contact, deeper than its contact's ramp (" + mm(rail.contact_smoothing) +
-          "): the roller is struck by that depth's force at once, on which a step need not "
-          "converge however small; the run stopped there. Give that end a lead-in " +
-          square_end_lead_in(end) +
+      struck + "the square end of dynamics." + d.guide_names[index] + " at " +
+          square_end_name(rail, end) + ", where it runs onto the rail, " + mm(hit->depth) +
+          " into its contact, " + ramp + "Give that end a lead-in " + square_end_lead_in(end) +
           " whose arc ends deeper below the surface than the roller, "
           "lead_in_radius (1 - cos lead_in_angle) > " +
           format_g(up_to(hit->depth * 1e3, 4), 4) + " mm (" + at_angle +

@@ -1352,6 +1352,22 @@ std::optional<EndStrike> square_end_strike(const std::vector<SquareEnd>& ends,
   return out;
 }
 
+// A lead-in's far end (layout.hpp): the roller on the far end's face, d = R + r − g from the arc's
+// centre at α from the end's normal, lies d cos α along that normal from the centre, which is R
+// behind the rail's surface: (R + r) − d cos α below the rail's roller line. A path parallel to the
+// end's tangent at that depth G meets the arc's roller line (radius R + r) where cos θ = (R + r −
+// G)/(R + r), within the sweep (θ <= α) exactly when (R + r)(1 − cos α) >= G.
+double lead_in_rail_depth(double radius, double angle, double roller, double g) {
+  return radius + roller - (radius + roller - g) * std::cos(angle);
+}
+double lead_in_clear_radius(double angle, double roller, double depth) {
+  return depth / (1.0 - std::cos(angle)) - roller;
+}
+double lead_in_clear_angle(double radius, double roller, double depth) {
+  const double c = 1.0 - depth / (radius + roller);
+  return c >= 0.0 ? std::acos(c) : NAN;
+}
+
 std::vector<std::size_t> sagging_spans(const BeltPath& path) {
   std::vector<std::size_t> back, out;
   for (const PathPiece& q : path.pieces)
