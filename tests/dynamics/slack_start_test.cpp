@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <random>
 #include <string>
 #include <utility>
 #include <vector>
@@ -1140,6 +1141,346 @@ TEST(DynamicsSlackStart, ASpanBeyondThePathIsRefused) {
     EXPECT_TRUE(place_slack_loop(path, circles, {17, 17}, 80, kPitch, laid, {k}).s.empty()) << k;
     EXPECT_TRUE(laid.pieces.empty()) << k;
   }
+}
+
+// Slack in two lower runs that share no wheel (`slack_spans = "all"`): wheels z 17 at (0, `high`)
+// and (1.0, `high`) m, and at (0.4, 0) and (0.6, 0) m; a back-side wheel at (0.5, 0.15) m lifts the
+// chain between the two low wheels over its top, and one at (0.5, 0.27) m presses the return run
+// down, so that the two lower runs, 0 -> 1 and 3 -> 4, are the only spans that sag
+// (`sagging_spans`: every other span touches a wheel on the back of the chain).
+struct TwoRuns {
+  std::vector<Circle> circles;
+  std::vector<int> teeth{17, 17, 17, 17, 17, 17};
+  BeltPath path;
+  std::vector<std::size_t> spans;
+  double chords = 0.0;  // [m] the spans' lengths, summed
+};
+TwoRuns two_lower_runs(double high = 0.25, double lift = 0.15) {
+  TwoRuns t;
+  const double r = pitch_radius(17);
+  t.circles = {{0.0, high, r}, {0.4, 0.0, r},  {0.5, lift, r, true},
+               {0.6, 0.0, r},  {1.0, high, r}, {0.5, lift + 0.12, r, true}};
+  t.path = belt_path(t.circles, 0);
+  t.spans = sagging_spans(t.path);
+  for (const std::size_t k : t.spans) t.chords += t.path.pieces[k].length;
+  return t;
+}
+
+// The lowest point [m] of a laid catenary piece: the closed form through its ends (the test's own
+// solve), its vertex where that lies between them, else the lower end.
+double catenary_lowest(const PathPiece& q) {
+  const ClosedForm c = closed_form(q.x0, q.y0, q.x1, q.y1, q.length);
+  return c.x0 > q.x0 && c.x0 < q.x1 ? c.y(c.x0, q.x0, q.y0) : std::min(q.y0, q.y1);
+}
+
+// Each span's own extra [m] in the laid path: its length beyond its chord plus what it cut off the
+// wraps either side (negative: the wraps are shorter).
+double own_extra(const BeltPath& path, const BeltPath& laid, std::size_t k) {
+  const std::size_t n = path.pieces.size(), after = (k + 1) % n;
+  return laid.pieces[k].length - path.pieces[k].length +
+         (laid.pieces[k - 1].length - path.pieces[k - 1].length) +
+         (laid.pieces[after].length - path.pieces[after].length);
+}
+
+// Both spans of a start beyond their half circles laid as their tangent catenaries with their
+// shares: span k's own extra e c_k / Σc (1e-9 of its chord), tangent to both its wheels by plain
+// geometry (tangent_fit), its a and lowest point against the tangent catenary of that share (the
+// test's own solve of the tangency and length conditions, `tangent_catenary`) to 1e-9; `what`
+// names the case.
+void expect_both_runs_tangent(const TwoRuns& t, const BeltPath& laid, const std::string& what) {
+  const double e = laid.length - t.path.length, r = pitch_radius(17);
+  for (const std::size_t k : t.spans) {
+    const PathPiece& q = laid.pieces[k];
+    ASSERT_TRUE(q.catenary) << what << " span " << k;
+    const double c = t.path.pieces[k].length, share = e * c / t.chords;
+    EXPECT_NEAR(own_extra(t.path, laid, k), share, 1e-9 * c) << what << " span " << k;
+    expect_tangent_fit(laid, k, t.circles, what + ", span " + std::to_string(k));
+    // a rising run solved as its mirror image (x → −x: the same a and lowest point, falling from
+    // the higher wheel; the test's solve brackets its roots for a falling one: on this 32° rise
+    // it ends at its bracket's a = 100 r)
+    const Circle &from = t.circles[q.wheel], &to = t.circles[q.next];
+    const bool rises = to.y > from.y;
+    const TangentCatenary own =
+        tangent_catenary(to.x - from.x, rises ? from.y - to.y : to.y - from.y, r, c, share);
+    EXPECT_NEAR(q.hang_a / own.a, 1.0, 1e-9) << what << " span " << k;
+    EXPECT_NEAR(catenary_lowest(q), std::max(from.y, to.y) - tangent_catenary_depth(own, r), 1e-9)
+        << what << " span " << k;
+    std::printf("%s, span %zu: share %.6f mm, a %.6f mm (own solve %.6f), lowest %.6f mm\n",
+                what.c_str(), k, share * 1e3, q.hang_a * 1e3, own.a * 1e3,
+                catenary_lowest(q) * 1e3);
+  }
+}
+
+// `slack_spans = "all"` beyond the half circle (every share passes it at one e, the shares in
+// proportion to the chords): each lower run laid as the catenary tangent to its two wheels with
+// its share (`tangent_spans`), the path turning by under 1e-9 rad at every joint, every link one
+// pitch, a roller on every wheel: 180 links (the first count laid so; its e, 522.703 mm, closes
+// 0.83 p below the half circle's 538.488 mm, within the pitch a span that the limit checks both
+// lays in), 183, 199 and 215. Before, every catenary of more than one span was laid between its
+// tangent points, kinked at the wheels (100.5°, 107.7° and 111.5° at 183, 199 and 215 links), and
+// 180 links were not laid.
+TEST(DynamicsSlackStart, TwoSlackSpansAreEachLaidTangentToTheirWheels) {
+  const TwoRuns t = two_lower_runs();
+  ASSERT_TRUE(t.path.faults.empty());
+  ASSERT_EQ(t.spans.size(), 2u);
+  const double half = (0.5 * kPi - 1.0) * t.chords;
+  for (const int links : {180, 183, 199, 215}) {
+    const std::string what = std::to_string(links) + " links";
+    BeltPath laid;
+    const LoopPlacement place =
+        place_slack_loop(t.path, t.circles, t.teeth, links, kPitch, laid, t.spans);
+    ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links)) << what;
+    const double e = laid.length - t.path.length;
+    EXPECT_EQ(e > half, links != 180) << what;
+    EXPECT_GT(e, half - 2.0 * kPitch) << what;
+    EXPECT_LT(largest_joint_turn(laid), 1e-9) << what;
+    for (const int w : place.wrapped) EXPECT_GT(w, 0) << what;
+    expect_both_runs_tangent(t, laid, what);
+    expect_every_link_one_pitch(loop_state(laid, t.circles, place, 0.0), links, what,
+                                1e-11 * links * kPitch);
+  }
+}
+
+// The start is continuous as the geometry turns: the high wheels from 0.22 to 0.28 m in steps of
+// 5 mm (the runs' slopes from 28.8° to 35.0°), 199 links. Every start is laid tangent (the
+// joints turning by under 1e-9 rad), and a, the lowest point of the first run and e change from
+// one step to the next by at most 1.5 times the mean step's change.
+TEST(DynamicsSlackStart, TwoSlackSpansStartContinuouslyAsTheRunsTurn) {
+  const int links = 199;
+  std::vector<double> as, lows, extras;
+  for (int q = 0; q <= 12; ++q) {
+    const double high = 0.22 + 0.005 * q;
+    const std::string what = "high " + std::to_string(high);
+    const TwoRuns t = two_lower_runs(high);
+    ASSERT_EQ(t.spans.size(), 2u) << what;
+    BeltPath laid;
+    const LoopPlacement place =
+        place_slack_loop(t.path, t.circles, t.teeth, links, kPitch, laid, t.spans);
+    ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links)) << what;
+    const PathPiece& run = laid.pieces[t.spans[0]];
+    ASSERT_TRUE(run.catenary) << what;
+    const double turn = largest_joint_turn(laid);
+    EXPECT_LT(turn, 1e-9) << what;
+    as.push_back(run.hang_a);
+    lows.push_back(catenary_lowest(run));
+    extras.push_back(laid.length - t.path.length);
+    std::printf("%s: a %.3f mm, lowest point %.3f mm, e %.3f mm, turn %.3g rad\n", what.c_str(),
+                run.hang_a * 1e3, lows.back() * 1e3, extras.back() * 1e3, turn);
+  }
+  const std::pair<const char*, const std::vector<double>&> series[] = {
+      {"a", as}, {"lowest point", lows}, {"e", extras}};
+  for (const auto& [name, v] : series) {
+    double mean = 0.0, most = 0.0;
+    for (std::size_t i = 1; i < v.size(); ++i) {
+      mean += std::abs(v[i] - v[i - 1]) / static_cast<double>(v.size() - 1);
+      most = std::max(most, std::abs(v[i] - v[i - 1]));
+    }
+    EXPECT_LT(most, 1.5 * mean) << name;
+    std::printf("%s: the largest step's change %.4g mm, the mean step's %.4g mm\n", name,
+                most * 1e3, mean * 1e3);
+  }
+}
+
+// The limit of more than one span (`sag_spans_limit`) follows the lay a start lays beyond the half
+// circle, both spans tangent (`tangent_spans`): a rail under the first run, 1 mm below where the
+// tangent lay of 1.5 half circles would bring a roller onto it; the limit lies beyond the half
+// circle, that lay is clear at the limit, and 1e-4 of the chords beyond it runs into the rail.
+TEST(DynamicsSlackStart, TheLimitOfTwoSpansFollowsTheirTangentLay) {
+  const TwoRuns t = two_lower_runs();
+  const double half = (0.5 * kPi - 1.0) * t.chords;
+  const BeltPath deep = tangent_spans(t.path, t.spans, 1.5 * half);
+  ASSERT_FALSE(deep.pieces.empty());
+  const PathPiece& run = deep.pieces[t.spans[0]];
+  const ClosedForm c = closed_form(run.x0, run.y0, run.x1, run.y1, run.length);
+  ASSERT_GT(c.x0, run.x0);
+  ASSERT_LT(c.x0, run.x1);
+  Guide rail;
+  rail.x0 = c.x0 - 0.05;
+  rail.x1 = c.x0 + 0.05;
+  rail.y0 = rail.y1 = catenary_lowest(run) - 0.5 * kRoller - 0.001;
+  rail.roller_radius = 0.5 * kRoller;
+  const std::vector<double> tip(t.circles.size(), pitch_radius(17) + 0.0066);
+  auto named = [&](const BeltPath& laid) {
+    std::string out;
+    for (const std::size_t k : t.spans)
+      if (out.empty()) out = sag_obstacle(laid, k, t.circles, tip, {rail}, kRoller, kPitch);
+    return out;
+  };
+  EXPECT_EQ(named(deep), "");
+  const double most = sag_spans_limit(t.path, t.spans, t.circles, tip, {rail}, kRoller, kPitch);
+  EXPECT_GT(most, 1.5 * half);
+  EXPECT_LT(most, 2.0 * half);
+  const BeltPath at = tangent_spans(t.path, t.spans, most);
+  ASSERT_FALSE(at.pieces.empty());
+  EXPECT_EQ(named(at), "");
+  const BeltPath beyond = tangent_spans(t.path, t.spans, most + 1e-4 * t.chords);
+  ASSERT_FALSE(beyond.pieces.empty());
+  EXPECT_EQ(named(beyond), "guide[0]");
+  std::printf("two runs, a rail under the first: the limit %.6f mm (half circle %.6f mm)\n",
+              most * 1e3, half * 1e3);
+}
+
+// The lowest point [m] of a sagging piece, sampled at 10⁴ points along it.
+double sampled_lowest(const PathPiece& q) {
+  double low = INFINITY;
+  for (int j = 0; j <= 10000; ++j) low = std::min(low, sag_point(q, q.length * j / 1e4).y);
+  return low;
+}
+
+// Below the half circle, within a pitch a span (here two): 180 links close laid tangent at an e
+// below the half circle (TwoSlackSpansAreEachLaidTangentToTheirWheels). A rail under the first run
+// midway between its half circle's lowest point and that tangent lay's: the arcs are clear up to
+// the half circle, the 180 links' lay is not; the limit (`sag_spans_limit`) checks both lays
+// within the two pitches below the half circle, so here it is that band's low end, 500.388 mm,
+// below the 180 links' 522.703 mm, the arcs clear there (before, it checked the arcs alone and
+// named the half circle's 538.488 mm, above the e of a count whose start runs into the rail).
+TEST(DynamicsSlackStart, TheLimitOfTwoSpansJustBelowTheHalfCircleChecksTheTangentLay) {
+  const TwoRuns t = two_lower_runs();
+  const double half = (0.5 * kPi - 1.0) * t.chords;
+  BeltPath laid;
+  const LoopPlacement place =
+      place_slack_loop(t.path, t.circles, t.teeth, 180, kPitch, laid, t.spans);
+  ASSERT_EQ(place.s.size(), 180u);
+  const double e = laid.length - t.path.length;
+  ASSERT_LT(e, half);
+  const BeltPath arcs = sag_spans(t.path, t.spans, half * (1.0 - 1e-9));
+  ASSERT_FALSE(arcs.pieces.empty());
+  const PathPiece &arc = arcs.pieces[t.spans[0]], &hang = laid.pieces[t.spans[0]];
+  const double arc_low = sampled_lowest(arc), hang_low = sampled_lowest(hang);
+  ASSERT_GT(arc_low - hang_low, 2.0 * kRoller);
+  const ClosedForm c = closed_form(hang.x0, hang.y0, hang.x1, hang.y1, hang.length);
+  Guide rail;
+  rail.x0 = c.x0 - 0.03;
+  rail.x1 = c.x0 + 0.03;
+  rail.y0 = rail.y1 = 0.5 * (arc_low + hang_low);
+  rail.roller_radius = 0.5 * kRoller;
+  const std::vector<double> tip(t.circles.size(), pitch_radius(17) + 0.0066);
+  auto named = [&](const BeltPath& lay) {
+    std::string out;
+    for (const std::size_t k : t.spans)
+      if (out.empty()) out = sag_obstacle(lay, k, t.circles, tip, {rail}, kRoller, kPitch);
+    return out;
+  };
+  EXPECT_EQ(named(arcs), "");
+  EXPECT_EQ(named(laid), "guide[0]");
+  const double most = sag_spans_limit(t.path, t.spans, t.circles, tip, {rail}, kRoller, kPitch);
+  EXPECT_LT(most, e);
+  EXPECT_NEAR(most, half - 2.0 * kPitch, 1e-6 * t.chords);
+  EXPECT_EQ(named(sag_spans(t.path, t.spans, most)), "");
+  std::printf(
+      "two runs, 180 links: e %.6f mm, half circle %.6f mm, limit %.6f mm; lowest arc %.3f, "
+      "tangent %.3f mm\n",
+      e * 1e3, half * 1e3, most * 1e3, arc_low * 1e3, hang_low * 1e3);
+}
+
+// Random geometries of the two lower runs (the high wheels at 0.18–0.32 m, the lifting back-side
+// wheel at 0.12–0.17 m, the four wheels inside with 13 to 30 teeth each, a count from the first
+// past the half circle to 60 beyond it; a fixed seed): no NaN, and every start either laid — every
+// link one pitch, every node finite, and where laid tangent (the joints turning by under 1e-9
+// rad) each run tangent to its wheels by plain geometry (tangent_fit) with its own extra its
+// share e c_k / Σc (1e-9 of its chord) — or not laid (no path given back); the limit
+// (`sag_spans_limit`) finite, between the half circle's and the longest catenary's.
+TEST(DynamicsSlackStart, RandomTwoRunStartsAreLaidTangentOrRefused) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> high(0.18, 0.32), lift(0.12, 0.17);
+  std::uniform_int_distribution<int> teeth(13, 30), more(0, 60);
+  int tangent = 0, between = 0, refused = 0;
+  for (int trial = 0; trial < 10; ++trial) {
+    TwoRuns t = two_lower_runs(high(rng), lift(rng));
+    for (const std::size_t w : {0u, 1u, 3u, 4u}) {
+      t.teeth[w] = teeth(rng);
+      t.circles[w].radius = pitch_radius(t.teeth[w]);
+    }
+    t.path = belt_path(t.circles, 0);
+    t.spans = sagging_spans(t.path);
+    t.chords = 0.0;
+    for (const std::size_t k : t.spans) t.chords += t.path.pieces[k].length;
+    const std::string what = "trial " + std::to_string(trial);
+    ASSERT_TRUE(t.path.faults.empty()) << what;
+    ASSERT_EQ(t.spans.size(), 2u) << what;
+    const double half = (0.5 * kPi - 1.0) * t.chords;
+    const int links = static_cast<int>(std::ceil((t.path.length + half) / kPitch)) + more(rng);
+    std::vector<double> tip;
+    for (const Circle& c : t.circles) tip.push_back(c.radius + 0.0066);
+    const double most = sag_spans_limit(t.path, t.spans, t.circles, tip, {}, kRoller, kPitch);
+    EXPECT_TRUE(std::isfinite(most)) << what;
+    EXPECT_GE(most, half) << what;
+    EXPECT_LE(most, kCatenaryMostExtra * t.chords) << what;
+    BeltPath laid;
+    const LoopPlacement place =
+        place_slack_loop(t.path, t.circles, t.teeth, links, kPitch, laid, t.spans);
+    if (place.s.empty()) {
+      EXPECT_TRUE(laid.pieces.empty()) << what;
+      ++refused;
+      continue;
+    }
+    ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links)) << what;
+    const State st = loop_state(laid, t.circles, place, 0.0);
+    for (std::size_t i = 0; i < st.nodes(); ++i)
+      ASSERT_TRUE(std::isfinite(st.x[i]) && std::isfinite(st.y[i])) << what << " node " << i;
+    expect_every_link_one_pitch(st, links, what, 1e-11 * links * kPitch);
+    const double e = laid.length - t.path.length;
+    EXPECT_TRUE(std::isfinite(e)) << what;
+    if (largest_joint_turn(laid) < 1e-9) {
+      ++tangent;
+      for (const std::size_t k : t.spans) {
+        ASSERT_TRUE(laid.pieces[k].catenary) << what;
+        const double c = t.path.pieces[k].length;
+        EXPECT_NEAR(own_extra(t.path, laid, k), e * c / t.chords, 1e-9 * c) << what;
+        expect_tangent_fit(laid, k, t.circles, what + ", span " + std::to_string(k));
+      }
+    } else {
+      ++between;
+    }
+    std::printf("%s: %d links, %s, e %.3f mm, limit %.3f mm\n", what.c_str(), links,
+                largest_joint_turn(laid) < 1e-9 ? "tangent" : "between the tangent points", e * 1e3,
+                most * 1e3);
+  }
+  std::printf("laid tangent %d, between the tangent points %d, not laid %d\n", tangent, between,
+              refused);
+  EXPECT_GT(tangent, 0);
+}
+
+// Two slack spans meeting on one wheel (a V: z 17 at (0, 0) and (0.6, 0) m, z 60 at (0.3, −0.3) m,
+// a back-side wheel z 17 at (0.3, 0) m over the return run): their tangent lays cut that wheel's
+// wrap at both ends, each cut the span's own (the pair's pieces those of each span's lay alone,
+// exactly). Where the two cuts together use the wrap up (each alone fits: e = 0.1 half circle,
+// 103.7° each of a 125.7° wrap; the chain would leave the wheel, hanging as one curve, not
+// modelled) the pair is refused, and a start there is laid between the tangent points as before.
+TEST(DynamicsSlackStart, TwoTangentSpansOnOneWheelCutItsWrapAtBothEnds) {
+  const std::vector<Circle> circles{{0.0, 0.0, pitch_radius(17)},
+                                    {0.3, -0.3, pitch_radius(60)},
+                                    {0.6, 0.0, pitch_radius(17)},
+                                    {0.3, 0.0, pitch_radius(17), true}};
+  const BeltPath path = belt_path(circles, 0);
+  ASSERT_TRUE(path.faults.empty());
+  const std::vector<std::size_t> spans = sagging_spans(path);
+  ASSERT_EQ(spans.size(), 2u);
+  ASSERT_EQ(spans[1], spans[0] + 2);  // the wrap between them: the shared wheel's
+  const std::size_t wrap = spans[0] + 1;
+  double chords = 0.0;
+  for (const std::size_t k : spans) chords += path.pieces[k].length;
+  const double half = (0.5 * kPi - 1.0) * chords;
+  const double small = 0.03 * half;
+  const BeltPath both = tangent_spans(path, spans, small);
+  ASSERT_FALSE(both.pieces.empty());
+  double cuts = 0.0;
+  for (const std::size_t k : spans) {
+    const BeltPath alone = tangent_span(path, k, small * path.pieces[k].length / chords);
+    ASSERT_FALSE(alone.pieces.empty()) << k;
+    EXPECT_EQ(both.pieces[k].hang_a, alone.pieces[k].hang_a) << k;
+    EXPECT_EQ(both.pieces[k].length, alone.pieces[k].length) << k;
+    cuts += path.pieces[wrap].length - alone.pieces[wrap].length;
+    expect_tangent_fit(both, k, circles, "on one wheel, span " + std::to_string(k));
+  }
+  EXPECT_GT(both.pieces[wrap].from, path.pieces[wrap].from);
+  EXPECT_LT(both.pieces[wrap].to, path.pieces[wrap].to);
+  EXPECT_NEAR(path.pieces[wrap].length - both.pieces[wrap].length, cuts, 1e-15);
+  EXPECT_NEAR(both.length, path.length + small, 1e-12);
+  const double more = 0.1 * half;
+  for (const std::size_t k : spans)
+    EXPECT_FALSE(tangent_span(path, k, more * path.pieces[k].length / chords).pieces.empty()) << k;
+  EXPECT_TRUE(tangent_spans(path, spans, more).pieces.empty());
 }
 
 }  // namespace

@@ -149,8 +149,11 @@ double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circ
 /// The largest total extra length [m] the spans `pieces` of the taut `path` can share in
 /// proportion to their lengths (`sag_spans`) with no obstacle (`sag_obstacle`) for any of them,
 /// the other sagging spans included: `sag_limit` for one span; for more, by bisection on the total
-/// to 1e-6 of the spans' length, at most (π/2 − 1) of it (every share a half circle). 0 if none
-/// can sag.
+/// to 1e-6 of the spans' length, as `sag_limit` with every span laid and checked together: up to
+/// (π/2 − 1) of it (every share a half circle) the arcs, beyond it, where the spans hang, the lay a
+/// start lays (`tangent_spans`, else the catenaries between the tangent points; where a wrap of
+/// the tangent lay keeps less than a pitch, both), up to kCatenaryMostExtra of it. 0 if none can
+/// sag.
 double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pieces,
                        const std::vector<Circle>& circles, const std::vector<double>& tip,
                        const std::vector<Guide>& guides, double roller, double pitch);
@@ -294,6 +297,12 @@ inline constexpr double kCatenaryMostExtra = 10.0;
 /// curve cutting into its own wheels.
 BeltPath tangent_span(const BeltPath& path, std::size_t piece, double extra);
 
+/// The path with each span of `pieces` laid tangent to its wheels (`tangent_span`) with its share
+/// of `extra` in proportion to its chord (as `sag_spans` shares it; one span: the whole extra,
+/// exactly), one after another: a wrap between two slack spans is cut at both ends, and refused
+/// where the two cuts use it up. Empty where any span's tangent lay is refused.
+BeltPath tangent_spans(const BeltPath& path, const std::vector<std::size_t>& pieces, double extra);
+
 /// The catenary through two points a horizontal distance h > 0 and a height v apart, of length
 /// `length` (more than the chord): its parameter a [m] (from √(S² − v²) = 2 a sinh(h / 2a), by
 /// bisection on h / 2a) and its lowest point's horizontal distance u [m] from the first point
@@ -310,8 +319,9 @@ PathPoint sag_point(const PathPiece& q, double along);
 /// with its slack span (`slack_span`) sagging by the extra length that closes the loop
 /// (`slack_extra`). `laid` gets that path: the span sagging between its tangent points
 /// (`sag_spans`) where that closes on circular arcs (up to the half circle), but where it would
-/// be a catenary or closes for no e, the one slack span tangent to its wheels (`tangent_span`)
-/// when that closes and is laid (else the lay between the tangent points as it is). Node 0 is at
+/// be a catenary or closes for no e, the slack span tangent to its wheels (`tangent_span`; with
+/// more spans every one so, `tangent_spans`) when that closes and is laid (else the lay between
+/// the tangent points as it is). Node 0 is at
 /// the path's start but where neither closes from there (a node passing a fold of the path): then
 /// at the phase over the first link that closes it at the e where the walk's end jumps over the
 /// closure, or at the longest catenary where the walk still overshoots. Empty placement if N·pitch
@@ -342,7 +352,7 @@ BeltPath sag_spans(const BeltPath& path, const std::vector<std::size_t>& pieces,
 /// it there. INFINITY when the walk overshoots at the most e the spans take, at the longest
 /// catenary at every phase of node 0 the phase search tries (the count needs more), NAN when no e
 /// is found (or N·pitch does not exceed the path's length). Where that lay is a catenary or closes
-/// for no e, for one span the tangent lay's e (`tangent_span`: the path's extra over the taut path)
+/// for no e, the tangent lay's e (`tangent_spans`: the path's extra over the taut path)
 /// when that closes, bisected up to the longest catenary (given also where `place_slack_loop` lays
 /// the other).
 double slack_extra(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,

@@ -817,44 +817,60 @@ double largest_clear_sag(double half, double longest, double scale, Clear clear)
 
 }  // namespace
 
-double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circle>& circles,
-                 const std::vector<double>& tip, const std::vector<Guide>& guides, double roller,
-                 double pitch) {
-  if (piece >= path.pieces.size() || path.pieces[piece].arc) return 0.0;
-  const double c = path.pieces[piece].length;
-  const double half = (0.5 * kPi - 1.0) * c;
+namespace {
+
+// The largest clear extra of the spans `pieces` (their chords `total` long) sharing it in
+// proportion to their chords, each laid as a start lays it (`slack_lay`) and checked against
+// everything, the other sags included (`sag_obstacle`): up to the half circle the arcs between
+// the tangent points (`sag_spans`); beyond it the tangent lay (`tangent_spans`), else, where that
+// is refused, the lay between the tangent points; where the tangent lay keeps less than a pitch
+// (2 asin(p / 2r)) of any wrap, both must be clear (which one a start lays there depends on where
+// its rollers fall: a wheel left with no roller falls back to the other). Within a pitch per span
+// below the half circle a count whose lay between the tangent points would pass it is laid
+// tangent at an e a little below it (level 600 mm, z 17 both, 98 links: 342.414 against the half
+// circle's 342.478 mm; each span's arc meets its wheels at up to 90° there, and a link across
+// such a kink takes up to (√2 − 1) p more of the path than its chord, two kinks a span): there
+// both the arcs and the tangent lay must be clear.
+double spans_limit(const BeltPath& path, const std::vector<std::size_t>& pieces, double total,
+                   const std::vector<Circle>& circles, const std::vector<double>& tip,
+                   const std::vector<Guide>& guides, double roller, double pitch) {
+  const double half = (0.5 * kPi - 1.0) * total;
+  const double band = pitch * static_cast<double>(pieces.size());
   const std::size_t n = path.pieces.size();
-  // whether a wrap of the tangent lay keeps less than a pitch of its wheel (2 asin(p / 2r)): a
-  // start may then find no roller on it and lay the span between the tangent points instead
   auto short_wrap = [&](const PathPiece& w) {
     return !(w.to - w.from >= 2.0 * std::asin(std::min(1.0, 0.5 * pitch / w.radius)));
   };
   auto clear_lay = [&](const BeltPath& laid) {
-    return !laid.pieces.empty() &&
-           sag_obstacle(laid, piece, circles, tip, guides, roller, pitch).empty();
+    if (laid.pieces.empty()) return false;
+    for (const std::size_t k : pieces)
+      if (!sag_obstacle(laid, k, circles, tip, guides, roller, pitch).empty()) return false;
+    return true;
   };
   auto clear = [&](double extra) {
-    // beyond the half circle the lay a start lays (`slack_lay`): tangent to both wheels
-    // (`tangent_span`), else, where that is refused, between the tangent points; where the
-    // tangent lay keeps less than a pitch of a wrap, both must be clear (which one a start lays
-    // there depends on where its rollers fall). Within a pitch below the half circle a count
-    // whose lay between the tangent points would pass it is laid tangent at an e a little below
-    // it (level 600 mm, z 17 both, 98 links: 342.414 against the half circle's 342.478 mm):
-    // there both the arc and the tangent lay must be clear
     const bool below = extra <= half;
-    const BeltPath tangent = extra > half - pitch ? tangent_span(path, piece, extra) : BeltPath{};
+    const BeltPath tangent = extra > half - band ? tangent_spans(path, pieces, extra) : BeltPath{};
     if (below) {
-      if (!clear_lay(sag_span(path, piece, extra))) return false;
+      if (!clear_lay(sag_spans(path, pieces, extra))) return false;
       return tangent.pieces.empty() || clear_lay(tangent);
     }
-    if (tangent.pieces.empty()) return clear_lay(sag_span(path, piece, extra));
+    if (tangent.pieces.empty()) return clear_lay(sag_spans(path, pieces, extra));
     if (!clear_lay(tangent)) return false;
-    return !(short_wrap(tangent.pieces[piece - 1]) ||
-             short_wrap(tangent.pieces[(piece + 1) % n])) ||
-           clear_lay(sag_span(path, piece, extra));
+    bool bare = false;
+    for (const std::size_t k : pieces)
+      bare = bare || short_wrap(tangent.pieces[k - 1]) || short_wrap(tangent.pieces[(k + 1) % n]);
+    return !bare || clear_lay(sag_spans(path, pieces, extra));
   };
   // the arcs up to the half circle, then the catenaries (sag_span refuses beyond the longest)
-  return largest_clear_sag(half, kCatenaryMostExtra * c, c, clear);
+  return largest_clear_sag(half, kCatenaryMostExtra * total, total, clear);
+}
+
+}  // namespace
+
+double sag_limit(const BeltPath& path, std::size_t piece, const std::vector<Circle>& circles,
+                 const std::vector<double>& tip, const std::vector<Guide>& guides, double roller,
+                 double pitch) {
+  if (piece >= path.pieces.size() || path.pieces[piece].arc) return 0.0;
+  return spans_limit(path, {piece}, path.pieces[piece].length, circles, tip, guides, roller, pitch);
 }
 
 double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pieces,
@@ -868,15 +884,7 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
   }
   if (pieces.empty() || !(total > 0.0)) return 0.0;
   // every span laid with its share, each checked against everything, the other sags included
-  auto clear = [&](double extra) {
-    const BeltPath laid = sag_spans(path, pieces, extra);
-    if (laid.pieces.empty()) return false;
-    for (const std::size_t k : pieces)
-      if (!sag_obstacle(laid, k, circles, tip, guides, roller, pitch).empty()) return false;
-    return true;
-  };
-  // every share reaches its half circle together: (π/2 − 1) of the total; then the catenaries
-  return largest_clear_sag((0.5 * kPi - 1.0) * total, kCatenaryMostExtra * total, total, clear);
+  return spans_limit(path, pieces, total, circles, tip, guides, roller, pitch);
 }
 
 namespace {
@@ -1572,6 +1580,28 @@ BeltPath tangent_span(const BeltPath& path, std::size_t piece, double extra) {
   return with_starts(std::move(out));
 }
 
+BeltPath tangent_spans(const BeltPath& path, const std::vector<std::size_t>& pieces, double extra) {
+  if (pieces.size() == 1) return tangent_span(path, pieces[0], extra);
+  double total = 0.0;
+  for (const std::size_t k : pieces) {
+    if (k >= path.pieces.size() || path.pieces[k].arc) return BeltPath{};
+    total += path.pieces[k].length;
+  }
+  BeltPath out = path;
+  if (pieces.empty() || !(total > 0.0)) {
+    out.pieces.clear();
+    return out;
+  }
+  // each span's tangent lay depends on its two wheels and its own share alone; laid one after
+  // another, a wrap between two slack spans is cut at both ends, the second cut checked against
+  // what the first left of it (`tangent_span`: a wrap used up is refused)
+  for (const std::size_t k : pieces) {
+    out = tangent_span(out, k, extra * path.pieces[k].length / total);
+    if (out.pieces.empty()) return out;
+  }
+  return out;
+}
+
 namespace {
 
 // The slack solve's answer: the extra length e and the arc length of node 0 (0 but where the
@@ -1713,20 +1743,24 @@ SlackSolve chord_end_solve(const BeltPath& path, const std::vector<std::size_t>&
   return {};
 }
 
-// The extra e at which N nodes walked at chord `pitch` close the loop on the path with span
-// `piece` laid tangent to both its wheels (`tangent_span`): bisection between N p less the
+// The extra e at which N nodes walked at chord `pitch` close the loop on the path with the spans
+// `pieces` laid tangent to their wheels (`tangent_spans`): bisection between N p less the
 // path's length (the miss not negative: a chord spans at least its pitch of the path) and the
 // longest e the tangent lay takes (below), bisected to the last bit and taken when the least miss
 // is within 1e-11 of N p; NAN when not found.
-SlackSolve tangent_solve(const BeltPath& path, std::size_t piece, int nodes, double pitch) {
-  if (piece >= path.pieces.size()) return {};
+SlackSolve tangent_solve(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
+                         double pitch) {
+  double spans = 0.0;
+  for (const std::size_t k : pieces) {
+    if (k >= path.pieces.size()) return {};
+    spans += path.pieces[k].length;
+  }
   const double chain = nodes * pitch;
   auto miss = [&](double extra) {
-    const BeltPath p = tangent_span(path, piece, extra);
+    const BeltPath p = tangent_spans(path, pieces, extra);
     return p.pieces.empty() ? NAN : walk_miss(p, pitch, nodes, 0.0);
   };
-  double lo = chain - path.length,
-         hi = kCatenaryMostExtra * path.pieces[piece].length * (1.0 - 1e-9);
+  double lo = chain - path.length, hi = kCatenaryMostExtra * spans * (1.0 - 1e-9);
   if (!(lo > 0.0 && lo < hi) || !(miss(lo) >= 0.0)) return {};
   // the bracket's upper end: the longest catenary's e where the tangent lay takes it, else (it
   // leaves a wheel more curved than the wheel, or uses a wrap up, short of it: z 11 and 41 at
@@ -1764,8 +1798,8 @@ SlackSolve tangent_solve(const BeltPath& path, std::size_t piece, int nodes, dou
 }
 
 // The slack solve: between the tangent points (`chord_end_solve`) where that closes on a
-// circular arc (up to the half circle: every start laid so before is laid the same), else, for
-// one span, tangent to its wheels (`tangent_solve`: a hanging chain meets its wheels
+// circular arc (up to the half circle: every start laid so before is laid the same), else every
+// span tangent to its wheels (`tangent_solve`: a hanging chain meets its wheels
 // tangentially, its rest shape) where that closes, else the answer between the tangent points as
 // it is (a catenary, across a fold or at node 0's phase, or refused). `between`, when given, gets
 // the answer between the tangent points.
@@ -1773,12 +1807,13 @@ SlackSolve slack_solve(const BeltPath& path, const std::vector<std::size_t>& pie
                        double pitch, SlackSolve* between = nullptr) {
   const SlackSolve chord = chord_end_solve(path, pieces, nodes, pitch);
   if (between != nullptr) *between = chord;
-  if (pieces.size() != 1 || path.pieces.empty()) return chord;
+  if (pieces.empty() || path.pieces.empty()) return chord;
   if (std::isfinite(chord.extra) && chord.start == 0.0) {
+    // (the shares in proportion to the chords: every span passes its half circle at one e)
     const BeltPath arc = sag_spans(path, pieces, chord.extra);
     if (!arc.pieces.empty() && !arc.pieces[pieces[0]].catenary) return chord;
   }
-  const SlackSolve tangent = tangent_solve(path, pieces[0], nodes, pitch);
+  const SlackSolve tangent = tangent_solve(path, pieces, nodes, pitch);
   return std::isfinite(tangent.extra) ? tangent : chord;
 }
 
@@ -1817,7 +1852,7 @@ SlackLay slack_lay(const BeltPath& path, const std::vector<Circle>& circles,
   laid = BeltPath{};
   if (!std::isfinite(solved.extra)) return {};
   if (solved.tangent) {
-    const BeltPath sagging = tangent_span(path, pieces[0], solved.extra);
+    const BeltPath sagging = tangent_spans(path, pieces, solved.extra);
     LoopPlacement out = lay_slack_loop(sagging, circles, teeth, nodes, pitch, solved.start);
     if (!out.s.empty()) {
       laid = sagging;
