@@ -17,8 +17,9 @@
 // The elastic four-bar (`closure` with the span's compliance; the doc's "The elastic four-bar"):
 // the span's length follows its tension's once-per-tooth swing, T from the driven wheel's torque
 // balance, C from the span's links and the two seat contacts in series; checked against its own
-// limits (infinitely stiff: the rigid four-bar; a static stretch in closed form) and its
-// compliance against the model's, measured statically.
+// limits (infinitely stiff: the rigid four-bar; a static stretch in closed form; the arms against
+// the rigid kinematics), its compliance and its tension's swing over a tooth against the model's,
+// measured statically.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -89,6 +90,31 @@ Tangent upper_tangent(const Polygons& g, double t1, double t2) {
   return {};
 }
 
+// Wheel w's vertex nearest its bottom at θ, its index on the wrap's side of the span's (the index
+// falls towards the span on both wheels: on the driver the bottom is at 3π/2 − θ above the top,
+// on the driven wheel at π/2 + θ below; at a tie, an odd wheel with a vertex at the top, the
+// rounding takes the vertex past the bottom along the wrap from the span), and the arm
+// (C_w − A) × û of wheel w's centre C_w about the line through A along the unit û: the centre's
+// distance below the line.
+int lowest_vertex(const Polygons& g, int wheel, double theta) {
+  const int z = wheel == 0 ? g.z1 : g.z2;
+  const double bottom = wheel == 0 ? 1.5 * kPi : -0.5 * kPi;
+  return static_cast<int>(std::lround((bottom - theta) * z / (2 * kPi)));
+}
+double arm(const Polygons& g, int wheel, std::array<double, 2> a, double ux, double uy) {
+  return ux * a[1] + uy * ((wheel == 0 ? 0.0 : g.c) - a[0]);
+}
+
+// The span's tension T at (θ1, θ2) from the driven wheel's quasi-static torque balance (`closure`
+// below): T d2 − T2 d2s = (T1 − T2) R2, d2 the arm of the driven centre about the line AB, d2s the
+// depth of its lowest vertex, where the slack tail leaves along −x; t the upper tangent there.
+double span_tension(const Polygons& g, double t1, double t2, const Tangent& t) {
+  const auto a = vertex(g, 0, t1, t.i), b = vertex(g, 1, t2, t.j);
+  const double d2 = arm(g, 1, a, (b[0] - a[0]) / t.length, (b[1] - a[1]) / t.length);
+  const double low = -vertex(g, 1, t2, lowest_vertex(g, 1, t2))[1];  // d2s
+  return ((g.tight - g.slack) * g.r2 + g.slack * low) / d2;
+}
+
 // The four-bar's closure f = |AB| − play − n p (the rollers' centres on the line AB, the end
 // rollers `play` in from their seats' centres together). A seated roller keeps its vertex, so the
 // span's link count is n = i − j + k, k fixed by the start (on both wheels the vertex index falls
@@ -103,26 +129,23 @@ Tangent upper_tangent(const Polygons& g, double t1, double t2) {
 // C = n̄/k + 2/k_c, with n̄ the tangent's length in pitches — the span's mean link count, held
 // through the tooth: with n itself f would jump by (T − T1)/k at every seat switch, where the link
 // that seats or leaves still carries most of the span's tension (the model's static compliance
-// is 6–12 % over C: `ModelStaticStretchIsTheSpansCompliance`). T is the driven wheel's torque
-// balance, quasi-static: the span pulls B along the line AB at the arm d2, the driven centre's
-// distance below the line; the slack tail, pulled along −x at T2 from the wheel's lowest vertex,
-// at the arm d2s, that vertex's depth below the centre; the load is (T1 − T2) R2, so
-// T d2 − T2 d2s = (T1 − T2) R2. T swings once a tooth by about (T1 + T2)(1 − cos(π/z2)) (T1 R2/d2,
-// and at odd z2 the tail's arm in the opposite phase). Left out: the inertia torque J_eff θ̈2
-// (0.5–1.2 % of the swing in the cases here) and so the wheel's torsional ring. C → 0 is the
-// rigid four-bar; C T1 ≪ p keeps f monotone in θ2.
+// is 5–12 % over C: `ModelStaticStretchIsTheSpansCompliance`). T is the driven wheel's torque
+// balance, quasi-static (`span_tension`): the span pulls B along the line AB at the arm d2, the
+// driven centre's distance below the line; the slack tail, pulled along −x at T2 from the wheel's
+// lowest vertex, at the arm d2s, that vertex's depth below the centre; the load is (T1 − T2) R2,
+// so T d2 − T2 d2s = (T1 − T2) R2. With equal wheels and a level span T swings once a tooth by
+// about (T1 + T2)(1 − cos(π/z2)) (T1 R2/d2, and at odd z2 the tail's arm in the opposite phase);
+// where the span tilts, the tilt shifts the tail's phase against the T1 term's (12/25 at 20.5
+// pitches at 0.05 m/s: the tail takes 24 % off the swing; 25/12, 2–4 %). The tail's term is not
+// confirmed by the model (`ModelStaticSwingFollowsTheTensionLaw`: without it the static swing's
+// ratio is 1.31 at 485.5 N and 0.97 at 121.4 N, with it 1.19 and 0.69; the shape at 121.4 N is
+// off either way). Left out: the inertia torque J_eff θ̈2 (0.5–1.2 % of the swing in the cases
+// here) and so the wheel's torsional ring. C → 0 is the rigid four-bar; C T1 ≪ p keeps f
+// monotone in θ2.
 double closure(const Polygons& g, double t1, double t2, int k) {
   const Tangent t = upper_tangent(g, t1, t2);
-  double stretch = 0.0;
-  if (g.compliance > 0) {
-    const auto a = vertex(g, 0, t1, t.i), b = vertex(g, 1, t2, t.j);
-    const double ux = (b[0] - a[0]) / t.length, uy = (b[1] - a[1]) / t.length;
-    const double arm = ux * a[1] + uy * (g.c - a[0]);  // d2: (C2 − A) × û
-    double low = 0.0;                                  // d2s / R2
-    for (int j = 0; j < g.z2; ++j) low = std::max(low, -std::sin(t2 + 2 * kPi * j / g.z2));
-    const double tension = ((g.tight - g.slack) * g.r2 + g.slack * g.r2 * low) / arm;
-    stretch = g.compliance * (tension - g.tight);
-  }
+  const double stretch =
+      g.compliance > 0 ? g.compliance * (span_tension(g, t1, t2, t) - g.tight) : 0;
   return t.length - g.play - (t.i - t.j + k) * g.p - stretch;
 }
 
@@ -238,6 +261,26 @@ FarWheel tight_off_harmonics(FarWheel d) {
   return d;
 }
 
+// The set-up of a drive (z1/z2, the centre distance [pitches], the chain's speed [m/s]) with T1 by
+// the rule above, its polygons with the seat play and the link count k at the start
+struct Drive {
+  FarWheel d;
+  Polygons g;
+  int k = 0;
+};
+Drive set_up(int z1, int z2, double centre, double speed) {
+  Drive out;
+  out.d.driver_teeth = z1;
+  out.d.driven_teeth = z2;
+  out.d.centre = centre;
+  out.d.chain_speed = speed;
+  out.d = tight_off_harmonics(out.d);
+  out.g = polygons(out.d);
+  out.g.play = seat_play(out.d);
+  out.k = count_constant(out.g);
+  return out;
+}
+
 // The model: the two ISO 606 wheels (clearance seats with μ, contacts as in the drive's
 // validation), the driver at constant ω1, the driven wheel with inertia and a load torque. The
 // chain is open: the slack span is cut and its two ends pulled apart at T2 (Model::loads) — a
@@ -247,17 +290,19 @@ FarWheel tight_off_harmonics(FarWheel d) {
 // bottom and a straight tail on from there. `run` returns the driver's tooth phase and ω2/ω1 at
 // every step after the settling time (chordal::Result's phase and span). `lay` builds the model and
 // its start, with the nodes of the span's end rollers A (on the driver) and B (on the driven
-// wheel); the chain's tails are long enough for `duration`.
+// wheel); the chain's tails are long enough for `duration`; `phase` [teeth] lays it that far on
+// (θ1 = π/2 + phase 2π/z1; the static scans).
 struct Laid {
   Model model;
   State state;
   std::size_t a = 0, b = 0;
 };
-Laid lay(const FarWheel& d, int k, double duration) {
+Laid lay(const FarWheel& d, int k, double duration, double phase = 0.0) {
   const Polygons g = polygons(d);
   const double omega1 = d.chain_speed / g.r1, v = d.chain_speed;
   const double rest = d.pitch - d.tight / d.stiffness;  // the tight span's links at p
-  const double t1 = kPi / 2, t2 = driven_angle(g, t1, k, kPi / 2);
+  const double t1 = kPi / 2 + phase * 2 * kPi / d.driver_teeth;
+  const double t2 = driven_angle(g, t1, k, kPi / 2 + phase * 2 * kPi / d.driven_teeth);
   const double h = 1e-6;  // the driven wheel's start speed: the reference's ratio there
   const double omega2 = omega1 * (driven_angle(g, t1 + h, k, t2) - t2) / h;
   const Tangent tan = upper_tangent(g, t1, t2);
@@ -269,7 +314,7 @@ Laid lay(const FarWheel& d, int k, double duration) {
     const double cx = wheel == 0 ? 0.0 : g.c;
     return std::array<double, 4>{q[0], q[1], -omega * q[1], omega * (q[0] - cx)};
   };
-  const int bottom1 = static_cast<int>(std::lround((1.5 * kPi - t1) * g.z1 / (2 * kPi)));
+  const int bottom1 = lowest_vertex(g, 0, t1);
   const auto b1 = vertex(g, 0, t1, bottom1);
   for (int q = 3; q >= 1; --q) nodes.push_back({b1[0] + q * rest, b1[1], v, 0.0});
   for (int i = bottom1; i >= tan.i; --i) nodes.push_back(seated(0, t1, omega1, i));
@@ -283,7 +328,7 @@ Laid lay(const FarWheel& d, int k, double duration) {
     for (int c = 0; c < 4; ++c) p[c] = a[c] + s * (b[c] - a[c]);
     nodes.push_back(p);
   }
-  const int bottom2 = static_cast<int>(std::lround((-0.5 * kPi - t2) * g.z2 / (2 * kPi)));
+  const int bottom2 = lowest_vertex(g, 1, t2);
   for (int j = tan.j; j >= bottom2; --j) nodes.push_back(seated(1, t2, omega2, j));
   const auto b2 = vertex(g, 1, t2, bottom2);
   for (int q = 1; q <= tail; ++q) nodes.push_back({b2[0] - q * rest, b2[1], v, 0.0});
@@ -398,10 +443,11 @@ TEST(DynamicsChordalDrive, FourBarReferenceHasTheKnownLimits) {
 // 2 % and every bin within 5 % of its range (max − min) — the profile's shape and phase; at the
 // integer span of equal wheels the driven wheel's variation under a tenth of the half-integer
 // span's, sin²(π/z). Three known misses are asserted as such (sign and size; `miss`, the largest
-// excess allowed): 17/17 at 20.75 pitches is over the four-bar by up to 2.1 %, 12/25 at 20.5 by
-// up to 2.3 %, and 9/9 at 20.5 rings at 80 bins (7.5 % over). What would fail: the single wheel's
-// form (the level span's, binned; 1 − cos(π/z) unbinned) and the four-bar half a tooth off — each
-// checked below to lie outside the tolerance it replaces.
+// excess allowed): 17/17 at 20.75 pitches is over the four-bar by up to 2.1 % (against the elastic
+// four-bar within 2 %: `DrivenSpeedFollowsTheElasticFourBar`), 12/25 at 20.5 by up to 2.3 %, and
+// 9/9 at 20.5 rings at 80 bins (7.5 % over). What would fail: the single wheel's form (the level
+// span's, binned; 1 − cos(π/z) unbinned) and the four-bar half a tooth off — each checked below
+// to lie outside the tolerance it replaces.
 TEST(DynamicsChordalDrive, DrivenSpeedFollowsTheFourBar) {
   constexpr double kTol = 0.02, kShape = 0.05, kParallel = 0.1;
   struct Case {
@@ -417,17 +463,10 @@ TEST(DynamicsChordalDrive, DrivenSpeedFollowsTheFourBar) {
       {17, 17, 20.0},          {17, 17, 20.25},       {17, 17, 20.5},       {12, 25, 20.0},
       {25, 12, 20.0, 0.0, 40}, {17, 17, 20.75, 0.04}, {12, 25, 20.5, 0.04}, {9, 9, 20.5, 0.1}};
   for (const Case c : cases) {
-    FarWheel d;
-    d.driver_teeth = c.z1;
-    d.driven_teeth = c.z2;
-    d.centre = c.centre;
-    d = tight_off_harmonics(d);
+    const auto [d, g, k] = set_up(c.z1, c.z2, c.centre, FarWheel{}.chain_speed);
     // the rule gives T1 ∝ v²: at a lower speed the "tight" span would be slacker than the cut
     // slack side
     ASSERT_GT(d.tight, d.slack) << "T1 under T2 at " << d.chain_speed << " m/s";
-    Polygons g = polygons(d);
-    g.play = seat_play(d);
-    const int k = count_constant(g);
     const chordal::Result r = run(d, k);
     ASSERT_TRUE(r.converged) << c.z1 << "/" << c.z2 << " at " << c.centre;
     const double half = std::pow(std::sin(kPi / c.z1), 2);
@@ -482,15 +521,7 @@ TEST(DynamicsChordalDrive, DrivenSpeedFollowsTheFourBar) {
 TEST(DynamicsChordalDrive, ElasticFourBarHasItsLimits) {
   for (const auto& [z1, z2, centre] : std::vector<std::tuple<int, int, double>>{
            {17, 17, 20.25}, {17, 17, 20.75}, {12, 25, 20.5}, {25, 12, 20.0}}) {
-    FarWheel d;
-    d.driver_teeth = z1;
-    d.driven_teeth = z2;
-    d.centre = centre;
-    d.chain_speed = 0.1;
-    d = tight_off_harmonics(d);
-    Polygons g = polygons(d);
-    g.play = seat_play(d);
-    const int k = count_constant(g);
+    auto [d, g, k] = set_up(z1, z2, centre, 0.1);
     // infinitely stiff: the rigid four-bar
     d.stiffness = d.contact = 1e18;
     const std::vector<double> rigid = kinematic_ratio(g, k, 40);
@@ -506,10 +537,13 @@ TEST(DynamicsChordalDrive, ElasticFourBarHasItsLimits) {
   }
   // The static stretch in closed form: equal wheels at an integer span, A on the driver's top
   // vertex (θ1 = π/2). With B on the driven wheel's top vertex the span is level and n p = C long;
-  // turned by δ, |AB| = C − R δ + O(δ²) and the arm d2 = R + O(δ); the lowest vertex of an odd
-  // wheel lies half a tooth off the bottom, d2s = R cos(π/z), so T = T1 − T2 (1 − cos(π/z)) and
-  // the closure gives δ = −C_s (T − T1)/R = C_s T2 (1 − cos(π/z))/R, C_s = n/k + 2/k_c: the span
-  // shorter than n p, the driven wheel ahead of the rigid four-bar's π/2.
+  // turned by δ, |AB| = C − R δ + O(δ²) and the arm d2 = R + O(δ²); the lowest vertex of an odd
+  // wheel lies half a tooth off the bottom, turned by δ towards it: d2s = R cos(π/z − δ) =
+  // R (cos(π/z) + δ sin(π/z)) + O(δ²), so T − T1 = −T2 (1 − cos(π/z)) + T2 δ sin(π/z), and the
+  // closure R δ = −C_s (T − T1) gives δ = C_s T2 (1 − cos(π/z)) / (R + C_s T2 sin(π/z)),
+  // C_s = n/k + 2/k_c: the span shorter than n p, the driven wheel ahead of the rigid four-bar's
+  // π/2 (the reference within 1.4e-7 of it at z = 9, 1e-8 at 17 and 25: the O(δ²) terms). At this
+  // lay d2 = R: the tension's main term T1 R2/d2 does not enter; the identity below checks d2.
   for (int z : {9, 17, 25}) {
     FarWheel d;
     d.driver_teeth = d.driven_teeth = z;
@@ -518,63 +552,176 @@ TEST(DynamicsChordalDrive, ElasticFourBarHasItsLimits) {
     const int k = count_constant(g);
     const Tangent t = upper_tangent(g, kPi / 2, kPi / 2);
     ASSERT_EQ(t.i - t.j + k, 20) << "z " << z;
-    const double cs = 20 / d.stiffness + 2 / d.contact;
-    const double delta = cs * d.slack * (1 - std::cos(kPi / z)) / g.r2;
+    const double cs = 20 / d.stiffness + 2 / d.contact, swing = cs * d.slack;
+    const double delta = swing * (1 - std::cos(kPi / z)) / (g.r2 + swing * std::sin(kPi / z));
     const double got = driven_angle(g, kPi / 2, k, kPi / 2) - kPi / 2;
-    std::printf("z %d: static turn %.6e rad, closed form %.6e\n", z, got, delta);
-    EXPECT_NEAR(got / delta, 1.0, 1e-3) << "z " << z;
+    std::printf("z %d: static turn %.9e rad, closed form %.9e\n", z, got, delta);
+    EXPECT_NEAR(got / delta, 1.0, 1e-6) << "z " << z;
+  }
+  // The arms d1, d2 (`arm`, the one `span_tension` takes d2 from) against the rigid four-bar's
+  // kinematics: the bar AB keeps its length, so A's and B's velocities have equal components along
+  // it, ω1 d1 = ω2 d2, and ω2/ω1 = d1/d2 — between seat switches, with the span tilted (unequal
+  // wheels; equal ones off the parallelogram). ω2/ω1 by central differences of the closure's θ2
+  // (h = 1e-6 rad: 1e-8 of the ratio from the bisection's 1e-14 rad).
+  for (const auto& [z1, z2, centre] : std::vector<std::tuple<int, int, double>>{
+           {17, 17, 20.25}, {17, 17, 20.75}, {12, 25, 20.5}, {25, 12, 20.0}}) {
+    const auto [d, g, k] = set_up(z1, z2, centre, 0.1);
+    const double h = 1e-6, tooth = 2 * kPi / z1;
+    int checked = 0;
+    double guess = kPi / 2;
+    for (int q = 0; q < 8; ++q) {
+      const double t1 = kPi / 2 + (q + 0.37) / 8 * tooth;
+      const double t2 = driven_angle(g, t1, k, guess);
+      guess = t2;
+      const Tangent t = upper_tangent(g, t1, t2);
+      const double lo = driven_angle(g, t1 - h, k, t2), hi = driven_angle(g, t1 + h, k, t2);
+      const Tangent tl = upper_tangent(g, t1 - h, lo), th = upper_tangent(g, t1 + h, hi);
+      if (tl.i != t.i || th.i != t.i || tl.j != t.j || th.j != t.j) continue;  // a seat switch
+      const auto a = vertex(g, 0, t1, t.i), b = vertex(g, 1, t2, t.j);
+      const double ux = (b[0] - a[0]) / t.length, uy = (b[1] - a[1]) / t.length;
+      const double ratio = (hi - lo) / (2 * h), arms = arm(g, 0, a, ux, uy) / arm(g, 1, a, ux, uy);
+      EXPECT_NEAR(ratio / arms, 1.0, 1e-6)
+          << z1 << "/" << z2 << " at " << centre << " p, phase " << (q + 0.37) / 8;
+      ++checked;
+    }
+    EXPECT_GE(checked, 6) << z1 << "/" << z2 << " at " << centre << " p";
   }
 }
 
-// The model's own end-to-end compliance, measured statically: the driver held (ω1 = 0), the driven
-// wheel's load torque stepped from (T1 − T2) R2 to (T1 + 10 N − T2) R2, each run 0.4 s from the
-// lay (A on the driver's top vertex; the closure moves by under 1 % of the step's stretch from
-// 0.4 to 1.2 s); the stretch is the rigid four-bar's closure f = |AB| − play − n p at the settled
-// θ2 (the span's length beyond the rigid one's, its ends included). At the two tensions the
-// comparisons run at (the rule's T1 at 0.05 and 0.1 m/s, 17/17 at 20.75 pitches, n = 21 links at
-// the lay): the span's own links stretch as n/k; the whole is over the reference's compliance
-// C = n̄/k + 2/k_c (`elastic`, n̄ = 20.75) by 6–10 % (4.50e-7 and 4.65e-7 m/N against 4.25e-7;
-// 4.47–4.76e-7 over the tooth's phases, probed), and the two ends, the whole less the links,
-// take more than their contacts' 2/k_c (their wrap links share the step: 2.8e-8 and 4.4e-8 m/N
-// against 1e-8) — the parts the reference leaves out, within 15 % of it.
+// The model held still: laid at `phase` of a tooth (`lay`), the driver held (ω1 = 0), the driven
+// wheel's load torque (T1 + extra − T2) R2, at rest from the lay and run 0.4 s (4000 steps); the
+// settled angles, the span's links' total length and their count n at the lay.
+struct Settled {
+  double t1 = NAN, t2 = NAN, links = 0.0;
+  std::size_t n = 0;
+};
+Settled settle_held(const FarWheel& d, int k, double phase, double extra) {
+  Laid l = lay(d, k, 0.1, phase);
+  l.model.sprockets[0].speed = 0.0;
+  l.model.sprockets[1].load_torque = (d.tight + extra - d.slack) * polygons(d).r2;
+  std::fill(l.state.vx.begin(), l.state.vx.end(), 0.0);
+  std::fill(l.state.vy.begin(), l.state.vy.end(), 0.0);
+  l.state.speed = {0.0, 0.0};
+  Integrator integ(l.model, {.step = d.step, .theta = 0.6});
+  Settled out;
+  for (int s = 0; s < 4000; ++s) {
+    if (!integ.step(l.model, l.state).converged) {
+      ADD_FAILURE() << "step " << s << " did not converge at phase " << phase;
+      return out;
+    }
+  }
+  out.t1 = l.state.angle[0];
+  out.t2 = l.state.angle[1];
+  out.n = l.b - l.a;
+  for (std::size_t i = l.a; i < l.b; ++i) {
+    out.links += std::hypot(l.state.x[i + 1] - l.state.x[i], l.state.y[i + 1] - l.state.y[i]);
+  }
+  return out;
+}
+
+// The model's own end-to-end compliance, measured statically (`settle_held`): the load torque
+// stepped from (T1 − T2) R2 to (T1 + 10 N − T2) R2, A on the driver's top vertex (the closure
+// moves by under 1 % of the step's stretch from 0.4 to 1.2 s); the stretch is the rigid four-bar's
+// closure f = |AB| − play − n p at the settled θ2 (the span's length beyond the rigid one's, its
+// ends included), over the span's tension step, 10 N R2/d2 = 10.044 N by the reference's torque
+// balance at the settled angles (`span_tension`). At the two tensions the comparisons run at (the
+// rule's T1 at 0.05 and 0.1 m/s, 17/17 at 20.75 pitches, n = 21 links at the lay): the span's own
+// links stretch as n/k (0.9975 and 1.0001 of it, asserted within 0.35 %: 0.10 % to spare at
+// 121.4 N; over 10 N instead of the tension step they are 1.0045 at 485.5 N, which fails); the
+// whole is over the reference's compliance C = n̄/k + 2/k_c (`elastic`, n̄ = 20.75) by 5–9 %
+// (4.48e-7 and 4.63e-7 m/N against 4.25e-7; 4.47–4.76e-7 over the tooth's phases, probed over
+// 10 N, so 5–12 %), and the two ends, the whole less the links, take more than their contacts'
+// 2/k_c (their wrap links share the step: 2.8e-8 and 4.4e-8 m/N against 1e-8) — the parts the
+// reference leaves out, within 15 % of it.
 TEST(DynamicsChordalDrive, ModelStaticStretchIsTheSpansCompliance) {
   for (double speed : {0.05, 0.1}) {
-    FarWheel d;
-    d.centre = 20.75;
-    d.chain_speed = speed;
-    d = tight_off_harmonics(d);
-    Polygons g = polygons(d);
-    g.play = seat_play(d);
-    const int k = count_constant(g);
-    std::array<double, 2> stretch{}, links{};
-    std::size_t n = 0;
-    for (int q = 0; q < 2; ++q) {
-      Laid l = lay(d, k, 0.1);
-      n = l.b - l.a;
-      l.model.sprockets[0].speed = 0.0;
-      l.model.sprockets[1].load_torque = (d.tight + 10.0 * q - d.slack) * g.r2;
-      std::fill(l.state.vx.begin(), l.state.vx.end(), 0.0);
-      std::fill(l.state.vy.begin(), l.state.vy.end(), 0.0);
-      l.state.speed = {0.0, 0.0};
-      Integrator integ(l.model, {.step = d.step, .theta = 0.6});
-      for (int s = 0; s < 4000; ++s) ASSERT_TRUE(integ.step(l.model, l.state).converged);
-      stretch[q] = closure(g, l.state.angle[0], l.state.angle[1], k);
-      for (std::size_t i = l.a; i < l.b; ++i) {
-        links[q] += std::hypot(l.state.x[i + 1] - l.state.x[i], l.state.y[i + 1] - l.state.y[i]);
-      }
-    }
-    const double model = (stretch[1] - stretch[0]) / 10.0, span = (links[1] - links[0]) / 10.0;
-    const double links_only = static_cast<double>(n) / d.stiffness;
+    const auto [d, g, k] = set_up(17, 17, 20.75, speed);
+    const Settled low = settle_held(d, k, 0.0, 0.0), high = settle_held(d, k, 0.0, 10.0);
+    // the span's tension step: the load's 10 N R2 over the arm d2 at the settled angles
+    Polygons ge = elastic(d, g);
+    const Tangent t = upper_tangent(ge, high.t1, high.t2);
+    const double before = span_tension(ge, high.t1, high.t2, t);
+    ge.tight += 10.0;
+    const double step = span_tension(ge, high.t1, high.t2, t) - before;
+    const double model = (closure(g, high.t1, high.t2, k) - closure(g, low.t1, low.t2, k)) / step;
+    const double span = (high.links - low.links) / step;
+    const double links_only = static_cast<double>(high.n) / d.stiffness;
     const double reference = elastic(d, g).compliance;
     std::printf(
-        "T1 %.1f N, n %zu: the model's compliance %.4e m/N (its span's links %.4e, n/k "
-        "%.4e; the ends %.4e, 2/k_c %.4e), the reference's %.4e: %.4f\n",
-        d.tight, n, model, span, links_only, model - span, 2 / d.contact, reference,
+        "T1 %.1f N, n %zu, tension step %.4f N: the model's compliance %.4e m/N (its span's links "
+        "%.4e, n/k %.4e; the ends %.4e, 2/k_c %.4e), the reference's %.4e: %.4f\n",
+        d.tight, high.n, step, model, span, links_only, model - span, 2 / d.contact, reference,
         model / reference);
-    EXPECT_NEAR(span / links_only, 1.0, 0.02) << speed;
+    EXPECT_NEAR(span / links_only, 1.0, 0.0035) << speed;
     EXPECT_GT(model - span, 2 / d.contact) << speed;
     EXPECT_GT(model / reference, 1.0) << speed;
     EXPECT_LT(model / reference, 1.15) << speed;
+  }
+}
+
+// The tension law against the model: the static stretch over a driver's tooth. 17/17 at 20.75
+// pitches laid at 20 phases of the tooth, the driver held and the load (T1 − T2) R2 fixed
+// (`settle_held`); the model's stretch is the rigid four-bar's closure f = |AB| − play − n p at the
+// settled angles, the reference's C (T − T1) at the same angles (`span_tension`, `elastic`).
+// Compared over the tooth, each less its mean (the model's mean holds the ends' static stretch
+// under T1, which the reference leaves out): the ratio of their peak-to-peak swings and the shape,
+// the largest difference from the reference scaled by that ratio, as a fraction of the model's
+// swing; and the phases of the extremes. At 485.5 N (the rule's T1 at 0.1 m/s) the model swings
+// 1.191 times the reference's 3.88 µm, in the same shape (0.076 of the swing) with its extremes
+// at the same phases (0.25 and 0.75 of the tooth): asserted within 1.19 ± 0.05, 0.1 and one phase
+// (without the tail's term, the probes' T1 R2/d2, the reference swings 3.53 µm and the ratio is
+// 1.31; with C × 1.5, 0.79; with the sign of d2's tilt term flipped, 0.57). The band is the
+// measured ratio's, not a derived one. The 1.19 is measured, not derived: the reference leaves out
+// what makes the model's static swing 19 % larger. At 121.4 N (0.05 m/s) it is a known miss,
+// asserted as such: the model swings 0.690 times the reference's 1.24 µm, its shape 0.40 of the
+// swing off and its minimum at half the tooth against the reference's quarter (not resolved; when
+// it fits, it belongs with 485.5 N).
+TEST(DynamicsChordalDrive, ModelStaticSwingFollowsTheTensionLaw) {
+  constexpr int kPhases = 20;
+  for (double speed : {0.05, 0.1}) {
+    const auto [d, g, k] = set_up(17, 17, 20.75, speed);
+    const Polygons ge = elastic(d, g);
+    std::vector<double> model, reference;
+    for (int q = 0; q < kPhases; ++q) {
+      const Settled s = settle_held(d, k, static_cast<double>(q) / kPhases, 0.0);
+      model.push_back(closure(g, s.t1, s.t2, k));
+      reference.push_back(ge.compliance *
+                          (span_tension(ge, s.t1, s.t2, upper_tangent(ge, s.t1, s.t2)) - d.tight));
+    }
+    auto centred = [](std::vector<double> v) {
+      double mean = 0.0;
+      for (const double x : v) mean += x / static_cast<double>(v.size());
+      for (double& x : v) x -= mean;
+      return v;
+    };
+    auto swing = [](const std::vector<double>& v) {
+      return *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
+    };
+    const std::vector<double> m = centred(model), r = centred(reference);
+    const double ratio = swing(m) / swing(r);
+    std::vector<double> scaled;
+    for (const double x : r) scaled.push_back(ratio * x);
+    const double shape = largest_difference(m, scaled) / swing(m);
+    std::printf(
+        "T1 %.1f N: the model's static swing %.3f um, the reference's %.3f um: %.3f; shape "
+        "%.3f of the swing\n",
+        d.tight, 1e6 * swing(m), 1e6 * swing(r), ratio, shape);
+    for (int q = 0; q < kPhases; ++q) std::printf("  %2d %+.4f %+.4f\n", q, 1e6 * m[q], 1e6 * r[q]);
+    auto at = [](const std::vector<double>& v, bool largest) {
+      const auto e =
+          largest ? std::max_element(v.begin(), v.end()) : std::min_element(v.begin(), v.end());
+      return static_cast<int>(e - v.begin());
+    };
+    const int off =
+        std::max(std::abs(at(m, true) - at(r, true)), std::abs(at(m, false) - at(r, false)));
+    if (speed == 0.1) {
+      EXPECT_NEAR(ratio, 1.19, 0.05);
+      EXPECT_LT(shape, 0.1);
+      EXPECT_LE(off, 1) << "phases apart (of " << kPhases << ")";
+    } else {  // the known miss
+      EXPECT_LT(ratio, 0.85);
+      EXPECT_GT(shape, 0.2);
+    }
   }
 }
 
@@ -585,9 +732,19 @@ TEST(DynamicsChordalDrive, ModelStaticStretchIsTheSpansCompliance) {
 // range, 17/17's 80-bin ones from 2.3 and 3.9 to 4.4 and 4.8 %; the variations move by under
 // 0.7 %). 17/17 at 20.75 pitches at 0.05 m/s (rigid: 2.1 % over); at 0.1 m/s 17/17 at 20.5
 // pitches (rigid: 2.2–3.2 % over), and at 20 and 40 bins 17/17 at 20.25 pitches (rigid: 5.6 %
-// under at 20 bins) and 9/9 at 20.5 pitches (rigid: 2.2, 2.6 % over) — at 80 bins these two are
-// 3.9 and 5.4 % over the elastic four-bar: the torsional ring after the switches, which the
-// reference leaves out. Asserted for each: the rigid four-bar misses.
+// under at 20 bins; at 40 bins the rigid one passes too, 0.998, and the elastic one is 1.017) and
+// 9/9 at 20.5 pitches (rigid: 2.2, 2.6 % over) — at 80 bins these two are 3.9 and 5.4 % over the
+// elastic four-bar, attributed to the torsional ring after the switches, which the reference
+// leaves out (not shown: a one-degree-of-freedom model of the ring took 0.5–4 % off). Asserted for
+// each: the rigid four-bar misses. What this test can tell: the variations pass for C from about
+// 0.95 to 1.75 times the reference's and without the tail's term in T; the first case for C from
+// 0.25 to 3 times (its rigid miss is 0.12 % beyond the 2 %), and it runs at 121.4 N, where the
+// model's static swing does not follow the reference (`ModelStaticSwingFollowsTheTensionLaw`):
+// it does not discriminate the stretch. C is pinned by `ModelStaticStretchIsTheSpansCompliance`,
+// the tension law by `ModelStaticSwingFollowsTheTensionLaw`. Margins: 17/17 at 20.25 pitches at
+// 40 bins is 1.0174 against the 2 % (0.26 % to spare, under the step's 0.7 %: 1.018 at 5e-5 s),
+// and the first case's rigid miss has 0.12 % to spare; an integrator change may flip either for
+// reasons that are not the reference's.
 TEST(DynamicsChordalDrive, DrivenSpeedFollowsTheElasticFourBar) {
   constexpr double kTol = 0.02, kShape = 0.05;
   struct Case {
@@ -601,16 +758,8 @@ TEST(DynamicsChordalDrive, DrivenSpeedFollowsTheElasticFourBar) {
                                    {17, 17, 20.25, 0.1, {20, 40}, 40},
                                    {9, 9, 20.5, 0.1, {20, 40}, 20}};
   for (const Case& c : cases) {
-    FarWheel d;
-    d.driver_teeth = c.z1;
-    d.driven_teeth = c.z2;
-    d.centre = c.centre;
-    d.chain_speed = c.speed;
-    d = tight_off_harmonics(d);
-    Polygons g = polygons(d);
-    g.play = seat_play(d);
+    const auto [d, g, k] = set_up(c.z1, c.z2, c.centre, c.speed);
     const Polygons ge = elastic(d, g);
-    const int k = count_constant(g);
     const chordal::Result r = run(d, k);
     const std::string name = std::to_string(c.z1) + "/" + std::to_string(c.z2) + " at " +
                              std::to_string(c.centre) + " p, " + std::to_string(c.speed) + " m/s";
