@@ -412,7 +412,8 @@ struct Setup {
   std::size_t given_guides = 0;
   std::vector<double> lead_in_angles;
   // each lead-in arc's (guides[given_guides + k]) rail, an index into guides, and whether it is
-  // laid at the rail's start
+  // laid at the rail's start (per arc, for the run's message; parse's LeadInRail, per rail, is not
+  // kept)
   std::vector<std::pair<std::size_t, bool>> lead_in_rails;
   bool work_balance = false;  // summary.work_balance in the output
   // the free layout (docs/models/dynamics.md, "Command"): every sprocket with its centre; empty
