@@ -956,12 +956,8 @@ TEST(DynamicsSquareEnd, ALeadInsOwnFarEndIsSquareAndItsExactClearanceHolds) {
       // G = 2 mm: the radius at 30 deg, the angle at 2 mm
       const double G = 2e-3, least = lead_in_clear_radius(a, r, G);
       const double most = lead_in_clear_angle(R, r, G);
-      EXPECT_NEAR(least + r, G / (1.0 - std::cos(a)), 1e-12);
-      EXPECT_NEAR(std::cos(most), 1.0 - G / (R + r), 1e-12);
-      for (const auto& [radius, angle] : {std::pair{least, a}, std::pair{R, most}}) {
+      for (const auto& [radius, angle] : {std::pair{least, a}, std::pair{R, most}})
         EXPECT_FALSE(strike(radius, angle, G).has_value()) << at_end;  // g = 0: within ε
-        EXPECT_NEAR(radius + r - (radius + r - G) / std::cos(angle), 0.0, 1e-12);
-      }
       const std::optional<EndStrike> small = strike(least - 1e-4, a, G);
       ASSERT_TRUE(small.has_value()) << at_end;
       EXPECT_GT(small->depth, eps);
@@ -970,9 +966,76 @@ TEST(DynamicsSquareEnd, ALeadInsOwnFarEndIsSquareAndItsExactClearanceHolds) {
       ASSERT_TRUE(narrow.has_value()) << at_end;
       EXPECT_GT(narrow->depth, eps);
       EXPECT_FALSE(strike(R, most + 0.01, G).has_value()) << at_end;
+      // a lead-in smaller than the roller, 0.3 mm: its far face passes the arc's centre R + r
+      // below the roller line, past which it lies on the opposite radius, outside the sweep,
+      // where the arc's contact (guide_contact) is off. A roller 0.1 mm short of that depth is
+      // named on the far end within it; one R + r + 1 mm below the roller line passes under the
+      // centre and is not named there (its face point g = R + r + 1 mm / cos α < 2r)
+      const double tiny = 3e-4;
+      const Guide arc = lead_in_arcs(rail, {tiny, a, !at_end, at_end}).at(0);
+      const std::optional<EndStrike> short_of = strike(tiny, a, tiny + r - 1e-4);
+      ASSERT_TRUE(short_of.has_value()) << at_end;
+      EXPECT_LT(short_of->depth, tiny + r);
+      const double deep = tiny + r + 1e-3, w = (tiny + r - deep) * std::tan(a);
+      const double qx = px + (r - deep) * nx + w * ox, qy = py + (r - deep) * ny + w * oy;
+      EXPECT_FALSE(guide_contact(arc, qx, qy, 0.0, 0.0).active) << at_end;
+      EXPECT_FALSE(strike(tiny, a, deep).has_value()) << at_end;
     }
   }
   EXPECT_TRUE(std::isnan(lead_in_clear_angle(1e-3, kRoller, 1e-3 + kRoller + 1e-6)));
+}
+
+// When a parallel roller can strike a lead-in's far end (layout.hpp, lead_in_parallel_strike): on
+// the inclined rail, a 2 mm lead-in at each end in turn at 30, 60, 89 and 90 deg, the far face
+// built here as in the test above. A roller rising along the end's normal through the far face
+// 1 mm into the arc's contact is struck at every sweep. A roller running parallel to the rail at
+// the depth G that gives (lead_in_rail_depth) is struck there at the same g below a quarter turn,
+// and lead_in_parallel_strike says so; at 90 deg the face runs parallel to the rail and it is not
+// struck, the clearance's radius and sweep are the lead-in's own, and lead_in_parallel_strike is
+// false (the run names no value then).
+TEST(DynamicsSquareEnd, ALeadInsFarEndAtAQuarterTurnNamesNoParallelRemedy) {
+  const Guide rail = inclined_rail(0.0);
+  const double r = rail.roller_radius, R = 2e-3, h = 1e-3;
+  const double len = std::hypot(rail.x1 - rail.x0, rail.y1 - rail.y0);
+  const double ux = (rail.x1 - rail.x0) / len, uy = (rail.y1 - rail.y0) / len;
+  for (const bool at_end : {false, true}) {
+    const double px = at_end ? rail.x1 : rail.x0, py = at_end ? rail.y1 : rail.y0;
+    const double nx = -uy, ny = ux, ox = at_end ? ux : -ux, oy = at_end ? uy : -uy;
+    for (const double deg : {30.0, 60.0, 89.0, 90.0}) {
+      const double a = deg * kPi / 180.0;
+      std::vector<Guide> guides{rail};
+      for (const Guide& arc : lead_in_arcs(rail, {R, a, !at_end, at_end})) guides.push_back(arc);
+      ASSERT_EQ(guides.size(), 2U);
+      const std::vector<std::size_t> all{0, 1};
+      const std::vector<SquareEnd> ends = square_ends(BeltPath{}, guides, all);
+      const auto strike = [&](double x, double y, double vx, double vy) {
+        return square_end_strike(ends, guides, all, std::vector<double>{x}, std::vector<double>{y},
+                                 std::vector<double>{vx}, std::vector<double>{vy}, h);
+      };
+      // rising along n, from 0.3 mm below the face's point g = 1 mm into the contact
+      const double d = R + r - 1e-3;  // from the arc's centre, R behind the end along −n
+      const double fx = px - R * nx + d * (std::cos(a) * nx + std::sin(a) * ox);
+      const double fy = py - R * ny + d * (std::cos(a) * ny + std::sin(a) * oy);
+      const std::optional<EndStrike> rising = strike(fx - 3e-4 * nx, fy - 3e-4 * ny, nx, ny);
+      ASSERT_TRUE(rising.has_value()) << at_end << " " << deg;
+      EXPECT_EQ(ends[rising->end].rail, 1U);
+      EXPECT_NEAR(rising->depth, 1e-3, 1e-12);
+      // parallel, towards the rail, G below the roller line, from 0.3 mm before the face
+      const double G = lead_in_rail_depth(R, a, r, rising->depth);
+      const double w = (R + r - G) * std::tan(a) + 3e-4;
+      const std::optional<EndStrike> parallel =
+          strike(px + (r - G) * nx + w * ox, py + (r - G) * ny + w * oy, -0.5 * ox, -0.5 * oy);
+      EXPECT_EQ(parallel.has_value(), deg < 90.0) << at_end << " " << deg;
+      if (parallel) {
+        EXPECT_NEAR(parallel->depth, rising->depth, 1e-9) << deg;
+      }
+      EXPECT_EQ(lead_in_parallel_strike(R, a, r, rising->depth), deg < 90.0) << at_end << deg;
+      if (deg == 90.0) {
+        EXPECT_NEAR(lead_in_clear_radius(a, r, G), R, 1e-12);
+        EXPECT_NEAR(lead_in_clear_angle(R, r, std::min(G, R + r)), a, 1e-6);
+      }
+    }
+  }
 }
 
 // The strike's bound at the contact's far edge, decided by rule (layout.hpp, square_end_strike):
@@ -994,9 +1057,11 @@ TEST(DynamicsSquareEnd, ACrossingExactlyTwoRollerRadiiDeepIsNoStrike) {
     return square_end_strike(ends, guides, given, x, ys, vx, vy, 1e-3);
   };
   ASSERT_EQ(r - (-r), 2.0 * r);  // the gap's arithmetic is exact here
+  EXPECT_FALSE(guide_contact(rail, 0.01, -r, 0.0, 0.0).active);  // the contact's own cut-off
   EXPECT_FALSE(strike(-r).has_value());
   const double under = std::nextafter(2.0 * r, 0.0);
   ASSERT_EQ(r - (r - under), under);
+  EXPECT_TRUE(guide_contact(rail, 0.01, r - under, 0.0, 0.0).active);
   const std::optional<EndStrike> below = strike(r - under);
   ASSERT_TRUE(below.has_value());
   EXPECT_EQ(below->depth, under);

@@ -212,9 +212,9 @@ double rail_cut_work(const BeltPath& path, const Guide& rail);
 /// (docs/models/dynamics.md, "Guides against the starting path: the square ends"). For each
 /// square end of the rails `rails` (indices into `guides`): how deep the chain's starting path
 /// crosses it where the chain runs onto the rail (along the path's direction, counter-clockwise,
-/// whichever side the driver is on), its g in [0, 2r] (0: not crossing its contact); the path
-/// sampled as rail_cut samples it, as a polyline, against the end's normal from the roller line
-/// to r behind the surface.
+/// whichever side the driver is on), its g in [0, square_end_reach) (0: not crossing its
+/// contact); the path sampled as rail_cut samples it, as a polyline, against the end's normal
+/// from the roller line to the face's reach (r behind the surface, where the contact is off).
 struct SquareEnd {
   std::size_t rail = 0;  ///< index into `rails`
   bool at_start = true;
@@ -225,13 +225,18 @@ struct SquareEnd {
 };
 std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide>& guides,
                                    const std::vector<std::size_t>& rails);
+/// [m] How deep below the roller line a square end's face reaches into `rail`'s contact: 2r, where
+/// the contact is off (guide_contact), but on an arc with the rollers outside at most ρ + r, where
+/// the face passes the arc's centre (deeper it lies on the opposite radius, outside the sweep, with
+/// no contact: a lead-in smaller than the roller).
+double square_end_reach(const Guide& rail);
 
 /// A roller striking a square end in a step (docs/models/dynamics.md, "Guides against the starting
 /// path: the square ends", the run's diagnostic): of the square ends `ends` (square_ends' of the
 /// rails `rails`, indices into `guides`), the deepest crossing of an end's face, from outside the
 /// rail into it, by a node's straight move from (x, y) to (x + h vx, y + h vy) (the step's start
 /// and its constant-velocity predictor) more than the rail's contact ramp ε below the roller line
-/// (g in (ε, 2r), off from 2r): the end (index into `ends`), the node and that g. None: no such.
+/// (g in (ε, square_end_reach)): the end (index into `ends`), the node and that g. None: no such.
 struct EndStrike {
   std::size_t end = 0;   ///< index into `ends`
   std::size_t node = 0;  ///< the roller's node
@@ -247,14 +252,20 @@ std::optional<EndStrike> square_end_strike(const std::vector<SquareEnd>& ends,
 /// A lead-in arc's own far end (`lead_in_arcs`, radius R, sweep α, at a rail's end, its centre R
 /// behind the end along the end's normal) is square too: a roller crossing its face (the radial
 /// line at α) g into the arc's contact lies (R + r) − (R + r − g) cos α below the rail's roller
-/// line at the end's tangent (docs/models/dynamics.md, "Lead-ins", the far end). A roller running
+/// line's tangent at the end (docs/models/dynamics.md, "Lead-ins", the far end). A roller running
 /// parallel to that tangent at that depth G meets the arc's roller line within its sweep, and so
 /// clears its far end, exactly when (R + r)(1 − cos α) >= G: at a sweep α from the radius
 /// G / (1 − cos α) − r on, at a radius R from the sweep acos(1 − G / (R + r)) on (NaN when
-/// G > R + r: none up to a quarter turn).
+/// G > R + r, which a strike within the face's reach R + r does not give).
 double lead_in_rail_depth(double radius, double angle, double roller, double g);
 double lead_in_clear_radius(double angle, double roller, double depth);
 double lead_in_clear_angle(double radius, double roller, double depth);
+/// Whether a roller running parallel to the end's tangent can cross that far face g into the
+/// arc's contact: G exceeds the clearance (R + r)(1 − cos α) by g cos α, so it can unless the
+/// sweep is a quarter turn, where the face runs parallel to the rail (G = R + r for every g) and
+/// the clearance's radius and sweep are the lead-in's own; a roller struck there moved across
+/// the rail, and the parallel rule names no remedy for it.
+bool lead_in_parallel_strike(double radius, double angle, double roller, double g);
 
 /// The distances `lead_in_obstacle` measures for `arc` (its samples times the pieces and guides
 /// its prefilter keeps): the work of one check, which `lead_in_limit`'s bisections repeat at most

@@ -412,7 +412,8 @@ struct Setup {
   std::size_t given_guides = 0;
   std::vector<double> lead_in_angles;
   // each lead-in arc's (guides[given_guides + k]) rail, an index into guides, and whether it is
-  // laid at the rail's start
+  // laid at the rail's start (per arc, for the run's message; parse's LeadInRail, per rail, is not
+  // kept)
   std::vector<std::pair<std::size_t, bool>> lead_in_rails;
   bool work_balance = false;  // summary.work_balance in the output
   // the free layout (docs/models/dynamics.md, "Command"): every sprocket with its centre; empty
@@ -540,6 +541,11 @@ std::string square_end_name(const Guide& rail, const SquareEnd& end) {
   return (arc ? std::string(end.at_start ? "start_angle" : "end_angle")
               : std::string(end.at_start ? "(x0, y0)" : "(x1, y1)")) +
          " (" + format_g(end.x * 1e3, 4) + ", " + format_g(end.y * 1e3, 4) + ") mm";
+}
+// A lead-in as the messages name it, by its rail ("guide[0]" at parse, "dynamics.guide[0]" in
+// the run's): "the lead-in at the end of guide[0]".
+std::string lead_in_name(bool at_start, const std::string& rail) {
+  return "the lead-in at the " + std::string(at_start ? "start" : "end") + " of " + rail;
 }
 std::string square_end_lead_in(const SquareEnd& end) {
   return std::string("(lead_in_radius, lead_in_end = \"") + (end.at_start ? "start" : "end") +
@@ -2315,8 +2321,7 @@ Setup parse(const analysis::Inputs& in) {
       for (std::size_t k = 0; k < lead_ins.size(); ++k) {
         const bool start = k == 0 && lead_ins_at_start;
         s.lead_in_rails.emplace_back(s.guides.size() - 1, start);
-        lead_names.push_back("the lead-in at the " + std::string(start ? "start" : "end") +
-                             " of guide[" + std::to_string(i) + "]");
+        lead_names.push_back(lead_in_name(start, "guide[" + std::to_string(i) + "]"));
       }
     }
   }
@@ -2874,32 +2879,39 @@ std::optional<Diagnostic> bare_end_struck(const Setup& d, const State& s,
     // a lead-in arc's own far end (its near end joins its rail's): the lead-in named by its rail,
     // the exact clearance (R + r)(1 − cos α) >= G of a roller parallel to the end's tangent at
     // the depth G it has there (layout.hpp, lead_in_rail_depth), G rounded up and the radius at
-    // its sweep, the sweep at its radius, from it rounded up
+    // its sweep, the sweep at its radius, from it rounded up; none when a parallel roller cannot
+    // cross that face (lead_in_parallel_strike: a quarter turn, whose remedy is its own values)
     const auto [of, at_start] = d.lead_in_rails[index - d.given_guides];  // laid with the arcs
     const double R = rail.radius, r = rail.roller_radius, a = rail.end_angle - rail.start_angle;
     const double G = up_to(lead_in_rail_depth(R, a, r, hit->depth) * 1e3, 4);  // [mm]
     const double radius = up_to(lead_in_clear_radius(a, r * 1e3, G), 3);       // [mm]
-    const double angle = lead_in_clear_angle(R * 1e3, r * 1e3, G) * 180.0 / kPi;
+    // (G < R + r before rounding, within the face's reach: the sweep at most a quarter turn)
+    const double below = std::min(G, (R + r) * 1e3);
+    const double angle = up_to(lead_in_clear_angle(R * 1e3, r * 1e3, below) * 180.0 / kPi, 3);
     const std::string end_word = at_start ? "start" : "end";
+    const std::string remedy =
+        lead_in_parallel_strike(R, a, r, hit->depth)
+            ? ": at its lead_in_angle " + format_g(a * 180.0 / kPi, 4) +
+                  " deg, lead_in_radius >= " + format_g(radius, 3) +
+                  " mm, or at its lead_in_radius " + mm(R) +
+                  ", lead_in_angle >= " + format_g(angle, 3) + " deg (lead_in_end = \"" + end_word +
+                  "\" or \"both\"; "
+            : ", which this lead-in meets already: its far end's face runs parallel to the rail, "
+              "so the roller crossed it moving across the rail, and no value is named; move the "
+              "rail clear of the chain there (";
     return Diagnostic{
         Diagnostic::Severity::kError,
         "dynamics.bare_rail_end",
-        struck + "the far end of the lead-in at the " + end_word + " of dynamics." +
-            d.guide_names[of] + " (lead_in_radius " + mm(R) + ", lead_in_angle " +
-            format_g(a * 180.0 / kPi, 4) + " deg) at (" + format_g(end.x * 1e3, 4) + ", " +
-            format_g(end.y * 1e3, 4) + ") mm, where it runs onto the lead-in, " + mm(hit->depth) +
-            " into its contact, " + ramp + "There the roller lies " + format_g(G, 4) +
-            " mm below the rail's roller line at its end; give that end a lead-in a roller "
-            "running parallel to the rail there clears, (lead_in_radius + roller radius " +
-            mm(r) + ") (1 - cos lead_in_angle) >= " + format_g(G, 4) +
-            " mm: at its lead_in_angle " + format_g(a * 180.0 / kPi, 4) +
-            " deg, lead_in_radius >= " + format_g(radius, 3) + " mm, or at its lead_in_radius " +
-            mm(R) + ", " +
-            (std::isnan(angle) ? std::string("no lead_in_angle up to 90 deg")
-                               : "lead_in_angle >= " + format_g(up_to(angle, 3), 3) + " deg") +
-            " (lead_in_end = \"" + end_word +
-            "\" or \"both\"; a bare entry end near the chain's "
-            "path may stop the run at any depth)",
+        struck + "the far end of " + lead_in_name(at_start, "dynamics." + d.guide_names[of]) +
+            " (lead_in_radius " + mm(R) + ", lead_in_angle " + format_g(a * 180.0 / kPi, 4) +
+            " deg) at (" + format_g(end.x * 1e3, 4) + ", " + format_g(end.y * 1e3, 4) +
+            ") mm, where it runs onto the lead-in, " + mm(hit->depth) + " into its contact, " +
+            ramp + "There the roller lies " + format_g(G, 4) +
+            " mm below the line of the rail's rollers at its end, along its tangent; give that end "
+            "a lead-in a roller running parallel to the rail there clears, (lead_in_radius + "
+            "roller radius " +
+            mm(r) + ") (1 - cos lead_in_angle) >= " + format_g(G, 4) + " mm" + remedy +
+            "a bare entry end near the chain's path may stop the run at any depth)",
         hit->depth,
         rail.contact_smoothing,
         "m"};

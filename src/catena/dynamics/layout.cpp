@@ -1237,10 +1237,11 @@ RailCut rail_cut(const BeltPath& path, const Guide& rail) {
 // The square ends (layout.hpp): every guide's two ends found once and matched in x order,
 // O(G log G + matches); then each end's segment, from the roller line's point (the surface's end
 // plus r n, where a roller touching the end has its centre) to r behind the surface (g from 0 to
-// 2r), against the chords between the path's samples near it (cut_ranges over the segment's box
-// padded by a sample's spacing: a chord crossing it has an end within that of it), a chord counted
-// only where it runs into the rail; a roller leaving a square end sheds its force at once
-// instead, which the conveyor example's lower rail does at its exit end 0.31 mm deep.
+// 2r, counted short of the face's reach, square_end_reach), against the chords between the path's
+// samples near it (cut_ranges over the segment's box padded by a sample's spacing: a chord crossing
+// it has an end within that of it), a chord counted only where it runs into the rail; a roller
+// leaving a square end sheds its force at once instead, which the conveyor example's lower rail
+// does at its exit end 0.31 mm deep.
 std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide>& guides,
                                    const std::vector<std::size_t>& rails) {
   std::vector<SquareEnd> ends;
@@ -1296,6 +1297,7 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
     const Guide& rail = guides[rails[ends[k].rail]];
     const double rr = rail.roller_radius;
     if (!(rr > 0.0)) continue;
+    const double reach = square_end_reach(rail) / (2.0 * rr);  // of the segment, off from there
     const int n = cut_samples(path, rail);
     const double pad = path.length / n;
     const auto& e = at[k];
@@ -1318,13 +1320,22 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
         // A + t d = P + u c
         const double t = (qy * cx - qx * cy) / den;
         const double u = (qy * dx - qx * dy) / den;
-        if (!(t >= 0.0 && t <= 1.0 && u >= 0.0 && u <= 1.0)) continue;
+        if (!(t >= 0.0 && t < reach && u >= 0.0 && u <= 1.0)) continue;
         if (cx * e[4] + cy * e[5] < 0.0) continue;  // leaving the rail there
         ends[k].depth = std::max(ends[k].depth, 2.0 * rr * t);
       }
     });
   }
   return ends;
+}
+
+// The face's reach (layout.hpp): the contact is off at g >= 2r (guide_contact); on an arc with the
+// rollers outside the face passes the centre at g = ρ + r, past which it lies on the opposite
+// radius, outside the sweep, where the arc has no contact.
+double square_end_reach(const Guide& rail) {
+  const double most = 2.0 * rail.roller_radius;
+  const bool outside = rail.kind == Guide::Kind::kArc && !rail.inside;
+  return outside ? std::min(most, rail.radius + rail.roller_radius) : most;
 }
 
 // The strike (layout.hpp): each end's roller-line point A = the surface's end + r n; a node's
@@ -1345,6 +1356,7 @@ std::optional<EndStrike> square_end_strike(const std::vector<SquareEnd>& ends,
     if (e.rail >= rails.size() || rails[e.rail] >= guides.size()) continue;
     const Guide& rail = guides[rails[e.rail]];
     const double r = rail.roller_radius, eps = rail.contact_smoothing;
+    const double reach = square_end_reach(rail);
     const double ax = e.x + r * e.nx, ay = e.y + r * e.ny;
     for (std::size_t i = 0; i < n; ++i) {
       const double px = x[i] - ax, py = y[i] - ay;
@@ -1353,7 +1365,7 @@ std::optional<EndStrike> square_end_strike(const std::vector<SquareEnd>& ends,
       if (!(a0 <= 0.0 && a1 > 0.0)) continue;  // (a NaN fails too)
       const double f = -a0 / (a1 - a0);
       const double g = -((px + f * mx) * e.nx + (py + f * my) * e.ny);
-      if (!(g > eps && g < 2.0 * r)) continue;  // the contact is off at g >= 2r
+      if (!(g > eps && g < reach)) continue;
       if (!out || g > out->depth) out = EndStrike{k, i, g};
     }
   }
@@ -1374,6 +1386,15 @@ double lead_in_clear_radius(double angle, double roller, double depth) {
 double lead_in_clear_angle(double radius, double roller, double depth) {
   const double c = 1.0 - depth / (radius + roller);
   return c >= 0.0 ? std::acos(c) : NAN;
+}
+
+// A parallel roller's strike (layout.hpp): G − (R + r)(1 − cos α) = g cos α, so the clearance's
+// radius at α exceeds R by g cos α / (1 − cos α); counted from a billionth of R on (cos of a
+// quarter turn in doubles is 6e-17, not 0).
+bool lead_in_parallel_strike(double radius, double angle, double roller, double g) {
+  const double least =
+      lead_in_clear_radius(angle, roller, lead_in_rail_depth(radius, angle, roller, g));
+  return least > radius * (1.0 + 1e-9);
 }
 
 std::vector<std::size_t> sagging_spans(const BeltPath& path) {
