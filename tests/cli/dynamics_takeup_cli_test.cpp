@@ -535,7 +535,9 @@ TEST(DynamicsTakeupCli, SettledSpanFrequenciesUseTheMeanCentre) {
 // roller's gap is taken relative to the sliding centre. With discrete_gradient = true all 1000
 // steps converge and the work balance's numerical part stays below 1e-6 J (the chain's kinetic
 // energy q L v²/2 is about 0.2 J: 1.25 kg/m, 1.6 m at 0.48 m/s);
-// with the θ point's force the contacts gain energy until Newton fails (measured: at step 66).
+// with the θ point's force the contacts gain energy until Newton fails (measured: at step 66,
+// which stopped the run before failed steps were retaken as half-steps; now the run goes on,
+// its steps retaken, and the energy it gained, 3.3e6 J, stays in its numerical term).
 TEST(DynamicsTakeupCli, DiscreteGradientKeepsTheUndampedBalanceAtThetaHalf) {
   std::string text = example_text();
   text = replaced(text, "axial_damping", "axial_damping = 0");
@@ -556,6 +558,7 @@ TEST(DynamicsTakeupCli, DiscreteGradientKeepsTheUndampedBalanceAtThetaHalf) {
   EXPECT_EQ(kept["summary"]["steps"], 1000);
   EXPECT_FALSE(has_code(kept, "dynamics.not_converged")) << kept["diagnostics"].dump();
   EXPECT_LT(std::abs(numerical), 1e-6);
-  EXPECT_TRUE(has_code(plain, "dynamics.not_converged")) << plain["diagnostics"].dump();
-  EXPECT_LT(plain["summary"]["steps"].get<int>(), 1000);
+  EXPECT_TRUE(has_code(plain, "dynamics.steps_retaken")) << plain["diagnostics"].dump();
+  EXPECT_GT(plain["summary"]["work_balance"]["numerical"].get<double>(), 1e3)
+      << plain["summary"].dump();
 }
