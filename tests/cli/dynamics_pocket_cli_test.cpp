@@ -648,6 +648,10 @@ TEST(DynamicsPocketCli, RampsFoldedStepIsRetakenAsHalvesAndItsAccountingCloses) 
   int retaken = 0;
   for (const auto& d : j["diagnostics"]) {
     EXPECT_NE(d["code"], "dynamics.not_converged") << d.dump();
+    // a correct run with a retake is not stopped by the guard on energy from nothing (its
+    // largest numerical term, +0.83 J in the mouth's band at step 2458, 0.07 of what it has
+    // received)
+    EXPECT_NE(d["code"], "dynamics.energy_gain") << d.dump();
     if (d["code"] != "dynamics.steps_retaken") continue;
     ++retaken;
     EXPECT_EQ(d["severity"], "warning");
@@ -676,6 +680,43 @@ TEST(DynamicsPocketCli, RampsFoldedStepIsRetakenAsHalvesAndItsAccountingCloses) 
     worst = std::max(worst, std::abs(lhs - dt * (driven["torque"][k].get<double>() - 100.0)));
   }
   EXPECT_LT(worst, 1e-6);  // N m s (1e-8 measured; the steps' own Newton tolerance)
+}
+
+// The guard on energy from nothing (docs/models/dynamics.md, "Integrator: the guard on energy
+// from nothing"): the ramp's run (θ = ½, undamped, discrete gradient, w = c) to 1 s, and the
+// same with the sharp mouth, went on with retakes to 1 s, +2537 J and +2773 J in their
+// numerical terms and joints 2.42 and 2.90 mm deep. The numerical term passes twice the energy
+// each has received at 0.3215 s and 0.305 s (measured per step), where the guard's next sample
+// stops them, their joints under 1.2 mm (the balance still closed when they first went past c).
+TEST(DynamicsPocketCli, RampsDivergingRunStopsWhereItGainsEnergyFromNothing) {
+  for (const bool sharp : {false, true}) {
+    std::vector<std::pair<std::string, std::string>> keys{
+        {"axial_damping", "axial_damping = 0"},
+        {"contact_damping", "contact_damping = 0"},
+        {"duration", "duration = \"1 s\""},
+        {"", "theta = 0.5\nwork_balance = true\ndiscrete_gradient = true"}};
+    if (!sharp) keys.push_back({"", "pocket_mouth = \"0.1 mm\""});
+    const CliRun r =
+        run("dynamics " + example_with(sharp ? "sharp_1s.toml" : "ramp_1s.toml", keys) +
+            " --format json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const int steps = j["summary"]["steps"].get<int>();
+    EXPECT_GT(steps, 2900) << sharp;
+    EXPECT_LT(steps, 3300) << sharp;
+    EXPECT_LT(j["summary"]["max_penetration"].get<double>(), 1.2e-3) << sharp;
+    bool gain = false;
+    for (const auto& d : j["diagnostics"])
+      if (d["code"] == "dynamics.energy_gain") {
+        gain = true;
+        EXPECT_EQ(d["value"].get<double>(),
+                  j["summary"]["work_balance"]["numerical"].get<double>());
+        EXPECT_GT(d["value"].get<double>(), d["limit"].get<double>());
+        EXPECT_GT(d["limit"].get<double>(), 100.0) << d.dump();  // the work put in dominates
+      }
+    EXPECT_TRUE(gain) << sharp << " " << j["diagnostics"].dump();
+    EXPECT_NE(r.err.find("catena: error: step "), std::string::npos) << r.err;
+  }
 }
 
 // The ramp's fold-free step from the model's own data (docs/models/dynamics.md, "Pocket wheel:

@@ -2941,6 +2941,10 @@ bool retake_halves(const Model& model, const Setup& d, std::vector<std::optional
   return true;
 }
 
+// The guard on energy from nothing: the numerical term's bound in multiples of the energy the run
+// has received (docs/models/dynamics.md, "Integrator: the guard on energy from nothing").
+constexpr double kEnergyGainBound = 2.0;
+
 Result run(const analysis::Inputs& in) {
   Result out;
   out.setup = parse(in);
@@ -3137,10 +3141,59 @@ Result run(const analysis::Inputs& in) {
     }
   };
   snapshot();
-  const double e0 = energy(model, s).total();
+  const Energy start_energy = energy(model, s);
+  const double e0 = start_energy.total();
   // the work the driver puts in and the load takes out over each step: the driver's applied
   // (θ-point) torque and the load torque times the angles the wheels turned
   double work = 0.0;
+  // the work balance at the state s of total energy `total` (summary.work_balance): the drift,
+  // E − E₀ less the work of the driver, the loads and the model's friction and rails' loads, and
+  // returned, the numerical term, the drift less the dampers' work (the end's summary and the
+  // guard below: one computation)
+  const bool rail_load = any_rail_load(d), load_inertia = any_load_inertia(d.guides);
+  auto balance = [&](double total, double& drift) {
+    drift = total - e0 - work - s.friction_work - s.seat_friction_work - s.hinge_work;
+    if (rail_load) drift -= s.load_work;  // a run without a load computes as before
+    if (load_inertia) drift -= s.load_catch_work + s.load_discharge_work;
+    double numerical = drift - s.damper_work - s.contact_damping_work;
+    if (!out.takeup.empty()) numerical -= s.takeup_damper_work;  // likewise without a take-up
+    return numerical;
+  };
+  // The guard on energy from nothing (docs/models/dynamics.md, "Integrator: the guard on energy
+  // from nothing"): the run has received the start's kinetic and elastic energy K₀ + V₀, the
+  // potential energy released since (gravity's, the loads', the take-ups' force's) and the work
+  // put in by the driver and the loads; a numerical term N (the balance's energy from nothing)
+  // larger than twice all of it is a loop holding more energy from nothing than it was ever
+  // given, a run that diverges (the θ point's one-step gains at a coarse step's start measured up
+  // to 1.8 times it): an error that stops it there, with the output up to there as after a failed
+  // step. Checked at each sample and the last step (the energy is not otherwise computed).
+  const double start_motion = start_energy.kinetic + start_energy.elastic;
+  auto gained = [&](int step) {
+    const Energy now = energy(model, s);
+    double drift = 0.0;
+    const double numerical = balance(now.total(), drift);
+    const double released = std::max(0.0, start_energy.potential - now.potential);
+    const double received = start_motion + released + std::max(0.0, work);
+    if (!(numerical > kEnergyGainBound * received)) return false;
+    // a roller crossing a rail's square end gains its contact's energy as it strikes: the strike
+    // is named as before, at the step that fails on it (dynamics.bare_rail_end)
+    if (bare_end_struck(d, s, std::string())) return false;
+    std::string advice = "a smaller step";
+    if (d.theta < 1.0) advice = "theta nearer 1, " + advice;
+    if (!d.discrete_gradient) advice += ", or discrete_gradient = true";
+    out.diagnostics.push_back(
+        {Diagnostic::Severity::kError, "dynamics.energy_gain",
+         "step " + std::to_string(step) + " (t = " + format_g(s.time, 6) +
+             " s): the work balance's numerical term, energy gained from nothing, is " +
+             format_g(numerical, 4) + " J, more than twice the " + format_g(received, 4) +
+             " J the run has received (the start's kinetic and elastic energy " +
+             format_g(start_motion, 4) + " J, the potential energy released " +
+             format_g(released, 4) + " J, the work put in by the driver and the loads " +
+             format_g(work, 4) + " J); the loop's kinetic energy is " + format_g(now.kinetic, 4) +
+             " J: the run diverges and stopped there (try " + advice + ")",
+         numerical, kEnergyGainBound * received, "J"});
+    return true;
+  };
   sample();
   const auto started = std::chrono::steady_clock::now();
   ProgressLoop loop(static_cast<std::size_t>(steps), "steps");
@@ -3178,6 +3231,7 @@ Result run(const analysis::Inputs& in) {
         watch_takeups(acc.wheel_force);
         ++since;
         if ((k + 1) % every == 0) sample();
+        if (((k + 1) % every == 0 || k + 1 == steps) && gained(k + 1)) break;
         if ((k + 1) % frame_every == 0) snapshot();
         loop.step(static_cast<std::size_t>(k + 1));
         continue;
@@ -3203,6 +3257,7 @@ Result run(const analysis::Inputs& in) {
     watch_takeups(integ.applied_wheel_force());
     ++since;
     if ((k + 1) % every == 0) sample();
+    if (((k + 1) % every == 0 || k + 1 == steps) && gained(k + 1)) break;
     if ((k + 1) % frame_every == 0) snapshot();
     loop.step(static_cast<std::size_t>(k + 1));
   }
@@ -3212,30 +3267,21 @@ Result run(const analysis::Inputs& in) {
   out.seat_friction_work = s.seat_friction_work;
   // likewise the hinges' friction work (0 without hinge friction)
   out.hinge_work = s.hinge_work;
-  out.energy_drift =
-      energy(model, s).total() - e0 - work - s.friction_work - s.seat_friction_work - s.hinge_work;
-  // the rails' loads' work (a run without a load computes as before)
-  if (any_rail_load(d)) {
-    out.load_work = s.load_work;
-    out.energy_drift -= s.load_work;
-  }
-  // the load's catch and discharge (a run without load_inertia computes as before)
-  if (any_load_inertia(d.guides)) {
+  // the rails' loads' work, the load's catch and discharge, the dampers' and the take-ups'
+  // dampers' (each 0 in a run without it); the numerical term: what the model's dissipation does
+  // not account for, the θ-method and the contacts' penalty (evaluated at the θ point, not by a
+  // discrete gradient)
+  out.numerical_work = balance(energy(model, s).total(), out.energy_drift);
+  if (rail_load) out.load_work = s.load_work;
+  if (load_inertia) {
     out.load_catch_work = s.load_catch_work;
     out.load_arrival_work = s.load_arrival_work;
     out.load_discharge_work = s.load_discharge_work;
-    out.energy_drift -= s.load_catch_work + s.load_discharge_work;
   }
   out.input_work = work;
   out.damper_work = s.damper_work;
   out.contact_damping_work = s.contact_damping_work;
-  // what the model's dissipation does not account for: the θ-method and the contacts' penalty
-  // (evaluated at the θ point, not by a discrete gradient)
-  out.numerical_work = out.energy_drift - s.damper_work - s.contact_damping_work;
-  if (!out.takeup.empty()) {  // the take-ups' dampers (a run without one computes as before)
-    out.takeup_damper_work = s.takeup_damper_work;
-    out.numerical_work -= s.takeup_damper_work;
-  }
+  if (!out.takeup.empty()) out.takeup_damper_work = s.takeup_damper_work;
   for (TakeupSeries& tu : out.takeup) {
     const Sprocket& wh = wheels[tu.wheel];
     const LayoutWheel& lw = d.wheels[tu.wheel];
