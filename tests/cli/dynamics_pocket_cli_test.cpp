@@ -649,7 +649,7 @@ TEST(DynamicsPocketCli, RampsFoldedStepIsRetakenAsHalvesAndItsAccountingCloses) 
   for (const auto& d : j["diagnostics"]) {
     EXPECT_NE(d["code"], "dynamics.not_converged") << d.dump();
     // a correct run with a retake is not stopped by the guard on energy from nothing (its
-    // largest numerical term, +0.83 J in the mouth's band at step 2458, 0.07 of what it has
+    // largest numerical term, +0.83 J in the mouth's band at step 2458, about 0.03 of what it has
     // received)
     EXPECT_NE(d["code"], "dynamics.energy_gain") << d.dump();
     if (d["code"] != "dynamics.steps_retaken") continue;
