@@ -623,3 +623,138 @@ TEST(DynamicsPocketCli, MissingTableSaysContactStiffnessIsThePocketsOnly) {
 }
 
 }  // namespace
+
+// A step that folds is retaken as half-steps (docs/models/dynamics.md, "Integrator: a failed step
+// retaken as half-steps"; "Pocket wheel: the ramp's fold"): the example undamped at θ = ½ with the
+// discrete gradient and the mouth's ramp w = c = 0.1 mm, 0.25 s, whose step 2457 has no root near
+// its start at h = 0.1 ms (a joint leaving over the ramp, whose softening passes the joint's
+// 2M/(θh²)) and stopped there, runs every step, warned once with the smallest sub-step and the
+// first retaken step. The retaken steps' accounting closes: the work balance's numerical term
+// stays at the discrete gradient's (against 0.25 J of input the retaken step alone takes), and the
+// driven wheel's torque balance J Δω = Δt (τ̄ − T_L) holds over every sample, the retaken ones'
+// mean torque weighted by the sub-steps' share of h.
+TEST(DynamicsPocketCli, RampsFoldedStepIsRetakenAsHalvesAndItsAccountingCloses) {
+  const std::string file = example_with(
+      "ramp_half.toml", {{"axial_damping", "axial_damping = 0"},
+                         {"contact_damping", "contact_damping = 0"},
+                         {"duration", "duration = \"0.25 s\""},
+                         {"",
+                          "pocket_mouth = \"0.1 mm\"\ntheta = 0.5\nwork_balance = true\n"
+                          "discrete_gradient = true"}});
+  const CliRun r = run("dynamics " + file + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["summary"]["steps"], 2500) << r.err;
+  int retaken = 0;
+  for (const auto& d : j["diagnostics"]) {
+    EXPECT_NE(d["code"], "dynamics.not_converged") << d.dump();
+    // a correct run with a retake is not stopped by the guard on energy from nothing (its
+    // largest numerical term, +0.83 J in the mouth's band at step 2458, about 0.03 of what it has
+    // received)
+    EXPECT_NE(d["code"], "dynamics.energy_gain") << d.dump();
+    if (d["code"] != "dynamics.steps_retaken") continue;
+    ++retaken;
+    EXPECT_EQ(d["severity"], "warning");
+    EXPECT_DOUBLE_EQ(d["limit"].get<double>(), 1e-4);  // the step
+    const double smallest = d["value"].get<double>();
+    EXPECT_LE(smallest, 5e-5) << d.dump();
+    EXPECT_GE(smallest, 1e-4 / 16) << d.dump();
+    const std::string m = d["message"].get<std::string>();
+    for (const char* text : {" of step = 0.1 ms did not converge and were retaken from their "
+                             "start as two half-steps",
+                             "down to step/16)", "the first at step "})
+      EXPECT_NE(m.find(text), std::string::npos) << text << "\n" << m;
+  }
+  EXPECT_EQ(retaken, 1) << j["diagnostics"].dump();
+  const auto& balance = j["summary"]["work_balance"];
+  EXPECT_GT(balance["input"].get<double>(), 10.0) << balance.dump();
+  EXPECT_LT(std::abs(balance["numerical"].get<double>()), 1e-5) << balance.dump();
+  const auto& time = j["time"];
+  const auto& driven = j["sprocket"][1];
+  ASSERT_EQ(driven["role"], "driven");
+  double worst = 0.0;
+  for (std::size_t k = 1; k < time.size(); ++k) {
+    const double dt = time[k].get<double>() - time[k - 1].get<double>();
+    const double lhs =
+        0.2 * (driven["speed"][k].get<double>() - driven["speed"][k - 1].get<double>());
+    worst = std::max(worst, std::abs(lhs - dt * (driven["torque"][k].get<double>() - 100.0)));
+  }
+  EXPECT_LT(worst, 1e-6);  // N m s (1e-8 measured; the steps' own Newton tolerance)
+}
+
+// The guard on energy from nothing (docs/models/dynamics.md, "Integrator: the guard on energy
+// from nothing"): the ramp's run (θ = ½, undamped, discrete gradient, w = c) to 1 s, and the
+// same with the sharp mouth, went on with retakes to 1 s, +2537 J and +2773 J in their
+// numerical terms and joints 2.42 and 2.90 mm deep. The numerical term passes twice the energy
+// each has received at 0.3215 s and 0.305 s (measured per step), where the guard's next sample
+// stops them, their joints under 1.2 mm (the balance still closed when they first went past c).
+TEST(DynamicsPocketCli, RampsDivergingRunStopsWhereItGainsEnergyFromNothing) {
+  for (const bool sharp : {false, true}) {
+    std::vector<std::pair<std::string, std::string>> keys{
+        {"axial_damping", "axial_damping = 0"},
+        {"contact_damping", "contact_damping = 0"},
+        {"duration", "duration = \"1 s\""},
+        {"", "theta = 0.5\nwork_balance = true\ndiscrete_gradient = true"}};
+    if (!sharp) keys.push_back({"", "pocket_mouth = \"0.1 mm\""});
+    const CliRun r =
+        run("dynamics " + example_with(sharp ? "sharp_1s.toml" : "ramp_1s.toml", keys) +
+            " --format json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    const int steps = j["summary"]["steps"].get<int>();
+    EXPECT_GT(steps, 2900) << sharp;
+    EXPECT_LT(steps, 3300) << sharp;
+    EXPECT_LT(j["summary"]["max_penetration"].get<double>(), 1.2e-3) << sharp;
+    bool gain = false;
+    for (const auto& d : j["diagnostics"])
+      if (d["code"] == "dynamics.energy_gain") {
+        gain = true;
+        EXPECT_EQ(d["value"].get<double>(),
+                  j["summary"]["work_balance"]["numerical"].get<double>());
+        EXPECT_GT(d["value"].get<double>(), d["limit"].get<double>());
+        EXPECT_GT(d["limit"].get<double>(), 100.0) << d.dump();  // the work put in dominates
+      }
+    EXPECT_TRUE(gain) << sharp << " " << j["diagnostics"].dump();
+    EXPECT_NE(r.err.find("catena: error: step "), std::string::npos) << r.err;
+  }
+}
+
+// The ramp's fold-free step from the model's own data (docs/models/dynamics.md, "Pocket wheel:
+// the ramp's fold"): h < √(2M/(θκ)), κ = Φ·(10/√3)/w² with Φ the peak of E₀(g) W(g) — about
+// 64.5 µs for the example's w = c = 0.1 mm at θ = ½ (the probe's 64 µs). Warned naming the key,
+// the bound and the retakes when the step is above it; the bound is proportional to w and to
+// 1/√θ; a step below it, and the sharp mouth, are not warned.
+TEST(DynamicsPocketCli, RampsFoldFreeStepIsWarnedFromTheModelsData) {
+  auto fold = [](const std::string& name, const std::string& keys, const std::string& flags) {
+    const CliRun r = run("dynamics " + example_with(name, {{"", keys}}) + " --duration 1ms " +
+                         flags + " --format json");
+    EXPECT_EQ(r.status, 0) << name << "\n" << r.err;
+    nlohmann::json found;
+    if (r.status != 0) return found;
+    const auto j = nlohmann::json::parse(r.out);
+    for (const auto& d : j["diagnostics"])
+      if (d["code"] == "dynamics.pocket_mouth_fold") found = d;
+    return found;
+  };
+  const auto half = fold("fold_half.toml", "pocket_mouth = \"0.1 mm\"\ntheta = 0.5", "");
+  ASSERT_FALSE(half.is_null());
+  EXPECT_EQ(half["severity"], "warning");
+  EXPECT_DOUBLE_EQ(half["value"].get<double>(), 1e-4);
+  const double bound = half["limit"].get<double>();
+  EXPECT_GT(bound, 6.3e-5);
+  EXPECT_LT(bound, 6.6e-5);
+  const std::string m = half["message"].get<std::string>();
+  for (const char* text : {"pocket_mouth = 0.1 mm with step = 0.1 ms", "2 m/(theta step^2) = ",
+                           "retaken as half-steps (dynamics.steps_retaken)",
+                           "steps below 0.0645 ms keep the ramp fold-free"})
+    EXPECT_NE(m.find(text), std::string::npos) << text << "\n" << m;
+  const auto narrow = fold("fold_narrow.toml", "pocket_mouth = \"0.05 mm\"\ntheta = 0.5", "");
+  ASSERT_FALSE(narrow.is_null());
+  EXPECT_NEAR(narrow["limit"].get<double>(), 0.5 * bound, 1e-12 * bound);
+  const auto damped = fold("fold_damped.toml", "pocket_mouth = \"0.1 mm\"\ntheta = 0.6", "");
+  ASSERT_FALSE(damped.is_null());
+  EXPECT_NEAR(damped["limit"].get<double>(), bound * std::sqrt(0.5 / 0.6), 1e-12 * bound);
+  EXPECT_TRUE(
+      fold("fold_small.toml", "pocket_mouth = \"0.1 mm\"\ntheta = 0.5", "--step 0.06ms").is_null());
+  EXPECT_TRUE(fold("fold_sharp.toml", "theta = 0.5", "").is_null());
+}

@@ -28,6 +28,13 @@ struct PocketVertex {
 };
 PocketVertex nearest_pocket(const Sprocket& w, double polar, double angle);
 
+/// [N/m] The mouth's ramp's largest radial softening (docs/models/dynamics.md, "Pocket wheel: the
+/// ramp's fold"): −∂²E/∂ρ² of the ramp's energy E₀(g) W(g) s(h) at most Φ·max|s''|, with
+/// Φ = max over g of E₀(g) W(g) (at g ≈ 1.3c) and max|s''| = 10/√3 / w², w = pocket_mouth. A
+/// joint's step matrix keeps its radial row's mass term 2M/h above hθ times that while
+/// h² < 2M/(θ·softening): past it a step's equations may fold. 0 without a ramp.
+double pocket_ramp_softening(const Sprocket& w);
+
 /// The pocket fields' problems ("<prefix>pocket_angle", "pocket_clearance", "contact_stiffness",
 /// "contact_smoothing"), appended to `out`; called by validate(Model) for a pocket wheel.
 void pocket_issues(std::vector<Issue>& out, const Sprocket& w, const std::string& prefix);

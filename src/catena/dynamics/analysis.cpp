@@ -2943,6 +2943,59 @@ std::optional<Diagnostic> bare_end_struck(const Setup& d, const State& s,
       "m"};
 }
 
+// A failed step retaken as two half-steps, recursively (docs/models/dynamics.md, "Integrator: a
+// failed step retaken as half-steps"): the sub-steps h/2 … h/2^kRetakeLevels, each with its own
+// integrator (made at the first retake; its predictor history and kept factors are its own, and
+// the run's integrator meets the retaken step's end at a time its history is not of: it starts
+// the next step from constant velocity with fresh factors). At most 2 + 4 + … + 2^L = 30 step
+// solves for one failed step at L = 4.
+constexpr int kRetakeLevels = 4;
+
+// What the sub-steps of a retaken step add up to, as the run's loop adds up a step's: the
+// driver's and the loads' work −T Δψ per sub-step, each wheel's applied torque weighted by its
+// share of h (the sample's mean torque stays the mean over time), the deepest penetration, and
+// the deepest level reached.
+struct Retake {
+  double work = 0.0;
+  std::vector<double> torque;       // Σ (h_i / h) τ_i per wheel
+  std::vector<double> wheel_force;  // the last sub-step's, per wheel (the take-ups' watch)
+  double max_penetration = 0.0;
+  int level = 0;
+};
+
+// Two steps of h / 2^level from s (each failed one split again below the floor): true when both
+// converged, s then at their end; false leaves s partly advanced (the caller restores it).
+bool retake_halves(const Model& model, const Setup& d, std::vector<std::optional<Integrator>>& sub,
+                   State& s, int level, Retake& acc) {
+  std::optional<Integrator>& integ = sub[static_cast<std::size_t>(level - 1)];
+  const double scale = 1.0 / static_cast<double>(1 << level);  // a power of 2: exact
+  if (!integ) integ.emplace(model, IntegratorOptions{.step = d.step * scale, .theta = d.theta});
+  const std::size_t nw = model.sprockets.size();
+  std::vector<double> angle0(nw);
+  for (int half = 0; half < 2; ++half) {
+    std::copy(s.angle.begin(), s.angle.end(), angle0.begin());
+    const StepReport rep = integ->step(model, s);
+    if (!rep.converged) {  // the state is as it was: split this half again, down to the floor
+      if (level == kRetakeLevels || !retake_halves(model, d, sub, s, level + 1, acc)) return false;
+      continue;
+    }
+    acc.level = std::max(acc.level, level);
+    acc.max_penetration = std::max(acc.max_penetration, rep.max_penetration);
+    const std::vector<double>& torque = integ->applied_torque();
+    double dw = -torque[d.driver] * (s.angle[d.driver] - angle0[d.driver]);
+    for (std::size_t w = 0; w < nw; ++w)
+      if (w != d.driver) dw -= model.sprockets[w].load_torque * (s.angle[w] - angle0[w]);
+    acc.work += dw;
+    for (std::size_t w = 0; w < nw; ++w) acc.torque[w] += scale * torque[w];
+    acc.wheel_force = integ->applied_wheel_force();
+  }
+  return true;
+}
+
+// The guard on energy from nothing: the numerical term's bound in multiples of the energy the run
+// has received (docs/models/dynamics.md, "Integrator: the guard on energy from nothing").
+constexpr double kEnergyGainBound = 2.0;
+
 Result run(const analysis::Inputs& in) {
   Result out;
   out.setup = parse(in);
@@ -3139,26 +3192,103 @@ Result run(const analysis::Inputs& in) {
     }
   };
   snapshot();
-  const double e0 = energy(model, s).total();
+  const Energy start_energy = energy(model, s);
+  const double e0 = start_energy.total();
   // the work the driver puts in and the load takes out over each step: the driver's applied
   // (θ-point) torque and the load torque times the angles the wheels turned
   double work = 0.0;
+  // the work balance at the state s of total energy `total` (summary.work_balance): the drift,
+  // E − E₀ less the work of the driver, the loads and the model's friction and rails' loads, and
+  // returned, the numerical term, the drift less the dampers' work (the end's summary and the
+  // guard below: one computation)
+  const bool rail_load = any_rail_load(d), load_inertia = any_load_inertia(d.guides);
+  auto balance = [&](double total, double& drift) {
+    drift = total - e0 - work - s.friction_work - s.seat_friction_work - s.hinge_work;
+    if (rail_load) drift -= s.load_work;  // a run without a load computes as before
+    if (load_inertia) drift -= s.load_catch_work + s.load_discharge_work;
+    double numerical = drift - s.damper_work - s.contact_damping_work;
+    if (!out.takeup.empty()) numerical -= s.takeup_damper_work;  // likewise without a take-up
+    return numerical;
+  };
+  // The guard on energy from nothing (docs/models/dynamics.md, "Integrator: the guard on energy
+  // from nothing"): the run has received the start's kinetic and elastic energy K₀ + V₀, the
+  // potential energy released since (gravity's, the loads', the take-ups' force's) and the work
+  // put in by the driver and the loads; a numerical term N (the balance's energy from nothing)
+  // larger than twice all of it is a loop holding more energy from nothing than it was ever
+  // given, a run that diverges (the θ point's one-step gains at a coarse step's start measured up
+  // to 1.8 times it): an error that stops it there, with the output up to there as after a failed
+  // step. Checked at each sample and the last step (the energy is not otherwise computed).
+  const double start_motion = start_energy.kinetic + start_energy.elastic;
+  auto gained = [&](int step) {
+    const Energy now = energy(model, s);
+    double drift = 0.0;
+    const double numerical = balance(now.total(), drift);
+    const double released = std::max(0.0, start_energy.potential - now.potential);
+    const double received = start_motion + released + std::max(0.0, work);
+    if (!(numerical > kEnergyGainBound * received)) return false;
+    // a roller crossing a rail's square end gains its contact's energy as it strikes: the strike
+    // is named as before, at the step that fails on it (dynamics.bare_rail_end)
+    if (bare_end_struck(d, s, std::string())) return false;
+    std::string advice = "a smaller step";
+    if (d.theta < 1.0) advice = "theta nearer 1, " + advice;
+    if (!d.discrete_gradient) advice += ", or discrete_gradient = true";
+    out.diagnostics.push_back(
+        {Diagnostic::Severity::kError, "dynamics.energy_gain",
+         "step " + std::to_string(step) + " (t = " + format_g(s.time, 6) +
+             " s): the work balance's numerical term, energy gained from nothing, is " +
+             format_g(numerical, 4) + " J, more than twice the " + format_g(received, 4) +
+             " J the run has received (the start's kinetic and elastic energy " +
+             format_g(start_motion, 4) + " J, the potential energy released " +
+             format_g(released, 4) + " J, the work put in by the driver and the loads " +
+             format_g(work, 4) + " J); the loop's kinetic energy is " + format_g(now.kinetic, 4) +
+             " J: the run diverges and stopped there (try " + advice + ")",
+         numerical, kEnergyGainBound * received, "J"});
+    return true;
+  };
   sample();
   const auto started = std::chrono::steady_clock::now();
   ProgressLoop loop(static_cast<std::size_t>(steps), "steps");
   std::vector<double> angle0(nw);
+  // the failed steps retaken as half-steps: their integrators, how many, the first's step and the
+  // deepest level
+  std::vector<std::optional<Integrator>> sub(kRetakeLevels);
+  int retaken = 0, first_retaken = 0, deepest = 0;
   for (int k = 0; k < steps; ++k) {
     std::copy(s.angle.begin(), s.angle.end(), angle0.begin());
     const StepReport rep = integ.step(model, s);
-    out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
     if (!rep.converged) {
       const std::string failed =
           "step " + std::to_string(k + 1) + " (t = " + format_g(s.time + d.step, 6) +
           " s) did not converge in " + newton_iterations_text(rep, integ.options().max_iterations);
+      // a roller struck at a rail's square end over the full step stops the run as it did
+      // before the retakes (the strike need not converge however small the step)
       if (std::optional<Diagnostic> struck = bare_end_struck(d, s, failed)) {
+        out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
         out.diagnostics.push_back(std::move(*struck));
         break;
       }
+      // the step again from its start as two half-steps (each split again down to h/16): the
+      // grid's step k + 1 when they converge, its accounting theirs
+      const State start = s;
+      Retake acc{.torque = std::vector<double>(nw, 0.0)};
+      if (retake_halves(model, d, sub, s, 1, acc)) {
+        s.time = start.time + d.step;  // the grid's time, as the step would have set it
+        if (retaken++ == 0) first_retaken = k + 1;
+        deepest = std::max(deepest, acc.level);
+        out.max_penetration = std::max(out.max_penetration, acc.max_penetration);
+        ++out.steps;
+        work += acc.work;
+        for (std::size_t w = 0; w < nw; ++w) applied[w] += acc.torque[w];
+        watch_takeups(acc.wheel_force);
+        ++since;
+        if ((k + 1) % every == 0) sample();
+        if (((k + 1) % every == 0 || k + 1 == steps) && gained(k + 1)) break;
+        if ((k + 1) % frame_every == 0) snapshot();
+        loop.step(static_cast<std::size_t>(k + 1));
+        continue;
+      }
+      s = start;  // the run's end as if the step had failed without the retake
+      out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
       out.diagnostics.push_back(
           {Diagnostic::Severity::kError, "dynamics.not_converged",
            failed + "; the run stopped there (try a smaller step or theta nearer 1" +
@@ -3167,6 +3297,7 @@ Result run(const analysis::Inputs& in) {
            s.time + d.step, d.duration});
       break;
     }
+    out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
     ++out.steps;
     const std::vector<double>& torque = integ.applied_torque();
     double dw = -torque[d.driver] * (s.angle[d.driver] - angle0[d.driver]);
@@ -3177,6 +3308,7 @@ Result run(const analysis::Inputs& in) {
     watch_takeups(integ.applied_wheel_force());
     ++since;
     if ((k + 1) % every == 0) sample();
+    if (((k + 1) % every == 0 || k + 1 == steps) && gained(k + 1)) break;
     if ((k + 1) % frame_every == 0) snapshot();
     loop.step(static_cast<std::size_t>(k + 1));
   }
@@ -3186,30 +3318,21 @@ Result run(const analysis::Inputs& in) {
   out.seat_friction_work = s.seat_friction_work;
   // likewise the hinges' friction work (0 without hinge friction)
   out.hinge_work = s.hinge_work;
-  out.energy_drift =
-      energy(model, s).total() - e0 - work - s.friction_work - s.seat_friction_work - s.hinge_work;
-  // the rails' loads' work (a run without a load computes as before)
-  if (any_rail_load(d)) {
-    out.load_work = s.load_work;
-    out.energy_drift -= s.load_work;
-  }
-  // the load's catch and discharge (a run without load_inertia computes as before)
-  if (any_load_inertia(d.guides)) {
+  // the rails' loads' work, the load's catch and discharge, the dampers' and the take-ups'
+  // dampers' (each 0 in a run without it); the numerical term: what the model's dissipation does
+  // not account for, the θ-method and the contacts' penalty (evaluated at the θ point, not by a
+  // discrete gradient)
+  out.numerical_work = balance(energy(model, s).total(), out.energy_drift);
+  if (rail_load) out.load_work = s.load_work;
+  if (load_inertia) {
     out.load_catch_work = s.load_catch_work;
     out.load_arrival_work = s.load_arrival_work;
     out.load_discharge_work = s.load_discharge_work;
-    out.energy_drift -= s.load_catch_work + s.load_discharge_work;
   }
   out.input_work = work;
   out.damper_work = s.damper_work;
   out.contact_damping_work = s.contact_damping_work;
-  // what the model's dissipation does not account for: the θ-method and the contacts' penalty
-  // (evaluated at the θ point, not by a discrete gradient)
-  out.numerical_work = out.energy_drift - s.damper_work - s.contact_damping_work;
-  if (!out.takeup.empty()) {  // the take-ups' dampers (a run without one computes as before)
-    out.takeup_damper_work = s.takeup_damper_work;
-    out.numerical_work -= s.takeup_damper_work;
-  }
+  if (!out.takeup.empty()) out.takeup_damper_work = s.takeup_damper_work;
   for (TakeupSeries& tu : out.takeup) {
     const Sprocket& wh = wheels[tu.wheel];
     const LayoutWheel& lw = d.wheels[tu.wheel];
@@ -3242,6 +3365,45 @@ Result run(const analysis::Inputs& in) {
                " s",
            tu.lost.front().first, lw.takeup_lost_time});
     }
+  }
+  // the steps retaken as half-steps (docs/models/dynamics.md, "Integrator: a failed step retaken
+  // as half-steps"): only when there were some
+  if (retaken > 0) {
+    const double smallest = d.step / static_cast<double>(1 << deepest);
+    out.diagnostics.push_back(
+        {Diagnostic::Severity::kWarning, "dynamics.steps_retaken",
+         std::to_string(retaken) + (retaken == 1 ? " step" : " steps") +
+             " of step = " + format_g(d.step * 1e3, 4) +
+             " ms did not converge and were retaken from their start as two half-steps (each "
+             "split again where it failed, down to step/" +
+             std::to_string(1 << kRetakeLevels) + "): the smallest sub-step " +
+             format_g(smallest * 1e3, 4) + " ms, the first at step " +
+             std::to_string(first_retaken) + " (t = " + format_g(first_retaken * d.step, 6) +
+             " s). A retaken step is one step of the output; a smaller step may not need them",
+         smallest, d.step, "s"});
+  }
+  // the mouth's ramp past its fold-free step (docs/models/dynamics.md, "Pocket wheel: the ramp's
+  // fold"): a joint's radial row 2M/h + hθ K_rr keeps its sign while the ramp's softening
+  // |K_rr| ≤ κ stays below 2M/(θh²), i.e. h < √(2M/(θκ)), M the joint's mass
+  if (d.pocket && d.mouth > 0.0 && !model.sprockets.empty()) {
+    const double kappa = pocket_ramp_softening(model.sprockets.front());
+    const double mass = d.mass_per_metre * d.pitch;
+    const double bound = std::sqrt(2.0 * mass / (d.theta * kappa));
+    if (d.step > bound)
+      out.diagnostics.push_back(
+          {Diagnostic::Severity::kWarning, "dynamics.pocket_mouth_fold",
+           "pocket_mouth = " + format_g(d.mouth * 1e3, 4) +
+               " mm with step = " + format_g(d.step * 1e3, 4) +
+               " ms: the mouth's ramp softens a joint radially by up to " + format_g(kappa, 3) +
+               " N/m (its peak energy E0 W times the ramp's largest curvature "
+               "10/sqrt(3)/pocket_mouth^2), more than the joint's 2 m/(theta step^2) = " +
+               format_g(2.0 * mass / (d.theta * d.step * d.step), 3) +
+               " N/m: a step there may have no solution near its start (a fold) and is then "
+               "retaken as half-steps (dynamics.steps_retaken); steps below " +
+               format_g(down_to(bound * 1e3, 3), 3) +
+               " ms keep the ramp fold-free (docs/models/dynamics.md, \"Pocket wheel: the ramp's "
+               "fold\")",
+           d.step, bound, "s"});
   }
   // a joint deeper than the pocket's clearance c: the validations' joints stay within 0.56 c
   // (docs/models/dynamics.md, "Pocket wheel: the body between the pockets")

@@ -868,6 +868,21 @@ void update_held(const Model& model, State& s) {
   }
 }
 
+double pocket_ramp_softening(const Sprocket& w) {
+  if (!(w.pocket_mouth > 0.0)) return 0.0;
+  // Φ(g) = E₀(g) W(g) on a grid of c/2000 over c ≤ g ≤ 2c (W = 1 below c, where E₀ grows, and 0
+  // from 2c): its peak to about 1e-7 of itself, Φ being smooth there
+  constexpr int kPoints = 2000;
+  const double cl = w.pocket_clearance;
+  double peak = 0.0;
+  for (int i = 0; i <= kPoints; ++i) {
+    const double g = cl * (1.0 + static_cast<double>(i) / kPoints);
+    peak = std::max(peak, elastic(w, g).energy * (1.0 - smooth_step(g, cl, 2.0 * cl).s));
+  }
+  // the quintic step's largest |s''|, at x = (3 ± √3)/6: 10/√3 over w²
+  return peak * 10.0 / std::sqrt(3.0) / (w.pocket_mouth * w.pocket_mouth);
+}
+
 void pocket_issues(std::vector<Issue>& out, const Sprocket& w, const std::string& f) {
   constexpr double kPi = std::numbers::pi;
   const double tau = w.teeth > 0 ? 2.0 * kPi / w.teeth : 0.0;
