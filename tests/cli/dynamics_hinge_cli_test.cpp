@@ -309,20 +309,25 @@ TEST(DynamicsHingeCli, StickLawBoundsFollowTheStep) {
   EXPECT_TRUE(warning) << warned["diagnostics"].dump();
   EXPECT_TRUE(retaken) << warned["diagnostics"].dump();
   EXPECT_EQ(warned["summary"]["steps"], 20);
-  // no message names the key without the stick law: stiff links at 1 ms, whose step 3 fails and
-  // is retaken
+  // without the stick law a failure is retaken the same way: stiff links at 1 ms, whose step 3
+  // fails and is retaken (the not_converged advice without the key is pinned in
+  // DynamicsPocketCli.AStepFailingAtTheRetakesFloorEndsTheRunAtItsStart; the advice naming
+  // hinge_stick_stiffness is reached by no case found, every stick-law failure tried being
+  // carried by the retakes)
   const std::string links = example_with("links_1e9.toml", "");
   std::string text = read_text(links);
   text.replace(text.find("\"5e7 N/m\""), 9, "\"1e9 N/m\"");
   std::ofstream(links) << text;
   const auto stiff_links = run_json(links, "--step 1ms --duration 5ms");
-  bool stopped = false;
+  bool links_retaken = false;
   for (const auto& d : stiff_links["diagnostics"]) {
-    stopped = stopped || d["code"] == "dynamics.steps_retaken";
-    EXPECT_EQ(d["message"].get<std::string>().find("hinge_stick_stiffness"), std::string::npos)
-        << d.dump();
+    EXPECT_NE(d["code"], "dynamics.not_converged") << d.dump();
+    if (d["code"] == "dynamics.steps_retaken")
+      links_retaken =
+          d["message"].get<std::string>().find("the first at step 3 ") != std::string::npos;
   }
-  EXPECT_TRUE(stopped) << stiff_links["diagnostics"].dump();
+  EXPECT_TRUE(links_retaken) << stiff_links["diagnostics"].dump();
+  EXPECT_EQ(stiff_links["summary"]["steps"], 5);
 
   const CliRun damped =
       run("dynamics " +

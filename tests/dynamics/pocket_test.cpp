@@ -401,6 +401,49 @@ MouthEntry mouth_entry(double mouth, double speed, double offset) {
   return out;
 }
 
+// The ramp's fold bound (docs/models/dynamics.md, "Pocket wheel: the ramp's fold"): the largest
+// softening −λ_min(∇²E) of the contact's energy over the ramp's region, from central differences
+// of pocket_contact's energy alone (a vertex at the wheel's angle 0.2, not the 0 the bound is
+// taken at), is at most pocket_ramp_softening and within 1 % of it, for w = c, c/2 and c/10. The
+// energy's Hessian has terms beyond the ramp's Φ s'' r̂r̂ᵀ: at w = c the fade's Φ'' s n nᵀ and the
+// cross term −Φ' s' (n r̂ᵀ + r̂ nᵀ) make it 1.81 times Φmax (10/√3)/w².
+TEST(DynamicsPocket, RampsSofteningBoundsTheEnergysHessian) {
+  const Sprocket base = wheel();
+  const double c = base.pocket_clearance, r = base.pitch_radius, psi = 0.2, d = 2e-8;
+  for (double frac : {1.0, 0.5, 0.1}) {
+    Sprocket ramped = base;
+    ramped.pocket_mouth = frac * c;
+    const double w = ramped.pocket_mouth, low = r + 0.5 * c;
+    auto energy = [&](double x, double y) {
+      return pocket_contact(ramped, x, y, 0.0, 0.0, psi, 0.0).energy;
+    };
+    double worst = 0.0;
+    constexpr int kRho = 80, kPolar = 240;
+    const double top = std::asin(3.0 * c / r);
+    for (int i = 1; i < kRho; ++i) {
+      const double rho = low + w * i / kRho;
+      if (!(rho - 2.0 * d > low && rho + 2.0 * d < low + w)) continue;  // the stencil on the ramp
+      for (int j = 0; j <= kPolar; ++j) {
+        const double polar = psi - top + 2.0 * top * j / kPolar;
+        const double x = ramped.centre_x + rho * std::cos(polar);
+        const double y = ramped.centre_y + rho * std::sin(polar);
+        const double e = energy(x, y);
+        const double exx = (energy(x + d, y) - 2.0 * e + energy(x - d, y)) / (d * d);
+        const double eyy = (energy(x, y + d) - 2.0 * e + energy(x, y - d)) / (d * d);
+        const double exy = (energy(x + d, y + d) - energy(x + d, y - d) - energy(x - d, y + d) +
+                            energy(x - d, y - d)) /
+                           (4.0 * d * d);
+        const double lmin = 0.5 * (exx + eyy) - std::hypot(0.5 * (exx - eyy), exy);
+        worst = std::max(worst, -lmin);
+      }
+    }
+    const double kappa = pocket_ramp_softening(ramped);
+    EXPECT_LE(worst, kappa * (1.0 + 1e-4)) << frac;
+    EXPECT_GE(worst, 0.99 * kappa) << frac;
+    std::printf("w = %.2f c: max -lambda_min %.4e N/m, kappa %.4e N/m\n", frac, worst, kappa);
+  }
+}
+
 // On the mouth's ramp the reported depth (SeatContact::depth, max_penetration) is the seats'
 // law's depth for the elastic force the ramp actually gives, not g (up to 2c there, at almost no
 // force near the ramp's top; more than the unramped force where its radial push is steep);

@@ -28,11 +28,12 @@ struct PocketVertex {
 };
 PocketVertex nearest_pocket(const Sprocket& w, double polar, double angle);
 
-/// [N/m] The mouth's ramp's largest radial softening (docs/models/dynamics.md, "Pocket wheel: the
-/// ramp's fold"): −∂²E/∂ρ² of the ramp's energy E₀(g) W(g) s(h) at most Φ·max|s''|, with
-/// Φ = max over g of E₀(g) W(g) (at g ≈ 1.3c) and max|s''| = 10/√3 / w², w = pocket_mouth. A
-/// joint's step matrix keeps its radial row's mass term 2M/h above hθ times that while
-/// h² < 2M/(θ·softening): past it a step's equations may fold. 0 without a ramp.
+/// [N/m] The mouth's ramp's largest softening κ (docs/models/dynamics.md, "Pocket wheel: the
+/// ramp's fold"): the largest −λ_min(∇²E) of the contact's elastic energy over the ramp's region,
+/// the largest eigenvalue of its exact elastic ∂F/∂q sampled on a grid (64 radii × 256 polar
+/// angles about a vertex, two zooms about the largest). A joint's step matrix
+/// M/(hθ) + hθ ∇²E (the θ point's force) stays definite while κ < M/(θh)², i.e.
+/// h < √(M/κ)/θ. 0 without a ramp.
 double pocket_ramp_softening(const Sprocket& w);
 
 /// The pocket fields' problems ("<prefix>pocket_angle", "pocket_clearance", "contact_stiffness",

@@ -2963,6 +2963,21 @@ struct Retake {
   int level = 0;
 };
 
+// A step's (or a retaken step's sub-step's) accounting, the same for both: the driver's (θ-point)
+// torque and the loads' work −T Δψ over it (angle0 the wheels' angles at its start), returned,
+// and each wheel's applied torque times `weight`, its share of the grid step (1 for a whole step:
+// exact), added to `applied`.
+double step_accounting(const Model& model, std::size_t driver, const std::vector<double>& angle0,
+                       const State& s, const std::vector<double>& torque, double weight,
+                       std::vector<double>& applied) {
+  const std::size_t nw = model.sprockets.size();
+  double dw = -torque[driver] * (s.angle[driver] - angle0[driver]);
+  for (std::size_t w = 0; w < nw; ++w)
+    if (w != driver) dw -= model.sprockets[w].load_torque * (s.angle[w] - angle0[w]);
+  for (std::size_t w = 0; w < nw; ++w) applied[w] += weight * torque[w];
+  return dw;
+}
+
 // Two steps of h / 2^level from s (each failed one split again below the floor): true when both
 // converged, s then at their end; false leaves s partly advanced (the caller restores it).
 bool retake_halves(const Model& model, const Setup& d, std::vector<std::optional<Integrator>>& sub,
@@ -2981,12 +2996,8 @@ bool retake_halves(const Model& model, const Setup& d, std::vector<std::optional
     }
     acc.level = std::max(acc.level, level);
     acc.max_penetration = std::max(acc.max_penetration, rep.max_penetration);
-    const std::vector<double>& torque = integ->applied_torque();
-    double dw = -torque[d.driver] * (s.angle[d.driver] - angle0[d.driver]);
-    for (std::size_t w = 0; w < nw; ++w)
-      if (w != d.driver) dw -= model.sprockets[w].load_torque * (s.angle[w] - angle0[w]);
-    acc.work += dw;
-    for (std::size_t w = 0; w < nw; ++w) acc.torque[w] += scale * torque[w];
+    acc.work +=
+        step_accounting(model, d.driver, angle0, s, integ->applied_torque(), scale, acc.torque);
     acc.wheel_force = integ->applied_wheel_force();
   }
   return true;
@@ -3261,7 +3272,8 @@ Result run(const analysis::Inputs& in) {
           "step " + std::to_string(k + 1) + " (t = " + format_g(s.time + d.step, 6) +
           " s) did not converge in " + newton_iterations_text(rep, integ.options().max_iterations);
       // a roller struck at a rail's square end over the full step stops the run as it did
-      // before the retakes (the strike need not converge however small the step)
+      // before the retakes, judged first so that the strike is named: the half-steps can
+      // converge through it, and their result would be a roller struck through a square end
       if (std::optional<Diagnostic> struck = bare_end_struck(d, s, failed)) {
         out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
         out.diagnostics.push_back(std::move(*struck));
@@ -3291,7 +3303,9 @@ Result run(const analysis::Inputs& in) {
       out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
       out.diagnostics.push_back(
           {Diagnostic::Severity::kError, "dynamics.not_converged",
-           failed + "; the run stopped there (try a smaller step or theta nearer 1" +
+           failed + "; also retaken from its start as half-steps down to step/" +
+               std::to_string(1 << kRetakeLevels) +
+               ", which failed too; the run stopped there (try a smaller step or theta nearer 1" +
                (d.hinge_law.stick_stiffness > 0.0 ? ", or a smaller hinge_stick_stiffness" : "") +
                ")",
            s.time + d.step, d.duration});
@@ -3299,12 +3313,7 @@ Result run(const analysis::Inputs& in) {
     }
     out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
     ++out.steps;
-    const std::vector<double>& torque = integ.applied_torque();
-    double dw = -torque[d.driver] * (s.angle[d.driver] - angle0[d.driver]);
-    for (std::size_t w = 0; w < nw; ++w)
-      if (w != d.driver) dw -= wheels[w].load_torque * (s.angle[w] - angle0[w]);
-    work += dw;
-    for (std::size_t w = 0; w < nw; ++w) applied[w] += torque[w];
+    work += step_accounting(model, d.driver, angle0, s, integ.applied_torque(), 1.0, applied);
     watch_takeups(integ.applied_wheel_force());
     ++since;
     if ((k + 1) % every == 0) sample();
@@ -3383,26 +3392,28 @@ Result run(const analysis::Inputs& in) {
          smallest, d.step, "s"});
   }
   // the mouth's ramp past its fold-free step (docs/models/dynamics.md, "Pocket wheel: the ramp's
-  // fold"): a joint's radial row 2M/h + hθ K_rr keeps its sign while the ramp's softening
-  // |K_rr| ≤ κ stays below 2M/(θh²), i.e. h < √(2M/(θκ)), M the joint's mass
+  // fold"): a joint's step residual M/(hθ) (u − x₀ − h v₀) − h F(x₀ + θ(u − x₀)) has the
+  // Jacobian M/(hθ) + hθ K, K = −∂F/∂q ≥ −κ over the ramp, which stays positive definite while
+  // κ < M/(θh)², i.e. h < √(M/κ)/θ, M the joint's mass
   if (d.pocket && d.mouth > 0.0 && !model.sprockets.empty()) {
     const double kappa = pocket_ramp_softening(model.sprockets.front());
     const double mass = d.mass_per_metre * d.pitch;
-    const double bound = std::sqrt(2.0 * mass / (d.theta * kappa));
+    const double bound = std::sqrt(mass / kappa) / d.theta;
+    const double held = mass / (d.theta * d.theta * d.step * d.step);
     if (d.step > bound)
       out.diagnostics.push_back(
           {Diagnostic::Severity::kWarning, "dynamics.pocket_mouth_fold",
            "pocket_mouth = " + format_g(d.mouth * 1e3, 4) +
                " mm with step = " + format_g(d.step * 1e3, 4) +
-               " ms: the mouth's ramp softens a joint radially by up to " + format_g(kappa, 3) +
-               " N/m (its peak energy E0 W times the ramp's largest curvature "
-               "10/sqrt(3)/pocket_mouth^2), more than the joint's 2 m/(theta step^2) = " +
-               format_g(2.0 * mass / (d.theta * d.step * d.step), 3) +
+               " ms: the mouth's ramp softens a joint by up to " + format_g(kappa, 3) +
+               " N/m (the largest eigenvalue of the contact's -d2E/dq2 over the ramp), more than "
+               "the joint's m/(theta step)^2 = " +
+               format_g(held, 3) +
                " N/m: a step there may have no solution near its start (a fold) and is then "
-               "retaken as half-steps (dynamics.steps_retaken); steps below " +
+               "retaken as half-steps (dynamics.steps_retaken); below " +
                format_g(down_to(bound * 1e3, 3), 3) +
-               " ms keep the ramp fold-free (docs/models/dynamics.md, \"Pocket wheel: the ramp's "
-               "fold\")",
+               " ms a single joint's step cannot fold on the ramp (docs/models/dynamics.md, "
+               "\"Pocket wheel: the ramp's fold\")",
            d.step, bound, "s"});
   }
   // a joint deeper than the pocket's clearance c: the validations' joints stay within 0.56 c

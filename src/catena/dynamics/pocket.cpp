@@ -870,17 +870,47 @@ void update_held(const Model& model, State& s) {
 
 double pocket_ramp_softening(const Sprocket& w) {
   if (!(w.pocket_mouth > 0.0)) return 0.0;
-  // Φ(g) = E₀(g) W(g) on a grid of c/2000 over c ≤ g ≤ 2c (W = 1 below c, where E₀ grows, and 0
-  // from 2c): its peak to about 1e-7 of itself, Φ being smooth there
-  constexpr int kPoints = 2000;
-  const double cl = w.pocket_clearance;
-  double peak = 0.0;
-  for (int i = 0; i <= kPoints; ++i) {
-    const double g = cl * (1.0 + static_cast<double>(i) / kPoints);
-    peak = std::max(peak, elastic(w, g).energy * (1.0 - smooth_step(g, cl, 2.0 * cl).s));
+  // The largest eigenvalue of the contact's own exact elastic ∂F/∂q = −∇²E (elastic_jacobian, at
+  // rest: no damping) over the ramp's region about pocket 0's vertex, the wheel at angle 0:
+  // R + c/2 < ρ < R + c/2 + w and |p − vertex| < 3c (W = 0 from g = 2c on), so polar angles up to
+  // asin(3c/R). E depends on (ρ, g) alone there, so this covers every pocket. A grid, then two
+  // zooms about its largest cell.
+  const double cl = w.pocket_clearance, r = w.pitch_radius, low = r + 0.5 * cl;
+  const double top = std::asin(std::min(1.0, 3.0 * cl / r));
+  auto softening = [&](double rho, double polar) {
+    const double x = w.centre_x + rho * std::cos(polar), y = w.centre_y + rho * std::sin(polar);
+    const SeatContact k = pocket_contact(w, x, y, 0.0, 0.0, 0.0, 0.0);
+    double j[4];
+    elastic_jacobian(k, j);
+    const double mean = 0.5 * (j[0] + j[3]), half = 0.5 * (j[0] - j[3]);
+    const double off = 0.5 * (j[1] + j[2]);
+    return mean + std::sqrt(half * half + off * off);
+  };
+  constexpr int kRho = 64, kPolar = 256, kZoom = 16;
+  double rho_from = low, rho_step = w.pocket_mouth / kRho;
+  double polar_from = -top, polar_step = 2.0 * top / kPolar;
+  int ni = kRho, nj = kPolar;
+  double best = 0.0, best_rho = low + 0.5 * w.pocket_mouth, best_polar = 0.0;
+  for (int pass = 0; pass < 3; ++pass) {
+    for (int i = 0; i <= ni; ++i) {
+      const double rho = std::clamp(rho_from + i * rho_step, low, low + w.pocket_mouth);
+      for (int j = 0; j <= nj; ++j) {
+        const double polar = polar_from + j * polar_step, v = softening(rho, polar);
+        if (v > best) {
+          best = v;
+          best_rho = rho;
+          best_polar = polar;
+        }
+      }
+    }
+    // the next pass: ±1 cell about the largest, in kZoom cells each way
+    rho_from = best_rho - rho_step;
+    polar_from = best_polar - polar_step;
+    rho_step *= 2.0 / kZoom;
+    polar_step *= 2.0 / kZoom;
+    ni = nj = kZoom;
   }
-  // the quintic step's largest |s''|, at x = (3 ± √3)/6: 10/√3 over w²
-  return peak * 10.0 / std::sqrt(3.0) / (w.pocket_mouth * w.pocket_mouth);
+  return best;
 }
 
 void pocket_issues(std::vector<Issue>& out, const Sprocket& w, const std::string& f) {
