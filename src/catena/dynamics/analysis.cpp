@@ -890,10 +890,13 @@ std::string slack_measure_text(const Setup& s, const std::vector<std::size_t>& p
   const bool hangs = !sag_spans(s.path, pieces, half * (1.0 + 1e-9)).pieces.empty();
   // with more than one span the limit may be cut within a pitch a span below the half circle by
   // the tangent lay a count there may take; one laid as arcs may still start up to the arcs' own
-  // limit, said with it
-  const double arcs = pieces.size() > 1 ? sag_spans_arcs_limit(s.path, pieces, s.circles, s.tip,
-                                                               guides, s.roller, s.pitch)
-                                        : 0.0;
+  // limit, said with it (below the band only the arcs are checked: there the limit is theirs;
+  // 1e-5 of the chords: the limit is bisected to 1e-6 of them)
+  const double band = s.pitch * static_cast<double>(pieces.size());
+  const double arcs =
+      pieces.size() > 1 && most >= half - band - 1e-5 * spans && most < half
+          ? sag_spans_arcs_limit(s.path, pieces, s.circles, s.tip, guides, s.roller, s.pitch)
+          : 0.0;
   const bool arcs_beyond = arcs > most + 1e-6 * spans;
   const std::string count = std::to_string(given) + " links";
   // beyond the half circle a span laid tangent to its wheels cuts their wraps short: e is the
