@@ -864,8 +864,8 @@ TEST(DynamicsLayoutCli, LongerChainStartsWithSlackUpToItsLimit) {
   EXPECT_NE(refused.err.find("dynamics.links (line "), std::string::npos) << refused.err;
   EXPECT_NE(refused.err.find(") = 180: expected"), std::string::npos) << refused.err;
   EXPECT_NE(refused.err.find("or a chain longer than the path, its slack span sprocket[2] -> "
-                             "sprocket[1] sagging by an extra length e (the arc's length beyond "
-                             "its chord) of at most about "),
+                             "sprocket[1] sagging by an extra length e (the sag's length beyond "
+                             "its chord, less what it cuts off the wraps) of at most about "),
             std::string::npos)
       << refused.err;
   // nothing under the span stops it: the limit is the longest catenary's extra, 10 c, c the slack
@@ -1061,14 +1061,16 @@ TEST(DynamicsLayoutCli, TableNamesTheLinksChosenAsTheJsonDoes) {
 // 12B roller is 12.07 mm: they overlap), and 371 links with 4.7 mm; now 365 is refused naming the
 // other wall and the most links that start, 364, which start with every span sagging (the walls
 // a roller diameter apart or more), as do 363, 360, 345 and 344.
-TEST(DynamicsLayoutCli, TwoSaggingWallsOfANotchAreCheckedAgainstEachOther) {
-  auto wheel_at = [](int teeth, const std::string& role, double x, double y,
+// A [[dynamics.sprocket]] table: `teeth`, `role`, the lines `extra` and the centre (x, y) mm.
+std::string wheel_at(int teeth, const std::string& role, double x, double y,
                      const std::string& extra) {
-    std::ostringstream o;
-    o << "\n[[dynamics.sprocket]]\nteeth = " << teeth << "\nrole = \"" << role << "\"\n"
-      << extra << "centre_x = \"" << x << " mm\"\ncentre_y = \"" << y << " mm\"\n";
-    return o.str();
-  };
+  std::ostringstream o;
+  o << "\n[[dynamics.sprocket]]\nteeth = " << teeth << "\nrole = \"" << role << "\"\n"
+    << extra << "centre_x = \"" << x << " mm\"\ncentre_y = \"" << y << " mm\"\n";
+  return o.str();
+}
+
+TEST(DynamicsLayoutCli, TwoSaggingWallsOfANotchAreCheckedAgainstEachOther) {
   auto notch = [&](int links) {
     const std::string idler = "inertia = 0.002\n";
     std::string t =
@@ -1090,7 +1092,7 @@ TEST(DynamicsLayoutCli, TwoSaggingWallsOfANotchAreCheckedAgainstEachOther) {
   const CliRun crossing = run("dynamics " + notch(365));
   ASSERT_EQ(crossing.status, 2) << crossing.out;
   EXPECT_NE(crossing.err.find("dynamics.links (line "), std::string::npos) << crossing.err;
-  EXPECT_NE(crossing.err.find("the sagging span would run into the span sprocket[6] -> "
+  EXPECT_NE(crossing.err.find("the sagging spans would run into the span sprocket[6] -> "
                               "sprocket[7]"),
             std::string::npos)
       << crossing.err;
@@ -1109,6 +1111,72 @@ TEST(DynamicsLayoutCli, TwoSaggingWallsOfANotchAreCheckedAgainstEachOther) {
               std::string::npos)
         << r.out;
   }
+}
+
+// Two lower runs that sag with `slack_spans = "all"` (12B, z 17 everywhere: the driver at (0, 500)
+// mm, wheels at (400, 0) and (600, 0) mm with one on the chain's back at (500, 100) mm lifting it
+// between them, a wheel at (1000, 500) mm and one on the back at (500, 260) mm pressing the return
+// run down) and a rail at y = −150 mm from x 100 to 300 mm under the first run. Within a pitch a
+// span below the half circle a count may be laid tangent to its wheels or as arcs: the tangent lay
+// runs into the rail there, so the limit named is cut two pitches below the half circle, while 213
+// links start laid as arcs with an e (N p less the path's length, 704.024 mm) above it. The refusal
+// of 215 names 213 as the most that start (the count search reaches a pitch a span beyond the
+// limit), and the arcs' own limit, which the e of 213 links keeps to (before, it named only the
+// lower limit, 692.876 mm, below that e).
+TEST(DynamicsLayoutCli, TwoSaggingRunsNameTheLimitOfTheCountThatStarts) {
+  auto runs = [&](int links) {
+    const std::string idler = "inertia = 0.002\n", back = idler + "side = \"outside\"\n";
+    std::string t =
+        "[dynamics]\nchain = \"12B\"\naxial_stiffness = \"5e7 N/m\"\naxial_damping = 100\n"
+        "pretension = \"500 N\"\ncontact_stiffness = \"2e8 N/m\"\ncontact_damping = 800\n"
+        "duration = \"1 ms\"\nstep = \"0.1 ms\"\ntheta = 0.6\nslack_spans = \"all\"\nlinks = " +
+        std::to_string(links) + "\n";
+    t += wheel_at(17, "driver", 0, 500, "speed = \"5 rad/s\"\n");
+    t += wheel_at(17, "idler", 400, 0, idler);
+    t += wheel_at(17, "idler", 500, 100, back);
+    t += wheel_at(17, "idler", 600, 0, idler);
+    t += wheel_at(17, "idler", 1000, 500, idler);
+    t += wheel_at(17, "idler", 500, 260, back);
+    t += "\n[[dynamics.guide]]\nkind = \"straight\"\nx0 = \"100 mm\"\ny0 = \"-150 mm\"\n"
+         "x1 = \"300 mm\"\ny1 = \"-150 mm\"\n";
+    return write("two_runs" + std::to_string(links) + ".toml", t + "\n[analyses.dynamics]\n");
+  };
+  const CliRun starts = run("dynamics " + runs(213) + " --format json");
+  ASSERT_EQ(starts.status, 0) << starts.err;
+  const auto j = nlohmann::json::parse(starts.out);
+  const double slack = j["slack"].get<double>() * 1e3;  // [mm] N p less the path's length
+  const CliRun table = run("dynamics " + runs(213));
+  EXPECT_NE(table.out.find("slack sagging in the spans sprocket 0 -> sprocket 1, sprocket 3 -> "
+                           "sprocket 4"),
+            std::string::npos)
+      << table.out;
+  const CliRun refused = run("dynamics " + runs(215));
+  ASSERT_EQ(refused.status, 2) << refused.out;
+  EXPECT_EQ(named_count(refused.err), 213) << refused.err;
+  EXPECT_NE(refused.err.find("the sagging spans would run into guide[0]"), std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("(the sags' length beyond their chords, less what they cut off the "
+                             "wraps)"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("catenaries of an e of at most 10 times their chords"),
+            std::string::npos)
+      << refused.err;
+  // a start's e is at least its N p less the path's length (the solve's miss is never negative):
+  // the limit the refusal names for counts laid as arcs is not below it
+  const double limit = named_limit_mm(refused.err);
+  const double arcs = named_mm(refused.err, "up to about ");
+  EXPECT_GT(limit, 0.0) << refused.err;
+  EXPECT_GE(arcs, slack) << refused.err;
+  EXPECT_GT(arcs, limit) << refused.err;
+  EXPECT_LE(arcs, limit + 2.0 * kPitch * 1e3 * (1.0 + 1e-6)) << refused.err;
+  std::printf(
+      "213 links: N p less the path's length %.3f mm; 215 refused: limit %.3f mm, as arcs "
+      "%.3f mm\n",
+      slack, limit, arcs);
+  const CliRun more = run("dynamics " + runs(214));
+  EXPECT_EQ(more.status, 2) << more.out;
+  EXPECT_EQ(named_count(more.err), 213) << more.err;
 }
 
 // A lead-in on the free layout is checked against the layout's path (issue 21,

@@ -34,7 +34,11 @@ inline ClosedForm closed_form(double xa, double ya, double xb, double yb, double
 // `tangent_span` solves in the slope t0 with a eliminated). At fixed a > r the centres' offsets
 // from the vertex, x(t) = a t − r tanh t and y(t) = a (cosh t − 1) + r / cosh t, rise along x: t1
 // from x(t1) − x(t0) = dx by bisection, then t0 from y(t1) − y(t0) = dy (rising in t0); then a from
-// the extra (falling in a). Returns {a, t0, t1}.
+// the extra (falling in a). Where no t1 above tc meets x (a too large: the catenary's x run
+// between the tangent points exceeds dx already at tc) or the two conditions are not met to 1e-9
+// of the chord, `at` gives NANs, which the bisection on a takes as a too large; returns {a, t0,
+// t1}, all NAN where the solve found no tangent catenary (an explicit failure, not a bracket's
+// end).
 struct TangentCatenary {
   double a = NAN, t0 = NAN, t1 = NAN;
 };
@@ -55,16 +59,24 @@ inline TangentCatenary tangent_catenary(double dx, double dy, double r, double c
       return bisect(tc, 30.0, [&](double t1) { return x(t1) - x(t0) - dx; });
     };
     TangentCatenary out;
+    const double t0 = bisect(-30.0, tc, [&](double s0) { return y(t1_of(s0)) - y(s0) - dy; });
+    const double t1 = t1_of(t0);
+    if (!(std::abs(x(t1) - x(t0) - dx) <= 1e-9 * c && std::abs(y(t1) - y(t0) - dy) <= 1e-9 * c))
+      return out;
     out.a = a;
-    out.t0 = bisect(-30.0, tc, [&](double t0) { return y(t1_of(t0)) - y(t0) - dy; });
-    out.t1 = t1_of(out.t0);
+    out.t0 = t0;
+    out.t1 = t1;
     return out;
   };
   auto extra_of = [&](const TangentCatenary& s) {
     return s.a * (std::sinh(s.t1) - std::sinh(s.t0)) - c -
            r * (theta_c - std::atan(std::sinh(s.t0))) - r * (std::atan(std::sinh(s.t1)) - theta_c);
   };
-  return at(bisect(r * (1.0 + 1e-9), 100.0 * r, [&](double a) { return extra - extra_of(at(a)); }));
+  const TangentCatenary out = at(bisect(r * (1.0 + 1e-9), 100.0 * r, [&](double a) {
+    const double e = extra_of(at(a));
+    return std::isnan(e) ? 1.0 : extra - e;  // not solved: a too large
+  }));
+  return std::abs(extra_of(out) - extra) <= 1e-9 * c ? out : TangentCatenary{};
 }
 
 // The lowest point of that catenary below circle 0's centre: the point of slope sinh t0 on circle

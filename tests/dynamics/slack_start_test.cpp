@@ -18,16 +18,18 @@
 #include "catena/dynamics/integrator.hpp"
 #include "catena/dynamics/layout.hpp"
 #include "catenary_closed_form.hpp"
+#include "slack_start_checks.hpp"
 
 namespace catena::dynamics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-// 12B (ISO 606): pitch, roller diameter, inner width, mass per metre
-constexpr double kPitch = 0.01905, kRoller = 0.01207, kWidth = 0.01168, kMass = 1.25;
-constexpr double kG = 9.81;
+// the slack start's shared checks and the 12B pitch and roller diameter (slack_start_checks.hpp)
+using namespace catena::dynamics::testing;  // NOLINT(google-build-using-namespace)
 
-double pitch_radius(int z) { return 0.5 * kPitch / std::sin(kPi / z); }
+constexpr double kPi = std::numbers::pi;
+// 12B (ISO 606): inner width, mass per metre
+constexpr double kWidth = 0.01168, kMass = 1.25;
+constexpr double kG = 9.81;
 
 // Two wheels z = 17 on a horizontal line 0.6 m apart (the second `rise` higher); the chain
 // `extra` links longer than the taut path (rounded up to whole links).
@@ -45,24 +47,6 @@ Slack slack_loop(double fraction, double rise = 0.0) {
   s.links = static_cast<int>(std::ceil(s.path.length * (1 + fraction) / kPitch));
   s.place = place_slack_loop(s.path, s.circles, s.teeth, s.links, kPitch, s.laid);
   return s;
-}
-
-// Every link of the start `st` one pitch (1e-11; the closing link, node N - 1 to node 0, within
-// `closing`, the slack solve's tolerance on the walk's end) and the chain N p long, N = `links`
-// (1e-9 relative); `what` names the case in a failure. Returns the links' largest miss of the
-// pitch [m].
-double expect_every_link_one_pitch(const State& st, int links, const std::string& what,
-                                   double closing = 1e-11 * kPitch) {
-  double length = 0.0, worst = 0.0;
-  for (std::size_t i = 0; i < st.nodes(); ++i) {
-    const std::size_t j = (i + 1) % st.nodes();
-    const double l = std::hypot(st.x[j] - st.x[i], st.y[j] - st.y[i]);
-    EXPECT_NEAR(l, kPitch, j == 0 ? closing : 1e-11 * kPitch) << what << " link " << i;
-    length += l;
-    worst = std::max(worst, std::abs(l - kPitch));
-  }
-  EXPECT_NEAR(length, links * kPitch, 1e-9 * links * kPitch) << what;
-  return worst;
 }
 
 TEST(DynamicsSlackStart, EveryLinkIsOnePitchAndTheLowerSpanSags) {
@@ -394,69 +378,6 @@ TEST(DynamicsSlackStart, MostLinksFoundByBisectionAfterTheScanFails) {
   const LongestCount none = longest_count(0, 400, [](int) { return false; });
   EXPECT_EQ(none.links, 0);
   EXPECT_EQ(links_that_start_phrase(none, 0), "no count starts so");
-}
-
-// The turn [rad] of the laid path from the end of piece j to the start of the next (their
-// tangents' angle; a straight span's its chord's direction).
-double joint_turn(const BeltPath& laid, std::size_t j) {
-  auto tangent = [](const PathPiece& q, double along) {
-    if (q.arc || q.sag) return sag_point(q, along);
-    PathPoint t;
-    t.tx = (q.x1 - q.x0) / q.length;
-    t.ty = (q.y1 - q.y0) / q.length;
-    return t;
-  };
-  const PathPiece& a = laid.pieces[j];
-  const PathPiece& b = laid.pieces[(j + 1) % laid.pieces.size()];
-  const PathPoint u = tangent(a, a.length), v = tangent(b, 0.0);
-  return std::atan2(u.tx * v.ty - u.ty * v.tx, u.tx * v.tx + u.ty * v.ty);
-}
-
-// The largest turn [rad] (its size) at any joint of the laid path (`joint_turn`).
-double largest_joint_turn(const BeltPath& laid) {
-  double turn = 0.0;
-  for (std::size_t j = 0; j < laid.pieces.size(); ++j)
-    turn = std::max(turn, std::abs(joint_turn(laid, j)));
-  return turn;
-}
-
-// How far span k of `laid` is from tangent to both its wheels, by plain geometry (not the
-// tangency conditions the code solves, nor its tangents cut at θ = atan sinh t): the catenary's
-// ends (sag_point, from its a and u) against the wraps' ends on the circles given (`gap`), their
-// distances to the centres against the radii (`radius`), and the catenary's direction there
-// against the circle's counter-clockwise tangent, taken from the radius vector (`angle`).
-struct TangentFit {
-  double gap = 0.0, radius = 0.0;  // [m]
-  double angle = 0.0;              // [rad]
-};
-TangentFit tangent_fit(const BeltPath& laid, std::size_t k, const std::vector<Circle>& circles) {
-  const PathPiece& q = laid.pieces[k];
-  const PathPiece& w0 = laid.pieces[k - 1];
-  const PathPiece& w1 = laid.pieces[(k + 1) % laid.pieces.size()];
-  TangentFit fit;
-  auto at_end = [&](const PathPoint& p, const Circle& c, double wrap_end) {
-    fit.gap = std::max(fit.gap, std::hypot(p.x - (c.x + c.radius * std::cos(wrap_end)),
-                                           p.y - (c.y + c.radius * std::sin(wrap_end))));
-    const double rx = p.x - c.x, ry = p.y - c.y, d = std::hypot(rx, ry);
-    fit.radius = std::max(fit.radius, std::abs(d - c.radius));
-    const double tx = -ry / d, ty = rx / d;
-    fit.angle =
-        std::max(fit.angle, std::abs(std::atan2(tx * p.ty - ty * p.tx, tx * p.tx + ty * p.ty)));
-  };
-  at_end(sag_point(q, 0.0), circles[w0.wheel], w0.to);
-  at_end(sag_point(q, q.length), circles[w1.wheel], w1.from);
-  return fit;
-}
-void expect_tangent_fit(const BeltPath& laid, std::size_t k, const std::vector<Circle>& circles,
-                        const std::string& what) {
-  const TangentFit fit = tangent_fit(laid, k, circles);
-  EXPECT_LT(fit.gap, 1e-12) << what;
-  EXPECT_LT(fit.radius, 1e-12) << what;
-  EXPECT_LT(fit.angle, 1e-9) << what;
-  std::printf(
-      "%s: tangent fit: ends off the wraps' %.3g m, off the circles %.3g m, off their "
-      "tangents %.3g rad\n",
-      what.c_str(), fit.gap, fit.radius, fit.angle);
 }
 
 // The catenary through the span's ends: closed_form (catenary_closed_form.hpp).
@@ -1143,88 +1064,21 @@ TEST(DynamicsSlackStart, ASpanBeyondThePathIsRefused) {
   }
 }
 
-// Slack in two lower runs that share no wheel (`slack_spans = "all"`): wheels z 17 at (0, `high`)
-// and (1.0, `high`) m, and at (0.4, 0) and (0.6, 0) m; a back-side wheel at (0.5, 0.15) m lifts the
-// chain between the two low wheels over its top, and one at (0.5, 0.27) m presses the return run
-// down, so that the two lower runs, 0 -> 1 and 3 -> 4, are the only spans that sag
-// (`sagging_spans`: every other span touches a wheel on the back of the chain).
-struct TwoRuns {
-  std::vector<Circle> circles;
-  std::vector<int> teeth{17, 17, 17, 17, 17, 17};
-  BeltPath path;
-  std::vector<std::size_t> spans;
-  double chords = 0.0;  // [m] the spans' lengths, summed
-};
-TwoRuns two_lower_runs(double high = 0.25, double lift = 0.15) {
-  TwoRuns t;
-  const double r = pitch_radius(17);
-  t.circles = {{0.0, high, r}, {0.4, 0.0, r},  {0.5, lift, r, true},
-               {0.6, 0.0, r},  {1.0, high, r}, {0.5, lift + 0.12, r, true}};
-  t.path = belt_path(t.circles, 0);
-  t.spans = sagging_spans(t.path);
-  for (const std::size_t k : t.spans) t.chords += t.path.pieces[k].length;
-  return t;
-}
-
-// The lowest point [m] of a laid catenary piece: the closed form through its ends (the test's own
-// solve), its vertex where that lies between them, else the lower end.
-double catenary_lowest(const PathPiece& q) {
-  const ClosedForm c = closed_form(q.x0, q.y0, q.x1, q.y1, q.length);
-  return c.x0 > q.x0 && c.x0 < q.x1 ? c.y(c.x0, q.x0, q.y0) : std::min(q.y0, q.y1);
-}
-
-// Each span's own extra [m] in the laid path: its length beyond its chord plus what it cut off the
-// wraps either side (negative: the wraps are shorter).
-double own_extra(const BeltPath& path, const BeltPath& laid, std::size_t k) {
-  const std::size_t n = path.pieces.size(), after = (k + 1) % n;
-  return laid.pieces[k].length - path.pieces[k].length +
-         (laid.pieces[k - 1].length - path.pieces[k - 1].length) +
-         (laid.pieces[after].length - path.pieces[after].length);
-}
-
-// Both spans of a start beyond their half circles laid as their tangent catenaries with their
-// shares: span k's own extra e c_k / Σc (1e-9 of its chord), tangent to both its wheels by plain
-// geometry (tangent_fit), its a and lowest point against the tangent catenary of that share (the
-// test's own solve of the tangency and length conditions, `tangent_catenary`) to 1e-9; `what`
-// names the case.
-void expect_both_runs_tangent(const TwoRuns& t, const BeltPath& laid, const std::string& what) {
-  const double e = laid.length - t.path.length, r = pitch_radius(17);
-  for (const std::size_t k : t.spans) {
-    const PathPiece& q = laid.pieces[k];
-    ASSERT_TRUE(q.catenary) << what << " span " << k;
-    const double c = t.path.pieces[k].length, share = e * c / t.chords;
-    EXPECT_NEAR(own_extra(t.path, laid, k), share, 1e-9 * c) << what << " span " << k;
-    expect_tangent_fit(laid, k, t.circles, what + ", span " + std::to_string(k));
-    // a rising run solved as its mirror image (x → −x: the same a and lowest point, falling from
-    // the higher wheel; the test's solve brackets its roots for a falling one: on this 32° rise
-    // it ends at its bracket's a = 100 r)
-    const Circle &from = t.circles[q.wheel], &to = t.circles[q.next];
-    const bool rises = to.y > from.y;
-    const TangentCatenary own =
-        tangent_catenary(to.x - from.x, rises ? from.y - to.y : to.y - from.y, r, c, share);
-    EXPECT_NEAR(q.hang_a / own.a, 1.0, 1e-9) << what << " span " << k;
-    EXPECT_NEAR(catenary_lowest(q), std::max(from.y, to.y) - tangent_catenary_depth(own, r), 1e-9)
-        << what << " span " << k;
-    std::printf("%s, span %zu: share %.6f mm, a %.6f mm (own solve %.6f), lowest %.6f mm\n",
-                what.c_str(), k, share * 1e3, q.hang_a * 1e3, own.a * 1e3,
-                catenary_lowest(q) * 1e3);
-  }
-}
-
 // `slack_spans = "all"` beyond the half circle (every share passes it at one e, the shares in
 // proportion to the chords): each lower run laid as the catenary tangent to its two wheels with
 // its share (`tangent_spans`), the path turning by under 1e-9 rad at every joint, every link one
 // pitch, a roller on every wheel: 180 links (the first count laid so; its e, 522.703 mm, closes
 // 0.83 p below the half circle's 538.488 mm, within the pitch a span that the limit checks both
-// lays in), 183, 199 and 215. Before, every catenary of more than one span was laid between its
-// tangent points, kinked at the wheels (100.5°, 107.7° and 111.5° at 183, 199 and 215 links), and
-// 180 links were not laid.
+// lays in) and 199 (183 and 215 too before the slow tier took the rest of the range:
+// tests/validation/dynamics_multispan_slow_test.cpp). Before, every catenary of more than one span
+// was laid between its tangent points, kinked at the wheels (107.7° at 199 links), and 180 links
+// were not laid.
 TEST(DynamicsSlackStart, TwoSlackSpansAreEachLaidTangentToTheirWheels) {
   const TwoRuns t = two_lower_runs();
   ASSERT_TRUE(t.path.faults.empty());
   ASSERT_EQ(t.spans.size(), 2u);
   const double half = (0.5 * kPi - 1.0) * t.chords;
-  for (const int links : {180, 183, 199, 215}) {
+  for (const int links : {180, 199}) {
     const std::string what = std::to_string(links) + " links";
     BeltPath laid;
     const LoopPlacement place =
@@ -1241,44 +1095,15 @@ TEST(DynamicsSlackStart, TwoSlackSpansAreEachLaidTangentToTheirWheels) {
   }
 }
 
-// The start is continuous as the geometry turns: the high wheels from 0.22 to 0.28 m in steps of
-// 5 mm (the runs' slopes from 28.8° to 35.0°), 199 links. Every start is laid tangent (the
-// joints turning by under 1e-9 rad), and a, the lowest point of the first run and e change from
-// one step to the next by at most 1.5 times the mean step's change.
-TEST(DynamicsSlackStart, TwoSlackSpansStartContinuouslyAsTheRunsTurn) {
-  const int links = 199;
-  std::vector<double> as, lows, extras;
-  for (int q = 0; q <= 12; ++q) {
-    const double high = 0.22 + 0.005 * q;
-    const std::string what = "high " + std::to_string(high);
-    const TwoRuns t = two_lower_runs(high);
-    ASSERT_EQ(t.spans.size(), 2u) << what;
-    BeltPath laid;
-    const LoopPlacement place =
-        place_slack_loop(t.path, t.circles, t.teeth, links, kPitch, laid, t.spans);
-    ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links)) << what;
-    const PathPiece& run = laid.pieces[t.spans[0]];
-    ASSERT_TRUE(run.catenary) << what;
-    const double turn = largest_joint_turn(laid);
-    EXPECT_LT(turn, 1e-9) << what;
-    as.push_back(run.hang_a);
-    lows.push_back(catenary_lowest(run));
-    extras.push_back(laid.length - t.path.length);
-    std::printf("%s: a %.3f mm, lowest point %.3f mm, e %.3f mm, turn %.3g rad\n", what.c_str(),
-                run.hang_a * 1e3, lows.back() * 1e3, extras.back() * 1e3, turn);
-  }
-  const std::pair<const char*, const std::vector<double>&> series[] = {
-      {"a", as}, {"lowest point", lows}, {"e", extras}};
-  for (const auto& [name, v] : series) {
-    double mean = 0.0, most = 0.0;
-    for (std::size_t i = 1; i < v.size(); ++i) {
-      mean += std::abs(v[i] - v[i - 1]) / static_cast<double>(v.size() - 1);
-      most = std::max(most, std::abs(v[i] - v[i - 1]));
-    }
-    EXPECT_LT(most, 1.5 * mean) << name;
-    std::printf("%s: the largest step's change %.4g mm, the mean step's %.4g mm\n", name,
-                most * 1e3, mean * 1e3);
-  }
+// The first obstacle any of the two runs of `laid` runs into with the guides `guides`
+// (`sag_obstacle`, z 17 tips), empty when both are clear.
+std::string first_obstacle(const TwoRuns& t, const BeltPath& laid,
+                           const std::vector<Guide>& guides) {
+  const std::vector<double> tip(t.circles.size(), pitch_radius(17) + 0.0066);
+  std::string out;
+  for (const std::size_t k : t.spans)
+    if (out.empty()) out = sag_obstacle(laid, k, t.circles, tip, guides, kRoller, kPitch);
+  return out;
 }
 
 // The limit of more than one span (`sag_spans_limit`) follows the lay a start lays beyond the half
@@ -1300,12 +1125,7 @@ TEST(DynamicsSlackStart, TheLimitOfTwoSpansFollowsTheirTangentLay) {
   rail.y0 = rail.y1 = catenary_lowest(run) - 0.5 * kRoller - 0.001;
   rail.roller_radius = 0.5 * kRoller;
   const std::vector<double> tip(t.circles.size(), pitch_radius(17) + 0.0066);
-  auto named = [&](const BeltPath& laid) {
-    std::string out;
-    for (const std::size_t k : t.spans)
-      if (out.empty()) out = sag_obstacle(laid, k, t.circles, tip, {rail}, kRoller, kPitch);
-    return out;
-  };
+  auto named = [&](const BeltPath& laid) { return first_obstacle(t, laid, {rail}); };
   EXPECT_EQ(named(deep), "");
   const double most = sag_spans_limit(t.path, t.spans, t.circles, tip, {rail}, kRoller, kPitch);
   EXPECT_GT(most, 1.5 * half);
@@ -1331,9 +1151,10 @@ double sampled_lowest(const PathPiece& q) {
 // below the half circle (TwoSlackSpansAreEachLaidTangentToTheirWheels). A rail under the first run
 // midway between its half circle's lowest point and that tangent lay's: the arcs are clear up to
 // the half circle, the 180 links' lay is not; the limit (`sag_spans_limit`) checks both lays
-// within the two pitches below the half circle, so here it is that band's low end, 500.388 mm,
-// below the 180 links' 522.703 mm, the arcs clear there (before, it checked the arcs alone and
-// named the half circle's 538.488 mm, above the e of a count whose start runs into the rail).
+// within the two pitches below the half circle, so here it lies below the 180 links' 522.703 mm
+// and below the half circle, the arcs clear there (500.388 mm measured, the band's low end; before,
+// it checked the arcs alone and named the half circle's 538.488 mm, above the e of a count whose
+// start runs into the rail); the arcs' own limit (`sag_spans_arcs_limit`) is the half circle's.
 TEST(DynamicsSlackStart, TheLimitOfTwoSpansJustBelowTheHalfCircleChecksTheTangentLay) {
   const TwoRuns t = two_lower_runs();
   const double half = (0.5 * kPi - 1.0) * t.chords;
@@ -1355,90 +1176,21 @@ TEST(DynamicsSlackStart, TheLimitOfTwoSpansJustBelowTheHalfCircleChecksTheTangen
   rail.y0 = rail.y1 = 0.5 * (arc_low + hang_low);
   rail.roller_radius = 0.5 * kRoller;
   const std::vector<double> tip(t.circles.size(), pitch_radius(17) + 0.0066);
-  auto named = [&](const BeltPath& lay) {
-    std::string out;
-    for (const std::size_t k : t.spans)
-      if (out.empty()) out = sag_obstacle(lay, k, t.circles, tip, {rail}, kRoller, kPitch);
-    return out;
-  };
+  auto named = [&](const BeltPath& lay) { return first_obstacle(t, lay, {rail}); };
   EXPECT_EQ(named(arcs), "");
   EXPECT_EQ(named(laid), "guide[0]");
   const double most = sag_spans_limit(t.path, t.spans, t.circles, tip, {rail}, kRoller, kPitch);
   EXPECT_LT(most, e);
-  EXPECT_NEAR(most, half - 2.0 * kPitch, 1e-6 * t.chords);
+  EXPECT_LT(most, half);
   EXPECT_EQ(named(sag_spans(t.path, t.spans, most)), "");
+  // the arcs alone are clear up to the half circle: what a count laid as arcs may take
+  const double arcs_most =
+      sag_spans_arcs_limit(t.path, t.spans, t.circles, tip, {rail}, kRoller, kPitch);
+  EXPECT_NEAR(arcs_most, half, 1e-6 * t.chords);
   std::printf(
       "two runs, 180 links: e %.6f mm, half circle %.6f mm, limit %.6f mm; lowest arc %.3f, "
       "tangent %.3f mm\n",
       e * 1e3, half * 1e3, most * 1e3, arc_low * 1e3, hang_low * 1e3);
-}
-
-// Random geometries of the two lower runs (the high wheels at 0.18–0.32 m, the lifting back-side
-// wheel at 0.12–0.17 m, the four wheels inside with 13 to 30 teeth each, a count from the first
-// past the half circle to 60 beyond it; a fixed seed): no NaN, and every start either laid — every
-// link one pitch, every node finite, and where laid tangent (the joints turning by under 1e-9
-// rad) each run tangent to its wheels by plain geometry (tangent_fit) with its own extra its
-// share e c_k / Σc (1e-9 of its chord) — or not laid (no path given back); the limit
-// (`sag_spans_limit`) finite, between the half circle's and the longest catenary's.
-TEST(DynamicsSlackStart, RandomTwoRunStartsAreLaidTangentOrRefused) {
-  std::mt19937 rng(21);
-  std::uniform_real_distribution<double> high(0.18, 0.32), lift(0.12, 0.17);
-  std::uniform_int_distribution<int> teeth(13, 30), more(0, 60);
-  int tangent = 0, between = 0, refused = 0;
-  for (int trial = 0; trial < 10; ++trial) {
-    TwoRuns t = two_lower_runs(high(rng), lift(rng));
-    for (const std::size_t w : {0u, 1u, 3u, 4u}) {
-      t.teeth[w] = teeth(rng);
-      t.circles[w].radius = pitch_radius(t.teeth[w]);
-    }
-    t.path = belt_path(t.circles, 0);
-    t.spans = sagging_spans(t.path);
-    t.chords = 0.0;
-    for (const std::size_t k : t.spans) t.chords += t.path.pieces[k].length;
-    const std::string what = "trial " + std::to_string(trial);
-    ASSERT_TRUE(t.path.faults.empty()) << what;
-    ASSERT_EQ(t.spans.size(), 2u) << what;
-    const double half = (0.5 * kPi - 1.0) * t.chords;
-    const int links = static_cast<int>(std::ceil((t.path.length + half) / kPitch)) + more(rng);
-    std::vector<double> tip;
-    for (const Circle& c : t.circles) tip.push_back(c.radius + 0.0066);
-    const double most = sag_spans_limit(t.path, t.spans, t.circles, tip, {}, kRoller, kPitch);
-    EXPECT_TRUE(std::isfinite(most)) << what;
-    EXPECT_GE(most, half) << what;
-    EXPECT_LE(most, kCatenaryMostExtra * t.chords) << what;
-    BeltPath laid;
-    const LoopPlacement place =
-        place_slack_loop(t.path, t.circles, t.teeth, links, kPitch, laid, t.spans);
-    if (place.s.empty()) {
-      EXPECT_TRUE(laid.pieces.empty()) << what;
-      ++refused;
-      continue;
-    }
-    ASSERT_EQ(place.s.size(), static_cast<std::size_t>(links)) << what;
-    const State st = loop_state(laid, t.circles, place, 0.0);
-    for (std::size_t i = 0; i < st.nodes(); ++i)
-      ASSERT_TRUE(std::isfinite(st.x[i]) && std::isfinite(st.y[i])) << what << " node " << i;
-    expect_every_link_one_pitch(st, links, what, 1e-11 * links * kPitch);
-    const double e = laid.length - t.path.length;
-    EXPECT_TRUE(std::isfinite(e)) << what;
-    if (largest_joint_turn(laid) < 1e-9) {
-      ++tangent;
-      for (const std::size_t k : t.spans) {
-        ASSERT_TRUE(laid.pieces[k].catenary) << what;
-        const double c = t.path.pieces[k].length;
-        EXPECT_NEAR(own_extra(t.path, laid, k), e * c / t.chords, 1e-9 * c) << what;
-        expect_tangent_fit(laid, k, t.circles, what + ", span " + std::to_string(k));
-      }
-    } else {
-      ++between;
-    }
-    std::printf("%s: %d links, %s, e %.3f mm, limit %.3f mm\n", what.c_str(), links,
-                largest_joint_turn(laid) < 1e-9 ? "tangent" : "between the tangent points", e * 1e3,
-                most * 1e3);
-  }
-  std::printf("laid tangent %d, between the tangent points %d, not laid %d\n", tangent, between,
-              refused);
-  EXPECT_GT(tangent, 0);
 }
 
 // Two slack spans meeting on one wheel (a V: z 17 at (0, 0) and (0.6, 0) m, z 60 at (0.3, −0.3) m,

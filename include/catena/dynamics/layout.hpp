@@ -158,6 +158,19 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
                        const std::vector<Circle>& circles, const std::vector<double>& tip,
                        const std::vector<Guide>& guides, double roller, double pitch);
 
+/// The largest extra length up to the half circle ((π/2 − 1) of the chords, a hair inside) with
+/// `pieces` laid as circular arcs (`sag_spans`) clear of everything, the other sags included: the
+/// most a count laid as arcs may take. Above `sag_spans_limit` only where that limit is cut within
+/// a pitch a span below the half circle, where a count may be laid tangent (`tangent_spans`) or as
+/// arcs and both are checked. 0 if none can sag.
+double sag_spans_arcs_limit(const BeltPath& path, const std::vector<std::size_t>& pieces,
+                            const std::vector<Circle>& circles, const std::vector<double>& tip,
+                            const std::vector<Guide>& guides, double roller, double pitch);
+
+/// The chords of the spans `pieces` summed [m] (what their shares of an extra length are in
+/// proportion to); 0 if any is not a span of `path` or none is given.
+double span_chords(const BeltPath& path, const std::vector<std::size_t>& pieces);
+
 /// What the lead-in arc `arc` laid at an end of the guide `rail` (`lead_in_arcs`) runs
 /// into, as a name; empty when clear (docs/models/dynamics.md, "Lead-ins"). Sampled along the
 /// arc's surface (at least 512 samples, at most a quarter roller apart): the chain's path `path`

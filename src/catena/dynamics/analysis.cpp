@@ -846,7 +846,9 @@ bool slack_starts(const Setup& s, const std::vector<std::size_t>& pieces, int li
 
 // The most links that start with their slack sagging in `pieces` (`slack_starts`, the guides
 // included), 0 if none. A start at N links sags by more than N p less the path's length, so no
-// count beyond the path's length plus `most` (the slack limit) starts; the counts below it are
+// count beyond the path's length plus `most` (the slack limit) and a pitch a span starts (within a
+// pitch a span below the half circle a count laid as arcs may take more than `most`, which is cut
+// there where the tangent lay a count may take instead is not clear); the counts below it are
 // tried downwards (`longest_count`: not by bisection, the counts that start need not be an
 // interval; after kLongestCountScan counts without a start the rest is bisected, bounded work).
 LongestCount longest_slack_links(const Setup& s, const std::vector<std::size_t>& pieces,
@@ -861,8 +863,8 @@ LongestCount longest_slack_links(const Setup& s, const std::vector<std::size_t>&
   };
   int lo = static_cast<int>(std::floor(s.path.length / s.pitch));
   if (lo * s.pitch > s.path.length) --lo;  // lo: the last count not beyond the path
-  const int hi =
-      std::min(10000, static_cast<int>(std::floor((s.path.length + most) / s.pitch)) + 1);
+  const int hi = std::min(10000, static_cast<int>(std::floor((s.path.length + most) / s.pitch)) +
+                                     static_cast<int>(pieces.size()));
   return longest_count(lo, hi, starts);
 }
 
@@ -871,6 +873,11 @@ LongestCount longest_slack_links(const Setup& s, const std::vector<std::size_t>&
 std::string links_that_start_text(const Setup& s, const std::vector<std::size_t>& pieces,
                                   double most, const std::vector<Guide>& guides, int given) {
   return links_that_start_phrase(longest_slack_links(s, pieces, most, s.tip, guides), given);
+}
+
+// The slack spans `pieces` named in a refusal: "the sagging span", or "spans" for more than one.
+std::string sagging_named(const std::vector<std::size_t>& pieces) {
+  return pieces.size() == 1 ? "the sagging span" : "the sagging spans";
 }
 
 // What a refused slack is measured by, like with like: the sag's extra length e (the arcs' length
@@ -885,21 +892,41 @@ std::string slack_measure_text(const Setup& s, const std::vector<std::size_t>& p
   auto mm = [](double x) { return format_g(x * 1e3, 6) + " mm"; };
   const double over = given * s.pitch - s.path.length;
   const double need = laid_slack_extra(s.path, s.circles, s.layout_teeth, given, s.pitch, pieces);
-  double spans = 0.0;
-  for (const std::size_t k : pieces) spans += s.path.pieces[k].length;
+  const double spans = span_chords(s.path, pieces);
   const double half = (0.5 * kPi - 1.0) * spans;
   // beyond the half circle the spans hang as catenaries (when they can: a run travelling
   // towards +x, whose outward side is down), up to kCatenaryMostExtra chords of extra
   const bool hangs = !sag_spans(s.path, pieces, half * (1.0 + 1e-9)).pieces.empty();
+  // with more than one span the limit may be cut within a pitch a span below the half circle by
+  // the tangent lay a count there may take; one laid as arcs may still start up to the arcs' own
+  // limit, said with it (below the band only the arcs are checked: there the limit is theirs;
+  // 1e-5 of the chords: the limit is bisected to 1e-6 of them)
+  const double band = s.pitch * static_cast<double>(pieces.size());
+  const double arcs =
+      pieces.size() > 1 && most >= half - band - 1e-5 * spans && most < half
+          ? sag_spans_arcs_limit(s.path, pieces, s.circles, s.tip, guides, s.roller, s.pitch)
+          : 0.0;
+  const bool arcs_beyond = arcs > most + 1e-6 * spans;
   const std::string count = std::to_string(given) + " links";
+  // beyond the half circle a span laid tangent to its wheels cuts their wraps short: e is the
+  // path's extra, the sag's length beyond its chord less those cuts
+  const bool one = pieces.size() == 1;
+  const std::string e_means =
+      hangs ? (one ? "the sag's length beyond its chord, less what it cuts off the wraps"
+                   : "the sags' length beyond their chords, less what they cut off the wraps")
+            : (one ? "the arc's length beyond its chord" : "the arcs' length beyond their chords");
   return "a chain longer than the path, its " + span_names(s.path, pieces) +
-         " sagging by an extra length e (the arc" + (pieces.size() == 1 ? "'s" : "s'") +
-         " length beyond " + (pieces.size() == 1 ? "its chord" : "their chords") +
-         ") of at most about " + mm(most) + " (" + shown(most / s.path.length * 100.0) +
-         " % of the path), the most " + (pieces.size() == 1 ? "it" : "they") +
-         " can sag by as circular arcs" + (half_circle ? " of at most a half circle" : "") +
+         " sagging by an extra length e (" + e_means + ") of at most about " + mm(most) + " (" +
+         shown(most / s.path.length * 100.0) + " % of the path" +
+         (arcs_beyond ? "; laid as circular arcs, as a count within a pitch a span below the half "
+                        "circle may be, up to about " +
+                            mm(arcs)
+                      : "") +
+         "), the most " + (one ? "it" : "they") + " can sag by as circular arcs" +
+         (half_circle ? " of at most a half circle" : "") +
          (hangs ? " and, beyond a half circle, catenaries of an e of at most " +
-                      format_g(kCatenaryMostExtra, 6) + " times the chord"
+                      format_g(kCatenaryMostExtra, 6) + " times " +
+                      (one ? "the chord" : "their chords")
                 : "") +
          " clear of every other wheel's teeth and the other spans" +
          (guides.empty() ? "" : " and the guides") + " (here " + count +
@@ -932,8 +959,9 @@ std::string slack_refusal_text(const Setup& s, const Setup::SlackRefusal& r,
                                const std::vector<Guide>& guides) {
   const double most = slack_limit(s, r.pieces, s.tip, guides);
   return r.why + "; or " + slack_measure_text(s, r.pieces, most, true, guides, r.chosen) +
-         (r.blocked.empty() ? ""
-                            : "; the sagging span would run into " + guide_named(s, r.blocked)) +
+         (r.blocked.empty()
+              ? ""
+              : "; " + sagging_named(r.pieces) + " would run into " + guide_named(s, r.blocked)) +
          "): " + links_that_start_text(s, r.pieces, most, guides, r.chosen);
 }
 
@@ -2523,10 +2551,11 @@ Setup parse(const analysis::Inputs& in) {
           sag_obstacle(s.laid, s.slack_pieces[i], s.circles, s.tip, s.guides, s.roller, s.pitch);
     if (!blocked.empty()) {
       const double most = slack_limit(s, s.slack_pieces, s.tip, s.guides);
-      issues.push_back({at("links"), std::to_string(s.links),
-                        slack_measure_text(s, s.slack_pieces, most, false, s.guides, s.links) +
-                            "; the sagging span would run into " + guide_named(s, blocked) + "): " +
-                            links_that_start_text(s, s.slack_pieces, most, s.guides, s.links)});
+      issues.push_back(
+          {at("links"), std::to_string(s.links),
+           slack_measure_text(s, s.slack_pieces, most, false, s.guides, s.links) + "; " +
+               sagging_named(s.slack_pieces) + " would run into " + guide_named(s, blocked) +
+               "): " + links_that_start_text(s, s.slack_pieces, most, s.guides, s.links)});
     }
   }
   // a count refused in parse_layout as too long for its slack: its limit named again with the

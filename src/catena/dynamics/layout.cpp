@@ -819,6 +819,17 @@ double largest_clear_sag(double half, double longest, double scale, Clear clear)
 
 namespace {
 
+// Whether every span of `pieces` in the lay `laid` is clear of everything, the other sags included
+// (`sag_obstacle`); not where the lay is refused (empty).
+bool lay_clear(const BeltPath& laid, const std::vector<std::size_t>& pieces,
+               const std::vector<Circle>& circles, const std::vector<double>& tip,
+               const std::vector<Guide>& guides, double roller, double pitch) {
+  if (laid.pieces.empty()) return false;
+  for (const std::size_t k : pieces)
+    if (!sag_obstacle(laid, k, circles, tip, guides, roller, pitch).empty()) return false;
+  return true;
+}
+
 // The largest clear extra of the spans `pieces` (their chords `total` long) sharing it in
 // proportion to their chords, each laid as a start lays it (`slack_lay`) and checked against
 // everything, the other sags included (`sag_obstacle`): up to the half circle the arcs between
@@ -828,9 +839,13 @@ namespace {
 // its rollers fall: a wheel left with no roller falls back to the other). Within a pitch per span
 // below the half circle a count whose lay between the tangent points would pass it is laid
 // tangent at an e a little below it (level 600 mm, z 17 both, 98 links: 342.414 against the half
-// circle's 342.478 mm; each span's arc meets its wheels at up to 90° there, and a link across
-// such a kink takes up to (√2 − 1) p more of the path than its chord, two kinks a span): there
-// both the arcs and the tangent lay must be clear.
+// circle's 342.478 mm): there both the arcs and the tangent lay must be clear. The band is
+// measured, not derived: what decides is the count's lay between the tangent points just beyond
+// the half circle, a catenary whose kinks grow with the slope (a link across a kink φ takes up to
+// p (sec(φ/2) − 1) more path: 0.44 p a span level, 1.10 p at 51°); over 37–61° slopes the counts
+// laid tangent closed at most 1.207 p below it with two spans, 0.582 p with one
+// (docs/models/dynamics.md). Where the tangent lay cuts the limit in the band, a count laid as
+// arcs may still take more (`sag_spans_arcs_limit`).
 double spans_limit(const BeltPath& path, const std::vector<std::size_t>& pieces, double total,
                    const std::vector<Circle>& circles, const std::vector<double>& tip,
                    const std::vector<Guide>& guides, double roller, double pitch) {
@@ -841,10 +856,7 @@ double spans_limit(const BeltPath& path, const std::vector<std::size_t>& pieces,
     return !(w.to - w.from >= 2.0 * std::asin(std::min(1.0, 0.5 * pitch / w.radius)));
   };
   auto clear_lay = [&](const BeltPath& laid) {
-    if (laid.pieces.empty()) return false;
-    for (const std::size_t k : pieces)
-      if (!sag_obstacle(laid, k, circles, tip, guides, roller, pitch).empty()) return false;
-    return true;
+    return lay_clear(laid, pieces, circles, tip, guides, roller, pitch);
   };
   auto clear = [&](double extra) {
     const bool below = extra <= half;
@@ -877,14 +889,30 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
                        const std::vector<Circle>& circles, const std::vector<double>& tip,
                        const std::vector<Guide>& guides, double roller, double pitch) {
   if (pieces.size() == 1) return sag_limit(path, pieces[0], circles, tip, guides, roller, pitch);
+  const double total = span_chords(path, pieces);
+  if (!(total > 0.0)) return 0.0;
+  // every span laid with its share, each checked against everything, the other sags included
+  return spans_limit(path, pieces, total, circles, tip, guides, roller, pitch);
+}
+
+double sag_spans_arcs_limit(const BeltPath& path, const std::vector<std::size_t>& pieces,
+                            const std::vector<Circle>& circles, const std::vector<double>& tip,
+                            const std::vector<Guide>& guides, double roller, double pitch) {
+  const double total = span_chords(path, pieces);
+  if (!(total > 0.0)) return 0.0;
+  const double half = (0.5 * kPi - 1.0) * total;
+  return largest_clear_extra(half * (1.0 - 1e-9), total, [&](double extra) {
+    return lay_clear(sag_spans(path, pieces, extra), pieces, circles, tip, guides, roller, pitch);
+  });
+}
+
+double span_chords(const BeltPath& path, const std::vector<std::size_t>& pieces) {
   double total = 0.0;
   for (const std::size_t k : pieces) {
     if (k >= path.pieces.size() || path.pieces[k].arc) return 0.0;
     total += path.pieces[k].length;
   }
-  if (pieces.empty() || !(total > 0.0)) return 0.0;
-  // every span laid with its share, each checked against everything, the other sags included
-  return spans_limit(path, pieces, total, circles, tip, guides, roller, pitch);
+  return total;
 }
 
 namespace {
@@ -1411,23 +1439,29 @@ std::vector<std::size_t> sagging_spans(const BeltPath& path) {
   return out;
 }
 
-BeltPath sag_spans(const BeltPath& path, const std::vector<std::size_t>& pieces, double extra) {
-  double total = 0.0;
-  for (const std::size_t k : pieces) {
-    if (k >= path.pieces.size() || path.pieces[k].arc) return BeltPath{};
-    total += path.pieces[k].length;
-  }
+namespace {
+
+// `lay_one(path, k, share)` for every span k of `pieces` in turn, span k's share of `extra` in
+// proportion to its chord (one span: the whole extra, exactly); empty where a span's lay is.
+template <class LayOne>
+BeltPath lay_shares(const BeltPath& path, const std::vector<std::size_t>& pieces, double extra,
+                    LayOne lay_one) {
+  const double total = span_chords(path, pieces);
+  if (!(total > 0.0)) return BeltPath{};
   BeltPath out = path;
-  if (pieces.empty() || !(total > 0.0)) {
-    out.pieces.clear();
-    return out;
-  }
   for (const std::size_t k : pieces) {
-    // one span: the whole extra, exactly
-    out = sag_span(out, k, pieces.size() == 1 ? extra : extra * path.pieces[k].length / total);
+    out = lay_one(out, k, pieces.size() == 1 ? extra : extra * path.pieces[k].length / total);
     if (out.pieces.empty()) return out;
   }
   return out;
+}
+
+}  // namespace
+
+BeltPath sag_spans(const BeltPath& path, const std::vector<std::size_t>& pieces, double extra) {
+  return lay_shares(path, pieces, extra, [](const BeltPath& p, std::size_t k, double share) {
+    return sag_span(p, k, share);
+  });
 }
 
 LoopPlacement place_slack_loop(const BeltPath& path, const std::vector<Circle>& circles,
@@ -1506,21 +1540,32 @@ TangentCatenary tangent_from(double t0, double tc, double dx, double dy, double 
 
 }  // namespace
 
-BeltPath tangent_span(const BeltPath& path, std::size_t piece, double extra) {
-  BeltPath out = path;
-  out.pieces.clear();
+namespace {
+
+// Whether span `piece` of `path` can be laid tangent to its wheels (`tangent_span`): a straight
+// span, not the first piece, between two wraps of its own wheels, both wrapped counter-clockwise
+// (a span touching a back-side wheel does not sag), travelling towards +x (its outward side down:
+// the catenary hangs below it).
+bool tangent_eligible(const BeltPath& path, std::size_t piece) {
   const std::size_t n = path.pieces.size();
-  if (piece >= n || piece == 0 || path.pieces[piece].arc || path.pieces[piece].sag ||
-      !(extra > 0.0))
-    return out;
+  if (piece >= n || piece == 0 || path.pieces[piece].arc || path.pieces[piece].sag) return false;
   const PathPiece& q = path.pieces[piece];
   const PathPiece& before = path.pieces[piece - 1];
   const PathPiece& after = path.pieces[(piece + 1) % n];
-  // both wheels wrapped counter-clockwise (a span touching a back-side wheel does not sag), the
-  // span travelling towards +x (its outward side down: the catenary hangs below it)
-  if (!before.arc || !after.arc || before.sense < 0.0 || after.sense < 0.0 ||
-      before.wheel != q.wheel || after.wheel != q.next || !(q.x1 > q.x0) || !(q.length > 0.0))
-    return out;
+  return before.arc && after.arc && !(before.sense < 0.0) && !(after.sense < 0.0) &&
+         before.wheel == q.wheel && after.wheel == q.next && q.x1 > q.x0 && q.length > 0.0;
+}
+
+}  // namespace
+
+BeltPath tangent_span(const BeltPath& path, std::size_t piece, double extra) {
+  BeltPath out = path;
+  out.pieces.clear();
+  if (!tangent_eligible(path, piece) || !(extra > 0.0)) return out;
+  const std::size_t n = path.pieces.size();
+  const PathPiece& q = path.pieces[piece];
+  const PathPiece& before = path.pieces[piece - 1];
+  const PathPiece& after = path.pieces[(piece + 1) % n];
   const double r0 = before.radius, r1 = after.radius;
   const double dx = after.cx - before.cx, dy = after.cy - before.cy;
   const double chord = q.length, theta_c = std::atan2(q.y1 - q.y0, q.x1 - q.x0);
@@ -1602,25 +1647,16 @@ BeltPath tangent_span(const BeltPath& path, std::size_t piece, double extra) {
 }
 
 BeltPath tangent_spans(const BeltPath& path, const std::vector<std::size_t>& pieces, double extra) {
-  if (pieces.size() == 1) return tangent_span(path, pieces[0], extra);
-  double total = 0.0;
-  for (const std::size_t k : pieces) {
-    if (k >= path.pieces.size() || path.pieces[k].arc) return BeltPath{};
-    total += path.pieces[k].length;
-  }
-  BeltPath out = path;
-  if (pieces.empty() || !(total > 0.0)) {
-    out.pieces.clear();
-    return out;
-  }
   // each span's tangent lay depends on its two wheels and its own share alone; laid one after
   // another, a wrap between two slack spans is cut at both ends, the second cut checked against
-  // what the first left of it (`tangent_span`: a wrap used up is refused)
-  for (const std::size_t k : pieces) {
-    out = tangent_span(out, k, extra * path.pieces[k].length / total);
-    if (out.pieces.empty()) return out;
-  }
-  return out;
+  // what the first left of it (`tangent_span`: a wrap used up is refused); every span checked
+  // first, so that one that can never be laid tangent refuses before any other is solved
+  if (pieces.size() > 1)
+    for (const std::size_t k : pieces)
+      if (!tangent_eligible(path, k)) return BeltPath{};
+  return lay_shares(path, pieces, extra, [](const BeltPath& p, std::size_t k, double share) {
+    return tangent_span(p, k, share);
+  });
 }
 
 namespace {
@@ -1771,11 +1807,8 @@ SlackSolve chord_end_solve(const BeltPath& path, const std::vector<std::size_t>&
 // is within 1e-11 of N p; NAN when not found.
 SlackSolve tangent_solve(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
                          double pitch) {
-  double spans = 0.0;
-  for (const std::size_t k : pieces) {
-    if (k >= path.pieces.size()) return {};
-    spans += path.pieces[k].length;
-  }
+  const double spans = span_chords(path, pieces);
+  if (!(spans > 0.0)) return {};
   const double chain = nodes * pitch;
   auto miss = [&](double extra) {
     const BeltPath p = tangent_spans(path, pieces, extra);
@@ -1821,7 +1854,9 @@ SlackSolve tangent_solve(const BeltPath& path, const std::vector<std::size_t>& p
 // The slack solve: between the tangent points (`chord_end_solve`) where that closes on a
 // circular arc (up to the half circle: every start laid so before is laid the same), else every
 // span tangent to its wheels (`tangent_solve`: a hanging chain meets its wheels
-// tangentially, its rest shape) where that closes, else the answer between the tangent points as
+// tangentially, one span's rest shape; with more, the shares in proportion to the chords are a
+// start rule, not the rest shape, which puts every free span linked through free wheels on one
+// directrix) where that closes, else the answer between the tangent points as
 // it is (a catenary, across a fold or at node 0's phase, or refused). `between`, when given, gets
 // the answer between the tangent points.
 SlackSolve slack_solve(const BeltPath& path, const std::vector<std::size_t>& pieces, int nodes,
