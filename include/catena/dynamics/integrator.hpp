@@ -207,7 +207,8 @@ class Integrator {
   void chord_solve(std::span<const Vec2> b, const double* bx, std::vector<Vec2>& x, double* xx);
   // The stick law's chord iteration corrected for the hinges that switched branch since the
   // kept factors were taken (delta_ and dx_ in place); false where it left them as they were.
-  // The report counts the corrections and W's substitutions.
+  // The report counts the corrections (switch_updates) and the makings of their parts
+  // (switch_builds).
   bool correct_for_switches(const Model& model, const State& s, StepReport& report);
   // correct_for_switches' parts for the `count` switched hinges `nodes` (now on `branches`),
   // at the iterate: into switch_ and switch_w_, switch_wx_
