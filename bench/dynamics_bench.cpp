@@ -73,10 +73,11 @@ BENCHMARK(BM_DynamicsLoopStepHingeFriction)
 
 // Steps `s` once per benchmark iteration, stopping with an error on a step that does not converge;
 // the Newton iterations, factorizations and backtracks summed, the steps counted and the deepest
-// penetration.
+// penetration; the stick law's switch updates and their builds summed.
 struct StepTally {
   long iterations = 0, steps = 0, factorizations = 0, backtracks = 0;
   double penetration = 0.0;
+  long switch_updates = 0, switch_builds = 0;
 };
 StepTally step_on(benchmark::State& bs, Integrator& integ, const Model& m, State& s) {
   StepTally t;
@@ -89,6 +90,8 @@ StepTally step_on(benchmark::State& bs, Integrator& integ, const Model& m, State
     t.iterations += rep.iterations;
     t.factorizations += rep.factorizations;
     t.backtracks += rep.backtracks;
+    t.switch_updates += rep.switch_updates;
+    t.switch_builds += rep.switch_builds;
     t.penetration = std::max(t.penetration, rep.max_penetration);
     ++t.steps;
     benchmark::DoNotOptimize(s.x.data());
@@ -112,13 +115,17 @@ void two_sprocket_drive(benchmark::State& bs, double hinge_arm, PinLoad pin_load
   const Model& m = drive.model;
   State& s = drive.state;
   Integrator integ(m, {.step = 1e-4, .theta = 0.6, .switch_update = switch_update});
-  const auto [iterations, steps, factorizations, backtracks, penetration] =
-      step_on(bs, integ, m, s);
+  const auto [iterations, steps, factorizations, backtracks, penetration, switch_updates,
+              switch_builds] = step_on(bs, integ, m, s);
   bs.counters["newton_iterations"] =
       benchmark::Counter(static_cast<double>(iterations) / static_cast<double>(steps));
   bs.counters["factorizations"] =
       benchmark::Counter(static_cast<double>(factorizations) / static_cast<double>(steps));
   bs.counters["backtracks"] = static_cast<double>(backtracks);
+  if (stick_stiffness > 0.0) {
+    bs.counters["switch_updates"] = static_cast<double>(switch_updates);
+    bs.counters["switch_builds"] = static_cast<double>(switch_builds);
+  }
   bs.counters["simulated_s"] = 1e-4 * static_cast<double>(steps);
   bs.counters["max_penetration_um"] = 1e6 * penetration;
   bs.counters["real_time_factor"] =

@@ -34,6 +34,7 @@
 #include "catena/dynamics/block_tridiagonal.hpp"
 #include "catena/dynamics/chain.hpp"
 #include "catena/dynamics/guide_hint.hpp"
+#include "catena/dynamics/small_lu.hpp"
 
 namespace catena::dynamics {
 
@@ -64,7 +65,13 @@ struct StepReport {
   /// those failed after the line search's crossing cut acted (again from constant velocity, as the
   /// second, with the halvings alone); each run takes at most max_iterations
   int starts = 1;
-  int factorizations = 0;        ///< fresh Newton matrices factored (over every start)
+  int factorizations = 0;  ///< fresh Newton matrices factored (over every start)
+  /// the stick law's chord iterations corrected for hinges' stick–slip switches
+  /// (IntegratorOptions::switch_update), and the times that correction's W = A⁻¹ U (a
+  /// substitution per switched hinge) and I + Vᵀ W were made: where the switched hinges, their
+  /// branches or the factors had changed since the last (over every start)
+  int switch_updates = 0;
+  int switch_builds = 0;
   double last_correction = 0.0;  ///< [m] max |Δx| of the last Newton iteration
   int backtracks = 0;            ///< line-search points taken (the crossing cut's and halvings')
   double max_penetration = 0.0;  ///< [m] deepest roller–seat penetration at the step's θ point
@@ -152,9 +159,15 @@ class Integrator {
   /// (IntegratorOptions::switch_update's correction). `delta` is laid out as `unknowns`
   /// (newton_system's); the correction solves J δ = −R. False where the factorisation failed. The
   /// next step factors afresh.
+  /// `pivot_floor`: the update's guard, its I + Vᵀ W taken as singular (and the kept factors'
+  /// solve left alone) where a pivot is at most this fraction of the size of the terms its
+  /// entries were summed from (SmallLu::factor); the step's is kSwitchPivotFloor.
   bool chord_solve_after_switch(const Model& model, const State& kept, const State& now,
                                 std::span<const double> unknowns, bool update,
-                                std::vector<double>& delta);
+                                std::vector<double>& delta, double pivot_floor = kSwitchPivotFloor);
+  /// The stick law's switch update's guard (above, and Integrator::step's): a pivot of I + Vᵀ W
+  /// at most 1e-12 of its terms' size, where 12 of a double's 16 digits have cancelled
+  static constexpr double kSwitchPivotFloor = 1e-12;
 
  private:
   // Fills the solver's rhs with −R(u) (and its blocks with J(u) when `jacobian`); returns |R|².
@@ -194,7 +207,13 @@ class Integrator {
   void chord_solve(std::span<const Vec2> b, const double* bx, std::vector<Vec2>& x, double* xx);
   // The stick law's chord iteration corrected for the hinges that switched branch since the
   // kept factors were taken (delta_ and dx_ in place); false where it left them as they were.
-  bool correct_for_switches(const Model& model, const State& s);
+  // The report counts the corrections (switch_updates) and the makings of their parts
+  // (switch_builds).
+  bool correct_for_switches(const Model& model, const State& s, StepReport& report);
+  // correct_for_switches' parts for the `count` switched hinges `nodes` (now on `branches`),
+  // at the iterate: into switch_ and switch_w_, switch_wx_
+  void build_switch_update(const Model& model, const State& s, const std::size_t* nodes,
+                           const int* branches, std::size_t count);
   void substitute(std::span<const Vec2> b, std::span<Vec2> x, std::span<const Vec2> b2,
                   std::span<Vec2> x2);
 
@@ -228,7 +247,24 @@ class Integrator {
   std::vector<Vec2> switch_u_;
   std::vector<std::vector<Vec2>> switch_w_;
   std::vector<double> switch_wx_;
-  std::vector<Vec2> delta_;     // Newton correction
+  // The update's parts kept across chord iterations while the switched hinges, their branches
+  // and the factors stay (a chord iteration's Newton matrix is the kept one, and its update is
+  // taken where the switches first appeared): the hinges (count 0: none kept; factor() clears
+  // it), V on their nodes `at`, and I + Vᵀ W's LU factors; `usable` false where I + Vᵀ W was
+  // near-singular (then the kept factors alone)
+  struct SwitchUpdate {
+    std::size_t count = 0;
+    std::size_t node[kMaxSwitches] = {};
+    int branch[kMaxSwitches] = {};
+    double v[kMaxSwitches][6] = {};
+    std::size_t at[kMaxSwitches][3] = {};
+    SmallLu capacitance;  // I + Vᵀ W
+    bool usable = false;
+  };
+  static_assert(kMaxSwitches <= SmallLu::kMax);
+  SwitchUpdate switch_;
+  double switch_pivot_floor_ = kSwitchPivotFloor;  // chord_solve_after_switch's, for its call
+  std::vector<Vec2> delta_;                        // Newton correction
   std::vector<double> psi1_;    // sprocket angles at the end of the step (iterate)
   std::vector<double> slide1_;  // take-ups' slides at the end of the step (iterate), per wheel
   // per node: the conveyed load's mass m_L at x₀ (Guide::load_inertia), fixed for the step: taken

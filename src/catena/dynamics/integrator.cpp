@@ -28,6 +28,13 @@ std::vector<Issue> validate(const IntegratorOptions& options) {
 }
 
 namespace {
+// x −= c w, node by node: the bordered solve's δu₀ − W δx and the switch update's δ − W c
+void subtract_scaled(std::span<Vec2> x, std::span<const Vec2> w, double c) {
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    x[i].x -= w[i].x * c;
+    x[i].y -= w[i].y * c;
+  }
+}
 std::size_t checked_nodes(const Model& model, const IntegratorOptions& options) {
   std::vector<Issue> issues = validate(model);
   std::vector<Issue> more = validate(options);
@@ -1026,6 +1033,7 @@ Integrator::Arrival Integrator::arrival(const Model& model, std::size_t i, const
 }
 
 SolveStatus Integrator::factor() {
+  switch_.count = 0;  // the switch update's W and I + Vᵀ W are of the factors being replaced
   if (!pentadiagonal_) {
     // A fresh iteration's first substitution is always of the residual (and, with a border, of
     // the first extra's column, beside it): its forward sweep rides along with the factorisation
@@ -1242,7 +1250,8 @@ StepReport Integrator::step(const Model& model, State& s) {
         // complement's factors, for the new right-hand sides
         chord_solve(solver_.rhs, xres_.data(), delta_, dx_.data());
       }
-      if (!fresh && !trial_.empty() && options_.switch_update) correct_for_switches(model, s);
+      if (!fresh && !trial_.empty() && options_.switch_update)
+        correct_for_switches(model, s, report);
       double correction = 0.0;
       // the stick law's trials where this correction starts (crossing_cut); a swap, as every
       // assembly rewrites each hinge's entry of trial_ (and the others stay {0, 0} in both)
@@ -1660,20 +1669,13 @@ void Integrator::newton_system(const Model& model, const State& s, std::span<con
 // The bordered solve's end: back substitution on the Schur complement's upper factor (its
 // right-hand side in xx, already forward-eliminated), then δu = δu₀ − W δx (δu₀ in x).
 void Integrator::finish_bordered(std::vector<Vec2>& x, double* xx) {
-  const std::size_t n = ux_.size(), nd = extra_.size();
+  const std::size_t nd = extra_.size();
   for (std::size_t c = nd; c-- > 0;) {
     double v = xx[c];
     for (std::size_t k = c + 1; k < nd; ++k) v -= schur_[c * nd + k] * xx[k];
     xx[c] = v / schur_[c * nd + c];
   }
-  for (std::size_t a = 0; a < nd; ++a) {
-    const std::vector<Vec2>& wa = wsol_[a];
-    const double d = xx[a];
-    for (std::size_t i = 0; i < n; ++i) {
-      x[i].x -= wa[i].x * d;
-      x[i].y -= wa[i].y * d;
-    }
-  }
+  for (std::size_t a = 0; a < nd; ++a) subtract_scaled(x, wsol_[a], xx[a]);
 }
 // The bordered solve with the kept factors (a chord iteration's): the chain's part of the
 // right-hand side `b`, the extras' `bx` (null: zero), into x and xx. The unknown's row over
@@ -1704,12 +1706,14 @@ void Integrator::chord_solve(std::span<const Vec2> b, const double* bx, std::vec
 // ΔM' the change of ∂M/∂x₁ between the two branches: hinge_branch_moment_gradient), a rank-1
 // change U Vᵀ that the chord iteration's solve y = A⁻¹ r takes in by the Sherman–Morrison–
 // Woodbury formula (Golub & Van Loan, §2.1): δ = y − W (I + Vᵀ W)⁻¹ Vᵀ y, W = A⁻¹ U (one
-// substitution a switched hinge), with the links' terms at the current iterate. Up to
-// kMaxSwitches hinges; with more (or a singular I + Vᵀ W) the kept factors alone, as before.
+// substitution a switched hinge). Up to kMaxSwitches hinges; with more (or a near-singular
+// I + Vᵀ W) the kept factors alone, as before. U, V (the links' terms at the iterate where
+// these hinges' switches first appeared), W and I + Vᵀ W's factors are kept (switch_) while
+// the same hinges stay switched to the same branches with the same factors, as the chord
+// iteration keeps A: each further iteration costs Vᵀ y, the small solve and δ −= W c.
 // Without a switch nothing is done: the chord iteration is the same, bit for bit.
-bool Integrator::correct_for_switches(const Model& model, const State& s) {
-  const std::size_t n = ux_.size(), nd = extra_.size();
-  const double h = options_.step, th = options_.theta;
+bool Integrator::correct_for_switches(const Model& model, const State& s, StepReport& report) {
+  const std::size_t nd = extra_.size();
   std::size_t nodes[kMaxSwitches];
   int now[kMaxSwitches];
   std::size_t r = 0;
@@ -1722,10 +1726,45 @@ bool Integrator::correct_for_switches(const Model& model, const State& s) {
     ++r;
   }
   if (r == 0) return false;
-  double v[kMaxSwitches][6];        // ΔM' on the hinge's three nodes (x, y)
-  std::size_t at[kMaxSwitches][3];  // the three nodes
+  bool same = r == switch_.count;
+  for (std::size_t k = 0; k < r && same; ++k)
+    same = nodes[k] == switch_.node[k] && now[k] == switch_.branch[k];
+  if (!same) {
+    build_switch_update(model, s, nodes, now, r);
+    ++report.switch_builds;
+  }
+  if (!switch_.usable) return false;
+  // the coefficients (I + Vᵀ W)⁻¹ Vᵀ y with the kept factors
+  double z[SmallLu::kMax];
+  for (std::size_t k = 0; k < r; ++k) {
+    const double* v = switch_.v[k];
+    const std::size_t* at = switch_.at[k];
+    double e = 0.0;
+    for (int q = 0; q < 3; ++q) e += v[2 * q] * delta_[at[q]].x + v[2 * q + 1] * delta_[at[q]].y;
+    z[k] = e;
+  }
+  switch_.capacitance.solve(z);
+  for (std::size_t k = 0; k < r; ++k)
+    if (!std::isfinite(z[k])) return false;
+  for (std::size_t k = 0; k < r; ++k) {
+    const double c = z[k];
+    subtract_scaled(delta_, switch_w_[k], c);
+    for (std::size_t e = 0; e < nd; ++e) dx_[e] -= switch_wx_[k * nd + e] * c;
+  }
+  ++report.switch_updates;
+  return true;
+}
+
+void Integrator::build_switch_update(const Model& model, const State& s, const std::size_t* nodes,
+                                     const int* branches, std::size_t count) {
+  const std::size_t n = ux_.size(), nd = extra_.size(), r = count;
+  const double h = options_.step, th = options_.theta;
+  switch_.count = r;
+  switch_.usable = false;
   for (std::size_t k = 0; k < r; ++k) {
     const std::size_t i = nodes[k];
+    switch_.node[k] = i;
+    switch_.branch[k] = branches[k];
     const std::size_t ha = i == 0 ? n - 1 : i - 1, hb = i + 1 == n ? 0 : i + 1;
     HingeLink link[2];
     const std::size_t ends[3] = {ha, i, hb};
@@ -1735,75 +1774,45 @@ bool Integrator::correct_for_switches(const Model& model, const State& s) {
                  model.rest_length(j), model.axial_stiffness, th, link[e], true);
     }
     double mx[3], my[3], kx[3], ky[3];
-    hinge_branch_moment_gradient(model.hinge, link[0], link[1], h, i, th, now[k], mx, my);
+    hinge_branch_moment_gradient(model.hinge, link[0], link[1], h, i, th, branches[k], mx, my);
     hinge_branch_moment_gradient(model.hinge, link[0], link[1], h, i, th, kept_branch_[i], kx, ky);
     const double gx[3] = {link[0].px, -link[0].px - link[1].px, link[1].px};
     const double gy[3] = {link[0].py, -link[0].py - link[1].py, link[1].py};
     // a pinned node's row and column are the identity's (assemble): no term there
     for (int q = 0; q < 3; ++q) {
       const double keep = model.is_pinned(ends[q]) ? 0.0 : 1.0;
-      at[k][q] = ends[q];
-      v[k][2 * q] = keep * (mx[q] - kx[q]);
-      v[k][2 * q + 1] = keep * (my[q] - ky[q]);
+      switch_.at[k][q] = ends[q];
+      switch_.v[k][2 * q] = keep * (mx[q] - kx[q]);
+      switch_.v[k][2 * q + 1] = keep * (my[q] - ky[q]);
       switch_u_[ends[q]] = {-h * gx[q] * keep, -h * gy[q] * keep};
     }
     chord_solve(switch_u_, nullptr, switch_w_[k], switch_wx_.data() + k * nd);
     for (int q = 0; q < 3; ++q) switch_u_[ends[q]] = Vec2{};
   }
-  // I + Vᵀ W and Vᵀ y, then Gaussian elimination with partial pivoting (r ≤ 4)
-  double a[kMaxSwitches][kMaxSwitches + 1];
+  // I + Vᵀ W, and the size of its terms before they cancel (|I| + |V|ᵀ |W| entry by entry:
+  // where the two differ by orders, I + Vᵀ W's entries are mostly their rounding)
+  SmallLu& a = switch_.capacitance;
+  double terms = 0.0;
   for (std::size_t k = 0; k < r; ++k) {
-    double z = 0.0;
-    for (int q = 0; q < 3; ++q)
-      z += v[k][2 * q] * delta_[at[k][q]].x + v[k][2 * q + 1] * delta_[at[k][q]].y;
-    a[k][r] = z;
+    const double* v = switch_.v[k];
+    const std::size_t* at = switch_.at[k];
+    double row = 0.0;
     for (std::size_t c = 0; c < r; ++c) {
       const std::vector<Vec2>& w = switch_w_[c];
-      double e = k == c ? 1.0 : 0.0;
-      for (int q = 0; q < 3; ++q)
-        e += v[k][2 * q] * w[at[k][q]].x + v[k][2 * q + 1] * w[at[k][q]].y;
-      a[k][c] = e;
+      double e = k == c ? 1.0 : 0.0, size = e;
+      for (int q = 0; q < 3; ++q) {
+        e += v[2 * q] * w[at[q]].x + v[2 * q + 1] * w[at[q]].y;
+        size += std::abs(v[2 * q] * w[at[q]].x) + std::abs(v[2 * q + 1] * w[at[q]].y);
+      }
+      a.lu[k][c] = e;
+      row += size;
     }
+    terms = std::max(terms, row);
   }
-  // a pivot below kPivotFloor of the matrix's largest row sum: I + Vᵀ W is singular to
-  // rounding, and its solve's coefficients would be noise (or overflow)
-  constexpr double kPivotFloor = 1e-12;
-  double scale = 0.0;
-  for (std::size_t k = 0; k < r; ++k) {
-    double row = 0.0;
-    for (std::size_t c = 0; c < r; ++c) row += std::abs(a[k][c]);
-    scale = std::max(scale, row);
-  }
-  if (!std::isfinite(scale)) return false;
-  for (std::size_t c = 0; c < r; ++c) {
-    std::size_t p = c;
-    for (std::size_t k = c + 1; k < r; ++k)
-      if (std::abs(a[k][c]) > std::abs(a[p][c])) p = k;
-    if (!(std::abs(a[p][c]) > kPivotFloor * scale)) return false;
-    if (p != c) std::swap(a[p], a[c]);
-    for (std::size_t k = c + 1; k < r; ++k) {
-      const double f = a[k][c] / a[c][c];
-      for (std::size_t e = c; e <= r; ++e) a[k][e] -= f * a[c][e];
-    }
-  }
-  double coef[kMaxSwitches];
-  for (std::size_t c = r; c-- > 0;) {
-    double z = a[c][r];
-    for (std::size_t e = c + 1; e < r; ++e) z -= a[c][e] * coef[e];
-    coef[c] = z / a[c][c];
-  }
-  for (std::size_t k = 0; k < r; ++k)
-    if (!std::isfinite(coef[k])) return false;
-  for (std::size_t k = 0; k < r; ++k) {
-    const std::vector<Vec2>& w = switch_w_[k];
-    const double c = coef[k];
-    for (std::size_t i = 0; i < n; ++i) {
-      delta_[i].x -= w[i].x * c;
-      delta_[i].y -= w[i].y * c;
-    }
-    for (std::size_t e = 0; e < nd; ++e) dx_[e] -= switch_wx_[k * nd + e] * c;
-  }
-  return true;
+  // A pivot at most switch_pivot_floor_ of the terms: I + Vᵀ W is singular to rounding (and so
+  // the switched Newton matrix: det(A + U Vᵀ) = det A det(I + Vᵀ W)), and the solve's
+  // coefficients would be noise (or overflow).
+  switch_.usable = a.factor(r, terms, switch_pivot_floor_);
 }
 
 void Integrator::load_iterate(const Model& model, const State& s,
@@ -1831,7 +1840,7 @@ void Integrator::load_iterate(const Model& model, const State& s,
 
 bool Integrator::chord_solve_after_switch(const Model& model, const State& kept, const State& now,
                                           std::span<const double> unknowns, bool update,
-                                          std::vector<double>& delta) {
+                                          std::vector<double>& delta, double pivot_floor) {
   const std::size_t n = model.nodes(), m = extra_.size(), size = 2 * n + m;
   check_unknowns(model, unknowns.size());
   throw_if_any(validate(model, kept));
@@ -1852,7 +1861,10 @@ bool Integrator::chord_solve_after_switch(const Model& model, const State& kept,
     substitute(solver_.rhs, delta_);
   else
     chord_solve(solver_.rhs, xres_.data(), delta_, dx_.data());
-  if (update && !trial_.empty()) correct_for_switches(model, now);
+  StepReport counts;
+  switch_pivot_floor_ = pivot_floor;
+  if (update && !trial_.empty()) correct_for_switches(model, now, counts);
+  switch_pivot_floor_ = kSwitchPivotFloor;
   delta.assign(size, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     delta[2 * i] = delta_[i].x;
