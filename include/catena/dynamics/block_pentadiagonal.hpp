@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "catena/dynamics/block_tridiagonal.hpp"
+#include "catena/dynamics/small_lu.hpp"
 
 namespace catena::dynamics {
 
@@ -84,8 +85,8 @@ class BlockPentadiagonalSolver {
   // the closure: corners C_tr (rows 0..3, columns m − 4..m − 1) and C_bl (rows m − 4..m − 1,
   // columns 0..3), H = G⁻¹ C_tr = −A_tl⁻¹ C_tr, Q = T⁻¹ W (m × 4, row-major), the capacitance's
   // LU and pivots
-  double ctr_[4][4] = {}, cbl_[4][4] = {}, h_[4][4] = {}, cap_[4][4] = {};
-  int cap_piv_[4] = {};
+  double ctr_[4][4] = {}, cbl_[4][4] = {}, h_[4][4] = {};
+  SmallLu cap_;
   std::vector<double> q_, y_, y2_;
 };
 

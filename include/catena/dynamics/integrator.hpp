@@ -162,9 +162,18 @@ class Integrator {
   /// `pivot_floor`: the update's guard, its I + Vᵀ W taken as singular (and the kept factors'
   /// solve left alone) where a pivot is at most this fraction of the size of the terms its
   /// entries were summed from (SmallLu::factor); the step's is kSwitchPivotFloor.
+  /// Throws InputError where `pivot_floor` is not in [0, 1).
   bool chord_solve_after_switch(const Model& model, const State& kept, const State& now,
                                 std::span<const double> unknowns, bool update,
                                 std::vector<double>& delta, double pivot_floor = kSwitchPivotFloor);
+  /// chord_solve_after_switch for a sequence of states `now`, each solved with the one
+  /// factorisation at `kept` (as a step's successive chord iterations are): the update's parts
+  /// are kept from one state to the next while the same hinges stay switched to the same
+  /// branches, made afresh where they change. `deltas[k]` is now[k]'s correction.
+  bool chord_solves_after_switch(const Model& model, const State& kept, std::span<const State> now,
+                                 std::span<const double> unknowns, bool update,
+                                 std::vector<std::vector<double>>& deltas,
+                                 double pivot_floor = kSwitchPivotFloor);
   /// The stick law's switch update's guard (above, and Integrator::step's): a pivot of I + Vᵀ W
   /// at most 1e-12 of its terms' size, where 12 of a double's 16 digits have cancelled
   static constexpr double kSwitchPivotFloor = 1e-12;
@@ -209,11 +218,13 @@ class Integrator {
   // kept factors were taken (delta_ and dx_ in place); false where it left them as they were.
   // The report counts the corrections (switch_updates) and the makings of their parts
   // (switch_builds).
-  bool correct_for_switches(const Model& model, const State& s, StepReport& report);
+  // `pivot_floor`: the guard's (kSwitchPivotFloor in a step).
+  bool correct_for_switches(const Model& model, const State& s, StepReport& report,
+                            double pivot_floor);
   // correct_for_switches' parts for the `count` switched hinges `nodes` (now on `branches`),
   // at the iterate: into switch_ and switch_w_, switch_wx_
   void build_switch_update(const Model& model, const State& s, const std::size_t* nodes,
-                           const int* branches, std::size_t count);
+                           const int* branches, std::size_t count, double pivot_floor);
   void substitute(std::span<const Vec2> b, std::span<Vec2> x, std::span<const Vec2> b2,
                   std::span<Vec2> x2);
 
@@ -263,8 +274,7 @@ class Integrator {
   };
   static_assert(kMaxSwitches <= SmallLu::kMax);
   SwitchUpdate switch_;
-  double switch_pivot_floor_ = kSwitchPivotFloor;  // chord_solve_after_switch's, for its call
-  std::vector<Vec2> delta_;                        // Newton correction
+  std::vector<Vec2> delta_;     // Newton correction
   std::vector<double> psi1_;    // sprocket angles at the end of the step (iterate)
   std::vector<double> slide1_;  // take-ups' slides at the end of the step (iterate), per wheel
   // per node: the conveyed load's mass m_L at x₀ (Guide::load_inertia), fixed for the step: taken

@@ -1,6 +1,7 @@
 // A small dense matrix's LU factorisation with partial pivoting (Golub & Van Loan, Matrix
 // Computations, §3.4), kept for repeated solves: the stick law's switch update (Integrator, the
-// matrix I + Vᵀ W of up to four switched hinges; docs/models/dynamics.md, "Hinges: sticking").
+// matrix I + Vᵀ W of up to four switched hinges; docs/models/dynamics.md, "Hinges: sticking") and
+// the block pentadiagonal solver's closure (its 4×4 A_tl and capacitance).
 #pragma once
 
 #include <cmath>
@@ -23,13 +24,23 @@ struct SmallLu {
   /// singular to that fraction of its terms, which its entries' rounding may be most of) or
   /// `terms` is not finite; the factors are then not to be used.
   bool factor(std::size_t n, double terms, double floor) {
+    if (!std::isfinite(terms)) {
+      size = n;
+      return false;
+    }
+    return factor(n, [&](double pivot) { return std::abs(pivot) > floor * terms; });
+  }
+
+  /// Factors lu's leading n × n block in place; false (the factors not to be used) at the first
+  /// pivot, the largest of its column's candidates, for which usable(pivot) is false.
+  template <class Usable>
+  bool factor(std::size_t n, Usable usable) {
     size = n;
-    if (!std::isfinite(terms)) return false;
     for (std::size_t c = 0; c < n; ++c) {
       std::size_t p = c;
       for (std::size_t k = c + 1; k < n; ++k)
         if (std::abs(lu[k][c]) > std::abs(lu[p][c])) p = k;
-      if (!(std::abs(lu[p][c]) > floor * terms)) return false;
+      if (!usable(lu[p][c])) return false;
       swap[c] = p;
       if (p != c) std::swap(lu[p], lu[c]);
       for (std::size_t k = c + 1; k < n; ++k) {

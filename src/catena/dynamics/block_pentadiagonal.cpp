@@ -12,38 +12,6 @@ namespace {
 
 bool usable_pivot(double p) { return std::isfinite(p) && std::abs(p) > 1e-300; }
 
-// In-place LU with partial pivoting of a 4×4 matrix; false when a pivot is zero.
-bool lu4(double a[4][4], int piv[4]) {
-  for (int k = 0; k < 4; ++k) {
-    int p = k;
-    for (int r = k + 1; r < 4; ++r) {
-      if (std::abs(a[r][k]) > std::abs(a[p][k])) p = r;
-    }
-    piv[k] = p;
-    if (!usable_pivot(a[p][k])) return false;
-    if (p != k) {
-      for (int c = 0; c < 4; ++c) std::swap(a[k][c], a[p][c]);
-    }
-    for (int r = k + 1; r < 4; ++r) {
-      a[r][k] /= a[k][k];
-      for (int c = k + 1; c < 4; ++c) a[r][c] -= a[r][k] * a[k][c];
-    }
-  }
-  return true;
-}
-
-// v ← A⁻¹ v with lu4's factors.
-void lu4_solve(const double a[4][4], const int piv[4], double v[4]) {
-  for (int k = 0; k < 4; ++k) std::swap(v[k], v[piv[k]]);
-  for (int r = 1; r < 4; ++r) {
-    for (int c = 0; c < r; ++c) v[r] -= a[r][c] * v[c];
-  }
-  for (int r = 3; r >= 0; --r) {
-    for (int c = r + 1; c < 4; ++c) v[r] -= a[r][c] * v[c];
-    v[r] /= a[r][r];
-  }
-}
-
 }  // namespace
 
 BlockPentadiagonalSolver::BlockPentadiagonalSolver(std::size_t n, bool cyclic)
@@ -106,18 +74,18 @@ SolveStatus BlockPentadiagonalSolver::factor() {
       }
     }
   }
-  double a_tl[4][4], a_top[4][4];  // A_tl's LU, and A_tl itself (G = −A_tl is W's top)
-  int a_tl_piv[4];
+  SmallLu a_tl;        // A_tl's LU
+  double a_top[4][4];  // A_tl itself (G = −A_tl is W's top)
   if (closure_) {
     // T = A − W Zᵀ: T_tl = A_tl − G = 2 A_tl, T_br = A_br − C_bl G⁻¹ C_tr = A_br + C_bl A_tl⁻¹
     // C_tr; H = G⁻¹ C_tr = −A_tl⁻¹ C_tr.
     for (std::size_t r = 0; r < 4; ++r) {
-      for (std::size_t c = 0; c < 4; ++c) a_tl[r][c] = a_top[r][c] = element(r, c);
+      for (std::size_t c = 0; c < 4; ++c) a_tl.lu[r][c] = a_top[r][c] = element(r, c);
     }
-    if (!lu4(a_tl, a_tl_piv)) return SolveStatus::kSingularPivot;
+    if (!a_tl.factor(4, usable_pivot)) return SolveStatus::kSingularPivot;
     for (int c = 0; c < 4; ++c) {
       double col[4] = {ctr_[0][c], ctr_[1][c], ctr_[2][c], ctr_[3][c]};
-      lu4_solve(a_tl, a_tl_piv, col);
+      a_tl.solve(col);
       for (int r = 0; r < 4; ++r) h_[r][c] = -col[r];
     }
     for (std::size_t r = 0; r < 4; ++r) {
@@ -163,10 +131,10 @@ SolveStatus BlockPentadiagonalSolver::factor() {
     for (std::size_t c = 0; c < 4; ++c) {
       double s = (r == c ? 1.0 : 0.0) + q_[4 * r + c];
       for (std::size_t k = 0; k < 4; ++k) s += h_[r][k] * q_[4 * (m - 4 + k) + c];
-      cap_[r][c] = s;
+      cap_.lu[r][c] = s;
     }
   }
-  if (!lu4(cap_, cap_piv_)) return SolveStatus::kSingularPivot;
+  if (!cap_.factor(4, usable_pivot)) return SolveStatus::kSingularPivot;
   return SolveStatus::kSolved;
 }
 
@@ -336,7 +304,7 @@ void BlockPentadiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec
       for (std::size_t k = 0; k < 4; ++k) s += h_[r][k] * y_[m - 4 + k];
       z[r] = s;
     }
-    lu4_solve(cap_, cap_piv_, z);
+    cap_.solve(z);
     for (std::size_t r = 0; r < m; ++r) {
       const double* q = &q_[4 * r];
       y_[r] -= q[0] * z[0] + q[1] * z[1] + q[2] * z[2] + q[3] * z[3];
@@ -402,8 +370,8 @@ void BlockPentadiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec
       z[r] = s;
       z2[r] = t;
     }
-    lu4_solve(cap_, cap_piv_, z);
-    lu4_solve(cap_, cap_piv_, z2);
+    cap_.solve(z);
+    cap_.solve(z2);
     for (std::size_t r = 0; r < m; ++r) {
       const double* q = &q_[4 * r];
       y[r] -= q[0] * z[0] + q[1] * z[1] + q[2] * z[2] + q[3] * z[3];

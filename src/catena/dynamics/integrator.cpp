@@ -35,6 +35,12 @@ void subtract_scaled(std::span<Vec2> x, std::span<const Vec2> w, double c) {
     x[i].y -= w[i].y * c;
   }
 }
+// e + v · x over a switched hinge's three nodes `at` (v: their x, y entries in turn): the switch
+// update's Vᵀ y and Vᵀ W
+double hinge_dot(const double* v, const std::size_t* at, std::span<const Vec2> x, double e) {
+  for (int q = 0; q < 3; ++q) e += v[2 * q] * x[at[q]].x + v[2 * q + 1] * x[at[q]].y;
+  return e;
+}
 std::size_t checked_nodes(const Model& model, const IntegratorOptions& options) {
   std::vector<Issue> issues = validate(model);
   std::vector<Issue> more = validate(options);
@@ -1251,7 +1257,7 @@ StepReport Integrator::step(const Model& model, State& s) {
         chord_solve(solver_.rhs, xres_.data(), delta_, dx_.data());
       }
       if (!fresh && !trial_.empty() && options_.switch_update)
-        correct_for_switches(model, s, report);
+        correct_for_switches(model, s, report, kSwitchPivotFloor);
       double correction = 0.0;
       // the stick law's trials where this correction starts (crossing_cut); a swap, as every
       // assembly rewrites each hinge's entry of trial_ (and the others stay {0, 0} in both)
@@ -1383,14 +1389,16 @@ StepReport Integrator::step(const Model& model, State& s) {
   // friction and guides together)
   const bool stale =
       pentadiagonal_ && factors_kept_ && s.time == history_time_ && model.guides.empty();
-  // Newton again from constant velocity with fresh factors, the iterations, factorisations and
-  // backtracks of the starts before (`before`) counted with its own
+  // Newton again from constant velocity with fresh factors, the iterations, factorisations,
+  // backtracks and switch updates of the starts before (`before`) counted with its own
   auto restart = [&](const StepReport& before) {
     StepReport again = newton(0.0, false);
     again.iterations += before.iterations;
     again.starts = before.starts + 1;
     again.factorizations += before.factorizations;
     again.backtracks += before.backtracks;
+    again.switch_updates += before.switch_updates;
+    again.switch_builds += before.switch_builds;
     return again;
   };
   StepReport report = newton(extrapolate, stale);
@@ -1712,7 +1720,8 @@ void Integrator::chord_solve(std::span<const Vec2> b, const double* bx, std::vec
 // the same hinges stay switched to the same branches with the same factors, as the chord
 // iteration keeps A: each further iteration costs Vᵀ y, the small solve and δ −= W c.
 // Without a switch nothing is done: the chord iteration is the same, bit for bit.
-bool Integrator::correct_for_switches(const Model& model, const State& s, StepReport& report) {
+bool Integrator::correct_for_switches(const Model& model, const State& s, StepReport& report,
+                                      double pivot_floor) {
   const std::size_t nd = extra_.size();
   std::size_t nodes[kMaxSwitches];
   int now[kMaxSwitches];
@@ -1730,19 +1739,13 @@ bool Integrator::correct_for_switches(const Model& model, const State& s, StepRe
   for (std::size_t k = 0; k < r && same; ++k)
     same = nodes[k] == switch_.node[k] && now[k] == switch_.branch[k];
   if (!same) {
-    build_switch_update(model, s, nodes, now, r);
+    build_switch_update(model, s, nodes, now, r, pivot_floor);
     ++report.switch_builds;
   }
   if (!switch_.usable) return false;
   // the coefficients (I + Vᵀ W)⁻¹ Vᵀ y with the kept factors
   double z[SmallLu::kMax];
-  for (std::size_t k = 0; k < r; ++k) {
-    const double* v = switch_.v[k];
-    const std::size_t* at = switch_.at[k];
-    double e = 0.0;
-    for (int q = 0; q < 3; ++q) e += v[2 * q] * delta_[at[q]].x + v[2 * q + 1] * delta_[at[q]].y;
-    z[k] = e;
-  }
+  for (std::size_t k = 0; k < r; ++k) z[k] = hinge_dot(switch_.v[k], switch_.at[k], delta_, 0.0);
   switch_.capacitance.solve(z);
   for (std::size_t k = 0; k < r; ++k)
     if (!std::isfinite(z[k])) return false;
@@ -1756,7 +1759,7 @@ bool Integrator::correct_for_switches(const Model& model, const State& s, StepRe
 }
 
 void Integrator::build_switch_update(const Model& model, const State& s, const std::size_t* nodes,
-                                     const int* branches, std::size_t count) {
+                                     const int* branches, std::size_t count, double pivot_floor) {
   const std::size_t n = ux_.size(), nd = extra_.size(), r = count;
   const double h = options_.step, th = options_.theta;
   switch_.count = r;
@@ -1799,20 +1802,18 @@ void Integrator::build_switch_update(const Model& model, const State& s, const s
     double row = 0.0;
     for (std::size_t c = 0; c < r; ++c) {
       const std::vector<Vec2>& w = switch_w_[c];
-      double e = k == c ? 1.0 : 0.0, size = e;
-      for (int q = 0; q < 3; ++q) {
-        e += v[2 * q] * w[at[q]].x + v[2 * q + 1] * w[at[q]].y;
+      double size = k == c ? 1.0 : 0.0;
+      for (int q = 0; q < 3; ++q)
         size += std::abs(v[2 * q] * w[at[q]].x) + std::abs(v[2 * q + 1] * w[at[q]].y);
-      }
-      a.lu[k][c] = e;
+      a.lu[k][c] = hinge_dot(v, at, w, k == c ? 1.0 : 0.0);
       row += size;
     }
     terms = std::max(terms, row);
   }
-  // A pivot at most switch_pivot_floor_ of the terms: I + Vᵀ W is singular to rounding (and so
+  // A pivot at most pivot_floor of the terms: I + Vᵀ W is singular to rounding (and so
   // the switched Newton matrix: det(A + U Vᵀ) = det A det(I + Vᵀ W)), and the solve's
   // coefficients would be noise (or overflow).
-  switch_.usable = a.factor(r, terms, switch_pivot_floor_);
+  switch_.usable = a.factor(r, terms, pivot_floor);
 }
 
 void Integrator::load_iterate(const Model& model, const State& s,
@@ -1841,10 +1842,29 @@ void Integrator::load_iterate(const Model& model, const State& s,
 bool Integrator::chord_solve_after_switch(const Model& model, const State& kept, const State& now,
                                           std::span<const double> unknowns, bool update,
                                           std::vector<double>& delta, double pivot_floor) {
+  std::vector<std::vector<double>> deltas;
+  const bool solved = chord_solves_after_switch(model, kept, std::span<const State>(&now, 1),
+                                                unknowns, update, deltas, pivot_floor);
+  delta = std::move(deltas[0]);
+  return solved;
+}
+
+bool Integrator::chord_solves_after_switch(const Model& model, const State& kept,
+                                           std::span<const State> now,
+                                           std::span<const double> unknowns, bool update,
+                                           std::vector<std::vector<double>>& deltas,
+                                           double pivot_floor) {
   const std::size_t n = model.nodes(), m = extra_.size(), size = 2 * n + m;
   check_unknowns(model, unknowns.size());
-  throw_if_any(validate(model, kept));
-  throw_if_any(validate(model, now));
+  std::vector<Issue> issues = validate(model, kept);
+  for (const State& s : now) {
+    std::vector<Issue> more = validate(model, s);
+    issues.insert(issues.end(), more.begin(), more.end());
+  }
+  if (!std::isfinite(pivot_floor) || !(pivot_floor >= 0.0) || !(pivot_floor < 1.0))
+    issues.push_back({"pivot_floor", check::format_si(pivot_floor, ""), "a number in [0, 1)"});
+  throw_if_any(issues);
+  deltas.assign(now.size(), std::vector<double>(size, 0.0));
   factors_kept_ = false;  // the next step factors afresh
   load_iterate(model, kept, unknowns);
   assemble(model, kept, true);
@@ -1855,22 +1875,22 @@ bool Integrator::chord_solve_after_switch(const Model& model, const State& kept,
   } else if (solve_fresh() != SolveStatus::kSolved) {
     return false;
   }
-  load_iterate(model, now, unknowns);
-  assemble(model, now, false);
-  if (m == 0)
-    substitute(solver_.rhs, delta_);
-  else
-    chord_solve(solver_.rhs, xres_.data(), delta_, dx_.data());
   StepReport counts;
-  switch_pivot_floor_ = pivot_floor;
-  if (update && !trial_.empty()) correct_for_switches(model, now, counts);
-  switch_pivot_floor_ = kSwitchPivotFloor;
-  delta.assign(size, 0.0);
-  for (std::size_t i = 0; i < n; ++i) {
-    delta[2 * i] = delta_[i].x;
-    delta[2 * i + 1] = delta_[i].y;
+  for (std::size_t k = 0; k < now.size(); ++k) {
+    load_iterate(model, now[k], unknowns);
+    assemble(model, now[k], false);
+    if (m == 0)
+      substitute(solver_.rhs, delta_);
+    else
+      chord_solve(solver_.rhs, xres_.data(), delta_, dx_.data());
+    if (update && !trial_.empty()) correct_for_switches(model, now[k], counts, pivot_floor);
+    std::vector<double>& delta = deltas[k];
+    for (std::size_t i = 0; i < n; ++i) {
+      delta[2 * i] = delta_[i].x;
+      delta[2 * i + 1] = delta_[i].y;
+    }
+    for (std::size_t a = 0; a < m; ++a) delta[2 * n + a] = dx_[a];
   }
-  for (std::size_t a = 0; a < m; ++a) delta[2 * n + a] = dx_[a];
   return true;
 }
 
