@@ -675,6 +675,17 @@ TEST(HingeStick, SwitchUpdateGuardRefusesANearSingularMatrix) {
   for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(y[k], x[k], 1e-14 * std::abs(x[k])) << k;
 }
 
+// Hinge 0 sticking where the factors are kept (its deflection inside the band) and sliding forwards
+// now, every other hinge undeflected: the kept and the current state of one switch.
+std::pair<State, State> hinge0_switch(const SwitchCase& c) {
+  State kept = c.state, now = c.state;
+  kept.hinge_deflection.assign(c.model.nodes(), 0.0);
+  now.hinge_deflection.assign(c.model.nodes(), 0.0);
+  kept.hinge_deflection[0] = deflection_at(c, 0, kIn);
+  now.hinge_deflection[0] = deflection_at(c, 0, kOut);
+  return {kept, now};
+}
+
 // Where the guard refuses I + Vᵀ W, the chord iteration's correction is the kept factors'
 // alone, bit for bit (the one a chord iteration without the update takes, and whose iterations
 // converge: SwitchUpdateKeepsTheFactorsAcrossStickSlipSwitches). On the loop no switch makes
@@ -686,12 +697,7 @@ TEST(HingeStick, SwitchUpdateGuardRefusesANearSingularMatrix) {
 // (the switched system's, SwitchUpdateSolvesTheSwitchedNewtonSystem).
 TEST(HingeStick, SwitchUpdateLeavesANearSingularMatrixToTheKeptFactors) {
   const SwitchCase c = spinning_loop();
-  const std::size_t n = c.model.nodes();
-  State kept = c.state, now = c.state;
-  kept.hinge_deflection.assign(n, 0.0);
-  now.hinge_deflection.assign(n, 0.0);
-  kept.hinge_deflection[0] = deflection_at(c, 0, kIn);
-  now.hinge_deflection[0] = deflection_at(c, 0, kOut);
+  const auto [kept, now] = hinge0_switch(c);
   Integrator integ(c.model, {.step = kSwitchStep, .theta = kSwitchTheta});
   std::vector<double> plain, refused, corrected;
   ASSERT_TRUE(integ.chord_solve_after_switch(c.model, kept, now, c.u, false, plain));
@@ -710,11 +716,7 @@ TEST(HingeStick, SwitchUpdateLeavesANearSingularMatrixToTheKeptFactors) {
 TEST(HingeStick, SwitchUpdateIsMadeAfreshWithNewFactors) {
   const SwitchCase c = spinning_loop();
   const std::size_t n = c.model.nodes();
-  State kept = c.state, now = c.state;
-  kept.hinge_deflection.assign(n, 0.0);
-  now.hinge_deflection.assign(n, 0.0);
-  kept.hinge_deflection[0] = deflection_at(c, 0, kIn);
-  now.hinge_deflection[0] = deflection_at(c, 0, kOut);
+  const auto [kept, now] = hinge0_switch(c);
   std::vector<double> moved = c.u;
   for (std::size_t i = 3; i + 4 <= n; ++i) {
     moved[2 * i] += 2e-4 * std::sin(static_cast<double>(i));

@@ -447,6 +447,15 @@ ArcEnd arc_end(const Guide& rail, bool at_end) {
           -past * ey,
           past * ex};
 }
+// Either rail's end frame: an arc's as above, a straight rail's at (x0, y0) or (x1, y1) with the
+// free side's normal its left (−u_y, u_x) and the direction past it ±u.
+ArcEnd rail_end(const Guide& rail, bool at_end) {
+  if (rail.kind == Guide::Kind::kArc) return arc_end(rail, at_end);
+  const double len = std::hypot(rail.x1 - rail.x0, rail.y1 - rail.y0);
+  const double ux = (rail.x1 - rail.x0) / len, uy = (rail.y1 - rail.y0) / len;
+  const double past = at_end ? 1.0 : -1.0;
+  return {at_end ? rail.x1 : rail.x0, at_end ? rail.y1 : rail.y0, -uy, ux, past * ux, past * uy};
+}
 double point_x(const Guide& a, double phi) { return a.centre_x + a.radius * std::cos(phi); }
 double point_y(const Guide& a, double phi) { return a.centre_y + a.radius * std::sin(phi); }
 
@@ -836,17 +845,8 @@ TEST(DynamicsSquareEnd, ARollerCrossingABareEndDeeperThanTheRampIsNamed) {
     ASSERT_EQ(ends.size(), 2U);
     for (const bool at_end : {false, true}) {
       // the end's point, its free side's normal and the direction past it (out of the rail)
-      double px = 0.0, py = 0.0, nx = 0.0, ny = 0.0, ox = 0.0, oy = 0.0;
-      if (rail.kind == Guide::Kind::kArc) {
-        const ArcEnd e = arc_end(rail, at_end);
-        px = e.px, py = e.py, nx = e.nx, ny = e.ny, ox = e.ox, oy = e.oy;
-      } else {
-        const double len = std::hypot(rail.x1 - rail.x0, rail.y1 - rail.y0);
-        const double ux = (rail.x1 - rail.x0) / len, uy = (rail.y1 - rail.y0) / len;
-        px = at_end ? rail.x1 : rail.x0, py = at_end ? rail.y1 : rail.y0;
-        nx = -uy, ny = ux;
-        ox = at_end ? ux : -ux, oy = at_end ? uy : -uy;
-      }
+      const ArcEnd e = rail_end(rail, at_end);
+      const double px = e.px, py = e.py, nx = e.nx, ny = e.ny, ox = e.ox, oy = e.oy;
       // node i crosses the face g_i below the roller line, from `before` past it at `speed`
       // towards the rail
       const auto strike = [&](std::vector<double> g, double before = 3e-4, double speed = 0.5) {
@@ -910,17 +910,8 @@ TEST(DynamicsSquareEnd, ALeadInsOwnFarEndIsSquareAndItsExactClearanceHolds) {
   for (const Guide& rail : {inclined_rail(0.0), arc_rail(false), arc_rail(true)}) {
     const double r = rail.roller_radius, eps = rail.contact_smoothing, h = 1e-3;
     for (const bool at_end : {false, true}) {
-      double px = 0.0, py = 0.0, nx = 0.0, ny = 0.0, ox = 0.0, oy = 0.0;
-      if (rail.kind == Guide::Kind::kArc) {
-        const ArcEnd e = arc_end(rail, at_end);
-        px = e.px, py = e.py, nx = e.nx, ny = e.ny, ox = e.ox, oy = e.oy;
-      } else {
-        const double len = std::hypot(rail.x1 - rail.x0, rail.y1 - rail.y0);
-        const double ux = (rail.x1 - rail.x0) / len, uy = (rail.y1 - rail.y0) / len;
-        px = at_end ? rail.x1 : rail.x0, py = at_end ? rail.y1 : rail.y0;
-        nx = -uy, ny = ux;
-        ox = at_end ? ux : -ux, oy = at_end ? uy : -uy;
-      }
+      const ArcEnd e = rail_end(rail, at_end);
+      const double px = e.px, py = e.py, nx = e.nx, ny = e.ny, ox = e.ox, oy = e.oy;
       // the lead-in (R, α) at this end; a roller G below the roller line, moving 0.5 mm towards
       // the rail from 0.3 mm before the far face: the strike on the far end, if any
       const auto strike = [&](double R, double a, double G) {

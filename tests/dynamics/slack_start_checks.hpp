@@ -184,4 +184,18 @@ inline void expect_both_runs_tangent(const TwoRuns& t, const BeltPath& laid,
   }
 }
 
+// A series' changes from one sample to the next: their mean and the largest (for the continuity
+// checks: no step's change far above the mean step's).
+struct StepChanges {
+  double mean = 0.0, most = 0.0;
+};
+inline StepChanges step_changes(const std::vector<double>& v) {
+  StepChanges c;
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    c.mean += std::abs(v[i] - v[i - 1]) / static_cast<double>(v.size() - 1);
+    c.most = std::max(c.most, std::abs(v[i] - v[i - 1]));
+  }
+  return c;
+}
+
 }  // namespace catena::dynamics::testing

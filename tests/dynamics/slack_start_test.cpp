@@ -968,11 +968,7 @@ TEST(DynamicsSlackStart, TheStartIsContinuousAsTheSlopeTurnsThroughAFold) {
   const std::pair<const char*, const std::vector<double>&> series[] = {
       {"a", as}, {"lowest point", lows}, {"e", extras}};
   for (const auto& [name, v] : series) {
-    double mean = 0.0, most = 0.0;
-    for (std::size_t i = 1; i < v.size(); ++i) {
-      mean += std::abs(v[i] - v[i - 1]) / static_cast<double>(v.size() - 1);
-      most = std::max(most, std::abs(v[i] - v[i - 1]));
-    }
+    const auto [mean, most] = step_changes(v);
     if (name == std::string("e"))
       EXPECT_LT(most, 1e-5) << name;
     else

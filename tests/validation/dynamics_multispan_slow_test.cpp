@@ -73,11 +73,7 @@ TEST(DynamicsMultispanSlow, TwoSlackSpansStartContinuouslyAsTheRunsTurn) {
   const std::pair<const char*, const std::vector<double>&> series[] = {
       {"a", as}, {"lowest point", lows}, {"e", extras}};
   for (const auto& [name, v] : series) {
-    double mean = 0.0, most = 0.0;
-    for (std::size_t i = 1; i < v.size(); ++i) {
-      mean += std::abs(v[i] - v[i - 1]) / static_cast<double>(v.size() - 1);
-      most = std::max(most, std::abs(v[i] - v[i - 1]));
-    }
+    const auto [mean, most] = step_changes(v);
     EXPECT_LT(most, 1.5 * mean) << name;
     std::printf("%s: the largest step's change %.4g mm, the mean step's %.4g mm\n", name,
                 most * 1e3, mean * 1e3);
