@@ -1086,14 +1086,11 @@ TEST(DynamicsBoundaryCli, ARollerStrikingABareEntryEndIsNamedWithTheLeadIn) {
   EXPECT_EQ(other.status, 0) << other.err;
   // not named a strike: retaken as half-steps, and the run goes on (before the retakes it stopped
   // with dynamics.not_converged, "step 4 (t = 0.008 s) did not converge in 50 Newton iterations
-  // in all, ...") until the guard on energy from nothing stops it (step 12: +2.29 J against
-  // 0.94 J received, the 1e10 N/m links at 2 ms)
-  EXPECT_NE(other.err.find("catena: error: step 12 (t = 0.024 s): the work balance's numerical "
-                           "term, energy gained from nothing, is "),
-            std::string::npos)
-      << other.err;
-  EXPECT_EQ(codes(other),
-            (std::vector<std::string>{"dynamics.energy_gain", "dynamics.steps_retaken"}));
+  // in all, ..."); its energy from nothing passes twice what it received at step 12 (+2.29 J
+  // against 0.94 J, the 1e10 N/m links at 2 ms) and is back under it at the guard's checks (every
+  // 10 steps, and the last), so it runs its 25 steps
+  EXPECT_EQ(codes(other), (std::vector<std::string>{"dynamics.steps_retaken"})) << other.err;
+  EXPECT_EQ(nlohmann::json::parse(other.out)["summary"]["steps"], 25) << other.err;
   EXPECT_NE(other.out.find("the first at step 4 (t = 0.008 s)"), std::string::npos)
       << other.out.substr(0, 400);
 }

@@ -79,6 +79,19 @@ class GuideHint {
   std::size_t rebuilds_ = 0;
 };
 
+/// What energy() keeps between calls when given it: the wheels' and the guides' node hints and the
+/// wheels' boxes. A run that evaluates its energy at every sample (the guard on energy from
+/// nothing, analysis.cpp) then rebuilds only the hints' node lists, not their grids, and allocates
+/// nothing after the first call; the result is the same as energy(model, state)'s bit for bit (the
+/// lists are the same nodes in node order).
+struct EnergyScratch {
+  GuideHint wheels{0.0};
+  GuideHint guides{0.0};
+  std::vector<GuideBounds> boxes;
+};
+
+Energy energy(const Model& model, const State& state, EnergyScratch& scratch);
+
 /// Where the lift of a node by one guide disagrees with another (docs/models/dynamics.md, "Guides
 /// against the starting path: several rails"): the node `node`, moved last by guide `first`, either
 /// then pulled through a later guide `second` from behind its surface (it lay `depth` into the

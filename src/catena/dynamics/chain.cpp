@@ -1974,6 +1974,11 @@ std::vector<Issue> validate(const Model& model, const State& state) {
 }
 
 Energy energy(const Model& model, const State& state) {
+  EnergyScratch scratch;
+  return energy(model, state, scratch);
+}
+
+Energy energy(const Model& model, const State& state, EnergyScratch& scratch) {
   Energy e;
   const std::size_t n = model.nodes();
   // the conveyed load's mass (Guide::load_inertia) moves with its node: its kinetic energy
@@ -2000,9 +2005,10 @@ Energy energy(const Model& model, const State& state) {
   const auto slides_of = [&](std::size_t w) {
     return model.sprockets[w].takeup && w < state.slide.size() && w < state.slide_speed.size();
   };
-  GuideHint near_wheel(0.0);
+  GuideHint& near_wheel = scratch.wheels;
   if (wheels > 0) {
-    std::vector<GuideBounds> boxes(wheels);
+    std::vector<GuideBounds>& boxes = scratch.boxes;
+    boxes.resize(wheels);
     for (std::size_t w = 0; w < wheels; ++w) {
       const Sprocket wheel = at_slide(model.sprockets[w], slides_of(w) ? state.slide[w] : 0.0);
       const double reach = contact_reach(wheel);
@@ -2038,7 +2044,7 @@ Energy energy(const Model& model, const State& state) {
   // order (the active pairs and their order are the loop over every node's: bit-identical), in
   // O(N + G + pairs)
   if (!model.guides.empty()) {
-    GuideHint hint(0.0);
+    GuideHint& hint = scratch.guides;
     hint.update(model.guides, std::span<const double>(state.x.data(), n),
                 std::span<const double>(state.y.data(), n));
     for (std::size_t g = 0; g < model.guides.size(); ++g) {
