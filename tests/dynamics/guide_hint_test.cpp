@@ -402,7 +402,8 @@ TEST(DynamicsGuideHint, StartAndEnergyBitIdenticalToEveryPairOnAManyGuideConveyo
 // moved by up to 0.6 roller radii, wheels turned at random, a third wheel laid over the chain at a
 // random place, and now and then a node thrown far off or made non-finite): the elastic energy is
 // the every-pair sum — every wheel against every node, then every guide against every node, then
-// the links', in energy()'s order — bit for bit, and the seats are pressed (the term is not empty).
+// the links', in energy()'s order — bit for bit, and the seats are pressed (the term is not empty);
+// the same through one EnergyScratch kept over every trial (the guard's evaluations, analysis.cpp).
 TEST(DynamicsGuideHint, EnergyWheelTermBitIdenticalToEveryPair) {
   std::mt19937_64 rng(2127);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
@@ -410,6 +411,7 @@ TEST(DynamicsGuideHint, EnergyWheelTermBitIdenticalToEveryPair) {
   conveyor.pieces = 12;
   const testing::Loop loops[2] = {testing::benchmark_drive(), testing::conveyor_loop(conveyor)};
   long pressed = 0;
+  EnergyScratch scratch;
   for (int trial = 0; trial < 40; ++trial) {
     const testing::Loop& base = loops[trial % 2];
     Model m = base.model;
@@ -460,11 +462,17 @@ TEST(DynamicsGuideHint, EnergyWheelTermBitIdenticalToEveryPair) {
       want += 0.5 * m.axial_stiffness * stretch * stretch;
     }
     const double got = energy(m, s).elastic;
+    // and with one scratch kept over every trial (the drive's wheels and the conveyor's, its
+    // guides or none, their boxes changing from trial to trial): the same bits
+    const double kept = energy(m, s, scratch).elastic;
     if (std::isnan(want)) {
       EXPECT_TRUE(std::isnan(got)) << "trial " << trial;
+      EXPECT_TRUE(std::isnan(kept)) << "trial " << trial;
     } else {
       EXPECT_EQ(std::memcmp(&got, &want, sizeof(double)), 0)
           << "trial " << trial << ": " << got << " vs " << want;
+      EXPECT_EQ(std::memcmp(&kept, &want, sizeof(double)), 0)
+          << "trial " << trial << ": " << kept << " vs " << want;
     }
     EXPECT_GT(seats, 0.0) << "trial " << trial;
   }
