@@ -3260,7 +3260,7 @@ Result run(const analysis::Inputs& in) {
   // larger than twice all of it is a loop holding more energy from nothing than it was ever
   // given, a run that diverges (the θ point's one-step gains at a coarse step's start measured up
   // to 1.8 times it): an error that stops it there, with the output up to there as after a failed
-  // step. Checked at each sample and the last step (the energy is not otherwise computed).
+  // step. Checked at the samples below (the energy is not otherwise computed during a run).
   const double start_motion = start_energy.kinetic + start_energy.elastic;
   EnergyScratch energy_scratch;  // the hints kept from sample to sample (their grids built once)
   // checked at the samples at least kGuardSteps steps apart (the smallest multiple of the output
