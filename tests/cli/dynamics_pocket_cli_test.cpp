@@ -47,6 +47,19 @@ std::string example_with(const std::string& name,
   return path.string();
 }
 
+// The example undamped (links and seats) at θ = ½ with the discrete gradient and the work balance,
+// over `duration`, the mouth's ramp `mouth` wide (none if empty), and `more` edits.
+std::string undamped_keyed(const std::string& name, const std::string& duration,
+                           const std::string& mouth,
+                           std::vector<std::pair<std::string, std::string>> more = {}) {
+  more.insert(more.begin(), {{"axial_damping", "axial_damping = 0"},
+                             {"contact_damping", "contact_damping = 0"},
+                             {"duration", "duration = \"" + duration + "\""},
+                             {"", "theta = 0.5\nwork_balance = true\ndiscrete_gradient = true"}});
+  if (!mouth.empty()) more.push_back({"", "pocket_mouth = \"" + mouth + "\""});
+  return example_with(name, more);
+}
+
 CliRun bad(const std::string& name, const std::vector<std::pair<std::string, std::string>>& edits) {
   const CliRun r = run("dynamics " + example_with(name, edits) + " --format json");
   EXPECT_EQ(r.status, 2) << r.err;
@@ -634,13 +647,7 @@ TEST(DynamicsPocketCli, MissingTableSaysContactStiffnessIsThePocketsOnly) {
 // driven wheel's torque balance J Δω = Δt (τ̄ − T_L) holds over every sample, the retaken ones'
 // mean torque weighted by the sub-steps' share of h.
 TEST(DynamicsPocketCli, RampsFoldedStepIsRetakenAsHalvesAndItsAccountingCloses) {
-  const std::string file = example_with(
-      "ramp_half.toml", {{"axial_damping", "axial_damping = 0"},
-                         {"contact_damping", "contact_damping = 0"},
-                         {"duration", "duration = \"0.25 s\""},
-                         {"",
-                          "pocket_mouth = \"0.1 mm\"\ntheta = 0.5\nwork_balance = true\n"
-                          "discrete_gradient = true"}});
+  const std::string file = undamped_keyed("ramp_half.toml", "0.25 s", "0.1 mm");
   const CliRun r = run("dynamics " + file + " --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -690,14 +697,9 @@ TEST(DynamicsPocketCli, RampsFoldedStepIsRetakenAsHalvesAndItsAccountingCloses) 
 // stops them, their joints under 1.2 mm (the balance still closed when they first went past c).
 TEST(DynamicsPocketCli, RampsDivergingRunStopsWhereItGainsEnergyFromNothing) {
   for (const bool sharp : {false, true}) {
-    std::vector<std::pair<std::string, std::string>> keys{
-        {"axial_damping", "axial_damping = 0"},
-        {"contact_damping", "contact_damping = 0"},
-        {"duration", "duration = \"1 s\""},
-        {"", "theta = 0.5\nwork_balance = true\ndiscrete_gradient = true"}};
-    if (!sharp) keys.push_back({"", "pocket_mouth = \"0.1 mm\""});
     const CliRun r =
-        run("dynamics " + example_with(sharp ? "sharp_1s.toml" : "ramp_1s.toml", keys) +
+        run("dynamics " +
+            undamped_keyed(sharp ? "sharp_1s.toml" : "ramp_1s.toml", "1 s", sharp ? "" : "0.1 mm") +
             " --format json");
     ASSERT_EQ(r.status, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
@@ -727,14 +729,8 @@ TEST(DynamicsPocketCli, RampsDivergingRunStopsWhereItGainsEnergyFromNothing) {
 // as before plus the retake, on stderr too, and the earlier retakes are warned. The run is no
 // physics (joints 0.7 mm deep, warned); it is here for the path.
 TEST(DynamicsPocketCli, AStepFailingAtTheRetakesFloorEndsTheRunAtItsStart) {
-  const std::string file = example_with(
-      "ramp_floor.toml", {{"axial_damping", "axial_damping = 0"},
-                          {"contact_damping", "contact_damping = 0"},
-                          {"duration", "duration = \"0.08 s\""},
-                          {"step", "step = \"0.5 ms\""},
-                          {"",
-                           "pocket_mouth = \"0.01 mm\"\ntheta = 0.5\nwork_balance = true\n"
-                           "discrete_gradient = true"}});
+  const std::string file =
+      undamped_keyed("ramp_floor.toml", "0.08 s", "0.01 mm", {{"step", "step = \"0.5 ms\""}});
   const CliRun r = run("dynamics " + file + " --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);

@@ -56,6 +56,15 @@ std::string replaced(std::string text, const std::string& key, const std::string
   return text.replace(at + 1, end - at - 1, line);
 }
 
+// The example undamped (links, seats, slide) at θ = ½: the θ point's force diverges there.
+std::string undamped_at_theta_half() {
+  std::string text = example_text();
+  text = replaced(text, "axial_damping", "axial_damping = 0");
+  text = replaced(text, "contact_damping", "contact_damping = 0");
+  text = replaced(text, "takeup_damping", "takeup_damping = 0");
+  return replaced(text, "theta", "theta = 0.5");
+}
+
 // `lines` added to the last [[dynamics.sprocket]] table (the idler's).
 std::string in_idler(std::string text, const std::string& lines) {
   const std::size_t at = text.find("\n[analyses.dynamics]");
@@ -543,11 +552,7 @@ TEST(DynamicsTakeupCli, SettledSpanFrequenciesUseTheMeanCentre) {
 // step; the sample at step 30, t = 3 ms: +4.82 J against 1.24 J), the error's value the summary's
 // numerical term.
 TEST(DynamicsTakeupCli, DiscreteGradientKeepsTheUndampedBalanceAtThetaHalf) {
-  std::string text = example_text();
-  text = replaced(text, "axial_damping", "axial_damping = 0");
-  text = replaced(text, "contact_damping", "contact_damping = 0");
-  text = replaced(text, "takeup_damping", "takeup_damping = 0");
-  text = replaced(text, "theta", "theta = 0.5");
+  const std::string text = undamped_at_theta_half();
   const std::string gradient = replaced(text, "theta", "theta = 0.5\ndiscrete_gradient = true");
   const nlohmann::json kept = dynamics_json(write("dg_half.toml", gradient), " --duration 0.1s");
   const nlohmann::json plain = dynamics_json(write("half.toml", text), " --duration 0.1s");
@@ -594,11 +599,7 @@ TEST(DynamicsTakeupCli, DiscreteGradientKeepsTheUndampedBalanceAtThetaHalf) {
 // 2.8 ms (28 steps, samples every 10) stops there, past twice the energy it has received since
 // step 27 (2.83 times it at step 28).
 TEST(DynamicsTakeupCli, EnergyGainIsCheckedAtTheLastStepToo) {
-  std::string text = example_text();
-  text = replaced(text, "axial_damping", "axial_damping = 0");
-  text = replaced(text, "contact_damping", "contact_damping = 0");
-  text = replaced(text, "takeup_damping", "takeup_damping = 0");
-  text = replaced(text, "theta", "theta = 0.5");
+  const std::string text = undamped_at_theta_half();
   const nlohmann::json j = dynamics_json(write("half_end.toml", text), " --duration 2.8ms");
   ASSERT_TRUE(j.contains("summary"));
   EXPECT_EQ(j["summary"]["steps"], 28);
