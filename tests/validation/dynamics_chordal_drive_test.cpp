@@ -20,11 +20,17 @@
 // limits (infinitely stiff: the rigid four-bar; a static stretch in closed form; the arms against
 // the rigid kinematics), its compliance and its tension's swing over a tooth against the model's,
 // measured statically.
+//
+// The span's longitudinal dynamics (`dynamic_ratio`): the elastic four-bar's θ2 through a linear
+// one-degree-of-freedom model of the driven wheel on the span, solved harmonic by harmonic in the
+// periodic steady state; the share of the model's 0.1 m/s excess over the elastic four-bar that it
+// explains, and what the rest is (`SpeedExcessIsNotTheSpansLongitudinalDynamics`).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <numbers>
 #include <string>
@@ -202,6 +208,8 @@ struct FarWheel {
   double settle = 0.1;         // [s]
   int periods = 8;             // tooth periods measured after the settling time
   double step = 1e-4;          // [s]
+  // the tight span held straight after every step (`hold_straight`)
+  bool hold_transverse = false;
 };
 
 Polygons polygons(const FarWheel& d) {
@@ -281,6 +289,14 @@ Drive set_up(int z1, int z2, double centre, double speed) {
   return out;
 }
 
+// the run's length from the lay [s] (`run`): the settling time and the measured tooth periods
+double run_duration(const FarWheel& d) { return d.settle + d.periods * d.pitch / d.chain_speed; }
+
+// the links of each of the chain's straight tails (`lay`) for a run of `duration` [s]
+int tail_links(const FarWheel& d, double duration) {
+  return static_cast<int>(std::ceil(duration * d.chain_speed / d.pitch)) + 3;
+}
+
 // The model: the two ISO 606 wheels (clearance seats with μ, contacts as in the drive's
 // validation), the driver at constant ω1, the driven wheel with inertia and a load torque. The
 // chain is open: the slack span is cut and its two ends pulled apart at T2 (Model::loads) — a
@@ -307,7 +323,7 @@ Laid lay(const FarWheel& d, int k, double duration, double phase = 0.0) {
   const double omega2 = omega1 * (driven_angle(g, t1 + h, k, t2) - t2) / h;
   const Tangent tan = upper_tangent(g, t1, t2);
   const int n = tan.i - tan.j + k;
-  const int tail = static_cast<int>(std::ceil(duration * v / d.pitch)) + 3;
+  const int tail = tail_links(d, duration);
   std::vector<std::array<double, 4>> nodes;  // x, y, vx, vy from the driver's cut end
   auto seated = [&](int wheel, double theta, double omega, int i) {
     const auto q = vertex(g, wheel, theta, i);
@@ -361,10 +377,42 @@ Laid lay(const FarWheel& d, int k, double duration, double phase = 0.0) {
   return out;
 }
 
+// The tight span's quasi-static transverse state: its nodes between the driver's last seated
+// roller A and the driven wheel's first B put on the line AB, their speeds across it the ends'
+// interpolated along it, the speeds along it kept (as chordal::Chordal::hold_transverse does for
+// the single wheel). A and B: the last node within 0.3 mm of the driver's pitch circle on its upper
+// half and the first after it within 0.3 mm of the driven wheel's (chordal::run's test for a
+// seated roller).
+void hold_straight(const Polygons& g, State& s) {
+  const std::size_t n = s.x.size();
+  std::size_t a = n, b = n;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (s.y[i] > 0 && std::hypot(s.x[i], s.y[i]) < g.r1 + 3e-4) a = i;
+  }
+  for (std::size_t i = a + 1; i < n && b == n; ++i) {
+    if (s.y[i] > 0 && std::hypot(s.x[i] - g.c, s.y[i]) < g.r2 + 3e-4) b = i;
+  }
+  if (a == n || b == n) {
+    ADD_FAILURE() << "no span to hold";
+    return;
+  }
+  const double length = std::hypot(s.x[b] - s.x[a], s.y[b] - s.y[a]);
+  const double ux = (s.x[b] - s.x[a]) / length, uy = (s.y[b] - s.y[a]) / length;
+  const double wa = ux * s.vy[a] - uy * s.vx[a], wb = ux * s.vy[b] - uy * s.vx[b];
+  for (std::size_t i = a + 1; i < b; ++i) {
+    const double t = (s.x[i] - s.x[a]) * ux + (s.y[i] - s.y[a]) * uy;
+    const double along = s.vx[i] * ux + s.vy[i] * uy, across = wa + (wb - wa) * t / length;
+    s.x[i] = s.x[a] + t * ux;
+    s.y[i] = s.y[a] + t * uy;
+    s.vx[i] = along * ux - across * uy;
+    s.vy[i] = along * uy + across * ux;
+  }
+}
+
 chordal::Result run(const FarWheel& d, int k) {
   const Polygons g = polygons(d);
-  const double omega1 = d.chain_speed / g.r1, v = d.chain_speed;
-  const double duration = d.settle + d.periods * d.pitch / v;
+  const double omega1 = d.chain_speed / g.r1;
+  const double duration = run_duration(d);
   Laid laid = lay(d, k, duration);
   Model& model = laid.model;
   State& s = laid.state;
@@ -387,6 +435,7 @@ chordal::Result run(const FarWheel& d, int k) {
       out.converged = false;
       break;
     }
+    if (d.hold_transverse) hold_straight(g, s);
     if (s.time < d.settle) continue;
     double ph = std::fmod(s.angle[0] - kPi / 2, tooth) / tooth;
     if (ph < 0) ph += 1;
@@ -785,6 +834,215 @@ TEST(DynamicsChordalDrive, DrivenSpeedFollowsTheElasticFourBar) {
     }
     EXPECT_GT(rigid_off, kTol) << name << ": the rigid four-bar passes too";
   }
+}
+
+// The span's longitudinal dynamics with the driven wheel: the elastic four-bar is quasi-static,
+// the model's span and wheel have mass. Their linear model, solved independently of the model: the
+// driven wheel (J_eff) on the span as a spring of the elastic four-bar's compliance C with the
+// links' damping in series (c/n̄), its far end moved by the elastic four-bar's θ2 (a base
+// excitation). In the arc x = R2 θ2 at the driven pitch radius, M ẍ + c ẋ + x/C = c ẋ_q + x_q/C
+// with M = J_eff/R2² and x_q the quasi-static reference's; the arm d2 is taken as R2 (R2/d2 within
+// 0.5 %). J_eff = J + m R2² (z2/2 + 1 + tail + n̄/3): the wheel, the rollers wrapped on it and the
+// tail's links, which move with it, and a third of the span's (Rayleigh's for a spring's own mass;
+// the span's own first longitudinal mode, fixed at both ends, is at p √(k/m)/2L ≈ 1.1 kHz, five
+// times the wheel's). The same J_eff as the probes' one-degree-of-freedom time-domain model (the
+// doc's "The elastic four-bar").
+struct Oscillator {
+  double stiffness = 0.0;  // [N/m] 1/C
+  double mass = 0.0;       // [kg] J_eff/R2²
+  double damping = 0.0;    // [N·s/m]
+};
+Oscillator span_and_wheel(const FarWheel& d, const Polygons& ge) {
+  const double nbar = tangent_length(ge) / ge.p;
+  const double links = d.driven_teeth / 2.0 + 1 + tail_links(d, run_duration(d)) + nbar / 3;
+  return {1 / ge.compliance, d.inertia / (ge.r2 * ge.r2) + links * d.node_mass, d.damping / nbar};
+}
+
+// x/x_q at the angular frequency w [rad/s]: (K + icw)/(K − M w² + icw)
+std::complex<double> transmitted(const Oscillator& o, double w) {
+  const std::complex<double> spring(o.stiffness, o.damping * w);
+  return spring / (spring - o.mass * w * w);
+}
+
+// a periodic signal sampled at N equal steps of its period, its harmonic h (frequency h w0 [rad/s])
+// multiplied by `transmitted` (a discrete Fourier transform and its inverse; harmonics to N/2)
+std::vector<double> transmitted_signal(const std::vector<double>& x, const Oscillator& o,
+                                       double w0) {
+  const std::size_t n = x.size();
+  std::vector<double> out(n, 0.0);
+  for (std::size_t h = 0; 2 * h <= n; ++h) {
+    std::complex<double> c = 0.0;
+    for (std::size_t s = 0; s < n; ++s) {
+      c += x[s] * std::polar(1.0, -2 * kPi * static_cast<double>(h * s) / static_cast<double>(n));
+    }
+    c *= transmitted(o, static_cast<double>(h) * w0) / static_cast<double>(n);
+    const double both = h == 0 || 2 * h == n ? 1.0 : 2.0;  // h and −h
+    for (std::size_t s = 0; s < n; ++s) {
+      out[s] += both * std::real(c * std::polar(1.0, 2 * kPi * static_cast<double>(h * s) /
+                                                         static_cast<double>(n)));
+    }
+  }
+  return out;
+}
+
+// The elastic four-bar with the span's longitudinal dynamics: its θ2 at kSamples equal steps of the
+// driver's tooth (phase 0 as `kinematic_ratio`'s), less the mean rotation (z1/z2 of the driver's),
+// periodic over the tooth, through `transmitted` at the tooth's frequency ω1 z1 = 2π v/p and its
+// harmonics in the periodic steady state; the mean ω2/ω1 over `bins` equal bins (bins divides
+// kSamples), exactly Δθ2/Δθ1 as `kinematic_ratio`.
+constexpr int kSamples = 480;
+std::vector<double> dynamic_ratio(const FarWheel& d, const Polygons& ge, int k, int bins,
+                                  const Oscillator& o) {
+  const double tooth = 2 * kPi / ge.z1, mean = static_cast<double>(ge.z1) / ge.z2;
+  std::vector<double> x(kSamples);
+  const double start = driven_angle(ge, kPi / 2, k, kPi / 2);
+  double prev = start;
+  for (int s = 1; s <= kSamples; ++s) {
+    prev = driven_angle(ge, kPi / 2 + tooth * s / kSamples, k, prev);
+    x[s % kSamples] = prev - start - mean * tooth * s / kSamples;
+  }
+  EXPECT_LT(std::abs(x[0]), 1e-9) << "not periodic over the tooth";
+  x[0] = 0.0;
+  const std::vector<double> y = transmitted_signal(x, o, d.chain_speed / ge.r1 * ge.z1);
+  const int per = kSamples / bins;
+  EXPECT_EQ(per * bins, kSamples) << bins << " bins";
+  std::vector<double> out;
+  for (int b = 0; b < bins; ++b) {
+    const double dy = y[((b + 1) * per) % kSamples] - y[b * per];
+    out.push_back(mean + dy / (tooth / bins));
+  }
+  return out;
+}
+
+// The harmonic solution against its own limits: a single harmonic (h = 3 of 64 samples) comes out
+// multiplied by the oscillator's transmissibility in amplitude and phase, at a resonance (M = K/w²)
+// with cw = K the gain |(K + icw)/(icw)| = √2; undamped at w/ω_n = 0.4, 1/(1 − 0.16); without mass
+// the elastic four-bar itself, within 1e-10 over 20, 40 and 80 bins (the transform's round trip and
+// the binning from the samples).
+TEST(DynamicsChordalDrive, SpanDynamicsReferenceHasItsLimits) {
+  constexpr int kN = 64;
+  constexpr double kW0 = 10.0;
+  const Oscillator damped{
+      .stiffness = 1e6, .mass = 1e6 / (3 * kW0) / (3 * kW0), .damping = 1e6 / (3 * kW0)};
+  // undamped, off every harmonic: ω_n = 2.5 w0
+  const Oscillator o{.stiffness = 1e6, .mass = 1e6 / (2.5 * kW0) / (2.5 * kW0), .damping = 0.0};
+  std::vector<double> x(kN);
+  for (int s = 0; s < kN; ++s) x[s] = std::cos(2 * kPi * 3 * s / kN + 0.4);
+  const std::vector<double> y = transmitted_signal(x, damped, kW0);
+  const std::complex<double> gain = transmitted(damped, 3 * kW0);
+  EXPECT_NEAR(std::abs(gain), std::sqrt(2.0), 1e-12);
+  for (int s = 0; s < kN; ++s) {
+    EXPECT_NEAR(y[s], std::abs(gain) * std::cos(2 * kPi * 3 * s / kN + 0.4 + std::arg(gain)), 1e-12)
+        << s;
+  }
+  // undamped: 1/(1 − (w/ω_n)²) at h = 1, w/ω_n = 0.4
+  for (int s = 0; s < kN; ++s) x[s] = std::sin(2 * kPi * s / kN);
+  const std::vector<double> y2 = transmitted_signal(x, o, kW0);
+  for (int s = 0; s < kN; ++s) EXPECT_NEAR(y2[s], x[s] / (1 - 0.16), 1e-12) << s;
+  // without mass: the elastic four-bar, over 20, 40 and 80 bins
+  for (const auto& [z1, z2, centre] : {std::tuple{17, 17, 20.75}, std::tuple{25, 12, 20.0}}) {
+    const auto [d, g, k] = set_up(z1, z2, centre, 0.1);
+    const Polygons ge = elastic(d, g);
+    Oscillator still = span_and_wheel(d, ge);
+    still.mass = 0.0;
+    for (int bins : {20, 40, 80}) {
+      EXPECT_LT(
+          largest_difference(dynamic_ratio(d, ge, k, bins, still), kinematic_ratio(ge, k, bins)),
+          1e-10)
+          << z1 << "/" << z2 << ", " << bins << " bins";
+    }
+  }
+}
+
+// The model's variation over the elastic four-bar's less 1, and the same for the four-bar with the
+// span's longitudinal dynamics (`dynamic_ratio`), at each bin count: one run of the model.
+struct Excess {
+  std::vector<double> model, dynamic;
+};
+Excess excess(const FarWheel& d, int k, const std::vector<int>& bins) {
+  Polygons g = polygons(d);
+  g.play = seat_play(d);
+  const Polygons ge = elastic(d, g);
+  const Oscillator o = span_and_wheel(d, ge);
+  const chordal::Result r = run(d, k);
+  EXPECT_TRUE(r.converged);
+  Excess out;
+  for (int b : bins) {
+    const double ve = variation_of(kinematic_ratio(ge, k, b));
+    out.model.push_back(variation_of(simulated_profile(r, b)) / ve - 1);
+    out.dynamic.push_back(variation_of(dynamic_ratio(d, ge, k, b, o)) / ve - 1);
+  }
+  return out;
+}
+
+// What the 0.1 m/s excess over the elastic four-bar is (the doc's "The elastic four-bar", "The
+// excess at 0.1 m/s"). The hypothesis: the span's longitudinal dynamics with the driven wheel
+// (`dynamic_ratio`), driven at the tooth frequency f_z = v/p and its harmonics, the quasi-static
+// response amplified by 1/(1 − (h f_z/f_L)²): f_L = 205 Hz for 17/17 (J_eff 0.0038 kg·m², ζ =
+// 0.026), 172 Hz for 25/12, against f_z = 5.2 Hz ((f_z/f_L)² = 6.5e-4 and 9.2e-4; the resonance
+// at the 39th and 33rd harmonic). Measured (20, 40 bins): it takes 0.4, 0.8 % off 17/17 at 20.75
+// pitches' 3.6, 3.5 % (a share of 0.11, 0.22; the model is still 3.2, 2.7 % over it) and 1.7,
+// 2.0 % off 25/12's 3.9, 4.3 % (0.44, 0.47). The time-domain one-degree-of-freedom model of the
+// earlier probes gave 0.34, 0.84 % and 1.55, 2.16 %: the two solutions agree. The rest is the
+// span's transverse swing: with T1 held (485.5 N), 17/17's excess at 20 bins is 1.59 % at 0.025
+// m/s and 3.62 % at 0.1 m/s; the part that grows with the speed, 2.03 %, stays with links 4×
+// stiffer (1.95 %: −0.71 % and 1.24 %), where the longitudinal dynamics fall with f_L² (0.11 %
+// against 0.41 %); with the span held straight (`hold_straight`) the 0.1 m/s excess is 1.61 %,
+// the slow run's. At 40 bins the held run keeps 1.6 % over the slow one (1.26 %), of which the
+// longitudinal dynamics give 0.8 %: not asserted. What falls with k is the quasi-static excess
+// (1.59, 0.13, −0.71 % at k, 2k, 4k at 0.025 m/s; the static swing's 1.19,
+// `ModelStaticSwingFollowsTheTensionLaw`). Asserted at the measured values' bands (stated, not
+// derived): the shares within 0.05–0.3 (17/17) and 0.3–0.6 (25/12); 17/17 still over the dynamic
+// reference by 2 %; at 20 bins the speed's part with 4k over 0.75 of that with k, while the
+// longitudinal correction falls under 0.35 of it (1/4 from f_L²); the held run within 0.4 % of the
+// slow one's, with the speed's part over 1.5 %.
+TEST(DynamicsChordalDrive, SpeedExcessIsNotTheSpansLongitudinalDynamics) {
+  const std::vector<int> bins = {20, 40};
+  {
+    const auto [d, g, k] = set_up(25, 12, 20.0, 0.1);
+    const Excess e = excess(d, k, bins);
+    for (std::size_t q = 0; q < bins.size(); ++q) {
+      const double share = e.dynamic[q] / e.model[q];
+      std::printf(
+          "25/12 at 20 p, 0.1 m/s, %d bins: over the elastic four-bar %.4f, its longitudinal "
+          "dynamics %.4f, share %.2f\n",
+          bins[q], e.model[q], e.dynamic[q], share);
+      EXPECT_GT(share, 0.3) << bins[q] << " bins";
+      EXPECT_LT(share, 0.6) << bins[q] << " bins";
+    }
+  }
+  const auto [fast, g, k] = set_up(17, 17, 20.75, 0.1);
+  FarWheel slow = fast;  // T1 held at the 0.1 m/s rule's
+  slow.chain_speed = 0.025;
+  slow.periods = 4;
+  FarWheel stiff = fast, stiff_slow = slow, held = fast;
+  stiff.stiffness *= 4;
+  stiff_slow.stiffness *= 4;
+  held.hold_transverse = true;
+  const Excess e = excess(fast, k, bins), e_slow = excess(slow, k, {20}),
+               e_stiff = excess(stiff, k, {20}), e_stiff_slow = excess(stiff_slow, k, {20}),
+               e_held = excess(held, k, {20});
+  for (std::size_t q = 0; q < bins.size(); ++q) {
+    const double share = e.dynamic[q] / e.model[q];
+    std::printf(
+        "17/17 at 20.75 p, 0.1 m/s, %d bins: over the elastic four-bar %.4f, its "
+        "longitudinal dynamics %.4f, share %.2f\n",
+        bins[q], e.model[q], e.dynamic[q], share);
+    EXPECT_GT(share, 0.05) << bins[q] << " bins";
+    EXPECT_LT(share, 0.3) << bins[q] << " bins";
+    EXPECT_GT((1 + e.model[q]) / (1 + e.dynamic[q]) - 1, 0.02) << bins[q] << " bins";
+  }
+  const double speed = e.model[0] - e_slow.model[0];
+  const double speed_stiff = e_stiff.model[0] - e_stiff_slow.model[0];
+  std::printf(
+      "17/17 at 20.75 p, 20 bins, T1 %.1f N: 0.025 m/s %.4f, 0.1 m/s %.4f; links 4x stiffer "
+      "%.4f, %.4f; longitudinal dynamics %.4f, %.4f; the span held straight %.4f\n",
+      fast.tight, e_slow.model[0], e.model[0], e_stiff_slow.model[0], e_stiff.model[0],
+      e.dynamic[0], e_stiff.dynamic[0], e_held.model[0]);
+  EXPECT_GT(speed, 0.015);
+  EXPECT_GT(speed_stiff, 0.75 * speed);
+  EXPECT_LT(e_stiff.dynamic[0], 0.35 * e.dynamic[0]);
+  EXPECT_NEAR(e_held.model[0], e_slow.model[0], 0.004);
 }
 
 }  // namespace
