@@ -24,7 +24,7 @@
 // The span's longitudinal dynamics (`dynamic_ratio`): the elastic four-bar's θ2 through a linear
 // one-degree-of-freedom model of the driven wheel on the span, solved harmonic by harmonic in the
 // periodic steady state; the share of the model's 0.1 m/s excess over the elastic four-bar that it
-// explains, and what the rest is (`SpeedExcessIsNotTheSpansLongitudinalDynamics`).
+// explains, and what the rest is (`SpeedExcessIsOnlyPartlyTheSpansLongitudinalDynamics`).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -841,12 +841,16 @@ TEST(DynamicsChordalDrive, DrivenSpeedFollowsTheElasticFourBar) {
 // driven wheel (J_eff) on the span as a spring of the elastic four-bar's compliance C with the
 // links' damping in series (c/n̄), its far end moved by the elastic four-bar's θ2 (a base
 // excitation). In the arc x = R2 θ2 at the driven pitch radius, M ẍ + c ẋ + x/C = c ẋ_q + x_q/C
-// with M = J_eff/R2² and x_q the quasi-static reference's; the arm d2 is taken as R2 (R2/d2 within
-// 0.5 %). J_eff = J + m R2² (z2/2 + 1 + tail + n̄/3): the wheel, the rollers wrapped on it and the
-// tail's links, which move with it, and a third of the span's (Rayleigh's for a spring's own mass;
-// the span's own first longitudinal mode, fixed at both ends, is at p √(k/m)/2L ≈ 1.1 kHz, five
-// times the wheel's). The same J_eff as the probes' one-degree-of-freedom time-domain model (the
-// doc's "The elastic four-bar").
+// with M = J_eff/R2² and x_q the quasi-static reference's; the arm d2 is taken as R2 (d2 runs over
+// R2 [cos(π/z2), 1] in a tooth: R2/d2 within 1.7 % for z2 = 17 and 3.4 % for 12, on the tooth's
+// mean 0.6 and 1.1 %, so M varies by up to 7 % over 25/12's tooth, not modelled). The dashpot's lag
+// on the quasi-static stretch rate (c Ḟ/K) is left out: it is under 1 % of the stretch's term for
+// the harmonics that matter, and it is what makes the massless limit the reference. J_eff = J + m
+// R2² (z2/2 + 1 + tail + n̄/3): the wheel, the rollers wrapped on it and the tail's links, which
+// move with it, and a third of the span's (Rayleigh's for a spring's own mass; the span's own first
+// longitudinal mode, fixed at both ends, is at p √(k/m)/2L ≈ 1.1 kHz, five times the wheel's). The
+// same J_eff as the probes' one-degree-of-freedom time-domain model (the doc's "The elastic
+// four-bar").
 struct Oscillator {
   double stiffness = 0.0;  // [N/m] 1/C
   double mass = 0.0;       // [kg] J_eff/R2²
@@ -914,11 +918,31 @@ std::vector<double> dynamic_ratio(const FarWheel& d, const Polygons& ge, int k, 
   return out;
 }
 
-// The harmonic solution against its own limits: a single harmonic (h = 3 of 64 samples) comes out
-// multiplied by the oscillator's transmissibility in amplitude and phase, at a resonance (M = K/w²)
-// with cw = K the gain |(K + icw)/(icw)| = √2; undamped at w/ω_n = 0.4, 1/(1 − 0.16); without mass
-// the elastic four-bar itself, within 1e-10 over 20, 40 and 80 bins (the transform's round trip and
-// the binning from the samples).
+// The elastic four-bar's variation with the span's longitudinal dynamics (`dynamic_ratio`) over its
+// own, less 1, at `bins` bins (the polygons with the seat play, as `excess`)
+double dynamic_excess(const FarWheel& d, int k, int bins) {
+  Polygons g = polygons(d);
+  g.play = seat_play(d);
+  const Polygons ge = elastic(d, g);
+  return variation_of(dynamic_ratio(d, ge, k, bins, span_and_wheel(d, ge))) /
+             variation_of(kinematic_ratio(ge, k, bins)) -
+         1;
+}
+
+// The harmonic solution against its own limits and an independent solution:
+// * a single harmonic (h = 3 of 64 samples) comes out as the closed form: at a resonance
+//   (M = K/w²) with cw = K, (K + icw)/(icw) = 1 − i, the gain √2 and the phase −π/4 (a lag);
+//   undamped at w/ω_n = 0.4, 1/(1 − 0.16);
+// * a kinked periodic signal (a triangle rising over 0.3 of the period, falling over the rest)
+//   through an oscillator with ω_n = 3.5 w0 and ζ = 0.1 matches the same equation integrated in
+//   time by RK4 (in w = ẋ − (c/M) x_q, so that the input's rate is not needed), started at rest and
+//   run for 12 periods (the transient falls by e^{−ζ ω_n t} ≈ 5e-12), within 1e-4 of the
+//   triangle's unit amplitude at 960 samples (measured 1.8e-5, and 7.2e-5 at 480: as 1/N², the
+//   kinks' high harmonics aliased onto the resonant low ones);
+// * without mass it is the elastic four-bar itself, within 1e-10 over 20, 40 and 80 bins (the
+//   transform's round trip and the binning from the samples);
+// * with links 4× stiffer (17/17 at 20.75 p, 0.1 m/s, 20 bins) the dynamics' excess falls with
+//   f_L², (204.8/395.9)² = 0.268: within 0.2–0.35 of its value at k (measured 0.27).
 TEST(DynamicsChordalDrive, SpanDynamicsReferenceHasItsLimits) {
   constexpr int kN = 64;
   constexpr double kW0 = 10.0;
@@ -931,14 +955,53 @@ TEST(DynamicsChordalDrive, SpanDynamicsReferenceHasItsLimits) {
   const std::vector<double> y = transmitted_signal(x, damped, kW0);
   const std::complex<double> gain = transmitted(damped, 3 * kW0);
   EXPECT_NEAR(std::abs(gain), std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(std::arg(gain), -kPi / 4, 1e-12);
   for (int s = 0; s < kN; ++s) {
-    EXPECT_NEAR(y[s], std::abs(gain) * std::cos(2 * kPi * 3 * s / kN + 0.4 + std::arg(gain)), 1e-12)
-        << s;
+    EXPECT_NEAR(y[s], std::sqrt(2.0) * std::cos(2 * kPi * 3 * s / kN + 0.4 - kPi / 4), 1e-12) << s;
   }
   // undamped: 1/(1 − (w/ω_n)²) at h = 1, w/ω_n = 0.4
   for (int s = 0; s < kN; ++s) x[s] = std::sin(2 * kPi * s / kN);
   const std::vector<double> y2 = transmitted_signal(x, o, kW0);
   for (int s = 0; s < kN; ++s) EXPECT_NEAR(y2[s], x[s] / (1 - 0.16), 1e-12) << s;
+  // a kinked periodic signal against RK4
+  {
+    constexpr int kTri = 960, kSub = 4, kPeriods = 12;
+    constexpr double kRise = 0.3;
+    const double wn = 3.5 * kW0, stiffness = 1e6, mass = stiffness / (wn * wn);
+    const Oscillator tri{
+        .stiffness = stiffness, .mass = mass, .damping = 2 * 0.1 * std::sqrt(stiffness * mass)};
+    const double period = 2 * kPi / kW0, dt = period / (kTri * kSub);
+    const auto input = [&](double t) {
+      const double u = t / period - std::floor(t / period);
+      return u < kRise ? -1 + 2 * u / kRise : 1 - 2 * (u - kRise) / (1 - kRise);
+    };
+    std::vector<double> xt(kTri);
+    for (int s = 0; s < kTri; ++s) xt[s] = input(period * s / kTri);
+    const std::vector<double> yt = transmitted_signal(xt, tri, kW0);
+    const double cm = tri.damping / tri.mass;
+    // x' = w + (c/M) x_q, w' = (K (x_q − x) − c x')/M
+    const auto rate = [&](double t, double at, double w) {
+      const double q = input(t), dx = w + cm * q;
+      return std::array<double, 2>{dx, (tri.stiffness * (q - at) - tri.damping * dx) / tri.mass};
+    };
+    double xs = 0.0, ws = -cm * input(0.0), worst = 0.0;
+    for (int n = 0; n < kPeriods * kTri * kSub; ++n) {
+      const double t = n * dt;
+      const auto k1 = rate(t, xs, ws);
+      const auto k2 = rate(t + dt / 2, xs + dt / 2 * k1[0], ws + dt / 2 * k1[1]);
+      const auto k3 = rate(t + dt / 2, xs + dt / 2 * k2[0], ws + dt / 2 * k2[1]);
+      const auto k4 = rate(t + dt, xs + dt * k3[0], ws + dt * k3[1]);
+      xs += dt / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0]);
+      ws += dt / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1]);
+      const int step = n + 1;
+      if (step > (kPeriods - 1) * kTri * kSub && step % kSub == 0) {
+        worst = std::max(worst, std::abs(xs - yt[(step / kSub) % kTri]));
+      }
+    }
+    std::printf("a triangle through the harmonic solution against RK4: largest difference %.2e\n",
+                worst);
+    EXPECT_LT(worst, 1e-4);
+  }
   // without mass: the elastic four-bar, over 20, 40 and 80 bins
   for (const auto& [z1, z2, centre] : {std::tuple{17, 17, 20.75}, std::tuple{25, 12, 20.0}}) {
     const auto [d, g, k] = set_up(z1, z2, centre, 0.1);
@@ -952,6 +1015,17 @@ TEST(DynamicsChordalDrive, SpanDynamicsReferenceHasItsLimits) {
           << z1 << "/" << z2 << ", " << bins << " bins";
     }
   }
+  // with links 4× stiffer: f_L² (0.268)
+  {
+    const auto [d, g, k] = set_up(17, 17, 20.75, 0.1);
+    FarWheel stiff = d;
+    stiff.stiffness *= 4;
+    const double at_k = dynamic_excess(d, k, 20), at_4k = dynamic_excess(stiff, k, 20);
+    std::printf("17/17 at 20.75 p, 0.1 m/s, 20 bins: the dynamics' excess %.4f at k, %.4f at 4k\n",
+                at_k, at_4k);
+    EXPECT_GT(at_4k, 0.2 * at_k);
+    EXPECT_LT(at_4k, 0.35 * at_k);
+  }
 }
 
 // The model's variation over the elastic four-bar's less 1, and the same for the four-bar with the
@@ -963,88 +1037,104 @@ Excess excess(const FarWheel& d, int k, const std::vector<int>& bins) {
   Polygons g = polygons(d);
   g.play = seat_play(d);
   const Polygons ge = elastic(d, g);
-  const Oscillator o = span_and_wheel(d, ge);
   const chordal::Result r = run(d, k);
   EXPECT_TRUE(r.converged);
   Excess out;
   for (int b : bins) {
     const double ve = variation_of(kinematic_ratio(ge, k, b));
     out.model.push_back(variation_of(simulated_profile(r, b)) / ve - 1);
-    out.dynamic.push_back(variation_of(dynamic_ratio(d, ge, k, b, o)) / ve - 1);
+    out.dynamic.push_back(dynamic_excess(d, k, b));
   }
   return out;
 }
 
 // What the 0.1 m/s excess over the elastic four-bar is (the doc's "The elastic four-bar", "The
 // excess at 0.1 m/s"). The hypothesis: the span's longitudinal dynamics with the driven wheel
-// (`dynamic_ratio`), driven at the tooth frequency f_z = v/p and its harmonics, the quasi-static
-// response amplified by 1/(1 − (h f_z/f_L)²): f_L = 205 Hz for 17/17 (J_eff 0.0038 kg·m², ζ =
-// 0.026), 172 Hz for 25/12, against f_z = 5.2 Hz ((f_z/f_L)² = 6.5e-4 and 9.2e-4; the resonance
-// at the 39th and 33rd harmonic). Measured (20, 40 bins): it takes 0.4, 0.8 % off 17/17 at 20.75
-// pitches' 3.6, 3.5 % (a share of 0.11, 0.22; the model is still 3.2, 2.7 % over it) and 1.7,
-// 2.0 % off 25/12's 3.9, 4.3 % (0.44, 0.47). The time-domain one-degree-of-freedom model of the
-// earlier probes gave 0.34, 0.84 % and 1.55, 2.16 %: the two solutions agree. At 20 bins the rest
-// of 17/17's is the span's transverse swing: with T1 held (485.5 N), 17/17's excess at 20 bins
-// is 1.59 % at 0.025 m/s and 3.62 % at 0.1 m/s; the part that grows with the speed, 2.03 %, stays
-// with links 4× stiffer (1.95 %: −0.71 % and 1.24 %), where the longitudinal dynamics fall with
-// f_L² (0.11 % against 0.41 %); with the span held straight (`hold_straight`) the 0.1 m/s excess
-// is 1.61 %, the slow run's. At 40 bins the held run keeps 1.6 % over the slow one (1.26 %), of
-// which the longitudinal dynamics give 0.8 %: not asserted. What falls with k is the quasi-static
-// excess (1.59, 0.13, −0.71 % at k, 2k, 4k at 0.025 m/s; the static swing's 1.19,
-// `ModelStaticSwingFollowsTheTensionLaw`). Asserted at the measured values' bands (stated, not
-// derived): the shares within 0.05–0.3 (17/17) and 0.3–0.6 (25/12); 17/17 still over the dynamic
-// reference by 2 %; at 20 bins the speed's part with 4k over 0.75 of that with k, while the
-// longitudinal correction falls under 0.35 of it (1/4 from f_L²); the held run within 0.4 % of the
-// slow one's, with the speed's part over 1.5 %. At 5e-5 s (halved) it passes: 17/17 3.69, 3.48 %
-// (shares 0.11, 0.22), 25/12 4.18, 4.78 % (0.41, 0.42); slow 1.56 %, held 1.60 %, 4k's speed part
-// 2.00 %.
-TEST(DynamicsChordalDrive, SpeedExcessIsNotTheSpansLongitudinalDynamics) {
-  const std::vector<int> bins = {20, 40};
+// (`dynamic_ratio`), driven at the tooth's frequency f_z = v z1 sin(π/z1)/(π p) (5.22 Hz) and its
+// harmonics, the quasi-static response amplified by 1/(1 − (h f_z/f_L)²): f_L = 205 Hz for 17/17
+// (J_eff 0.0038 kg·m², ζ = 0.026), 172 Hz for 25/12 ((f_z/f_L)² = 6.5e-4 and 9.2e-4; the
+// resonance at the 39th and 33rd harmonic). Measured (20, 40 bins): it takes 0.4, 0.8 % off 17/17
+// at 20.75 pitches' 3.6, 3.5 % (a share of 0.11, 0.22; the model is still 3.2, 2.7 % over it) and
+// 1.7, 2.0 % off 25/12's 3.9, 4.3 % (0.44, 0.47).
+//
+// The rest, for 17/17 with T1 held (485.5 N), AT 20 BINS ONLY: the excess is 1.59 % at 0.025 m/s
+// and 3.62 % at 0.1 m/s; the part that grows with the speed, 2.03 %, stays with links 4× stiffer
+// (1.95 %: −0.71 % and 1.24 %), and with the span held straight (`hold_straight`, which also fixes
+// the end links' direction at A and B) it is gone: held 1.61 % at 0.1 m/s, 1.60 % at 0.025 m/s.
+// At 40 and 80 bins neither holds, so the rest is not identified: the speed's part is 2.28, 3.01 %
+// at k and 1.65, −0.53 % at 4k (it falls with k), and the held runs keep 1.01, 3.31 % of it (the
+// free runs' 2.28, 3.01 %; of the held 1.01 % at 40 bins the longitudinal dynamics give 0.71 %).
+// What falls with k at 20 bins is the quasi-static excess (1.59, 0.13, −0.71 % at k, 2k, 4k at
+// 0.025 m/s; the static swing's 1.19, `ModelStaticSwingFollowsTheTensionLaw`).
+//
+// Claims (each able to fail for a physical reason): the longitudinal dynamics add to the elastic
+// four-bar (dynamic > 0) and explain less than the model's excess (share < 1), both set-ups at 20
+// and 40 bins; 17/17 stays over the dynamic reference by more than 2 %; at 20 bins the speed's part
+// is over 1.5 %, with 4k over 0.75 of it (the longitudinal dynamics would give 1/4, f_L²), and the
+// hold takes at least 3/4 of it away (held fast within 0.25 of it of held slow). Regression pins
+// (bands set around single measured values, not physics; they move if the model's excess does):
+// the shares within 0.05–0.3 (17/17) and 0.3–0.6 (25/12). At 5e-5 s (halved) it passes: 17/17
+// 3.69, 3.48 % (shares 0.11, 0.22), 25/12 4.18, 4.78 % (0.41, 0.42); at 20 bins slow 1.56 %, 4k's
+// speed part 2.00 %, held 1.60 % and held slow 1.58 %; at 80 bins the speed's part 3.29 % at k,
+// −0.51 % at 4k, held 3.42 %. Seven runs of the model.
+TEST(DynamicsChordalDrive, SpeedExcessIsOnlyPartlyTheSpansLongitudinalDynamics) {
+  const std::vector<int> bins = {20, 40, 80};
+  const auto claims = [&bins](const Excess& e, const char* name) {
+    for (std::size_t q = 0; q < 2; ++q) {
+      EXPECT_GT(e.dynamic[q], 0.0) << name << ", " << bins[q] << " bins";
+      EXPECT_LT(e.dynamic[q], e.model[q]) << name << ", " << bins[q] << " bins";
+    }
+  };
   {
     const auto [d, g, k] = set_up(25, 12, 20.0, 0.1);
     const Excess e = excess(d, k, bins);
-    for (std::size_t q = 0; q < bins.size(); ++q) {
+    claims(e, "25/12");
+    for (std::size_t q = 0; q < 2; ++q) {
       const double share = e.dynamic[q] / e.model[q];
       std::printf(
           "25/12 at 20 p, 0.1 m/s, %d bins: over the elastic four-bar %.4f, its longitudinal "
           "dynamics %.4f, share %.2f\n",
           bins[q], e.model[q], e.dynamic[q], share);
-      EXPECT_GT(share, 0.3) << bins[q] << " bins";
-      EXPECT_LT(share, 0.6) << bins[q] << " bins";
+      EXPECT_GT(share, 0.3) << "regression pin, " << bins[q] << " bins";
+      EXPECT_LT(share, 0.6) << "regression pin, " << bins[q] << " bins";
     }
   }
   const auto [fast, g, k] = set_up(17, 17, 20.75, 0.1);
   FarWheel slow = fast;  // T1 held at the 0.1 m/s rule's
   slow.chain_speed = 0.025;
   slow.periods = 4;
-  FarWheel stiff = fast, stiff_slow = slow, held = fast;
+  FarWheel stiff = fast, stiff_slow = slow, held = fast, held_slow = slow;
   stiff.stiffness *= 4;
   stiff_slow.stiffness *= 4;
   held.hold_transverse = true;
-  const Excess e = excess(fast, k, bins), e_slow = excess(slow, k, {20}),
-               e_stiff = excess(stiff, k, {20}), e_stiff_slow = excess(stiff_slow, k, {20}),
-               e_held = excess(held, k, {20});
-  for (std::size_t q = 0; q < bins.size(); ++q) {
+  held_slow.hold_transverse = true;
+  const Excess e = excess(fast, k, bins), e_slow = excess(slow, k, bins),
+               e_stiff = excess(stiff, k, bins), e_stiff_slow = excess(stiff_slow, k, bins),
+               e_held = excess(held, k, bins), e_held_slow = excess(held_slow, k, bins);
+  claims(e, "17/17");
+  for (std::size_t q = 0; q < 2; ++q) {
     const double share = e.dynamic[q] / e.model[q];
     std::printf(
         "17/17 at 20.75 p, 0.1 m/s, %d bins: over the elastic four-bar %.4f, its "
         "longitudinal dynamics %.4f, share %.2f\n",
         bins[q], e.model[q], e.dynamic[q], share);
-    EXPECT_GT(share, 0.05) << bins[q] << " bins";
-    EXPECT_LT(share, 0.3) << bins[q] << " bins";
+    EXPECT_GT(share, 0.05) << "regression pin, " << bins[q] << " bins";
+    EXPECT_LT(share, 0.3) << "regression pin, " << bins[q] << " bins";
     EXPECT_GT((1 + e.model[q]) / (1 + e.dynamic[q]) - 1, 0.02) << bins[q] << " bins";
+  }
+  for (std::size_t q = 0; q < bins.size(); ++q) {
+    std::printf(
+        "17/17 at 20.75 p, %d bins, T1 %.1f N, 0.025 and 0.1 m/s: %.4f, %.4f; links 4x stiffer "
+        "%.4f, %.4f; the span held straight %.4f, %.4f; longitudinal dynamics at 0.1 m/s %.4f, "
+        "4x stiffer %.4f\n",
+        bins[q], fast.tight, e_slow.model[q], e.model[q], e_stiff_slow.model[q], e_stiff.model[q],
+        e_held_slow.model[q], e_held.model[q], e.dynamic[q], e_stiff.dynamic[q]);
   }
   const double speed = e.model[0] - e_slow.model[0];
   const double speed_stiff = e_stiff.model[0] - e_stiff_slow.model[0];
-  std::printf(
-      "17/17 at 20.75 p, 20 bins, T1 %.1f N: 0.025 m/s %.4f, 0.1 m/s %.4f; links 4x stiffer "
-      "%.4f, %.4f; longitudinal dynamics %.4f, %.4f; the span held straight %.4f\n",
-      fast.tight, e_slow.model[0], e.model[0], e_stiff_slow.model[0], e_stiff.model[0],
-      e.dynamic[0], e_stiff.dynamic[0], e_held.model[0]);
   EXPECT_GT(speed, 0.015);
   EXPECT_GT(speed_stiff, 0.75 * speed);
-  EXPECT_LT(e_stiff.dynamic[0], 0.35 * e.dynamic[0]);
-  EXPECT_NEAR(e_held.model[0], e_slow.model[0], 0.004);
+  EXPECT_NEAR(e_held.model[0], e_held_slow.model[0], 0.25 * speed);
 }
 
 }  // namespace
