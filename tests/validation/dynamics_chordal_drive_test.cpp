@@ -891,7 +891,7 @@ std::vector<double> transmitted_signal(const std::vector<double>& x, const Oscil
 
 // The elastic four-bar with the span's longitudinal dynamics: its θ2 at kSamples equal steps of the
 // driver's tooth (phase 0 as `kinematic_ratio`'s), less the mean rotation (z1/z2 of the driver's),
-// periodic over the tooth, through `transmitted` at the tooth's frequency ω1 z1 = 2π v/p and its
+// periodic over the tooth, through `transmitted` at the tooth's frequency ω1 z1 (ω1 = v/r1) and its
 // harmonics in the periodic steady state; the mean ω2/ω1 over `bins` equal bins (bins divides
 // kSamples), exactly Δθ2/Δθ1 as `kinematic_ratio`.
 constexpr int kSamples = 480;
@@ -1057,7 +1057,7 @@ Excess excess(const FarWheel& d, int k, const std::vector<int>& bins) {
 // at 20.75 pitches' 3.6, 3.5 % (a share of 0.11, 0.22; the model is still 3.2, 2.7 % over it) and
 // 1.7, 2.0 % off 25/12's 3.9, 4.3 % (0.44, 0.47).
 //
-// The rest, for 17/17 with T1 held (485.5 N), AT 20 BINS ONLY: the excess is 1.59 % at 0.025 m/s
+// The rest, for 17/17 with T1 held (485.5 N), at 20 bins only: the excess is 1.59 % at 0.025 m/s
 // and 3.62 % at 0.1 m/s; the part that grows with the speed, 2.03 %, stays with links 4× stiffer
 // (1.95 %: −0.71 % and 1.24 %), and with the span held straight (`hold_straight`, which also fixes
 // the end links' direction at A and B) it is gone: held 1.61 % at 0.1 m/s, 1.60 % at 0.025 m/s.
