@@ -216,34 +216,35 @@ SolveStatus BlockPentadiagonalSolver::pivoted_factor() {
 }
 
 void BlockPentadiagonalSolver::block_solve4(double* q) const {
-  // q is 2n × 4, row-major: node k's rows are q[8k..8k+3] (x) and q[8k+4..8k+7] (y)
+  // q is 2n × 4, row-major: node k's rows are q[8k..8k+3] (x) and q[8k+4..8k+7] (y). Each node's
+  // eight entries are gathered into a local, its updates applied there (row r's from rows r − 2
+  // then r − 1 forward, from rows k + 1 then k + 2 backward: the order of a sweep that subtracts
+  // each finished row from the rows after it) and stored once, so the four columns run without
+  // reloads through q (which the compiler must otherwise assume each store may change).
   const std::size_t n = n_;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double* qk = q + 8 * k;
-    for (std::size_t r = k + 1; r <= std::min(n - 1, k + 2); ++r) {
-      const Mat2& l = f_[k + 2 - r][r];
-      double* qr = q + 8 * r;
-      for (std::size_t c = 0; c < 4; ++c) {
-        qr[c] -= l.a * qk[c] + l.b * qk[4 + c];
-        qr[4 + c] -= l.c * qk[c] + l.d * qk[4 + c];
-      }
+  const auto less = [](double* v, const Mat2& a, const double* qk) {  // v −= a q_k
+    for (std::size_t c = 0; c < 4; ++c) {
+      v[c] -= a.a * qk[c] + a.b * qk[4 + c];
+      v[4 + c] -= a.c * qk[c] + a.d * qk[4 + c];
     }
+  };
+  for (std::size_t r = 1; r < n; ++r) {
+    double v[8];
+    std::copy(q + 8 * r, q + 8 * r + 8, v);
+    if (r >= 2) less(v, f_[0][r], q + 8 * (r - 2));  // block (r, r − 2)
+    less(v, f_[1][r], q + 8 * (r - 1));              // block (r, r − 1)
+    std::copy(v, v + 8, q + 8 * r);
   }
   for (std::size_t k = n; k-- > 0;) {
+    double v[8];
     double* qk = q + 8 * k;
-    for (std::size_t c2 = k + 1; c2 <= std::min(n - 1, k + 2); ++c2) {
-      const Mat2& u = f_[c2 + 2 - k][k];
-      const double* qc = q + 8 * c2;
-      for (std::size_t c = 0; c < 4; ++c) {
-        qk[c] -= u.a * qc[c] + u.b * qc[4 + c];
-        qk[4 + c] -= u.c * qc[c] + u.d * qc[4 + c];
-      }
-    }
+    std::copy(qk, qk + 8, v);
+    if (k + 1 < n) less(v, f_[3][k], q + 8 * (k + 1));  // block (k, k + 1)
+    if (k + 2 < n) less(v, f_[4][k], q + 8 * (k + 2));  // block (k, k + 2)
     const Mat2& d = f_[2][k];
     for (std::size_t c = 0; c < 4; ++c) {
-      const double x = qk[c], y = qk[4 + c];
-      qk[c] = d.a * x + d.b * y;
-      qk[4 + c] = d.c * x + d.d * y;
+      qk[c] = d.a * v[c] + d.b * v[4 + c];
+      qk[4 + c] = d.c * v[c] + d.d * v[4 + c];
     }
   }
 }
