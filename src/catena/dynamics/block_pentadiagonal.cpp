@@ -251,24 +251,30 @@ void BlockPentadiagonalSolver::block_solve4(double* q) const {
 
 void BlockPentadiagonalSolver::band_solve(double* y) const {
   if (blocked_) {
+    // Row by row, each row's updates in the order of the sweep that subtracts each finished row
+    // from the rows after it (forward: from rows r − 2 then r − 1; backward: from k + 1 then
+    // k + 2), the two rows before carried in locals: the same operations, stored once a row.
     const std::size_t n = n_;
-    for (std::size_t k = 0; k < n; ++k) {
-      const Vec2 yk{y[2 * k], y[2 * k + 1]};
-      for (std::size_t r = k + 1; r <= std::min(n - 1, k + 2); ++r) {
-        const Vec2 d = f_[k + 2 - r][r] * yk;
-        y[2 * r] -= d.x;
-        y[2 * r + 1] -= d.y;
-      }
+    Vec2 before2{}, before1{y[0], y[1]};  // rows r − 2 and r − 1, finished
+    for (std::size_t r = 1; r < n; ++r) {
+      Vec2 s{y[2 * r], y[2 * r + 1]};
+      if (r >= 2) s = s - f_[0][r] * before2;
+      s = s - f_[1][r] * before1;
+      y[2 * r] = s.x;
+      y[2 * r + 1] = s.y;
+      before2 = before1;
+      before1 = s;
     }
+    Vec2 after1{}, after2{};  // rows k + 1 and k + 2, finished
     for (std::size_t k = n; k-- > 0;) {
       Vec2 s{y[2 * k], y[2 * k + 1]};
-      for (std::size_t c = k + 1; c <= std::min(n - 1, k + 2); ++c) {
-        const Vec2 d = f_[c + 2 - k][k] * Vec2{y[2 * c], y[2 * c + 1]};
-        s = {s.x - d.x, s.y - d.y};
-      }
+      if (k + 1 < n) s = s - f_[3][k] * after1;
+      if (k + 2 < n) s = s - f_[4][k] * after2;
       const Vec2 x = f_[2][k] * s;
       y[2 * k] = x.x;
       y[2 * k + 1] = x.y;
+      after2 = after1;
+      after1 = x;
     }
     return;
   }
@@ -335,30 +341,48 @@ void BlockPentadiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec
     w[2 * i] = b2[i].x;
     w[2 * i + 1] = b2[i].y;
   }
-  for (std::size_t k = 0; k < n; ++k) {
-    const Vec2 yk{y[2 * k], y[2 * k + 1]}, wk{w[2 * k], w[2 * k + 1]};
-    for (std::size_t r = k + 1; r <= std::min(n - 1, k + 2); ++r) {
-      const Mat2& l = f_[k + 2 - r][r];
-      const Vec2 d = l * yk, e = l * wk;
-      y[2 * r] -= d.x;
-      y[2 * r + 1] -= d.y;
-      w[2 * r] -= e.x;
-      w[2 * r + 1] -= e.y;
+  Vec2 ybefore2{}, ybefore1{y[0], y[1]}, wbefore2{}, wbefore1{w[0], w[1]};
+  for (std::size_t r = 1; r < n; ++r) {
+    Vec2 s{y[2 * r], y[2 * r + 1]}, t{w[2 * r], w[2 * r + 1]};
+    if (r >= 2) {
+      const Mat2& l = f_[0][r];
+      s = s - l * ybefore2;
+      t = t - l * wbefore2;
     }
+    const Mat2& l = f_[1][r];
+    s = s - l * ybefore1;
+    t = t - l * wbefore1;
+    y[2 * r] = s.x;
+    y[2 * r + 1] = s.y;
+    w[2 * r] = t.x;
+    w[2 * r + 1] = t.y;
+    ybefore2 = ybefore1;
+    ybefore1 = s;
+    wbefore2 = wbefore1;
+    wbefore1 = t;
   }
+  Vec2 yafter1{}, yafter2{}, wafter1{}, wafter2{};
   for (std::size_t k = n; k-- > 0;) {
     Vec2 s{y[2 * k], y[2 * k + 1]}, t{w[2 * k], w[2 * k + 1]};
-    for (std::size_t c = k + 1; c <= std::min(n - 1, k + 2); ++c) {
-      const Mat2& u = f_[c + 2 - k][k];
-      const Vec2 d = u * Vec2{y[2 * c], y[2 * c + 1]}, e = u * Vec2{w[2 * c], w[2 * c + 1]};
-      s = {s.x - d.x, s.y - d.y};
-      t = {t.x - e.x, t.y - e.y};
+    if (k + 1 < n) {
+      const Mat2& u = f_[3][k];
+      s = s - u * yafter1;
+      t = t - u * wafter1;
+    }
+    if (k + 2 < n) {
+      const Mat2& u = f_[4][k];
+      s = s - u * yafter2;
+      t = t - u * wafter2;
     }
     const Vec2 xs = f_[2][k] * s, xt = f_[2][k] * t;
     y[2 * k] = xs.x;
     y[2 * k + 1] = xs.y;
     w[2 * k] = xt.x;
     w[2 * k + 1] = xt.y;
+    yafter2 = yafter1;
+    yafter1 = xs;
+    wafter2 = wafter1;
+    wafter1 = xt;
   }
   if (closure_) {
     double z[4], z2[4];
