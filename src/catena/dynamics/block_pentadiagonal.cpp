@@ -152,8 +152,11 @@ bool BlockPentadiagonalSolver::block_factor() {
   for (const Mat2& d : t_[2]) {
     scale = std::max({scale, std::abs(d.a) + std::abs(d.b), std::abs(d.c) + std::abs(d.d)});
   }
+  Mat2 *const f0 = f_[0].data(), *const f1 = f_[1].data(), *const f2 = f_[2].data();
+  Mat2* const f3 = f_[3].data();
+  const Mat2* const f4 = f_[4].data();  // U's (k, k + 2): the elimination leaves them as they are
   for (std::size_t k = 0; k < n; ++k) {
-    const Mat2 d = f_[2][k];
+    const Mat2 d = f2[k];
     const double det = d.a * d.d - d.b * d.c;
     const double size = std::max(std::abs(d.a) + std::abs(d.b), std::abs(d.c) + std::abs(d.d));
     // a pivot block small against the matrix or ill conditioned in itself: pivot instead
@@ -161,14 +164,21 @@ bool BlockPentadiagonalSolver::block_factor() {
       return false;
     }
     const Mat2 inv{d.d / det, -d.b / det, -d.c / det, d.a / det};
-    f_[2][k] = inv;
-    for (std::size_t r = k + 1; r <= std::min(n - 1, k + 2); ++r) {
-      Mat2& l = f_[k + 2 - r][r];  // block (r, k), offset k − r
-      l = l * inv;
-      for (std::size_t c = k + 1; c <= std::min(n - 1, k + 2); ++c) {
-        Mat2& t = f_[c + 2 - r][r];  // block (r, c)
-        t = t - l * f_[c + 2 - k][k];
-      }
+    f2[k] = inv;
+    // rows k + 1 and k + 2: L's multiplier (r, k) = A(r, k) S_k⁻¹, then the blocks (r, k + 1)
+    // and (r, k + 2) less it times U's (k, k + 1) and (k, k + 2), in that order
+    const Mat2 u1 = f3[k], u2 = f4[k];
+    if (k + 1 < n) {
+      const Mat2 l = f1[k + 1] * inv;
+      f1[k + 1] = l;
+      f2[k + 1] = f2[k + 1] - l * u1;
+      if (k + 2 < n) f3[k + 1] = f3[k + 1] - l * u2;
+    }
+    if (k + 2 < n) {
+      const Mat2 l = f0[k + 2] * inv;
+      f0[k + 2] = l;
+      f1[k + 2] = f1[k + 2] - l * u1;
+      f2[k + 2] = f2[k + 2] - l * u2;
     }
   }
   return true;
