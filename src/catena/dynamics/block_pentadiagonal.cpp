@@ -49,12 +49,18 @@ SolveStatus BlockPentadiagonalSolver::factor() {
   // closed loop's wrap-around) into the corners.
   for (int o = -2; o <= 2; ++o) {
     const std::vector<Mat2>& blocks = band[static_cast<std::size_t>(o + 2)];
+    Mat2* const within = t_[static_cast<std::size_t>(o + 2)].data();
+    const long nl = static_cast<long>(n);
     for (std::size_t i = 0; i < n; ++i) {
       const long jl = static_cast<long>(i) + o;
-      if (!cyclic_ && (jl < 0 || jl >= static_cast<long>(n))) continue;
-      const long nl = static_cast<long>(n);
-      const std::size_t j = static_cast<std::size_t>((jl + nl) % nl);
       const Mat2& b = blocks[i];
+      if (jl >= 0 && jl < nl) {  // within the band: the gap is o
+        Mat2& t = within[i];
+        t = {t.a + b.a, t.b + b.b, t.c + b.c, t.d + b.d};
+        continue;
+      }
+      if (!cyclic_) continue;
+      const std::size_t j = static_cast<std::size_t>(jl < 0 ? jl + nl : jl - nl);
       const long gap = static_cast<long>(j) - static_cast<long>(i);
       if (gap >= -2 && gap <= 2) {
         Mat2& t = t_[static_cast<std::size_t>(gap + 2)][i];
