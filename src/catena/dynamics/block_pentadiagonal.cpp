@@ -328,10 +328,13 @@ void BlockPentadiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec
       z[r] = s;
     }
     cap_.solve(z);
-    for (std::size_t r = 0; r < m; ++r) {
-      const double* q = &q_[4 * r];
-      y_[r] -= q[0] * z[0] + q[1] * z[1] + q[2] * z[2] + q[3] * z[3];
+    // y − Q z, written straight into x
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* q = &q_[8 * i];
+      x[i] = {y_[2 * i] - (q[0] * z[0] + q[1] * z[1] + q[2] * z[2] + q[3] * z[3]),
+              y_[2 * i + 1] - (q[4] * z[0] + q[5] * z[1] + q[6] * z[2] + q[7] * z[3])};
     }
+    return;
   }
   for (std::size_t i = 0; i < n; ++i) x[i] = {y_[2 * i], y_[2 * i + 1]};
 }
@@ -413,11 +416,15 @@ void BlockPentadiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec
     }
     cap_.solve(z);
     cap_.solve(z2);
-    for (std::size_t r = 0; r < m; ++r) {
-      const double* q = &q_[4 * r];
-      y[r] -= q[0] * z[0] + q[1] * z[1] + q[2] * z[2] + q[3] * z[3];
-      w[r] -= q[0] * z2[0] + q[1] * z2[1] + q[2] * z2[2] + q[3] * z2[3];
+    // y − Q z and w − Q z₂, written straight into x and x₂
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* q = &q_[8 * i];
+      x[i] = {y[2 * i] - (q[0] * z[0] + q[1] * z[1] + q[2] * z[2] + q[3] * z[3]),
+              y[2 * i + 1] - (q[4] * z[0] + q[5] * z[1] + q[6] * z[2] + q[7] * z[3])};
+      x2[i] = {w[2 * i] - (q[0] * z2[0] + q[1] * z2[1] + q[2] * z2[2] + q[3] * z2[3]),
+               w[2 * i + 1] - (q[4] * z2[0] + q[5] * z2[1] + q[6] * z2[2] + q[7] * z2[3])};
     }
+    return;
   }
   for (std::size_t i = 0; i < n; ++i) {
     x[i] = {y[2 * i], y[2 * i + 1]};
