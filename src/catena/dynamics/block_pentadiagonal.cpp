@@ -42,7 +42,14 @@ SolveStatus BlockPentadiagonalSolver::solve(std::span<Vec2> x) {
 
 SolveStatus BlockPentadiagonalSolver::factor() {
   const std::size_t n = n_, m = m_;
-  for (auto& b : t_) std::fill(b.begin(), b.end(), Mat2{});
+  // Once n ≥ 5 (or on an open system) each of T's places takes at most one block, so each is
+  // written once: a block as the zero the place starts at plus the block (0 + b, which keeps the
+  // sum's sign of a zero), a place no block reaches as zero. At n = 3, 4 a closed loop's wrapped
+  // block can land on a place within the band too: there the places start at zero and add up.
+  const bool once = !cyclic_ || n >= 5;
+  if (!once) {
+    for (auto& b : t_) std::fill(b.begin(), b.end(), Mat2{});
+  }
   for (auto& row : ctr_) std::fill(row, row + 4, 0.0);
   for (auto& row : cbl_) std::fill(row, row + 4, 0.0);
   // Gather the blocks: within the band (|i − j| ≤ 2 as plain indices) into T's bands t_, else (a
@@ -56,9 +63,11 @@ SolveStatus BlockPentadiagonalSolver::factor() {
       const Mat2& b = blocks[i];
       if (jl >= 0 && jl < nl) {  // within the band: the gap is o
         Mat2& t = within[i];
-        t = {t.a + b.a, t.b + b.b, t.c + b.c, t.d + b.d};
+        t = once ? Mat2{0.0 + b.a, 0.0 + b.b, 0.0 + b.c, 0.0 + b.d}
+                 : Mat2{t.a + b.a, t.b + b.b, t.c + b.c, t.d + b.d};
         continue;
       }
+      if (once) within[i] = Mat2{};  // outside the band: a corner's block, or none
       if (!cyclic_) continue;
       const std::size_t j = static_cast<std::size_t>(jl < 0 ? jl + nl : jl - nl);
       const long gap = static_cast<long>(j) - static_cast<long>(i);
