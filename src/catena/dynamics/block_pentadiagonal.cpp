@@ -248,10 +248,16 @@ void BlockPentadiagonalSolver::block_solve4(double* q) const {
   // reloads through q (which the compiler must otherwise assume each store may change).
   const std::size_t n = n_;
   const auto less = [](double* v, const Mat2& a, const double* qk) {  // v −= a q_k
-    for (std::size_t c = 0; c < 4; ++c) {
-      v[c] -= a.a * qk[c] + a.b * qk[4 + c];
-      v[4 + c] -= a.c * qk[c] + a.d * qk[4 + c];
-    }
+    const double x0 = qk[0], x1 = qk[1], x2 = qk[2], x3 = qk[3];
+    const double y0 = qk[4], y1 = qk[5], y2 = qk[6], y3 = qk[7];
+    v[0] -= a.a * x0 + a.b * y0;
+    v[1] -= a.a * x1 + a.b * y1;
+    v[2] -= a.a * x2 + a.b * y2;
+    v[3] -= a.a * x3 + a.b * y3;
+    v[4] -= a.c * x0 + a.d * y0;
+    v[5] -= a.c * x1 + a.d * y1;
+    v[6] -= a.c * x2 + a.d * y2;
+    v[7] -= a.c * x3 + a.d * y3;
   };
   for (std::size_t r = 1; r < n; ++r) {
     double v[8];
