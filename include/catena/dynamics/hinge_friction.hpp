@@ -282,10 +282,15 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
     load_factor = -hinge.arm * (hc.rate / root) * loaded;  // −e s(ω)
   }
   hc.work = hc.torque * hc.turn;
-  for (int k = 0; k < 3; ++k) {
-    hc.fx[k] = hc.torque * hc.gx[k];
-    hc.fy[k] = hc.torque * hc.gy[k];
-  }
+  // M g on the three nodes, written out (as a loop the compiler kept the loop and read g back)
+  const double torque = hc.torque;
+  const double g1x = -l0.px - l1.px, g1y = -l0.py - l1.py;
+  hc.fx[0] = torque * l0.px;
+  hc.fy[0] = torque * l0.py;
+  hc.fx[1] = torque * g1x;
+  hc.fy[1] = torque * g1y;
+  hc.fx[2] = torque * l1.px;
+  hc.fy[2] = torque * l1.py;
   if (!jacobian) return;
   // The exact ∂f/∂x₁. Node gradients of a per-link quantity q(d₁) of links 0 (a → b) and 1
   // (b → c): the turn Δβ = turn₁ − turn₀ gives (T₀, −T₀ − T₁, T₁) (as g); the load F = Σ w_j ½ k

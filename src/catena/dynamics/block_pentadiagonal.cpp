@@ -42,19 +42,34 @@ SolveStatus BlockPentadiagonalSolver::solve(std::span<Vec2> x) {
 
 SolveStatus BlockPentadiagonalSolver::factor() {
   const std::size_t n = n_, m = m_;
-  for (auto& b : t_) std::fill(b.begin(), b.end(), Mat2{});
+  // Once n ≥ 5 (or on an open system) each of T's places takes at most one block, so each is
+  // written once: a block as the zero the place starts at plus the block (0 + b, which keeps the
+  // sum's sign of a zero), a place no block reaches as zero. At n = 3, 4 a closed loop's wrapped
+  // block can land on a place within the band too: there the places start at zero and add up.
+  const bool once = !cyclic_ || n >= 5;
+  if (!once) {
+    for (auto& b : t_) std::fill(b.begin(), b.end(), Mat2{});
+  }
   for (auto& row : ctr_) std::fill(row, row + 4, 0.0);
   for (auto& row : cbl_) std::fill(row, row + 4, 0.0);
   // Gather the blocks: within the band (|i − j| ≤ 2 as plain indices) into T's bands t_, else (a
   // closed loop's wrap-around) into the corners.
   for (int o = -2; o <= 2; ++o) {
     const std::vector<Mat2>& blocks = band[static_cast<std::size_t>(o + 2)];
+    Mat2* const within = t_[static_cast<std::size_t>(o + 2)].data();
+    const long nl = static_cast<long>(n);
     for (std::size_t i = 0; i < n; ++i) {
       const long jl = static_cast<long>(i) + o;
-      if (!cyclic_ && (jl < 0 || jl >= static_cast<long>(n))) continue;
-      const long nl = static_cast<long>(n);
-      const std::size_t j = static_cast<std::size_t>((jl + nl) % nl);
       const Mat2& b = blocks[i];
+      if (jl >= 0 && jl < nl) {  // within the band: the gap is o
+        Mat2& t = within[i];
+        t = once ? Mat2{0.0 + b.a, 0.0 + b.b, 0.0 + b.c, 0.0 + b.d}
+                 : Mat2{t.a + b.a, t.b + b.b, t.c + b.c, t.d + b.d};
+        continue;
+      }
+      if (once) within[i] = Mat2{};  // outside the band: a corner's block, or none
+      if (!cyclic_) continue;
+      const std::size_t j = static_cast<std::size_t>(jl < 0 ? jl + nl : jl - nl);
       const long gap = static_cast<long>(j) - static_cast<long>(i);
       if (gap >= -2 && gap <= 2) {
         Mat2& t = t_[static_cast<std::size_t>(gap + 2)][i];
@@ -152,8 +167,11 @@ bool BlockPentadiagonalSolver::block_factor() {
   for (const Mat2& d : t_[2]) {
     scale = std::max({scale, std::abs(d.a) + std::abs(d.b), std::abs(d.c) + std::abs(d.d)});
   }
+  Mat2 *const f0 = f_[0].data(), *const f1 = f_[1].data(), *const f2 = f_[2].data();
+  Mat2* const f3 = f_[3].data();
+  const Mat2* const f4 = f_[4].data();  // U's (k, k + 2): the elimination leaves them as they are
   for (std::size_t k = 0; k < n; ++k) {
-    const Mat2 d = f_[2][k];
+    const Mat2 d = f2[k];
     const double det = d.a * d.d - d.b * d.c;
     const double size = std::max(std::abs(d.a) + std::abs(d.b), std::abs(d.c) + std::abs(d.d));
     // a pivot block small against the matrix or ill conditioned in itself: pivot instead
@@ -161,14 +179,21 @@ bool BlockPentadiagonalSolver::block_factor() {
       return false;
     }
     const Mat2 inv{d.d / det, -d.b / det, -d.c / det, d.a / det};
-    f_[2][k] = inv;
-    for (std::size_t r = k + 1; r <= std::min(n - 1, k + 2); ++r) {
-      Mat2& l = f_[k + 2 - r][r];  // block (r, k), offset k − r
-      l = l * inv;
-      for (std::size_t c = k + 1; c <= std::min(n - 1, k + 2); ++c) {
-        Mat2& t = f_[c + 2 - r][r];  // block (r, c)
-        t = t - l * f_[c + 2 - k][k];
-      }
+    f2[k] = inv;
+    // rows k + 1 and k + 2: L's multiplier (r, k) = A(r, k) S_k⁻¹, then the blocks (r, k + 1)
+    // and (r, k + 2) less it times U's (k, k + 1) and (k, k + 2), in that order
+    const Mat2 u1 = f3[k], u2 = f4[k];
+    if (k + 1 < n) {
+      const Mat2 l = f1[k + 1] * inv;
+      f1[k + 1] = l;
+      f2[k + 1] = f2[k + 1] - l * u1;
+      if (k + 2 < n) f3[k + 1] = f3[k + 1] - l * u2;
+    }
+    if (k + 2 < n) {
+      const Mat2 l = f0[k + 2] * inv;
+      f0[k + 2] = l;
+      f1[k + 2] = f1[k + 2] - l * u1;
+      f2[k + 2] = f2[k + 2] - l * u2;
     }
   }
   return true;
@@ -216,58 +241,71 @@ SolveStatus BlockPentadiagonalSolver::pivoted_factor() {
 }
 
 void BlockPentadiagonalSolver::block_solve4(double* q) const {
-  // q is 2n × 4, row-major: node k's rows are q[8k..8k+3] (x) and q[8k+4..8k+7] (y)
+  // q is 2n × 4, row-major: node k's rows are q[8k..8k+3] (x) and q[8k+4..8k+7] (y). Each node's
+  // eight entries are gathered into a local, its updates applied there (row r's from rows r − 2
+  // then r − 1 forward, from rows k + 1 then k + 2 backward: the order of a sweep that subtracts
+  // each finished row from the rows after it) and stored once, so the four columns run without
+  // reloads through q (which the compiler must otherwise assume each store may change).
   const std::size_t n = n_;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double* qk = q + 8 * k;
-    for (std::size_t r = k + 1; r <= std::min(n - 1, k + 2); ++r) {
-      const Mat2& l = f_[k + 2 - r][r];
-      double* qr = q + 8 * r;
-      for (std::size_t c = 0; c < 4; ++c) {
-        qr[c] -= l.a * qk[c] + l.b * qk[4 + c];
-        qr[4 + c] -= l.c * qk[c] + l.d * qk[4 + c];
-      }
-    }
+  const auto less = [](double* v, const Mat2& a, const double* qk) {  // v −= a q_k
+    const double x0 = qk[0], x1 = qk[1], x2 = qk[2], x3 = qk[3];
+    const double y0 = qk[4], y1 = qk[5], y2 = qk[6], y3 = qk[7];
+    v[0] -= a.a * x0 + a.b * y0;
+    v[1] -= a.a * x1 + a.b * y1;
+    v[2] -= a.a * x2 + a.b * y2;
+    v[3] -= a.a * x3 + a.b * y3;
+    v[4] -= a.c * x0 + a.d * y0;
+    v[5] -= a.c * x1 + a.d * y1;
+    v[6] -= a.c * x2 + a.d * y2;
+    v[7] -= a.c * x3 + a.d * y3;
+  };
+  for (std::size_t r = 1; r < n; ++r) {
+    double v[8];
+    std::copy(q + 8 * r, q + 8 * r + 8, v);
+    if (r >= 2) less(v, f_[0][r], q + 8 * (r - 2));  // block (r, r − 2)
+    less(v, f_[1][r], q + 8 * (r - 1));              // block (r, r − 1)
+    std::copy(v, v + 8, q + 8 * r);
   }
   for (std::size_t k = n; k-- > 0;) {
+    double v[8];
     double* qk = q + 8 * k;
-    for (std::size_t c2 = k + 1; c2 <= std::min(n - 1, k + 2); ++c2) {
-      const Mat2& u = f_[c2 + 2 - k][k];
-      const double* qc = q + 8 * c2;
-      for (std::size_t c = 0; c < 4; ++c) {
-        qk[c] -= u.a * qc[c] + u.b * qc[4 + c];
-        qk[4 + c] -= u.c * qc[c] + u.d * qc[4 + c];
-      }
-    }
+    std::copy(qk, qk + 8, v);
+    if (k + 1 < n) less(v, f_[3][k], q + 8 * (k + 1));  // block (k, k + 1)
+    if (k + 2 < n) less(v, f_[4][k], q + 8 * (k + 2));  // block (k, k + 2)
     const Mat2& d = f_[2][k];
     for (std::size_t c = 0; c < 4; ++c) {
-      const double x = qk[c], y = qk[4 + c];
-      qk[c] = d.a * x + d.b * y;
-      qk[4 + c] = d.c * x + d.d * y;
+      qk[c] = d.a * v[c] + d.b * v[4 + c];
+      qk[4 + c] = d.c * v[c] + d.d * v[4 + c];
     }
   }
 }
 
 void BlockPentadiagonalSolver::band_solve(double* y) const {
   if (blocked_) {
+    // Row by row, each row's updates in the order of the sweep that subtracts each finished row
+    // from the rows after it (forward: from rows r − 2 then r − 1; backward: from k + 1 then
+    // k + 2), the two rows before carried in locals: the same operations, stored once a row.
     const std::size_t n = n_;
-    for (std::size_t k = 0; k < n; ++k) {
-      const Vec2 yk{y[2 * k], y[2 * k + 1]};
-      for (std::size_t r = k + 1; r <= std::min(n - 1, k + 2); ++r) {
-        const Vec2 d = f_[k + 2 - r][r] * yk;
-        y[2 * r] -= d.x;
-        y[2 * r + 1] -= d.y;
-      }
+    Vec2 before2{}, before1{y[0], y[1]};  // rows r − 2 and r − 1, finished
+    for (std::size_t r = 1; r < n; ++r) {
+      Vec2 s{y[2 * r], y[2 * r + 1]};
+      if (r >= 2) s = s - f_[0][r] * before2;
+      s = s - f_[1][r] * before1;
+      y[2 * r] = s.x;
+      y[2 * r + 1] = s.y;
+      before2 = before1;
+      before1 = s;
     }
+    Vec2 after1{}, after2{};  // rows k + 1 and k + 2, finished
     for (std::size_t k = n; k-- > 0;) {
       Vec2 s{y[2 * k], y[2 * k + 1]};
-      for (std::size_t c = k + 1; c <= std::min(n - 1, k + 2); ++c) {
-        const Vec2 d = f_[c + 2 - k][k] * Vec2{y[2 * c], y[2 * c + 1]};
-        s = {s.x - d.x, s.y - d.y};
-      }
+      if (k + 1 < n) s = s - f_[3][k] * after1;
+      if (k + 2 < n) s = s - f_[4][k] * after2;
       const Vec2 x = f_[2][k] * s;
       y[2 * k] = x.x;
       y[2 * k + 1] = x.y;
+      after2 = after1;
+      after1 = x;
     }
     return;
   }
@@ -305,10 +343,13 @@ void BlockPentadiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec
       z[r] = s;
     }
     cap_.solve(z);
-    for (std::size_t r = 0; r < m; ++r) {
-      const double* q = &q_[4 * r];
-      y_[r] -= q[0] * z[0] + q[1] * z[1] + q[2] * z[2] + q[3] * z[3];
+    // y − Q z, written straight into x
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* q = &q_[8 * i];
+      x[i] = {y_[2 * i] - (q[0] * z[0] + q[1] * z[1] + q[2] * z[2] + q[3] * z[3]),
+              y_[2 * i + 1] - (q[4] * z[0] + q[5] * z[1] + q[6] * z[2] + q[7] * z[3])};
     }
+    return;
   }
   for (std::size_t i = 0; i < n; ++i) x[i] = {y_[2 * i], y_[2 * i + 1]};
 }
@@ -334,30 +375,48 @@ void BlockPentadiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec
     w[2 * i] = b2[i].x;
     w[2 * i + 1] = b2[i].y;
   }
-  for (std::size_t k = 0; k < n; ++k) {
-    const Vec2 yk{y[2 * k], y[2 * k + 1]}, wk{w[2 * k], w[2 * k + 1]};
-    for (std::size_t r = k + 1; r <= std::min(n - 1, k + 2); ++r) {
-      const Mat2& l = f_[k + 2 - r][r];
-      const Vec2 d = l * yk, e = l * wk;
-      y[2 * r] -= d.x;
-      y[2 * r + 1] -= d.y;
-      w[2 * r] -= e.x;
-      w[2 * r + 1] -= e.y;
+  Vec2 ybefore2{}, ybefore1{y[0], y[1]}, wbefore2{}, wbefore1{w[0], w[1]};
+  for (std::size_t r = 1; r < n; ++r) {
+    Vec2 s{y[2 * r], y[2 * r + 1]}, t{w[2 * r], w[2 * r + 1]};
+    if (r >= 2) {
+      const Mat2& l = f_[0][r];
+      s = s - l * ybefore2;
+      t = t - l * wbefore2;
     }
+    const Mat2& l = f_[1][r];
+    s = s - l * ybefore1;
+    t = t - l * wbefore1;
+    y[2 * r] = s.x;
+    y[2 * r + 1] = s.y;
+    w[2 * r] = t.x;
+    w[2 * r + 1] = t.y;
+    ybefore2 = ybefore1;
+    ybefore1 = s;
+    wbefore2 = wbefore1;
+    wbefore1 = t;
   }
+  Vec2 yafter1{}, yafter2{}, wafter1{}, wafter2{};
   for (std::size_t k = n; k-- > 0;) {
     Vec2 s{y[2 * k], y[2 * k + 1]}, t{w[2 * k], w[2 * k + 1]};
-    for (std::size_t c = k + 1; c <= std::min(n - 1, k + 2); ++c) {
-      const Mat2& u = f_[c + 2 - k][k];
-      const Vec2 d = u * Vec2{y[2 * c], y[2 * c + 1]}, e = u * Vec2{w[2 * c], w[2 * c + 1]};
-      s = {s.x - d.x, s.y - d.y};
-      t = {t.x - e.x, t.y - e.y};
+    if (k + 1 < n) {
+      const Mat2& u = f_[3][k];
+      s = s - u * yafter1;
+      t = t - u * wafter1;
+    }
+    if (k + 2 < n) {
+      const Mat2& u = f_[4][k];
+      s = s - u * yafter2;
+      t = t - u * wafter2;
     }
     const Vec2 xs = f_[2][k] * s, xt = f_[2][k] * t;
     y[2 * k] = xs.x;
     y[2 * k + 1] = xs.y;
     w[2 * k] = xt.x;
     w[2 * k + 1] = xt.y;
+    yafter2 = yafter1;
+    yafter1 = xs;
+    wafter2 = wafter1;
+    wafter1 = xt;
   }
   if (closure_) {
     double z[4], z2[4];
@@ -372,11 +431,15 @@ void BlockPentadiagonalSolver::substitute(std::span<const Vec2> b, std::span<Vec
     }
     cap_.solve(z);
     cap_.solve(z2);
-    for (std::size_t r = 0; r < m; ++r) {
-      const double* q = &q_[4 * r];
-      y[r] -= q[0] * z[0] + q[1] * z[1] + q[2] * z[2] + q[3] * z[3];
-      w[r] -= q[0] * z2[0] + q[1] * z2[1] + q[2] * z2[2] + q[3] * z2[3];
+    // y − Q z and w − Q z₂, written straight into x and x₂
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* q = &q_[8 * i];
+      x[i] = {y[2 * i] - (q[0] * z[0] + q[1] * z[1] + q[2] * z[2] + q[3] * z[3]),
+              y[2 * i + 1] - (q[4] * z[0] + q[5] * z[1] + q[6] * z[2] + q[7] * z[3])};
+      x2[i] = {w[2 * i] - (q[0] * z2[0] + q[1] * z2[1] + q[2] * z2[2] + q[3] * z2[3]),
+               w[2 * i + 1] - (q[4] * z2[0] + q[5] * z2[1] + q[6] * z2[2] + q[7] * z2[3])};
     }
+    return;
   }
   for (std::size_t i = 0; i < n; ++i) {
     x[i] = {y[2 * i], y[2 * i + 1]};

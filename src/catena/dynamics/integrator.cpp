@@ -351,6 +351,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
   double damper_work = 0.0;
   const bool hinges = !hinge_links_.empty();  // (read once: the stores below may alias it)
   const LinkStart* link_start = link_start_.data();
+  const double bilateral_slope = k * th + c / h;  // a bilateral link's ∂T/∂l₁, every link's
   for_each_link(n, links, [&](std::size_t j, std::size_t a, std::size_t b) {
     const double d0x = sx[b] - sx[a], d0y = sy[b] - sy[a];
     const double d1x = ux[b] - ux[a], d1y = uy[b] - uy[a];
@@ -398,7 +399,7 @@ double Integrator::assemble(const Model& model, const State& s, bool jacobian, b
       // At θ = ½ the work over the step is exactly the change of ½ k (l − p)² plus the damper's
       // loss c (l₁ − l₀)²/h (Simo & Tarnow 1992).
       phi = (k * (lt - p) + c * (l1 - l0) / h) / lt;
-      dtension = k * th + c / h;
+      dtension = bilateral_slope;
     }
     const double fx = h * phi * mx, fy = h * phi * my;
     rhs[a].x += fx;
