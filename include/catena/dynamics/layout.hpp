@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <span>
@@ -228,13 +229,19 @@ double rail_cut_work(const BeltPath& path, const Guide& rail);
 /// whichever side the driver is on), its g in [0, square_end_reach) (0: not crossing its
 /// contact); the path sampled as rail_cut samples it, as a polyline, against the end's normal
 /// from the roller line to the face's reach (r behind the surface, where the contact is off).
+/// An end joined tangentially to an arc with the rollers outside whose face reaches less deep
+/// (square_end_reach: an arc of radius ρ < r, a lead-in smaller than the roller) is square below
+/// that arc's reach only: there the face passes under the arc's centre, ρ behind the joint along
+/// −n, where the arc has no contact (its sweep lies on the other side); its g from ρ + r on.
 struct SquareEnd {
   std::size_t rail = 0;  ///< index into `rails`
   bool at_start = true;
-  double x = 0.0, y = 0.0;    ///< [m] the end of the rail's surface
-  double depth = 0.0;         ///< [m] the deepest crossing's g
-  double nx = 0.0, ny = 0.0;  ///< the surface's unit normal there (towards its free side)
-  double tx = 0.0, ty = 0.0;  ///< the rail's unit direction there, from the end into the rail
+  double x = 0.0, y = 0.0;       ///< [m] the end of the rail's surface
+  double depth = 0.0;            ///< [m] the deepest crossing's g
+  double nx = 0.0, ny = 0.0;     ///< the surface's unit normal there (towards its free side)
+  double tx = 0.0, ty = 0.0;     ///< the rail's unit direction there, from the end into the rail
+  double from = 0.0;             ///< [m] the g its face is square beyond (0; ρ + r under an arc)
+  std::size_t under = SIZE_MAX;  ///< the arc it is joined to (index into `guides`); none: bare
 };
 std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide>& guides,
                                    const std::vector<std::size_t>& rails);
@@ -249,7 +256,8 @@ double square_end_reach(const Guide& rail);
 /// rails `rails`, indices into `guides`), the deepest crossing of an end's face, from outside the
 /// rail into it, by a node's straight move from (x, y) to (x + h vx, y + h vy) (the step's start
 /// and its constant-velocity predictor) more than the rail's contact ramp ε below the roller line
-/// (g in (ε, square_end_reach)): the end (index into `ends`), the node and that g. None: no such.
+/// (g in (ε, square_end_reach), and past the end's `from`): the end (index into `ends`), the
+/// node and that g. None: no such.
 struct EndStrike {
   std::size_t end = 0;   ///< index into `ends`
   std::size_t node = 0;  ///< the roller's node

@@ -553,6 +553,51 @@ std::string square_end_lead_in(const SquareEnd& end) {
          "\" or \"both\")";
 }
 
+// A rail's end joined to an arc smaller than the roller (layout.hpp, SquareEnd::from), crossed G
+// below the line of its rollers, past the arc's centre (R + r), as the start's check and the run
+// name it: what it is ("under the lead-in at the end of dynamics.guide[0] (lead_in_radius 0.3 mm,
+// lead_in_angle 30 deg), whose contact ends 6.335 mm below the line of the rail's rollers at the
+// arc's centre (lead_in_radius + roller radius), where the chain runs onto it") and the remedy. A
+// roller running parallel to the rail at G passes under the centre and meets the rail's end; with
+// a lead-in of radius R' it meets the arc's roller line within its sweep α, clearing its far end
+// too, exactly when (R' + r)(1 − cos α) >= G (lead_in_clear_radius; R' >= G − r at 90°, the least
+// of any sweep): G > R + r, so no sweep at the lead-in's radius does. A hand-laid arc is named by
+// its guide, its remedy the radius the roller passes over its centre at, R' + r >= G. G rounded up,
+// the radii from it rounded up.
+struct UnderArc {
+  std::string what, remedy;
+};
+UnderArc under_arc_text(const Setup& s, const SquareEnd& end, double g, const std::string& rail) {
+  const Guide& arc = s.guides[end.under];
+  const double R = arc.radius, r = arc.roller_radius;
+  auto mm = [](double v) { return format_g(v * 1e3, 4) + " mm"; };
+  const double G = up_to(g * 1e3, 4);  // [mm]
+  const double least = up_to(G - r * 1e3, 3);
+  const std::string centre = "whose contact ends " + mm(R + r) +
+                             " below the line of the rail's rollers at the arc's centre (";
+  if (end.under < s.given_guides)
+    return {"under the arc dynamics." + s.guide_names[end.under] + " (radius " + mm(R) +
+                ", less than the roller radius " + mm(r) + ") joined to it, " + centre +
+                "radius + roller radius), where the chain runs onto it",
+            "give that arc a radius the roller passes over its centre at, radius + roller "
+            "radius " +
+                mm(r) + " >= " + format_g(G, 4) + " mm: radius >= " + format_g(least, 3) + " mm"};
+  const bool at_start = s.lead_in_rails[end.under - s.given_guides].second;
+  const double a = arc.end_angle - arc.start_angle;
+  const double radius = up_to(lead_in_clear_radius(a, r * 1e3, G), 3);  // [mm]
+  return {"under " + lead_in_name(at_start, rail) + " (lead_in_radius " + mm(R) +
+              ", lead_in_angle " + format_g(a * 180.0 / kPi, 4) + " deg), " + centre +
+              "lead_in_radius + roller radius), where the chain runs onto it",
+          "give that end a lead-in a roller running parallel to the rail there clears, "
+          "(lead_in_radius + roller radius " +
+              mm(r) + ") (1 - cos lead_in_angle) >= " + format_g(G, 4) +
+              " mm, which no lead_in_angle meets at its lead_in_radius " + mm(R) +
+              ": at its lead_in_angle " + format_g(a * 180.0 / kPi, 4) +
+              " deg, lead_in_radius >= " + format_g(radius, 3) +
+              " mm, or at lead_in_angle 90 deg, lead_in_radius >= " + format_g(least, 3) +
+              " mm (lead_in_end = \"" + (at_start ? "start" : "end") + "\" or \"both\")"};
+}
+
 // The most a stiffness (power 2) or a damping (power 1) over a step may be, `ratio` m/(θh)^power,
 // and the text naming it and the keys it follows from.
 std::string scale_bound(const Setup& s, double ratio, int power, const char* unit, double& most) {
@@ -2466,6 +2511,27 @@ Setup parse(const analysis::Inputs& in) {
       const Guide& rail = s.guides[rails[end.rail]];
       if (!(end.depth > rail.contact_smoothing)) continue;
       auto mm = [](double v) { return format_g(v * 1e3, 4) + " mm"; };
+      if (end.under != SIZE_MAX) {
+        // its end under an arc smaller than the roller: square past the arc's centre only
+        const std::string& name = given_rails[end.rail].first;
+        const UnderArc u =
+            under_arc_text(s, end, end.depth, "dynamics." + s.guide_names[rails[end.rail]]);
+        issues.push_back(
+            {name,
+             "its end at " + square_end_name(rail, end) + " " + u.what +
+                 ", the chain's starting path crossing it " + mm(end.depth) +
+                 " into its contact, past that centre",
+             "a rail's end the starting path crosses no deeper than the arc joined to it covers, "
+             "its centre (" +
+                 mm(end.from) +
+                 "): deeper, the arc has no contact and the roller is struck by the rail's end's "
+                 "force at once" +
+                 (rail.line_law
+                      ? std::string()
+                      : " (here " + format_g(rail.contact_stiffness * end.depth, 3) + " N)") +
+                 ", on which a step need not converge however small; " + u.remedy});
+        continue;
+      }
       issues.push_back(
           {given_rails[end.rail].first,
            "its square end at " + square_end_name(rail, end) + ", where the chain runs onto it, " +
@@ -2944,6 +3010,25 @@ std::optional<Diagnostic> bare_end_struck(const Setup& d, const State& s,
             "a bare entry end near the chain's path may stop the run at any depth)",
         hit->depth,
         rail.contact_smoothing,
+        "m"};
+  }
+  if (end.under != SIZE_MAX) {
+    // its end under an arc smaller than the roller, struck past the arc's centre: the limit that
+    // centre's depth
+    const UnderArc u = under_arc_text(d, end, hit->depth, "dynamics." + d.guide_names[index]);
+    return Diagnostic{
+        Diagnostic::Severity::kError,
+        "dynamics.bare_rail_end",
+        struck + "the end of dynamics." + d.guide_names[index] + " at " +
+            square_end_name(rail, end) + " " + u.what + ", " + mm(hit->depth) +
+            " into its contact, past that centre, where the arc has no contact: the roller is "
+            "struck by the rail's end's force at once, on which a step need not converge however "
+            "small; the run stopped there: " +
+            u.remedy +
+            ", or move the rail clear of the chain there (a bare entry end near the chain's path "
+            "may stop the run at any depth)",
+        hit->depth,
+        end.from,
         "m"};
   }
   // a lead-in's arc ends R (1 − cos α) below the end's tangent: deeper than the roller at the

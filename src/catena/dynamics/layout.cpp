@@ -1312,11 +1312,28 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
       // turn): a rail shorter than ε is a sliver with two square ends, not a closed rail
       const Guide& g = guides[rails[k]];
       const bool ring = g.kind != Guide::Kind::kStraight && g.end_angle - g.start_angle > kPi;
-      for (; o != by_x.end() && all[*o][0] <= e[0] + eps && !joined; ++o)
-        joined = *o != self && (ring || *o != (self ^ 1)) &&
-                 std::hypot(all[*o][0] - e[0], all[*o][1] - e[1]) <= eps;
-      if (joined) continue;
-      ends.push_back({k, start, e[0], e[1], 0.0, e[2], e[3], e[4], e[5]});
+      // how deep the joined guides' faces cover this one's: a guide joined tangentially (the same
+      // free side's normal, running on beyond the end) shares the face's line and covers it to
+      // its reach (an arc with the rollers outside: to its centre); any other join, all of it
+      double cover = 0.0;
+      std::size_t under = SIZE_MAX;
+      for (; o != by_x.end() && all[*o][0] <= e[0] + eps; ++o) {
+        if (*o == self || (!ring && *o == (self ^ 1)) ||
+            !(std::hypot(all[*o][0] - e[0], all[*o][1] - e[1]) <= eps))
+          continue;
+        joined = true;
+        const std::array<double, 6>& j = all[*o];
+        const bool tangent =
+            j[2] * e[2] + j[3] * e[3] > 1.0 - 1e-9 && j[4] * e[4] + j[5] * e[5] < -(1.0 - 1e-9);
+        const double reach = tangent ? square_end_reach(guides[*o / 2]) : INFINITY;
+        if (reach > cover) {
+          cover = reach;
+          under = *o / 2;
+        }
+      }
+      if (joined && !(cover < square_end_reach(g))) continue;
+      ends.push_back({k, start, e[0], e[1], 0.0, e[2], e[3], e[4], e[5], joined ? cover : 0.0,
+                      joined ? under : SIZE_MAX});
       at.push_back(e);
     }
   }
@@ -1326,6 +1343,7 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
     const double rr = rail.roller_radius;
     if (!(rr > 0.0)) continue;
     const double reach = square_end_reach(rail) / (2.0 * rr);  // of the segment, off from there
+    const double square = ends[k].from / (2.0 * rr);           // square from there on
     const int n = cut_samples(path, rail);
     const double pad = path.length / n;
     const auto& e = at[k];
@@ -1348,7 +1366,7 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
         // A + t d = P + u c
         const double t = (qy * cx - qx * cy) / den;
         const double u = (qy * dx - qx * dy) / den;
-        if (!(t >= 0.0 && t < reach && u >= 0.0 && u <= 1.0)) continue;
+        if (!(t >= square && t < reach && u >= 0.0 && u <= 1.0)) continue;
         if (cx * e[4] + cy * e[5] < 0.0) continue;  // leaving the rail there
         ends[k].depth = std::max(ends[k].depth, 2.0 * rr * t);
       }
@@ -1393,7 +1411,7 @@ std::optional<EndStrike> square_end_strike(const std::vector<SquareEnd>& ends,
       if (!(a0 <= 0.0 && a1 > 0.0)) continue;  // (a NaN fails too)
       const double f = -a0 / (a1 - a0);
       const double g = -((px + f * mx) * e.nx + (py + f * my) * e.ny);
-      if (!(g > eps && g < reach)) continue;
+      if (!(g > std::max(eps, e.from) && g < reach)) continue;
       if (!out || g > out->depth) out = EndStrike{k, i, g};
     }
   }
