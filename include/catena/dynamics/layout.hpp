@@ -159,6 +159,16 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
                        const std::vector<Circle>& circles, const std::vector<double>& tip,
                        const std::vector<Guide>& guides, double roller, double pitch);
 
+/// [m] How far below the half circle ((π/2 − 1) of the chords) a count of the spans `pieces` may be
+/// laid tangent (`tangent_spans`), from their kinks there (docs/models/dynamics.md, "The band below
+/// the half circle"): a link whose chord p spans a kink turning by φ takes at most p sec(φ/2) of
+/// the path (its ends a = b = p / (2 cos(φ/2)) either side), p (sec(φ/2) − 1) more than its chord,
+/// so a count's lay between the tangent points closes with an e up to that much per kink above its
+/// N p less the path's length. Each span's two kinks are the larger of the half circle's (90°, its
+/// arc meeting the chord square) and those of the lay just beyond it (`sag_spans` a hair past the
+/// half circle: the catenary's ends against the chord): p Σ_k (sec(φ0_k/2) + sec(φ1_k/2) − 2).
+double sag_spans_band(const BeltPath& path, const std::vector<std::size_t>& pieces, double pitch);
+
 /// The largest extra length up to the half circle ((π/2 − 1) of the chords, a hair inside) with
 /// `pieces` laid as circular arcs (`sag_spans`) clear of everything, the other sags included: the
 /// most a count laid as arcs may take. Above `sag_spans_limit` only where that limit is cut within

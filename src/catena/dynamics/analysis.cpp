@@ -892,9 +892,10 @@ bool slack_starts(const Setup& s, const std::vector<std::size_t>& pieces, int li
 
 // The most links that start with their slack sagging in `pieces` (`slack_starts`, the guides
 // included), 0 if none. A start at N links sags by more than N p less the path's length, so no
-// count beyond the path's length plus `most` (the slack limit) and a pitch a span starts (within a
-// pitch a span below the half circle a count laid as arcs may take more than `most`, which is cut
-// there where the tangent lay a count may take instead is not clear); the counts below it are
+// count beyond the path's length plus `most` (the slack limit) and the band below the half circle
+// starts (a pitch for one span; for more, a pitch a span or their kinks' band, sag_spans_band, if
+// wider: within it a count laid as arcs may take more than `most`, which is cut there where the
+// tangent lay a count may take instead is not clear); the counts below it are
 // tried downwards (`longest_count`: not by bisection, the counts that start need not be an
 // interval; after kLongestCountScan counts without a start the rest is bisected, bounded work).
 LongestCount longest_slack_links(const Setup& s, const std::vector<std::size_t>& pieces,
@@ -909,8 +910,10 @@ LongestCount longest_slack_links(const Setup& s, const std::vector<std::size_t>&
   };
   int lo = static_cast<int>(std::floor(s.path.length / s.pitch));
   if (lo * s.pitch > s.path.length) --lo;  // lo: the last count not beyond the path
-  const int hi = std::min(10000, static_cast<int>(std::floor((s.path.length + most) / s.pitch)) +
-                                     static_cast<int>(pieces.size()));
+  const double band = pieces.size() > 1 ? sag_spans_band(s.path, pieces, s.pitch) / s.pitch : 1.0;
+  const int reach = std::max(static_cast<int>(pieces.size()), static_cast<int>(std::ceil(band)));
+  const int hi =
+      std::min(10000, static_cast<int>(std::floor((s.path.length + most) / s.pitch)) + reach);
   return longest_count(lo, hi, starts);
 }
 
@@ -943,13 +946,14 @@ std::string slack_measure_text(const Setup& s, const std::vector<std::size_t>& p
   // beyond the half circle the spans hang as catenaries (when they can: a run travelling
   // towards +x, whose outward side is down), up to kCatenaryMostExtra chords of extra
   const bool hangs = !sag_spans(s.path, pieces, half * (1.0 + 1e-9)).pieces.empty();
-  // with more than one span the limit may be cut within a pitch a span below the half circle by
-  // the tangent lay a count there may take; one laid as arcs may still start up to the arcs' own
-  // limit, said with it (below the band only the arcs are checked: there the limit is theirs;
-  // 1e-5 of the chords: the limit is bisected to 1e-6 of them)
-  const double band = s.pitch * static_cast<double>(pieces.size());
+  // with more than one span the limit may be cut within the band below the half circle (from
+  // the spans' kinks, sag_spans_band) by the tangent lay a count there may take; one laid as arcs
+  // may still start up to the arcs' own limit, said with it (below the band only the arcs are
+  // checked: there the limit is theirs; 1e-5 of the chords: the limit is bisected to 1e-6 of them)
+  const bool several = pieces.size() > 1;
+  const double band = several ? sag_spans_band(s.path, pieces, s.pitch) : 0.0;
   const double arcs =
-      pieces.size() > 1 && most >= half - band - 1e-5 * spans && most < half
+      several && most >= half - band - 1e-5 * spans && most < half
           ? sag_spans_arcs_limit(s.path, pieces, s.circles, s.tip, guides, s.roller, s.pitch)
           : 0.0;
   const bool arcs_beyond = arcs > most + 1e-6 * spans;
@@ -964,9 +968,8 @@ std::string slack_measure_text(const Setup& s, const std::vector<std::size_t>& p
   return "a chain longer than the path, its " + span_names(s.path, pieces) +
          " sagging by an extra length e (" + e_means + ") of at most about " + mm(most) + " (" +
          shown(most / s.path.length * 100.0) + " % of the path" +
-         (arcs_beyond ? "; laid as circular arcs, as a count within a pitch a span below the half "
-                        "circle may be, up to about " +
-                            mm(arcs)
+         (arcs_beyond ? "; laid as circular arcs, as a count within " + mm(band) +
+                            " below the half circle may be, up to about " + mm(arcs)
                       : "") +
          "), the most " + (one ? "it" : "they") + " can sag by as circular arcs" +
          (half_circle ? " of at most a half circle" : "") +
