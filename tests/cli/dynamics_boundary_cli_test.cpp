@@ -965,6 +965,29 @@ TEST(DynamicsBoundaryCli, ARailsOwnEndBelowASmallLeadInCrossedPastItsCentreIsRef
   const CliRun led = write(keys.str());
   EXPECT_EQ(led.err.find("its end at (x1, y1)"), std::string::npos) << keys.str() << led.err;
   EXPECT_NE(led.err.find("past its surface"), std::string::npos) << led.err;
+  // the same arc laid by hand as dynamics.guide[1], tangent at (x1, y1): named by its guide, its
+  // remedy the radius the roller passes over its centre at, G - r
+  char centre[64];
+  std::snprintf(centre, sizeof centre, "%.12f mm", run_height + 2.9876 - 0.3);
+  const std::filesystem::path file = dir / "hand.toml";
+  std::ofstream(file) << kLeadInLoopHead << "[[dynamics.guide]]\nkind = \"straight\"\n"
+                      << "x0 = \"100 mm\"\ny0 = \"" << y << "\"\nx1 = \"120 mm\"\ny1 = \"" << y
+                      << "\"\n[[dynamics.guide]]\nkind = \"arc\"\ncentre_x = \"120 mm\"\n"
+                      << "centre_y = \"" << centre << "\"\nradius = \"0.3 mm\"\n"
+                      << "start_angle = \"60 deg\"\nend_angle = \"90 deg\"\n";
+  const CliRun hand = run("dynamics " + file.string());
+  EXPECT_EQ(hand.status, 2) << hand.err;
+  EXPECT_NE(hand.err.find(" mm under the arc dynamics.guide[1] (radius 0.3 mm, less than the "
+                          "roller radius 6.035 mm) joined to it, whose contact ends 6.335 mm "
+                          "below the line of the rail's rollers at the arc's centre (radius + "
+                          "roller radius), where the chain runs onto it, the chain's starting "
+                          "path crossing it 9.023 mm into its contact"),
+            std::string::npos)
+      << hand.err;
+  EXPECT_NE(hand.err.find("give that arc a radius the roller passes over its centre at, radius + "
+                          "roller radius 6.035 mm >= 9.023 mm: radius >= 2.99 mm"),
+            std::string::npos)
+      << hand.err;
   std::filesystem::remove_all(dir);
 }
 
