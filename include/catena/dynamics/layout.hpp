@@ -172,8 +172,8 @@ double sag_spans_band(const BeltPath& path, const std::vector<std::size_t>& piec
 /// The largest extra length up to the half circle ((π/2 − 1) of the chords, a hair inside) with
 /// `pieces` laid as circular arcs (`sag_spans`) clear of everything, the other sags included: the
 /// most a count laid as arcs may take. Above `sag_spans_limit` only where that limit is cut within
-/// a pitch a span below the half circle, where a count may be laid tangent (`tangent_spans`) or as
-/// arcs and both are checked. 0 if none can sag.
+/// the band below the half circle (`sag_spans_band`), where a count may be laid tangent
+/// (`tangent_spans`) or as arcs and both are checked. 0 if none can sag.
 double sag_spans_arcs_limit(const BeltPath& path, const std::vector<std::size_t>& pieces,
                             const std::vector<Circle>& circles, const std::vector<double>& tip,
                             const std::vector<Guide>& guides, double roller, double pitch);

@@ -836,16 +836,15 @@ bool lay_clear(const BeltPath& laid, const std::vector<std::size_t>& pieces,
 // the tangent points (`sag_spans`); beyond it the tangent lay (`tangent_spans`), else, where that
 // is refused, the lay between the tangent points; where the tangent lay keeps less than a pitch
 // (2 asin(p / 2r)) of any wrap, both must be clear (which one a start lays there depends on where
-// its rollers fall: a wheel left with no roller falls back to the other). Within a pitch per span
-// below the half circle a count whose lay between the tangent points would pass it is laid
-// tangent at an e a little below it (level 600 mm, z 17 both, 98 links: 342.414 against the half
-// circle's 342.478 mm): there both the arcs and the tangent lay must be clear. The band is
-// measured, not derived: what decides is the count's lay between the tangent points just beyond
-// the half circle, a catenary whose kinks grow with the slope (a link across a kink φ takes up to
-// p (sec(φ/2) − 1) more path: 0.44 p a span level, 1.10 p at 51°); over 37–61° slopes the counts
-// laid tangent closed at most 1.207 p below it with two spans, 0.582 p with one
-// (docs/models/dynamics.md). Where the tangent lay cuts the limit in the band, a count laid as
-// arcs may still take more (`sag_spans_arcs_limit`).
+// its rollers fall: a wheel left with no roller falls back to the other). Within a band below the
+// half circle a count whose lay between the tangent points would pass it is laid tangent at an e
+// a little below it (level 600 mm, z 17 both, 98 links: 342.414 against the half circle's
+// 342.478 mm): there both the arcs and the tangent lay must be clear. For one span the band is a
+// pitch (measured: over 37–61° slopes the counts laid tangent closed at most 0.582 p below it);
+// for more, the spans' kinks there (`sag_spans_band`: a link across a kink φ takes up to
+// p (sec(φ/2) − 1) more path; docs/models/dynamics.md, "The band below the half circle"). Where
+// the tangent lay cuts the limit in the band, a count laid as arcs may still take more
+// (`sag_spans_arcs_limit`).
 double spans_limit(const BeltPath& path, const std::vector<std::size_t>& pieces, double total,
                    const std::vector<Circle>& circles, const std::vector<double>& tip,
                    const std::vector<Guide>& guides, double roller, double pitch) {
