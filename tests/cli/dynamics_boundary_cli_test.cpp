@@ -965,29 +965,46 @@ TEST(DynamicsBoundaryCli, ARailsOwnEndBelowASmallLeadInCrossedPastItsCentreIsRef
   const CliRun led = write(keys.str());
   EXPECT_EQ(led.err.find("its end at (x1, y1)"), std::string::npos) << keys.str() << led.err;
   EXPECT_NE(led.err.find("past its surface"), std::string::npos) << led.err;
-  // the same arc laid by hand as dynamics.guide[1], tangent at (x1, y1): named by its guide, its
-  // remedy the radius the roller passes over its centre at, G - r
-  char centre[64];
-  std::snprintf(centre, sizeof centre, "%.12f mm", run_height + 2.9876 - 0.3);
-  const std::filesystem::path file = dir / "hand.toml";
-  std::ofstream(file) << kLeadInLoopHead << "[[dynamics.guide]]\nkind = \"straight\"\n"
-                      << "x0 = \"100 mm\"\ny0 = \"" << y << "\"\nx1 = \"120 mm\"\ny1 = \"" << y
-                      << "\"\n[[dynamics.guide]]\nkind = \"arc\"\ncentre_x = \"120 mm\"\n"
-                      << "centre_y = \"" << centre << "\"\nradius = \"0.3 mm\"\n"
-                      << "start_angle = \"60 deg\"\nend_angle = \"90 deg\"\n";
-  const CliRun hand = run("dynamics " + file.string());
-  EXPECT_EQ(hand.status, 2) << hand.err;
-  EXPECT_NE(hand.err.find(" mm under the arc dynamics.guide[1] (radius 0.3 mm, less than the "
-                          "roller radius 6.035 mm) joined to it, whose contact ends 6.335 mm "
-                          "below the line of the rail's rollers at the arc's centre (radius + "
-                          "roller radius), where the chain runs onto it, the chain's starting "
-                          "path crossing it 9.023 mm into its contact"),
+  // the same arc laid by hand as dynamics.guide[1] (start_angle 60 deg, end_angle 90 deg, a 30 deg
+  // sweep), tangent at (x1, y1): named by its guide, its remedy the clearance at its own sweep,
+  // G/(1 - cos 30 deg) - r (G - r, 2.99 mm, passes over its centre and strikes its own far end).
+  // Typed back, the centre moved to stay tangent, neither the rail's end nor the arc's far end
+  // (start_angle) is refused.
+  const auto hand = [&](double radius) {
+    char centre[64], text[64];
+    std::snprintf(centre, sizeof centre, "%.12f mm", run_height + 2.9876 - radius);
+    std::snprintf(text, sizeof text, "%.6g mm", radius);
+    const std::filesystem::path file = dir / "hand.toml";
+    std::ofstream(file) << kLeadInLoopHead << "[[dynamics.guide]]\nkind = \"straight\"\n"
+                        << "x0 = \"100 mm\"\ny0 = \"" << y << "\"\nx1 = \"120 mm\"\ny1 = \"" << y
+                        << "\"\n[[dynamics.guide]]\nkind = \"arc\"\ncentre_x = \"120 mm\"\n"
+                        << "centre_y = \"" << centre << "\"\nradius = \"" << text << "\"\n"
+                        << "start_angle = \"60 deg\"\nend_angle = \"90 deg\"\n";
+    return run("dynamics " + file.string());
+  };
+  const CliRun small = hand(0.3);
+  EXPECT_EQ(small.status, 2) << small.err;
+  EXPECT_NE(small.err.find(" mm under the arc dynamics.guide[1] (radius 0.3 mm, less than the "
+                           "roller radius 6.035 mm) joined to it, whose contact ends 6.335 mm "
+                           "below the line of the rail's rollers at the arc's centre (radius + "
+                           "roller radius), where the chain runs onto it, the chain's starting "
+                           "path crossing it 9.023 mm into its contact"),
             std::string::npos)
-      << hand.err;
-  EXPECT_NE(hand.err.find("give that arc a radius the roller passes over its centre at, radius + "
-                          "roller radius 6.035 mm >= 9.023 mm: radius >= 2.99 mm"),
+      << small.err;
+  EXPECT_NE(small.err.find("give that arc a radius a roller running parallel to the rail there "
+                           "clears, (radius + roller radius 6.035 mm) (1 - cos sweep) >= 9.023 "
+                           "mm, at its sweep 30 deg (end_angle - start_angle, a quarter turn at "
+                           "most counted): radius >= "),
             std::string::npos)
-      << hand.err;
+      << small.err;
+  const double named = named_after(small.err, "a quarter turn at most counted): radius >= ");
+  EXPECT_GE(named, least30) << small.err;
+  EXPECT_LT(named - least30, 0.01 * least30) << small.err;
+  EXPECT_NE(small.err.find("or at a sweep of 90 deg, radius >= 2.99 mm"), std::string::npos)
+      << small.err;
+  const CliRun cleared = hand(named);
+  EXPECT_EQ(cleared.err.find("its end at (x1, y1)"), std::string::npos) << cleared.err;
+  EXPECT_EQ(cleared.err.find("its square end at start_angle"), std::string::npos) << cleared.err;
   std::filesystem::remove_all(dir);
 }
 

@@ -562,8 +562,9 @@ std::string square_end_lead_in(const SquareEnd& end) {
 // a lead-in of radius R' it meets the arc's roller line within its sweep α, clearing its far end
 // too, exactly when (R' + r)(1 − cos α) >= G (lead_in_clear_radius; R' >= G − r at 90°, the least
 // of any sweep): G > R + r, so no sweep at the lead-in's radius does. A hand-laid arc is named by
-// its guide, its remedy the radius the roller passes over its centre at, R' + r >= G. G rounded up,
-// the radii from it rounded up.
+// its guide, its remedy the same clearance at its own sweep, capped at a quarter turn (past it the
+// roller meets the arc's roller line within 90° already: G − r). G rounded up, the radii from it
+// rounded up.
 struct UnderArc {
   std::string what, remedy;
 };
@@ -575,13 +576,22 @@ UnderArc under_arc_text(const Setup& s, const SquareEnd& end, double g, const st
   const double least = up_to(G - r * 1e3, 3);
   const std::string centre = "whose contact ends " + mm(R + r) +
                              " below the line of the rail's rollers at the arc's centre (";
-  if (end.under < s.given_guides)
+  if (end.under < s.given_guides) {
+    const double sweep = std::min(std::abs(arc.end_angle - arc.start_angle), kPi / 2.0);
+    const double at_sweep = up_to(lead_in_clear_radius(sweep, r * 1e3, G), 3);  // [mm]
+    const std::string deg = format_g(sweep * 180.0 / kPi, 4);
     return {"under the arc dynamics." + s.guide_names[end.under] + " (radius " + mm(R) +
                 ", less than the roller radius " + mm(r) + ") joined to it, " + centre +
                 "radius + roller radius), where the chain runs onto it",
-            "give that arc a radius the roller passes over its centre at, radius + roller "
-            "radius " +
-                mm(r) + " >= " + format_g(G, 4) + " mm: radius >= " + format_g(least, 3) + " mm"};
+            "give that arc a radius a roller running parallel to the rail there clears, (radius "
+            "+ roller radius " +
+                mm(r) + ") (1 - cos sweep) >= " + format_g(G, 4) + " mm, at its sweep " + deg +
+                " deg (end_angle - start_angle, a quarter turn at most counted): radius >= " +
+                format_g(at_sweep, 3) + " mm" +
+                (sweep < kPi / 2.0
+                     ? ", or at a sweep of 90 deg, radius >= " + format_g(least, 3) + " mm"
+                     : std::string())};
+  }
   const bool at_start = s.lead_in_rails[end.under - s.given_guides].second;
   const double a = arc.end_angle - arc.start_angle;
   const double radius = up_to(lead_in_clear_radius(a, r * 1e3, G), 3);  // [mm]
