@@ -1117,9 +1117,9 @@ TEST(DynamicsLayoutCli, TwoSaggingWallsOfANotchAreCheckedAgainstEachOther) {
 // mm, wheels at (400, 0) and (600, 0) mm with one on the chain's back at (500, 100) mm lifting it
 // between them, a wheel at (1000, 500) mm and one on the back at (500, 260) mm pressing the return
 // run down) and a rail at y = −150 mm from x 100 to 300 mm under the first run. Within the band
-// below the half circle from the spans' kinks (56.5656 mm, 2.97 pitches) a count may be laid
+// below the half circle from the spans' kinks (56.4302 mm, 2.96 pitches) a count may be laid
 // tangent to its wheels or as arcs: the tangent lay runs into the rail there, so the limit named is
-// cut at the band's low end (674.410 mm; 692.876 mm with the two pitches of the rule before),
+// cut at the band's low end (674.545 mm; 692.876 mm with the two pitches of the rule before),
 // while 213 links start laid as arcs with an e (N p less the path's length, 704.024 mm) above it.
 // The refusal of 215 names 213 as the most that start (the count search reaches the band, or a
 // pitch a span if wider, beyond the limit), the band, and the arcs' own limit, which the e of 213
@@ -1171,8 +1171,8 @@ TEST(DynamicsLayoutCli, TwoSaggingRunsNameTheLimitOfTheCountThatStarts) {
   EXPECT_GE(arcs, slack) << refused.err;
   EXPECT_GT(arcs, limit) << refused.err;
   // the band below the half circle from the spans' kinks (sag_spans_band; at these 51° slopes
-  // 2.97 pitches, wider than the two of the rule before), named, the limit cut within it
-  EXPECT_NE(refused.err.find("; laid as circular arcs, as a count within 56.5656 mm below the half "
+  // 2.96 pitches, wider than the two of the rule before), named, the limit cut within it
+  EXPECT_NE(refused.err.find("; laid as circular arcs, as a count within 56.4302 mm below the half "
                              "circle may be, up to about 730.976 mm)"),
             std::string::npos)
       << refused.err;

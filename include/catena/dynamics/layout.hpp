@@ -159,14 +159,21 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
                        const std::vector<Circle>& circles, const std::vector<double>& tip,
                        const std::vector<Guide>& guides, double roller, double pitch);
 
+/// [m] The most path beyond its chord a link of chord `pitch` across a kink turning by `turn` [rad]
+/// takes (docs/models/dynamics.md, "The band below the half circle"): with its ends a before and b
+/// after the kink, (a + b) cos(φ/2) <= p, equal at a = b = p / (2 cos(φ/2)), p (sec(φ/2) − 1) more
+/// than its chord up to φ = 120°, where a = b = p; beyond, the last joint before the kink lies a
+/// pitch from it at most (a <= p), and the most is at a = p: −2 p cos φ, up to 2 p as φ → 180°.
+double kink_link_extra(double turn, double pitch);
+
 /// [m] How far below the half circle ((π/2 − 1) of the chords) a count of the spans `pieces` may be
 /// laid tangent (`tangent_spans`), from their kinks there (docs/models/dynamics.md, "The band below
-/// the half circle"): a link whose chord p spans a kink turning by φ takes at most p sec(φ/2) of
-/// the path (its ends a = b = p / (2 cos(φ/2)) either side), p (sec(φ/2) − 1) more than its chord,
-/// so a count's lay between the tangent points closes with an e up to that much per kink above its
-/// N p less the path's length. Each span's two kinks are the larger of the half circle's (90°, its
-/// arc meeting the chord square) and those of the lay just beyond it (`sag_spans` a hair past the
-/// half circle: the catenary's ends against the chord): p Σ_k (sec(φ0_k/2) + sec(φ1_k/2) − 2).
+/// the half circle"): a link across a kink takes at most `kink_link_extra` more path than its
+/// chord, so a count's lay between the tangent points closes with an e up to that much per kink
+/// above its N p less the path's length. Each span's two kinks are the larger of the half circle's
+/// (90°, its arc meeting the chord square) and those of the lay just beyond it (`sag_spans` a hair
+/// past the half circle: the catenary's ends, `sag_point`, against the chord): Σ_k of both kinks'
+/// `kink_link_extra`, at most 4 p a span.
 double sag_spans_band(const BeltPath& path, const std::vector<std::size_t>& pieces, double pitch);
 
 /// The largest extra length up to the half circle ((π/2 − 1) of the chords, a hair inside) with

@@ -921,7 +921,9 @@ LongestCount longest_slack_links(const Setup& s, const std::vector<std::size_t>&
   int lo = static_cast<int>(std::floor(s.path.length / s.pitch));
   if (lo * s.pitch > s.path.length) --lo;  // lo: the last count not beyond the path
   const double band = pieces.size() > 1 ? sag_spans_band(s.path, pieces, s.pitch) / s.pitch : 1.0;
-  const int reach = std::max(static_cast<int>(pieces.size()), static_cast<int>(std::ceil(band)));
+  // (band <= 4 a span, kink_link_extra; clamped to the counts' cap before the cast all the same)
+  const int reach = std::max(static_cast<int>(pieces.size()),
+                             static_cast<int>(std::ceil(std::min(band, 10000.0))));
   const int hi =
       std::min(10000, static_cast<int>(std::floor((s.path.length + most) / s.pitch)) + reach);
   return longest_count(lo, hi, starts);

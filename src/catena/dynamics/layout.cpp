@@ -842,7 +842,7 @@ bool lay_clear(const BeltPath& laid, const std::vector<std::size_t>& pieces,
 // 342.478 mm): there both the arcs and the tangent lay must be clear. For one span the band is a
 // pitch (measured: over 37–61° slopes the counts laid tangent closed at most 0.582 p below it);
 // for more, the spans' kinks there (`sag_spans_band`: a link across a kink φ takes up to
-// p (sec(φ/2) − 1) more path; docs/models/dynamics.md, "The band below the half circle"). Where
+// `kink_link_extra` more path; docs/models/dynamics.md, "The band below the half circle"). Where
 // the tangent lay cuts the limit in the band, a count laid as arcs may still take more
 // (`sag_spans_arcs_limit`).
 double spans_limit(const BeltPath& path, const std::vector<std::size_t>& pieces, double total,
@@ -910,20 +910,31 @@ double sag_spans_band(const BeltPath& path, const std::vector<std::size_t>& piec
   const double total = span_chords(path, pieces);
   if (!(total > 0.0)) return 0.0;
   const BeltPath beyond = sag_spans(path, pieces, (0.5 * kPi - 1.0) * total * (1.0 + 1e-9));
-  auto extra = [&](double turn) { return pitch * (1.0 / std::cos(0.5 * turn) - 1.0); };
   double band = 0.0;
   for (const std::size_t k : pieces) {
     double turn0 = 0.5 * kPi, turn1 = 0.5 * kPi;  // the half circle's arc meets its chord square
     if (!beyond.pieces.empty() && beyond.pieces[k].catenary) {
-      // y = y0 + a (cosh((x − x0 − u)/a) − cosh(u/a)): its slopes at both ends against the chord's
+      // the catenary's unit tangents at both ends against the chord's direction
       const PathPiece& q = beyond.pieces[k];
-      const double h = q.x1 - q.x0, chord = std::atan2(q.y1 - q.y0, h);
-      turn0 = std::max(turn0, std::abs(std::atan(std::sinh(-q.hang_u / q.hang_a)) - chord));
-      turn1 = std::max(turn1, std::abs(std::atan(std::sinh((h - q.hang_u) / q.hang_a)) - chord));
+      const double cx = q.x1 - q.x0, cy = q.y1 - q.y0, c = std::hypot(cx, cy);
+      auto turn = [&](double along) {
+        const PathPoint at = sag_point(q, along);
+        return std::acos(std::clamp((at.tx * cx + at.ty * cy) / c, -1.0, 1.0));
+      };
+      turn0 = std::max(turn0, turn(0.0));
+      turn1 = std::max(turn1, turn(q.length));
     }
-    band += extra(turn0) + extra(turn1);
+    band += kink_link_extra(turn0, pitch) + kink_link_extra(turn1, pitch);
   }
   return band;
+}
+
+// kink_link_extra (layout.hpp): |A − B|² = a² + b² + 2ab cos φ = p² gives (a + b)² = p² + 2ab (1 −
+// cos φ) <= p² + (a + b)² (1 − cos φ)/2; a = b <= p holds up to 120°, and past it the most is at
+// a = p, b = −2 p cos φ (continuous at 120°, both p).
+double kink_link_extra(double turn, double pitch) {
+  return turn <= 2.0 * kPi / 3.0 ? pitch * (1.0 / std::cos(0.5 * turn) - 1.0)
+                                 : -2.0 * pitch * std::cos(turn);
 }
 
 double span_chords(const BeltPath& path, const std::vector<std::size_t>& pieces) {
