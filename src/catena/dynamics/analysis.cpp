@@ -568,6 +568,13 @@ std::string square_end_lead_in(const SquareEnd& end) {
 struct UnderArc {
   std::string what, remedy;
 };
+// The clearance of a lead-in for a roller parallel to the rail G [mm] below its roller line (roller
+// radius r [m]), named by a rail's own end under a small lead-in and by a lead-in's far end.
+std::string lead_in_clears_text(double r, double G) {
+  return "give that end a lead-in a roller running parallel to the rail there clears, "
+         "(lead_in_radius + roller radius " +
+         format_g(r * 1e3, 4) + " mm) (1 - cos lead_in_angle) >= " + format_g(G, 4) + " mm";
+}
 UnderArc under_arc_text(const Setup& s, const SquareEnd& end, double g, const std::string& rail) {
   const Guide& arc = s.guides[end.under];
   const double R = arc.radius, r = arc.roller_radius;
@@ -598,11 +605,8 @@ UnderArc under_arc_text(const Setup& s, const SquareEnd& end, double g, const st
   return {"under " + lead_in_name(at_start, rail) + " (lead_in_radius " + mm(R) +
               ", lead_in_angle " + format_g(a * 180.0 / kPi, 4) + " deg), " + centre +
               "lead_in_radius + roller radius), where the chain runs onto it",
-          "give that end a lead-in a roller running parallel to the rail there clears, "
-          "(lead_in_radius + roller radius " +
-              mm(r) + ") (1 - cos lead_in_angle) >= " + format_g(G, 4) +
-              " mm, which no lead_in_angle meets at its lead_in_radius " + mm(R) +
-              ": at its lead_in_angle " + format_g(a * 180.0 / kPi, 4) +
+          lead_in_clears_text(r, G) + ", which no lead_in_angle meets at its lead_in_radius " +
+              mm(R) + ": at its lead_in_angle " + format_g(a * 180.0 / kPi, 4) +
               " deg, lead_in_radius >= " + format_g(radius, 3) +
               " mm, or at lead_in_angle 90 deg, lead_in_radius >= " + format_g(least, 3) +
               " mm (lead_in_end = \"" + (at_start ? "start" : "end") + "\" or \"both\")"};
@@ -3018,10 +3022,8 @@ std::optional<Diagnostic> bare_end_struck(const Setup& d, const State& s,
             " deg) at (" + format_g(end.x * 1e3, 4) + ", " + format_g(end.y * 1e3, 4) +
             ") mm, where it runs onto the lead-in, " + mm(hit->depth) + " into its contact, " +
             ramp + "There the roller lies " + format_g(G, 4) +
-            " mm below the line of the rail's rollers at its end, along its tangent; give that end "
-            "a lead-in a roller running parallel to the rail there clears, (lead_in_radius + "
-            "roller radius " +
-            mm(r) + ") (1 - cos lead_in_angle) >= " + format_g(G, 4) + " mm" + remedy +
+            " mm below the line of the rail's rollers at its end, along its tangent; " +
+            lead_in_clears_text(r, G) + remedy +
             "a bare entry end near the chain's path may stop the run at any depth)",
         hit->depth,
         rail.contact_smoothing,
