@@ -911,6 +911,103 @@ TEST(DynamicsBoundaryCli, ARailsSquareEntryEndMayNotBePressedIntoTheStartingPath
   std::filesystem::remove_all(dir);
 }
 
+// A rail's own end below a lead-in smaller than the roller, crossed by the starting path past the
+// lead-in's centre (docs/models/dynamics.md, "A rail's own end below a small lead-in"): the lead-in
+// loop's upper run (roller centres at the run's height, moving -x) under a straight rail from 100
+// to 120 mm, its free side up, its surface 2.9876 mm above those centres, with a lead-in of 0.3 mm
+// at its end (x1 = 120 mm, where the chain runs onto it): the path crosses the rail's own end G =
+// 2.9876 + 6.035 = 9.0226 mm below the line of its rollers, past the centre's 6.335 mm. Refused on
+// dynamics.guide[0] naming that end, G, the limit R + r and the parallel clearance's radius at 30
+// deg (G / (1 - cos 30 deg) - r) and at 90 deg (G - r), rounded up (3 digits) from G rounded up.
+// Typed back at 90 deg, that end's refusal is gone (the rail still cuts the run: refused for that
+// alone).
+TEST(DynamicsBoundaryCli, ARailsOwnEndBelowASmallLeadInCrossedPastItsCentreIsRefused) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "catena_dynamics_boundary_cli_under_lead_in";
+  std::filesystem::create_directories(dir);
+  const double run_height = 0.5 * 19.05 / std::sin(std::numbers::pi / 12.0), roller = 6.035;
+  char y[64];
+  std::snprintf(y, sizeof y, "%.12f mm", run_height + 2.9876);
+  const auto write = [&](const std::string& keys) {
+    const std::filesystem::path file = dir / "under.toml";
+    std::ofstream(file) << kLeadInLoopHead << "[[dynamics.guide]]\nkind = \"straight\"\n"
+                        << "x0 = \"100 mm\"\ny0 = \"" << y << "\"\nx1 = \"120 mm\"\ny1 = \"" << y
+                        << "\"\nlead_in_end = \"end\"\n"
+                        << keys;
+    return run("dynamics " + file.string());
+  };
+  const CliRun r = write("lead_in_radius = \"0.3 mm\"\n");
+  EXPECT_EQ(r.status, 2) << r.err;
+  for (const char* text :
+       {"dynamics.guide[0] (line 19) = its end at (x1, y1) (120, ",
+        " mm under the lead-in at the end of dynamics.guide[0] (lead_in_radius 0.3 mm, "
+        "lead_in_angle 30 deg), whose contact ends 6.335 mm below the line of the rail's rollers "
+        "at the arc's centre (lead_in_radius + roller radius), where the chain runs onto it, the "
+        "chain's starting path crossing it ",
+        "expected a rail's end the starting path crosses no deeper than the arc joined to it "
+        "covers, its centre (6.335 mm)",
+        "(lead_in_radius + roller radius 6.035 mm) (1 - cos lead_in_angle) >= 9.023 mm, which no "
+        "lead_in_angle meets at its lead_in_radius 0.3 mm: at its lead_in_angle 30 deg, "
+        "lead_in_radius >= ",
+        "(lead_in_end = \"end\" or \"both\")"})
+    EXPECT_NE(r.err.find(text), std::string::npos) << text << "\n" << r.err;
+  const double G = named_after(r.err, "the chain's starting path crossing it ");
+  EXPECT_NEAR(G, 2.9876 + roller, 1e-3) << r.err;
+  const double at30 = named_after(r.err, "at its lead_in_angle 30 deg, lead_in_radius >= ");
+  const double least30 = 9.023 / (1.0 - std::cos(std::numbers::pi / 6.0)) - roller;
+  EXPECT_GE(at30, least30) << r.err;
+  EXPECT_LT(at30 - least30, 0.01 * least30) << r.err;
+  const double at90 = named_after(r.err, "or at lead_in_angle 90 deg, lead_in_radius >= ");
+  EXPECT_GE(at90, 9.023 - roller) << r.err;
+  EXPECT_LT(at90 - (9.023 - roller), 0.01 * (9.023 - roller)) << r.err;
+  std::ostringstream keys;
+  keys << "lead_in_radius = \"" << at90 << " mm\"\nlead_in_angle = \"90 deg\"\n";
+  const CliRun led = write(keys.str());
+  EXPECT_EQ(led.err.find("its end at (x1, y1)"), std::string::npos) << keys.str() << led.err;
+  EXPECT_NE(led.err.find("past its surface"), std::string::npos) << led.err;
+  // the same arc laid by hand as dynamics.guide[1] (start_angle 60 deg, end_angle 90 deg, a 30 deg
+  // sweep), tangent at (x1, y1): named by its guide, its remedy the clearance at its own sweep,
+  // G/(1 - cos 30 deg) - r (G - r, 2.99 mm, passes over its centre and strikes its own far end).
+  // Typed back, the centre moved to stay tangent, neither the rail's end nor the arc's far end
+  // (start_angle) is refused.
+  const auto hand = [&](double radius) {
+    char centre[64], text[64];
+    std::snprintf(centre, sizeof centre, "%.12f mm", run_height + 2.9876 - radius);
+    std::snprintf(text, sizeof text, "%.6g mm", radius);
+    const std::filesystem::path file = dir / "hand.toml";
+    std::ofstream(file) << kLeadInLoopHead << "[[dynamics.guide]]\nkind = \"straight\"\n"
+                        << "x0 = \"100 mm\"\ny0 = \"" << y << "\"\nx1 = \"120 mm\"\ny1 = \"" << y
+                        << "\"\n[[dynamics.guide]]\nkind = \"arc\"\ncentre_x = \"120 mm\"\n"
+                        << "centre_y = \"" << centre << "\"\nradius = \"" << text << "\"\n"
+                        << "start_angle = \"60 deg\"\nend_angle = \"90 deg\"\n";
+    return run("dynamics " + file.string());
+  };
+  const CliRun small = hand(0.3);
+  EXPECT_EQ(small.status, 2) << small.err;
+  EXPECT_NE(small.err.find(" mm under the arc dynamics.guide[1] (radius 0.3 mm, less than the "
+                           "roller radius 6.035 mm) joined to it, whose contact ends 6.335 mm "
+                           "below the line of the rail's rollers at the arc's centre (radius + "
+                           "roller radius), where the chain runs onto it, the chain's starting "
+                           "path crossing it 9.023 mm into its contact"),
+            std::string::npos)
+      << small.err;
+  EXPECT_NE(small.err.find("give that arc a radius a roller running parallel to the rail there "
+                           "clears, (radius + roller radius 6.035 mm) (1 - cos sweep) >= 9.023 "
+                           "mm, at its sweep 30 deg (end_angle - start_angle, a quarter turn at "
+                           "most counted): radius >= "),
+            std::string::npos)
+      << small.err;
+  const double named = named_after(small.err, "a quarter turn at most counted): radius >= ");
+  EXPECT_GE(named, least30) << small.err;
+  EXPECT_LT(named - least30, 0.01 * least30) << small.err;
+  EXPECT_NE(small.err.find("or at a sweep of 90 deg, radius >= 2.99 mm"), std::string::npos)
+      << small.err;
+  const CliRun cleared = hand(named);
+  EXPECT_EQ(cleared.err.find("its end at (x1, y1)"), std::string::npos) << cleared.err;
+  EXPECT_EQ(cleared.err.find("its square end at start_angle"), std::string::npos) << cleared.err;
+  std::filesystem::remove_all(dir);
+}
+
 // A roller striking a rail's bare entry end in the run (docs/models/dynamics.md, "Guides against
 // the starting path: the square ends", the run's diagnostic), on a case that reaches it whatever
 // the rounding: the lead-in loop's chain on the free layout, the driver at (0, 0) and the driven

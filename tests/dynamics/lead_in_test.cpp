@@ -920,12 +920,14 @@ TEST(DynamicsSquareEnd, ALeadInsOwnFarEndIsSquareAndItsExactClearanceHolds) {
         EXPECT_EQ(guides.size(), 2U);
         const std::vector<std::size_t> all{0, 1};
         const std::vector<SquareEnd> ends = square_ends(BeltPath{}, guides, all);
-        EXPECT_EQ(ends.size(), 2U);                  // the rail's other end and the arc's far end
+        // the rail's other end and the arc's far end; below a lead-in smaller than the roller,
+        // the rail's own end too (the test below)
+        EXPECT_EQ(ends.size(), R < r ? 3U : 2U);
         const double s = (R + r - G) * std::tan(a);  // past the rail's end, the face's
         const std::vector<double> x{px + (r - G) * nx + (s + 3e-4) * ox},
             y{py + (r - G) * ny + (s + 3e-4) * oy}, vx{-0.5 * ox}, vy{-0.5 * oy};
         const std::optional<EndStrike> hit = square_end_strike(ends, guides, all, x, y, vx, vy, h);
-        if (hit) {
+        if (hit && G < R + r) {
           EXPECT_EQ(ends[hit->end].rail, 1U);  // the arc's
           // its far end: R (1 - cos α) behind the rail's surface, R sin α past the end
           const double fx = px - R * nx + R * (std::cos(a) * nx + std::sin(a) * ox);
@@ -961,7 +963,8 @@ TEST(DynamicsSquareEnd, ALeadInsOwnFarEndIsSquareAndItsExactClearanceHolds) {
       // below the roller line, past which it lies on the opposite radius, outside the sweep,
       // where the arc's contact (guide_contact) is off. A roller 0.1 mm short of that depth is
       // named on the far end within it; one R + r + 1 mm below the roller line passes under the
-      // centre and is not named there (its face point g = R + r + 1 mm / cos α < 2r)
+      // centre and is not named there (its face point g = R + r + 1 mm / cos α < 2r); this move
+      // starts past the rail's own end, which is square there (the test below)
       const double tiny = 3e-4;
       const Guide arc = lead_in_arcs(rail, {tiny, a, !at_end, at_end}).at(0);
       const std::optional<EndStrike> short_of = strike(tiny, a, tiny + r - 1e-4);
@@ -970,10 +973,111 @@ TEST(DynamicsSquareEnd, ALeadInsOwnFarEndIsSquareAndItsExactClearanceHolds) {
       const double deep = tiny + r + 1e-3, w = (tiny + r - deep) * std::tan(a);
       const double qx = px + (r - deep) * nx + w * ox, qy = py + (r - deep) * ny + w * oy;
       EXPECT_FALSE(guide_contact(arc, qx, qy, 0.0, 0.0).active) << at_end;
-      EXPECT_FALSE(strike(tiny, a, deep).has_value()) << at_end;
+      EXPECT_FALSE(strike(tiny, a, deep).has_value()) << at_end;  // (starting past the rail's)
     }
   }
   EXPECT_TRUE(std::isnan(lead_in_clear_angle(1e-3, kRoller, 1e-3 + kRoller + 1e-6)));
+}
+
+// A rail's own end below a lead-in smaller than the roller (layout.hpp, SquareEnd::from): on the
+// inclined straight rail and the arc rail with the rollers outside and inside, at each end, a
+// lead-in of 0.3 mm at 30 and 90 deg. The geometry, probed here through the contacts themselves
+// (guide_contact) on the end's face line, 1 µm either side of it: short of R + r below the roller
+// line the arc's contact holds the face's outer side (no step), past it to 2r the arc's is off
+// while the rail's is on (square). square_ends names that end (the rail's, square from R + r,
+// under the arc) besides the arc's far end. A roller running parallel to the rail at G = R + r +
+// 0.1 mm, 3 mm and 2r - 0.1 mm below the roller line is named on the rail's own end with g = G
+// (1e-12 m); rising along the face short of R + r it is not. The remedy: with the lead-in radius
+// lead_in_clear_radius names at its sweep (and G - r at 90 deg), laid by lead_in_arcs, a parallel
+// roller at G is named on no end; 0.1 mm less is struck. A lead-in of 2r leaves the end unsquare.
+TEST(DynamicsSquareEnd, ARailsOwnEndBelowALeadInSmallerThanTheRollerIsSquarePastItsCentre) {
+  for (const Guide& rail : {inclined_rail(0.0), arc_rail(false), arc_rail(true)}) {
+    const double r = rail.roller_radius, eps = rail.contact_smoothing, h = 1e-3;
+    for (const bool at_end : {false, true}) {
+      const ArcEnd e = rail_end(rail, at_end);
+      const double px = e.px, py = e.py, nx = e.nx, ny = e.ny, ox = e.ox, oy = e.oy;
+      for (const double deg : {30.0, 90.0}) {
+        const double a = deg * kPi / 180.0;
+        const auto laid = [&](double R) {
+          std::vector<Guide> guides{rail};
+          for (const Guide& arc : lead_in_arcs(rail, {R, a, !at_end, at_end}))
+            guides.push_back(arc);
+          EXPECT_EQ(guides.size(), 2U);
+          return guides;
+        };
+        // a roller G below the roller line moving 0.5 mm over the step towards the rail from
+        // 0.3 mm before the rail's own end
+        const auto strike = [&](const std::vector<Guide>& guides, double G, double before = 3e-4) {
+          const std::vector<std::size_t> all{0, 1};
+          const std::vector<SquareEnd> ends = square_ends(BeltPath{}, guides, all);
+          const std::vector<double> x{px + (r - G) * nx + before * ox},
+              y{py + (r - G) * ny + before * oy}, vx{-0.5 * ox}, vy{-0.5 * oy};
+          const std::optional<EndStrike> hit =
+              square_end_strike(ends, guides, all, x, y, vx, vy, h);
+          return std::pair{ends, hit};
+        };
+        const double R = 3e-4;
+        const std::vector<Guide> guides = laid(R);
+        // the face line probed through the contacts
+        for (const double g : {0.5 * (R + r), R + r - 1e-5, R + r + 1e-5, 1.5 * r, 2 * r - 1e-5}) {
+          const double fx = px + (r - g) * nx, fy = py + (r - g) * ny;
+          const bool out = guide_contact(guides[1], fx + 1e-6 * ox, fy + 1e-6 * oy, 0, 0).active;
+          const bool in = guide_contact(rail, fx - 1e-6 * ox, fy - 1e-6 * oy, 0, 0).active;
+          EXPECT_TRUE(in) << g;
+          EXPECT_EQ(out, g < R + r) << at_end << " " << deg << " " << g;
+        }
+        const auto [ends, none] = strike(guides, 0.0);
+        ASSERT_EQ(ends.size(), 3U) << at_end << deg;
+        std::size_t own = ends.size();
+        for (std::size_t k = 0; k < ends.size(); ++k)
+          if (ends[k].rail == 0U && ends[k].at_start == !at_end) own = k;
+        ASSERT_LT(own, ends.size());
+        EXPECT_NEAR(ends[own].from, R + r, 1e-15);
+        EXPECT_EQ(ends[own].under, 1U);
+        EXPECT_NEAR(ends[own].x, px, 1e-15);
+        EXPECT_NEAR(ends[own].y, py, 1e-15);
+        for (const double G : {R + r + 1e-4, 3e-3 + r, 2.0 * r - 1e-4}) {
+          const auto [all_ends, hit] = strike(guides, G);
+          ASSERT_TRUE(hit.has_value()) << G << " " << at_end << " " << deg;
+          EXPECT_EQ(hit->end, own) << G;
+          EXPECT_NEAR(hit->depth, G, 1e-12) << G;
+        }
+        // rising along the rail's own face, short of the centre: not the rail's end
+        {
+          const std::vector<std::size_t> all{0, 1};
+          const double g0 = R + r - 2e-4;
+          const std::vector<double> x{px + (r - g0) * nx + 1e-4 * ox},
+              y{py + (r - g0) * ny + 1e-4 * oy}, vx{-0.2 * ox + 0.1 * nx}, vy{-0.2 * oy + 0.1 * ny};
+          const std::optional<EndStrike> hit =
+              square_end_strike(ends, guides, all, x, y, vx, vy, h);
+          EXPECT_TRUE(!hit || hit->end != own) << at_end << deg;
+        }
+        // the remedy, for G = 3 mm below the rail's surface
+        const double G = 3e-3 + r;
+        const double least = deg < 90.0 ? lead_in_clear_radius(a, r, G) : G - r;
+        EXPECT_NEAR(lead_in_clear_radius(a, r, G), least, 1e-12);
+        // from 0.3 mm before the rail's own end, and below 90 deg before the far face (where
+        // G meets it, (R + r - G) tan α past the end)
+        for (const double radius : {least + 1e-6, least - 1e-4}) {
+          const std::vector<Guide> remedy = laid(radius);
+          std::vector<double> starts{3e-4};
+          if (deg < 90.0) starts.push_back((radius + r - G) * std::tan(a) + 3e-4);
+          for (const double before : starts) {
+            const auto [remedy_ends, hit] = strike(remedy, G, before);
+            EXPECT_EQ(hit.has_value() && hit->depth > eps,
+                      radius < least && (deg == 90.0 || before > 3e-4))
+                << at_end << " " << deg << " " << radius << " " << before;
+          }
+        }
+      }
+      // a lead-in of 2r: the rail's own end is covered to 2r and not square
+      const std::vector<std::size_t> all{0, 1};
+      std::vector<Guide> wide{rail};
+      for (const Guide& arc : lead_in_arcs(rail, {2.0 * r, kPi / 6, !at_end, at_end}))
+        wide.push_back(arc);
+      EXPECT_EQ(square_ends(BeltPath{}, wide, all).size(), 2U);
+    }
+  }
 }
 
 // When a parallel roller can strike a lead-in's far end (layout.hpp, lead_in_parallel_strike): on
@@ -1016,8 +1120,10 @@ TEST(DynamicsSquareEnd, ALeadInsFarEndAtAQuarterTurnNamesNoParallelRemedy) {
       const double w = (R + r - G) * std::tan(a) + 3e-4;
       const std::optional<EndStrike> parallel =
           strike(px + (r - G) * nx + w * ox, py + (r - G) * ny + w * oy, -0.5 * ox, -0.5 * oy);
-      EXPECT_EQ(parallel.has_value(), deg < 90.0) << at_end << " " << deg;
-      if (parallel) {
+      // (at 90 deg G = R + r, the depth from which the rail's own end is square: not the far end)
+      EXPECT_EQ(parallel.has_value() && ends[parallel->end].rail == 1U, deg < 90.0)
+          << at_end << " " << deg;
+      if (parallel && deg < 90.0) {
         EXPECT_NEAR(parallel->depth, rising->depth, 1e-9) << deg;
       }
       EXPECT_EQ(lead_in_parallel_strike(R, a, r, rising->depth), deg < 90.0) << at_end << deg;

@@ -1143,14 +1143,102 @@ double sampled_lowest(const PathPiece& q) {
   return low;
 }
 
-// Below the half circle, within a pitch a span (here two): 180 links close laid tangent at an e
-// below the half circle (TwoSlackSpansAreEachLaidTangentToTheirWheels). A rail under the first run
-// midway between its half circle's lowest point and that tangent lay's: the arcs are clear up to
-// the half circle, the 180 links' lay is not; the limit (`sag_spans_limit`) checks both lays
-// within the two pitches below the half circle, so here it lies below the 180 links' 522.703 mm
-// and below the half circle, the arcs clear there (500.388 mm measured, the band's low end; before,
-// it checked the arcs alone and named the half circle's 538.488 mm, above the e of a count whose
-// start runs into the rail); the arcs' own limit (`sag_spans_arcs_limit`) is the half circle's.
+// A link whose chord p spans a kink of the path turning by φ (two straight legs from the kink K,
+// directions u1 in and u2 out, u1·u2 = cos φ): its end A = K − a u1 a before K, its other end B =
+// K + b u2 on the out leg where |A − B| = p (b = −a cos φ + √(p² − a² sin² φ)), taking a + b of
+// the path. Walked over a in [0, p] in 2·10⁵ steps (the last joint before K lies within a pitch of
+// it): the most it takes beyond its chord, and the a it takes it at.
+struct KinkWalk {
+  double most = 0.0, at = 0.0;
+};
+KinkWalk walk_kink(double phi, double p) {
+  KinkWalk w;
+  for (int j = 0; j <= 200000; ++j) {
+    const double a = p * j / 200000.0;
+    const double b = -a * std::cos(phi) + std::sqrt(p * p - a * a * std::sin(phi) * std::sin(phi));
+    if (b < 0.0) continue;
+    if (a + b - p > w.most) {
+      w.most = a + b - p;
+      w.at = a;
+    }
+  }
+  return w;
+}
+
+// The walk's most is p (sec(φ/2) − 1) (to 1e-9 p), at a = b = p / (2 cos (φ/2)), up to φ = 120°,
+// where a = b = p; beyond, a = p and it takes −2 p cos φ, below the sec bound (1.0539 against
+// 1.0562 p at 121.8°, 1.4426 against 1.6771 p at 136.2°): `kink_link_extra` is the walk's most
+// (to 1e-9 p) at 30°, the half circle's 90°, the catenaries' 69.7°, 98.6°, 121.8° and 136.2°, and
+// near the half turn (179.9°, 2 p less 1e-8 p; the sec bound there is 1145 p), and at most 2 p.
+TEST(DynamicsSlackStart, ALinkAcrossAKinkTakesAtMostSecHalfItsTurnOfThePath) {
+  for (const double deg : {30.0, 69.7, 90.0, 98.6, 121.8, 136.2, 179.9}) {
+    const double phi = deg * kPi / 180.0, p = kPitch;
+    const KinkWalk w = walk_kink(phi, p);
+    const double bound = p * (1.0 / std::cos(0.5 * phi) - 1.0);
+    EXPECT_LE(w.most, bound + 1e-12 * p) << deg;
+    EXPECT_NEAR(kink_link_extra(phi, p), w.most, 1e-9 * p) << deg;
+    EXPECT_LE(kink_link_extra(phi, p), 2.0 * p) << deg;
+    if (deg <= 120.0) {
+      EXPECT_NEAR(w.most, bound, 1e-9 * p) << deg;
+      EXPECT_NEAR(w.at, p / (2.0 * std::cos(0.5 * phi)), 1e-4 * p) << deg;
+    } else {  // a = b would lie beyond a pitch: the last joint before K is a pitch from it
+      EXPECT_EQ(w.at, p) << deg;
+      EXPECT_NEAR(w.most, -2.0 * p * std::cos(phi), 1e-9 * p) << deg;
+    }
+    std::printf("kink %.1f deg: most extra %.6f p (sec bound %.6f p)\n", deg, w.most / p,
+                bound / p);
+  }
+}
+
+// The band below the half circle from the spans' kinks (`sag_spans_band`) against the kinks
+// measured on the lays themselves and links walked across them (not the band's formula): each
+// span's sag a hair beyond the half circle (`sag_spans`), its direction at both ends from two of
+// its points 1e-7 m apart (`sag_point`'s positions, not its tangent) against its chord's, each kink
+// at least the half circle's 90°, the most a link of a pitch walked across it takes (`walk_kink`):
+// on the two lower runs at slopes of 32°, 51° and 61° (the high wheels 0.25, 0.5 and 0.72 m up; the
+// widest kinks 98.6°, 122.2° and 136.1°, the last two past the 120° where a = b = p). The printed
+// bands 1.8959, 2.9622 and 3.7120 p (the sec bound's 2.9693 and 4.1822 p at 51° and 61°).
+TEST(DynamicsSlackStart, TheBandBelowTheHalfCircleIsTheSpansKinksExtraPath) {
+  for (const double high : {0.25, 0.5, 0.72}) {
+    const TwoRuns t = two_lower_runs(high);
+    ASSERT_EQ(t.spans.size(), 2u);
+    const double half = (0.5 * kPi - 1.0) * t.chords;
+    const BeltPath beyond = sag_spans(t.path, t.spans, half * (1.0 + 1e-9));
+    ASSERT_FALSE(beyond.pieces.empty());
+    double walked = 0.0, widest = 0.0;
+    for (const std::size_t k : t.spans) {
+      const PathPiece& q = beyond.pieces[k];
+      const double cx = q.x1 - q.x0, cy = q.y1 - q.y0, c = std::hypot(cx, cy);
+      for (const auto& [from, to] : {std::pair{0.0, 1e-7}, std::pair{q.length - 1e-7, q.length}}) {
+        const PathPoint u = sag_point(q, from), v = sag_point(q, to);
+        const double dx = v.x - u.x, dy = v.y - u.y;
+        const double turn =
+            std::acos(std::clamp((dx * cx + dy * cy) / (std::hypot(dx, dy) * c), -1.0, 1.0));
+        widest = std::max(widest, turn);
+        walked += walk_kink(std::max(turn, 0.5 * kPi), kPitch).most;
+      }
+    }
+    const double derived = sag_spans_band(t.path, t.spans, kPitch);
+    EXPECT_NEAR(derived, walked, 1e-5 * kPitch) << high;
+    if (high > 0.25) {
+      EXPECT_GT(widest, 2.0 * kPi / 3.0) << high;  // the case past 120° is reached
+    }
+    std::printf("high wheels %.2f m: the band %.4f p, walked %.4f p, widest kink %.1f deg\n", high,
+                derived / kPitch, walked / kPitch, widest * 180.0 / kPi);
+  }
+}
+
+// Below the half circle, within the band from the spans' kinks (here 1.896 p, narrower than the
+// two pitches of the rule before): 180 links close laid tangent at an e 0.829 p below the half
+// circle (TwoSlackSpansAreEachLaidTangentToTheirWheels). A rail under the first run midway between
+// its half circle's lowest point and that tangent lay's: the arcs are clear up to the half circle,
+// the 180 links' lay is not; the limit (`sag_spans_limit`) checks both lays within the band, so
+// here it lies below the 180 links' 522.703 mm and below the half circle, the arcs clear there,
+// at the band's low end, not below it (502.371 mm; with a pitch a span, 500.388 mm, a count laid as
+// arcs a pitch tenth above it refused for a tangent lay no count there takes; before the tangent
+// lay was checked, the half circle's 538.488 mm, above the e of a count whose start runs into the
+// rail); the tangent lay just above the limit runs into the rail; the arcs' own limit
+// (`sag_spans_arcs_limit`) is the half circle's.
 TEST(DynamicsSlackStart, TheLimitOfTwoSpansJustBelowTheHalfCircleChecksTheTangentLay) {
   const TwoRuns t = two_lower_runs();
   const double half = (0.5 * kPi - 1.0) * t.chords;
@@ -1179,6 +1267,12 @@ TEST(DynamicsSlackStart, TheLimitOfTwoSpansJustBelowTheHalfCircleChecksTheTangen
   EXPECT_LT(most, e);
   EXPECT_LT(most, half);
   EXPECT_EQ(named(sag_spans(t.path, t.spans, most)), "");
+  const double band = sag_spans_band(t.path, t.spans, kPitch);
+  EXPECT_GE(most, half - band - 1e-6 * t.chords);
+  // a pin on this case's band (1.8959 p, between it and the two pitches of the rule before): the
+  // tangent lay fails over the whole band here, so the limit sits at its low end, not two pitches'
+  EXPECT_GT(most, half - 2.0 * kPitch + 0.1 * kPitch);
+  EXPECT_EQ(named(tangent_spans(t.path, t.spans, most + 1e-3 * kPitch)), "guide[0]");
   // the arcs alone are clear up to the half circle: what a count laid as arcs may take
   const double arcs_most =
       sag_spans_arcs_limit(t.path, t.spans, t.circles, tip, {rail}, kRoller, kPitch);

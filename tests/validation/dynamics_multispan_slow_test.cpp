@@ -5,6 +5,7 @@
 // and the limits (tests/dynamics/slack_start_test.cpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -136,6 +137,41 @@ TEST(DynamicsMultispanSlow, RandomTwoRunStartsAreLaidTangentOrRefused) {
   std::printf("laid tangent %d, between the tangent points %d, not laid %d\n", tangent, between,
               refused);
   EXPECT_GT(tangent, 0);
+}
+
+// The band below the half circle from the spans' kinks (`sag_spans_band`) against the counts that
+// close laid tangent below the half circle, measured: on the two lower runs at slopes of 37°, 51°
+// and 61° (the high wheels 0.3, 0.5 and 0.72 m up), every count from the first whose N p less the
+// path's length lies within a pitch below the band's low end up to the first beyond the half
+// circle is laid; each laid tangent (its joints turning by under 1e-9 rad) with its e below the
+// half circle must close within the band (the limit checks the tangent lay over the band only).
+TEST(DynamicsMultispanSlow, CountsLaidTangentBelowTheHalfCircleCloseWithinTheKinksBand) {
+  int below = 0;
+  for (const double high : {0.3, 0.5, 0.72}) {
+    const TwoRuns t = two_lower_runs(high);
+    ASSERT_EQ(t.spans.size(), 2u) << high;
+    const double half = (0.5 * std::numbers::pi - 1.0) * t.chords;
+    const double band = sag_spans_band(t.path, t.spans, kPitch);
+    const int first = static_cast<int>(std::floor((t.path.length + half - band) / kPitch)) - 1;
+    const int last = static_cast<int>(std::ceil((t.path.length + half) / kPitch));
+    double worst = 0.0;
+    for (int links = first; links <= last; ++links) {
+      BeltPath laid;
+      const LoopPlacement place =
+          place_slack_loop(t.path, t.circles, t.teeth, links, kPitch, laid, t.spans);
+      if (place.s.empty() || !(largest_joint_turn(laid) < 1e-9)) continue;
+      const double e = laid.length - t.path.length;
+      if (!(e < half)) continue;
+      ++below;
+      worst = std::max(worst, half - e);
+      EXPECT_LE(half - e, band) << high << " " << links;
+    }
+    std::printf(
+        "high wheels %.2f m: the band %.4f p; counts laid tangent close at most %.4f p "
+        "below the half circle\n",
+        high, band / kPitch, worst / kPitch);
+  }
+  EXPECT_GT(below, 0);
 }
 
 }  // namespace

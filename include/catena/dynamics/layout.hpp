@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <span>
@@ -158,11 +159,28 @@ double sag_spans_limit(const BeltPath& path, const std::vector<std::size_t>& pie
                        const std::vector<Circle>& circles, const std::vector<double>& tip,
                        const std::vector<Guide>& guides, double roller, double pitch);
 
+/// [m] The most path beyond its chord a link of chord `pitch` across a kink turning by `turn` [rad]
+/// takes (docs/models/dynamics.md, "The band below the half circle"): with its ends a before and b
+/// after the kink, (a + b) cos(φ/2) <= p, equal at a = b = p / (2 cos(φ/2)), p (sec(φ/2) − 1) more
+/// than its chord up to φ = 120°, where a = b = p; beyond, the last joint before the kink lies a
+/// pitch from it at most (a <= p), and the most is at a = p: −2 p cos φ, up to 2 p as φ → 180°.
+double kink_link_extra(double turn, double pitch);
+
+/// [m] How far below the half circle ((π/2 − 1) of the chords) a count of the spans `pieces` may be
+/// laid tangent (`tangent_spans`), from their kinks there (docs/models/dynamics.md, "The band below
+/// the half circle"): a link across a kink takes at most `kink_link_extra` more path than its
+/// chord, so a count's lay between the tangent points closes with an e up to that much per kink
+/// above its N p less the path's length. Each span's two kinks are the larger of the half circle's
+/// (90°, its arc meeting the chord square) and those of the lay just beyond it (`sag_spans` a hair
+/// past the half circle: the catenary's ends, `sag_point`, against the chord): Σ_k of both kinks'
+/// `kink_link_extra`, at most 4 p a span.
+double sag_spans_band(const BeltPath& path, const std::vector<std::size_t>& pieces, double pitch);
+
 /// The largest extra length up to the half circle ((π/2 − 1) of the chords, a hair inside) with
 /// `pieces` laid as circular arcs (`sag_spans`) clear of everything, the other sags included: the
 /// most a count laid as arcs may take. Above `sag_spans_limit` only where that limit is cut within
-/// a pitch a span below the half circle, where a count may be laid tangent (`tangent_spans`) or as
-/// arcs and both are checked. 0 if none can sag.
+/// the band below the half circle (`sag_spans_band`), where a count may be laid tangent
+/// (`tangent_spans`) or as arcs and both are checked. 0 if none can sag.
 double sag_spans_arcs_limit(const BeltPath& path, const std::vector<std::size_t>& pieces,
                             const std::vector<Circle>& circles, const std::vector<double>& tip,
                             const std::vector<Guide>& guides, double roller, double pitch);
@@ -228,13 +246,19 @@ double rail_cut_work(const BeltPath& path, const Guide& rail);
 /// whichever side the driver is on), its g in [0, square_end_reach) (0: not crossing its
 /// contact); the path sampled as rail_cut samples it, as a polyline, against the end's normal
 /// from the roller line to the face's reach (r behind the surface, where the contact is off).
+/// An end joined tangentially to an arc with the rollers outside whose face reaches less deep
+/// (square_end_reach: an arc of radius ρ < r, a lead-in smaller than the roller) is square below
+/// that arc's reach only: there the face passes under the arc's centre, ρ behind the joint along
+/// −n, where the arc has no contact (its sweep lies on the other side); its g from ρ + r on.
 struct SquareEnd {
   std::size_t rail = 0;  ///< index into `rails`
   bool at_start = true;
-  double x = 0.0, y = 0.0;    ///< [m] the end of the rail's surface
-  double depth = 0.0;         ///< [m] the deepest crossing's g
-  double nx = 0.0, ny = 0.0;  ///< the surface's unit normal there (towards its free side)
-  double tx = 0.0, ty = 0.0;  ///< the rail's unit direction there, from the end into the rail
+  double x = 0.0, y = 0.0;       ///< [m] the end of the rail's surface
+  double depth = 0.0;            ///< [m] the deepest crossing's g
+  double nx = 0.0, ny = 0.0;     ///< the surface's unit normal there (towards its free side)
+  double tx = 0.0, ty = 0.0;     ///< the rail's unit direction there, from the end into the rail
+  double from = 0.0;             ///< [m] the g its face is square beyond (0; ρ + r under an arc)
+  std::size_t under = SIZE_MAX;  ///< the arc it is joined to (index into `guides`); none: bare
 };
 std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide>& guides,
                                    const std::vector<std::size_t>& rails);
@@ -249,7 +273,8 @@ double square_end_reach(const Guide& rail);
 /// rails `rails`, indices into `guides`), the deepest crossing of an end's face, from outside the
 /// rail into it, by a node's straight move from (x, y) to (x + h vx, y + h vy) (the step's start
 /// and its constant-velocity predictor) more than the rail's contact ramp ε below the roller line
-/// (g in (ε, square_end_reach)): the end (index into `ends`), the node and that g. None: no such.
+/// (g in (ε, square_end_reach), and past the end's `from`): the end (index into `ends`), the
+/// node and that g. None: no such.
 struct EndStrike {
   std::size_t end = 0;   ///< index into `ends`
   std::size_t node = 0;  ///< the roller's node

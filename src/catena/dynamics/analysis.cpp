@@ -553,6 +553,65 @@ std::string square_end_lead_in(const SquareEnd& end) {
          "\" or \"both\")";
 }
 
+// A rail's end joined to an arc smaller than the roller (layout.hpp, SquareEnd::from), crossed G
+// below the line of its rollers, past the arc's centre (R + r), as the start's check and the run
+// name it: what it is ("under the lead-in at the end of dynamics.guide[0] (lead_in_radius 0.3 mm,
+// lead_in_angle 30 deg), whose contact ends 6.335 mm below the line of the rail's rollers at the
+// arc's centre (lead_in_radius + roller radius), where the chain runs onto it") and the remedy. A
+// roller running parallel to the rail at G passes under the centre and meets the rail's end; with
+// a lead-in of radius R' it meets the arc's roller line within its sweep α, clearing its far end
+// too, exactly when (R' + r)(1 − cos α) >= G (lead_in_clear_radius; R' >= G − r at 90°, the least
+// of any sweep): G > R + r, so no sweep at the lead-in's radius does. A hand-laid arc is named by
+// its guide, its remedy the same clearance at its own sweep, capped at a quarter turn (past it the
+// roller meets the arc's roller line within 90° already: G − r). G rounded up, the radii from it
+// rounded up.
+struct UnderArc {
+  std::string what, remedy;
+};
+// The clearance of a lead-in for a roller parallel to the rail G [mm] below its roller line (roller
+// radius r [m]), named by a rail's own end under a small lead-in and by a lead-in's far end.
+std::string lead_in_clears_text(double r, double G) {
+  return "give that end a lead-in a roller running parallel to the rail there clears, "
+         "(lead_in_radius + roller radius " +
+         format_g(r * 1e3, 4) + " mm) (1 - cos lead_in_angle) >= " + format_g(G, 4) + " mm";
+}
+UnderArc under_arc_text(const Setup& s, const SquareEnd& end, double g, const std::string& rail) {
+  const Guide& arc = s.guides[end.under];
+  const double R = arc.radius, r = arc.roller_radius;
+  auto mm = [](double v) { return format_g(v * 1e3, 4) + " mm"; };
+  const double G = up_to(g * 1e3, 4);  // [mm]
+  const double least = up_to(G - r * 1e3, 3);
+  const std::string centre = "whose contact ends " + mm(R + r) +
+                             " below the line of the rail's rollers at the arc's centre (";
+  if (end.under < s.given_guides) {
+    const double sweep = std::min(std::abs(arc.end_angle - arc.start_angle), kPi / 2.0);
+    const double at_sweep = up_to(lead_in_clear_radius(sweep, r * 1e3, G), 3);  // [mm]
+    const std::string deg = format_g(sweep * 180.0 / kPi, 4);
+    return {"under the arc dynamics." + s.guide_names[end.under] + " (radius " + mm(R) +
+                ", less than the roller radius " + mm(r) + ") joined to it, " + centre +
+                "radius + roller radius), where the chain runs onto it",
+            "give that arc a radius a roller running parallel to the rail there clears, (radius "
+            "+ roller radius " +
+                mm(r) + ") (1 - cos sweep) >= " + format_g(G, 4) + " mm, at its sweep " + deg +
+                " deg (end_angle - start_angle, a quarter turn at most counted): radius >= " +
+                format_g(at_sweep, 3) + " mm" +
+                (sweep < kPi / 2.0
+                     ? ", or at a sweep of 90 deg, radius >= " + format_g(least, 3) + " mm"
+                     : std::string())};
+  }
+  const bool at_start = s.lead_in_rails[end.under - s.given_guides].second;
+  const double a = arc.end_angle - arc.start_angle;
+  const double radius = up_to(lead_in_clear_radius(a, r * 1e3, G), 3);  // [mm]
+  return {"under " + lead_in_name(at_start, rail) + " (lead_in_radius " + mm(R) +
+              ", lead_in_angle " + format_g(a * 180.0 / kPi, 4) + " deg), " + centre +
+              "lead_in_radius + roller radius), where the chain runs onto it",
+          lead_in_clears_text(r, G) + ", which no lead_in_angle meets at its lead_in_radius " +
+              mm(R) + ": at its lead_in_angle " + format_g(a * 180.0 / kPi, 4) +
+              " deg, lead_in_radius >= " + format_g(radius, 3) +
+              " mm, or at lead_in_angle 90 deg, lead_in_radius >= " + format_g(least, 3) +
+              " mm (lead_in_end = \"" + (at_start ? "start" : "end") + "\" or \"both\")"};
+}
+
 // The most a stiffness (power 2) or a damping (power 1) over a step may be, `ratio` m/(θh)^power,
 // and the text naming it and the keys it follows from.
 std::string scale_bound(const Setup& s, double ratio, int power, const char* unit, double& most) {
@@ -847,9 +906,10 @@ bool slack_starts(const Setup& s, const std::vector<std::size_t>& pieces, int li
 
 // The most links that start with their slack sagging in `pieces` (`slack_starts`, the guides
 // included), 0 if none. A start at N links sags by more than N p less the path's length, so no
-// count beyond the path's length plus `most` (the slack limit) and a pitch a span starts (within a
-// pitch a span below the half circle a count laid as arcs may take more than `most`, which is cut
-// there where the tangent lay a count may take instead is not clear); the counts below it are
+// count beyond the path's length plus `most` (the slack limit) and the band below the half circle
+// starts (a pitch for one span; for more, a pitch a span or their kinks' band, sag_spans_band, if
+// wider: within it a count laid as arcs may take more than `most`, which is cut there where the
+// tangent lay a count may take instead is not clear); the counts below it are
 // tried downwards (`longest_count`: not by bisection, the counts that start need not be an
 // interval; after kLongestCountScan counts without a start the rest is bisected, bounded work).
 LongestCount longest_slack_links(const Setup& s, const std::vector<std::size_t>& pieces,
@@ -864,8 +924,12 @@ LongestCount longest_slack_links(const Setup& s, const std::vector<std::size_t>&
   };
   int lo = static_cast<int>(std::floor(s.path.length / s.pitch));
   if (lo * s.pitch > s.path.length) --lo;  // lo: the last count not beyond the path
-  const int hi = std::min(10000, static_cast<int>(std::floor((s.path.length + most) / s.pitch)) +
-                                     static_cast<int>(pieces.size()));
+  const double band = pieces.size() > 1 ? sag_spans_band(s.path, pieces, s.pitch) / s.pitch : 1.0;
+  // (band <= 4 a span, kink_link_extra; clamped to the counts' cap before the cast all the same)
+  const int reach = std::max(static_cast<int>(pieces.size()),
+                             static_cast<int>(std::ceil(std::min(band, 10000.0))));
+  const int hi =
+      std::min(10000, static_cast<int>(std::floor((s.path.length + most) / s.pitch)) + reach);
   return longest_count(lo, hi, starts);
 }
 
@@ -898,13 +962,14 @@ std::string slack_measure_text(const Setup& s, const std::vector<std::size_t>& p
   // beyond the half circle the spans hang as catenaries (when they can: a run travelling
   // towards +x, whose outward side is down), up to kCatenaryMostExtra chords of extra
   const bool hangs = !sag_spans(s.path, pieces, half * (1.0 + 1e-9)).pieces.empty();
-  // with more than one span the limit may be cut within a pitch a span below the half circle by
-  // the tangent lay a count there may take; one laid as arcs may still start up to the arcs' own
-  // limit, said with it (below the band only the arcs are checked: there the limit is theirs;
-  // 1e-5 of the chords: the limit is bisected to 1e-6 of them)
-  const double band = s.pitch * static_cast<double>(pieces.size());
+  // with more than one span the limit may be cut within the band below the half circle (from
+  // the spans' kinks, sag_spans_band) by the tangent lay a count there may take; one laid as arcs
+  // may still start up to the arcs' own limit, said with it (below the band only the arcs are
+  // checked: there the limit is theirs; 1e-5 of the chords: the limit is bisected to 1e-6 of them)
+  const bool several = pieces.size() > 1;
+  const double band = several ? sag_spans_band(s.path, pieces, s.pitch) : 0.0;
   const double arcs =
-      pieces.size() > 1 && most >= half - band - 1e-5 * spans && most < half
+      several && most >= half - band - 1e-5 * spans && most < half
           ? sag_spans_arcs_limit(s.path, pieces, s.circles, s.tip, guides, s.roller, s.pitch)
           : 0.0;
   const bool arcs_beyond = arcs > most + 1e-6 * spans;
@@ -919,9 +984,8 @@ std::string slack_measure_text(const Setup& s, const std::vector<std::size_t>& p
   return "a chain longer than the path, its " + span_names(s.path, pieces) +
          " sagging by an extra length e (" + e_means + ") of at most about " + mm(most) + " (" +
          shown(most / s.path.length * 100.0) + " % of the path" +
-         (arcs_beyond ? "; laid as circular arcs, as a count within a pitch a span below the half "
-                        "circle may be, up to about " +
-                            mm(arcs)
+         (arcs_beyond ? "; laid as circular arcs, as a count within " + mm(band) +
+                            " below the half circle may be, up to about " + mm(arcs)
                       : "") +
          "), the most " + (one ? "it" : "they") + " can sag by as circular arcs" +
          (half_circle ? " of at most a half circle" : "") +
@@ -2466,6 +2530,27 @@ Setup parse(const analysis::Inputs& in) {
       const Guide& rail = s.guides[rails[end.rail]];
       if (!(end.depth > rail.contact_smoothing)) continue;
       auto mm = [](double v) { return format_g(v * 1e3, 4) + " mm"; };
+      if (end.under != SIZE_MAX) {
+        // its end under an arc smaller than the roller: square past the arc's centre only
+        const std::string& name = given_rails[end.rail].first;
+        const UnderArc u =
+            under_arc_text(s, end, end.depth, "dynamics." + s.guide_names[rails[end.rail]]);
+        issues.push_back(
+            {name,
+             "its end at " + square_end_name(rail, end) + " " + u.what +
+                 ", the chain's starting path crossing it " + mm(end.depth) +
+                 " into its contact, past that centre",
+             "a rail's end the starting path crosses no deeper than the arc joined to it covers, "
+             "its centre (" +
+                 mm(end.from) +
+                 "): deeper, the arc has no contact and the roller is struck by the rail's end's "
+                 "force at once" +
+                 (rail.line_law
+                      ? std::string()
+                      : " (here " + format_g(rail.contact_stiffness * end.depth, 3) + " N)") +
+                 ", on which a step need not converge however small; " + u.remedy});
+        continue;
+      }
       issues.push_back(
           {given_rails[end.rail].first,
            "its square end at " + square_end_name(rail, end) + ", where the chain runs onto it, " +
@@ -2937,13 +3022,30 @@ std::optional<Diagnostic> bare_end_struck(const Setup& d, const State& s,
             " deg) at (" + format_g(end.x * 1e3, 4) + ", " + format_g(end.y * 1e3, 4) +
             ") mm, where it runs onto the lead-in, " + mm(hit->depth) + " into its contact, " +
             ramp + "There the roller lies " + format_g(G, 4) +
-            " mm below the line of the rail's rollers at its end, along its tangent; give that end "
-            "a lead-in a roller running parallel to the rail there clears, (lead_in_radius + "
-            "roller radius " +
-            mm(r) + ") (1 - cos lead_in_angle) >= " + format_g(G, 4) + " mm" + remedy +
+            " mm below the line of the rail's rollers at its end, along its tangent; " +
+            lead_in_clears_text(r, G) + remedy +
             "a bare entry end near the chain's path may stop the run at any depth)",
         hit->depth,
         rail.contact_smoothing,
+        "m"};
+  }
+  if (end.under != SIZE_MAX) {
+    // its end under an arc smaller than the roller, struck past the arc's centre: the limit that
+    // centre's depth
+    const UnderArc u = under_arc_text(d, end, hit->depth, "dynamics." + d.guide_names[index]);
+    return Diagnostic{
+        Diagnostic::Severity::kError,
+        "dynamics.bare_rail_end",
+        struck + "the end of dynamics." + d.guide_names[index] + " at " +
+            square_end_name(rail, end) + " " + u.what + ", " + mm(hit->depth) +
+            " into its contact, past that centre, where the arc has no contact: the roller is "
+            "struck by the rail's end's force at once, on which a step need not converge however "
+            "small; the run stopped there: " +
+            u.remedy +
+            ", or move the rail clear of the chain there (a bare entry end near the chain's path "
+            "may stop the run at any depth)",
+        hit->depth,
+        end.from,
         "m"};
   }
   // a lead-in's arc ends R (1 − cos α) below the end's tangent: deeper than the roller at the

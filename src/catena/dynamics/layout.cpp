@@ -836,21 +836,21 @@ bool lay_clear(const BeltPath& laid, const std::vector<std::size_t>& pieces,
 // the tangent points (`sag_spans`); beyond it the tangent lay (`tangent_spans`), else, where that
 // is refused, the lay between the tangent points; where the tangent lay keeps less than a pitch
 // (2 asin(p / 2r)) of any wrap, both must be clear (which one a start lays there depends on where
-// its rollers fall: a wheel left with no roller falls back to the other). Within a pitch per span
-// below the half circle a count whose lay between the tangent points would pass it is laid
-// tangent at an e a little below it (level 600 mm, z 17 both, 98 links: 342.414 against the half
-// circle's 342.478 mm): there both the arcs and the tangent lay must be clear. The band is
-// measured, not derived: what decides is the count's lay between the tangent points just beyond
-// the half circle, a catenary whose kinks grow with the slope (a link across a kink φ takes up to
-// p (sec(φ/2) − 1) more path: 0.44 p a span level, 1.10 p at 51°); over 37–61° slopes the counts
-// laid tangent closed at most 1.207 p below it with two spans, 0.582 p with one
-// (docs/models/dynamics.md). Where the tangent lay cuts the limit in the band, a count laid as
-// arcs may still take more (`sag_spans_arcs_limit`).
+// its rollers fall: a wheel left with no roller falls back to the other). Within a band below the
+// half circle a count whose lay between the tangent points would pass it is laid tangent at an e
+// a little below it (level 600 mm, z 17 both, 98 links: 342.414 against the half circle's
+// 342.478 mm): there both the arcs and the tangent lay must be clear. For one span the band is a
+// pitch (measured: over 37–61° slopes the counts laid tangent closed at most 0.582 p below it);
+// for more, the spans' kinks there (`sag_spans_band`: a link across a kink φ takes up to
+// `kink_link_extra` more path; docs/models/dynamics.md, "The band below the half circle"). Where
+// the tangent lay cuts the limit in the band, a count laid as arcs may still take more
+// (`sag_spans_arcs_limit`).
 double spans_limit(const BeltPath& path, const std::vector<std::size_t>& pieces, double total,
                    const std::vector<Circle>& circles, const std::vector<double>& tip,
                    const std::vector<Guide>& guides, double roller, double pitch) {
   const double half = (0.5 * kPi - 1.0) * total;
-  const double band = pitch * static_cast<double>(pieces.size());
+  // one span: a pitch (measured: 0.582 p at most over 37–61° slopes); more: from their kinks
+  const double band = pieces.size() == 1 ? pitch : sag_spans_band(path, pieces, pitch);
   const std::size_t n = path.pieces.size();
   auto short_wrap = [&](const PathPiece& w) {
     return !(w.to - w.from >= 2.0 * std::asin(std::min(1.0, 0.5 * pitch / w.radius)));
@@ -904,6 +904,37 @@ double sag_spans_arcs_limit(const BeltPath& path, const std::vector<std::size_t>
   return largest_clear_extra(half * (1.0 - 1e-9), total, [&](double extra) {
     return lay_clear(sag_spans(path, pieces, extra), pieces, circles, tip, guides, roller, pitch);
   });
+}
+
+double sag_spans_band(const BeltPath& path, const std::vector<std::size_t>& pieces, double pitch) {
+  const double total = span_chords(path, pieces);
+  if (!(total > 0.0)) return 0.0;
+  const BeltPath beyond = sag_spans(path, pieces, (0.5 * kPi - 1.0) * total * (1.0 + 1e-9));
+  double band = 0.0;
+  for (const std::size_t k : pieces) {
+    double turn0 = 0.5 * kPi, turn1 = 0.5 * kPi;  // the half circle's arc meets its chord square
+    if (!beyond.pieces.empty() && beyond.pieces[k].catenary) {
+      // the catenary's unit tangents at both ends against the chord's direction
+      const PathPiece& q = beyond.pieces[k];
+      const double cx = q.x1 - q.x0, cy = q.y1 - q.y0, c = std::hypot(cx, cy);
+      auto turn = [&](double along) {
+        const PathPoint at = sag_point(q, along);
+        return std::acos(std::clamp((at.tx * cx + at.ty * cy) / c, -1.0, 1.0));
+      };
+      turn0 = std::max(turn0, turn(0.0));
+      turn1 = std::max(turn1, turn(q.length));
+    }
+    band += kink_link_extra(turn0, pitch) + kink_link_extra(turn1, pitch);
+  }
+  return band;
+}
+
+// kink_link_extra (layout.hpp): |A − B|² = a² + b² + 2ab cos φ = p² gives (a + b)² = p² + 2ab (1 −
+// cos φ) <= p² + (a + b)² (1 − cos φ)/2; a = b <= p holds up to 120°, and past it the most is at
+// a = p, b = −2 p cos φ (continuous at 120°, both p).
+double kink_link_extra(double turn, double pitch) {
+  return turn <= 2.0 * kPi / 3.0 ? pitch * (1.0 / std::cos(0.5 * turn) - 1.0)
+                                 : -2.0 * pitch * std::cos(turn);
 }
 
 double span_chords(const BeltPath& path, const std::vector<std::size_t>& pieces) {
@@ -1312,11 +1343,28 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
       // turn): a rail shorter than ε is a sliver with two square ends, not a closed rail
       const Guide& g = guides[rails[k]];
       const bool ring = g.kind != Guide::Kind::kStraight && g.end_angle - g.start_angle > kPi;
-      for (; o != by_x.end() && all[*o][0] <= e[0] + eps && !joined; ++o)
-        joined = *o != self && (ring || *o != (self ^ 1)) &&
-                 std::hypot(all[*o][0] - e[0], all[*o][1] - e[1]) <= eps;
-      if (joined) continue;
-      ends.push_back({k, start, e[0], e[1], 0.0, e[2], e[3], e[4], e[5]});
+      // how deep the joined guides' faces cover this one's: a guide joined tangentially (the same
+      // free side's normal, running on beyond the end) shares the face's line and covers it to
+      // its reach (an arc with the rollers outside: to its centre); any other join, all of it
+      double cover = 0.0;
+      std::size_t under = SIZE_MAX;
+      for (; o != by_x.end() && all[*o][0] <= e[0] + eps; ++o) {
+        if (*o == self || (!ring && *o == (self ^ 1)) ||
+            !(std::hypot(all[*o][0] - e[0], all[*o][1] - e[1]) <= eps))
+          continue;
+        joined = true;
+        const std::array<double, 6>& j = all[*o];
+        const bool tangent =
+            j[2] * e[2] + j[3] * e[3] > 1.0 - 1e-9 && j[4] * e[4] + j[5] * e[5] < -(1.0 - 1e-9);
+        const double reach = tangent ? square_end_reach(guides[*o / 2]) : INFINITY;
+        if (reach > cover) {
+          cover = reach;
+          under = *o / 2;
+        }
+      }
+      if (joined && !(cover < square_end_reach(g))) continue;
+      ends.push_back({k, start, e[0], e[1], 0.0, e[2], e[3], e[4], e[5], joined ? cover : 0.0,
+                      joined ? under : SIZE_MAX});
       at.push_back(e);
     }
   }
@@ -1326,6 +1374,7 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
     const double rr = rail.roller_radius;
     if (!(rr > 0.0)) continue;
     const double reach = square_end_reach(rail) / (2.0 * rr);  // of the segment, off from there
+    const double square = ends[k].from / (2.0 * rr);           // square from there on
     const int n = cut_samples(path, rail);
     const double pad = path.length / n;
     const auto& e = at[k];
@@ -1348,7 +1397,7 @@ std::vector<SquareEnd> square_ends(const BeltPath& path, const std::vector<Guide
         // A + t d = P + u c
         const double t = (qy * cx - qx * cy) / den;
         const double u = (qy * dx - qx * dy) / den;
-        if (!(t >= 0.0 && t < reach && u >= 0.0 && u <= 1.0)) continue;
+        if (!(t >= square && t < reach && u >= 0.0 && u <= 1.0)) continue;
         if (cx * e[4] + cy * e[5] < 0.0) continue;  // leaving the rail there
         ends[k].depth = std::max(ends[k].depth, 2.0 * rr * t);
       }
@@ -1393,7 +1442,7 @@ std::optional<EndStrike> square_end_strike(const std::vector<SquareEnd>& ends,
       if (!(a0 <= 0.0 && a1 > 0.0)) continue;  // (a NaN fails too)
       const double f = -a0 / (a1 - a0);
       const double g = -((px + f * mx) * e.nx + (py + f * my) * e.ny);
-      if (!(g > eps && g < reach)) continue;
+      if (!(g > std::max(eps, e.from) && g < reach)) continue;
       if (!out || g > out->depth) out = EndStrike{k, i, g};
     }
   }
