@@ -248,10 +248,11 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
   hc.turn = l1.turn - l0.turn;
   hc.rate = hc.turn / step;
   // g = ∂β/∂x: (+P₀, −P₀ − P₁, +P₁), P = perp(d_θ)/|d_θ|²
+  const double g1x = -l0.px - l1.px, g1y = -l0.py - l1.py;
   hc.gx[0] = l0.px;
   hc.gy[0] = l0.py;
-  hc.gx[1] = -l0.px - l1.px;
-  hc.gy[1] = -l0.py - l1.py;
+  hc.gx[1] = g1x;
+  hc.gy[1] = g1y;
   hc.gx[2] = l1.px;
   hc.gy[2] = l1.py;
   const double limit = hinge.arm * hc.load;  // e F
@@ -284,7 +285,6 @@ inline void hinge_couple_blocks(const HingeFriction& hinge, const HingeLink& l0,
   hc.work = hc.torque * hc.turn;
   // M g on the three nodes, written out (as a loop the compiler kept the loop and read g back)
   const double torque = hc.torque;
-  const double g1x = -l0.px - l1.px, g1y = -l0.py - l1.py;
   hc.fx[0] = torque * l0.px;
   hc.fy[0] = torque * l0.py;
   hc.fx[1] = torque * g1x;
