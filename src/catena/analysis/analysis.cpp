@@ -230,6 +230,12 @@ std::string format_g(double v, int digits) {
   return b;
 }
 
+std::string times_text(double m) {
+  if (m == 1.0) return "once";
+  if (m == 2.0) return "twice";
+  return format_g(m) + " times";
+}
+
 std::string unit_of(const Value& result, const std::string& key) {
   const Value& u = result.at("units").at(key);
   return u.is_string() ? u.as_string() : "";
