@@ -3004,9 +3004,21 @@ struct Retake {
     std::vector<double> slide, wheel_force;
   };
   bool watch = false;
-  std::vector<Sub> subs;
+  std::vector<Sub> subs;  // the first n_subs hold this grid step's (the rest: kept storage)
+  std::size_t n_subs = 0;
   int solves = 0, failed = 0;
   std::optional<StepReport> failure;  // the first failed solve's (its Newton text)
+  std::vector<double> angle0;         // scratch: a sub-step's start angles
+  // Empties it for a new grid step, keeping every array's storage (no allocation per step).
+  void reset() {
+    work = 0.0;
+    std::fill(torque.begin(), torque.end(), 0.0);
+    max_penetration = 0.0;
+    level = 0;
+    n_subs = 0;
+    solves = failed = 0;
+    failure.reset();
+  }
 };
 
 // A step's (or a retaken step's sub-step's) accounting, the same for both: the driver's (θ-point)
@@ -3030,8 +3042,7 @@ double step_accounting(const Model& model, std::size_t driver, const std::vector
 bool retake_halves(const Model& model, const Setup& d, std::vector<std::optional<Integrator>>& sub,
                    State& s, int level, int from, int floor, Retake& acc) {
   const double scale = 1.0 / static_cast<double>(1 << level);  // a power of 2: exact
-  const std::size_t nw = model.sprockets.size();
-  std::vector<double> angle0(nw);
+  std::vector<double>& angle0 = acc.angle0;  // free again once a solve is accounted or failed
   for (int half = 0; half < 2; ++half) {
     if (level < from) {
       if (!retake_halves(model, d, sub, s, level + 1, from, floor, acc)) return false;
@@ -3053,8 +3064,15 @@ bool retake_halves(const Model& model, const Setup& d, std::vector<std::optional
     acc.max_penetration = std::max(acc.max_penetration, rep.max_penetration);
     acc.work +=
         step_accounting(model, d.driver, angle0, s, integ->applied_torque(), scale, acc.torque);
-    if (acc.watch)
-      acc.subs.push_back({s.time, d.step * scale, s.slide, integ->applied_wheel_force()});
+    if (acc.watch) {
+      if (acc.n_subs == acc.subs.size()) acc.subs.emplace_back();
+      Retake::Sub& e = acc.subs[acc.n_subs++];
+      e.time = s.time;
+      e.size = d.step * scale;
+      e.slide.assign(s.slide.begin(), s.slide.end());
+      const std::vector<double>& force = integ->applied_wheel_force();
+      e.wheel_force.assign(force.begin(), force.end());
+    }
   }
   return true;
 }
@@ -3062,6 +3080,8 @@ bool retake_halves(const Model& model, const Setup& d, std::vector<std::optional
 // The guard on energy from nothing: the numerical term's bound in multiples of the energy the run
 // has received (docs/models/dynamics.md, "Integrator: the guard on energy from nothing").
 constexpr double kEnergyGainBound = 2.0;
+static_assert(kEnergyGainBound > 1.0,
+              "the guard's message words its bound as \"more than N times\"");
 // The guard's stride: at most one energy evaluation every this many steps (and the last step).
 constexpr int kGuardSteps = 10;
 
@@ -3338,19 +3358,29 @@ Result run(const analysis::Inputs& in) {
   int retaken = 0, first_retaken = 0, deepest = 0;
   int level = 0, clean = 0, kept_steps = 0;
   long sub_solves = 0, failed_solves = 0;
-  const auto fresh = [&] {
-    return Retake{.torque = std::vector<double>(nw, 0.0), .watch = !out.takeup.empty()};
-  };
+  // scratch kept across grid steps (no allocation per step): the retake's accounting and the
+  // state at the start of a grid step taken as sub-steps
+  Retake acc{.torque = std::vector<double>(nw, 0.0),
+             .watch = !out.takeup.empty(),
+             .angle0 = std::vector<double>(nw)};
+  State start;
   // grid step k + 1 ended by its sub-steps (from `start`): the grid's time, as a step would have
   // set it, and its accounting theirs; true when the guard stops the run there
-  auto substeps_end = [&](int k, const State& start, const Retake& acc) {
+  auto substeps_end = [&](int k) {
+    // the grid's time, and the last sub-step's integrator's history moved to it (their summed
+    // time may differ from it by rounding: the next grid step's sub-steps keep their predictor)
+    const double summed = s.time;
     s.time = start.time + d.step;
+    for (std::optional<Integrator>& integ_k : sub)
+      if (integ_k) integ_k->retime(summed, s.time);
     out.max_penetration = std::max(out.max_penetration, acc.max_penetration);
     ++out.steps;
     work += acc.work;
     for (std::size_t w = 0; w < nw; ++w) applied[w] += acc.torque[w];
-    for (const Retake::Sub& e : acc.subs)  // the last one named at the grid's time
-      watch_takeups(&e == &acc.subs.back() ? s.time : e.time, e.size, e.slide, e.wheel_force);
+    for (std::size_t i = 0; i < acc.n_subs; ++i) {  // the last one named at the grid's time
+      const Retake::Sub& e = acc.subs[i];
+      watch_takeups(i + 1 == acc.n_subs ? s.time : e.time, e.size, e.slide, e.wheel_force);
+    }
     ++since;
     if ((k + 1) % every == 0) sample();
     if (guard_due(k + 1) && gained(k + 1)) return true;
@@ -3366,8 +3396,8 @@ Result run(const analysis::Inputs& in) {
       rep = integ.step(model, s);
       if (!rep.converged) ++failed_solves;
     } else {
-      const State start = s;
-      Retake acc = fresh();
+      start = s;
+      acc.reset();
       const bool whole = retake_halves(model, d, sub, s, 1, level, level, acc);
       sub_solves += acc.solves;
       failed_solves += acc.failed;
@@ -3377,7 +3407,7 @@ Result run(const analysis::Inputs& in) {
           --level;
           clean = 0;
         }
-        if (substeps_end(k, start, acc)) break;
+        if (substeps_end(k)) break;
         continue;
       }
       s = start;
@@ -3401,8 +3431,8 @@ Result run(const analysis::Inputs& in) {
       // the step again from its start as two halves of the size that failed (each split again
       // down to h/16): the grid's step k + 1 when they converge, the run going on at the
       // smallest size they took
-      const State start = s;
-      Retake acc = fresh();
+      start = s;
+      acc.reset();
       const bool whole = level < kRetakeLevels &&
                          retake_halves(model, d, sub, s, 1, level + 1, kRetakeLevels, acc);
       sub_solves += acc.solves;
@@ -3412,7 +3442,7 @@ Result run(const analysis::Inputs& in) {
         deepest = std::max(deepest, acc.level);
         level = acc.level;
         clean = 0;
-        if (substeps_end(k, start, acc)) break;
+        if (substeps_end(k)) break;
         continue;
       }
       s = start;  // the run's end as if the step had failed without the retake
@@ -3510,7 +3540,9 @@ Result run(const analysis::Inputs& in) {
              " s). A retaken step is one step of the output; a smaller step may not need them. "
              "After a retake the run went on at the smallest sub-step it took, doubled back "
              "after " +
-             std::to_string(kGrowSteps) + " steps at it without a failure: " +
+             std::to_string(kGrowSteps) +
+             " steps at it without a failure (a step failing at its kept size retaken from "
+             "there, not tried at the sizes above it, and counted among the steps retaken): " +
              std::to_string(kept_steps) + " more " + (kept_steps == 1 ? "step" : "steps") +
              " taken as sub-steps, " + std::to_string(sub_solves) + " sub-step solves and " +
              std::to_string(failed_solves) + " failed solves in all",
