@@ -95,8 +95,8 @@ struct Record {
 /// `v` with `digits` significant digits (printf's %g): numbers in tables and messages.
 std::string format_g(double v, int digits = 6);
 
-/// A multiple in words for a message, "more than ... the": 1 → "once", 2 → "twice", else
-/// format_g(m) + " times" ("3 times", "1.5 times").
+/// A multiple in words, "more than ... the": 2 → "twice", else m's shortest exact %g + " times"
+/// ("1.5 times", "2.0000001 times"). Domain: finite m > 1 (outside it: "1 times", "nan times").
 std::string times_text(double m);
 
 /// A unit people read for an SI unit: "m" → mm (×1000), "Pa" → MPa, "rad" → °.
