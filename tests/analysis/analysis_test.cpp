@@ -211,4 +211,16 @@ TEST(NonFinite, EvaluateDiagnosesWhatAnAnalysisLeavesNonFinite) {
   for (const catena::Diagnostic& d : ok.diagnostics) EXPECT_NE(d.code, "result.non_finite");
 }
 
+// A multiple in a message's words, from its constant (the guard on energy from nothing's "more
+// than twice the" from kEnergyGainBound = 2, docs/models/dynamics.md): the word at exactly 2,
+// the number otherwise, with the digits it needs to read back as itself (never rounded to a
+// number it is not).
+TEST(TimesText, NamesTheMultipleInWords) {
+  EXPECT_EQ(catena::analysis::times_text(2.0), "twice");
+  EXPECT_EQ(catena::analysis::times_text(2.0000001), "2.0000001 times");
+  EXPECT_EQ(catena::analysis::times_text(1.0000001), "1.0000001 times");
+  EXPECT_EQ(catena::analysis::times_text(3.0), "3 times");
+  EXPECT_EQ(catena::analysis::times_text(1.5), "1.5 times");
+}
+
 }  // namespace

@@ -690,55 +690,90 @@ TEST(DynamicsPocketCli, RampsFoldedStepIsRetakenAsHalvesAndItsAccountingCloses) 
 }
 
 // The guard on energy from nothing (docs/models/dynamics.md, "Integrator: the guard on energy
-// from nothing"): the ramp's run (θ = ½, undamped, discrete gradient, w = c) to 1 s, and the
-// same with the sharp mouth, went on with retakes to 1 s, +2537 J and +2773 J in their
-// numerical terms and joints 2.42 and 2.90 mm deep. The numerical term passes twice the energy
-// each has received at 0.3215 s and 0.305 s (measured per step), where the guard's next sample
-// stops them, their joints under 1.2 mm (the balance still closed when they first went past c).
+// from nothing"): the ramp's run (θ = ½, undamped, discrete gradient, w = c) to 1 s went on with
+// retakes to 1 s, +2537 J in its numerical term, its joints 2.42 mm deep (measured going back to
+// h after each retake, without the guard). Asserted are the guard's properties, not where on the
+// run's path it fires (the path past the ramp's folds moves with rounding-level changes: 3230,
+// 3240 and 3600 steps measured on three builds): the run is stopped by `dynamics.energy_gain`
+// before 0.5 s, its value the summary's numerical term, above its limit (twice what the run has
+// received, over 100 J: the driver's work dominates), on stderr too. The joints' depth at the
+// stop is below 2.42 mm, the least depth the run ends at by 1 s unguarded (3.28 mm on the path
+// with the size kept, measured with the guard's bound raised): the guard stops it short of that
+// end but bounds it no closer, its bound growing with the driver's work (1.47 to 1.79 mm
+// measured; "Not built yet").
 TEST(DynamicsPocketCli, RampsDivergingRunStopsWhereItGainsEnergyFromNothing) {
-  for (const bool sharp : {false, true}) {
-    const CliRun r =
-        run("dynamics " +
-            undamped_keyed(sharp ? "sharp_1s.toml" : "ramp_1s.toml", "1 s", sharp ? "" : "0.1 mm") +
-            " --format json");
-    ASSERT_EQ(r.status, 0) << r.err;
-    const auto j = nlohmann::json::parse(r.out);
-    const int steps = j["summary"]["steps"].get<int>();
-    EXPECT_GT(steps, 2900) << sharp;
-    EXPECT_LT(steps, 3300) << sharp;
-    EXPECT_LT(j["summary"]["max_penetration"].get<double>(), 1.2e-3) << sharp;
-    bool gain = false;
-    for (const auto& d : j["diagnostics"])
-      if (d["code"] == "dynamics.energy_gain") {
-        gain = true;
-        EXPECT_EQ(d["value"].get<double>(),
-                  j["summary"]["work_balance"]["numerical"].get<double>());
-        EXPECT_GT(d["value"].get<double>(), d["limit"].get<double>());
-        EXPECT_GT(d["limit"].get<double>(), 100.0) << d.dump();  // the work put in dominates
-      }
-    EXPECT_TRUE(gain) << sharp << " " << j["diagnostics"].dump();
-    EXPECT_NE(r.err.find("catena: error: step "), std::string::npos) << r.err;
+  const CliRun r =
+      run("dynamics " + undamped_keyed("ramp_1s.toml", "1 s", "0.1 mm") + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const double stopped = j["summary"]["steps"].get<int>() * j["summary"]["step"].get<double>();
+  EXPECT_LT(stopped, 0.5);
+  EXPECT_LT(j["summary"]["max_penetration"].get<double>(), 2.42e-3);
+  int gains = 0;
+  for (const auto& d : j["diagnostics"]) {
+    EXPECT_NE(d["code"], "dynamics.not_converged") << d.dump();
+    if (d["code"] != "dynamics.energy_gain") continue;
+    ++gains;
+    EXPECT_EQ(d["severity"], "error");
+    EXPECT_EQ(d["value"].get<double>(), j["summary"]["work_balance"]["numerical"].get<double>());
+    EXPECT_GT(d["value"].get<double>(), d["limit"].get<double>());
+    EXPECT_GT(d["limit"].get<double>(), 100.0) << d.dump();  // the work put in dominates
   }
+  EXPECT_EQ(gains, 1) << j["diagnostics"].dump();
+  EXPECT_NE(r.err.find("catena: error: step "), std::string::npos) << r.err;
+}
+
+// A grid step that fails at the kept size h/16 itself, the retakes' floor, is not retaken
+// (docs/models/dynamics.md, "Integrator: the sub-step size kept"): the narrow ramp (w = 0.01 mm)
+// undamped at θ = ½ with the discrete gradient at 0.2 ms goes on at sixteenths after a retake
+// that needed them, and one of those grid steps fails (step 444, t = 0.0888 s, measured): the
+// run ends there with `dynamics.not_converged`, its message naming the kept size and the floor in
+// place of the retake's clause, its value the failed step's end.
+TEST(DynamicsPocketCli, AStepFailingAtTheKeptFloorIsNotRetaken) {
+  const std::string file =
+      undamped_keyed("kept_floor.toml", "0.2 s", "0.01 mm", {{"step", "step = \"0.2 ms\""}});
+  const CliRun r = run("dynamics " + file + " --format json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const int steps = j["summary"]["steps"].get<int>();
+  EXPECT_LT(steps, 1000);  // stopped before the end
+  int stopped = 0;
+  for (const auto& d : j["diagnostics"]) {
+    if (d["code"] != "dynamics.not_converged") continue;
+    ++stopped;
+    const std::string m = d["message"];
+    EXPECT_EQ(m.rfind("step " + std::to_string(steps + 1) + " (t = ", 0), 0u) << m;
+    for (const char* part : {" did not converge as sub-steps of step/16 in ",
+                             ", the retakes' floor; the run stopped there (try a smaller step"})
+      EXPECT_NE(m.find(part), std::string::npos) << part << "\n" << m;
+    EXPECT_EQ(m.find("also retaken"), std::string::npos) << m;
+    EXPECT_NEAR(d["value"].get<double>(), (steps + 1) * 2e-4, 1e-12);
+  }
+  EXPECT_EQ(stopped, 1) << j["diagnostics"].dump();
 }
 
 // A step that fails even as sixteenths ends the run as before the retakes (docs/models/
 // dynamics.md, "Integrator: a failed step retaken as half-steps"): the example undamped at θ = ½
 // with the discrete gradient and a narrow ramp w = 0.01 mm at 0.5 ms (within the speed bound),
-// 0.08 s. Steps are retaken (down to h/16) until step 149 (t = 0.0745 s), which fails at every
-// level: the state is restored to the end of step 148, the error names the step with the message
-// as before plus the retake, on stderr too, and the earlier retakes are warned. The run is no
-// physics (joints 0.7 mm deep, warned); it is here for the path.
+// 0.08 s. Steps are retaken and the run goes on at the sub-steps they took ("Integrator: the
+// sub-step size kept") until step 78 (t = 0.039 s), taken as quarters, which fails at every level
+// below: the state is restored to the end of step 77, the error names the step with the message
+// as before plus the size it was taken at and the retake, on stderr too, and the earlier retakes
+// are warned. (Going back to h after each retake it ended at step 149, the coarse steps carrying
+// joints over the ramp where the finer ones fold.) The run is no physics (joints 0.39 mm deep,
+// warned); it is here for the path.
 TEST(DynamicsPocketCli, AStepFailingAtTheRetakesFloorEndsTheRunAtItsStart) {
   const std::string file =
       undamped_keyed("ramp_floor.toml", "0.08 s", "0.01 mm", {{"step", "step = \"0.5 ms\""}});
   const CliRun r = run("dynamics " + file + " --format json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["summary"]["steps"], 148) << r.err;
+  EXPECT_EQ(j["summary"]["steps"], 77) << r.err;
   const std::string text =
-      "step 149 (t = 0.0745 s) did not converge in 50 Newton iterations in all, from 2 starting "
-      "points with at most 25 from each; also retaken from its start as half-steps down to "
-      "step/16, which failed too; the run stopped there (try a smaller step or theta nearer 1)";
+      "step 78 (t = 0.039 s) did not converge as sub-steps of step/4 in 50 Newton iterations in "
+      "all, from 2 starting points with at most 25 from each; also retaken from its start as "
+      "half-steps down to step/16, which failed too; the run stopped there (try a smaller step or "
+      "theta nearer 1)";
   int stopped = 0, retaken = 0;
   for (const auto& d : j["diagnostics"]) {
     if (d["code"] == "dynamics.steps_retaken") ++retaken;
@@ -746,7 +781,7 @@ TEST(DynamicsPocketCli, AStepFailingAtTheRetakesFloorEndsTheRunAtItsStart) {
     ++stopped;
     EXPECT_EQ(d["severity"], "error");
     EXPECT_EQ(d["message"], text);
-    EXPECT_NEAR(d["value"].get<double>(), 0.0745, 1e-12);
+    EXPECT_NEAR(d["value"].get<double>(), 0.039, 1e-12);
   }
   EXPECT_EQ(stopped, 1);
   EXPECT_EQ(retaken, 1);

@@ -131,6 +131,27 @@ double number_after(const std::string& message, const std::string& label) {
   return at == std::string::npos ? NAN : std::stod(message.substr(at + label.size()));
 }
 
+// The take-up example with sliding hinges and the stick law at ratio 96 (hinge_stick_stiffness =
+// 2.3e5 N m/rad at 0.1 ms: warned, within the bound), its samples every step, over `duration`:
+// its first steps fail at h and are retaken as halves down to h/4 (docs/models/dynamics.md,
+// "Integrator: a failed step retaken as half-steps"), the slide rising from rest.
+std::string stick_law_takeup(const std::string& duration, const std::string& idler = "") {
+  std::string text = replaced(example_text(), "duration", "duration = \"" + duration + "\"");
+  text = replaced(text, "output_interval", "output_interval = \"0.1 ms\"");
+  text = with_dynamics_key(
+      text, "hinge = \"sliding\"\nhinge_friction = 0.1\nhinge_stick_stiffness = 2.3e5\n");
+  return idler.empty() ? text : in_idler(text, idler);
+}
+
+// The number just before `words` in `m` (-1 without them).
+long count_before(const std::string& m, const std::string& words) {
+  const std::size_t at = m.find(words);
+  if (at == std::string::npos || at == 0) return -1;
+  std::size_t from = m.rfind(' ', at - 1);
+  from = from == std::string::npos ? 0 : from + 1;
+  return std::stol(m.substr(from, at - from));
+}
+
 }  // namespace
 
 // takeup_travel_max = 0.4 mm on the example (whose slide settles at about 0.54 mm and overshoots
@@ -604,4 +625,106 @@ TEST(DynamicsTakeupCli, EnergyGainIsCheckedAtTheLastStepToo) {
   ASSERT_TRUE(j.contains("summary"));
   EXPECT_EQ(j["summary"]["steps"], 28);
   EXPECT_TRUE(has_code(j, "dynamics.energy_gain")) << j["diagnostics"].dump();
+}
+
+// The take-ups' watch runs on every sub-step of a step taken as sub-steps (docs/models/
+// dynamics.md, "Integrator: a failed step retaken as half-steps"): the stick-law take-up to 3 ms
+// with takeup_travel_max = 0.0002 mm, which the slide passes within step 1 (it is at 0.00212 mm
+// at the step's end), taken as sub-steps of 25 µs: the end stop is reached at the second
+// sub-step's end, t = 50 µs, not at the grid's 0.1 ms (the time the watch of the step's last
+// sub-step alone named), and the time held counts each sub-step's share (3 ms less the first
+// sub-step: 2.975 ms, where whole steps alone count 3 ms). The deepest the slide goes past the
+// end, 6.43e-06 m, is reached within an earlier sub-step of a step and comes partly back by its
+// end: the watch of the last sub-step alone saw 6.35e-06 m.
+TEST(DynamicsTakeupCli, EndStopIsWatchedAtEverySubStep) {
+  const nlohmann::json j = dynamics_json(
+      write("stick_stop.toml", stick_law_takeup("3 ms", "takeup_travel_max = \"0.0002 mm\"\n")));
+  ASSERT_TRUE(j.contains("summary"));
+  EXPECT_EQ(j["summary"]["steps"], 30);
+  bool retaken = false;
+  int stops = 0;
+  for (const auto& d : j["diagnostics"]) {
+    if (d["code"] == "dynamics.steps_retaken")
+      retaken = d["message"].get<std::string>().find("the first at step 1 ") != std::string::npos;
+    if (d["code"] != "dynamics.takeup_at_travel_end") continue;
+    ++stops;
+    EXPECT_NEAR(d["value"].get<double>(), 50e-6, 1e-15) << d.dump();
+    const std::string m = d["message"];
+    for (const char* part :
+         {"takeup_travel_max = 2e-07 m at t = 5e-05 s", "held the slide for 0.002975 s in all",
+          "at most 6.43e-06 m past the end"})
+      EXPECT_NE(m.find(part), std::string::npos) << part << "\n" << m;
+  }
+  EXPECT_TRUE(retaken) << j["diagnostics"].dump();
+  EXPECT_EQ(stops, 1) << j["diagnostics"].dump();
+}
+
+// After a retake the run goes on at the sub-step that converged (docs/models/dynamics.md,
+// "Integrator: the sub-step size kept"): the stick-law take-up to 20 ms, whose first steps need
+// sub-steps, retook 11 grid steps with 12 failed solves going back to h after each retake
+// (measured with the size not kept); it now retakes fewer and fails fewer solves in all (4 and 5
+// measured; it takes more sub-step solves, 58 against 24), as its warning counts. Its result
+// stays within the step's convergence: its wheels' speeds and the spans' tensions differ from a
+// run at h/4 by at most 4 times what the run at h/2 does (a first-order method: 3 times; 2.7
+// measured on a wheel's speed, 2.5 on a span).
+TEST(DynamicsTakeupCli, SubStepSizeIsKeptAfterARetake) {
+  const std::string text = stick_law_takeup("20 ms");
+  const nlohmann::json j = dynamics_json(write("stick_20ms.toml", text));
+  const nlohmann::json half =
+      dynamics_json(write("stick_half.toml", replaced(text, "step", "step = \"0.05 ms\"")));
+  const nlohmann::json fine =
+      dynamics_json(write("stick_fine.toml", replaced(text, "step", "step = \"0.025 ms\"")));
+  ASSERT_TRUE(j.contains("summary") && half.contains("summary") && fine.contains("summary"));
+  EXPECT_EQ(j["summary"]["steps"], 200);
+  int warned = 0;
+  for (const auto& d : j["diagnostics"]) {
+    if (d["code"] != "dynamics.steps_retaken") continue;
+    ++warned;
+    const std::string m = d["message"];
+    const long retaken = count_before(m, " steps of step = 0.1 ms");
+    const long failed = count_before(m, " failed solves in all");
+    EXPECT_GT(retaken, 0) << m;
+    EXPECT_LT(retaken, 11) << m;
+    EXPECT_GE(failed, retaken) << m;
+    EXPECT_LT(failed, 11) << m;
+    EXPECT_GT(count_before(m, " more steps taken as sub-steps"), 0) << m;
+    EXPECT_GT(count_before(m, " sub-step solves"), 0) << m;
+  }
+  EXPECT_EQ(warned, 1) << j["diagnostics"].dump();
+  // the three runs sample every 0.1 ms: the same times
+  const std::size_t samples = j["time"].size();
+  ASSERT_EQ(half["time"].size(), samples);
+  ASSERT_EQ(fine["time"].size(), samples);
+  // a series' largest difference from the fine run's
+  auto off = [&](const nlohmann::json& a, const char* list, std::size_t i, const char* key) {
+    double most = 0.0;
+    for (std::size_t k = 0; k < samples; ++k)
+      most = std::max(
+          most, std::abs(a[list][i][key][k].get<double>() - fine[list][i][key][k].get<double>()));
+    return most;
+  };
+  for (std::size_t w = 0; w < j["sprocket"].size(); ++w)
+    EXPECT_LE(off(j, "sprocket", w, "speed"), 4.0 * off(half, "sprocket", w, "speed")) << w;
+  for (std::size_t s = 0; s < j["span"].size(); ++s)
+    EXPECT_LE(off(j, "span", s, "tension"), 4.0 * off(half, "span", s, "tension")) << s;
+}
+
+// The lost-chain watch on every sub-step too: the stick-law take-up to 3 ms with
+// takeup_lost_force = 500 N and takeup_lost_time = 0 (every stretch counted). The chain's force
+// on the idler rises past 500 N within an earlier sub-step of step 7 only and is back under it at
+// the step's end: the watch of each step's last sub-step alone saw one stretch from the start,
+// 1.5 ms long (checked); watched per sub-step there are 3, the first 0.6 ms, the longest 0.65 ms
+// (a sub-step's boundary, off the grid).
+TEST(DynamicsTakeupCli, LostChainIsWatchedAtEverySubStep) {
+  const nlohmann::json j = dynamics_json(write(
+      "stick_lost.toml",
+      stick_law_takeup("3 ms", "takeup_lost_force = \"500 N\"\ntakeup_lost_time = \"0 s\"\n")));
+  const nlohmann::json lost = lost_chain(j);
+  ASSERT_FALSE(lost.is_null()) << j["diagnostics"].dump();
+  EXPECT_EQ(lost["value"].get<double>(), 0.0);
+  const std::string m = lost["message"];
+  EXPECT_NE(m.find("at most 500 N) for longer than 0 ms 3 time(s), first at t = 0 s for 0.0006 s, "
+                   "the longest 0.00065 s"),
+            std::string::npos)
+      << m;
 }

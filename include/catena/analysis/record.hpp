@@ -95,6 +95,10 @@ struct Record {
 /// `v` with `digits` significant digits (printf's %g): numbers in tables and messages.
 std::string format_g(double v, int digits = 6);
 
+/// A multiple in words, "more than ... the": 2 → "twice", else m's shortest exact %g + " times"
+/// ("1.5 times", "2.0000001 times"). Domain: finite m > 1 (outside it: "1 times", "nan times").
+std::string times_text(double m);
+
 /// A unit people read for an SI unit: "m" → mm (×1000), "Pa" → MPa, "rad" → °.
 struct Display {
   std::string unit;

@@ -127,6 +127,14 @@ class Integrator {
 
   const IntegratorOptions& options() const { return options_; }
 
+  /// Continues the predictor's history (and the factors kept with it) from the time `to` when
+  /// the last accepted step ended at `from`: a caller that resets a state's time after a sequence
+  /// of steps (a grid step taken as sub-steps, whose summed time may differ from the grid's by
+  /// rounding) keeps the history it would otherwise lose. No change when it ended elsewhere.
+  void retime(double from, double to) {
+    if (history_time_ == from) history_time_ = to;
+  }
+
   /// [N·m] per sprocket, counter-clockwise positive: the chain's contact torque on the wheel at
   /// the θ point of the last step — the torque the step applied (a driven wheel's step is
   /// J (ω₁ − ω₀) = h (τ − T_L)). Taken at the last assembled Newton iterate, whose distance to the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <numbers>
@@ -228,6 +229,15 @@ std::string format_g(double v, int digits) {
   char b[64];
   std::snprintf(b, sizeof b, "%.*g", digits, v);
   return b;
+}
+
+std::string times_text(double m) {
+  if (m == 2.0) return "twice";
+  // the shortest of 6 to 17 digits that reads back as m: 2.0000001 is not "2 times"
+  std::string g = format_g(m);
+  for (int digits = 7; digits <= 17 && std::strtod(g.c_str(), nullptr) != m; ++digits)
+    g = format_g(m, digits);
+  return g + " times";
 }
 
 std::string unit_of(const Value& result, const std::string& key) {

@@ -49,6 +49,7 @@ using analysis::InputValue;
 using analysis::Parameter;
 using analysis::ParameterType;
 using analysis::Record;
+using analysis::times_text;
 using analysis::Value;
 using Entry = analysis::InputValue::Entry;
 using K = QuantityKind;
@@ -2719,7 +2720,7 @@ struct TakeupSeries {
   // the end stops (index 0: travel_min, 1: travel_max): the first time the slide was past the
   // end (NAN: never), the steps it spent there and its greatest penetration
   double stop_first[2] = {NAN, NAN};
-  int stop_steps[2] = {0, 0};
+  double stop_steps[2] = {0.0, 0.0};  // in grid steps, a sub-step its share
   double stop_depth[2] = {0.0, 0.0};
   // the chain lost (its force on the wheel at most lost_force): since when (NAN: in contact),
   // and every stretch longer than the wheel's takeup_lost_time as {start, length}
@@ -3082,17 +3083,44 @@ std::optional<Diagnostic> bare_end_struck(const Setup& d, const State& s,
 // the next step from constant velocity with fresh factors). At most 2 + 4 + … + 2^L = 30 step
 // solves for one failed step at L = 4.
 constexpr int kRetakeLevels = 4;
+// After a retake the run goes on at the smallest sub-step it took, whole grid steps of them, and
+// doubles it back after this many grid steps at it without a failed solve (docs/models/
+// dynamics.md, "Integrator: the sub-step size kept").
+constexpr int kGrowSteps = 4;
 
 // What the sub-steps of a retaken step add up to, as the run's loop adds up a step's: the
 // driver's and the loads' work −T Δψ per sub-step, each wheel's applied torque weighted by its
 // share of h (the sample's mean torque stays the mean over time), the deepest penetration, and
-// the deepest level reached.
+// the deepest level reached; each converged sub-step's end for the take-ups' watch (kept only
+// once the whole grid step is: a retake that fails leaves no event), and the step solves tried
+// and failed.
 struct Retake {
   double work = 0.0;
-  std::vector<double> torque;       // Σ (h_i / h) τ_i per wheel
-  std::vector<double> wheel_force;  // the last sub-step's, per wheel (the take-ups' watch)
+  std::vector<double> torque;  // Σ (h_i / h) τ_i per wheel
   double max_penetration = 0.0;
   int level = 0;
+  // per converged sub-step (a run with a take-up only): its end time, its size, the take-ups'
+  // slides and the chain's force on each wheel there
+  struct Sub {
+    double time, size;
+    std::vector<double> slide, wheel_force;
+  };
+  bool watch = false;
+  std::vector<Sub> subs;  // the first n_subs hold this grid step's (the rest: kept storage)
+  std::size_t n_subs = 0;
+  int solves = 0, failed = 0;
+  std::optional<StepReport> failure;  // the first failed solve's (its Newton text)
+  std::vector<double> angle0;         // scratch: a sub-step's start angles
+  // Empties it for a new grid step, keeping every array's storage (no allocation per step).
+  void reset() {
+    work = 0.0;
+    std::fill(torque.begin(), torque.end(), 0.0);
+    max_penetration = 0.0;
+    level = 0;
+    n_subs = 0;
+    solves = failed = 0;
+    failure.reset();
+  }
 };
 
 // A step's (or a retaken step's sub-step's) accounting, the same for both: the driver's (θ-point)
@@ -3110,27 +3138,43 @@ double step_accounting(const Model& model, std::size_t driver, const std::vector
   return dw;
 }
 
-// Two steps of h / 2^level from s (each failed one split again below the floor): true when both
+// Two steps of h / 2^level from s, or below `from` each half split at once (a grid step taken
+// whole as sub-steps of h / 2^from); each failed one split again down to `floor`: true when all
 // converged, s then at their end; false leaves s partly advanced (the caller restores it).
 bool retake_halves(const Model& model, const Setup& d, std::vector<std::optional<Integrator>>& sub,
-                   State& s, int level, Retake& acc) {
-  std::optional<Integrator>& integ = sub[static_cast<std::size_t>(level - 1)];
+                   State& s, int level, int from, int floor, Retake& acc) {
   const double scale = 1.0 / static_cast<double>(1 << level);  // a power of 2: exact
-  if (!integ) integ.emplace(model, IntegratorOptions{.step = d.step * scale, .theta = d.theta});
-  const std::size_t nw = model.sprockets.size();
-  std::vector<double> angle0(nw);
+  std::vector<double>& angle0 = acc.angle0;  // free again once a solve is accounted or failed
   for (int half = 0; half < 2; ++half) {
+    if (level < from) {
+      if (!retake_halves(model, d, sub, s, level + 1, from, floor, acc)) return false;
+      continue;
+    }
+    std::optional<Integrator>& integ = sub[static_cast<std::size_t>(level - 1)];
+    if (!integ) integ.emplace(model, IntegratorOptions{.step = d.step * scale, .theta = d.theta});
     std::copy(s.angle.begin(), s.angle.end(), angle0.begin());
     const StepReport rep = integ->step(model, s);
+    ++acc.solves;
     if (!rep.converged) {  // the state is as it was: split this half again, down to the floor
-      if (level == kRetakeLevels || !retake_halves(model, d, sub, s, level + 1, acc)) return false;
+      ++acc.failed;
+      if (!acc.failure) acc.failure = rep;
+      if (level == floor || !retake_halves(model, d, sub, s, level + 1, level + 1, floor, acc))
+        return false;
       continue;
     }
     acc.level = std::max(acc.level, level);
     acc.max_penetration = std::max(acc.max_penetration, rep.max_penetration);
     acc.work +=
         step_accounting(model, d.driver, angle0, s, integ->applied_torque(), scale, acc.torque);
-    acc.wheel_force = integ->applied_wheel_force();
+    if (acc.watch) {
+      if (acc.n_subs == acc.subs.size()) acc.subs.emplace_back();
+      Retake::Sub& e = acc.subs[acc.n_subs++];
+      e.time = s.time;
+      e.size = d.step * scale;
+      e.slide.assign(s.slide.begin(), s.slide.end());
+      const std::vector<double>& force = integ->applied_wheel_force();
+      e.wheel_force.assign(force.begin(), force.end());
+    }
   }
   return true;
 }
@@ -3138,6 +3182,8 @@ bool retake_halves(const Model& model, const Setup& d, std::vector<std::optional
 // The guard on energy from nothing: the numerical term's bound in multiples of the energy the run
 // has received (docs/models/dynamics.md, "Integrator: the guard on energy from nothing").
 constexpr double kEnergyGainBound = 2.0;
+static_assert(kEnergyGainBound > 1.0,
+              "the guard's message words its bound as \"more than N times\"");
 // The guard's stride: at most one energy evaluation every this many steps (and the last step).
 constexpr int kGuardSteps = 10;
 
@@ -3313,25 +3359,28 @@ Result run(const analysis::Inputs& in) {
     }
     out.frames.push_back(std::move(f));
   };
-  // after each step: a take-up's slide past an end of its travel, and its wheel without the
-  // chain's force (docs/models/dynamics.md, "Take-up"), for the diagnostics after the run
-  auto watch_takeups = [&](const std::vector<double>& wheel_force) {
+  // after each step, and each sub-step of a step taken as sub-steps (its end `time`, its `size`):
+  // a take-up's slide past an end of its travel, and its wheel without the chain's force
+  // (docs/models/dynamics.md, "Take-up"), for the diagnostics after the run; the time at the end
+  // counted in grid steps (a sub-step its share: a power of 2, exact)
+  auto watch_takeups = [&](double time, double size, const std::vector<double>& slide,
+                           const std::vector<double>& wheel_force) {
     for (TakeupSeries& tu : out.takeup) {
       const Sprocket& wh = wheels[tu.wheel];
-      const double sl = s.slide[tu.wheel];
+      const double sl = slide[tu.wheel];
       const double past[2] = {wh.takeup_travel_min - sl, sl - wh.takeup_travel_max};
       for (int e = 0; e < 2; ++e) {
         if (!(past[e] > 0.0)) continue;
-        if (std::isnan(tu.stop_first[e])) tu.stop_first[e] = s.time;
-        ++tu.stop_steps[e];
+        if (std::isnan(tu.stop_first[e])) tu.stop_first[e] = time;
+        tu.stop_steps[e] += size / d.step;
         tu.stop_depth[e] = std::max(tu.stop_depth[e], past[e]);
       }
       const LayoutWheel& lw = d.wheels[tu.wheel];
       const bool lost = wheel_force[tu.wheel] <= takeup_lost_force(lw);
-      if (lost && std::isnan(tu.lost_since)) tu.lost_since = s.time - d.step;
+      if (lost && std::isnan(tu.lost_since)) tu.lost_since = time - size;
       if (!lost && !std::isnan(tu.lost_since)) {
-        if (s.time - d.step - tu.lost_since > lw.takeup_lost_time)
-          tu.lost.push_back({tu.lost_since, s.time - d.step - tu.lost_since});
+        if (time - size - tu.lost_since > lw.takeup_lost_time)
+          tu.lost.push_back({tu.lost_since, time - size - tu.lost_since});
         tu.lost_since = NAN;
       }
     }
@@ -3388,7 +3437,8 @@ Result run(const analysis::Inputs& in) {
         {Diagnostic::Severity::kError, "dynamics.energy_gain",
          "step " + std::to_string(step) + " (t = " + format_g(s.time, 6) +
              " s): the work balance's numerical term, energy gained from nothing, is " +
-             format_g(numerical, 4) + " J, more than twice the " + format_g(received, 4) +
+             format_g(numerical, 4) + " J, more than " + times_text(kEnergyGainBound) + " the " +
+             format_g(received, 4) +
              " J the run has received (the start's kinetic and elastic energy " +
              format_g(start_motion, 4) + " J, the potential energy released " +
              format_g(released, 4) + " J, the work put in by the driver and the loads " +
@@ -3402,16 +3452,76 @@ Result run(const analysis::Inputs& in) {
   ProgressLoop loop(static_cast<std::size_t>(steps), "steps");
   std::vector<double> angle0(nw);
   // the failed steps retaken as half-steps: their integrators, how many, the first's step and the
-  // deepest level
+  // deepest level; the size the run goes on at after a retake (docs/models/dynamics.md,
+  // "Integrator: the sub-step size kept"), h / 2^level, doubled back after kGrowSteps grid steps
+  // at it without a failure; the grid steps taken whole at a kept size, and every sub-step solve
+  // and every failed solve (full steps' too)
   std::vector<std::optional<Integrator>> sub(kRetakeLevels);
   int retaken = 0, first_retaken = 0, deepest = 0;
+  int level = 0, clean = 0, kept_steps = 0;
+  long sub_solves = 0, failed_solves = 0;
+  // scratch kept across grid steps (no allocation per step): the retake's accounting and the
+  // state at the start of a grid step taken as sub-steps
+  Retake acc{.torque = std::vector<double>(nw, 0.0),
+             .watch = !out.takeup.empty(),
+             .angle0 = std::vector<double>(nw)};
+  State start;
+  // grid step k + 1 ended by its sub-steps (from `start`): the grid's time, as a step would have
+  // set it, and its accounting theirs; true when the guard stops the run there
+  auto substeps_end = [&](int k) {
+    // the grid's time, and the last sub-step's integrator's history moved to it (their summed
+    // time may differ from it by rounding: the next grid step's sub-steps keep their predictor)
+    const double summed = s.time;
+    s.time = start.time + d.step;
+    for (std::optional<Integrator>& integ_k : sub)
+      if (integ_k) integ_k->retime(summed, s.time);
+    out.max_penetration = std::max(out.max_penetration, acc.max_penetration);
+    ++out.steps;
+    work += acc.work;
+    for (std::size_t w = 0; w < nw; ++w) applied[w] += acc.torque[w];
+    for (std::size_t i = 0; i < acc.n_subs; ++i) {  // the last one named at the grid's time
+      const Retake::Sub& e = acc.subs[i];
+      watch_takeups(i + 1 == acc.n_subs ? s.time : e.time, e.size, e.slide, e.wheel_force);
+    }
+    ++since;
+    if ((k + 1) % every == 0) sample();
+    if (guard_due(k + 1) && gained(k + 1)) return true;
+    if ((k + 1) % frame_every == 0) snapshot();
+    loop.step(static_cast<std::size_t>(k + 1));
+    return false;
+  };
   for (int k = 0; k < steps; ++k) {
-    std::copy(s.angle.begin(), s.angle.end(), angle0.begin());
-    const StepReport rep = integ.step(model, s);
+    // the step at the run's size: whole at h, or (after a retake) as 2^level sub-steps
+    StepReport rep;
+    if (level == 0) {
+      std::copy(s.angle.begin(), s.angle.end(), angle0.begin());
+      rep = integ.step(model, s);
+      if (!rep.converged) ++failed_solves;
+    } else {
+      start = s;
+      acc.reset();
+      const bool whole = retake_halves(model, d, sub, s, 1, level, level, acc);
+      sub_solves += acc.solves;
+      failed_solves += acc.failed;
+      if (whole) {
+        ++kept_steps;
+        if (++clean == kGrowSteps) {
+          --level;
+          clean = 0;
+        }
+        if (substeps_end(k)) break;
+        continue;
+      }
+      s = start;
+      rep = *acc.failure;
+    }
     if (!rep.converged) {
+      const int n_sub = 1 << level;
       const std::string failed =
           "step " + std::to_string(k + 1) + " (t = " + format_g(s.time + d.step, 6) +
-          " s) did not converge in " + newton_iterations_text(rep, integ.options().max_iterations);
+          " s) did not converge" +
+          (level > 0 ? " as sub-steps of step/" + std::to_string(n_sub) : std::string()) + " in " +
+          newton_iterations_text(rep, integ.options().max_iterations);
       // a roller struck at a rail's square end over the full step stops the run as it did
       // before the retakes, judged first so that the strike is named: the half-steps can
       // converge through it, and their result would be a roller struck through a square end
@@ -3420,33 +3530,33 @@ Result run(const analysis::Inputs& in) {
         out.diagnostics.push_back(std::move(*struck));
         break;
       }
-      // the step again from its start as two half-steps (each split again down to h/16): the
-      // grid's step k + 1 when they converge, its accounting theirs
-      const State start = s;
-      Retake acc{.torque = std::vector<double>(nw, 0.0)};
-      if (retake_halves(model, d, sub, s, 1, acc)) {
-        s.time = start.time + d.step;  // the grid's time, as the step would have set it
+      // the step again from its start as two halves of the size that failed (each split again
+      // down to h/16): the grid's step k + 1 when they converge, the run going on at the
+      // smallest size they took
+      start = s;
+      acc.reset();
+      const bool whole = level < kRetakeLevels &&
+                         retake_halves(model, d, sub, s, 1, level + 1, kRetakeLevels, acc);
+      sub_solves += acc.solves;
+      failed_solves += acc.failed;
+      if (whole) {
         if (retaken++ == 0) first_retaken = k + 1;
         deepest = std::max(deepest, acc.level);
-        out.max_penetration = std::max(out.max_penetration, acc.max_penetration);
-        ++out.steps;
-        work += acc.work;
-        for (std::size_t w = 0; w < nw; ++w) applied[w] += acc.torque[w];
-        watch_takeups(acc.wheel_force);
-        ++since;
-        if ((k + 1) % every == 0) sample();
-        if (guard_due(k + 1) && gained(k + 1)) break;
-        if ((k + 1) % frame_every == 0) snapshot();
-        loop.step(static_cast<std::size_t>(k + 1));
+        level = acc.level;
+        clean = 0;
+        if (substeps_end(k)) break;
         continue;
       }
       s = start;  // the run's end as if the step had failed without the retake
       out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
       out.diagnostics.push_back(
           {Diagnostic::Severity::kError, "dynamics.not_converged",
-           failed + "; also retaken from its start as half-steps down to step/" +
-               std::to_string(1 << kRetakeLevels) +
-               ", which failed too; the run stopped there (try a smaller step or theta nearer 1" +
+           failed +
+               (level < kRetakeLevels
+                    ? "; also retaken from its start as half-steps down to step/" +
+                          std::to_string(1 << kRetakeLevels) + ", which failed too"
+                    : std::string(", the retakes' floor")) +
+               "; the run stopped there (try a smaller step or theta nearer 1" +
                (d.hinge_law.stick_stiffness > 0.0 ? ", or a smaller hinge_stick_stiffness" : "") +
                ")",
            s.time + d.step, d.duration});
@@ -3455,7 +3565,7 @@ Result run(const analysis::Inputs& in) {
     out.max_penetration = std::max(out.max_penetration, rep.max_penetration);
     ++out.steps;
     work += step_accounting(model, d.driver, angle0, s, integ.applied_torque(), 1.0, applied);
-    watch_takeups(integ.applied_wheel_force());
+    watch_takeups(s.time, d.step, s.slide, integ.applied_wheel_force());
     ++since;
     if ((k + 1) % every == 0) sample();
     if (guard_due(k + 1) && gained(k + 1)) break;
@@ -3529,7 +3639,15 @@ Result run(const analysis::Inputs& in) {
              std::to_string(1 << kRetakeLevels) + "): the smallest sub-step " +
              format_g(smallest * 1e3, 4) + " ms, the first at step " +
              std::to_string(first_retaken) + " (t = " + format_g(first_retaken * d.step, 6) +
-             " s). A retaken step is one step of the output; a smaller step may not need them",
+             " s). A retaken step is one step of the output; a smaller step may not need them. "
+             "After a retake the run went on at the smallest sub-step it took, doubled back "
+             "after " +
+             std::to_string(kGrowSteps) +
+             " steps at it without a failure (a step failing at its kept size retaken from "
+             "there, not tried at the sizes above it, and counted among the steps retaken): " +
+             std::to_string(kept_steps) + " more " + (kept_steps == 1 ? "step" : "steps") +
+             " taken as sub-steps, " + std::to_string(sub_solves) + " sub-step solves and " +
+             std::to_string(failed_solves) + " failed solves in all",
          smallest, d.step, "s"});
   }
   // the mouth's ramp past its fold-free step (docs/models/dynamics.md, "Pocket wheel: the ramp's
