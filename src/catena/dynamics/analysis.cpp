@@ -3466,6 +3466,16 @@ Result run(const analysis::Inputs& in) {
              .watch = !out.takeup.empty(),
              .angle0 = std::vector<double>(nw)};
   State start;
+  // grid step k + 1 done, whole or as sub-steps, its accounting added: its sample, the guard's
+  // check, its frame and the progress; true when the guard stops the run there
+  auto grid_step_end = [&](int k) {
+    ++since;
+    if ((k + 1) % every == 0) sample();
+    if (guard_due(k + 1) && gained(k + 1)) return true;
+    if ((k + 1) % frame_every == 0) snapshot();
+    loop.step(static_cast<std::size_t>(k + 1));
+    return false;
+  };
   // grid step k + 1 ended by its sub-steps (from `start`): the grid's time, as a step would have
   // set it, and its accounting theirs; true when the guard stops the run there
   auto substeps_end = [&](int k) {
@@ -3483,12 +3493,7 @@ Result run(const analysis::Inputs& in) {
       const Retake::Sub& e = acc.subs[i];
       watch_takeups(i + 1 == acc.n_subs ? s.time : e.time, e.size, e.slide, e.wheel_force);
     }
-    ++since;
-    if ((k + 1) % every == 0) sample();
-    if (guard_due(k + 1) && gained(k + 1)) return true;
-    if ((k + 1) % frame_every == 0) snapshot();
-    loop.step(static_cast<std::size_t>(k + 1));
-    return false;
+    return grid_step_end(k);
   };
   for (int k = 0; k < steps; ++k) {
     // the step at the run's size: whole at h, or (after a retake) as 2^level sub-steps
@@ -3566,11 +3571,7 @@ Result run(const analysis::Inputs& in) {
     ++out.steps;
     work += step_accounting(model, d.driver, angle0, s, integ.applied_torque(), 1.0, applied);
     watch_takeups(s.time, d.step, s.slide, integ.applied_wheel_force());
-    ++since;
-    if ((k + 1) % every == 0) sample();
-    if (guard_due(k + 1) && gained(k + 1)) break;
-    if ((k + 1) % frame_every == 0) snapshot();
-    loop.step(static_cast<std::size_t>(k + 1));
+    if (grid_step_end(k)) break;
   }
   out.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   // the guides' friction work is 0 without guides: the drift is then the same number as before
